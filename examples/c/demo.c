@@ -1,0 +1,235 @@
+/*
+ * rmfsurf demo: builds objects through the C API and writes files you can open in
+ * ParaView (.vtp) or any mesh viewer (.obj).
+ *
+ *   demo [output-directory]     (default: rmfsurf-demo)
+ *
+ * Sections:
+ *   1. a NURBS input curve, its double-reflection rotation-minimizing frames and its Frenet
+ *      frames (polyline with frame vectors, and a ribbon along f2 for each frame);
+ *   2. a rational NURBS surface given as input, tessellated by the library.
+ */
+#define _POSIX_C_SOURCE 200809L
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "rmfsurf.h"
+
+#define SAMPLES 241
+
+static const char *out_dir = "rmfsurf-demo";
+
+static void fail(const char *what, RmfStatus status) {
+    fprintf(stderr, "demo: %s failed: %s: %s\n", what, rmf_status_name(status), rmf_last_error());
+    exit(1);
+}
+
+#define TRY(call)                            \
+    do {                                     \
+        RmfStatus demo_status_ = (call);     \
+        if (demo_status_ != RMF_OK) fail(#call, demo_status_); \
+    } while (0)
+
+static FILE *open_output(const char *name, char *path, size_t size) {
+    FILE *f;
+    snprintf(path, size, "%s/%s", out_dir, name);
+    f = fopen(path, "w");
+    if (!f) {
+        fprintf(stderr, "demo: cannot write %s: %s\n", path, strerror(errno));
+        exit(1);
+    }
+    return f;
+}
+
+static void written(const char *path, const char *what) { printf("  wrote %-40s %s\n", path, what); }
+
+/* ---- file writers (VTK XML PolyData, ASCII; Wavefront OBJ) ---- */
+
+static void vtp_points(FILE *f, const RmfVec3 *p, size_t n) {
+    size_t i;
+    fprintf(f, "      <Points>\n        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n");
+    for (i = 0; i < n; i++) fprintf(f, "          %.17g %.17g %.17g\n", p[i].x, p[i].y, p[i].z);
+    fprintf(f, "        </DataArray>\n      </Points>\n");
+}
+
+static void vtp_vectors(FILE *f, const char *name, const RmfVec3 *v, size_t n) {
+    size_t i;
+    fprintf(f, "        <DataArray type=\"Float64\" Name=\"%s\" NumberOfComponents=\"3\" format=\"ascii\">\n", name);
+    for (i = 0; i < n; i++) fprintf(f, "          %.17g %.17g %.17g\n", v[i].x, v[i].y, v[i].z);
+    fprintf(f, "        </DataArray>\n");
+}
+
+/* A polyline through the points, with named vector arrays at the points. */
+static void write_polyline_vtp(const char *name, const RmfVec3 *p, size_t n, const char **names,
+                               const RmfVec3 **vectors, size_t vector_count, const char *what) {
+    char path[1024];
+    FILE *f = open_output(name, path, sizeof path);
+    size_t i;
+    fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n");
+    fprintf(f, "  <PolyData>\n    <Piece NumberOfPoints=\"%zu\" NumberOfLines=\"1\">\n", n);
+    vtp_points(f, p, n);
+    fprintf(f, "      <PointData Vectors=\"%s\">\n", vector_count ? names[0] : "");
+    for (i = 0; i < vector_count; i++) vtp_vectors(f, names[i], vectors[i], n);
+    fprintf(f, "      </PointData>\n      <Lines>\n");
+    fprintf(f, "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n         ");
+    for (i = 0; i < n; i++) fprintf(f, " %zu", i);
+    fprintf(f, "\n        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\"> %zu </DataArray>\n", n);
+    fprintf(f, "      </Lines>\n    </Piece>\n  </PolyData>\n</VTKFile>\n");
+    fclose(f);
+    written(path, what);
+}
+
+static void write_mesh_vtp(const char *name, const RmfVec3 *p, size_t n, const uint32_t *tri, size_t nt,
+                           const char *what) {
+    char path[1024];
+    FILE *f = open_output(name, path, sizeof path);
+    size_t i;
+    fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n");
+    fprintf(f, "  <PolyData>\n    <Piece NumberOfPoints=\"%zu\" NumberOfPolys=\"%zu\">\n", n, nt);
+    vtp_points(f, p, n);
+    fprintf(f, "      <Polys>\n        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n");
+    for (i = 0; i < nt; i++) fprintf(f, "          %u %u %u\n", tri[3 * i], tri[3 * i + 1], tri[3 * i + 2]);
+    fprintf(f, "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n");
+    for (i = 0; i < nt; i++) fprintf(f, "          %zu\n", 3 * (i + 1));
+    fprintf(f, "        </DataArray>\n      </Polys>\n    </Piece>\n  </PolyData>\n</VTKFile>\n");
+    fclose(f);
+    written(path, what);
+}
+
+static void write_mesh_obj(const char *name, const RmfVec3 *p, size_t n, const uint32_t *tri, size_t nt,
+                           const char *what) {
+    char path[1024];
+    FILE *f = open_output(name, path, sizeof path);
+    size_t i;
+    fprintf(f, "# rmfsurf demo: %s\n", what);
+    for (i = 0; i < n; i++) fprintf(f, "v %.17g %.17g %.17g\n", p[i].x, p[i].y, p[i].z);
+    for (i = 0; i < nt; i++) fprintf(f, "f %u %u %u\n", tri[3 * i] + 1, tri[3 * i + 1] + 1, tri[3 * i + 2] + 1);
+    fclose(f);
+    written(path, what);
+}
+
+/* A strip x(t) + s w f2(t), s ∈ [−1, 1], over the samples: shows how a frame turns. */
+static void write_ribbon(const char *name, const RmfVec3 *x, const RmfVec3 *f2, size_t n, double w, const char *what) {
+    RmfVec3 *p = (RmfVec3 *)malloc(2 * n * sizeof *p);
+    uint32_t *tri = (uint32_t *)malloc(6 * (n - 1) * sizeof *tri);
+    size_t i;
+    if (!p || !tri) exit(1);
+    for (i = 0; i < n; i++) {
+        p[2 * i].x = x[i].x - w * f2[i].x;
+        p[2 * i].y = x[i].y - w * f2[i].y;
+        p[2 * i].z = x[i].z - w * f2[i].z;
+        p[2 * i + 1].x = x[i].x + w * f2[i].x;
+        p[2 * i + 1].y = x[i].y + w * f2[i].y;
+        p[2 * i + 1].z = x[i].z + w * f2[i].z;
+    }
+    for (i = 0; i + 1 < n; i++) {
+        uint32_t a = (uint32_t)(2 * i), b = a + 1, c = a + 2, d = a + 3;
+        uint32_t *t = tri + 6 * i;
+        t[0] = a, t[1] = c, t[2] = d, t[3] = a, t[4] = d, t[5] = b;
+    }
+    write_mesh_obj(name, p, 2 * n, tri, 2 * (n - 1), what);
+    free(p);
+    free(tri);
+}
+
+/* ---- 1. a NURBS curve with its rotation-minimizing and Frenet frames ---- */
+
+static void demo_curve_and_frames(void) {
+    /* A cubic B-spline climbing around the z axis: 8 poles, 5 Bézier segments. */
+    static const RmfVec3 poles[8] = {{2, 0, 0},  {2, 2, 0.5}, {-1, 3, 1},  {-3, 0, 1.5},
+                                     {-1, -3, 2}, {2, -2, 2.5}, {3, 1, 3}, {1, 2, 3.5}};
+    static const double knots[12] = {0, 0, 0, 0, 1, 2, 3, 4, 5, 5, 5, 5};
+    static RmfVec3 x[SAMPLES], t[SAMPLES], rmf2[SAMPLES], rmf3[SAMPLES], fr2[SAMPLES], fr3[SAMPLES];
+    const char *names[5] = {"tangent", "rmf_f2", "rmf_f3", "frenet_n", "frenet_b"};
+    const RmfVec3 *vectors[5];
+    RmfCurve *curve = NULL;
+    RmfFrames *rmf = NULL, *frenet = NULL;
+    RmfVec3 seed = {0, 0, 1};
+    double t0, t1, twist_rmf = 0, twist_frenet = 0;
+    size_t i;
+
+    printf("1. NURBS curve, double-reflection RMF and Frenet frames\n");
+    TRY(rmf_nurbs_curve_create(3, poles, NULL, 8, knots, 12, &curve));
+    TRY(rmf_curve_domain(curve, &t0, &t1));
+    TRY(rmf_double_reflection_frames(curve, seed, 2000, &rmf));
+    TRY(rmf_frenet_frames(curve, &frenet));
+    for (i = 0; i < SAMPLES; i++) {
+        double s = t0 + (t1 - t0) * (double)i / (SAMPLES - 1);
+        RmfVec3 dummy;
+        TRY(rmf_curve_eval(curve, s, &x[i], NULL));
+        TRY(rmf_frames_eval(rmf, s, &t[i], &rmf2[i], &rmf3[i]));
+        TRY(rmf_frames_eval(frenet, s, &dummy, &fr2[i], &fr3[i]));
+        if (i > 0) {
+            /* Rotation about the tangent between consecutive samples. */
+            twist_rmf += fabs(asin(fmin(1.0, fabs(rmf2[i - 1].x * rmf3[i].x + rmf2[i - 1].y * rmf3[i].y +
+                                                   rmf2[i - 1].z * rmf3[i].z))));
+            twist_frenet += fabs(asin(fmin(1.0, fabs(fr2[i - 1].x * fr3[i].x + fr2[i - 1].y * fr3[i].y +
+                                                      fr2[i - 1].z * fr3[i].z))));
+        }
+    }
+    vectors[0] = t, vectors[1] = rmf2, vectors[2] = rmf3, vectors[3] = fr2, vectors[4] = fr3;
+    write_polyline_vtp("curve_frames.vtp", x, SAMPLES, names, vectors, 5,
+                       "NURBS curve with RMF and Frenet frame vectors");
+    write_ribbon("rmf_ribbon.obj", x, rmf2, SAMPLES, 0.4, "strip along the RMF vector f2 (no twist)");
+    write_ribbon("frenet_ribbon.obj", x, fr2, SAMPLES, 0.4, "strip along the Frenet normal (twists)");
+    printf("  summed rotation about the tangent between samples: RMF %.4f rad, Frenet %.4f rad\n", twist_rmf,
+           twist_frenet);
+    rmf_frames_free(rmf);
+    rmf_frames_free(frenet);
+    rmf_curve_free(curve);
+}
+
+/* ---- 2. a rational NURBS surface, tessellated ---- */
+
+static void demo_tessellated_surface(void) {
+    /* A quarter torus-like rational patch: circle of radius 0.5 swept around a circle of radius 2. */
+    const double s = sqrt(0.5);
+    const double ring[3][3] = {{1, 0, 1}, {1, 1, s}, {0, 1, 1}};
+    const double knots[6] = {0, 0, 0, 1, 1, 1};
+    RmfVec3 poles[9], *points;
+    double weights[9];
+    uint32_t *triangles;
+    RmfSurface *surface = NULL;
+    size_t np, nt;
+    int i, j;
+
+    printf("2. rational NURBS surface (a quarter of a torus), tessellated by the library\n");
+    for (i = 0; i < 3; i++)     /* u: around the tube */
+        for (j = 0; j < 3; j++) { /* v: around the axis */
+            double r = 2.0 + 0.5 * ring[i][0], z = 0.5 * ring[i][1];
+            double wij = ring[i][2] * ring[j][2];
+            poles[i * 3 + j].x = r * ring[j][0];
+            poles[i * 3 + j].y = r * ring[j][1];
+            poles[i * 3 + j].z = z;
+            weights[i * 3 + j] = wij;
+        }
+    /* Middle poles of the tube circle sit on the tangent lines: r = 2 + 0.5, z = 0.5. */
+    TRY(rmf_nurbs_surface_create(2, 2, poles, weights, 3, 3, knots, 6, knots, 6, &surface));
+    TRY(rmf_surface_tessellate(surface, 24, 24, NULL, 0, NULL, 0, &np, &nt));
+    points = (RmfVec3 *)malloc(np * sizeof *points);
+    triangles = (uint32_t *)malloc(3 * nt * sizeof *triangles);
+    if (!points || !triangles) exit(1);
+    TRY(rmf_surface_tessellate(surface, 24, 24, points, np, triangles, nt, &np, &nt));
+    write_mesh_obj("torus_patch.obj", points, np, triangles, nt, "tessellated rational NURBS surface");
+    write_mesh_vtp("torus_patch.vtp", points, np, triangles, nt, "the same mesh as VTK PolyData");
+    free(points);
+    free(triangles);
+    rmf_surface_free(surface);
+}
+
+int main(int argc, char **argv) {
+    if (argc > 1) out_dir = argv[1];
+    if (mkdir(out_dir, 0777) != 0 && errno != EEXIST) {
+        fprintf(stderr, "demo: cannot create %s: %s\n", out_dir, strerror(errno));
+        return 1;
+    }
+    printf("rmfsurf %s demo, writing to %s/\n", rmf_version(), out_dir);
+    demo_curve_and_frames();
+    demo_tessellated_surface();
+    return 0;
+}

@@ -1,0 +1,309 @@
+//! Polynomials in Bernstein form on [0, 1]: evaluation with derivatives, hodographs,
+//! products, degree elevation and subdivision.
+//!
+//! The functions are generic over the coefficient type ([`Coefficient`]: f64, `DVec3`,
+//! homogeneous `DVec4`), so that one implementation serves scalar weights, vector numerators
+//! of frames and homogeneous control points. The formulas are the standard ones (Farin,
+//! *Curves and Surfaces for CAGD*, ch. 5–6); de Casteljau's algorithm keeps evaluation
+//! stable (convex combinations only).
+
+use crate::math::binomial;
+use glam::{DVec3, DVec4};
+use std::ops::{Add, Mul, Sub};
+
+/// Highest degree the evaluators accept (they work on stack arrays of this size, so that
+/// evaluation never allocates).
+pub const MAX_DEGREE: usize = 64;
+
+/// A coefficient of a Bernstein polynomial: anything that forms a real vector space.
+pub trait Coefficient:
+    Copy + Default + Add<Output = Self> + Sub<Output = Self> + Mul<f64, Output = Self>
+{
+}
+impl Coefficient for f64 {}
+impl Coefficient for DVec3 {}
+impl Coefficient for DVec4 {}
+
+/// Value, first and second derivative of a Bernstein polynomial at one parameter.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Jet<C> {
+    /// p(t)
+    pub value: C,
+    /// p'(t)
+    pub d1: C,
+    /// p''(t)
+    pub d2: C,
+}
+
+fn lerp<C: Coefficient>(a: C, b: C, t: f64) -> C {
+    a * (1.0 - t) + b * t
+}
+
+/// p(t) by de Casteljau's algorithm.
+///
+/// # Panics
+/// If the degree exceeds [`MAX_DEGREE`] (constructors reject such input).
+pub fn evaluate<C: Coefficient>(coeffs: &[C], t: f64) -> C {
+    let n = coeffs.len();
+    assert!(
+        (1..=MAX_DEGREE + 1).contains(&n),
+        "Bernstein degree out of range"
+    );
+    let mut work = [C::default(); MAX_DEGREE + 1];
+    work[..n].copy_from_slice(coeffs);
+    for level in (1..n).rev() {
+        for i in 0..level {
+            work[i] = lerp(work[i], work[i + 1], t);
+        }
+    }
+    work[0]
+}
+
+/// p(t), p'(t) and p''(t) by de Casteljau's algorithm, stopping two levels early to read
+/// the derivatives off the intermediate points.
+pub fn evaluate_jet<C: Coefficient>(coeffs: &[C], t: f64) -> Jet<C> {
+    let n = coeffs.len();
+    assert!(
+        (1..=MAX_DEGREE + 1).contains(&n),
+        "Bernstein degree out of range"
+    );
+    let degree = (n - 1) as f64;
+    let mut work = [C::default(); MAX_DEGREE + 1];
+    work[..n].copy_from_slice(coeffs);
+    for level in (3..n).rev() {
+        for i in 0..level {
+            work[i] = lerp(work[i], work[i + 1], t);
+        }
+    }
+    match n {
+        1 => Jet {
+            value: work[0],
+            d1: C::default(),
+            d2: C::default(),
+        },
+        2 => Jet {
+            value: lerp(work[0], work[1], t),
+            d1: (work[1] - work[0]) * degree,
+            d2: C::default(),
+        },
+        _ => {
+            let d2 = (work[2] - work[1] * 2.0 + work[0]) * (degree * (degree - 1.0));
+            let a = lerp(work[0], work[1], t);
+            let b = lerp(work[1], work[2], t);
+            Jet {
+                value: lerp(a, b, t),
+                d1: (b - a) * degree,
+                d2,
+            }
+        }
+    }
+}
+
+/// The Bernstein basis functions of degree `n` at `t` with their first and second
+/// derivatives, written to `out[0..=n]` as `[B, B', B'']`.
+///
+/// Uses `B'_i^n = n (B_{i-1}^{n-1} − B_i^{n-1})` and the analogous second difference of the
+/// degree n − 2 basis; all basis values come from the convex triangle recursion.
+pub fn basis_jet(n: usize, t: f64, out: &mut [[f64; 3]]) {
+    assert!(
+        n <= MAX_DEGREE && out.len() > n,
+        "Bernstein degree out of range"
+    );
+    // Basis rows of degree n − 2 and n − 1 (all zero when that degree is negative).
+    let mut below = [[0.0; MAX_DEGREE + 2]; 2];
+    let mut row = [0.0; MAX_DEGREE + 2];
+    row[0] = 1.0;
+    for d in 0..=n {
+        if d > 0 {
+            row[d] = t * row[d - 1];
+            for i in (1..d).rev() {
+                row[i] = (1.0 - t) * row[i] + t * row[i - 1];
+            }
+            row[0] *= 1.0 - t;
+        }
+        if d + 2 == n {
+            below[0] = row;
+        }
+        if d + 1 == n {
+            below[1] = row;
+        }
+    }
+    // Index i − k into a row, zero outside it.
+    let shifted =
+        |r: &[f64; MAX_DEGREE + 2], i: usize, k: usize| if i >= k { r[i - k] } else { 0.0 };
+    let nf = n as f64;
+    for i in 0..=n {
+        let d1 = nf * (shifted(&below[1], i, 1) - below[1][i]);
+        let d2 = nf
+            * (nf - 1.0)
+            * (shifted(&below[0], i, 2) - 2.0 * shifted(&below[0], i, 1) + below[0][i]);
+        out[i] = [row[i], d1, d2];
+    }
+}
+
+/// Coefficients of p' (degree n − 1); a constant gives the zero polynomial of degree 0.
+pub fn derivative<C: Coefficient>(coeffs: &[C]) -> Vec<C> {
+    let n = coeffs.len() - 1;
+    if n == 0 {
+        return vec![C::default()];
+    }
+    coeffs
+        .windows(2)
+        .map(|w| (w[1] - w[0]) * n as f64)
+        .collect()
+}
+
+/// Coefficients of `a·b` (degree m + n) for any bilinear product `mul` (scalar × vector,
+/// dot, cross, ...): `c_k = Σ_{i+j=k} C(m,i) C(n,j) / C(m+n,k) · mul(a_i, b_j)`.
+pub fn product<A: Copy, B: Copy, C: Coefficient>(
+    a: &[A],
+    b: &[B],
+    mul: impl Fn(A, B) -> C,
+) -> Vec<C> {
+    let (m, n) = (a.len() - 1, b.len() - 1);
+    let mut out = vec![C::default(); m + n + 1];
+    for (i, &ai) in a.iter().enumerate() {
+        for (j, &bj) in b.iter().enumerate() {
+            let scale = binomial(m, i) * binomial(n, j) / binomial(m + n, i + j);
+            out[i + j] = out[i + j] + mul(ai, bj) * scale;
+        }
+    }
+    out
+}
+
+/// The same polynomial written in degree n + r.
+pub fn elevate<C: Coefficient>(coeffs: &[C], r: usize) -> Vec<C> {
+    let n = coeffs.len() - 1;
+    if r == 0 {
+        return coeffs.to_vec();
+    }
+    (0..=n + r)
+        .map(|k| {
+            let lo = k.saturating_sub(r);
+            let hi = k.min(n);
+            (lo..=hi).fold(C::default(), |acc, j| {
+                acc + coeffs[j] * (binomial(n, j) * binomial(r, k - j) / binomial(n + r, k))
+            })
+        })
+        .collect()
+}
+
+/// The same polynomial written in degree `degree ≥ n`.
+pub fn elevate_to<C: Coefficient>(coeffs: &[C], degree: usize) -> Vec<C> {
+    elevate(coeffs, degree + 1 - coeffs.len())
+}
+
+/// Subdivision at `t`: coefficients of p on [0, t] and on [t, 1], each reparameterized to
+/// [0, 1].
+pub fn split<C: Coefficient>(coeffs: &[C], t: f64) -> (Vec<C>, Vec<C>) {
+    let n = coeffs.len();
+    let mut work = coeffs.to_vec();
+    let mut left = Vec::with_capacity(n);
+    let mut right = vec![C::default(); n];
+    for level in (0..n).rev() {
+        left.push(work[0]);
+        right[level] = work[level];
+        for i in 0..level {
+            work[i] = lerp(work[i], work[i + 1], t);
+        }
+    }
+    (left, right)
+}
+
+/// Coefficients of p restricted to [t0, t1] and reparameterized to [0, 1].
+pub fn restrict<C: Coefficient>(coeffs: &[C], t0: f64, t1: f64) -> Vec<C> {
+    if t1 == 1.0 {
+        return split(coeffs, t0).1;
+    }
+    let (left, _) = split(coeffs, t1);
+    split(&left, t0 / t1).1
+}
+
+/// Bernstein coefficients of degree n of the polynomial `Σ power[i] tⁱ` (n = power.len() − 1):
+/// `b_k = Σ_{i≤k} C(k,i)/C(n,i) · a_i`.
+pub fn from_power<C: Coefficient>(power: &[C]) -> Vec<C> {
+    let n = power.len() - 1;
+    (0..=n)
+        .map(|k| {
+            (0..=k).fold(C::default(), |acc, i| {
+                acc + power[i] * (binomial(k, i) / binomial(n, i))
+            })
+        })
+        .collect()
+}
+
+/// Power-basis coefficients `a_i` (p = Σ a_i tⁱ) of a Bernstein polynomial:
+/// `a_i = C(n,i) Σ_{k≤i} (−1)^{i−k} C(i,k) b_k`.
+pub fn to_power<C: Coefficient>(coeffs: &[C]) -> Vec<C> {
+    let n = coeffs.len() - 1;
+    (0..=n)
+        .map(|i| {
+            let sum = (0..=i).fold(C::default(), |acc, k| {
+                let sign = if (i - k) % 2 == 0 { 1.0 } else { -1.0 };
+                acc + coeffs[k] * (sign * binomial(i, k))
+            });
+            sum * binomial(n, i)
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn power_eval(a: &[f64], t: f64) -> f64 {
+        a.iter().rev().fold(0.0, |acc, &c| acc * t + c)
+    }
+
+    const P: [f64; 5] = [1.0, -2.0, 0.5, 3.0, -1.0];
+
+    #[test]
+    fn jet_matches_finite_differences() {
+        let t = 0.37;
+        let jet = evaluate_jet(&P, t);
+        assert!((jet.value - evaluate(&P, t)).abs() < 1e-15);
+        let h = 1e-5;
+        let fd1 = (evaluate(&P, t + h) - evaluate(&P, t - h)) / (2.0 * h);
+        let fd2 = (evaluate(&P, t + h) - 2.0 * evaluate(&P, t) + evaluate(&P, t - h)) / (h * h);
+        assert!((jet.d1 - fd1).abs() < 1e-8);
+        assert!((jet.d2 - fd2).abs() < 1e-4);
+        let d = derivative(&P);
+        assert!((evaluate(&d, t) - jet.d1).abs() < 1e-13);
+        assert!((evaluate(&derivative(&d), t) - jet.d2).abs() < 1e-12);
+    }
+
+    #[test]
+    fn basis_jet_reproduces_polynomial_jet() {
+        for n in 0..7 {
+            let coeffs: Vec<f64> = (0..=n).map(|i| (i as f64 * 1.7).sin()).collect();
+            let mut basis = [[0.0; 3]; MAX_DEGREE + 1];
+            basis_jet(n, 0.63, &mut basis);
+            let jet = evaluate_jet(&coeffs, 0.63);
+            let sum = |k: usize| (0..=n).map(|i| basis[i][k] * coeffs[i]).sum::<f64>();
+            assert!((sum(0) - jet.value).abs() < 1e-14, "n = {n}");
+            assert!((sum(1) - jet.d1).abs() < 1e-12, "n = {n}");
+            assert!((sum(2) - jet.d2).abs() < 1e-11, "n = {n}");
+        }
+    }
+
+    #[test]
+    fn product_elevation_split_and_power_conversion() {
+        let q = [2.0, 0.0, 1.0];
+        let pq = product(&P, &q, |a, b| a * b);
+        let e = elevate(&P, 3);
+        let (l, r) = split(&P, 0.3);
+        let sub = restrict(&P, 0.2, 0.7);
+        let power = to_power(&P);
+        assert_eq!(from_power(&power).len(), P.len());
+        for &t in &[0.0, 0.1, 0.5, 0.9, 1.0] {
+            let p = evaluate(&P, t);
+            assert!((evaluate(&pq, t) - p * evaluate(&q, t)).abs() < 1e-13);
+            assert!((evaluate(&e, t) - p).abs() < 1e-14);
+            assert!((evaluate(&l, t) - evaluate(&P, 0.3 * t)).abs() < 1e-14);
+            assert!((evaluate(&r, t) - evaluate(&P, 0.3 + 0.7 * t)).abs() < 1e-14);
+            assert!((evaluate(&sub, t) - evaluate(&P, 0.2 + 0.5 * t)).abs() < 1e-13);
+            assert!((power_eval(&power, t) - p).abs() < 1e-13);
+            assert!((evaluate(&from_power(&power), t) - p).abs() < 1e-13);
+        }
+    }
+}

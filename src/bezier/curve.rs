@@ -1,0 +1,199 @@
+//! Rational Bézier curves of any degree on [0, 1], stored in homogeneous coordinates
+//! (w·x, w·y, w·z, w). The same type holds rational *vector* functions (frame vectors,
+//! whose "points" are directions); a polynomial curve has all weights 1.
+
+use super::bernstein::{self, MAX_DEGREE};
+use super::homogeneous::{lift, project, rational_jet};
+use crate::error::{invalid, Result};
+use glam::{DVec3, DVec4};
+
+/// Point, first and second derivative of a curve at one parameter.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct CurveJet {
+    pub point: DVec3,
+    pub d1: DVec3,
+    pub d2: DVec3,
+}
+
+/// A rational Bézier curve on [0, 1] in homogeneous form.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RationalBezierCurve {
+    points: Vec<DVec4>,
+}
+
+impl RationalBezierCurve {
+    /// From homogeneous control points (at least one, degree ≤ MAX_DEGREE, all weights
+    /// positive and everything finite).
+    pub fn from_homogeneous(points: Vec<DVec4>) -> Result<Self> {
+        if points.is_empty() || points.len() > MAX_DEGREE + 1 {
+            return invalid!(
+                "a Bézier curve needs 1 to {} control points, got {}",
+                MAX_DEGREE + 1,
+                points.len()
+            );
+        }
+        for (i, p) in points.iter().enumerate() {
+            if !p.is_finite() || p.w <= 0.0 {
+                return invalid!(
+                    "control point {i} is not finite or has a non-positive weight ({p})"
+                );
+            }
+        }
+        Ok(Self { points })
+    }
+
+    /// From Cartesian control points and positive weights.
+    pub fn from_weighted(poles: &[DVec3], weights: &[f64]) -> Result<Self> {
+        if poles.len() != weights.len() {
+            return invalid!("{} poles but {} weights", poles.len(), weights.len());
+        }
+        Self::from_homogeneous(
+            poles
+                .iter()
+                .zip(weights)
+                .map(|(&p, &w)| lift(p, w))
+                .collect(),
+        )
+    }
+
+    /// A polynomial curve (all weights 1).
+    pub fn polynomial(poles: &[DVec3]) -> Result<Self> {
+        Self::from_homogeneous(poles.iter().map(|&p| p.extend(1.0)).collect())
+    }
+
+    /// Assembles `numerator / denominator` from Bernstein coefficients of equal degree.
+    /// Used for frame vectors given as a vector polynomial over a positive scalar one.
+    pub fn from_numerator_denominator(numerator: &[DVec3], denominator: &[f64]) -> Result<Self> {
+        if numerator.len() != denominator.len() {
+            return invalid!("numerator and denominator degrees differ");
+        }
+        Self::from_homogeneous(
+            numerator
+                .iter()
+                .zip(denominator)
+                .map(|(n, &d)| n.extend(d))
+                .collect(),
+        )
+    }
+
+    pub fn degree(&self) -> usize {
+        self.points.len() - 1
+    }
+
+    /// Homogeneous control points.
+    pub fn homogeneous(&self) -> &[DVec4] {
+        &self.points
+    }
+
+    /// Cartesian control points.
+    pub fn poles(&self) -> impl Iterator<Item = DVec3> + '_ {
+        self.points.iter().map(|&h| project(h))
+    }
+
+    /// Weights of the control points.
+    pub fn weights(&self) -> impl Iterator<Item = f64> + '_ {
+        self.points.iter().map(|h| h.w)
+    }
+
+    /// True when every weight equals the first one (a polynomial curve up to scaling).
+    pub fn is_polynomial(&self) -> bool {
+        let w0 = self.points[0].w;
+        self.points.iter().all(|h| (h.w - w0).abs() <= 1e-15 * w0)
+    }
+
+    pub fn eval(&self, t: f64) -> DVec3 {
+        project(bernstein::evaluate(&self.points, t))
+    }
+
+    /// Point and first two derivatives with respect to the local parameter.
+    pub fn eval_jet(&self, t: f64) -> CurveJet {
+        let jet = bernstein::evaluate_jet(&self.points, t);
+        let [point, d1, d2] = rational_jet(jet.value, jet.d1, jet.d2);
+        CurveJet { point, d1, d2 }
+    }
+
+    /// The same curve in degree `degree + r`.
+    pub fn elevated(&self, r: usize) -> Self {
+        Self {
+            points: bernstein::elevate(&self.points, r),
+        }
+    }
+
+    /// The same curve with every homogeneous point multiplied by `factor > 0`, which leaves
+    /// the geometry and parameterization unchanged and scales all weights.
+    pub fn scaled_weights(&self, factor: f64) -> Self {
+        Self {
+            points: self.points.iter().map(|&h| h * factor).collect(),
+        }
+    }
+
+    /// The pieces on [0, t] and [t, 1], each on [0, 1].
+    pub fn split(&self, t: f64) -> (Self, Self) {
+        let (a, b) = bernstein::split(&self.points, t);
+        (Self { points: a }, Self { points: b })
+    }
+
+    /// The piece on [t0, t1], reparameterized to [0, 1].
+    pub fn restricted(&self, t0: f64, t1: f64) -> Self {
+        Self {
+            points: bernstein::restrict(&self.points, t0, t1),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A quarter circle of radius 1 as a rational quadratic.
+    fn quarter_circle() -> RationalBezierCurve {
+        let s = std::f64::consts::FRAC_1_SQRT_2;
+        RationalBezierCurve::from_weighted(
+            &[DVec3::X, DVec3::new(1.0, 1.0, 0.0), DVec3::Y],
+            &[1.0, s, 1.0],
+        )
+        .unwrap()
+    }
+
+    #[test]
+    fn evaluates_an_exact_circle() {
+        let c = quarter_circle();
+        for i in 0..=10 {
+            let t = i as f64 / 10.0;
+            let jet = c.eval_jet(t);
+            assert!((jet.point.length() - 1.0).abs() < 1e-15);
+            assert!(
+                jet.point.dot(jet.d1).abs() < 1e-14,
+                "tangent is perpendicular to the radius"
+            );
+            // d/dt |p|² = 0 twice: p·p'' + |p'|² = 0.
+            assert!((jet.point.dot(jet.d2) + jet.d1.length_squared()).abs() < 1e-13);
+        }
+    }
+
+    #[test]
+    fn elevation_split_and_scaling_keep_the_curve() {
+        let c = quarter_circle();
+        let e = c.elevated(4);
+        let (l, r) = c.split(0.4);
+        let s = c.scaled_weights(3.5);
+        let sub = c.restricted(0.25, 0.75);
+        for i in 0..=8 {
+            let t = i as f64 / 8.0;
+            assert!((e.eval(t) - c.eval(t)).length() < 1e-15);
+            assert!((l.eval(t) - c.eval(0.4 * t)).length() < 1e-15);
+            assert!((r.eval(t) - c.eval(0.4 + 0.6 * t)).length() < 1e-15);
+            assert!((s.eval(t) - c.eval(t)).length() < 1e-15);
+            assert!((sub.eval(t) - c.eval(0.25 + 0.5 * t)).length() < 1e-15);
+        }
+    }
+
+    #[test]
+    fn rejects_bad_weights() {
+        assert!(RationalBezierCurve::from_weighted(&[DVec3::X, DVec3::Y], &[1.0, 0.0]).is_err());
+        assert!(
+            RationalBezierCurve::from_weighted(&[DVec3::X, DVec3::Y], &[1.0, f64::NAN]).is_err()
+        );
+        assert!(RationalBezierCurve::from_homogeneous(vec![]).is_err());
+    }
+}

@@ -1,0 +1,228 @@
+//! Piecewise rational Bézier curves and surfaces: segments (patches) on consecutive
+//! parameter intervals. This is the canonical form of every result of the library; the
+//! NURBS form (`nurbs`) is derived from it.
+
+use super::curve::{CurveJet, RationalBezierCurve};
+use super::surface::{RationalBezierPatch, SurfaceJet};
+use crate::error::{invalid, Result};
+use glam::DVec3;
+
+/// Relative tolerance for parameters that fall just outside a domain by round-off.
+const DOMAIN_SLACK: f64 = 1e-12;
+
+/// Checks that `breaks` holds `pieces + 1` finite, strictly increasing breakpoints.
+pub fn check_breaks(breaks: &[f64], pieces: usize, name: &str) -> Result<()> {
+    if pieces == 0 {
+        return invalid!("a piecewise object needs at least one piece");
+    }
+    if breaks.len() != pieces + 1 {
+        return invalid!(
+            "{name}: {} pieces need {} breakpoints, got {}",
+            pieces,
+            pieces + 1,
+            breaks.len()
+        );
+    }
+    if breaks.iter().any(|b| !b.is_finite()) || breaks.windows(2).any(|w| w[0] >= w[1]) {
+        return invalid!("{name} must be finite and strictly increasing");
+    }
+    Ok(())
+}
+
+/// Index of the interval of `breaks` containing `t` and the local parameter in [0, 1].
+/// Parameters outside the domain are clamped; interior breakpoints belong to the interval
+/// on their right.
+fn locate(breaks: &[f64], t: f64) -> (usize, f64) {
+    let last = breaks.len() - 2;
+    let k = breaks[1..=last].partition_point(|&b| b <= t);
+    let (a, b) = (breaks[k], breaks[k + 1]);
+    (k, ((t - a) / (b - a)).clamp(0.0, 1.0))
+}
+
+/// `t` if it lies in `[lo, hi]` (allowing round-off slack), else an error naming `name`.
+pub fn check_in_domain(t: f64, (lo, hi): (f64, f64), name: &str) -> Result<f64> {
+    let slack = DOMAIN_SLACK * (hi - lo).abs().max(lo.abs()).max(hi.abs()).max(1.0);
+    if !t.is_finite() || t < lo - slack || t > hi + slack {
+        return invalid!("{name} = {t} is outside the domain [{lo}, {hi}]");
+    }
+    Ok(t.clamp(lo, hi))
+}
+
+/// A curve made of rational Bézier segments; segment k lives on `[breaks[k], breaks[k+1]]`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PiecewiseCurve {
+    segments: Vec<RationalBezierCurve>,
+    breaks: Vec<f64>,
+}
+
+impl PiecewiseCurve {
+    pub fn new(segments: Vec<RationalBezierCurve>, breaks: Vec<f64>) -> Result<Self> {
+        check_breaks(&breaks, segments.len(), "breakpoints")?;
+        Ok(Self { segments, breaks })
+    }
+
+    /// Segments on the integer breakpoints 0, 1, ..., n (the natural parameter of a spline
+    /// built segment by segment).
+    pub fn with_unit_intervals(segments: Vec<RationalBezierCurve>) -> Result<Self> {
+        let breaks = (0..=segments.len()).map(|k| k as f64).collect();
+        Self::new(segments, breaks)
+    }
+
+    pub fn segments(&self) -> &[RationalBezierCurve] {
+        &self.segments
+    }
+
+    pub fn breaks(&self) -> &[f64] {
+        &self.breaks
+    }
+
+    pub fn domain(&self) -> (f64, f64) {
+        (self.breaks[0], self.breaks[self.breaks.len() - 1])
+    }
+
+    /// Segment index and local parameter of a global parameter (clamped to the domain).
+    pub fn locate(&self, t: f64) -> (usize, f64) {
+        locate(&self.breaks, t)
+    }
+
+    pub fn eval(&self, t: f64) -> DVec3 {
+        let (k, s) = self.locate(t);
+        self.segments[k].eval(s)
+    }
+
+    /// Point and derivatives with respect to the global parameter.
+    pub fn eval_jet(&self, t: f64) -> CurveJet {
+        let (k, s) = self.locate(t);
+        let scale = 1.0 / (self.breaks[k + 1] - self.breaks[k]);
+        let jet = self.segments[k].eval_jet(s);
+        CurveJet {
+            point: jet.point,
+            d1: jet.d1 * scale,
+            d2: jet.d2 * (scale * scale),
+        }
+    }
+}
+
+/// A surface made of a grid of rational Bézier patches; patch (a, b) lives on
+/// `[u_breaks[a], u_breaks[a+1]] × [v_breaks[b], v_breaks[b+1]]` and is stored at index
+/// `a * (number of v intervals) + b`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PiecewiseSurface {
+    patches: Vec<RationalBezierPatch>,
+    u_breaks: Vec<f64>,
+    v_breaks: Vec<f64>,
+}
+
+impl PiecewiseSurface {
+    pub fn new(
+        patches: Vec<RationalBezierPatch>,
+        u_breaks: Vec<f64>,
+        v_breaks: Vec<f64>,
+    ) -> Result<Self> {
+        if u_breaks.len() < 2 || v_breaks.len() < 2 {
+            return invalid!("a surface needs at least two breakpoints in u and in v");
+        }
+        let (ku, kv) = (u_breaks.len() - 1, v_breaks.len() - 1);
+        if patches.len() != ku * kv {
+            return invalid!(
+                "a {ku} × {kv} grid of patches needs {} patches, got {}",
+                ku * kv,
+                patches.len()
+            );
+        }
+        check_breaks(&u_breaks, ku, "u breakpoints")?;
+        check_breaks(&v_breaks, kv, "v breakpoints")?;
+        Ok(Self {
+            patches,
+            u_breaks,
+            v_breaks,
+        })
+    }
+
+    pub fn patches(&self) -> &[RationalBezierPatch] {
+        &self.patches
+    }
+
+    /// Patch (a, b): a-th interval in u, b-th in v.
+    pub fn patch(&self, a: usize, b: usize) -> &RationalBezierPatch {
+        &self.patches[a * (self.v_breaks.len() - 1) + b]
+    }
+
+    pub fn u_breaks(&self) -> &[f64] {
+        &self.u_breaks
+    }
+
+    pub fn v_breaks(&self) -> &[f64] {
+        &self.v_breaks
+    }
+
+    pub fn domain_u(&self) -> (f64, f64) {
+        (self.u_breaks[0], self.u_breaks[self.u_breaks.len() - 1])
+    }
+
+    pub fn domain_v(&self) -> (f64, f64) {
+        (self.v_breaks[0], self.v_breaks[self.v_breaks.len() - 1])
+    }
+
+    pub fn eval(&self, u: f64, v: f64) -> DVec3 {
+        let (a, s) = locate(&self.u_breaks, u);
+        let (b, t) = locate(&self.v_breaks, v);
+        self.patch(a, b).eval(s, t)
+    }
+
+    /// Point and partial derivatives with respect to the global parameters.
+    pub fn eval_jet(&self, u: f64, v: f64) -> SurfaceJet {
+        let (a, s) = locate(&self.u_breaks, u);
+        let (b, t) = locate(&self.v_breaks, v);
+        let su = 1.0 / (self.u_breaks[a + 1] - self.u_breaks[a]);
+        let sv = 1.0 / (self.v_breaks[b + 1] - self.v_breaks[b]);
+        let j = self.patch(a, b).eval_jet(s, t);
+        SurfaceJet {
+            point: j.point,
+            du: j.du * su,
+            dv: j.dv * sv,
+            duu: j.duu * (su * su),
+            duv: j.duv * (su * sv),
+            dvv: j.dvv * (sv * sv),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn line(a: DVec3, b: DVec3) -> RationalBezierCurve {
+        RationalBezierCurve::polynomial(&[a, b]).unwrap()
+    }
+
+    #[test]
+    fn locates_segments_and_scales_derivatives() {
+        let c = PiecewiseCurve::new(
+            vec![
+                line(DVec3::ZERO, DVec3::X),
+                line(DVec3::X, DVec3::new(1.0, 2.0, 0.0)),
+            ],
+            vec![0.0, 0.5, 2.5],
+        )
+        .unwrap();
+        assert_eq!(c.locate(0.5), (1, 0.0));
+        assert_eq!(c.locate(2.5), (1, 1.0));
+        assert_eq!(c.locate(-1.0), (0, 0.0));
+        assert!((c.eval(1.5) - DVec3::new(1.0, 1.0, 0.0)).length() < 1e-15);
+        assert!((c.eval_jet(0.25).d1 - DVec3::new(2.0, 0.0, 0.0)).length() < 1e-15);
+        assert!((c.eval_jet(2.0).d1 - DVec3::new(0.0, 1.0, 0.0)).length() < 1e-15);
+    }
+
+    #[test]
+    fn rejects_bad_breakpoints() {
+        let seg = || line(DVec3::ZERO, DVec3::X);
+        assert!(PiecewiseCurve::new(vec![seg(), seg()], vec![0.0, 1.0]).is_err());
+        assert!(PiecewiseCurve::new(vec![seg()], vec![1.0, 1.0]).is_err());
+        assert!(PiecewiseCurve::new(vec![seg()], vec![0.0, f64::NAN]).is_err());
+        assert!(PiecewiseCurve::new(vec![], vec![0.0]).is_err());
+        assert!(check_in_domain(1.0 + 1e-14, (0.0, 1.0), "t").is_ok());
+        assert!(check_in_domain(1.1, (0.0, 1.0), "t").is_err());
+        assert!(check_in_domain(f64::NAN, (0.0, 1.0), "t").is_err());
+    }
+}

@@ -1,0 +1,237 @@
+//! The panic boundary and the checks every entry point applies to what C hands it.
+//!
+//! Each `extern "C"` function body runs inside [`guard`]: it returns `Ok(())` after writing
+//! its outputs, or an [`FfiError`]. `guard` catches panics (→ `RMF_ERROR_INTERNAL`), maps
+//! errors to status codes and records the message, prefixed with the function name, for
+//! `rmf_last_error`. Bodies compute everything first and write out-pointers last, so a
+//! failing call writes nothing.
+
+use super::status::{set_last_error, RmfStatus};
+use crate::error::Error;
+use std::panic::{catch_unwind, AssertUnwindSafe};
+
+/// Why an entry point failed, before mapping to a status code.
+#[derive(Debug)]
+pub(crate) enum FfiError {
+    /// A required pointer argument was NULL (its name).
+    Null(&'static str),
+    /// A caller buffer was too small (message says what is needed).
+    BufferTooSmall(String),
+    /// The geometry core refused the input.
+    Core(Error),
+}
+
+impl From<Error> for FfiError {
+    fn from(e: Error) -> Self {
+        FfiError::Core(e)
+    }
+}
+
+pub(crate) type FfiResult<T = ()> = Result<T, FfiError>;
+
+/// Shorthand for an invalid-input failure detected in the C layer.
+pub(crate) fn invalid_arg<T>(message: String) -> FfiResult<T> {
+    Err(FfiError::Core(Error::InvalidInput(message)))
+}
+
+/// Runs an entry point body: catches panics, maps errors to status codes and records the
+/// last-error message.
+pub(crate) fn guard(function: &str, body: impl FnOnce() -> FfiResult) -> RmfStatus {
+    let (status, message) = match catch_unwind(AssertUnwindSafe(body)) {
+        Ok(Ok(())) => return RmfStatus::RmfOk,
+        Ok(Err(FfiError::Null(name))) => {
+            (RmfStatus::RmfErrorNullPointer, format!("{name} is NULL"))
+        }
+        Ok(Err(FfiError::BufferTooSmall(m))) => (RmfStatus::RmfErrorBufferTooSmall, m),
+        Ok(Err(FfiError::Core(e))) => (RmfStatus::from(&e), e.message().to_string()),
+        Err(panic) => {
+            let what = panic
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| panic.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "unknown panic".to_string());
+            (
+                RmfStatus::RmfErrorInternal,
+                format!("internal error (please report): {what}"),
+            )
+        }
+    };
+    set_last_error(&format!("{function}: {message}"));
+    status
+}
+
+/// Runs a `*_free` body, swallowing any panic (a destructor cannot report failure).
+pub(crate) fn guard_free(body: impl FnOnce()) {
+    let _ = catch_unwind(AssertUnwindSafe(body));
+}
+
+fn check_aligned<T>(p: *const T, name: &'static str) -> FfiResult {
+    if (p as usize) % std::mem::align_of::<T>() != 0 {
+        return invalid_arg(format!("{name} is not suitably aligned"));
+    }
+    Ok(())
+}
+
+/// A shared reference from a non-NULL, aligned pointer.
+///
+/// # Safety
+/// `p` must be NULL or point to a valid `T` that outlives the call.
+pub(crate) unsafe fn reference<'a, T>(p: *const T, name: &'static str) -> FfiResult<&'a T> {
+    if p.is_null() {
+        return Err(FfiError::Null(name));
+    }
+    check_aligned(p, name)?;
+    Ok(&*p)
+}
+
+/// Checks an out-pointer (non-NULL, aligned) without writing it.
+pub(crate) fn out_ptr<T>(p: *mut T, name: &'static str) -> FfiResult<*mut T> {
+    if p.is_null() {
+        return Err(FfiError::Null(name));
+    }
+    check_aligned(p.cast_const(), name)?;
+    Ok(p)
+}
+
+/// Checks an optional out-pointer: NULL means "not wanted".
+pub(crate) fn optional_out<T>(p: *mut T, name: &'static str) -> FfiResult<Option<*mut T>> {
+    if p.is_null() {
+        Ok(None)
+    } else {
+        out_ptr(p, name).map(Some)
+    }
+}
+
+/// Writes `value` through an out-pointer checked by [`out_ptr`].
+///
+/// # Safety
+/// `p` must have passed [`out_ptr`] and point to writable memory for a `T`.
+pub(crate) unsafe fn write<T>(p: *mut T, value: T) {
+    p.write(value);
+}
+
+/// Largest element count accepted for any input array (keeps sizes far from overflow).
+const MAX_ITEMS: usize = 1 << 40;
+
+/// A slice from a pointer and a count. A count of zero accepts NULL.
+///
+/// # Safety
+/// If `count > 0`, `p` must point to `count` valid `T`s that outlive the call.
+pub(crate) unsafe fn slice<'a, T>(
+    p: *const T,
+    count: usize,
+    name: &'static str,
+) -> FfiResult<&'a [T]> {
+    if count == 0 {
+        return Ok(&[]);
+    }
+    if p.is_null() {
+        return Err(FfiError::Null(name));
+    }
+    check_aligned(p, name)?;
+    if count > MAX_ITEMS
+        || count
+            .checked_mul(std::mem::size_of::<T>())
+            .is_none_or(|b| b > isize::MAX as usize)
+    {
+        return invalid_arg(format!("{name}: count {count} is too large"));
+    }
+    Ok(std::slice::from_raw_parts(p, count))
+}
+
+/// A mutable slice for a caller buffer of `capacity` elements (NULL allowed when the
+/// capacity is zero).
+///
+/// # Safety
+/// If `capacity > 0`, `p` must point to `capacity` writable `T`s.
+pub(crate) unsafe fn buffer<'a, T>(
+    p: *mut T,
+    capacity: usize,
+    name: &'static str,
+) -> FfiResult<&'a mut [T]> {
+    if capacity == 0 {
+        return Ok(&mut []);
+    }
+    if p.is_null() {
+        return Err(FfiError::Null(name));
+    }
+    check_aligned(p.cast_const(), name)?;
+    if capacity > MAX_ITEMS
+        || capacity
+            .checked_mul(std::mem::size_of::<T>())
+            .is_none_or(|b| b > isize::MAX as usize)
+    {
+        return invalid_arg(format!("{name}: capacity {capacity} is too large"));
+    }
+    Ok(std::slice::from_raw_parts_mut(p, capacity))
+}
+
+/// `value` as usize from a C `uint32_t` degree or count (always fits on supported targets).
+pub(crate) fn to_usize(value: u32) -> usize {
+    value as usize
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ffi::status::rmf_last_error;
+    use std::ffi::CStr;
+
+    fn last_error() -> String {
+        unsafe { CStr::from_ptr(rmf_last_error()) }
+            .to_string_lossy()
+            .into_owned()
+    }
+
+    #[test]
+    fn panics_become_internal_errors_with_a_message() {
+        let status = guard("rmf_test_entry", || panic!("deliberate test panic"));
+        assert_eq!(status, RmfStatus::RmfErrorInternal);
+        let message = last_error();
+        assert!(
+            message.starts_with("rmf_test_entry: internal error"),
+            "{message}"
+        );
+        assert!(message.contains("deliberate test panic"));
+        guard_free(|| panic!("a panicking destructor is swallowed"));
+    }
+
+    #[test]
+    fn errors_map_to_their_status_codes() {
+        assert_eq!(
+            guard("f", || Err(FfiError::Null("curve"))),
+            RmfStatus::RmfErrorNullPointer
+        );
+        assert_eq!(last_error(), "f: curve is NULL");
+        let no_solution = guard("f", || Err(Error::NoSolution("no real root".into()).into()));
+        assert_eq!(no_solution, RmfStatus::RmfErrorNoSolution);
+        let not_converged = guard("f", || Err(Error::NotConverged("slow".into()).into()));
+        assert_eq!(not_converged, RmfStatus::RmfErrorNotConverged);
+        assert_eq!(
+            guard("f", || Err(FfiError::BufferTooSmall("need 3".into()))),
+            RmfStatus::RmfErrorBufferTooSmall
+        );
+        assert_eq!(guard("f", || Ok(())), RmfStatus::RmfOk);
+        assert_eq!(
+            last_error(),
+            "f: need 3",
+            "success leaves the last error alone"
+        );
+    }
+
+    #[test]
+    fn slices_reject_null_misaligned_and_huge_inputs() {
+        let data = [1.0f64, 2.0];
+        unsafe {
+            assert_eq!(slice(data.as_ptr(), 2, "x").unwrap(), &data);
+            assert!(slice::<f64>(std::ptr::null(), 0, "x").unwrap().is_empty());
+            assert!(matches!(
+                slice::<f64>(std::ptr::null(), 1, "x"),
+                Err(FfiError::Null("x"))
+            ));
+            let misaligned = (data.as_ptr() as *const u8).add(1) as *const f64;
+            assert!(slice(misaligned, 1, "x").is_err());
+            assert!(slice(data.as_ptr(), usize::MAX / 4, "x").is_err());
+        }
+    }
+}

@@ -1,0 +1,333 @@
+//! `RmfCurve`: a piecewise rational Bézier space curve (also a NURBS curve), with its
+//! NURBS and per-segment views.
+
+use super::boundary::{
+    buffer, guard, guard_free, optional_out, out_ptr, reference, slice, to_usize, write, FfiError,
+    FfiResult,
+};
+use super::status::RmfStatus;
+use super::types::{RmfBezierCurve, RmfNurbsCurve, RmfVec3};
+use crate::bezier::{check_in_domain, NurbsCurve, PiecewiseCurve};
+use crate::error::Result;
+use std::sync::{Arc, OnceLock};
+
+/// A piecewise rational Bézier space curve (opaque). Created by the rmf_* constructors,
+/// freed with rmf_curve_free. Immutable; may be read from several threads at once.
+pub struct RmfCurve {
+    pub(crate) curve: Arc<PiecewiseCurve>,
+    /// The caller's NURBS data when the curve was created from it: the NURBS view shows it
+    /// unchanged.
+    source: Option<NurbsCurve>,
+    views: OnceLock<Result<CurveViews>>,
+}
+
+/// C-layout copies of the curve's data, built on first request.
+struct CurveViews {
+    nurbs: NurbsCurve,
+    poles: Vec<RmfVec3>,
+    segments: Vec<(Vec<RmfVec3>, Vec<f64>)>,
+}
+
+impl RmfCurve {
+    /// A handle for a computed object (`source = None`) or for caller NURBS data.
+    pub(crate) fn new(curve: PiecewiseCurve, source: Option<NurbsCurve>) -> Self {
+        Self {
+            curve: Arc::new(curve),
+            source,
+            views: OnceLock::new(),
+        }
+    }
+
+    /// Moves the handle to the heap for C; the caller owns it.
+    pub(crate) fn into_raw(self) -> *mut Self {
+        Box::into_raw(Box::new(self))
+    }
+
+    fn views(&self) -> FfiResult<&CurveViews> {
+        let views = self.views.get_or_init(|| {
+            let nurbs = match &self.source {
+                Some(n) => n.clone(),
+                None => NurbsCurve::from_piecewise(&self.curve)?,
+            };
+            let poles = nurbs.poles.iter().map(|&p| p.into()).collect();
+            let segments = self
+                .curve
+                .segments()
+                .iter()
+                .map(|s| {
+                    (
+                        s.poles().map(RmfVec3::from).collect(),
+                        s.weights().collect(),
+                    )
+                })
+                .collect();
+            Ok(CurveViews {
+                nurbs,
+                poles,
+                segments,
+            })
+        });
+        views.as_ref().map_err(|e| FfiError::Core(e.clone()))
+    }
+}
+
+/// Creates a curve from NURBS data (poles, optional weights, clamped knot vector).
+///
+/// @param[in] degree Degree p, 1 ≤ p ≤ 64.
+/// @param[in] poles pole_count Cartesian poles (finite).
+/// @param[in] weights pole_count weights (finite, > 0), or NULL for all weights 1.
+/// @param[in] pole_count Number of poles, ≥ degree + 1.
+/// @param[in] knots knot_count knots: non-decreasing, clamped (first and last degree + 1
+///            knots equal), interior multiplicities ≤ degree, non-empty domain.
+/// @param[in] knot_count Must equal pole_count + degree + 1.
+/// @param[out] out Receives the new curve; the caller frees it with rmf_curve_free.
+///            Untouched on failure.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If poles, knots or out is NULL.
+/// @return RMF_ERROR_INVALID_INPUT If a count, degree, knot, weight or pole is invalid (the
+///         message names it).
+/// @return RMF_ERROR_INTERNAL On an internal error.
+#[no_mangle]
+pub unsafe extern "C" fn rmf_nurbs_curve_create(
+    degree: u32,
+    poles: *const RmfVec3,
+    weights: *const f64,
+    pole_count: usize,
+    knots: *const f64,
+    knot_count: usize,
+    out: *mut *mut RmfCurve,
+) -> RmfStatus {
+    guard("rmf_nurbs_curve_create", || {
+        let out = out_ptr(out, "out")?;
+        if poles.is_null() {
+            return Err(FfiError::Null("poles"));
+        }
+        if knots.is_null() {
+            return Err(FfiError::Null("knots"));
+        }
+        let poles = slice(poles, pole_count, "poles")?
+            .iter()
+            .map(|&p| p.into())
+            .collect();
+        let weights = if weights.is_null() {
+            None
+        } else {
+            Some(slice(weights, pole_count, "weights")?.to_vec())
+        };
+        let knots = slice(knots, knot_count, "knots")?.to_vec();
+        let nurbs = NurbsCurve::new(to_usize(degree), poles, weights, knots)?;
+        let curve = RmfCurve::new(nurbs.to_piecewise()?, Some(nurbs));
+        write(out, curve.into_raw());
+        Ok(())
+    })
+}
+
+/// Frees a curve. NULL is a no-op. Views obtained from the curve become invalid; frames and
+/// surfaces built from it stay valid (they keep their own reference).
+#[no_mangle]
+pub unsafe extern "C" fn rmf_curve_free(curve: *mut RmfCurve) {
+    guard_free(|| {
+        if !curve.is_null() {
+            drop(Box::from_raw(curve));
+        }
+    })
+}
+
+/// The parameter domain [t_min, t_max] of a curve.
+///
+/// @param[in] curve The curve.
+/// @param[out] t_min, t_max Receive the domain ends.
+/// @return RMF_OK, or RMF_ERROR_NULL_POINTER if any argument is NULL.
+#[no_mangle]
+pub unsafe extern "C" fn rmf_curve_domain(
+    curve: *const RmfCurve,
+    t_min: *mut f64,
+    t_max: *mut f64,
+) -> RmfStatus {
+    guard("rmf_curve_domain", || {
+        let curve = reference(curve, "curve")?;
+        let (t_min, t_max) = (out_ptr(t_min, "t_min")?, out_ptr(t_max, "t_max")?);
+        let (lo, hi) = curve.curve.domain();
+        write(t_min, lo);
+        write(t_max, hi);
+        Ok(())
+    })
+}
+
+/// Evaluates a curve and its first derivative.
+///
+/// @param[in] curve The curve.
+/// @param[in] t Parameter in the curve's domain (see rmf_curve_domain).
+/// @param[out] point Receives x(t).
+/// @param[out] derivative Receives x'(t); may be NULL if not wanted.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If curve or point is NULL.
+/// @return RMF_ERROR_INVALID_INPUT If t is not finite or outside the domain.
+#[no_mangle]
+pub unsafe extern "C" fn rmf_curve_eval(
+    curve: *const RmfCurve,
+    t: f64,
+    point: *mut RmfVec3,
+    derivative: *mut RmfVec3,
+) -> RmfStatus {
+    guard("rmf_curve_eval", || {
+        let curve = reference(curve, "curve")?;
+        let point = out_ptr(point, "point")?;
+        let derivative = optional_out(derivative, "derivative")?;
+        let t = check_in_domain(t, curve.curve.domain(), "t")?;
+        let jet = curve.curve.eval_jet(t);
+        write(point, jet.point.into());
+        if let Some(d) = derivative {
+            write(d, jet.d1.into());
+        }
+        Ok(())
+    })
+}
+
+/// Borrowed NURBS view of a curve: one clamped NURBS with full-multiplicity interior knots
+/// at segment joints (for a curve made by rmf_nurbs_curve_create: the data given).
+///
+/// @param[in] curve The curve.
+/// @param[out] view Receives pointers into memory owned by the curve: do not free them;
+///             valid until rmf_curve_free(curve).
+/// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if the segments do not
+///         join (cannot happen for curves made by this library).
+#[no_mangle]
+pub unsafe extern "C" fn rmf_curve_nurbs(
+    curve: *const RmfCurve,
+    view: *mut RmfNurbsCurve,
+) -> RmfStatus {
+    guard("rmf_curve_nurbs", || {
+        let curve = reference(curve, "curve")?;
+        let view = out_ptr(view, "view")?;
+        let v = curve.views()?;
+        write(
+            view,
+            RmfNurbsCurve {
+                degree: v.nurbs.degree as u32,
+                pole_count: v.poles.len(),
+                poles: v.poles.as_ptr(),
+                weights: v.nurbs.weights.as_ptr(),
+                knot_count: v.nurbs.knots.len(),
+                knots: v.nurbs.knots.as_ptr(),
+            },
+        );
+        Ok(())
+    })
+}
+
+/// Copies the NURBS data of a curve (as in rmf_curve_nurbs) into caller buffers.
+///
+/// Size query: with pole_capacity = knot_capacity = 0 (poles, weights, knots may then be
+/// NULL) only degree, pole_count and knot_count are written and RMF_OK is returned.
+///
+/// @param[in] curve The curve.
+/// @param[out] degree Receives the degree.
+/// @param[out] poles Buffer for pole_capacity poles.
+/// @param[out] weights Buffer for pole_capacity weights.
+/// @param[in] pole_capacity Capacity of poles and weights.
+/// @param[out] knots Buffer for knot_capacity knots.
+/// @param[in] knot_capacity Capacity of knots.
+/// @param[out] pole_count Receives the number of poles.
+/// @param[out] knot_count Receives the number of knots.
+/// @return RMF_OK on success or for a size query.
+/// @return RMF_ERROR_NULL_POINTER If curve, degree, pole_count or knot_count is NULL, or a
+///         buffer is NULL with a non-zero capacity.
+/// @return RMF_ERROR_BUFFER_TOO_SMALL If a capacity is non-zero but too small; then only
+///         degree, pole_count and knot_count are written.
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn rmf_curve_nurbs_copy(
+    curve: *const RmfCurve,
+    degree: *mut u32,
+    poles: *mut RmfVec3,
+    weights: *mut f64,
+    pole_capacity: usize,
+    knots: *mut f64,
+    knot_capacity: usize,
+    pole_count: *mut usize,
+    knot_count: *mut usize,
+) -> RmfStatus {
+    guard("rmf_curve_nurbs_copy", || {
+        let curve = reference(curve, "curve")?;
+        let (degree, pole_count, knot_count) = (
+            out_ptr(degree, "degree")?,
+            out_ptr(pole_count, "pole_count")?,
+            out_ptr(knot_count, "knot_count")?,
+        );
+        let poles = buffer(poles, pole_capacity, "poles")?;
+        let weights = buffer(weights, pole_capacity, "weights")?;
+        let knots = buffer(knots, knot_capacity, "knots")?;
+        let v = curve.views()?;
+        write(degree, v.nurbs.degree as u32);
+        write(pole_count, v.poles.len());
+        write(knot_count, v.nurbs.knots.len());
+        if pole_capacity == 0 && knot_capacity == 0 {
+            return Ok(());
+        }
+        if pole_capacity < v.poles.len() || knot_capacity < v.nurbs.knots.len() {
+            return Err(FfiError::BufferTooSmall(format!(
+                "need {} poles and {} knots, capacities are {pole_capacity} and {knot_capacity}",
+                v.poles.len(),
+                v.nurbs.knots.len()
+            )));
+        }
+        poles[..v.poles.len()].copy_from_slice(&v.poles);
+        weights[..v.poles.len()].copy_from_slice(&v.nurbs.weights);
+        knots[..v.nurbs.knots.len()].copy_from_slice(&v.nurbs.knots);
+        Ok(())
+    })
+}
+
+/// Number of rational Bézier segments of a curve.
+///
+/// @return RMF_OK, or RMF_ERROR_NULL_POINTER if curve or count is NULL.
+#[no_mangle]
+pub unsafe extern "C" fn rmf_curve_segment_count(
+    curve: *const RmfCurve,
+    count: *mut usize,
+) -> RmfStatus {
+    guard("rmf_curve_segment_count", || {
+        let curve = reference(curve, "curve")?;
+        let count = out_ptr(count, "count")?;
+        write(count, curve.curve.segments().len());
+        Ok(())
+    })
+}
+
+/// Borrowed view of segment `index` of a curve as a rational Bézier curve.
+///
+/// @param[in] curve The curve.
+/// @param[in] index 0 ≤ index < segment count.
+/// @param[out] view Receives pointers owned by the curve (valid until it is freed).
+/// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if index is out of range.
+#[no_mangle]
+pub unsafe extern "C" fn rmf_curve_segment(
+    curve: *const RmfCurve,
+    index: usize,
+    view: *mut RmfBezierCurve,
+) -> RmfStatus {
+    guard("rmf_curve_segment", || {
+        let curve = reference(curve, "curve")?;
+        let view = out_ptr(view, "view")?;
+        let v = curve.views()?;
+        let Some((poles, weights)) = v.segments.get(index) else {
+            return super::boundary::invalid_arg(format!(
+                "index = {index} but the curve has {} segments",
+                v.segments.len()
+            ));
+        };
+        let breaks = curve.curve.breaks();
+        write(
+            view,
+            RmfBezierCurve {
+                degree: (poles.len() - 1) as u32,
+                poles: poles.as_ptr(),
+                weights: weights.as_ptr(),
+                t_start: breaks[index],
+                t_end: breaks[index + 1],
+            },
+        );
+        Ok(())
+    })
+}

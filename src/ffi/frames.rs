@@ -1,0 +1,148 @@
+//! `RmfFrames`: an adapted frame (t, f₂, f₃) along a curve, sharing its parameter.
+
+use super::boundary::{guard, guard_free, out_ptr, reference, write};
+use super::curve::RmfCurve;
+use super::status::RmfStatus;
+use super::types::RmfVec3;
+use crate::bezier::check_in_domain;
+use crate::curve::uniform_parameters;
+use crate::frames::double_reflection::DoubleReflectionRmf;
+use crate::frames::{FrameField, FrameKind};
+
+/// Frames along a curve (opaque): exact rational frames, double-reflection samples, or
+/// pointwise Frenet frames. Freed with rmf_frames_free. Immutable; may be read from
+/// several threads at once. Keeps its own reference to the curve, so the curve handle may
+/// be freed first.
+pub struct RmfFrames {
+    pub(crate) field: FrameField,
+}
+
+impl RmfFrames {
+    /// A heap handle for C; the caller owns it.
+    pub(crate) fn into_raw(field: FrameField) -> *mut RmfFrames {
+        Box::into_raw(Box::new(Self { field }))
+    }
+}
+
+/// Frees frames. NULL is a no-op.
+#[no_mangle]
+pub unsafe extern "C" fn rmf_frames_free(frames: *mut RmfFrames) {
+    guard_free(|| {
+        if !frames.is_null() {
+            drop(Box::from_raw(frames));
+        }
+    })
+}
+
+/// The parameter domain of the frames (that of their curve).
+///
+/// @return RMF_OK, or RMF_ERROR_NULL_POINTER if any argument is NULL.
+#[no_mangle]
+pub unsafe extern "C" fn rmf_frames_domain(
+    frames: *const RmfFrames,
+    t_min: *mut f64,
+    t_max: *mut f64,
+) -> RmfStatus {
+    guard("rmf_frames_domain", || {
+        let frames = reference(frames, "frames")?;
+        let (t_min, t_max) = (out_ptr(t_min, "t_min")?, out_ptr(t_max, "t_max")?);
+        let (lo, hi) = frames.field.domain();
+        write(t_min, lo);
+        write(t_max, hi);
+        Ok(())
+    })
+}
+
+/// Evaluates the frame at a curve parameter.
+///
+/// @param[in] frames The frames.
+/// @param[in] t Parameter in the domain of the frames' curve.
+/// @param[out] tangent Receives the unit tangent t.
+/// @param[out] f2 Receives the first normal-plane vector.
+/// @param[out] f3 Receives t × f2.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If any argument is NULL.
+/// @return RMF_ERROR_INVALID_INPUT If t is not finite or outside the domain, or the frame is
+///         undefined there (Frenet frames where the curvature vanishes; a singular curve).
+#[no_mangle]
+pub unsafe extern "C" fn rmf_frames_eval(
+    frames: *const RmfFrames,
+    t: f64,
+    tangent: *mut RmfVec3,
+    f2: *mut RmfVec3,
+    f3: *mut RmfVec3,
+) -> RmfStatus {
+    guard("rmf_frames_eval", || {
+        let frames = reference(frames, "frames")?;
+        let (tangent, f2, f3) = (
+            out_ptr(tangent, "tangent")?,
+            out_ptr(f2, "f2")?,
+            out_ptr(f3, "f3")?,
+        );
+        let t = check_in_domain(t, frames.field.domain(), "t")?;
+        let frame = frames.field.frame(t)?;
+        write(tangent, frame.tangent.into());
+        write(f2, frame.f2.into());
+        write(f3, frame.f3.into());
+        Ok(())
+    })
+}
+
+/// The double-reflection rotation-minimizing frame (Wang, Jüttler, Zheng & Liu 2008) of any
+/// curve: sample_count samples at uniform parameters over the domain; between samples,
+/// rmf_frames_eval applies one reflection step from the sample below to the exact point and
+/// tangent. This is the reference RMF and benchmark baseline of the library.
+///
+/// @param[in] curve The curve (regular: non-zero derivative at the samples).
+/// @param[in] initial_normal Projected onto the normal plane at the start and normalized to
+///            give f2 there; f3 = t × f2.
+/// @param[in] sample_count Number of samples, ≥ 2.
+/// @param[out] out Receives the frames; free with rmf_frames_free. Untouched on failure.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If curve or out is NULL.
+/// @return RMF_ERROR_INVALID_INPUT If sample_count < 2, initial_normal is not finite, zero or
+///         tangent to the curve, or the curve is singular at a sample.
+#[no_mangle]
+pub unsafe extern "C" fn rmf_double_reflection_frames(
+    curve: *const RmfCurve,
+    initial_normal: RmfVec3,
+    sample_count: usize,
+    out: *mut *mut RmfFrames,
+) -> RmfStatus {
+    guard("rmf_double_reflection_frames", || {
+        let curve = reference(curve, "curve")?;
+        let out = out_ptr(out, "out")?;
+        if sample_count < 2 {
+            return super::boundary::invalid_arg(format!(
+                "sample_count = {sample_count} must be at least 2"
+            ));
+        }
+        let params = uniform_parameters(curve.curve.domain(), sample_count);
+        let rmf = DoubleReflectionRmf::along(curve.curve.as_ref(), params, initial_normal.into())?;
+        let field = FrameField::new(curve.curve.clone(), FrameKind::DoubleReflection(rmf))?;
+        write(out, RmfFrames::into_raw(field));
+        Ok(())
+    })
+}
+
+/// The Frenet frame (t, n, b) of any curve, as f2 = n and f3 = b, evaluated pointwise from
+/// the curve's derivatives. Undefined (rmf_frames_eval fails) where the curvature vanishes.
+/// For PH cubic splines, rmf_ph_frenet_frames gives the same frame as exact rational
+/// functions.
+///
+/// @param[in] curve The curve.
+/// @param[out] out Receives the frames; free with rmf_frames_free.
+/// @return RMF_OK, or RMF_ERROR_NULL_POINTER if curve or out is NULL.
+#[no_mangle]
+pub unsafe extern "C" fn rmf_frenet_frames(
+    curve: *const RmfCurve,
+    out: *mut *mut RmfFrames,
+) -> RmfStatus {
+    guard("rmf_frenet_frames", || {
+        let curve = reference(curve, "curve")?;
+        let out = out_ptr(out, "out")?;
+        let field = FrameField::new(curve.curve.clone(), FrameKind::Frenet)?;
+        write(out, RmfFrames::into_raw(field));
+        Ok(())
+    })
+}

@@ -1,0 +1,26 @@
+//! The C API: the only place that knows about C. Everything here is thin: check pointers
+//! and counts, convert to core types, call the geometry inside the panic boundary
+//! (`boundary::guard`), map `Result` to `RmfStatus`, and write out-pointers last.
+//!
+//! One module per C type: [`curve`] (`RmfCurve`), [`frames`] (`RmfFrames`), [`surface`]
+//! (`RmfSurface`); [`status`] holds the status codes, last error and version; [`types`]
+//! the plain data structs and borrowed views. The header `include/rmfsurf.h` is generated
+//! from these modules by cbindgen.
+
+// The safety contract of every `unsafe extern "C"` entry point is its C contract, written
+// in its doc comment (and the header): each pointer is NULL or valid for the access
+// described, handles come from this library and are not used after being freed.
+#![allow(clippy::missing_safety_doc)]
+
+mod boundary;
+pub mod curve;
+pub mod frames;
+pub mod status;
+pub mod surface;
+pub mod types;
+
+pub use curve::RmfCurve;
+pub use frames::RmfFrames;
+pub use status::RmfStatus;
+pub use surface::RmfSurface;
+pub use types::{RmfBezierCurve, RmfBezierPatch, RmfNurbsCurve, RmfNurbsSurface, RmfVec3};

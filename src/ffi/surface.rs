@@ -1,0 +1,469 @@
+//! `RmfSurface`: a piecewise tensor-product rational Bézier surface (also a NURBS surface),
+//! with its NURBS and per-patch views and a tessellator.
+
+use super::boundary::{
+    buffer, guard, guard_free, invalid_arg, optional_out, out_ptr, reference, slice, to_usize,
+    write, FfiError, FfiResult,
+};
+use super::status::RmfStatus;
+use super::types::{RmfBezierPatch, RmfNurbsSurface, RmfVec3};
+use crate::bezier::homogeneous::project;
+use crate::bezier::{check_in_domain, NurbsSurface, PiecewiseSurface};
+use crate::error::Result;
+use crate::mesh::{mesh_size, tessellate};
+use std::sync::{Arc, OnceLock};
+
+/// A piecewise rational tensor-product surface s(u, v) (opaque). Freed with
+/// rmf_surface_free. Immutable; may be read from several threads at once.
+pub struct RmfSurface {
+    pub(crate) surface: Arc<PiecewiseSurface>,
+    /// The caller's NURBS data when created from it: the NURBS view shows it unchanged.
+    source: Option<NurbsSurface>,
+    views: OnceLock<Result<SurfaceViews>>,
+}
+
+/// C-layout copies of the surface's data, built on first request.
+struct SurfaceViews {
+    nurbs: NurbsSurface,
+    poles: Vec<RmfVec3>,
+    patches: Vec<(Vec<RmfVec3>, Vec<f64>)>,
+}
+
+impl RmfSurface {
+    /// A handle for a computed object (`source = None`) or for caller NURBS data.
+    pub(crate) fn new(surface: PiecewiseSurface, source: Option<NurbsSurface>) -> Self {
+        Self {
+            surface: Arc::new(surface),
+            source,
+            views: OnceLock::new(),
+        }
+    }
+
+    /// Moves the handle to the heap for C; the caller owns it.
+    pub(crate) fn into_raw(self) -> *mut Self {
+        Box::into_raw(Box::new(self))
+    }
+
+    fn views(&self) -> FfiResult<&SurfaceViews> {
+        let views = self.views.get_or_init(|| {
+            let nurbs = match &self.source {
+                Some(n) => n.clone(),
+                None => NurbsSurface::from_piecewise(&self.surface)?,
+            };
+            let poles = nurbs.poles.iter().map(|&p| p.into()).collect();
+            let patches = self
+                .surface
+                .patches()
+                .iter()
+                .map(|p| {
+                    (
+                        p.homogeneous().iter().map(|&h| project(h).into()).collect(),
+                        p.homogeneous().iter().map(|h| h.w).collect(),
+                    )
+                })
+                .collect();
+            Ok(SurfaceViews {
+                nurbs,
+                poles,
+                patches,
+            })
+        });
+        views.as_ref().map_err(|e| FfiError::Core(e.clone()))
+    }
+}
+
+/// Creates a surface from NURBS data.
+///
+/// @param[in] degree_u, degree_v Degrees, each in 1..=64.
+/// @param[in] poles pole_count_u * pole_count_v Cartesian poles, index i * pole_count_v + j
+///            with i along u.
+/// @param[in] weights Weights in the same order (finite, > 0), or NULL for all 1.
+/// @param[in] pole_count_u, pole_count_v Pole counts, each ≥ its degree + 1.
+/// @param[in] knots_u, knot_count_u Clamped knot vector in u, knot_count_u = pole_count_u + degree_u + 1.
+/// @param[in] knots_v, knot_count_v Clamped knot vector in v, likewise.
+/// @param[out] out Receives the surface; free with rmf_surface_free. Untouched on failure.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If poles, knots_u, knots_v or out is NULL.
+/// @return RMF_ERROR_INVALID_INPUT If a count, degree, knot, weight or pole is invalid (the
+///         message names it).
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn rmf_nurbs_surface_create(
+    degree_u: u32,
+    degree_v: u32,
+    poles: *const RmfVec3,
+    weights: *const f64,
+    pole_count_u: usize,
+    pole_count_v: usize,
+    knots_u: *const f64,
+    knot_count_u: usize,
+    knots_v: *const f64,
+    knot_count_v: usize,
+    out: *mut *mut RmfSurface,
+) -> RmfStatus {
+    guard("rmf_nurbs_surface_create", || {
+        let out = out_ptr(out, "out")?;
+        for (p, name) in [
+            (poles.cast::<u8>(), "poles"),
+            (knots_u.cast(), "knots_u"),
+            (knots_v.cast(), "knots_v"),
+        ] {
+            if p.is_null() {
+                return Err(FfiError::Null(name));
+            }
+        }
+        let Some(count) = pole_count_u.checked_mul(pole_count_v) else {
+            return invalid_arg(format!(
+                "pole_count_u × pole_count_v = {pole_count_u} × {pole_count_v} overflows"
+            ));
+        };
+        let poles = slice(poles, count, "poles")?
+            .iter()
+            .map(|&p| p.into())
+            .collect();
+        let weights = if weights.is_null() {
+            None
+        } else {
+            Some(slice(weights, count, "weights")?.to_vec())
+        };
+        let knots_u = slice(knots_u, knot_count_u, "knots_u")?.to_vec();
+        let knots_v = slice(knots_v, knot_count_v, "knots_v")?.to_vec();
+        let nurbs = NurbsSurface::new(
+            to_usize(degree_u),
+            to_usize(degree_v),
+            pole_count_u,
+            pole_count_v,
+            poles,
+            weights,
+            knots_u,
+            knots_v,
+        )?;
+        let surface = RmfSurface::new(nurbs.to_piecewise()?, Some(nurbs));
+        write(out, surface.into_raw());
+        Ok(())
+    })
+}
+
+/// Frees a surface. NULL is a no-op.
+#[no_mangle]
+pub unsafe extern "C" fn rmf_surface_free(surface: *mut RmfSurface) {
+    guard_free(|| {
+        if !surface.is_null() {
+            drop(Box::from_raw(surface));
+        }
+    })
+}
+
+/// The parameter domain [u_min, u_max] × [v_min, v_max] of a surface.
+///
+/// @return RMF_OK, or RMF_ERROR_NULL_POINTER if any argument is NULL.
+#[no_mangle]
+pub unsafe extern "C" fn rmf_surface_domain(
+    surface: *const RmfSurface,
+    u_min: *mut f64,
+    u_max: *mut f64,
+    v_min: *mut f64,
+    v_max: *mut f64,
+) -> RmfStatus {
+    guard("rmf_surface_domain", || {
+        let surface = reference(surface, "surface")?;
+        let outs = [
+            out_ptr(u_min, "u_min")?,
+            out_ptr(u_max, "u_max")?,
+            out_ptr(v_min, "v_min")?,
+            out_ptr(v_max, "v_max")?,
+        ];
+        let ((a, b), (c, d)) = (surface.surface.domain_u(), surface.surface.domain_v());
+        for (p, value) in outs.into_iter().zip([a, b, c, d]) {
+            write(p, value);
+        }
+        Ok(())
+    })
+}
+
+/// Evaluates a surface and its first partial derivatives.
+///
+/// @param[in] surface The surface.
+/// @param[in] u, v Parameters inside the domain.
+/// @param[out] point Receives s(u, v).
+/// @param[out] du Receives ∂s/∂u; may be NULL.
+/// @param[out] dv Receives ∂s/∂v; may be NULL.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If surface or point is NULL.
+/// @return RMF_ERROR_INVALID_INPUT If u or v is not finite or outside the domain.
+#[no_mangle]
+pub unsafe extern "C" fn rmf_surface_eval(
+    surface: *const RmfSurface,
+    u: f64,
+    v: f64,
+    point: *mut RmfVec3,
+    du: *mut RmfVec3,
+    dv: *mut RmfVec3,
+) -> RmfStatus {
+    guard("rmf_surface_eval", || {
+        let surface = reference(surface, "surface")?;
+        let point = out_ptr(point, "point")?;
+        let (du, dv) = (optional_out(du, "du")?, optional_out(dv, "dv")?);
+        let u = check_in_domain(u, surface.surface.domain_u(), "u")?;
+        let v = check_in_domain(v, surface.surface.domain_v(), "v")?;
+        let jet = surface.surface.eval_jet(u, v);
+        write(point, jet.point.into());
+        if let Some(p) = du {
+            write(p, jet.du.into());
+        }
+        if let Some(p) = dv {
+            write(p, jet.dv.into());
+        }
+        Ok(())
+    })
+}
+
+/// Borrowed NURBS view of a surface: one clamped NURBS with full-multiplicity interior
+/// knots at patch boundaries (for a surface made by rmf_nurbs_surface_create: the data given).
+///
+/// @param[out] view Receives pointers owned by the surface: do not free them; valid until
+///             rmf_surface_free(surface).
+/// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if the patches do not
+///         join (cannot happen for surfaces made by this library).
+#[no_mangle]
+pub unsafe extern "C" fn rmf_surface_nurbs(
+    surface: *const RmfSurface,
+    view: *mut RmfNurbsSurface,
+) -> RmfStatus {
+    guard("rmf_surface_nurbs", || {
+        let surface = reference(surface, "surface")?;
+        let view = out_ptr(view, "view")?;
+        let v = surface.views()?;
+        let n = &v.nurbs;
+        write(
+            view,
+            RmfNurbsSurface {
+                degree_u: n.degree_u as u32,
+                degree_v: n.degree_v as u32,
+                pole_count_u: n.pole_count_u,
+                pole_count_v: n.pole_count_v,
+                poles: v.poles.as_ptr(),
+                weights: n.weights.as_ptr(),
+                knot_count_u: n.knots_u.len(),
+                knots_u: n.knots_u.as_ptr(),
+                knot_count_v: n.knots_v.len(),
+                knots_v: n.knots_v.as_ptr(),
+            },
+        );
+        Ok(())
+    })
+}
+
+/// Copies the NURBS data of a surface (as in rmf_surface_nurbs) into caller buffers.
+///
+/// Size query: with pole_capacity = knot_capacity_u = knot_capacity_v = 0 (buffers may then
+/// be NULL) only the degrees and counts are written and RMF_OK is returned.
+///
+/// @param[out] degree_u, degree_v Receive the degrees.
+/// @param[out] poles, weights Buffers for pole_capacity poles and weights (index i * pole_count_v + j).
+/// @param[out] knots_u, knots_v Buffers for knot_capacity_u and knot_capacity_v knots.
+/// @param[out] pole_count_u, pole_count_v, knot_count_u, knot_count_v Receive the counts.
+/// @return RMF_OK on success or for a size query.
+/// @return RMF_ERROR_NULL_POINTER If surface, a degree or a count pointer is NULL, or a
+///         buffer is NULL with a non-zero capacity.
+/// @return RMF_ERROR_BUFFER_TOO_SMALL If a capacity is too small; then only the degrees and
+///         counts are written.
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn rmf_surface_nurbs_copy(
+    surface: *const RmfSurface,
+    degree_u: *mut u32,
+    degree_v: *mut u32,
+    poles: *mut RmfVec3,
+    weights: *mut f64,
+    pole_capacity: usize,
+    knots_u: *mut f64,
+    knot_capacity_u: usize,
+    knots_v: *mut f64,
+    knot_capacity_v: usize,
+    pole_count_u: *mut usize,
+    pole_count_v: *mut usize,
+    knot_count_u: *mut usize,
+    knot_count_v: *mut usize,
+) -> RmfStatus {
+    guard("rmf_surface_nurbs_copy", || {
+        let surface = reference(surface, "surface")?;
+        let (degree_u, degree_v) = (
+            out_ptr(degree_u, "degree_u")?,
+            out_ptr(degree_v, "degree_v")?,
+        );
+        let counts = [
+            out_ptr(pole_count_u, "pole_count_u")?,
+            out_ptr(pole_count_v, "pole_count_v")?,
+            out_ptr(knot_count_u, "knot_count_u")?,
+            out_ptr(knot_count_v, "knot_count_v")?,
+        ];
+        let poles = buffer(poles, pole_capacity, "poles")?;
+        let weights = buffer(weights, pole_capacity, "weights")?;
+        let knots_u = buffer(knots_u, knot_capacity_u, "knots_u")?;
+        let knots_v = buffer(knots_v, knot_capacity_v, "knots_v")?;
+        let v = surface.views()?;
+        let n = &v.nurbs;
+        write(degree_u, n.degree_u as u32);
+        write(degree_v, n.degree_v as u32);
+        for (p, value) in counts.into_iter().zip([
+            n.pole_count_u,
+            n.pole_count_v,
+            n.knots_u.len(),
+            n.knots_v.len(),
+        ]) {
+            write(p, value);
+        }
+        if pole_capacity == 0 && knot_capacity_u == 0 && knot_capacity_v == 0 {
+            return Ok(());
+        }
+        if pole_capacity < v.poles.len()
+            || knot_capacity_u < n.knots_u.len()
+            || knot_capacity_v < n.knots_v.len()
+        {
+            return Err(FfiError::BufferTooSmall(format!(
+                "need {} poles, {} u knots and {} v knots",
+                v.poles.len(),
+                n.knots_u.len(),
+                n.knots_v.len()
+            )));
+        }
+        poles[..v.poles.len()].copy_from_slice(&v.poles);
+        weights[..v.poles.len()].copy_from_slice(&n.weights);
+        knots_u[..n.knots_u.len()].copy_from_slice(&n.knots_u);
+        knots_v[..n.knots_v.len()].copy_from_slice(&n.knots_v);
+        Ok(())
+    })
+}
+
+/// Numbers of Bézier patches of a surface along u and along v.
+///
+/// @return RMF_OK, or RMF_ERROR_NULL_POINTER if any argument is NULL.
+#[no_mangle]
+pub unsafe extern "C" fn rmf_surface_patch_count(
+    surface: *const RmfSurface,
+    count_u: *mut usize,
+    count_v: *mut usize,
+) -> RmfStatus {
+    guard("rmf_surface_patch_count", || {
+        let surface = reference(surface, "surface")?;
+        let (count_u, count_v) = (out_ptr(count_u, "count_u")?, out_ptr(count_v, "count_v")?);
+        write(count_u, surface.surface.u_breaks().len() - 1);
+        write(count_v, surface.surface.v_breaks().len() - 1);
+        Ok(())
+    })
+}
+
+/// Borrowed view of patch (index_u, index_v) of a surface as a rational Bézier patch.
+///
+/// @param[out] view Receives pointers owned by the surface (valid until it is freed).
+/// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if an index is out of range.
+#[no_mangle]
+pub unsafe extern "C" fn rmf_surface_patch(
+    surface: *const RmfSurface,
+    index_u: usize,
+    index_v: usize,
+    view: *mut RmfBezierPatch,
+) -> RmfStatus {
+    guard("rmf_surface_patch", || {
+        let surface = reference(surface, "surface")?;
+        let view = out_ptr(view, "view")?;
+        let s = &surface.surface;
+        let (ku, kv) = (s.u_breaks().len() - 1, s.v_breaks().len() - 1);
+        if index_u >= ku || index_v >= kv {
+            return invalid_arg(format!(
+                "patch ({index_u}, {index_v}) is outside the {ku} × {kv} grid"
+            ));
+        }
+        let v = surface.views()?;
+        let (poles, weights) = &v.patches[index_u * kv + index_v];
+        let patch = s.patch(index_u, index_v);
+        write(
+            view,
+            RmfBezierPatch {
+                degree_u: patch.degree_u() as u32,
+                degree_v: patch.degree_v() as u32,
+                poles: poles.as_ptr(),
+                weights: weights.as_ptr(),
+                u_start: s.u_breaks()[index_u],
+                u_end: s.u_breaks()[index_u + 1],
+                v_start: s.v_breaks()[index_v],
+                v_end: s.v_breaks()[index_v + 1],
+            },
+        );
+        Ok(())
+    })
+}
+
+/// Tessellates a surface: every Bézier patch is sampled on a (u_steps + 1) × (v_steps + 1)
+/// grid of its own parameters (so patch boundaries are mesh lines and shared vertices are
+/// shared), two triangles per grid cell, counter-clockwise seen from the side ∂s/∂u × ∂s/∂v
+/// points to. Point (i, j) of the global grid is at index i * columns + j, i along u.
+///
+/// Size query: with point_capacity = triangle_capacity = 0 (points and triangles may then be
+/// NULL) only point_count and triangle_count are written and RMF_OK is returned.
+///
+/// @param[in] surface The surface.
+/// @param[in] u_steps, v_steps Subdivisions per patch, each ≥ 1.
+/// @param[out] points Buffer for point_capacity points.
+/// @param[in] point_capacity Capacity of points (in points).
+/// @param[out] triangles Buffer for triangle_capacity triangles of 3 vertex indices each
+///             (3 * triangle_capacity uint32_t).
+/// @param[in] triangle_capacity Capacity of triangles (in triangles).
+/// @param[out] point_count Receives the number of points.
+/// @param[out] triangle_count Receives the number of triangles.
+/// @return RMF_OK on success or for a size query.
+/// @return RMF_ERROR_NULL_POINTER If surface or a count pointer is NULL, or a buffer is NULL
+///         with a non-zero capacity.
+/// @return RMF_ERROR_INVALID_INPUT If u_steps or v_steps is 0 or the mesh would exceed
+///         50,000,000 points.
+/// @return RMF_ERROR_BUFFER_TOO_SMALL If a capacity is too small; then only the counts are
+///         written.
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn rmf_surface_tessellate(
+    surface: *const RmfSurface,
+    u_steps: u32,
+    v_steps: u32,
+    points: *mut RmfVec3,
+    point_capacity: usize,
+    triangles: *mut u32,
+    triangle_capacity: usize,
+    point_count: *mut usize,
+    triangle_count: *mut usize,
+) -> RmfStatus {
+    guard("rmf_surface_tessellate", || {
+        let surface = reference(surface, "surface")?;
+        let (point_count, triangle_count) = (
+            out_ptr(point_count, "point_count")?,
+            out_ptr(triangle_count, "triangle_count")?,
+        );
+        let points = buffer(points, point_capacity, "points")?;
+        let Some(index_capacity) = triangle_capacity.checked_mul(3) else {
+            return invalid_arg(format!(
+                "triangle_capacity = {triangle_capacity} is too large"
+            ));
+        };
+        let triangles = buffer(triangles, index_capacity, "triangles")?;
+        let (u_steps, v_steps) = (to_usize(u_steps), to_usize(v_steps));
+        let (n_points, n_triangles) = mesh_size(&surface.surface, u_steps, v_steps)?;
+        write(point_count, n_points);
+        write(triangle_count, n_triangles);
+        if point_capacity == 0 && triangle_capacity == 0 {
+            return Ok(());
+        }
+        if point_capacity < n_points || triangle_capacity < n_triangles {
+            return Err(FfiError::BufferTooSmall(format!(
+                "need {n_points} points and {n_triangles} triangles"
+            )));
+        }
+        let mesh = tessellate(&surface.surface, u_steps, v_steps)?;
+        for (dst, &p) in points.iter_mut().zip(&mesh.points) {
+            *dst = p.into();
+        }
+        for (dst, &index) in triangles.iter_mut().zip(mesh.triangles.iter().flatten()) {
+            *dst = index;
+        }
+        Ok(())
+    })
+}

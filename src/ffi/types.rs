@@ -1,0 +1,104 @@
+//! Plain data exchanged with C: vectors and borrowed views of NURBS and Bézier data.
+
+use glam::DVec3;
+
+/// A point or vector in 3-space.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct RmfVec3 {
+    pub x: f64,
+    pub y: f64,
+    pub z: f64,
+}
+
+impl From<DVec3> for RmfVec3 {
+    fn from(v: DVec3) -> Self {
+        Self {
+            x: v.x,
+            y: v.y,
+            z: v.z,
+        }
+    }
+}
+
+impl From<RmfVec3> for DVec3 {
+    fn from(v: RmfVec3) -> Self {
+        DVec3::new(v.x, v.y, v.z)
+    }
+}
+
+/// Borrowed view of a NURBS curve, the layout of OpenCascade Geom_BSplineCurve, FreeCAD
+/// Part.BSplineCurve, IGES 126 and STEP (with knots listed one by one, not with
+/// multiplicities).
+///
+/// The arrays are owned by the curve handle: do not free them; they stay valid until the
+/// handle is freed.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct RmfNurbsCurve {
+    /// Polynomial degree p ≥ 1.
+    pub degree: u32,
+    /// Number of poles n ≥ p + 1.
+    pub pole_count: usize,
+    /// pole_count Cartesian poles.
+    pub poles: *const RmfVec3,
+    /// pole_count weights, all > 0.
+    pub weights: *const f64,
+    /// pole_count + degree + 1.
+    pub knot_count: usize,
+    /// Clamped, non-decreasing knot vector; curves built by the library have interior knots
+    /// of full multiplicity p at segment joints.
+    pub knots: *const f64,
+}
+
+/// Borrowed view of a NURBS surface. Pole (i, j) is at index `i * pole_count_v + j`, i along
+/// u; the arrays are owned by the surface handle (do not free; valid until it is freed).
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct RmfNurbsSurface {
+    pub degree_u: u32,
+    pub degree_v: u32,
+    pub pole_count_u: usize,
+    pub pole_count_v: usize,
+    /// pole_count_u * pole_count_v Cartesian poles, index i * pole_count_v + j.
+    pub poles: *const RmfVec3,
+    /// Weights in the same order, all > 0.
+    pub weights: *const f64,
+    /// pole_count_u + degree_u + 1.
+    pub knot_count_u: usize,
+    pub knots_u: *const f64,
+    /// pole_count_v + degree_v + 1.
+    pub knot_count_v: usize,
+    pub knots_v: *const f64,
+}
+
+/// Borrowed view of one rational Bézier segment of a curve: degree + 1 poles and weights
+/// for the parameter interval [t_start, t_end] of the curve (the Bernstein basis runs over
+/// that interval). Owned by the curve handle.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct RmfBezierCurve {
+    pub degree: u32,
+    /// degree + 1 Cartesian poles.
+    pub poles: *const RmfVec3,
+    /// degree + 1 weights, all > 0.
+    pub weights: *const f64,
+    pub t_start: f64,
+    pub t_end: f64,
+}
+
+/// Borrowed view of one rational tensor-product Bézier patch of a surface:
+/// (degree_u + 1) * (degree_v + 1) poles, index `i * (degree_v + 1) + j`, on
+/// [u_start, u_end] × [v_start, v_end]. Owned by the surface handle.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct RmfBezierPatch {
+    pub degree_u: u32,
+    pub degree_v: u32,
+    pub poles: *const RmfVec3,
+    pub weights: *const f64,
+    pub u_start: f64,
+    pub u_end: f64,
+    pub v_start: f64,
+    pub v_end: f64,
+}

@@ -1,0 +1,43 @@
+//! The Frenet–Serret frame (t, n, b) of a curve from x' and x'' (Mäurer & Jüttler, eq. (3)):
+//! t = x'/|x'|, b = x' × x'' / |x' × x''|, n = b × t. As an adapted frame, f₂ = n, f₃ = b.
+
+use super::Frame;
+use glam::DVec3;
+
+/// Relative size of |x' × x''| (against |x'|·|x''|) below which the curvature counts as
+/// zero and the Frenet frame as undefined.
+const FLAT_TOLERANCE: f64 = 1e-12;
+
+/// The Frenet frame, or `None` where the curve is singular or has zero curvature.
+pub fn frenet_frame(d1: DVec3, d2: DVec3) -> Option<Frame> {
+    let b = d1.cross(d2);
+    let b_len = b.length();
+    let scale = d1.length() * d2.length();
+    if !b_len.is_finite() || b_len <= FLAT_TOLERANCE * scale {
+        return None;
+    }
+    let t = d1.normalize();
+    let b = b / b_len;
+    Some(Frame {
+        tangent: t,
+        f2: b.cross(t),
+        f3: b,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn frenet_frame_of_a_helix() {
+        // x(t) = (cos t, sin t, t): n = (−cos t, −sin t, 0), b = (sin t, −cos t, 1)/√2.
+        let t = 0.7f64;
+        let d1 = DVec3::new(-t.sin(), t.cos(), 1.0);
+        let d2 = DVec3::new(-t.cos(), -t.sin(), 0.0);
+        let f = frenet_frame(d1, d2).unwrap();
+        assert!((f.f2 - DVec3::new(-t.cos(), -t.sin(), 0.0)).length() < 1e-15);
+        assert!((f.f3 - DVec3::new(t.sin(), -t.cos(), 1.0) / 2f64.sqrt()).length() < 1e-15);
+        assert!(frenet_frame(DVec3::X, DVec3::X * 3.0).is_none());
+    }
+}

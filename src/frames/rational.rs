@@ -1,0 +1,212 @@
+//! Frames given exactly as piecewise rational functions: on each segment
+//! f₂ = N₂(s)/d(s) and f₃ = N₃(s)/d(s) with vector polynomials N₂, N₃ and one positive
+//! scalar polynomial d, all in Bernstein form on the local parameter s ∈ [0, 1].
+//!
+//! Every RMF construction of the papers ends in this form: the PH-cubic frame (29) with
+//! W(v) (Mäurer & Jüttler), the Möbius image (18) of a planar frame (Bartoň, Jüttler &
+//! Wang), and the RRMF frame (9) (Farouki, Giannelli & Sestini). The common denominator is
+//! what makes the sweep `x + c₂ f₂ + c₃ f₃` a rational tensor-product surface. The tangent
+//! is f₂ × f₃, exact because the pair is orthonormal in the normal plane.
+
+use super::Frame;
+use crate::bezier::bernstein::{self, MAX_DEGREE};
+use crate::bezier::{check_breaks, RationalBezierCurve};
+use crate::error::{invalid, Result};
+use glam::DVec3;
+
+/// Which frame vector.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FrameVector {
+    Tangent,
+    F2,
+    F3,
+}
+
+/// One segment: `f₂ = f2 / denominator`, `f₃ = f3 / denominator` (Bernstein coefficients).
+#[derive(Clone, Debug, PartialEq)]
+pub struct RationalFrameSegment {
+    f2: Vec<DVec3>,
+    f3: Vec<DVec3>,
+    denominator: Vec<f64>,
+}
+
+impl RationalFrameSegment {
+    /// Numerators and denominator of one degree; the denominator's coefficients must be
+    /// positive (so the frame vectors are rational Bézier curves with positive weights).
+    pub fn new(f2: Vec<DVec3>, f3: Vec<DVec3>, denominator: Vec<f64>) -> Result<Self> {
+        let n = denominator.len();
+        if n == 0 || n > MAX_DEGREE + 1 || f2.len() != n || f3.len() != n {
+            return invalid!(
+                "frame numerators and denominator must have one degree in 0..={MAX_DEGREE}"
+            );
+        }
+        if f2.iter().chain(&f3).any(|v| !v.is_finite())
+            || denominator.iter().any(|d| !(d.is_finite() && *d > 0.0))
+        {
+            return invalid!("frame coefficients must be finite with a positive denominator");
+        }
+        Ok(Self {
+            f2,
+            f3,
+            denominator,
+        })
+    }
+
+    pub fn degree(&self) -> usize {
+        self.denominator.len() - 1
+    }
+
+    pub fn f2_numerator(&self) -> &[DVec3] {
+        &self.f2
+    }
+
+    pub fn f3_numerator(&self) -> &[DVec3] {
+        &self.f3
+    }
+
+    pub fn denominator(&self) -> &[f64] {
+        &self.denominator
+    }
+
+    /// The frame at the local parameter `s`.
+    pub fn frame(&self, s: f64) -> Frame {
+        let d = bernstein::evaluate(&self.denominator, s);
+        let f2 = bernstein::evaluate(&self.f2, s) / d;
+        let f3 = bernstein::evaluate(&self.f3, s) / d;
+        Frame {
+            tangent: f2.cross(f3),
+            f2,
+            f3,
+        }
+    }
+
+    /// f₂ and its derivative with respect to the local parameter, by the quotient rule.
+    pub fn f2_with_derivative(&self, s: f64) -> (DVec3, DVec3) {
+        let n = bernstein::evaluate_jet(&self.f2, s);
+        let d = bernstein::evaluate_jet(&self.denominator, s);
+        let f2 = n.value / d.value;
+        (f2, (n.d1 - d.d1 * f2) / d.value)
+    }
+
+    /// The same segment turned by the constant `angle` about the tangent. A constant
+    /// rotation of a rotation-minimizing frame is again rotation-minimizing, which is how
+    /// spline segments are made to agree at their joints.
+    pub fn rotated(&self, angle: f64) -> Self {
+        let (s, c) = angle.sin_cos();
+        let mix = |a: &[DVec3], b: &[DVec3], ca: f64, cb: f64| {
+            a.iter().zip(b).map(|(&x, &y)| ca * x + cb * y).collect()
+        };
+        Self {
+            f2: mix(&self.f2, &self.f3, c, s),
+            f3: mix(&self.f3, &self.f2, c, -s),
+            denominator: self.denominator.clone(),
+        }
+    }
+
+    /// One frame vector as a rational Bézier curve of vectors (its "points" lie on the unit
+    /// sphere). The tangent f₂ × f₃ has numerator N₂ × N₃ over d².
+    pub fn vector_curve(&self, which: FrameVector) -> Result<RationalBezierCurve> {
+        match which {
+            FrameVector::F2 => {
+                RationalBezierCurve::from_numerator_denominator(&self.f2, &self.denominator)
+            }
+            FrameVector::F3 => {
+                RationalBezierCurve::from_numerator_denominator(&self.f3, &self.denominator)
+            }
+            FrameVector::Tangent => {
+                let numerator =
+                    bernstein::product(&self.f2, &self.f3, |a: DVec3, b: DVec3| a.cross(b));
+                let denominator =
+                    bernstein::product(&self.denominator, &self.denominator, |a: f64, b: f64| {
+                        a * b
+                    });
+                RationalBezierCurve::from_numerator_denominator(&numerator, &denominator)
+            }
+        }
+    }
+}
+
+/// Rational frames along a piecewise curve; segment k lives on `[breaks[k], breaks[k+1]]`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RationalFrames {
+    segments: Vec<RationalFrameSegment>,
+    breaks: Vec<f64>,
+}
+
+impl RationalFrames {
+    pub fn new(segments: Vec<RationalFrameSegment>, breaks: Vec<f64>) -> Result<Self> {
+        check_breaks(&breaks, segments.len(), "frame breakpoints")?;
+        Ok(Self { segments, breaks })
+    }
+
+    pub fn segments(&self) -> &[RationalFrameSegment] {
+        &self.segments
+    }
+
+    pub fn breaks(&self) -> &[f64] {
+        &self.breaks
+    }
+
+    fn locate(&self, t: f64) -> (usize, f64, f64) {
+        let last = self.segments.len() - 1;
+        let k = self.breaks[1..=last].partition_point(|&b| b <= t);
+        let h = self.breaks[k + 1] - self.breaks[k];
+        (k, ((t - self.breaks[k]) / h).clamp(0.0, 1.0), h)
+    }
+
+    pub fn frame(&self, t: f64) -> Frame {
+        let (k, s, _) = self.locate(t);
+        self.segments[k].frame(s)
+    }
+
+    /// f₂ and df₂/dt (global parameter).
+    pub fn f2_with_derivative(&self, t: f64) -> (DVec3, DVec3) {
+        let (k, s, h) = self.locate(t);
+        let (f2, d) = self.segments[k].f2_with_derivative(s);
+        (f2, d / h)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The frame of the circle (cos φ, sin φ, 0) with f₂ = −radius direction and f₃ = Z,
+    /// on a quarter arc: rational quadratic, weights (1, 1/√2, 1).
+    fn circle_segment() -> RationalFrameSegment {
+        let s = std::f64::consts::FRAC_1_SQRT_2;
+        let w = vec![1.0, s, 1.0];
+        let f2 = vec![-DVec3::X, -DVec3::new(1.0, 1.0, 0.0) * s, -DVec3::Y];
+        let f3 = w.iter().map(|&wi| DVec3::Z * wi).collect();
+        RationalFrameSegment::new(f2, f3, w).unwrap()
+    }
+
+    #[test]
+    fn frame_is_orthonormal_and_rotation_keeps_the_tangent() {
+        let seg = circle_segment();
+        for i in 0..=10 {
+            let f = seg.frame(i as f64 / 10.0);
+            assert!((f.f2.length() - 1.0).abs() < 1e-15 && f.f2.dot(f.f3).abs() < 1e-15);
+            let g = seg.rotated(0.4).frame(i as f64 / 10.0);
+            assert!((g.tangent - f.tangent).length() < 1e-15);
+            assert!((g.f2 - f.rotated(0.4).f2).length() < 1e-15);
+        }
+        let tangent = seg.vector_curve(FrameVector::Tangent).unwrap();
+        assert!((tangent.eval(0.3) - seg.frame(0.3).tangent).length() < 1e-15);
+    }
+
+    #[test]
+    fn derivative_matches_finite_differences() {
+        let frames = RationalFrames::new(vec![circle_segment()], vec![0.0, 2.0]).unwrap();
+        let h = 1e-6;
+        let (_, d) = frames.f2_with_derivative(0.8);
+        let fd = (frames.frame(0.8 + h).f2 - frames.frame(0.8 - h).f2) / (2.0 * h);
+        assert!((d - fd).length() < 1e-8);
+    }
+
+    #[test]
+    fn rejects_non_positive_denominators() {
+        let e = RationalFrameSegment::new(vec![DVec3::X; 2], vec![DVec3::Y; 2], vec![1.0, -1.0]);
+        assert!(e.is_err());
+    }
+}

@@ -1,0 +1,32 @@
+//! rmfsurf: exact rational curves, rotation-minimizing frames and surfaces for sweeping
+//! and for developable (sheet-metal) surfaces, with a C ABI.
+//!
+//! The crate is layered; each layer only uses the ones above it:
+//!
+//! | module | what it computes |
+//! | --- | --- |
+//! | [`math`] | binomials, validated vectors, polynomial roots, quadrature, 1-D minimization |
+//! | [`bezier`] | rational Bézier curves/patches, piecewise assemblies, NURBS conversion |
+//! | [`curve`] | the curve interface the algorithms sample (point + tangent at a parameter) |
+//! | [`frames`] | Frenet frames, the double-reflection RMF (the reference), rational frames, metrics |
+//! | [`mesh`] | triangle meshes of surfaces on the patch grid |
+//! | `ffi` | the C API: handles, status codes, last error, panic boundary |
+//!
+//! The geometry lives in safe Rust and knows nothing of C; a Rust user calls it directly.
+//! Only `ffi` is visible to cbindgen (the other modules are marked `cbindgen:ignore`).
+
+/// cbindgen:ignore
+pub mod bezier;
+/// cbindgen:ignore
+pub mod curve;
+/// cbindgen:ignore
+mod error;
+pub mod ffi;
+/// cbindgen:ignore
+pub mod frames;
+/// cbindgen:ignore
+pub mod math;
+/// cbindgen:ignore
+pub mod mesh;
+
+pub use error::{Error, Result};

@@ -1,0 +1,217 @@
+//! Real roots of low-degree polynomials, without a starting guess.
+//!
+//! `real_roots_in` isolates the roots of p recursively: the real roots of p' split the
+//! interval into pieces on which p is monotone, and each piece with a sign change holds
+//! exactly one root, found by safeguarded Newton–bisection. Even-multiplicity roots (where p
+//! touches zero without a sign change) are caught at the critical points by comparing
+//! |p| with the rounding-error bound of its evaluation. This finds *all* real roots in an
+//! interval, which the RRMF sextic (35) and the cone-joining quartic (14) need.
+
+/// Roots of `a x² + b x + c`, ascending, computed without cancellation (the larger root by
+/// the usual formula, the smaller from Vieta). Degrades to the linear case when `a == 0`.
+pub fn quadratic_roots(a: f64, b: f64, c: f64) -> Vec<f64> {
+    if a == 0.0 {
+        return if b == 0.0 { Vec::new() } else { vec![-c / b] };
+    }
+    let discriminant = b * b - 4.0 * a * c;
+    if discriminant < 0.0 {
+        return Vec::new();
+    }
+    let q = -0.5 * (b + b.signum() * discriminant.sqrt());
+    if q == 0.0 {
+        return vec![0.0];
+    }
+    let (x1, x2) = (q / a, c / q);
+    if x1 == x2 {
+        vec![x1]
+    } else {
+        vec![x1.min(x2), x1.max(x2)]
+    }
+}
+
+/// Horner evaluation of `Σ coeffs[i] xⁱ` with the running bound `Σ |coeffs[i]| |x|ⁱ`,
+/// which scales the rounding error of the value.
+fn eval_with_bound(coeffs: &[f64], x: f64) -> (f64, f64) {
+    let (mut value, mut bound) = (0.0, 0.0);
+    for &c in coeffs.iter().rev() {
+        value = value * x + c;
+        bound = bound * x.abs() + c.abs();
+    }
+    (value, bound)
+}
+
+fn derivative(coeffs: &[f64]) -> Vec<f64> {
+    coeffs
+        .iter()
+        .enumerate()
+        .skip(1)
+        .map(|(i, &c)| i as f64 * c)
+        .collect()
+}
+
+fn trimmed(coeffs: &[f64]) -> &[f64] {
+    let len = coeffs.iter().rposition(|&c| c != 0.0).map_or(0, |i| i + 1);
+    &coeffs[..len]
+}
+
+/// All real roots of `Σ coeffs[i] xⁱ` (ascending powers), sorted ascending.
+///
+/// Uses the Cauchy bound `1 + max |aᵢ / aₙ|` as the search interval. The zero polynomial
+/// and non-finite coefficients give no roots.
+pub fn real_roots_power(coeffs: &[f64]) -> Vec<f64> {
+    let p = trimmed(coeffs);
+    if p.len() < 2 || p.iter().any(|c| !c.is_finite()) {
+        return Vec::new();
+    }
+    let lead = p[p.len() - 1].abs();
+    let bound = 1.0
+        + p[..p.len() - 1]
+            .iter()
+            .map(|c| c.abs() / lead)
+            .fold(0.0, f64::max);
+    if !bound.is_finite() {
+        return Vec::new();
+    }
+    real_roots_in(p, -bound, bound)
+}
+
+/// All real roots of `Σ coeffs[i] xⁱ` in the closed interval `[lo, hi]`, sorted ascending.
+pub fn real_roots_in(coeffs: &[f64], lo: f64, hi: f64) -> Vec<f64> {
+    let p = trimmed(coeffs);
+    if p.len() < 2 || lo.is_nan() || hi.is_nan() || lo > hi || p.iter().any(|c| !c.is_finite()) {
+        return Vec::new();
+    }
+    if p.len() == 2 {
+        let x = -p[0] / p[1];
+        return if (lo..=hi).contains(&x) {
+            vec![x]
+        } else {
+            Vec::new()
+        };
+    }
+    let critical = real_roots_in(&derivative(p), lo, hi);
+    let mut knots = Vec::with_capacity(critical.len() + 2);
+    knots.push(lo);
+    knots.extend(critical.iter().copied().filter(|&c| c > lo && c < hi));
+    knots.push(hi);
+
+    let mut roots: Vec<f64> = Vec::new();
+    let near_zero = |x: f64| {
+        let (value, bound) = eval_with_bound(p, x);
+        value.abs() <= 8.0 * p.len() as f64 * f64::EPSILON * bound
+    };
+    for (i, pair) in knots.windows(2).enumerate() {
+        let (a, b) = (pair[0], pair[1]);
+        if near_zero(a) && (i == 0 || critical.contains(&a)) {
+            roots.push(a);
+        }
+        let (fa, _) = eval_with_bound(p, a);
+        let (fb, _) = eval_with_bound(p, b);
+        if fa != 0.0 && fb != 0.0 && (fa < 0.0) != (fb < 0.0) && !near_zero(a) && !near_zero(b) {
+            roots.push(solve_bracketed(p, a, b, fa));
+        }
+    }
+    if near_zero(hi) {
+        roots.push(hi);
+    }
+    roots.sort_by(f64::total_cmp);
+    roots.dedup_by(|x, y| (*x - *y).abs() <= 1e-13 * x.abs().max(y.abs()).max(1e-300));
+    roots
+}
+
+/// The root of a polynomial that changes sign on `[a, b]` (`fa = p(a)`), by Newton steps
+/// kept inside a shrinking bracket, falling back to bisection.
+fn solve_bracketed(p: &[f64], mut a: f64, mut b: f64, fa: f64) -> f64 {
+    let dp = derivative(p);
+    let negative_at_a = fa < 0.0;
+    let mut x = 0.5 * (a + b);
+    for _ in 0..200 {
+        let (fx, _) = eval_with_bound(p, x);
+        if fx == 0.0 {
+            return x;
+        }
+        if (fx < 0.0) == negative_at_a {
+            a = x;
+        } else {
+            b = x;
+        }
+        let (dfx, _) = eval_with_bound(&dp, x);
+        let newton = x - fx / dfx;
+        let next = if dfx != 0.0 && newton > a && newton < b {
+            newton
+        } else {
+            0.5 * (a + b)
+        };
+        if (next - x).abs() <= 2.0 * f64::EPSILON * x.abs()
+            || b - a <= 2.0 * f64::EPSILON * a.abs().max(b.abs())
+        {
+            return next;
+        }
+        x = next;
+    }
+    x
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn from_roots(roots: &[f64]) -> Vec<f64> {
+        let mut c = vec![1.0];
+        for &r in roots {
+            let mut next = vec![0.0; c.len() + 1];
+            for (i, &ci) in c.iter().enumerate() {
+                next[i + 1] += ci;
+                next[i] -= r * ci;
+            }
+            c = next;
+        }
+        c
+    }
+
+    #[test]
+    fn quadratic_without_cancellation() {
+        let r = quadratic_roots(1.0, -1e8, 1.0);
+        assert_eq!(r.len(), 2);
+        assert!((r[0] - 1e-8).abs() < 1e-22);
+        assert!((r[1] - 1e8).abs() < 1e-6);
+        assert!(quadratic_roots(1.0, 0.0, 1.0).is_empty());
+        assert_eq!(quadratic_roots(0.0, 2.0, -4.0), vec![2.0]);
+    }
+
+    #[test]
+    fn finds_all_roots_of_a_sextic() {
+        let expected = [-3.5, -0.25, 0.001, 0.7, 2.0, 9.0];
+        let roots = real_roots_power(&from_roots(&expected));
+        assert_eq!(roots.len(), 6, "{roots:?}");
+        for (r, e) in roots.iter().zip(expected) {
+            assert!((r - e).abs() < 1e-9 * e.abs().max(1.0), "{r} vs {e}");
+        }
+    }
+
+    #[test]
+    fn finds_double_roots_and_skips_complex_ones() {
+        // (x - 1)² (x² + 1) (x + 2)
+        let mut c = from_roots(&[1.0, 1.0, -2.0]);
+        c = {
+            let mut next = vec![0.0; c.len() + 2];
+            for (i, &ci) in c.iter().enumerate() {
+                next[i] += ci;
+                next[i + 2] += ci;
+            }
+            next
+        };
+        let roots = real_roots_power(&c);
+        assert_eq!(roots.len(), 2, "{roots:?}");
+        assert!((roots[0] + 2.0).abs() < 1e-12);
+        assert!((roots[1] - 1.0).abs() < 1e-7);
+    }
+
+    #[test]
+    fn restricts_to_an_interval() {
+        let c = from_roots(&[-1.0, 0.5, 3.0]);
+        assert_eq!(real_roots_in(&c, 0.0, 2.0).len(), 1);
+        assert!(real_roots_power(&[f64::NAN, 1.0]).is_empty());
+        assert!(real_roots_power(&[0.0, 0.0]).is_empty());
+    }
+}

@@ -1,0 +1,113 @@
+//! Validation and normalization of input vectors, with messages naming the argument.
+//!
+//! Normalization scales by the largest component first, so that vectors near the
+//! underflow or overflow range (1e-300, 1e300) are still normalized correctly.
+
+use crate::error::{invalid, Result};
+use glam::DVec3;
+
+/// Relative size below which a projected vector counts as zero.
+const PARALLEL_TOLERANCE: f64 = 1e-12;
+
+/// `v` itself if all its components are finite.
+pub fn check_finite(v: DVec3, name: &str) -> Result<DVec3> {
+    if v.is_finite() {
+        Ok(v)
+    } else {
+        invalid!(
+            "{name} has a non-finite component ({}, {}, {})",
+            v.x,
+            v.y,
+            v.z
+        )
+    }
+}
+
+/// Alias of [`check_finite`] for points, for readability at call sites.
+pub fn check_point(p: DVec3, name: &str) -> Result<DVec3> {
+    check_finite(p, name)
+}
+
+/// `v / |v|`, or `None` for zero or non-finite vectors.
+fn robust_normalize(v: DVec3) -> Option<DVec3> {
+    if !v.is_finite() {
+        return None;
+    }
+    let largest = v.abs().max_element();
+    if largest == 0.0 || !largest.is_normal() {
+        return None;
+    }
+    let scaled = v / largest;
+    Some(scaled / scaled.length())
+}
+
+/// The unit vector along `v`; `v` must be finite and non-zero (it need not be unit).
+pub fn check_unit_direction(v: DVec3, name: &str) -> Result<DVec3> {
+    check_finite(v, name)?;
+    match robust_normalize(v) {
+        Some(u) => Ok(u),
+        None => invalid!("{name} is a zero vector and has no direction"),
+    }
+}
+
+/// Projects `n` onto the plane normal to the unit vector `tangent` and normalizes it.
+///
+/// This is how a caller's `initial_normal` becomes the first frame vector f2.
+pub fn normal_plane_unit(n: DVec3, tangent: DVec3, name: &str) -> Result<DVec3> {
+    let n = check_finite(n, name)?;
+    let Some(unit) = robust_normalize(n) else {
+        return invalid!("{name} is a zero vector");
+    };
+    let projected = unit - unit.dot(tangent) * tangent;
+    if projected.length() < PARALLEL_TOLERANCE {
+        return invalid!(
+            "{name} is parallel to the curve tangent; it must have a component in the normal plane"
+        );
+    }
+    Ok(projected.normalize())
+}
+
+/// Some unit vector perpendicular to the unit vector `t` (a stable choice: the cross
+/// product with the coordinate axis least aligned with `t`).
+pub fn orthonormal_to(t: DVec3) -> DVec3 {
+    let a = t.abs();
+    let axis = if a.x <= a.y && a.x <= a.z {
+        DVec3::X
+    } else if a.y <= a.z {
+        DVec3::Y
+    } else {
+        DVec3::Z
+    };
+    t.cross(axis).normalize()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn normalizes_tiny_and_huge_vectors() {
+        let tiny = check_unit_direction(DVec3::new(1e-300, 1e-300, 0.0), "t").unwrap();
+        assert!((tiny.length() - 1.0).abs() < 1e-15);
+        let huge = check_unit_direction(DVec3::new(1e300, -1e300, 1e300), "t").unwrap();
+        assert!((huge.length() - 1.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn rejects_zero_and_nan_with_the_argument_name() {
+        let e = check_unit_direction(DVec3::ZERO, "tangents[2]").unwrap_err();
+        assert!(e.message().contains("tangents[2]"));
+        assert!(check_unit_direction(DVec3::new(f64::NAN, 0.0, 1.0), "t").is_err());
+        assert!(check_unit_direction(DVec3::new(f64::INFINITY, 0.0, 1.0), "t").is_err());
+    }
+
+    #[test]
+    fn projects_into_the_normal_plane() {
+        let t = DVec3::new(0.0, 0.0, 1.0);
+        let n = normal_plane_unit(DVec3::new(1.0, 0.0, 5.0), t, "initial_normal").unwrap();
+        assert!((n - DVec3::X).length() < 1e-15);
+        assert!(normal_plane_unit(DVec3::new(0.0, 0.0, 2.0), t, "initial_normal").is_err());
+        let p = orthonormal_to(DVec3::new(0.6, 0.8, 0.0));
+        assert!(p.dot(DVec3::new(0.6, 0.8, 0.0)).abs() < 1e-15 && (p.length() - 1.0).abs() < 1e-15);
+    }
+}
