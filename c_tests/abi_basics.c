@@ -323,6 +323,29 @@ static void test_frames(void) {
         rmf_frames_free(lf);
         rmf_curve_free(l);
     }
+    {
+        /* Sampled frames have no rational form: no vector curves, no rational sweep. */
+        uint32_t kind = 99;
+        RmfCurve *vector_curve = NULL;
+        RmfSurface *surface = NULL;
+        CHECK_STATUS(rmf_frames_kind(dr, &kind), RMF_OK, "");
+        CHECK(kind == RMF_FRAMES_DOUBLE_REFLECTION, "double-reflection frames say so");
+        CHECK_STATUS(rmf_frames_kind(fr, &kind), RMF_OK, "");
+        CHECK(kind == RMF_FRAMES_FRENET, "Frenet frames say so");
+        CHECK_STATUS(rmf_frames_kind(NULL, &kind), RMF_ERROR_NULL_POINTER, "frames");
+        CHECK_STATUS(rmf_frames_kind(dr, NULL), RMF_ERROR_NULL_POINTER, "kind");
+        CHECK_STATUS(rmf_frames_vector_curve(dr, RMF_FRAME_F2, &vector_curve), RMF_ERROR_INVALID_INPUT, "rational");
+        CHECK_STATUS(rmf_frames_vector_curve(dr, 7u, &vector_curve), RMF_ERROR_INVALID_INPUT, "which");
+        CHECK_STATUS(rmf_frames_vector_curve(NULL, RMF_FRAME_F2, &vector_curve), RMF_ERROR_NULL_POINTER, "frames");
+        CHECK_STATUS(rmf_frames_vector_curve(dr, RMF_FRAME_F2, NULL), RMF_ERROR_NULL_POINTER, "out");
+        CHECK(vector_curve == NULL, "out untouched on failure");
+        CHECK_STATUS(rmf_sweep_surface(reference, dr, reference, &surface), RMF_ERROR_INVALID_INPUT, "rational");
+        CHECK_STATUS(rmf_sweep_surface(NULL, dr, reference, &surface), RMF_ERROR_NULL_POINTER, "spine");
+        CHECK_STATUS(rmf_sweep_surface(reference, NULL, reference, &surface), RMF_ERROR_NULL_POINTER, "frames");
+        CHECK_STATUS(rmf_sweep_surface(reference, dr, NULL, &surface), RMF_ERROR_NULL_POINTER, "profile");
+        CHECK_STATUS(rmf_sweep_surface(reference, dr, reference, NULL), RMF_ERROR_NULL_POINTER, "out");
+        CHECK(surface == NULL, "out untouched on failure");
+    }
     rmf_frames_free(dr);
     rmf_frames_free(fr);
     rmf_frames_free(NULL);

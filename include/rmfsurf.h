@@ -23,6 +23,36 @@
 #include <stdint.h>
 
 /**
+ * rmf_frames_kind: exact piecewise rational frames (usable by rmf_sweep_surface).
+ */
+#define RMF_FRAMES_RATIONAL 0
+
+/**
+ * rmf_frames_kind: double-reflection samples.
+ */
+#define RMF_FRAMES_DOUBLE_REFLECTION 1
+
+/**
+ * rmf_frames_kind: Frenet frames evaluated pointwise.
+ */
+#define RMF_FRAMES_FRENET 2
+
+/**
+ * rmf_frames_vector_curve: the unit tangent t.
+ */
+#define RMF_FRAME_TANGENT 0
+
+/**
+ * rmf_frames_vector_curve: the first normal-plane vector f2.
+ */
+#define RMF_FRAME_F2 1
+
+/**
+ * rmf_frames_vector_curve: f3 = t × f2.
+ */
+#define RMF_FRAME_F3 2
+
+/**
  * Major version of the library; equals the first number of rmf_version().
  */
 #define RMF_VERSION_MAJOR 0
@@ -402,6 +432,32 @@ RmfStatus rmf_double_reflection_frames(const struct RmfCurve *curve,
 RmfStatus rmf_frenet_frames(const struct RmfCurve *curve, struct RmfFrames **out);
 
 /**
+ * How frames are represented.
+ *
+ * @param[out] kind Receives RMF_FRAMES_RATIONAL, RMF_FRAMES_DOUBLE_REFLECTION or
+ *             RMF_FRAMES_FRENET.
+ * @return RMF_OK, or RMF_ERROR_NULL_POINTER if frames or kind is NULL.
+ */
+RmfStatus rmf_frames_kind(const struct RmfFrames *frames, uint32_t *kind);
+
+/**
+ * One vector of exact rational frames as a rational curve of vectors: its "points" are the
+ * tips of the unit vectors, on the unit sphere, with the frames' parameter (the segments of
+ * the frames' curve). f2 and f3 have the degree of the frames; the tangent f2 × f3 twice it.
+ *
+ * @param[in] frames Rational frames (rmf_frames_kind gives RMF_FRAMES_RATIONAL).
+ * @param[in] which RMF_FRAME_TANGENT, RMF_FRAME_F2 or RMF_FRAME_F3.
+ * @param[out] out Receives the curve; free with rmf_curve_free. Untouched on failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If frames or out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If which is not one of the three values or the frames are
+ *         not rational (double-reflection and pointwise Frenet frames are sampled).
+ */
+RmfStatus rmf_frames_vector_curve(const struct RmfFrames *frames,
+                                  uint32_t which,
+                                  struct RmfCurve **out);
+
+/**
  * The message of the last failing call on the calling thread.
  *
  * @return A NUL-terminated UTF-8 string, never NULL ("" if nothing has failed yet on this
@@ -586,6 +642,30 @@ RmfStatus rmf_surface_tessellate(const struct RmfSurface *surface,
                                  size_t triangle_capacity,
                                  size_t *point_count,
                                  size_t *triangle_count);
+
+/**
+ * The sweep surface s(u, v) = x(v) + c2(u) f2(v) + c3(u) f3(v) of a profile along a spine
+ * with exact rational frames (Mäurer & Jüttler, eqs. (1) and (42)): a rational
+ * tensor-product surface, u along the profile (the profile's parameter), v along the spine
+ * (the spine's parameter). Patch (a, b) is profile segment a × spine segment b, of degree
+ * (profile degree, spine degree + frame degree). With a rotation-minimizing frame this is a
+ * profile surface: parameter lines are lines of curvature, and a straight profile gives a
+ * developable surface.
+ *
+ * @param[in] spine The spine curve; must be the curve of `frames` (same segments).
+ * @param[in] frames Exact rational frames along the spine (RMF_FRAMES_RATIONAL).
+ * @param[in] profile The profile in the normal plane: its x maps to f2, its y to f3, z is
+ *            ignored (e.g. from rmf_nurbs_curve_create).
+ * @param[out] out Receives the surface; free with rmf_surface_free. Untouched on failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If an argument is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If the frames are not rational or do not belong to the
+ *         spine.
+ */
+RmfStatus rmf_sweep_surface(const struct RmfCurve *spine,
+                            const struct RmfFrames *frames,
+                            const struct RmfCurve *profile,
+                            struct RmfSurface **out);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -8,8 +8,10 @@
 //! | [`math`] | binomials, validated vectors, polynomial roots, quadrature, 1-D minimization |
 //! | [`bezier`] | rational Bézier curves/patches, piecewise assemblies, NURBS conversion |
 //! | [`curve`] | the curve interface the algorithms sample (point + tangent at a parameter) |
+//! | [`hermite`] | validated G1 Hermite data (points + unit tangents) |
 //! | [`frames`] | Frenet frames, the double-reflection RMF (the reference), rational frames, metrics |
 //! | [`mesh`] | triangle meshes of surfaces on the patch grid |
+//! | [`sweep`] | sweep surfaces x + c₂ f₂ + c₃ f₃ with exact rational frames |
 //! | `ffi` | the C API: handles, status codes, last error, panic boundary |
 //!
 //! The geometry lives in safe Rust and knows nothing of C; a Rust user calls it directly.
@@ -25,8 +27,12 @@ pub mod ffi;
 /// cbindgen:ignore
 pub mod frames;
 /// cbindgen:ignore
+pub mod hermite;
+/// cbindgen:ignore
 pub mod math;
 /// cbindgen:ignore
 pub mod mesh;
+/// cbindgen:ignore
+pub mod sweep;
 
 pub use error::{Error, Result};

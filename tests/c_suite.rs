@@ -2,9 +2,14 @@
 //! compilers the `cc` crate finds:
 //!
 //! * the header compiles on its own as C99 and as C++ with -Wall -Wextra -Wpedantic -Werror;
-//! * `abi_*.c` (C99) exercise every entry point, under valgrind (no leaks, no errors);
-//! * `geometry_*.cpp` check surfaces independently with the suite's own NURBS evaluator,
-//!   OpenMesh and VTK (Debian packages libopenmesh-dev and libvtk9-dev).
+//! * every `c_tests/abi_*.c` (C99) exercises entry points, under valgrind (no leaks, no
+//!   errors);
+//! * every `c_tests/geometry_*.cpp` checks surfaces independently with the suite's own NURBS
+//!   evaluator, OpenMesh and VTK (Debian packages libopenmesh-dev and libvtk9-dev);
+//! * the demo and the README's C example build and run.
+//!
+//! A capability adds its tests as new `abi_<name>.c` / `geometry_<name>.cpp` files; this
+//! harness picks them up.
 //!
 //! The programs print their figures; run `cargo test --test c_suite -- --nocapture` to see
 //! them. Missing system packages make the tests fail with a message naming the setup
@@ -190,35 +195,48 @@ fn header_compiles_alone_as_c99_and_cpp() {
     }
 }
 
-#[test]
-fn abi_suite_under_valgrind() {
-    let mut flags = vec!["-std=c99"];
-    flags.extend(STRICT);
-    let exe = build(
-        "abi_basics",
-        false,
-        &["c_tests/abi_basics.c", "c_tests/nurbs_eval.c"],
-        &flags,
-        &[],
-    );
-    run(&exe, true);
+/// The files in c_tests/ whose names start with `prefix` and end with `suffix`, sorted.
+fn suites(prefix: &str, suffix: &str) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(root().join("c_tests"))
+        .expect("c_tests/")
+        .filter_map(|e| e.ok()?.file_name().into_string().ok())
+        .filter(|n| n.starts_with(prefix) && n.ends_with(suffix))
+        .collect();
+    names.sort();
+    assert!(!names.is_empty(), "no c_tests/{prefix}*{suffix}");
+    names
 }
 
+/// Every `c_tests/abi_*.c`: C99 ABI tests, run under valgrind.
 #[test]
-fn geometry_checks_with_openmesh_and_vtk() {
+fn abi_suites_under_valgrind() {
+    let mut flags = vec!["-std=c99"];
+    flags.extend(STRICT);
+    for name in suites("abi_", ".c") {
+        let source = format!("c_tests/{name}");
+        let exe = build(
+            name.trim_end_matches(".c"),
+            false,
+            &[source.as_str(), "c_tests/nurbs_eval.c"],
+            &flags,
+            &[],
+        );
+        run(&exe, true);
+    }
+}
+
+/// Every `c_tests/geometry_*.cpp`: independent checks with OpenMesh and VTK.
+#[test]
+fn geometry_suites_with_openmesh_and_vtk() {
     assert!(
         Path::new("/usr/include/OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh").exists(),
         "OpenMesh headers (libopenmesh-dev) not found: {SETUP_HINT}"
     );
     let (vtk_dir, version) = vtk();
-    let vtk_include = format!("-I{}", vtk_dir.display());
-    let mut flags = vec!["-std=c++17", "-isystem", "/usr/include/OpenMesh"];
-    flags.push(&vtk_include);
-    flags.extend(STRICT);
     // VTK's own headers are not -Wpedantic clean: include them as system headers.
-    let isystem = format!("-isystem{}", vtk_dir.display());
-    flags.retain(|f| *f != vtk_include.as_str());
-    flags.push(&isystem);
+    let vtk_include = format!("-isystem{}", vtk_dir.display());
+    let mut flags = vec!["-std=c++17", vtk_include.as_str()];
+    flags.extend(STRICT);
     let mut libs: Vec<String> = [
         "CommonCore",
         "CommonDataModel",
@@ -229,14 +247,17 @@ fn geometry_checks_with_openmesh_and_vtk() {
     .map(|m| format!("-lvtk{m}-{version}"))
     .collect();
     libs.push("-lOpenMeshCore".into());
-    let exe = build(
-        "geometry_foundation",
-        true,
-        &["c_tests/geometry_foundation.cpp", "c_tests/nurbs_eval.c"],
-        &flags,
-        &libs,
-    );
-    run(&exe, false);
+    for name in suites("geometry_", ".cpp") {
+        let source = format!("c_tests/{name}");
+        let exe = build(
+            name.trim_end_matches(".cpp"),
+            true,
+            &[source.as_str(), "c_tests/nurbs_eval.c"],
+            &flags,
+            &libs,
+        );
+        run(&exe, false);
+    }
 }
 
 #[test]

@@ -219,6 +219,41 @@ pub fn restrict<C: Coefficient>(coeffs: &[C], t0: f64, t1: f64) -> Vec<C> {
     split(&left, t0 / t1).1
 }
 
+/// Local breakpoints `0 = s₀ < s₁ < … < s_k = 1` such that on every interval each of the
+/// given polynomials has only positive Bernstein coefficients (interval bisection; the
+/// coefficients of a piece converge to the function's values as the piece shrinks, so a
+/// polynomial positive on [0, 1] needs finitely many halvings).
+///
+/// This is how rational results get the positive weights CAD systems require: the natural
+/// denominators here (PH speed σ, |α|² + |β|², Möbius weights) are positive functions whose
+/// coefficients need not be. Returns `None` when some piece still has a non-positive
+/// coefficient after `max_depth` halvings (the polynomial has, or nearly has, a root).
+pub fn positive_subdivision(polynomials: &[&[f64]], max_depth: usize) -> Option<Vec<f64>> {
+    fn visit(
+        polys: &[Vec<f64>],
+        lo: f64,
+        hi: f64,
+        depth: usize,
+        max_depth: usize,
+        out: &mut Vec<f64>,
+    ) -> bool {
+        if polys.iter().all(|p| p.iter().all(|&c| c > 0.0)) {
+            out.push(hi);
+            return true;
+        }
+        if depth == max_depth || polys.iter().any(|p| p[0] <= 0.0 || p[p.len() - 1] <= 0.0) {
+            return false;
+        }
+        let (left, right): (Vec<_>, Vec<_>) = polys.iter().map(|p| split(p, 0.5)).unzip();
+        let mid = 0.5 * (lo + hi);
+        visit(&left, lo, mid, depth + 1, max_depth, out)
+            && visit(&right, mid, hi, depth + 1, max_depth, out)
+    }
+    let polys: Vec<Vec<f64>> = polynomials.iter().map(|p| p.to_vec()).collect();
+    let mut breaks = vec![0.0];
+    visit(&polys, 0.0, 1.0, 0, max_depth, &mut breaks).then_some(breaks)
+}
+
 /// Bernstein coefficients of degree n of the polynomial `Σ power[i] tⁱ` (n = power.len() − 1):
 /// `b_k = Σ_{i≤k} C(k,i)/C(n,i) · a_i`.
 pub fn from_power<C: Coefficient>(power: &[C]) -> Vec<C> {
@@ -284,6 +319,24 @@ mod tests {
             assert!((sum(1) - jet.d1).abs() < 1e-12, "n = {n}");
             assert!((sum(2) - jet.d2).abs() < 1e-11, "n = {n}");
         }
+    }
+
+    #[test]
+    fn subdivides_until_coefficients_are_positive() {
+        // 3 (1, cos θ, 1): the speed of a PH cubic with a sharp turn, positive on [0, 1]
+        // with a negative middle coefficient.
+        let speed = [3.0, -1.5, 3.0];
+        let breaks = positive_subdivision(&[&speed, &[1.0, 1.0]], 20).unwrap();
+        assert!(breaks.len() > 2 && breaks[0] == 0.0 && *breaks.last().unwrap() == 1.0);
+        for w in breaks.windows(2) {
+            assert!(restrict(&speed, w[0], w[1]).iter().all(|&c| c > 0.0));
+        }
+        assert_eq!(
+            positive_subdivision(&[&[1.0, 2.0, 1.0]], 20).unwrap(),
+            vec![0.0, 1.0]
+        );
+        // (1 − 2t)² touches zero at t = 1/2: no positive subdivision exists.
+        assert!(positive_subdivision(&[&[1.0, -1.0, 1.0]], 30).is_none());
     }
 
     #[test]

@@ -68,6 +68,41 @@ impl PiecewiseCurve {
         Self::new(segments, breaks)
     }
 
+    /// The same curve on a finer segmentation: `breaks` must contain every breakpoint of
+    /// this curve (and nothing outside its domain); segments are restricted accordingly.
+    pub fn refined(&self, breaks: &[f64]) -> Result<Self> {
+        check_breaks(
+            breaks,
+            breaks.len().saturating_sub(1).max(1),
+            "refined breakpoints",
+        )?;
+        if breaks[0] != self.breaks[0]
+            || breaks[breaks.len() - 1] != self.breaks[self.breaks.len() - 1]
+        {
+            return invalid!("refined breakpoints must span the curve's domain exactly");
+        }
+        if self.breaks.iter().any(|b| !breaks.contains(b)) {
+            return invalid!("refined breakpoints must contain the curve's breakpoints");
+        }
+        let segments = breaks
+            .windows(2)
+            .map(|w| {
+                let (k, _) = self.locate(0.5 * (w[0] + w[1]));
+                let (a, b) = (self.breaks[k], self.breaks[k + 1]);
+                let (s0, s1) = ((w[0] - a) / (b - a), (w[1] - a) / (b - a));
+                if s0 == 0.0 && s1 == 1.0 {
+                    self.segments[k].clone()
+                } else {
+                    self.segments[k].restricted(s0, s1)
+                }
+            })
+            .collect();
+        Ok(Self {
+            segments,
+            breaks: breaks.to_vec(),
+        })
+    }
+
     pub fn segments(&self) -> &[RationalBezierCurve] {
         &self.segments
     }
@@ -212,6 +247,30 @@ mod tests {
         assert!((c.eval(1.5) - DVec3::new(1.0, 1.0, 0.0)).length() < 1e-15);
         assert!((c.eval_jet(0.25).d1 - DVec3::new(2.0, 0.0, 0.0)).length() < 1e-15);
         assert!((c.eval_jet(2.0).d1 - DVec3::new(0.0, 1.0, 0.0)).length() < 1e-15);
+    }
+
+    #[test]
+    fn refinement_keeps_the_curve() {
+        let c = PiecewiseCurve::new(
+            vec![
+                line(DVec3::ZERO, DVec3::X),
+                line(DVec3::X, DVec3::new(1.0, 2.0, 0.0)),
+            ],
+            vec![0.0, 0.5, 2.5],
+        )
+        .unwrap();
+        let r = c.refined(&[0.0, 0.25, 0.5, 1.0, 2.5]).unwrap();
+        assert_eq!(r.segments().len(), 4);
+        for i in 0..=50 {
+            let t = 2.5 * i as f64 / 50.0;
+            assert!((r.eval(t) - c.eval(t)).length() < 1e-15);
+            assert!((r.eval_jet(t).d1 - c.eval_jet(t).d1).length() < 1e-14);
+        }
+        assert!(
+            c.refined(&[0.0, 1.0, 2.5]).is_err(),
+            "must keep the breakpoint 0.5"
+        );
+        assert!(c.refined(&[0.0, 0.5, 3.0]).is_err(), "must keep the domain");
     }
 
     #[test]

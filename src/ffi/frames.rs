@@ -1,12 +1,14 @@
 //! `RmfFrames`: an adapted frame (t, f₂, f₃) along a curve, sharing its parameter.
 
-use super::boundary::{guard, guard_free, out_ptr, reference, write};
+use super::boundary::{guard, guard_free, invalid_arg, out_ptr, reference, write, FfiResult};
 use super::curve::RmfCurve;
 use super::status::RmfStatus;
 use super::types::RmfVec3;
-use crate::bezier::check_in_domain;
+use crate::bezier::{check_in_domain, PiecewiseCurve};
 use crate::curve::uniform_parameters;
+use crate::error::Result;
 use crate::frames::double_reflection::DoubleReflectionRmf;
+use crate::frames::rational::{FrameVector, RationalFrames};
 use crate::frames::{FrameField, FrameKind};
 
 /// Frames along a curve (opaque): exact rational frames, double-reflection samples, or
@@ -145,4 +147,90 @@ pub unsafe extern "C" fn rmf_frenet_frames(
         write(out, RmfFrames::into_raw(field));
         Ok(())
     })
+}
+
+/// rmf_frames_kind: exact piecewise rational frames (usable by rmf_sweep_surface).
+pub const RMF_FRAMES_RATIONAL: u32 = 0;
+/// rmf_frames_kind: double-reflection samples.
+pub const RMF_FRAMES_DOUBLE_REFLECTION: u32 = 1;
+/// rmf_frames_kind: Frenet frames evaluated pointwise.
+pub const RMF_FRAMES_FRENET: u32 = 2;
+
+/// rmf_frames_vector_curve: the unit tangent t.
+pub const RMF_FRAME_TANGENT: u32 = 0;
+/// rmf_frames_vector_curve: the first normal-plane vector f2.
+pub const RMF_FRAME_F2: u32 = 1;
+/// rmf_frames_vector_curve: f3 = t × f2.
+pub const RMF_FRAME_F3: u32 = 2;
+
+/// How frames are represented.
+///
+/// @param[out] kind Receives RMF_FRAMES_RATIONAL, RMF_FRAMES_DOUBLE_REFLECTION or
+///             RMF_FRAMES_FRENET.
+/// @return RMF_OK, or RMF_ERROR_NULL_POINTER if frames or kind is NULL.
+#[no_mangle]
+pub unsafe extern "C" fn rmf_frames_kind(frames: *const RmfFrames, kind: *mut u32) -> RmfStatus {
+    guard("rmf_frames_kind", || {
+        let frames = reference(frames, "frames")?;
+        let kind = out_ptr(kind, "kind")?;
+        let value = match frames.field.kind() {
+            FrameKind::Rational(_) => RMF_FRAMES_RATIONAL,
+            FrameKind::DoubleReflection(_) => RMF_FRAMES_DOUBLE_REFLECTION,
+            FrameKind::Frenet => RMF_FRAMES_FRENET,
+        };
+        write(kind, value);
+        Ok(())
+    })
+}
+
+/// One vector of exact rational frames as a rational curve of vectors: its "points" are the
+/// tips of the unit vectors, on the unit sphere, with the frames' parameter (the segments of
+/// the frames' curve). f2 and f3 have the degree of the frames; the tangent f2 × f3 twice it.
+///
+/// @param[in] frames Rational frames (rmf_frames_kind gives RMF_FRAMES_RATIONAL).
+/// @param[in] which RMF_FRAME_TANGENT, RMF_FRAME_F2 or RMF_FRAME_F3.
+/// @param[out] out Receives the curve; free with rmf_curve_free. Untouched on failure.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If frames or out is NULL.
+/// @return RMF_ERROR_INVALID_INPUT If which is not one of the three values or the frames are
+///         not rational (double-reflection and pointwise Frenet frames are sampled).
+#[no_mangle]
+pub unsafe extern "C" fn rmf_frames_vector_curve(
+    frames: *const RmfFrames,
+    which: u32,
+    out: *mut *mut RmfCurve,
+) -> RmfStatus {
+    guard("rmf_frames_vector_curve", || {
+        let frames = reference(frames, "frames")?;
+        let out = out_ptr(out, "out")?;
+        let which = match which {
+            RMF_FRAME_TANGENT => FrameVector::Tangent,
+            RMF_FRAME_F2 => FrameVector::F2,
+            RMF_FRAME_F3 => FrameVector::F3,
+            other => {
+                return invalid_arg(format!(
+                    "which = {other} is not RMF_FRAME_TANGENT, RMF_FRAME_F2 or RMF_FRAME_F3"
+                ))
+            }
+        };
+        let rational = rational_frames(frames)?;
+        let segments = rational
+            .segments()
+            .iter()
+            .map(|s| s.vector_curve(which))
+            .collect::<Result<Vec<_>>>()?;
+        let curve = PiecewiseCurve::new(segments, rational.breaks().to_vec())?;
+        write(out, RmfCurve::new(curve, None).into_raw());
+        Ok(())
+    })
+}
+
+/// The exact rational frames behind a handle, or an error naming why there are none.
+pub(crate) fn rational_frames(frames: &RmfFrames) -> FfiResult<&RationalFrames> {
+    match frames.field.kind() {
+        FrameKind::Rational(r) => Ok(r),
+        _ => invalid_arg(
+            "frames must be exact rational frames; double-reflection and pointwise Frenet frames are sampled".to_string(),
+        ),
+    }
 }

@@ -4,7 +4,8 @@
 //!
 //! One module per C type: [`curve`] (`RmfCurve`), [`frames`] (`RmfFrames`), [`surface`]
 //! (`RmfSurface`); [`status`] holds the status codes, last error and version; [`types`]
-//! the plain data structs and borrowed views. The header `include/rmfsurf.h` is generated
+//! the plain data structs and borrowed views; [`input`] the inputs several capabilities
+//! share (Hermite arrays, callback curves). The header `include/rmfsurf.h` is generated
 //! from these modules by cbindgen.
 
 // The safety contract of every `unsafe extern "C"` entry point is its C contract, written
@@ -15,6 +16,7 @@
 mod boundary;
 pub mod curve;
 pub mod frames;
+pub mod input;
 pub mod status;
 pub mod surface;
 pub mod types;

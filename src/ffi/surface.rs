@@ -5,12 +5,15 @@ use super::boundary::{
     buffer, guard, guard_free, invalid_arg, optional_out, out_ptr, reference, slice, to_usize,
     write, FfiError, FfiResult,
 };
+use super::curve::RmfCurve;
+use super::frames::{rational_frames, RmfFrames};
 use super::status::RmfStatus;
 use super::types::{RmfBezierPatch, RmfNurbsSurface, RmfVec3};
 use crate::bezier::homogeneous::project;
 use crate::bezier::{check_in_domain, NurbsSurface, PiecewiseSurface};
 use crate::error::Result;
 use crate::mesh::{mesh_size, tessellate};
+use crate::sweep::sweep;
 use std::sync::{Arc, OnceLock};
 
 /// A piecewise rational tensor-product surface s(u, v) (opaque). Freed with
@@ -464,6 +467,41 @@ pub unsafe extern "C" fn rmf_surface_tessellate(
         for (dst, &index) in triangles.iter_mut().zip(mesh.triangles.iter().flatten()) {
             *dst = index;
         }
+        Ok(())
+    })
+}
+
+/// The sweep surface s(u, v) = x(v) + c2(u) f2(v) + c3(u) f3(v) of a profile along a spine
+/// with exact rational frames (Mäurer & Jüttler, eqs. (1) and (42)): a rational
+/// tensor-product surface, u along the profile (the profile's parameter), v along the spine
+/// (the spine's parameter). Patch (a, b) is profile segment a × spine segment b, of degree
+/// (profile degree, spine degree + frame degree). With a rotation-minimizing frame this is a
+/// profile surface: parameter lines are lines of curvature, and a straight profile gives a
+/// developable surface.
+///
+/// @param[in] spine The spine curve; must be the curve of `frames` (same segments).
+/// @param[in] frames Exact rational frames along the spine (RMF_FRAMES_RATIONAL).
+/// @param[in] profile The profile in the normal plane: its x maps to f2, its y to f3, z is
+///            ignored (e.g. from rmf_nurbs_curve_create).
+/// @param[out] out Receives the surface; free with rmf_surface_free. Untouched on failure.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If an argument is NULL.
+/// @return RMF_ERROR_INVALID_INPUT If the frames are not rational or do not belong to the
+///         spine.
+#[no_mangle]
+pub unsafe extern "C" fn rmf_sweep_surface(
+    spine: *const RmfCurve,
+    frames: *const RmfFrames,
+    profile: *const RmfCurve,
+    out: *mut *mut RmfSurface,
+) -> RmfStatus {
+    guard("rmf_sweep_surface", || {
+        let spine = reference(spine, "spine")?;
+        let frames = reference(frames, "frames")?;
+        let profile = reference(profile, "profile")?;
+        let out = out_ptr(out, "out")?;
+        let surface = sweep(&spine.curve, rational_frames(frames)?, &profile.curve)?;
+        write(out, RmfSurface::new(surface, None).into_raw());
         Ok(())
     })
 }

@@ -74,11 +74,16 @@ pub struct FrameField {
 }
 
 impl FrameField {
-    /// Frames of `kind` along `curve`. Rational frames must share the curve's breakpoints.
+    /// Frames of `kind` along `curve`. Rational frames use the curve's breakpoints or a
+    /// refinement of them (a frame may split a segment to keep its weights positive).
     pub fn new(curve: Arc<PiecewiseCurve>, kind: FrameKind) -> Result<Self> {
         if let FrameKind::Rational(r) = &kind {
-            if r.breaks() != curve.breaks() {
-                return invalid!("rational frames and their curve have different breakpoints");
+            let (fb, cb) = (r.breaks(), curve.breaks());
+            let same_domain = fb[0] == cb[0] && fb[fb.len() - 1] == cb[cb.len() - 1];
+            if !same_domain || cb.iter().any(|b| !fb.contains(b)) {
+                return invalid!(
+                    "rational frames must use their curve's breakpoints (or a refinement of them)"
+                );
             }
         }
         Ok(Self { curve, kind })

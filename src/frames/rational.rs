@@ -8,11 +8,16 @@
 //! what makes the sweep `x + c₂ f₂ + c₃ f₃` a rational tensor-product surface. The tangent
 //! is f₂ × f₃, exact because the pair is orthonormal in the normal plane.
 
+use super::metrics::angle_about_tangent;
 use super::Frame;
 use crate::bezier::bernstein::{self, MAX_DEGREE};
 use crate::bezier::{check_breaks, RationalBezierCurve};
 use crate::error::{invalid, Result};
+use crate::math::normal_plane_unit;
 use glam::DVec3;
+
+/// Largest distance between unit tangents of consecutive segments at their joint.
+const G1_TOLERANCE: f64 = 1e-9;
 
 /// Which frame vector.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -139,6 +144,44 @@ impl RationalFrames {
         Ok(Self { segments, breaks })
     }
 
+    /// Joins per-segment rational frames of a G1 spline into one continuous frame field:
+    /// segment 0 is turned about the tangent so that f₂ starts at `initial_normal` projected
+    /// onto the normal plane, every further segment so that its f₂ starts where the
+    /// previous one ended. A constant rotation of a rotation-minimizing frame is again
+    /// rotation-minimizing, so the result is an RMF of the spline when the pieces are RMFs of
+    /// their segments (Bartoň, Jüttler & Wang §3.1; Farouki, Giannelli & Sestini §5).
+    pub fn chained(
+        segments: Vec<RationalFrameSegment>,
+        breaks: Vec<f64>,
+        initial_normal: DVec3,
+    ) -> Result<Self> {
+        check_breaks(&breaks, segments.len(), "frame breakpoints")?;
+        let mut joined: Vec<RationalFrameSegment> = Vec::with_capacity(segments.len());
+        for (k, segment) in segments.into_iter().enumerate() {
+            let start = segment.frame(0.0);
+            let target = match joined.last() {
+                None => normal_plane_unit(initial_normal, start.tangent, "initial_normal")?,
+                Some(previous) => {
+                    let end = previous.frame(1.0);
+                    if (end.tangent - start.tangent).length() > G1_TOLERANCE {
+                        return invalid!(
+                            "segments {} and {k} do not share their tangent: the spline is not G1",
+                            k - 1
+                        );
+                    }
+                    end.f2
+                }
+            };
+            let angle =
+                angle_about_tangent(&start, &Frame::from_tangent_normal(start.tangent, target));
+            joined.push(segment.rotated(angle));
+        }
+        Ok(Self {
+            segments: joined,
+            breaks,
+        })
+    }
+
     pub fn segments(&self) -> &[RationalFrameSegment] {
         &self.segments
     }
@@ -202,6 +245,33 @@ mod tests {
         let (_, d) = frames.f2_with_derivative(0.8);
         let fd = (frames.frame(0.8 + h).f2 - frames.frame(0.8 - h).f2) / (2.0 * h);
         assert!((d - fd).length() < 1e-8);
+    }
+
+    #[test]
+    fn chaining_makes_frames_continuous_and_starts_at_the_initial_normal() {
+        // Two quarter arcs of one circle, the second with a frame turned by 1 rad.
+        let first = circle_segment();
+        let s = std::f64::consts::FRAC_1_SQRT_2;
+        let w = vec![1.0, s, 1.0];
+        let f2 = vec![-DVec3::Y, -DVec3::new(-1.0, 1.0, 0.0) * s, DVec3::X];
+        let f3 = w.iter().map(|&wi| DVec3::Z * wi).collect();
+        let second = RationalFrameSegment::new(f2, f3, w).unwrap().rotated(1.0);
+        let seed = DVec3::new(0.3, 0.0, 1.0);
+        let chained =
+            RationalFrames::chained(vec![first.clone(), second], vec![0.0, 1.0, 2.0], seed)
+                .unwrap();
+        let start = chained.frame(0.0);
+        // The start tangent is +y, so the seed already lies in the normal plane.
+        assert!((start.f2 - seed.normalize()).length() < 1e-15);
+        let (before, after) = (
+            chained.segments()[0].frame(1.0),
+            chained.segments()[1].frame(0.0),
+        );
+        assert!((before.f2 - after.f2).length() < 1e-14);
+        assert!((before.f3 - after.f3).length() < 1e-14);
+        // A spline that is not G1 is refused.
+        let kinked = RationalFrames::chained(vec![first.clone(), first], vec![0.0, 1.0, 2.0], seed);
+        assert!(kinked.unwrap_err().message().contains("G1"));
     }
 
     #[test]

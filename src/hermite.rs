@@ -1,0 +1,131 @@
+//! G1 Hermite data: points with unit tangents, the input of every interpolation scheme of
+//! the papers (PH cubics, Möbius images, RRMF quintics). Validated once here, with messages
+//! naming the C arguments (`points[i]`, `tangents[i]`, or `p0`, `t0`, `p1`, `t1`).
+
+use crate::error::{invalid, Result};
+use crate::math::{check_point, check_unit_direction};
+use glam::DVec3;
+
+/// Relative distance below which consecutive points count as coincident.
+const COINCIDENT: f64 = 1e-14;
+
+/// One segment's G1 Hermite data: end points and unit end tangents.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HermiteSegment {
+    pub p0: DVec3,
+    pub t0: DVec3,
+    pub p1: DVec3,
+    pub t1: DVec3,
+}
+
+impl HermiteSegment {
+    /// Validates one segment's data (tangents may have any non-zero length; they are
+    /// normalized).
+    pub fn new(p0: DVec3, t0: DVec3, p1: DVec3, t1: DVec3) -> Result<Self> {
+        let segment = Self {
+            p0: check_point(p0, "p0")?,
+            t0: check_unit_direction(t0, "t0")?,
+            p1: check_point(p1, "p1")?,
+            t1: check_unit_direction(t1, "t1")?,
+        };
+        check_distinct(p0, p1, "p0", "p1")?;
+        Ok(segment)
+    }
+
+    /// |p1 − p0|.
+    pub fn chord_length(&self) -> f64 {
+        (self.p1 - self.p0).length()
+    }
+}
+
+fn check_distinct(a: DVec3, b: DVec3, name_a: &str, name_b: &str) -> Result<()> {
+    let scale = a
+        .abs()
+        .max_element()
+        .max(b.abs().max_element())
+        .max(f64::MIN_POSITIVE);
+    if (b - a).abs().max_element() <= COINCIDENT * scale {
+        return invalid!("{name_a} and {name_b} coincide; consecutive points must be distinct");
+    }
+    Ok(())
+}
+
+/// The segments between consecutive points of a G1 Hermite sequence (at least two
+/// points, as many tangents, consecutive points distinct).
+pub fn hermite_sequence(points: &[DVec3], tangents: &[DVec3]) -> Result<Vec<HermiteSegment>> {
+    if points.len() < 2 {
+        return invalid!(
+            "count = {} but Hermite interpolation needs at least 2 points",
+            points.len()
+        );
+    }
+    if tangents.len() != points.len() {
+        return invalid!("{} points but {} tangents", points.len(), tangents.len());
+    }
+    let mut checked = Vec::with_capacity(points.len());
+    for (i, (&p, &t)) in points.iter().zip(tangents).enumerate() {
+        checked.push((
+            check_point(p, &format!("points[{i}]"))?,
+            check_unit_direction(t, &format!("tangents[{i}]"))?,
+        ));
+    }
+    checked
+        .windows(2)
+        .enumerate()
+        .map(|(i, w)| {
+            check_distinct(
+                w[0].0,
+                w[1].0,
+                &format!("points[{i}]"),
+                &format!("points[{}]", i + 1),
+            )?;
+            Ok(HermiteSegment {
+                p0: w[0].0,
+                t0: w[0].1,
+                p1: w[1].0,
+                t1: w[1].1,
+            })
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn validates_and_normalizes() {
+        let s = HermiteSegment::new(DVec3::ZERO, DVec3::X * 3.0, DVec3::ONE, DVec3::Y).unwrap();
+        assert_eq!(s.t0, DVec3::X);
+        assert!((s.chord_length() - 3f64.sqrt()).abs() < 1e-15);
+        let e = HermiteSegment::new(DVec3::ONE, DVec3::X, DVec3::ONE, DVec3::Y).unwrap_err();
+        assert!(e.message().contains("p0 and p1 coincide"));
+        assert!(
+            HermiteSegment::new(DVec3::ZERO, DVec3::ZERO, DVec3::ONE, DVec3::Y)
+                .unwrap_err()
+                .message()
+                .contains("t0")
+        );
+    }
+
+    #[test]
+    fn sequences_name_the_offending_item() {
+        let points = [DVec3::ZERO, DVec3::X, DVec3::new(2.0, 1.0, 0.0)];
+        let tangents = [DVec3::X, DVec3::X, DVec3::new(1.0, f64::NAN, 0.0)];
+        assert!(hermite_sequence(&points, &tangents)
+            .unwrap_err()
+            .message()
+            .contains("tangents[2]"));
+        let tangents = [DVec3::X; 3];
+        assert_eq!(hermite_sequence(&points, &tangents).unwrap().len(), 2);
+        assert!(hermite_sequence(&points[..1], &tangents[..1])
+            .unwrap_err()
+            .message()
+            .contains("at least 2"));
+        let repeated = [DVec3::ZERO, DVec3::X, DVec3::X];
+        assert!(hermite_sequence(&repeated, &tangents)
+            .unwrap_err()
+            .message()
+            .contains("points[1] and points[2]"));
+    }
+}

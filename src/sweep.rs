@@ -1,0 +1,216 @@
+//! Sweep surfaces with exact rational frames: s(u, v) = x(v) + c₂(u) f₂(v) + c₃(u) f₃(v),
+//! equation (1) of Mäurer & Jüttler, with u along the profile and v along the spine.
+//!
+//! With a rational spine x = X/w (degree n), rational frames f₂ = N₂/d, f₃ = N₃/d (degree m,
+//! common denominator) and a rational profile (c₂, c₃) = (C₂, C₃)/h (degree p), the surface
+//! is the rational tensor-product patch of degree (p, n + m)
+//!
+//!   S = h ⊗ (X·d, w·d) + C₂ ⊗ (w·N₂, 0) + C₃ ⊗ (w·N₃, 0)      (homogeneous),
+//!
+//! i.e. equation (42) of the paper for any rational frame: degree (m', 2n' + 5) for a PH
+//! cubic spine with the biquadratic W, and likewise for the exact RMFs of the Möbius and
+//! RRMF constructions. The weights h(u)·w(v)·d(v) factor, so the patches join into one NURBS
+//! whenever frames and spine are continuous.
+
+use crate::bezier::bernstein::product;
+use crate::bezier::{PiecewiseCurve, PiecewiseSurface, RationalBezierCurve, RationalBezierPatch};
+use crate::error::{invalid, Result};
+use crate::frames::rational::{RationalFrameSegment, RationalFrames};
+use glam::{DVec3, DVec4};
+
+/// Relative tolerance for the frames' tangent against the spine's.
+const TANGENT_TOLERANCE: f64 = 1e-8;
+
+/// The sweep of `profile` (its x → f₂, y → f₃; z ignored) along `spine` with `frames`.
+/// The frames must belong to the spine: the spine's breakpoints or a refinement of them
+/// (the spine is then split to match), and frame tangent = spine tangent.
+pub fn sweep(
+    spine: &PiecewiseCurve,
+    frames: &RationalFrames,
+    profile: &PiecewiseCurve,
+) -> Result<PiecewiseSurface> {
+    let refined;
+    let spine = if spine.breaks() == frames.breaks() {
+        spine
+    } else {
+        refined = spine.refined(frames.breaks()).map_err(|_| {
+            crate::Error::InvalidInput(
+                "frames do not belong to the spine: their parameter breakpoints differ".into(),
+            )
+        })?;
+        &refined
+    };
+    check_frames_fit_spine(spine, frames)?;
+    let mut patches = Vec::with_capacity(profile.segments().len() * spine.segments().len());
+    for piece in profile.segments() {
+        for (segment, frame) in spine.segments().iter().zip(frames.segments()) {
+            patches.push(sweep_patch(segment, frame, piece)?);
+        }
+    }
+    PiecewiseSurface::new(patches, profile.breaks().to_vec(), spine.breaks().to_vec())
+}
+
+/// One patch: profile piece × spine segment (see the module equation).
+fn sweep_patch(
+    spine: &RationalBezierCurve,
+    frame: &RationalFrameSegment,
+    profile: &RationalBezierCurve,
+) -> Result<RationalBezierPatch> {
+    let x = spine.homogeneous();
+    let spine_weight: Vec<f64> = x.iter().map(|h| h.w).collect();
+    let along_spine = product(x, frame.denominator(), |h: DVec4, d: f64| h * d);
+    let along_f2: Vec<DVec4> = product(&spine_weight, frame.f2_numerator(), |w: f64, n: DVec3| {
+        (n * w).extend(0.0)
+    });
+    let along_f3: Vec<DVec4> = product(&spine_weight, frame.f3_numerator(), |w: f64, n: DVec3| {
+        (n * w).extend(0.0)
+    });
+    let c = profile.homogeneous();
+    let h: Vec<f64> = c.iter().map(|p| p.w).collect();
+    let c2: Vec<f64> = c.iter().map(|p| p.x).collect();
+    let c3: Vec<f64> = c.iter().map(|p| p.y).collect();
+    RationalBezierPatch::from_outer_products(&[
+        (&h, &along_spine),
+        (&c2, &along_f2),
+        (&c3, &along_f3),
+    ])
+}
+
+/// The frames must share the spine's breakpoints and be adapted to it (f₂ × f₃ = the
+/// spine's unit tangent), checked at both ends and the middle of every segment.
+fn check_frames_fit_spine(spine: &PiecewiseCurve, frames: &RationalFrames) -> Result<()> {
+    if spine.breaks() != frames.breaks() {
+        return invalid!("frames do not belong to the spine: their parameter breakpoints differ");
+    }
+    for (k, (segment, frame)) in spine.segments().iter().zip(frames.segments()).enumerate() {
+        for s in [0.0, 0.5, 1.0] {
+            let d = segment.eval_jet(s).d1;
+            let tangent = frame.frame(s).tangent;
+            if d.length() == 0.0 || (d.normalize() - tangent).length() > TANGENT_TOLERANCE {
+                return invalid!(
+                    "frames do not belong to the spine: their tangent differs on segment {k}"
+                );
+            }
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::bezier::bernstein::restrict;
+    use crate::frames::metrics::{gaussian_curvature, parameter_line_cosine};
+    use glam::DVec3;
+
+    /// A quarter circle of radius 2 in the xy-plane with its (rational, rotation-minimizing)
+    /// frame f₂ = −radial direction, f₃ = +z.
+    fn arc_with_frames() -> (PiecewiseCurve, RationalFrames) {
+        let s = std::f64::consts::FRAC_1_SQRT_2;
+        let weights = [1.0, s, 1.0];
+        let arc = RationalBezierCurve::from_weighted(
+            &[
+                DVec3::new(2.0, 0.0, 0.0),
+                DVec3::new(2.0, 2.0, 0.0),
+                DVec3::new(0.0, 2.0, 0.0),
+            ],
+            &weights,
+        )
+        .unwrap();
+        let f2 = vec![-DVec3::X, -DVec3::new(1.0, 1.0, 0.0) * s, -DVec3::Y];
+        let f3 = weights.iter().map(|&w| DVec3::Z * w).collect();
+        let frame = RationalFrameSegment::new(f2, f3, weights.to_vec()).unwrap();
+        (
+            PiecewiseCurve::new(vec![arc], vec![0.0, 1.0]).unwrap(),
+            RationalFrames::new(vec![frame], vec![0.0, 1.0]).unwrap(),
+        )
+    }
+
+    fn line_profile() -> PiecewiseCurve {
+        let line = RationalBezierCurve::polynomial(&[
+            DVec3::new(-0.5, 0.3, 0.0),
+            DVec3::new(0.5, -0.2, 0.0),
+        ])
+        .unwrap();
+        PiecewiseCurve::new(vec![line], vec![0.0, 1.0]).unwrap()
+    }
+
+    #[test]
+    fn sweeping_a_circle_around_a_circle_gives_a_torus_with_orthogonal_parameter_lines() {
+        let (spine, frames) = arc_with_frames();
+        let s = std::f64::consts::FRAC_1_SQRT_2;
+        let circle = RationalBezierCurve::from_weighted(
+            &[
+                DVec3::new(0.5, 0.0, 0.0),
+                DVec3::new(0.5, 0.5, 0.0),
+                DVec3::new(0.0, 0.5, 0.0),
+            ],
+            &[1.0, s, 1.0],
+        )
+        .unwrap();
+        let profile = PiecewiseCurve::new(vec![circle], vec![0.0, 1.0]).unwrap();
+        let torus = sweep(&spine, &frames, &profile).unwrap();
+        assert_eq!(
+            (torus.patches()[0].degree_u(), torus.patches()[0].degree_v()),
+            (2, 4)
+        );
+        for i in 0..=8 {
+            for j in 0..=8 {
+                let (u, v) = (i as f64 / 8.0, j as f64 / 8.0);
+                let jet = torus.eval_jet(u, v);
+                let p = jet.point;
+                // Distance from the spine circle (radius 2 in the xy-plane) is the tube radius.
+                let radial = (p.truncate().length() - 2.0).hypot(p.z);
+                assert!((radial - 0.5).abs() < 1e-14, "{radial}");
+                assert!(parameter_line_cosine(&jet) < 1e-14);
+            }
+        }
+    }
+
+    #[test]
+    fn sweeping_a_line_gives_a_developable_surface() {
+        let (spine, frames) = arc_with_frames();
+        let strip = sweep(&spine, &frames, &line_profile()).unwrap();
+        for i in 0..=6 {
+            let jet = strip.eval_jet(i as f64 / 6.0, 0.37);
+            assert!(gaussian_curvature(&jet).abs() < 1e-13);
+            assert!(parameter_line_cosine(&jet) < 1e-14);
+        }
+    }
+
+    #[test]
+    fn frames_may_refine_the_spine() {
+        let (spine, frames) = arc_with_frames();
+        let seg = &frames.segments()[0];
+        let halves: Vec<RationalFrameSegment> = [(0.0, 0.5), (0.5, 1.0)]
+            .iter()
+            .map(|&(a, b)| {
+                RationalFrameSegment::new(
+                    restrict(seg.f2_numerator(), a, b),
+                    restrict(seg.f3_numerator(), a, b),
+                    restrict(seg.denominator(), a, b),
+                )
+                .unwrap()
+            })
+            .collect();
+        let finer = RationalFrames::new(halves, vec![0.0, 0.5, 1.0]).unwrap();
+        let coarse = sweep(&spine, &frames, &line_profile()).unwrap();
+        let fine = sweep(&spine, &finer, &line_profile()).unwrap();
+        assert_eq!(fine.v_breaks(), &[0.0, 0.5, 1.0]);
+        for i in 0..=10 {
+            let (u, v) = (0.3, i as f64 / 10.0);
+            assert!((fine.eval(u, v) - coarse.eval(u, v)).length() < 1e-14);
+        }
+    }
+
+    #[test]
+    fn rejects_frames_of_another_curve() {
+        let (spine, frames) = arc_with_frames();
+        let other = PiecewiseCurve::new(spine.segments().to_vec(), vec![0.0, 2.0]).unwrap();
+        assert!(sweep(&other, &frames, &line_profile()).is_err());
+        let line = RationalBezierCurve::polynomial(&[DVec3::ZERO, DVec3::X]).unwrap();
+        let straight = PiecewiseCurve::new(vec![line], vec![0.0, 1.0]).unwrap();
+        let e = sweep(&straight, &frames, &line_profile()).unwrap_err();
+        assert!(e.message().contains("tangent"));
+    }
+}
