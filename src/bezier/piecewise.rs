@@ -32,7 +32,7 @@ pub fn check_breaks(breaks: &[f64], pieces: usize, name: &str) -> Result<()> {
 /// Index of the interval of `breaks` containing `t` and the local parameter in [0, 1].
 /// Parameters outside the domain are clamped; interior breakpoints belong to the interval
 /// on their right.
-fn locate(breaks: &[f64], t: f64) -> (usize, f64) {
+pub fn locate(breaks: &[f64], t: f64) -> (usize, f64) {
     let last = breaks.len() - 2;
     let k = breaks[1..=last].partition_point(|&b| b <= t);
     let (a, b) = (breaks[k], breaks[k + 1]);

@@ -65,6 +65,18 @@ pub(crate) fn guard_free(body: impl FnOnce()) {
     let _ = catch_unwind(AssertUnwindSafe(body));
 }
 
+/// Drops a handle created by `Box::into_raw`; NULL is a no-op.
+///
+/// # Safety
+/// `handle` must be NULL or a pointer from `Box::into_raw` not freed before.
+pub(crate) unsafe fn free_handle<T>(handle: *mut T) {
+    guard_free(|| {
+        if !handle.is_null() {
+            drop(Box::from_raw(handle));
+        }
+    })
+}
+
 fn check_aligned<T>(p: *const T, name: &'static str) -> FfiResult {
     if (p as usize) % std::mem::align_of::<T>() != 0 {
         return invalid_arg(format!("{name} is not suitably aligned"));

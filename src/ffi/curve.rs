@@ -2,7 +2,7 @@
 //! NURBS and per-segment views.
 
 use super::boundary::{
-    buffer, guard, guard_free, optional_out, out_ptr, reference, slice, to_usize, write, FfiError,
+    buffer, free_handle, guard, optional_out, out_ptr, reference, slice, to_usize, write, FfiError,
     FfiResult,
 };
 use super::status::RmfStatus;
@@ -126,11 +126,7 @@ pub unsafe extern "C" fn rmf_nurbs_curve_create(
 /// surfaces built from it stay valid (they keep their own reference).
 #[no_mangle]
 pub unsafe extern "C" fn rmf_curve_free(curve: *mut RmfCurve) {
-    guard_free(|| {
-        if !curve.is_null() {
-            drop(Box::from_raw(curve));
-        }
-    })
+    free_handle(curve)
 }
 
 /// The parameter domain [t_min, t_max] of a curve.

@@ -1,6 +1,6 @@
 //! `RmfFrames`: an adapted frame (t, f₂, f₃) along a curve, sharing its parameter.
 
-use super::boundary::{guard, guard_free, invalid_arg, out_ptr, reference, write, FfiResult};
+use super::boundary::{free_handle, guard, invalid_arg, out_ptr, reference, write, FfiResult};
 use super::curve::RmfCurve;
 use super::status::RmfStatus;
 use super::types::RmfVec3;
@@ -29,11 +29,7 @@ impl RmfFrames {
 /// Frees frames. NULL is a no-op.
 #[no_mangle]
 pub unsafe extern "C" fn rmf_frames_free(frames: *mut RmfFrames) {
-    guard_free(|| {
-        if !frames.is_null() {
-            drop(Box::from_raw(frames));
-        }
-    })
+    free_handle(frames)
 }
 
 /// The parameter domain of the frames (that of their curve).

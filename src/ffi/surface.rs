@@ -2,7 +2,7 @@
 //! with its NURBS and per-patch views and a tessellator.
 
 use super::boundary::{
-    buffer, guard, guard_free, invalid_arg, optional_out, out_ptr, reference, slice, to_usize,
+    buffer, free_handle, guard, invalid_arg, optional_out, out_ptr, reference, slice, to_usize,
     write, FfiError, FfiResult,
 };
 use super::curve::RmfCurve;
@@ -150,11 +150,7 @@ pub unsafe extern "C" fn rmf_nurbs_surface_create(
 /// Frees a surface. NULL is a no-op.
 #[no_mangle]
 pub unsafe extern "C" fn rmf_surface_free(surface: *mut RmfSurface) {
-    guard_free(|| {
-        if !surface.is_null() {
-            drop(Box::from_raw(surface));
-        }
-    })
+    free_handle(surface)
 }
 
 /// The parameter domain [u_min, u_max] × [v_min, v_max] of a surface.

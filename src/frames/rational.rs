@@ -11,7 +11,7 @@
 use super::metrics::angle_about_tangent;
 use super::Frame;
 use crate::bezier::bernstein::{self, MAX_DEGREE};
-use crate::bezier::{check_breaks, RationalBezierCurve};
+use crate::bezier::{check_breaks, locate, RationalBezierCurve};
 use crate::error::{invalid, Result};
 use crate::math::normal_plane_unit;
 use glam::DVec3;
@@ -190,11 +190,10 @@ impl RationalFrames {
         &self.breaks
     }
 
+    /// Segment, local parameter and segment length at the global parameter `t`.
     fn locate(&self, t: f64) -> (usize, f64, f64) {
-        let last = self.segments.len() - 1;
-        let k = self.breaks[1..=last].partition_point(|&b| b <= t);
-        let h = self.breaks[k + 1] - self.breaks[k];
-        (k, ((t - self.breaks[k]) / h).clamp(0.0, 1.0), h)
+        let (k, s) = locate(&self.breaks, t);
+        (k, s, self.breaks[k + 1] - self.breaks[k])
     }
 
     pub fn frame(&self, t: f64) -> Frame {
