@@ -260,6 +260,8 @@ extern "C" {
  * @param[in] knot_count Must equal pole_count + degree + 1.
  * @param[out] out Receives the new curve; the caller frees it with rmf_curve_free.
  *            Untouched on failure.
+ *
+ * Degree and counts are checked against each other before any array is read.
  * @return RMF_OK on success.
  * @return RMF_ERROR_NULL_POINTER If poles, knots or out is NULL.
  * @return RMF_ERROR_INVALID_INPUT If a count, degree, knot, weight or pole is invalid (the
@@ -493,6 +495,8 @@ const char *rmf_status_name(uint32_t status);
  * @param[in] knots_u, knot_count_u Clamped knot vector in u, knot_count_u = pole_count_u + degree_u + 1.
  * @param[in] knots_v, knot_count_v Clamped knot vector in v, likewise.
  * @param[out] out Receives the surface; free with rmf_surface_free. Untouched on failure.
+ *
+ * Degrees and counts are checked against each other before any array is read.
  * @return RMF_OK on success.
  * @return RMF_ERROR_NULL_POINTER If poles, knots_u, knots_v or out is NULL.
  * @return RMF_ERROR_INVALID_INPUT If a count, degree, knot, weight or pole is invalid (the
