@@ -11,6 +11,7 @@
 //! | [`hermite`] | validated G1 Hermite data (points + unit tangents) |
 //! | [`frames`] | Frenet frames, the double-reflection RMF (the reference), rational frames, metrics |
 //! | [`mesh`] | triangle meshes of surfaces on the patch grid |
+//! | [`mobius`] | Möbius maps, exact images of curves and frames, rational-RMF curves (Bartoň et al.) |
 //! | [`sweep`] | sweep surfaces x + c₂ f₂ + c₃ f₃ with exact rational frames |
 //! | `ffi` | the C API: handles, status codes, last error, panic boundary |
 //!
@@ -33,6 +34,10 @@ pub mod math;
 /// cbindgen:ignore
 pub mod mesh;
 /// cbindgen:ignore
+pub mod mobius;
+/// cbindgen:ignore
 pub mod sweep;
+#[cfg(test)]
+mod testing;
 
 pub use error::{Error, Result};

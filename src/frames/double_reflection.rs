@@ -104,41 +104,21 @@ impl DoubleReflectionRmf {
 mod tests {
     use super::*;
     use crate::curve::uniform_parameters;
+    use crate::testing::Helix;
 
-    /// The helix (r cos t, r sin t, h t) with its exact RMF: the Frenet frame rotated by
-    /// the angle Ω = −∫τ ds = −τ·σ·t of eq. (6) of Mäurer & Jüttler (constant κ and τ).
-    struct Helix;
-    const R: f64 = 2.0;
-    const H: f64 = 0.5;
-
-    impl ParametricCurve for Helix {
-        fn domain(&self) -> (f64, f64) {
-            (0.0, 4.0 * std::f64::consts::PI)
-        }
-        fn point_derivative(&self, t: f64) -> Result<(DVec3, DVec3)> {
-            Ok((
-                DVec3::new(R * t.cos(), R * t.sin(), H * t),
-                DVec3::new(-R * t.sin(), R * t.cos(), H),
-            ))
-        }
-    }
-
-    fn exact_rmf(t: f64) -> Frame {
-        let d1 = DVec3::new(-R * t.sin(), R * t.cos(), H);
-        let d2 = DVec3::new(-R * t.cos(), -R * t.sin(), 0.0);
-        let frenet = crate::frames::frenet::frenet_frame(d1, d2).unwrap();
-        let speed = (R * R + H * H).sqrt();
-        let torsion = H / (R * R + H * H);
-        frenet.rotated(-torsion * speed * t)
-    }
+    const HELIX: Helix = Helix {
+        radius: 2.0,
+        pitch: 0.5,
+    };
 
     fn max_error(samples: usize) -> f64 {
-        let params = uniform_parameters(Helix.domain(), samples);
-        let rmf = DoubleReflectionRmf::along(&Helix, params.clone(), exact_rmf(0.0).f2).unwrap();
+        let params = uniform_parameters(HELIX.domain(), samples);
+        let rmf =
+            DoubleReflectionRmf::along(&HELIX, params.clone(), HELIX.exact_rmf(0.0).f2).unwrap();
         params
             .iter()
             .zip(rmf.frames())
-            .map(|(&t, f)| (f.f2 - exact_rmf(t).f2).length())
+            .map(|(&t, f)| (f.f2 - HELIX.exact_rmf(t).f2).length())
             .fold(0.0, f64::max)
     }
 
@@ -152,19 +132,19 @@ mod tests {
 
     #[test]
     fn frames_between_samples_follow_the_exact_rmf() {
-        let params = uniform_parameters(Helix.domain(), 200);
-        let rmf = DoubleReflectionRmf::along(&Helix, params, exact_rmf(0.0).f2).unwrap();
-        let (x, t) = Helix.point_unit_tangent(1.234).unwrap();
+        let params = uniform_parameters(HELIX.domain(), 200);
+        let rmf = DoubleReflectionRmf::along(&HELIX, params, HELIX.exact_rmf(0.0).f2).unwrap();
+        let (x, t) = HELIX.point_unit_tangent(1.234).unwrap();
         let f = rmf.frame_at(1.234, x, t);
         assert!(f.f2.dot(t).abs() < 1e-14 && (f.f2.length() - 1.0).abs() < 1e-14);
-        assert!((f.f2 - exact_rmf(1.234).f2).length() < 1e-6);
+        assert!((f.f2 - HELIX.exact_rmf(1.234).f2).length() < 1e-6);
     }
 
     #[test]
     fn rejects_too_few_samples_and_a_tangential_normal() {
-        assert!(DoubleReflectionRmf::along(&Helix, vec![0.0], DVec3::Z).is_err());
-        let (_, t0) = Helix.point_unit_tangent(0.0).unwrap();
-        let e = DoubleReflectionRmf::along(&Helix, vec![0.0, 1.0], t0).unwrap_err();
+        assert!(DoubleReflectionRmf::along(&HELIX, vec![0.0], DVec3::Z).is_err());
+        let (_, t0) = HELIX.point_unit_tangent(0.0).unwrap();
+        let e = DoubleReflectionRmf::along(&HELIX, vec![0.0, 1.0], t0).unwrap_err();
         assert!(e.message().contains("initial_normal"));
     }
 }

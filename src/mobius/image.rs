@@ -1,0 +1,333 @@
+//! Exact images of rational Bézier curves and of rational frames under Möbius maps,
+//! computed by polynomial products (Bartoň, Jüttler & Wang, Corollary 1), never by fitting.
+//!
+//! For an inversion in the sphere (c, r) and a curve x = X/w of degree n, with D = X − c·w:
+//!
+//!   μ∘x = (c·|D|² + r²·w·D) / |D|²                        (degree 2n),
+//!
+//! and a frame vector v = V/d along x goes by the normalized differential (12) to
+//!
+//!   d*μ(v) = (V·|D|² − 2 (V·D) D) / (d·|D|²)                (degree m + 2n).
+//!
+//! A plane reflection acts linearly and keeps degrees. Every inversion reverses
+//! orientation, so f₃ is negated to keep f₃ = t × f₂. By Theorem 1 the image of a
+//! rotation-minimizing frame is rotation-minimizing on the image curve, so exact rational
+//! RMFs map to exact rational RMFs. Images may have positive *functions* with negative
+//! Bernstein coefficients as weights: segments are split until every weight is positive.
+
+use super::transform::{Inversion, MobiusMap};
+use crate::bezier::bernstein::{positive_subdivision, product, restrict};
+use crate::bezier::{PiecewiseCurve, RationalBezierCurve};
+use crate::error::{invalid, Result};
+use crate::frames::rational::{RationalFrameSegment, RationalFrames};
+use glam::{DVec3, DVec4};
+
+/// Halvings allowed per segment when making weights positive (2⁻³⁰ of a segment is far
+/// below any distance where the image would still be representable).
+const MAX_HALVINGS: usize = 30;
+
+/// Homogeneous Bernstein coefficients of a curve segment, weights of any sign.
+type Homogeneous = Vec<DVec4>;
+
+/// A frame segment before its denominator is known to have positive coefficients.
+struct RawFrame {
+    f2: Vec<DVec3>,
+    f3: Vec<DVec3>,
+    denominator: Vec<f64>,
+}
+
+/// D = X − c·w and q = |D|² of a segment, for the sphere inversion centred at `center`.
+fn offset_and_square(points: &[DVec4], center: DVec3) -> (Vec<DVec3>, Vec<f64>) {
+    let d: Vec<DVec3> = points.iter().map(|h| h.truncate() - center * h.w).collect();
+    let q = product(&d, &d, |a: DVec3, b: DVec3| a.dot(b));
+    (d, q)
+}
+
+/// The image of a segment under one inversion.
+fn invert_points(inv: &Inversion, points: &[DVec4]) -> Homogeneous {
+    match *inv {
+        Inversion::Sphere { center, radius } => {
+            let (d, q) = offset_and_square(points, center);
+            let w: Vec<f64> = points.iter().map(|h| h.w).collect();
+            let wd = product(&w, &d, |a: f64, b: DVec3| b * a);
+            q.iter()
+                .zip(&wd)
+                .map(|(&qi, &wdi)| (center * qi + wdi * (radius * radius)).extend(qi))
+                .collect()
+        }
+        Inversion::Plane { point, normal } => points
+            .iter()
+            .map(|h| {
+                (h.truncate() - 2.0 * (h.truncate() - point * h.w).dot(normal) * normal).extend(h.w)
+            })
+            .collect(),
+    }
+}
+
+/// A frame along the segment `points`, carried through one inversion (f₃ negated).
+fn transport_frame(inv: &Inversion, points: &[DVec4], frame: RawFrame) -> RawFrame {
+    match *inv {
+        Inversion::Sphere { center, .. } => {
+            let (d, q) = offset_and_square(points, center);
+            let reflect = |v: &[DVec3], sign: f64| -> Vec<DVec3> {
+                let vq = product(v, &q, |a: DVec3, b: f64| a * b);
+                let vd = product(v, &d, |a: DVec3, b: DVec3| a.dot(b));
+                let vdd = product(&vd, &d, |a: f64, b: DVec3| b * a);
+                vq.iter()
+                    .zip(&vdd)
+                    .map(|(&a, &b)| (a - 2.0 * b) * sign)
+                    .collect()
+            };
+            RawFrame {
+                f2: reflect(&frame.f2, 1.0),
+                f3: reflect(&frame.f3, -1.0),
+                denominator: product(&frame.denominator, &q, |a: f64, b: f64| a * b),
+            }
+        }
+        Inversion::Plane { normal, .. } => {
+            let reflect = |v: &[DVec3], sign: f64| {
+                v.iter()
+                    .map(|&x| (x - 2.0 * x.dot(normal) * normal) * sign)
+                    .collect()
+            };
+            RawFrame {
+                f2: reflect(&frame.f2, 1.0),
+                f3: reflect(&frame.f3, -1.0),
+                denominator: frame.denominator,
+            }
+        }
+    }
+}
+
+/// The image of one segment (and of its frame, if given) under the whole map.
+fn map_segment(
+    map: &MobiusMap,
+    points: &[DVec4],
+    frame: Option<RawFrame>,
+) -> (Homogeneous, Option<RawFrame>) {
+    map.inversions()
+        .iter()
+        .fold((points.to_vec(), frame), |(pts, frame), inv| {
+            let frame = frame.map(|f| transport_frame(inv, &pts, f));
+            (invert_points(inv, &pts), frame)
+        })
+}
+
+/// Local breakpoints on which the image's weights (and frame denominator) are positive.
+fn positive_pieces(points: &[DVec4], frame: Option<&RawFrame>, segment: usize) -> Result<Vec<f64>> {
+    let weights: Vec<f64> = points.iter().map(|h| h.w).collect();
+    let mut polys: Vec<&[f64]> = vec![&weights];
+    if let Some(f) = frame {
+        polys.push(&f.denominator);
+    }
+    match positive_subdivision(&polys, MAX_HALVINGS) {
+        Some(breaks) => Ok(breaks),
+        None => invalid!("segment {segment} passes through (or too near) an inversion centre: its image is unbounded"),
+    }
+}
+
+/// `a + (b − a)·s`, exactly `a` and `b` at the ends (breakpoints must match exactly).
+fn global_parameter(a: f64, b: f64, s: f64) -> f64 {
+    match s {
+        0.0 => a,
+        1.0 => b,
+        _ => a + (b - a) * s,
+    }
+}
+
+/// The image of a piecewise curve under a Möbius map, exactly.
+pub fn map_curve(map: &MobiusMap, curve: &PiecewiseCurve) -> Result<PiecewiseCurve> {
+    Ok(map_pieces(map, curve, None)?.0)
+}
+
+/// The images of a curve and of exact rational frames along it (Corollary 1). The frames
+/// may refine the curve's segments; the result shares one segmentation.
+pub fn map_framed_curve(
+    map: &MobiusMap,
+    curve: &PiecewiseCurve,
+    frames: &RationalFrames,
+) -> Result<(PiecewiseCurve, RationalFrames)> {
+    let curve = curve.refined(frames.breaks())?;
+    let (image, frames) = map_pieces(map, &curve, Some(frames))?;
+    Ok((image, frames.expect("frames were given")))
+}
+
+/// Maps every segment (with its frame, if any), splits where weights are not positive, and
+/// reassembles on the refined segmentation.
+fn map_pieces(
+    map: &MobiusMap,
+    curve: &PiecewiseCurve,
+    frames: Option<&RationalFrames>,
+) -> Result<(PiecewiseCurve, Option<RationalFrames>)> {
+    let mut segments = Vec::new();
+    let mut frame_segments = Vec::new();
+    let mut breaks = vec![curve.breaks()[0]];
+    for (k, segment) in curve.segments().iter().enumerate() {
+        let raw = frames.map(|f| {
+            let frame = &f.segments()[k];
+            RawFrame {
+                f2: frame.f2_numerator().to_vec(),
+                f3: frame.f3_numerator().to_vec(),
+                denominator: frame.denominator().to_vec(),
+            }
+        });
+        let (image, raw) = map_segment(map, segment.homogeneous(), raw);
+        let (a, b) = (curve.breaks()[k], curve.breaks()[k + 1]);
+        for w in positive_pieces(&image, raw.as_ref(), k)?.windows(2) {
+            let (s0, s1) = (w[0], w[1]);
+            segments.push(RationalBezierCurve::from_homogeneous(restrict(
+                &image, s0, s1,
+            ))?);
+            if let Some(f) = &raw {
+                frame_segments.push(RationalFrameSegment::new(
+                    restrict(&f.f2, s0, s1),
+                    restrict(&f.f3, s0, s1),
+                    restrict(&f.denominator, s0, s1),
+                )?);
+            }
+            breaks.push(global_parameter(a, b, s1));
+        }
+    }
+    let frames = match frames {
+        Some(_) => Some(RationalFrames::new(frame_segments, breaks.clone())?),
+        None => None,
+    };
+    Ok((PiecewiseCurve::new(segments, breaks)?, frames))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::curve::{uniform_parameters, ParametricCurve};
+    use crate::frames::double_reflection::DoubleReflectionRmf;
+    use crate::frames::metrics::{orthonormality_error, rmf_defect};
+    use crate::frames::{FrameField, FrameKind};
+    use crate::testing::{planar_ph_cubic, Helix};
+    use std::sync::Arc;
+
+    fn composite() -> MobiusMap {
+        MobiusMap::new(vec![
+            Inversion::sphere(DVec3::new(0.5, 3.0, 2.0), 2.5).unwrap(),
+            Inversion::plane(DVec3::new(0.0, 0.5, 0.0), DVec3::new(1.0, 2.0, -1.0)).unwrap(),
+            Inversion::sphere(DVec3::new(-2.0, 0.0, 1.5), 1.8).unwrap(),
+        ])
+    }
+
+    /// μ∘x for an analytic curve: points by μ, derivatives by dμ.
+    struct Image<'a> {
+        map: &'a MobiusMap,
+        curve: &'a dyn ParametricCurve,
+    }
+
+    impl ParametricCurve for Image<'_> {
+        fn domain(&self) -> (f64, f64) {
+            self.curve.domain()
+        }
+        fn point_derivative(&self, t: f64) -> crate::Result<(DVec3, DVec3)> {
+            let (p, d) = self.curve.point_derivative(t)?;
+            Ok((
+                self.map.apply(p).unwrap(),
+                self.map.differential(p, d).unwrap(),
+            ))
+        }
+    }
+
+    /// Theorem 1, pointwise: d*μ carries the exact RMF of a helix to the RMF of its image,
+    /// which double reflection computes independently on the image curve.
+    #[test]
+    fn theorem_1_the_image_of_an_rmf_is_the_rmf_of_the_image() {
+        let helix = Helix {
+            radius: 1.0,
+            pitch: 0.4,
+        };
+        let map = composite();
+        let image = Image {
+            map: &map,
+            curve: &helix,
+        };
+        let transported = |t: f64| {
+            let (p, _) = helix.point_derivative(t).unwrap();
+            map.normalized_differential(p, helix.exact_rmf(t).f2)
+                .unwrap()
+        };
+        let params = uniform_parameters(helix.domain(), 8000);
+        let reference =
+            DoubleReflectionRmf::along(&image, params.clone(), transported(0.0)).unwrap();
+        let worst = params
+            .iter()
+            .zip(reference.frames())
+            .map(|(&t, f)| (transported(t) - f.f2).length())
+            .fold(0.0, f64::max);
+        assert!(
+            worst < 1e-9,
+            "transported RMF differs from double reflection by {worst}"
+        );
+    }
+
+    /// Corollary 1, exactly: the rational image of a rational RMF is a rational RMF of the
+    /// rational image curve. Mapped twice, so the second map acts on a non-planar curve.
+    #[test]
+    fn exact_images_of_rational_rmfs_are_rational_rmfs() {
+        let (curve, frames) = planar_ph_cubic();
+        let map = composite();
+        let (once, once_frames) = map_framed_curve(&map, &curve, &frames).unwrap();
+        let second = MobiusMap::new(vec![
+            Inversion::sphere(DVec3::new(1.0, -2.0, -1.0), 3.0).unwrap()
+        ]);
+        let (twice, twice_frames) = map_framed_curve(&second, &once, &once_frames).unwrap();
+        let degree = twice.segments().iter().map(|s| s.degree()).max().unwrap();
+        assert_eq!(
+            degree, 24,
+            "each sphere inversion doubles the degree: 3 → 6 → 12 → 24"
+        );
+        let full = MobiusMap::new([map.inversions(), second.inversions()].concat());
+        let field = FrameField::new(
+            Arc::new(twice.clone()),
+            FrameKind::Rational(twice_frames.clone()),
+        )
+        .unwrap();
+        let params = uniform_parameters(twice.domain(), 1001);
+        let mut worst = [0.0f64; 4];
+        for &t in &params {
+            let original = curve.eval(t);
+            let p = twice.eval(t);
+            worst[0] = worst[0].max((p - full.apply(original).unwrap()).length());
+            let frame = twice_frames.frame(t);
+            let tangent = twice.eval_jet(t).d1.normalize();
+            worst[1] = worst[1].max((frame.tangent - tangent).length());
+            worst[2] = worst[2].max(rmf_defect(&field, t).unwrap().abs());
+            worst[3] = worst[3].max(orthonormality_error(&frame));
+        }
+        assert!(worst[0] < 1e-12, "image points off by {}", worst[0]);
+        assert!(worst[1] < 1e-12, "frame tangent off by {}", worst[1]);
+        assert!(worst[2] < 1e-10, "RMF defect {}", worst[2]);
+        assert!(worst[3] < 1e-13, "orthonormality {}", worst[3]);
+        let reference =
+            DoubleReflectionRmf::along(&twice, params.clone(), twice_frames.frame(0.0).f2).unwrap();
+        let drift = params
+            .iter()
+            .zip(reference.frames())
+            .map(|(&t, f)| (twice_frames.frame(t).f2 - f.f2).length())
+            .fold(0.0, f64::max);
+        assert!(
+            drift < 1e-8,
+            "exact rational RMF vs double reflection: {drift}"
+        );
+    }
+
+    #[test]
+    fn a_curve_through_an_inversion_centre_is_refused() {
+        let (curve, _) = planar_ph_cubic();
+        let through = MobiusMap::new(vec![Inversion::sphere(curve.eval(0.5), 1.0).unwrap()]);
+        let e = map_curve(&through, &curve).unwrap_err();
+        assert!(e.message().contains("inversion centre"), "{e}");
+        let reflected = map_curve(
+            &MobiusMap::new(vec![Inversion::plane(DVec3::ZERO, DVec3::X).unwrap()]),
+            &curve,
+        )
+        .unwrap();
+        assert!(
+            (reflected.eval(0.3) - curve.eval(0.3) * DVec3::new(-1.0, 1.0, 1.0)).length() < 1e-15
+        );
+    }
+}
