@@ -7,6 +7,7 @@
 //!   Theorem 1 keep rotation-minimizing frames rotation-minimizing.
 
 pub mod image;
+pub mod segment_map;
 pub mod transform;
 
 pub use image::{map_curve, map_framed_curve};
