@@ -53,6 +53,16 @@
 #define RMF_FRAME_F3 2
 
 /**
+ * RmfInversion.kind: inversion in the sphere (center, radius).
+ */
+#define RMF_INVERSION_SPHERE 0
+
+/**
+ * RmfInversion.kind: reflection in the plane through `center` with normal `normal`.
+ */
+#define RMF_INVERSION_PLANE 1
+
+/**
  * Major version of the library; equals the first number of rmf_version().
  */
 #define RMF_VERSION_MAJOR 0
@@ -198,6 +208,29 @@ typedef struct RmfBezierCurve {
   double t_start;
   double t_end;
 } RmfBezierCurve;
+
+/**
+ * One inversion of a Möbius transformation. A Möbius transformation is given as an array
+ * of inversions applied first to last (translations and rotations are two reflections).
+ */
+typedef struct RmfInversion {
+  /**
+   * RMF_INVERSION_SPHERE or RMF_INVERSION_PLANE.
+   */
+  uint32_t kind;
+  /**
+   * Sphere centre, or a point on the plane.
+   */
+  struct RmfVec3 center;
+  /**
+   * Sphere radius (> 0); ignored for planes.
+   */
+  double radius;
+  /**
+   * Plane normal (any non-zero length); ignored for spheres.
+   */
+  struct RmfVec3 normal;
+} RmfInversion;
 
 /**
  * Borrowed view of a NURBS surface. Pole (i, j) is at index `i * pole_count_v + j`, i along
@@ -458,6 +491,78 @@ RmfStatus rmf_frames_kind(const struct RmfFrames *frames, uint32_t *kind);
 RmfStatus rmf_frames_vector_curve(const struct RmfFrames *frames,
                                   uint32_t which,
                                   struct RmfCurve **out);
+
+/**
+ * The image μ(point) of a point under a Möbius transformation.
+ *
+ * @param[in] maps count inversions, applied first to last.
+ * @param[in] point A finite point.
+ * @param[out] image Receives μ(point). Untouched on failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If maps or image is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If count = 0, an inversion is invalid (radius ≤ 0, zero
+ *         normal, non-finite), or the point is sent to infinity (a sphere centre).
+ */
+RmfStatus rmf_mobius_point(const struct RmfInversion *maps,
+                           size_t count,
+                           struct RmfVec3 point,
+                           struct RmfVec3 *image);
+
+/**
+ * The normalized differential d*μ at a point applied to a vector (Bartoň et al. (8), (12)):
+ * the image direction of `vector` at μ(point), with the length of `vector`. Applied to a
+ * rotation-minimizing vector field along a curve it gives one along the image curve
+ * (Theorem 1).
+ *
+ * @param[out] image Receives d*μ_point(vector). Untouched on failure.
+ * @return RMF_OK, RMF_ERROR_NULL_POINTER (maps, image), or RMF_ERROR_INVALID_INPUT as for
+ *         rmf_mobius_point, or for a non-finite vector.
+ */
+RmfStatus rmf_mobius_vector(const struct RmfInversion *maps,
+                            size_t count,
+                            struct RmfVec3 point,
+                            struct RmfVec3 vector,
+                            struct RmfVec3 *image);
+
+/**
+ * The exact image of a rational curve under a Möbius transformation: a rational curve of
+ * degree 2n per sphere inversion (polynomial products, no fitting), with the curve's
+ * parameter. Segments are split where needed to keep all weights positive.
+ *
+ * @param[in] curve The curve; it must not pass through an inversion centre.
+ * @param[in] maps, count The transformation.
+ * @param[out] out Receives the image curve; free with rmf_curve_free.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If curve, maps or out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If the map is invalid or the curve passes through (or too
+ *         near) an inversion centre.
+ */
+RmfStatus rmf_mobius_curve(const struct RmfCurve *curve,
+                           const struct RmfInversion *maps,
+                           size_t count,
+                           struct RmfCurve **out);
+
+/**
+ * The exact images of exact rational frames and their curve under a Möbius
+ * transformation (Corollary 1): the frame vectors are carried by the normalized
+ * differential, so a rotation-minimizing frame stays rotation-minimizing (Theorem 1);
+ * f3 is re-oriented so that f3 = t × f2.
+ *
+ * @param[in] frames Exact rational frames (RMF_FRAMES_RATIONAL).
+ * @param[in] maps, count The transformation.
+ * @param[out] curve_out Receives the image curve; free with rmf_curve_free.
+ * @param[out] frames_out Receives the image frames; free with rmf_frames_free.
+ *             Both are written only on success.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If frames, maps, curve_out or frames_out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If the frames are not rational, the map is invalid, or the
+ *         curve passes through an inversion centre.
+ */
+RmfStatus rmf_mobius_frames(const struct RmfFrames *frames,
+                            const struct RmfInversion *maps,
+                            size_t count,
+                            struct RmfCurve **curve_out,
+                            struct RmfFrames **frames_out);
 
 /**
  * The message of the last failing call on the calling thread.

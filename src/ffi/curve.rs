@@ -30,9 +30,10 @@ struct CurveViews {
 
 impl RmfCurve {
     /// A handle for a computed object (`source = None`) or for caller NURBS data.
-    pub(crate) fn new(curve: PiecewiseCurve, source: Option<NurbsCurve>) -> Self {
+    /// The curve may be shared (an `Arc`) with frames built along it.
+    pub(crate) fn new(curve: impl Into<Arc<PiecewiseCurve>>, source: Option<NurbsCurve>) -> Self {
         Self {
-            curve: Arc::new(curve),
+            curve: curve.into(),
             source,
             views: OnceLock::new(),
         }
