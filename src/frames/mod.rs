@@ -5,9 +5,11 @@
 //!   the reference every rational RMF in this project is measured against;
 //! * [`rational`]: frames given exactly as piecewise rational functions (all RMF
 //!   constructions of the papers end here);
+//! * [`compare`]: errors of an approximate RMF against a reference RMF at nearest points;
 //! * [`metrics`]: rotation-minimizing defect, angles between frames, orthonormality, and
 //!   the surface measures (parameter-line angle, Gaussian curvature) used to verify sweeps.
 
+pub mod compare;
 pub mod double_reflection;
 pub mod frenet;
 pub mod metrics;
