@@ -29,11 +29,46 @@ const MAX_HALVINGS: usize = 30;
 /// Homogeneous Bernstein coefficients of a curve segment, weights of any sign.
 type Homogeneous = Vec<DVec4>;
 
-/// A frame segment before its denominator is known to have positive coefficients.
-struct RawFrame {
-    f2: Vec<DVec3>,
-    f3: Vec<DVec3>,
-    denominator: Vec<f64>,
+/// A frame segment before its denominator is known to have positive coefficients:
+/// f₂ = f2/denominator, f₃ = f3/denominator in Bernstein form, the denominator positive on
+/// [0, 1] as a function.
+#[derive(Clone, Debug)]
+pub struct RawFrame {
+    pub f2: Vec<DVec3>,
+    pub f3: Vec<DVec3>,
+    pub denominator: Vec<f64>,
+}
+
+/// One piece of a mapped segment: its end in the segment's local parameter, the curve, and
+/// its frame when one was mapped.
+pub type MappedPiece = (f64, RationalBezierCurve, Option<RationalFrameSegment>);
+
+/// The image of one segment (homogeneous points of any weights) and of its raw frame under
+/// `map`, split into pieces with positive weights and denominators. `segment` only names
+/// the segment in errors.
+pub fn map_raw_segment(
+    map: &MobiusMap,
+    points: &[DVec4],
+    frame: Option<RawFrame>,
+    segment: usize,
+) -> Result<Vec<MappedPiece>> {
+    let (image, raw) = map_segment(map, points, frame);
+    positive_pieces(&image, raw.as_ref(), segment)?
+        .windows(2)
+        .map(|w| {
+            let (s0, s1) = (w[0], w[1]);
+            let curve = RationalBezierCurve::from_homogeneous(restrict(&image, s0, s1))?;
+            let frame = match &raw {
+                Some(f) => Some(RationalFrameSegment::new(
+                    restrict(&f.f2, s0, s1),
+                    restrict(&f.f3, s0, s1),
+                    restrict(&f.denominator, s0, s1),
+                )?),
+                None => None,
+            };
+            Ok((s1, curve, frame))
+        })
+        .collect()
 }
 
 /// D = X − c·w and q = |D|² of a segment, for the sphere inversion centred at `center`.
@@ -127,7 +162,7 @@ fn positive_pieces(points: &[DVec4], frame: Option<&RawFrame>, segment: usize) -
 }
 
 /// `a + (b − a)·s`, exactly `a` and `b` at the ends (breakpoints must match exactly).
-fn global_parameter(a: f64, b: f64, s: f64) -> f64 {
+pub fn global_parameter(a: f64, b: f64, s: f64) -> f64 {
     match s {
         0.0 => a,
         1.0 => b,
@@ -171,20 +206,10 @@ fn map_pieces(
                 denominator: frame.denominator().to_vec(),
             }
         });
-        let (image, raw) = map_segment(map, segment.homogeneous(), raw);
         let (a, b) = (curve.breaks()[k], curve.breaks()[k + 1]);
-        for w in positive_pieces(&image, raw.as_ref(), k)?.windows(2) {
-            let (s0, s1) = (w[0], w[1]);
-            segments.push(RationalBezierCurve::from_homogeneous(restrict(
-                &image, s0, s1,
-            ))?);
-            if let Some(f) = &raw {
-                frame_segments.push(RationalFrameSegment::new(
-                    restrict(&f.f2, s0, s1),
-                    restrict(&f.f3, s0, s1),
-                    restrict(&f.denominator, s0, s1),
-                )?);
-            }
+        for (s1, piece, frame) in map_raw_segment(map, segment.homogeneous(), raw, k)? {
+            segments.push(piece);
+            frame_segments.extend(frame);
             breaks.push(global_parameter(a, b, s1));
         }
     }
