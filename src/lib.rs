@@ -12,6 +12,7 @@
 //! | [`frames`] | Frenet frames, the double-reflection RMF (the reference), rational frames, metrics |
 //! | [`mesh`] | triangle meshes of surfaces on the patch grid |
 //! | [`sweep`] | sweep surfaces x + c₂ f₂ + c₃ f₃ with exact rational frames |
+//! | [`ph_cubic`] | PH cubic splines, their exact and rational RMFs, profile-surface analysis (Mäurer & Jüttler) |
 //! | `ffi` | the C API: handles, status codes, last error, panic boundary |
 //!
 //! The geometry lives in safe Rust and knows nothing of C; a Rust user calls it directly.
@@ -32,6 +33,8 @@ pub mod hermite;
 pub mod math;
 /// cbindgen:ignore
 pub mod mesh;
+/// cbindgen:ignore
+pub mod ph_cubic;
 /// cbindgen:ignore
 pub mod sweep;
 
