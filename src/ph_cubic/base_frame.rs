@@ -1,0 +1,344 @@
+//! The rational adapted frame of one PH cubic that its RMF is measured from and built on,
+//! e₂ = E₂/d, e₃ = E₃/d, with the angle function that turns it into the exact RMF:
+//!
+//! * a cubic that bends: the Frenet frame (19) (quadratic over quadratic) and Ω of (30);
+//! * a (nearly) straight cubic, sin θ ≤ [`NEARLY_STRAIGHT`]: there (19) degenerates (its
+//!   numerators cancel down to relative size sin θ, and vanish on a line). Instead the frame
+//!   is carried along by the rotation taking t₀ = t(0) to t(v) about t₀ × t(v),
+//!   R x = x − (t·x)/(1 + t₀·t) (t₀ + t) for x ⊥ t₀, which for t = x'/σ is quartic over
+//!   quartic with denominator σ(σ + t₀·x'). Its twist about the tangent, relative to the RMF, is
+//!   of second order in the turning angle of the tangent (≤ 2θ), below 1e-11 here: it serves as
+//!   the RMF itself (angle function 0), and on a straight line it is the constant RMF.
+
+use super::cubic::PhCubic;
+use super::frenet::frenet_numerators;
+use super::rmf_angle::RmfAngle;
+use crate::bezier::bernstein::{self, product, restrict};
+use crate::error::{Error, Result};
+use crate::frames::rational::{RationalFrameSegment, RationalFrames};
+use crate::frames::Frame;
+use crate::math::orthonormal_to;
+use glam::DVec3;
+
+/// sin θ below which a cubic is treated as straight (see the module notes).
+pub const NEARLY_STRAIGHT: f64 = 1e-6;
+
+/// Halvings allowed to make a denominator's Bernstein coefficients positive.
+const MAX_SUBDIVISION_DEPTH: usize = 40;
+
+/// Frame numerators over one denominator, Bernstein coefficients of one degree on a
+/// parameter interval mapped to [0, 1]; unlike [`RationalFrameSegment`], the denominator's
+/// coefficients may still be negative (it is a positive function).
+#[derive(Clone, Debug, PartialEq)]
+pub struct FrameNumerators {
+    pub e2: Vec<DVec3>,
+    pub e3: Vec<DVec3>,
+    pub d: Vec<f64>,
+}
+
+impl FrameNumerators {
+    pub fn frame(&self, v: f64) -> Frame {
+        let d = bernstein::evaluate(&self.d, v);
+        let e2 = bernstein::evaluate(&self.e2, v) / d;
+        let e3 = bernstein::evaluate(&self.e3, v) / d;
+        Frame {
+            tangent: e2.cross(e3),
+            f2: e2,
+            f3: e3,
+        }
+    }
+
+    /// The same frame on [v0, v1], reparameterized to [0, 1].
+    pub fn restricted(&self, v0: f64, v1: f64) -> Self {
+        Self {
+            e2: restrict(&self.e2, v0, v1),
+            e3: restrict(&self.e3, v0, v1),
+            d: restrict(&self.d, v0, v1),
+        }
+    }
+
+    /// The frame turned about the tangent by φ(v) = 2 arctan(γ/β), equation (29): with
+    /// cos φ = (β² − γ²)/(β² + γ²), sin φ = 2βγ/(β² + γ²) the numerators become
+    /// 2βγ E₃ + (β² − γ²) E₂ and (β² − γ²) E₃ − 2βγ E₂ over (β² + γ²) d.
+    pub fn turned(&self, gamma: &[f64], beta: &[f64]) -> Self {
+        let mul = |a: f64, b: f64| a * b;
+        let bb = product(beta, beta, mul);
+        let gg = product(gamma, gamma, mul);
+        let cos_part: Vec<f64> = bb.iter().zip(&gg).map(|(b, g)| b - g).collect();
+        let sin_part: Vec<f64> = product(beta, gamma, mul).iter().map(|x| 2.0 * x).collect();
+        let norm: Vec<f64> = bb.iter().zip(&gg).map(|(b, g)| b + g).collect();
+        let scale = |s: &[f64], e: &[DVec3]| product(s, e, |a: f64, v: DVec3| v * a);
+        let combine = |a: Vec<DVec3>, b: Vec<DVec3>, sign: f64| -> Vec<DVec3> {
+            a.iter().zip(&b).map(|(&x, &y)| x + y * sign).collect()
+        };
+        Self {
+            e2: combine(scale(&cos_part, &self.e2), scale(&sin_part, &self.e3), 1.0),
+            e3: combine(scale(&cos_part, &self.e3), scale(&sin_part, &self.e2), -1.0),
+            d: product(&norm, &self.d, mul),
+        }
+    }
+
+    /// Splits [0, 1] until the denominator has positive Bernstein coefficients on every
+    /// piece (positive weights for CAD), returning the pieces (v0, v1, segment).
+    pub fn positive_pieces(&self) -> Result<Vec<(f64, f64, RationalFrameSegment)>> {
+        let breaks = bernstein::positive_subdivision(&[&self.d], MAX_SUBDIVISION_DEPTH)
+            .ok_or_else(|| {
+                Error::InvalidInput(
+                    "the frame denominator vanishes on the segment (singular PH cubic)".into(),
+                )
+            })?;
+        breaks
+            .windows(2)
+            .map(|w| {
+                let piece = if w == [0.0, 1.0] {
+                    self.clone()
+                } else {
+                    self.restricted(w[0], w[1])
+                };
+                Ok((
+                    w[0],
+                    w[1],
+                    RationalFrameSegment::new(piece.e2, piece.e3, piece.d)?,
+                ))
+            })
+            .collect()
+    }
+}
+
+/// Frame pieces collected into piecewise rational frames on a refinement of a spline's
+/// breakpoints (segment k on [breaks[k], breaks[k+1]], a piece on a part of it).
+pub struct FramePieces<'a> {
+    spline_breaks: &'a [f64],
+    segments: Vec<RationalFrameSegment>,
+    breaks: Vec<f64>,
+}
+
+impl<'a> FramePieces<'a> {
+    pub fn new(spline_breaks: &'a [f64]) -> Self {
+        Self {
+            spline_breaks,
+            segments: Vec::new(),
+            breaks: vec![spline_breaks[0]],
+        }
+    }
+
+    /// Global parameter of the local parameter v of segment k; the segment's own
+    /// breakpoints are hit exactly (frames must contain the curve's breakpoints).
+    fn global(&self, k: usize, v: f64) -> f64 {
+        let (a, b) = (self.spline_breaks[k], self.spline_breaks[k + 1]);
+        match v {
+            0.0 => a,
+            1.0 => b,
+            _ => a + v * (b - a),
+        }
+    }
+
+    /// Appends pieces (p0, p1, frame) on [p0, p1] ⊂ [0, 1] of a part [v0, v1] of segment k.
+    pub fn push_all(
+        &mut self,
+        k: usize,
+        v0: f64,
+        v1: f64,
+        pieces: Vec<(f64, f64, RationalFrameSegment)>,
+    ) {
+        for (_, p1, segment) in pieces {
+            let v = if p1 == 1.0 { v1 } else { v0 + p1 * (v1 - v0) };
+            self.breaks.push(self.global(k, v));
+            self.segments.push(segment);
+        }
+    }
+
+    /// The frames as they are (each piece as computed).
+    pub fn into_frames(self) -> Result<RationalFrames> {
+        RationalFrames::new(self.segments, self.breaks)
+    }
+
+    /// The frames joined continuously, starting at `initial_normal` (see
+    /// [`RationalFrames::chained`]).
+    pub fn into_chained_frames(self, initial_normal: DVec3) -> Result<RationalFrames> {
+        RationalFrames::chained(self.segments, self.breaks, initial_normal)
+    }
+}
+
+/// The frame a segment's RMF is built on, with the angle that turns it into the RMF.
+#[derive(Clone, Debug, PartialEq)]
+pub enum BaseFrame {
+    /// The Frenet frame (19); the RMF is it turned by Ω (30).
+    Frenet {
+        numerators: FrameNumerators,
+        angle: RmfAngle,
+    },
+    /// A nearly straight cubic: the carried frame, itself the RMF (module notes).
+    Carried { numerators: FrameNumerators },
+}
+
+impl BaseFrame {
+    pub fn of(cubic: &PhCubic) -> Self {
+        if cubic.bend() > NEARLY_STRAIGHT {
+            Self::Frenet {
+                numerators: frenet_numerators(cubic),
+                angle: RmfAngle::of(cubic),
+            }
+        } else {
+            Self::Carried {
+                numerators: carried_numerators(cubic),
+            }
+        }
+    }
+
+    pub fn numerators(&self) -> &FrameNumerators {
+        match self {
+            Self::Frenet { numerators, .. } | Self::Carried { numerators } => numerators,
+        }
+    }
+
+    /// Angle of the RMF against this frame, up to a constant: Ω(v) − Ω(0), or 0.
+    pub fn rmf_increment(&self, v: f64) -> f64 {
+        match self {
+            Self::Frenet { angle, .. } => angle.increment(v),
+            Self::Carried { .. } => 0.0,
+        }
+    }
+
+    /// d/dv of [`Self::rmf_increment`].
+    pub fn rmf_rate(&self, v: f64) -> f64 {
+        match self {
+            Self::Frenet { angle, .. } => angle.rate(v),
+            Self::Carried { .. } => 0.0,
+        }
+    }
+
+    /// This frame at v, turned by `angle + rmf_increment(v)`: the exact RMF when `angle`
+    /// is the right constant.
+    pub fn rmf_frame(&self, v: f64, angle: f64) -> Frame {
+        self.numerators()
+            .frame(v)
+            .rotated(angle + self.rmf_increment(v))
+    }
+}
+
+/// The carried frame of a nearly straight cubic (module notes), started from some unit
+/// vector normal to t₀ (the spline's chaining turns it where it belongs).
+fn carried_numerators(cubic: &PhCubic) -> FrameNumerators {
+    let hodograph = bernstein::derivative(&cubic.control_points());
+    let sigma = cubic.speed();
+    let t0 = hodograph[0] / sigma[0];
+    // P = σ + t₀·x' (positive: the tangent never turns back), D = σP.
+    let p: Vec<f64> = sigma
+        .iter()
+        .zip(&hodograph)
+        .map(|(s, h)| s + t0.dot(*h))
+        .collect();
+    let d = product(&sigma, &p, |a: f64, b: f64| a * b);
+    let axis: Vec<DVec3> = sigma
+        .iter()
+        .zip(&hodograph)
+        .map(|(&s, &h)| t0 * s + h)
+        .collect();
+    let carried = |x: DVec3| -> Vec<DVec3> {
+        let along: Vec<f64> = hodograph.iter().map(|h| h.dot(x)).collect();
+        let correction = product(&along, &axis, |a: f64, v: DVec3| v * a);
+        d.iter()
+            .zip(correction)
+            .map(|(&di, c)| x * di - c)
+            .collect()
+    };
+    let e2 = orthonormal_to(t0);
+    FrameNumerators {
+        e2: carried(e2),
+        e3: carried(t0.cross(e2)),
+        d,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::frames::frenet::frenet_frame;
+    use crate::frames::metrics::orthonormality_error;
+    use crate::ph_cubic::test_curves::example_cubic;
+
+    #[test]
+    fn frenet_base_frame_is_the_frenet_frame() {
+        let c = example_cubic();
+        let base = BaseFrame::of(&c);
+        assert!(matches!(base, BaseFrame::Frenet { .. }));
+        let n = base.numerators();
+        assert_eq!(n.d.len(), 3);
+        let bez = c.to_bezier();
+        for i in 0..=10 {
+            let v = i as f64 / 10.0;
+            let jet = bez.eval_jet(v);
+            let expected = frenet_frame(jet.d1, jet.d2).unwrap();
+            let f = n.frame(v);
+            assert!((f.f2 - expected.f2).length() < 1e-14, "v = {v}");
+            assert!((f.f3 - expected.f3).length() < 1e-14, "v = {v}");
+            assert!(orthonormality_error(&f) < 1e-14);
+        }
+    }
+
+    #[test]
+    fn turning_by_a_biquadratic_keeps_the_frame_orthonormal() {
+        let n = frenet_numerators(&example_cubic());
+        let (gamma, beta) = ([0.1, -0.3, 0.4], [1.0, 0.8, 1.2]);
+        let t = n.turned(&gamma, &beta);
+        assert_eq!(t.d.len(), 7, "degree 2(n + 1) = 6 for n = 2");
+        for v in [0.0, 0.25, 0.6, 1.0] {
+            let w = bernstein::evaluate(&gamma, v) / bernstein::evaluate(&beta, v);
+            let expected = n.frame(v).rotated(2.0 * w.atan());
+            let f = t.frame(v);
+            assert!((f.f2 - expected.f2).length() < 1e-14);
+            assert!((f.f3 - expected.f3).length() < 1e-14);
+        }
+    }
+
+    /// The PH cubic through an arc of length 1 at the start of a helix of radius `r` (and the
+    /// same pitch), written without cancellation: curvature ≈ 1/(2r).
+    pub(crate) fn gentle_helix_cubic(r: f64) -> PhCubic {
+        let p = |t: f64| {
+            let s = (t / (2.0 * r)).sin();
+            DVec3::new(-2.0 * r * s * s, r * (t / r).sin(), t)
+        };
+        let d = |t: f64| DVec3::new(-(t / r).sin(), (t / r).cos(), 1.0);
+        let data = crate::hermite::HermiteSegment::new(p(0.0), d(0.0), p(1.0), d(1.0)).unwrap();
+        crate::ph_cubic::ph_cubic_hermite(&data)
+            .unwrap()
+            .shape_matching
+    }
+
+    #[test]
+    fn nearly_straight_cubics_carry_their_frame_exactly_adapted() {
+        let cubic = gentle_helix_cubic(1e7);
+        assert!(cubic.bend() < NEARLY_STRAIGHT);
+        let base = BaseFrame::of(&cubic);
+        assert!(matches!(base, BaseFrame::Carried { .. }));
+        for i in 0..=8 {
+            let v = i as f64 / 8.0;
+            let f = base.numerators().frame(v);
+            let t = cubic.derivative(v).normalize();
+            assert!((f.tangent - t).length() < 1e-15, "v = {v}");
+            assert!(
+                orthonormality_error(&f) < 4e-15,
+                "{}",
+                orthonormality_error(&f)
+            );
+        }
+    }
+
+    #[test]
+    fn positive_pieces_split_a_sharp_turn() {
+        // A Tschirnhausen cubic with legs 1, 2, 4 turning by 120°: σ = 3(1, −1, 4).
+        let r3 = 3f64.sqrt();
+        let c = PhCubic::from_control_points([
+            DVec3::ZERO,
+            DVec3::X,
+            DVec3::new(0.0, r3, 0.0),
+            DVec3::new(-2.0, -r3, 0.0),
+        ])
+        .unwrap();
+        assert!(c.speed()[1] < 0.0);
+        let pieces = frenet_numerators(&c).positive_pieces().unwrap();
+        assert!(pieces.len() > 1);
+        assert_eq!((pieces[0].0, pieces[pieces.len() - 1].1), (0.0, 1.0));
+    }
+}

@@ -1,0 +1,246 @@
+//! One PH cubic (Mäurer & Jüttler, §3.1): its control polygon, the characterization (17),
+//! the speed σ and the curvature of (18).
+//!
+//! With the legs h₀ = b₁ − b₀, h₁ = b₂ − b₁, h₂ = b₃ − b₂ the hodograph is
+//! x' = 3(h₀B₀² + h₁B₁² + h₂B₂²), and the cubic is PH iff |x'|² = σ² for
+//! σ = 3(L₁B₀² + L₂cosθ B₁² + L₃B₂²) (18). Comparing the degree-4 Bernstein coefficients of
+//! |x'|² and σ² gives h₀·h₁ = L₁L₂cosθ = … = h₁·h₂ · L₁/L₃ (θ₁₂ = θ₂₃) and
+//! 2L₂² + h₀·h₂ = 2(L₂cosθ)² + L₁L₃, which is the dihedral condition of (17). The
+//! coefficient form is what [`PhCubic::hodograph_residual`] checks: it stays well
+//! conditioned where the angles of (17) do not (nearly straight polygons);
+//! [`PhCubic::polygon_condition`] evaluates (17) literally.
+
+use crate::bezier::bernstein::{self, product};
+use crate::bezier::RationalBezierCurve;
+use crate::error::{invalid, Result};
+use glam::DVec3;
+
+/// Largest relative hodograph residual (see [`PhCubic::hodograph_residual`]) accepted for a
+/// curve given as a PH cubic, unless the rounding of its control points allows more (see
+/// [`PhCubic::ph_tolerance`]). Control points passed through NURBS data stay near 1e-15; a
+/// cubic that is not PH is off by far more.
+pub const PH_TOLERANCE: f64 = 1e-9;
+
+/// A regular PH cubic on [0, 1] (end legs of non-zero length, |x'| polynomial).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PhCubic {
+    points: [DVec3; 4],
+}
+
+/// The quantities of condition (17): the angles θ₁₂ = ∠(h₀, h₁), θ₂₃ = ∠(h₁, h₂), and cos ψ of
+/// the dihedral angle ψ = ∠(h₀ × h₁, h₁ × h₂) beside its PH value 2L₂²/(L₁L₃) − 1.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PolygonCondition {
+    pub theta12: f64,
+    pub theta23: f64,
+    /// `None` when the polygon is straight (ψ undefined).
+    pub cos_psi: Option<f64>,
+    pub cos_psi_ph: f64,
+}
+
+impl PhCubic {
+    /// Validates a cubic Bézier control polygon as a regular PH cubic: finite points, end
+    /// legs of non-zero length and a hodograph residual below [`PH_TOLERANCE`].
+    pub fn from_control_points(points: [DVec3; 4]) -> Result<Self> {
+        if points.iter().any(|p| !p.is_finite()) {
+            return invalid!("control points must be finite");
+        }
+        let cubic = Self { points };
+        let [h0, _, h2] = cubic.legs();
+        if h0 == DVec3::ZERO || h2 == DVec3::ZERO {
+            return invalid!(
+                "the first and last legs of a PH cubic must not vanish (singular end)"
+            );
+        }
+        let residual = cubic.hodograph_residual();
+        if !(residual <= cubic.ph_tolerance()) {
+            return invalid!(
+                "the control polygon violates the PH condition (17): relative residual {residual:.1e}"
+            );
+        }
+        Ok(cubic)
+    }
+
+    /// A cubic known to be PH by construction (the Hermite interpolant checks its residual).
+    pub(crate) fn from_trusted_points(points: [DVec3; 4]) -> Self {
+        Self { points }
+    }
+
+    pub fn control_points(&self) -> [DVec3; 4] {
+        self.points
+    }
+
+    /// h₀, h₁, h₂.
+    pub fn legs(&self) -> [DVec3; 3] {
+        let b = &self.points;
+        [b[1] - b[0], b[2] - b[1], b[3] - b[2]]
+    }
+
+    /// L₁, L₂, L₃.
+    pub fn leg_lengths(&self) -> [f64; 3] {
+        self.legs().map(DVec3::length)
+    }
+
+    /// L₂ cos θ, the middle coefficient of σ/3. Both expressions h₀·h₁/L₁ and h₁·h₂/L₃ give it
+    /// for a PH cubic; their mean keeps a rounded polygon symmetric in its two ends.
+    pub fn speed_middle(&self) -> f64 {
+        let [h0, h1, h2] = self.legs();
+        let [l1, _, l3] = self.leg_lengths();
+        0.5 * (h0.dot(h1) / l1 + h1.dot(h2) / l3)
+    }
+
+    /// Bernstein coefficients of the speed σ = |x'| (18): 3(L₁, L₂cosθ, L₃). The middle one
+    /// is negative when θ > 90°, so positive weights need a subdivision there.
+    pub fn speed(&self) -> [f64; 3] {
+        let [l1, _, l3] = self.leg_lengths();
+        [3.0 * l1, 3.0 * self.speed_middle(), 3.0 * l3]
+    }
+
+    /// Bernstein coefficients of the arc length s(v) = ∫₀ᵛ σ: (0, L₁, L₁ + L₂cosθ,
+    /// L₁ + L₂cosθ + L₃) — polynomial, as for every PH curve.
+    pub fn arc_length_polynomial(&self) -> [f64; 4] {
+        let [l1, _, l3] = self.leg_lengths();
+        let m = self.speed_middle();
+        [0.0, l1, l1 + m, l1 + m + l3]
+    }
+
+    pub fn arc_length(&self) -> f64 {
+        self.arc_length_polynomial()[3]
+    }
+
+    /// max |coefficient of |x'|² − σ²| / max |coefficient of |x'|²|, in the degree-4 Bernstein
+    /// basis: zero exactly for PH cubics (see the module notes).
+    pub fn hodograph_residual(&self) -> f64 {
+        let legs = self.legs();
+        let [l1, _, l3] = self.leg_lengths();
+        let speed = [l1, self.speed_middle(), l3];
+        let squared = product(&legs, &legs, |a: DVec3, b: DVec3| a.dot(b));
+        let speed_squared = product(&speed, &speed, |a: f64, b: f64| a * b);
+        let scale = squared.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+        let worst = squared
+            .iter()
+            .zip(&speed_squared)
+            .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
+        worst / scale
+    }
+
+    /// The residual accepted for this polygon: [`PH_TOLERANCE`], or more for a short segment
+    /// far from the origin, whose legs (differences of rounded points) are only exact to
+    /// ε·|b|, which makes |x'|² uncertain by about ε·|b|/L relative.
+    pub fn ph_tolerance(&self) -> f64 {
+        let coordinates = self
+            .points
+            .iter()
+            .fold(0.0f64, |m, p| m.max(p.abs().max_element()));
+        let longest = self.leg_lengths().iter().fold(0.0f64, |m, &l| m.max(l));
+        PH_TOLERANCE.max(64.0 * f64::EPSILON * coordinates / longest)
+    }
+
+    /// Condition (17) evaluated literally on the control polygon.
+    pub fn polygon_condition(&self) -> PolygonCondition {
+        let [h0, h1, h2] = self.legs();
+        let [l1, l2, l3] = self.leg_lengths();
+        let angle = |a: DVec3, b: DVec3| a.cross(b).length().atan2(a.dot(b));
+        let (n1, n2) = (h0.cross(h1), h1.cross(h2));
+        let cos_psi = (n1 != DVec3::ZERO && n2 != DVec3::ZERO)
+            .then(|| n1.dot(n2) / (n1.length() * n2.length()));
+        PolygonCondition {
+            theta12: angle(h0, h1),
+            theta23: angle(h1, h2),
+            cos_psi,
+            cos_psi_ph: 2.0 * l2 * l2 / (l1 * l3) - 1.0,
+        }
+    }
+
+    /// sin θ, θ = ∠(h₀, h₁): how far the polygon bends (0 for a straight line).
+    pub fn bend(&self) -> f64 {
+        let [h0, h1, _] = self.legs();
+        let [l1, l2, _] = self.leg_lengths();
+        if l2 == 0.0 {
+            return 0.0;
+        }
+        h0.cross(h1).length() / (l1 * l2)
+    }
+
+    /// Curvature κ(v) = 6L₂|sin θ| / σ(v)² (18).
+    pub fn curvature(&self, v: f64) -> f64 {
+        let [h0, h1, _] = self.legs();
+        let [l1, _, _] = self.leg_lengths();
+        let sigma = bernstein::evaluate(&self.speed(), v);
+        6.0 * h0.cross(h1).length() / l1 / (sigma * sigma)
+    }
+
+    /// The cubic as a polynomial Bézier curve.
+    pub fn to_bezier(&self) -> RationalBezierCurve {
+        RationalBezierCurve::polynomial(&self.points).expect("finite control points")
+    }
+
+    /// Point at v.
+    pub fn eval(&self, v: f64) -> DVec3 {
+        bernstein::evaluate(&self.points, v)
+    }
+
+    /// First derivative x'(v).
+    pub fn derivative(&self, v: f64) -> DVec3 {
+        bernstein::evaluate(&self.legs(), v) * 3.0
+    }
+
+    /// Sum of the leg lengths, the criterion of Table 1 for the shape-matching interpolant.
+    pub fn polygon_length(&self) -> f64 {
+        self.leg_lengths().iter().sum()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ph_cubic::test_curves::example_cubic;
+
+    #[test]
+    fn speed_is_the_length_of_the_derivative() {
+        let c = example_cubic();
+        let sigma = c.speed();
+        for i in 0..=20 {
+            let v = i as f64 / 20.0;
+            let speed = bernstein::evaluate(&sigma, v);
+            assert!((c.derivative(v).length() - speed).abs() < 1e-14, "v = {v}");
+        }
+        // L1 = L2 = 1, L3 = 2, L2 cos θ = 0: arc length L1 + L2 cos θ + L3 = 3.
+        assert!((c.arc_length() - 3.0).abs() < 1e-15);
+        assert!(c.hodograph_residual() < 1e-15);
+    }
+
+    #[test]
+    fn condition_17_holds_literally() {
+        let p = example_cubic().polygon_condition();
+        assert!((p.theta12 - p.theta23).abs() < 1e-15);
+        assert!((p.cos_psi.unwrap() - p.cos_psi_ph).abs() < 1e-15);
+    }
+
+    #[test]
+    fn curvature_matches_the_derivatives() {
+        let c = example_cubic();
+        let bez = c.to_bezier();
+        for v in [0.0, 0.3, 0.8, 1.0] {
+            let jet = bez.eval_jet(v);
+            let kappa = jet.d1.cross(jet.d2).length() / jet.d1.length().powi(3);
+            assert!((c.curvature(v) - kappa).abs() < 1e-13 * kappa, "v = {v}");
+        }
+    }
+
+    #[test]
+    fn rejects_cubics_that_are_not_ph() {
+        let e = PhCubic::from_control_points([
+            DVec3::ZERO,
+            DVec3::X,
+            DVec3::new(2.0, 1.0, 0.0),
+            DVec3::new(3.0, 1.0, 1.0),
+        ])
+        .unwrap_err();
+        assert!(e.message().contains("(17)"), "{e}");
+        let singular = [DVec3::ZERO, DVec3::ZERO, DVec3::X, DVec3::Y];
+        assert!(PhCubic::from_control_points(singular).is_err());
+        let nan = [DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::splat(f64::NAN)];
+        assert!(PhCubic::from_control_points(nan).is_err());
+    }
+}

@@ -1,0 +1,97 @@
+//! The rational Frenet frame (19) of PH cubics and PH cubic splines: the three Frenet vectors
+//! of a PH cubic are quadratic rational functions (they run on circles of the unit sphere).
+//! It is what the RMF of (29) is built on, and the comparison frame of the paper's figures
+//! (the Frenet sweep is far from a profile surface).
+
+use super::base_frame::{FrameNumerators, FramePieces};
+use super::cubic::PhCubic;
+use super::spline::ph_cubics;
+use crate::bezier::bernstein::{self, product};
+use crate::bezier::PiecewiseCurve;
+use crate::error::{invalid, Result};
+use crate::frames::rational::RationalFrames;
+use glam::DVec3;
+
+/// sin θ below which a cubic counts as a straight line, whose Frenet frame is undefined.
+const STRAIGHT: f64 = 1e-12;
+
+/// The Frenet frame (19), n = (σx'' − σ'x')/(Kσ), b = x' × x''/(Kσ), K = 6L₂|sin θ| = |x' × x''|/σ.
+///
+/// Both numerators are quadratic although built from cubic products (their t³ terms cancel
+/// for every quadratic σ and x'), so they are brought back to degree 2; K is taken as the mean
+/// of its values at the two ends, which agree for a PH cubic.
+pub fn frenet_numerators(cubic: &PhCubic) -> FrameNumerators {
+    let d1 = bernstein::derivative(&cubic.control_points());
+    let d2 = bernstein::derivative(&d1);
+    let sigma = cubic.speed();
+    let dsigma = bernstein::derivative(&sigma);
+    let binormal = product(&d1, &d2, |a: DVec3, b: DVec3| a.cross(b));
+    let normal: Vec<DVec3> = product(&sigma, &d2, |s: f64, v: DVec3| v * s)
+        .iter()
+        .zip(product(&dsigma, &d1, |s: f64, v: DVec3| v * s))
+        .map(|(a, b)| *a - b)
+        .collect();
+    let k = 0.5 * (binormal[0].length() / sigma[0] + binormal[3].length() / sigma[2]);
+    FrameNumerators {
+        e2: undo_elevation(&normal),
+        e3: undo_elevation(&binormal),
+        d: sigma.iter().map(|s| s * k).collect(),
+    }
+}
+
+/// Degree-2 coefficients of a quadratic given in degree 3 (inverse of one elevation,
+/// taken from both ends).
+fn undo_elevation(c: &[DVec3]) -> Vec<DVec3> {
+    vec![c[0], 0.25 * (3.0 * (c[1] + c[2]) - c[0] - c[3]), c[3]]
+}
+
+/// The Frenet frames (f₂ = n, f₃ = b) of a PH cubic spline as exact rational functions of
+/// degree 2, segments split where σ has a negative Bernstein coefficient (θ > 90°) so that
+/// all weights are positive. Fails on straight segments, where the frame is undefined.
+pub fn ph_frenet_frames(spline: &PiecewiseCurve) -> Result<RationalFrames> {
+    let mut pieces = FramePieces::new(spline.breaks());
+    for (k, cubic) in ph_cubics(spline)?.iter().enumerate() {
+        if cubic.bend() <= STRAIGHT {
+            return invalid!(
+                "ph_spline segment {k} is a straight line: its Frenet frame is undefined"
+            );
+        }
+        pieces.push_all(k, 0.0, 1.0, frenet_numerators(cubic).positive_pieces()?);
+    }
+    pieces.into_frames()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::frames::frenet::frenet_frame;
+    use crate::ph_cubic::test_curves::helix_spline;
+
+    #[test]
+    fn spline_frames_are_the_frenet_frames() {
+        let spline = helix_spline(6, 0.7);
+        let frames = ph_frenet_frames(&spline).unwrap();
+        for i in 0..=60 {
+            let t = 6.0 * i as f64 / 60.0;
+            let jet = spline.eval_jet(t);
+            let expected = frenet_frame(jet.d1, jet.d2).unwrap();
+            let f = frames.frame(t);
+            assert!((f.f2 - expected.f2).length() < 1e-13, "t = {t}");
+            assert!((f.tangent - expected.tangent).length() < 1e-13, "t = {t}");
+        }
+    }
+
+    #[test]
+    fn straight_segments_have_no_frenet_frame() {
+        let line = crate::bezier::RationalBezierCurve::polynomial(&[
+            DVec3::ZERO,
+            DVec3::X,
+            DVec3::X * 2.0,
+            DVec3::X * 3.0,
+        ])
+        .unwrap();
+        let spline = PiecewiseCurve::with_unit_intervals(vec![line]).unwrap();
+        let e = ph_frenet_frames(&spline).unwrap_err();
+        assert!(e.message().contains("segment 0 is a straight line"), "{e}");
+    }
+}

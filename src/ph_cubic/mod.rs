@@ -1,0 +1,53 @@
+//! PH cubic splines, their rotation-minimizing frames (exactly and as rational functions) and
+//! rational profile surfaces, after C. Mäurer and B. Jüttler, "Rational approximation of
+//! rotation minimizing frames using Pythagorean-hodograph cubics" (equation numbers below are
+//! the paper's).
+//!
+//! | module | computes | paper |
+//! | --- | --- | --- |
+//! | [`cubic`] | one PH cubic: condition (17), speed, arc length, curvature | (17), (18) |
+//! | [`hermite`] | both PH cubics through G1 Hermite data | Table 1 |
+//! | [`spline`] | PH cubic splines through Hermite data; PH cubics of a spline | §3.2 |
+//! | [`approximate`] | PH cubic splines approximating any curve to a tolerance | Theorem 10 |
+//! | [`frenet`] | the rational Frenet frame | (19) |
+//! | [`rmf_angle`] | the exact RMF angle against the Frenet frame, closed form | (30), (31) |
+//! | [`base_frame`] | the frame each segment's RMF is built on; frame numerators | (29) |
+//! | [`exact_rmf`] | the exact RMF of a PH cubic spline, chained over its segments | (5), (30) |
+//! | [`biquadratic`] | the rational W(v) approximating tan(Ω/2) | (34)–(41), Lemma 11 |
+//! | [`rational_rmf`] | rational RMFs of splines, with twist and closure of closed spines | (29), (42) |
+//! | [`accuracy`] | angle between rational frames and the exact RMF | §3.4 |
+//! | [`analysis`] | singularities, parabolic lines, curvature sign, convexity of profile surfaces | (9), (13), (14), Cor. 7, 9 |
+//! | [`offset`] | offsets of profile surfaces as profile surfaces of offset profiles | Proposition 4 |
+//!
+//! The profile surface itself, (42), is the generic rational sweep of [`crate::sweep`].
+
+pub mod accuracy;
+pub mod analysis;
+pub mod approximate;
+pub mod base_frame;
+pub mod biquadratic;
+pub mod cubic;
+pub mod exact_rmf;
+pub mod frenet;
+pub mod hermite;
+pub mod offset;
+pub mod rational_rmf;
+pub mod rmf_angle;
+pub mod spline;
+#[cfg(test)]
+pub(crate) mod test_curves;
+
+pub use cubic::PhCubic;
+pub use hermite::{ph_cubic_hermite, PhHermiteSolutions};
+pub use spline::{ph_cubics, ph_spline_hermite};
+
+use crate::error::Error;
+
+/// `e` with its message prefixed by `context` (which segment, which argument), same kind.
+pub(crate) fn in_context(e: Error, context: &str) -> Error {
+    match e {
+        Error::InvalidInput(m) => Error::InvalidInput(format!("{context}: {m}")),
+        Error::NoSolution(m) => Error::NoSolution(format!("{context}: {m}")),
+        Error::NotConverged(m) => Error::NotConverged(format!("{context}: {m}")),
+    }
+}

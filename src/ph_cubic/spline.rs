@@ -1,0 +1,127 @@
+//! PH cubic splines (Mäurer & Jüttler, §3.2): one shape-matching PH cubic of Table 1 per
+//! pair of consecutive G1 Hermite data, joined with G1 continuity; and the way back from a
+//! piecewise curve (e.g. a spline handle, or NURBS data) to its PH cubics.
+
+use super::cubic::PhCubic;
+use super::hermite::ph_cubic_hermite;
+use super::in_context;
+use crate::bezier::{PiecewiseCurve, RationalBezierCurve};
+use crate::error::{invalid, Result};
+use crate::hermite::{hermite_sequence, HermiteSegment};
+use glam::DVec3;
+
+/// The PH cubic spline through `points` with unit `tangents` (any non-zero length is
+/// normalized): segment i interpolates points[i], points[i + 1] on the parameter interval
+/// [i, i + 1].
+pub fn ph_spline_hermite(points: &[DVec3], tangents: &[DVec3]) -> Result<PiecewiseCurve> {
+    let segments = hermite_sequence(points, tangents)?;
+    let breaks = (0..=segments.len()).map(|i| i as f64).collect();
+    ph_spline_through(&segments, breaks, |i| {
+        format!("segment {i} (points[{i}] to points[{}])", i + 1)
+    })
+}
+
+/// The PH cubic spline through consecutive Hermite segments on the given breakpoints;
+/// `name` names segment i in error messages.
+pub(crate) fn ph_spline_through(
+    segments: &[HermiteSegment],
+    breaks: Vec<f64>,
+    name: impl Fn(usize) -> String,
+) -> Result<PiecewiseCurve> {
+    let cubics = segments
+        .iter()
+        .enumerate()
+        .map(|(i, s)| {
+            ph_cubic_hermite(s)
+                .map(|solutions| solutions.shape_matching.to_bezier())
+                .map_err(|e| in_context(e, &name(i)))
+        })
+        .collect::<Result<Vec<RationalBezierCurve>>>()?;
+    PiecewiseCurve::new(cubics, breaks)
+}
+
+/// The PH cubics of a piecewise curve whose segments are polynomial of degree ≤ 3 (given
+/// with equal weights) and PH; lower degrees are raised to 3.
+pub fn ph_cubics(curve: &PiecewiseCurve) -> Result<Vec<PhCubic>> {
+    curve
+        .segments()
+        .iter()
+        .enumerate()
+        .map(|(k, segment)| {
+            as_ph_cubic(segment).map_err(|e| in_context(e, &format!("ph_spline segment {k}")))
+        })
+        .collect()
+}
+
+fn as_ph_cubic(segment: &RationalBezierCurve) -> Result<PhCubic> {
+    if segment.degree() > 3 || !segment.is_polynomial() {
+        return invalid!(
+            "is not a polynomial cubic (degree {}, {}): not a PH cubic",
+            segment.degree(),
+            if segment.is_polynomial() {
+                "polynomial"
+            } else {
+                "rational"
+            }
+        );
+    }
+    let poles: Vec<DVec3> = segment.elevated(3 - segment.degree()).poles().collect();
+    PhCubic::from_control_points([poles[0], poles[1], poles[2], poles[3]])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::error::Error;
+
+    fn helix(t: f64) -> (DVec3, DVec3) {
+        (
+            DVec3::new(t.cos(), t.sin(), 0.4 * t),
+            DVec3::new(-t.sin(), t.cos(), 0.4),
+        )
+    }
+
+    #[test]
+    fn interpolates_g1_data_and_validates_back() {
+        let (points, tangents): (Vec<DVec3>, Vec<DVec3>) =
+            (0..=8).map(|i| helix(0.5 * i as f64)).unzip();
+        let spline = ph_spline_hermite(&points, &tangents).unwrap();
+        assert_eq!(spline.domain(), (0.0, 8.0));
+        for (i, (p, t)) in points.iter().zip(&tangents).enumerate() {
+            let jet = spline.eval_jet(i as f64);
+            assert!((jet.point - *p).length() < 1e-14);
+            assert!((jet.d1.normalize() - t.normalize()).length() < 1e-12);
+        }
+        let cubics = ph_cubics(&spline).unwrap();
+        assert_eq!(cubics.len(), 8);
+    }
+
+    #[test]
+    fn names_the_failing_segment() {
+        let points = [DVec3::ZERO, DVec3::X, DVec3::new(2.0, 1.0, 0.0)];
+        let tangents = [DVec3::X, DVec3::X, DVec3::X];
+        let e = ph_spline_hermite(&points, &tangents).unwrap_err();
+        assert!(matches!(e, Error::NoSolution(_)));
+        assert!(
+            e.message().contains("segment 1 (points[1] to points[2])"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn rejects_curves_that_are_not_ph_splines() {
+        let line = RationalBezierCurve::polynomial(&[DVec3::ZERO, DVec3::X]).unwrap();
+        let bent = RationalBezierCurve::polynomial(&[
+            DVec3::X,
+            DVec3::new(2.0, 0.0, 0.0),
+            DVec3::new(2.0, 1.0, 0.0),
+            DVec3::new(2.0, 1.0, 1.0),
+        ])
+        .unwrap();
+        let ok = PiecewiseCurve::with_unit_intervals(vec![line.clone()]).unwrap();
+        assert_eq!(ph_cubics(&ok).unwrap()[0].bend(), 0.0);
+        let mixed = PiecewiseCurve::with_unit_intervals(vec![line, bent]).unwrap();
+        let e = ph_cubics(&mixed).unwrap_err();
+        assert!(e.message().contains("ph_spline segment 1"), "{e}");
+    }
+}
