@@ -11,7 +11,7 @@
 use super::FrameField;
 use crate::curve::ParametricCurve;
 use crate::error::Result;
-use crate::math::{minimize_bracketed, GaussLegendre};
+use crate::math::{bisect_root, minimize_bracketed, GaussLegendre};
 use glam::DVec3;
 
 /// Average and end-point errors of (25).
@@ -33,7 +33,9 @@ pub trait ReferenceRmf {
 }
 
 /// The parameter of the point of `curve` nearest to `p`, searched in `[v_lo, v_hi]`
-/// (clamped to the domain) — a local projection: the caller brackets it.
+/// (clamped to the domain) — a local projection: the caller brackets it. Brent's method
+/// finds the minimum of the distance only to about √ε (it is flat there), so the result is
+/// refined as the root of (x(v) − p)·x'(v), to round-off.
 pub fn nearest_parameter(curve: &dyn ParametricCurve, p: DVec3, v_lo: f64, v_hi: f64) -> f64 {
     let (lo, hi) = curve.domain();
     let (a, b) = (v_lo.max(lo), v_hi.min(hi));
@@ -42,7 +44,20 @@ pub fn nearest_parameter(curve: &dyn ParametricCurve, p: DVec3, v_lo: f64, v_hi:
             .point_derivative(v)
             .map_or(f64::NAN, |(x, _)| (x - p).length_squared())
     };
-    minimize_bracketed(distance, a, b, 1e-15 * (hi - lo).max(1.0)).x
+    let rough = minimize_bracketed(distance, a, b, 1e-15 * (hi - lo).max(1.0)).x;
+    let slope = |v: f64| {
+        curve
+            .point_derivative(v)
+            .map_or(f64::NAN, |(x, d)| (x - p).dot(d))
+    };
+    let reach = 1e-6 * (b - a);
+    bisect_root(
+        slope,
+        (rough - reach).max(a),
+        (rough + reach).min(b),
+        1e-16 * (hi - lo),
+    )
+    .unwrap_or(rough)
 }
 
 /// δ at one parameter: nearest reference point searched within `window` of u (the two
@@ -149,8 +164,10 @@ mod tests {
             radius: 1.0,
             pitch: 0.3,
         };
-        let p = helix.point_derivative(2.0).unwrap().0;
-        let v = nearest_parameter(&helix, p + DVec3::new(0.0, 0.0, 1e-9), 1.5, 2.5);
-        assert!((v - 2.0).abs() < 1e-8, "{v}");
+        // Offset along the principal normal (−cos t, −sin t, 0): the foot stays at t = 2.
+        let p = helix.point_derivative(2.0).unwrap().0
+            + 0.01 * DVec3::new(-(2f64.cos()), -(2f64.sin()), 0.0);
+        let v = nearest_parameter(&helix, p, 1.5, 2.5);
+        assert!((v - 2.0).abs() < 1e-14, "{v}");
     }
 }

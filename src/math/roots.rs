@@ -152,6 +152,37 @@ fn solve_bracketed(p: &[f64], mut a: f64, mut b: f64, fa: f64) -> f64 {
     x
 }
 
+/// A root of a continuous function with a sign change on `[a, b]` (`f(a)·f(b) ≤ 0`), by
+/// bisection to the absolute tolerance `tol`; `None` without a sign change or for NaN values.
+pub fn bisect_root(mut f: impl FnMut(f64) -> f64, mut a: f64, mut b: f64, tol: f64) -> Option<f64> {
+    let (mut fa, fb) = (f(a), f(b));
+    if fa.is_nan() || fb.is_nan() || fa * fb > 0.0 {
+        return None;
+    }
+    if fa == 0.0 {
+        return Some(a);
+    }
+    if fb == 0.0 {
+        return Some(b);
+    }
+    while (b - a).abs() > tol {
+        let m = 0.5 * (a + b);
+        if m == a || m == b {
+            break;
+        }
+        let fm = f(m);
+        if fm.is_nan() {
+            return None;
+        }
+        if (fm < 0.0) == (fa < 0.0) {
+            (a, fa) = (m, fm);
+        } else {
+            b = m;
+        }
+    }
+    Some(0.5 * (a + b))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -205,6 +236,15 @@ mod tests {
         assert_eq!(roots.len(), 2, "{roots:?}");
         assert!((roots[0] + 2.0).abs() < 1e-12);
         assert!((roots[1] - 1.0).abs() < 1e-7);
+    }
+
+    #[test]
+    fn bisection_needs_a_sign_change() {
+        let r = bisect_root(|x| x * x - 2.0, 0.0, 2.0, 1e-15).unwrap();
+        assert!((r - 2f64.sqrt()).abs() < 1e-15);
+        assert!(bisect_root(|x| x * x + 1.0, -1.0, 1.0, 1e-12).is_none());
+        assert_eq!(bisect_root(|x| x, 0.0, 1.0, 1e-12), Some(0.0));
+        assert!(bisect_root(|_| f64::NAN, 0.0, 1.0, 1e-12).is_none());
     }
 
     #[test]

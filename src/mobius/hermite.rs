@@ -1,0 +1,321 @@
+//! G1 Hermite interpolation by rational curves with exact rational rotation-minimizing
+//! frames: the algorithm of Section 3.1 of Bartoň, Jüttler & Wang. Per segment:
+//!
+//! 2. the inversion μ of [`segment_map`](super::segment_map) maps the segment's sphere onto
+//!    a plane through both end points (which it fixes), and the end tangents into it by the
+//!    normalized differential (12);
+//! 3. a planar PH cubic interpolates the mapped data (Mäurer & Jüttler, Table 1); its frame
+//!    (t, n, t × n) with the constant plane normal n is rotation-minimizing and rational,
+//!    eq. (19) of Bartoň et al.: f₂ = n·σ/σ, f₃ = (x' × n)/σ with σ the cubic's speed (18);
+//! 4. μ⁻¹ = μ maps cubic and frame back exactly (Corollary 1): a rational curve of degree 6
+//!    on the sphere with a rational RMF of degree 8 (f₂ is the sphere's normal).
+//!
+//! Where the paper's map makes the planar data S-shaped or nearly so (every helix segment; no
+//! PH cubic has an inflection), the map whose planar data turn as the spatial ones is used
+//! instead ([`chosen_segment_map`](super::segment_map::chosen_segment_map)). Planar data need
+//! no map (the cubic and its frame are the result). A constant rotation
+//! about the tangent keeps an RMF rotation-minimizing, so the segments' frames are joined
+//! into one continuous rational RMF by [`RationalFrames::chained`].
+
+use super::image::{global_parameter, map_raw_segment, RawFrame};
+use super::segment_map::{chosen_segment_map, SegmentMap};
+use crate::bezier::{PiecewiseCurve, RationalBezierCurve};
+use crate::curve::{uniform_parameters, ParametricCurve};
+use crate::error::{invalid, Error, Result};
+use crate::frames::rational::{RationalFrameSegment, RationalFrames};
+use crate::hermite::{hermite_sequence, HermiteSegment};
+use crate::ph_cubic::hermite::ph_cubic_hermite;
+use crate::ph_cubic::PhCubic;
+use glam::DVec3;
+
+/// A curve with an exact rational RMF, sharing one segmentation.
+#[derive(Clone, Debug)]
+pub struct RationalRmfCurve {
+    pub curve: PiecewiseCurve,
+    pub frames: RationalFrames,
+}
+
+/// The planar cubic's RMF over its speed σ: f₂ = n σ/σ, f₃ = (x' × n)/σ, with the hodograph
+/// x' = 3(h₀, h₁, h₂) in Bernstein form (Mäurer & Jüttler (18)).
+fn planar_frame(cubic: &PhCubic, normal: DVec3) -> RawFrame {
+    let speed = cubic.speed();
+    RawFrame {
+        f2: speed.iter().map(|&s| normal * s).collect(),
+        f3: cubic
+            .legs()
+            .iter()
+            .map(|&leg| (3.0 * leg).cross(normal))
+            .collect(),
+        denominator: speed.to_vec(),
+    }
+}
+
+/// Step 3 under one map: the shape-matching planar PH cubic through the mapped data.
+fn planar_cubic(data: &HermiteSegment, plane: &SegmentMap, index: usize) -> Result<PhCubic> {
+    let normal = plane.plane_normal;
+    // The mapped tangents lie in the plane up to round-off; put them there exactly so the
+    // cubic is planar and n is normal to it.
+    let into_plane = |p: DVec3, t: DVec3| {
+        let v = plane
+            .map
+            .normalized_differential(p, t)
+            .expect("end points are not the inversion centre");
+        v - v.dot(normal) * normal
+    };
+    let mapped = HermiteSegment::new(
+        data.p0,
+        into_plane(data.p0, data.t0),
+        data.p1,
+        into_plane(data.p1, data.t1),
+    )
+    .map_err(|e| {
+        Error::NoSolution(format!(
+            "segment {index}: the mapped data degenerate ({})",
+            e.message()
+        ))
+    })?;
+    Ok(ph_cubic_hermite(&mapped)
+        .map_err(|e| Error::NoSolution(format!("segment {index}: {}", e.message())))?
+        .shape_matching)
+}
+
+/// Steps 2–4 for segment `index` on `[a, b]`, appending its pieces (curve and frame
+/// segments) and their end parameters.
+fn interpolate_segment(
+    data: &HermiteSegment,
+    index: usize,
+    (a, b): (f64, f64),
+    pieces: &mut Pieces,
+) -> Result<()> {
+    let plane = chosen_segment_map(data);
+    let cubic = planar_cubic(data, &plane, index)?;
+    let points = cubic.to_bezier().homogeneous().to_vec();
+    let frame = planar_frame(&cubic, plane.plane_normal);
+    for (s1, curve, frame) in map_raw_segment(&plane.map, &points, Some(frame), index)? {
+        pieces.curves.push(curve);
+        pieces.frames.extend(frame);
+        pieces.breaks.push(global_parameter(a, b, s1));
+    }
+    Ok(())
+}
+
+/// The pieces of a spline under construction, on one segmentation.
+struct Pieces {
+    curves: Vec<RationalBezierCurve>,
+    frames: Vec<RationalFrameSegment>,
+    breaks: Vec<f64>,
+}
+
+/// The interpolant of a G1 Hermite sequence, segment i on `[params[i], params[i+1]]`, with
+/// its exact rational RMF starting at `initial_normal` (projected onto the normal plane).
+pub fn mobius_hermite(
+    segments: &[HermiteSegment],
+    params: &[f64],
+    initial_normal: DVec3,
+) -> Result<RationalRmfCurve> {
+    if params.len() != segments.len() + 1 {
+        return invalid!(
+            "{} segments need {} parameters",
+            segments.len(),
+            segments.len() + 1
+        );
+    }
+    let mut pieces = Pieces {
+        curves: Vec::new(),
+        frames: Vec::new(),
+        breaks: vec![params[0]],
+    };
+    for (index, data) in segments.iter().enumerate() {
+        interpolate_segment(data, index, (params[index], params[index + 1]), &mut pieces)?;
+    }
+    Ok(RationalRmfCurve {
+        curve: PiecewiseCurve::new(pieces.curves, pieces.breaks.clone())?,
+        frames: RationalFrames::chained(pieces.frames, pieces.breaks, initial_normal)?,
+    })
+}
+
+/// The interpolant through points with unit tangents, segment i on [i, i + 1].
+pub fn mobius_hermite_points(
+    points: &[DVec3],
+    tangents: &[DVec3],
+    initial_normal: DVec3,
+) -> Result<RationalRmfCurve> {
+    let segments = hermite_sequence(points, tangents)?;
+    let params: Vec<f64> = (0..points.len()).map(|i| i as f64).collect();
+    mobius_hermite(&segments, &params, initial_normal)
+}
+
+/// Step 1 and the rest: `curve` split into `segment_count` equal parameter intervals, each
+/// interpolated by its G1 Hermite data; the result has the curve's parameters at the joints.
+pub fn mobius_approximate(
+    curve: &dyn ParametricCurve,
+    segment_count: usize,
+    initial_normal: DVec3,
+) -> Result<RationalRmfCurve> {
+    if segment_count == 0 {
+        return invalid!("segments = 0: at least one segment is needed");
+    }
+    let params = uniform_parameters(curve.domain(), segment_count + 1);
+    let samples = params
+        .iter()
+        .map(|&t| curve.point_unit_tangent(t))
+        .collect::<Result<Vec<_>>>()?;
+    let (points, tangents): (Vec<DVec3>, Vec<DVec3>) = samples.into_iter().unzip();
+    mobius_hermite(
+        &hermite_sequence(&points, &tangents)?,
+        &params,
+        initial_normal,
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::frames::double_reflection::DoubleReflectionRmf;
+    use crate::frames::metrics::{angle_about_tangent, orthonormality_error, rmf_defect};
+    use crate::frames::Frame;
+    use crate::frames::{FrameField, FrameKind};
+    use crate::testing::Helix;
+    use std::sync::Arc;
+
+    fn single() -> HermiteSegment {
+        HermiteSegment::new(
+            DVec3::new(0.1, 0.0, -0.2),
+            DVec3::new(1.0, 0.4, 0.3),
+            DVec3::new(1.5, 1.2, 0.4),
+            DVec3::new(0.2, 1.0, 0.6),
+        )
+        .unwrap()
+    }
+
+    fn check_rational_rmf(result: &RationalRmfCurve) -> [f64; 3] {
+        let field = FrameField::new(
+            Arc::new(result.curve.clone()),
+            FrameKind::Rational(result.frames.clone()),
+        )
+        .unwrap();
+        let (lo, hi) = result.curve.domain();
+        let mut worst = [0.0f64; 3];
+        for i in 0..=1000 {
+            let t = lo + (hi - lo) * i as f64 / 1000.0;
+            let frame = result.frames.frame(t);
+            worst[0] = worst[0].max(rmf_defect(&field, t).unwrap().abs());
+            worst[1] = worst[1].max(orthonormality_error(&frame));
+            worst[2] =
+                worst[2].max((frame.tangent - result.curve.eval_jet(t).d1.normalize()).length());
+        }
+        worst
+    }
+
+    #[test]
+    fn one_segment_is_a_sextic_on_the_sphere_with_an_exact_rmf() {
+        let data = single();
+        let result = mobius_hermite(&[data], &[0.0, 1.0], DVec3::Z).unwrap();
+        assert!(result.curve.segments().iter().all(|s| s.degree() == 6));
+        let (center, radius) = chosen_segment_map(&data).sphere.unwrap();
+        let (lo, hi) = result.curve.domain();
+        assert!((result.curve.eval(lo) - data.p0).length() < 1e-14);
+        assert!((result.curve.eval(hi) - data.p1).length() < 1e-14);
+        assert!((result.curve.eval_jet(lo).d1.normalize() - data.t0).length() < 1e-13);
+        assert!((result.curve.eval_jet(hi).d1.normalize() - data.t1).length() < 1e-13);
+        // On the sphere, with f₂ at a constant angle to the sphere's normal (the mapped
+        // plane normal, turned by the constant that starts f₂ at the initial normal).
+        let angle_to_normal = |t: f64| {
+            let frame = result.frames.frame(t);
+            let p = result.curve.eval(t);
+            angle_about_tangent(
+                &frame,
+                &Frame::from_tangent_normal(frame.tangent, (p - center) / radius),
+            )
+        };
+        let first = angle_to_normal(0.0);
+        for i in 0..=20 {
+            let t = i as f64 / 20.0;
+            assert!(
+                ((result.curve.eval(t) - center).length() - radius).abs() < 1e-13 * radius,
+                "on the sphere"
+            );
+            assert!(
+                (angle_to_normal(t) - first).abs() < 1e-12,
+                "f2 keeps its angle to the sphere normal"
+            );
+        }
+        let [defect, ortho, tangent] = check_rational_rmf(&result);
+        assert!(
+            defect < 1e-11 && ortho < 1e-13 && tangent < 1e-12,
+            "{defect} {ortho} {tangent}"
+        );
+    }
+
+    #[test]
+    fn a_spline_through_helix_samples_has_one_continuous_exact_rmf() {
+        let helix = Helix {
+            radius: 1.0,
+            pitch: 0.4,
+        };
+        let result = mobius_approximate(&helix, 12, DVec3::Z).unwrap();
+        let [defect, ortho, tangent] = check_rational_rmf(&result);
+        assert!(
+            defect < 1e-10 && ortho < 1e-13 && tangent < 1e-11,
+            "{defect} {ortho} {tangent}"
+        );
+        for w in result.frames.segments().windows(2) {
+            assert!(
+                (w[0].frame(1.0).f2 - w[1].frame(0.0).f2).length() < 1e-13,
+                "continuous at joints"
+            );
+        }
+        let params = uniform_parameters(result.curve.domain(), 20_001);
+        let start = result.frames.frame(0.0).f2;
+        let reference = DoubleReflectionRmf::along(&result.curve, params.clone(), start).unwrap();
+        let drift = params
+            .iter()
+            .zip(reference.frames())
+            .map(|(&t, f)| (result.frames.frame(t).f2 - f.f2).length())
+            .fold(0.0, f64::max);
+        assert!(
+            drift < 1e-9,
+            "exact rational RMF vs double reflection along the Möbius spline: {drift}"
+        );
+    }
+
+    #[test]
+    fn planar_data_give_the_planar_ph_cubic_with_its_frame() {
+        let points = [
+            DVec3::ZERO,
+            DVec3::new(2.0, 1.0, 0.0),
+            DVec3::new(4.0, 0.0, 0.0),
+        ];
+        let tangents = [
+            DVec3::new(1.0, 1.0, 0.0),
+            DVec3::X,
+            DVec3::new(1.0, -1.0, 0.0),
+        ];
+        let result = mobius_hermite_points(&points, &tangents, DVec3::Z).unwrap();
+        assert!(result
+            .curve
+            .segments()
+            .iter()
+            .all(|s| s.degree() == 3 && s.is_polynomial()));
+        for i in 0..=10 {
+            assert!((result.frames.frame(i as f64 / 5.0).f2 - DVec3::Z).length() < 1e-14);
+        }
+    }
+
+    #[test]
+    fn rejects_bad_input() {
+        let helix = Helix {
+            radius: 1.0,
+            pitch: 0.4,
+        };
+        assert!(mobius_approximate(&helix, 0, DVec3::Z)
+            .unwrap_err()
+            .message()
+            .contains("segments"));
+        let e = mobius_hermite_points(&[DVec3::ZERO, DVec3::ZERO], &[DVec3::X, DVec3::Y], DVec3::Z)
+            .unwrap_err();
+        assert!(e.message().contains("coincide"));
+        let e = mobius_hermite(&[single()], &[0.0, 1.0], DVec3::new(1.0, 0.4, 0.3)).unwrap_err();
+        assert!(e.message().contains("initial_normal"));
+    }
+}
