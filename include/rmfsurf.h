@@ -233,6 +233,17 @@ typedef struct RmfInversion {
 } RmfInversion;
 
 /**
+ * An analytic curve given by the caller: writes the point and the tangent (the derivative,
+ * or any non-zero multiple of it) at parameter t into *point and *tangent. It must not
+ * unwind or longjmp; it is called from the calling thread only, during the call it was
+ * passed to.
+ */
+typedef void (*RmfCurveCallback)(double t,
+                                 void *user,
+                                 struct RmfVec3 *point,
+                                 struct RmfVec3 *tangent);
+
+/**
  * Borrowed view of a NURBS surface. Pole (i, j) is at index `i * pole_count_v + j`, i along
  * u; the arrays are owned by the surface handle (do not free; valid until it is freed).
  */
@@ -563,6 +574,74 @@ RmfStatus rmf_mobius_frames(const struct RmfFrames *frames,
                             size_t count,
                             struct RmfCurve **curve_out,
                             struct RmfFrames **frames_out);
+
+/**
+ * G1 Hermite interpolation by rational curves with exact rational rotation-minimizing
+ * frames (Bartoň, Jüttler & Wang, §3.1): per segment, the sphere through both points
+ * touching both tangents is mapped onto a plane by an inversion, a planar PH cubic
+ * interpolates the mapped data, and cubic and frame are mapped back — a rational curve of
+ * degree 6 on that sphere with an exact rational RMF of degree 8. Planar segments are the
+ * planar PH cubics themselves. Segment i runs over the parameters [i, i + 1]; segments may
+ * be split further to keep all weights positive. The frames of consecutive segments join
+ * continuously (constant rotations), so the whole frame is one exact rational RMF.
+ *
+ * @param[in] points count points; consecutive points distinct.
+ * @param[in] tangents count tangents (any non-zero length; normalized).
+ * @param[in] count ≥ 2.
+ * @param[in] initial_normal Projected onto the normal plane at points[0] and normalized to
+ *            give f2 there; f3 = t × f2.
+ * @param[out] curve Receives the curve; free with rmf_curve_free.
+ * @param[out] frames Receives its frames (RMF_FRAMES_RATIONAL); free with rmf_frames_free.
+ *             Both are written only on success.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If points, tangents, curve or frames is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If count < 2, a point or tangent is not finite, a tangent
+ *         is zero, consecutive points coincide, or initial_normal is zero, not finite or
+ *         along the first tangent.
+ * @return RMF_ERROR_NO_SOLUTION If a segment has no PH cubic interpolant in its plane (e.g.
+ *         a segment turning by more than half a turn); the message names the segment.
+ */
+RmfStatus rmf_mobius_rrmf_hermite(const struct RmfVec3 *points,
+                                  const struct RmfVec3 *tangents,
+                                  size_t count,
+                                  struct RmfVec3 initial_normal,
+                                  struct RmfCurve **curve,
+                                  struct RmfFrames **frames);
+
+/**
+ * Approximates a curve by `segments` rational curves with exact rational RMFs (the
+ * algorithm of rmf_mobius_rrmf_hermite on G1 data sampled at equal parameter steps). The
+ * result's joints have the input's parameters, so comparisons pair points by parameter.
+ * The Möbius construction converges with order 3 on average and order 4 at the joints in
+ * the RMF (Bartoň et al., Example 2).
+ *
+ * @param[in] curve The curve to approximate over its whole domain, or NULL to use callback.
+ * @param[in] callback An analytic curve (point and tangent at t), or NULL to use curve.
+ *            Exactly one of curve and callback must be given.
+ * @param[in] user Passed to callback unchanged; may be NULL.
+ * @param[in] t_min, t_max The callback's parameter interval (finite, t_min < t_max);
+ *            ignored for curve.
+ * @param[in] segments Number of segments, ≥ 1.
+ * @param[in] initial_normal As for rmf_mobius_rrmf_hermite.
+ * @param[out] curve_out Receives the approximating curve; free with rmf_curve_free.
+ * @param[out] frames_out Receives its frames; free with rmf_frames_free. Both are written
+ *             only on success.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If both curve and callback are NULL, or an out-pointer is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If both are given, segments = 0, the interval is invalid,
+ *         the callback gives a non-finite point or a zero tangent, or initial_normal is
+ *         invalid.
+ * @return RMF_ERROR_NO_SOLUTION If a segment has no interpolant (too few segments).
+ */
+RmfStatus rmf_mobius_rrmf_approximate(const struct RmfCurve *curve,
+                                      RmfCurveCallback callback,
+                                      void *user,
+                                      double t_min,
+                                      double t_max,
+                                      size_t segments,
+                                      struct RmfVec3 initial_normal,
+                                      struct RmfCurve **curve_out,
+                                      struct RmfFrames **frames_out);
 
 /**
  * The message of the last failing call on the calling thread.

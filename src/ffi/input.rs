@@ -1,10 +1,6 @@
 //! Inputs shared by the capability entry points: arrays of G1 Hermite data, and curves given
 //! either as an `RmfCurve` or as a C callback for analytic curves.
 
-// The capability entry points (PH cubic splines, Möbius, RRMF, cone splines) are the
-// callers; until the first of them lands nothing in the crate uses these helpers.
-#![allow(dead_code)]
-
 use super::boundary::{invalid_arg, slice, FfiError, FfiResult};
 use super::curve::RmfCurve;
 use super::types::RmfVec3;
@@ -12,7 +8,7 @@ use crate::curve::ParametricCurve;
 use crate::error::{invalid, Result};
 use crate::hermite::{hermite_sequence, HermiteSegment};
 use glam::DVec3;
-use std::ffi::c_void;
+use libc::c_void;
 
 /// An analytic curve given by the caller: writes the point and the tangent (the derivative,
 /// or any non-zero multiple of it) at parameter t into *point and *tangent. It must not

@@ -4,11 +4,16 @@
 use super::boundary::{guard, invalid_arg, out_ptr, reference, slice, write, FfiError, FfiResult};
 use super::curve::RmfCurve;
 use super::frames::{rational_frames, RmfFrames};
+use super::input::{curve_or_callback, hermite_arrays, RmfCurveCallback};
 use super::status::RmfStatus;
 use super::types::RmfVec3;
 use crate::frames::{FrameField, FrameKind};
-use crate::mobius::{map_curve, map_framed_curve, Inversion, MobiusMap};
+use crate::mobius::{
+    map_curve, map_framed_curve, mobius_approximate, mobius_hermite, Inversion, MobiusMap,
+    RationalRmfCurve,
+};
 use glam::DVec3;
+use libc::c_void;
 use std::sync::Arc;
 
 /// RmfInversion.kind: inversion in the sphere (center, radius).
@@ -189,5 +194,107 @@ pub unsafe extern "C" fn rmf_mobius_frames(
         write(curve_out, RmfCurve::new(image, None).into_raw());
         write(frames_out, RmfFrames::into_raw(field));
         Ok(())
+    })
+}
+
+/// Writes a rational-RMF curve and its frames to two out-pointers (both checked already).
+unsafe fn write_rational_rmf_curve(
+    result: RationalRmfCurve,
+    curve_out: *mut *mut RmfCurve,
+    frames_out: *mut *mut RmfFrames,
+) -> FfiResult {
+    let curve = Arc::new(result.curve);
+    let field = FrameField::new(curve.clone(), FrameKind::Rational(result.frames))?;
+    write(curve_out, RmfCurve::new(curve, None).into_raw());
+    write(frames_out, RmfFrames::into_raw(field));
+    Ok(())
+}
+
+/// G1 Hermite interpolation by rational curves with exact rational rotation-minimizing
+/// frames (Bartoň, Jüttler & Wang, §3.1): per segment, the sphere through both points
+/// touching both tangents is mapped onto a plane by an inversion, a planar PH cubic
+/// interpolates the mapped data, and cubic and frame are mapped back — a rational curve of
+/// degree 6 on that sphere with an exact rational RMF of degree 8. Planar segments are the
+/// planar PH cubics themselves. Segment i runs over the parameters [i, i + 1]; segments may
+/// be split further to keep all weights positive. The frames of consecutive segments join
+/// continuously (constant rotations), so the whole frame is one exact rational RMF.
+///
+/// @param[in] points count points; consecutive points distinct.
+/// @param[in] tangents count tangents (any non-zero length; normalized).
+/// @param[in] count ≥ 2.
+/// @param[in] initial_normal Projected onto the normal plane at points[0] and normalized to
+///            give f2 there; f3 = t × f2.
+/// @param[out] curve Receives the curve; free with rmf_curve_free.
+/// @param[out] frames Receives its frames (RMF_FRAMES_RATIONAL); free with rmf_frames_free.
+///             Both are written only on success.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If points, tangents, curve or frames is NULL.
+/// @return RMF_ERROR_INVALID_INPUT If count < 2, a point or tangent is not finite, a tangent
+///         is zero, consecutive points coincide, or initial_normal is zero, not finite or
+///         along the first tangent.
+/// @return RMF_ERROR_NO_SOLUTION If a segment has no PH cubic interpolant in its plane (e.g.
+///         a segment turning by more than half a turn); the message names the segment.
+#[no_mangle]
+pub unsafe extern "C" fn rmf_mobius_rrmf_hermite(
+    points: *const RmfVec3,
+    tangents: *const RmfVec3,
+    count: usize,
+    initial_normal: RmfVec3,
+    curve: *mut *mut RmfCurve,
+    frames: *mut *mut RmfFrames,
+) -> RmfStatus {
+    guard("rmf_mobius_rrmf_hermite", || {
+        let (curve, frames) = (out_ptr(curve, "curve")?, out_ptr(frames, "frames")?);
+        let segments = hermite_arrays(points, tangents, count)?;
+        let params: Vec<f64> = (0..count).map(|i| i as f64).collect();
+        let result = mobius_hermite(&segments, &params, initial_normal.into())?;
+        write_rational_rmf_curve(result, curve, frames)
+    })
+}
+
+/// Approximates a curve by `segments` rational curves with exact rational RMFs (the
+/// algorithm of rmf_mobius_rrmf_hermite on G1 data sampled at equal parameter steps). The
+/// result's joints have the input's parameters, so comparisons pair points by parameter.
+/// The Möbius construction converges with order 3 on average and order 4 at the joints in
+/// the RMF (Bartoň et al., Example 2).
+///
+/// @param[in] curve The curve to approximate over its whole domain, or NULL to use callback.
+/// @param[in] callback An analytic curve (point and tangent at t), or NULL to use curve.
+///            Exactly one of curve and callback must be given.
+/// @param[in] user Passed to callback unchanged; may be NULL.
+/// @param[in] t_min, t_max The callback's parameter interval (finite, t_min < t_max);
+///            ignored for curve.
+/// @param[in] segments Number of segments, ≥ 1.
+/// @param[in] initial_normal As for rmf_mobius_rrmf_hermite.
+/// @param[out] curve_out Receives the approximating curve; free with rmf_curve_free.
+/// @param[out] frames_out Receives its frames; free with rmf_frames_free. Both are written
+///             only on success.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If both curve and callback are NULL, or an out-pointer is NULL.
+/// @return RMF_ERROR_INVALID_INPUT If both are given, segments = 0, the interval is invalid,
+///         the callback gives a non-finite point or a zero tangent, or initial_normal is
+///         invalid.
+/// @return RMF_ERROR_NO_SOLUTION If a segment has no interpolant (too few segments).
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn rmf_mobius_rrmf_approximate(
+    curve: *const RmfCurve,
+    callback: RmfCurveCallback,
+    user: *mut c_void,
+    t_min: f64,
+    t_max: f64,
+    segments: usize,
+    initial_normal: RmfVec3,
+    curve_out: *mut *mut RmfCurve,
+    frames_out: *mut *mut RmfFrames,
+) -> RmfStatus {
+    guard("rmf_mobius_rrmf_approximate", || {
+        let (curve_out, frames_out) = (
+            out_ptr(curve_out, "curve_out")?,
+            out_ptr(frames_out, "frames_out")?,
+        );
+        let source = curve_or_callback(curve, callback, user, t_min, t_max)?;
+        let result = mobius_approximate(source.as_ref(), segments, initial_normal.into())?;
+        write_rational_rmf_curve(result, curve_out, frames_out)
     })
 }

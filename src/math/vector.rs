@@ -67,6 +67,12 @@ pub fn normal_plane_unit(n: DVec3, tangent: DVec3, name: &str) -> Result<DVec3> 
     Ok(projected.normalize())
 }
 
+/// The angle between two non-zero vectors, atan2(|a × b|, a·b): accurate for tiny angles,
+/// where acos(a·b / |a||b|) cannot resolve anything below ~1.5e-8.
+pub fn angle_between(a: DVec3, b: DVec3) -> f64 {
+    a.cross(b).length().atan2(a.dot(b))
+}
+
 /// Some unit vector perpendicular to the unit vector `t` (a stable choice: the cross
 /// product with the coordinate axis least aligned with `t`).
 pub fn orthonormal_to(t: DVec3) -> DVec3 {
@@ -99,6 +105,14 @@ mod tests {
         assert!(e.message().contains("tangents[2]"));
         assert!(check_unit_direction(DVec3::new(f64::NAN, 0.0, 1.0), "t").is_err());
         assert!(check_unit_direction(DVec3::new(f64::INFINITY, 0.0, 1.0), "t").is_err());
+    }
+
+    #[test]
+    fn angles_are_accurate_near_zero() {
+        let a = DVec3::X;
+        let b = DVec3::new(1.0, 1e-12, 0.0);
+        assert!((angle_between(a, b) - 1e-12).abs() < 1e-24);
+        assert!((angle_between(a, -a) - std::f64::consts::PI).abs() < 1e-15);
     }
 
     #[test]

@@ -30,7 +30,7 @@
 
 use super::transform::{Inversion, MobiusMap};
 use crate::hermite::HermiteSegment;
-use crate::math::{bisect_root, orthonormal_to};
+use crate::math::{angle_between, bisect_root, orthonormal_to};
 use glam::{DMat3, DVec3};
 
 /// Below this |det(t₀, t₁, chord/|chord|)| the data count as planar.
@@ -41,7 +41,7 @@ const PLANAR_TOLERANCE: f64 = 1e-8;
 const MAX_ASYMMETRY: f64 = 0.25;
 
 /// Circles of the pencil sampled when looking for the one with the wanted turning.
-const PENCIL_SAMPLES: usize = 96;
+const PENCIL_SAMPLES: usize = 16;
 
 /// How a segment's data are brought into a plane.
 #[derive(Clone, Debug, PartialEq)]
@@ -56,16 +56,28 @@ pub struct SegmentMap {
 }
 
 /// The sphere through p₀ and p₁ touching t₀ and t₁, or `None` for (nearly) planar data.
+///
+/// For short segments the system is nearly singular (t₀, t₁ and the chord almost parallel),
+/// but what the construction needs is a small *residual* — the tangents touching the sphere
+/// to round-off — not an accurate centre. So the system is posed relative to the chord's
+/// midpoint m (right-hand sides of the chord's size, no cancellation of absolute
+/// coordinates) and the solution refined twice against its residual.
 pub fn segment_sphere(h: &HermiteSegment) -> Option<(DVec3, f64)> {
     let chord = h.p1 - h.p0;
-    let determinant = DMat3::from_cols(h.t0, h.t1, chord / chord.length()).determinant();
-    if determinant.abs() < PLANAR_TOLERANCE {
+    let unit_chord = chord / chord.length();
+    let rows = DMat3::from_cols(h.t0, h.t1, unit_chord).transpose();
+    if rows.determinant().abs() < PLANAR_TOLERANCE {
         return None;
     }
-    let rows = DMat3::from_cols(h.t0, h.t1, chord).transpose();
+    // y = z − m: y·t₀ = −(chord·t₀)/2, y·t₁ = (chord·t₁)/2, y·chord = 0.
+    let rhs = DVec3::new(-0.5 * chord.dot(h.t0), 0.5 * chord.dot(h.t1), 0.0);
+    let inverse = rows.inverse();
+    let mut y = inverse * rhs;
+    for _ in 0..2 {
+        y += inverse * (rhs - rows * y);
+    }
     let midpoint = 0.5 * (h.p0 + h.p1);
-    let center = rows.inverse() * DVec3::new(h.p0.dot(h.t0), h.p1.dot(h.t1), midpoint.dot(chord));
-    Some((center, (h.p0 - center).length()))
+    Some((midpoint + y, (0.5 * chord + y).length()))
 }
 
 /// The map used for a segment: the paper's, unless its planar data are S-shaped or nearly so
@@ -113,14 +125,12 @@ pub fn turning_segment_map(h: &HermiteSegment) -> Option<SegmentMap> {
     let chord = (h.p1 - h.p0).normalize();
     let e1 = orthonormal_to(chord);
     let e2 = chord.cross(e1);
-    let circle = |g: f64| map_through_circle(h, sphere, g.cos() * e1 + g.sin() * e2);
-    let turning =
-        |m: &SegmentMap| chord_angle(m, chord, h.p1, h.t1) - chord_angle(m, chord, h.p0, h.t0);
-    let target = h.t0.angle_between(h.t1);
+    let centre = |g: f64| farthest_on_circle(h, sphere.0, g.cos() * e1 + g.sin() * e2);
+    let target = angle_between(h.t0, h.t1);
     let step = std::f64::consts::PI / PENCIL_SAMPLES as f64;
-    let mut best: Option<(f64, SegmentMap)> = None;
+    let mut best: Option<(f64, DVec3)> = None;
     for sign in [1.0, -1.0] {
-        let residual = |g: f64| turning(&circle(g)) - sign * target;
+        let residual = |g: f64| turning_through(h, sphere, centre(g)) - sign * target;
         for k in 0..PENCIL_SAMPLES {
             let (g0, g1) = (k as f64 * step, (k + 1) as f64 * step);
             let (r0, r1) = (residual(g0), residual(g1));
@@ -128,18 +138,17 @@ pub fn turning_segment_map(h: &HermiteSegment) -> Option<SegmentMap> {
             if r0 * r1 > 0.0 || (r0 - r1).abs() > std::f64::consts::PI {
                 continue;
             }
-            let Some(root) = bisect_root(residual, g0, g1, 1e-15) else {
+            let Some(root) = bisect_root(residual, g0, g1, 1e-10) else {
                 continue;
             };
-            let m = circle(root);
-            let distance =
-                inversion_centre(&m).map_or(0.0, |f| (f - h.p0).length().min((f - h.p1).length()));
-            if best.as_ref().is_none_or(|(d, _)| distance > *d) {
-                best = Some((distance, m));
+            let f = centre(root);
+            let distance = (f - h.p0).length().min((f - h.p1).length());
+            if best.is_none_or(|(d, _)| distance > d) {
+                best = Some((distance, f));
             }
         }
     }
-    best.map(|(_, m)| m)
+    best.map(|(_, f)| map_from_centre(h, sphere, f))
 }
 
 /// Signed angle from the chord to the mapped tangent at `p`, about the plane normal.
@@ -149,13 +158,6 @@ fn chord_angle(m: &SegmentMap, chord: DVec3, p: DVec3, t: DVec3) -> f64 {
         .cross(image)
         .dot(m.plane_normal)
         .atan2(chord.dot(image))
-}
-
-fn inversion_centre(m: &SegmentMap) -> Option<DVec3> {
-    match m.map.inversions().first() {
-        Some(Inversion::Sphere { center, .. }) => Some(*center),
-        _ => None,
-    }
 }
 
 /// Normal of the plane of the great circle through p₀ and p₁: it contains the chord and the
@@ -178,28 +180,26 @@ fn great_circle_normal(h: &HermiteSegment, center: DVec3) -> DVec3 {
     }
 }
 
-/// The inversion centred at the point of the circle (sphere ∩ plane through p₀ with unit
-/// `normal` ⟂ chord) farthest from both end points.
-fn map_through_circle(
-    h: &HermiteSegment,
-    (center, radius): (DVec3, f64),
-    normal: DVec3,
-) -> SegmentMap {
+/// The point of the circle (sphere ∩ plane through p₀ with unit `normal` ⟂ chord) farthest
+/// from both end points: where the inversion is centred.
+fn farthest_on_circle(h: &HermiteSegment, center: DVec3, normal: DVec3) -> DVec3 {
     let circle_center = center - (center - h.p0).dot(normal) * normal;
     let circle_radius = (h.p0 - circle_center).length();
-    let midpoint = 0.5 * (h.p0 + h.p1);
-    let chord = (h.p1 - h.p0).normalize();
-    let mut away = midpoint - circle_center;
+    let mut away = 0.5 * (h.p0 + h.p1) - circle_center;
     if away.length() <= 1e-9 * circle_radius {
         // The chord is a diameter of the circle: f opposite to where the tangents lead.
-        let across = normal.cross(chord);
+        let across = normal.cross((h.p1 - h.p0).normalize());
         away = if across.dot(h.t0 - h.t1) >= 0.0 {
             across
         } else {
             -across
         };
     }
-    let f = circle_center - circle_radius * away.normalize();
+    circle_center - circle_radius * away.normalize()
+}
+
+/// The inversion centred at `f` (on the sphere) that fixes both end points.
+fn map_from_centre(h: &HermiteSegment, (center, radius): (DVec3, f64), f: DVec3) -> SegmentMap {
     SegmentMap {
         map: MobiusMap::new(vec![Inversion::Sphere {
             center: f,
@@ -208,6 +208,23 @@ fn map_through_circle(
         plane_normal: (f - center) / radius,
         sphere: Some((center, radius)),
     }
+}
+
+fn map_through_circle(h: &HermiteSegment, sphere: (DVec3, f64), normal: DVec3) -> SegmentMap {
+    map_from_centre(h, sphere, farthest_on_circle(h, sphere.0, normal))
+}
+
+/// The planar turning a₁ − a₀ of the data under the inversion centred at `f`, computed
+/// without building the map (the pencil search evaluates it many times).
+fn turning_through(h: &HermiteSegment, (center, radius): (DVec3, f64), f: DVec3) -> f64 {
+    let normal = (f - center) / radius;
+    let chord = (h.p1 - h.p0).normalize();
+    let angle = |p: DVec3, t: DVec3| {
+        let y = p - f;
+        let image = t - 2.0 * t.dot(y) / y.length_squared() * y;
+        chord.cross(image).dot(normal).atan2(chord.dot(image))
+    };
+    angle(h.p1, h.t1) - angle(h.p0, h.t0)
 }
 
 /// Planar data need no map; the plane is that of t₀ × t₁, else t₀ × chord, else any plane
@@ -230,6 +247,13 @@ mod tests {
     use super::*;
     use crate::curve::ParametricCurve;
     use crate::testing::Helix;
+
+    fn inversion_centre(m: &SegmentMap) -> Option<DVec3> {
+        match m.map.inversions().first() {
+            Some(Inversion::Sphere { center, .. }) => Some(*center),
+            _ => None,
+        }
+    }
 
     fn data() -> HermiteSegment {
         HermiteSegment::new(
