@@ -7,7 +7,9 @@
  * Sections:
  *   1. a NURBS input curve, its double-reflection rotation-minimizing frames and its Frenet
  *      frames (polyline with frame vectors, and a ribbon along f2 for each frame);
- *   2. a rational NURBS surface given as input, tessellated by the library.
+ *   2. a rational NURBS surface given as input, tessellated by the library;
+ *   3. a curve with an exact rational RMF by Möbius transformations of planar PH cubics,
+ *      and the developable strip x + v f2 swept along it.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -222,6 +224,66 @@ static void demo_tessellated_surface(void) {
     rmf_surface_free(surface);
 }
 
+/* ---- 3. exact rational RMF by Möbius transformations ---- */
+
+/* Writes the tessellation of a surface as OBJ. */
+static void write_surface_obj(const char *name, const RmfSurface *surface, uint32_t u_steps, uint32_t v_steps,
+                              const char *what) {
+    size_t np, nt;
+    RmfVec3 *points;
+    uint32_t *triangles;
+    TRY(rmf_surface_tessellate(surface, u_steps, v_steps, NULL, 0, NULL, 0, &np, &nt));
+    points = (RmfVec3 *)malloc(np * sizeof *points);
+    triangles = (uint32_t *)malloc(3 * nt * sizeof *triangles);
+    if (!points || !triangles) exit(1);
+    TRY(rmf_surface_tessellate(surface, u_steps, v_steps, points, np, triangles, nt, &np, &nt));
+    write_mesh_obj(name, points, np, triangles, nt, what);
+    free(points);
+    free(triangles);
+}
+
+static void demo_mobius(void) {
+    static RmfVec3 x[SAMPLES], t[SAMPLES], f2[SAMPLES], f3[SAMPLES];
+    const char *names[3] = {"tangent", "f2", "f3"};
+    const RmfVec3 *vectors[3];
+    RmfVec3 points[9], tangents[9], seed = {0, 0, 1};
+    const RmfVec3 line[2] = {{-0.25, 0, 0}, {0.25, 0, 0}};
+    const double line_knots[4] = {0, 0, 1, 1};
+    RmfCurve *curve = NULL, *profile = NULL;
+    RmfFrames *frames = NULL;
+    RmfSurface *strip = NULL;
+    RmfNurbsCurve view;
+    double t0, t1;
+    size_t i;
+
+    printf("3. curve with an exact rational RMF by Möbius transformations (Bartoň, Jüttler & Wang)\n");
+    for (i = 0; i < 9; i++) { /* a conical helix */
+        double s = 0.8 * (double)i, r = 1.5 - 0.08 * s;
+        points[i].x = r * cos(s), points[i].y = r * sin(s), points[i].z = 0.35 * s;
+        tangents[i].x = -r * sin(s) - 0.08 * cos(s), tangents[i].y = r * cos(s) - 0.08 * sin(s), tangents[i].z = 0.35;
+    }
+    TRY(rmf_mobius_rrmf_hermite(points, tangents, 9, seed, &curve, &frames));
+    TRY(rmf_curve_nurbs(curve, &view));
+    TRY(rmf_curve_domain(curve, &t0, &t1));
+    for (i = 0; i < SAMPLES; i++) {
+        double s = t0 + (t1 - t0) * (double)i / (SAMPLES - 1);
+        TRY(rmf_curve_eval(curve, s, &x[i], NULL));
+        TRY(rmf_frames_eval(frames, s, &t[i], &f2[i], &f3[i]));
+    }
+    vectors[0] = t, vectors[1] = f2, vectors[2] = f3;
+    write_polyline_vtp("mobius_curve_frames.vtp", x, SAMPLES, names, vectors, 3,
+                       "rational curve (NURBS degree 6) with its exact rational RMF");
+    TRY(rmf_nurbs_curve_create(1, line, NULL, 2, line_knots, 4, &profile));
+    TRY(rmf_sweep_surface(curve, frames, profile, &strip));
+    write_surface_obj("mobius_strip.obj", strip, 2, 16, "developable strip x + v f2, exact rational surface");
+    printf("  the curve: NURBS of degree %u with %zu poles through 9 points of a conical helix\n", view.degree,
+           view.pole_count);
+    rmf_surface_free(strip);
+    rmf_curve_free(profile);
+    rmf_frames_free(frames);
+    rmf_curve_free(curve);
+}
+
 int main(int argc, char **argv) {
     if (argc > 1) out_dir = argv[1];
     if (mkdir(out_dir, 0777) != 0 && errno != EEXIST) {
@@ -231,5 +293,6 @@ int main(int argc, char **argv) {
     printf("rmfsurf %s demo, writing to %s/\n", rmf_version(), out_dir);
     demo_curve_and_frames();
     demo_tessellated_surface();
+    demo_mobius();
     return 0;
 }
