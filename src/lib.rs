@@ -12,6 +12,7 @@
 //! | [`frames`] | Frenet frames, the double-reflection RMF (the reference), rational frames, metrics |
 //! | [`mesh`] | triangle meshes of surfaces on the patch grid |
 //! | [`sweep`] | sweep surfaces x + c₂ f₂ + c₃ f₃ with exact rational frames |
+//! | [`rrmf_quintic`] | quintics with exact rational RMFs by G1 Hermite interpolation (Farouki, Giannelli & Sestini) |
 //! | `ffi` | the C API: handles, status codes, last error, panic boundary |
 //!
 //! The geometry lives in safe Rust and knows nothing of C; a Rust user calls it directly.
@@ -32,6 +33,8 @@ pub mod hermite;
 pub mod math;
 /// cbindgen:ignore
 pub mod mesh;
+/// cbindgen:ignore
+pub mod rrmf_quintic;
 /// cbindgen:ignore
 pub mod sweep;
 
