@@ -17,6 +17,7 @@ mod boundary;
 pub mod curve;
 pub mod frames;
 pub mod input;
+pub mod rrmf_quintic;
 pub mod status;
 pub mod surface;
 pub mod types;
