@@ -19,13 +19,8 @@ static const double PI = 3.14159265358979323846;
 static double nan_value(void) { return strtod("nan", NULL); }
 static double inf_value(void) { return strtod("inf", NULL); }
 
-static RmfVec3 vec3(double x, double y, double z) {
-    RmfVec3 v;
-    v.x = x;
-    v.y = y;
-    v.z = z;
-    return v;
-}
+/* A vector as a C99 compound literal. */
+#define vec3(x, y, z) ((RmfVec3){(x), (y), (z)})
 
 static RmfVec3 scaled(RmfVec3 v, double s) { return vec3(v.x * s, v.y * s, v.z * s); }
 

@@ -133,16 +133,7 @@ fn polar_angle(t: DVec3, ex: DVec3) -> (f64, DVec3) {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn example_1() -> HermiteSegment {
-        HermiteSegment::new(
-            DVec3::ZERO,
-            DVec3::new(1.0, 0.0, 1.0),
-            DVec3::ONE,
-            DVec3::new(0.0, 1.0, 1.0),
-        )
-        .unwrap()
-    }
+    use crate::rrmf_quintic::solutions::tests::example_1;
 
     #[test]
     fn canonical_coordinates_reproduce_the_data() {

@@ -183,65 +183,61 @@ pub(crate) mod tests {
         }
     }
 
-    /// The solution of Example 1 with the printed ρ.
-    fn example_1_solution(eta: f64, rho: f64) -> RrmfQuintic {
-        let all = rrmf_quintics(&example_1(), eta).unwrap();
-        println!(
-            "Example 1, η = {eta}: ρ = {:?}",
-            all.iter().map(|s| s.rho).collect::<Vec<_>>()
-        );
-        let found = all.into_iter().find(|s| agrees(s.rho, rho, 4));
-        found.unwrap_or_else(|| panic!("no solution with ρ = {rho} at η = {eta}"))
+    /// What the paper prints for one curve of Example 1: η, ρ, α_k, β_k, w_k (4 decimals),
+    /// and L, E, E_rmf with their numbers of decimals.
+    struct Printed {
+        eta: f64,
+        rho: f64,
+        alpha: [(f64, f64); 3],
+        beta: [(f64, f64); 3],
+        w: [(f64, f64); 3],
+        measures: [(f64, i32); 3],
+    }
+
+    fn reproduces(p: Printed) {
+        let all = rrmf_quintics(&example_1(), p.eta).unwrap();
+        let rhos: Vec<f64> = all.iter().map(|s| s.rho).collect();
+        println!("Example 1, η = {}: ρ = {rhos:?}", p.eta);
+        let s = all.into_iter().find(|s| agrees(s.rho, p.rho, 4));
+        let s = s.unwrap_or_else(|| panic!("no solution with ρ = {} at η = {}", p.rho, p.eta));
+        println!("{s:#?}");
+        assert_coefficients(&s.hopf.alpha, p.alpha, "α");
+        assert_coefficients(&s.hopf.beta, p.beta, "β");
+        assert_coefficients(&s.w, p.w, "w");
+        let m = s.measures;
+        let computed = [m.arc_length, m.energy_frenet, m.energy_rmf];
+        for ((value, (printed, decimals)), name) in
+            computed.iter().zip(p.measures).zip(["L", "E", "E_rmf"])
+        {
+            assert!(
+                agrees(*value, printed, decimals),
+                "{name} = {value}, the paper prints {printed}"
+            );
+        }
     }
 
     #[test]
     fn example_1_left_curve_eta_5_2() {
-        let s = example_1_solution(5.2, 1.9158);
-        println!("{s:#?}");
-        assert_coefficients(
-            &s.hopf.alpha,
-            [(1.4194, 0.0), (-0.7920, 0.4058), (-0.9158, 2.5605)],
-            "α",
-        );
-        assert_coefficients(
-            &s.hopf.beta,
-            [(0.4512, 0.0), (1.1392, 0.7361), (-0.5593, -0.6590)],
-            "β",
-        );
-        assert_coefficients(&s.w, [(1.0, 0.0), (-0.2751, 0.4094), (1.1863, 1.5044)], "w");
-        let m = s.measures;
-        assert!(agrees(m.arc_length, 2.3259, 4), "L = {}", m.arc_length);
-        assert!(
-            agrees(m.energy_frenet, 44.509, 3),
-            "E = {}",
-            m.energy_frenet
-        );
-        assert!(agrees(m.energy_rmf, 22.856, 3), "E_rmf = {}", m.energy_rmf);
+        reproduces(Printed {
+            eta: 5.2,
+            rho: 1.9158,
+            alpha: [(1.4194, 0.0), (-0.7920, 0.4058), (-0.9158, 2.5605)],
+            beta: [(0.4512, 0.0), (1.1392, 0.7361), (-0.5593, -0.6590)],
+            w: [(1.0, 0.0), (-0.2751, 0.4094), (1.1863, 1.5044)],
+            measures: [(2.3259, 4), (44.509, 3), (22.856, 3)],
+        });
     }
 
     #[test]
     fn example_1_right_curve_eta_4_325() {
-        let s = example_1_solution(4.325, 0.9652);
-        println!("{s:#?}");
-        assert_coefficients(
-            &s.hopf.alpha,
-            [(1.5363, 0.0), (1.1372, 0.4334), (0.7595, 1.2735)],
-            "α",
-        );
-        assert_coefficients(
-            &s.hopf.beta,
-            [(0.4883, 0.0), (-0.0461, -0.2865), (-0.4712, 0.0067)],
-            "β",
-        );
-        assert_coefficients(&s.w, [(1.0, 0.0), (0.6637, 0.2024), (0.6024, 0.7542)], "w");
-        let m = s.measures;
-        assert!(agrees(m.arc_length, 1.9070, 4), "L = {}", m.arc_length);
-        assert!(
-            agrees(m.energy_frenet, 5.7495, 4),
-            "E = {}",
-            m.energy_frenet
-        );
-        assert!(agrees(m.energy_rmf, 1.4641, 4), "E_rmf = {}", m.energy_rmf);
+        reproduces(Printed {
+            eta: 4.325,
+            rho: 0.9652,
+            alpha: [(1.5363, 0.0), (1.1372, 0.4334), (0.7595, 1.2735)],
+            beta: [(0.4883, 0.0), (-0.0461, -0.2865), (-0.4712, 0.0067)],
+            w: [(1.0, 0.0), (0.6637, 0.2024), (0.6024, 0.7542)],
+            measures: [(1.9070, 4), (5.7495, 4), (1.4641, 4)],
+        });
     }
 
     /// The checks the issue asks of every returned solution, in original coordinates.
