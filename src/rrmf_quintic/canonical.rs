@@ -62,9 +62,15 @@ impl CanonicalHermite {
     /// a multiple of π: a tangent along the chord, or both tangents in one plane with it)
     /// are refused with a message naming the arguments.
     pub fn new(data: &HermiteSegment) -> Result<Self> {
+        // |p1 − p0| scaled by its largest component first: it may overflow (or underflow)
+        // even though p0 and p1 are finite.
         let chord = data.p1 - data.p0;
-        let x = chord.length();
-        let ex = chord / x;
+        let largest = chord.abs().max_element();
+        if !largest.is_finite() {
+            return invalid!("p1 − p0 overflows: p0 and p1 are too far apart to be represented");
+        }
+        let ex = (chord / largest).normalize();
+        let x = largest * (chord / largest).length();
         let (theta_i, ey) = polar_angle(data.t0, ex);
         if theta_i.sin() <= DEGENERATE_SINE {
             return invalid!(

@@ -52,6 +52,15 @@ pub enum ShapeMeasure {
 }
 
 impl ShapeMeasures {
+    /// The measures of the curve scaled by `factor`: L·factor, E/factor, E_rmf/factor.
+    pub fn scaled(&self, factor: f64) -> Self {
+        Self {
+            arc_length: self.arc_length * factor,
+            energy_frenet: self.energy_frenet / factor,
+            energy_rmf: self.energy_rmf / factor,
+        }
+    }
+
     /// The chosen measure's value.
     pub fn get(&self, which: ShapeMeasure) -> f64 {
         match which {

@@ -29,7 +29,7 @@ const EQUAL_DELTAS: f64 = 1e-8;
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Candidate {
     pub rho: f64,
-    pub unit: HopfQuadratics,
+    pub normalized: HopfQuadratics,
 }
 
 /// What η fixes before ρ is known: e^{iφ/2}, μ₀ (28), μ₁ (32) and f₁ (29).
@@ -111,7 +111,7 @@ pub fn candidates(c: &CanonicalHermite, eta: f64) -> Vec<Candidate> {
             for a1 in alpha1_values(&d, terms.f1, rho) {
                 found.push(Candidate {
                     rho,
-                    unit: coefficients(c, &terms, rho, a1),
+                    normalized: coefficients(c, &terms, rho, a1),
                 });
             }
         }

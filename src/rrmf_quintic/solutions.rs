@@ -5,7 +5,12 @@
 //! `special` (α₁ = 0); this module does (f)–(j): f₂ (40) — the x-component of the
 //! displacement of the normalized coefficients — must be positive, γ = √(5X / f₂) (39),
 //! α_k = γ a_k, β_k = γ b_k (36), and the hodograph (2) is taken back to the original
-//! coordinates. Every candidate is then checked against the conditions it must satisfy:
+//! coordinates.
+//!
+//! X enters only through γ, and α, β scale with √X: everything computed on the curve (the
+//! verification, the shape measures, control points and frames) is computed for a unit
+//! chord and scaled (points by X, L by X, E and E_rmf by 1/X), so that chords from 1e-300
+//! to 1e300 work alike — products like (7) would otherwise underflow or overflow. Every candidate is then checked against the conditions it must satisfy:
 //! the RRMF conditions (7)–(8), the displacement (14)–(15) and the end tangents (16)–(17).
 //! A root of the sextic that does not pass (a spurious or inaccurate one) is dropped.
 
@@ -42,23 +47,28 @@ pub struct RrmfQuintic {
     pub measures: ShapeMeasures,
     /// From canonical to original coordinates.
     pub placement: Placement,
+    /// The same quintic for the chord (1, 0, 0): α/√X, β/√X.
+    unit_chord: HopfQuadratics,
+    /// X = |p_f − p_i|.
+    chord: f64,
 }
 
 impl RrmfQuintic {
     /// The quintic in original coordinates, as a polynomial Bézier curve on [0, 1].
     pub fn bezier(&self) -> Result<RationalBezierCurve> {
         let points: Vec<DVec3> = self
-            .hopf
+            .unit_chord
             .control_points(DVec3::ZERO)
             .iter()
-            .map(|&p| self.placement.point(p))
+            .map(|&p| self.placement.point(p * self.chord))
             .collect();
         RationalBezierCurve::polynomial(&points)
     }
 
     /// The rational RMF (9) in original coordinates, with f₂(0) = e₂(0) of the ERF (5).
     pub fn rmf(&self) -> RmfNumerators {
-        let canonical = self.hopf.rmf_numerators();
+        // The frame does not depend on the scale of α, β.
+        let canonical = self.unit_chord.rmf_numerators();
         let rotate = |v: &[DVec3]| v.iter().map(|&x| self.placement.vector(x)).collect();
         RmfNumerators {
             f2: rotate(&canonical.f2),
@@ -94,32 +104,35 @@ pub fn solve(c: &CanonicalHermite, eta: f64) -> Vec<RrmfQuintic> {
 
 /// Steps (f)–(h) and the verification: the solution of a candidate, if it is one.
 fn complete(c: &CanonicalHermite, eta: f64, candidate: Candidate) -> Option<RrmfQuintic> {
-    // f₂ (40) is the x-displacement of the normalized quintic times 5.
-    // (NaN, from a degenerate candidate, is refused too.)
-    let f2 = 5.0 * candidate.unit.displacement().x;
+    // f₂ (40) is the x-displacement of the normalized quintic times 5. (NaN, from a
+    // degenerate candidate, is refused too.)
+    let f2 = 5.0 * candidate.normalized.displacement().x;
     if f2.is_nan() || f2 <= 0.0 {
         return None;
     }
-    let hopf = candidate.unit.scaled((5.0 * c.x / f2).sqrt());
-    if !satisfies_conditions(c, &hopf) {
+    // γ of (39) for X = 1.
+    let unit_chord = candidate.normalized.scaled((5.0 / f2).sqrt());
+    if !satisfies_conditions(c, &unit_chord) {
         return None;
     }
     Some(RrmfQuintic {
         eta,
         rho: candidate.rho,
-        hopf,
-        w: hopf.w(),
-        measures: shape_measures(&hopf),
+        hopf: unit_chord.scaled(c.x.sqrt()),
+        w: unit_chord.w(),
+        measures: shape_measures(&unit_chord).scaled(c.x),
         placement: c.placement,
+        unit_chord,
+        chord: c.x,
     })
 }
 
-/// Verification by substitution: (7)–(8), (14)–(15) and (16)–(17).
-fn satisfies_conditions(c: &CanonicalHermite, hopf: &HopfQuadratics) -> bool {
-    let (r7, r8) = hopf.rrmf_residuals();
-    let size = c.x.max(arc_length(hopf));
-    let end_error = (hopf.displacement() - DVec3::new(c.x, 0.0, 0.0)).length() / size;
-    let hodograph = hopf.hodograph();
+/// Verification by substitution, for the chord (1, 0, 0): (7)–(8), (14)–(15), (16)–(17).
+fn satisfies_conditions(c: &CanonicalHermite, unit_chord: &HopfQuadratics) -> bool {
+    let (r7, r8) = unit_chord.rrmf_residuals();
+    let size = arc_length(unit_chord).max(1.0);
+    let end_error = (unit_chord.displacement() - DVec3::X).length() / size;
+    let hodograph = unit_chord.hodograph();
     let (ti, tf) = c.tangents();
     let tangent_error = angle(hodograph[0], ti).max(angle(hodograph[4], tf));
     r7 <= RRMF_TOLERANCE
@@ -371,5 +384,47 @@ pub(crate) mod tests {
             HermiteSegment::new(DVec3::ZERO, DVec3::Y, DVec3::X, DVec3::new(1.0, -1.0, 0.0))
                 .unwrap();
         assert!(rrmf_quintics(&planar, 1.0).is_err());
+    }
+
+    /// Chords from 1e-300 to 1e300 give the same solutions, scaled: α, β by √X, L by X,
+    /// E and E_rmf by 1/X, and the curve by X.
+    #[test]
+    fn any_representable_scale_works() {
+        let unit = rrmf_quintics(&example_1(), 4.325).unwrap();
+        for scale in [1e-300, 1e-150, 1e-20, 1e20, 1e150, 1e300] {
+            let d = example_1();
+            let scaled = HermiteSegment::new(d.p0, d.t0, d.p1 * scale, d.t1).unwrap();
+            let found = rrmf_quintics(&scaled, 4.325).unwrap();
+            assert_eq!(found.len(), unit.len(), "scale {scale:e}");
+            for (q, u) in found.iter().zip(&unit) {
+                let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * b.abs();
+                assert!(
+                    close(q.rho, u.rho),
+                    "scale {scale:e}: ρ {} vs {}",
+                    q.rho,
+                    u.rho
+                );
+                assert!(close(q.hopf.alpha[2].re / scale.sqrt(), u.hopf.alpha[2].re));
+                assert!(close(q.measures.arc_length / scale, u.measures.arc_length));
+                assert!(close(q.measures.energy_rmf * scale, u.measures.energy_rmf));
+                assert!(close(
+                    q.measures.energy_frenet * scale,
+                    u.measures.energy_frenet
+                ));
+                let end = q.bezier().unwrap().eval(1.0);
+                assert!(
+                    (end / scale - DVec3::ONE).length() < 1e-12,
+                    "scale {scale:e}"
+                );
+            }
+        }
+        let huge = HermiteSegment::new(
+            DVec3::splat(-1e308),
+            DVec3::X,
+            DVec3::splat(1e308),
+            DVec3::Y,
+        );
+        let e = rrmf_quintics(&huge.unwrap(), 1.0).unwrap_err();
+        assert!(e.message().contains("overflows"), "{e}");
     }
 }

@@ -57,7 +57,7 @@ pub fn candidates(c: &CanonicalHermite) -> Vec<Candidate> {
             let denominator = evaluate(&a0_plus_a2, rho);
             (denominator.abs() > 0.0).then(|| Candidate {
                 rho,
-                unit: HopfQuadratics {
+                normalized: HopfQuadratics {
                     alpha: [a0, Complex::ZERO, a2 * rho],
                     beta: [b0, (evaluate(&p, rho) / denominator).conj(), b2 * rho],
                 },
