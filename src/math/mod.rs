@@ -16,5 +16,6 @@ pub use minimize::{minimize_bracketed, Minimum};
 pub use quadrature::GaussLegendre;
 pub use roots::{quadratic_roots, real_roots_in, real_roots_power};
 pub use vector::{
-    check_finite, check_point, check_unit_direction, normal_plane_unit, orthonormal_to,
+    check_finite, check_point, check_unit_direction, normal_plane_unit, orthogonalized,
+    orthonormal_to,
 };

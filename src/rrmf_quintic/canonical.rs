@@ -10,6 +10,7 @@
 
 use crate::error::{invalid, Result};
 use crate::hermite::HermiteSegment;
+use crate::math::orthogonalized;
 use glam::{DMat3, DVec3};
 
 /// |sin| below which θ_i, θ_f or φ count as a multiple of π: the data are planar or
@@ -124,9 +125,10 @@ impl CanonicalHermite {
 }
 
 /// The angle θ of the unit vector `t` from the unit axis `ex`, and the unit vector of the
-/// (ex, t)-plane perpendicular to `ex` on the side of `t` (arbitrary if t ∥ ex).
+/// (ex, t)-plane perpendicular to `ex` on the side of `t` (arbitrary if t ∥ ex). The
+/// double projection keeps the axes orthonormal to rounding however close t is to ex.
 fn polar_angle(t: DVec3, ex: DVec3) -> (f64, DVec3) {
-    let across = t - t.dot(ex) * ex;
+    let across = orthogonalized(t, ex);
     let sine = across.length();
     let ey = if sine > 0.0 {
         across / sine
@@ -157,6 +159,18 @@ mod tests {
         assert!((p.vector(ti) - data.t0).length() < 1e-15);
         assert!((p.vector(tf) - data.t1).length() < 1e-15);
         assert!((p.axes.determinant() - 1.0).abs() < 1e-15, "a rotation");
+        // t0 within 4e-10 rad of the chord: the axes are still orthonormal to rounding.
+        let chord = (data.p1 - data.p0).normalize();
+        let near = chord + DVec3::new(0.2, -0.3, 0.1) * 1e-9;
+        let close = HermiteSegment::new(data.p0, near, data.p1, data.t1);
+        let axes = CanonicalHermite::new(&close.unwrap())
+            .unwrap()
+            .placement
+            .axes;
+        assert!((axes.transpose() * axes - DMat3::IDENTITY)
+            .to_cols_array()
+            .iter()
+            .all(|e| e.abs() < 1e-15));
         assert!((c.ci.hypot(c.si) - 1.0).abs() < 1e-15 && c.ci > 0.0 && c.si > 0.0);
     }
 
