@@ -125,7 +125,14 @@ unsafe fn write_curve_and_frames(
 /// of the sextic (35) (or, when s_f = s_i and η = φ/2, of the quartic of the special case
 /// α_1 = 0), and each solution is verified by substitution into the RRMF conditions (7)–(8)
 /// (to 1e-10 relative) and the interpolation conditions (end point to 1e-12 of
-/// max(|p1 − p0|, L), end tangents to 1e-12 rad).
+/// max(|p1 − p0|, L), end tangents to 1e-12 rad). A root whose curve is numerically
+/// singular — its speed dipping below 1e-6 of its maximum on [0, 1], where its tangent is
+/// determined by rounding errors — is not returned; this happens only for nearly
+/// degenerate data (a tangent almost along p1 − p0).
+///
+/// ρ far from 1 means one end derivative is much shorter than the other: the first or last
+/// leg of the Bézier control polygon is then short, and a tangent computed from the poles
+/// alone is accurate only to about 1e-16 |P| / |leg|.
 ///
 /// Capacity: with fewer solutions than exist, RMF_ERROR_BUFFER_TOO_SMALL is returned and
 /// only *count is written; capacity 0 with solutions NULL queries the count that way.
@@ -213,9 +220,10 @@ fn recompute(data: &HermiteSegment, solution: &RmfRrmfQuintic) -> FfiResult<Rrmf
 
 /// The curve and exact rational rotation-minimizing frame of one RRMF quintic interpolant:
 /// the quintic as a polynomial Bézier curve of degree 5 on [0, 1] in the caller's
-/// coordinates, and its RMF (9) — rational of degree 8, split where needed so that all
-/// weights are positive — turned about the tangent so that f2 starts at initial_normal (a
-/// constant rotation of an RMF is again an RMF).
+/// coordinates, and its RMF (9) — rational of degree 8, split where needed so that the
+/// weights are positive and within a factor 100 of each other on every segment — turned
+/// about the tangent so that f2 starts at initial_normal (a constant rotation of an RMF is
+/// again an RMF).
 ///
 /// The solution is recomputed from the data and solution->eta and must match *solution
 /// (ρ, α, β to 1e-9 relative), so a curve always interpolates the data it is given with.
@@ -233,6 +241,8 @@ fn recompute(data: &HermiteSegment, solution: &RmfRrmfQuintic) -> FfiResult<Rrmf
 /// @return RMF_ERROR_INVALID_INPUT If the data are invalid (as for rmf_rrmf_quintic_solutions),
 ///         the solution does not belong to them, or initial_normal is not finite, zero or
 ///         along t0.
+/// @return RMF_ERROR_NO_SOLUTION If the frame cannot be given positive weights (a singular
+///         curve; not seen for solutions returned by this library).
 /// @return RMF_ERROR_INTERNAL On an internal error.
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
@@ -313,7 +323,8 @@ pub unsafe extern "C" fn rmf_rrmf_quintic_best(
 /// @param[out] curve Receives the spline (degree 5, count − 1 segments); free with
 ///             rmf_curve_free. Untouched on failure.
 /// @param[out] frames Receives the rational RMF (RMF_FRAMES_RATIONAL; its segments refine
-///             the curve's where weights had to be made positive); free with
+///             the curve's where the weights had to be made positive and within a factor 100
+///             of each other); free with
 ///             rmf_frames_free. Untouched on failure.
 /// @return RMF_OK on success.
 /// @return RMF_ERROR_NULL_POINTER If points, tangents, curve or frames is NULL.

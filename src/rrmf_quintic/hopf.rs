@@ -10,7 +10,7 @@
 //! Everything is computed exactly in Bernstein form with `bernstein::product`; products
 //! of Bernstein polynomials never leave the basis, so no power-form round-off enters.
 
-use crate::bezier::bernstein::product;
+use crate::bezier::bernstein::{product, restrict};
 use crate::math::Complex;
 use glam::DVec3;
 
@@ -37,6 +37,18 @@ type Pair = (Complex, Complex);
 impl HopfQuadratics {
     fn pairs(&self) -> [Pair; 3] {
         [0, 1, 2].map(|k| (self.alpha[k], self.beta[k]))
+    }
+
+    /// α and β restricted to [s0, s1] and reparameterized to [0, 1].
+    pub fn restricted(&self, s0: f64, s1: f64) -> Self {
+        let piece = |z: &[Complex; 3]| {
+            let r = restrict(z, s0, s1);
+            [r[0], r[1], r[2]]
+        };
+        Self {
+            alpha: piece(&self.alpha),
+            beta: piece(&self.beta),
+        }
     }
 
     /// The same polynomials times a real factor (how (36) scales a_k, b_k by γ).
@@ -117,6 +129,15 @@ impl HopfQuadratics {
     /// The rational RMF (9) on [0, 1] as numerators over one denominator, degree 8.
     pub fn rmf_numerators(&self) -> RmfNumerators {
         self.rotated_erf(&self.w())
+    }
+
+    /// The RMF (9) on [s0, s1], reparameterized to [0, 1], computed from α, β and w
+    /// restricted to the piece: near a dip of the speed (w almost vanishing) the degree-8
+    /// products cancel, and forming them from the local coefficients keeps the digits that
+    /// subdividing the products on [0, 1] would lose.
+    pub fn rmf_numerators_on(&self, s0: f64, s1: f64) -> RmfNumerators {
+        let w = restrict(&self.w(), s0, s1);
+        self.restricted(s0, s1).rotated_erf(&[w[0], w[1], w[2]])
     }
 
     /// The ERF (5) turned about the tangent by the angle of w² (the frame (9) for any

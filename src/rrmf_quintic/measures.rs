@@ -13,8 +13,8 @@
 //! integrated together by composite Gauss–Legendre quadrature.
 
 use super::hopf::HopfQuadratics;
-use crate::bezier::bernstein::to_power;
-use crate::math::GaussLegendre;
+use crate::bezier::bernstein::{derivative, evaluate, to_power};
+use crate::math::{real_roots_in, GaussLegendre};
 use std::sync::OnceLock;
 
 /// Gauss–Legendre points per piece and pieces of [0, 1]: the integrands are smooth rational
@@ -82,6 +82,17 @@ fn rule() -> &'static GaussLegendre {
 pub fn arc_length(hopf: &HopfQuadratics) -> f64 {
     let speed = hopf.speed();
     speed.iter().sum::<f64>() / speed.len() as f64
+}
+
+/// The least and the greatest speed σ on [0, 1]: at the ends or where σ' = 0.
+pub fn speed_range(hopf: &HopfQuadratics) -> (f64, f64) {
+    let speed = hopf.speed();
+    let critical = real_roots_in(&to_power(&derivative(&speed)), 0.0, 1.0);
+    [0.0, 1.0]
+        .into_iter()
+        .chain(critical)
+        .map(|t| evaluate(&speed, t))
+        .fold((f64::INFINITY, 0.0), |(lo, hi), v| (lo.min(v), hi.max(v)))
 }
 
 /// L, E and E_rmf of the quintic with hodograph H(α, β).
@@ -165,6 +176,26 @@ mod tests {
         assert!((m.energy_rmf - reference(2)).abs() < 1e-10 * m.energy_rmf);
         assert!(m.energy_frenet > m.energy_rmf);
         assert_eq!(m.get(ShapeMeasure::ArcLength), m.arc_length);
+    }
+
+    #[test]
+    fn speed_range_finds_interior_minima() {
+        // α(t) = (1 − 2t)², β(t) = 0.2i t(1 − t): σ = |α|² + |β|² dips to about 0.0025
+        // twice near t = ½ (at 1 − 2t = ±0.05), and is 1 at both ends.
+        let h = HopfQuadratics {
+            alpha: [Complex::ONE, Complex::new(-1.0, 0.0), Complex::ONE],
+            beta: [Complex::ZERO, Complex::new(0.0, 0.1), Complex::ZERO],
+        };
+        let (lo, hi) = speed_range(&h);
+        let speed = h.speed();
+        let sampled = (0..=100_000)
+            .map(|i| evaluate(&speed, i as f64 / 100_000.0))
+            .fold(f64::INFINITY, f64::min);
+        assert!(
+            lo <= sampled && sampled - lo < 1e-12,
+            "{lo} vs sampled {sampled}"
+        );
+        assert!(lo < 0.0025 && (hi - 1.0).abs() < 1e-15);
     }
 
     #[test]

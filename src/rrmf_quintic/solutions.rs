@@ -11,12 +11,13 @@
 //! verification, the shape measures, control points and frames) is computed for a unit
 //! chord and scaled (points by X, L by X, E and E_rmf by 1/X), so that chords from 1e-300
 //! to 1e300 work alike — products like (7) would otherwise underflow or overflow. Every candidate is then checked against the conditions it must satisfy:
-//! the RRMF conditions (7)–(8), the displacement (14)–(15) and the end tangents (16)–(17).
-//! A root of the sextic that does not pass (a spurious or inaccurate one) is dropped.
+//! the RRMF conditions (7)–(8), the displacement (14)–(15) and the end tangents (16)–(17),
+//! and a speed bounded away from zero (a regular curve). A root of the sextic that does not
+//! pass (a spurious or inaccurate one, or a numerically singular curve) is dropped.
 
 use super::canonical::{CanonicalHermite, Placement};
 use super::hopf::{HopfQuadratics, RmfNumerators};
-use super::measures::{arc_length, shape_measures, ShapeMeasures};
+use super::measures::{arc_length, shape_measures, speed_range, ShapeMeasures};
 use super::sextic::{self, Candidate};
 use super::special;
 use crate::bezier::RationalBezierCurve;
@@ -25,6 +26,14 @@ use crate::hermite::HermiteSegment;
 use crate::math::Complex;
 use glam::DVec3;
 
+/// Smallest ratio of the least to the greatest speed σ on [0, 1]. The unit tangent of the
+/// curve evaluated from its Bézier data carries an error of about ε σ_max / σ(t): a curve
+/// whose speed dips below 1e-6 of its maximum (a near-cusp, or a nearly vanishing end
+/// derivative, ρ outside [1e-3, 1e3]) has a tangent known to 1e-10 rad at best there, and
+/// as the dip deepens, no tangent at all — frames and sweeps built on it disagree with it.
+/// Such roots occur for nearly degenerate data (a tangent almost along the chord); for data
+/// in general position none of 4,362 test solutions came near.
+pub const REGULARITY: f64 = 1e-6;
 /// Largest relative residual of (7) and (8) a solution may have.
 pub const RRMF_TOLERANCE: f64 = 1e-10;
 /// Largest end-point error of a solution, relative to its size max(|p_f − p_i|, L), and
@@ -65,10 +74,11 @@ impl RrmfQuintic {
         RationalBezierCurve::polynomial(&points)
     }
 
-    /// The rational RMF (9) in original coordinates, with f₂(0) = e₂(0) of the ERF (5).
-    pub fn rmf(&self) -> RmfNumerators {
+    /// The rational RMF (9) on [s0, s1] (reparameterized to [0, 1]) in original coordinates,
+    /// with f₂(0) = e₂(0) of the ERF (5).
+    pub fn rmf_on(&self, s0: f64, s1: f64) -> RmfNumerators {
         // The frame does not depend on the scale of α, β.
-        let canonical = self.unit_chord.rmf_numerators();
+        let canonical = self.unit_chord.rmf_numerators_on(s0, s1);
         let rotate = |v: &[DVec3]| v.iter().map(|&x| self.placement.vector(x)).collect();
         RmfNumerators {
             f2: rotate(&canonical.f2),
@@ -127,8 +137,10 @@ fn complete(c: &CanonicalHermite, eta: f64, candidate: Candidate) -> Option<Rrmf
     })
 }
 
-/// Verification by substitution, for the chord (1, 0, 0): (7)–(8), (14)–(15), (16)–(17).
+/// Verification by substitution, for the chord (1, 0, 0): (7)–(8), (14)–(15), (16)–(17),
+/// and regularity.
 fn satisfies_conditions(c: &CanonicalHermite, unit_chord: &HopfQuadratics) -> bool {
+    let (slowest, fastest) = speed_range(unit_chord);
     let (r7, r8) = unit_chord.rrmf_residuals();
     let size = arc_length(unit_chord).max(1.0);
     let end_error = (unit_chord.displacement() - DVec3::X).length() / size;
@@ -139,6 +151,7 @@ fn satisfies_conditions(c: &CanonicalHermite, unit_chord: &HopfQuadratics) -> bo
         && r8 <= RRMF_TOLERANCE
         && end_error <= INTERPOLATION_TOLERANCE
         && tangent_error <= INTERPOLATION_TOLERANCE
+        && slowest >= REGULARITY * fastest
 }
 
 /// The angle between two non-zero vectors, accurate for small angles.
@@ -178,6 +191,21 @@ pub(crate) mod tests {
                 let p0 = vector(scale);
                 let p1 = p0 + vector(scale);
                 HermiteSegment::new(p0, vector(1.0), p1, vector(1.0)).unwrap()
+            })
+            .collect()
+    }
+
+    /// Data whose start tangent makes an angle of 10⁻¹ … 10⁻⁹ rad with the chord: close to
+    /// the degenerate case θ_i = 0, with solutions whose speed dips far below its maximum.
+    pub fn near_degenerate_data(count: usize) -> Vec<HermiteSegment> {
+        random_data(count)
+            .into_iter()
+            .enumerate()
+            .map(|(k, d)| {
+                let chord = (d.p1 - d.p0).normalize();
+                let across = crate::math::orthogonalized(d.t0, chord).normalize();
+                let t0 = chord + across * 10f64.powi(-(k as i32 % 9) - 1);
+                HermiteSegment::new(d.p0, t0, d.p1, d.t1).unwrap()
             })
             .collect()
     }
