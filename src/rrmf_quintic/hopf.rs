@@ -21,7 +21,7 @@ pub struct HopfQuadratics {
     pub beta: [Complex; 3],
 }
 
-/// The exact rational RMF (9) of one quintic on [0, 1]: f₂ = `f2` / `denominator`,
+/// The exact rational RMF (9) of one quintic on an interval: f₂ = `f2` / `denominator`,
 /// f₃ = `f3` / `denominator`, all of degree 8 in Bernstein form. The denominator is
 /// (a² + b²)(|α|² + |β|²), positive on [0, 1], though its coefficients need not be.
 #[derive(Clone, Debug, PartialEq)]
@@ -126,15 +126,10 @@ impl HopfQuadratics {
         ]
     }
 
-    /// The rational RMF (9) on [0, 1] as numerators over one denominator, degree 8.
-    pub fn rmf_numerators(&self) -> RmfNumerators {
-        self.rotated_erf(&self.w())
-    }
-
-    /// The RMF (9) on [s0, s1], reparameterized to [0, 1], computed from α, β and w
-    /// restricted to the piece: near a dip of the speed (w almost vanishing) the degree-8
-    /// products cancel, and forming them from the local coefficients keeps the digits that
-    /// subdividing the products on [0, 1] would lose.
+    /// The rational RMF (9) on [s0, s1], reparameterized to [0, 1], as numerators over one
+    /// denominator of degree 8, computed from α, β and w restricted to the piece: near a dip
+    /// of the speed (w almost vanishing) the degree-8 products cancel, and forming them from
+    /// the local coefficients keeps the digits that subdividing the products on [0, 1] loses.
     pub fn rmf_numerators_on(&self, s0: f64, s1: f64) -> RmfNumerators {
         let w = restrict(&self.w(), s0, s1);
         self.restricted(s0, s1).rotated_erf(&[w[0], w[1], w[2]])
