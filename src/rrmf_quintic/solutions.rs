@@ -140,7 +140,6 @@ fn complete(c: &CanonicalHermite, eta: f64, candidate: Candidate) -> Option<Rrmf
 /// Verification by substitution, for the chord (1, 0, 0): (7)–(8), (14)–(15), (16)–(17),
 /// and regularity.
 fn satisfies_conditions(c: &CanonicalHermite, unit_chord: &HopfQuadratics) -> bool {
-    let (slowest, fastest) = speed_range(unit_chord);
     let (r7, r8) = unit_chord.rrmf_residuals();
     let size = arc_length(unit_chord).max(1.0);
     let end_error = (unit_chord.displacement() - DVec3::X).length() / size;
@@ -151,7 +150,13 @@ fn satisfies_conditions(c: &CanonicalHermite, unit_chord: &HopfQuadratics) -> bo
         && r8 <= RRMF_TOLERANCE
         && end_error <= INTERPOLATION_TOLERANCE
         && tangent_error <= INTERPOLATION_TOLERANCE
-        && slowest >= REGULARITY * fastest
+        && is_regular(unit_chord)
+}
+
+/// Whether the speed stays above `REGULARITY` times its maximum on [0, 1].
+fn is_regular(unit_chord: &HopfQuadratics) -> bool {
+    let (slowest, fastest) = speed_range(unit_chord);
+    slowest >= REGULARITY * fastest
 }
 
 /// The angle between two non-zero vectors, accurate for small angles.
