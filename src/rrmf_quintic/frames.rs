@@ -90,6 +90,7 @@ pub(crate) mod tests {
     use crate::frames::double_reflection::DoubleReflectionRmf;
     use crate::frames::metrics::{orthonormality_error, rmf_defect};
     use crate::frames::{FrameField, FrameKind};
+    use crate::hermite::HermiteSegment;
     use crate::math::Complex;
     use crate::rrmf_quintic::measures::speed_range;
     use crate::rrmf_quintic::solutions::rrmf_quintics;
@@ -225,5 +226,54 @@ pub(crate) mod tests {
             );
             assert!(worst < 1e-9, "{worst:e}");
         }
+    }
+
+    /// Pseudo-random data of every scale from 1e-150 to 1e150, many nearly degenerate (a
+    /// tangent almost along the chord or the data almost planar), with η up to 1e6: no
+    /// panic, and every returned solution has its exact frame.
+    #[test]
+    fn fuzzed_data_give_solutions_with_frames_or_clean_errors() {
+        let mut state = 777u64;
+        let mut next = move || {
+            state = state
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        };
+        let (mut solutions, mut refused) = (0, 0);
+        for i in 0..4000 {
+            let closeness = 10f64.powi(-(i % 16));
+            let scale = 10f64.powi(i % 7 * 50 - 150);
+            let mut vector = || DVec3::new(next(), next(), next());
+            let (p0, mut t0, chord, mut t1) =
+                (vector() * scale, vector(), vector() * scale, vector());
+            match i % 4 {
+                0 => t0 = chord.normalize() + t0 * closeness,
+                1 => {
+                    let n = chord.cross(t0).normalize();
+                    t1 = t1 - n * t1.dot(n) + n * closeness;
+                }
+                2 => t1 = t0 + t1 * closeness,
+                _ => {}
+            }
+            let e = vector();
+            let eta = [e.x * 1e6, e.y * 1e-300, e.z * 7.0][i as usize % 3];
+            let Ok(data) = HermiteSegment::new(p0, t0, p0 + chord, t1) else {
+                refused += 1;
+                continue;
+            };
+            match rrmf_quintics(&data, eta) {
+                Ok(found) => {
+                    for q in found {
+                        quintic_rmf(&[q], vector()).unwrap();
+                        quintic_curve(&[q]).unwrap();
+                        solutions += 1;
+                    }
+                }
+                Err(_) => refused += 1,
+            }
+        }
+        println!("4,000 fuzzed data sets: {solutions} solutions with frames, {refused} refused");
+        assert!(solutions > 1000);
     }
 }
