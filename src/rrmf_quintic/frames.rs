@@ -94,7 +94,9 @@ pub(crate) mod tests {
     use crate::math::Complex;
     use crate::rrmf_quintic::measures::speed_range;
     use crate::rrmf_quintic::solutions::rrmf_quintics;
-    use crate::rrmf_quintic::solutions::tests::{example_1, near_degenerate_data, random_data};
+    use crate::rrmf_quintic::solutions::tests::{
+        example_1, near_degenerate_data, random_data, random_vectors,
+    };
     use std::sync::Arc;
 
     /// Max RMF defect |f₂' · f₃| / |x'| and orthonormality error at 1,000 parameters, and
@@ -233,18 +235,11 @@ pub(crate) mod tests {
     /// panic, and every returned solution has its exact frame.
     #[test]
     fn fuzzed_data_give_solutions_with_frames_or_clean_errors() {
-        let mut state = 777u64;
-        let mut next = move || {
-            state = state
-                .wrapping_mul(6_364_136_223_846_793_005)
-                .wrapping_add(1_442_695_040_888_963_407);
-            (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-        };
+        let mut vector = random_vectors(777);
         let (mut solutions, mut refused) = (0, 0);
         for i in 0..4000 {
             let closeness = 10f64.powi(-(i % 16));
             let scale = 10f64.powi(i % 7 * 50 - 150);
-            let mut vector = || DVec3::new(next(), next(), next());
             let (p0, mut t0, chord, mut t1) =
                 (vector() * scale, vector(), vector() * scale, vector());
             match i % 4 {

@@ -179,17 +179,23 @@ pub(crate) mod tests {
         .unwrap()
     }
 
-    /// Deterministic pseudo-random Hermite data (a linear congruential generator), with
-    /// chords of very different lengths.
-    pub fn random_data(count: usize) -> Vec<HermiteSegment> {
-        let mut state = 0x2545_f491_4f6c_dd1d_u64;
+    /// Deterministic pseudo-random vectors with components in [−1, 1) (a linear
+    /// congruential generator).
+    pub fn random_vectors(seed: u64) -> impl FnMut() -> DVec3 {
+        let mut state = seed;
         let mut next = move || {
             state = state
                 .wrapping_mul(6_364_136_223_846_793_005)
                 .wrapping_add(1_442_695_040_888_963_407);
             (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
         };
-        let mut vector = |scale: f64| DVec3::new(next(), next(), next()) * scale;
+        move || DVec3::new(next(), next(), next())
+    }
+
+    /// Pseudo-random Hermite data with chords of very different lengths.
+    pub fn random_data(count: usize) -> Vec<HermiteSegment> {
+        let mut random = random_vectors(0x2545_f491_4f6c_dd1d);
+        let mut vector = |scale: f64| random() * scale;
         (0..count)
             .map(|k| {
                 let scale = 10f64.powi(k as i32 % 5 - 2);
