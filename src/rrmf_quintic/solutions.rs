@@ -5,15 +5,15 @@
 //! `special` (α₁ = 0); this module does (f)–(j): f₂ (40) — the x-component of the
 //! displacement of the normalized coefficients — must be positive, γ = √(5X / f₂) (39),
 //! α_k = γ a_k, β_k = γ b_k (36), and the hodograph (2) is taken back to the original
-//! coordinates.
+//! coordinates. Every candidate is then checked against the conditions it must satisfy:
+//! the RRMF conditions (7)–(8), the displacement (14)–(15) and the end tangents (16)–(17),
+//! and a speed bounded away from zero (a regular curve). A root of the sextic that does not
+//! pass (a spurious or inaccurate one, or a numerically singular curve) is dropped.
 //!
 //! X enters only through γ, and α, β scale with √X: everything computed on the curve (the
 //! verification, the shape measures, control points and frames) is computed for a unit
 //! chord and scaled (points by X, L by X, E and E_rmf by 1/X), so that chords from 1e-300
-//! to 1e300 work alike — products like (7) would otherwise underflow or overflow. Every candidate is then checked against the conditions it must satisfy:
-//! the RRMF conditions (7)–(8), the displacement (14)–(15) and the end tangents (16)–(17),
-//! and a speed bounded away from zero (a regular curve). A root of the sextic that does not
-//! pass (a spurious or inaccurate one, or a numerically singular curve) is dropped.
+//! to 1e300 work alike — products like (7) would otherwise underflow or overflow.
 
 use super::canonical::{CanonicalHermite, Placement};
 use super::hopf::{HopfQuadratics, RmfNumerators};
@@ -74,8 +74,8 @@ impl RrmfQuintic {
         RationalBezierCurve::polynomial(&points)
     }
 
-    /// The rational RMF (9) on [s0, s1] (reparameterized to [0, 1]) in original coordinates,
-    /// with f₂(0) = e₂(0) of the ERF (5).
+    /// The rational RMF (9) on [s0, s1] (reparameterized to [0, 1]) in original coordinates;
+    /// at t = 0 its f₂ is e₂ of the ERF (5).
     pub fn rmf_on(&self, s0: f64, s1: f64) -> RmfNumerators {
         // The frame does not depend on the scale of α, β.
         let canonical = self.unit_chord.rmf_numerators_on(s0, s1);
