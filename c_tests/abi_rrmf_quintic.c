@@ -348,17 +348,29 @@ static void test_helix_spline(void) {
 
 static void test_special_case(void) {
     /* theta_f = theta_i = 0.3 and phi = 1.5: at eta = phi / 2 the solutions have alpha_1 = 0. */
-    const double theta = 0.3, phi = 1.5;
-    RmfVec3 t0 = vec3(cos(theta), sin(theta), 0), t1 = vec3(cos(theta), sin(theta) * cos(phi), sin(theta) * sin(phi));
+    const double theta = 0.3;
+    const double angle_phi = 1.5;
+    RmfVec3 p0 = vec3(0, 0, 0), p1 = vec3(2, 0, 0), t0 = vec3(cos(theta), sin(theta), 0);
+    RmfVec3 t1 = vec3(cos(theta), sin(theta) * cos(angle_phi), sin(theta) * sin(angle_phi));
     RmfRrmfQuintic s[4];
+    double theta_i = 0, theta_f = 0, phi = 0;
     size_t n = 0, i;
-    CHECK_STATUS(rmf_rrmf_quintic_solutions(vec3(0, 0, 0), t0, vec3(2, 0, 0), t1, phi / 2, s, 4, &n), RMF_OK, "");
+    CHECK_STATUS(rmf_rrmf_quintic_angles(p0, t0, p1, t1, &theta_i, &theta_f, &phi), RMF_OK, "");
+    CHECK(fabs(theta_i - theta) < 1e-15 && fabs(theta_f - theta) < 1e-15 && fabs(phi - angle_phi) < 1e-15,
+          "canonical angles");
+    CHECK_STATUS(rmf_rrmf_quintic_solutions(p0, t0, p1, t1, phi / 2, s, 4, &n), RMF_OK, "");
     CHECK(n == 2, "two solutions in the special case");
     for (i = 0; i < n; i++) {
-        SolutionErrors e = check_solution(vec3(0, 0, 0), t0, vec3(2, 0, 0), t1, &s[i], vec3(0, 0, 1));
+        SolutionErrors e = check_solution(p0, t0, p1, t1, &s[i], vec3(0, 0, 1));
         CHECK(s[i].alpha[2] == 0 && s[i].alpha[3] == 0, "alpha_1 = 0");
         assert_errors(&e, "special-case solutions are exact");
     }
+    /* Example 1: theta_i = theta_f = acos(2 / sqrt 6), phi = 4 pi / 3 (the paper's branch). */
+    CHECK_STATUS(rmf_rrmf_quintic_angles(P0, T0, P1, T1, &theta_i, &theta_f, &phi), RMF_OK, "");
+    CHECK(fabs(theta_i - acos(2 / sqrt(6.0))) < 1e-15 && fabs(phi - 4 * PI / 3) < 1e-14, "Example 1 angles");
+    CHECK_STATUS(rmf_rrmf_quintic_angles(P0, T0, P1, T1, NULL, &theta_f, &phi), RMF_ERROR_NULL_POINTER, "theta_i");
+    CHECK_STATUS(rmf_rrmf_quintic_angles(P0, vec3(1, 1, 1), P1, T1, &theta_i, &theta_f, &phi), RMF_ERROR_INVALID_INPUT,
+                 "t0 is parallel");
 }
 
 /* ---- bad input ---- */

@@ -575,6 +575,30 @@ RmfStatus rmf_rrmf_quintic_solutions(struct RmfVec3 p0,
                                      size_t *count);
 
 /**
+ * The angles of G1 Hermite data in the canonical form of Farouki, Giannelli & Sestini
+ * (eqs. (11)–(12)): coordinates with p0 at the origin, p1 − p0 along +x and t0 in the
+ * (x, y)-plane with positive y, where t0 = (cos θ_i, sin θ_i, 0) and
+ * t1 = (cos θ_f, sin θ_f cos φ, sin θ_f sin φ). When θ_f = θ_i, the interpolants at
+ * η = φ/2 are those of the special case α_1 = 0.
+ *
+ * @param[in] p0, t0, p1, t1 Hermite data (as for rmf_rrmf_quintic_solutions).
+ * @param[out] theta_i Receives θ_i in (0, π).
+ * @param[out] theta_f Receives θ_f in (0, π).
+ * @param[out] phi Receives φ in (0, 2π), the branch of the paper's examples.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If theta_i, theta_f or phi is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If the data are invalid, planar or degenerate (as for
+ *         rmf_rrmf_quintic_solutions).
+ */
+RmfStatus rmf_rrmf_quintic_angles(struct RmfVec3 p0,
+                                  struct RmfVec3 t0,
+                                  struct RmfVec3 p1,
+                                  struct RmfVec3 t1,
+                                  double *theta_i,
+                                  double *theta_f,
+                                  double *phi);
+
+/**
  * The curve and exact rational rotation-minimizing frame of one RRMF quintic interpolant:
  * the quintic as a polynomial Bézier curve of degree 5 on [0, 1] in the caller's
  * coordinates, and its RMF (9) — rational of degree 8, split where needed so that the

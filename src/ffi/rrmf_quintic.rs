@@ -15,6 +15,7 @@ use crate::frames::rational::RationalFrames;
 use crate::frames::{FrameField, FrameKind};
 use crate::hermite::HermiteSegment;
 use crate::math::Complex;
+use crate::rrmf_quintic::canonical::CanonicalHermite;
 use crate::rrmf_quintic::frames::{quintic_curve, quintic_rmf};
 use crate::rrmf_quintic::{best_quintic, rrmf_quintics, rrmf_spline, RrmfQuintic, ShapeMeasure};
 
@@ -177,6 +178,45 @@ pub unsafe extern "C" fn rmf_rrmf_quintic_solutions(
         }
         for (slot, q) in solutions.iter_mut().zip(&found) {
             *slot = q.into();
+        }
+        Ok(())
+    })
+}
+
+/// The angles of G1 Hermite data in the canonical form of Farouki, Giannelli & Sestini
+/// (eqs. (11)–(12)): coordinates with p0 at the origin, p1 − p0 along +x and t0 in the
+/// (x, y)-plane with positive y, where t0 = (cos θ_i, sin θ_i, 0) and
+/// t1 = (cos θ_f, sin θ_f cos φ, sin θ_f sin φ). When θ_f = θ_i, the interpolants at
+/// η = φ/2 are those of the special case α_1 = 0.
+///
+/// @param[in] p0, t0, p1, t1 Hermite data (as for rmf_rrmf_quintic_solutions).
+/// @param[out] theta_i Receives θ_i in (0, π).
+/// @param[out] theta_f Receives θ_f in (0, π).
+/// @param[out] phi Receives φ in (0, 2π), the branch of the paper's examples.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If theta_i, theta_f or phi is NULL.
+/// @return RMF_ERROR_INVALID_INPUT If the data are invalid, planar or degenerate (as for
+///         rmf_rrmf_quintic_solutions).
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn rmf_rrmf_quintic_angles(
+    p0: RmfVec3,
+    t0: RmfVec3,
+    p1: RmfVec3,
+    t1: RmfVec3,
+    theta_i: *mut f64,
+    theta_f: *mut f64,
+    phi: *mut f64,
+) -> RmfStatus {
+    guard("rmf_rrmf_quintic_angles", || {
+        let outs = [
+            out_ptr(theta_i, "theta_i")?,
+            out_ptr(theta_f, "theta_f")?,
+            out_ptr(phi, "phi")?,
+        ];
+        let c = CanonicalHermite::new(&hermite(p0, t0, p1, t1)?)?;
+        for (p, value) in outs.into_iter().zip([c.theta_i, c.theta_f, c.phi]) {
+            write(p, value);
         }
         Ok(())
     })
