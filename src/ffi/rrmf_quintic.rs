@@ -26,7 +26,7 @@ use crate::rrmf_quintic::{best_quintic, rrmf_quintics, rrmf_spline, RrmfQuintic,
 /// canonical coordinates: p0 at the origin, p1 − p0 along +x, t0 in the (x, y)-plane with
 /// positive y. w(t) = Σ w_k B_k(t) is the polynomial of the RRMF condition (4); the RMF
 /// (9) turns the Euler–Rodrigues frame by the angle of w². Complex numbers are stored as
-/// (Re, Im) pairs: alpha[2k] = Re α_k, alpha[2k + 1] = Im α_k.
+/// (Re, Im) pairs: `alpha[2k]` = Re α_k, `alpha[2k + 1]` = Im α_k.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct RmfRrmfQuintic {
