@@ -8,8 +8,11 @@
  *   1. a NURBS input curve, its double-reflection rotation-minimizing frames and its Frenet
  *      frames (polyline with frame vectors, and a ribbon along f2 for each frame);
  *   2. a rational NURBS surface given as input, tessellated by the library;
- *   3. a curve with an exact rational RMF by Möbius transformations of planar PH cubics,
- *      and the developable strip x + v f2 swept along it.
+ *   3. RRMF quintics (Farouki, Giannelli & Sestini): the Hermite interpolants of Example 1,
+ *      the helix spline of Example 3 with its exact rational RMF, and a developable strip
+ *      and a pipe swept along it;
+ *   4. a curve with an exact rational RMF by Möbius transformations of planar PH cubics
+ *      (Bartoň, Jüttler & Wang), and the developable strip x + v f2 swept along it.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -139,6 +142,23 @@ static void write_ribbon(const char *name, const RmfVec3 *x, const RmfVec3 *f2, 
     free(tri);
 }
 
+/* Tessellates a surface with the library and writes it as .obj and .vtp. */
+static void write_surface(const RmfSurface *surface, uint32_t u_steps, uint32_t v_steps, const char *obj,
+                          const char *vtp, const char *what) {
+    RmfVec3 *points;
+    uint32_t *triangles;
+    size_t np, nt;
+    TRY(rmf_surface_tessellate(surface, u_steps, v_steps, NULL, 0, NULL, 0, &np, &nt));
+    points = (RmfVec3 *)malloc(np * sizeof *points);
+    triangles = (uint32_t *)malloc(3 * nt * sizeof *triangles);
+    if (!points || !triangles) exit(1);
+    TRY(rmf_surface_tessellate(surface, u_steps, v_steps, points, np, triangles, nt, &np, &nt));
+    write_mesh_obj(obj, points, np, triangles, nt, what);
+    write_mesh_vtp(vtp, points, np, triangles, nt, what);
+    free(points);
+    free(triangles);
+}
+
 /* ---- 1. a NURBS curve with its rotation-minimizing and Frenet frames ---- */
 
 static void demo_curve_and_frames(void) {
@@ -193,11 +213,9 @@ static void demo_tessellated_surface(void) {
     const double s = sqrt(0.5);
     const double ring[3][3] = {{1, 0, 1}, {1, 1, s}, {0, 1, 1}};
     const double knots[6] = {0, 0, 0, 1, 1, 1};
-    RmfVec3 poles[9], *points;
+    RmfVec3 poles[9];
     double weights[9];
-    uint32_t *triangles;
     RmfSurface *surface = NULL;
-    size_t np, nt;
     int i, j;
 
     printf("2. rational NURBS surface (a quarter of a torus), tessellated by the library\n");
@@ -212,35 +230,86 @@ static void demo_tessellated_surface(void) {
         }
     /* Middle poles of the tube circle sit on the tangent lines: r = 2 + 0.5, z = 0.5. */
     TRY(rmf_nurbs_surface_create(2, 2, poles, weights, 3, 3, knots, 6, knots, 6, &surface));
-    TRY(rmf_surface_tessellate(surface, 24, 24, NULL, 0, NULL, 0, &np, &nt));
-    points = (RmfVec3 *)malloc(np * sizeof *points);
-    triangles = (uint32_t *)malloc(3 * nt * sizeof *triangles);
-    if (!points || !triangles) exit(1);
-    TRY(rmf_surface_tessellate(surface, 24, 24, points, np, triangles, nt, &np, &nt));
-    write_mesh_obj("torus_patch.obj", points, np, triangles, nt, "tessellated rational NURBS surface");
-    write_mesh_vtp("torus_patch.vtp", points, np, triangles, nt, "the same mesh as VTK PolyData");
-    free(points);
-    free(triangles);
+    write_surface(surface, 24, 24, "torus_patch.obj", "torus_patch.vtp", "tessellated rational NURBS surface");
     rmf_surface_free(surface);
 }
 
-/* ---- 3. exact rational RMF by Möbius transformations ---- */
 
-/* Writes the tessellation of a surface as OBJ. */
-static void write_surface_obj(const char *name, const RmfSurface *surface, uint32_t u_steps, uint32_t v_steps,
-                              const char *what) {
-    size_t np, nt;
-    RmfVec3 *points;
-    uint32_t *triangles;
-    TRY(rmf_surface_tessellate(surface, u_steps, v_steps, NULL, 0, NULL, 0, &np, &nt));
-    points = (RmfVec3 *)malloc(np * sizeof *points);
-    triangles = (uint32_t *)malloc(3 * nt * sizeof *triangles);
-    if (!points || !triangles) exit(1);
-    TRY(rmf_surface_tessellate(surface, u_steps, v_steps, points, np, triangles, nt, &np, &nt));
-    write_mesh_obj(name, points, np, triangles, nt, what);
-    free(points);
-    free(triangles);
+/* ---- 3. RRMF quintics: Hermite interpolants, a spline with its exact rational RMF, sweeps ---- */
+
+static void demo_rrmf_quintics(void) {
+    /* Example 1 of Farouki, Giannelli & Sestini, and the helix data of their Example 3. */
+    const RmfVec3 p0 = {0, 0, 0}, t0 = {1, 0, 1}, p1 = {1, 1, 1}, t1 = {0, 1, 1}, up = {0, 0, 1};
+    static const RmfVec3 line_poles[2] = {{0.15, -0.25, 0}, {0.15, 0.25, 0}};
+    static const double line_knots[4] = {0, 0, 1, 1};
+    static const double ring[9][3] = {{1, 0, 1}, {1, 1, 0}, {0, 1, 1}, {-1, 1, 0}, {-1, 0, 1},
+                                      {-1, -1, 0}, {0, -1, 1}, {1, -1, 0}, {1, 0, 1}};
+    static const double circle_knots[12] = {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1};
+    static RmfVec3 x[SAMPLES], t[SAMPLES], f2[SAMPLES], f3[SAMPLES];
+    const char *names[3] = {"tangent", "rmf_f2", "rmf_f3"};
+    const RmfVec3 *vectors[3];
+    RmfVec3 points[10], tangents[10], circle_poles[9];
+    double circle_weights[9], t_min, t_max, joint_gap = 0;
+    RmfRrmfQuintic solutions[4], best;
+    RmfCurve *spline = NULL, *line = NULL, *circle = NULL;
+    RmfFrames *frames = NULL;
+    RmfSurface *strip = NULL, *tube = NULL;
+    size_t n = 0, admissible = 0, i;
+    int k;
+
+    printf("3. RRMF quintics (rational rotation-minimizing frames of degree 8)\n");
+    TRY(rmf_rrmf_quintic_solutions(p0, t0, p1, t1, 4.325, solutions, 4, &n));
+    for (i = 0; i < n; i++)
+        printf("  Example 1, eta = %.3f: rho = %.4f, L = %.4f, E = %.4f, E_rmf = %.4f\n", solutions[i].eta,
+               solutions[i].rho, solutions[i].arc_length, solutions[i].energy_frenet, solutions[i].energy_rmf);
+    TRY(rmf_rrmf_quintic_best(p0, t0, p1, t1, RMF_RRMF_MEASURE_SCALED_ENERGY_RMF, 90, &best, &admissible));
+    printf("  Example 1, least L*E_rmf (%zu of 90 sampled eta admit solutions): eta = %.4f, L = %.4f\n", admissible,
+           best.eta, best.arc_length);
+
+    for (k = 0; k < 10; k++) {
+        double s = k * 3.14159265358979323846 / 2;
+        points[k].x = sin(s), points[k].y = cos(s), points[k].z = s;
+        tangents[k].x = cos(s), tangents[k].y = -sin(s), tangents[k].z = 1;
+    }
+    TRY(rmf_rrmf_spline_hermite(points, tangents, 10, up, RMF_RRMF_MEASURE_SCALED_ENERGY_RMF, 64, &spline, &frames));
+    TRY(rmf_curve_domain(spline, &t_min, &t_max));
+    for (i = 0; i < SAMPLES; i++) {
+        double s = t_min + (t_max - t_min) * (double)i / (SAMPLES - 1);
+        TRY(rmf_curve_eval(spline, s, &x[i], NULL));
+        TRY(rmf_frames_eval(frames, s, &t[i], &f2[i], &f3[i]));
+    }
+    for (k = 1; k < 9; k++) { /* the frame is continuous at the joints */
+        RmfVec3 ta, fa, ga, tb, fb, gb;
+        TRY(rmf_frames_eval(frames, nextafter((double)k, 0.0), &ta, &fa, &ga));
+        TRY(rmf_frames_eval(frames, k, &tb, &fb, &gb));
+        joint_gap = fmax(joint_gap, fabs(fa.x - fb.x) + fabs(fa.y - fb.y) + fabs(fa.z - fb.z));
+    }
+    vectors[0] = t, vectors[1] = f2, vectors[2] = f3;
+    write_polyline_vtp("rrmf_helix_spline.vtp", x, SAMPLES, names, vectors, 3,
+                       "RRMF quintic spline (Example 3) with its exact RMF");
+    write_ribbon("rrmf_ribbon.obj", x, f2, SAMPLES, 0.3, "strip along the exact rational RMF vector f2");
+    printf("  helix spline: 9 quintic segments, frame continuous at the joints (gap %.1e)\n", joint_gap);
+
+    for (i = 0; i < 9; i++) {
+        circle_poles[i].x = 0.3 * ring[i][0], circle_poles[i].y = 0.3 * ring[i][1], circle_poles[i].z = 0;
+        circle_weights[i] = ring[i][2] == 1 ? 1.0 : sqrt(0.5);
+    }
+    TRY(rmf_nurbs_curve_create(1, line_poles, NULL, 2, line_knots, 4, &line));
+    TRY(rmf_nurbs_curve_create(2, circle_poles, circle_weights, 9, circle_knots, 12, &circle));
+    TRY(rmf_sweep_surface(spline, frames, line, &strip));
+    TRY(rmf_sweep_surface(spline, frames, circle, &tube));
+    write_surface(strip, 8, 6, "rrmf_developable_strip.obj", "rrmf_developable_strip.vtp",
+                  "line swept with the RMF: a developable surface");
+    write_surface(tube, 8, 6, "rrmf_tube.obj", "rrmf_tube.vtp", "circle swept with the RMF: a pipe, exact rational");
+    rmf_surface_free(strip);
+    rmf_surface_free(tube);
+    rmf_curve_free(line);
+    rmf_curve_free(circle);
+    rmf_frames_free(frames);
+    rmf_curve_free(spline);
 }
+
+/* ---- 4. exact rational RMF by Möbius transformations ---- */
 
 static void demo_mobius(void) {
     static RmfVec3 x[SAMPLES], t[SAMPLES], f2[SAMPLES], f3[SAMPLES];
@@ -256,7 +325,7 @@ static void demo_mobius(void) {
     double t0, t1;
     size_t i;
 
-    printf("3. curve with an exact rational RMF by Möbius transformations (Bartoň, Jüttler & Wang)\n");
+    printf("4. curve with an exact rational RMF by Möbius transformations (Bartoň, Jüttler & Wang)\n");
     for (i = 0; i < 9; i++) { /* a conical helix */
         double s = 0.8 * (double)i, r = 1.5 - 0.08 * s;
         points[i].x = r * cos(s), points[i].y = r * sin(s), points[i].z = 0.35 * s;
@@ -275,7 +344,7 @@ static void demo_mobius(void) {
                        "rational curve (NURBS degree 6) with its exact rational RMF");
     TRY(rmf_nurbs_curve_create(1, line, NULL, 2, line_knots, 4, &profile));
     TRY(rmf_sweep_surface(curve, frames, profile, &strip));
-    write_surface_obj("mobius_strip.obj", strip, 2, 16, "developable strip x + v f2, exact rational surface");
+    write_surface(strip, 2, 16, "mobius_strip.obj", "mobius_strip.vtp", "developable strip x + v f2, exact rational surface");
     printf("  the curve: NURBS of degree %u with %zu poles through 9 points of a conical helix\n", view.degree,
            view.pole_count);
     rmf_surface_free(strip);
@@ -293,6 +362,7 @@ int main(int argc, char **argv) {
     printf("rmfsurf %s demo, writing to %s/\n", rmf_version(), out_dir);
     demo_curve_and_frames();
     demo_tessellated_surface();
+    demo_rrmf_quintics();
     demo_mobius();
     return 0;
 }

@@ -18,6 +18,7 @@ pub mod curve;
 pub mod frames;
 pub mod input;
 pub mod mobius;
+pub mod rrmf_quintic;
 pub mod status;
 pub mod surface;
 pub mod types;
