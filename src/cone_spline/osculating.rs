@@ -1,0 +1,287 @@
+//! Osculating cone splines (Section "Osculating cone splines", Figs. 13–15): a sequence of
+//! osculating cones Δᵢ of the surface, consecutive ones joined by one cone Δ each — the
+//! spatial counterpart of the osculating arc splines of Meek and Walton.
+//!
+//! * The osculating cone along a ruling has its vertex at the point of regression and its
+//!   axis along the Darboux vector d = τe + κn (3) — the angular velocity of the frame
+//!   (e, p, n), which is how it is computed here, so that a cone Γ (axis through the fixed
+//!   vertex, containing the osculating circle of the spherical curve) and a cylinder Γ
+//!   (point of regression at infinity: an osculating cylinder) come out of the same formula.
+//! * Joining: after translating the vertices to the origin the cones meet the unit sphere Σ
+//!   in circles c₁, c₂ with planes Uᵢ and poles Qᵢ. Poles of filling circles lie on the conic
+//!   I₁ in the plane V = U₁ + λU₂, λ = ±√((u₁² − u₁₀²)/(u₂² − u₂₀²)); projecting c₁ (a
+//!   rational quadratic in homogeneous parameters (t₀, t₁)) from Q₁ onto V and from there
+//!   from Q₂ onto U₂ pairs the touching points c₁(t), c₂(t). A filling cone exists where the
+//!   generators through v₁ and v₂ meet: det(c₁(t), c₂(t), v₁ − v₂) = 0, the homogeneous
+//!   quartic (14), solved for all real roots on the whole projective line (t = 1 : 0
+//!   included). Of the candidates only the consistent ones are kept: the junction
+//!   generators follow e₁ and precede e₂ in the sense of increasing parameters, with every
+//!   segment angle below π; the least total angle wins.
+
+use super::developable::Developable;
+use super::element::Element;
+use super::pair::joins;
+use super::piece::{ConePiece, Motion};
+use super::spline::ConeSpline;
+use crate::error::{invalid, Error, Result};
+use crate::math::real_roots_in;
+use glam::{DMat3, DVec3, DVec4};
+use std::f64::consts::{FRAC_1_SQRT_2, FRAC_PI_2, PI};
+
+/// The osculating cone (or cylinder) along one ruling.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OsculatingCone {
+    /// The ruling with its tangent plane.
+    pub element: Element,
+    /// The point of regression; `None` for an osculating cylinder.
+    pub vertex: Option<DVec3>,
+    /// A point on the axis (the vertex, or the cylinder's centre line).
+    pub origin: DVec3,
+    /// Unit axis direction (the Darboux vector's).
+    pub axis: DVec3,
+}
+
+impl OsculatingCone {
+    /// Half angle α (π/2 at an inflection generator, where the cone is the tangent plane).
+    pub fn half_angle(&self) -> f64 {
+        self.axis
+            .dot(self.element.ruling)
+            .abs()
+            .clamp(0.0, 1.0)
+            .acos()
+    }
+}
+
+/// The osculating cone of `surface` along the ruling at t, from the angular velocity ω of
+/// the frame (e, p, n) and the normal velocity of the ruling (finite differences).
+pub fn osculating_cone(surface: &dyn Developable, t: f64) -> Result<OsculatingCone> {
+    let el = surface.element(t)?;
+    let (lo, hi) = surface.domain();
+    let h = 1e-5 * (hi - lo);
+    let (a, b) = ((t - h).max(lo), (t + h).min(hi));
+    let (ea, eb) = (surface.element(a)?, surface.element(b)?);
+    let dt = b - a;
+    let de = (eb.ruling - ea.ruling) / dt;
+    let dp = (eb.side - ea.side) / dt;
+    let dn = (eb.normal() - ea.normal()) / dt;
+    let omega = 0.5 * (el.ruling.cross(de) + el.side.cross(dp) + el.normal().cross(dn));
+    // Normal velocity of the ruling line at the element point.
+    let nearest = |x: &Element| x.at(x.parameter_of(el.point));
+    let speed = (nearest(&eb) - nearest(&ea)).dot(el.side) / dt;
+    let turning = de.dot(el.side);
+    if turning.abs() <= 1e-9 * omega.length().max(1e-300) {
+        let spin = omega.dot(el.ruling);
+        if spin.abs() <= 1e-12 * speed.abs() {
+            return Err(Error::NoSolution(format!(
+                "the ruling at t = {t} is an inflection generator of a cylinder"
+            )));
+        }
+        // Rotation ω_e about the axis through o = x + ρn moves x with ω_e ρ p.
+        return Ok(OsculatingCone {
+            element: el,
+            vertex: None,
+            origin: el.point + speed / spin * el.normal(),
+            axis: el.ruling,
+        });
+    }
+    let vertex = el.at(-speed / turning);
+    Ok(OsculatingCone {
+        element: el,
+        vertex: Some(vertex),
+        origin: vertex,
+        axis: omega.normalize(),
+    })
+}
+
+/// The Bézier points (homogeneous, (x, y, z, w)) of a quarter of the circle in which the
+/// cone with unit axis k through the origin meets the unit sphere, starting at the unit
+/// ruling e: any quarter parameterizes the whole circle over the projective line.
+fn circle_quarter(k: DVec3, e: DVec3) -> [DVec4; 3] {
+    let centre = e.dot(k) * k;
+    let end = DMat3::from_axis_angle(k, FRAC_PI_2) * e;
+    let corner = centre + (e - centre) + (end - centre);
+    [
+        e.extend(1.0),
+        (corner * FRAC_1_SQRT_2).extend(FRAC_1_SQRT_2),
+        end.extend(1.0),
+    ]
+}
+
+/// Power-basis coefficients (in t = t₁/t₀, t₀ = 1) of the homogeneous quadratic
+/// (t₀ − t₁)²B₀ + 2t₁(t₀ − t₁)B₁ + t₁²B₂.
+fn power_form(b: &[DVec4; 3]) -> [DVec4; 3] {
+    [b[0], 2.0 * (b[1] - b[0]), b[0] - 2.0 * b[1] + b[2]]
+}
+
+fn evaluate(b: &[DVec4; 3], t0: f64, t1: f64) -> DVec3 {
+    let h = (t0 - t1) * (t0 - t1) * b[0] + 2.0 * t1 * (t0 - t1) * b[1] + t1 * t1 * b[2];
+    h.truncate() / h.w
+}
+
+/// The real roots (t₀ : t₁) of the homogeneous quartic Σ qₖ t₀^(4−k) t₁ᵏ on the projective
+/// line: |t| ≤ 1 from q(t), the rest from the reversed polynomial in s = t₀/t₁.
+fn projective_roots(q: &[f64; 5]) -> Vec<(f64, f64)> {
+    let mut roots: Vec<(f64, f64)> = real_roots_in(q, -1.0, 1.0)
+        .into_iter()
+        .map(|t| (1.0, t))
+        .collect();
+    let reversed: Vec<f64> = q.iter().rev().copied().collect();
+    roots.extend(
+        real_roots_in(&reversed, -1.0, 1.0)
+            .into_iter()
+            .filter(|s| s.abs() < 1.0)
+            .map(|s| (s, 1.0)),
+    );
+    roots
+}
+
+/// Pieces Δ₁ (from e₁ to the junction), Δ (the filling cone), Δ₂ (from the junction to e₂)
+/// for every real root of (14) on both conics, consistent ones only.
+fn joining_candidates(d1: &OsculatingCone, d2: &OsculatingCone) -> Result<Vec<[ConePiece; 3]>> {
+    let (Some(v1), Some(v2)) = (d1.vertex, d2.vertex) else {
+        return Err(Error::NoSolution(
+            "an osculating cylinder cannot be joined by the quartic (14); use the Hermite cone pairs".into(),
+        ));
+    };
+    let oriented = |c: &OsculatingCone| {
+        if c.axis.dot(c.element.ruling) < 0.0 {
+            -c.axis
+        } else {
+            c.axis
+        }
+    };
+    let (k1, k2) = (oriented(d1), oriented(d2));
+    let (e1, e2) = (d1.element.ruling, d2.element.ruling);
+    let (c1, c2) = (k1.dot(e1), k2.dot(e2));
+    let (s1, s2) = ((1.0 - c1 * c1).sqrt(), (1.0 - c2 * c2).sqrt());
+    if s1 <= 1e-12 || s2 <= 1e-12 {
+        return Err(Error::NoSolution(
+            "a degenerate osculating cone (half angle 0)".into(),
+        ));
+    }
+    let (u1, u2) = (k1.extend(-c1), k2.extend(-c2));
+    let (q1, q2) = (k1.extend(c1), k2.extend(c2));
+    let arc1 = circle_quarter(k1, e1);
+    let scale = v1.abs().max_element().max(v2.abs().max_element()).max(1.0);
+    let mut out = Vec::new();
+    for lambda in [s1 / s2, -s1 / s2] {
+        let v = u1 + lambda * u2;
+        let onto_v = |x: DVec4| v.dot(q1) * x - v.dot(x) * q1;
+        let onto_u2 = |x: DVec4| u2.dot(q2) * x - u2.dot(x) * q2;
+        let arc2 = arc1.map(|b| onto_u2(onto_v(b)));
+        let (p1, p2) = (power_form(&arc1), power_form(&arc2));
+        let mut quartic = [0.0; 5];
+        for i in 0..3 {
+            for j in 0..3 {
+                quartic[i + j] += p1[i].truncate().cross(p2[j].truncate()).dot(v1 - v2);
+            }
+        }
+        for (t0, t1) in projective_roots(&quartic) {
+            let (x1, x2) = (evaluate(&arc1, t0, t1), evaluate(&arc2, t0, t1));
+            if !(x1.is_finite() && x2.is_finite()) || (x1 - x2).length() < 1e-9 {
+                continue; // a common generator of Λ₁ and Λ₂: no filling cone
+            }
+            if let Some(pieces) = consistent_join(d1, d2, x1, x2, scale) {
+                out.push(pieces);
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// The three pieces for junction generators x₁ on Δ₁ and x₂ on Δ₂, if consistent.
+fn consistent_join(
+    d1: &OsculatingCone,
+    d2: &OsculatingCone,
+    x1: DVec3,
+    x2: DVec3,
+    scale: f64,
+) -> Option<[ConePiece; 3]> {
+    let (v1, v2) = (d1.vertex?, d2.vertex?);
+    // The filling vertex: where the generators v₁ + a x₁ and v₂ + b x₂ meet.
+    let w = x1.cross(x2);
+    let a = (v2 - v1).cross(x2).dot(w) / w.length_squared();
+    let v = v1 + a * x1;
+    let first = ConePiece::cone(v1, d1.element, x1).ok()?;
+    [1.0, -1.0].into_iter().find_map(|sign| {
+        let filler = ConePiece::cone(v, first.end(), sign * x2).ok()?;
+        let last = ConePiece::cone(v2, filler.end(), d2.element.ruling).ok()?;
+        joins(&last.end(), &d2.element, scale).ok()?;
+        let pieces = [first, filler, last];
+        pieces
+            .iter()
+            .all(|p| p.segment_angle() < PI)
+            .then_some(pieces)
+    })
+}
+
+/// Joins two osculating cones by the most useful consistent filling cone.
+pub fn join_osculating(d1: &OsculatingCone, d2: &OsculatingCone) -> Result<[ConePiece; 3]> {
+    joining_candidates(d1, d2)?
+        .into_iter()
+        .min_by(|a, b| {
+            let total = |p: &[ConePiece; 3]| p.iter().map(ConePiece::segment_angle).sum::<f64>();
+            total(a).total_cmp(&total(b))
+        })
+        .ok_or_else(|| {
+            Error::NoSolution(
+                "no consistent filling cone joins the two osculating cones (rulings too far apart)"
+                    .into(),
+            )
+        })
+}
+
+/// One piece for two consecutive pieces on the same cone (same axis line), else `None`.
+fn merged(a: &ConePiece, b: &ConePiece) -> Option<ConePiece> {
+    match (a.motion, b.motion) {
+        (
+            Motion::Rotation {
+                origin: o1,
+                axis: k1,
+                angle: t1,
+            },
+            Motion::Rotation {
+                origin: o2,
+                axis: k2,
+                angle: t2,
+            },
+        ) => {
+            let scale = o1.abs().max_element().max(1.0);
+            let same_line =
+                k1.cross(k2).length() <= 1e-9 && (o2 - o1).cross(k1).length() <= 1e-9 * scale;
+            let t2 = if k1.dot(k2) < 0.0 { -t2 } else { t2 };
+            (same_line && t1.signum() == t2.signum()).then_some(ConePiece {
+                start: a.start,
+                motion: Motion::Rotation {
+                    origin: o1,
+                    axis: k1,
+                    angle: t1 + t2,
+                },
+            })
+        }
+        _ => None,
+    }
+}
+
+/// The osculating cone spline through the osculating cones at the parameters `ts`
+/// (increasing, at least 2): segments of the osculating cones joined by filling cones.
+pub fn osculating_spline(surface: &dyn Developable, ts: &[f64]) -> Result<ConeSpline> {
+    if ts.len() < 2 || ts.windows(2).any(|w| !(w[0] < w[1])) {
+        return invalid!("an osculating cone spline needs at least 2 increasing parameters");
+    }
+    let cones = ts
+        .iter()
+        .map(|&t| osculating_cone(surface, t))
+        .collect::<Result<Vec<_>>>()?;
+    let mut pieces: Vec<ConePiece> = Vec::new();
+    for w in cones.windows(2) {
+        let [first, filler, last] = join_osculating(&w[0], &w[1])?;
+        match pieces.last().and_then(|previous| merged(previous, &first)) {
+            Some(one) => *pieces.last_mut().expect("checked") = one,
+            None => pieces.push(first),
+        }
+        pieces.push(filler);
+        pieces.push(last);
+    }
+    ConeSpline::new(pieces)
+}

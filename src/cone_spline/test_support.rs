@@ -1,0 +1,43 @@
+//! Test curves and surfaces shared by the unit tests of the cone spline modules.
+
+use super::developable::TangentSurface;
+use crate::bezier::{bernstein, PiecewiseCurve, RationalBezierCurve};
+use crate::curve::ParametricCurve;
+use crate::error::Result;
+use glam::DVec3;
+
+/// The twisted cubic (t, t², t³) on [t0, t1] as one polynomial Bézier segment.
+pub fn twisted_cubic(t0: f64, t1: f64) -> PiecewiseCurve {
+    let power = [DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::Z];
+    let full = bernstein::from_power(&power);
+    let seg = RationalBezierCurve::polynomial(&full)
+        .unwrap()
+        .restricted(t0, t1);
+    PiecewiseCurve::new(vec![seg], vec![t0, t1]).unwrap()
+}
+
+/// The helix (r cos t, r sin t, c t) on [t0, t1] (a curve of constant slope).
+pub struct Helix {
+    pub radius: f64,
+    pub pitch: f64,
+    pub domain: (f64, f64),
+}
+
+impl ParametricCurve for Helix {
+    fn domain(&self) -> (f64, f64) {
+        self.domain
+    }
+
+    fn point_derivative(&self, t: f64) -> Result<(DVec3, DVec3)> {
+        let (s, c) = t.sin_cos();
+        Ok((
+            DVec3::new(self.radius * c, self.radius * s, self.pitch * t),
+            DVec3::new(-self.radius * s, self.radius * c, self.pitch),
+        ))
+    }
+}
+
+/// The tangent surface of `curve` over distances [v0, v1] from the curve.
+pub fn tangent_surface(curve: &dyn ParametricCurve, v0: f64, v1: f64) -> TangentSurface<'_> {
+    TangentSurface::new(curve, v0, v1).unwrap()
+}
