@@ -134,3 +134,92 @@ impl ConeSpline {
         )
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::super::developable::Developable;
+    use super::super::pair::Rule;
+    use super::super::test_support::{cubic_hermite, tangent_surface, Helix};
+    use super::*;
+    use crate::bezier::PiecewiseCurve;
+    use crate::math::GaussLegendre;
+
+    fn length(curve: &PiecewiseCurve) -> f64 {
+        let rule = GaussLegendre::new(24);
+        curve
+            .breaks()
+            .windows(2)
+            .map(|w| rule.integrate(w[0], w[1], |v| curve.eval_jet(v).d1.length()))
+            .sum()
+    }
+
+    fn splines() -> Vec<ConeSpline> {
+        let helix = Helix {
+            radius: 1.0,
+            pitch: 0.4,
+            domain: (0.0, 7.0),
+        };
+        let helical = tangent_surface(&helix, 4.0, 5.0);
+        let elements: Vec<_> = [0.0, 0.8, 1.6, 2.4]
+            .iter()
+            .map(|&t| helical.element(t).unwrap())
+            .collect();
+        vec![
+            cubic_hermite(&[0.3, 0.5, 0.7, 0.9]),
+            ConeSpline::hermite(&elements, Rule::CylinderFirst, None)
+                .unwrap()
+                .0,
+        ]
+    }
+
+    #[test]
+    fn bending_keeps_lengths_and_angles_and_ends_flat() {
+        for spline in splines() {
+            let (t0, t1) = (-0.25, 0.25);
+            let reference = spline.surface(t0, t1).unwrap();
+            let unbent = spline.bent(0.0).unwrap().surface(t0, t1).unwrap();
+            for k in 0..=40 {
+                let v = reference.domain_v().1 * k as f64 / 40.0;
+                let gap = (unbent.eval(t1, v) - reference.eval(t1, v)).length();
+                // Bending rebuilds each piece on the end frame of the one before: s = 0 reproduces
+                // the input up to the round-off of its G1 junctions (~1e-11 rad × lever arms).
+                assert!(gap < 1e-9, "{gap:e} at {v}");
+            }
+            for s in [0.5, 1.0] {
+                let bent = spline.bent(s).unwrap();
+                let surface = bent.surface(t0, t1).unwrap();
+                for t in [t0, t1] {
+                    let (a, b) = (
+                        length(&spline.boundary(t).unwrap()),
+                        length(&bent.boundary(t).unwrap()),
+                    );
+                    assert!(
+                        (a - b).abs() < 1e-12 * a,
+                        "boundary length {a} → {b} at s = {s}"
+                    );
+                }
+                for (k, &v) in reference.v_breaks().iter().enumerate() {
+                    let (p, q) = (reference.eval_jet(t0, v), surface.eval_jet(t0, v));
+                    let angle = |j: &crate::bezier::SurfaceJet| j.du.angle_between(j.dv);
+                    assert!((angle(&p) - angle(&q)).abs() < 1e-9, "angle at ruling {k}");
+                }
+                for (p, q) in spline.pieces().iter().zip(bent.pieces()) {
+                    let expected = p.segment_angle() * p.half_angle().sin();
+                    if p.kind() == crate::cone_spline::PieceKind::Cone {
+                        assert!(
+                            (q.segment_angle() * q.half_angle().sin() - expected).abs() < 1e-12
+                        );
+                    }
+                }
+            }
+            let flat = spline.developed().unwrap();
+            let surface = flat.surface(t0, t1).unwrap();
+            for patch in surface.patches() {
+                assert!(patch
+                    .homogeneous()
+                    .iter()
+                    .all(|h| h.z.abs() < 1e-12 * h.w.abs().max(1.0)));
+            }
+        }
+    }
+}

@@ -263,7 +263,11 @@ impl ConePiece {
         match self.kind() {
             PieceKind::Cylinder => 0.0,
             PieceKind::Plane => FRAC_PI_2,
-            PieceKind::Cone => self.axis().dot(self.start.ruling).clamp(-1.0, 1.0).acos(),
+            PieceKind::Cone => {
+                // atan2 keeps full precision for slender and for flat cones alike.
+                let (k, e) = (self.axis(), self.start.ruling);
+                k.cross(e).length().atan2(k.dot(e))
+            }
         }
     }
 

@@ -1,6 +1,8 @@
 //! Test curves and surfaces shared by the unit tests of the cone spline modules.
 
-use super::developable::TangentSurface;
+use super::developable::{Developable, TangentSurface};
+use super::pair::Rule;
+use super::spline::ConeSpline;
 use crate::bezier::{bernstein, PiecewiseCurve, RationalBezierCurve};
 use crate::curve::ParametricCurve;
 use crate::error::Result;
@@ -40,4 +42,15 @@ impl ParametricCurve for Helix {
 /// The tangent surface of `curve` over distances [v0, v1] from the curve.
 pub fn tangent_surface(curve: &dyn ParametricCurve, v0: f64, v1: f64) -> TangentSurface<'_> {
     TangentSurface::new(curve, v0, v1).unwrap()
+}
+
+/// Cone pairs through the elements at `ts` of the tangent surface of the twisted cubic,
+/// region v ∈ [2, 3] (far enough from the curve for the parallel-circle strips).
+pub fn cubic_hermite(ts: &[f64]) -> ConeSpline {
+    let curve = twisted_cubic(0.2, 1.2);
+    let surface = tangent_surface(&curve, 2.0, 3.0);
+    let elements: Vec<_> = ts.iter().map(|&t| surface.element(t).unwrap()).collect();
+    ConeSpline::hermite(&elements, Rule::MinimalVertexDistance, None)
+        .unwrap()
+        .0
 }
