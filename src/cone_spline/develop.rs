@@ -139,7 +139,7 @@ impl ConeSpline {
 mod tests {
     use super::super::developable::Developable;
     use super::super::pair::Rule;
-    use super::super::test_support::{cubic_hermite, tangent_surface, Helix};
+    use super::super::test_support::{cubic_hermite, tangent_surface, twisted_cubic, Helix};
     use super::*;
     use crate::bezier::PiecewiseCurve;
     use crate::math::GaussLegendre;
@@ -164,9 +164,18 @@ mod tests {
             .iter()
             .map(|&t| helical.element(t).unwrap())
             .collect();
+        let curve = twisted_cubic(0.2, 1.2);
+        let cubic = tangent_surface(&curve, 2.0, 3.0);
+        let cylinders: Vec<_> = [0.3, 0.5, 0.7, 0.9]
+            .iter()
+            .map(|&t| cubic.element(t).unwrap())
+            .collect();
         vec![
             cubic_hermite(&[0.3, 0.5, 0.7, 0.9]),
-            ConeSpline::hermite(&elements, Rule::CylinderFirst, None)
+            ConeSpline::hermite(&elements, Rule::MinimalVertexDistance, None)
+                .unwrap()
+                .0,
+            ConeSpline::hermite(&cylinders, Rule::CylinderFirst, None)
                 .unwrap()
                 .0,
         ]

@@ -30,7 +30,7 @@ use glam::{DMat3, DVec3};
 /// |det(p₁, p₂, n₁ − n₂)| below which (13) holds: the constant-slope case.
 const CONSTANT_SLOPE_TOLERANCE: f64 = 1e-10;
 /// Relative tolerance of the G1 check at the second element.
-const JOIN_TOLERANCE: f64 = 1e-8;
+const JOIN_TOLERANCE: f64 = 1e-10;
 
 /// How a cone pair is chosen from the one-parameter family.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -62,7 +62,8 @@ pub enum PairCase {
 #[derive(Clone, Debug, PartialEq)]
 pub struct ConePair {
     pub case: PairCase,
-    /// Two pieces (one for the plane case); the first starts at the first element.
+    /// Two pieces (one for the plane case, or where one segment of the family does not
+    /// move); the first starts at the first element.
     pub pieces: Vec<ConePiece>,
     /// The inscribed sphere (centre, radius): general case, and the sphere about the common
     /// vertex in the cone case.
@@ -192,7 +193,12 @@ fn pair_from_apexes(
                 Apex::Infinite => ConePiece::cylinder(first.end(), b.point),
             }?;
             joins(&second.end(), b, scale)?;
-            Ok(vec![first, second])
+            // A segment that does not move (the family member where one cone alone joins
+            // the elements) is left out rather than kept as an empty patch.
+            Ok([first, second]
+                .into_iter()
+                .filter(|p| !is_empty(p, scale))
+                .collect())
         });
         if attempt.is_ok() {
             return attempt;
@@ -200,6 +206,13 @@ fn pair_from_apexes(
         last = attempt;
     }
     last
+}
+
+/// Whether a piece does not move its ruling at all (to round-off).
+fn is_empty(piece: &ConePiece, scale: f64) -> bool {
+    let end = piece.end();
+    (end.point - piece.start.point).length() <= 1e-13 * scale
+        && (end.ruling - piece.start.ruling).length() <= 1e-13
 }
 
 /// The total segment angle of a candidate (smaller is more useful).

@@ -13,7 +13,7 @@ use super::region::Region;
 use crate::error::{invalid, Error, Result};
 
 /// Tolerance of the G1 check between consecutive pieces (unit vectors; lengths relative).
-const CHAIN_TOLERANCE: f64 = 1e-8;
+const CHAIN_TOLERANCE: f64 = 1e-9;
 
 /// A G1 chain of cone pieces.
 #[derive(Clone, Debug, PartialEq)]
