@@ -58,7 +58,7 @@ pub trait Developable {
             Ok(n.point + (r.point - n.point).dot(n.direction) * n.direction)
         };
         let motion = (nearest(b)? - nearest(a)?).dot(q);
-        if !(motion.abs() > 0.0) {
+        if motion.is_nan() || motion == 0.0 {
             return Err(Error::NoSolution(format!(
                 "the rulings do not move at t = {t}: the surface is singular there"
             )));
@@ -178,7 +178,7 @@ impl Developable for TangentSurface<'_> {
     fn ruling(&self, t: f64) -> Result<Ruling> {
         let [x, d1, d2] = self.derivatives(t)?;
         let binormal = d1.cross(d2);
-        if !(binormal.length() > 1e-10 * d1.length() * d2.length()) {
+        if binormal.length() <= 1e-10 * d1.length() * d2.length() || binormal.is_nan() {
             return Err(Error::NoSolution(format!(
                 "the curve has zero curvature at t = {t}: its tangent surface has no tangent plane there"
             )));
@@ -215,7 +215,7 @@ impl RuledSurface {
         }
         let surface = nurbs.to_piecewise()?;
         let k = max_scaled_curvature(&surface);
-        if !(k <= DEVELOPABILITY_TOLERANCE) {
+        if k > DEVELOPABILITY_TOLERANCE || k.is_nan() {
             return invalid!(
                 "the surface is not developable: its Gaussian curvature reaches |K|·size² = {k:.3e} \
                  (size = bounding-box diagonal; at most {DEVELOPABILITY_TOLERANCE:.0e} is accepted)"
@@ -254,7 +254,7 @@ impl Developable for RuledSurface {
         let (u0, u1) = self.surface.domain_u();
         let (a, b) = (self.surface.eval(u0, t), self.surface.eval(u1, t));
         let half = 0.5 * (b - a).length();
-        if !(half > 0.0) {
+        if half.is_nan() || half == 0.0 {
             return Err(Error::NoSolution(format!(
                 "the ruling at v = {t} has zero length"
             )));
@@ -303,7 +303,7 @@ impl Developable for DualDevelopable {
         let (n, o) = (self.normals.eval_jet(t), self.offsets.eval_jet(t));
         let (u, du, u0, du0) = (n.point, n.d1, o.point.x, o.d1.x);
         let d = u.cross(du);
-        if !(d.length() > 1e-12 * u.length() * du.length()) {
+        if d.length() <= 1e-12 * u.length() * du.length() || d.is_nan() {
             return Err(Error::NoSolution(format!(
                 "U(t) and U'(t) are parallel at t = {t}: no ruling (the planes do not turn)"
             )));

@@ -266,7 +266,7 @@ fn merged(a: &ConePiece, b: &ConePiece) -> Option<ConePiece> {
 /// The osculating cone spline through the osculating cones at the parameters `ts`
 /// (increasing, at least 2): segments of the osculating cones joined by filling cones.
 pub fn osculating_spline(surface: &dyn Developable, ts: &[f64]) -> Result<ConeSpline> {
-    if ts.len() < 2 || ts.windows(2).any(|w| !(w[0] < w[1])) {
+    if ts.len() < 2 || ts.windows(2).any(|w| w[0] >= w[1] || w[0].is_nan()) {
         return invalid!("an osculating cone spline needs at least 2 increasing parameters");
     }
     let cones = ts

@@ -71,7 +71,7 @@ pub struct ConePair {
     /// The biarc along which the pair touches Σ (or meets the normal section / π).
     pub biarc: Option<Biarc>,
     /// The vertex parameters (μ₁, μ₂) of (9); `None` for a vertex at infinity.
-    pub mu: Option<(Option<f64>, Option<f64>)>,
+    pub mu: Option<VertexParameters>,
 }
 
 /// A vertex: a point, or at infinity (the segment is a cylinder).
@@ -229,6 +229,9 @@ fn has_vertex_in(pieces: &[ConePiece], region: Option<&Region>) -> bool {
     })
 }
 
+/// Vertex parameters (μ₁, μ₂); `None` is a vertex at infinity.
+pub type VertexParameters = (Option<f64>, Option<f64>);
+
 /// The vertex family of (9): v₁ = a₁ + μ₁e₁, v₂ = a₂ − μ₂e₂, μ₂ = (Aμ₁ + B)/(Cμ₁ + D) (11).
 struct VertexFamily {
     a1: DVec3,
@@ -271,7 +274,7 @@ impl VertexFamily {
     }
 
     /// The (μ₁, μ₂) the rule asks for (two for the quadratic rules).
-    fn candidates(&self, rule: Rule) -> Vec<(Option<f64>, Option<f64>)> {
+    fn candidates(&self, rule: Rule) -> Vec<VertexParameters> {
         let [a, b, c, d] = self.coefficients;
         let with_partner = |mu1: f64| (Some(mu1), self.mu2(mu1));
         match rule {
@@ -296,7 +299,7 @@ impl VertexFamily {
 
     /// Vertices just outside the region on either ruling, for when the rule's own choice
     /// puts a vertex inside it.
-    fn boundary_candidates(&self, region: &Region) -> Vec<(Option<f64>, Option<f64>)> {
+    fn boundary_candidates(&self, region: &Region) -> Vec<VertexParameters> {
         let margin = 1e-6 * (region.max - region.min).length();
         let mut out = self.candidates(Rule::CylinderFirst);
         out.extend(self.candidates(Rule::CylinderSecond));
@@ -313,7 +316,7 @@ impl VertexFamily {
         out
     }
 
-    fn apexes(&self, (mu1, mu2): (Option<f64>, Option<f64>)) -> (Apex, Apex) {
+    fn apexes(&self, (mu1, mu2): VertexParameters) -> (Apex, Apex) {
         (
             mu1.map_or(Apex::Infinite, |m| Apex::Finite(self.a1 + m * self.e1)),
             mu2.map_or(Apex::Infinite, |m| Apex::Finite(self.a2 - m * self.e2)),
@@ -326,10 +329,10 @@ fn best_pair(
     a: &Element,
     b: &Element,
     family: &VertexFamily,
-    candidates: Vec<(Option<f64>, Option<f64>)>,
+    candidates: Vec<VertexParameters>,
     region: Option<&Region>,
     scale: f64,
-) -> Option<(Vec<ConePiece>, (Option<f64>, Option<f64>))> {
+) -> Option<(Vec<ConePiece>, VertexParameters)> {
     candidates
         .into_iter()
         .filter_map(|mu| {
@@ -349,7 +352,7 @@ fn family_pair(
     rule: Rule,
     region: Option<&Region>,
     scale: f64,
-) -> Result<(Vec<ConePiece>, (Option<f64>, Option<f64>))> {
+) -> Result<(Vec<ConePiece>, VertexParameters)> {
     if let Some(found) = best_pair(a, b, family, family.candidates(rule), region, scale) {
         return Ok(found);
     }

@@ -127,7 +127,7 @@ impl ConePiece {
         let (e, n) = (start.ruling, start.normal());
         let e_end = end_ruling.normalize();
         let (ce, cn) = (e.dot(e_end), n.dot(e_end));
-        if !(1.0 - ce > 1e-14) {
+        if 1.0 - ce <= 1e-14 || ce.is_nan() {
             return invalid!("a cone piece needs two different rulings through its vertex");
         }
         let beta = (1.0 - ce).atan2(cn);
