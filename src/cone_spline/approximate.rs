@@ -151,3 +151,164 @@ fn fit_interval(
     fit_interval(surface, a, m, tolerance, rule, max_pieces, out)?;
     fit_interval(surface, m, b, tolerance, rule, max_pieces, out)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::super::developable::{DualDevelopable, RuledSurface};
+    use super::super::region::Region;
+    use super::super::test_support::{
+        dual_cone_planes, tangent_surface, twisted_cubic, zero_torsion_curve, Helix,
+    };
+    use super::*;
+    use crate::bezier::{NurbsSurface, RationalBezierPatch};
+    use glam::{DVec3, DVec4};
+
+    /// Pieces against tolerance; returns the observed order log(n₂/n₁)/log(tol₁/tol₂)
+    /// inverted (error ~ h^order) over the whole range.
+    fn study(name: &str, surface: &dyn Developable, tolerances: &[f64]) -> f64 {
+        let mut counts = Vec::new();
+        for &tol in tolerances {
+            let fit = approximate(surface, tol, Rule::MinimalVertexDistance, 100_000).unwrap();
+            let (lo, hi) = surface.domain();
+            let dense = deviation(
+                surface,
+                fit.spline.pieces(),
+                lo,
+                hi,
+                40 * fit.parameters.len(),
+            )
+            .unwrap();
+            println!(
+                "{name}: tolerance {tol:.0e}: {} pieces, max deviation {:.3e} (dense {:.3e})",
+                fit.spline.pieces().len(),
+                fit.max_error,
+                dense
+            );
+            assert!(
+                fit.max_error <= tol && dense <= tol,
+                "{name}: deviation {dense:e} > {tol:e}"
+            );
+            counts.push(fit.spline.pieces().len() as f64);
+        }
+        let n = tolerances.len() - 1;
+        let order = (tolerances[0] / tolerances[n]).ln() / (counts[n] / counts[0]).ln();
+        println!("{name}: observed approximation order {order:.2}");
+        order
+    }
+
+    #[test]
+    fn tangent_surfaces_of_a_twisted_cubic_and_a_helix() {
+        let curve = twisted_cubic(-0.5, 1.0);
+        let order = study(
+            "twisted cubic",
+            &tangent_surface(&curve, 0.5, 1.0),
+            &[1e-2, 1e-3, 1e-4, 1e-5],
+        );
+        assert!((2.5..4.5).contains(&order), "order {order}");
+        let helix = Helix {
+            radius: 1.0,
+            pitch: 0.5,
+            domain: (0.0, std::f64::consts::TAU),
+        };
+        let order = study(
+            "helix",
+            &tangent_surface(&helix, 0.5, 1.0),
+            &[1e-2, 1e-3, 1e-4, 1e-5],
+        );
+        assert!((2.5..4.5).contains(&order), "order {order}");
+    }
+
+    #[test]
+    fn inflection_generators_become_junctions() {
+        let curve = zero_torsion_curve();
+        let surface = tangent_surface(&curve, 0.3, 0.8);
+        let fit = approximate(&surface, 1e-3, Rule::MinimalVertexDistance, 10_000).unwrap();
+        assert_eq!(fit.inflections.len(), 1);
+        assert!(fit.inflections[0].abs() < 1e-9, "{:?}", fit.inflections);
+        assert!(fit.parameters.contains(&fit.inflections[0]));
+        assert!(fit.max_error <= 1e-3);
+    }
+
+    #[test]
+    fn ruled_nurbs_and_dual_inputs() {
+        // The tangent surface of (t, t², t³) between the rails x(t) + x'(t)/2 and x(t) + x'(t),
+        // a polynomial NURBS of degree (1, 3) on t ∈ [0.2, 1.2].
+        let curve = twisted_cubic(0.2, 1.2);
+        let (mut poles, derivative) = (
+            Vec::new(),
+            crate::bezier::bernstein::derivative(curve.segments()[0].homogeneous()),
+        );
+        let d: Vec<DVec4> = crate::bezier::bernstein::elevate(&derivative, 1);
+        for scale in [0.5, 1.0] {
+            for (x, dx) in curve.segments()[0].homogeneous().iter().zip(&d) {
+                poles.push((x.truncate() + scale * dx.truncate()).extend(1.0));
+            }
+        }
+        let patch = RationalBezierPatch::from_homogeneous(1, 3, poles).unwrap();
+        let pw = crate::bezier::PiecewiseSurface::new(vec![patch], vec![0.0, 1.0], vec![0.2, 1.2])
+            .unwrap();
+        let nurbs = NurbsSurface::from_piecewise(&pw).unwrap();
+        let ruled = RuledSurface::new(&nurbs).unwrap();
+        let fit = approximate(&ruled, 1e-4, Rule::MinimalVertexDistance, 10_000).unwrap();
+        println!(
+            "ruled (1, 3) NURBS: 1e-4 with {} pieces",
+            fit.spline.pieces().len()
+        );
+        assert!(fit.max_error <= 1e-4);
+
+        // Not developable: z = xy, K ≠ 0 is measured and reported.
+        let saddle = NurbsSurface::new(
+            1,
+            1,
+            2,
+            2,
+            vec![
+                DVec3::new(-1.0, -1.0, 1.0),
+                DVec3::new(-1.0, 1.0, -1.0),
+                DVec3::new(1.0, -1.0, -1.0),
+                DVec3::ONE,
+            ],
+            None,
+            vec![0.0, 0.0, 1.0, 1.0],
+            vec![0.0, 0.0, 1.0, 1.0],
+        )
+        .unwrap();
+        let err = RuledSurface::new(&saddle).err().unwrap();
+        assert!(
+            err.message().contains("not developable") && err.message().contains("|K|"),
+            "{err}"
+        );
+
+        // The dual form (4): a quadratic B-spline of planes through the origin (a cone).
+        let region = Region::new(DVec3::new(-3.0, -3.0, 1.0), DVec3::new(3.0, 3.0, 2.0)).unwrap();
+        let dual = DualDevelopable::new(
+            2,
+            &dual_cone_planes(),
+            &[0.0, 0.0, 0.0, 1.0, 1.0, 1.0],
+            region,
+        )
+        .unwrap();
+        let fit = approximate(&dual, 1e-4, Rule::MinimalVertexDistance, 10_000).unwrap();
+        println!(
+            "dual quadratic cone: 1e-4 with {} pieces",
+            fit.spline.pieces().len()
+        );
+        assert!(fit.max_error <= 1e-4);
+        assert!(fit
+            .spline
+            .pieces()
+            .iter()
+            .all(|p| p.vertex().is_some_and(|v| v.length() < 1e-9)));
+    }
+
+    #[test]
+    fn rejects_bad_tolerances() {
+        let curve = twisted_cubic(0.2, 1.2);
+        let surface = tangent_surface(&curve, 0.5, 1.0);
+        for tol in [0.0, -1.0, f64::NAN] {
+            assert!(approximate(&surface, tol, Rule::MinimalVertexDistance, 100).is_err());
+        }
+        let err = approximate(&surface, 1e-9, Rule::MinimalVertexDistance, 8).unwrap_err();
+        assert!(matches!(err, Error::NotConverged(_)), "{err}");
+    }
+}

@@ -161,15 +161,17 @@ pub(crate) fn joins(end: &Element, b: &Element, scale: f64) -> Result<()> {
 }
 
 /// Both segments from their vertices: the junction ruling joins v₁ and v₂ (or is parallel
-/// to the ruling of a segment whose vertex is at infinity). Both orientations of the
-/// junction ruling are tried; the G1 check at `b` keeps the consistent one.
+/// to the ruling of a segment whose vertex is at infinity), with the orientation `sign`.
+/// By construction the second segment ends on the ruling of `b` with its direction; only
+/// its tangent plane there remains to be checked.
 fn pair_from_apexes(
     a: &Element,
     b: &Element,
     v1: Apex,
     v2: Apex,
+    sign: f64,
     scale: f64,
-) -> Result<Vec<ConePiece>> {
+) -> Result<[ConePiece; 2]> {
     let (through, direction) = match (v1, v2) {
         (Apex::Finite(p), Apex::Finite(q)) => (p, q - p),
         (Apex::Infinite, Apex::Finite(q)) => (q, a.ruling),
@@ -181,31 +183,67 @@ fn pair_from_apexes(
     if direction.length() <= 1e-12 * scale {
         return Err(Error::NoSolution("the two vertices coincide".into()));
     }
-    let mut last = Err(Error::NoSolution("no consistent junction ruling".into()));
-    for sign in [1.0, -1.0] {
-        let first = match v1 {
-            Apex::Finite(p) => ConePiece::cone(p, *a, sign * direction),
-            Apex::Infinite => ConePiece::cylinder(*a, through),
-        };
-        let attempt = first.and_then(|first| {
-            let second = match v2 {
-                Apex::Finite(q) => ConePiece::cone(q, first.end(), b.ruling),
-                Apex::Infinite => ConePiece::cylinder(first.end(), b.point),
-            }?;
-            joins(&second.end(), b, scale)?;
-            // A segment that does not move (the family member where one cone alone joins
-            // the elements) is left out rather than kept as an empty patch.
-            Ok([first, second]
-                .into_iter()
-                .filter(|p| !is_empty(p, scale))
-                .collect())
-        });
-        if attempt.is_ok() {
-            return attempt;
+    let first = match v1 {
+        Apex::Finite(p) => ConePiece::cone(p, *a, sign * direction),
+        Apex::Infinite => ConePiece::cylinder(*a, through),
+    }?;
+    let second = match v2 {
+        Apex::Finite(q) => ConePiece::cone(q, first.end(), b.ruling),
+        Apex::Infinite => ConePiece::cylinder(first.end(), b.point),
+    }?;
+    Ok([first, second])
+}
+
+/// The signed angle about e₂ between the pair's end tangent plane and that of `b`.
+fn plane_residual(pieces: &[ConePiece; 2], b: &Element) -> f64 {
+    pieces[1].end().normal().cross(b.normal()).dot(b.ruling)
+}
+
+/// The pair of a family member, G1 at `b` to round-off: the vertex family (9) is
+/// ill-conditioned where the inscribed sphere is huge (nearly constant slope), so the
+/// finite vertex parameter μ₂ (or μ₁) is polished by secant steps on the tangent-plane
+/// residual at `b` before the G1 check.
+fn family_member(
+    a: &Element,
+    b: &Element,
+    family: &VertexFamily,
+    mu: VertexParameters,
+    sign: f64,
+    scale: f64,
+) -> Result<Vec<ConePiece>> {
+    let build = |mu: VertexParameters| {
+        let (v1, v2) = family.apexes(mu);
+        pair_from_apexes(a, b, v1, v2, sign, scale)
+    };
+    let with = |x: f64| {
+        if mu.1.is_some() {
+            (mu.0, Some(x))
+        } else {
+            (Some(x), None)
         }
-        last = attempt;
+    };
+    let mut pieces = build(mu)?;
+    if let Some(x0) = mu.1.or(mu.0) {
+        let (mut x, mut f) = (x0, plane_residual(&pieces, b));
+        let (mut x_old, mut f_old) = (x0 + 1e-7 * x0.abs().max(scale), f64::NAN);
+        f_old = build(with(x_old)).map_or(f_old, |p| plane_residual(&p, b));
+        for _ in 0..8 {
+            if f.abs() <= 1e-15 || !(f - f_old).is_normal() {
+                break;
+            }
+            let next = x - f * (x - x_old) / (f - f_old);
+            let Ok(candidate) = build(with(next)) else {
+                break;
+            };
+            (x_old, f_old) = (x, f);
+            (x, f) = (next, plane_residual(&candidate, b));
+            pieces = candidate;
+        }
     }
-    last
+    joins(&pieces[1].end(), b, scale)?;
+    // A segment that does not move (the family member where one cone alone joins the
+    // elements) is left out rather than kept as an empty patch.
+    Ok(pieces.into_iter().filter(|p| !is_empty(p, scale)).collect())
 }
 
 /// Whether a piece does not move its ruling at all (to round-off).
@@ -335,9 +373,9 @@ fn best_pair(
 ) -> Option<(Vec<ConePiece>, VertexParameters)> {
     candidates
         .into_iter()
-        .filter_map(|mu| {
-            let (v1, v2) = family.apexes(mu);
-            let pieces = pair_from_apexes(a, b, v1, v2, scale).ok()?;
+        .flat_map(|mu| [1.0, -1.0].map(|sign| (mu, sign)))
+        .filter_map(|(mu, sign)| {
+            let pieces = family_member(a, b, family, mu, sign, scale).ok()?;
             (!has_vertex_in(&pieces, region)).then_some((pieces, mu))
         })
         .min_by(|x, y| total_angle(&x.0).total_cmp(&total_angle(&y.0)))

@@ -54,3 +54,24 @@ pub fn cubic_hermite(ts: &[f64]) -> ConeSpline {
         .unwrap()
         .0
 }
+
+/// Control planes (u₁, u₂, u₃, u₀) of a quadratic dual Bézier curve of planes through the
+/// origin: a (quadratic) cone with vertex at the origin around the z axis.
+pub fn dual_cone_planes() -> Vec<glam::DVec4> {
+    vec![
+        glam::DVec4::new(1.0, 0.0, -0.5, 0.0),
+        glam::DVec4::new(1.0, 1.0, -0.5, 0.0),
+        glam::DVec4::new(0.0, 1.0, -0.5, 0.0),
+    ]
+}
+
+/// The curve (t, t², t⁴) on [−1, 1], whose torsion vanishes at t = 0 (an inflection
+/// generator of its tangent surface).
+pub fn zero_torsion_curve() -> PiecewiseCurve {
+    let power = [DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::ZERO, DVec3::Z];
+    let full = bernstein::from_power(&power);
+    let seg = RationalBezierCurve::polynomial(&full)
+        .unwrap()
+        .restricted(-1.0, 1.0);
+    PiecewiseCurve::new(vec![seg], vec![-1.0, 1.0]).unwrap()
+}
