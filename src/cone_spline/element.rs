@@ -70,6 +70,13 @@ impl Element {
         Self { point, ..*self }
     }
 
+    /// The signed angle about `target`'s ruling that turns this normal into `target`'s
+    /// (zero only for equal, not for opposite, tangent planes).
+    pub fn tangent_plane_angle(&self, target: &Element) -> f64 {
+        let (n, m) = (self.normal(), target.normal());
+        n.cross(m).dot(target.ruling).atan2(n.dot(m))
+    }
+
     /// Signed parameter of the point of this ruling line nearest to `x`.
     pub fn parameter_of(&self, x: DVec3) -> f64 {
         (x - self.point).dot(self.ruling)

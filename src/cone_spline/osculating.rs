@@ -16,7 +16,7 @@
 //!   quartic (14), solved for all real roots on the whole projective line (t = 1 : 0
 //!   included). Of the candidates only the consistent ones are kept: the junction
 //!   generators follow e₁ and precede e₂ in the sense of increasing parameters, with every
-//!   segment angle below π; the least total angle wins.
+//!   segment angle below π/2; the least total angle wins.
 
 use super::developable::Developable;
 use super::element::Element;
@@ -24,9 +24,9 @@ use super::pair::joins;
 use super::piece::{ConePiece, Motion};
 use super::spline::ConeSpline;
 use crate::error::{invalid, Error, Result};
-use crate::math::real_roots_in;
+use crate::math::{real_roots_in, secant_refine};
 use glam::{DMat3, DVec3, DVec4};
-use std::f64::consts::{FRAC_1_SQRT_2, FRAC_PI_2, PI};
+use std::f64::consts::{FRAC_1_SQRT_2, FRAC_PI_2};
 
 /// The osculating cone (or cylinder) along one ruling.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -85,11 +85,13 @@ pub fn osculating_cone(surface: &dyn Developable, t: f64) -> Result<OsculatingCo
         });
     }
     let vertex = el.at(-speed / turning);
+    // ω has no p-component for a developable (the Darboux vector τe + κn); dropping the
+    // differencing noise keeps the cone exactly tangent to the element's plane.
     Ok(OsculatingCone {
         element: el,
         vertex: Some(vertex),
         origin: vertex,
-        axis: omega.normalize(),
+        axis: (omega - omega.dot(el.side) * el.side).normalize(),
     })
 }
 
@@ -177,42 +179,84 @@ fn joining_candidates(d1: &OsculatingCone, d2: &OsculatingCone) -> Result<Vec<[C
             }
         }
         for (t0, t1) in projective_roots(&quartic) {
-            let (x1, x2) = (evaluate(&arc1, t0, t1), evaluate(&arc2, t0, t1));
-            if !(x1.is_finite() && x2.is_finite()) || (x1 - x2).length() < 1e-9 {
-                continue; // a common generator of Λ₁ and Λ₂: no filling cone
-            }
-            if let Some(pieces) = consistent_join(d1, d2, x1, x2, scale) {
-                out.push(pieces);
+            // Pairs of touching points as a function of one affine parameter near the root.
+            let point = |x: f64| {
+                if t0.abs() >= t1.abs() {
+                    (1.0, x)
+                } else {
+                    (x, 1.0)
+                }
+            };
+            let x = if t0.abs() >= t1.abs() {
+                t1 / t0
+            } else {
+                t0 / t1
+            };
+            // x₂ snapped onto c₂: the two projections lose digits for nearly equal cones.
+            let onto_c2 = |y: DVec3| c2 * k2 + s2 * (y - y.dot(k2) * k2).normalize();
+            let generators = |x: f64| {
+                let (t0, t1) = point(x);
+                (evaluate(&arc1, t0, t1), onto_c2(evaluate(&arc2, t0, t1)))
+            };
+            for sign in [1.0, -1.0] {
+                if let Some(pieces) = consistent_join(d1, d2, &generators, x, sign, scale) {
+                    out.push(pieces);
+                }
             }
         }
     }
     Ok(out)
 }
 
-/// The three pieces for junction generators x₁ on Δ₁ and x₂ on Δ₂, if consistent.
+/// The three pieces for the junction generators x₁ on Δ₁ and x₂ on Δ₂ (the filling cone's
+/// last generator oriented by `sign`), without the G1 check at e₂.
+fn three_pieces(
+    d1: &OsculatingCone,
+    d2: &OsculatingCone,
+    (x1, x2): (DVec3, DVec3),
+    sign: f64,
+) -> Option<[ConePiece; 3]> {
+    let (v1, v2) = (d1.vertex?, d2.vertex?);
+    if !(x1.is_finite() && x2.is_finite()) || (x1 - x2).length() < 1e-9 {
+        return None; // a common generator of Λ₁ and Λ₂: no filling cone
+    }
+    // The filling vertex: where the generators v₁ + a x₁ and v₂ + b x₂ meet (closest point
+    // on the first). Its last ruling is drawn through v₂ itself, so that the three pieces
+    // chain exactly; what remains of a root's error shows in the tangent plane at e₂.
+    let w = x1.cross(x2);
+    let v = v1 + (v2 - v1).cross(x2).dot(w) / w.length_squared() * x1;
+    let first = ConePiece::cone(v1, d1.element, x1).ok()?;
+    let through_v2 = (v2 - v) * (v2 - v).dot(x2).signum();
+    let filler = ConePiece::cone(v, first.end(), sign * through_v2).ok()?;
+    let last = ConePiece::cone(v2, filler.end(), d2.element.ruling).ok()?;
+    Some([first, filler, last])
+}
+
+/// The pieces of a root of (14), kept if G1 at e₂ and consistent: every segment angle
+/// below π/2, so that the junction generators follow e₁ and precede e₂ without winding
+/// round a cone (the other roots give fillers of angle ≈ π on the far nappe). For neighbouring, nearly equal osculating cones the plane V = U₁ + λU₂ and the
+/// quartic lose digits to cancellation; since the three pieces chain exactly for every
+/// parameter (the filling cone's last ruling is drawn through v₂), the root is polished by
+/// secant steps on the one remaining condition, the tangent plane at e₂.
 fn consistent_join(
     d1: &OsculatingCone,
     d2: &OsculatingCone,
-    x1: DVec3,
-    x2: DVec3,
+    generators: &dyn Fn(f64) -> (DVec3, DVec3),
+    x0: f64,
+    sign: f64,
     scale: f64,
 ) -> Option<[ConePiece; 3]> {
-    let (v1, v2) = (d1.vertex?, d2.vertex?);
-    // The filling vertex: where the generators v₁ + a x₁ and v₂ + b x₂ meet.
-    let w = x1.cross(x2);
-    let a = (v2 - v1).cross(x2).dot(w) / w.length_squared();
-    let v = v1 + a * x1;
-    let first = ConePiece::cone(v1, d1.element, x1).ok()?;
-    [1.0, -1.0].into_iter().find_map(|sign| {
-        let filler = ConePiece::cone(v, first.end(), sign * x2).ok()?;
-        let last = ConePiece::cone(v2, filler.end(), d2.element.ruling).ok()?;
-        joins(&last.end(), &d2.element, scale).ok()?;
-        let pieces = [first, filler, last];
-        pieces
-            .iter()
-            .all(|p| p.segment_angle() < PI)
-            .then_some(pieces)
-    })
+    let target = &d2.element;
+    let residual = |x: f64| {
+        three_pieces(d1, d2, generators(x), sign).map(|p| p[2].end().tangent_plane_angle(target))
+    };
+    let x = secant_refine(residual, x0, 1e-9 * x0.abs().max(1.0), 12);
+    let pieces = three_pieces(d1, d2, generators(x), sign)?;
+    joins(&pieces[2].end(), target, scale).ok()?;
+    pieces
+        .iter()
+        .all(|p| p.segment_angle() < FRAC_PI_2)
+        .then_some(pieces)
 }
 
 /// Joins two osculating cones by the most useful consistent filling cone.
@@ -284,4 +328,89 @@ pub fn osculating_spline(surface: &dyn Developable, ts: &[f64]) -> Result<ConeSp
         pieces.push(last);
     }
     ConeSpline::new(pieces)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::approximate::deviation;
+    use super::super::test_support::{tangent_surface, twisted_cubic, Helix};
+    use super::*;
+    use crate::cone_spline::pair::Rule;
+    use crate::curve::{uniform_parameters, ParametricCurve};
+
+    #[test]
+    fn osculating_cones_follow_the_darboux_vector() {
+        let helix = Helix {
+            radius: 1.0,
+            pitch: 0.5,
+            domain: (0.0, 6.0),
+        };
+        let surface = tangent_surface(&helix, 0.5, 1.0);
+        let cone = osculating_cone(&surface, 2.0).unwrap();
+        let (x, _) = helix.point_derivative(2.0).unwrap();
+        assert!((cone.vertex.unwrap() - x).length() < 1e-7);
+        assert!(cone.axis.cross(DVec3::Z).length() < 1e-8, "{}", cone.axis);
+        // cos α = τ/|d| with κ = r/(r² + c²), τ = c/(r² + c²): tan α = r / c.
+        assert!((cone.half_angle() - (1.0f64 / 0.5).atan()).abs() < 1e-8);
+
+        let curve = twisted_cubic(0.2, 1.2);
+        let surface = tangent_surface(&curve, 0.5, 1.0);
+        let t = 0.7f64;
+        let cone = osculating_cone(&surface, t).unwrap();
+        let (d1, d2, d3) = (
+            DVec3::new(1.0, 2.0 * t, 3.0 * t * t),
+            DVec3::new(0.0, 2.0, 6.0 * t),
+            DVec3::new(0.0, 0.0, 6.0),
+        );
+        let b = d1.cross(d2);
+        let (kappa, tau) = (
+            b.length() / d1.length().powi(3),
+            b.dot(d3) / b.length_squared(),
+        );
+        let darboux = tau * d1.normalize() + kappa * b.normalize();
+        assert!(cone.axis.cross(darboux.normalize()).length() < 1e-7, "(3)");
+        assert!((cone.vertex.unwrap() - DVec3::new(t, t * t, t * t * t)).length() < 1e-7);
+    }
+
+    #[test]
+    fn osculating_cone_splines_against_hermite_pairs() {
+        let curve = twisted_cubic(0.2, 1.2);
+        let surface = tangent_surface(&curve, 0.5, 1.0);
+        let mut previous = f64::INFINITY;
+        for cones in [8, 11, 16, 21] {
+            let ts = uniform_parameters((0.2, 1.2), cones);
+            let spline = osculating_spline(&surface, &ts).unwrap();
+            // 2n − 1 pieces when the osculating segments on either side of eᵢ merge into one.
+            let pieces = spline.pieces().len();
+            assert!(
+                (2 * cones - 1..=3 * cones - 2).contains(&pieces),
+                "{pieces} pieces"
+            );
+            let error = deviation(&surface, spline.pieces(), 0.2, 1.2, 400).unwrap();
+            let hermite = |elements: usize| {
+                let ts = uniform_parameters((0.2, 1.2), elements);
+                let els: Vec<_> = ts.iter().map(|&t| surface.element(t).unwrap()).collect();
+                let (spline, _) =
+                    ConeSpline::hermite(&els, Rule::MinimalVertexDistance, None).unwrap();
+                (
+                    spline.pieces().len(),
+                    deviation(&surface, spline.pieces(), 0.2, 1.2, 400).unwrap(),
+                )
+            };
+            let (below, above) = (hermite(pieces / 2), hermite(pieces / 2 + 1));
+            println!(
+                "osculating: {cones} cones, {pieces} pieces, max deviation {error:.3e}; \
+                 Hermite cone pairs: {} pieces {:.3e}, {} pieces {:.3e}",
+                below.0, below.1, above.0, above.1
+            );
+            assert!(error < previous, "the error decreases with more cones");
+            previous = error;
+        }
+        // Too far apart, no consistent filling cone exists (the paper's interval of e₂).
+        let far = uniform_parameters((0.2, 1.2), 3);
+        assert!(matches!(
+            osculating_spline(&surface, &far),
+            Err(Error::NoSolution(_))
+        ));
+    }
 }

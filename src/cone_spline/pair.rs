@@ -24,7 +24,7 @@ use super::element::{check_consecutive, Element};
 use super::piece::ConePiece;
 use super::region::Region;
 use crate::error::{invalid, Error, Result};
-use crate::math::quadratic_roots;
+use crate::math::{quadratic_roots, secant_refine};
 use glam::{DMat3, DVec3};
 
 /// |det(p₁, p₂, n₁ − n₂)| below which (13) holds: the constant-slope case.
@@ -196,7 +196,7 @@ fn pair_from_apexes(
 
 /// The signed angle about e₂ between the pair's end tangent plane and that of `b`.
 fn plane_residual(pieces: &[ConePiece; 2], b: &Element) -> f64 {
-    pieces[1].end().normal().cross(b.normal()).dot(b.ruling)
+    pieces[1].end().tangent_plane_angle(b)
 }
 
 /// The pair of a family member, G1 at `b` to round-off: the vertex family (9) is
@@ -222,24 +222,18 @@ fn family_member(
             (Some(x), None)
         }
     };
-    let mut pieces = build(mu)?;
-    if let Some(x0) = mu.1.or(mu.0) {
-        let (mut x, mut f) = (x0, plane_residual(&pieces, b));
-        let (mut x_old, mut f_old) = (x0 + 1e-7 * x0.abs().max(scale), f64::NAN);
-        f_old = build(with(x_old)).map_or(f_old, |p| plane_residual(&p, b));
-        for _ in 0..8 {
-            if f.abs() <= 1e-15 || !(f - f_old).is_normal() {
-                break;
-            }
-            let next = x - f * (x - x_old) / (f - f_old);
-            let Ok(candidate) = build(with(next)) else {
-                break;
-            };
-            (x_old, f_old) = (x, f);
-            (x, f) = (next, plane_residual(&candidate, b));
-            pieces = candidate;
+    let pieces = match mu.1.or(mu.0) {
+        Some(x0) => {
+            let residual = |x: f64| build(with(x)).ok().map(|p| plane_residual(&p, b));
+            build(with(secant_refine(
+                residual,
+                x0,
+                1e-7 * x0.abs().max(scale),
+                8,
+            )))?
         }
-    }
+        None => build(mu)?,
+    };
     joins(&pieces[1].end(), b, scale)?;
     // A segment that does not move (the family member where one cone alone joins the
     // elements) is left out rather than kept as an empty patch.

@@ -1,5 +1,6 @@
 //! Shared numerical building blocks: binomial coefficients, validated vectors, robust
-//! polynomial root finding, Gauss–Legendre quadrature and 1-D minimization.
+//! polynomial root finding, secant polishing of roots, Gauss–Legendre quadrature and 1-D
+//! minimization.
 //!
 //! Every geometric module takes these from here rather than writing its own.
 
@@ -7,12 +8,14 @@ mod binomial;
 mod minimize;
 mod quadrature;
 mod roots;
+mod secant;
 mod vector;
 
 pub use binomial::binomial;
 pub use minimize::{minimize_bracketed, Minimum};
 pub use quadrature::GaussLegendre;
 pub use roots::{quadratic_roots, real_roots_in, real_roots_power};
+pub use secant::secant_refine;
 pub use vector::{
     check_finite, check_point, check_unit_direction, normal_plane_unit, orthonormal_to,
 };
