@@ -248,7 +248,7 @@ mod tests {
         let pw = crate::bezier::PiecewiseSurface::new(vec![patch], vec![0.0, 1.0], vec![0.2, 1.2])
             .unwrap();
         let nurbs = NurbsSurface::from_piecewise(&pw).unwrap();
-        let ruled = RuledSurface::new(&nurbs).unwrap();
+        let ruled = RuledSurface::new(nurbs.to_piecewise().unwrap()).unwrap();
         let fit = approximate(&ruled, 1e-4, Rule::MinimalVertexDistance, 10_000).unwrap();
         println!(
             "ruled (1, 3) NURBS: 1e-4 with {} pieces",
@@ -273,7 +273,25 @@ mod tests {
             vec![0.0, 0.0, 1.0, 1.0],
         )
         .unwrap();
-        let err = RuledSurface::new(&saddle).err().unwrap();
+        let cubic = NurbsSurface::new(
+            2,
+            1,
+            3,
+            2,
+            vec![DVec3::ZERO; 6],
+            None,
+            vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0],
+            vec![0.0, 0.0, 1.0, 1.0],
+        )
+        .unwrap();
+        assert!(RuledSurface::new(cubic.to_piecewise().unwrap())
+            .err()
+            .unwrap()
+            .message()
+            .contains("degree_u = 1"));
+        let err = RuledSurface::new(saddle.to_piecewise().unwrap())
+            .err()
+            .unwrap();
         assert!(
             err.message().contains("not developable") && err.message().contains("|K|"),
             "{err}"

@@ -17,7 +17,7 @@
 
 use super::element::Element;
 use super::region::Region;
-use crate::bezier::{NurbsCurve, NurbsSurface, PiecewiseCurve, PiecewiseSurface};
+use crate::bezier::{NurbsCurve, PiecewiseCurve, PiecewiseSurface};
 use crate::curve::{uniform_parameters, ParametricCurve};
 use crate::error::{invalid, Error, Result};
 use crate::frames::metrics::gaussian_curvature;
@@ -204,16 +204,16 @@ pub struct RuledSurface {
 pub const DEVELOPABILITY_TOLERANCE: f64 = 1e-6;
 
 impl RuledSurface {
-    pub fn new(nurbs: &NurbsSurface) -> Result<Self> {
-        if nurbs.degree_u != 1 || nurbs.pole_count_u != 2 {
+    /// A degree (1, n) surface with one interval in u (a NURBS with degree_u = 1 and
+    /// pole_count_u = 2), whose measured |K|·size² does not exceed
+    /// [`DEVELOPABILITY_TOLERANCE`].
+    pub fn new(surface: PiecewiseSurface) -> Result<Self> {
+        let linear = surface.patches().iter().all(|p| p.degree_u() == 1);
+        if !linear || surface.u_breaks().len() != 2 {
             return invalid!(
-                "a developable ruled surface needs degree_u = 1 and pole_count_u = 2 (rulings along u), \
-                 got degree_u = {} and pole_count_u = {}",
-                nurbs.degree_u,
-                nurbs.pole_count_u
+                "a developable ruled surface needs degree_u = 1 and pole_count_u = 2 (rulings along u)"
             );
         }
-        let surface = nurbs.to_piecewise()?;
         let k = max_scaled_curvature(&surface);
         if k > DEVELOPABILITY_TOLERANCE || k.is_nan() {
             return invalid!(
