@@ -7,7 +7,9 @@
  * Sections:
  *   1. a NURBS input curve, its double-reflection rotation-minimizing frames and its Frenet
  *      frames (polyline with frame vectors, and a ribbon along f2 for each frame);
- *   2. a rational NURBS surface given as input, tessellated by the library.
+ *   2. a rational NURBS surface given as input, tessellated by the library;
+ *   3. a cone spline approximating the tangent surface of a twisted cubic (.obj/.vtp), and
+ *      its exact development as SVG with true circular arcs.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -222,6 +224,123 @@ static void demo_tessellated_surface(void) {
     rmf_surface_free(surface);
 }
 
+/* ---- 3. a cone spline and its development ---- */
+
+static void twisted_cubic(double t, void *user, RmfVec3 *point, RmfVec3 *tangent) {
+    (void)user;
+    point->x = t, point->y = t * t, point->z = t * t * t;
+    tangent->x = 1, tangent->y = 2 * t, tangent->z = 3 * t * t;
+}
+
+/* Appends a boundary arc spline to an SVG path: each segment is a rational quadratic
+ * circular arc (poles P0, P1, P2, weights w0, w1, w2; cos(theta/2) = w1 / sqrt(w0 w2)),
+ * written as a true SVG arc, or a line where it is straight. `forward` = 0 walks it
+ * backwards. y is flipped (SVG's y points down). */
+static void svg_arcs(FILE *f, const RmfCurve *curve, int forward, double scale) {
+    size_t n = 0, k;
+    rmf_curve_segment_count(curve, &n);
+    for (k = 0; k < n; k++) {
+        RmfBezierCurve seg;
+        RmfVec3 a, b, m;
+        double c, half, radius, turn;
+        TRY(rmf_curve_segment(curve, forward ? k : n - 1 - k, &seg));
+        a = seg.poles[forward ? 0 : 2], m = seg.poles[1], b = seg.poles[forward ? 2 : 0];
+        c = hypot(b.x - a.x, b.y - a.y);
+        half = acos(fmin(1.0, seg.weights[1] / sqrt(seg.weights[0] * seg.weights[2])));
+        turn = (m.x - a.x) * (b.y - m.y) - (m.y - a.y) * (b.x - m.x);
+        if (half < 1e-9 || c == 0) {
+            fprintf(f, " L %.9g %.9g", scale * b.x, -scale * b.y);
+            continue;
+        }
+        radius = c / (2 * sin(half));
+        /* large-arc 0 (every patch spans at most 120 degrees); the sweep flips with y. */
+        fprintf(f, " A %.9g %.9g 0 0 %d %.9g %.9g", scale * radius, scale * radius, turn > 0 ? 0 : 1, scale * b.x,
+                -scale * b.y);
+    }
+}
+
+static void demo_cone_spline(void) {
+    const double t_min = -0.3, t_max = 0.3, scale = 100;
+    RmfConeSpline *spline = NULL, *flat = NULL;
+    RmfSurface *surface = NULL;
+    RmfCurve *lower = NULL, *upper = NULL;
+    RmfConePiece piece;
+    RmfVec3 *points, start;
+    uint32_t *triangles;
+    size_t np, nt, pieces, k;
+    double deviation;
+    char path[1024];
+    FILE *f;
+
+    printf("3. cone spline approximating the tangent surface of (t, t^2, t^3), and its development\n");
+    TRY(rmf_cone_spline_approximate(NULL, twisted_cubic, NULL, 0.2, 1.2, 0.5, 6.0, 1e-4,
+                                    RMF_CONE_RULE_MIN_VERTEX_DISTANCE, 10000, &spline, &deviation));
+    TRY(rmf_cone_spline_piece_count(spline, &pieces));
+    printf("  %zu cone pieces, max deviation %.2e from the surface (tolerance 1e-4)\n", pieces, deviation);
+    TRY(rmf_cone_spline_surface(spline, t_min, t_max, &surface));
+    TRY(rmf_surface_tessellate(surface, 4, 8, NULL, 0, NULL, 0, &np, &nt));
+    points = (RmfVec3 *)malloc(np * sizeof *points);
+    triangles = (uint32_t *)malloc(3 * nt * sizeof *triangles);
+    if (!points || !triangles) exit(1);
+    TRY(rmf_surface_tessellate(surface, 4, 8, points, np, triangles, nt, &np, &nt));
+    write_mesh_obj("cone_spline.obj", points, np, triangles, nt, "cone spline surface (rulings are mesh lines)");
+    write_mesh_vtp("cone_spline.vtp", points, np, triangles, nt, "the same mesh as VTK PolyData");
+    free(points);
+    free(triangles);
+
+    /* The development: boundaries are planar arc splines, the rulings straight lines. */
+    TRY(rmf_cone_spline_develop(spline, &flat));
+    TRY(rmf_cone_spline_boundary(flat, t_min, &lower));
+    TRY(rmf_cone_spline_boundary(flat, t_max, &upper));
+    {
+        /* The view box: the arcs lie in the hulls of their Bézier poles (positive weights). */
+        double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+        const RmfCurve *edges[2];
+        size_t e, j, n;
+        edges[0] = lower, edges[1] = upper;
+        for (e = 0; e < 2; e++) {
+            TRY(rmf_curve_segment_count(edges[e], &n));
+            for (k = 0; k < n; k++) {
+                RmfBezierCurve seg;
+                TRY(rmf_curve_segment(edges[e], k, &seg));
+                for (j = 0; j <= seg.degree; j++) {
+                    lo[0] = fmin(lo[0], scale * seg.poles[j].x), hi[0] = fmax(hi[0], scale * seg.poles[j].x);
+                    lo[1] = fmin(lo[1], -scale * seg.poles[j].y), hi[1] = fmax(hi[1], -scale * seg.poles[j].y);
+                }
+            }
+        }
+        f = open_output("cone_spline_development.svg", path, sizeof path);
+        fprintf(f, "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"%.6g %.6g %.6g %.6g\">\n", lo[0] - 10,
+                lo[1] - 10, hi[0] - lo[0] + 20, hi[1] - lo[1] + 20);
+    }
+    TRY(rmf_cone_spline_piece(flat, 0, &piece));
+    start = piece.start_point;
+    fprintf(f, "  <path fill=\"#cde\" stroke=\"black\" stroke-width=\"0.5\" d=\"M %.9g %.9g",
+            scale * (start.x + t_min * piece.start_ruling.x), -scale * (start.y + t_min * piece.start_ruling.y));
+    svg_arcs(f, lower, 1, scale);
+    TRY(rmf_cone_spline_piece(flat, pieces - 1, &piece));
+    fprintf(f, " L %.9g %.9g", scale * (piece.end_point.x + t_max * piece.end_ruling.x),
+            -scale * (piece.end_point.y + t_max * piece.end_ruling.y));
+    svg_arcs(f, upper, 0, scale);
+    fprintf(f, " Z\"/>\n");
+    for (k = 1; k < pieces; k++) { /* the shared rulings */
+        TRY(rmf_cone_spline_piece(flat, k, &piece));
+        fprintf(f, "  <line stroke=\"gray\" stroke-width=\"0.3\" x1=\"%.9g\" y1=\"%.9g\" x2=\"%.9g\" y2=\"%.9g\"/>\n",
+                scale * (piece.start_point.x + t_min * piece.start_ruling.x),
+                -scale * (piece.start_point.y + t_min * piece.start_ruling.y),
+                scale * (piece.start_point.x + t_max * piece.start_ruling.x),
+                -scale * (piece.start_point.y + t_max * piece.start_ruling.y));
+    }
+    fprintf(f, "</svg>\n");
+    fclose(f);
+    written(path, "its exact development: arcs and lines, in the plane");
+    rmf_curve_free(lower);
+    rmf_curve_free(upper);
+    rmf_surface_free(surface);
+    rmf_cone_spline_free(flat);
+    rmf_cone_spline_free(spline);
+}
+
 int main(int argc, char **argv) {
     if (argc > 1) out_dir = argv[1];
     if (mkdir(out_dir, 0777) != 0 && errno != EEXIST) {
@@ -231,5 +350,6 @@ int main(int argc, char **argv) {
     printf("rmfsurf %s demo, writing to %s/\n", rmf_version(), out_dir);
     demo_curve_and_frames();
     demo_tessellated_surface();
+    demo_cone_spline();
     return 0;
 }
