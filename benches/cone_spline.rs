@@ -53,12 +53,16 @@ fn develop(spline: &ConeSpline) -> NurbsSurface {
 
 fn main() {
     let cubic = twisted_cubic();
-    let inputs: [(&str, &dyn ParametricCurve); 2] = [("twisted cubic (NURBS)", &cubic), ("helix (analytic)", &Helix)];
+    let inputs: [(&str, &dyn ParametricCurve); 2] = [
+        ("twisted cubic (NURBS)", &cubic),
+        ("helix (analytic)", &Helix),
+    ];
     println!("cone spline benchmark: tolerance 1e-4, region v in [0.5, 8] from the curve, half a turn of the helix");
     for (name, curve) in inputs {
         let surface = TangentSurface::new(curve, 0.5, 8.0).unwrap();
         let fit = approximate(&surface, 1e-4, Rule::MinimalVertexDistance, 100_000).unwrap();
-        let fit_time = time(|| approximate(&surface, 1e-4, Rule::MinimalVertexDistance, 100_000).unwrap());
+        let fit_time =
+            time(|| approximate(&surface, 1e-4, Rule::MinimalVertexDistance, 100_000).unwrap());
         let develop_time = time(|| develop(&fit.spline));
         println!(
             "  {name:<22} {:>4} pieces (deviation {:.2e}): fit {:>8.3} ms, develop + NURBS {:>8.1} us",

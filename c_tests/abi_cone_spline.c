@@ -14,13 +14,7 @@
 #include "nurbs_eval.h"
 #include "rmf_check.h"
 
-static RmfVec3 vec3(double x, double y, double z) {
-    RmfVec3 v;
-    v.x = x;
-    v.y = y;
-    v.z = z;
-    return v;
-}
+#define vec3(x, y, z) ((RmfVec3){(x), (y), (z)})
 
 static RmfVec3 scaled(RmfVec3 a, double s) { return vec3(a.x * s, a.y * s, a.z * s); }
 static RmfVec3 added(RmfVec3 a, RmfVec3 b) { return vec3(a.x + b.x, a.y + b.y, a.z + b.z); }

@@ -139,6 +139,26 @@ static void write_ribbon(const char *name, const RmfVec3 *x, const RmfVec3 *f2, 
     free(tri);
 }
 
+/* The surface tessellated by the library, written as <name>.obj and <name>.vtp. */
+static void write_tessellation(const RmfSurface *surface, uint32_t u_steps, uint32_t v_steps, const char *name,
+                               const char *what) {
+    RmfVec3 *points;
+    uint32_t *triangles;
+    size_t np, nt;
+    char obj[256], vtp[256];
+    TRY(rmf_surface_tessellate(surface, u_steps, v_steps, NULL, 0, NULL, 0, &np, &nt));
+    points = (RmfVec3 *)malloc(np * sizeof *points);
+    triangles = (uint32_t *)malloc(3 * nt * sizeof *triangles);
+    if (!points || !triangles) exit(1);
+    TRY(rmf_surface_tessellate(surface, u_steps, v_steps, points, np, triangles, nt, &np, &nt));
+    snprintf(obj, sizeof obj, "%s.obj", name);
+    snprintf(vtp, sizeof vtp, "%s.vtp", name);
+    write_mesh_obj(obj, points, np, triangles, nt, what);
+    write_mesh_vtp(vtp, points, np, triangles, nt, "the same mesh as VTK PolyData");
+    free(points);
+    free(triangles);
+}
+
 /* ---- 1. a NURBS curve with its rotation-minimizing and Frenet frames ---- */
 
 static void demo_curve_and_frames(void) {
@@ -193,11 +213,9 @@ static void demo_tessellated_surface(void) {
     const double s = sqrt(0.5);
     const double ring[3][3] = {{1, 0, 1}, {1, 1, s}, {0, 1, 1}};
     const double knots[6] = {0, 0, 0, 1, 1, 1};
-    RmfVec3 poles[9], *points;
+    RmfVec3 poles[9];
     double weights[9];
-    uint32_t *triangles;
     RmfSurface *surface = NULL;
-    size_t np, nt;
     int i, j;
 
     printf("2. rational NURBS surface (a quarter of a torus), tessellated by the library\n");
@@ -212,15 +230,7 @@ static void demo_tessellated_surface(void) {
         }
     /* Middle poles of the tube circle sit on the tangent lines: r = 2 + 0.5, z = 0.5. */
     TRY(rmf_nurbs_surface_create(2, 2, poles, weights, 3, 3, knots, 6, knots, 6, &surface));
-    TRY(rmf_surface_tessellate(surface, 24, 24, NULL, 0, NULL, 0, &np, &nt));
-    points = (RmfVec3 *)malloc(np * sizeof *points);
-    triangles = (uint32_t *)malloc(3 * nt * sizeof *triangles);
-    if (!points || !triangles) exit(1);
-    TRY(rmf_surface_tessellate(surface, 24, 24, points, np, triangles, nt, &np, &nt));
-    write_mesh_obj("torus_patch.obj", points, np, triangles, nt, "tessellated rational NURBS surface");
-    write_mesh_vtp("torus_patch.vtp", points, np, triangles, nt, "the same mesh as VTK PolyData");
-    free(points);
-    free(triangles);
+    write_tessellation(surface, 24, 24, "torus_patch", "tessellated rational NURBS surface");
     rmf_surface_free(surface);
 }
 
@@ -265,9 +275,8 @@ static void demo_cone_spline(void) {
     RmfSurface *surface = NULL;
     RmfCurve *lower = NULL, *upper = NULL;
     RmfConePiece piece;
-    RmfVec3 *points, start;
-    uint32_t *triangles;
-    size_t np, nt, pieces, k;
+    RmfVec3 start;
+    size_t pieces, k;
     double deviation;
     char path[1024];
     FILE *f;
@@ -278,15 +287,7 @@ static void demo_cone_spline(void) {
     TRY(rmf_cone_spline_piece_count(spline, &pieces));
     printf("  %zu cone pieces, max deviation %.2e from the surface (tolerance 1e-4)\n", pieces, deviation);
     TRY(rmf_cone_spline_surface(spline, t_min, t_max, &surface));
-    TRY(rmf_surface_tessellate(surface, 4, 8, NULL, 0, NULL, 0, &np, &nt));
-    points = (RmfVec3 *)malloc(np * sizeof *points);
-    triangles = (uint32_t *)malloc(3 * nt * sizeof *triangles);
-    if (!points || !triangles) exit(1);
-    TRY(rmf_surface_tessellate(surface, 4, 8, points, np, triangles, nt, &np, &nt));
-    write_mesh_obj("cone_spline.obj", points, np, triangles, nt, "cone spline surface (rulings are mesh lines)");
-    write_mesh_vtp("cone_spline.vtp", points, np, triangles, nt, "the same mesh as VTK PolyData");
-    free(points);
-    free(triangles);
+    write_tessellation(surface, 4, 8, "cone_spline", "cone spline surface (rulings are mesh lines)");
 
     /* The development: boundaries are planar arc splines, the rulings straight lines. */
     TRY(rmf_cone_spline_develop(spline, &flat));

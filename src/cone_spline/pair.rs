@@ -653,6 +653,13 @@ mod tests {
         assert!((v1 - (arcs.a1 + mu1.unwrap() * 1.1 * a.ruling)).length() < 1e-9);
     }
 
+    fn assert_vertical_axes(pair: &ConePair) {
+        for piece in &pair.pieces {
+            let k = piece.axis();
+            assert!(k.cross(DVec3::Z).length() < 1e-9, "axis {k}");
+        }
+    }
+
     #[test]
     fn constant_slope_case_has_parallel_axes() {
         let helix = Helix {
@@ -664,13 +671,7 @@ mod tests {
         let (a, b) = (surface.element(1.0).unwrap(), surface.element(1.6).unwrap());
         let pair = solve(&a, &b, Rule::MinimalVertexDistance, None).unwrap();
         assert_eq!(pair.case, PairCase::ConstantSlope);
-        for piece in &pair.pieces {
-            assert!(
-                piece.axis().cross(DVec3::Z).length() < 1e-9,
-                "axis {}",
-                piece.axis()
-            );
-        }
+        assert_vertical_axes(&pair);
         // Minimal vertex distance gives congruent cones here.
         assert!((pair.pieces[0].half_angle() - pair.pieces[1].half_angle()).abs() < 1e-9);
         // det(p₁, p₂) = 0: half a turn apart the principal normals are antiparallel, π is
@@ -682,13 +683,7 @@ mod tests {
         assert!(a.side.cross(b.side).length() < 1e-9);
         let pair = solve(&a, &b, Rule::MinimalVertexDistance, None).unwrap();
         assert_eq!(pair.case, PairCase::ConstantSlope);
-        for piece in &pair.pieces {
-            assert!(
-                piece.axis().cross(DVec3::Z).length() < 1e-9,
-                "axis {}",
-                piece.axis()
-            );
-        }
+        assert_vertical_axes(&pair);
     }
 
     #[test]

@@ -702,6 +702,23 @@ pub unsafe extern "C" fn rmf_cone_spline_boundary(
     })
 }
 
+/// The body of the entry points that make a new spline from one (bending, development,
+/// offset): check the pointers, build, write.
+///
+/// # Safety
+/// `spline` must be NULL or a valid handle, `out` NULL or writable.
+unsafe fn derive(
+    spline: *const RmfConeSpline,
+    out: *mut *mut RmfConeSpline,
+    make: impl FnOnce(&ConeSpline) -> crate::Result<ConeSpline>,
+) -> FfiResult {
+    let spline = reference(spline, "spline")?;
+    let out = out_ptr(out, "out")?;
+    let made = make(&spline.spline)?;
+    write(out, spline.derived(made).into_raw());
+    Ok(())
+}
+
 /// The stage s of the bending sequence (Fig. 17): every piece bent isometrically at once —
 /// a cone's half angle α moves linearly to π/2 with φ sin α kept, a cylinder's curvature
 /// scales by 1 − s —, each laid on the end ruling and tangent plane of the one before.
@@ -720,11 +737,7 @@ pub unsafe extern "C" fn rmf_cone_spline_bend(
     out: *mut *mut RmfConeSpline,
 ) -> RmfStatus {
     guard("rmf_cone_spline_bend", || {
-        let spline = reference(spline, "spline")?;
-        let out = out_ptr(out, "out")?;
-        let bent = spline.spline.bent(s)?;
-        write(out, spline.derived(bent).into_raw());
-        Ok(())
+        derive(spline, out, |c| c.bent(s))
     })
 }
 
@@ -743,11 +756,7 @@ pub unsafe extern "C" fn rmf_cone_spline_develop(
     out: *mut *mut RmfConeSpline,
 ) -> RmfStatus {
     guard("rmf_cone_spline_develop", || {
-        let spline = reference(spline, "spline")?;
-        let out = out_ptr(out, "out")?;
-        let flat = spline.spline.developed()?;
-        write(out, spline.derived(flat).into_raw());
-        Ok(())
+        derive(spline, out, ConeSpline::developed)
     })
 }
 
@@ -763,11 +772,7 @@ pub unsafe extern "C" fn rmf_cone_spline_offset(
     out: *mut *mut RmfConeSpline,
 ) -> RmfStatus {
     guard("rmf_cone_spline_offset", || {
-        let spline = reference(spline, "spline")?;
-        let out = out_ptr(out, "out")?;
-        let offset = spline.spline.offset(d)?;
-        write(out, spline.derived(offset).into_raw());
-        Ok(())
+        derive(spline, out, |c| c.offset(d))
     })
 }
 
