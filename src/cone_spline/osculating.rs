@@ -250,7 +250,14 @@ fn consistent_join(
     let residual = |x: f64| {
         three_pieces(d1, d2, generators(x), sign).map(|p| p[2].end().tangent_plane_angle(target))
     };
-    let x = secant_refine(residual, x0, 1e-9 * x0.abs().max(1.0), 12);
+    let polished = secant_refine(residual, x0, 1e-9 * x0.abs().max(1.0), 12);
+    // Only a correction of the root's round-off: a step far from it would find a G1
+    // configuration whose last piece is not the osculating cone Δ₂.
+    let x = if (polished - x0).abs() <= 1e-4 * (1.0 + x0.abs()) {
+        polished
+    } else {
+        x0
+    };
     let pieces = three_pieces(d1, d2, generators(x), sign)?;
     joins(&pieces[2].end(), target, scale).ok()?;
     pieces
