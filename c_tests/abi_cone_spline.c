@@ -40,6 +40,13 @@ static RmfConeElement cubic_element(double t, double v) {
     return el;
 }
 
+/* (t, t², t⁴): zero torsion at t = 0, an inflection generator of its tangent surface. */
+static void quartic(double t, void *user, RmfVec3 *point, RmfVec3 *tangent) {
+    (void)user;
+    *point = vec3(t, t * t, t * t * t * t);
+    *tangent = vec3(1, 2 * t, 4 * t * t * t);
+}
+
 static RmfConeSpline *sentinel_spline(void) { return (RmfConeSpline *)(uintptr_t)0x5e5e; }
 
 static void test_hermite_surface_and_pieces(void) {
@@ -195,6 +202,21 @@ static void test_approximations(void) {
     CHECK(params[0] == 0.2 && params[n - 1] == 1.2, "elements span the domain");
     CHECK_STATUS(rmf_cone_spline_fit_parameters(spline, 7, params, 64, &n), RMF_ERROR_INVALID_INPUT, "which");
     CHECK_STATUS(rmf_cone_spline_fit_error(spline, &err), RMF_OK, "");
+    rmf_cone_spline_free(spline);
+
+    /* The inflection generator at t = 0 is found and kept as a junction. */
+    CHECK_STATUS(rmf_cone_spline_approximate(NULL, quartic, NULL, -1.0, 1.0, 0.3, 0.8, 1e-3,
+                                             RMF_CONE_RULE_MIN_VERTEX_DISTANCE, 1000, &spline, &err),
+                 RMF_OK, "");
+    CHECK_STATUS(rmf_cone_spline_fit_parameters(spline, RMF_CONE_FIT_INFLECTIONS, params, 64, &n), RMF_OK, "");
+    CHECK(n == 1 && fabs(params[0]) < 1e-9, "one inflection generator, at t = 0");
+    {
+        double inflection = params[0];
+        size_t k, found = 0;
+        CHECK_STATUS(rmf_cone_spline_fit_parameters(spline, RMF_CONE_FIT_ELEMENTS, params, 64, &n), RMF_OK, "");
+        for (k = 0; k < n; k++) found += params[k] == inflection;
+        CHECK(found == 1, "the inflection generator is an element (a junction)");
+    }
     rmf_cone_spline_free(spline);
 
     CHECK_STATUS(rmf_cone_spline_approximate(NULL, cubic, NULL, 0.2, 1.2, 0.5, 1.0, 0.0, 0, 1000, &untouched, NULL),

@@ -178,30 +178,42 @@ fn joining_candidates(d1: &OsculatingCone, d2: &OsculatingCone) -> Result<Vec<[C
                 quartic[i + j] += p1[i].truncate().cross(p2[j].truncate()).dot(v1 - v2);
             }
         }
-        for (t0, t1) in projective_roots(&quartic) {
-            // Pairs of touching points as a function of one affine parameter near the root.
-            let point = |x: f64| {
-                if t0.abs() >= t1.abs() {
-                    (1.0, x)
+        // A common vertex (the surface is a cone): (14) vanishes identically and the
+        // filling cones form a one-parameter family, the spherical osculating arc splines;
+        // a symmetric member is taken (see `symmetric_parameters`).
+        let roots = if common_vertex(v1, v2) {
+            Vec::new()
+        } else {
+            projective_roots(&quartic)
+        };
+        // x₂ snapped onto c₂: the two projections lose digits for nearly equal cones.
+        let onto_c2 = |y: DVec3| c2 * k2 + s2 * (y - y.dot(k2) * k2).normalize();
+        let generators =
+            |(t0, t1): (f64, f64)| (evaluate(&arc1, t0, t1), onto_c2(evaluate(&arc2, t0, t1)));
+        for sign in [1.0, -1.0] {
+            if common_vertex(v1, v2) {
+                let chart = |x: f64| generators((1.0, x));
+                for x in symmetric_parameters(d1, d2, &chart, sign) {
+                    out.extend(consistent_join(d1, d2, &chart, x, sign, scale, false));
+                }
+            }
+            for &(t0, t1) in &roots {
+                // The affine chart of the projective line in which the root is finite.
+                let (chart, x): (Box<dyn Fn(f64) -> (DVec3, DVec3)>, f64) = if t0.abs() >= t1.abs()
+                {
+                    (Box::new(|x: f64| generators((1.0, x))), t1 / t0)
                 } else {
-                    (x, 1.0)
-                }
-            };
-            let x = if t0.abs() >= t1.abs() {
-                t1 / t0
-            } else {
-                t0 / t1
-            };
-            // x₂ snapped onto c₂: the two projections lose digits for nearly equal cones.
-            let onto_c2 = |y: DVec3| c2 * k2 + s2 * (y - y.dot(k2) * k2).normalize();
-            let generators = |x: f64| {
-                let (t0, t1) = point(x);
-                (evaluate(&arc1, t0, t1), onto_c2(evaluate(&arc2, t0, t1)))
-            };
-            for sign in [1.0, -1.0] {
-                if let Some(pieces) = consistent_join(d1, d2, &generators, x, sign, scale) {
-                    out.push(pieces);
-                }
+                    (Box::new(|x: f64| generators((x, 1.0))), t0 / t1)
+                };
+                out.extend(consistent_join(
+                    d1,
+                    d2,
+                    chart.as_ref(),
+                    x,
+                    sign,
+                    scale,
+                    true,
+                ));
             }
         }
     }
@@ -220,12 +232,23 @@ fn three_pieces(
     if !(x1.is_finite() && x2.is_finite()) || (x1 - x2).length() < 1e-9 {
         return None; // a common generator of Λ₁ and Λ₂: no filling cone
     }
+    if common_vertex(v1, v2) {
+        // The vertex where the two rulings meet, more accurate than either point of
+        // regression from differences.
+        let (a, b) = (&d1.element, &d2.element);
+        let w = a.ruling.cross(b.ruling);
+        let v = a.at((b.point - a.point).cross(b.ruling).dot(w) / w.length_squared());
+        let first = ConePiece::cone(v, *a, x1).ok()?;
+        let filler = ConePiece::cone(v, first.end(), sign * x2).ok()?;
+        let last = ConePiece::cone(v, filler.end(), b.ruling).ok()?;
+        return Some([first, filler, last]);
+    }
     // The filling vertex: where the generators v₁ + a x₁ and v₂ + b x₂ meet (closest point
     // on the first). Its last ruling is drawn through v₂ itself, so that the three pieces
     // chain exactly; what remains of a root's error shows in the tangent plane at e₂.
+    let first = ConePiece::cone(v1, d1.element, x1).ok()?;
     let w = x1.cross(x2);
     let v = v1 + (v2 - v1).cross(x2).dot(w) / w.length_squared() * x1;
-    let first = ConePiece::cone(v1, d1.element, x1).ok()?;
     let through_v2 = (v2 - v) * (v2 - v).dot(x2).signum();
     let filler = ConePiece::cone(v, first.end(), sign * through_v2).ok()?;
     let last = ConePiece::cone(v2, filler.end(), d2.element.ruling).ok()?;
@@ -245,12 +268,17 @@ fn consistent_join(
     x0: f64,
     sign: f64,
     scale: f64,
+    polish: bool,
 ) -> Option<[ConePiece; 3]> {
     let target = &d2.element;
     let residual = |x: f64| {
         three_pieces(d1, d2, generators(x), sign).map(|p| p[2].end().tangent_plane_angle(target))
     };
-    let polished = secant_refine(residual, x0, 1e-9 * x0.abs().max(1.0), 12);
+    let polished = if polish {
+        secant_refine(residual, x0, 1e-9 * x0.abs().max(1.0), 12)
+    } else {
+        x0
+    };
     // Only a correction of the root's round-off: a step far from it would find a G1
     // configuration whose last piece is not the osculating cone Δ₂.
     let x = if (polished - x0).abs() <= 1e-4 * (1.0 + x0.abs()) {
@@ -264,6 +292,67 @@ fn consistent_join(
         .iter()
         .all(|p| p.segment_angle() < FRAC_PI_2)
         .then_some(pieces)
+}
+
+/// Relative distance below which two osculating cones count as sharing their vertex.
+const COMMON_VERTEX: f64 = 1e-8;
+
+fn common_vertex(v1: DVec3, v2: DVec3) -> bool {
+    (v1 - v2).length()
+        <= COMMON_VERTEX * v1.abs().max_element().max(v2.abs().max_element()).max(1.0)
+}
+
+/// Parameters (in the chart t₀ = 1, |t| ≤ 1) of the member of the one-parameter family of
+/// filling cones for osculating cones with a common vertex: the segments taken from Δ₁ and
+/// Δ₂ equally long — or, for mirror-symmetric Δ₁, Δ₂ where they always are, the filling
+/// segment as long as both together.
+fn symmetric_parameters(
+    d1: &OsculatingCone,
+    d2: &OsculatingCone,
+    generators: &dyn Fn(f64) -> (DVec3, DVec3),
+    sign: f64,
+) -> Vec<f64> {
+    let angles = |x: f64| {
+        three_pieces(d1, d2, generators(x), sign)
+            .filter(|p| p.iter().all(|q| q.segment_angle() < FRAC_PI_2))
+            .map(|p| p.map(|q| q.segment_angle()))
+    };
+    let equal_ends = |x: f64| angles(x).map(|[a, _, c]| a - c);
+    let balanced = |x: f64| angles(x).map(|[a, b, c]| a + c - b);
+    let xs: Vec<f64> = (0..=400).map(|k| -1.0 + k as f64 / 200.0).collect();
+    let symmetric = xs
+        .iter()
+        .filter_map(|&x| equal_ends(x))
+        .all(|g| g.abs() < 1e-9);
+    if symmetric {
+        sign_changes(&xs, &balanced)
+    } else {
+        sign_changes(&xs, &equal_ends)
+    }
+}
+
+/// The roots of `f` between consecutive samples `xs` where it changes sign (bisection).
+fn sign_changes(xs: &[f64], f: &dyn Fn(f64) -> Option<f64>) -> Vec<f64> {
+    let mut out = Vec::new();
+    for w in xs.windows(2) {
+        let (Some(fa), Some(fb)) = (f(w[0]), f(w[1])) else {
+            continue;
+        };
+        if (fa < 0.0) == (fb < 0.0) {
+            continue;
+        }
+        let (mut a, mut b) = (w[0], w[1]);
+        for _ in 0..60 {
+            let m = 0.5 * (a + b);
+            match f(m) {
+                Some(fm) if (fm < 0.0) == (fa < 0.0) => a = m,
+                Some(_) => b = m,
+                None => break,
+            }
+        }
+        out.push(0.5 * (a + b));
+    }
+    out
 }
 
 /// Joins two osculating cones by the most useful consistent filling cone.
@@ -340,7 +429,8 @@ pub fn osculating_spline(surface: &dyn Developable, ts: &[f64]) -> Result<ConeSp
 #[cfg(test)]
 mod tests {
     use super::super::approximate::deviation;
-    use super::super::test_support::{tangent_surface, twisted_cubic, Helix};
+    use super::super::developable::DualDevelopable;
+    use super::super::test_support::{dual_cone_planes, tangent_surface, twisted_cubic, Helix};
     use super::*;
     use crate::cone_spline::pair::Rule;
     use crate::curve::{uniform_parameters, ParametricCurve};
@@ -413,6 +503,29 @@ mod tests {
             assert!(error < previous, "the error decreases with more cones");
             previous = error;
         }
+        // A cone Γ (the dual quadratic cone): every osculating cone has Γ's vertex, and a
+        // spherical osculating arc spline joins them.
+        let region =
+            crate::cone_spline::Region::new(DVec3::new(-3.0, -3.0, 1.0), DVec3::new(3.0, 3.0, 2.0))
+                .unwrap();
+        let knots = [0.0, 0.0, 0.0, 1.0, 1.0, 1.0];
+        let cone = DualDevelopable::new(2, &dual_cone_planes(), &knots, region).unwrap();
+        let vertex = osculating_cone(&cone, 0.5).unwrap().vertex.unwrap();
+        assert!(
+            vertex.length() < 1e-8,
+            "the osculating cone of a cone has its vertex: {vertex}"
+        );
+        let spherical = osculating_spline(&cone, &uniform_parameters((0.0, 1.0), 6)).unwrap();
+        let error = deviation(&cone, spherical.pieces(), 0.0, 1.0, 400).unwrap();
+        println!(
+            "osculating, cone Γ: 6 cones, {} pieces, max deviation {error:.3e}",
+            spherical.pieces().len()
+        );
+        assert!(spherical
+            .pieces()
+            .iter()
+            .all(|p| p.vertex().unwrap().length() < 1e-7));
+        assert!(error < 1e-3);
         // Too far apart, no consistent filling cone exists (the paper's interval of e₂).
         let far = uniform_parameters((0.2, 1.2), 3);
         assert!(matches!(
