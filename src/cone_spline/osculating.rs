@@ -137,6 +137,9 @@ fn projective_roots(q: &[f64; 5]) -> Vec<(f64, f64)> {
     roots
 }
 
+/// Junction generators (x₁, x₂) as a function of one affine parameter of the projective line.
+type Chart<'a> = Box<dyn Fn(f64) -> (DVec3, DVec3) + 'a>;
+
 /// Pieces Δ₁ (from e₁ to the junction), Δ (the filling cone), Δ₂ (from the junction to e₂)
 /// for every real root of (14) on both conics, consistent ones only.
 fn joining_candidates(d1: &OsculatingCone, d2: &OsculatingCone) -> Result<Vec<[ConePiece; 3]>> {
@@ -199,8 +202,7 @@ fn joining_candidates(d1: &OsculatingCone, d2: &OsculatingCone) -> Result<Vec<[C
             }
             for &(t0, t1) in &roots {
                 // The affine chart of the projective line in which the root is finite.
-                let (chart, x): (Box<dyn Fn(f64) -> (DVec3, DVec3)>, f64) = if t0.abs() >= t1.abs()
-                {
+                let (chart, x): (Chart, f64) = if t0.abs() >= t1.abs() {
                     (Box::new(|x: f64| generators((1.0, x))), t1 / t0)
                 } else {
                     (Box::new(|x: f64| generators((x, 1.0))), t0 / t1)
