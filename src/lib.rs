@@ -13,6 +13,7 @@
 //! | [`mesh`] | triangle meshes of surfaces on the patch grid |
 //! | [`sweep`] | sweep surfaces x + c₂ f₂ + c₃ f₃ with exact rational frames |
 //! | [`rrmf_quintic`] | quintics with exact rational RMFs by G1 Hermite interpolation (Farouki, Giannelli & Sestini) |
+//! | [`cone_spline`] | cone spline surfaces: G1 cone pairs, approximation of developables, development, bending, offsets |
 //! | `ffi` | the C API: handles, status codes, last error, panic boundary |
 //!
 //! The geometry lives in safe Rust and knows nothing of C; a Rust user calls it directly.
@@ -20,6 +21,8 @@
 
 /// cbindgen:ignore
 pub mod bezier;
+/// cbindgen:ignore
+pub mod cone_spline;
 /// cbindgen:ignore
 pub mod curve;
 /// cbindgen:ignore
