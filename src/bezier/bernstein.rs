@@ -193,6 +193,28 @@ pub fn elevate_to<C: Coefficient>(coeffs: &[C], degree: usize) -> Vec<C> {
     elevate(coeffs, degree + 1 - coeffs.len())
 }
 
+/// The polynomial of degree n − 1 whose elevation gives `coeffs` (degree n ≥ 1), computed
+/// from both ends (the first half by the forward recursion of the elevation formula, the
+/// second by the backward one). Exact when p has degree < n — e.g. a product whose top
+/// power coefficient cancels — and otherwise no approximation of any quality: check by
+/// elevating back.
+pub fn reduce_degree<C: Coefficient>(coeffs: &[C]) -> Vec<C> {
+    let n = coeffs.len() - 1;
+    assert!(n >= 1, "a constant cannot be reduced");
+    let nf = n as f64;
+    let mut out = vec![C::default(); n];
+    let half = (n - 1) / 2;
+    out[0] = coeffs[0];
+    for i in 1..=half {
+        out[i] = (coeffs[i] * nf - out[i - 1] * i as f64) * (1.0 / (n - i) as f64);
+    }
+    out[n - 1] = coeffs[n];
+    for i in (half + 2..n).rev() {
+        out[i - 1] = (coeffs[i] * nf - out[i] * (n - i) as f64) * (1.0 / i as f64);
+    }
+    out
+}
+
 /// Subdivision at `t`: coefficients of p on [0, t] and on [t, 1], each reparameterized to
 /// [0, 1].
 pub fn split<C: Coefficient>(coeffs: &[C], t: f64) -> (Vec<C>, Vec<C>) {
@@ -337,6 +359,23 @@ mod tests {
         );
         // (1 − 2t)² touches zero at t = 1/2: no positive subdivision exists.
         assert!(positive_subdivision(&[&[1.0, -1.0, 1.0]], 30).is_none());
+    }
+
+    #[test]
+    fn reduction_undoes_elevation() {
+        for r in 1..4 {
+            let e = elevate(&P, r);
+            let mut back = e.clone();
+            for _ in 0..r {
+                back = reduce_degree(&back);
+            }
+            assert_eq!(back.len(), P.len());
+            assert!(
+                back.iter().zip(&P).all(|(a, b)| (a - b).abs() < 1e-12),
+                "{back:?}"
+            );
+        }
+        assert_eq!(reduce_degree(&[2.0, 2.0]), vec![2.0]);
     }
 
     #[test]

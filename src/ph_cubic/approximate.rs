@@ -135,7 +135,7 @@ pub fn check_g1(curve: &PiecewiseCurve) -> Result<()> {
         let left = pair[0].eval_jet(1.0).d1;
         let right = pair[1].eval_jet(0.0).d1;
         let angle = left.angle_between(right);
-        if !(angle <= CORNER_TOLERANCE) {
+        if angle.is_nan() || angle > CORNER_TOLERANCE {
             return invalid!(
                 "curve has a corner at t = {} ({angle:.2e} rad between the tangents): a G1 PH \
                  spline cannot follow it; approximate the pieces on either side separately",

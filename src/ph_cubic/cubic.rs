@@ -53,7 +53,7 @@ impl PhCubic {
             );
         }
         let residual = cubic.hodograph_residual();
-        if !(residual <= cubic.ph_tolerance()) {
+        if residual.is_nan() || residual > cubic.ph_tolerance() {
             return invalid!(
                 "the control polygon violates the PH condition (17): relative residual {residual:.1e}"
             );

@@ -6,7 +6,8 @@
 use super::base_frame::{FrameNumerators, FramePieces};
 use super::cubic::PhCubic;
 use super::spline::ph_cubics;
-use crate::bezier::bernstein::{self, product};
+use crate::bezier::bernstein::{self, product, reduce_degree};
+
 use crate::bezier::PiecewiseCurve;
 use crate::error::{invalid, Result};
 use crate::frames::rational::RationalFrames;
@@ -33,16 +34,10 @@ pub fn frenet_numerators(cubic: &PhCubic) -> FrameNumerators {
         .collect();
     let k = 0.5 * (binormal[0].length() / sigma[0] + binormal[3].length() / sigma[2]);
     FrameNumerators {
-        e2: undo_elevation(&normal),
-        e3: undo_elevation(&binormal),
+        e2: reduce_degree(&normal),
+        e3: reduce_degree(&binormal),
         d: sigma.iter().map(|s| s * k).collect(),
     }
-}
-
-/// Degree-2 coefficients of a quadratic given in degree 3 (inverse of one elevation,
-/// taken from both ends).
-fn undo_elevation(c: &[DVec3]) -> Vec<DVec3> {
-    vec![c[0], 0.25 * (3.0 * (c[1] + c[2]) - c[0] - c[3]), c[3]]
 }
 
 /// The Frenet frames (f₂ = n, f₃ = b) of a PH cubic spline as exact rational functions of

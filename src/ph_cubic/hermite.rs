@@ -162,7 +162,7 @@ fn interpolant(data: &HermiteSegment, l1: f64, l3: f64) -> Result<PhCubic> {
         data.p1,
     ]);
     let residual = cubic.hodograph_residual();
-    if !(residual <= cubic.ph_tolerance()) {
+    if residual.is_nan() || residual > cubic.ph_tolerance() {
         return Err(Error::NoSolution(format!(
             "the interpolant misses the PH condition (17) by {residual:.1e}: the data are too \
              ill-conditioned for a PH cubic"

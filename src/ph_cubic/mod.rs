@@ -31,6 +31,8 @@ pub mod exact_rmf;
 pub mod frenet;
 pub mod hermite;
 pub mod offset;
+pub mod profile;
+
 pub mod rational_rmf;
 pub mod rmf_angle;
 pub mod spline;
