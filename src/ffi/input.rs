@@ -1,10 +1,6 @@
 //! Inputs shared by the capability entry points: arrays of G1 Hermite data, and curves given
 //! either as an `RmfCurve` or as a C callback for analytic curves.
 
-// The capability entry points (PH cubic splines, Möbius, RRMF, cone splines) are the
-// callers; until the first of them lands nothing in the crate uses these helpers.
-#![allow(dead_code)]
-
 use super::boundary::{invalid_arg, slice, FfiError, FfiResult};
 use super::curve::RmfCurve;
 use super::types::RmfVec3;

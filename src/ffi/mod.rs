@@ -17,6 +17,8 @@ mod boundary;
 pub mod curve;
 pub mod frames;
 pub mod input;
+pub mod ph_cubic;
+
 pub mod status;
 pub mod surface;
 pub mod types;
