@@ -134,7 +134,9 @@ pub fn check_g1(curve: &PiecewiseCurve) -> Result<()> {
     for (k, pair) in curve.segments().windows(2).enumerate() {
         let left = pair[0].eval_jet(1.0).d1;
         let right = pair[1].eval_jet(0.0).d1;
-        let angle = left.angle_between(right);
+        // atan2, not acos: the angle must be exact near 0.
+        let angle = left.cross(right).length().atan2(left.dot(right));
+
         if angle.is_nan() || angle > CORNER_TOLERANCE {
             return invalid!(
                 "curve has a corner at t = {} ({angle:.2e} rad between the tangents): a G1 PH \
