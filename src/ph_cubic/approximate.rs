@@ -149,13 +149,17 @@ pub fn check_g1(curve: &PiecewiseCurve) -> Result<()> {
 }
 
 /// The shape-matching PH cubic through the data at a and b with its distance to the curve,
-/// or `None` when the data admit no PH cubic.
+/// or `None` when the data admit no PH cubic (also when the points coincide, as the ends of
+/// a closed curve do: the interval is then halved).
 fn fit_interval(
     curve: &dyn ParametricCurve,
     a: &Sample,
     b: &Sample,
 ) -> Result<Option<(PhCubic, f64)>> {
-    let data = HermiteSegment::new(a.point, a.tangent, b.point, b.tangent)?;
+    let Ok(data) = HermiteSegment::new(a.point, a.tangent, b.point, b.tangent) else {
+        return Ok(None);
+    };
+
     match ph_cubic_hermite(&data) {
         Ok(solutions) => {
             let cubic = solutions.shape_matching;
@@ -351,7 +355,28 @@ mod tests {
     }
 
     #[test]
+    fn closed_curves_are_split_where_their_ends_meet() {
+        struct Circle;
+        impl ParametricCurve for Circle {
+            fn domain(&self) -> (f64, f64) {
+                (0.0, 2.0 * std::f64::consts::PI)
+            }
+            fn point_derivative(&self, t: f64) -> Result<(DVec3, DVec3)> {
+                Ok((
+                    DVec3::new(t.cos(), t.sin(), 0.1 * (3.0 * t).sin()),
+                    DVec3::new(-t.sin(), t.cos(), 0.3 * (3.0 * t).cos()),
+                ))
+            }
+        }
+        let a = ph_spline_approximate(&Circle, &[0.0, 2.0 * std::f64::consts::PI], 1e-5).unwrap();
+        let (lo, hi) = a.spline.domain();
+        assert!((a.spline.eval(hi) - a.spline.eval(lo)).length() < 1e-14);
+        assert!(a.max_distance <= 1e-5);
+    }
+
+    #[test]
     fn rejects_bad_tolerances_and_reports_failure() {
+
         for tol in [0.0, -1.0, f64::NAN, f64::INFINITY] {
             assert!(ph_spline_approximate(&Helix, &[0.0, 1.0], tol).is_err());
         }
