@@ -29,7 +29,11 @@ fn spiral(t: f64) -> (DVec3, DVec3) {
     let r = t / 20.0 + 1.0;
     (
         DVec3::new(r * t.cos(), r * t.sin(), 0.3 * t),
-        DVec3::new(t.cos() / 20.0 - r * t.sin(), t.sin() / 20.0 + r * t.cos(), 0.3),
+        DVec3::new(
+            t.cos() / 20.0 - r * t.sin(),
+            t.sin() / 20.0 + r * t.cos(),
+            0.3,
+        ),
     )
 }
 
@@ -71,8 +75,12 @@ fn main() {
     let (t_surface, surface) = timed(|| sweep(&spline, &rmf.frames, &profile).unwrap());
 
     let params = uniform_parameters(spline.domain(), FRAMES);
-    let (t_eval, rational) =
-        timed(|| params.iter().map(|&t| rmf.frames.frame(t)).collect::<Vec<_>>());
+    let (t_eval, rational) = timed(|| {
+        params
+            .iter()
+            .map(|&t| rmf.frames.frame(t))
+            .collect::<Vec<_>>()
+    });
     let (t_reflection, reflected) =
         timed(|| DoubleReflectionRmf::along(&spline, params.clone(), normal).unwrap());
 

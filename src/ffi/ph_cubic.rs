@@ -240,7 +240,16 @@ unsafe fn rational_rmf_into(
     let spline = reference(ph_spline, "ph_spline")?;
     let out = out_ptr(out, "out")?;
     let rmf = ph_rational_rmf(&spline.curve, &options)?;
-    let field = FrameField::new(spline.curve.clone(), FrameKind::Rational(rmf.frames))?;
+    write_frames(spline, rmf.frames, out)
+}
+
+/// Writes rational frames along `spline` to `out` as a new handle.
+unsafe fn write_frames(
+    spline: &RmfCurve,
+    frames: RationalFrames,
+    out: *mut *mut RmfFrames,
+) -> FfiResult {
+    let field = FrameField::new(spline.curve.clone(), FrameKind::Rational(frames))?;
     write(out, RmfFrames::into_raw(field));
     Ok(())
 }
@@ -264,10 +273,7 @@ pub unsafe extern "C" fn rmf_ph_frenet_frames(
     guard("rmf_ph_frenet_frames", || {
         let spline = reference(ph_spline, "ph_spline")?;
         let out = out_ptr(out, "out")?;
-        let frames = ph_frenet_frames(&spline.curve)?;
-        let field = FrameField::new(spline.curve.clone(), FrameKind::Rational(frames))?;
-        write(out, RmfFrames::into_raw(field));
-        Ok(())
+        write_frames(spline, ph_frenet_frames(&spline.curve)?, out)
     })
 }
 

@@ -35,6 +35,7 @@ use crate::error::{invalid, Error, Result};
 use crate::frames::metrics::angle_about_tangent;
 use crate::frames::rational::RationalFrames;
 use crate::math::minimize_bracketed;
+use crate::mesh::grid_parameters;
 use glam::{DVec2, DVec3};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
@@ -150,7 +151,7 @@ impl<'a> ProfileSurface<'a> {
 
     /// The singularity margin of Corollary 7 with where it is attained, and the cheap bound.
     pub fn singularity_margin(&self) -> SingularityMargin {
-        let samples = spine_samples(self.frames.breaks());
+        let samples = grid_parameters(self.frames.breaks(), SAMPLES_PER_PIECE);
         let (i, _) = samples
             .iter()
             .map(|&v| self.least_stretch(v).0)
@@ -195,7 +196,7 @@ impl<'a> ProfileSurface<'a> {
             let jet = self.spine.eval_jet(v);
             jet.d1.cross(jet.d2).length() / jet.d1.length().powi(3)
         };
-        let samples = spine_samples(self.frames.breaks());
+        let samples = grid_parameters(self.frames.breaks(), SAMPLES_PER_PIECE);
         let (i, best) = samples
             .iter()
             .map(|&v| curvature(v))
@@ -274,18 +275,6 @@ fn critical_points(p: &[f64]) -> Vec<f64> {
 /// Global parameter of the local parameter s on interval i of `breaks`.
 fn global(breaks: &[f64], i: usize, s: f64) -> f64 {
     breaks[i] + s * (breaks[i + 1] - breaks[i])
-}
-
-fn spine_samples(breaks: &[f64]) -> Vec<f64> {
-    let mut samples = Vec::new();
-    for w in breaks.windows(2) {
-        samples.extend(
-            (0..SAMPLES_PER_PIECE)
-                .map(|j| w[0] + (w[1] - w[0]) * j as f64 / SAMPLES_PER_PIECE as f64),
-        );
-    }
-    samples.push(breaks[breaks.len() - 1]);
-    samples
 }
 
 fn neighbours(samples: &[f64], i: usize) -> (f64, f64) {

@@ -376,7 +376,6 @@ mod tests {
 
     #[test]
     fn rejects_bad_tolerances_and_reports_failure() {
-
         for tol in [0.0, -1.0, f64::NAN, f64::INFINITY] {
             assert!(ph_spline_approximate(&Helix, &[0.0, 1.0], tol).is_err());
         }

@@ -9,17 +9,15 @@
 
 use super::base_frame::BaseFrame;
 use super::cubic::PhCubic;
+use super::in_context;
 use super::spline::ph_cubics;
 use crate::bezier::bernstein;
 use crate::bezier::{locate, PiecewiseCurve};
-use crate::error::{invalid, Result};
+use crate::error::Result;
 use crate::frames::metrics::angle_about_tangent;
+use crate::frames::rational::joining_turn;
 use crate::frames::Frame;
-use crate::math::normal_plane_unit;
 use glam::DVec3;
-
-/// Largest distance between unit tangents of consecutive segments at a G1 joint.
-const G1_TOLERANCE: f64 = 1e-9;
 
 /// One segment: its cubic, base frame and the constant αₖ.
 #[derive(Clone, Debug)]
@@ -47,22 +45,14 @@ impl ExactRmf {
         let mut arc_before = 0.0;
         for (k, cubic) in ph_cubics(spline)?.into_iter().enumerate() {
             let base = BaseFrame::of(&cubic);
-            let start = base.numerators().frame(0.0);
-            let target = match segments.last() {
-                None => normal_plane_unit(initial_normal, start.tangent, "initial_normal")?,
-                Some(previous) => {
-                    let end = previous.frame(1.0, twist_rate);
-                    if (end.tangent - start.tangent).length() > G1_TOLERANCE {
-                        return invalid!(
-                            "ph_spline segments {} and {k} do not share their tangent: the spline is not G1",
-                            k - 1
-                        );
-                    }
-                    end.f2
-                }
-            };
-            let start_angle =
-                angle_about_tangent(&start, &Frame::from_tangent_normal(start.tangent, target));
+            let previous_end = segments.last().map(|p| p.frame(1.0, twist_rate));
+            let start_angle = joining_turn(
+                &base.numerators().frame(0.0),
+                previous_end.as_ref(),
+                initial_normal,
+                k,
+            )
+            .map_err(|e| in_context(e, "ph_spline"))?;
             segments.push(Segment {
                 cubic,
                 base,

@@ -178,7 +178,7 @@ fn polynomial_sqrt(p: &[f64]) -> Option<Vec<f64>> {
 mod tests {
     use super::*;
     use crate::ph_cubic::rational_rmf::{ph_rational_rmf, RmfOptions};
-    use crate::ph_cubic::test_curves::helix_spline;
+    use crate::ph_cubic::test_curves::{helix_spline, tschirnhausen};
     use crate::sweep::sweep;
     use glam::DVec3;
 
@@ -210,17 +210,8 @@ mod tests {
             ])
             .unwrap(),
         );
-        let r3 = 3f64.sqrt();
-        let tschirnhausen = single(
-            RationalBezierCurve::polynomial(&[
-                DVec3::ZERO,
-                DVec3::X,
-                DVec3::new(1.5, 0.5 * r3, 0.0),
-                DVec3::new(1.0, r3, 0.0),
-            ])
-            .unwrap(),
-        );
-        for (profile, degree) in [(line, 1), (circle_arc(), 2), (tschirnhausen, 5)] {
+        let planar_ph = single(tschirnhausen(std::f64::consts::FRAC_PI_3, 1.0).to_bezier());
+        for (profile, degree) in [(line, 1), (circle_arc(), 2), (planar_ph, 5)] {
             for d in [0.05, -0.1] {
                 let offset = offset_profile(&profile, d).unwrap();
                 assert_eq!(offset.segments()[0].degree(), degree);

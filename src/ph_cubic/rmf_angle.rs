@@ -100,7 +100,7 @@ mod tests {
     use super::*;
     use crate::frames::frenet::frenet_frame;
     use crate::math::GaussLegendre;
-    use crate::ph_cubic::test_curves::{example_cubic, mirrored};
+    use crate::ph_cubic::test_curves::{example_cubic, mirrored, tschirnhausen};
 
     /// τσ from the derivatives of the Bézier curve, for comparison with −Ω'.
     fn torsion_times_speed(c: &PhCubic, v: f64) -> f64 {
@@ -159,15 +159,7 @@ mod tests {
 
     #[test]
     fn planar_cubics_have_constant_angle() {
-        // A Tschirnhausen cubic: unit legs turning by 60° each (L₂² = L₁L₃, ψ = 0).
-        let r3 = 3f64.sqrt();
-        let c = PhCubic::from_control_points([
-            DVec3::ZERO,
-            DVec3::X,
-            DVec3::new(1.5, 0.5 * r3, 0.0),
-            DVec3::new(1.0, r3, 0.0),
-        ])
-        .unwrap();
+        let c = tschirnhausen(std::f64::consts::FRAC_PI_3, 1.0);
         let omega = RmfAngle::of(&c);
         assert_eq!(omega.torsion_constant(), 0.0);
         assert_eq!(omega.increment(0.7), 0.0);

@@ -37,3 +37,12 @@ pub fn helix_spline(segments: usize, step: f64) -> PiecewiseCurve {
         (0..=segments).map(|i| helix(step * i as f64, 0.4)).unzip();
     ph_spline_hermite(&points, &tangents).unwrap()
 }
+
+/// A planar PH cubic, a Tschirnhausen cubic: legs of lengths 1, q, q² each turning by `turn`
+/// (equal angles and L₂² = L₁L₃, condition (17) with ψ = 0).
+pub fn tschirnhausen(turn: f64, q: f64) -> PhCubic {
+    let leg = |k: f64| DVec3::new((k * turn).cos(), (k * turn).sin(), 0.0) * q.powf(k);
+    let b1 = leg(0.0);
+    let b2 = b1 + leg(1.0);
+    PhCubic::from_control_points([DVec3::ZERO, b1, b2, b2 + leg(2.0)]).unwrap()
+}
