@@ -328,6 +328,80 @@ mod tests {
     }
 
     #[test]
+    fn straight_and_nearly_straight_segments_carry_the_frame() {
+        // (t, s³, s³/2) with s = max(t − 1, 0): a straight start, then a curve leaving it with
+        // zero curvature (nearly straight segments), sampled every 0.25.
+        let curve = |t: f64| {
+            let s = (t - 1.0).max(0.0);
+            (
+                DVec3::new(t, s.powi(3), 0.5 * s.powi(3)),
+                DVec3::new(1.0, 3.0 * s * s, 1.5 * s * s),
+            )
+        };
+        let (points, tangents): (Vec<DVec3>, Vec<DVec3>) =
+            (0..=12).map(|i| curve(0.25 * i as f64)).unzip();
+        let spline = ph_spline_hermite(&points, &tangents).unwrap();
+        let rmf = ph_rational_rmf(&spline, &RmfOptions::rmf(DVec3::Y)).unwrap();
+        let params = crate::curve::uniform_parameters(spline.domain(), 20001);
+        let reference = crate::frames::double_reflection::DoubleReflectionRmf::along(
+            &spline,
+            params.clone(),
+            DVec3::Y,
+        )
+        .unwrap();
+        let worst = params
+            .iter()
+            .zip(reference.frames())
+            .map(|(&t, f)| angle_about_tangent(f, &rmf.frames.frame(t)).abs())
+            .fold(0.0, f64::max);
+        assert!(worst < 1e-8, "{worst}");
+        // On the straight part (spline parameters [0, 4]) the frame does not move at all.
+        for t in [0.5, 2.0, 3.9] {
+            assert!(
+                (rmf.frames.frame(t).f2 - DVec3::Y).length() < 1e-15,
+                "t = {t}"
+            );
+        }
+        let bends: Vec<f64> = crate::ph_cubic::ph_cubics(&spline)
+            .unwrap()
+            .iter()
+            .map(|c| c.bend())
+            .collect();
+        assert!(bends[..4].iter().all(|&b| b == 0.0) && bends[4] > 0.0);
+        // A gentle helix (radius of curvature 2e6): every segment nearly straight (carried
+        // frames), still the RMF.
+        let r = 1e6;
+        let gentle = |t: f64| {
+            let s = (t / (2.0 * r)).sin();
+            (
+                DVec3::new(-2.0 * r * s * s, r * (t / r).sin(), t),
+                DVec3::new(-(t / r).sin(), (t / r).cos(), 1.0),
+            )
+        };
+        let (points, tangents): (Vec<DVec3>, Vec<DVec3>) =
+            (0..=4).map(|i| gentle(i as f64)).unzip();
+        let spline = ph_spline_hermite(&points, &tangents).unwrap();
+        let cubics = crate::ph_cubic::ph_cubics(&spline).unwrap();
+        assert!(cubics
+            .iter()
+            .all(|c| c.bend() > 0.0 && c.bend() < super::super::base_frame::NEARLY_STRAIGHT));
+        let rmf = ph_rational_rmf(&spline, &RmfOptions::rmf(DVec3::X)).unwrap();
+        let params = crate::curve::uniform_parameters(spline.domain(), 4001);
+        let reference = crate::frames::double_reflection::DoubleReflectionRmf::along(
+            &spline,
+            params.clone(),
+            DVec3::X,
+        )
+        .unwrap();
+        let worst = params
+            .iter()
+            .zip(reference.frames())
+            .map(|(&t, f)| angle_about_tangent(f, &rmf.frames.frame(t)).abs())
+            .fold(0.0, f64::max);
+        assert!(worst < 1e-12, "{worst}");
+    }
+
+    #[test]
     fn planar_splines_get_the_exact_rmf() {
         let points = [
             DVec3::ZERO,
