@@ -99,8 +99,23 @@ pub fn evaluate_jet<C: Coefficient>(coeffs: &[C], t: f64) -> Jet<C> {
     }
 }
 
+/// The Bernstein basis functions B₀ⁿ(t), …, Bₙⁿ(t), written to `out[0..=n]` by the convex
+/// triangle recursion: one pass serves any number of coefficient sets evaluated at `t`.
+pub fn basis(n: usize, t: f64, out: &mut [f64]) {
+    assert!(out.len() > n, "basis buffer too small");
+    out[0] = 1.0;
+    for d in 1..=n {
+        out[d] = t * out[d - 1];
+        for i in (1..d).rev() {
+            out[i] = (1.0 - t) * out[i] + t * out[i - 1];
+        }
+        out[0] *= 1.0 - t;
+    }
+}
+
 /// The Bernstein basis functions of degree `n` at `t` with their first and second
 /// derivatives, written to `out[0..=n]` as `[B, B', B'']`.
+
 ///
 /// Uses `B'_i^n = n (B_{i-1}^{n-1} − B_i^{n-1})` and the analogous second difference of the
 /// degree n − 2 basis; all basis values come from the convex triangle recursion.

@@ -127,9 +127,20 @@ impl RationalFrameSegment {
 /// The frame N₂/d, N₃/d at `s` from Bernstein coefficients of one degree (the tangent is
 /// f₂ × f₃, the pair being orthonormal).
 pub fn frame_at(f2: &[DVec3], f3: &[DVec3], denominator: &[f64], s: f64) -> Frame {
-    let d = bernstein::evaluate(denominator, s);
-    let f2 = bernstein::evaluate(f2, s) / d;
-    let f3 = bernstein::evaluate(f3, s) / d;
+    // One basis evaluation for all seven coefficient sets (3 + 3 + 1), instead of a de
+    // Casteljau run per set: frames are evaluated in bulk (meshes, sweeps, benchmarks).
+    let n = denominator.len() - 1;
+    let mut basis = [0.0; MAX_DEGREE + 1];
+    bernstein::basis(n, s, &mut basis);
+    let combine = |c: &[DVec3]| {
+        c.iter()
+            .zip(&basis)
+            .fold(DVec3::ZERO, |a, (&v, &b)| a + v * b)
+    };
+    let d: f64 = denominator.iter().zip(&basis).map(|(c, b)| c * b).sum();
+    let f2 = combine(f2) / d;
+    let f3 = combine(f3) / d;
+
     Frame {
         tangent: f2.cross(f3),
         f2,
