@@ -115,7 +115,6 @@ pub fn basis(n: usize, t: f64, out: &mut [f64]) {
 
 /// The Bernstein basis functions of degree `n` at `t` with their first and second
 /// derivatives, written to `out[0..=n]` as `[B, B', B'']`.
-
 ///
 /// Uses `B'_i^n = n (B_{i-1}^{n-1} − B_i^{n-1})` and the analogous second difference of the
 /// degree n − 2 basis; all basis values come from the convex triangle recursion.
@@ -374,6 +373,17 @@ mod tests {
         );
         // (1 − 2t)² touches zero at t = 1/2: no positive subdivision exists.
         assert!(positive_subdivision(&[&[1.0, -1.0, 1.0]], 30).is_none());
+    }
+
+    #[test]
+    fn basis_reproduces_evaluation() {
+        let mut b = [0.0; 8];
+        for &t in &[0.0, 0.3, 0.77, 1.0] {
+            basis(4, t, &mut b);
+            let sum: f64 = P.iter().zip(&b).map(|(c, w)| c * w).sum();
+            assert!((sum - evaluate(&P, t)).abs() < 1e-15);
+            assert!((b[..5].iter().sum::<f64>() - 1.0).abs() < 1e-15);
+        }
     }
 
     #[test]
