@@ -282,7 +282,6 @@ pub unsafe extern "C" fn rmf_ph_frenet_frames(
 /// the constants chained across the joints from initial_normal. On (nearly) straight
 /// segments (sin θ ≤ 1e-6), where the Frenet frame degenerates, the frame carried by the
 /// smallest rotation of the tangent is used; it differs from the RMF by less than 1e-11 rad.
-
 ///
 /// @param[in] ph_spline A PH cubic spline, G1.
 /// @param[in] initial_normal As for rmf_ph_rational_rmf.
