@@ -71,6 +71,33 @@
 #define RMF_PARABOLIC_NORMAL 3
 
 /**
+ * Shape measure: RMF energy E_rmf = ∫ κ² ds. Note: E_rmf of a curve scaled by s is
+ * E_rmf / s, and the family of interpolants contains arbitrarily large loops, so its
+ * minimum can be a huge curve; RMF_RRMF_MEASURE_SCALED_ENERGY_RMF compares shapes.
+ */
+#define RMF_RRMF_MEASURE_ENERGY_RMF 0
+
+/**
+ * Shape measure: Frenet-frame energy E = ∫ (κ² + τ²) ds (same caveat as E_rmf).
+ */
+#define RMF_RRMF_MEASURE_ENERGY_FRENET 1
+
+/**
+ * Shape measure: arc length L.
+ */
+#define RMF_RRMF_MEASURE_ARC_LENGTH 2
+
+/**
+ * Shape measure: L · E_rmf, invariant under scaling; picks fair curves (recommended).
+ */
+#define RMF_RRMF_MEASURE_SCALED_ENERGY_RMF 3
+
+/**
+ * Shape measure: L · E, invariant under scaling.
+ */
+#define RMF_RRMF_MEASURE_SCALED_ENERGY_FRENET 4
+
+/**
  * Major version of the library; equals the first number of rmf_version().
  */
 #define RMF_VERSION_MAJOR 0
@@ -271,6 +298,51 @@ typedef struct RmfParabolicPoint {
 } RmfParabolicPoint;
 
 /**
+ * One RRMF quintic Hermite interpolant (Farouki, Giannelli & Sestini, Section 4).
+ *
+ * The quintic's hodograph is r'(t) = (|α|² − |β|², 2 Re(α β̄), 2 Im(α β̄)) with the complex
+ * quadratics α(t) = Σ α_k B_k(t), β(t) = Σ β_k B_k(t) (Bernstein basis of degree 2), in
+ * canonical coordinates: p0 at the origin, p1 − p0 along +x, t0 in the (x, y)-plane with
+ * positive y. w(t) = Σ w_k B_k(t) is the polynomial of the RRMF condition (4); the RMF
+ * (9) turns the Euler–Rodrigues frame by the angle of w². Complex numbers are stored as
+ * (Re, Im) pairs: `alpha[2k]` = Re α_k, `alpha[2k + 1]` = Im α_k.
+ */
+typedef struct RmfRrmfQuintic {
+  /**
+   * The angular parameter η of the solution (radians).
+   */
+  double eta;
+  /**
+   * ρ > 0 with ρ² = |r'(1)| / |r'(0)| (eq. (20)).
+   */
+  double rho;
+  /**
+   * Re, Im of alpha_0, alpha_1, alpha_2 (canonical coordinates, alpha_0 real >= 0).
+   */
+  double alpha[6];
+  /**
+   * Re, Im of beta_0, beta_1, beta_2.
+   */
+  double beta[6];
+  /**
+   * Re, Im of w_0 (= 1), w_1, w_2.
+   */
+  double w[6];
+  /**
+   * Arc length L = ∫ σ dt.
+   */
+  double arc_length;
+  /**
+   * Frenet-frame energy E = ∫ (κ² + τ²) ds.
+   */
+  double energy_frenet;
+  /**
+   * RMF energy E_rmf = ∫ κ² ds.
+   */
+  double energy_rmf;
+} RmfRrmfQuintic;
+
+/**
  * Borrowed view of a NURBS surface. Pole (i, j) is at index `i * pole_count_v + j`, i along
  * u; the arrays are owned by the surface handle (do not free; valid until it is freed).
  */
@@ -331,6 +403,8 @@ extern "C" {
  * @param[in] knot_count Must equal pole_count + degree + 1.
  * @param[out] out Receives the new curve; the caller frees it with rmf_curve_free.
  *            Untouched on failure.
+ *
+ * Degree and counts are checked against each other before any array is read.
  * @return RMF_OK on success.
  * @return RMF_ERROR_NULL_POINTER If poles, knots or out is NULL.
  * @return RMF_ERROR_INVALID_INPUT If a count, degree, knot, weight or pole is invalid (the
@@ -844,6 +918,177 @@ RmfStatus rmf_profile_offset(const struct RmfCurve *profile,
                              struct RmfCurve **out);
 
 /**
+ * All RRMF quintics interpolating G1 Hermite data for one value of the angular parameter
+ * η (the Algorithm of Section 4 of Farouki, Giannelli & Sestini): ρ is every positive root
+ * of the sextic (35) (or, when s_f = s_i and η = φ/2, of the quartic of the special case
+ * α_1 = 0), and each solution is verified by substitution into the RRMF conditions (7)–(8)
+ * (to 1e-10 relative) and the interpolation conditions (end point to 1e-12 of
+ * max(|p1 − p0|, L), end tangents to 1e-12 rad). A root whose curve is numerically
+ * singular — its speed dipping below 1e-6 of its maximum on [0, 1], where its tangent is
+ * determined by rounding errors — is not returned; this happens only for nearly
+ * degenerate data (a tangent almost along p1 − p0).
+ *
+ * ρ far from 1 means one end derivative is much shorter than the other: the first or last
+ * leg of the Bézier control polygon is then short, and a tangent computed from the poles
+ * alone is accurate only to about 1e-16 |P| / |leg|.
+ *
+ * Capacity: with fewer solutions than exist, RMF_ERROR_BUFFER_TOO_SMALL is returned and
+ * only *count is written; capacity 0 with solutions NULL queries the count that way.
+ *
+ * @param[in] p0, p1 End points (finite, distinct).
+ * @param[in] t0, t1 End tangents (finite, non-zero; normalized here). The data must not be
+ *            planar: neither tangent along p1 − p0, and the tangents not coplanar with it.
+ * @param[in] eta The angular parameter η (finite, radians; any value, 2π-periodic).
+ * @param[out] solutions Buffer for capacity solutions, written in increasing ρ; may be NULL
+ *             if capacity is 0.
+ * @param[in] capacity Capacity of solutions.
+ * @param[out] count Receives the number of solutions that exist for this η (possibly 0).
+ * @return RMF_OK on success (also when no solution exists for this η: *count = 0).
+ * @return RMF_ERROR_NULL_POINTER If count is NULL, or solutions is NULL with capacity > 0.
+ * @return RMF_ERROR_INVALID_INPUT If a point or tangent is not finite, a tangent is zero,
+ *         p0 and p1 coincide, the data are planar or degenerate (θ_i, θ_f or φ a multiple of
+ *         π), or eta is not finite.
+ * @return RMF_ERROR_BUFFER_TOO_SMALL If capacity < *count; then only *count is written.
+ * @return RMF_ERROR_INTERNAL On an internal error.
+ */
+RmfStatus rmf_rrmf_quintic_solutions(struct RmfVec3 p0,
+                                     struct RmfVec3 t0,
+                                     struct RmfVec3 p1,
+                                     struct RmfVec3 t1,
+                                     double eta,
+                                     struct RmfRrmfQuintic *solutions,
+                                     size_t capacity,
+                                     size_t *count);
+
+/**
+ * The angles of G1 Hermite data in the canonical form of Farouki, Giannelli & Sestini
+ * (eqs. (11)–(12)): coordinates with p0 at the origin, p1 − p0 along +x and t0 in the
+ * (x, y)-plane with positive y, where t0 = (cos θ_i, sin θ_i, 0) and
+ * t1 = (cos θ_f, sin θ_f cos φ, sin θ_f sin φ). When θ_f = θ_i, the interpolants at
+ * η = φ/2 are those of the special case α_1 = 0.
+ *
+ * @param[in] p0, t0, p1, t1 Hermite data (as for rmf_rrmf_quintic_solutions).
+ * @param[out] theta_i Receives θ_i in (0, π).
+ * @param[out] theta_f Receives θ_f in (0, π).
+ * @param[out] phi Receives φ in (0, 2π), the branch of the paper's examples.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If theta_i, theta_f or phi is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If the data are invalid, planar or degenerate (as for
+ *         rmf_rrmf_quintic_solutions).
+ */
+RmfStatus rmf_rrmf_quintic_angles(struct RmfVec3 p0,
+                                  struct RmfVec3 t0,
+                                  struct RmfVec3 p1,
+                                  struct RmfVec3 t1,
+                                  double *theta_i,
+                                  double *theta_f,
+                                  double *phi);
+
+/**
+ * The curve and exact rational rotation-minimizing frame of one RRMF quintic interpolant:
+ * the quintic as a polynomial Bézier curve of degree 5 on [0, 1] in the caller's
+ * coordinates, and its RMF (9) — rational of degree 8, split where needed so that the
+ * weights are positive and within a factor 100 of each other on every segment — turned
+ * about the tangent so that f2 starts at initial_normal (a constant rotation of an RMF is
+ * again an RMF).
+ *
+ * The solution is recomputed from the data and solution->eta and must match *solution
+ * (ρ, α, β to 1e-9 relative), so a curve always interpolates the data it is given with.
+ *
+ * @param[in] p0, t0, p1, t1 The Hermite data the solution was computed for.
+ * @param[in] solution A solution from rmf_rrmf_quintic_solutions or rmf_rrmf_quintic_best.
+ * @param[in] initial_normal Projected onto the normal plane at p0 and normalized to give f2
+ *            there; f3 = t × f2.
+ * @param[out] curve Receives the curve; free with rmf_curve_free. Untouched on failure.
+ * @param[out] frames Receives the frames (RMF_FRAMES_RATIONAL, usable by
+ *             rmf_sweep_surface with this curve); free with rmf_frames_free. Untouched on
+ *             failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If solution, curve or frames is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If the data are invalid (as for rmf_rrmf_quintic_solutions),
+ *         the solution does not belong to them, or initial_normal is not finite, zero or
+ *         along t0.
+ * @return RMF_ERROR_NO_SOLUTION If the frame cannot be given positive weights (a singular
+ *         curve; not seen for solutions returned by this library).
+ * @return RMF_ERROR_INTERNAL On an internal error.
+ */
+RmfStatus rmf_rrmf_quintic_curve(struct RmfVec3 p0,
+                                 struct RmfVec3 t0,
+                                 struct RmfVec3 p1,
+                                 struct RmfVec3 t1,
+                                 const struct RmfRrmfQuintic *solution,
+                                 struct RmfVec3 initial_normal,
+                                 struct RmfCurve **curve,
+                                 struct RmfFrames **frames);
+
+/**
+ * The RRMF quintic interpolant of least shape measure: the measure of every solution at
+ * eta_samples values η = 2πk / eta_samples is compared, then the best is refined by
+ * Brent's method between its neighbouring samples.
+ *
+ * @param[in] p0, t0, p1, t1 Hermite data (as for rmf_rrmf_quintic_solutions).
+ * @param[in] measure RMF_RRMF_MEASURE_ENERGY_RMF, _ENERGY_FRENET, _ARC_LENGTH,
+ *            _SCALED_ENERGY_RMF (recommended: L · E_rmf) or _SCALED_ENERGY_FRENET.
+ * @param[in] eta_samples Number N_η of sampled η, 1 to 1,000,000.
+ * @param[out] best Receives the chosen solution (pass it to rmf_rrmf_quintic_curve).
+ * @param[out] admissible Receives how many of the sampled η admit at least one solution;
+ *             may be NULL.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If best is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If the data are invalid, measure is unknown or
+ *         eta_samples is 0 or too large.
+ * @return RMF_ERROR_NO_SOLUTION If no sampled η admits an interpolant.
+ * @return RMF_ERROR_INTERNAL On an internal error.
+ */
+RmfStatus rmf_rrmf_quintic_best(struct RmfVec3 p0,
+                                struct RmfVec3 t0,
+                                struct RmfVec3 p1,
+                                struct RmfVec3 t1,
+                                uint32_t measure,
+                                size_t eta_samples,
+                                struct RmfRrmfQuintic *best,
+                                size_t *admissible);
+
+/**
+ * A G1 spline of RRMF quintics through points with unit tangents, with one continuous
+ * exact rational rotation-minimizing frame along it (Farouki, Giannelli & Sestini,
+ * Example 3). Segment k joins points[k] and points[k + 1] on the parameter interval
+ * [k, k + 1]; its η is chosen as by rmf_rrmf_quintic_best. Each segment's RMF (9) is
+ * turned about the tangent by a constant angle so that the frames agree at the joints.
+ *
+ * @param[in] points count points (finite; consecutive points distinct).
+ * @param[in] tangents count tangents (finite, non-zero; normalized here).
+ * @param[in] count Number of points, ≥ 2.
+ * @param[in] initial_normal Projected onto the normal plane at points[0] and normalized to
+ *            give f2 there; f3 = t × f2.
+ * @param[in] measure Shape measure per segment (RMF_RRMF_MEASURE_*).
+ * @param[in] eta_samples Number N_η of sampled η per segment, 1 to 1,000,000.
+ * @param[out] curve Receives the spline (degree 5, count − 1 segments); free with
+ *             rmf_curve_free. Untouched on failure.
+ * @param[out] frames Receives the rational RMF (RMF_FRAMES_RATIONAL; its segments refine
+ *             the curve's where the weights had to be made positive and within a factor 100
+ *             of each other); free with
+ *             rmf_frames_free. Untouched on failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If points, tangents, curve or frames is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If count < 2, a point or tangent is invalid, consecutive
+ *         points coincide, a segment's data are planar or degenerate (the message names the
+ *         segment), measure is unknown, eta_samples is 0 or too large, or initial_normal is
+ *         not finite, zero or along tangents[0].
+ * @return RMF_ERROR_NO_SOLUTION If no sampled η admits an interpolant for some segment (the
+ *         message names it).
+ * @return RMF_ERROR_INTERNAL On an internal error.
+ */
+RmfStatus rmf_rrmf_spline_hermite(const struct RmfVec3 *points,
+                                  const struct RmfVec3 *tangents,
+                                  size_t count,
+                                  struct RmfVec3 initial_normal,
+                                  uint32_t measure,
+                                  size_t eta_samples,
+                                  struct RmfCurve **curve,
+                                  struct RmfFrames **frames);
+
+/**
  * The message of the last failing call on the calling thread.
  *
  * @return A NUL-terminated UTF-8 string, never NULL ("" if nothing has failed yet on this
@@ -879,6 +1124,8 @@ const char *rmf_status_name(uint32_t status);
  * @param[in] knots_u, knot_count_u Clamped knot vector in u, knot_count_u = pole_count_u + degree_u + 1.
  * @param[in] knots_v, knot_count_v Clamped knot vector in v, likewise.
  * @param[out] out Receives the surface; free with rmf_surface_free. Untouched on failure.
+ *
+ * Degrees and counts are checked against each other before any array is read.
  * @return RMF_OK on success.
  * @return RMF_ERROR_NULL_POINTER If poles, knots_u, knots_v or out is NULL.
  * @return RMF_ERROR_INVALID_INPUT If a count, degree, knot, weight or pole is invalid (the

@@ -13,6 +13,7 @@
 //! | [`mesh`] | triangle meshes of surfaces on the patch grid |
 //! | [`sweep`] | sweep surfaces x + c₂ f₂ + c₃ f₃ with exact rational frames |
 //! | [`ph_cubic`] | PH cubic splines, their exact and rational RMFs, profile-surface analysis (Mäurer & Jüttler) |
+//! | [`rrmf_quintic`] | quintics with exact rational RMFs by G1 Hermite interpolation (Farouki, Giannelli & Sestini) |
 //! | `ffi` | the C API: handles, status codes, last error, panic boundary |
 //!
 //! The geometry lives in safe Rust and knows nothing of C; a Rust user calls it directly.
@@ -35,6 +36,8 @@ pub mod math;
 pub mod mesh;
 /// cbindgen:ignore
 pub mod ph_cubic;
+/// cbindgen:ignore
+pub mod rrmf_quintic;
 /// cbindgen:ignore
 pub mod sweep;
 

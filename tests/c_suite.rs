@@ -3,7 +3,7 @@
 //!
 //! * the header compiles on its own as C99 and as C++ with -Wall -Wextra -Wpedantic -Werror;
 //! * every `c_tests/abi_*.c` (C99) exercises entry points, under valgrind (no leaks, no
-//!   errors);
+//!   errors) and again built with AddressSanitizer + UndefinedBehaviorSanitizer;
 //! * every `c_tests/geometry_*.cpp` checks surfaces independently with the suite's own NURBS
 //!   evaluator, OpenMesh and VTK (Debian packages libopenmesh-dev and libvtk9-dev);
 //! * the demo and the README's C example build and run.
@@ -207,22 +207,42 @@ fn suites(prefix: &str, suffix: &str) -> Vec<String> {
     names
 }
 
-/// Every `c_tests/abi_*.c`: C99 ABI tests, run under valgrind.
-#[test]
-fn abi_suites_under_valgrind() {
-    let mut flags = vec!["-std=c99"];
+/// Builds every `c_tests/abi_*.c` (C99, with -pthread) with `extra` flags under a name
+/// suffix, and runs it under valgrind or not.
+fn run_abi_suites(suffix: &str, extra: &[&str], valgrind: bool) {
+    let mut flags = vec!["-std=c99", "-pthread"];
     flags.extend(STRICT);
+    flags.extend(extra);
     for name in suites("abi_", ".c") {
         let source = format!("c_tests/{name}");
+        let exe_name = format!("{}{suffix}", name.trim_end_matches(".c"));
         let exe = build(
-            name.trim_end_matches(".c"),
+            &exe_name,
             false,
             &[source.as_str(), "c_tests/nurbs_eval.c"],
             &flags,
             &[],
         );
-        run(&exe, true);
+        run(&exe, valgrind);
     }
+}
+
+/// Every `c_tests/abi_*.c`: C99 ABI tests, under valgrind (no leaks, no invalid accesses).
+#[test]
+fn abi_suites_under_valgrind() {
+    run_abi_suites("", &[], true);
+}
+
+/// Every `c_tests/abi_*.c` again, built with AddressSanitizer (with its leak checker) and
+/// UndefinedBehaviorSanitizer; any report fails the run.
+#[test]
+fn abi_suites_under_address_and_undefined_behavior_sanitizers() {
+    let sanitize = [
+        "-fsanitize=address,undefined",
+        "-fno-sanitize-recover=all",
+        "-fno-omit-frame-pointer",
+    ];
+    run_abi_suites("_asan_ubsan", &sanitize, false);
 }
 
 /// Every `c_tests/geometry_*.cpp`: independent checks with OpenMesh and VTK.

@@ -8,7 +8,10 @@
  *   1. a NURBS input curve, its double-reflection rotation-minimizing frames and its Frenet
  *      frames (polyline with frame vectors, and a ribbon along f2 for each frame);
  *   2. a rational NURBS surface given as input, tessellated by the library;
- *   3. profile surfaces along PH cubic splines: a moulding along a conical helix with the
+ *   3. RRMF quintics (Farouki, Giannelli & Sestini): the Hermite interpolants of Example 1,
+ *      the helix spline of Example 3 with its exact rational RMF, and a developable strip
+ *      and a pipe swept along it.
+ *   4. profile surfaces along PH cubic splines: a moulding along a conical helix with the
  *      rational RMF and with the Frenet frame, and a square tube along a closed trefoil.
  */
 #define _POSIX_C_SOURCE 200809L
@@ -224,10 +227,99 @@ static void demo_tessellated_surface(void) {
     rmf_surface_free(surface);
 }
 
-/* ---- 3. profile surfaces along a PH cubic spline (Mäurer & Jüttler) ---- */
+/* ---- 3. RRMF quintics: Hermite interpolants, a spline with its exact rational RMF, sweeps ---- */
+
+/* Tessellates a surface and writes it as .obj and .vtp. */
+static void write_surface(RmfSurface *surface, const char *obj, const char *vtp, const char *what) {
+    RmfVec3 *points;
+    uint32_t *triangles;
+    size_t np, nt;
+    TRY(rmf_surface_tessellate(surface, 8, 6, NULL, 0, NULL, 0, &np, &nt));
+    points = (RmfVec3 *)malloc(np * sizeof *points);
+    triangles = (uint32_t *)malloc(3 * nt * sizeof *triangles);
+    if (!points || !triangles) exit(1);
+    TRY(rmf_surface_tessellate(surface, 8, 6, points, np, triangles, nt, &np, &nt));
+    write_mesh_obj(obj, points, np, triangles, nt, what);
+    write_mesh_vtp(vtp, points, np, triangles, nt, what);
+    free(points);
+    free(triangles);
+}
+
+static void demo_rrmf_quintics(void) {
+    /* Example 1 of Farouki, Giannelli & Sestini, and the helix data of their Example 3. */
+    const RmfVec3 p0 = {0, 0, 0}, t0 = {1, 0, 1}, p1 = {1, 1, 1}, t1 = {0, 1, 1}, up = {0, 0, 1};
+    static const RmfVec3 line_poles[2] = {{0.15, -0.25, 0}, {0.15, 0.25, 0}};
+    static const double line_knots[4] = {0, 0, 1, 1};
+    static const double ring[9][3] = {{1, 0, 1}, {1, 1, 0}, {0, 1, 1}, {-1, 1, 0}, {-1, 0, 1},
+                                      {-1, -1, 0}, {0, -1, 1}, {1, -1, 0}, {1, 0, 1}};
+    static const double circle_knots[12] = {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1};
+    static RmfVec3 x[SAMPLES], t[SAMPLES], f2[SAMPLES], f3[SAMPLES];
+    const char *names[3] = {"tangent", "rmf_f2", "rmf_f3"};
+    const RmfVec3 *vectors[3];
+    RmfVec3 points[10], tangents[10], circle_poles[9];
+    double circle_weights[9], t_min, t_max, joint_gap = 0;
+    RmfRrmfQuintic solutions[4], best;
+    RmfCurve *spline = NULL, *line = NULL, *circle = NULL;
+    RmfFrames *frames = NULL;
+    RmfSurface *strip = NULL, *tube = NULL;
+    size_t n = 0, admissible = 0, i;
+    int k;
+
+    printf("3. RRMF quintics (rational rotation-minimizing frames of degree 8)\n");
+    TRY(rmf_rrmf_quintic_solutions(p0, t0, p1, t1, 4.325, solutions, 4, &n));
+    for (i = 0; i < n; i++)
+        printf("  Example 1, eta = %.3f: rho = %.4f, L = %.4f, E = %.4f, E_rmf = %.4f\n", solutions[i].eta,
+               solutions[i].rho, solutions[i].arc_length, solutions[i].energy_frenet, solutions[i].energy_rmf);
+    TRY(rmf_rrmf_quintic_best(p0, t0, p1, t1, RMF_RRMF_MEASURE_SCALED_ENERGY_RMF, 90, &best, &admissible));
+    printf("  Example 1, least L*E_rmf (%zu of 90 sampled eta admit solutions): eta = %.4f, L = %.4f\n", admissible,
+           best.eta, best.arc_length);
+
+    for (k = 0; k < 10; k++) {
+        double s = k * 3.14159265358979323846 / 2;
+        points[k].x = sin(s), points[k].y = cos(s), points[k].z = s;
+        tangents[k].x = cos(s), tangents[k].y = -sin(s), tangents[k].z = 1;
+    }
+    TRY(rmf_rrmf_spline_hermite(points, tangents, 10, up, RMF_RRMF_MEASURE_SCALED_ENERGY_RMF, 64, &spline, &frames));
+    TRY(rmf_curve_domain(spline, &t_min, &t_max));
+    for (i = 0; i < SAMPLES; i++) {
+        double s = t_min + (t_max - t_min) * (double)i / (SAMPLES - 1);
+        TRY(rmf_curve_eval(spline, s, &x[i], NULL));
+        TRY(rmf_frames_eval(frames, s, &t[i], &f2[i], &f3[i]));
+    }
+    for (k = 1; k < 9; k++) { /* the frame is continuous at the joints */
+        RmfVec3 ta, fa, ga, tb, fb, gb;
+        TRY(rmf_frames_eval(frames, nextafter((double)k, 0.0), &ta, &fa, &ga));
+        TRY(rmf_frames_eval(frames, k, &tb, &fb, &gb));
+        joint_gap = fmax(joint_gap, fabs(fa.x - fb.x) + fabs(fa.y - fb.y) + fabs(fa.z - fb.z));
+    }
+    vectors[0] = t, vectors[1] = f2, vectors[2] = f3;
+    write_polyline_vtp("rrmf_helix_spline.vtp", x, SAMPLES, names, vectors, 3,
+                       "RRMF quintic spline (Example 3) with its exact RMF");
+    write_ribbon("rrmf_ribbon.obj", x, f2, SAMPLES, 0.3, "strip along the exact rational RMF vector f2");
+    printf("  helix spline: 9 quintic segments, frame continuous at the joints (gap %.1e)\n", joint_gap);
+
+    for (i = 0; i < 9; i++) {
+        circle_poles[i].x = 0.3 * ring[i][0], circle_poles[i].y = 0.3 * ring[i][1], circle_poles[i].z = 0;
+        circle_weights[i] = ring[i][2] == 1 ? 1.0 : sqrt(0.5);
+    }
+    TRY(rmf_nurbs_curve_create(1, line_poles, NULL, 2, line_knots, 4, &line));
+    TRY(rmf_nurbs_curve_create(2, circle_poles, circle_weights, 9, circle_knots, 12, &circle));
+    TRY(rmf_sweep_surface(spline, frames, line, &strip));
+    TRY(rmf_sweep_surface(spline, frames, circle, &tube));
+    write_surface(strip, "rrmf_developable_strip.obj", "rrmf_developable_strip.vtp",
+                  "line swept with the RMF: a developable surface");
+    write_surface(tube, "rrmf_tube.obj", "rrmf_tube.vtp", "circle swept with the RMF: a pipe, exact rational");
+    rmf_surface_free(strip);
+    rmf_surface_free(tube);
+    rmf_curve_free(line);
+    rmf_curve_free(circle);
+    rmf_frames_free(frames);
+    rmf_curve_free(spline);
+}
+
+/* ---- 4. profile surfaces along a PH cubic spline (Mäurer & Jüttler) ---- */
 
 #define PH_DEMO_PI 3.14159265358979323846
-
 
 /* A conical helix ((t/4 + 1) cos t, (t/4 + 1) sin t, 0.4 t): the spine, given analytically. */
 static void conical_helix(double t, void *user, RmfVec3 *point, RmfVec3 *tangent) {
@@ -242,26 +334,6 @@ static void trefoil(double t, void *user, RmfVec3 *point, RmfVec3 *tangent) {
     (void)user;
     point->x = sin(t) + 2 * sin(2 * t), point->y = cos(t) - 2 * cos(2 * t), point->z = -sin(3 * t);
     tangent->x = cos(t) + 4 * cos(2 * t), tangent->y = -sin(t) + 4 * sin(2 * t), tangent->z = -3 * cos(3 * t);
-}
-
-/* Tessellates a surface and writes it as .obj and .vtp. */
-static void write_surface(RmfSurface *surface, uint32_t u_steps, uint32_t v_steps, const char *stem,
-                          const char *what) {
-    char obj[256], vtp[256];
-    RmfVec3 *points;
-    uint32_t *triangles;
-    size_t np, nt;
-    TRY(rmf_surface_tessellate(surface, u_steps, v_steps, NULL, 0, NULL, 0, &np, &nt));
-    points = (RmfVec3 *)malloc(np * sizeof *points);
-    triangles = (uint32_t *)malloc(3 * nt * sizeof *triangles);
-    if (!points || !triangles) exit(1);
-    TRY(rmf_surface_tessellate(surface, u_steps, v_steps, points, np, triangles, nt, &np, &nt));
-    snprintf(obj, sizeof obj, "%s.obj", stem);
-    snprintf(vtp, sizeof vtp, "%s.vtp", stem);
-    write_mesh_obj(obj, points, np, triangles, nt, what);
-    write_mesh_vtp(vtp, points, np, triangles, nt, "the same mesh as VTK PolyData");
-    free(points);
-    free(triangles);
 }
 
 static RmfCurve *bezier_profile(const RmfVec3 *poles, size_t count, const double *weights) {
@@ -285,7 +357,7 @@ static void demo_profile_surfaces(void) {
     double distance = 0, angle = 0;
     size_t segments = 0, n = 0;
 
-    printf("3. profile surfaces along PH cubic splines (exact rational NURBS, degree (m, 9))\n");
+    printf("4. profile surfaces along PH cubic splines (exact rational NURBS, degree (m, 9))\n");
     TRY(rmf_ph_spline_approximate(NULL, conical_helix, NULL, 0, 4 * PH_DEMO_PI, 1e-4, &spine, &distance));
     TRY(rmf_curve_segment_count(spine, &segments));
     TRY(rmf_ph_rational_rmf(spine, (RmfVec3){0, 0, 1}, &rmf));
@@ -295,10 +367,11 @@ static void demo_profile_surfaces(void) {
            "singularity margin %.3f\n",
            segments, distance, angle, margin.margin);
     TRY(rmf_sweep_surface(spine, rmf, profile, &surface));
-    write_surface(surface, 12, 8, "profile_surface_rmf", "profile surface: moulding swept with the rational RMF");
+    write_surface(surface, "profile_surface_rmf.obj", "profile_surface_rmf.vtp",
+                  "profile surface: moulding swept with the rational RMF");
     TRY(rmf_ph_frenet_frames(spine, &frenet));
     TRY(rmf_sweep_surface(spine, frenet, profile, &frenet_surface));
-    write_surface(frenet_surface, 12, 8, "profile_surface_frenet",
+    write_surface(frenet_surface, "profile_surface_frenet.obj", "profile_surface_frenet.vtp",
                   "the same moulding swept with the Frenet frame (twists, torn at joints)");
 
     /* A closed spine: the RMF does not close; a uniform extra twist, a quarter turn at most for a
@@ -307,7 +380,8 @@ static void demo_profile_surfaces(void) {
     TRY(rmf_nurbs_curve_create(1, square, NULL, 5, square_knots, 7, &box));
     TRY(rmf_ph_rational_rmf_twisted(loop, (RmfVec3){0, 0, 1}, 0, 4, &closed));
     TRY(rmf_sweep_surface(loop, closed, box, &closed_surface));
-    write_surface(closed_surface, 2, 8, "closed_sweep_trefoil", "square tube along a trefoil, closed without a seam");
+    write_surface(closed_surface, "closed_sweep_trefoil.obj", "closed_sweep_trefoil.vtp",
+                  "square tube along a trefoil, closed without a seam");
 
     rmf_surface_free(surface);
     rmf_surface_free(frenet_surface);
@@ -330,6 +404,7 @@ int main(int argc, char **argv) {
     printf("rmfsurf %s demo, writing to %s/\n", rmf_version(), out_dir);
     demo_curve_and_frames();
     demo_tessellated_surface();
+    demo_rrmf_quintics();
     demo_profile_surfaces();
     return 0;
 }

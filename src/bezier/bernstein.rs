@@ -1,13 +1,13 @@
 //! Polynomials in Bernstein form on [0, 1]: evaluation with derivatives, hodographs,
 //! products, degree elevation and subdivision.
 //!
-//! The functions are generic over the coefficient type ([`Coefficient`]: f64, `DVec3`,
+//! The functions are generic over the coefficient type ([`Coefficient`]: f64, `DVec3`, `Complex`,
 //! homogeneous `DVec4`), so that one implementation serves scalar weights, vector numerators
 //! of frames and homogeneous control points. The formulas are the standard ones (Farin,
 //! *Curves and Surfaces for CAGD*, ch. 5–6); de Casteljau's algorithm keeps evaluation
 //! stable (convex combinations only).
 
-use crate::math::binomial;
+use crate::math::{binomial, Complex};
 use glam::{DVec3, DVec4};
 use std::ops::{Add, Mul, Sub};
 
@@ -23,6 +23,7 @@ pub trait Coefficient:
 impl Coefficient for f64 {}
 impl Coefficient for DVec3 {}
 impl Coefficient for DVec4 {}
+impl Coefficient for Complex {}
 
 /// Value, first and second derivative of a Bernstein polynomial at one parameter.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]

@@ -16,6 +16,6 @@ mod surface;
 
 pub use bernstein::MAX_DEGREE;
 pub use curve::{CurveJet, RationalBezierCurve};
-pub use nurbs::{NurbsCurve, NurbsSurface};
+pub use nurbs::{check_nurbs_counts, NurbsCurve, NurbsSurface};
 pub use piecewise::{check_breaks, check_in_domain, locate, PiecewiseCurve, PiecewiseSurface};
 pub use surface::{RationalBezierPatch, SurfaceJet};

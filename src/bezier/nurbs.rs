@@ -41,17 +41,36 @@ pub struct NurbsSurface {
     pub knots_v: Vec<f64>,
 }
 
-/// Checks a clamped knot vector for `pole_count` poles of `degree`; names use the C API's
-/// argument names (`knots`, `knot_count`) with `suffix` ("" or "_u"/"_v").
-fn check_knots(degree: usize, pole_count: usize, knots: &[f64], suffix: &str) -> Result<()> {
-    let p = degree;
-    if knots.len() != pole_count + p + 1 {
+/// Checks degree, pole count and knot count against each other, before any array is read
+/// (so that a wrong count is reported instead of reading past the caller's arrays). Names
+/// use the C API's argument names with `suffix` ("" or "_u"/"_v").
+pub fn check_nurbs_counts(
+    degree: usize,
+    pole_count: usize,
+    knot_count: usize,
+    suffix: &str,
+) -> Result<()> {
+    if degree == 0 || degree > MAX_DEGREE {
+        return invalid!("degree{suffix} = {degree} must lie in 1..={MAX_DEGREE}");
+    }
+    if pole_count < degree + 1 {
         return invalid!(
-            "knot_count{suffix} = {} but pole_count{suffix} + degree{suffix} + 1 = {}",
-            knots.len(),
-            pole_count + p + 1
+            "pole_count{suffix} = {pole_count} is less than degree{suffix} + 1 = {}",
+            degree + 1
         );
     }
+    if pole_count.checked_add(degree + 1) != Some(knot_count) {
+        return invalid!(
+            "knot_count{suffix} = {knot_count} but pole_count{suffix} + degree{suffix} + 1 = {}",
+            pole_count.saturating_add(degree + 1)
+        );
+    }
+    Ok(())
+}
+
+/// Checks a clamped knot vector (its length already checked by [`check_nurbs_counts`]).
+fn check_knots(degree: usize, knots: &[f64], suffix: &str) -> Result<()> {
+    let p = degree;
     if let Some(i) = knots.iter().position(|k| !k.is_finite()) {
         return invalid!("knots{suffix}[{i}] is not finite");
     }
@@ -88,19 +107,6 @@ fn check_knots(degree: usize, pole_count: usize, knots: &[f64], suffix: &str) ->
                 knots[i]
             );
         }
-    }
-    Ok(())
-}
-
-fn check_degree(degree: usize, pole_count: usize, suffix: &str) -> Result<()> {
-    if degree == 0 || degree > MAX_DEGREE {
-        return invalid!("degree{suffix} = {degree} must lie in 1..={MAX_DEGREE}");
-    }
-    if pole_count < degree + 1 {
-        return invalid!(
-            "pole_count{suffix} = {pole_count} is less than degree{suffix} + 1 = {}",
-            degree + 1
-        );
     }
     Ok(())
 }
@@ -168,10 +174,10 @@ impl NurbsCurve {
         weights: Option<Vec<f64>>,
         knots: Vec<f64>,
     ) -> Result<Self> {
-        check_degree(degree, poles.len(), "")?;
+        check_nurbs_counts(degree, poles.len(), knots.len(), "")?;
         let weights = weights.unwrap_or_else(|| vec![1.0; poles.len()]);
         check_poles_and_weights(&poles, &weights)?;
-        check_knots(degree, poles.len(), &knots, "")?;
+        check_knots(degree, &knots, "")?;
         Ok(Self {
             degree,
             poles,
@@ -249,8 +255,8 @@ impl NurbsSurface {
         knots_u: Vec<f64>,
         knots_v: Vec<f64>,
     ) -> Result<Self> {
-        check_degree(degree_u, pole_count_u, "_u")?;
-        check_degree(degree_v, pole_count_v, "_v")?;
+        check_nurbs_counts(degree_u, pole_count_u, knots_u.len(), "_u")?;
+        check_nurbs_counts(degree_v, pole_count_v, knots_v.len(), "_v")?;
         if pole_count_u.checked_mul(pole_count_v) != Some(poles.len()) {
             return invalid!(
                 "pole_count_u × pole_count_v = {pole_count_u} × {pole_count_v} but {} poles given",
@@ -259,8 +265,8 @@ impl NurbsSurface {
         }
         let weights = weights.unwrap_or_else(|| vec![1.0; poles.len()]);
         check_poles_and_weights(&poles, &weights)?;
-        check_knots(degree_u, pole_count_u, &knots_u, "_u")?;
-        check_knots(degree_v, pole_count_v, &knots_v, "_v")?;
+        check_knots(degree_u, &knots_u, "_u")?;
+        check_knots(degree_v, &knots_v, "_v")?;
         Ok(Self {
             degree_u,
             degree_v,

@@ -7,7 +7,7 @@ use super::boundary::{
 };
 use super::status::RmfStatus;
 use super::types::{RmfBezierCurve, RmfNurbsCurve, RmfVec3};
-use crate::bezier::{check_in_domain, NurbsCurve, PiecewiseCurve};
+use crate::bezier::{check_in_domain, check_nurbs_counts, NurbsCurve, PiecewiseCurve};
 use crate::error::Result;
 use std::sync::{Arc, OnceLock};
 
@@ -82,6 +82,8 @@ impl RmfCurve {
 /// @param[in] knot_count Must equal pole_count + degree + 1.
 /// @param[out] out Receives the new curve; the caller frees it with rmf_curve_free.
 ///            Untouched on failure.
+///
+/// Degree and counts are checked against each other before any array is read.
 /// @return RMF_OK on success.
 /// @return RMF_ERROR_NULL_POINTER If poles, knots or out is NULL.
 /// @return RMF_ERROR_INVALID_INPUT If a count, degree, knot, weight or pole is invalid (the
@@ -105,6 +107,7 @@ pub unsafe extern "C" fn rmf_nurbs_curve_create(
         if knots.is_null() {
             return Err(FfiError::Null("knots"));
         }
+        check_nurbs_counts(to_usize(degree), pole_count, knot_count, "")?;
         let poles = slice(poles, pole_count, "poles")?
             .iter()
             .map(|&p| p.into())

@@ -18,7 +18,7 @@ pub mod curve;
 pub mod frames;
 pub mod input;
 pub mod ph_cubic;
-
+pub mod rrmf_quintic;
 pub mod status;
 pub mod surface;
 pub mod types;

@@ -1,8 +1,9 @@
 //! Status codes, the thread-local last-error message, and the library version.
 
 use crate::error::Error;
+use libc::c_char;
 use std::cell::RefCell;
-use std::ffi::{c_char, CString};
+use std::ffi::CString;
 
 /// Result of every rmf_* function that is not a pure accessor.
 ///

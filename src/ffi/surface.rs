@@ -10,7 +10,7 @@ use super::frames::{rational_frames, RmfFrames};
 use super::status::RmfStatus;
 use super::types::{RmfBezierPatch, RmfNurbsSurface, RmfVec3};
 use crate::bezier::homogeneous::project;
-use crate::bezier::{check_in_domain, NurbsSurface, PiecewiseSurface};
+use crate::bezier::{check_in_domain, check_nurbs_counts, NurbsSurface, PiecewiseSurface};
 use crate::error::Result;
 use crate::mesh::{mesh_size, tessellate};
 use crate::sweep::sweep;
@@ -85,6 +85,8 @@ impl RmfSurface {
 /// @param[in] knots_u, knot_count_u Clamped knot vector in u, knot_count_u = pole_count_u + degree_u + 1.
 /// @param[in] knots_v, knot_count_v Clamped knot vector in v, likewise.
 /// @param[out] out Receives the surface; free with rmf_surface_free. Untouched on failure.
+///
+/// Degrees and counts are checked against each other before any array is read.
 /// @return RMF_OK on success.
 /// @return RMF_ERROR_NULL_POINTER If poles, knots_u, knots_v or out is NULL.
 /// @return RMF_ERROR_INVALID_INPUT If a count, degree, knot, weight or pole is invalid (the
@@ -115,6 +117,8 @@ pub unsafe extern "C" fn rmf_nurbs_surface_create(
                 return Err(FfiError::Null(name));
             }
         }
+        check_nurbs_counts(to_usize(degree_u), pole_count_u, knot_count_u, "_u")?;
+        check_nurbs_counts(to_usize(degree_v), pole_count_v, knot_count_v, "_v")?;
         let Some(count) = pole_count_u.checked_mul(pole_count_v) else {
             return invalid_arg(format!(
                 "pole_count_u × pole_count_v = {pole_count_u} × {pole_count_v} overflows"

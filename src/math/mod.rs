@@ -1,18 +1,21 @@
-//! Shared numerical building blocks: binomial coefficients, validated vectors, robust
-//! polynomial root finding, Gauss–Legendre quadrature and 1-D minimization.
+//! Shared numerical building blocks: binomial coefficients, complex numbers, validated vectors,
+//! robust polynomial root finding, Gauss–Legendre quadrature and 1-D minimization.
 //!
 //! Every geometric module takes these from here rather than writing its own.
 
 mod binomial;
+mod complex;
 mod minimize;
 mod quadrature;
 mod roots;
 mod vector;
 
 pub use binomial::binomial;
+pub use complex::Complex;
 pub use minimize::{minimize_bracketed, Minimum};
 pub use quadrature::GaussLegendre;
 pub use roots::{quadratic_roots, real_roots_in, real_roots_power};
 pub use vector::{
-    check_finite, check_point, check_unit_direction, normal_plane_unit, orthonormal_to,
+    check_finite, check_point, check_unit_direction, normal_plane_unit, orthogonalized,
+    orthonormal_to,
 };
