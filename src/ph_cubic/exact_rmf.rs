@@ -68,6 +68,13 @@ impl ExactRmf {
         })
     }
 
+    /// The RMF of a single PH cubic on [0, 1] (e.g. the cubic of Example 2 of the Möbius
+    /// paper, as a reference for convergence tables).
+    pub fn for_cubic(cubic: &PhCubic, initial_normal: DVec3) -> Result<Self> {
+        let spline = PiecewiseCurve::new(vec![cubic.to_bezier()], vec![0.0, 1.0])?;
+        Self::new(&spline, initial_normal, 0.0)
+    }
+
     /// The frame at the spline parameter t.
     pub fn frame(&self, t: f64) -> Frame {
         let (k, v) = locate(&self.breaks, t);
@@ -184,6 +191,21 @@ mod tests {
             .map(|(&t, f)| angle_about_tangent(f, &exact.frame(t)).abs())
             .fold(0.0, f64::max);
         assert!(worst < 1e-9, "{worst}");
+    }
+
+    #[test]
+    fn rmf_of_one_cubic_agrees_with_double_reflection() {
+        let cubic = crate::ph_cubic::test_curves::example_cubic();
+        let exact = ExactRmf::for_cubic(&cubic, DVec3::Z).unwrap();
+        let spline = PiecewiseCurve::new(vec![cubic.to_bezier()], vec![0.0, 1.0]).unwrap();
+        let params = uniform_parameters((0.0, 1.0), 4001);
+        let reference = DoubleReflectionRmf::along(&spline, params.clone(), DVec3::Z).unwrap();
+        let worst = params
+            .iter()
+            .zip(reference.frames())
+            .map(|(&t, f)| angle_about_tangent(f, &exact.frame(t)).abs())
+            .fold(0.0, f64::max);
+        assert!(worst < 1e-10, "{worst}");
     }
 
     #[test]
