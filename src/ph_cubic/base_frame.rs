@@ -99,7 +99,7 @@ impl FrameNumerators {
 }
 
 /// Frame pieces collected into piecewise rational frames on a refinement of a spline's
-/// breakpoints (segment k on [breaks[k], breaks[k+1]], a piece on a part of it).
+/// breakpoints (segment k on `[breaks[k], breaks[k+1]]`, a piece on a part of it).
 pub struct FramePieces<'a> {
     spline_breaks: &'a [f64],
     segments: Vec<RationalFrameSegment>,

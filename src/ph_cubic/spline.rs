@@ -11,7 +11,7 @@ use crate::hermite::{hermite_sequence, HermiteSegment};
 use glam::DVec3;
 
 /// The PH cubic spline through `points` with unit `tangents` (any non-zero length is
-/// normalized): segment i interpolates points[i], points[i + 1] on the parameter interval
+/// normalized): segment i interpolates `points[i]`, `points[i + 1]` on the parameter interval
 /// [i, i + 1].
 pub fn ph_spline_hermite(points: &[DVec3], tangents: &[DVec3]) -> Result<PiecewiseCurve> {
     ph_spline_from_segments(&hermite_sequence(points, tangents)?)
