@@ -211,7 +211,8 @@ pub unsafe extern "C" fn rmf_ph_rational_rmf(
 /// @param[out] out Receives the frames; free with rmf_frames_free. Untouched on failure.
 /// @return RMF_OK on success.
 /// @return RMF_ERROR_NULL_POINTER If ph_spline or out is NULL.
-/// @return RMF_ERROR_INVALID_INPUT As for rmf_ph_rational_rmf; also if twist is not finite,
+/// @return RMF_ERROR_INVALID_INPUT As for rmf_ph_rational_rmf; also if twist is not finite
+///         or so large that the frame would turn by more than π/2 on 1/1024 of a segment,
 ///         or closure_symmetry > 0 for a spline that does not end where it starts with the
 ///         same tangent.
 #[no_mangle]

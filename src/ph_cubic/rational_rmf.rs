@@ -36,6 +36,10 @@ use std::f64::consts::{FRAC_PI_2, PI};
 /// Largest turn of the target angle on one W (see the module notes).
 const MAX_PIECE_TURN: f64 = FRAC_PI_2;
 
+/// Most halvings of a segment for [`MAX_PIECE_TURN`] (2¹⁰ pieces; only an absurd twist
+/// needs more).
+const MAX_HALVINGS: usize = 10;
+
 /// Relative distance between the end and the start of a spine below which it is closed.
 const CLOSED_TOLERANCE: f64 = 1e-9;
 
@@ -96,9 +100,9 @@ pub fn ph_rational_rmf(spline: &PiecewiseCurve, options: &RmfOptions) -> Result<
     let mut fits = Vec::new();
     for k in 0..target.segment_count() {
         let segment = target.segment_target(k);
-        for (v0, v1) in monotone_pieces(&segment) {
-            let (numerators, fit) = piece_frame(&segment, v0, v1)
-                .map_err(|e| in_context(e, &format!("ph_spline segment {k}")))?;
+        let context = |e| in_context(e, &format!("ph_spline segment {k}"));
+        for (v0, v1) in monotone_pieces(&segment).map_err(context)? {
+            let (numerators, fit) = piece_frame(&segment, v0, v1).map_err(context)?;
             pieces.push_all(k, v0, v1, numerators.positive_pieces()?);
             fits.push(PieceFit {
                 segment: k,
@@ -163,7 +167,7 @@ fn check_closed(spline: &PiecewiseCurve) -> Result<()> {
 /// [0, 1] split where the target angle turns back, then halved until no piece turns by
 /// more than [`MAX_PIECE_TURN`]. A piece between two turning points is halved as well: with
 /// zero slopes at both ends the family (37) shrinks to β₁ = 0, far less flexible.
-fn monotone_pieces(segment: &SegmentTarget) -> Vec<(f64, f64)> {
+fn monotone_pieces(segment: &SegmentTarget) -> Result<Vec<(f64, f64)>> {
     let turning = segment.turning_points();
     let mut cuts = vec![0.0];
     for w in turning.windows(2) {
@@ -173,9 +177,9 @@ fn monotone_pieces(segment: &SegmentTarget) -> Vec<(f64, f64)> {
     cuts.push(1.0);
     let mut pieces = Vec::new();
     for w in cuts.windows(2) {
-        halve_while_turning(segment, w[0], w[1], 0, &mut pieces);
+        halve_while_turning(segment, w[0], w[1], 0, &mut pieces)?;
     }
-    pieces
+    Ok(pieces)
 }
 
 fn halve_while_turning(
@@ -184,14 +188,21 @@ fn halve_while_turning(
     b: f64,
     depth: usize,
     out: &mut Vec<(f64, f64)>,
-) {
-    if depth < 40 && (segment.angle(b) - segment.angle(a)).abs() > MAX_PIECE_TURN {
-        let mid = 0.5 * (a + b);
-        halve_while_turning(segment, a, mid, depth + 1, out);
-        halve_while_turning(segment, mid, b, depth + 1, out);
-    } else {
+) -> Result<()> {
+    if (segment.angle(b) - segment.angle(a)).abs() <= MAX_PIECE_TURN {
         out.push((a, b));
+        return Ok(());
     }
+    if depth == MAX_HALVINGS {
+        return invalid!(
+            "the frame would turn by more than π/2 on 1/{} of the segment: the twist is too \
+             large for this spline",
+            1u32 << MAX_HALVINGS
+        );
+    }
+    let mid = 0.5 * (a + b);
+    halve_while_turning(segment, a, mid, depth + 1, out)?;
+    halve_while_turning(segment, mid, b, depth + 1, out)
 }
 
 /// The frame numerators on the part [v0, v1] of a segment: its base frame turned by
@@ -539,5 +550,11 @@ mod tests {
         let (_, t0) = helix(0.0, 0.4);
         let e = ph_rational_rmf(&spline, &RmfOptions::rmf(t0)).unwrap_err();
         assert!(e.message().contains("initial_normal"));
+        let absurd = RmfOptions {
+            twist: 1e9,
+            ..RmfOptions::rmf(DVec3::Z)
+        };
+        let e = ph_rational_rmf(&spline, &absurd).unwrap_err();
+        assert!(e.message().contains("twist is too large"), "{e}");
     }
 }
