@@ -167,14 +167,15 @@ pub enum BaseFrame {
 
 impl BaseFrame {
     pub fn of(cubic: &PhCubic) -> Self {
+        let cubic = cubic.normalized();
         if cubic.bend() > NEARLY_STRAIGHT {
             Self::Frenet {
-                numerators: frenet_numerators(cubic),
-                angle: RmfAngle::of(cubic),
+                numerators: frenet_numerators(&cubic),
+                angle: RmfAngle::of(&cubic),
             }
         } else {
             Self::Carried {
-                numerators: carried_numerators(cubic),
+                numerators: carried_numerators(&cubic),
             }
         }
     }

@@ -185,6 +185,17 @@ impl PhCubic {
         bernstein::evaluate(&self.legs(), v) * 3.0
     }
 
+    /// The same cubic moved to b₀ = 0 and scaled to a longest leg of 1: frames, angles and
+    /// curvature ratios do not change, and the products that compute them neither underflow
+    /// nor overflow for curves of any size.
+    pub fn normalized(&self) -> Self {
+        let longest = self.leg_lengths().iter().fold(0.0f64, |m, &l| m.max(l));
+        let origin = self.points[0];
+        Self {
+            points: self.points.map(|p| (p - origin) / longest),
+        }
+    }
+
     /// Sum of the leg lengths, the criterion of Table 1 for the shape-matching interpolant.
     pub fn polygon_length(&self) -> f64 {
         self.leg_lengths().iter().sum()

@@ -154,12 +154,20 @@ impl SegmentTarget<'_> {
 
     /// The parameters in (0, 1) where g' = 0 (the angle turns back), in increasing order.
     ///
-    /// Ω' = −ρ/q with q = σ/3, so g' = 0 where ω·3q² = ρ: q = √(ρ/(3ω)) when ρ/ω > 0.
+    /// Ω' = −ρ/q with ρ and q = σ/3 of the cubic scaled to a longest leg of 1, while the
+    /// twist term is ω·σ = 3ωℓq for the cubic's longest leg ℓ: g' = 0 where q = √(ρ/(3ωℓ)),
+    /// when ρ/ω > 0.
     pub fn turning_points(&self) -> Vec<f64> {
         let (omega, base) = (self.twist_rate, &self.segment.base);
+        let longest = self
+            .segment
+            .cubic
+            .leg_lengths()
+            .iter()
+            .fold(0.0f64, |m, &l| m.max(l));
         match base {
             BaseFrame::Frenet { angle, .. } if omega != 0.0 => {
-                let level = angle.torsion_constant() / (3.0 * omega);
+                let level = angle.torsion_constant() / (3.0 * omega * longest);
                 if level > 0.0 {
                     angle.where_q_equals(level.sqrt())
                 } else {

@@ -50,16 +50,19 @@ pub struct PhHermiteSolutions {
 /// every root reverses an end tangent, or for parallel end tangents with the chord off their
 /// line.
 pub fn ph_cubic_hermite(data: &HermiteSegment) -> Result<PhHermiteSolutions> {
-    let chord = data.p1 - data.p0;
-    if let Some(line) = straight_interpolant(data, chord)? {
+    // The construction is invariant under scaling: work with a unit chord, so that data of
+    // any size (1e-300 … 1e300) neither underflow nor overflow in the squares of (*).
+    let scale = data.chord_length();
+    let unit_chord = (data.p1 - data.p0) / scale;
+    if let Some(line) = straight_interpolant(data, unit_chord)? {
         return Ok(PhHermiteSolutions {
             shape_matching: line,
             other: None,
         });
     }
-    let mut cubics = leg_lengths(data, chord)?
+    let mut cubics = leg_lengths(data, unit_chord)?
         .into_iter()
-        .map(|(l1, l3)| interpolant(data, l1, l3))
+        .map(|(l1, l3)| interpolant(data, l1 * scale, l3 * scale))
         .collect::<Result<Vec<_>>>()?;
     cubics.sort_by(|a, b| a.polygon_length().total_cmp(&b.polygon_length()));
     let mut cubics = cubics.into_iter();
@@ -74,25 +77,25 @@ pub fn ph_cubic_hermite(data: &HermiteSegment) -> Result<PhHermiteSolutions> {
 /// Collinear data: the straight segment with uniform speed (every cubic on the line with
 /// positive end legs is PH; this is the canonical one). Parallel tangents with the chord off
 /// their line, or pointing against the chord, admit no PH cubic. `None` for other data.
-fn straight_interpolant(data: &HermiteSegment, chord: DVec3) -> Result<Option<PhCubic>> {
+fn straight_interpolant(data: &HermiteSegment, unit_chord: DVec3) -> Result<Option<PhCubic>> {
     let parallel = data.t0.cross(data.t1).length() <= COLLINEAR && data.t0.dot(data.t1) > 0.0;
     if !parallel {
         return Ok(None);
     }
-    let length = chord.length();
-    if chord.cross(data.t0).length() > COLLINEAR * length {
+    if unit_chord.cross(data.t0).length() > COLLINEAR {
         return Err(Error::NoSolution(
             "the end tangents are parallel but the chord p1 − p0 is not along them: no PH cubic \
              interpolates these data"
                 .into(),
         ));
     }
-    if chord.dot(data.t0) <= 0.0 {
+    if unit_chord.dot(data.t0) <= 0.0 {
         return Err(Error::NoSolution(
             "the end tangents point against the chord p1 − p0: no PH cubic interpolates these data"
                 .into(),
         ));
     }
+    let chord = data.p1 - data.p0;
     let b = |i: f64| data.p0 + chord * (i / 3.0);
     Ok(Some(PhCubic::from_trusted_points([
         data.p0,
@@ -102,7 +105,8 @@ fn straight_interpolant(data: &HermiteSegment, chord: DVec3) -> Result<Option<Ph
     ])))
 }
 
-/// The signed leg lengths (L₁, L₃) of every root of (*) (module notes) with L₁, L₃ > 0.
+/// The signed leg lengths (L₁, L₃) of every root of (*) (module notes) with L₁, L₃ > 0, for
+/// the data scaled to the unit chord `chord`.
 fn leg_lengths(data: &HermiteSegment, chord: DVec3) -> Result<Vec<(f64, f64)>> {
     let (t0, t1) = (data.t0, data.t1);
     let k = 0.5 * (t0 + t1);
@@ -124,11 +128,10 @@ fn leg_lengths(data: &HermiteSegment, chord: DVec3) -> Result<Vec<(f64, f64)>> {
         ));
     }
     let difference = -along_q / q2;
-    let scale = chord.length();
     let valid: Vec<(f64, f64)> = sums
         .iter()
         .map(|&s| (0.5 * (s + difference), 0.5 * (s - difference)))
-        .filter(|&(l1, l3)| l1 > 1e-14 * scale && l3 > 1e-14 * scale)
+        .filter(|&(l1, l3)| l1 > 1e-14 && l3 > 1e-14)
         .collect();
     if valid.is_empty() {
         return Err(Error::NoSolution(

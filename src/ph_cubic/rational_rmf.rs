@@ -413,6 +413,39 @@ mod tests {
     }
 
     #[test]
+    fn any_scale_gives_the_same_frames() {
+        let (points, tangents): (Vec<DVec3>, Vec<DVec3>) =
+            (0..=6).map(|i| helix(0.5 * i as f64, 0.4)).unzip();
+        let unit = ph_rational_rmf(
+            &ph_spline_hermite(&points, &tangents).unwrap(),
+            &RmfOptions::rmf(DVec3::Z),
+        )
+        .unwrap();
+        // Powers of two scale exactly: the frames must agree to round-off. Decimal scales
+        // round the data (relative ε); λ, found by Brent's method to about √ε, then moves
+        // and with it W inside a segment, by up to about 1e-12 (never at the joints).
+        for (scale, tolerance) in [
+            (2f64.powi(-500), 1e-15),
+            (2f64.powi(500), 1e-15),
+            (1e-150, 1e-11),
+            (1e150, 1e-11),
+        ] {
+            let scaled: Vec<DVec3> = points.iter().map(|&p| p * scale).collect();
+            let spline = ph_spline_hermite(&scaled, &tangents).unwrap();
+            let rmf = ph_rational_rmf(&spline, &RmfOptions::rmf(DVec3::Z)).unwrap();
+            for i in 0..=60 {
+                let t = 0.1 * i as f64;
+                let (a, b) = (unit.frames.frame(t), rmf.frames.frame(t));
+                assert!(
+                    (a.f2 - b.f2).length() < tolerance,
+                    "scale {scale:e}, t = {t}: {:e}",
+                    (a.f2 - b.f2).length()
+                );
+            }
+        }
+    }
+
+    #[test]
     fn planar_splines_get_the_exact_rmf() {
         let points = [
             DVec3::ZERO,
