@@ -212,7 +212,7 @@ pub unsafe extern "C" fn rmf_ph_rational_rmf(
 /// @return RMF_OK on success.
 /// @return RMF_ERROR_NULL_POINTER If ph_spline or out is NULL.
 /// @return RMF_ERROR_INVALID_INPUT As for rmf_ph_rational_rmf; also if twist is not finite
-///         or so large that the frame would turn by more than π/2 on 1/1024 of a segment,
+///         or so large that a segment would need more than 4096 rational pieces,
 ///         or closure_symmetry > 0 for a spline that does not end where it starts with the
 ///         same tangent.
 #[no_mangle]

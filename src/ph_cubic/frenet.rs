@@ -19,8 +19,9 @@ const STRAIGHT: f64 = 1e-12;
 /// The Frenet frame (19), n = (σx'' − σ'x')/(Kσ), b = x' × x''/(Kσ), K = 6L₂|sin θ| = |x' × x''|/σ.
 ///
 /// Both numerators are quadratic although built from cubic products (their t³ terms cancel
-/// for every quadratic σ and x'), so they are brought back to degree 2; K is taken as the mean
-/// of its values at the two ends, which agree for a PH cubic.
+/// for every quadratic σ and x'), so they are brought back to degree 2. K is taken from both
+/// ends, |b̂(0)|/σ(0) = |b̂(1)|/σ(1) for a PH cubic, weighted towards the longer end leg (whose
+/// rounding matters less).
 pub fn frenet_numerators(cubic: &PhCubic) -> FrameNumerators {
     let d1 = bernstein::derivative(&cubic.control_points());
     let d2 = bernstein::derivative(&d1);
@@ -32,7 +33,7 @@ pub fn frenet_numerators(cubic: &PhCubic) -> FrameNumerators {
         .zip(product(&dsigma, &d1, |s: f64, v: DVec3| v * s))
         .map(|(a, b)| *a - b)
         .collect();
-    let k = 0.5 * (binormal[0].length() / sigma[0] + binormal[3].length() / sigma[2]);
+    let k = (binormal[0].length() + binormal[3].length()) / (sigma[0] + sigma[2]);
     FrameNumerators {
         e2: reduce_degree(&normal),
         e3: reduce_degree(&binormal),

@@ -36,9 +36,13 @@ use std::f64::consts::{FRAC_PI_2, PI};
 /// Largest turn of the target angle on one W (see the module notes).
 const MAX_PIECE_TURN: f64 = FRAC_PI_2;
 
-/// Most halvings of a segment for [`MAX_PIECE_TURN`] (2¹⁰ pieces; only an absurd twist
-/// needs more).
-const MAX_HALVINGS: usize = 10;
+/// Most pieces of one segment for [`MAX_PIECE_TURN`]: the RMF itself turns by less than 2π
+/// on a segment (32), so it needs a few (more where the speed nearly vanishes and the turn
+/// concentrates); only an absurd twist needs more.
+const MAX_PIECES: usize = 4096;
+
+/// Deepest halving (pieces shorter than 2⁻⁴⁰ of a segment are not split further).
+const MAX_HALVINGS: usize = 40;
 
 /// Relative distance between the end and the start of a spine below which it is closed.
 const CLOSED_TOLERANCE: f64 = 1e-9;
@@ -189,15 +193,13 @@ fn halve_while_turning(
     depth: usize,
     out: &mut Vec<(f64, f64)>,
 ) -> Result<()> {
-    if (segment.angle(b) - segment.angle(a)).abs() <= MAX_PIECE_TURN {
+    if (segment.angle(b) - segment.angle(a)).abs() <= MAX_PIECE_TURN || depth == MAX_HALVINGS {
         out.push((a, b));
         return Ok(());
     }
-    if depth == MAX_HALVINGS {
+    if out.len() >= MAX_PIECES {
         return invalid!(
-            "the frame would turn by more than π/2 on 1/{} of the segment: the twist is too \
-             large for this spline",
-            1u32 << MAX_HALVINGS
+            "the frame would need more than {MAX_PIECES} rational pieces on this segment to turn              by at most π/2 on each: the twist is too large for this spline"
         );
     }
     let mid = 0.5 * (a + b);
