@@ -614,14 +614,15 @@ RmfStatus rmf_frames_vector_curve(const struct RmfFrames *frames,
  *             one that follows the shape of the data (Theorem 10); free with
  *             rmf_curve_free. For collinear data: the straight segment.
  * @param[out] other May be NULL. Receives the other interpolant, or NULL when the second
- *             root reverses a tangent (or the data are collinear); free with rmf_curve_free.
+ *             root reverses a tangent or has a numerical cusp (speed below 1e-8 of its
+ *             maximum), or the data are collinear; free with rmf_curve_free.
  * @return RMF_OK on success.
  * @return RMF_ERROR_NULL_POINTER If shape_matching is NULL.
  * @return RMF_ERROR_INVALID_INPUT If a point or tangent is not finite, a tangent is zero, or
  *         p0 and p1 coincide (the message names the argument).
  * @return RMF_ERROR_NO_SOLUTION If no PH cubic interpolates the data: (*) has no real root,
- *         every root reverses a tangent, or the tangents are parallel with the chord off
- *         their line. Nothing is written then.
+ *         every root reverses a tangent or has a numerical cusp, or the tangents are
+ *         parallel with the chord off their line. Nothing is written then.
  */
 RmfStatus rmf_ph_cubic_hermite(struct RmfVec3 p0,
                                struct RmfVec3 t0,
@@ -731,7 +732,7 @@ RmfStatus rmf_ph_rational_rmf(const struct RmfCurve *ph_spline,
  * @return RMF_OK on success.
  * @return RMF_ERROR_NULL_POINTER If ph_spline or out is NULL.
  * @return RMF_ERROR_INVALID_INPUT As for rmf_ph_rational_rmf; also if twist is not finite
- *         or so large that the frame would turn by more than π/2 on 1/1024 of a segment,
+ *         or so large that a segment would need more than 4096 rational pieces,
  *         or closure_symmetry > 0 for a spline that does not end where it starts with the
  *         same tangent.
  */

@@ -36,14 +36,15 @@ use std::ffi::c_void;
 ///             one that follows the shape of the data (Theorem 10); free with
 ///             rmf_curve_free. For collinear data: the straight segment.
 /// @param[out] other May be NULL. Receives the other interpolant, or NULL when the second
-///             root reverses a tangent (or the data are collinear); free with rmf_curve_free.
+///             root reverses a tangent or has a numerical cusp (speed below 1e-8 of its
+///             maximum), or the data are collinear; free with rmf_curve_free.
 /// @return RMF_OK on success.
 /// @return RMF_ERROR_NULL_POINTER If shape_matching is NULL.
 /// @return RMF_ERROR_INVALID_INPUT If a point or tangent is not finite, a tangent is zero, or
 ///         p0 and p1 coincide (the message names the argument).
 /// @return RMF_ERROR_NO_SOLUTION If no PH cubic interpolates the data: (*) has no real root,
-///         every root reverses a tangent, or the tangents are parallel with the chord off
-///         their line. Nothing is written then.
+///         every root reverses a tangent or has a numerical cusp, or the tangents are
+///         parallel with the chord off their line. Nothing is written then.
 #[no_mangle]
 pub unsafe extern "C" fn rmf_ph_cubic_hermite(
     p0: RmfVec3,
