@@ -23,6 +23,89 @@
 #include <stdint.h>
 
 /**
+ * rule of a cone pair: locally minimal vertex distance (12), the useful root. For
+ * intersecting or parallel rulings (cone and cylinder cases): the biarc with equal legs.
+ */
+#define RMF_CONE_RULE_MIN_VERTEX_DISTANCE 0
+
+/**
+ * rule of a cone pair: congruent cones, μ1 = μ2 (cone and cylinder cases: equal legs).
+ */
+#define RMF_CONE_RULE_CONGRUENT 1
+
+/**
+ * rule of a cone pair: the first segment a cylinder (10).
+ */
+#define RMF_CONE_RULE_CYLINDER_FIRST 2
+
+/**
+ * rule of a cone pair: the second segment a cylinder.
+ */
+#define RMF_CONE_RULE_CYLINDER_SECOND 3
+
+/**
+ * rule of a cone pair: the given parameter: μ1 (vertex v1 = a1 + μ1 e1 on the first
+ * ruling, a1 where it touches the inscribed sphere or meets the plane π), or λ1 (the first
+ * leg of the biarc) in the cone and cylinder cases.
+ */
+#define RMF_CONE_RULE_GIVEN 4
+
+/**
+ * RmfConePiece.kind: a segment of a right circular cone.
+ */
+#define RMF_CONE_PIECE_CONE 0
+
+/**
+ * RmfConePiece.kind: a segment of a cylinder of revolution.
+ */
+#define RMF_CONE_PIECE_CYLINDER 1
+
+/**
+ * RmfConePiece.kind: a plane sector (has a vertex) or a plane strip (parallel rulings).
+ */
+#define RMF_CONE_PIECE_PLANE 2
+
+/**
+ * RmfConePiece.pair_case: general case (skew rulings, inscribed sphere).
+ */
+#define RMF_CONE_CASE_GENERAL 0
+
+/**
+ * RmfConePiece.pair_case: the rulings intersect (common vertex).
+ */
+#define RMF_CONE_CASE_CONE 1
+
+/**
+ * RmfConePiece.pair_case: parallel rulings.
+ */
+#define RMF_CONE_CASE_CYLINDER 2
+
+/**
+ * RmfConePiece.pair_case: constant slope, det(p1, p2, n1 − n2) = 0 (13).
+ */
+#define RMF_CONE_CASE_CONSTANT_SLOPE 3
+
+/**
+ * RmfConePiece.pair_case: equal tangent planes (one plane piece).
+ */
+#define RMF_CONE_CASE_PLANE 4
+
+/**
+ * RmfConePiece.pair_case: not made by a cone pair (osculating cone splines).
+ */
+#define RMF_CONE_CASE_NONE 5
+
+/**
+ * rmf_cone_spline_fit_parameters: the parameters of the selected rulings.
+ */
+#define RMF_CONE_FIT_ELEMENTS 0
+
+/**
+ * rmf_cone_spline_fit_parameters: the parameters of the inflection generators found.
+ */
+#define RMF_CONE_FIT_INFLECTIONS 1
+
+/**
  * rmf_frames_kind: exact piecewise rational frames (usable by rmf_sweep_surface).
  */
 #define RMF_FRAMES_RATIONAL 0
@@ -161,6 +244,12 @@ typedef uint32_t RmfStatus;
 #endif // __cplusplus
 
 /**
+ * A cone spline surface (opaque). Freed with rmf_cone_spline_free. Immutable; may be read
+ * from several threads at once.
+ */
+typedef struct RmfConeSpline RmfConeSpline;
+
+/**
  * A piecewise rational Bézier space curve (opaque). Created by the rmf_* constructors,
  * freed with rmf_curve_free. Immutable; may be read from several threads at once.
  */
@@ -188,6 +277,115 @@ typedef struct RmfVec3 {
   double y;
   double z;
 } RmfVec3;
+
+/**
+ * A G1 Hermite element: a ruling through `point` with direction `ruling` and the tangent
+ * plane spanned by `ruling` and `side`. `side` is normal to `ruling` and points to where the
+ * next piece attaches; the normal ruling × side must point to one side of the surface all
+ * along a sequence. Directions need not be unit vectors.
+ */
+typedef struct RmfConeElement {
+  /**
+   * A point on the ruling, where the surface is wanted (decides the nappe of a cone) and
+   * the origin of the distances along the rulings.
+   */
+  struct RmfVec3 point;
+  /**
+   * The ruling direction (orientation of the generators).
+   */
+  struct RmfVec3 ruling;
+  /**
+   * The side vector in the tangent plane, normal to the ruling.
+   */
+  struct RmfVec3 side;
+} RmfConeElement;
+
+/**
+ * An axis-aligned box min ≤ x ≤ max: the region of interest Ω.
+ */
+typedef struct RmfBox {
+  struct RmfVec3 min;
+  struct RmfVec3 max;
+} RmfBox;
+
+/**
+ * An analytic curve given by the caller: writes the point and the tangent (the derivative,
+ * or any non-zero multiple of it) at parameter t into *point and *tangent. It must not
+ * unwind or longjmp; it is called from the calling thread only, during the call it was
+ * passed to.
+ */
+typedef void (*RmfCurveCallback)(double t,
+                                 void *user,
+                                 struct RmfVec3 *point,
+                                 struct RmfVec3 *tangent);
+
+/**
+ * The data of one piece of a cone spline.
+ */
+typedef struct RmfConePiece {
+  /**
+   * RMF_CONE_PIECE_CONE, RMF_CONE_PIECE_CYLINDER or RMF_CONE_PIECE_PLANE.
+   */
+  uint32_t kind;
+  /**
+   * Which case of the paper the cone pair of this piece fell into (RMF_CONE_CASE_*).
+   */
+  uint32_t pair_case;
+  /**
+   * 1 if the piece has a vertex (cones and plane sectors), else 0.
+   */
+  uint32_t has_vertex;
+  /**
+   * The vertex (valid if has_vertex).
+   */
+  struct RmfVec3 vertex;
+  /**
+   * A point on the axis: the vertex, or a point of a cylinder's axis; for a plane strip
+   * the start point.
+   */
+  struct RmfVec3 axis_point;
+  /**
+   * Unit axis direction, oriented like the rulings; a plane strip's normal.
+   */
+  struct RmfVec3 axis;
+  /**
+   * Half opening angle α between rulings and axis (0 for cylinders, π/2 for planes).
+   */
+  double half_angle;
+  /**
+   * Segment angle φ of the rotation about the axis (0 for plane strips).
+   */
+  double segment_angle;
+  /**
+   * The angle of the developed sector, φ sin α (0 for cylinders and strips).
+   */
+  double developed_angle;
+  /**
+   * Radius of a cylinder (0 otherwise).
+   */
+  double radius;
+  /**
+   * Width of the developed piece along its side for cylinders (r φ) and strips; else 0.
+   */
+  double developed_width;
+  /**
+   * The bounding rulings: reference point, unit direction and unit side vector at the
+   * start and at the end of the piece.
+   */
+  struct RmfVec3 start_point;
+  struct RmfVec3 start_ruling;
+  struct RmfVec3 start_side;
+  struct RmfVec3 end_point;
+  struct RmfVec3 end_ruling;
+  struct RmfVec3 end_side;
+  /**
+   * The piece's patches in the surface (rmf_cone_spline_surface): patch indices
+   * first_patch .. first_patch + patch_count − 1 along v; the piece spans
+   * v ∈ [index, index + 1].
+   */
+  size_t first_patch;
+  size_t patch_count;
+} RmfConePiece;
 
 /**
  * Borrowed view of a NURBS curve, the layout of OpenCascade Geom_BSplineCurve, FreeCAD
@@ -243,17 +441,6 @@ typedef struct RmfBezierCurve {
   double t_start;
   double t_end;
 } RmfBezierCurve;
-
-/**
- * An analytic curve given by the caller: writes the point and the tangent (the derivative,
- * or any non-zero multiple of it) at parameter t into *point and *tangent. It must not
- * unwind or longjmp; it is called from the calling thread only, during the call it was
- * passed to.
- */
-typedef void (*RmfCurveCallback)(double t,
-                                 void *user,
-                                 struct RmfVec3 *point,
-                                 struct RmfVec3 *tangent);
 
 /**
  * Where a sweep comes closest to being singular (Corollary 7 of Mäurer & Jüttler).
@@ -390,6 +577,313 @@ typedef struct RmfBezierPatch {
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
+
+/**
+ * Creates the cone spline through G1 Hermite elements: one cone pair (or one plane piece)
+ * between consecutive elements, every case of the paper (general, cone, cylinder,
+ * constant slope, plane), chosen by `rule`, with no vertex inside `region`.
+ *
+ * @param[in] elements count elements (finite; side normal to ruling).
+ * @param[in] count Number of elements, ≥ 2.
+ * @param[in] rule One of RMF_CONE_RULE_*.
+ * @param[in] parameter μ1 or λ1 for RMF_CONE_RULE_GIVEN (finite); ignored otherwise.
+ * @param[in] region The region of interest Ω, or NULL for none. Element points must lie in
+ *            it; solutions with a vertex in it are not used (the useful root, or vertices
+ *            just outside Ω for the default rule).
+ * @param[out] out Receives the spline; free with rmf_cone_spline_free. Untouched on failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If elements or out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If count < 2, a value is not finite, a direction is zero,
+ *         a side is not normal to its ruling, consecutive rulings are parallel with opposite
+ *         orientation or coincide, consecutive side vectors are inconsistent (normals to
+ *         opposite sides), the rule is unknown, or an element point is outside the region.
+ * @return RMF_ERROR_NO_SOLUTION If no cone pair of the rule joins two elements
+ *         consistently, or the region contains every possible vertex.
+ */
+RmfStatus rmf_cone_spline_hermite(const struct RmfConeElement *elements,
+                                  size_t count,
+                                  uint32_t rule,
+                                  double parameter,
+                                  const struct RmfBox *region,
+                                  struct RmfConeSpline **out);
+
+/**
+ * Approximates the tangent surface x(t) + v e(t) of a space curve (e = x'/|x'|) over
+ * v ∈ [v_min, v_max] by a cone spline: inflection generators (zero torsion) are kept as
+ * junctions, further rulings are chosen adaptively until the largest distance from the
+ * surface's region to the cone spline is ≤ tolerance.
+ *
+ * The curve is `curve` (its whole domain), or `callback` on [t_min, t_max]; exactly one of
+ * them. It must be regular with non-zero curvature.
+ *
+ * @param[in] curve A curve (e.g. from rmf_nurbs_curve_create), or NULL.
+ * @param[in] callback Point and derivative of an analytic curve, or NULL; called on this
+ *            thread during the call only; must not unwind or longjmp.
+ * @param[in] user Passed to callback.
+ * @param[in] t_min, t_max The callback's parameter interval (ignored for curve).
+ * @param[in] v_min, v_max The region along the rulings, distances from the curve point:
+ *            finite, v_min < v_max, 0 ∉ [v_min, v_max] (the curve is the singular edge).
+ * @param[in] tolerance Largest allowed distance, > 0.
+ * @param[in] rule One of RMF_CONE_RULE_* except RMF_CONE_RULE_GIVEN.
+ * @param[in] max_pieces Largest number of pieces, ≥ 2.
+ * @param[out] out Receives the spline; free with rmf_cone_spline_free. Its reference
+ *             point is x(t_min) + (v_min + v_max)/2 e(t_min).
+ * @param[out] max_error Receives the largest sampled distance; may be NULL.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If out is NULL, or both curve and callback are.
+ * @return RMF_ERROR_INVALID_INPUT For bad numbers, both curve and callback given, or an
+ *         unknown rule.
+ * @return RMF_ERROR_NO_SOLUTION If the curve has zero curvature somewhere (no tangent plane).
+ * @return RMF_ERROR_NOT_CONVERGED If the tolerance needs more than max_pieces pieces.
+ */
+RmfStatus rmf_cone_spline_approximate(const struct RmfCurve *curve,
+                                      RmfCurveCallback callback,
+                                      void *user,
+                                      double t_min,
+                                      double t_max,
+                                      double v_min,
+                                      double v_max,
+                                      double tolerance,
+                                      uint32_t rule,
+                                      size_t max_pieces,
+                                      struct RmfConeSpline **out,
+                                      double *max_error);
+
+/**
+ * Approximates a developable ruled surface of degree (1, n) — rulings along u, e.g.
+ * spanned between two rails — over its whole domain, as rmf_cone_spline_approximate does
+ * for tangent surfaces. Developability is checked first: the surface's own Gaussian
+ * curvature is measured on a grid.
+ *
+ * @param[in] surface A surface with degree_u = 1 and pole_count_u = 2 (e.g. from
+ *            rmf_nurbs_surface_create); its parameter v runs along the rails.
+ * @param[in] tolerance, rule, max_pieces As for rmf_cone_spline_approximate.
+ * @param[out] out Receives the spline; its reference point is the middle of the first ruling.
+ * @param[out] max_error Receives the largest sampled distance; may be NULL.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If surface or out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If the surface is not of degree 1 in u with one span, or
+ *         is not developable (the message gives its max |K|·size²), or for bad numbers.
+ * @return RMF_ERROR_NO_SOLUTION, RMF_ERROR_NOT_CONVERGED As for rmf_cone_spline_approximate.
+ */
+RmfStatus rmf_cone_spline_approximate_ruled(const struct RmfSurface *surface,
+                                            double tolerance,
+                                            uint32_t rule,
+                                            size_t max_pieces,
+                                            struct RmfConeSpline **out,
+                                            double *max_error);
+
+/**
+ * Approximates a developable surface in the dual form (4) of the paper: a clamped
+ * B-spline curve of planes U(t) = Σ Uᵢ Nᵢ(t), u0 + u1 x + u2 y + u3 z = 0, whose rulings
+ * are U ∩ U'. The region of interest is a box; each ruling is used where it crosses it.
+ *
+ * @param[in] degree Degree k ≥ 1 of the B-spline.
+ * @param[in] planes plane_count control planes, 4 doubles each: u0, u1, u2, u3.
+ * @param[in] plane_count Number of control planes, ≥ degree + 1.
+ * @param[in] knots knot_count clamped knots, knot_count = plane_count + degree + 1.
+ * @param[in] region The region of interest; every ruling must cross it, and it should
+ *            exclude the line of regression.
+ * @param[in] tolerance, rule, max_pieces As for rmf_cone_spline_approximate.
+ * @param[out] out Receives the spline; free with rmf_cone_spline_free.
+ * @param[out] max_error Receives the largest sampled distance; may be NULL.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If planes, knots, region or out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT For bad counts, knots, non-finite planes or numbers.
+ * @return RMF_ERROR_NO_SOLUTION If a ruling misses the box or U and U' are parallel.
+ * @return RMF_ERROR_NOT_CONVERGED If the tolerance needs more than max_pieces pieces.
+ */
+RmfStatus rmf_cone_spline_approximate_dual(uint32_t degree,
+                                           const double *planes,
+                                           size_t plane_count,
+                                           const double *knots,
+                                           size_t knot_count,
+                                           const struct RmfBox *region,
+                                           double tolerance,
+                                           uint32_t rule,
+                                           size_t max_pieces,
+                                           struct RmfConeSpline **out,
+                                           double *max_error);
+
+/**
+ * The osculating cone spline of a tangent surface (Section "Osculating cone splines"):
+ * the osculating cones along the rulings at `parameters` (vertex on the curve, axis along
+ * the Darboux vector τe + κb), consecutive ones joined by a filling cone found from the
+ * quartic (14), keeping the consistent solutions. Consecutive parameters must be close
+ * enough for a consistent filling cone to exist.
+ *
+ * @param[in] curve, callback, user, t_min, t_max The curve, as for rmf_cone_spline_approximate.
+ * @param[in] v_min, v_max The region along the rulings, as for rmf_cone_spline_approximate.
+ * @param[in] parameters count increasing curve parameters inside the domain.
+ * @param[in] count Number of osculating cones, ≥ 2.
+ * @param[out] out Receives the spline; free with rmf_cone_spline_free.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If parameters or out is NULL, or both curve and callback are.
+ * @return RMF_ERROR_INVALID_INPUT For bad numbers or parameters not increasing.
+ * @return RMF_ERROR_NO_SOLUTION If two consecutive osculating cones cannot be joined
+ *         consistently, or an osculating cone is a cylinder (zero curvature of the curve).
+ */
+RmfStatus rmf_cone_spline_osculating(const struct RmfCurve *curve,
+                                     RmfCurveCallback callback,
+                                     void *user,
+                                     double t_min,
+                                     double t_max,
+                                     double v_min,
+                                     double v_max,
+                                     const double *parameters,
+                                     size_t count,
+                                     struct RmfConeSpline **out);
+
+/**
+ * Frees a cone spline. NULL is a no-op.
+ */
+void rmf_cone_spline_free(struct RmfConeSpline *spline);
+
+/**
+ * The number of pieces of a cone spline.
+ *
+ * @return RMF_OK, or RMF_ERROR_NULL_POINTER if spline or count is NULL.
+ */
+RmfStatus rmf_cone_spline_piece_count(const struct RmfConeSpline *spline, size_t *count);
+
+/**
+ * The data of piece `index`: kind, vertex, axis, half angle α, segment angle φ, the
+ * bounding rulings, and where its patches are in the surface.
+ *
+ * @param[in] spline The spline.
+ * @param[in] index 0 ≤ index < piece count.
+ * @param[out] piece Receives the data (a copy).
+ * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if index is out of range.
+ */
+RmfStatus rmf_cone_spline_piece(const struct RmfConeSpline *spline,
+                                size_t index,
+                                struct RmfConePiece *piece);
+
+/**
+ * The exact surface of a cone spline between two signed distances along the rulings,
+ * measured from the reference points (the first element's point, carried along the
+ * parallel circles): every piece one degree (1, 2) rational Bézier patch (or a few, for
+ * segment angles above 120°), u ∈ [t_min, t_max] the distance along the rulings, v ∈
+ * [k, k + 1] on piece k. The result is one NURBS surface (rmf_surface_nurbs) of degree
+ * (1, 2), G1 across the shared rulings. Its bounds u = t_min, t_max are parallel-circle arc
+ * splines (rmf_cone_spline_boundary), orthogonal to the rulings.
+ *
+ * @param[in] spline The spline.
+ * @param[in] t_min, t_max Finite, t_min < t_max; the strip must contain no vertex.
+ * @param[out] out Receives the surface; free with rmf_surface_free. Untouched on failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If spline or out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If the bounds are not finite, not increasing, or the strip
+ *         contains a vertex (the message names the piece).
+ */
+RmfStatus rmf_cone_spline_surface(const struct RmfConeSpline *spline,
+                                  double t_min,
+                                  double t_max,
+                                  struct RmfSurface **out);
+
+/**
+ * The bounds for rmf_cone_spline_surface from a region box: the widest strip whose ruling
+ * segments all lie in the box (rulings sampled per piece, the extremes refined by Brent's
+ * method), and where vertices fall inside that range, its widest part free of them.
+ *
+ * @param[in] spline The spline.
+ * @param[in] region The box.
+ * @param[out] t_min, t_max Receive the bounds.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If an argument is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If the box is not finite or min ≥ max somewhere.
+ * @return RMF_ERROR_NO_SOLUTION If some ruling misses the box or no strip fits.
+ */
+RmfStatus rmf_cone_spline_bounds_in_box(const struct RmfConeSpline *spline,
+                                        const struct RmfBox *region,
+                                        double *t_min,
+                                        double *t_max);
+
+/**
+ * The boundary curve at signed distance t along the rulings: a G1 spline of circular arcs
+ * (the parallel circles; straight lines on plane strips), exact rational quadratics, with
+ * the surface's v parameter.
+ *
+ * @param[out] out Receives the curve; free with rmf_curve_free.
+ * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if t is not finite.
+ */
+RmfStatus rmf_cone_spline_boundary(const struct RmfConeSpline *spline,
+                                   double t,
+                                   struct RmfCurve **out);
+
+/**
+ * The stage s of the bending sequence (Fig. 17): every piece bent isometrically at once —
+ * a cone's half angle α moves linearly to π/2 with φ sin α kept, a cylinder's curvature
+ * scales by 1 − s —, each laid on the end ruling and tangent plane of the one before.
+ * Ruling lengths, vertex distances, boundary lengths and angles are kept. The first
+ * ruling and its tangent plane stay fixed: s = 0 is the spline itself, s = 1 its flat
+ * development in the first tangent plane.
+ *
+ * @param[in] spline The spline.
+ * @param[in] s In [0, 1].
+ * @param[out] out Receives the bent spline; free with rmf_cone_spline_free.
+ * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if s is not in [0, 1].
+ */
+RmfStatus rmf_cone_spline_bend(const struct RmfConeSpline *spline,
+                               double s,
+                               struct RmfConeSpline **out);
+
+/**
+ * The exact development of a cone spline into the plane z = 0: each cone piece a sector of
+ * angle φ_n = φ sin α about its developed vertex, cylinders and strips rectangles of width
+ * r φ, laid edge to edge along the shared rulings; the first reference point at the
+ * origin, the first ruling along +x and its side vector along +y. Its surface
+ * (rmf_cone_spline_surface with the same bounds) is planar with lines and circular arcs as
+ * boundaries, isometric to the spline's.
+ *
+ * @param[out] out Receives the development; free with rmf_cone_spline_free.
+ * @return RMF_OK, or RMF_ERROR_NULL_POINTER if an argument is NULL.
+ */
+RmfStatus rmf_cone_spline_develop(const struct RmfConeSpline *spline, struct RmfConeSpline **out);
+
+/**
+ * The offset of a cone spline at signed distance d along the normals ruling × side: again
+ * a cone spline (same axes and half angles, shifted vertices), exact.
+ *
+ * @param[out] out Receives the offset; free with rmf_cone_spline_free.
+ * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if d is not finite.
+ */
+RmfStatus rmf_cone_spline_offset(const struct RmfConeSpline *spline,
+                                 double d,
+                                 struct RmfConeSpline **out);
+
+/**
+ * The deviation an approximation reached (rmf_cone_spline_approximate*; kept by
+ * bending, development and offsets).
+ *
+ * @param[out] max_error Receives the largest sampled distance to the input surface.
+ * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if the spline was
+ *         not made by an approximation.
+ */
+RmfStatus rmf_cone_spline_fit_error(const struct RmfConeSpline *spline, double *max_error);
+
+/**
+ * Copies the parameters an approximation selected (RMF_CONE_FIT_ELEMENTS: the rulings
+ * joined by cone pairs, increasing) or found (RMF_CONE_FIT_INFLECTIONS: the inflection
+ * generators, which are among the elements).
+ *
+ * Size query: with capacity 0 (values may be NULL) only count is written.
+ *
+ * @param[in] which RMF_CONE_FIT_ELEMENTS or RMF_CONE_FIT_INFLECTIONS.
+ * @param[out] values Buffer for capacity values.
+ * @param[out] count Receives the number of values.
+ * @return RMF_OK on success or for a size query.
+ * @return RMF_ERROR_NULL_POINTER If spline or count is NULL, or values is NULL with a
+ *         non-zero capacity.
+ * @return RMF_ERROR_INVALID_INPUT If which is unknown or the spline was not made by an
+ *         approximation.
+ * @return RMF_ERROR_BUFFER_TOO_SMALL If capacity is non-zero but too small; count is written.
+ */
+RmfStatus rmf_cone_spline_fit_parameters(const struct RmfConeSpline *spline,
+                                         uint32_t which,
+                                         double *values,
+                                         size_t capacity,
+                                         size_t *count);
 
 /**
  * Creates a curve from NURBS data (poles, optional weights, clamped knot vector).

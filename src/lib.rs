@@ -14,6 +14,7 @@
 //! | [`sweep`] | sweep surfaces x + c₂ f₂ + c₃ f₃ with exact rational frames |
 //! | [`ph_cubic`] | PH cubic splines, their exact and rational RMFs, profile-surface analysis (Mäurer & Jüttler) |
 //! | [`rrmf_quintic`] | quintics with exact rational RMFs by G1 Hermite interpolation (Farouki, Giannelli & Sestini) |
+//! | [`cone_spline`] | cone spline surfaces: G1 cone pairs, approximation of developables, development, bending, offsets |
 //! | `ffi` | the C API: handles, status codes, last error, panic boundary |
 //!
 //! The geometry lives in safe Rust and knows nothing of C; a Rust user calls it directly.
@@ -21,6 +22,8 @@
 
 /// cbindgen:ignore
 pub mod bezier;
+/// cbindgen:ignore
+pub mod cone_spline;
 /// cbindgen:ignore
 pub mod curve;
 /// cbindgen:ignore

@@ -10,8 +10,10 @@
  *   2. a rational NURBS surface given as input, tessellated by the library;
  *   3. RRMF quintics (Farouki, Giannelli & Sestini): the Hermite interpolants of Example 1,
  *      the helix spline of Example 3 with its exact rational RMF, and a developable strip
- *      and a pipe swept along it.
- *   4. profile surfaces along PH cubic splines: a moulding along a conical helix with the
+ *      and a pipe swept along it;
+ *   4. a cone spline approximating the tangent surface of a twisted cubic (.obj/.vtp), and
+ *      its exact development as SVG with true circular arcs;
+ *   5. profile surfaces along PH cubic splines: a moulding along a conical helix with the
  *      rational RMF and with the Frenet frame, and a square tube along a closed trefoil.
  */
 #define _POSIX_C_SOURCE 200809L
@@ -142,6 +144,26 @@ static void write_ribbon(const char *name, const RmfVec3 *x, const RmfVec3 *f2, 
     free(tri);
 }
 
+/* The surface tessellated by the library, written as <name>.obj and <name>.vtp. */
+static void write_tessellation(const RmfSurface *surface, uint32_t u_steps, uint32_t v_steps, const char *name,
+                               const char *what) {
+    RmfVec3 *points;
+    uint32_t *triangles;
+    size_t np, nt;
+    char obj[256], vtp[256];
+    TRY(rmf_surface_tessellate(surface, u_steps, v_steps, NULL, 0, NULL, 0, &np, &nt));
+    points = (RmfVec3 *)malloc(np * sizeof *points);
+    triangles = (uint32_t *)malloc(3 * nt * sizeof *triangles);
+    if (!points || !triangles) exit(1);
+    TRY(rmf_surface_tessellate(surface, u_steps, v_steps, points, np, triangles, nt, &np, &nt));
+    snprintf(obj, sizeof obj, "%s.obj", name);
+    snprintf(vtp, sizeof vtp, "%s.vtp", name);
+    write_mesh_obj(obj, points, np, triangles, nt, what);
+    write_mesh_vtp(vtp, points, np, triangles, nt, "the same mesh as VTK PolyData");
+    free(points);
+    free(triangles);
+}
+
 /* ---- 1. a NURBS curve with its rotation-minimizing and Frenet frames ---- */
 
 static void demo_curve_and_frames(void) {
@@ -196,11 +218,9 @@ static void demo_tessellated_surface(void) {
     const double s = sqrt(0.5);
     const double ring[3][3] = {{1, 0, 1}, {1, 1, s}, {0, 1, 1}};
     const double knots[6] = {0, 0, 0, 1, 1, 1};
-    RmfVec3 poles[9], *points;
+    RmfVec3 poles[9];
     double weights[9];
-    uint32_t *triangles;
     RmfSurface *surface = NULL;
-    size_t np, nt;
     int i, j;
 
     printf("2. rational NURBS surface (a quarter of a torus), tessellated by the library\n");
@@ -215,35 +235,11 @@ static void demo_tessellated_surface(void) {
         }
     /* Middle poles of the tube circle sit on the tangent lines: r = 2 + 0.5, z = 0.5. */
     TRY(rmf_nurbs_surface_create(2, 2, poles, weights, 3, 3, knots, 6, knots, 6, &surface));
-    TRY(rmf_surface_tessellate(surface, 24, 24, NULL, 0, NULL, 0, &np, &nt));
-    points = (RmfVec3 *)malloc(np * sizeof *points);
-    triangles = (uint32_t *)malloc(3 * nt * sizeof *triangles);
-    if (!points || !triangles) exit(1);
-    TRY(rmf_surface_tessellate(surface, 24, 24, points, np, triangles, nt, &np, &nt));
-    write_mesh_obj("torus_patch.obj", points, np, triangles, nt, "tessellated rational NURBS surface");
-    write_mesh_vtp("torus_patch.vtp", points, np, triangles, nt, "the same mesh as VTK PolyData");
-    free(points);
-    free(triangles);
+    write_tessellation(surface, 24, 24, "torus_patch", "tessellated rational NURBS surface");
     rmf_surface_free(surface);
 }
 
 /* ---- 3. RRMF quintics: Hermite interpolants, a spline with its exact rational RMF, sweeps ---- */
-
-/* Tessellates a surface and writes it as .obj and .vtp. */
-static void write_surface(RmfSurface *surface, const char *obj, const char *vtp, const char *what) {
-    RmfVec3 *points;
-    uint32_t *triangles;
-    size_t np, nt;
-    TRY(rmf_surface_tessellate(surface, 8, 6, NULL, 0, NULL, 0, &np, &nt));
-    points = (RmfVec3 *)malloc(np * sizeof *points);
-    triangles = (uint32_t *)malloc(3 * nt * sizeof *triangles);
-    if (!points || !triangles) exit(1);
-    TRY(rmf_surface_tessellate(surface, 8, 6, points, np, triangles, nt, &np, &nt));
-    write_mesh_obj(obj, points, np, triangles, nt, what);
-    write_mesh_vtp(vtp, points, np, triangles, nt, what);
-    free(points);
-    free(triangles);
-}
 
 static void demo_rrmf_quintics(void) {
     /* Example 1 of Farouki, Giannelli & Sestini, and the helix data of their Example 3. */
@@ -306,9 +302,9 @@ static void demo_rrmf_quintics(void) {
     TRY(rmf_nurbs_curve_create(2, circle_poles, circle_weights, 9, circle_knots, 12, &circle));
     TRY(rmf_sweep_surface(spline, frames, line, &strip));
     TRY(rmf_sweep_surface(spline, frames, circle, &tube));
-    write_surface(strip, "rrmf_developable_strip.obj", "rrmf_developable_strip.vtp",
+    write_tessellation(strip, 8, 6, "rrmf_developable_strip",
                   "line swept with the RMF: a developable surface");
-    write_surface(tube, "rrmf_tube.obj", "rrmf_tube.vtp", "circle swept with the RMF: a pipe, exact rational");
+    write_tessellation(tube, 8, 6, "rrmf_tube", "circle swept with the RMF: a pipe, exact rational");
     rmf_surface_free(strip);
     rmf_surface_free(tube);
     rmf_curve_free(line);
@@ -317,7 +313,115 @@ static void demo_rrmf_quintics(void) {
     rmf_curve_free(spline);
 }
 
-/* ---- 4. profile surfaces along a PH cubic spline (Mäurer & Jüttler) ---- */
+/* ---- 4. a cone spline and its development ---- */
+
+static void twisted_cubic(double t, void *user, RmfVec3 *point, RmfVec3 *tangent) {
+    (void)user;
+    point->x = t, point->y = t * t, point->z = t * t * t;
+    tangent->x = 1, tangent->y = 2 * t, tangent->z = 3 * t * t;
+}
+
+/* Appends a boundary arc spline to an SVG path: each segment is a rational quadratic
+ * circular arc (poles P0, P1, P2, weights w0, w1, w2; cos(theta/2) = w1 / sqrt(w0 w2)),
+ * written as a true SVG arc, or a line where it is straight. `forward` = 0 walks it
+ * backwards. y is flipped (SVG's y points down). */
+static void svg_arcs(FILE *f, const RmfCurve *curve, int forward, double scale) {
+    size_t n = 0, k;
+    rmf_curve_segment_count(curve, &n);
+    for (k = 0; k < n; k++) {
+        RmfBezierCurve seg;
+        RmfVec3 a, b, m;
+        double c, half, radius, turn;
+        TRY(rmf_curve_segment(curve, forward ? k : n - 1 - k, &seg));
+        a = seg.poles[forward ? 0 : 2], m = seg.poles[1], b = seg.poles[forward ? 2 : 0];
+        c = hypot(b.x - a.x, b.y - a.y);
+        half = acos(fmin(1.0, seg.weights[1] / sqrt(seg.weights[0] * seg.weights[2])));
+        turn = (m.x - a.x) * (b.y - m.y) - (m.y - a.y) * (b.x - m.x);
+        if (half < 1e-9 || c == 0) {
+            fprintf(f, " L %.9g %.9g", scale * b.x, -scale * b.y);
+            continue;
+        }
+        radius = c / (2 * sin(half));
+        /* large-arc 0 (every patch spans at most 120 degrees); the sweep flips with y. */
+        fprintf(f, " A %.9g %.9g 0 0 %d %.9g %.9g", scale * radius, scale * radius, turn > 0 ? 0 : 1, scale * b.x,
+                -scale * b.y);
+    }
+}
+
+static void demo_cone_spline(void) {
+    const double t_min = -0.3, t_max = 0.3, scale = 100;
+    RmfConeSpline *spline = NULL, *flat = NULL;
+    RmfSurface *surface = NULL;
+    RmfCurve *lower = NULL, *upper = NULL;
+    RmfConePiece piece;
+    RmfVec3 start;
+    size_t pieces, k;
+    double deviation;
+    char path[1024];
+    FILE *f;
+
+    printf("4. cone spline approximating the tangent surface of (t, t^2, t^3), and its development\n");
+    TRY(rmf_cone_spline_approximate(NULL, twisted_cubic, NULL, 0.2, 1.2, 0.5, 6.0, 1e-4,
+                                    RMF_CONE_RULE_MIN_VERTEX_DISTANCE, 10000, &spline, &deviation));
+    TRY(rmf_cone_spline_piece_count(spline, &pieces));
+    printf("  %zu cone pieces, max deviation %.2e from the surface (tolerance 1e-4)\n", pieces, deviation);
+    TRY(rmf_cone_spline_surface(spline, t_min, t_max, &surface));
+    write_tessellation(surface, 4, 8, "cone_spline", "cone spline surface (rulings are mesh lines)");
+
+    /* The development: boundaries are planar arc splines, the rulings straight lines. */
+    TRY(rmf_cone_spline_develop(spline, &flat));
+    TRY(rmf_cone_spline_boundary(flat, t_min, &lower));
+    TRY(rmf_cone_spline_boundary(flat, t_max, &upper));
+    {
+        /* The view box: the arcs lie in the hulls of their Bézier poles (positive weights). */
+        double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+        const RmfCurve *edges[2];
+        size_t e, j, n;
+        edges[0] = lower, edges[1] = upper;
+        for (e = 0; e < 2; e++) {
+            TRY(rmf_curve_segment_count(edges[e], &n));
+            for (k = 0; k < n; k++) {
+                RmfBezierCurve seg;
+                TRY(rmf_curve_segment(edges[e], k, &seg));
+                for (j = 0; j <= seg.degree; j++) {
+                    lo[0] = fmin(lo[0], scale * seg.poles[j].x), hi[0] = fmax(hi[0], scale * seg.poles[j].x);
+                    lo[1] = fmin(lo[1], -scale * seg.poles[j].y), hi[1] = fmax(hi[1], -scale * seg.poles[j].y);
+                }
+            }
+        }
+        f = open_output("cone_spline_development.svg", path, sizeof path);
+        fprintf(f, "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"%.6g %.6g %.6g %.6g\">\n", lo[0] - 10,
+                lo[1] - 10, hi[0] - lo[0] + 20, hi[1] - lo[1] + 20);
+    }
+    TRY(rmf_cone_spline_piece(flat, 0, &piece));
+    start = piece.start_point;
+    fprintf(f, "  <path fill=\"#cde\" stroke=\"black\" stroke-width=\"0.5\" d=\"M %.9g %.9g",
+            scale * (start.x + t_min * piece.start_ruling.x), -scale * (start.y + t_min * piece.start_ruling.y));
+    svg_arcs(f, lower, 1, scale);
+    TRY(rmf_cone_spline_piece(flat, pieces - 1, &piece));
+    fprintf(f, " L %.9g %.9g", scale * (piece.end_point.x + t_max * piece.end_ruling.x),
+            -scale * (piece.end_point.y + t_max * piece.end_ruling.y));
+    svg_arcs(f, upper, 0, scale);
+    fprintf(f, " Z\"/>\n");
+    for (k = 1; k < pieces; k++) { /* the shared rulings */
+        TRY(rmf_cone_spline_piece(flat, k, &piece));
+        fprintf(f, "  <line stroke=\"gray\" stroke-width=\"0.3\" x1=\"%.9g\" y1=\"%.9g\" x2=\"%.9g\" y2=\"%.9g\"/>\n",
+                scale * (piece.start_point.x + t_min * piece.start_ruling.x),
+                -scale * (piece.start_point.y + t_min * piece.start_ruling.y),
+                scale * (piece.start_point.x + t_max * piece.start_ruling.x),
+                -scale * (piece.start_point.y + t_max * piece.start_ruling.y));
+    }
+    fprintf(f, "</svg>\n");
+    fclose(f);
+    written(path, "its exact development: arcs and lines, in the plane");
+    rmf_curve_free(lower);
+    rmf_curve_free(upper);
+    rmf_surface_free(surface);
+    rmf_cone_spline_free(flat);
+    rmf_cone_spline_free(spline);
+}
+
+/* ---- 5. profile surfaces along a PH cubic spline (Mäurer & Jüttler) ---- */
 
 #define PH_DEMO_PI 3.14159265358979323846
 
@@ -357,7 +461,7 @@ static void demo_profile_surfaces(void) {
     double distance = 0, angle = 0;
     size_t segments = 0, n = 0;
 
-    printf("4. profile surfaces along PH cubic splines (exact rational NURBS, degree (m, 9))\n");
+    printf("5. profile surfaces along PH cubic splines (exact rational NURBS, degree (m, 9))\n");
     TRY(rmf_ph_spline_approximate(NULL, conical_helix, NULL, 0, 4 * PH_DEMO_PI, 1e-4, &spine, &distance));
     TRY(rmf_curve_segment_count(spine, &segments));
     TRY(rmf_ph_rational_rmf(spine, (RmfVec3){0, 0, 1}, &rmf));
@@ -367,12 +471,12 @@ static void demo_profile_surfaces(void) {
            "singularity margin %.3f\n",
            segments, distance, angle, margin.margin);
     TRY(rmf_sweep_surface(spine, rmf, profile, &surface));
-    write_surface(surface, "profile_surface_rmf.obj", "profile_surface_rmf.vtp",
-                  "profile surface: moulding swept with the rational RMF");
+    write_tessellation(surface, 12, 8, "profile_surface_rmf",
+                       "profile surface: moulding swept with the rational RMF");
     TRY(rmf_ph_frenet_frames(spine, &frenet));
     TRY(rmf_sweep_surface(spine, frenet, profile, &frenet_surface));
-    write_surface(frenet_surface, "profile_surface_frenet.obj", "profile_surface_frenet.vtp",
-                  "the same moulding swept with the Frenet frame (twists, torn at joints)");
+    write_tessellation(frenet_surface, 12, 8, "profile_surface_frenet",
+                       "the same moulding swept with the Frenet frame (twists, torn at joints)");
 
     /* A closed spine: the RMF does not close; a uniform extra twist, a quarter turn at most for a
      * square profile, makes the sweep seamless. */
@@ -380,8 +484,8 @@ static void demo_profile_surfaces(void) {
     TRY(rmf_nurbs_curve_create(1, square, NULL, 5, square_knots, 7, &box));
     TRY(rmf_ph_rational_rmf_twisted(loop, (RmfVec3){0, 0, 1}, 0, 4, &closed));
     TRY(rmf_sweep_surface(loop, closed, box, &closed_surface));
-    write_surface(closed_surface, "closed_sweep_trefoil.obj", "closed_sweep_trefoil.vtp",
-                  "square tube along a trefoil, closed without a seam");
+    write_tessellation(closed_surface, 2, 8, "closed_sweep_trefoil",
+                       "square tube along a trefoil, closed without a seam");
 
     rmf_surface_free(surface);
     rmf_surface_free(frenet_surface);
@@ -405,6 +509,7 @@ int main(int argc, char **argv) {
     demo_curve_and_frames();
     demo_tessellated_surface();
     demo_rrmf_quintics();
+    demo_cone_spline();
     demo_profile_surfaces();
     return 0;
 }

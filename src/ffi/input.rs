@@ -20,8 +20,10 @@ pub type RmfCurveCallback = Option<
 
 /// The Hermite segments of `count` points and tangents from C arrays.
 ///
+/// (Used by the Hermite interpolation capabilities: PH cubics, Möbius, RRMF.)
 /// # Safety
 /// `points` and `tangents` must be NULL or point to `count` values each.
+#[allow(dead_code)]
 pub(crate) unsafe fn hermite_arrays(
     points: *const RmfVec3,
     tangents: *const RmfVec3,

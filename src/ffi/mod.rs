@@ -14,6 +14,7 @@
 #![allow(clippy::missing_safety_doc)]
 
 mod boundary;
+pub mod cone_spline;
 pub mod curve;
 pub mod frames;
 pub mod input;
@@ -23,6 +24,7 @@ pub mod status;
 pub mod surface;
 pub mod types;
 
+pub use cone_spline::RmfConeSpline;
 pub use curve::RmfCurve;
 pub use frames::RmfFrames;
 pub use status::RmfStatus;

@@ -1,5 +1,6 @@
 //! Shared numerical building blocks: binomial coefficients, complex numbers, validated vectors,
-//! robust polynomial root finding, Gauss–Legendre quadrature and 1-D minimization.
+//! robust polynomial root finding, secant polishing of roots, Gauss–Legendre quadrature and
+//! 1-D minimization.
 //!
 //! Every geometric module takes these from here rather than writing its own.
 
@@ -8,6 +9,7 @@ mod complex;
 mod minimize;
 mod quadrature;
 mod roots;
+mod secant;
 mod vector;
 
 pub use binomial::binomial;
@@ -15,6 +17,7 @@ pub use complex::Complex;
 pub use minimize::{minimize_bracketed, Minimum};
 pub use quadrature::GaussLegendre;
 pub use roots::{quadratic_roots, real_roots_in, real_roots_power};
+pub use secant::secant_refine;
 pub use vector::{
     check_finite, check_point, check_unit_direction, normal_plane_unit, orthogonalized,
     orthonormal_to,

@@ -1,0 +1,332 @@
+//! Approximation of a developable surface by a cone spline (Section "G1 Hermite elements"):
+//! select rulings of the surface — the inflection generators always, since a cone of
+//! revolution has none and their behaviour can only be a junction —, take their G1 elements
+//! and join consecutive ones by cone pairs. The remaining rulings are chosen adaptively: an
+//! interval whose pair deviates from the surface by more than the tolerance is halved.
+//!
+//! The deviation of a pair is the largest distance from the surface's points over the
+//! region (rulings sampled across the interval, points along each ruling) to the pair's
+//! pieces extended along their rulings.
+
+use super::developable::{inflection_generators, Developable};
+use super::pair::{cone_pair, ConePair, Rule};
+use super::piece::ConePiece;
+use super::spline::ConeSpline;
+use crate::error::{invalid, Error, Result};
+
+/// Rulings sampled per interval (plus one) and points per ruling for the deviation.
+const RULING_SAMPLES: usize = 12;
+const POINT_SAMPLES: usize = 5;
+/// Uniform rulings scanned for inflection generators.
+const INFLECTION_SAMPLES: usize = 400;
+
+/// The result of [`approximate`].
+#[derive(Clone, Debug)]
+pub struct Approximation {
+    pub spline: ConeSpline,
+    /// The parameters of the selected rulings (the elements), increasing.
+    pub parameters: Vec<f64>,
+    /// The inflection generators found (a subset of `parameters`).
+    pub inflections: Vec<f64>,
+    /// The largest sampled distance from the surface to the cone spline.
+    pub max_error: f64,
+}
+
+/// Largest distance from sampled region points of `surface` on [a, b] to the pieces.
+pub fn deviation(
+    surface: &dyn Developable,
+    pieces: &[ConePiece],
+    a: f64,
+    b: f64,
+    rulings: usize,
+) -> Result<f64> {
+    let mut worst = 0.0f64;
+    for k in 0..=rulings {
+        let t = a + (b - a) * k as f64 / rulings as f64;
+        let r = surface.ruling(t)?;
+        for j in 0..POINT_SAMPLES {
+            let v = r.range.0 + (r.range.1 - r.range.0) * j as f64 / (POINT_SAMPLES - 1) as f64;
+            let y = r.point + v * r.direction;
+            let d = pieces
+                .iter()
+                .map(|p| p.distance(y))
+                .fold(f64::INFINITY, f64::min);
+            worst = worst.max(d);
+        }
+    }
+    Ok(worst)
+}
+
+/// Fits a cone spline to `surface` within `tolerance` (max distance over the region),
+/// with at most `max_pieces` pieces, the pairs chosen by `rule`.
+pub fn approximate(
+    surface: &dyn Developable,
+    tolerance: f64,
+    rule: Rule,
+    max_pieces: usize,
+) -> Result<Approximation> {
+    if !(tolerance.is_finite() && tolerance > 0.0) {
+        return invalid!("tolerance = {tolerance} must be finite and positive");
+    }
+    let (lo, hi) = surface.domain();
+    let inflections = inflection_generators(surface, INFLECTION_SAMPLES)?;
+    let mut junctions = vec![lo];
+    junctions.extend(&inflections);
+    junctions.push(hi);
+    let mut accepted: Vec<(f64, ConePair, f64)> = Vec::new();
+    for w in junctions.windows(2) {
+        fit_interval(
+            surface,
+            w[0],
+            w[1],
+            tolerance,
+            rule,
+            max_pieces,
+            &mut accepted,
+        )?;
+    }
+    let mut parameters = vec![lo];
+    parameters.extend(accepted.iter().map(|(b, _, _)| *b));
+    let max_error = accepted.iter().map(|(_, _, e)| *e).fold(0.0, f64::max);
+    let spline = ConeSpline::new(
+        accepted
+            .into_iter()
+            .flat_map(|(_, p, _)| p.pieces)
+            .collect(),
+    )?;
+    Ok(Approximation {
+        spline,
+        parameters,
+        inflections,
+        max_error,
+    })
+}
+
+/// Accepts [a, b] with its pair if it is within the tolerance, else halves it (depth
+/// first, so `out` stays ordered by parameter).
+fn fit_interval(
+    surface: &dyn Developable,
+    a: f64,
+    b: f64,
+    tolerance: f64,
+    rule: Rule,
+    max_pieces: usize,
+    out: &mut Vec<(f64, ConePair, f64)>,
+) -> Result<()> {
+    let (ea, eb) = (surface.element(a)?, surface.element(b)?);
+    let attempt = cone_pair(
+        &ea,
+        &eb,
+        rule,
+        None,
+        ("the ruling at t_a", "the ruling at t_b"),
+    )
+    .and_then(|pair| {
+        Ok((
+            deviation(surface, &pair.pieces, a, b, RULING_SAMPLES)?,
+            pair,
+        ))
+    });
+    if let Ok((error, pair)) = &attempt {
+        if *error <= tolerance {
+            out.push((b, pair.clone(), *error));
+            return Ok(());
+        }
+    }
+    let pieces_so_far: usize = out.iter().map(|(_, p, _)| p.pieces.len()).sum();
+    let (lo, hi) = surface.domain();
+    if pieces_so_far + 4 > max_pieces || b - a < 1e-9 * (hi - lo) {
+        return Err(Error::NotConverged(match attempt {
+            Ok((error, _)) => format!(
+                "tolerance {tolerance:.3e} not reached with at most {max_pieces} pieces \
+                 (deviation {error:.3e} on [{a}, {b}])"
+            ),
+            Err(e) => format!(
+                "no cone pair joins the rulings at t = {a} and t = {b}: {}",
+                e.message()
+            ),
+        }));
+    }
+    let m = 0.5 * (a + b);
+    fit_interval(surface, a, m, tolerance, rule, max_pieces, out)?;
+    fit_interval(surface, m, b, tolerance, rule, max_pieces, out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::developable::{DualDevelopable, RuledSurface};
+    use super::super::region::Region;
+    use super::super::test_support::{
+        dual_cone_planes, tangent_surface, twisted_cubic, zero_torsion_curve, Helix,
+    };
+    use super::*;
+    use crate::bezier::{NurbsSurface, RationalBezierPatch};
+    use glam::{DVec3, DVec4};
+
+    /// Pieces against tolerance; returns the observed order log(n₂/n₁)/log(tol₁/tol₂)
+    /// inverted (error ~ h^order) over the whole range.
+    fn study(name: &str, surface: &dyn Developable, tolerances: &[f64]) -> f64 {
+        let mut counts = Vec::new();
+        for &tol in tolerances {
+            let fit = approximate(surface, tol, Rule::MinimalVertexDistance, 100_000).unwrap();
+            let (lo, hi) = surface.domain();
+            let dense = deviation(
+                surface,
+                fit.spline.pieces(),
+                lo,
+                hi,
+                40 * fit.parameters.len(),
+            )
+            .unwrap();
+            println!(
+                "{name}: tolerance {tol:.0e}: {} pieces, max deviation {:.3e} (dense {:.3e})",
+                fit.spline.pieces().len(),
+                fit.max_error,
+                dense
+            );
+            assert!(
+                fit.max_error <= tol && dense <= tol,
+                "{name}: deviation {dense:e} > {tol:e}"
+            );
+            counts.push(fit.spline.pieces().len() as f64);
+        }
+        let n = tolerances.len() - 1;
+        let order = (tolerances[0] / tolerances[n]).ln() / (counts[n] / counts[0]).ln();
+        println!("{name}: observed approximation order {order:.2}");
+        order
+    }
+
+    #[test]
+    fn tangent_surfaces_of_a_twisted_cubic_and_a_helix() {
+        let curve = twisted_cubic(-0.5, 1.0);
+        let order = study(
+            "twisted cubic",
+            &tangent_surface(&curve, 0.5, 1.0),
+            &[1e-2, 1e-3, 1e-4, 1e-5],
+        );
+        assert!((2.5..4.5).contains(&order), "order {order}");
+        let helix = Helix {
+            radius: 1.0,
+            pitch: 0.5,
+            domain: (0.0, std::f64::consts::TAU),
+        };
+        let order = study(
+            "helix",
+            &tangent_surface(&helix, 0.5, 1.0),
+            &[1e-2, 1e-3, 1e-4, 1e-5],
+        );
+        assert!((2.5..4.5).contains(&order), "order {order}");
+    }
+
+    #[test]
+    fn inflection_generators_become_junctions() {
+        let curve = zero_torsion_curve();
+        let surface = tangent_surface(&curve, 0.3, 0.8);
+        let fit = approximate(&surface, 1e-3, Rule::MinimalVertexDistance, 10_000).unwrap();
+        assert_eq!(fit.inflections.len(), 1);
+        assert!(fit.inflections[0].abs() < 1e-9, "{:?}", fit.inflections);
+        assert!(fit.parameters.contains(&fit.inflections[0]));
+        assert!(fit.max_error <= 1e-3);
+    }
+
+    #[test]
+    fn ruled_nurbs_and_dual_inputs() {
+        // The tangent surface of (t, t², t³) between the rails x(t) + x'(t)/2 and x(t) + x'(t),
+        // a polynomial NURBS of degree (1, 3) on t ∈ [0.2, 1.2].
+        let curve = twisted_cubic(0.2, 1.2);
+        let (mut poles, derivative) = (
+            Vec::new(),
+            crate::bezier::bernstein::derivative(curve.segments()[0].homogeneous()),
+        );
+        let d: Vec<DVec4> = crate::bezier::bernstein::elevate(&derivative, 1);
+        for scale in [0.5, 1.0] {
+            for (x, dx) in curve.segments()[0].homogeneous().iter().zip(&d) {
+                poles.push((x.truncate() + scale * dx.truncate()).extend(1.0));
+            }
+        }
+        let patch = RationalBezierPatch::from_homogeneous(1, 3, poles).unwrap();
+        let pw = crate::bezier::PiecewiseSurface::new(vec![patch], vec![0.0, 1.0], vec![0.2, 1.2])
+            .unwrap();
+        let nurbs = NurbsSurface::from_piecewise(&pw).unwrap();
+        let ruled = RuledSurface::new(nurbs.to_piecewise().unwrap()).unwrap();
+        let fit = approximate(&ruled, 1e-4, Rule::MinimalVertexDistance, 10_000).unwrap();
+        println!(
+            "ruled (1, 3) NURBS: 1e-4 with {} pieces",
+            fit.spline.pieces().len()
+        );
+        assert!(fit.max_error <= 1e-4);
+
+        // Not developable: z = xy, K ≠ 0 is measured and reported.
+        let saddle = NurbsSurface::new(
+            1,
+            1,
+            2,
+            2,
+            vec![
+                DVec3::new(-1.0, -1.0, 1.0),
+                DVec3::new(-1.0, 1.0, -1.0),
+                DVec3::new(1.0, -1.0, -1.0),
+                DVec3::ONE,
+            ],
+            None,
+            vec![0.0, 0.0, 1.0, 1.0],
+            vec![0.0, 0.0, 1.0, 1.0],
+        )
+        .unwrap();
+        let cubic = NurbsSurface::new(
+            2,
+            1,
+            3,
+            2,
+            vec![DVec3::ZERO; 6],
+            None,
+            vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0],
+            vec![0.0, 0.0, 1.0, 1.0],
+        )
+        .unwrap();
+        assert!(RuledSurface::new(cubic.to_piecewise().unwrap())
+            .err()
+            .unwrap()
+            .message()
+            .contains("degree_u = 1"));
+        let err = RuledSurface::new(saddle.to_piecewise().unwrap())
+            .err()
+            .unwrap();
+        assert!(
+            err.message().contains("not developable") && err.message().contains("|K|"),
+            "{err}"
+        );
+
+        // The dual form (4): a quadratic B-spline of planes through the origin (a cone).
+        let region = Region::new(DVec3::new(-3.0, -3.0, 1.0), DVec3::new(3.0, 3.0, 2.0)).unwrap();
+        let dual = DualDevelopable::new(
+            2,
+            &dual_cone_planes(),
+            &[0.0, 0.0, 0.0, 1.0, 1.0, 1.0],
+            region,
+        )
+        .unwrap();
+        let fit = approximate(&dual, 1e-4, Rule::MinimalVertexDistance, 10_000).unwrap();
+        println!(
+            "dual quadratic cone: 1e-4 with {} pieces",
+            fit.spline.pieces().len()
+        );
+        assert!(fit.max_error <= 1e-4);
+        assert!(fit
+            .spline
+            .pieces()
+            .iter()
+            .all(|p| p.vertex().is_some_and(|v| v.length() < 1e-9)));
+    }
+
+    #[test]
+    fn rejects_bad_tolerances() {
+        let curve = twisted_cubic(0.2, 1.2);
+        let surface = tangent_surface(&curve, 0.5, 1.0);
+        for tol in [0.0, -1.0, f64::NAN] {
+            assert!(approximate(&surface, tol, Rule::MinimalVertexDistance, 100).is_err());
+        }
+        let err = approximate(&surface, 1e-9, Rule::MinimalVertexDistance, 8).unwrap_err();
+        assert!(matches!(err, Error::NotConverged(_)), "{err}");
+    }
+}

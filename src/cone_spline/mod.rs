@@ -1,0 +1,41 @@
+//! Cone spline surfaces (Leopoldseder & Pottmann, *Approximation of developable surfaces
+//! with cone spline surfaces*): developable surfaces made of segments of right circular
+//! cones, cylinders of revolution and planes, joined G1 along common rulings.
+//!
+//! | module | what it computes | paper |
+//! | --- | --- | --- |
+//! | [`element`] | G1 Hermite elements (ruling, tangent plane, side vector) | "G1 Hermite elements", Fig. 2 |
+//! | [`region`] | the region of interest Ω (a box) | "Fundamentals", Figs. 5–6 |
+//! | [`piece`] | one cone/cylinder/plane segment as a ruling swept by a rotation | Figs. 1, 16 |
+//! | [`biarc`] | planar and spherical biarcs, polar (Bézier) planes | (7), (8) |
+//! | [`pair`] | cone pairs through two elements, every case, rules | (5)–(6), (9)–(13), Theorem 1 |
+//! | [`spline`] | the G1 chain, Hermite interpolation of element sequences | |
+//! | [`surface`] | exact degree (1, 2) patches, boundary arc splines, box bounds | Fig. 1 |
+//! | [`developable`] | inputs: tangent surfaces, ruled (1, n) NURBS, dual form; inflection generators | (1), (2), (4) |
+//! | [`approximate`] | adaptive approximation within a tolerance | "G1 Hermite elements" |
+//! | [`osculating`] | osculating cones and their joining cones | (3), (14), Figs. 13–15 |
+//! | [`develop`] | bending sequences and the exact development | φ sin α = const, Figs. 16–17 |
+//! | [`offset`] | offsets, again cone splines | "Introduction" |
+
+pub mod approximate;
+pub mod biarc;
+mod develop;
+pub mod developable;
+pub mod element;
+mod offset;
+pub mod osculating;
+pub mod pair;
+pub mod piece;
+pub mod region;
+pub mod spline;
+mod surface;
+
+pub use approximate::{approximate, Approximation};
+pub use element::Element;
+pub use pair::{cone_pair, ConePair, PairCase, Rule};
+pub use piece::{ConePiece, Motion, PieceKind};
+pub use region::Region;
+pub use spline::ConeSpline;
+
+#[cfg(test)]
+mod test_support;

@@ -1,0 +1,538 @@
+//! Osculating cone splines (Section "Osculating cone splines", Figs. 13–15): a sequence of
+//! osculating cones Δᵢ of the surface, consecutive ones joined by one cone Δ each — the
+//! spatial counterpart of the osculating arc splines of Meek and Walton.
+//!
+//! * The osculating cone along a ruling has its vertex at the point of regression and its
+//!   axis along the Darboux vector d = τe + κn (3) — the angular velocity of the frame
+//!   (e, p, n), which is how it is computed here, so that a cone Γ (axis through the fixed
+//!   vertex, containing the osculating circle of the spherical curve) and a cylinder Γ
+//!   (point of regression at infinity: an osculating cylinder) come out of the same formula.
+//! * Joining: after translating the vertices to the origin the cones meet the unit sphere Σ
+//!   in circles c₁, c₂ with planes Uᵢ and poles Qᵢ. Poles of filling circles lie on the conic
+//!   I₁ in the plane V = U₁ + λU₂, λ = ±√((u₁² − u₁₀²)/(u₂² − u₂₀²)); projecting c₁ (a
+//!   rational quadratic in homogeneous parameters (t₀, t₁)) from Q₁ onto V and from there
+//!   from Q₂ onto U₂ pairs the touching points c₁(t), c₂(t). A filling cone exists where the
+//!   generators through v₁ and v₂ meet: det(c₁(t), c₂(t), v₁ − v₂) = 0, the homogeneous
+//!   quartic (14), solved for all real roots on the whole projective line (t = 1 : 0
+//!   included). Of the candidates only the consistent ones are kept: the junction
+//!   generators follow e₁ and precede e₂ in the sense of increasing parameters, with every
+//!   segment angle below π/2; the least total angle wins.
+
+use super::developable::Developable;
+use super::element::Element;
+use super::pair::joins;
+use super::piece::{ConePiece, Motion};
+use super::spline::ConeSpline;
+use crate::error::{invalid, Error, Result};
+use crate::math::{real_roots_in, secant_refine};
+use glam::{DMat3, DVec3, DVec4};
+use std::f64::consts::{FRAC_1_SQRT_2, FRAC_PI_2};
+
+/// The osculating cone (or cylinder) along one ruling.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OsculatingCone {
+    /// The ruling with its tangent plane.
+    pub element: Element,
+    /// The point of regression; `None` for an osculating cylinder.
+    pub vertex: Option<DVec3>,
+    /// A point on the axis (the vertex, or the cylinder's centre line).
+    pub origin: DVec3,
+    /// Unit axis direction (the Darboux vector's).
+    pub axis: DVec3,
+}
+
+impl OsculatingCone {
+    /// Half angle α (π/2 at an inflection generator, where the cone is the tangent plane).
+    pub fn half_angle(&self) -> f64 {
+        self.axis
+            .dot(self.element.ruling)
+            .abs()
+            .clamp(0.0, 1.0)
+            .acos()
+    }
+}
+
+/// The osculating cone of `surface` along the ruling at t, from the angular velocity ω of
+/// the frame (e, p, n) and the normal velocity of the ruling (finite differences).
+pub fn osculating_cone(surface: &dyn Developable, t: f64) -> Result<OsculatingCone> {
+    let el = surface.element(t)?;
+    let (lo, hi) = surface.domain();
+    let h = 1e-5 * (hi - lo);
+    let (a, b) = ((t - h).max(lo), (t + h).min(hi));
+    let (ea, eb) = (surface.element(a)?, surface.element(b)?);
+    let dt = b - a;
+    let de = (eb.ruling - ea.ruling) / dt;
+    let dp = (eb.side - ea.side) / dt;
+    let dn = (eb.normal() - ea.normal()) / dt;
+    let omega = 0.5 * (el.ruling.cross(de) + el.side.cross(dp) + el.normal().cross(dn));
+    // Normal velocity of the ruling line at the element point.
+    let nearest = |x: &Element| x.at(x.parameter_of(el.point));
+    let speed = (nearest(&eb) - nearest(&ea)).dot(el.side) / dt;
+    let turning = de.dot(el.side);
+    if turning.abs() <= 1e-9 * omega.length().max(1e-300) {
+        let spin = omega.dot(el.ruling);
+        if spin.abs() <= 1e-12 * speed.abs() {
+            return Err(Error::NoSolution(format!(
+                "the ruling at t = {t} is an inflection generator of a cylinder"
+            )));
+        }
+        // Rotation ω_e about the axis through o = x + ρn moves x with ω_e ρ p.
+        return Ok(OsculatingCone {
+            element: el,
+            vertex: None,
+            origin: el.point + speed / spin * el.normal(),
+            axis: el.ruling,
+        });
+    }
+    let vertex = el.at(-speed / turning);
+    // ω has no p-component for a developable (the Darboux vector τe + κn); dropping the
+    // differencing noise keeps the cone exactly tangent to the element's plane.
+    Ok(OsculatingCone {
+        element: el,
+        vertex: Some(vertex),
+        origin: vertex,
+        axis: (omega - omega.dot(el.side) * el.side).normalize(),
+    })
+}
+
+/// The Bézier points (homogeneous, (x, y, z, w)) of a quarter of the circle in which the
+/// cone with unit axis k through the origin meets the unit sphere, starting at the unit
+/// ruling e: any quarter parameterizes the whole circle over the projective line.
+fn circle_quarter(k: DVec3, e: DVec3) -> [DVec4; 3] {
+    let centre = e.dot(k) * k;
+    let end = DMat3::from_axis_angle(k, FRAC_PI_2) * e;
+    let corner = centre + (e - centre) + (end - centre);
+    [
+        e.extend(1.0),
+        (corner * FRAC_1_SQRT_2).extend(FRAC_1_SQRT_2),
+        end.extend(1.0),
+    ]
+}
+
+/// Power-basis coefficients (in t = t₁/t₀, t₀ = 1) of the homogeneous quadratic
+/// (t₀ − t₁)²B₀ + 2t₁(t₀ − t₁)B₁ + t₁²B₂.
+fn power_form(b: &[DVec4; 3]) -> [DVec4; 3] {
+    [b[0], 2.0 * (b[1] - b[0]), b[0] - 2.0 * b[1] + b[2]]
+}
+
+fn evaluate(b: &[DVec4; 3], t0: f64, t1: f64) -> DVec3 {
+    let h = (t0 - t1) * (t0 - t1) * b[0] + 2.0 * t1 * (t0 - t1) * b[1] + t1 * t1 * b[2];
+    h.truncate() / h.w
+}
+
+/// The real roots (t₀ : t₁) of the homogeneous quartic Σ qₖ t₀^(4−k) t₁ᵏ on the projective
+/// line: |t| ≤ 1 from q(t), the rest from the reversed polynomial in s = t₀/t₁.
+fn projective_roots(q: &[f64; 5]) -> Vec<(f64, f64)> {
+    let mut roots: Vec<(f64, f64)> = real_roots_in(q, -1.0, 1.0)
+        .into_iter()
+        .map(|t| (1.0, t))
+        .collect();
+    let reversed: Vec<f64> = q.iter().rev().copied().collect();
+    roots.extend(
+        real_roots_in(&reversed, -1.0, 1.0)
+            .into_iter()
+            .filter(|s| s.abs() < 1.0)
+            .map(|s| (s, 1.0)),
+    );
+    roots
+}
+
+/// Junction generators (x₁, x₂) as a function of one affine parameter of the projective line.
+type Chart<'a> = Box<dyn Fn(f64) -> (DVec3, DVec3) + 'a>;
+
+/// Pieces Δ₁ (from e₁ to the junction), Δ (the filling cone), Δ₂ (from the junction to e₂)
+/// for every real root of (14) on both conics, consistent ones only.
+fn joining_candidates(d1: &OsculatingCone, d2: &OsculatingCone) -> Result<Vec<[ConePiece; 3]>> {
+    let (Some(v1), Some(v2)) = (d1.vertex, d2.vertex) else {
+        return Err(Error::NoSolution(
+            "an osculating cylinder cannot be joined by the quartic (14); use the Hermite cone pairs".into(),
+        ));
+    };
+    let oriented = |c: &OsculatingCone| {
+        if c.axis.dot(c.element.ruling) < 0.0 {
+            -c.axis
+        } else {
+            c.axis
+        }
+    };
+    let (k1, k2) = (oriented(d1), oriented(d2));
+    let (e1, e2) = (d1.element.ruling, d2.element.ruling);
+    let (c1, c2) = (k1.dot(e1), k2.dot(e2));
+    let (s1, s2) = ((1.0 - c1 * c1).sqrt(), (1.0 - c2 * c2).sqrt());
+    if s1 <= 1e-12 || s2 <= 1e-12 {
+        return Err(Error::NoSolution(
+            "a degenerate osculating cone (half angle 0)".into(),
+        ));
+    }
+    let (u1, u2) = (k1.extend(-c1), k2.extend(-c2));
+    let (q1, q2) = (k1.extend(c1), k2.extend(c2));
+    let arc1 = circle_quarter(k1, e1);
+    let scale = v1.abs().max_element().max(v2.abs().max_element()).max(1.0);
+    let mut out = Vec::new();
+    for lambda in [s1 / s2, -s1 / s2] {
+        let v = u1 + lambda * u2;
+        let onto_v = |x: DVec4| v.dot(q1) * x - v.dot(x) * q1;
+        let onto_u2 = |x: DVec4| u2.dot(q2) * x - u2.dot(x) * q2;
+        let arc2 = arc1.map(|b| onto_u2(onto_v(b)));
+        let (p1, p2) = (power_form(&arc1), power_form(&arc2));
+        let mut quartic = [0.0; 5];
+        for i in 0..3 {
+            for j in 0..3 {
+                quartic[i + j] += p1[i].truncate().cross(p2[j].truncate()).dot(v1 - v2);
+            }
+        }
+        // A common vertex (the surface is a cone): (14) vanishes identically and the
+        // filling cones form a one-parameter family, the spherical osculating arc splines;
+        // a symmetric member is taken (see `symmetric_parameters`).
+        let roots = if common_vertex(v1, v2) {
+            Vec::new()
+        } else {
+            projective_roots(&quartic)
+        };
+        // x₂ snapped onto c₂: the two projections lose digits for nearly equal cones.
+        let onto_c2 = |y: DVec3| c2 * k2 + s2 * (y - y.dot(k2) * k2).normalize();
+        let generators =
+            |(t0, t1): (f64, f64)| (evaluate(&arc1, t0, t1), onto_c2(evaluate(&arc2, t0, t1)));
+        for sign in [1.0, -1.0] {
+            if common_vertex(v1, v2) {
+                let chart = |x: f64| generators((1.0, x));
+                for x in symmetric_parameters(d1, d2, &chart, sign) {
+                    out.extend(consistent_join(d1, d2, &chart, x, sign, scale, false));
+                }
+            }
+            for &(t0, t1) in &roots {
+                // The affine chart of the projective line in which the root is finite.
+                let (chart, x): (Chart, f64) = if t0.abs() >= t1.abs() {
+                    (Box::new(|x: f64| generators((1.0, x))), t1 / t0)
+                } else {
+                    (Box::new(|x: f64| generators((x, 1.0))), t0 / t1)
+                };
+                out.extend(consistent_join(
+                    d1,
+                    d2,
+                    chart.as_ref(),
+                    x,
+                    sign,
+                    scale,
+                    true,
+                ));
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// The three pieces for the junction generators x₁ on Δ₁ and x₂ on Δ₂ (the filling cone's
+/// last generator oriented by `sign`), without the G1 check at e₂.
+fn three_pieces(
+    d1: &OsculatingCone,
+    d2: &OsculatingCone,
+    (x1, x2): (DVec3, DVec3),
+    sign: f64,
+) -> Option<[ConePiece; 3]> {
+    let (v1, v2) = (d1.vertex?, d2.vertex?);
+    if !(x1.is_finite() && x2.is_finite()) || (x1 - x2).length() < 1e-9 {
+        return None; // a common generator of Λ₁ and Λ₂: no filling cone
+    }
+    if common_vertex(v1, v2) {
+        // The vertex where the two rulings meet, more accurate than either point of
+        // regression from differences.
+        let (a, b) = (&d1.element, &d2.element);
+        let w = a.ruling.cross(b.ruling);
+        let v = a.at((b.point - a.point).cross(b.ruling).dot(w) / w.length_squared());
+        let first = ConePiece::cone(v, *a, x1).ok()?;
+        let filler = ConePiece::cone(v, first.end(), sign * x2).ok()?;
+        let last = ConePiece::cone(v, filler.end(), b.ruling).ok()?;
+        return Some([first, filler, last]);
+    }
+    // The filling vertex: where the generators v₁ + a x₁ and v₂ + b x₂ meet (closest point
+    // on the first). Its last ruling is drawn through v₂ itself, so that the three pieces
+    // chain exactly; what remains of a root's error shows in the tangent plane at e₂.
+    let first = ConePiece::cone(v1, d1.element, x1).ok()?;
+    let w = x1.cross(x2);
+    let v = v1 + (v2 - v1).cross(x2).dot(w) / w.length_squared() * x1;
+    let through_v2 = (v2 - v) * (v2 - v).dot(x2).signum();
+    let filler = ConePiece::cone(v, first.end(), sign * through_v2).ok()?;
+    let last = ConePiece::cone(v2, filler.end(), d2.element.ruling).ok()?;
+    Some([first, filler, last])
+}
+
+/// The pieces of a root of (14), kept if G1 at e₂ and consistent: every segment angle
+/// below π/2, so that the junction generators follow e₁ and precede e₂ without winding
+/// round a cone (the other roots give fillers of angle ≈ π on the far nappe). For neighbouring, nearly equal osculating cones the plane V = U₁ + λU₂ and the
+/// quartic lose digits to cancellation; since the three pieces chain exactly for every
+/// parameter (the filling cone's last ruling is drawn through v₂), the root is polished by
+/// secant steps on the one remaining condition, the tangent plane at e₂.
+fn consistent_join(
+    d1: &OsculatingCone,
+    d2: &OsculatingCone,
+    generators: &dyn Fn(f64) -> (DVec3, DVec3),
+    x0: f64,
+    sign: f64,
+    scale: f64,
+    polish: bool,
+) -> Option<[ConePiece; 3]> {
+    let target = &d2.element;
+    let residual = |x: f64| {
+        three_pieces(d1, d2, generators(x), sign).map(|p| p[2].end().tangent_plane_angle(target))
+    };
+    let polished = if polish {
+        secant_refine(residual, x0, 1e-9 * x0.abs().max(1.0), 12)
+    } else {
+        x0
+    };
+    // Only a correction of the root's round-off: a step far from it would find a G1
+    // configuration whose last piece is not the osculating cone Δ₂.
+    let x = if (polished - x0).abs() <= 1e-4 * (1.0 + x0.abs()) {
+        polished
+    } else {
+        x0
+    };
+    let pieces = three_pieces(d1, d2, generators(x), sign)?;
+    joins(&pieces[2].end(), target, scale).ok()?;
+    pieces
+        .iter()
+        .all(|p| p.segment_angle() < FRAC_PI_2)
+        .then_some(pieces)
+}
+
+/// Relative distance below which two osculating cones count as sharing their vertex.
+const COMMON_VERTEX: f64 = 1e-8;
+
+fn common_vertex(v1: DVec3, v2: DVec3) -> bool {
+    (v1 - v2).length()
+        <= COMMON_VERTEX * v1.abs().max_element().max(v2.abs().max_element()).max(1.0)
+}
+
+/// Parameters (in the chart t₀ = 1, |t| ≤ 1) of the member of the one-parameter family of
+/// filling cones for osculating cones with a common vertex: the segments taken from Δ₁ and
+/// Δ₂ equally long — or, for mirror-symmetric Δ₁, Δ₂ where they always are, the filling
+/// segment as long as both together.
+fn symmetric_parameters(
+    d1: &OsculatingCone,
+    d2: &OsculatingCone,
+    generators: &dyn Fn(f64) -> (DVec3, DVec3),
+    sign: f64,
+) -> Vec<f64> {
+    let angles = |x: f64| {
+        three_pieces(d1, d2, generators(x), sign)
+            .filter(|p| p.iter().all(|q| q.segment_angle() < FRAC_PI_2))
+            .map(|p| p.map(|q| q.segment_angle()))
+    };
+    let equal_ends = |x: f64| angles(x).map(|[a, _, c]| a - c);
+    let balanced = |x: f64| angles(x).map(|[a, b, c]| a + c - b);
+    let xs: Vec<f64> = (0..=400).map(|k| -1.0 + k as f64 / 200.0).collect();
+    let symmetric = xs
+        .iter()
+        .filter_map(|&x| equal_ends(x))
+        .all(|g| g.abs() < 1e-9);
+    if symmetric {
+        sign_changes(&xs, &balanced)
+    } else {
+        sign_changes(&xs, &equal_ends)
+    }
+}
+
+/// The roots of `f` between consecutive samples `xs` where it changes sign (bisection).
+fn sign_changes(xs: &[f64], f: &dyn Fn(f64) -> Option<f64>) -> Vec<f64> {
+    let mut out = Vec::new();
+    for w in xs.windows(2) {
+        let (Some(fa), Some(fb)) = (f(w[0]), f(w[1])) else {
+            continue;
+        };
+        if (fa < 0.0) == (fb < 0.0) {
+            continue;
+        }
+        let (mut a, mut b) = (w[0], w[1]);
+        for _ in 0..60 {
+            let m = 0.5 * (a + b);
+            match f(m) {
+                Some(fm) if (fm < 0.0) == (fa < 0.0) => a = m,
+                Some(_) => b = m,
+                None => break,
+            }
+        }
+        out.push(0.5 * (a + b));
+    }
+    out
+}
+
+/// Joins two osculating cones by the most useful consistent filling cone.
+pub fn join_osculating(d1: &OsculatingCone, d2: &OsculatingCone) -> Result<[ConePiece; 3]> {
+    joining_candidates(d1, d2)?
+        .into_iter()
+        .min_by(|a, b| {
+            let total = |p: &[ConePiece; 3]| p.iter().map(ConePiece::segment_angle).sum::<f64>();
+            total(a).total_cmp(&total(b))
+        })
+        .ok_or_else(|| {
+            Error::NoSolution(
+                "no consistent filling cone joins the two osculating cones (rulings too far apart)"
+                    .into(),
+            )
+        })
+}
+
+/// One piece for two consecutive pieces on the same cone (same axis line), else `None`.
+fn merged(a: &ConePiece, b: &ConePiece) -> Option<ConePiece> {
+    match (a.motion, b.motion) {
+        (
+            Motion::Rotation {
+                origin: o1,
+                axis: k1,
+                angle: t1,
+            },
+            Motion::Rotation {
+                origin: o2,
+                axis: k2,
+                angle: t2,
+            },
+        ) => {
+            let scale = o1.abs().max_element().max(1.0);
+            let same_line =
+                k1.cross(k2).length() <= 1e-9 && (o2 - o1).cross(k1).length() <= 1e-9 * scale;
+            let t2 = if k1.dot(k2) < 0.0 { -t2 } else { t2 };
+            (same_line && t1.signum() == t2.signum()).then_some(ConePiece {
+                start: a.start,
+                motion: Motion::Rotation {
+                    origin: o1,
+                    axis: k1,
+                    angle: t1 + t2,
+                },
+            })
+        }
+        _ => None,
+    }
+}
+
+/// The osculating cone spline through the osculating cones at the parameters `ts`
+/// (increasing, at least 2): segments of the osculating cones joined by filling cones.
+pub fn osculating_spline(surface: &dyn Developable, ts: &[f64]) -> Result<ConeSpline> {
+    if ts.len() < 2 || ts.windows(2).any(|w| w[0] >= w[1] || w[0].is_nan()) {
+        return invalid!("an osculating cone spline needs at least 2 increasing parameters");
+    }
+    let cones = ts
+        .iter()
+        .map(|&t| osculating_cone(surface, t))
+        .collect::<Result<Vec<_>>>()?;
+    let mut pieces: Vec<ConePiece> = Vec::new();
+    for w in cones.windows(2) {
+        let [first, filler, last] = join_osculating(&w[0], &w[1])?;
+        match pieces.last().and_then(|previous| merged(previous, &first)) {
+            Some(one) => *pieces.last_mut().expect("checked") = one,
+            None => pieces.push(first),
+        }
+        pieces.push(filler);
+        pieces.push(last);
+    }
+    ConeSpline::new(pieces)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::approximate::deviation;
+    use super::super::developable::DualDevelopable;
+    use super::super::test_support::{dual_cone_planes, tangent_surface, twisted_cubic, Helix};
+    use super::*;
+    use crate::cone_spline::pair::Rule;
+    use crate::curve::{uniform_parameters, ParametricCurve};
+
+    #[test]
+    fn osculating_cones_follow_the_darboux_vector() {
+        let helix = Helix {
+            radius: 1.0,
+            pitch: 0.5,
+            domain: (0.0, 6.0),
+        };
+        let surface = tangent_surface(&helix, 0.5, 1.0);
+        let cone = osculating_cone(&surface, 2.0).unwrap();
+        let (x, _) = helix.point_derivative(2.0).unwrap();
+        assert!((cone.vertex.unwrap() - x).length() < 1e-7);
+        assert!(cone.axis.cross(DVec3::Z).length() < 1e-8, "{}", cone.axis);
+        // cos α = τ/|d| with κ = r/(r² + c²), τ = c/(r² + c²): tan α = r / c.
+        assert!((cone.half_angle() - (1.0f64 / 0.5).atan()).abs() < 1e-8);
+
+        let curve = twisted_cubic(0.2, 1.2);
+        let surface = tangent_surface(&curve, 0.5, 1.0);
+        let t = 0.7f64;
+        let cone = osculating_cone(&surface, t).unwrap();
+        let (d1, d2, d3) = (
+            DVec3::new(1.0, 2.0 * t, 3.0 * t * t),
+            DVec3::new(0.0, 2.0, 6.0 * t),
+            DVec3::new(0.0, 0.0, 6.0),
+        );
+        let b = d1.cross(d2);
+        let (kappa, tau) = (
+            b.length() / d1.length().powi(3),
+            b.dot(d3) / b.length_squared(),
+        );
+        let darboux = tau * d1.normalize() + kappa * b.normalize();
+        assert!(cone.axis.cross(darboux.normalize()).length() < 1e-7, "(3)");
+        assert!((cone.vertex.unwrap() - DVec3::new(t, t * t, t * t * t)).length() < 1e-7);
+    }
+
+    #[test]
+    fn osculating_cone_splines_against_hermite_pairs() {
+        let curve = twisted_cubic(0.2, 1.2);
+        let surface = tangent_surface(&curve, 0.5, 1.0);
+        let mut previous = f64::INFINITY;
+        for cones in [8, 11, 16, 21] {
+            let ts = uniform_parameters((0.2, 1.2), cones);
+            let spline = osculating_spline(&surface, &ts).unwrap();
+            // 2n − 1 pieces when the osculating segments on either side of eᵢ merge into one.
+            let pieces = spline.pieces().len();
+            assert!(
+                (2 * cones - 1..=3 * cones - 2).contains(&pieces),
+                "{pieces} pieces"
+            );
+            let error = deviation(&surface, spline.pieces(), 0.2, 1.2, 400).unwrap();
+            let hermite = |elements: usize| {
+                let ts = uniform_parameters((0.2, 1.2), elements);
+                let els: Vec<_> = ts.iter().map(|&t| surface.element(t).unwrap()).collect();
+                let (spline, _) =
+                    ConeSpline::hermite(&els, Rule::MinimalVertexDistance, None).unwrap();
+                (
+                    spline.pieces().len(),
+                    deviation(&surface, spline.pieces(), 0.2, 1.2, 400).unwrap(),
+                )
+            };
+            let (below, above) = (hermite(pieces / 2), hermite(pieces / 2 + 1));
+            println!(
+                "osculating: {cones} cones, {pieces} pieces, max deviation {error:.3e}; \
+                 Hermite cone pairs: {} pieces {:.3e}, {} pieces {:.3e}",
+                below.0, below.1, above.0, above.1
+            );
+            assert!(error < previous, "the error decreases with more cones");
+            previous = error;
+        }
+        // A cone Γ (the dual quadratic cone): every osculating cone has Γ's vertex, and a
+        // spherical osculating arc spline joins them.
+        let region =
+            crate::cone_spline::Region::new(DVec3::new(-3.0, -3.0, 1.0), DVec3::new(3.0, 3.0, 2.0))
+                .unwrap();
+        let knots = [0.0, 0.0, 0.0, 1.0, 1.0, 1.0];
+        let cone = DualDevelopable::new(2, &dual_cone_planes(), &knots, region).unwrap();
+        let vertex = osculating_cone(&cone, 0.5).unwrap().vertex.unwrap();
+        assert!(
+            vertex.length() < 1e-8,
+            "the osculating cone of a cone has its vertex: {vertex}"
+        );
+        let spherical = osculating_spline(&cone, &uniform_parameters((0.0, 1.0), 6)).unwrap();
+        let error = deviation(&cone, spherical.pieces(), 0.0, 1.0, 400).unwrap();
+        println!(
+            "osculating, cone Γ: 6 cones, {} pieces, max deviation {error:.3e}",
+            spherical.pieces().len()
+        );
+        assert!(spherical
+            .pieces()
+            .iter()
+            .all(|p| p.vertex().unwrap().length() < 1e-7));
+        assert!(error < 1e-3);
+        // Too far apart, no consistent filling cone exists (the paper's interval of e₂).
+        let far = uniform_parameters((0.2, 1.2), 3);
+        assert!(matches!(
+            osculating_spline(&surface, &far),
+            Err(Error::NoSolution(_))
+        ));
+    }
+}

@@ -1,0 +1,795 @@
+//! G1 cone pairs through two Hermite elements (Sections "The general case" and "Special
+//! cases"), every case of the paper:
+//!
+//! * **general** (skew rulings): the inscribed sphere Σ, centre m from the normal planes (5)
+//!   and the bisector plane (6); touching points aᵢ; vertices vᵢ = a₁ + μ₁e₁, a₂ − μ₂e₂ on
+//!   the bilinear relation (9), written as the Möbius map (11);
+//! * **cone** (intersecting rulings): a common vertex v and a spherical biarc (7)–(8) on a
+//!   sphere about v;
+//! * **cylinder** (parallel, equally oriented rulings): a planar biarc in a normal section;
+//! * **constant slope** (det(p₁, p₂, n₁ − n₂) = 0, (13)): cones with parallel axes normal
+//!   to the plane π spanned by p₁, p₂ (or by p₁ and n₁ − n₂ when det(p₁, p₂) = 0), vertices
+//!   again by (9) with aᵢ = eᵢ ∩ π;
+//! * **plane** (equal tangent planes): one plane sector or strip.
+//!
+//! The one-parameter family is cut by a [`Rule`]: minimal vertex distance (12) — the
+//! default —, congruent cones μ₁ = μ₂, a cylinder as the first (10) or second segment, or
+//! a given μ₁. Every candidate is built and checked (G1 at both elements, no vertex in the
+//! region Ω, no vertex at a reference point); of the admissible ones the *useful* one is
+//! the one with the least total segment angle, which discards the solution that winds
+//! round the cone (the wrong root of (12) is not always the larger distance).
+
+use super::biarc::{biarc, equal_lambda, lambda_through, partner_lambda, Biarc};
+use super::element::{check_consecutive, Element};
+use super::piece::ConePiece;
+use super::region::Region;
+use crate::error::{invalid, Error, Result};
+use crate::math::{quadratic_roots, secant_refine};
+use glam::{DMat3, DVec3};
+
+/// |det(p₁, p₂, n₁ − n₂)| below which (13) holds: the constant-slope case.
+const CONSTANT_SLOPE_TOLERANCE: f64 = 1e-10;
+/// Relative tolerance of the G1 check at the second element.
+const JOIN_TOLERANCE: f64 = 1e-10;
+
+/// How a cone pair is chosen from the one-parameter family.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Rule {
+    /// Locally minimal vertex distance |v₂ − v₁| (12), the useful root. In the cone and
+    /// cylinder cases (vertices fixed or at infinity): the biarc with equal legs λ₁ = λ₂.
+    MinimalVertexDistance,
+    /// Congruent cones, μ₁ = μ₂ in (9). Cone and cylinder cases: λ₁ = λ₂.
+    Congruent,
+    /// The first segment a cylinder (v₁ at infinity, μ₂ by (10)).
+    CylinderFirst,
+    /// The second segment a cylinder (v₂ at infinity).
+    CylinderSecond,
+    /// A given μ₁ (general and constant-slope cases) or λ₁ (cone and cylinder cases).
+    Given(f64),
+}
+
+/// Which case of the paper a pair falls into.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PairCase {
+    General,
+    Cone,
+    Cylinder,
+    ConstantSlope,
+    Plane,
+}
+
+/// A G1 cone pair (or a single plane piece) from one element to the next.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ConePair {
+    pub case: PairCase,
+    /// Two pieces (one for the plane case, or where one segment of the family does not
+    /// move); the first starts at the first element.
+    pub pieces: Vec<ConePiece>,
+    /// The inscribed sphere (centre, radius): general case, and the sphere about the common
+    /// vertex in the cone case.
+    pub sphere: Option<(DVec3, f64)>,
+    /// The biarc along which the pair touches Σ (or meets the normal section / π).
+    pub biarc: Option<Biarc>,
+    /// The vertex parameters (μ₁, μ₂) of (9); `None` for a vertex at infinity.
+    pub mu: Option<VertexParameters>,
+}
+
+/// A vertex: a point, or at infinity (the segment is a cylinder).
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Apex {
+    Finite(DVec3),
+    Infinite,
+}
+
+/// The cone pair from `a` to `b` chosen by `rule`, free of vertices in `region`.
+/// `names` are the caller's names of the two elements, for messages.
+pub fn cone_pair(
+    a: &Element,
+    b: &Element,
+    rule: Rule,
+    region: Option<&Region>,
+    names: (&str, &str),
+) -> Result<ConePair> {
+    check_consecutive(a, b, names.0, names.1)?;
+    if let Rule::Given(x) = rule {
+        if !x.is_finite() {
+            return invalid!("the given parameter mu1 = {x} is not finite");
+        }
+    }
+    let (e1, e2) = (a.ruling, b.ruling);
+    let w = e1.cross(e2);
+    let d = b.point - a.point;
+    let scale = a
+        .point
+        .abs()
+        .max_element()
+        .max(b.point.abs().max_element())
+        .max(d.length())
+        .max(1e-300);
+    let equal_planes =
+        (a.normal() - b.normal()).length() <= 1e-12 && d.dot(a.normal()).abs() <= 1e-12 * scale;
+    if w.length() <= 1e-12 {
+        return if equal_planes {
+            single_plane(ConePiece::cylinder(*a, b.point), b, scale)
+        } else {
+            cylinder_case(a, b, rule, scale)
+        };
+    }
+    let gap = d.dot(w) / w.length();
+    if gap.abs() <= 1e-12 * scale {
+        let v = a.at(d.cross(e2).dot(w) / w.length_squared());
+        return if equal_planes {
+            single_plane(ConePiece::cone(v, *a, e2), b, scale)
+        } else {
+            cone_case(a, b, v, rule, region, scale)
+        };
+    }
+    let (p1, p2) = (a.side, b.side);
+    let slope = p1.dot(p2.cross(a.normal() - b.normal()));
+    if slope.abs() <= CONSTANT_SLOPE_TOLERANCE {
+        constant_slope_case(a, b, rule, region, scale)
+    } else {
+        general_case(a, b, rule, region, scale)
+    }
+}
+
+fn single_plane(piece: Result<ConePiece>, b: &Element, scale: f64) -> Result<ConePair> {
+    let piece = piece?;
+    joins(&piece.end(), b, scale)?;
+    Ok(ConePair {
+        case: PairCase::Plane,
+        pieces: vec![piece],
+        sphere: None,
+        biarc: None,
+        mu: None,
+    })
+}
+
+/// The G1 check at the second element: same ruling line, direction and tangent plane.
+pub(crate) fn joins(end: &Element, b: &Element, scale: f64) -> Result<()> {
+    let off_line = (b.point - end.point).cross(end.ruling).length();
+    if (end.ruling - b.ruling).length() > JOIN_TOLERANCE
+        || (end.normal() - b.normal()).length() > JOIN_TOLERANCE
+        || off_line > JOIN_TOLERANCE * scale
+    {
+        return Err(Error::NoSolution(
+            "the pair does not reach the second element with its ruling orientation and side"
+                .into(),
+        ));
+    }
+    Ok(())
+}
+
+/// Both segments from their vertices: the junction ruling joins v₁ and v₂ (or is parallel
+/// to the ruling of a segment whose vertex is at infinity), with the orientation `sign`.
+/// By construction the second segment ends on the ruling of `b` with its direction; only
+/// its tangent plane there remains to be checked.
+fn pair_from_apexes(
+    a: &Element,
+    b: &Element,
+    v1: Apex,
+    v2: Apex,
+    sign: f64,
+    scale: f64,
+) -> Result<[ConePiece; 2]> {
+    let (through, direction) = match (v1, v2) {
+        (Apex::Finite(p), Apex::Finite(q)) => (p, q - p),
+        (Apex::Infinite, Apex::Finite(q)) => (q, a.ruling),
+        (Apex::Finite(p), Apex::Infinite) => (p, b.ruling),
+        (Apex::Infinite, Apex::Infinite) => {
+            return Err(Error::NoSolution("both vertices at infinity".into()))
+        }
+    };
+    if direction.length() <= 1e-12 * scale {
+        return Err(Error::NoSolution("the two vertices coincide".into()));
+    }
+    let first = match v1 {
+        Apex::Finite(p) => ConePiece::cone(p, *a, sign * direction),
+        Apex::Infinite => ConePiece::cylinder(*a, through),
+    }?;
+    let second = match v2 {
+        Apex::Finite(q) => ConePiece::cone(q, first.end(), b.ruling),
+        Apex::Infinite => ConePiece::cylinder(first.end(), b.point),
+    }?;
+    Ok([first, second])
+}
+
+/// The signed angle about e₂ between the pair's end tangent plane and that of `b`.
+fn plane_residual(pieces: &[ConePiece; 2], b: &Element) -> f64 {
+    pieces[1].end().tangent_plane_angle(b)
+}
+
+/// The pair of a family member, G1 at `b` to round-off: the vertex family (9) is
+/// ill-conditioned where the inscribed sphere is huge (nearly constant slope), so the
+/// finite vertex parameter μ₂ (or μ₁) is polished by secant steps on the tangent-plane
+/// residual at `b` before the G1 check.
+fn family_member(
+    a: &Element,
+    b: &Element,
+    family: &VertexFamily,
+    mu: VertexParameters,
+    sign: f64,
+    scale: f64,
+) -> Result<Vec<ConePiece>> {
+    let build = |mu: VertexParameters| {
+        let (v1, v2) = family.apexes(mu);
+        pair_from_apexes(a, b, v1, v2, sign, scale)
+    };
+    let with = |x: f64| {
+        if mu.1.is_some() {
+            (mu.0, Some(x))
+        } else {
+            (Some(x), None)
+        }
+    };
+    let pieces = match mu.1.or(mu.0) {
+        Some(x0) => {
+            let residual = |x: f64| build(with(x)).ok().map(|p| plane_residual(&p, b));
+            build(with(secant_refine(
+                residual,
+                x0,
+                1e-7 * x0.abs().max(scale),
+                8,
+            )))?
+        }
+        None => build(mu)?,
+    };
+    joins(&pieces[1].end(), b, scale)?;
+    // A segment that does not move (the family member where one cone alone joins the
+    // elements) is left out rather than kept as an empty patch.
+    Ok(pieces.into_iter().filter(|p| !is_empty(p, scale)).collect())
+}
+
+/// Whether a piece does not move its ruling at all (to round-off).
+fn is_empty(piece: &ConePiece, scale: f64) -> bool {
+    let end = piece.end();
+    (end.point - piece.start.point).length() <= 1e-13 * scale
+        && (end.ruling - piece.start.ruling).length() <= 1e-13
+}
+
+/// The total segment angle of a candidate (smaller is more useful).
+fn total_angle(pieces: &[ConePiece]) -> f64 {
+    pieces.iter().map(ConePiece::segment_angle).sum()
+}
+
+fn has_vertex_in(pieces: &[ConePiece], region: Option<&Region>) -> bool {
+    region.is_some_and(|r| {
+        pieces
+            .iter()
+            .filter_map(ConePiece::vertex)
+            .any(|v| r.contains(v))
+    })
+}
+
+/// Vertex parameters (μ₁, μ₂); `None` is a vertex at infinity.
+pub type VertexParameters = (Option<f64>, Option<f64>);
+
+/// The vertex family of (9): v₁ = a₁ + μ₁e₁, v₂ = a₂ − μ₂e₂, μ₂ = (Aμ₁ + B)/(Cμ₁ + D) (11).
+struct VertexFamily {
+    a1: DVec3,
+    a2: DVec3,
+    e1: DVec3,
+    e2: DVec3,
+    coefficients: [f64; 4],
+}
+
+impl VertexFamily {
+    fn new(a1: DVec3, e1: DVec3, a2: DVec3, e2: DVec3) -> Self {
+        let d = a2 - a1;
+        let coefficients = [
+            2.0 * d.dot(e1),
+            -d.length_squared(),
+            2.0 * (e1.dot(e2) - 1.0),
+            -2.0 * d.dot(e2),
+        ];
+        Self {
+            a1,
+            a2,
+            e1,
+            e2,
+            coefficients,
+        }
+    }
+
+    /// μ₂ for μ₁ by (11); `None` at the pole (v₂ at infinity).
+    fn mu2(&self, mu1: f64) -> Option<f64> {
+        let [a, b, c, d] = self.coefficients;
+        let (num, den) = (a * mu1 + b, c * mu1 + d);
+        (den.abs() > 1e-14 * num.abs().max(1e-300)).then(|| num / den)
+    }
+
+    /// μ₁ for μ₂ by the inverse of (11); `None` for v₁ at infinity.
+    fn mu1(&self, mu2: f64) -> Option<f64> {
+        let [a, b, c, d] = self.coefficients;
+        let (num, den) = (d * mu2 - b, a - c * mu2);
+        (den.abs() > 1e-14 * num.abs().max(1e-300)).then(|| num / den)
+    }
+
+    /// The (μ₁, μ₂) the rule asks for (two for the quadratic rules).
+    fn candidates(&self, rule: Rule) -> Vec<VertexParameters> {
+        let [a, b, c, d] = self.coefficients;
+        let with_partner = |mu1: f64| (Some(mu1), self.mu2(mu1));
+        match rule {
+            // (12): C²μ₁² + 2CDμ₁ + AD + D² − BC = 0.
+            Rule::MinimalVertexDistance => {
+                quadratic_roots(c * c, 2.0 * c * d, a * d + d * d - b * c)
+                    .into_iter()
+                    .map(with_partner)
+                    .collect()
+            }
+            // μ₁ = μ₂ = μ in (11): Cμ² + (D − A)μ − B = 0.
+            Rule::Congruent => quadratic_roots(c, d - a, -b)
+                .into_iter()
+                .map(|mu| (Some(mu), Some(mu)))
+                .collect(),
+            // (10): μ₁ → ∞ gives μ₂ = A / C.
+            Rule::CylinderFirst => vec![(None, (c != 0.0).then(|| a / c))],
+            Rule::CylinderSecond => vec![((c != 0.0).then(|| -d / c), None)],
+            Rule::Given(mu1) => vec![with_partner(mu1)],
+        }
+    }
+
+    /// Vertices just outside the region on either ruling, for when the rule's own choice
+    /// puts a vertex inside it.
+    fn boundary_candidates(&self, region: &Region) -> Vec<VertexParameters> {
+        let margin = 1e-6 * (region.max - region.min).length();
+        let mut out = self.candidates(Rule::CylinderFirst);
+        out.extend(self.candidates(Rule::CylinderSecond));
+        if let Some((lo, hi)) = region.clip_line(self.a1, self.e1) {
+            for mu1 in [lo - margin, hi + margin] {
+                out.push((Some(mu1), self.mu2(mu1)));
+            }
+        }
+        if let Some((lo, hi)) = region.clip_line(self.a2, -self.e2) {
+            for mu2 in [lo - margin, hi + margin] {
+                out.push((self.mu1(mu2), Some(mu2)));
+            }
+        }
+        out
+    }
+
+    fn apexes(&self, (mu1, mu2): VertexParameters) -> (Apex, Apex) {
+        (
+            mu1.map_or(Apex::Infinite, |m| Apex::Finite(self.a1 + m * self.e1)),
+            mu2.map_or(Apex::Infinite, |m| Apex::Finite(self.a2 - m * self.e2)),
+        )
+    }
+}
+
+/// The most useful admissible pair of the candidates, with its (μ₁, μ₂).
+fn best_pair(
+    a: &Element,
+    b: &Element,
+    family: &VertexFamily,
+    candidates: Vec<VertexParameters>,
+    region: Option<&Region>,
+    scale: f64,
+) -> Option<(Vec<ConePiece>, VertexParameters)> {
+    candidates
+        .into_iter()
+        .flat_map(|mu| [1.0, -1.0].map(|sign| (mu, sign)))
+        .filter_map(|(mu, sign)| {
+            let pieces = family_member(a, b, family, mu, sign, scale).ok()?;
+            (!has_vertex_in(&pieces, region)).then_some((pieces, mu))
+        })
+        .min_by(|x, y| total_angle(&x.0).total_cmp(&total_angle(&y.0)))
+}
+
+/// Solves a family case (general or constant slope) by the rule, falling back (for the
+/// default rule) to vertices just outside the region.
+fn family_pair(
+    a: &Element,
+    b: &Element,
+    family: &VertexFamily,
+    rule: Rule,
+    region: Option<&Region>,
+    scale: f64,
+) -> Result<(Vec<ConePiece>, VertexParameters)> {
+    if let Some(found) = best_pair(a, b, family, family.candidates(rule), region, scale) {
+        return Ok(found);
+    }
+    if let (Some(r), Rule::MinimalVertexDistance) = (region, rule) {
+        if let Some(found) = best_pair(a, b, family, family.boundary_candidates(r), region, scale) {
+            return Ok(found);
+        }
+        return Err(Error::NoSolution(
+            "the region of interest contains every admissible vertex of the cone pairs".into(),
+        ));
+    }
+    Err(Error::NoSolution(format!(
+        "no cone pair of the rule {rule:?} joins the elements consistently{}",
+        if region.is_some() {
+            " with its vertices outside the region"
+        } else {
+            ""
+        }
+    )))
+}
+
+/// The spherical (or planar) biarc of a finished pair: the junction point c where the
+/// junction ruling touches Σ / meets the plane, and λᵢ through c.
+fn biarc_through(a1: DVec3, a2: DVec3, a: &Element, b: &Element, c: DVec3) -> Biarc {
+    let l1 = lambda_through(a1, a.side, c);
+    let l2 = lambda_through(a2, -b.side, c);
+    biarc(a1, a.side, a2, b.side, l1, l2)
+}
+
+fn general_case(
+    a: &Element,
+    b: &Element,
+    rule: Rule,
+    region: Option<&Region>,
+    scale: f64,
+) -> Result<ConePair> {
+    let (n1, n2) = (a.normal(), b.normal());
+    // m: the normal planes (5) and the bisector plane (6).
+    let rows = DMat3::from_cols(a.side, b.side, n1 - n2).transpose();
+    let rhs = DVec3::new(
+        a.side.dot(a.point),
+        b.side.dot(b.point),
+        a.point.dot(n1) - b.point.dot(n2),
+    );
+    let m = rows.inverse() * rhs;
+    let radius = (m - a.point).dot(n1);
+    let a1 = a.at(a.parameter_of(m));
+    let a2 = b.at(b.parameter_of(m));
+    let family = VertexFamily::new(a1, a.ruling, a2, b.ruling);
+    let (pieces, mu) = family_pair(a, b, &family, rule, region, scale)?;
+    // The junction ruling touches Σ at the foot of m on it.
+    let j = pieces[0].end();
+    let c = j.at(j.parameter_of(m));
+    Ok(ConePair {
+        case: PairCase::General,
+        biarc: Some(biarc_through(a1, a2, a, b, c)),
+        pieces,
+        sphere: Some((m, radius.abs())),
+        mu: Some(mu),
+    })
+}
+
+fn constant_slope_case(
+    a: &Element,
+    b: &Element,
+    rule: Rule,
+    region: Option<&Region>,
+    scale: f64,
+) -> Result<ConePair> {
+    let (p1, p2) = (a.side, b.side);
+    let mut normal = p1.cross(p2);
+    if normal.length() <= 1e-12 {
+        // det(p₁, p₂) = 0: π is spanned by p₁ and n₁ − n₂.
+        normal = p1.cross(a.normal() - b.normal());
+    }
+    let normal = normal.normalize();
+    let meet = |el: &Element| -> Result<DVec3> {
+        let s = el.ruling.dot(normal);
+        if s.abs() <= 1e-12 {
+            return Err(Error::NoSolution(
+                "a ruling is parallel to the plane π of the constant-slope case".into(),
+            ));
+        }
+        Ok(el.at((a.point - el.point).dot(normal) / s))
+    };
+    let (a1, a2) = (meet(a)?, meet(b)?);
+    let family = VertexFamily::new(a1, a.ruling, a2, b.ruling);
+    let (pieces, mu) = family_pair(a, b, &family, rule, region, scale)?;
+    let j = pieces[0].end();
+    let c = j.at((a1 - j.point).dot(normal) / j.ruling.dot(normal));
+    Ok(ConePair {
+        case: PairCase::ConstantSlope,
+        biarc: Some(biarc_through(a1, a2, a, b, c)),
+        pieces,
+        sphere: None,
+        mu: Some(mu),
+    })
+}
+
+/// λ₁, λ₂ of the rule for the cone and cylinder cases.
+fn biarc_lambdas(a1: DVec3, p1: DVec3, a2: DVec3, p2: DVec3, rule: Rule) -> Result<(f64, f64)> {
+    let lambda1 = match rule {
+        Rule::Given(l) => l,
+        _ => equal_lambda(a1, p1, a2, p2)
+            .ok_or_else(|| Error::NoSolution("no biarc with equal positive legs".into()))?,
+    };
+    let lambda2 = partner_lambda(a1, p1, a2, p2, lambda1)
+        .ok_or_else(|| Error::NoSolution(format!("lambda1 = {lambda1} gives no second arc")))?;
+    if (lambda1 + lambda2).abs() <= 1e-14 * (lambda1.abs() + lambda2.abs()) {
+        return Err(Error::NoSolution(
+            "the biarc degenerates (lambda1 + lambda2 = 0)".into(),
+        ));
+    }
+    Ok((lambda1, lambda2))
+}
+
+fn cone_case(
+    a: &Element,
+    b: &Element,
+    v: DVec3,
+    rule: Rule,
+    region: Option<&Region>,
+    scale: f64,
+) -> Result<ConePair> {
+    if matches!(rule, Rule::CylinderFirst | Rule::CylinderSecond) {
+        return Err(Error::NoSolution(
+            "the rulings intersect: every cone pair has their common vertex, none is a cylinder"
+                .into(),
+        ));
+    }
+    if region.is_some_and(|r| r.contains(v)) {
+        return Err(Error::NoSolution(format!(
+            "the region of interest contains every possible vertex: the rulings meet at {v}"
+        )));
+    }
+    let (s1, s2) = (a.parameter_of(v), b.parameter_of(v));
+    if s1 == 0.0 || s2 == 0.0 || (s1 < 0.0) != (s2 < 0.0) {
+        return Err(Error::NoSolution(
+            "the element points lie at or on different sides of the common vertex of the rulings"
+                .into(),
+        ));
+    }
+    // The nappe of the reference points: aᵢ = v + σ R eᵢ on the sphere about v.
+    let sigma = if s1 < 0.0 { 1.0 } else { -1.0 };
+    let radius = (a.point - v).length();
+    let (a1, a2) = (v + sigma * radius * a.ruling, v + sigma * radius * b.ruling);
+    let (l1, l2) = biarc_lambdas(a1, a.side, a2, b.side, rule)?;
+    let arcs = biarc(a1, a.side, a2, b.side, l1, l2);
+    let junction = sigma * (arcs.c - v);
+    let first = ConePiece::cone(v, *a, junction)?;
+    let second = ConePiece::cone(v, first.end(), b.ruling)?;
+    joins(&second.end(), b, scale)?;
+    Ok(ConePair {
+        case: PairCase::Cone,
+        pieces: vec![first, second],
+        sphere: Some((v, radius)),
+        biarc: Some(arcs),
+        mu: None,
+    })
+}
+
+fn cylinder_case(a: &Element, b: &Element, rule: Rule, scale: f64) -> Result<ConePair> {
+    let a1 = a.point;
+    let a2 = b.point - (b.point - a.point).dot(a.ruling) * a.ruling;
+    let (l1, l2) = biarc_lambdas(a1, a.side, a2, b.side, rule)?;
+    let arcs = biarc(a1, a.side, a2, b.side, l1, l2);
+    let first = ConePiece::cylinder(*a, arcs.c)?;
+    let second = ConePiece::cylinder(first.end(), b.point)?;
+    joins(&second.end(), b, scale)?;
+    Ok(ConePair {
+        case: PairCase::Cylinder,
+        pieces: vec![first, second],
+        sphere: None,
+        biarc: Some(arcs),
+        mu: None,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::biarc::polar_plane;
+    use super::super::developable::Developable;
+    use super::super::piece::PieceKind;
+    use super::super::test_support::{tangent_surface, twisted_cubic, Helix};
+    use super::*;
+    use glam::DVec4;
+    use std::f64::consts::PI;
+
+    fn solve(a: &Element, b: &Element, rule: Rule, region: Option<&Region>) -> Result<ConePair> {
+        cone_pair(a, b, rule, region, ("a", "b"))
+    }
+
+    fn on_plane(plane: DVec4, x: DVec3) -> f64 {
+        plane.dot(x.extend(1.0)) / plane.truncate().length()
+    }
+
+    #[test]
+    fn general_case_inscribed_sphere_biarc_and_polar_planes() {
+        let curve = twisted_cubic(0.2, 1.2);
+        let surface = tangent_surface(&curve, 0.5, 1.5);
+        let (a, b) = (surface.element(0.4).unwrap(), surface.element(0.6).unwrap());
+        let pair = solve(&a, &b, Rule::MinimalVertexDistance, None).unwrap();
+        assert_eq!(pair.case, PairCase::General);
+        let (m, r) = pair.sphere.unwrap();
+        // Σ touches both tangent planes at points of the rulings.
+        for el in [&a, &b] {
+            let foot = el.at(el.parameter_of(m));
+            assert!(((m - foot).length() - r).abs() < 1e-12 * r.max(1.0));
+            assert!((m - foot).cross(el.normal()).length() < 1e-10);
+        }
+        // Vertex distance |v₂ − v₁| = |μ₁ + μ₂| and locally minimal along (9).
+        let (mu1, mu2) = match pair.mu.unwrap() {
+            (Some(x), Some(y)) => (x, y),
+            other => panic!("finite vertices expected, got {other:?}"),
+        };
+        let [first, second] = [pair.pieces[0], pair.pieces[1]];
+        let (v1, v2) = (first.vertex().unwrap(), second.vertex().unwrap());
+        assert!(((v2 - v1).length() - (mu1 + mu2).abs()).abs() < 1e-9);
+        let arcs = pair.biarc.unwrap();
+        let family = VertexFamily::new(arcs.a1, a.ruling, arcs.a2, b.ruling);
+        let distance = |x: f64| (x + family.mu2(x).unwrap()).abs();
+        let h = 1e-4 * mu1.abs().max(1.0);
+        assert!(distance(mu1) <= distance(mu1 + h) && distance(mu1) <= distance(mu1 - h));
+        // Polar planes of the biarc's Bézier points: the tangent planes at the bounding
+        // rulings and the Bézier plane through both rulings (Fig. 1).
+        let j = first.end();
+        let plane_a = polar_plane(arcs.a1.extend(1.0), m, r);
+        let plane_c = polar_plane(arcs.c.extend(1.0), m, r);
+        let plane_b = polar_plane((arcs.b1 * arcs.w1).extend(arcs.w1), m, r);
+        for t in [-1.0, 2.0] {
+            assert!(on_plane(plane_a, a.at(t)).abs() < 1e-9);
+            assert!(on_plane(plane_c, j.at(t)).abs() < 1e-9);
+            assert!(on_plane(plane_b, a.at(t)).abs() < 1e-9);
+            assert!(on_plane(plane_b, j.at(t)).abs() < 1e-9);
+        }
+        // The first cone's axis passes through m (it touches Σ).
+        let k = first.axis();
+        assert!((m - v1).cross(k).length() < 1e-9 * (m - v1).length());
+        assert!(first.segment_angle() < 1.0 && second.segment_angle() < 1.0);
+    }
+
+    #[test]
+    fn rules_pick_congruent_cylinder_and_given_solutions() {
+        let curve = twisted_cubic(0.2, 1.2);
+        let surface = tangent_surface(&curve, 0.5, 1.5);
+        let (a, b) = (surface.element(0.5).unwrap(), surface.element(0.8).unwrap());
+        let congruent = solve(&a, &b, Rule::Congruent, None).unwrap();
+        let (x, y) = (
+            congruent.pieces[0].half_angle(),
+            congruent.pieces[1].half_angle(),
+        );
+        assert!(
+            (x - y).abs() < 1e-9,
+            "congruent cones have equal half angles: {x} {y}"
+        );
+        let cylinder = solve(&a, &b, Rule::CylinderFirst, None).unwrap();
+        assert_eq!(cylinder.pieces[0].kind(), PieceKind::Cylinder);
+        assert_eq!(cylinder.pieces[1].kind(), PieceKind::Cone);
+        let second = solve(&a, &b, Rule::CylinderSecond, None).unwrap();
+        assert_eq!(second.pieces[1].kind(), PieceKind::Cylinder);
+        let best = solve(&a, &b, Rule::MinimalVertexDistance, None).unwrap();
+        let (mu1, _) = best.mu.unwrap();
+        let given = solve(&a, &b, Rule::Given(mu1.unwrap() * 1.1), None).unwrap();
+        let arcs = given.biarc.unwrap();
+        let v1 = given.pieces[0].vertex().unwrap();
+        assert!((v1 - (arcs.a1 + mu1.unwrap() * 1.1 * a.ruling)).length() < 1e-9);
+    }
+
+    fn assert_vertical_axes(pair: &ConePair) {
+        for piece in &pair.pieces {
+            let k = piece.axis();
+            assert!(k.cross(DVec3::Z).length() < 1e-9, "axis {k}");
+        }
+    }
+
+    #[test]
+    fn constant_slope_case_has_parallel_axes() {
+        let helix = Helix {
+            radius: 1.0,
+            pitch: 0.5,
+            domain: (0.0, 6.0),
+        };
+        let surface = tangent_surface(&helix, 1.0, 2.0);
+        let (a, b) = (surface.element(1.0).unwrap(), surface.element(1.6).unwrap());
+        let pair = solve(&a, &b, Rule::MinimalVertexDistance, None).unwrap();
+        assert_eq!(pair.case, PairCase::ConstantSlope);
+        assert_vertical_axes(&pair);
+        // Minimal vertex distance gives congruent cones here.
+        assert!((pair.pieces[0].half_angle() - pair.pieces[1].half_angle()).abs() < 1e-9);
+        // det(p₁, p₂) = 0: half a turn apart the principal normals are antiparallel, π is
+        // spanned by p₁ and n₁ − n₂ (still horizontal).
+        let (a, b) = (
+            surface.element(1.0).unwrap(),
+            surface.element(1.0 + PI).unwrap(),
+        );
+        assert!(a.side.cross(b.side).length() < 1e-9);
+        let pair = solve(&a, &b, Rule::MinimalVertexDistance, None).unwrap();
+        assert_eq!(pair.case, PairCase::ConstantSlope);
+        assert_vertical_axes(&pair);
+    }
+
+    #[test]
+    fn cone_cylinder_and_plane_cases() {
+        // Rulings of the elliptic cone x²/4 + y² = z² through the origin.
+        let ruling = |s: f64| DVec3::new(2.0 * s.cos(), s.sin(), 1.0);
+        let side = |s: f64| DVec3::new(-2.0 * s.sin(), s.cos(), 0.0);
+        let element = |s: f64, scale: f64| {
+            let side = side(s) - side(s).dot(ruling(s).normalize()) * ruling(s).normalize();
+            Element::new(scale * ruling(s), ruling(s), side, "el").unwrap()
+        };
+        let pair = solve(
+            &element(0.2, 2.0),
+            &element(0.7, 1.5),
+            Rule::MinimalVertexDistance,
+            None,
+        )
+        .unwrap();
+        assert_eq!(pair.case, PairCase::Cone);
+        for piece in &pair.pieces {
+            assert!(piece.vertex().unwrap().length() < 1e-12);
+        }
+        // The far nappe: points behind the vertex, the side vectors reversed with them.
+        let far = |s: f64| {
+            let el = element(s, 1.0);
+            Element::new(-el.point, el.ruling, el.side, "el").unwrap()
+        };
+        let pair = solve(&far(0.7), &far(0.2), Rule::MinimalVertexDistance, None).unwrap();
+        assert!(pair.pieces.iter().all(|p| p.segment_angle() < 1.0));
+        // A region around the common vertex contains every possible vertex.
+        let region = Region::new(DVec3::splat(-0.1), DVec3::splat(0.1)).unwrap();
+        let big = Region::new(DVec3::splat(-5.0), DVec3::splat(5.0)).unwrap();
+        let err = solve(
+            &element(0.2, 2.0),
+            &element(0.7, 1.5),
+            Rule::MinimalVertexDistance,
+            Some(&big),
+        )
+        .unwrap_err();
+        assert!(err.message().contains("every possible vertex"), "{err}");
+        assert!(solve(
+            &element(0.2, 2.0),
+            &element(0.7, 1.5),
+            Rule::MinimalVertexDistance,
+            Some(&region)
+        )
+        .is_err());
+        assert!(solve(
+            &element(0.2, 2.0),
+            &element(0.7, 1.5),
+            Rule::CylinderFirst,
+            None
+        )
+        .is_err());
+
+        // Parallel rulings of the elliptic cylinder x²/4 + y² = 1.
+        let el = |s: f64| {
+            Element::new(
+                DVec3::new(2.0 * s.cos(), s.sin(), 0.3 * s),
+                DVec3::Z,
+                side(s),
+                "el",
+            )
+            .unwrap()
+        };
+        let pair = solve(&el(0.1), &el(0.9), Rule::MinimalVertexDistance, None).unwrap();
+        assert_eq!(pair.case, PairCase::Cylinder);
+        assert!(pair.pieces.iter().all(|p| p.kind() == PieceKind::Cylinder));
+
+        // Equal tangent planes: one plane sector, one strip.
+        let a = Element::new(DVec3::ZERO + DVec3::Y, DVec3::Y, DVec3::X, "a").unwrap();
+        let b = Element::new(
+            DVec3::new(1.0, 1.0, 0.0),
+            DVec3::new(1.0, 1.0, 0.0),
+            DVec3::new(1.0, -1.0, 0.0),
+            "b",
+        )
+        .unwrap();
+        let pair = solve(&a, &b, Rule::MinimalVertexDistance, None).unwrap();
+        assert_eq!((pair.case, pair.pieces.len()), (PairCase::Plane, 1));
+        assert!((pair.pieces[0].segment_angle() - std::f64::consts::FRAC_PI_4).abs() < 1e-12);
+        let c = Element::new(DVec3::new(2.0, 5.0, 0.0), DVec3::Y, DVec3::X, "c").unwrap();
+        let pair = solve(&a, &c, Rule::MinimalVertexDistance, None).unwrap();
+        assert_eq!(pair.pieces[0].kind(), PieceKind::Plane);
+    }
+
+    #[test]
+    fn regions_exclude_vertices() {
+        let curve = twisted_cubic(0.2, 1.2);
+        let surface = tangent_surface(&curve, 0.5, 1.5);
+        let (a, b) = (surface.element(0.4).unwrap(), surface.element(0.7).unwrap());
+        let free = solve(&a, &b, Rule::MinimalVertexDistance, None).unwrap();
+        let v = free.pieces[0].vertex().unwrap();
+        // A box around the default vertex but not the element points.
+        let region = Region::new(v - DVec3::splat(0.02), v + DVec3::splat(0.02)).unwrap();
+        let moved = solve(&a, &b, Rule::MinimalVertexDistance, Some(&region)).unwrap();
+        for piece in &moved.pieces {
+            assert!(piece.vertex().is_none_or(|v| !region.contains(v)));
+        }
+        assert!(moved.pieces[1].end().ruling.dot(b.ruling) > 1.0 - 1e-9);
+        let given = solve(
+            &a,
+            &b,
+            Rule::Given(free.mu.unwrap().0.unwrap()),
+            Some(&region),
+        );
+        assert!(given.unwrap_err().message().contains("outside the region"));
+    }
+}

@@ -1,0 +1,458 @@
+//! One piece of a cone spline: a segment of a right circular cone, of a cylinder of
+//! revolution, or of a plane, bounded by two rulings (Fig. 16).
+//!
+//! Every such segment is swept by its first ruling under one rigid motion: a rotation about
+//! the axis (cone, cylinder, plane sector about its vertex) or a translation (plane strip
+//! between parallel rulings). Storing the piece as *start element + motion* makes the rest
+//! elementary: the end ruling and its tangent plane are the moved start element (so the G1
+//! junction of Theorem 1 is a frame equality), the parallel circles are the paths of ruling
+//! points, the exact degree (1, 2) patch is a ruling segment times a rational quadratic
+//! circular arc, and the development and bending of Section "Bending sequences" only change
+//! the half angle α and the segment angle φ with φ sin α fixed.
+//!
+//! The rotation sense is chosen so that the piece leaves its start ruling towards the side
+//! vector p at the reference point. On the far nappe of a cone (reference point and inscribed
+//! sphere on different sides of the vertex) this is the complementary arc of Figs. 5–6.
+
+use super::element::Element;
+use crate::bezier::homogeneous::lift;
+use crate::bezier::RationalBezierPatch;
+use crate::error::{invalid, Error, Result};
+use glam::{DMat3, DVec3, DVec4};
+use std::f64::consts::{FRAC_PI_2, PI, TAU};
+
+/// |cos| between axis and ruling above which a rotation is a cylinder, and below which it
+/// is a plane sector.
+const AXIS_TOLERANCE: f64 = 1e-12;
+
+/// Largest angle one degree (1, 2) patch spans; longer pieces are split into equal parts
+/// so that every weight cos(φ/2) stays ≥ 1/2.
+const MAX_PATCH_ANGLE: f64 = 2.0 * PI / 3.0;
+
+/// The rigid motion that sweeps a piece's first ruling over the piece.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Motion {
+    /// Rotation by the signed `angle` about the line through `origin` with unit `axis`.
+    Rotation {
+        origin: DVec3,
+        axis: DVec3,
+        angle: f64,
+    },
+    /// Translation by a vector normal to the rulings (a plane strip).
+    Translation(DVec3),
+}
+
+impl Motion {
+    /// The image of the point `x` under the fraction `f ∈ [0, 1]` of the motion.
+    pub fn point(&self, x: DVec3, f: f64) -> DVec3 {
+        match *self {
+            Motion::Rotation {
+                origin,
+                axis,
+                angle,
+            } => origin + DMat3::from_axis_angle(axis, f * angle) * (x - origin),
+            Motion::Translation(v) => x + f * v,
+        }
+    }
+
+    /// The image of the direction `d` under the fraction `f` of the motion.
+    pub fn vector(&self, d: DVec3, f: f64) -> DVec3 {
+        match *self {
+            Motion::Rotation { axis, angle, .. } => DMat3::from_axis_angle(axis, f * angle) * d,
+            Motion::Translation(_) => d,
+        }
+    }
+
+    /// The element moved by the fraction `f` of the motion.
+    pub fn element(&self, el: &Element, f: f64) -> Element {
+        Element::from_frame(
+            self.point(el.point, f),
+            self.vector(el.ruling, f),
+            self.vector(el.side, f),
+        )
+    }
+}
+
+/// What surface a piece is taken from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PieceKind {
+    /// A right circular cone (0 < α < π/2).
+    Cone,
+    /// A cylinder of revolution (α = 0, vertex at infinity).
+    Cylinder,
+    /// A plane: a sector about a vertex (α = π/2) or a strip between parallel rulings.
+    Plane,
+}
+
+/// A cone, cylinder or plane segment: its first ruling (with tangent plane and reference
+/// point) and the motion that sweeps it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ConePiece {
+    pub start: Element,
+    pub motion: Motion,
+}
+
+/// `theta0 ∈ (−π, π]` turned into the sweep in the required sense: (0, 2π) if `positive`,
+/// else (−2π, 0).
+fn signed_sweep(theta0: f64, positive: bool) -> f64 {
+    match (positive, theta0 > 0.0) {
+        (true, true) | (false, false) if theta0 != 0.0 => theta0,
+        (true, _) => theta0 + TAU,
+        (false, _) => theta0 - TAU,
+    }
+}
+
+/// Component of `v` normal to the unit vector `k`.
+fn radial(v: DVec3, k: DVec3) -> DVec3 {
+    v - v.dot(k) * k
+}
+
+/// Signed angle about the unit `k` from `a` to `b` (both normal to k), in (−π, π].
+fn angle_about(k: DVec3, a: DVec3, b: DVec3) -> f64 {
+    k.dot(a.cross(b)).atan2(a.dot(b))
+}
+
+/// Distance from `y` to the line through `p` with unit direction `d`.
+fn line_distance(y: DVec3, p: DVec3, d: DVec3) -> f64 {
+    (y - p).cross(d).length()
+}
+
+impl ConePiece {
+    /// The cone with `vertex` (on the start ruling) that touches the start tangent plane
+    /// along the start ruling and contains the ruling direction `end_ruling` through the
+    /// vertex. Its axis k = cos β e + sin β n lies in the plane of e and n with
+    /// k · e = k · e_end, i.e. tan β = (1 − e · e_end) / (n · e_end); n · e_end = 0 gives a
+    /// plane sector (β = π/2).
+    pub fn cone(vertex: DVec3, start: Element, end_ruling: DVec3) -> Result<Self> {
+        let (e, n) = (start.ruling, start.normal());
+        let e_end = end_ruling.normalize();
+        let (ce, cn) = (e.dot(e_end), n.dot(e_end));
+        if 1.0 - ce <= 1e-14 || ce.is_nan() {
+            return invalid!("a cone piece needs two different rulings through its vertex");
+        }
+        let beta = (1.0 - ce).atan2(cn);
+        let axis = (beta.cos() * e + beta.sin() * n).normalize();
+        let rho = start.parameter_of(vertex);
+        let scale = start
+            .point
+            .abs()
+            .max_element()
+            .max(vertex.abs().max_element())
+            .max(1e-300);
+        if rho.abs() <= 1e-12 * scale {
+            return Err(Error::NoSolution(
+                "a cone vertex falls on the reference point of its ruling".into(),
+            ));
+        }
+        // k × e = sin β · p with sin β > 0: a positive rotation moves the reference point
+        // towards +p exactly when it lies beyond the vertex, ρ = (vertex − point) · e < 0.
+        let theta0 = angle_about(axis, radial(e, axis), radial(e_end, axis));
+        let angle = signed_sweep(theta0, rho < 0.0);
+        Ok(Self {
+            start,
+            motion: Motion::Rotation {
+                origin: vertex,
+                axis,
+                angle,
+            },
+        })
+    }
+
+    /// The cylinder of revolution touching the start tangent plane along the start ruling and
+    /// containing the parallel ruling through `end_point` (its normal section is the circle
+    /// through the start point tangent to p, radius ρ = |y|² / (2 y · n)); a plane strip
+    /// when that ruling lies in the start tangent plane.
+    pub fn cylinder(start: Element, end_point: DVec3) -> Result<Self> {
+        let (e, p, n) = (start.ruling, start.side, start.normal());
+        let y = radial(end_point - start.point, e);
+        let (yn, yp, len) = (y.dot(n), y.dot(p), y.length());
+        let scale = start
+            .point
+            .abs()
+            .max_element()
+            .max(end_point.abs().max_element())
+            .max(1e-300);
+        if len <= 1e-12 * scale {
+            return invalid!("a cylinder piece needs two different parallel rulings");
+        }
+        if yn.abs() <= 1e-12 * len {
+            if yp <= 0.0 {
+                return Err(Error::NoSolution(
+                    "the parallel ruling lies behind the side vector of the plane strip".into(),
+                ));
+            }
+            return Ok(Self {
+                start,
+                motion: Motion::Translation(y),
+            });
+        }
+        let rho = len * len / (2.0 * yn);
+        let origin = start.point + rho * n;
+        // e × (x − o) = ρ p: a positive rotation about e moves towards +p iff ρ > 0.
+        let theta0 = angle_about(e, start.point - origin, start.point + y - origin);
+        Ok(Self {
+            start,
+            motion: Motion::Rotation {
+                origin,
+                axis: e,
+                angle: signed_sweep(theta0, rho > 0.0),
+            },
+        })
+    }
+
+    /// The last ruling with its tangent plane and moved reference point.
+    pub fn end(&self) -> Element {
+        self.motion.element(&self.start, 1.0)
+    }
+
+    /// The ruling at the fraction `f ∈ [0, 1]` of the piece.
+    pub fn element_at(&self, f: f64) -> Element {
+        self.motion.element(&self.start, f)
+    }
+
+    pub fn kind(&self) -> PieceKind {
+        match self.motion {
+            Motion::Translation(_) => PieceKind::Plane,
+            Motion::Rotation { axis, .. } => {
+                let c = axis.dot(self.start.ruling).abs();
+                if c >= 1.0 - AXIS_TOLERANCE {
+                    PieceKind::Cylinder
+                } else if c <= AXIS_TOLERANCE {
+                    PieceKind::Plane
+                } else {
+                    PieceKind::Cone
+                }
+            }
+        }
+    }
+
+    /// The vertex (cones and plane sectors): where the start ruling meets the axis.
+    pub fn vertex(&self) -> Option<DVec3> {
+        match (self.motion, self.kind()) {
+            (Motion::Rotation { origin, axis, .. }, PieceKind::Cone | PieceKind::Plane) => {
+                // Closest point of the ruling line to the axis line (they intersect).
+                let (e, w) = (self.start.ruling, self.start.point - origin);
+                let (b, d, f) = (e.dot(axis), e.dot(w), axis.dot(w));
+                let t = (b * f - d) / (1.0 - b * b);
+                Some(self.start.at(t))
+            }
+            _ => None,
+        }
+    }
+
+    /// The unit axis direction, oriented like the rulings (k · e ≥ 0); for a plane strip the
+    /// plane normal.
+    pub fn axis(&self) -> DVec3 {
+        match self.motion {
+            Motion::Rotation { axis, .. } if axis.dot(self.start.ruling) < 0.0 => -axis,
+            Motion::Rotation { axis, .. } => axis,
+            Motion::Translation(_) => self.start.normal(),
+        }
+    }
+
+    /// A point on the axis (the vertex of a cone, the centre line of a cylinder).
+    pub fn axis_point(&self) -> Option<DVec3> {
+        match self.motion {
+            Motion::Rotation { origin, .. } => Some(origin),
+            Motion::Translation(_) => None,
+        }
+    }
+
+    /// Half opening angle α between rulings and axis: 0 for cylinders, π/2 for planes.
+    pub fn half_angle(&self) -> f64 {
+        match self.kind() {
+            PieceKind::Cylinder => 0.0,
+            PieceKind::Plane => FRAC_PI_2,
+            PieceKind::Cone => {
+                // atan2 keeps full precision for slender and for flat cones alike.
+                let (k, e) = (self.axis(), self.start.ruling);
+                k.cross(e).length().atan2(k.dot(e))
+            }
+        }
+    }
+
+    /// Segment angle φ ≥ 0 of the rotation (0 for a plane strip).
+    pub fn segment_angle(&self) -> f64 {
+        match self.motion {
+            Motion::Rotation { angle, .. } => angle.abs(),
+            Motion::Translation(_) => 0.0,
+        }
+    }
+
+    /// Radius of a cylinder (distance of the rulings from the axis); 0 otherwise.
+    pub fn radius(&self) -> f64 {
+        match (self.kind(), self.motion) {
+            (PieceKind::Cylinder, Motion::Rotation { origin, axis, .. }) => {
+                radial(self.start.point - origin, axis).length()
+            }
+            _ => 0.0,
+        }
+    }
+
+    /// Number of degree (1, 2) patches the piece is drawn with (1 unless φ > 120°).
+    pub fn patch_count(&self) -> usize {
+        ((self.segment_angle() / MAX_PATCH_ANGLE).ceil() as usize).max(1)
+    }
+
+    /// The exact degree (1, 2) rational Bézier patches of the piece between the signed
+    /// distances `t0 < t1` along the rulings (from the reference points): u along the
+    /// rulings, v along the parallel circles; one patch per [`patch_count`](Self::patch_count).
+    pub fn patches(&self, t0: f64, t1: f64) -> Result<Vec<RationalBezierPatch>> {
+        self.arcs(t0)
+            .into_iter()
+            .zip(self.arcs(t1))
+            .map(|(lower, upper)| {
+                RationalBezierPatch::from_homogeneous(1, 2, [lower, upper].concat())
+            })
+            .collect()
+    }
+
+    /// The parallel circle at signed distance `t` along the rulings (the path of the ruling
+    /// point at t), as homogeneous control points of one rational quadratic arc per patch.
+    pub fn arcs(&self, t: f64) -> Vec<[DVec4; 3]> {
+        let m = self.patch_count();
+        let part = self.part(1.0 / m as f64);
+        (0..m)
+            .map(|j| arc_control_points(&part, self.element_at(j as f64 / m as f64).at(t)))
+            .collect()
+    }
+
+    /// The motion restricted to its first fraction `f` (for the sub-patches).
+    fn part(&self, f: f64) -> Motion {
+        match self.motion {
+            Motion::Rotation {
+                origin,
+                axis,
+                angle,
+            } => Motion::Rotation {
+                origin,
+                axis,
+                angle: f * angle,
+            },
+            Motion::Translation(v) => Motion::Translation(f * v),
+        }
+    }
+
+    /// Distance from `y` to the piece extended along its rulings (the rulings at the
+    /// sweep fractions nearest to y's angular position, on either nappe).
+    pub fn distance(&self, y: DVec3) -> f64 {
+        let el = &self.start;
+        match self.motion {
+            Motion::Translation(v) => {
+                let s = (y - el.point).dot(v) / v.length_squared();
+                line_distance(y, el.point + s.clamp(0.0, 1.0) * v, el.ruling)
+            }
+            Motion::Rotation {
+                origin,
+                axis,
+                angle,
+            } => {
+                // The reference direction: the ruling's own direction from the vertex (both
+                // nappes: ψ and ψ + π), or the ruling's position for a cylinder.
+                let cylinder = self.kind() == PieceKind::Cylinder;
+                let reference = if cylinder {
+                    radial(el.point - origin, axis)
+                } else {
+                    radial(el.ruling, axis)
+                };
+                let psi = angle_about(axis, reference, radial(y - origin, axis));
+                let candidates: &[f64] = if cylinder { &[0.0] } else { &[0.0, PI] };
+                candidates
+                    .iter()
+                    .map(|&shift| {
+                        let f = sweep_fraction(psi + shift, angle);
+                        let r = self.motion.element(el, f);
+                        line_distance(y, r.point, r.ruling)
+                    })
+                    .fold(f64::INFINITY, f64::min)
+            }
+        }
+    }
+}
+
+/// The fraction of a rotation by `angle` nearest to the angular position `psi` (clamped to
+/// [0, 1], measured in the sense of the rotation).
+fn sweep_fraction(psi: f64, angle: f64) -> f64 {
+    let along = (psi * angle.signum()).rem_euclid(TAU);
+    let span = angle.abs();
+    if along <= span {
+        along / span.max(1e-300)
+    } else if along - span < TAU - along {
+        1.0
+    } else {
+        0.0
+    }
+}
+
+/// Homogeneous control points of the path of `y` under `motion` as a rational quadratic:
+/// y, the corner point at weight cos(φ/2), the moved point.
+fn arc_control_points(motion: &Motion, y: DVec3) -> [DVec4; 3] {
+    let end = motion.point(y, 1.0);
+    match *motion {
+        Motion::Rotation {
+            origin,
+            axis,
+            angle,
+        } => {
+            let centre = origin + (y - origin).dot(axis) * axis;
+            let w = (0.5 * angle).cos();
+            let corner = centre + DMat3::from_axis_angle(axis, 0.5 * angle) * (y - centre) / w;
+            [lift(y, 1.0), lift(corner, w), lift(end, 1.0)]
+        }
+        Motion::Translation(_) => [lift(y, 1.0), lift(0.5 * (y + end), 1.0), lift(end, 1.0)],
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn element(point: DVec3, e: DVec3, p: DVec3) -> Element {
+        Element::new(point, e, p, "el").unwrap()
+    }
+
+    #[test]
+    fn cone_through_two_rulings_touches_the_start_plane() {
+        // Cone x² + y² = z², vertex at the origin, rulings (1,0,1)/√2 and (0,1,1)/√2.
+        let s = std::f64::consts::FRAC_1_SQRT_2;
+        let start = element(DVec3::new(1.0, 0.0, 1.0), DVec3::new(s, 0.0, s), DVec3::Y);
+        let piece = ConePiece::cone(DVec3::ZERO, start, DVec3::new(0.0, s, s)).unwrap();
+        assert_eq!(piece.kind(), PieceKind::Cone);
+        assert!((piece.axis() - DVec3::Z).length() < 1e-15);
+        assert!((piece.half_angle() - std::f64::consts::FRAC_PI_4).abs() < 1e-15);
+        assert!((piece.segment_angle() - FRAC_PI_2).abs() < 1e-15);
+        let end = piece.end();
+        assert!((end.point - DVec3::new(0.0, 1.0, 1.0)).length() < 1e-15);
+        assert!((end.side - DVec3::new(-1.0, 0.0, 0.0)).length() < 1e-15);
+        assert!(piece.vertex().unwrap().length() < 1e-15);
+        // On the far nappe the same rulings are joined the other way round (Figs. 5–6).
+        let far = ConePiece::cone(
+            DVec3::ZERO,
+            start.with_point(-start.point),
+            DVec3::new(0.0, s, s),
+        );
+        assert!((far.unwrap().segment_angle() - 1.5 * PI).abs() < 1e-14);
+        for patch in piece.patches(-0.5, 2.0).unwrap() {
+            for (u, v) in [(0.0, 0.3), (0.5, 0.5), (1.0, 0.9)] {
+                let x = patch.eval(u, v);
+                assert!((x.x * x.x + x.y * x.y - x.z * x.z).abs() < 1e-14, "{x}");
+            }
+        }
+        assert!(piece.distance(DVec3::new(0.6, 0.6, 0.6 * 2f64.sqrt() + 0.1)) < 0.1);
+    }
+
+    #[test]
+    fn cylinders_and_strips() {
+        let start = element(DVec3::new(1.0, 0.0, 0.0), DVec3::Z, DVec3::Y);
+        let piece = ConePiece::cylinder(start, DVec3::new(-1.0, 0.0, 5.0)).unwrap();
+        assert_eq!(piece.kind(), PieceKind::Cylinder);
+        assert!((piece.radius() - 1.0).abs() < 1e-15);
+        assert!((piece.segment_angle() - PI).abs() < 1e-15);
+        assert_eq!(piece.patch_count(), 2);
+        assert!((piece.end().side + DVec3::Y).length() < 1e-15);
+        assert!((piece.distance(DVec3::new(0.0, 2.0, 3.0)) - 1.0).abs() < 1e-15);
+        let strip = ConePiece::cylinder(start, DVec3::new(1.0, 2.0, 0.0)).unwrap();
+        assert_eq!(strip.kind(), PieceKind::Plane);
+        assert!(ConePiece::cylinder(start, DVec3::new(1.0, -2.0, 0.0)).is_err());
+    }
+}

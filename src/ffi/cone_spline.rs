@@ -1,0 +1,849 @@
+//! `RmfConeSpline`: a cone spline surface — segments of right circular cones, cylinders and
+//! planes joined G1 along common rulings (Leopoldseder & Pottmann) — with its pieces, its
+//! surface between two bounds along the rulings, its boundary arc splines, bending
+//! sequence, development and offsets.
+
+use super::boundary::{
+    buffer, free_handle, guard, invalid_arg, optional_out, out_ptr, reference, slice, write,
+    FfiError, FfiResult,
+};
+use super::curve::RmfCurve;
+use super::input::{curve_or_callback, RmfCurveCallback};
+use super::status::RmfStatus;
+use super::surface::RmfSurface;
+use super::types::RmfVec3;
+use crate::cone_spline::approximate::approximate;
+use crate::cone_spline::developable::{DualDevelopable, RuledSurface, TangentSurface};
+use crate::cone_spline::osculating::osculating_spline;
+use crate::cone_spline::{ConePiece, ConeSpline, Element, PairCase, PieceKind, Region, Rule};
+use glam::DVec4;
+use std::ffi::c_void;
+
+/// A G1 Hermite element: a ruling through `point` with direction `ruling` and the tangent
+/// plane spanned by `ruling` and `side`. `side` is normal to `ruling` and points to where the
+/// next piece attaches; the normal ruling × side must point to one side of the surface all
+/// along a sequence. Directions need not be unit vectors.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct RmfConeElement {
+    /// A point on the ruling, where the surface is wanted (decides the nappe of a cone) and
+    /// the origin of the distances along the rulings.
+    pub point: RmfVec3,
+    /// The ruling direction (orientation of the generators).
+    pub ruling: RmfVec3,
+    /// The side vector in the tangent plane, normal to the ruling.
+    pub side: RmfVec3,
+}
+
+/// An axis-aligned box min ≤ x ≤ max: the region of interest Ω.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct RmfBox {
+    pub min: RmfVec3,
+    pub max: RmfVec3,
+}
+
+/// rule of a cone pair: locally minimal vertex distance (12), the useful root. For
+/// intersecting or parallel rulings (cone and cylinder cases): the biarc with equal legs.
+pub const RMF_CONE_RULE_MIN_VERTEX_DISTANCE: u32 = 0;
+/// rule of a cone pair: congruent cones, μ1 = μ2 (cone and cylinder cases: equal legs).
+pub const RMF_CONE_RULE_CONGRUENT: u32 = 1;
+/// rule of a cone pair: the first segment a cylinder (10).
+pub const RMF_CONE_RULE_CYLINDER_FIRST: u32 = 2;
+/// rule of a cone pair: the second segment a cylinder.
+pub const RMF_CONE_RULE_CYLINDER_SECOND: u32 = 3;
+/// rule of a cone pair: the given parameter: μ1 (vertex v1 = a1 + μ1 e1 on the first
+/// ruling, a1 where it touches the inscribed sphere or meets the plane π), or λ1 (the first
+/// leg of the biarc) in the cone and cylinder cases.
+pub const RMF_CONE_RULE_GIVEN: u32 = 4;
+
+/// RmfConePiece.kind: a segment of a right circular cone.
+pub const RMF_CONE_PIECE_CONE: u32 = 0;
+/// RmfConePiece.kind: a segment of a cylinder of revolution.
+pub const RMF_CONE_PIECE_CYLINDER: u32 = 1;
+/// RmfConePiece.kind: a plane sector (has a vertex) or a plane strip (parallel rulings).
+pub const RMF_CONE_PIECE_PLANE: u32 = 2;
+
+/// RmfConePiece.pair_case: general case (skew rulings, inscribed sphere).
+pub const RMF_CONE_CASE_GENERAL: u32 = 0;
+/// RmfConePiece.pair_case: the rulings intersect (common vertex).
+pub const RMF_CONE_CASE_CONE: u32 = 1;
+/// RmfConePiece.pair_case: parallel rulings.
+pub const RMF_CONE_CASE_CYLINDER: u32 = 2;
+/// RmfConePiece.pair_case: constant slope, det(p1, p2, n1 − n2) = 0 (13).
+pub const RMF_CONE_CASE_CONSTANT_SLOPE: u32 = 3;
+/// RmfConePiece.pair_case: equal tangent planes (one plane piece).
+pub const RMF_CONE_CASE_PLANE: u32 = 4;
+/// RmfConePiece.pair_case: not made by a cone pair (osculating cone splines).
+pub const RMF_CONE_CASE_NONE: u32 = 5;
+
+/// rmf_cone_spline_fit_parameters: the parameters of the selected rulings.
+pub const RMF_CONE_FIT_ELEMENTS: u32 = 0;
+/// rmf_cone_spline_fit_parameters: the parameters of the inflection generators found.
+pub const RMF_CONE_FIT_INFLECTIONS: u32 = 1;
+
+/// The data of one piece of a cone spline.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct RmfConePiece {
+    /// RMF_CONE_PIECE_CONE, RMF_CONE_PIECE_CYLINDER or RMF_CONE_PIECE_PLANE.
+    pub kind: u32,
+    /// Which case of the paper the cone pair of this piece fell into (RMF_CONE_CASE_*).
+    pub pair_case: u32,
+    /// 1 if the piece has a vertex (cones and plane sectors), else 0.
+    pub has_vertex: u32,
+    /// The vertex (valid if has_vertex).
+    pub vertex: RmfVec3,
+    /// A point on the axis: the vertex, or a point of a cylinder's axis; for a plane strip
+    /// the start point.
+    pub axis_point: RmfVec3,
+    /// Unit axis direction, oriented like the rulings; a plane strip's normal.
+    pub axis: RmfVec3,
+    /// Half opening angle α between rulings and axis (0 for cylinders, π/2 for planes).
+    pub half_angle: f64,
+    /// Segment angle φ of the rotation about the axis (0 for plane strips).
+    pub segment_angle: f64,
+    /// The angle of the developed sector, φ sin α (0 for cylinders and strips).
+    pub developed_angle: f64,
+    /// Radius of a cylinder (0 otherwise).
+    pub radius: f64,
+    /// Width of the developed piece along its side for cylinders (r φ) and strips; else 0.
+    pub developed_width: f64,
+    /// The bounding rulings: reference point, unit direction and unit side vector at the
+    /// start and at the end of the piece.
+    pub start_point: RmfVec3,
+    pub start_ruling: RmfVec3,
+    pub start_side: RmfVec3,
+    pub end_point: RmfVec3,
+    pub end_ruling: RmfVec3,
+    pub end_side: RmfVec3,
+    /// The piece's patches in the surface (rmf_cone_spline_surface): patch indices
+    /// first_patch .. first_patch + patch_count − 1 along v; the piece spans
+    /// v ∈ [index, index + 1].
+    pub first_patch: usize,
+    pub patch_count: usize,
+}
+
+/// What an approximation reports.
+struct Fit {
+    max_error: f64,
+    parameters: Vec<f64>,
+    inflections: Vec<f64>,
+}
+
+/// A cone spline surface (opaque). Freed with rmf_cone_spline_free. Immutable; may be read
+/// from several threads at once.
+pub struct RmfConeSpline {
+    spline: ConeSpline,
+    /// The pair case of each piece (RMF_CONE_CASE_*).
+    cases: Vec<u32>,
+    fit: Option<Fit>,
+}
+
+impl RmfConeSpline {
+    fn into_raw(self) -> *mut Self {
+        Box::into_raw(Box::new(self))
+    }
+
+    /// A derived spline (bent, developed, offset) keeps the cases and the fit report.
+    fn derived(&self, spline: ConeSpline) -> Self {
+        Self {
+            spline,
+            cases: self.cases.clone(),
+            fit: self.fit.as_ref().map(|f| Fit {
+                max_error: f.max_error,
+                parameters: f.parameters.clone(),
+                inflections: f.inflections.clone(),
+            }),
+        }
+    }
+}
+
+fn case_code(case: PairCase) -> u32 {
+    match case {
+        PairCase::General => RMF_CONE_CASE_GENERAL,
+        PairCase::Cone => RMF_CONE_CASE_CONE,
+        PairCase::Cylinder => RMF_CONE_CASE_CYLINDER,
+        PairCase::ConstantSlope => RMF_CONE_CASE_CONSTANT_SLOPE,
+        PairCase::Plane => RMF_CONE_CASE_PLANE,
+    }
+}
+
+/// The rule from its C code and parameter.
+fn rule_from(rule: u32, parameter: f64) -> FfiResult<Rule> {
+    Ok(match rule {
+        RMF_CONE_RULE_MIN_VERTEX_DISTANCE => Rule::MinimalVertexDistance,
+        RMF_CONE_RULE_CONGRUENT => Rule::Congruent,
+        RMF_CONE_RULE_CYLINDER_FIRST => Rule::CylinderFirst,
+        RMF_CONE_RULE_CYLINDER_SECOND => Rule::CylinderSecond,
+        RMF_CONE_RULE_GIVEN if parameter.is_finite() => Rule::Given(parameter),
+        RMF_CONE_RULE_GIVEN => {
+            return invalid_arg(format!("parameter = {parameter} is not finite"));
+        }
+        other => {
+            return invalid_arg(format!(
+                "rule = {other} is not one of the RMF_CONE_RULE_* values"
+            ))
+        }
+    })
+}
+
+fn region_from(region: &RmfBox) -> FfiResult<Region> {
+    Ok(Region::new(region.min.into(), region.max.into())?)
+}
+
+/// Creates the cone spline through G1 Hermite elements: one cone pair (or one plane piece)
+/// between consecutive elements, every case of the paper (general, cone, cylinder,
+/// constant slope, plane), chosen by `rule`, with no vertex inside `region`.
+///
+/// @param[in] elements count elements (finite; side normal to ruling).
+/// @param[in] count Number of elements, ≥ 2.
+/// @param[in] rule One of RMF_CONE_RULE_*.
+/// @param[in] parameter μ1 or λ1 for RMF_CONE_RULE_GIVEN (finite); ignored otherwise.
+/// @param[in] region The region of interest Ω, or NULL for none. Element points must lie in
+///            it; solutions with a vertex in it are not used (the useful root, or vertices
+///            just outside Ω for the default rule).
+/// @param[out] out Receives the spline; free with rmf_cone_spline_free. Untouched on failure.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If elements or out is NULL.
+/// @return RMF_ERROR_INVALID_INPUT If count < 2, a value is not finite, a direction is zero,
+///         a side is not normal to its ruling, consecutive rulings are parallel with opposite
+///         orientation or coincide, consecutive side vectors are inconsistent (normals to
+///         opposite sides), the rule is unknown, or an element point is outside the region.
+/// @return RMF_ERROR_NO_SOLUTION If no cone pair of the rule joins two elements
+///         consistently, or the region contains every possible vertex.
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_hermite(
+    elements: *const RmfConeElement,
+    count: usize,
+    rule: u32,
+    parameter: f64,
+    region: *const RmfBox,
+    out: *mut *mut RmfConeSpline,
+) -> RmfStatus {
+    guard("rmf_cone_spline_hermite", || {
+        let out = out_ptr(out, "out")?;
+        if elements.is_null() {
+            return Err(FfiError::Null("elements"));
+        }
+        let elements = slice(elements, count, "elements")?
+            .iter()
+            .enumerate()
+            .map(|(i, e)| {
+                Element::new(
+                    e.point.into(),
+                    e.ruling.into(),
+                    e.side.into(),
+                    &format!("elements[{i}]"),
+                )
+            })
+            .collect::<crate::Result<Vec<_>>>()?;
+        let rule = rule_from(rule, parameter)?;
+        let region = if region.is_null() {
+            None
+        } else {
+            Some(region_from(&*region)?)
+        };
+        let (spline, pairs) = ConeSpline::hermite(&elements, rule, region.as_ref())?;
+        let cases = pairs
+            .iter()
+            .flat_map(|p| p.pieces.iter().map(move |_| case_code(p.case)))
+            .collect();
+        write(
+            out,
+            RmfConeSpline {
+                spline,
+                cases,
+                fit: None,
+            }
+            .into_raw(),
+        );
+        Ok(())
+    })
+}
+
+/// Writes a fitted spline and its deviation.
+unsafe fn finish_fit(
+    fit: crate::cone_spline::Approximation,
+    out: *mut *mut RmfConeSpline,
+    max_error: Option<*mut f64>,
+) {
+    let cases = vec![RMF_CONE_CASE_NONE; fit.spline.pieces().len()];
+    if let Some(p) = max_error {
+        write(p, fit.max_error);
+    }
+    let handle = RmfConeSpline {
+        spline: fit.spline,
+        cases,
+        fit: Some(Fit {
+            max_error: fit.max_error,
+            parameters: fit.parameters,
+            inflections: fit.inflections,
+        }),
+    };
+    write(out, handle.into_raw());
+}
+
+/// Checks the common arguments of the approximations.
+fn check_fit_arguments(tolerance: f64, max_pieces: usize) -> FfiResult {
+    if !(tolerance.is_finite() && tolerance > 0.0) {
+        return invalid_arg(format!(
+            "tolerance = {tolerance} must be finite and positive"
+        ));
+    }
+    if max_pieces < 2 {
+        return invalid_arg(format!("max_pieces = {max_pieces} must be at least 2"));
+    }
+    Ok(())
+}
+
+/// Approximates the tangent surface x(t) + v e(t) of a space curve (e = x'/|x'|) over
+/// v ∈ [v_min, v_max] by a cone spline: inflection generators (zero torsion) are kept as
+/// junctions, further rulings are chosen adaptively until the largest distance from the
+/// surface's region to the cone spline is ≤ tolerance.
+///
+/// The curve is `curve` (its whole domain), or `callback` on [t_min, t_max]; exactly one of
+/// them. It must be regular with non-zero curvature.
+///
+/// @param[in] curve A curve (e.g. from rmf_nurbs_curve_create), or NULL.
+/// @param[in] callback Point and derivative of an analytic curve, or NULL; called on this
+///            thread during the call only; must not unwind or longjmp.
+/// @param[in] user Passed to callback.
+/// @param[in] t_min, t_max The callback's parameter interval (ignored for curve).
+/// @param[in] v_min, v_max The region along the rulings, distances from the curve point:
+///            finite, v_min < v_max, 0 ∉ [v_min, v_max] (the curve is the singular edge).
+/// @param[in] tolerance Largest allowed distance, > 0.
+/// @param[in] rule One of RMF_CONE_RULE_* except RMF_CONE_RULE_GIVEN.
+/// @param[in] max_pieces Largest number of pieces, ≥ 2.
+/// @param[out] out Receives the spline; free with rmf_cone_spline_free. Its reference
+///             point is x(t_min) + (v_min + v_max)/2 e(t_min).
+/// @param[out] max_error Receives the largest sampled distance; may be NULL.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If out is NULL, or both curve and callback are.
+/// @return RMF_ERROR_INVALID_INPUT For bad numbers, both curve and callback given, or an
+///         unknown rule.
+/// @return RMF_ERROR_NO_SOLUTION If the curve has zero curvature somewhere (no tangent plane).
+/// @return RMF_ERROR_NOT_CONVERGED If the tolerance needs more than max_pieces pieces.
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn rmf_cone_spline_approximate(
+    curve: *const RmfCurve,
+    callback: RmfCurveCallback,
+    user: *mut c_void,
+    t_min: f64,
+    t_max: f64,
+    v_min: f64,
+    v_max: f64,
+    tolerance: f64,
+    rule: u32,
+    max_pieces: usize,
+    out: *mut *mut RmfConeSpline,
+    max_error: *mut f64,
+) -> RmfStatus {
+    guard("rmf_cone_spline_approximate", || {
+        let out = out_ptr(out, "out")?;
+        let max_error = optional_out(max_error, "max_error")?;
+        let input = curve_or_callback(curve, callback, user, t_min, t_max)?;
+        check_fit_arguments(tolerance, max_pieces)?;
+        let rule = fit_rule(rule)?;
+        let surface = TangentSurface::new(input.as_ref(), v_min, v_max)?;
+        finish_fit(
+            approximate(&surface, tolerance, rule, max_pieces)?,
+            out,
+            max_error,
+        );
+        Ok(())
+    })
+}
+
+fn fit_rule(rule: u32) -> FfiResult<Rule> {
+    if rule == RMF_CONE_RULE_GIVEN {
+        return invalid_arg(
+            "rule = RMF_CONE_RULE_GIVEN needs one parameter per pair; not for approximation".into(),
+        );
+    }
+    rule_from(rule, 0.0)
+}
+
+/// Approximates a developable ruled surface of degree (1, n) — rulings along u, e.g.
+/// spanned between two rails — over its whole domain, as rmf_cone_spline_approximate does
+/// for tangent surfaces. Developability is checked first: the surface's own Gaussian
+/// curvature is measured on a grid.
+///
+/// @param[in] surface A surface with degree_u = 1 and pole_count_u = 2 (e.g. from
+///            rmf_nurbs_surface_create); its parameter v runs along the rails.
+/// @param[in] tolerance, rule, max_pieces As for rmf_cone_spline_approximate.
+/// @param[out] out Receives the spline; its reference point is the middle of the first ruling.
+/// @param[out] max_error Receives the largest sampled distance; may be NULL.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If surface or out is NULL.
+/// @return RMF_ERROR_INVALID_INPUT If the surface is not of degree 1 in u with one span, or
+///         is not developable (the message gives its max |K|·size²), or for bad numbers.
+/// @return RMF_ERROR_NO_SOLUTION, RMF_ERROR_NOT_CONVERGED As for rmf_cone_spline_approximate.
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_approximate_ruled(
+    surface: *const RmfSurface,
+    tolerance: f64,
+    rule: u32,
+    max_pieces: usize,
+    out: *mut *mut RmfConeSpline,
+    max_error: *mut f64,
+) -> RmfStatus {
+    guard("rmf_cone_spline_approximate_ruled", || {
+        let surface = reference(surface, "surface")?;
+        let out = out_ptr(out, "out")?;
+        let max_error = optional_out(max_error, "max_error")?;
+        check_fit_arguments(tolerance, max_pieces)?;
+        let rule = fit_rule(rule)?;
+        let ruled = RuledSurface::new(surface.surface.as_ref().clone())?;
+        finish_fit(
+            approximate(&ruled, tolerance, rule, max_pieces)?,
+            out,
+            max_error,
+        );
+        Ok(())
+    })
+}
+
+/// Approximates a developable surface in the dual form (4) of the paper: a clamped
+/// B-spline curve of planes U(t) = Σ Uᵢ Nᵢ(t), u0 + u1 x + u2 y + u3 z = 0, whose rulings
+/// are U ∩ U'. The region of interest is a box; each ruling is used where it crosses it.
+///
+/// @param[in] degree Degree k ≥ 1 of the B-spline.
+/// @param[in] planes plane_count control planes, 4 doubles each: u0, u1, u2, u3.
+/// @param[in] plane_count Number of control planes, ≥ degree + 1.
+/// @param[in] knots knot_count clamped knots, knot_count = plane_count + degree + 1.
+/// @param[in] region The region of interest; every ruling must cross it, and it should
+///            exclude the line of regression.
+/// @param[in] tolerance, rule, max_pieces As for rmf_cone_spline_approximate.
+/// @param[out] out Receives the spline; free with rmf_cone_spline_free.
+/// @param[out] max_error Receives the largest sampled distance; may be NULL.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If planes, knots, region or out is NULL.
+/// @return RMF_ERROR_INVALID_INPUT For bad counts, knots, non-finite planes or numbers.
+/// @return RMF_ERROR_NO_SOLUTION If a ruling misses the box or U and U' are parallel.
+/// @return RMF_ERROR_NOT_CONVERGED If the tolerance needs more than max_pieces pieces.
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn rmf_cone_spline_approximate_dual(
+    degree: u32,
+    planes: *const f64,
+    plane_count: usize,
+    knots: *const f64,
+    knot_count: usize,
+    region: *const RmfBox,
+    tolerance: f64,
+    rule: u32,
+    max_pieces: usize,
+    out: *mut *mut RmfConeSpline,
+    max_error: *mut f64,
+) -> RmfStatus {
+    guard("rmf_cone_spline_approximate_dual", || {
+        let out = out_ptr(out, "out")?;
+        let max_error = optional_out(max_error, "max_error")?;
+        if planes.is_null() {
+            return Err(FfiError::Null("planes"));
+        }
+        if knots.is_null() {
+            return Err(FfiError::Null("knots"));
+        }
+        let region = region_from(reference(region, "region")?)?;
+        let Some(values) = plane_count.checked_mul(4) else {
+            return invalid_arg(format!("plane_count = {plane_count} is too large"));
+        };
+        let planes: Vec<DVec4> = slice(planes, values, "planes")?
+            .chunks_exact(4)
+            .map(|u| DVec4::new(u[1], u[2], u[3], u[0]))
+            .collect();
+        let knots = slice(knots, knot_count, "knots")?;
+        check_fit_arguments(tolerance, max_pieces)?;
+        let rule = fit_rule(rule)?;
+        let dual = DualDevelopable::new(degree as usize, &planes, knots, region)?;
+        finish_fit(
+            approximate(&dual, tolerance, rule, max_pieces)?,
+            out,
+            max_error,
+        );
+        Ok(())
+    })
+}
+
+/// The osculating cone spline of a tangent surface (Section "Osculating cone splines"):
+/// the osculating cones along the rulings at `parameters` (vertex on the curve, axis along
+/// the Darboux vector τe + κb), consecutive ones joined by a filling cone found from the
+/// quartic (14), keeping the consistent solutions. Consecutive parameters must be close
+/// enough for a consistent filling cone to exist.
+///
+/// @param[in] curve, callback, user, t_min, t_max The curve, as for rmf_cone_spline_approximate.
+/// @param[in] v_min, v_max The region along the rulings, as for rmf_cone_spline_approximate.
+/// @param[in] parameters count increasing curve parameters inside the domain.
+/// @param[in] count Number of osculating cones, ≥ 2.
+/// @param[out] out Receives the spline; free with rmf_cone_spline_free.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If parameters or out is NULL, or both curve and callback are.
+/// @return RMF_ERROR_INVALID_INPUT For bad numbers or parameters not increasing.
+/// @return RMF_ERROR_NO_SOLUTION If two consecutive osculating cones cannot be joined
+///         consistently, or an osculating cone is a cylinder (zero curvature of the curve).
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn rmf_cone_spline_osculating(
+    curve: *const RmfCurve,
+    callback: RmfCurveCallback,
+    user: *mut c_void,
+    t_min: f64,
+    t_max: f64,
+    v_min: f64,
+    v_max: f64,
+    parameters: *const f64,
+    count: usize,
+    out: *mut *mut RmfConeSpline,
+) -> RmfStatus {
+    guard("rmf_cone_spline_osculating", || {
+        let out = out_ptr(out, "out")?;
+        if parameters.is_null() {
+            return Err(FfiError::Null("parameters"));
+        }
+        let parameters = slice(parameters, count, "parameters")?;
+        let input = curve_or_callback(curve, callback, user, t_min, t_max)?;
+        let (lo, hi) = input.domain();
+        if let Some(i) = parameters.iter().position(|t| !(lo..=hi).contains(t)) {
+            return invalid_arg(format!(
+                "parameters[{i}] = {} is outside the domain [{lo}, {hi}]",
+                parameters[i]
+            ));
+        }
+        let surface = TangentSurface::new(input.as_ref(), v_min, v_max)?;
+        let spline = osculating_spline(&surface, parameters)?;
+        let cases = vec![RMF_CONE_CASE_NONE; spline.pieces().len()];
+        write(
+            out,
+            RmfConeSpline {
+                spline,
+                cases,
+                fit: None,
+            }
+            .into_raw(),
+        );
+        Ok(())
+    })
+}
+
+/// Frees a cone spline. NULL is a no-op.
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_free(spline: *mut RmfConeSpline) {
+    free_handle(spline)
+}
+
+/// The number of pieces of a cone spline.
+///
+/// @return RMF_OK, or RMF_ERROR_NULL_POINTER if spline or count is NULL.
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_piece_count(
+    spline: *const RmfConeSpline,
+    count: *mut usize,
+) -> RmfStatus {
+    guard("rmf_cone_spline_piece_count", || {
+        let spline = reference(spline, "spline")?;
+        let count = out_ptr(count, "count")?;
+        write(count, spline.spline.pieces().len());
+        Ok(())
+    })
+}
+
+fn piece_data(piece: &ConePiece, case: u32, first_patch: usize) -> RmfConePiece {
+    let (start, end) = (piece.start, piece.end());
+    let vertex = piece.vertex();
+    let developed_width = match piece.kind() {
+        PieceKind::Cylinder => piece.radius() * piece.segment_angle(),
+        PieceKind::Plane if vertex.is_none() => (end.point - start.point).length(),
+        _ => 0.0,
+    };
+    RmfConePiece {
+        kind: match piece.kind() {
+            PieceKind::Cone => RMF_CONE_PIECE_CONE,
+            PieceKind::Cylinder => RMF_CONE_PIECE_CYLINDER,
+            PieceKind::Plane => RMF_CONE_PIECE_PLANE,
+        },
+        pair_case: case,
+        has_vertex: u32::from(vertex.is_some()),
+        vertex: vertex.unwrap_or_default().into(),
+        axis_point: piece.axis_point().unwrap_or(start.point).into(),
+        axis: piece.axis().into(),
+        half_angle: piece.half_angle(),
+        segment_angle: piece.segment_angle(),
+        developed_angle: if piece.kind() == PieceKind::Cylinder {
+            0.0
+        } else {
+            piece.segment_angle() * piece.half_angle().sin()
+        },
+        radius: piece.radius(),
+        developed_width,
+        start_point: start.point.into(),
+        start_ruling: start.ruling.into(),
+        start_side: start.side.into(),
+        end_point: end.point.into(),
+        end_ruling: end.ruling.into(),
+        end_side: end.side.into(),
+        first_patch,
+        patch_count: piece.patch_count(),
+    }
+}
+
+/// The data of piece `index`: kind, vertex, axis, half angle α, segment angle φ, the
+/// bounding rulings, and where its patches are in the surface.
+///
+/// @param[in] spline The spline.
+/// @param[in] index 0 ≤ index < piece count.
+/// @param[out] piece Receives the data (a copy).
+/// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if index is out of range.
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_piece(
+    spline: *const RmfConeSpline,
+    index: usize,
+    piece: *mut RmfConePiece,
+) -> RmfStatus {
+    guard("rmf_cone_spline_piece", || {
+        let spline = reference(spline, "spline")?;
+        let piece = out_ptr(piece, "piece")?;
+        let pieces = spline.spline.pieces();
+        if index >= pieces.len() {
+            return invalid_arg(format!(
+                "index = {index} but the spline has {} pieces",
+                pieces.len()
+            ));
+        }
+        let first_patch = pieces[..index].iter().map(ConePiece::patch_count).sum();
+        write(
+            piece,
+            piece_data(&pieces[index], spline.cases[index], first_patch),
+        );
+        Ok(())
+    })
+}
+
+/// The exact surface of a cone spline between two signed distances along the rulings,
+/// measured from the reference points (the first element's point, carried along the
+/// parallel circles): every piece one degree (1, 2) rational Bézier patch (or a few, for
+/// segment angles above 120°), u ∈ [t_min, t_max] the distance along the rulings, v ∈
+/// [k, k + 1] on piece k. The result is one NURBS surface (rmf_surface_nurbs) of degree
+/// (1, 2), G1 across the shared rulings. Its bounds u = t_min, t_max are parallel-circle arc
+/// splines (rmf_cone_spline_boundary), orthogonal to the rulings.
+///
+/// @param[in] spline The spline.
+/// @param[in] t_min, t_max Finite, t_min < t_max; the strip must contain no vertex.
+/// @param[out] out Receives the surface; free with rmf_surface_free. Untouched on failure.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If spline or out is NULL.
+/// @return RMF_ERROR_INVALID_INPUT If the bounds are not finite, not increasing, or the strip
+///         contains a vertex (the message names the piece).
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_surface(
+    spline: *const RmfConeSpline,
+    t_min: f64,
+    t_max: f64,
+    out: *mut *mut RmfSurface,
+) -> RmfStatus {
+    guard("rmf_cone_spline_surface", || {
+        let spline = reference(spline, "spline")?;
+        let out = out_ptr(out, "out")?;
+        let surface = spline.spline.surface(t_min, t_max)?;
+        write(out, RmfSurface::new(surface, None).into_raw());
+        Ok(())
+    })
+}
+
+/// The bounds for rmf_cone_spline_surface from a region box: the widest strip whose ruling
+/// segments all lie in the box (rulings sampled per piece, the extremes refined by Brent's
+/// method), and where vertices fall inside that range, its widest part free of them.
+///
+/// @param[in] spline The spline.
+/// @param[in] region The box.
+/// @param[out] t_min, t_max Receive the bounds.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If an argument is NULL.
+/// @return RMF_ERROR_INVALID_INPUT If the box is not finite or min ≥ max somewhere.
+/// @return RMF_ERROR_NO_SOLUTION If some ruling misses the box or no strip fits.
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_bounds_in_box(
+    spline: *const RmfConeSpline,
+    region: *const RmfBox,
+    t_min: *mut f64,
+    t_max: *mut f64,
+) -> RmfStatus {
+    guard("rmf_cone_spline_bounds_in_box", || {
+        let spline = reference(spline, "spline")?;
+        let region = region_from(reference(region, "region")?)?;
+        let (t_min, t_max) = (out_ptr(t_min, "t_min")?, out_ptr(t_max, "t_max")?);
+        let (a, b) = spline.spline.bounds_in_box(&region)?;
+        write(t_min, a);
+        write(t_max, b);
+        Ok(())
+    })
+}
+
+/// The boundary curve at signed distance t along the rulings: a G1 spline of circular arcs
+/// (the parallel circles; straight lines on plane strips), exact rational quadratics, with
+/// the surface's v parameter.
+///
+/// @param[out] out Receives the curve; free with rmf_curve_free.
+/// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if t is not finite.
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_boundary(
+    spline: *const RmfConeSpline,
+    t: f64,
+    out: *mut *mut RmfCurve,
+) -> RmfStatus {
+    guard("rmf_cone_spline_boundary", || {
+        let spline = reference(spline, "spline")?;
+        let out = out_ptr(out, "out")?;
+        let curve = spline.spline.boundary(t)?;
+        write(out, RmfCurve::new(curve, None).into_raw());
+        Ok(())
+    })
+}
+
+/// The body of the entry points that make a new spline from one (bending, development,
+/// offset): check the pointers, build, write.
+///
+/// # Safety
+/// `spline` must be NULL or a valid handle, `out` NULL or writable.
+unsafe fn derive(
+    spline: *const RmfConeSpline,
+    out: *mut *mut RmfConeSpline,
+    make: impl FnOnce(&ConeSpline) -> crate::Result<ConeSpline>,
+) -> FfiResult {
+    let spline = reference(spline, "spline")?;
+    let out = out_ptr(out, "out")?;
+    let made = make(&spline.spline)?;
+    write(out, spline.derived(made).into_raw());
+    Ok(())
+}
+
+/// The stage s of the bending sequence (Fig. 17): every piece bent isometrically at once —
+/// a cone's half angle α moves linearly to π/2 with φ sin α kept, a cylinder's curvature
+/// scales by 1 − s —, each laid on the end ruling and tangent plane of the one before.
+/// Ruling lengths, vertex distances, boundary lengths and angles are kept. The first
+/// ruling and its tangent plane stay fixed: s = 0 is the spline itself, s = 1 its flat
+/// development in the first tangent plane.
+///
+/// @param[in] spline The spline.
+/// @param[in] s In [0, 1].
+/// @param[out] out Receives the bent spline; free with rmf_cone_spline_free.
+/// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if s is not in [0, 1].
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_bend(
+    spline: *const RmfConeSpline,
+    s: f64,
+    out: *mut *mut RmfConeSpline,
+) -> RmfStatus {
+    guard("rmf_cone_spline_bend", || {
+        derive(spline, out, |c| c.bent(s))
+    })
+}
+
+/// The exact development of a cone spline into the plane z = 0: each cone piece a sector of
+/// angle φ_n = φ sin α about its developed vertex, cylinders and strips rectangles of width
+/// r φ, laid edge to edge along the shared rulings; the first reference point at the
+/// origin, the first ruling along +x and its side vector along +y. Its surface
+/// (rmf_cone_spline_surface with the same bounds) is planar with lines and circular arcs as
+/// boundaries, isometric to the spline's.
+///
+/// @param[out] out Receives the development; free with rmf_cone_spline_free.
+/// @return RMF_OK, or RMF_ERROR_NULL_POINTER if an argument is NULL.
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_develop(
+    spline: *const RmfConeSpline,
+    out: *mut *mut RmfConeSpline,
+) -> RmfStatus {
+    guard("rmf_cone_spline_develop", || {
+        derive(spline, out, ConeSpline::developed)
+    })
+}
+
+/// The offset of a cone spline at signed distance d along the normals ruling × side: again
+/// a cone spline (same axes and half angles, shifted vertices), exact.
+///
+/// @param[out] out Receives the offset; free with rmf_cone_spline_free.
+/// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if d is not finite.
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_offset(
+    spline: *const RmfConeSpline,
+    d: f64,
+    out: *mut *mut RmfConeSpline,
+) -> RmfStatus {
+    guard("rmf_cone_spline_offset", || {
+        derive(spline, out, |c| c.offset(d))
+    })
+}
+
+/// The deviation an approximation reached (rmf_cone_spline_approximate*; kept by
+/// bending, development and offsets).
+///
+/// @param[out] max_error Receives the largest sampled distance to the input surface.
+/// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if the spline was
+///         not made by an approximation.
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_fit_error(
+    spline: *const RmfConeSpline,
+    max_error: *mut f64,
+) -> RmfStatus {
+    guard("rmf_cone_spline_fit_error", || {
+        let spline = reference(spline, "spline")?;
+        let max_error = out_ptr(max_error, "max_error")?;
+        let Some(fit) = &spline.fit else {
+            return invalid_arg("the spline was not made by an approximation".into());
+        };
+        write(max_error, fit.max_error);
+        Ok(())
+    })
+}
+
+/// Copies the parameters an approximation selected (RMF_CONE_FIT_ELEMENTS: the rulings
+/// joined by cone pairs, increasing) or found (RMF_CONE_FIT_INFLECTIONS: the inflection
+/// generators, which are among the elements).
+///
+/// Size query: with capacity 0 (values may be NULL) only count is written.
+///
+/// @param[in] which RMF_CONE_FIT_ELEMENTS or RMF_CONE_FIT_INFLECTIONS.
+/// @param[out] values Buffer for capacity values.
+/// @param[out] count Receives the number of values.
+/// @return RMF_OK on success or for a size query.
+/// @return RMF_ERROR_NULL_POINTER If spline or count is NULL, or values is NULL with a
+///         non-zero capacity.
+/// @return RMF_ERROR_INVALID_INPUT If which is unknown or the spline was not made by an
+///         approximation.
+/// @return RMF_ERROR_BUFFER_TOO_SMALL If capacity is non-zero but too small; count is written.
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_fit_parameters(
+    spline: *const RmfConeSpline,
+    which: u32,
+    values: *mut f64,
+    capacity: usize,
+    count: *mut usize,
+) -> RmfStatus {
+    guard("rmf_cone_spline_fit_parameters", || {
+        let spline = reference(spline, "spline")?;
+        let count = out_ptr(count, "count")?;
+        let values = buffer(values, capacity, "values")?;
+        let Some(fit) = &spline.fit else {
+            return invalid_arg("the spline was not made by an approximation".into());
+        };
+        let data = match which {
+            RMF_CONE_FIT_ELEMENTS => &fit.parameters,
+            RMF_CONE_FIT_INFLECTIONS => &fit.inflections,
+            other => return invalid_arg(format!("which = {other} is not an RMF_CONE_FIT_* value")),
+        };
+        write(count, data.len());
+        if capacity == 0 {
+            return Ok(());
+        }
+        if capacity < data.len() {
+            return Err(FfiError::BufferTooSmall(format!(
+                "need {} values, capacity is {capacity}",
+                data.len()
+            )));
+        }
+        values[..data.len()].copy_from_slice(data);
+        Ok(())
+    })
+}
