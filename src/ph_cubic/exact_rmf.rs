@@ -182,22 +182,14 @@ impl SegmentTarget<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::curve::uniform_parameters;
-    use crate::frames::double_reflection::DoubleReflectionRmf;
-    use crate::ph_cubic::test_curves::helix_spline;
+    use crate::ph_cubic::test_curves::{gap_to_double_reflection, helix_spline};
 
     #[test]
     fn agrees_with_the_double_reflection_rmf() {
         let spline = helix_spline(8, 0.6);
         let normal = DVec3::new(0.3, -0.2, 1.0);
         let exact = ExactRmf::new(&spline, normal, 0.0).unwrap();
-        let params = uniform_parameters(spline.domain(), 4001);
-        let reference = DoubleReflectionRmf::along(&spline, params.clone(), normal).unwrap();
-        let worst = params
-            .iter()
-            .zip(reference.frames())
-            .map(|(&t, f)| angle_about_tangent(f, &exact.frame(t)).abs())
-            .fold(0.0, f64::max);
+        let worst = gap_to_double_reflection(&spline, normal, 4001, |t| exact.frame(t));
         assert!(worst < 1e-9, "{worst}");
     }
 
@@ -206,13 +198,7 @@ mod tests {
         let cubic = crate::ph_cubic::test_curves::example_cubic();
         let exact = ExactRmf::for_cubic(&cubic, DVec3::Z).unwrap();
         let spline = PiecewiseCurve::new(vec![cubic.to_bezier()], vec![0.0, 1.0]).unwrap();
-        let params = uniform_parameters((0.0, 1.0), 4001);
-        let reference = DoubleReflectionRmf::along(&spline, params.clone(), DVec3::Z).unwrap();
-        let worst = params
-            .iter()
-            .zip(reference.frames())
-            .map(|(&t, f)| angle_about_tangent(f, &exact.frame(t)).abs())
-            .fold(0.0, f64::max);
+        let worst = gap_to_double_reflection(&spline, DVec3::Z, 4001, |t| exact.frame(t));
         assert!(worst < 1e-10, "{worst}");
     }
 

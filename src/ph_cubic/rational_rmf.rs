@@ -277,7 +277,7 @@ mod tests {
     use super::*;
     use crate::frames::metrics::{angle_about_tangent, orthonormality_error};
     use crate::ph_cubic::ph_spline_hermite;
-    use crate::ph_cubic::test_curves::{helix, helix_spline};
+    use crate::ph_cubic::test_curves::{gap_to_double_reflection, helix, helix_spline};
 
     fn max_error(spline: &PiecewiseCurve, rmf: &RationalRmf, exact: &ExactRmf) -> f64 {
         let (lo, hi) = spline.domain();
@@ -355,18 +355,7 @@ mod tests {
             (0..=12).map(|i| curve(0.25 * i as f64)).unzip();
         let spline = ph_spline_hermite(&points, &tangents).unwrap();
         let rmf = ph_rational_rmf(&spline, &RmfOptions::rmf(DVec3::Y)).unwrap();
-        let params = crate::curve::uniform_parameters(spline.domain(), 20001);
-        let reference = crate::frames::double_reflection::DoubleReflectionRmf::along(
-            &spline,
-            params.clone(),
-            DVec3::Y,
-        )
-        .unwrap();
-        let worst = params
-            .iter()
-            .zip(reference.frames())
-            .map(|(&t, f)| angle_about_tangent(f, &rmf.frames.frame(t)).abs())
-            .fold(0.0, f64::max);
+        let worst = gap_to_double_reflection(&spline, DVec3::Y, 20001, |t| rmf.frames.frame(t));
         assert!(worst < 1e-8, "{worst}");
         // On the straight part (spline parameters [0, 4]) the frame does not move at all.
         for t in [0.5, 2.0, 3.9] {
@@ -399,18 +388,7 @@ mod tests {
             .iter()
             .all(|c| c.bend() > 0.0 && c.bend() < super::super::base_frame::NEARLY_STRAIGHT));
         let rmf = ph_rational_rmf(&spline, &RmfOptions::rmf(DVec3::X)).unwrap();
-        let params = crate::curve::uniform_parameters(spline.domain(), 4001);
-        let reference = crate::frames::double_reflection::DoubleReflectionRmf::along(
-            &spline,
-            params.clone(),
-            DVec3::X,
-        )
-        .unwrap();
-        let worst = params
-            .iter()
-            .zip(reference.frames())
-            .map(|(&t, f)| angle_about_tangent(f, &rmf.frames.frame(t)).abs())
-            .fold(0.0, f64::max);
+        let worst = gap_to_double_reflection(&spline, DVec3::X, 4001, |t| rmf.frames.frame(t));
         assert!(worst < 1e-12, "{worst}");
     }
 
