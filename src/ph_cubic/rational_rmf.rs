@@ -321,6 +321,28 @@ mod tests {
     }
 
     #[test]
+    fn frames_turn_exactly_like_the_rmf_at_the_joints() {
+        // W interpolates w and w' at both ends (34): at every joint, on both sides, the frame
+        // has the RMF's value and no turn about the tangent (f₂'·f₃ = 0), while inside a
+        // segment it turns a little. With the G1 spline this makes sweeps G1 (Proposition 5).
+        let spline = helix_spline(4, 0.8);
+        let rmf = ph_rational_rmf(&spline, &RmfOptions::rmf(DVec3::Z)).unwrap();
+        let turn = |piece: usize, s: f64| {
+            let p = &rmf.frames.segments()[piece];
+            let (_, d) = p.f2_with_derivative(s);
+            d.dot(p.frame(s).f3).abs() / d.length().max(1e-300)
+        };
+        let pieces = rmf.frames.segments().len();
+        for piece in 0..pieces {
+            assert!(
+                turn(piece, 0.0) < 1e-12 && turn(piece, 1.0) < 1e-12,
+                "piece {piece}"
+            );
+        }
+        assert!((0..pieces).any(|p| turn(p, 0.3) > 1e-9));
+    }
+
+    #[test]
     fn sharp_turns_and_both_torsion_signs_keep_positive_weights() {
         // A coarse spline of a helix with opposite pitch: fewer, sharper segments.
         let (points, tangents): (Vec<DVec3>, Vec<DVec3>) = (0..=4)
