@@ -146,6 +146,24 @@
 #define RMF_INVERSION_PLANE 1
 
 /**
+ * rmf_sweep_parabolic_points: a profile inflection (K = 0 along u = const), or an end of a
+ * straight profile piece (K = 0 on the whole piece).
+ */
+#define RMF_PARABOLIC_PROFILE 1
+
+/**
+ * rmf_sweep_parabolic_points: a straight piece of the spine (K = 0 along v = const); the
+ * point is given at both ends of the profile.
+ */
+#define RMF_PARABOLIC_SPINE 2
+
+/**
+ * rmf_sweep_parabolic_points: a point of the curves (14), where the surface normal is
+ * perpendicular to the spine's principal normal.
+ */
+#define RMF_PARABOLIC_NORMAL 3
+
+/**
  * Shape measure: RMF energy E_rmf = ∫ κ² ds. Note: E_rmf of a curve scaled by s is
  * E_rmf / s, and the family of interpolants contains arbitrarily large loops, so its
  * minimum can be a huge curve; RMF_RRMF_MEASURE_SCALED_ENERGY_RMF compares shapes.
@@ -456,6 +474,48 @@ typedef struct RmfInversion {
    */
   struct RmfVec3 normal;
 } RmfInversion;
+
+/**
+ * Where a sweep comes closest to being singular (Corollary 7 of Mäurer & Jüttler).
+ */
+typedef struct RmfSingularityMargin {
+  /**
+   * min of g = 1 − κ(v)·(c(u)·n(v)) over the surface, condition (9): the part of ∂s/∂v
+   * along the spine tangent, relative to the spine's. ≤ 0: the sweep is singular (folds
+   * over itself where the profile reaches the spine's curvature axis).
+   */
+  double margin;
+  /**
+   * Profile parameter where the minimum is attained.
+   */
+  double u;
+  /**
+   * Spine parameter where the minimum is attained.
+   */
+  double v;
+  /**
+   * 1 − κ_max·max‖c‖: > 0 guarantees a regular sweep (the cheap sufficient condition).
+   */
+  double bound_margin;
+} RmfSingularityMargin;
+
+/**
+ * A parabolic point (K = 0) of a profile surface.
+ */
+typedef struct RmfParabolicPoint {
+  /**
+   * Profile parameter.
+   */
+  double u;
+  /**
+   * Spine parameter.
+   */
+  double v;
+  /**
+   * RMF_PARABOLIC_PROFILE, RMF_PARABOLIC_SPINE or RMF_PARABOLIC_NORMAL (cases 1–3 of §2.3).
+   */
+  uint32_t kind;
+} RmfParabolicPoint;
 
 /**
  * One RRMF quintic Hermite interpolant (Farouki, Giannelli & Sestini, Section 4).
@@ -1208,6 +1268,323 @@ RmfStatus rmf_mobius_rrmf_approximate(const struct RmfCurve *curve,
                                       struct RmfVec3 initial_normal,
                                       struct RmfCurve **curve_out,
                                       struct RmfFrames **frames_out);
+
+/**
+ * The G1 Hermite interpolants of Table 1 (Mäurer & Jüttler) with a PH cubic: the cubic
+ * Bézier curves from p0 to p1 with end tangents along t0 and t1 whose speed is a
+ * polynomial. Both roots of the PH condition (*) are computed; a root is kept only if the
+ * cubic leaves p0 along +t0 and arrives at p1 along +t1. Planar data give planar cubics.
+ *
+ * @param[in] p0, p1 End points (finite, distinct).
+ * @param[in] t0, t1 End tangents (finite, non-zero; normalized).
+ * @param[out] shape_matching Receives the interpolant with the shorter control polygon, the
+ *             one that follows the shape of the data (Theorem 10); free with
+ *             rmf_curve_free. For collinear data: the straight segment.
+ * @param[out] other May be NULL. Receives the other interpolant, or NULL when the second
+ *             root reverses a tangent or has a numerical cusp (speed below 1e-8 of its
+ *             maximum), or the data are collinear; free with rmf_curve_free.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If shape_matching is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If a point or tangent is not finite, a tangent is zero, or
+ *         p0 and p1 coincide (the message names the argument).
+ * @return RMF_ERROR_NO_SOLUTION If no PH cubic interpolates the data: (*) has no real root,
+ *         every root reverses a tangent or has a numerical cusp, or the tangents are
+ *         parallel with the chord off their line. Nothing is written then.
+ */
+RmfStatus rmf_ph_cubic_hermite(struct RmfVec3 p0,
+                               struct RmfVec3 t0,
+                               struct RmfVec3 p1,
+                               struct RmfVec3 t1,
+                               struct RmfCurve **shape_matching,
+                               struct RmfCurve **other);
+
+/**
+ * A PH cubic spline through points with tangents (Mäurer & Jüttler §3.2): one
+ * shape-matching PH cubic of Table 1 per segment, joined with G1 continuity. Segment i
+ * runs on the parameter interval [i, i + 1].
+ *
+ * @param[in] points count points; consecutive points distinct.
+ * @param[in] tangents count tangents (finite, non-zero; normalized).
+ * @param[in] count Number of points, ≥ 2.
+ * @param[out] out Receives the spline (a cubic NURBS with knots of multiplicity 3 at the
+ *             joints); free with rmf_curve_free. Untouched on failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If points, tangents or out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If count < 2, a point or tangent is not finite, a tangent
+ *         is zero or consecutive points coincide (the message names the index).
+ * @return RMF_ERROR_NO_SOLUTION If some segment admits no PH cubic (the message names it);
+ *         more points in between help.
+ */
+RmfStatus rmf_ph_spline_hermite(const struct RmfVec3 *points,
+                                const struct RmfVec3 *tangents,
+                                size_t count,
+                                struct RmfCurve **out);
+
+/**
+ * A PH cubic spline within a distance tolerance of a curve (Mäurer & Jüttler §3.2,
+ * Theorem 10): Hermite data sampled from the curve, adaptive halving of intervals until the
+ * sampled two-sided distance between each PH cubic and the curve is at most tolerance. The
+ * approximation order is 4: halving an interval divides its error by about 16. The spline
+ * uses the curve's parameter values as breakpoints.
+ *
+ * Give exactly one of curve and callback.
+ *
+ * @param[in] curve A G1 curve (e.g. from rmf_nurbs_curve_create), whole domain; or NULL.
+ * @param[in] callback An analytic curve on [t_min, t_max] (see RmfCurveCallback); or NULL.
+ *            It must be regular (non-zero derivative) and G1.
+ * @param[in] user Passed to callback unchanged.
+ * @param[in] t_min, t_max The callback's domain (ignored for curve).
+ * @param[in] tolerance Largest distance, finite and > 0, in the curve's units.
+ * @param[out] out Receives the spline; free with rmf_curve_free. Untouched on failure.
+ * @param[out] max_distance May be NULL. Receives the largest measured distance.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If out is NULL, or both curve and callback are.
+ * @return RMF_ERROR_INVALID_INPUT If tolerance is not finite and positive, both curve and
+ *         callback are given, t_min/t_max are not finite with t_min < t_max, the curve has a
+ *         corner, or the callback gives a non-finite point or a zero tangent.
+ * @return RMF_ERROR_NO_SOLUTION If no PH cubic interpolates the curve even on a very short
+ *         interval (a cusp, or a straight line meeting a corner).
+ * @return RMF_ERROR_NOT_CONVERGED If the tolerance is not reached within 100,000 segments.
+ */
+RmfStatus rmf_ph_spline_approximate(const struct RmfCurve *curve,
+                                    RmfCurveCallback callback,
+                                    void *user,
+                                    double t_min,
+                                    double t_max,
+                                    double tolerance,
+                                    struct RmfCurve **out,
+                                    double *max_distance);
+
+/**
+ * The rational approximation of the rotation-minimizing frame of a PH cubic spline
+ * (Mäurer & Jüttler §3.3–3.4): on each segment the rational Frenet frame (19) turned by
+ * 2 arctan W(v), eq. (29), W the biquadratic rational function (36)–(37) interpolating
+ * tan(Ω/2) of the exact RMF angle (30) with its derivative at the segment ends, its free
+ * parameter λ minimizing (40). The frames are exact at every joint, continuous and G1,
+ * rational of degree 6 (nearly straight segments: the carried frame, degree ≤ 4); segments
+ * may be split for positive weights. rmf_frames_vector_curve gives each frame vector as a
+ * rational curve; rmf_sweep_surface sweeps profiles with it (degree (m, 9) per segment);
+ * rmf_ph_rmf_angle_error measures it against the exact RMF.
+ *
+ * @param[in] ph_spline A PH cubic spline (e.g. from rmf_ph_spline_hermite or
+ *            rmf_ph_spline_approximate, or NURBS data whose segments are PH cubics), G1.
+ * @param[in] initial_normal Projected onto the normal plane at the start and normalized:
+ *            f2 there; f3 = t × f2.
+ * @param[out] out Receives the frames (RMF_FRAMES_RATIONAL); free with rmf_frames_free.
+ *             They keep their own reference to the spline. Untouched on failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If ph_spline or out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If a segment is not a PH cubic, the spline is not G1, or
+ *         initial_normal is not finite, zero or tangent to the spline.
+ */
+RmfStatus rmf_ph_rational_rmf(const struct RmfCurve *ph_spline,
+                              struct RmfVec3 initial_normal,
+                              struct RmfFrames **out);
+
+/**
+ * rmf_ph_rational_rmf with a twist, and closing the frame of a closed spine. The frame is
+ * the RMF turned, in addition, by an angle growing linearly with arc length (exact: the arc
+ * length of a PH spline is polynomial), built into the rational W of every segment, so the
+ * result stays rational and exact at the joints:
+ *  - twist: the total turn from start to end, radians (0: none);
+ *  - closure_symmetry k ≥ 1 (closed spines only): the RMF of a closed spine comes back
+ *    turned by its holonomy; the smallest additional turn, modulo 2π/k, that closes it is
+ *    added to twist. k is the symmetry order of the profile (1 for any profile, 4 for a
+ *    square), so that the closed sweep has no seam. 0: open spine, no closure.
+ *
+ * @param[in] ph_spline, initial_normal As for rmf_ph_rational_rmf.
+ * @param[in] twist Finite.
+ * @param[in] closure_symmetry 0 or the symmetry order k ≥ 1.
+ * @param[out] out Receives the frames; free with rmf_frames_free. Untouched on failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If ph_spline or out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT As for rmf_ph_rational_rmf; also if twist is not finite
+ *         or so large that a segment would need more than 4096 rational pieces,
+ *         or closure_symmetry > 0 for a spline that does not end where it starts with the
+ *         same tangent.
+ */
+RmfStatus rmf_ph_rational_rmf_twisted(const struct RmfCurve *ph_spline,
+                                      struct RmfVec3 initial_normal,
+                                      double twist,
+                                      uint32_t closure_symmetry,
+                                      struct RmfFrames **out);
+
+/**
+ * The Frenet frame (t, n, b) of a PH cubic spline as exact rational functions (19) of
+ * degree 2, f2 = n, f3 = b (for comparison with the RMF: its sweeps are not profile
+ * surfaces). Segments where σ has a negative Bernstein coefficient are split for positive
+ * weights. Usable by rmf_sweep_surface (degree (m, 5) per piece).
+ *
+ * @param[in] ph_spline A PH cubic spline.
+ * @param[out] out Receives the frames (RMF_FRAMES_RATIONAL); free with rmf_frames_free.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If ph_spline or out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If a segment is not a PH cubic or is a straight line (no
+ *         Frenet frame).
+ */
+RmfStatus rmf_ph_frenet_frames(const struct RmfCurve *ph_spline, struct RmfFrames **out);
+
+/**
+ * The exact rotation-minimizing frame of a PH cubic spline at given parameters, in closed
+ * form: the Frenet frame turned by the angle (30)–(31) of Mäurer & Jüttler (no quadrature),
+ * the constants chained across the joints from initial_normal. On (nearly) straight
+ * segments (sin θ ≤ 1e-6), where the Frenet frame degenerates, the frame carried by the
+ * smallest rotation of the tangent is used; it differs from the RMF by less than 1e-11 rad.
+ *
+ * @param[in] ph_spline A PH cubic spline, G1.
+ * @param[in] initial_normal As for rmf_ph_rational_rmf.
+ * @param[in] t count parameters in the spline's domain.
+ * @param[in] count Number of parameters (0 is allowed: nothing is computed).
+ * @param[out] f2 Buffer for count vectors f2.
+ * @param[out] f3 May be NULL; else a buffer for count vectors f3 = t × f2.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If ph_spline is NULL, or t or f2 is NULL with count > 0.
+ * @return RMF_ERROR_INVALID_INPUT If a segment is not a PH cubic, the spline is not G1,
+ *         initial_normal is not usable, or a parameter is not finite or outside the domain.
+ */
+RmfStatus rmf_ph_exact_rmf_eval(const struct RmfCurve *ph_spline,
+                                struct RmfVec3 initial_normal,
+                                const double *t,
+                                size_t count,
+                                struct RmfVec3 *f2,
+                                struct RmfVec3 *f3);
+
+/**
+ * The accuracy of rational frames along a PH cubic spline (e.g. from rmf_ph_rational_rmf):
+ * the largest angle about the tangent between them and the exact RMF (closed form, started
+ * from the same frame), per spline segment. Frames made with a twist are compared after
+ * taking off a twist linear in arc length (their total turn against the RMF at the end).
+ *
+ * Size query: with per_segment = NULL and capacity = 0 only segment_count (and max_angle)
+ * are written.
+ *
+ * @param[in] frames Rational frames along a PH cubic spline.
+ * @param[out] per_segment Buffer for capacity angles (radians), one per spline segment.
+ * @param[in] capacity Capacity of per_segment.
+ * @param[out] segment_count Receives the number of spline segments.
+ * @param[out] max_angle Receives the largest angle (radians).
+ * @return RMF_OK on success or for a size query.
+ * @return RMF_ERROR_NULL_POINTER If frames, segment_count or max_angle is NULL, or
+ *         per_segment is NULL with capacity > 0.
+ * @return RMF_ERROR_INVALID_INPUT If the frames are not rational or their curve is not a
+ *         G1 PH cubic spline.
+ * @return RMF_ERROR_BUFFER_TOO_SMALL If 0 < capacity < the segment count; then only
+ *         segment_count is written.
+ */
+RmfStatus rmf_ph_rmf_angle_error(const struct RmfFrames *frames,
+                                 double *per_segment,
+                                 size_t capacity,
+                                 size_t *segment_count,
+                                 double *max_angle);
+
+/**
+ * The singularity margin of the sweep of profile along spine with frames (the inputs of
+ * rmf_sweep_surface): condition (9) evaluated exactly over the profile (roots of a
+ * polynomial) and scanned and refined along the spine.
+ *
+ * @param[in] spine, frames, profile As for rmf_sweep_surface.
+ * @param[out] out Receives the margin.
+ * @return RMF_OK, RMF_ERROR_NULL_POINTER if an argument is NULL, or
+ *         RMF_ERROR_INVALID_INPUT if the frames are not rational frames of the spine.
+ */
+RmfStatus rmf_sweep_singularity_margin(const struct RmfCurve *spine,
+                                       const struct RmfFrames *frames,
+                                       const struct RmfCurve *profile,
+                                       struct RmfSingularityMargin *out);
+
+/**
+ * The Gaussian curvature of a profile surface at (u, v) by (13) of Mäurer & Jüttler,
+ * K = κ_u · κ_v cos θ: the curvature of the exact profile surface with these frames (for
+ * rational RMFs it agrees with the NURBS surface up to the frames' approximation error).
+ * Its sign tells elliptic (K > 0) from hyperbolic (K < 0) regions.
+ *
+ * @param[in] spine, frames, profile As for rmf_sweep_surface.
+ * @param[in] u, v Profile and spine parameters inside their domains.
+ * @param[out] k Receives K.
+ * @return RMF_OK, RMF_ERROR_NULL_POINTER if an argument is NULL, or
+ *         RMF_ERROR_INVALID_INPUT if u or v is outside its domain or the frames are not
+ *         rational frames of the spine.
+ */
+RmfStatus rmf_sweep_gaussian_curvature(const struct RmfCurve *spine,
+                                       const struct RmfFrames *frames,
+                                       const struct RmfCurve *profile,
+                                       double u,
+                                       double v,
+                                       double *k);
+
+/**
+ * The parabolic points of a profile surface (§2.3 of Mäurer & Jüttler), which separate its
+ * elliptic (K > 0) from its hyperbolic (K < 0) parts, sampled on v_samples uniform spine
+ * parameters: at each, the profile inflections (case 1), the whole profile where the spine
+ * is straight (case 2), and the roots of (14) (case 3), all found as roots of polynomials
+ * in u. Points come ordered by v.
+ *
+ * Size query: with points = NULL and capacity = 0 only count is written.
+ *
+ * @param[in] spine, frames, profile As for rmf_sweep_surface.
+ * @param[in] v_samples Number of spine parameters, ≥ 2.
+ * @param[out] points Buffer for capacity points.
+ * @param[in] capacity Capacity of points.
+ * @param[out] count Receives the number of points.
+ * @return RMF_OK on success or for a size query.
+ * @return RMF_ERROR_NULL_POINTER If spine, frames, profile or count is NULL, or points is
+ *         NULL with capacity > 0.
+ * @return RMF_ERROR_INVALID_INPUT If v_samples < 2 or the frames are not rational frames of
+ *         the spine.
+ * @return RMF_ERROR_BUFFER_TOO_SMALL If 0 < capacity < count; then only count is written.
+ */
+RmfStatus rmf_sweep_parabolic_points(const struct RmfCurve *spine,
+                                     const struct RmfFrames *frames,
+                                     const struct RmfCurve *profile,
+                                     uint32_t v_samples,
+                                     struct RmfParabolicPoint *points,
+                                     size_t capacity,
+                                     size_t *count);
+
+/**
+ * The initial normal for rmf_ph_rational_rmf that makes the RMF sweep of a convex profile
+ * along a PH spline everywhere elliptic (K > 0) or everywhere hyperbolic (K < 0),
+ * Corollary 9 of Mäurer & Jüttler: possible when the profile's tangent turns by δ < π and
+ * δ + ΔΩ < π, ΔΩ the spread of the RMF against the Frenet frame along the spine.
+ *
+ * @param[in] ph_spline A G1 PH cubic spline without straight segments.
+ * @param[in] profile A convex profile (x → f2, y → f3).
+ * @param[in] elliptic Non-zero: K > 0; zero: K < 0.
+ * @param[out] initial_normal Receives the initial normal.
+ * @param[out] margin May be NULL. Receives π − δ − ΔΩ > 0, the slack (radians).
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If ph_spline, profile or initial_normal is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If a segment is not a PH cubic or the spline is not G1.
+ * @return RMF_ERROR_NO_SOLUTION If the profile is not convex, δ + ΔΩ ≥ π, or a spine segment
+ *         is straight (the message says which).
+ */
+RmfStatus rmf_ph_convex_initial_normal(const struct RmfCurve *ph_spline,
+                                       const struct RmfCurve *profile,
+                                       uint32_t elliptic,
+                                       struct RmfVec3 *initial_normal,
+                                       double *margin);
+
+/**
+ * The offset of a planar profile at signed distance along its right-hand normal
+ * (y', −x')/|c'| (the surface normal (10) of the sweep), exact and rational. By
+ * Proposition 4 of Mäurer & Jüttler the offset of a profile surface is the profile surface
+ * of the offset profile: sweep the result with the same spine and frames. Lines, circular
+ * arcs and planar PH curves have rational offsets; other profiles are refused.
+ *
+ * @param[in] profile The profile (x, y; z ignored, 0 in the result).
+ * @param[in] distance Finite signed distance.
+ * @param[out] out Receives the offset profile on the profile's parameter; free with
+ *             rmf_curve_free. Untouched on failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If profile or out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If distance is not finite or the profile has a singular
+ *         point.
+ * @return RMF_ERROR_NO_SOLUTION If a profile segment has no rational offset (the message
+ *         names it).
+ */
+RmfStatus rmf_profile_offset(const struct RmfCurve *profile,
+                             double distance,
+                             struct RmfCurve **out);
 
 /**
  * All RRMF quintics interpolating G1 Hermite data for one value of the angular parameter

@@ -13,7 +13,9 @@
  *      and a pipe swept along it;
  *   4. a cone spline approximating the tangent surface of a twisted cubic (.obj/.vtp), and
  *      its exact development as SVG with true circular arcs;
- *   5. a curve with an exact rational RMF by Möbius transformations of planar PH cubics
+ *   5. profile surfaces along PH cubic splines: a moulding along a conical helix with the
+ *      rational RMF and with the Frenet frame, and a square tube along a closed trefoil;
+ *   6. a curve with an exact rational RMF by Möbius transformations of planar PH cubics
  *      (Bartoň, Jüttler & Wang), and the developable strip x + v f2 swept along it.
  */
 #define _POSIX_C_SOURCE 200809L
@@ -421,7 +423,85 @@ static void demo_cone_spline(void) {
     rmf_cone_spline_free(spline);
 }
 
-/* ---- 5. exact rational RMF by Möbius transformations ---- */
+/* ---- 5. profile surfaces along a PH cubic spline (Mäurer & Jüttler) ---- */
+
+#define PH_DEMO_PI 3.14159265358979323846
+
+/* A conical helix ((t/4 + 1) cos t, (t/4 + 1) sin t, 0.4 t): the spine, given analytically. */
+static void conical_helix(double t, void *user, RmfVec3 *point, RmfVec3 *tangent) {
+    double r = t / 4 + 1;
+    (void)user;
+    point->x = r * cos(t), point->y = r * sin(t), point->z = 0.4 * t;
+    tangent->x = cos(t) / 4 - r * sin(t), tangent->y = sin(t) / 4 + r * cos(t), tangent->z = 0.4;
+}
+
+/* A trefoil knot: a closed spine. */
+static void trefoil(double t, void *user, RmfVec3 *point, RmfVec3 *tangent) {
+    (void)user;
+    point->x = sin(t) + 2 * sin(2 * t), point->y = cos(t) - 2 * cos(2 * t), point->z = -sin(3 * t);
+    tangent->x = cos(t) + 4 * cos(2 * t), tangent->y = -sin(t) + 4 * sin(2 * t), tangent->z = -3 * cos(3 * t);
+}
+
+static RmfCurve *bezier_profile(const RmfVec3 *poles, size_t count, const double *weights) {
+    double knots[16];
+    size_t i;
+    RmfCurve *c = NULL;
+    for (i = 0; i < count; i++) knots[i] = 0, knots[count + i] = 1;
+    TRY(rmf_nurbs_curve_create((uint32_t)(count - 1), poles, weights, count, knots, 2 * count, &c));
+    return c;
+}
+
+static void demo_profile_surfaces(void) {
+    /* A moulding profile (cubic) and a square made of four lines (closed, symmetry order 4). */
+    static const RmfVec3 moulding[4] = {{0.3, -0.2, 0}, {0.55, 0.05, 0}, {0.2, 0.3, 0}, {-0.25, 0.25, 0}};
+    static const RmfVec3 square[5] = {{0.2, 0.2, 0}, {-0.2, 0.2, 0}, {-0.2, -0.2, 0}, {0.2, -0.2, 0}, {0.2, 0.2, 0}};
+    static const double square_knots[7] = {0, 0, 1, 2, 3, 4, 4};
+    RmfCurve *spine = NULL, *profile = bezier_profile(moulding, 4, NULL), *loop = NULL, *box = NULL;
+    RmfFrames *rmf = NULL, *frenet = NULL, *closed = NULL;
+    RmfSurface *surface = NULL, *frenet_surface = NULL, *closed_surface = NULL;
+    RmfSingularityMargin margin;
+    double distance = 0, angle = 0;
+    size_t segments = 0, n = 0;
+
+    printf("5. profile surfaces along PH cubic splines (exact rational NURBS, degree (m, 9))\n");
+    TRY(rmf_ph_spline_approximate(NULL, conical_helix, NULL, 0, 4 * PH_DEMO_PI, 1e-4, &spine, &distance));
+    TRY(rmf_curve_segment_count(spine, &segments));
+    TRY(rmf_ph_rational_rmf(spine, (RmfVec3){0, 0, 1}, &rmf));
+    TRY(rmf_ph_rmf_angle_error(rmf, NULL, 0, &n, &angle));
+    TRY(rmf_sweep_singularity_margin(spine, rmf, profile, &margin));
+    printf("  conical helix -> %zu PH cubics within %.1e; rational RMF within %.1e rad of the exact RMF; "
+           "singularity margin %.3f\n",
+           segments, distance, angle, margin.margin);
+    TRY(rmf_sweep_surface(spine, rmf, profile, &surface));
+    write_tessellation(surface, 12, 8, "profile_surface_rmf",
+                       "profile surface: moulding swept with the rational RMF");
+    TRY(rmf_ph_frenet_frames(spine, &frenet));
+    TRY(rmf_sweep_surface(spine, frenet, profile, &frenet_surface));
+    write_tessellation(frenet_surface, 12, 8, "profile_surface_frenet",
+                       "the same moulding swept with the Frenet frame (twists, torn at joints)");
+
+    /* A closed spine: the RMF does not close; a uniform extra twist, a quarter turn at most for a
+     * square profile, makes the sweep seamless. */
+    TRY(rmf_ph_spline_approximate(NULL, trefoil, NULL, 0, 2 * PH_DEMO_PI, 1e-4, &loop, &distance));
+    TRY(rmf_nurbs_curve_create(1, square, NULL, 5, square_knots, 7, &box));
+    TRY(rmf_ph_rational_rmf_twisted(loop, (RmfVec3){0, 0, 1}, 0, 4, &closed));
+    TRY(rmf_sweep_surface(loop, closed, box, &closed_surface));
+    write_tessellation(closed_surface, 2, 8, "closed_sweep_trefoil",
+                       "square tube along a trefoil, closed without a seam");
+
+    rmf_surface_free(surface);
+    rmf_surface_free(frenet_surface);
+    rmf_surface_free(closed_surface);
+    rmf_frames_free(rmf);
+    rmf_frames_free(frenet);
+    rmf_frames_free(closed);
+    rmf_curve_free(spine);
+    rmf_curve_free(profile);
+    rmf_curve_free(loop);
+    rmf_curve_free(box);
+}
+
+/* ---- 6. exact rational RMF by Möbius transformations ---- */
 
 static void demo_mobius(void) {
     static RmfVec3 x[SAMPLES], t[SAMPLES], f2[SAMPLES], f3[SAMPLES];
@@ -437,7 +517,7 @@ static void demo_mobius(void) {
     double t0, t1;
     size_t i;
 
-    printf("5. curve with an exact rational RMF by Möbius transformations (Bartoň, Jüttler & Wang)\n");
+    printf("6. curve with an exact rational RMF by Möbius transformations (Bartoň, Jüttler & Wang)\n");
     for (i = 0; i < 9; i++) { /* a conical helix */
         double s = 0.8 * (double)i, r = 1.5 - 0.08 * s;
         points[i].x = r * cos(s), points[i].y = r * sin(s), points[i].z = 0.35 * s;
@@ -476,6 +556,7 @@ int main(int argc, char **argv) {
     demo_tessellated_surface();
     demo_rrmf_quintics();
     demo_cone_spline();
+    demo_profile_surfaces();
     demo_mobius();
     return 0;
 }

@@ -100,6 +100,20 @@ pub fn evaluate_jet<C: Coefficient>(coeffs: &[C], t: f64) -> Jet<C> {
     }
 }
 
+/// The Bernstein basis functions B₀ⁿ(t), …, Bₙⁿ(t), written to `out[0..=n]` by the convex
+/// triangle recursion: one pass serves any number of coefficient sets evaluated at `t`.
+pub fn basis(n: usize, t: f64, out: &mut [f64]) {
+    assert!(out.len() > n, "basis buffer too small");
+    out[0] = 1.0;
+    for d in 1..=n {
+        out[d] = t * out[d - 1];
+        for i in (1..d).rev() {
+            out[i] = (1.0 - t) * out[i] + t * out[i - 1];
+        }
+        out[0] *= 1.0 - t;
+    }
+}
+
 /// The Bernstein basis functions of degree `n` at `t` with their first and second
 /// derivatives, written to `out[0..=n]` as `[B, B', B'']`.
 ///
@@ -192,6 +206,28 @@ pub fn elevate<C: Coefficient>(coeffs: &[C], r: usize) -> Vec<C> {
 /// The same polynomial written in degree `degree ≥ n`.
 pub fn elevate_to<C: Coefficient>(coeffs: &[C], degree: usize) -> Vec<C> {
     elevate(coeffs, degree + 1 - coeffs.len())
+}
+
+/// The polynomial of degree n − 1 whose elevation gives `coeffs` (degree n ≥ 1), computed
+/// from both ends (the first half by the forward recursion of the elevation formula, the
+/// second by the backward one). Exact when p has degree < n — e.g. a product whose top
+/// power coefficient cancels — and otherwise no approximation of any quality: check by
+/// elevating back.
+pub fn reduce_degree<C: Coefficient>(coeffs: &[C]) -> Vec<C> {
+    let n = coeffs.len() - 1;
+    assert!(n >= 1, "a constant cannot be reduced");
+    let nf = n as f64;
+    let mut out = vec![C::default(); n];
+    let half = (n - 1) / 2;
+    out[0] = coeffs[0];
+    for i in 1..=half {
+        out[i] = (coeffs[i] * nf - out[i - 1] * i as f64) * (1.0 / (n - i) as f64);
+    }
+    out[n - 1] = coeffs[n];
+    for i in (half + 2..n).rev() {
+        out[i - 1] = (coeffs[i] * nf - out[i] * (n - i) as f64) * (1.0 / i as f64);
+    }
+    out
 }
 
 /// Subdivision at `t`: coefficients of p on [0, t] and on [t, 1], each reparameterized to
@@ -338,6 +374,34 @@ mod tests {
         );
         // (1 − 2t)² touches zero at t = 1/2: no positive subdivision exists.
         assert!(positive_subdivision(&[&[1.0, -1.0, 1.0]], 30).is_none());
+    }
+
+    #[test]
+    fn basis_reproduces_evaluation() {
+        let mut b = [0.0; 8];
+        for &t in &[0.0, 0.3, 0.77, 1.0] {
+            basis(4, t, &mut b);
+            let sum: f64 = P.iter().zip(&b).map(|(c, w)| c * w).sum();
+            assert!((sum - evaluate(&P, t)).abs() < 1e-15);
+            assert!((b[..5].iter().sum::<f64>() - 1.0).abs() < 1e-15);
+        }
+    }
+
+    #[test]
+    fn reduction_undoes_elevation() {
+        for r in 1..4 {
+            let e = elevate(&P, r);
+            let mut back = e.clone();
+            for _ in 0..r {
+                back = reduce_degree(&back);
+            }
+            assert_eq!(back.len(), P.len());
+            assert!(
+                back.iter().zip(&P).all(|(a, b)| (a - b).abs() < 1e-12),
+                "{back:?}"
+            );
+        }
+        assert_eq!(reduce_degree(&[2.0, 2.0]), vec![2.0]);
     }
 
     #[test]

@@ -19,6 +19,7 @@ pub mod curve;
 pub mod frames;
 pub mod input;
 pub mod mobius;
+pub mod ph_cubic;
 pub mod rrmf_quintic;
 pub mod status;
 pub mod surface;

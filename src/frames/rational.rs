@@ -75,14 +75,7 @@ impl RationalFrameSegment {
 
     /// The frame at the local parameter `s`.
     pub fn frame(&self, s: f64) -> Frame {
-        let d = bernstein::evaluate(&self.denominator, s);
-        let f2 = bernstein::evaluate(&self.f2, s) / d;
-        let f3 = bernstein::evaluate(&self.f3, s) / d;
-        Frame {
-            tangent: f2.cross(f3),
-            f2,
-            f3,
-        }
+        frame_at(&self.f2, &self.f3, &self.denominator, s)
     }
 
     /// f₂ and its derivative with respect to the local parameter, by the quotient rule.
@@ -131,7 +124,61 @@ impl RationalFrameSegment {
     }
 }
 
+/// The frame N₂/d, N₃/d at `s` from Bernstein coefficients of one degree (the tangent is
+/// f₂ × f₃, the pair being orthonormal).
+pub fn frame_at(f2: &[DVec3], f3: &[DVec3], denominator: &[f64], s: f64) -> Frame {
+    // One basis evaluation for all seven coefficient sets (3 + 3 + 1), instead of a de
+    // Casteljau run per set: frames are evaluated in bulk (meshes, sweeps, benchmarks).
+    let n = denominator.len() - 1;
+    let mut basis = [0.0; MAX_DEGREE + 1];
+    bernstein::basis(n, s, &mut basis);
+    let combine = |c: &[DVec3]| {
+        c.iter()
+            .zip(&basis)
+            .fold(DVec3::ZERO, |a, (&v, &b)| a + v * b)
+    };
+    let d: f64 = denominator.iter().zip(&basis).map(|(c, b)| c * b).sum();
+    let f2 = combine(f2) / d;
+    let f3 = combine(f3) / d;
+
+    Frame {
+        tangent: f2.cross(f3),
+        f2,
+        f3,
+    }
+}
+
+/// The constant turn about the tangent that makes piece `k` of a frame field, starting with
+/// the frame `start`, continue the previous piece, which ends with `previous_end` (they must
+/// share the tangent: the curve must be G1); for the first piece (`None`), the turn that
+/// starts it at `initial_normal` projected onto the normal plane. A constant turn keeps a
+/// rotation-minimizing frame rotation-minimizing.
+pub fn joining_turn(
+    start: &Frame,
+    previous_end: Option<&Frame>,
+    initial_normal: DVec3,
+    k: usize,
+) -> Result<f64> {
+    let target = match previous_end {
+        None => normal_plane_unit(initial_normal, start.tangent, "initial_normal")?,
+        Some(end) => {
+            if (end.tangent - start.tangent).length() > G1_TOLERANCE {
+                return invalid!(
+                    "segments {} and {k} do not share their tangent: the spline is not G1",
+                    k - 1
+                );
+            }
+            end.f2
+        }
+    };
+    Ok(angle_about_tangent(
+        start,
+        &Frame::from_tangent_normal(start.tangent, target),
+    ))
+}
+
 /// Rational frames along a piecewise curve; segment k lives on `[breaks[k], breaks[k+1]]`.
+
 #[derive(Clone, Debug, PartialEq)]
 pub struct RationalFrames {
     segments: Vec<RationalFrameSegment>,
@@ -158,22 +205,13 @@ impl RationalFrames {
         check_breaks(&breaks, segments.len(), "frame breakpoints")?;
         let mut joined: Vec<RationalFrameSegment> = Vec::with_capacity(segments.len());
         for (k, segment) in segments.into_iter().enumerate() {
-            let start = segment.frame(0.0);
-            let target = match joined.last() {
-                None => normal_plane_unit(initial_normal, start.tangent, "initial_normal")?,
-                Some(previous) => {
-                    let end = previous.frame(1.0);
-                    if (end.tangent - start.tangent).length() > G1_TOLERANCE {
-                        return invalid!(
-                            "segments {} and {k} do not share their tangent: the spline is not G1",
-                            k - 1
-                        );
-                    }
-                    end.f2
-                }
-            };
-            let angle =
-                angle_about_tangent(&start, &Frame::from_tangent_normal(start.tangent, target));
+            let previous_end = joined.last().map(|p| p.frame(1.0));
+            let angle = joining_turn(
+                &segment.frame(0.0),
+                previous_end.as_ref(),
+                initial_normal,
+                k,
+            )?;
             joined.push(segment.rotated(angle));
         }
         Ok(Self {

@@ -13,6 +13,7 @@ use crate::error::{invalid, Result};
 use crate::frames::metrics::angle_about_tangent;
 use crate::frames::rational::RationalFrames;
 use crate::math::minimize_bracketed;
+use crate::mesh::grid_parameters;
 use std::f64::consts::PI;
 
 /// Samples per frame piece; the largest one is then refined by Brent's method.
@@ -40,7 +41,7 @@ pub fn angle_errors(spline: &PiecewiseCurve, frames: &RationalFrames) -> Result<
     }
     let exact = ExactRmf::new(spline, frames.frame(lo).f2, 0.0)?;
     let raw = |t: f64| angle_about_tangent(&exact.frame(t), &frames.frame(t));
-    let samples = sample_parameters(fb);
+    let samples = grid_parameters(fb, SAMPLES_PER_PIECE);
     let unwrapped = unwrap(samples.iter().map(|&t| raw(t)));
     let twist = *unwrapped.last().expect("samples");
     let total = exact.total_length();
@@ -72,19 +73,6 @@ pub fn angle_errors(spline: &PiecewiseCurve, frames: &RationalFrames) -> Result<
         per_segment,
         twist,
     })
-}
-
-/// Uniform samples on every frame piece, breakpoints included once.
-fn sample_parameters(breaks: &[f64]) -> Vec<f64> {
-    let mut samples = Vec::with_capacity((breaks.len() - 1) * SAMPLES_PER_PIECE + 1);
-    for w in breaks.windows(2) {
-        samples.extend(
-            (0..SAMPLES_PER_PIECE)
-                .map(|j| w[0] + (w[1] - w[0]) * j as f64 / SAMPLES_PER_PIECE as f64),
-        );
-    }
-    samples.push(breaks[breaks.len() - 1]);
-    samples
 }
 
 /// The angle in (−π, π] differing from `a` by a multiple of 2π.

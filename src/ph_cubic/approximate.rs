@@ -134,8 +134,10 @@ pub fn check_g1(curve: &PiecewiseCurve) -> Result<()> {
     for (k, pair) in curve.segments().windows(2).enumerate() {
         let left = pair[0].eval_jet(1.0).d1;
         let right = pair[1].eval_jet(0.0).d1;
-        let angle = left.angle_between(right);
-        if !(angle <= CORNER_TOLERANCE) {
+        // atan2, not acos: the angle must be exact near 0.
+        let angle = left.cross(right).length().atan2(left.dot(right));
+
+        if angle.is_nan() || angle > CORNER_TOLERANCE {
             return invalid!(
                 "curve has a corner at t = {} ({angle:.2e} rad between the tangents): a G1 PH \
                  spline cannot follow it; approximate the pieces on either side separately",
@@ -147,13 +149,17 @@ pub fn check_g1(curve: &PiecewiseCurve) -> Result<()> {
 }
 
 /// The shape-matching PH cubic through the data at a and b with its distance to the curve,
-/// or `None` when the data admit no PH cubic.
+/// or `None` when the data admit no PH cubic (also when the points coincide, as the ends of
+/// a closed curve do: the interval is then halved).
 fn fit_interval(
     curve: &dyn ParametricCurve,
     a: &Sample,
     b: &Sample,
 ) -> Result<Option<(PhCubic, f64)>> {
-    let data = HermiteSegment::new(a.point, a.tangent, b.point, b.tangent)?;
+    let Ok(data) = HermiteSegment::new(a.point, a.tangent, b.point, b.tangent) else {
+        return Ok(None);
+    };
+
     match ph_cubic_hermite(&data) {
         Ok(solutions) => {
             let cubic = solutions.shape_matching;
@@ -346,6 +352,26 @@ mod tests {
         let kinked = PiecewiseCurve::new(vec![arc, line], vec![0.0, 1.0, 2.0]).unwrap();
         let e = check_g1(&kinked).unwrap_err();
         assert!(e.message().contains("corner at t = 1"), "{e}");
+    }
+
+    #[test]
+    fn closed_curves_are_split_where_their_ends_meet() {
+        struct Circle;
+        impl ParametricCurve for Circle {
+            fn domain(&self) -> (f64, f64) {
+                (0.0, 2.0 * std::f64::consts::PI)
+            }
+            fn point_derivative(&self, t: f64) -> Result<(DVec3, DVec3)> {
+                Ok((
+                    DVec3::new(t.cos(), t.sin(), 0.1 * (3.0 * t).sin()),
+                    DVec3::new(-t.sin(), t.cos(), 0.3 * (3.0 * t).cos()),
+                ))
+            }
+        }
+        let a = ph_spline_approximate(&Circle, &[0.0, 2.0 * std::f64::consts::PI], 1e-5).unwrap();
+        let (lo, hi) = a.spline.domain();
+        assert!((a.spline.eval(hi) - a.spline.eval(lo)).length() < 1e-14);
+        assert!(a.max_distance <= 1e-5);
     }
 
     #[test]

@@ -15,7 +15,7 @@ use super::frenet::frenet_numerators;
 use super::rmf_angle::RmfAngle;
 use crate::bezier::bernstein::{self, product, restrict};
 use crate::error::{Error, Result};
-use crate::frames::rational::{RationalFrameSegment, RationalFrames};
+use crate::frames::rational::{frame_at, RationalFrameSegment, RationalFrames};
 use crate::frames::Frame;
 use crate::math::orthonormal_to;
 use glam::DVec3;
@@ -38,14 +38,7 @@ pub struct FrameNumerators {
 
 impl FrameNumerators {
     pub fn frame(&self, v: f64) -> Frame {
-        let d = bernstein::evaluate(&self.d, v);
-        let e2 = bernstein::evaluate(&self.e2, v) / d;
-        let e3 = bernstein::evaluate(&self.e3, v) / d;
-        Frame {
-            tangent: e2.cross(e3),
-            f2: e2,
-            f3: e3,
-        }
+        frame_at(&self.e2, &self.e3, &self.d, v)
     }
 
     /// The same frame on [v0, v1], reparameterized to [0, 1].
@@ -106,7 +99,7 @@ impl FrameNumerators {
 }
 
 /// Frame pieces collected into piecewise rational frames on a refinement of a spline's
-/// breakpoints (segment k on [breaks[k], breaks[k+1]], a piece on a part of it).
+/// breakpoints (segment k on `[breaks[k], breaks[k+1]]`, a piece on a part of it).
 pub struct FramePieces<'a> {
     spline_breaks: &'a [f64],
     segments: Vec<RationalFrameSegment>,
@@ -174,14 +167,15 @@ pub enum BaseFrame {
 
 impl BaseFrame {
     pub fn of(cubic: &PhCubic) -> Self {
+        let cubic = cubic.normalized();
         if cubic.bend() > NEARLY_STRAIGHT {
             Self::Frenet {
-                numerators: frenet_numerators(cubic),
-                angle: RmfAngle::of(cubic),
+                numerators: frenet_numerators(&cubic),
+                angle: RmfAngle::of(&cubic),
             }
         } else {
             Self::Carried {
-                numerators: carried_numerators(cubic),
+                numerators: carried_numerators(&cubic),
             }
         }
     }
@@ -256,7 +250,7 @@ mod tests {
     use super::*;
     use crate::frames::frenet::frenet_frame;
     use crate::frames::metrics::orthonormality_error;
-    use crate::ph_cubic::test_curves::example_cubic;
+    use crate::ph_cubic::test_curves::{example_cubic, tschirnhausen};
 
     #[test]
     fn frenet_base_frame_is_the_frenet_frame() {
@@ -327,15 +321,8 @@ mod tests {
 
     #[test]
     fn positive_pieces_split_a_sharp_turn() {
-        // A Tschirnhausen cubic with legs 1, 2, 4 turning by 120°: σ = 3(1, −1, 4).
-        let r3 = 3f64.sqrt();
-        let c = PhCubic::from_control_points([
-            DVec3::ZERO,
-            DVec3::X,
-            DVec3::new(0.0, r3, 0.0),
-            DVec3::new(-2.0, -r3, 0.0),
-        ])
-        .unwrap();
+        // Legs 1, 2, 4 turning by 120°: σ = 3(1, −1, 4).
+        let c = tschirnhausen(2.0 * std::f64::consts::FRAC_PI_3, 2.0);
         assert!(c.speed()[1] < 0.0);
         let pieces = frenet_numerators(&c).positive_pieces().unwrap();
         assert!(pieces.len() > 1);

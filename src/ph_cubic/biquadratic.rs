@@ -12,6 +12,7 @@
 
 use crate::error::{Error, Result};
 use crate::math::{minimize_bracketed, GaussLegendre};
+use std::sync::OnceLock;
 
 /// Nodes of the Gauss–Legendre rule for (41): the integrand is a smooth rational function of
 /// degree 8/8, integrated to round-off by this many nodes for the data that occur.
@@ -106,7 +107,13 @@ pub fn lambda_star(data: &AngleHermite) -> f64 {
 
 /// The objective (40), ∫₀¹ (d/dv 2 arctan W − Ω')² dv, by the quadrature (41).
 pub fn objective(w: &Biquadratic, rate: impl Fn(f64) -> f64) -> f64 {
-    objective_with(&GaussLegendre::new(QUADRATURE_NODES), w, rate)
+    objective_with(quadrature_rule(), w, rate)
+}
+
+/// The rule of (41), computed once.
+fn quadrature_rule() -> &'static GaussLegendre {
+    static RULE: OnceLock<GaussLegendre> = OnceLock::new();
+    RULE.get_or_init(|| GaussLegendre::new(QUADRATURE_NODES))
 }
 
 fn objective_with(rule: &GaussLegendre, w: &Biquadratic, rate: impl Fn(f64) -> f64) -> f64 {
@@ -174,13 +181,13 @@ fn fit_dyn(data: AngleHermite, rate: &dyn Fn(f64) -> f64) -> Result<BiquadraticF
             denominator: beta,
         }
     };
-    let rule = GaussLegendre::new(QUADRATURE_NODES);
+    let rule = quadrature_rule();
     // α = 1/(1 + e⁻ˣ): a coarse scan over x finds the basin, Brent's method the minimum.
     let alpha = |x: f64| 1.0 / (1.0 + (-x).exp());
-    let cost = |x: f64| objective_with(&rule, &member(alpha(x)), rate);
-    let best = (-15..=15)
-        .map(|i| i as f64)
-        .min_by(|&a, &b| cost(a).total_cmp(&cost(b)))
+    let cost = |x: f64| objective_with(rule, &member(alpha(x)), rate);
+    let (best, _) = (-15..=15)
+        .map(|i| (i as f64, cost(i as f64)))
+        .min_by(|a, b| a.1.total_cmp(&b.1))
         .expect("a non-empty scan");
     let minimum = minimize_bracketed(cost, best - 1.0, best + 1.0, 1e-10);
     Ok(BiquadraticFit {

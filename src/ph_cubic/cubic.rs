@@ -53,7 +53,7 @@ impl PhCubic {
             );
         }
         let residual = cubic.hodograph_residual();
-        if !(residual <= cubic.ph_tolerance()) {
+        if residual.is_nan() || residual > cubic.ph_tolerance() {
             return invalid!(
                 "the control polygon violates the PH condition (17): relative residual {residual:.1e}"
             );
@@ -162,6 +162,22 @@ impl PhCubic {
         h0.cross(h1).length() / (l1 * l2)
     }
 
+    /// min σ / max σ on [0, 1]. σ/3 = L₁ − 2bv + cv² is convex (c = L₁ − 2L₂cos θ + L₃ > 0), so
+    /// its maximum is at an end and its minimum at an end or at the vertex, where it is
+    /// (L₁L₃ − L₂²cos²θ)/c (the a²/c of (31)).
+    pub fn speed_ratio(&self) -> f64 {
+        let [l1, _, l3] = self.leg_lengths();
+        let m = self.speed_middle();
+        let (b, c) = (l1 - m, l1 - 2.0 * m + l3);
+        let vertex = b / c;
+        let least = if vertex > 0.0 && vertex < 1.0 {
+            (l1 * l3 - m * m).max(0.0) / c
+        } else {
+            l1.min(l3)
+        };
+        least / l1.max(l3)
+    }
+
     /// Curvature κ(v) = 6L₂|sin θ| / σ(v)² (18).
     pub fn curvature(&self, v: f64) -> f64 {
         let [h0, h1, _] = self.legs();
@@ -183,6 +199,17 @@ impl PhCubic {
     /// First derivative x'(v).
     pub fn derivative(&self, v: f64) -> DVec3 {
         bernstein::evaluate(&self.legs(), v) * 3.0
+    }
+
+    /// The same cubic moved to b₀ = 0 and scaled to a longest leg of 1: frames, angles and
+    /// curvature ratios do not change, and the products that compute them neither underflow
+    /// nor overflow for curves of any size.
+    pub fn normalized(&self) -> Self {
+        let longest = self.leg_lengths().iter().fold(0.0f64, |m, &l| m.max(l));
+        let origin = self.points[0];
+        Self {
+            points: self.points.map(|p| (p - origin) / longest),
+        }
     }
 
     /// Sum of the leg lengths, the criterion of Table 1 for the shape-matching interpolant.
@@ -207,6 +234,8 @@ mod tests {
         }
         // L1 = L2 = 1, L3 = 2, L2 cos θ = 0: arc length L1 + L2 cos θ + L3 = 3.
         assert!((c.arc_length() - 3.0).abs() < 1e-15);
+        // σ/3 = (1 − v)² + 2v² is least at v = 1/3 (2/3) and largest at v = 1 (2).
+        assert!((c.speed_ratio() - 1.0 / 3.0).abs() < 1e-15);
         assert!(c.hodograph_residual() < 1e-15);
     }
 

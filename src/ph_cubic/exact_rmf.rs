@@ -9,17 +9,15 @@
 
 use super::base_frame::BaseFrame;
 use super::cubic::PhCubic;
+use super::in_context;
 use super::spline::ph_cubics;
 use crate::bezier::bernstein;
 use crate::bezier::{locate, PiecewiseCurve};
-use crate::error::{invalid, Result};
+use crate::error::Result;
 use crate::frames::metrics::angle_about_tangent;
+use crate::frames::rational::joining_turn;
 use crate::frames::Frame;
-use crate::math::normal_plane_unit;
 use glam::DVec3;
-
-/// Largest distance between unit tangents of consecutive segments at a G1 joint.
-const G1_TOLERANCE: f64 = 1e-9;
 
 /// One segment: its cubic, base frame and the constant αₖ.
 #[derive(Clone, Debug)]
@@ -47,22 +45,14 @@ impl ExactRmf {
         let mut arc_before = 0.0;
         for (k, cubic) in ph_cubics(spline)?.into_iter().enumerate() {
             let base = BaseFrame::of(&cubic);
-            let start = base.numerators().frame(0.0);
-            let target = match segments.last() {
-                None => normal_plane_unit(initial_normal, start.tangent, "initial_normal")?,
-                Some(previous) => {
-                    let end = previous.frame(1.0, twist_rate);
-                    if (end.tangent - start.tangent).length() > G1_TOLERANCE {
-                        return invalid!(
-                            "ph_spline segments {} and {k} do not share their tangent: the spline is not G1",
-                            k - 1
-                        );
-                    }
-                    end.f2
-                }
-            };
-            let start_angle =
-                angle_about_tangent(&start, &Frame::from_tangent_normal(start.tangent, target));
+            let previous_end = segments.last().map(|p| p.frame(1.0, twist_rate));
+            let start_angle = joining_turn(
+                &base.numerators().frame(0.0),
+                previous_end.as_ref(),
+                initial_normal,
+                k,
+            )
+            .map_err(|e| in_context(e, "ph_spline"))?;
             segments.push(Segment {
                 cubic,
                 base,
@@ -76,6 +66,13 @@ impl ExactRmf {
             segments,
             twist_rate,
         })
+    }
+
+    /// The RMF of a single PH cubic on [0, 1] (e.g. the cubic of Example 2 of the Möbius
+    /// paper, as a reference for convergence tables).
+    pub fn for_cubic(cubic: &PhCubic, initial_normal: DVec3) -> Result<Self> {
+        let spline = PiecewiseCurve::new(vec![cubic.to_bezier()], vec![0.0, 1.0])?;
+        Self::new(&spline, initial_normal, 0.0)
     }
 
     /// The frame at the spline parameter t.
@@ -157,12 +154,20 @@ impl SegmentTarget<'_> {
 
     /// The parameters in (0, 1) where g' = 0 (the angle turns back), in increasing order.
     ///
-    /// Ω' = −ρ/q with q = σ/3, so g' = 0 where ω·3q² = ρ: q = √(ρ/(3ω)) when ρ/ω > 0.
+    /// Ω' = −ρ/q with ρ and q = σ/3 of the cubic scaled to a longest leg of 1, while the
+    /// twist term is ω·σ = 3ωℓq for the cubic's longest leg ℓ: g' = 0 where q = √(ρ/(3ωℓ)),
+    /// when ρ/ω > 0.
     pub fn turning_points(&self) -> Vec<f64> {
         let (omega, base) = (self.twist_rate, &self.segment.base);
+        let longest = self
+            .segment
+            .cubic
+            .leg_lengths()
+            .iter()
+            .fold(0.0f64, |m, &l| m.max(l));
         match base {
             BaseFrame::Frenet { angle, .. } if omega != 0.0 => {
-                let level = angle.torsion_constant() / (3.0 * omega);
+                let level = angle.torsion_constant() / (3.0 * omega * longest);
                 if level > 0.0 {
                     angle.where_q_equals(level.sqrt())
                 } else {
@@ -177,23 +182,24 @@ impl SegmentTarget<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::curve::uniform_parameters;
-    use crate::frames::double_reflection::DoubleReflectionRmf;
-    use crate::ph_cubic::test_curves::helix_spline;
+    use crate::ph_cubic::test_curves::{gap_to_double_reflection, helix_spline};
 
     #[test]
     fn agrees_with_the_double_reflection_rmf() {
         let spline = helix_spline(8, 0.6);
         let normal = DVec3::new(0.3, -0.2, 1.0);
         let exact = ExactRmf::new(&spline, normal, 0.0).unwrap();
-        let params = uniform_parameters(spline.domain(), 4001);
-        let reference = DoubleReflectionRmf::along(&spline, params.clone(), normal).unwrap();
-        let worst = params
-            .iter()
-            .zip(reference.frames())
-            .map(|(&t, f)| angle_about_tangent(f, &exact.frame(t)).abs())
-            .fold(0.0, f64::max);
+        let worst = gap_to_double_reflection(&spline, normal, 4001, |t| exact.frame(t));
         assert!(worst < 1e-9, "{worst}");
+    }
+
+    #[test]
+    fn rmf_of_one_cubic_agrees_with_double_reflection() {
+        let cubic = crate::ph_cubic::test_curves::example_cubic();
+        let exact = ExactRmf::for_cubic(&cubic, DVec3::Z).unwrap();
+        let spline = PiecewiseCurve::new(vec![cubic.to_bezier()], vec![0.0, 1.0]).unwrap();
+        let worst = gap_to_double_reflection(&spline, DVec3::Z, 4001, |t| exact.frame(t));
+        assert!(worst < 1e-10, "{worst}");
     }
 
     #[test]

@@ -6,7 +6,8 @@
 use super::base_frame::{FrameNumerators, FramePieces};
 use super::cubic::PhCubic;
 use super::spline::ph_cubics;
-use crate::bezier::bernstein::{self, product};
+use crate::bezier::bernstein::{self, product, reduce_degree};
+
 use crate::bezier::PiecewiseCurve;
 use crate::error::{invalid, Result};
 use crate::frames::rational::RationalFrames;
@@ -18,8 +19,9 @@ const STRAIGHT: f64 = 1e-12;
 /// The Frenet frame (19), n = (σx'' − σ'x')/(Kσ), b = x' × x''/(Kσ), K = 6L₂|sin θ| = |x' × x''|/σ.
 ///
 /// Both numerators are quadratic although built from cubic products (their t³ terms cancel
-/// for every quadratic σ and x'), so they are brought back to degree 2; K is taken as the mean
-/// of its values at the two ends, which agree for a PH cubic.
+/// for every quadratic σ and x'), so they are brought back to degree 2. K is taken from both
+/// ends, |b̂(0)|/σ(0) = |b̂(1)|/σ(1) for a PH cubic, weighted towards the longer end leg (whose
+/// rounding matters less).
 pub fn frenet_numerators(cubic: &PhCubic) -> FrameNumerators {
     let d1 = bernstein::derivative(&cubic.control_points());
     let d2 = bernstein::derivative(&d1);
@@ -31,18 +33,12 @@ pub fn frenet_numerators(cubic: &PhCubic) -> FrameNumerators {
         .zip(product(&dsigma, &d1, |s: f64, v: DVec3| v * s))
         .map(|(a, b)| *a - b)
         .collect();
-    let k = 0.5 * (binormal[0].length() / sigma[0] + binormal[3].length() / sigma[2]);
+    let k = (binormal[0].length() + binormal[3].length()) / (sigma[0] + sigma[2]);
     FrameNumerators {
-        e2: undo_elevation(&normal),
-        e3: undo_elevation(&binormal),
+        e2: reduce_degree(&normal),
+        e3: reduce_degree(&binormal),
         d: sigma.iter().map(|s| s * k).collect(),
     }
-}
-
-/// Degree-2 coefficients of a quadratic given in degree 3 (inverse of one elevation,
-/// taken from both ends).
-fn undo_elevation(c: &[DVec3]) -> Vec<DVec3> {
-    vec![c[0], 0.25 * (3.0 * (c[1] + c[2]) - c[0] - c[3]), c[3]]
 }
 
 /// The Frenet frames (f₂ = n, f₃ = b) of a PH cubic spline as exact rational functions of

@@ -17,7 +17,9 @@
 //! | [`rational_rmf`] | rational RMFs of splines, with twist and closure of closed spines | (29), (42) |
 //! | [`accuracy`] | angle between rational frames and the exact RMF | §3.4 |
 //! | [`analysis`] | singularities, parabolic lines, curvature sign, convexity of profile surfaces | (9), (13), (14), Cor. 7, 9 |
+//! | [`profile`] | the planar profile c(u): tangent and curvature polynomials | (1), (11) |
 //! | [`offset`] | offsets of profile surfaces as profile surfaces of offset profiles | Proposition 4 |
+
 //!
 //! The profile surface itself, (42), is the generic rational sweep of [`crate::sweep`].
 
@@ -31,6 +33,8 @@ pub mod exact_rmf;
 pub mod frenet;
 pub mod hermite;
 pub mod offset;
+pub mod profile;
+
 pub mod rational_rmf;
 pub mod rmf_angle;
 pub mod spline;

@@ -36,6 +36,14 @@ use std::f64::consts::{FRAC_PI_2, PI};
 /// Largest turn of the target angle on one W (see the module notes).
 const MAX_PIECE_TURN: f64 = FRAC_PI_2;
 
+/// Most pieces of one segment for [`MAX_PIECE_TURN`]: the RMF itself turns by less than 2π
+/// on a segment (32), so it needs a few (more where the speed nearly vanishes and the turn
+/// concentrates); only an absurd twist needs more.
+const MAX_PIECES: usize = 4096;
+
+/// Deepest halving (pieces shorter than 2⁻⁴⁰ of a segment are not split further).
+const MAX_HALVINGS: usize = 40;
+
 /// Relative distance between the end and the start of a spine below which it is closed.
 const CLOSED_TOLERANCE: f64 = 1e-9;
 
@@ -96,9 +104,9 @@ pub fn ph_rational_rmf(spline: &PiecewiseCurve, options: &RmfOptions) -> Result<
     let mut fits = Vec::new();
     for k in 0..target.segment_count() {
         let segment = target.segment_target(k);
-        for (v0, v1) in monotone_pieces(&segment) {
-            let (numerators, fit) = piece_frame(&segment, v0, v1)
-                .map_err(|e| in_context(e, &format!("ph_spline segment {k}")))?;
+        let context = |e| in_context(e, &format!("ph_spline segment {k}"));
+        for (v0, v1) in monotone_pieces(&segment).map_err(context)? {
+            let (numerators, fit) = piece_frame(&segment, v0, v1).map_err(context)?;
             pieces.push_all(k, v0, v1, numerators.positive_pieces()?);
             fits.push(PieceFit {
                 segment: k,
@@ -163,7 +171,7 @@ fn check_closed(spline: &PiecewiseCurve) -> Result<()> {
 /// [0, 1] split where the target angle turns back, then halved until no piece turns by
 /// more than [`MAX_PIECE_TURN`]. A piece between two turning points is halved as well: with
 /// zero slopes at both ends the family (37) shrinks to β₁ = 0, far less flexible.
-fn monotone_pieces(segment: &SegmentTarget) -> Vec<(f64, f64)> {
+fn monotone_pieces(segment: &SegmentTarget) -> Result<Vec<(f64, f64)>> {
     let turning = segment.turning_points();
     let mut cuts = vec![0.0];
     for w in turning.windows(2) {
@@ -173,9 +181,9 @@ fn monotone_pieces(segment: &SegmentTarget) -> Vec<(f64, f64)> {
     cuts.push(1.0);
     let mut pieces = Vec::new();
     for w in cuts.windows(2) {
-        halve_while_turning(segment, w[0], w[1], 0, &mut pieces);
+        halve_while_turning(segment, w[0], w[1], 0, &mut pieces)?;
     }
-    pieces
+    Ok(pieces)
 }
 
 fn halve_while_turning(
@@ -184,14 +192,19 @@ fn halve_while_turning(
     b: f64,
     depth: usize,
     out: &mut Vec<(f64, f64)>,
-) {
-    if depth < 40 && (segment.angle(b) - segment.angle(a)).abs() > MAX_PIECE_TURN {
-        let mid = 0.5 * (a + b);
-        halve_while_turning(segment, a, mid, depth + 1, out);
-        halve_while_turning(segment, mid, b, depth + 1, out);
-    } else {
+) -> Result<()> {
+    if (segment.angle(b) - segment.angle(a)).abs() <= MAX_PIECE_TURN || depth == MAX_HALVINGS {
         out.push((a, b));
+        return Ok(());
     }
+    if out.len() >= MAX_PIECES {
+        return invalid!(
+            "the frame would need more than {MAX_PIECES} rational pieces on this segment to turn              by at most π/2 on each: the twist is too large for this spline"
+        );
+    }
+    let mid = 0.5 * (a + b);
+    halve_while_turning(segment, a, mid, depth + 1, out)?;
+    halve_while_turning(segment, mid, b, depth + 1, out)
 }
 
 /// The frame numerators on the part [v0, v1] of a segment: its base frame turned by
@@ -264,7 +277,7 @@ mod tests {
     use super::*;
     use crate::frames::metrics::{angle_about_tangent, orthonormality_error};
     use crate::ph_cubic::ph_spline_hermite;
-    use crate::ph_cubic::test_curves::{helix, helix_spline};
+    use crate::ph_cubic::test_curves::{gap_to_double_reflection, helix, helix_spline};
 
     fn max_error(spline: &PiecewiseCurve, rmf: &RationalRmf, exact: &ExactRmf) -> f64 {
         let (lo, hi) = spline.domain();
@@ -308,6 +321,28 @@ mod tests {
     }
 
     #[test]
+    fn frames_turn_exactly_like_the_rmf_at_the_joints() {
+        // W interpolates w and w' at both ends (34): at every joint, on both sides, the frame
+        // has the RMF's value and no turn about the tangent (f₂'·f₃ = 0), while inside a
+        // segment it turns a little. With the G1 spline this makes sweeps G1 (Proposition 5).
+        let spline = helix_spline(4, 0.8);
+        let rmf = ph_rational_rmf(&spline, &RmfOptions::rmf(DVec3::Z)).unwrap();
+        let turn = |piece: usize, s: f64| {
+            let p = &rmf.frames.segments()[piece];
+            let (_, d) = p.f2_with_derivative(s);
+            d.dot(p.frame(s).f3).abs() / d.length().max(1e-300)
+        };
+        let pieces = rmf.frames.segments().len();
+        for piece in 0..pieces {
+            assert!(
+                turn(piece, 0.0) < 1e-12 && turn(piece, 1.0) < 1e-12,
+                "piece {piece}"
+            );
+        }
+        assert!((0..pieces).any(|p| turn(p, 0.3) > 1e-9));
+    }
+
+    #[test]
     fn sharp_turns_and_both_torsion_signs_keep_positive_weights() {
         // A coarse spline of a helix with opposite pitch: fewer, sharper segments.
         let (points, tangents): (Vec<DVec3>, Vec<DVec3>) = (0..=4)
@@ -325,6 +360,91 @@ mod tests {
             .all(|s| s.denominator().iter().all(|&d| d > 0.0)));
         let exact = ExactRmf::new(&spline, DVec3::X, 0.0).unwrap();
         assert!(max_error(&spline, &rmf, &exact) < 1e-4);
+    }
+
+    #[test]
+    fn straight_and_nearly_straight_segments_carry_the_frame() {
+        // (t, s³, s³/2) with s = max(t − 1, 0): a straight start, then a curve leaving it with
+        // zero curvature (nearly straight segments), sampled every 0.25.
+        let curve = |t: f64| {
+            let s = (t - 1.0).max(0.0);
+            (
+                DVec3::new(t, s.powi(3), 0.5 * s.powi(3)),
+                DVec3::new(1.0, 3.0 * s * s, 1.5 * s * s),
+            )
+        };
+        let (points, tangents): (Vec<DVec3>, Vec<DVec3>) =
+            (0..=12).map(|i| curve(0.25 * i as f64)).unzip();
+        let spline = ph_spline_hermite(&points, &tangents).unwrap();
+        let rmf = ph_rational_rmf(&spline, &RmfOptions::rmf(DVec3::Y)).unwrap();
+        let worst = gap_to_double_reflection(&spline, DVec3::Y, 20001, |t| rmf.frames.frame(t));
+        assert!(worst < 1e-8, "{worst}");
+        // On the straight part (spline parameters [0, 4]) the frame does not move at all.
+        for t in [0.5, 2.0, 3.9] {
+            assert!(
+                (rmf.frames.frame(t).f2 - DVec3::Y).length() < 1e-15,
+                "t = {t}"
+            );
+        }
+        let bends: Vec<f64> = crate::ph_cubic::ph_cubics(&spline)
+            .unwrap()
+            .iter()
+            .map(|c| c.bend())
+            .collect();
+        assert!(bends[..4].iter().all(|&b| b == 0.0) && bends[4] > 0.0);
+        // A gentle helix (radius of curvature 2e6): every segment nearly straight (carried
+        // frames), still the RMF.
+        let r = 1e6;
+        let gentle = |t: f64| {
+            let s = (t / (2.0 * r)).sin();
+            (
+                DVec3::new(-2.0 * r * s * s, r * (t / r).sin(), t),
+                DVec3::new(-(t / r).sin(), (t / r).cos(), 1.0),
+            )
+        };
+        let (points, tangents): (Vec<DVec3>, Vec<DVec3>) =
+            (0..=4).map(|i| gentle(i as f64)).unzip();
+        let spline = ph_spline_hermite(&points, &tangents).unwrap();
+        let cubics = crate::ph_cubic::ph_cubics(&spline).unwrap();
+        assert!(cubics
+            .iter()
+            .all(|c| c.bend() > 0.0 && c.bend() < super::super::base_frame::NEARLY_STRAIGHT));
+        let rmf = ph_rational_rmf(&spline, &RmfOptions::rmf(DVec3::X)).unwrap();
+        let worst = gap_to_double_reflection(&spline, DVec3::X, 4001, |t| rmf.frames.frame(t));
+        assert!(worst < 1e-12, "{worst}");
+    }
+
+    #[test]
+    fn any_scale_gives_the_same_frames() {
+        let (points, tangents): (Vec<DVec3>, Vec<DVec3>) =
+            (0..=6).map(|i| helix(0.5 * i as f64, 0.4)).unzip();
+        let unit = ph_rational_rmf(
+            &ph_spline_hermite(&points, &tangents).unwrap(),
+            &RmfOptions::rmf(DVec3::Z),
+        )
+        .unwrap();
+        // Powers of two scale exactly: the frames must agree to round-off. Decimal scales
+        // round the data (relative ε); λ, found by Brent's method to about √ε, then moves
+        // and with it W inside a segment, by up to about 1e-12 (never at the joints).
+        for (scale, tolerance) in [
+            (2f64.powi(-500), 1e-15),
+            (2f64.powi(500), 1e-15),
+            (1e-150, 1e-11),
+            (1e150, 1e-11),
+        ] {
+            let scaled: Vec<DVec3> = points.iter().map(|&p| p * scale).collect();
+            let spline = ph_spline_hermite(&scaled, &tangents).unwrap();
+            let rmf = ph_rational_rmf(&spline, &RmfOptions::rmf(DVec3::Z)).unwrap();
+            for i in 0..=60 {
+                let t = 0.1 * i as f64;
+                let (a, b) = (unit.frames.frame(t), rmf.frames.frame(t));
+                assert!(
+                    (a.f2 - b.f2).length() < tolerance,
+                    "scale {scale:e}, t = {t}: {:e}",
+                    (a.f2 - b.f2).length()
+                );
+            }
+        }
     }
 
     #[test]
@@ -465,5 +585,11 @@ mod tests {
         let (_, t0) = helix(0.0, 0.4);
         let e = ph_rational_rmf(&spline, &RmfOptions::rmf(t0)).unwrap_err();
         assert!(e.message().contains("initial_normal"));
+        let absurd = RmfOptions {
+            twist: 1e9,
+            ..RmfOptions::rmf(DVec3::Z)
+        };
+        let e = ph_rational_rmf(&spline, &absurd).unwrap_err();
+        assert!(e.message().contains("twist is too large"), "{e}");
     }
 }

@@ -35,10 +35,12 @@ pub struct RmfAngle {
 impl RmfAngle {
     /// The angle function of a PH cubic that is not a straight line.
     pub fn of(cubic: &PhCubic) -> Self {
+        // Ω depends on the shape only: compute on the normalized cubic (no overflow).
+        let cubic = cubic.normalized();
         let [l1, _, l3] = cubic.leg_lengths();
         let m = cubic.speed_middle();
         Self {
-            rho: torsion_constant(cubic),
+            rho: torsion_constant(&cubic),
             a: (l1 * l3 - m * m).max(0.0).sqrt(),
             b: l1 - m,
             c: l1 - 2.0 * m + l3,
@@ -46,7 +48,8 @@ impl RmfAngle {
         }
     }
 
-    /// ρ; its sign is that of the torsion, zero for planar cubics.
+    /// ρ of the cubic scaled to a longest leg of 1; its sign is that of the torsion, zero for
+    /// planar cubics.
     pub fn torsion_constant(&self) -> f64 {
         self.rho
     }
@@ -100,7 +103,7 @@ mod tests {
     use super::*;
     use crate::frames::frenet::frenet_frame;
     use crate::math::GaussLegendre;
-    use crate::ph_cubic::test_curves::{example_cubic, mirrored};
+    use crate::ph_cubic::test_curves::{example_cubic, mirrored, tschirnhausen};
 
     /// τσ from the derivatives of the Bézier curve, for comparison with −Ω'.
     fn torsion_times_speed(c: &PhCubic, v: f64) -> f64 {
@@ -123,9 +126,10 @@ mod tests {
                 assert!((omega.rate(v) - expected).abs() < 1e-13, "v = {v}");
             }
         }
-        // det(h₀, h₁, h₂) = −2 for the example: negative torsion; its mirror image has ρ > 0.
-        assert!((RmfAngle::of(&example_cubic()).torsion_constant() + 2.0).abs() < 1e-15);
-        assert!((RmfAngle::of(&mirrored(&example_cubic())).torsion_constant() - 2.0).abs() < 1e-15);
+        // det(h₀, h₁, h₂) = −2 for the example, whose longest leg is 2: ρ = −1 for the
+        // normalized cubic, negative torsion; its mirror image has ρ = +1.
+        assert!((RmfAngle::of(&example_cubic()).torsion_constant() + 1.0).abs() < 1e-15);
+        assert!((RmfAngle::of(&mirrored(&example_cubic())).torsion_constant() - 1.0).abs() < 1e-15);
     }
 
     #[test]
@@ -159,15 +163,7 @@ mod tests {
 
     #[test]
     fn planar_cubics_have_constant_angle() {
-        // A Tschirnhausen cubic: unit legs turning by 60° each (L₂² = L₁L₃, ψ = 0).
-        let r3 = 3f64.sqrt();
-        let c = PhCubic::from_control_points([
-            DVec3::ZERO,
-            DVec3::X,
-            DVec3::new(1.5, 0.5 * r3, 0.0),
-            DVec3::new(1.0, r3, 0.0),
-        ])
-        .unwrap();
+        let c = tschirnhausen(std::f64::consts::FRAC_PI_3, 1.0);
         let omega = RmfAngle::of(&c);
         assert_eq!(omega.torsion_constant(), 0.0);
         assert_eq!(omega.increment(0.7), 0.0);

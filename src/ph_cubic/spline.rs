@@ -11,33 +11,30 @@ use crate::hermite::{hermite_sequence, HermiteSegment};
 use glam::DVec3;
 
 /// The PH cubic spline through `points` with unit `tangents` (any non-zero length is
-/// normalized): segment i interpolates points[i], points[i + 1] on the parameter interval
+/// normalized): segment i interpolates `points[i]`, `points[i + 1]` on the parameter interval
 /// [i, i + 1].
 pub fn ph_spline_hermite(points: &[DVec3], tangents: &[DVec3]) -> Result<PiecewiseCurve> {
-    let segments = hermite_sequence(points, tangents)?;
-    let breaks = (0..=segments.len()).map(|i| i as f64).collect();
-    ph_spline_through(&segments, breaks, |i| {
-        format!("segment {i} (points[{i}] to points[{}])", i + 1)
-    })
+    ph_spline_from_segments(&hermite_sequence(points, tangents)?)
 }
 
-/// The PH cubic spline through consecutive Hermite segments on the given breakpoints;
-/// `name` names segment i in error messages.
-pub(crate) fn ph_spline_through(
-    segments: &[HermiteSegment],
-    breaks: Vec<f64>,
-    name: impl Fn(usize) -> String,
-) -> Result<PiecewiseCurve> {
+/// The PH cubic spline through validated consecutive Hermite segments (see
+/// [`ph_spline_hermite`]); errors name the segment and its points.
+pub fn ph_spline_from_segments(segments: &[HermiteSegment]) -> Result<PiecewiseCurve> {
     let cubics = segments
         .iter()
         .enumerate()
         .map(|(i, s)| {
             ph_cubic_hermite(s)
                 .map(|solutions| solutions.shape_matching.to_bezier())
-                .map_err(|e| in_context(e, &name(i)))
+                .map_err(|e| {
+                    in_context(
+                        e,
+                        &format!("segment {i} (points[{i}] to points[{}])", i + 1),
+                    )
+                })
         })
         .collect::<Result<Vec<RationalBezierCurve>>>()?;
-    PiecewiseCurve::new(cubics, breaks)
+    PiecewiseCurve::with_unit_intervals(cubics)
 }
 
 /// The PH cubics of a piecewise curve whose segments are polynomial of degree ≤ 3 (given
