@@ -985,7 +985,8 @@ RmfStatus rmf_curve_eval(const struct RmfCurve *curve,
  * @param[out] view Receives pointers into memory owned by the curve: do not free them;
  *             valid until rmf_curve_free(curve).
  * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if the segments do not
- *         join (cannot happen for curves made by this library).
+ *         join into one continuous NURBS (Frenet frame vectors and Frenet sweeps along a G1
+ *         spline jump at the joints); rmf_curve_segment still gives every piece.
  */
 RmfStatus rmf_curve_nurbs(const struct RmfCurve *curve, struct RmfNurbsCurve *view);
 
@@ -1854,7 +1855,8 @@ RmfStatus rmf_surface_eval(const struct RmfSurface *surface,
  * @param[out] view Receives pointers owned by the surface: do not free them; valid until
  *             rmf_surface_free(surface).
  * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if the patches do not
- *         join (cannot happen for surfaces made by this library).
+ *         join into one continuous NURBS (Frenet frame vectors and Frenet sweeps along a G1
+ *         spline jump at the joints); rmf_surface_patch still gives every piece.
  */
 RmfStatus rmf_surface_nurbs(const struct RmfSurface *surface, struct RmfNurbsSurface *view);
 

@@ -6,7 +6,7 @@ use super::boundary::{
     FfiResult,
 };
 use super::status::RmfStatus;
-use super::types::{RmfBezierCurve, RmfNurbsCurve, RmfVec3};
+use super::types::{piece_views, PieceViews, RmfBezierCurve, RmfNurbsCurve, RmfVec3};
 use crate::bezier::{check_in_domain, check_nurbs_counts, NurbsCurve, PiecewiseCurve};
 use crate::error::Result;
 use std::sync::{Arc, OnceLock};
@@ -18,14 +18,16 @@ pub struct RmfCurve {
     /// The caller's NURBS data when the curve was created from it: the NURBS view shows it
     /// unchanged.
     source: Option<NurbsCurve>,
-    views: OnceLock<Result<CurveViews>>,
+    /// The NURBS view, built on first request; it fails for discontinuous curves (e.g. the
+    /// Frenet vectors of a G1 spline), which still have segment views.
+    nurbs: OnceLock<Result<NurbsView>>,
+    segments: OnceLock<PieceViews>,
 }
 
-/// C-layout copies of the curve's data, built on first request.
-struct CurveViews {
+/// C-layout copy of the NURBS data.
+struct NurbsView {
     nurbs: NurbsCurve,
     poles: Vec<RmfVec3>,
-    segments: Vec<(Vec<RmfVec3>, Vec<f64>)>,
 }
 
 impl RmfCurve {
@@ -35,7 +37,8 @@ impl RmfCurve {
         Self {
             curve: curve.into(),
             source,
-            views: OnceLock::new(),
+            nurbs: OnceLock::new(),
+            segments: OnceLock::new(),
         }
     }
 
@@ -44,31 +47,21 @@ impl RmfCurve {
         Box::into_raw(Box::new(self))
     }
 
-    fn views(&self) -> FfiResult<&CurveViews> {
-        let views = self.views.get_or_init(|| {
+    fn nurbs_view(&self) -> FfiResult<&NurbsView> {
+        let view = self.nurbs.get_or_init(|| {
             let nurbs = match &self.source {
                 Some(n) => n.clone(),
                 None => NurbsCurve::from_piecewise(&self.curve)?,
             };
             let poles = nurbs.poles.iter().map(|&p| p.into()).collect();
-            let segments = self
-                .curve
-                .segments()
-                .iter()
-                .map(|s| {
-                    (
-                        s.poles().map(RmfVec3::from).collect(),
-                        s.weights().collect(),
-                    )
-                })
-                .collect();
-            Ok(CurveViews {
-                nurbs,
-                poles,
-                segments,
-            })
+            Ok(NurbsView { nurbs, poles })
         });
-        views.as_ref().map_err(|e| FfiError::Core(e.clone()))
+        view.as_ref().map_err(|e| FfiError::Core(e.clone()))
+    }
+
+    fn segment_views(&self) -> &PieceViews {
+        self.segments
+            .get_or_init(|| piece_views(self.curve.segments().iter().map(|s| s.homogeneous())))
     }
 }
 
@@ -191,7 +184,8 @@ pub unsafe extern "C" fn rmf_curve_eval(
 /// @param[out] view Receives pointers into memory owned by the curve: do not free them;
 ///             valid until rmf_curve_free(curve).
 /// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if the segments do not
-///         join (cannot happen for curves made by this library).
+///         join into one continuous NURBS (Frenet frame vectors and Frenet sweeps along a G1
+///         spline jump at the joints); rmf_curve_segment still gives every piece.
 #[no_mangle]
 pub unsafe extern "C" fn rmf_curve_nurbs(
     curve: *const RmfCurve,
@@ -200,7 +194,7 @@ pub unsafe extern "C" fn rmf_curve_nurbs(
     guard("rmf_curve_nurbs", || {
         let curve = reference(curve, "curve")?;
         let view = out_ptr(view, "view")?;
-        let v = curve.views()?;
+        let v = curve.nurbs_view()?;
         write(
             view,
             RmfNurbsCurve {
@@ -258,7 +252,7 @@ pub unsafe extern "C" fn rmf_curve_nurbs_copy(
         let poles = buffer(poles, pole_capacity, "poles")?;
         let weights = buffer(weights, pole_capacity, "weights")?;
         let knots = buffer(knots, knot_capacity, "knots")?;
-        let v = curve.views()?;
+        let v = curve.nurbs_view()?;
         write(degree, v.nurbs.degree as u32);
         write(pole_count, v.poles.len());
         write(knot_count, v.nurbs.knots.len());
@@ -310,11 +304,11 @@ pub unsafe extern "C" fn rmf_curve_segment(
     guard("rmf_curve_segment", || {
         let curve = reference(curve, "curve")?;
         let view = out_ptr(view, "view")?;
-        let v = curve.views()?;
-        let Some((poles, weights)) = v.segments.get(index) else {
+        let segments = curve.segment_views();
+        let Some((poles, weights)) = segments.get(index) else {
             return super::boundary::invalid_arg(format!(
                 "index = {index} but the curve has {} segments",
-                v.segments.len()
+                segments.len()
             ));
         };
         let breaks = curve.curve.breaks();

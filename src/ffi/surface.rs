@@ -8,8 +8,7 @@ use super::boundary::{
 use super::curve::RmfCurve;
 use super::frames::{rational_frames, RmfFrames};
 use super::status::RmfStatus;
-use super::types::{RmfBezierPatch, RmfNurbsSurface, RmfVec3};
-use crate::bezier::homogeneous::project;
+use super::types::{piece_views, PieceViews, RmfBezierPatch, RmfNurbsSurface, RmfVec3};
 use crate::bezier::{check_in_domain, check_nurbs_counts, NurbsSurface, PiecewiseSurface};
 use crate::error::Result;
 use crate::mesh::{mesh_size, tessellate};
@@ -22,14 +21,16 @@ pub struct RmfSurface {
     pub(crate) surface: Arc<PiecewiseSurface>,
     /// The caller's NURBS data when created from it: the NURBS view shows it unchanged.
     source: Option<NurbsSurface>,
-    views: OnceLock<Result<SurfaceViews>>,
+    /// The NURBS view, built on first request; it fails for discontinuous surfaces (e.g.
+    /// a Frenet sweep along a G1 spline), which still have patch views.
+    nurbs: OnceLock<Result<NurbsView>>,
+    patches: OnceLock<PieceViews>,
 }
 
-/// C-layout copies of the surface's data, built on first request.
-struct SurfaceViews {
+/// C-layout copy of the NURBS data.
+struct NurbsView {
     nurbs: NurbsSurface,
     poles: Vec<RmfVec3>,
-    patches: Vec<(Vec<RmfVec3>, Vec<f64>)>,
 }
 
 impl RmfSurface {
@@ -38,7 +39,8 @@ impl RmfSurface {
         Self {
             surface: Arc::new(surface),
             source,
-            views: OnceLock::new(),
+            nurbs: OnceLock::new(),
+            patches: OnceLock::new(),
         }
     }
 
@@ -47,31 +49,21 @@ impl RmfSurface {
         Box::into_raw(Box::new(self))
     }
 
-    fn views(&self) -> FfiResult<&SurfaceViews> {
-        let views = self.views.get_or_init(|| {
+    fn nurbs_view(&self) -> FfiResult<&NurbsView> {
+        let view = self.nurbs.get_or_init(|| {
             let nurbs = match &self.source {
                 Some(n) => n.clone(),
                 None => NurbsSurface::from_piecewise(&self.surface)?,
             };
             let poles = nurbs.poles.iter().map(|&p| p.into()).collect();
-            let patches = self
-                .surface
-                .patches()
-                .iter()
-                .map(|p| {
-                    (
-                        p.homogeneous().iter().map(|&h| project(h).into()).collect(),
-                        p.homogeneous().iter().map(|h| h.w).collect(),
-                    )
-                })
-                .collect();
-            Ok(SurfaceViews {
-                nurbs,
-                poles,
-                patches,
-            })
+            Ok(NurbsView { nurbs, poles })
         });
-        views.as_ref().map_err(|e| FfiError::Core(e.clone()))
+        view.as_ref().map_err(|e| FfiError::Core(e.clone()))
+    }
+
+    fn patch_views(&self) -> &PieceViews {
+        self.patches
+            .get_or_init(|| piece_views(self.surface.patches().iter().map(|p| p.homogeneous())))
     }
 }
 
@@ -227,7 +219,8 @@ pub unsafe extern "C" fn rmf_surface_eval(
 /// @param[out] view Receives pointers owned by the surface: do not free them; valid until
 ///             rmf_surface_free(surface).
 /// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if the patches do not
-///         join (cannot happen for surfaces made by this library).
+///         join into one continuous NURBS (Frenet frame vectors and Frenet sweeps along a G1
+///         spline jump at the joints); rmf_surface_patch still gives every piece.
 #[no_mangle]
 pub unsafe extern "C" fn rmf_surface_nurbs(
     surface: *const RmfSurface,
@@ -236,7 +229,7 @@ pub unsafe extern "C" fn rmf_surface_nurbs(
     guard("rmf_surface_nurbs", || {
         let surface = reference(surface, "surface")?;
         let view = out_ptr(view, "view")?;
-        let v = surface.views()?;
+        let v = surface.nurbs_view()?;
         let n = &v.nurbs;
         write(
             view,
@@ -305,7 +298,7 @@ pub unsafe extern "C" fn rmf_surface_nurbs_copy(
         let weights = buffer(weights, pole_capacity, "weights")?;
         let knots_u = buffer(knots_u, knot_capacity_u, "knots_u")?;
         let knots_v = buffer(knots_v, knot_capacity_v, "knots_v")?;
-        let v = surface.views()?;
+        let v = surface.nurbs_view()?;
         let n = &v.nurbs;
         write(degree_u, n.degree_u as u32);
         write(degree_v, n.degree_v as u32);
@@ -378,8 +371,7 @@ pub unsafe extern "C" fn rmf_surface_patch(
                 "patch ({index_u}, {index_v}) is outside the {ku} × {kv} grid"
             ));
         }
-        let v = surface.views()?;
-        let (poles, weights) = &v.patches[index_u * kv + index_v];
+        let (poles, weights) = &surface.patch_views()[index_u * kv + index_v];
         let patch = s.patch(index_u, index_v);
         write(
             view,
@@ -504,4 +496,43 @@ pub unsafe extern "C" fn rmf_sweep_surface(
         write(out, RmfSurface::new(surface, None).into_raw());
         Ok(())
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::bezier::RationalBezierPatch;
+    use glam::DVec4;
+
+    /// Two bilinear patches that do not meet: no single NURBS, but each patch has a view.
+    fn torn() -> RmfSurface {
+        let square = |x0: f64, lift: f64| {
+            let corners = [(x0, 0.0), (x0, 1.0), (x0 + 1.0, 0.0), (x0 + 1.0, 1.0)];
+            let points = corners
+                .iter()
+                .map(|&(x, y)| DVec4::new(x, y, lift, 1.0))
+                .collect();
+            RationalBezierPatch::from_homogeneous(1, 1, points).unwrap()
+        };
+        let surface = PiecewiseSurface::new(
+            vec![square(0.0, 0.0), square(1.0, 0.5)],
+            vec![0.0, 1.0, 2.0],
+            vec![0.0, 1.0],
+        )
+        .unwrap();
+        RmfSurface::new(surface, None)
+    }
+
+    #[test]
+    fn a_discontinuous_surface_has_patch_views_but_no_nurbs_view() {
+        let surface = torn();
+        let mut patch = std::mem::MaybeUninit::<RmfBezierPatch>::uninit();
+        let status = unsafe { rmf_surface_patch(&surface, 1, 0, patch.as_mut_ptr()) };
+        assert_eq!(status, RmfStatus::RmfOk);
+        let patch = unsafe { patch.assume_init() };
+        assert_eq!(unsafe { (*patch.poles).z }, 0.5);
+        let mut view = std::mem::MaybeUninit::<RmfNurbsSurface>::uninit();
+        let status = unsafe { rmf_surface_nurbs(&surface, view.as_mut_ptr()) };
+        assert_eq!(status, RmfStatus::RmfErrorInvalidInput);
+    }
 }

@@ -1,6 +1,21 @@
 //! Plain data exchanged with C: vectors and borrowed views of NURBS and Bézier data.
 
-use glam::DVec3;
+use crate::bezier::homogeneous::project;
+use glam::{DVec3, DVec4};
+
+/// C-layout copies of Bézier pieces (segments or patches): Cartesian poles and weights of
+/// each, the arrays behind `RmfBezierCurve` and `RmfBezierPatch` views.
+pub(crate) type PieceViews = Vec<(Vec<RmfVec3>, Vec<f64>)>;
+
+/// Piece views from the homogeneous control points of each piece.
+pub(crate) fn piece_views<'a>(pieces: impl Iterator<Item = &'a [DVec4]>) -> PieceViews {
+    pieces
+        .map(|points| {
+            let poles = points.iter().map(|&h| project(h).into()).collect();
+            (poles, points.iter().map(|h| h.w).collect())
+        })
+        .collect()
+}
 
 /// A point or vector in 3-space.
 #[repr(C)]
