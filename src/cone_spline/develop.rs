@@ -209,7 +209,8 @@ mod tests {
                 }
                 for (k, &v) in reference.v_breaks().iter().enumerate() {
                     let (p, q) = (reference.eval_jet(t0, v), surface.eval_jet(t0, v));
-                    let angle = |j: &crate::bezier::SurfaceJet| j.du.angle_between(j.dv);
+                    let angle =
+                        |j: &crate::bezier::SurfaceJet| crate::math::angle_between(j.du, j.dv);
                     assert!((angle(&p) - angle(&q)).abs() < 1e-9, "angle at ruling {k}");
                 }
                 for (p, q) in spline.pieces().iter().zip(bent.pieces()) {

@@ -74,7 +74,7 @@ impl Element {
     /// (zero only for equal, not for opposite, tangent planes).
     pub fn tangent_plane_angle(&self, target: &Element) -> f64 {
         let (n, m) = (self.normal(), target.normal());
-        n.cross(m).dot(target.ruling).atan2(n.dot(m))
+        crate::math::signed_angle(n, m, target.ruling)
     }
 
     /// Signed parameter of the point of this ruling line nearest to `x`.

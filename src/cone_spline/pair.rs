@@ -24,7 +24,7 @@ use super::element::{check_consecutive, Element};
 use super::piece::ConePiece;
 use super::region::Region;
 use crate::error::{invalid, Error, Result};
-use crate::math::{quadratic_roots, secant_refine};
+use crate::math::{quadratic_roots, secant_refine, solve_refined};
 use glam::{DMat3, DVec3};
 
 /// |det(p₁, p₂, n₁ − n₂)| below which (13) holds: the constant-slope case.
@@ -422,14 +422,18 @@ fn general_case(
     scale: f64,
 ) -> Result<ConePair> {
     let (n1, n2) = (a.normal(), b.normal());
-    // m: the normal planes (5) and the bisector plane (6).
+    // m: the normal planes (5) and the bisector plane (6), relative to the first element's
+    // point (right-hand sides of the elements' distance, no cancellation of coordinates)
+    // and solved with refinement: nearby elements make the system nearly singular.
     let rows = DMat3::from_cols(a.side, b.side, n1 - n2).transpose();
-    let rhs = DVec3::new(
-        a.side.dot(a.point),
-        b.side.dot(b.point),
-        a.point.dot(n1) - b.point.dot(n2),
-    );
-    let m = rows.inverse() * rhs;
+    let offset = b.point - a.point;
+    let rhs = DVec3::new(0.0, b.side.dot(offset), -offset.dot(n2));
+    let Some(y) = solve_refined(rows, rhs) else {
+        return Err(Error::NoSolution(
+            "the inscribed sphere of the two elements is undefined (parallel normal planes)".into(),
+        ));
+    };
+    let m = a.point + y;
     let radius = (m - a.point).dot(n1);
     let a1 = a.at(a.parameter_of(m));
     let a2 = b.at(b.parameter_of(m));

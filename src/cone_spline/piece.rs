@@ -18,6 +18,7 @@ use super::element::Element;
 use crate::bezier::homogeneous::lift;
 use crate::bezier::RationalBezierPatch;
 use crate::error::{invalid, Error, Result};
+use crate::math::{angle_between, signed_angle};
 use glam::{DMat3, DVec3, DVec4};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
@@ -107,11 +108,6 @@ fn radial(v: DVec3, k: DVec3) -> DVec3 {
     v - v.dot(k) * k
 }
 
-/// Signed angle about the unit `k` from `a` to `b` (both normal to k), in (−π, π].
-fn angle_about(k: DVec3, a: DVec3, b: DVec3) -> f64 {
-    k.dot(a.cross(b)).atan2(a.dot(b))
-}
-
 /// Distance from `y` to the line through `p` with unit direction `d`.
 fn line_distance(y: DVec3, p: DVec3, d: DVec3) -> f64 {
     (y - p).cross(d).length()
@@ -146,7 +142,7 @@ impl ConePiece {
         }
         // k × e = sin β · p with sin β > 0: a positive rotation moves the reference point
         // towards +p exactly when it lies beyond the vertex, ρ = (vertex − point) · e < 0.
-        let theta0 = angle_about(axis, radial(e, axis), radial(e_end, axis));
+        let theta0 = signed_angle(radial(e, axis), radial(e_end, axis), axis);
         let angle = signed_sweep(theta0, rho < 0.0);
         Ok(Self {
             start,
@@ -189,7 +185,7 @@ impl ConePiece {
         let rho = len * len / (2.0 * yn);
         let origin = start.point + rho * n;
         // e × (x − o) = ρ p: a positive rotation about e moves towards +p iff ρ > 0.
-        let theta0 = angle_about(e, start.point - origin, start.point + y - origin);
+        let theta0 = signed_angle(start.point - origin, start.point + y - origin, e);
         Ok(Self {
             start,
             motion: Motion::Rotation {
@@ -265,8 +261,7 @@ impl ConePiece {
             PieceKind::Plane => FRAC_PI_2,
             PieceKind::Cone => {
                 // atan2 keeps full precision for slender and for flat cones alike.
-                let (k, e) = (self.axis(), self.start.ruling);
-                k.cross(e).length().atan2(k.dot(e))
+                angle_between(self.axis(), self.start.ruling)
             }
         }
     }
@@ -355,7 +350,7 @@ impl ConePiece {
                 } else {
                     radial(el.ruling, axis)
                 };
-                let psi = angle_about(axis, reference, radial(y - origin, axis));
+                let psi = signed_angle(reference, radial(y - origin, axis), axis);
                 let candidates: &[f64] = if cylinder { &[0.0] } else { &[0.0, PI] };
                 candidates
                     .iter()

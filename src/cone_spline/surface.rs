@@ -185,7 +185,7 @@ mod tests {
             for u in [0.0, 0.5, 1.0] {
                 assert!((w[0].eval(u, 1.0) - w[1].eval(u, 0.0)).length() < 1e-13);
                 let (a, b) = (normal(&w[0], u, 1.0), normal(&w[1], u, 0.0));
-                let gap = a.cross(b).length().atan2(a.dot(b));
+                let gap = crate::math::angle_between(a, b);
                 assert!(gap < 1e-9, "normal jump {gap:e}");
             }
         }

@@ -12,6 +12,7 @@
 use super::{Frame, FrameField, FrameKind};
 use crate::bezier::SurfaceJet;
 use crate::error::Result;
+use crate::math::signed_angle;
 
 /// The RMF defect at `t`: `(df₂/dt · f₃) / |x'(t)|` (radians per unit length).
 ///
@@ -38,7 +39,7 @@ pub fn rmf_defect(field: &FrameField, t: f64) -> Result<f64> {
 
 /// Signed angle about `a.tangent` that turns `a.f2` into `b.f2` (frames on one tangent).
 pub fn angle_about_tangent(a: &Frame, b: &Frame) -> f64 {
-    a.f2.cross(b.f2).dot(a.tangent).atan2(a.f2.dot(b.f2))
+    signed_angle(a.f2, b.f2, a.tangent)
 }
 
 /// Largest deviation of the frame from orthonormality: `max |fᵢ·fⱼ − δᵢⱼ|`.

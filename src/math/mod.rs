@@ -6,6 +6,7 @@
 
 mod binomial;
 mod complex;
+mod linear;
 mod minimize;
 mod quadrature;
 mod roots;
@@ -14,11 +15,12 @@ mod vector;
 
 pub use binomial::binomial;
 pub use complex::Complex;
+pub use linear::solve_refined;
 pub use minimize::{minimize_bracketed, Minimum};
 pub use quadrature::GaussLegendre;
 pub use roots::{bisect_root, quadratic_roots, real_roots_in, real_roots_power};
 pub use secant::secant_refine;
 pub use vector::{
     angle_between, check_finite, check_point, check_unit_direction, normal_plane_unit,
-    orthogonalized, orthonormal_to,
+    orthogonalized, orthonormal_to, signed_angle,
 };

@@ -83,6 +83,12 @@ pub fn angle_between(a: DVec3, b: DVec3) -> f64 {
     a.cross(b).length().atan2(a.dot(b))
 }
 
+/// The signed angle about the unit `axis` that turns `a` into `b` (both normal to the
+/// axis), in (−π, π]: atan2(axis·(a × b), a·b).
+pub fn signed_angle(a: DVec3, b: DVec3, axis: DVec3) -> f64 {
+    axis.dot(a.cross(b)).atan2(a.dot(b))
+}
+
 /// Some unit vector perpendicular to the unit vector `t` (a stable choice: the cross
 /// product with the coordinate axis least aligned with `t`).
 pub fn orthonormal_to(t: DVec3) -> DVec3 {

@@ -30,7 +30,7 @@
 
 use super::transform::{Inversion, MobiusMap};
 use crate::hermite::HermiteSegment;
-use crate::math::{angle_between, bisect_root, orthonormal_to};
+use crate::math::{angle_between, bisect_root, orthonormal_to, signed_angle, solve_refined};
 use glam::{DMat3, DVec3};
 
 /// Below this |det(t₀, t₁, chord/|chord|)| the data count as planar.
@@ -71,11 +71,7 @@ pub fn segment_sphere(h: &HermiteSegment) -> Option<(DVec3, f64)> {
     }
     // y = z − m: y·t₀ = −(chord·t₀)/2, y·t₁ = (chord·t₁)/2, y·chord = 0.
     let rhs = DVec3::new(-0.5 * chord.dot(h.t0), 0.5 * chord.dot(h.t1), 0.0);
-    let inverse = rows.inverse();
-    let mut y = inverse * rhs;
-    for _ in 0..2 {
-        y += inverse * (rhs - rows * y);
-    }
+    let y = solve_refined(rows, rhs)?;
     let midpoint = 0.5 * (h.p0 + h.p1);
     Some((midpoint + y, (0.5 * chord + y).length()))
 }
@@ -154,10 +150,7 @@ pub fn turning_segment_map(h: &HermiteSegment) -> Option<SegmentMap> {
 /// Signed angle from the chord to the mapped tangent at `p`, about the plane normal.
 fn chord_angle(m: &SegmentMap, chord: DVec3, p: DVec3, t: DVec3) -> f64 {
     let image = m.map.normalized_differential(p, t).unwrap_or(t);
-    chord
-        .cross(image)
-        .dot(m.plane_normal)
-        .atan2(chord.dot(image))
+    signed_angle(chord, image, m.plane_normal)
 }
 
 /// Normal of the plane of the great circle through p₀ and p₁: it contains the chord and the
@@ -222,7 +215,7 @@ fn turning_through(h: &HermiteSegment, (center, radius): (DVec3, f64), f: DVec3)
     let angle = |p: DVec3, t: DVec3| {
         let y = p - f;
         let image = t - 2.0 * t.dot(y) / y.length_squared() * y;
-        chord.cross(image).dot(normal).atan2(chord.dot(image))
+        signed_angle(chord, image, normal)
     };
     angle(h.p1, h.t1) - angle(h.p0, h.t0)
 }
@@ -352,7 +345,7 @@ mod tests {
                 "the angle sum is invariant"
             );
             assert!(
-                ((a1 - a0).abs() - h.t0.angle_between(h.t1)).abs() < 1e-9,
+                ((a1 - a0).abs() - angle_between(h.t0, h.t1)).abs() < 1e-9,
                 "turning as in space"
             );
             assert!(a0 * a1 < 0.0, "C-shaped planar data: {a0} {a1}");

@@ -16,6 +16,7 @@ use crate::bezier::PiecewiseCurve;
 use crate::curve::{uniform_parameters, ParametricCurve};
 use crate::error::{invalid, Error, Result};
 use crate::hermite::HermiteSegment;
+use crate::math::angle_between;
 use crate::math::{minimize_bracketed, real_roots_in};
 use glam::DVec3;
 
@@ -134,8 +135,7 @@ pub fn check_g1(curve: &PiecewiseCurve) -> Result<()> {
     for (k, pair) in curve.segments().windows(2).enumerate() {
         let left = pair[0].eval_jet(1.0).d1;
         let right = pair[1].eval_jet(0.0).d1;
-        // atan2, not acos: the angle must be exact near 0.
-        let angle = left.cross(right).length().atan2(left.dot(right));
+        let angle = angle_between(left, right);
 
         if angle.is_nan() || angle > CORNER_TOLERANCE {
             return invalid!(

@@ -13,6 +13,7 @@
 use crate::bezier::bernstein::{self, product};
 use crate::bezier::RationalBezierCurve;
 use crate::error::{invalid, Result};
+use crate::math::angle_between;
 use glam::DVec3;
 
 /// Largest relative hodograph residual (see [`PhCubic::hodograph_residual`]) accepted for a
@@ -140,13 +141,12 @@ impl PhCubic {
     pub fn polygon_condition(&self) -> PolygonCondition {
         let [h0, h1, h2] = self.legs();
         let [l1, l2, l3] = self.leg_lengths();
-        let angle = |a: DVec3, b: DVec3| a.cross(b).length().atan2(a.dot(b));
         let (n1, n2) = (h0.cross(h1), h1.cross(h2));
         let cos_psi = (n1 != DVec3::ZERO && n2 != DVec3::ZERO)
             .then(|| n1.dot(n2) / (n1.length() * n2.length()));
         PolygonCondition {
-            theta12: angle(h0, h1),
-            theta23: angle(h1, h2),
+            theta12: angle_between(h0, h1),
+            theta23: angle_between(h1, h2),
             cos_psi,
             cos_psi_ph: 2.0 * l2 * l2 / (l1 * l3) - 1.0,
         }

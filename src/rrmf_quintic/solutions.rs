@@ -23,6 +23,7 @@ use super::special;
 use crate::bezier::RationalBezierCurve;
 use crate::error::{invalid, Result};
 use crate::hermite::HermiteSegment;
+use crate::math::angle_between;
 use crate::math::Complex;
 use glam::DVec3;
 
@@ -145,7 +146,7 @@ fn satisfies_conditions(c: &CanonicalHermite, unit_chord: &HopfQuadratics) -> bo
     let end_error = (unit_chord.displacement() - DVec3::X).length() / size;
     let hodograph = unit_chord.hodograph();
     let (ti, tf) = c.tangents();
-    let tangent_error = angle(hodograph[0], ti).max(angle(hodograph[4], tf));
+    let tangent_error = angle_between(hodograph[0], ti).max(angle_between(hodograph[4], tf));
     r7 <= RRMF_TOLERANCE
         && r8 <= RRMF_TOLERANCE
         && end_error <= INTERPOLATION_TOLERANCE
@@ -157,11 +158,6 @@ fn satisfies_conditions(c: &CanonicalHermite, unit_chord: &HopfQuadratics) -> bo
 fn is_regular(unit_chord: &HopfQuadratics) -> bool {
     let (slowest, fastest) = speed_range(unit_chord);
     slowest >= REGULARITY * fastest
-}
-
-/// The angle between two non-zero vectors, accurate for small angles.
-fn angle(a: DVec3, b: DVec3) -> f64 {
-    a.cross(b).length().atan2(a.dot(b))
 }
 
 #[cfg(test)]
@@ -309,10 +305,10 @@ pub(crate) mod tests {
         // ε |P₀| / |P₁ − P₀|, which matters when ρ is far from 1 (a short first or last leg).
         let hodograph = s.hopf.hodograph();
         let at = |k: usize| s.placement.vector(hodograph[k]);
-        let tangent = angle(at(0), data.t0).max(angle(at(4), data.t1));
+        let tangent = angle_between(at(0), data.t0).max(angle_between(at(4), data.t1));
         let leg =
             |a: DVec3, b: DVec3| 4.0 * f64::EPSILON * a.length().max(b.length()) / (b - a).length();
-        let legs = angle(p[1] - p[0], data.t0).max(angle(p[5] - p[4], data.t1));
+        let legs = angle_between(p[1] - p[0], data.t0).max(angle_between(p[5] - p[4], data.t1));
         let representable = leg(p[0], p[1]).max(leg(p[4], p[5]));
         assert!(
             end <= 1e-12,
