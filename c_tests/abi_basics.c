@@ -12,17 +12,6 @@
 #include "nurbs_eval.h"
 #include "rmf_check.h"
 
-static double nan_value(void) { return strtod("nan", NULL); }
-static double inf_value(void) { return strtod("inf", NULL); }
-
-static RmfVec3 vec3(double x, double y, double z) {
-    RmfVec3 v;
-    v.x = x;
-    v.y = y;
-    v.z = z;
-    return v;
-}
-
 /* A rational cubic with an interior double knot: two Bézier segments on [0, 0.3], [0.3, 1.2]. */
 static const RmfVec3 CURVE_POLES[6] = {{0, 0, 0}, {1, 2, 0.5}, {2, -1, 1}, {3, 1, -0.5}, {4, 0, 2}, {5, 2, 1}};
 static const double CURVE_WEIGHTS[6] = {1, 0.5, 2, 1, 0.7, 1};

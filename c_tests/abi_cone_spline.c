@@ -16,9 +16,6 @@
 
 #define vec3(x, y, z) ((RmfVec3){(x), (y), (z)})
 
-static RmfVec3 scaled(RmfVec3 a, double s) { return vec3(a.x * s, a.y * s, a.z * s); }
-static RmfVec3 added(RmfVec3 a, RmfVec3 b) { return vec3(a.x + b.x, a.y + b.y, a.z + b.z); }
-static RmfVec3 unit(RmfVec3 a) { return scaled(a, 1.0 / ne_norm(a)); }
 
 /* The twisted cubic (t, t², t³). */
 static void cubic(double t, void *user, RmfVec3 *point, RmfVec3 *tangent) {
@@ -32,11 +29,11 @@ static RmfConeElement cubic_element(double t, double v) {
     RmfVec3 p, d1, d2 = vec3(0, 2, 6 * t), e, n;
     RmfConeElement el;
     cubic(t, NULL, &p, &d1);
-    e = unit(d1);
-    n = unit(added(d2, scaled(e, -ne_dot(d2, e)))); /* principal normal */
-    el.point = added(p, scaled(e, v));
+    e = ne_unit(d1);
+    n = ne_unit(ne_add(d2, ne_scale(e, -ne_dot(d2, e)))); /* principal normal */
+    el.point = ne_add(p, ne_scale(e, v));
     el.ruling = e;
-    el.side = v > 0 ? n : scaled(n, -1);
+    el.side = v > 0 ? n : ne_scale(n, -1);
     return el;
 }
 
@@ -148,7 +145,7 @@ static void test_hermite_bad_input(void) {
     els[1].point.y = nan("");
     CHECK_STATUS(rmf_cone_spline_hermite(els, 2, 0, 0, NULL, &out), RMF_ERROR_INVALID_INPUT, "elements[1].point");
     els[1] = cubic_element(0.6, 2.5);
-    els[0].side = added(els[0].side, scaled(els[0].ruling, 0.2));
+    els[0].side = ne_add(els[0].side, ne_scale(els[0].ruling, 0.2));
     CHECK_STATUS(rmf_cone_spline_hermite(els, 2, 0, 0, NULL, &out), RMF_ERROR_INVALID_INPUT, "elements[0].side");
     els[0] = cubic_element(0.4, 2.5);
     els[0].ruling = vec3(0, 0, 0);

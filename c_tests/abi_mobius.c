@@ -9,16 +9,6 @@
 #include "nurbs_eval.h"
 #include "rmf_check.h"
 
-static double nan_value(void) { return strtod("nan", NULL); }
-
-static RmfVec3 vec3(double x, double y, double z) {
-    RmfVec3 v;
-    v.x = x;
-    v.y = y;
-    v.z = z;
-    return v;
-}
-
 static RmfInversion sphere(double x, double y, double z, double r) {
     RmfInversion m;
     memset(&m, 0, sizeof m);

@@ -14,19 +14,6 @@
 
 #define PI 3.14159265358979323846
 
-static double nan_value(void) { return strtod("nan", NULL); }
-static double inf_value(void) { return strtod("inf", NULL); }
-
-static RmfVec3 vec3(double x, double y, double z) {
-    RmfVec3 v;
-    v.x = x;
-    v.y = y;
-    v.z = z;
-    return v;
-}
-
-static RmfVec3 scaled(RmfVec3 a, double s) { return vec3(a.x * s, a.y * s, a.z * s); }
-static RmfVec3 unit(RmfVec3 a) { return scaled(a, 1.0 / ne_norm(a)); }
 
 /* ---- analytic curves ---- */
 
@@ -156,9 +143,9 @@ static void test_hermite(void) {
             CHECK_STATUS(rmf_curve_nurbs(both[k], &view), RMF_OK, "");
             CHECK(view.degree == 3 && view.pole_count == 4, "one cubic Bézier segment");
             ne_curve_derivatives(&view, 0, d);
-            CHECK(ne_dist(d[0], p0) < 1e-15 && ne_dist(unit(d[1]), unit(t0)) < 1e-12, "starts at p0 along +t0");
+            CHECK(ne_dist(d[0], p0) < 1e-15 && ne_dist(ne_unit(d[1]), ne_unit(t0)) < 1e-12, "starts at p0 along +t0");
             ne_curve_derivatives(&view, 1, d);
-            CHECK(ne_dist(d[0], p1) < 1e-15 && ne_dist(unit(d[1]), unit(t1)) < 1e-12, "ends at p1 along +t1");
+            CHECK(ne_dist(d[0], p1) < 1e-15 && ne_dist(ne_unit(d[1]), ne_unit(t1)) < 1e-12, "ends at p1 along +t1");
             CHECK(speed_residual(both[k]) < 1e-12, "Pythagorean hodograph: |x'| is quadratic");
             for (length[k] = 0, i = 1; i < 4; i++) length[k] += ne_dist(view.poles[i], view.poles[i - 1]);
         }
@@ -216,7 +203,7 @@ static void test_spline_hermite(void) {
             RmfVec3 d[3];
             ne_curve_derivatives(&view, i, d);
             CHECK(ne_dist(d[0], points[i]) < 1e-14, "interpolates the points");
-            CHECK(ne_dist(unit(d[1]), unit(tangents[i])) < 1e-12, "and the tangents (G1)");
+            CHECK(ne_dist(ne_unit(d[1]), ne_unit(tangents[i])) < 1e-12, "and the tangents (G1)");
         }
     }
     rmf_curve_free(c);
@@ -365,7 +352,7 @@ static double rmf_defect(const RmfCurve *spline, const RmfFrames *frames) {
         RmfVec3 x[3], f[3], f3;
         ne_curve_derivatives(&x_view, t, x);
         ne_curve_derivatives(&f2_view, t, f);
-        f3 = ne_cross(unit(x[1]), f[0]);
+        f3 = ne_cross(ne_unit(x[1]), f[0]);
         bad += !(fabs(ne_norm(f[0]) - 1) < 1e-12 && fabs(ne_dot(f[0], x[1])) < 1e-12 * ne_norm(x[1]));
         e = fabs(ne_dot(f[1], f3)) / ne_norm(x[1]);
         if (e > worst) worst = e;
@@ -388,7 +375,7 @@ static double turn_rate_inside_segments(const RmfCurve *spline, const RmfFrames 
             rmf_frames_eval(frames, t - h, &ta, &a2, &a3);
             rmf_frames_eval(frames, t, &tc, &c2, &c3);
             rmf_frames_eval(frames, t + h, &tb, &b2, &b3);
-            e = fabs(ne_dot(scaled(ne_sub(b2, a2), 0.5 / h), c3)) / ne_norm(d);
+            e = fabs(ne_dot(ne_scale(ne_sub(b2, a2), 0.5 / h), c3)) / ne_norm(d);
             if (e > worst) worst = e;
         }
     return worst;
@@ -441,7 +428,7 @@ static void test_rational_rmf(void) {
         CHECK_STATUS(rmf_frames_kind(rmf, &kind), RMF_OK, "");
         CHECK(kind == RMF_FRAMES_RATIONAL, "rational frames");
         CHECK_STATUS(rmf_frames_eval(rmf, 0, &t, &f2, &f3), RMF_OK, "");
-        CHECK(ne_dist(f2, unit(ne_sub(normal, scaled(t, ne_dot(normal, t))))) < 1e-14,
+        CHECK(ne_dist(f2, ne_unit(ne_sub(normal, ne_scale(t, ne_dot(normal, t))))) < 1e-14,
               "f2 starts at the initial normal projected onto the normal plane");
         printf("turn about the tangent |f2'.f3|/|x'| on the helix spline (torsion 0.345): rational RMF %.2e, Frenet "
                "%.3f rad per unit length\n",
@@ -504,7 +491,7 @@ static void test_rational_rmf(void) {
             CHECK_STATUS(rmf_ph_rational_rmf(straight, vec3(0, 1, 1), &constant), RMF_OK, "");
             if (constant) {
                 CHECK_STATUS(rmf_frames_eval(constant, 0.7, &t, &f2, &f3), RMF_OK, "");
-                CHECK(ne_dist(f2, unit(vec3(0, 1, 1))) < 1e-15, "a straight spine carries its frame unchanged");
+                CHECK(ne_dist(f2, ne_unit(vec3(0, 1, 1))) < 1e-15, "a straight spine carries its frame unchanged");
             }
             rmf_frames_free(constant);
         }

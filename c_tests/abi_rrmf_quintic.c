@@ -16,15 +16,10 @@
 
 static const double PI = 3.14159265358979323846;
 
-static double nan_value(void) { return strtod("nan", NULL); }
-static double inf_value(void) { return strtod("inf", NULL); }
-
 /* A vector as a C99 compound literal. */
 #define vec3(x, y, z) ((RmfVec3){(x), (y), (z)})
 
-static RmfVec3 scaled(RmfVec3 v, double s) { return vec3(v.x * s, v.y * s, v.z * s); }
 
-static RmfVec3 unit(RmfVec3 v) { return scaled(v, 1.0 / ne_norm(v)); }
 
 static double angle(RmfVec3 a, RmfVec3 b) { return atan2(ne_norm(ne_cross(a, b)), ne_dot(a, b)); }
 
@@ -100,7 +95,7 @@ static void check_frames(const RmfCurve *curve, const RmfFrames *frames, int sam
             ne_curve_derivatives(&cv, t, x);
             ne_curve_derivatives(&f2v, t, f2);
             ne_curve_derivatives(&f3v, t, f3);
-            tangent = unit(x[1]);
+            tangent = ne_unit(x[1]);
             e->defect = fmax(e->defect, fabs(ne_dot(f2[1], f3[0])));
             e->defect_per_length = fmax(e->defect_per_length, fabs(ne_dot(f2[1], f3[0])) / ne_norm(x[1]));
             e->orthonormality = fmax(e->orthonormality, fabs(ne_dot(f2[0], f2[0]) - 1));
@@ -145,7 +140,7 @@ static SolutionErrors check_solution(RmfVec3 p0, RmfVec3 t0, RmfVec3 p1, RmfVec3
     }
     check_frames(curve, frames, 1000, &e);
     CHECK_STATUS(rmf_frames_eval(frames, 0.0, &tangent, &f2, &f3), RMF_OK, "");
-    projected = unit(ne_sub(normal, scaled(unit(t0), ne_dot(normal, unit(t0)))));
+    projected = ne_unit(ne_sub(normal, ne_scale(ne_unit(t0), ne_dot(normal, ne_unit(t0)))));
     e.start_normal = ne_dist(f2, projected);
     rmf_frames_free(frames);
     rmf_curve_free(curve);
@@ -401,7 +396,7 @@ static void test_bad_input(void) {
     SOLUTIONS(P0, T0, P1, vec3(0, nan, 1), 1.0, s, 2, RMF_ERROR_INVALID_INPUT, "t1");
     SOLUTIONS(P1, T0, P1, T1, 1.0, s, 2, RMF_ERROR_INVALID_INPUT, "p0 and p1 coincide");
     SOLUTIONS(P0, X, X, Y, 1.0, s, 2, RMF_ERROR_INVALID_INPUT, "t0 is parallel");
-    SOLUTIONS(P0, Y, X, scaled(X, -1), 1.0, s, 2, RMF_ERROR_INVALID_INPUT, "t1 is parallel");
+    SOLUTIONS(P0, Y, X, ne_scale(X, -1), 1.0, s, 2, RMF_ERROR_INVALID_INPUT, "t1 is parallel");
     SOLUTIONS(P0, Y, X, vec3(1, -1, 0), 1.0, s, 2, RMF_ERROR_INVALID_INPUT, "planar");
     SOLUTIONS(P0, T0, P1, T1, nan, s, 2, RMF_ERROR_INVALID_INPUT, "eta");
     SOLUTIONS(P0, T0, P1, T1, inf_value(), s, 2, RMF_ERROR_INVALID_INPUT, "eta");
@@ -481,7 +476,7 @@ static void test_bad_input(void) {
     SPLINE(points, tangents, 0, Y, 3, 16, RMF_ERROR_INVALID_INPUT, "count");
     SPLINE(points, tangents, 3, Y, 3, 0, RMF_ERROR_INVALID_INPUT, "eta_samples");
     SPLINE(points, tangents, 3, Y, 7, 16, RMF_ERROR_INVALID_INPUT, "measure");
-    SPLINE(points, tangents, 3, scaled(T0, 2), 3, 16, RMF_ERROR_INVALID_INPUT, "initial_normal");
+    SPLINE(points, tangents, 3, ne_scale(T0, 2), 3, 16, RMF_ERROR_INVALID_INPUT, "initial_normal");
     tangents[2] = vec3(nan, 0, 0);
     SPLINE(points, tangents, 3, Y, 3, 16, RMF_ERROR_INVALID_INPUT, "tangents[2]");
     tangents[2] = vec3(-1, 0, 1);

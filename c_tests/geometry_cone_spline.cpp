@@ -28,10 +28,6 @@ using rmf_checks::check_surface;
 using rmf_checks::print_report;
 using rmf_checks::SurfaceReport;
 
-static RmfVec3 v3(double x, double y, double z) { return RmfVec3{x, y, z}; }
-static RmfVec3 add(RmfVec3 a, RmfVec3 b) { return v3(a.x + b.x, a.y + b.y, a.z + b.z); }
-static RmfVec3 mul(RmfVec3 a, double s) { return v3(a.x * s, a.y * s, a.z * s); }
-static RmfVec3 unit(RmfVec3 a) { return mul(a, 1.0 / ne_norm(a)); }
 
 /* ---- analytic curves: point, first and second derivative ---- */
 
@@ -43,17 +39,17 @@ struct Curve {
 
 static Curve twisted_cubic() {
     return Curve{"twisted cubic", 0.2, 1.2, [](double t, RmfVec3 *p, RmfVec3 *d1, RmfVec3 *d2) {
-                     *p = v3(t, t * t, t * t * t);
-                     *d1 = v3(1, 2 * t, 3 * t * t);
-                     *d2 = v3(0, 2, 6 * t);
+                     *p = vec3(t, t * t, t * t * t);
+                     *d1 = vec3(1, 2 * t, 3 * t * t);
+                     *d2 = vec3(0, 2, 6 * t);
                  }};
 }
 
 static Curve helix() {
     return Curve{"helix r=1 c=0.5", 0.0, M_PI, [](double t, RmfVec3 *p, RmfVec3 *d1, RmfVec3 *d2) {
-                     *p = v3(cos(t), sin(t), 0.5 * t);
-                     *d1 = v3(-sin(t), cos(t), 0.5);
-                     *d2 = v3(-cos(t), -sin(t), 0);
+                     *p = vec3(cos(t), sin(t), 0.5 * t);
+                     *d1 = vec3(-sin(t), cos(t), 0.5);
+                     *d2 = vec3(-cos(t), -sin(t), 0);
                  }};
 }
 
@@ -66,8 +62,8 @@ extern "C" void curve_callback(double t, void *user, RmfVec3 *point, RmfVec3 *ta
 static RmfConeElement element(const Curve &c, double t, double v) {
     RmfVec3 p, d1, d2;
     c.jet(t, &p, &d1, &d2);
-    const RmfVec3 e = unit(d1);
-    return RmfConeElement{add(p, mul(e, v)), e, unit(add(d2, mul(e, -ne_dot(d2, e))))};
+    const RmfVec3 e = ne_unit(d1);
+    return RmfConeElement{ne_add(p, ne_scale(e, v)), e, ne_unit(ne_add(d2, ne_scale(e, -ne_dot(d2, e))))};
 }
 
 /* Distance from y to the sheet v > 0 of the tangent surface: the nearest ruling over t,
@@ -76,7 +72,7 @@ static double distance_to_tangent_surface(const Curve &c, RmfVec3 y) {
     auto d = [&](double t) {
         RmfVec3 p, d1, d2;
         c.jet(t, &p, &d1, &d2);
-        const RmfVec3 e = unit(d1), w = add(y, mul(p, -1));
+        const RmfVec3 e = ne_unit(d1), w = ne_add(y, ne_scale(p, -1));
         return ne_dot(w, e) > 0 ? ne_norm(ne_cross(w, e)) : 1e300;
     };
     const int n = 400;
@@ -128,9 +124,9 @@ static void patch_jet(const RmfBezierPatch &b, double s, double t, RmfVec3 &p, R
                 hv[k] += bi * dbj * c4[k];
             }
         }
-    p = v3(h[0] / h[3], h[1] / h[3], h[2] / h[3]);
-    du = mul(v3(hu[0] - hu[3] * p.x, hu[1] - hu[3] * p.y, hu[2] - hu[3] * p.z), 1 / h[3]);
-    dv = mul(v3(hv[0] - hv[3] * p.x, hv[1] - hv[3] * p.y, hv[2] - hv[3] * p.z), 1 / h[3]);
+    p = vec3(h[0] / h[3], h[1] / h[3], h[2] / h[3]);
+    du = ne_scale(vec3(hu[0] - hu[3] * p.x, hu[1] - hu[3] * p.y, hu[2] - hu[3] * p.z), 1 / h[3]);
+    dv = ne_scale(vec3(hv[0] - hv[3] * p.x, hv[1] - hv[3] * p.y, hv[2] - hv[3] * p.z), 1 / h[3]);
 }
 
 /* Largest angle between the normals of neighbouring patches along their shared rulings. */
@@ -146,7 +142,7 @@ static double normal_jump(RmfSurface *surface) {
             RmfVec3 p, q, lu, lv, ru, rv;
             patch_jet(left, k / 10.0, 1.0, p, lu, lv);
             patch_jet(right, k / 10.0, 0.0, q, ru, rv);
-            const RmfVec3 a = unit(ne_cross(lu, lv)), c = unit(ne_cross(ru, rv));
+            const RmfVec3 a = ne_unit(ne_cross(lu, lv)), c = ne_unit(ne_cross(ru, rv));
             CHECK(ne_dist(p, q) < 1e-12 * (1 + ne_norm(p)), "patches share the ruling");
             worst = std::max(worst, atan2(ne_norm(ne_cross(a, c)), ne_dot(a, c)));
         }
@@ -206,9 +202,9 @@ static void section_a_cases() {
     std::vector<RmfConeElement> cone, cylinder;
     for (int i = 0; i < 5; ++i) {
         const double s = 0.3 * i;
-        const RmfVec3 ruling = unit(v3(2 * cos(s), sin(s), 1)), tangent = v3(-2 * sin(s), cos(s), 0);
-        cone.push_back(RmfConeElement{mul(ruling, 2.0), ruling, unit(add(tangent, mul(ruling, -ne_dot(tangent, ruling))))});
-        cylinder.push_back(RmfConeElement{v3(2 * cos(s), sin(s), 0), v3(0, 0, 1), unit(tangent)});
+        const RmfVec3 ruling = ne_unit(vec3(2 * cos(s), sin(s), 1)), tangent = vec3(-2 * sin(s), cos(s), 0);
+        cone.push_back(RmfConeElement{ne_scale(ruling, 2.0), ruling, ne_unit(ne_add(tangent, ne_scale(ruling, -ne_dot(tangent, ruling))))});
+        cylinder.push_back(RmfConeElement{vec3(2 * cos(s), sin(s), 0), vec3(0, 0, 1), ne_unit(tangent)});
     }
     RmfConeSpline *c = hermite(cone), *y = hermite(cylinder);
     if (c) {
@@ -401,8 +397,8 @@ static void check_flat(const char *name, RmfConeSpline *flat, double t0, double 
     for (int i = 0; i < su; ++i)
         for (size_t j = 0; j + 1 < vs.size(); ++j) {
             const RmfVec3 a = grid[i][j], b = grid[i + 1][j], c = grid[i + 1][j + 1], d = grid[i][j + 1];
-            const double z1 = ne_cross(add(b, mul(a, -1)), add(c, mul(a, -1))).z;
-            const double z2 = ne_cross(add(c, mul(a, -1)), add(d, mul(a, -1))).z;
+            const double z1 = ne_cross(ne_add(b, ne_scale(a, -1)), ne_add(c, ne_scale(a, -1))).z;
+            const double z2 = ne_cross(ne_add(c, ne_scale(a, -1)), ne_add(d, ne_scale(a, -1))).z;
             (z1 > 0 ? positive : negative)++;
             (z2 > 0 ? positive : negative)++;
         }
@@ -483,7 +479,7 @@ static void section_e_offsets() {
                 const double u = -0.4 + 0.1 * i, v = v_end * j / 300.0;
                 ne_surface_derivatives(&va, u, v, p);
                 ne_surface_derivatives(&vb, u, v, q);
-                const RmfVec3 gap = add(q[0][0], mul(p[0][0], -1)), n = unit(ne_cross(p[1][0], p[0][1]));
+                const RmfVec3 gap = ne_add(q[0][0], ne_scale(p[0][0], -1)), n = ne_unit(ne_cross(p[1][0], p[0][1]));
                 worst_distance = std::max(worst_distance, fabs(ne_norm(gap) - fabs(d)));
                 worst_direction = std::max(worst_direction, ne_norm(ne_cross(gap, n)));
             }

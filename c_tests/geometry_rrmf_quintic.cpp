@@ -26,8 +26,6 @@ using rmf_checks::check_surface;
 using rmf_checks::print_report;
 using rmf_checks::SurfaceReport;
 
-static RmfVec3 vec3(double x, double y, double z) { return RmfVec3{x, y, z}; }
-
 /* A straight segment of the normal plane: x ↦ f2 offset 0.15, y ↦ f3 from −0.25 to 0.25. */
 static RmfCurve *line_profile() {
     const RmfVec3 poles[2] = {{0.15, -0.25, 0}, {0.15, 0.25, 0}};

@@ -4,6 +4,22 @@
 #include <math.h>
 #include <string.h>
 
+RmfVec3 ne_add(RmfVec3 a, RmfVec3 b) {
+    RmfVec3 r;
+    r.x = a.x + b.x;
+    r.y = a.y + b.y;
+    r.z = a.z + b.z;
+    return r;
+}
+
+RmfVec3 ne_scale(RmfVec3 a, double s) {
+    RmfVec3 r;
+    r.x = a.x * s;
+    r.y = a.y * s;
+    r.z = a.z * s;
+    return r;
+}
+
 RmfVec3 ne_sub(RmfVec3 a, RmfVec3 b) {
     RmfVec3 r;
     r.x = a.x - b.x;
@@ -23,6 +39,7 @@ RmfVec3 ne_cross(RmfVec3 a, RmfVec3 b) {
 double ne_dot(RmfVec3 a, RmfVec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 double ne_norm(RmfVec3 a) { return sqrt(ne_dot(a, a)); }
 double ne_dist(RmfVec3 a, RmfVec3 b) { return ne_norm(ne_sub(a, b)); }
+RmfVec3 ne_unit(RmfVec3 a) { return ne_scale(a, 1.0 / ne_norm(a)); }
 
 /* A2.1: the knot span index i with U[i] <= u < U[i+1] (n = pole count − 1). */
 static size_t find_span(size_t n, size_t p, double u, const double *U) {

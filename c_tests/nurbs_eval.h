@@ -31,7 +31,10 @@ double ne_parameter_line_cosine(RmfVec3 d[3][3]);
 RmfVec3 ne_bezier_point(const RmfBezierCurve *segment, double s);
 
 /* Small vector helpers. */
+RmfVec3 ne_add(RmfVec3 a, RmfVec3 b);
 RmfVec3 ne_sub(RmfVec3 a, RmfVec3 b);
+RmfVec3 ne_scale(RmfVec3 a, double s);
+RmfVec3 ne_unit(RmfVec3 a);
 RmfVec3 ne_cross(RmfVec3 a, RmfVec3 b);
 double ne_dot(RmfVec3 a, RmfVec3 b);
 double ne_norm(RmfVec3 a);

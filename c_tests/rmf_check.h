@@ -6,11 +6,24 @@
 #define RMF_TEST_CHECK_H
 
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "rmfsurf.h"
 
 static int rmf_check_failures = 0;
+
+/* Values the suites feed to the library as bad input. */
+static inline double nan_value(void) { return strtod("nan", NULL); }
+static inline double inf_value(void) { return strtod("inf", NULL); }
+
+static inline RmfVec3 vec3(double x, double y, double z) {
+    RmfVec3 v;
+    v.x = x;
+    v.y = y;
+    v.z = z;
+    return v;
+}
 
 #define CHECK(cond, what)                                                                     \
     do {                                                                                      \

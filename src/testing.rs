@@ -1,10 +1,14 @@
 //! Analytic curves with known rotation-minimizing frames, shared by the unit tests.
 
-use crate::bezier::{PiecewiseCurve, RationalBezierCurve};
-use crate::curve::ParametricCurve;
+use crate::bezier::PiecewiseCurve;
+use crate::curve::{uniform_parameters, ParametricCurve};
+use crate::frames::double_reflection::DoubleReflectionRmf;
 use crate::frames::frenet::frenet_frame;
+use crate::frames::metrics::angle_about_tangent;
 use crate::frames::rational::{RationalFrameSegment, RationalFrames};
 use crate::frames::Frame;
+use crate::mobius::hermite::planar_frame;
+use crate::ph_cubic::PhCubic;
 use crate::Result;
 use glam::DVec3;
 
@@ -15,18 +19,23 @@ pub struct Helix {
 }
 
 impl Helix {
-    pub fn derivatives(&self, t: f64) -> (DVec3, DVec3) {
+    /// Point and derivative at `t`.
+    pub fn at(&self, t: f64) -> (DVec3, DVec3) {
         let (r, h) = (self.radius, self.pitch);
         (
+            DVec3::new(r * t.cos(), r * t.sin(), h * t),
             DVec3::new(-r * t.sin(), r * t.cos(), h),
-            DVec3::new(-r * t.cos(), -r * t.sin(), 0.0),
         )
+    }
+
+    fn second_derivative(&self, t: f64) -> DVec3 {
+        DVec3::new(-self.radius * t.cos(), -self.radius * t.sin(), 0.0)
     }
 
     /// The exact RMF: the Frenet frame turned by Ω = −τ σ t (Mäurer & Jüttler, eq. (6);
     /// curvature and torsion are constant).
     pub fn exact_rmf(&self, t: f64) -> Frame {
-        let (d1, d2) = self.derivatives(t);
+        let (d1, d2) = (self.at(t).1, self.second_derivative(t));
         let speed_squared = self.radius * self.radius + self.pitch * self.pitch;
         let torsion = self.pitch / speed_squared;
         frenet_frame(d1, d2)
@@ -35,35 +44,80 @@ impl Helix {
     }
 }
 
+/// The unit helix (cos t, sin t, pitch·t): point and derivative.
+pub fn helix(t: f64, pitch: f64) -> (DVec3, DVec3) {
+    Helix { radius: 1.0, pitch }.at(t)
+}
+
 impl ParametricCurve for Helix {
     fn domain(&self) -> (f64, f64) {
         (0.0, 4.0 * std::f64::consts::PI)
     }
 
     fn point_derivative(&self, t: f64) -> Result<(DVec3, DVec3)> {
-        let p = DVec3::new(self.radius * t.cos(), self.radius * t.sin(), self.pitch * t);
-        Ok((p, self.derivatives(t).0))
+        Ok(self.at(t))
     }
 }
 
-/// A planar PH cubic in the xy-plane (control legs of lengths 1, 2, 4 turning by 30° each:
-/// equal angles and L₂² = L₁L₃, the planar case of (17)) with its rational RMF: f₂ = +z
-/// (a constant vector is rotation-minimizing along a planar curve), f₃ = t × z.
+/// A planar PH cubic, a Tschirnhausen cubic: legs of lengths 1, q, q² each turning by `turn`
+/// (equal angles and L₂² = L₁L₃, condition (17) of Mäurer & Jüttler with ψ = 0).
+pub fn tschirnhausen(turn: f64, q: f64) -> PhCubic {
+    let leg = |k: f64| DVec3::new((k * turn).cos(), (k * turn).sin(), 0.0) * q.powf(k);
+    let b1 = leg(0.0);
+    let b2 = b1 + leg(1.0);
+    PhCubic::from_control_points([DVec3::ZERO, b1, b2, b2 + leg(2.0)]).expect("a PH cubic")
+}
+
+/// A Tschirnhausen cubic in the xy-plane (legs 1, 2, 4 turning by 30°, moved off the origin)
+/// with its rational RMF: f₂ = +z (a constant vector is rotation-minimizing along a planar
+/// curve), f₃ = t × z.
 pub fn planar_ph_cubic() -> (PiecewiseCurve, RationalFrames) {
-    let dir = |deg: f64| DVec3::new(deg.to_radians().cos(), deg.to_radians().sin(), 0.0);
-    let b0 = DVec3::new(0.2, -0.4, 0.0);
-    let b1 = b0 + dir(0.0);
-    let b2 = b1 + 2.0 * dir(30.0);
-    let b3 = b2 + 4.0 * dir(60.0);
-    let curve = RationalBezierCurve::polynomial(&[b0, b1, b2, b3]).expect("valid cubic");
-    // Hodograph 3(Δb₁, Δb₂, Δb₃) and speed σ = 3(L₁, L₂ cos θ, L₃), eq. (18).
-    let legs = [b1 - b0, b2 - b1, b3 - b2];
-    let speed = [3.0, 6.0 * 30f64.to_radians().cos(), 12.0];
-    let f2 = speed.iter().map(|&s| DVec3::Z * s).collect();
-    let f3 = legs.iter().map(|&l| (3.0 * l).cross(DVec3::Z)).collect();
-    let frame = RationalFrameSegment::new(f2, f3, speed.to_vec()).expect("positive speed");
+    let shift = DVec3::new(0.2, -0.4, 0.0);
+    let cubic = PhCubic::from_control_points(
+        tschirnhausen(30f64.to_radians(), 2.0)
+            .control_points()
+            .map(|p| p + shift),
+    )
+    .expect("a PH cubic");
+    let raw = planar_frame(&cubic, DVec3::Z);
+    let frame = RationalFrameSegment::new(raw.f2, raw.f3, raw.denominator).expect("positive speed");
     (
-        PiecewiseCurve::new(vec![curve], vec![0.0, 1.0]).expect("one segment"),
+        PiecewiseCurve::new(vec![cubic.to_bezier()], vec![0.0, 1.0]).expect("one segment"),
         RationalFrames::new(vec![frame], vec![0.0, 1.0]).expect("one segment"),
     )
+}
+
+/// Planar G1 data through three points (a C-shaped arc in the xy-plane).
+pub fn planar_hermite_data() -> ([DVec3; 3], [DVec3; 3]) {
+    (
+        [
+            DVec3::ZERO,
+            DVec3::new(2.0, 1.0, 0.0),
+            DVec3::new(4.0, 0.0, 0.0),
+        ],
+        [
+            DVec3::new(1.0, 1.0, 0.0),
+            DVec3::X,
+            DVec3::new(1.0, -1.0, 0.0),
+        ],
+    )
+}
+
+/// The largest angle about the tangent between `frame(t)` and the double-reflection RMF of
+/// `curve` started at `normal`, over `samples` uniform parameters (the double-reflection
+/// frames are fourth-order accurate in the sample spacing: the reference of the tests).
+pub fn gap_to_double_reflection(
+    curve: &PiecewiseCurve,
+    normal: DVec3,
+    samples: usize,
+    frame: impl Fn(f64) -> Frame,
+) -> f64 {
+    let params = uniform_parameters(curve.domain(), samples);
+    let reference =
+        DoubleReflectionRmf::along(curve, params.clone(), normal).expect("a regular curve");
+    params
+        .iter()
+        .zip(reference.frames())
+        .map(|(&t, f)| angle_about_tangent(f, &frame(t)).abs())
+        .fold(0.0, f64::max)
 }

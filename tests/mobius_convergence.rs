@@ -156,6 +156,24 @@ fn fine_order(rows: &[FrameErrors], pick: impl Fn(&FrameErrors) -> f64) -> f64 {
     (pick(&rows[n - 3]) / pick(&rows[n - 1])).log2() / 2.0
 }
 
+/// Runs the study and asserts the fine orders of A_k and E_k.
+fn assert_orders(
+    name: &str,
+    curve: &dyn ParametricCurve,
+    reference: &dyn ReferenceRmf,
+    average: f64,
+    end: f64,
+) {
+    let rows = study(name, curve, reference);
+    let (a, e) = (
+        fine_order(&rows, |r| r.average),
+        fine_order(&rows, |r| r.end),
+    );
+    println!("observed orders (k = 16 → 64): A {a:.2}, E {e:.2}; the paper reports 3 and 4 for Example 2");
+    assert!(a > average, "A_k order {a}");
+    assert!(e > end, "E_k order {e}");
+}
+
 #[test]
 fn example_2_ph_cubic_against_its_exact_rmf() {
     let curve = example_2();
@@ -164,46 +182,29 @@ fn example_2_ph_cubic_against_its_exact_rmf() {
         curve: curve.clone(),
         rmf,
     };
-    let rows = study("Example 2, the PH cubic (21)", &curve, &reference);
-    let (a, e) = (
-        fine_order(&rows, |r| r.average),
-        fine_order(&rows, |r| r.end),
-    );
-    println!("observed orders (k = 16 → 64): A {a:.2}, E {e:.2}; the paper reports 3 and 4");
-    assert!(a > 2.8, "A_k order {a}");
-    assert!(e > 3.8, "E_k order {e}");
+    assert_orders("Example 2, the PH cubic (21)", &curve, &reference, 2.8, 3.8);
 }
 
 #[test]
 fn a_twisted_cubic_against_fine_double_reflection() {
     let reference = SampledReference::new(TwistedCubic);
-    let rows = study(
+    assert_orders(
         "twisted cubic (t, t² − t/2, t³/2), not PH",
         &TwistedCubic,
         &reference,
+        2.8,
+        3.8,
     );
-    let (a, e) = (
-        fine_order(&rows, |r| r.average),
-        fine_order(&rows, |r| r.end),
-    );
-    println!("observed orders (k = 16 → 64): A {a:.2}, E {e:.2}");
-    assert!(a > 2.8, "A_k order {a}");
-    assert!(e > 3.8, "E_k order {e}");
 }
 
 #[test]
 fn a_helix_whose_data_need_the_turning_map() {
     let reference = SampledReference::new(Helix);
-    let rows = study(
+    assert_orders(
         "helix (cos t, sin t, 0.4 t), S-shaped under the paper's map",
         &Helix,
         &reference,
+        2.8,
+        3.8,
     );
-    let (a, e) = (
-        fine_order(&rows, |r| r.average),
-        fine_order(&rows, |r| r.end),
-    );
-    println!("observed orders (k = 16 → 64): A {a:.2}, E {e:.2}");
-    assert!(a > 2.8, "A_k order {a}");
-    assert!(e > 2.8, "E_k order {e}");
 }

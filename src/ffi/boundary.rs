@@ -197,7 +197,12 @@ mod tests {
 
     #[test]
     fn panics_become_internal_errors_with_a_message() {
+        // The panics below are deliberate: keep the default hook from printing them.
+        let hook = std::panic::take_hook();
+        std::panic::set_hook(Box::new(|_| {}));
         let status = guard("rmf_test_entry", || panic!("deliberate test panic"));
+        guard_free(|| panic!("a panicking destructor is swallowed"));
+        std::panic::set_hook(hook);
         assert_eq!(status, RmfStatus::RmfErrorInternal);
         let message = last_error();
         assert!(
@@ -205,7 +210,6 @@ mod tests {
             "{message}"
         );
         assert!(message.contains("deliberate test panic"));
-        guard_free(|| panic!("a panicking destructor is swallowed"));
     }
 
     #[test]

@@ -37,7 +37,7 @@ pub struct RationalRmfCurve {
 
 /// The planar cubic's RMF over its speed σ: f₂ = n σ/σ, f₃ = (x' × n)/σ, with the hodograph
 /// x' = 3(h₀, h₁, h₂) in Bernstein form (Mäurer & Jüttler (18)).
-fn planar_frame(cubic: &PhCubic, normal: DVec3) -> RawFrame {
+pub fn planar_frame(cubic: &PhCubic, normal: DVec3) -> RawFrame {
     let speed = cubic.speed();
     RawFrame {
         f2: speed.iter().map(|&s| normal * s).collect(),
@@ -171,11 +171,10 @@ pub fn mobius_approximate(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::frames::double_reflection::DoubleReflectionRmf;
     use crate::frames::metrics::{angle_about_tangent, orthonormality_error, rmf_defect};
     use crate::frames::Frame;
     use crate::frames::{FrameField, FrameKind};
-    use crate::testing::Helix;
+    use crate::testing::{gap_to_double_reflection, planar_hermite_data, Helix};
     use std::sync::Arc;
 
     fn single() -> HermiteSegment {
@@ -265,14 +264,9 @@ mod tests {
                 "continuous at joints"
             );
         }
-        let params = uniform_parameters(result.curve.domain(), 20_001);
         let start = result.frames.frame(0.0).f2;
-        let reference = DoubleReflectionRmf::along(&result.curve, params.clone(), start).unwrap();
-        let drift = params
-            .iter()
-            .zip(reference.frames())
-            .map(|(&t, f)| (result.frames.frame(t).f2 - f.f2).length())
-            .fold(0.0, f64::max);
+        let drift =
+            gap_to_double_reflection(&result.curve, start, 20_001, |t| result.frames.frame(t));
         assert!(
             drift < 1e-9,
             "exact rational RMF vs double reflection along the Möbius spline: {drift}"
@@ -281,16 +275,7 @@ mod tests {
 
     #[test]
     fn planar_data_give_the_planar_ph_cubic_with_its_frame() {
-        let points = [
-            DVec3::ZERO,
-            DVec3::new(2.0, 1.0, 0.0),
-            DVec3::new(4.0, 0.0, 0.0),
-        ];
-        let tangents = [
-            DVec3::new(1.0, 1.0, 0.0),
-            DVec3::X,
-            DVec3::new(1.0, -1.0, 0.0),
-        ];
+        let (points, tangents) = planar_hermite_data();
         let result = mobius_hermite_points(&points, &tangents, DVec3::Z).unwrap();
         assert!(result
             .curve

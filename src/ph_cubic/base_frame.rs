@@ -250,7 +250,8 @@ mod tests {
     use super::*;
     use crate::frames::frenet::frenet_frame;
     use crate::frames::metrics::orthonormality_error;
-    use crate::ph_cubic::test_curves::{example_cubic, tschirnhausen};
+    use crate::ph_cubic::test_curves::example_cubic;
+    use crate::testing::tschirnhausen;
 
     #[test]
     fn frenet_base_frame_is_the_frenet_frame() {

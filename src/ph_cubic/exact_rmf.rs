@@ -182,7 +182,8 @@ impl SegmentTarget<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ph_cubic::test_curves::{gap_to_double_reflection, helix_spline};
+    use crate::ph_cubic::test_curves::helix_spline;
+    use crate::testing::gap_to_double_reflection;
 
     #[test]
     fn agrees_with_the_double_reflection_rmf() {

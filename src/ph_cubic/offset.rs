@@ -178,8 +178,9 @@ fn polynomial_sqrt(p: &[f64]) -> Option<Vec<f64>> {
 mod tests {
     use super::*;
     use crate::ph_cubic::rational_rmf::{ph_rational_rmf, RmfOptions};
-    use crate::ph_cubic::test_curves::{helix_spline, tschirnhausen};
+    use crate::ph_cubic::test_curves::helix_spline;
     use crate::sweep::sweep;
+    use crate::testing::tschirnhausen;
     use glam::DVec3;
 
     fn single(segment: RationalBezierCurve) -> PiecewiseCurve {

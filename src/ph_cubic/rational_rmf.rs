@@ -277,7 +277,8 @@ mod tests {
     use super::*;
     use crate::frames::metrics::{angle_about_tangent, orthonormality_error};
     use crate::ph_cubic::ph_spline_hermite;
-    use crate::ph_cubic::test_curves::{gap_to_double_reflection, helix, helix_spline};
+    use crate::ph_cubic::test_curves::helix_spline;
+    use crate::testing::{gap_to_double_reflection, helix};
 
     fn max_error(spline: &PiecewiseCurve, rmf: &RationalRmf, exact: &ExactRmf) -> f64 {
         let (lo, hi) = spline.domain();
@@ -449,16 +450,7 @@ mod tests {
 
     #[test]
     fn planar_splines_get_the_exact_rmf() {
-        let points = [
-            DVec3::ZERO,
-            DVec3::new(2.0, 1.0, 0.0),
-            DVec3::new(4.0, 0.0, 0.0),
-        ];
-        let tangents = [
-            DVec3::new(1.0, 1.0, 0.0),
-            DVec3::X,
-            DVec3::new(1.0, -1.0, 0.0),
-        ];
+        let (points, tangents) = crate::testing::planar_hermite_data();
         let spline = ph_spline_hermite(&points, &tangents).unwrap();
         let rmf = ph_rational_rmf(&spline, &RmfOptions::rmf(DVec3::Z)).unwrap();
         assert!(rmf.pieces.iter().all(|p| p.lambda.is_none()));

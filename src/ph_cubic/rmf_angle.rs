@@ -103,7 +103,8 @@ mod tests {
     use super::*;
     use crate::frames::frenet::frenet_frame;
     use crate::math::GaussLegendre;
-    use crate::ph_cubic::test_curves::{example_cubic, mirrored, tschirnhausen};
+    use crate::ph_cubic::test_curves::{example_cubic, mirrored};
+    use crate::testing::tschirnhausen;
 
     /// τσ from the derivatives of the Bézier curve, for comparison with −Ω'.
     fn torsion_times_speed(c: &PhCubic, v: f64) -> f64 {
