@@ -36,6 +36,20 @@ impl ParametricCurve for PiecewiseCurve {
     }
 }
 
+/// The most samples (or segments) a caller may ask a sampling algorithm for: 2²⁴, far
+/// beyond any CAD use and far below what would exhaust memory (each sample costs about a
+/// hundred bytes). Larger counts are refused, never attempted.
+pub const MAX_SAMPLES: usize = 1 << 24;
+
+/// Checks a caller's count of samples or segments named `name`: at least `min`, at most
+/// [`MAX_SAMPLES`].
+pub fn check_sample_count(count: usize, min: usize, name: &str) -> Result<()> {
+    if count < min || count > MAX_SAMPLES {
+        return invalid!("{name} = {count} must be between {min} and {MAX_SAMPLES}");
+    }
+    Ok(())
+}
+
 /// `count ≥ 2` parameters spaced uniformly over `domain`, both ends included exactly.
 pub fn uniform_parameters((lo, hi): (f64, f64), count: usize) -> Vec<f64> {
     let last = count.max(2) - 1;
@@ -48,4 +62,21 @@ pub fn uniform_parameters((lo, hi): (f64, f64), count: usize) -> Vec<f64> {
             }
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Fuzz finding: a sample count of 2³¹ or more was attempted (an allocation of 16 GiB
+    /// or a capacity-overflow panic) instead of refused.
+    #[test]
+    fn sample_counts_are_bounded() {
+        assert!(check_sample_count(2, 2, "n").is_ok());
+        assert!(check_sample_count(MAX_SAMPLES, 1, "n").is_ok());
+        for bad in [0, 1, MAX_SAMPLES + 1, 1 << 31, usize::MAX] {
+            let err = check_sample_count(bad, 2, "sample_count").unwrap_err();
+            assert!(err.message().starts_with(&format!("sample_count = {bad} ")), "{err}");
+        }
+    }
 }

@@ -9,6 +9,11 @@ use glam::DVec3;
 /// Relative distance below which consecutive points count as coincident.
 const COINCIDENT: f64 = 1e-14;
 
+/// Largest coordinate accepted in Hermite data. The constructions work on a unit chord and
+/// scale back, so any size up to here stays finite; beyond it the chord itself (and the
+/// control points built along it) can overflow to infinity.
+pub const MAX_COORDINATE: f64 = 1e300;
+
 /// One segment's G1 Hermite data: end points and unit end tangents.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct HermiteSegment {
@@ -23,9 +28,9 @@ impl HermiteSegment {
     /// normalized).
     pub fn new(p0: DVec3, t0: DVec3, p1: DVec3, t1: DVec3) -> Result<Self> {
         let segment = Self {
-            p0: check_point(p0, "p0")?,
+            p0: check_coordinates(p0, "p0")?,
             t0: check_unit_direction(t0, "t0")?,
-            p1: check_point(p1, "p1")?,
+            p1: check_coordinates(p1, "p1")?,
             t1: check_unit_direction(t1, "t1")?,
         };
         check_distinct(p0, p1, "p0", "p1")?;
@@ -36,6 +41,15 @@ impl HermiteSegment {
     pub fn chord_length(&self) -> f64 {
         (self.p1 - self.p0).length()
     }
+}
+
+/// A finite point whose coordinates are within ±[`MAX_COORDINATE`].
+fn check_coordinates(p: DVec3, name: &str) -> Result<DVec3> {
+    let p = check_point(p, name)?;
+    if p.abs().max_element() > MAX_COORDINATE {
+        return invalid!("{name} has a coordinate beyond ±{MAX_COORDINATE:e}");
+    }
+    Ok(p)
 }
 
 fn check_distinct(a: DVec3, b: DVec3, name_a: &str, name_b: &str) -> Result<()> {
@@ -65,7 +79,7 @@ pub fn hermite_sequence(points: &[DVec3], tangents: &[DVec3]) -> Result<Vec<Herm
     let mut checked = Vec::with_capacity(points.len());
     for (i, (&p, &t)) in points.iter().zip(tangents).enumerate() {
         checked.push((
-            check_point(p, &format!("points[{i}]"))?,
+            check_coordinates(p, &format!("points[{i}]"))?,
             check_unit_direction(t, &format!("tangents[{i}]"))?,
         ));
     }
@@ -92,6 +106,19 @@ pub fn hermite_sequence(points: &[DVec3], tangents: &[DVec3]) -> Result<Vec<Herm
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Fuzz finding: points near ±f64::MAX passed validation, and the PH cubic built on
+    /// them had infinite control points (a panic behind RMF_ERROR_INTERNAL).
+    #[test]
+    fn refuses_coordinates_whose_constructions_would_overflow() {
+        let huge = DVec3::new(-6.25e307, 1.0, 0.0);
+        let err = HermiteSegment::new(huge, DVec3::X, DVec3::ONE, DVec3::Y).unwrap_err();
+        assert!(err.message().starts_with("p0 has a coordinate beyond"), "{err}");
+        let err = hermite_sequence(&[DVec3::ZERO, huge], &[DVec3::X, DVec3::Y]).unwrap_err();
+        assert!(err.message().starts_with("points[1]"), "{err}");
+        let largest = DVec3::new(MAX_COORDINATE, -MAX_COORDINATE, 0.0);
+        assert!(HermiteSegment::new(largest, DVec3::X, -largest, DVec3::Y).is_ok());
+    }
 
     #[test]
     fn validates_and_normalizes() {

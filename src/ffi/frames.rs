@@ -5,7 +5,7 @@ use super::curve::RmfCurve;
 use super::status::RmfStatus;
 use super::types::RmfVec3;
 use crate::bezier::{check_in_domain, PiecewiseCurve};
-use crate::curve::uniform_parameters;
+use crate::curve::{check_sample_count, uniform_parameters};
 use crate::error::Result;
 use crate::frames::double_reflection::DoubleReflectionRmf;
 use crate::frames::rational::{FrameVector, RationalFrames};
@@ -98,7 +98,7 @@ pub unsafe extern "C" fn rmf_frames_eval(
 /// @param[out] out Receives the frames; free with rmf_frames_free. Untouched on failure.
 /// @return RMF_OK on success.
 /// @return RMF_ERROR_NULL_POINTER If curve or out is NULL.
-/// @return RMF_ERROR_INVALID_INPUT If sample_count < 2, initial_normal is not finite, zero or
+/// @return RMF_ERROR_INVALID_INPUT If sample_count < 2 or > 2^24, initial_normal is not finite, zero or
 ///         tangent to the curve, or the curve is singular at a sample.
 #[no_mangle]
 pub unsafe extern "C" fn rmf_double_reflection_frames(
@@ -110,11 +110,7 @@ pub unsafe extern "C" fn rmf_double_reflection_frames(
     guard("rmf_double_reflection_frames", || {
         let curve = reference(curve, "curve")?;
         let out = out_ptr(out, "out")?;
-        if sample_count < 2 {
-            return super::boundary::invalid_arg(format!(
-                "sample_count = {sample_count} must be at least 2"
-            ));
-        }
+        check_sample_count(sample_count, 2, "sample_count")?;
         let params = uniform_parameters(curve.curve.domain(), sample_count);
         let rmf = DoubleReflectionRmf::along(curve.curve.as_ref(), params, initial_normal.into())?;
         let field = FrameField::new(curve.curve.clone(), FrameKind::DoubleReflection(rmf))?;

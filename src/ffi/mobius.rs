@@ -264,7 +264,7 @@ pub unsafe extern "C" fn rmf_mobius_rrmf_hermite(
 /// @param[in] user Passed to callback unchanged; may be NULL.
 /// @param[in] t_min, t_max The callback's parameter interval (finite, t_min < t_max);
 ///            ignored for curve.
-/// @param[in] segments Number of segments, ≥ 1.
+/// @param[in] segments Number of segments, 1 … 2^24.
 /// @param[in] initial_normal As for rmf_mobius_rrmf_hermite.
 /// @param[out] curve_out Receives the approximating curve; free with rmf_curve_free.
 /// @param[out] frames_out Receives its frames; free with rmf_frames_free. Both are written

@@ -10,6 +10,10 @@ const FLAT_TOLERANCE: f64 = 1e-12;
 
 /// The Frenet frame, or `None` where the curve is singular or has zero curvature.
 pub fn frenet_frame(d1: DVec3, d2: DVec3) -> Option<Frame> {
+    // The frame does not depend on the lengths of x' and x'': scaled to a largest component
+    // of 1 first, tiny (subnormal) or huge derivatives neither underflow nor overflow in the
+    // products below.
+    let (d1, d2) = (unit_scaled(d1)?, unit_scaled(d2)?);
     let b = d1.cross(d2);
     let b_len = b.length();
     let scale = d1.length() * d2.length();
@@ -23,6 +27,12 @@ pub fn frenet_frame(d1: DVec3, d2: DVec3) -> Option<Frame> {
         f2: b.cross(t),
         f3: b,
     })
+}
+
+/// `v` divided by its largest absolute component; `None` for zero or non-finite vectors.
+fn unit_scaled(v: DVec3) -> Option<DVec3> {
+    let largest = v.abs().max_element();
+    (largest.is_finite() && largest > 0.0).then(|| v / largest)
 }
 
 #[cfg(test)]
@@ -39,5 +49,28 @@ mod tests {
         assert!((f.f2 - DVec3::new(-t.cos(), -t.sin(), 0.0)).length() < 1e-15);
         assert!((f.f3 - DVec3::new(t.sin(), -t.cos(), 1.0) / 2f64.sqrt()).length() < 1e-15);
         assert!(frenet_frame(DVec3::X, DVec3::X * 3.0).is_none());
+    }
+
+    /// Fuzz finding: the Frenet frames of a NURBS curve evaluated where x' was subnormal
+    /// came back as RMF_OK with a zero tangent and NaN normals.
+    #[test]
+    fn tiny_and_huge_derivatives_give_the_same_frame_or_none() {
+        let (d1, d2) = (DVec3::new(0.3, -1.0, 0.2), DVec3::new(1.0, 0.5, -0.7));
+        let reference = frenet_frame(d1, d2).unwrap();
+        for (s1, s2) in [
+            (1e-310, 1e-310),
+            (1e-312, 1.0),
+            (1e300, 1e-300),
+            (1e308, 1e308),
+        ] {
+            let f = frenet_frame(d1 * s1, d2 * s2).unwrap();
+            assert!(
+                (f.tangent - reference.tangent).length() < 1e-8,
+                "{s1} {s2}: {f:?}"
+            );
+            assert!((f.f2 - reference.f2).length() < 1e-8, "{s1} {s2}: {f:?}");
+        }
+        assert!(frenet_frame(DVec3::ZERO, d2).is_none());
+        assert!(frenet_frame(DVec3::new(f64::NAN, 0.0, 1.0), d2).is_none());
     }
 }

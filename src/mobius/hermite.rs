@@ -20,7 +20,7 @@
 use super::image::{global_parameter, map_raw_segment, RawFrame};
 use super::segment_map::{chosen_segment_map, SegmentMap};
 use crate::bezier::{PiecewiseCurve, RationalBezierCurve};
-use crate::curve::{uniform_parameters, ParametricCurve};
+use crate::curve::{check_sample_count, uniform_parameters, ParametricCurve};
 use crate::error::{invalid, Error, Result};
 use crate::frames::rational::{RationalFrameSegment, RationalFrames};
 use crate::hermite::{hermite_sequence, HermiteSegment};
@@ -152,9 +152,7 @@ pub fn mobius_approximate(
     segment_count: usize,
     initial_normal: DVec3,
 ) -> Result<RationalRmfCurve> {
-    if segment_count == 0 {
-        return invalid!("segments = 0: at least one segment is needed");
-    }
+    check_sample_count(segment_count, 1, "segments")?;
     let params = uniform_parameters(curve.domain(), segment_count + 1);
     let samples = params
         .iter()
@@ -293,10 +291,13 @@ mod tests {
             radius: 1.0,
             pitch: 0.4,
         };
-        assert!(mobius_approximate(&helix, 0, DVec3::Z)
-            .unwrap_err()
-            .message()
-            .contains("segments"));
+        // 0, and (a fuzz finding) counts that were attempted instead of refused.
+        for bad in [0, (1 << 31) + 1, usize::MAX] {
+            assert!(mobius_approximate(&helix, bad, DVec3::Z)
+                .unwrap_err()
+                .message()
+                .starts_with("segments = "));
+        }
         let e = mobius_hermite_points(&[DVec3::ZERO, DVec3::ZERO], &[DVec3::X, DVec3::Y], DVec3::Z)
             .unwrap_err();
         assert!(e.message().contains("coincide"));

@@ -172,12 +172,18 @@ fn sum_roots(a: f64, b: f64, c: f64) -> Vec<f64> {
 /// The cubic b₀, b₀ + L₁t₀, b₃ − L₃t₁, b₃, checked against the PH condition, or `None` when
 /// its speed nearly vanishes somewhere (see [`SINGULAR_SPEED`]).
 fn interpolant(data: &HermiteSegment, l1: f64, l3: f64) -> Result<Option<PhCubic>> {
-    let cubic = PhCubic::from_trusted_points([
+    let points = [
         data.p0,
         data.p0 + l1 * data.t0,
         data.p1 - l3 * data.t1,
         data.p1,
-    ]);
+    ];
+    if points.iter().any(|p| !p.is_finite()) {
+        return Err(Error::NoSolution(format!(
+            "the interpolant's inner control points overflow (legs {l1:.1e}, {l3:.1e})"
+        )));
+    }
+    let cubic = PhCubic::from_trusted_points(points);
     if cubic.speed_ratio() < SINGULAR_SPEED {
         return Ok(None);
     }
