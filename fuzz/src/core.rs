@@ -13,7 +13,7 @@ use std::ptr::{null, null_mut};
 
 use super::input::Input;
 use super::session::{
-    assert_frame, checked, is_poisoned, poisoned, poisoned_buffer, status_ok, Session,
+    assert_frame, checked, is_poisoned, poisoned, poisoned_buffer, status_ok, tracing, Session,
 };
 
 /// The operations of this module.
@@ -85,6 +85,11 @@ fn nurbs_curve(s: &mut Session) {
     let poles = s.input.vec3s(n);
     let weights = weights(&mut s.input, n);
     let knots = knots(&mut s.input, degree, n);
+    if tracing() {
+        eprintln!(
+            "nurbs curve: degree {degree}, poles {poles:?}, weights {weights:?}, knots {knots:?}"
+        );
+    }
     let mut out = poisoned();
     let status = unsafe {
         rmf_nurbs_curve_create(
@@ -357,6 +362,9 @@ fn double_reflection(s: &mut Session) {
     let c = s.curve();
     let normal = s.input.vec3();
     let samples = s.input.work();
+    if tracing() {
+        eprintln!("double reflection: normal {normal:?}, {samples} samples");
+    }
     let mut out = poisoned();
     let status = unsafe { rmf_double_reflection_frames(c, normal, samples, &mut out) };
     s.made("rmf_double_reflection_frames", status, None, Some(out));
@@ -394,6 +402,9 @@ fn frames_queries(s: &mut Session) {
     };
     for _ in 0..1 + s.input.below(4) {
         let t = parameter(&mut s.input, lo, hi);
+        if tracing() {
+            eprintln!("frames at t = {t:e} in [{lo:e}, {hi:e}]");
+        }
         eval_frames(f, t);
     }
     let mut kind = poisoned::<u32>();

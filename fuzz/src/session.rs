@@ -102,7 +102,7 @@ pub fn checked(function: &str, status: RmfStatus, untouched: &[bool]) -> bool {
 
 /// True when RMFSURF_FUZZ_TRACE is set: every call is then printed with its status (to
 /// read what a finding does).
-fn tracing() -> bool {
+pub fn tracing() -> bool {
     static TRACE: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
     *TRACE.get_or_init(|| std::env::var_os("RMFSURF_FUZZ_TRACE").is_some())
 }

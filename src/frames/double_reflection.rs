@@ -12,9 +12,16 @@ use crate::error::{invalid, Result};
 use crate::math::normal_plane_unit;
 use glam::DVec3;
 
+/// |t₁ − R₁t₀|² below which the second reflection is replaced by a projection: v₂ is then
+/// mostly round-off (after a cusp, R₁ reverses the tangent exactly onto t₁), and reflecting
+/// in it would turn f₂ out of the normal plane by ε/|v₂| (ε the round-off of v₂), while the
+/// projection onto the normal plane of t₁ differs from the reflection by O(|v₂|²).
+const NEARLY_EQUAL_TANGENTS: f64 = 1e-16;
+
 /// One double-reflection step from the frame `from` at `x0` to the point `x1` with unit
-/// tangent `t1`. A zero chord or an already matching tangent skips the corresponding
-/// reflection (both are then the identity on the frame).
+/// tangent `t1`. A zero chord skips the first reflection (it is then the identity on the
+/// frame); nearly equal tangents replace the second one by a projection (see
+/// [`NEARLY_EQUAL_TANGENTS`]).
 #[inline]
 pub fn reflect_step(x0: DVec3, from: &Frame, x1: DVec3, t1: DVec3) -> Frame {
     let v1 = x1 - x0;
@@ -30,10 +37,10 @@ pub fn reflect_step(x0: DVec3, from: &Frame, x1: DVec3, t1: DVec3) -> Frame {
     };
     let v2 = t1 - t_l;
     let c2 = v2.dot(v2);
-    let r1 = if c2 > f64::MIN_POSITIVE {
+    let r1 = if c2 > NEARLY_EQUAL_TANGENTS {
         r_l - (2.0 / c2 * v2.dot(r_l)) * v2
     } else {
-        r_l
+        (r_l - r_l.dot(t1) * t1).normalize()
     };
     Frame::from_tangent_normal(t1, r1)
 }
@@ -105,6 +112,26 @@ mod tests {
     use super::*;
     use crate::curve::uniform_parameters;
     use crate::testing::Helix;
+
+    /// Fuzz finding: across a cusp (a polyline going back on itself) the first reflection
+    /// reverses the tangent onto t₁ up to round-off, and reflecting in that round-off left
+    /// f₂ 5e-6 out of the normal plane.
+    #[test]
+    fn a_reversed_tangent_keeps_the_frame_orthonormal() {
+        for d in [
+            DVec3::new(1.0, 2.875e-5, 2.875e-5),
+            DVec3::new(0.3, -0.7, 0.2),
+            DVec3::new(1.0, 1e-9, 0.0),
+        ] {
+            let t0 = d.normalize();
+            let f2 = t0.any_orthonormal_vector();
+            let from = Frame::from_tangent_normal(t0, f2);
+            let x0 = DVec3::new(1.0000146875, 2.875e-5, 2.875e-5);
+            let step = reflect_step(x0, &from, x0 + 9.2 * t0, -t0);
+            assert!(step.f2.dot(step.tangent).abs() < 1e-15, "{d}: {step:?}");
+            assert!((step.f2.length() - 1.0).abs() < 1e-15, "{d}: {step:?}");
+        }
+    }
 
     const HELIX: Helix = Helix {
         radius: 2.0,

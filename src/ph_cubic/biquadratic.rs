@@ -166,34 +166,121 @@ fn fit_dyn(data: AngleHermite, rate: &dyn Fn(f64) -> f64) -> Result<BiquadraticF
         nonnegative_slope(data.s0, delta)?,
         nonnegative_slope(data.s1, delta)?,
     );
-    let member = |alpha: f64| {
-        let beta = [
-            1.0 - alpha,
-            (s1 * alpha + s0 * (1.0 - alpha)) / (2.0 * delta),
-            alpha,
-        ];
-        Biquadratic {
-            numerator: [
-                data.w0 * beta[0],
-                data.w0 * beta[1] + 0.5 * s0 * beta[0],
-                data.w1 * beta[2],
-            ],
-            denominator: beta,
-        }
-    };
+    let family = Family::new(data.w0, data.w1, s0, s1);
     let rule = quadrature_rule();
-    // α = 1/(1 + e⁻ˣ): a coarse scan over x finds the basin, Brent's method the minimum.
-    let alpha = |x: f64| 1.0 / (1.0 + (-x).exp());
-    let cost = |x: f64| objective_with(rule, &member(alpha(x)), rate);
+    // Ω' at the nodes of (41), once: it does not depend on the member.
+    let mut target = [0.0; QUADRATURE_NODES];
+    for (t, &v) in target.iter_mut().zip(rule.nodes()) {
+        *t = rate(v);
+    }
+    let x = gauss_newton(&family, rule, &target)
+        .unwrap_or_else(|| scan_and_refine(&family, rule, &target));
+    let w = family.member(logistic(x));
+    Ok(BiquadraticFit {
+        w,
+        objective: family.objective(rule, &target, logistic(x)),
+    })
+}
+
+/// α = 1/(1 + e⁻ˣ): every real x gives a member of the family, monotone without poles.
+fn logistic(x: f64) -> f64 {
+    1.0 / (1.0 + (-x).exp())
+}
+
+/// The members of (37) for increasing data with non-negative slopes, written in α ∈ (0, 1)
+/// (module notes): β and γ are affine in α, β = β⁰ + αβ¹, γ = γ⁰ + αγ¹.
+struct Family {
+    beta: [[f64; 3]; 2],
+    gamma: [[f64; 3]; 2],
+}
+
+impl Family {
+    fn new(w0: f64, w1: f64, s0: f64, s1: f64) -> Self {
+        let delta = w1 - w0;
+        let (b1_0, b1_1) = (s0 / (2.0 * delta), (s1 - s0) / (2.0 * delta));
+        Self {
+            beta: [[1.0, b1_0, 0.0], [-1.0, b1_1, 1.0]],
+            gamma: [
+                [w0, w0 * b1_0 + 0.5 * s0, 0.0],
+                [-w0, w0 * b1_1 - 0.5 * s0, w1],
+            ],
+        }
+    }
+
+    fn member(&self, alpha: f64) -> Biquadratic {
+        let at = |c: &[[f64; 3]; 2]| [0, 1, 2].map(|k| c[0][k] + alpha * c[1][k]);
+        Biquadratic {
+            numerator: at(&self.gamma),
+            denominator: at(&self.beta),
+        }
+    }
+
+    /// Î(α) of (41) against the target rates at the rule's nodes.
+    fn objective(&self, rule: &GaussLegendre, target: &[f64], alpha: f64) -> f64 {
+        let w = self.member(alpha);
+        rule.nodes()
+            .iter()
+            .zip(rule.weights())
+            .zip(target)
+            .map(|((&v, &weight), &r)| weight * (w.angle_rate(v) - r).powi(2))
+            .sum()
+    }
+
+    /// The residuals' weighted sums Σ wᵢ eᵢ Jᵢ and Σ wᵢ Jᵢ², eᵢ = R(vᵢ) − Ω'(vᵢ), Jᵢ = ∂R/∂α
+    /// for R = 2(g'b − gb')/(b² + g²), the angular velocity of (29).
+    fn gradient_terms(&self, rule: &GaussLegendre, target: &[f64], alpha: f64) -> (f64, f64) {
+        let w = self.member(alpha);
+        let d = Biquadratic {
+            numerator: self.gamma[1],
+            denominator: self.beta[1],
+        };
+        let (mut ej, mut jj) = (0.0, 0.0);
+        for ((&v, &weight), &r) in rule.nodes().iter().zip(rule.weights()).zip(target) {
+            let (g, b, dg, db) = w.parts(v);
+            let (g_a, b_a, dg_a, db_a) = d.parts(v);
+            let (n, den) = (dg * b - g * db, b * b + g * g);
+            let n_a = dg_a * b + dg * b_a - g_a * db - g * db_a;
+            let den_a = 2.0 * (b * b_a + g * g_a);
+            let rate = 2.0 * n / den;
+            let jacobian = 2.0 * (n_a * den - n * den_a) / (den * den);
+            ej += weight * (rate - r) * jacobian;
+            jj += weight * jacobian * jacobian;
+        }
+        (ej, jj)
+    }
+}
+
+/// Minimizes Î of (41) by Gauss–Newton steps in x (α = logistic(x)) from the symmetric
+/// member α = 1/2: the residuals are small (W follows Ω' closely), so a few steps reach the
+/// minimum. `None` if the steps do not settle (then [`scan_and_refine`] is used).
+fn gauss_newton(family: &Family, rule: &GaussLegendre, target: &[f64]) -> Option<f64> {
+    const STEPS: usize = 12;
+    const SETTLED: f64 = 1e-10;
+    let mut x = 0.0f64;
+    for _ in 0..STEPS {
+        let alpha = logistic(x);
+        let (ej, jj) = family.gradient_terms(rule, target, alpha);
+        // dα/dx = α(1 − α).
+        let dx = -ej / (jj * alpha * (1.0 - alpha));
+        if !dx.is_finite() {
+            return None;
+        }
+        x += dx.clamp(-2.0, 2.0);
+        if dx.abs() < SETTLED {
+            return (x.abs() < 30.0).then_some(x);
+        }
+    }
+    None
+}
+
+/// The robust search: a coarse scan over x finds the basin, Brent's method the minimum.
+fn scan_and_refine(family: &Family, rule: &GaussLegendre, target: &[f64]) -> f64 {
+    let cost = |x: f64| family.objective(rule, target, logistic(x));
     let (best, _) = (-15..=15)
         .map(|i| (i as f64, cost(i as f64)))
         .min_by(|a, b| a.1.total_cmp(&b.1))
         .expect("a non-empty scan");
-    let minimum = minimize_bracketed(cost, best - 1.0, best + 1.0, 1e-10);
-    Ok(BiquadraticFit {
-        w: member(alpha(minimum.x)),
-        objective: minimum.value,
-    })
+    minimize_bracketed(cost, best - 1.0, best + 1.0, 1e-10).x
 }
 
 /// A slope of monotone data on a piece, with round-off below zero taken as 0.

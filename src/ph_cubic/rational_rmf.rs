@@ -99,7 +99,11 @@ pub fn ph_rational_rmf(spline: &PiecewiseCurve, options: &RmfOptions) -> Result<
     let initial_normal = check_finite(options.initial_normal, "initial_normal")?;
     let rmf = ExactRmf::new(spline, initial_normal, 0.0)?;
     let total_twist = added_turn(spline, &rmf, options)?;
-    let target = ExactRmf::new(spline, initial_normal, total_twist / rmf.total_length())?;
+    let target = if total_twist == 0.0 {
+        rmf
+    } else {
+        ExactRmf::new(spline, initial_normal, total_twist / rmf.total_length())?
+    };
     let mut pieces = FramePieces::new(spline.breaks());
     let mut fits = Vec::new();
     for k in 0..target.segment_count() {

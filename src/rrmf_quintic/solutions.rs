@@ -459,7 +459,8 @@ pub(crate) mod tests {
             DVec3::splat(1e308),
             DVec3::Y,
         );
-        let e = rrmf_quintics(&huge.unwrap(), 1.0).unwrap_err();
-        assert!(e.message().contains("overflows"), "{e}");
+        // Refused when validated: beyond ±1e300 the chord itself may overflow.
+        let e = huge.unwrap_err();
+        assert!(e.message().contains("beyond"), "{e}");
     }
 }
