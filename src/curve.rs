@@ -76,7 +76,10 @@ mod tests {
         assert!(check_sample_count(MAX_SAMPLES, 1, "n").is_ok());
         for bad in [0, 1, MAX_SAMPLES + 1, 1 << 31, usize::MAX] {
             let err = check_sample_count(bad, 2, "sample_count").unwrap_err();
-            assert!(err.message().starts_with(&format!("sample_count = {bad} ")), "{err}");
+            assert!(
+                err.message().starts_with(&format!("sample_count = {bad} ")),
+                "{err}"
+            );
         }
     }
 }

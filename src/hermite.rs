@@ -113,7 +113,10 @@ mod tests {
     fn refuses_coordinates_whose_constructions_would_overflow() {
         let huge = DVec3::new(-6.25e307, 1.0, 0.0);
         let err = HermiteSegment::new(huge, DVec3::X, DVec3::ONE, DVec3::Y).unwrap_err();
-        assert!(err.message().starts_with("p0 has a coordinate beyond"), "{err}");
+        assert!(
+            err.message().starts_with("p0 has a coordinate beyond"),
+            "{err}"
+        );
         let err = hermite_sequence(&[DVec3::ZERO, huge], &[DVec3::X, DVec3::Y]).unwrap_err();
         assert!(err.message().starts_with("points[1]"), "{err}");
         let largest = DVec3::new(MAX_COORDINATE, -MAX_COORDINATE, 0.0);

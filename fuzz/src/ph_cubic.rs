@@ -8,7 +8,7 @@ use std::ptr::null_mut;
 
 use super::callback::CallbackCurve;
 use super::core::{or_null, parameter};
-use super::session::{checked, is_poisoned, poisoned, poisoned_buffer, Session};
+use super::session::{checked, is_poisoned, poisoned, poisoned_buffer, tracing, Session};
 
 /// The operations of this module.
 pub const OPS: &[fn(&mut Session)] = &[
@@ -36,6 +36,9 @@ fn cubic_hermite(s: &mut Session) {
         s.input.vec3(),
         s.input.vec3(),
     );
+    if tracing() {
+        eprintln!("PH cubic through {p0:?} {t0:?} {p1:?} {t1:?}");
+    }
     let (mut a, mut b) = (poisoned(), poisoned());
     let want_other = s.input.flag();
     let other: *mut *mut _ = if want_other { &mut b } else { null_mut() };
@@ -129,6 +132,9 @@ fn exact_rmf(s: &mut Session) {
     let (spline, normal) = (s.curve(), s.input.vec3());
     let n = s.input.len(6);
     let t: Vec<f64> = (0..n).map(|_| parameter(&mut s.input, 0.0, 1.0)).collect();
+    if tracing() {
+        eprintln!("exact RMF from {normal:?} at {t:?}");
+    }
     let mut f2 = poisoned_buffer::<RmfVec3>(n);
     let mut f3 = poisoned_buffer::<RmfVec3>(n);
     let f3_ptr = if s.input.flag() {

@@ -28,6 +28,16 @@ pub fn check_point(p: DVec3, name: &str) -> Result<DVec3> {
     check_finite(p, name)
 }
 
+/// |v| without overflow or underflow in the squares: for components beyond 1e154 (or
+/// below 1e-154) `v.length()` overflows to ∞ (or underflows to 0).
+pub fn robust_length(v: DVec3) -> f64 {
+    let largest = v.abs().max_element();
+    if largest == 0.0 || !largest.is_finite() {
+        return largest;
+    }
+    largest * (v / largest).length()
+}
+
 /// `v / |v|`, or `None` for zero or non-finite vectors.
 fn robust_normalize(v: DVec3) -> Option<DVec3> {
     if !v.is_finite() {

@@ -13,7 +13,7 @@
 use crate::bezier::bernstein::{self, product};
 use crate::bezier::RationalBezierCurve;
 use crate::error::{invalid, Result};
-use crate::math::angle_between;
+use crate::math::{angle_between, robust_length};
 use glam::DVec3;
 
 /// Largest relative hodograph residual (see [`PhCubic::hodograph_residual`]) accepted for a
@@ -205,7 +205,11 @@ impl PhCubic {
     /// curvature ratios do not change, and the products that compute them neither underflow
     /// nor overflow for curves of any size.
     pub fn normalized(&self) -> Self {
-        let longest = self.leg_lengths().iter().fold(0.0f64, |m, &l| m.max(l));
+        // Robustly: legs beyond 1e154 would overflow in |h|² (a fuzz finding: NaN frames).
+        let longest = self
+            .legs()
+            .iter()
+            .fold(0.0f64, |m, &h| m.max(robust_length(h)));
         let origin = self.points[0];
         Self {
             points: self.points.map(|p| (p - origin) / longest),

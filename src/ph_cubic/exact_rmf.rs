@@ -125,8 +125,13 @@ impl Segment {
     }
 
     fn frame(&self, v: f64, twist_rate: f64) -> Frame {
-        self.base
-            .rmf_frame(v, self.start_angle + twist_rate * self.arc_within(v))
+        // Without twist the arc length is not needed (it may overflow for a huge cubic).
+        let twist = if twist_rate == 0.0 {
+            0.0
+        } else {
+            twist_rate * self.arc_within(v)
+        };
+        self.base.rmf_frame(v, self.start_angle + twist)
     }
 }
 
@@ -184,6 +189,30 @@ mod tests {
     use super::*;
     use crate::ph_cubic::test_curves::helix_spline;
     use crate::testing::gap_to_double_reflection;
+
+    /// Fuzz finding: the exact RMF of a cubic with a chord of 4e153 came back as NaN frames
+    /// with RMF_OK.
+    #[test]
+    fn huge_cubics_have_finite_unit_frames() {
+        let data = crate::hermite::HermiteSegment::new(
+            DVec3::X,
+            DVec3::new(0.99999609375, 1.96875e-6, -9.375e-8),
+            DVec3::new(-4.0625e153, 0.0, 0.0),
+            DVec3::splat(-2.03125),
+        )
+        .unwrap();
+        let cubic = crate::ph_cubic::hermite::ph_cubic_hermite(&data)
+            .unwrap()
+            .shape_matching;
+        let spline = PiecewiseCurve::new(vec![cubic.to_bezier()], vec![0.0, 1.0]).unwrap();
+        let normal = DVec3::new(1.89e307, 1.27e307, 1.27e307);
+        let exact = ExactRmf::new(&spline, normal, 0.0).unwrap();
+        for t in [0.0, 0.5, 1.0] {
+            let f = exact.frame(t);
+            assert!((f.f2.length() - 1.0).abs() < 1e-12, "t = {t}: {f:?}");
+            assert!(f.f2.dot(f.tangent).abs() < 1e-12, "t = {t}: {f:?}");
+        }
+    }
 
     #[test]
     fn agrees_with_the_double_reflection_rmf() {
