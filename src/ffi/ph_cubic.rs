@@ -282,8 +282,9 @@ pub unsafe extern "C" fn rmf_ph_frenet_frames(
 /// The exact rotation-minimizing frame of a PH cubic spline at given parameters, in closed
 /// form: the Frenet frame turned by the angle (30)–(31) of Mäurer & Jüttler (no quadrature),
 /// the constants chained across the joints from initial_normal. On (nearly) straight
-/// segments (sin θ ≤ 1e-6), where the Frenet frame degenerates, the frame carried by the
-/// smallest rotation of the tangent is used; it differs from the RMF by less than 1e-11 rad.
+/// segments (sin θ ≤ 1e-3), where the Frenet frame degenerates, the frame carried by the
+/// smallest rotation of the tangent is used; it differs from the RMF by about θ³ (below 1e-8
+/// rad).
 ///
 /// @param[in] ph_spline A PH cubic spline, G1.
 /// @param[in] initial_normal As for rmf_ph_rational_rmf.

@@ -1,0 +1,228 @@
+//! Property tests (proptest): random valid data must give results with the properties the
+//! papers promise, random invalid data a status code — never a panic, never a write.
+//!
+//! Valid data are G1 Hermite data sampled from random smooth space curves of random size,
+//! and random twisted cubics for cone splines. Invalid data take valid data and break one
+//! thing: a NaN or infinite coordinate, a zero tangent, a repeated point, a count of 1.
+
+use glam::DVec3;
+use proptest::prelude::*;
+use rmfsurf::bezier::{NurbsCurve, PiecewiseCurve};
+use rmfsurf::ffi::cone_spline::*;
+use rmfsurf::ffi::curve::{rmf_curve_eval, rmf_curve_free};
+use rmfsurf::ffi::mobius::rmf_mobius_rrmf_hermite;
+use rmfsurf::ffi::ph_cubic::rmf_ph_spline_hermite;
+use rmfsurf::ffi::rrmf_quintic::rmf_rrmf_spline_hermite;
+use rmfsurf::ffi::{RmfStatus, RmfVec3};
+use rmfsurf::frames::metrics::{angle_about_tangent, orthonormality_error};
+use rmfsurf::ph_cubic::exact_rmf::ExactRmf;
+use rmfsurf::ph_cubic::ph_spline_hermite;
+use rmfsurf::ph_cubic::rational_rmf::{ph_rational_rmf, RmfOptions};
+use std::ffi::c_void;
+use std::ptr::null_mut;
+
+/// G1 Hermite data sampled from a random smooth curve (t, a₁ sin(b₁t + c₁), a₂ sin(b₂t + c₂))
+/// scaled by s: 2 … 8 samples, parameter steps 0.02 … 0.2 (data a spline would sample).
+fn hermite_data() -> impl Strategy<Value = (Vec<DVec3>, Vec<DVec3>)> {
+    let wave = (0.1f64..1.5, 0.2f64..1.5, 0.0f64..6.3);
+    (2usize..9, 0.02f64..0.2, wave.clone(), wave, 1e-3f64..1e3).prop_map(
+        |(n, h, (a1, b1, c1), (a2, b2, c2), scale)| {
+            (0..n)
+                .map(|i| {
+                    let t = h * i as f64;
+                    let point = DVec3::new(t, a1 * (b1 * t + c1).sin(), a2 * (b2 * t + c2).sin());
+                    let tangent = DVec3::new(
+                        1.0,
+                        a1 * b1 * (b1 * t + c1).cos(),
+                        a2 * b2 * (b2 * t + c2).cos(),
+                    );
+                    (point * scale, tangent)
+                })
+                .unzip()
+        },
+    )
+}
+
+fn vec3(v: DVec3) -> RmfVec3 {
+    RmfVec3 {
+        x: v.x,
+        y: v.y,
+        z: v.z,
+    }
+}
+
+/// A rational B-spline evaluated by de Boor's algorithm in homogeneous coordinates — the
+/// test's own evaluator, independent of the library's Bézier segments.
+fn de_boor(nurbs: &NurbsCurve, t: f64) -> DVec3 {
+    let p = nurbs.degree;
+    let k = &nurbs.knots;
+    let n = nurbs.poles.len();
+    let span = (p..n).rev().find(|&i| k[i] <= t).unwrap_or(p);
+    let mut d: Vec<(DVec3, f64)> = (0..=p)
+        .map(|j| {
+            let i = span - p + j;
+            (nurbs.poles[i] * nurbs.weights[i], nurbs.weights[i])
+        })
+        .collect();
+    for r in 1..=p {
+        for j in (r..=p).rev() {
+            let i = span - p + j;
+            let alpha = (t - k[i]) / (k[i + p + 1 - r] - k[i]);
+            d[j] = (
+                d[j - 1].0 * (1.0 - alpha) + d[j].0 * alpha,
+                d[j - 1].1 * (1.0 - alpha) + d[j].1 * alpha,
+            );
+        }
+    }
+    d[p].0 / d[p].1
+}
+
+/// Parameters spread over a spline's domain: every joint and points between.
+fn parameters(spline: &PiecewiseCurve) -> Vec<f64> {
+    let (lo, hi) = spline.domain();
+    (0..=40).map(|i| lo + (hi - lo) * i as f64 / 40.0).collect()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// PH cubic splines interpolate, their rational RMF is orthonormal and close to the
+    /// exact RMF, and their NURBS view evaluates (by de Boor) as the Bézier segments do.
+    #[test]
+    fn ph_splines_interpolate_with_orthonormal_frames_near_the_rmf(
+        (points, tangents) in hermite_data()
+    ) {
+        // Near an inflection of the planar projection no PH cubic may exist (they have
+        // none): RMF_ERROR_NO_SOLUTION is the documented answer, and such data are skipped.
+        let spline = match ph_spline_hermite(&points, &tangents) {
+            Err(rmfsurf::Error::NoSolution(_)) => return Ok(()),
+            result => result.unwrap(),
+        };
+        for (i, (p, t)) in points.iter().zip(&tangents).enumerate() {
+            let jet = spline.eval_jet(i as f64);
+            prop_assert!((jet.point - *p).length() < 1e-12 * (1.0 + p.length()));
+            prop_assert!(jet.d1.normalize().dot(*t) > 1.0 - 1e-12);
+        }
+        let rmf = ph_rational_rmf(&spline, &RmfOptions::rmf(DVec3::Z)).unwrap();
+        let exact = ExactRmf::new(&spline, DVec3::Z, 0.0).unwrap();
+        for t in parameters(&spline) {
+            let frame = rmf.frames.frame(t);
+            // Round-off grows like ε/sin²θ on nearly straight segments (bend θ), whose base
+            // frame is the Frenet frame (19) (README, numerical notes): below 1e-9.
+            prop_assert!(orthonormality_error(&frame) < 1e-9, "t = {}: {:e}", t, orthonormality_error(&frame));
+            // Tangents turning up to 0.9 rad per segment: the rational RMF follows the exact
+            // one to within 1e-4 rad (1e-6 and below for fine splines, see the README).
+            let angle = angle_about_tangent(&exact.frame(t), &frame).abs();
+            prop_assert!(angle < 1e-4, "t = {}: {}", t, angle);
+        }
+        let nurbs = NurbsCurve::from_piecewise(&spline).unwrap();
+        for t in parameters(&spline) {
+            let (a, b) = (spline.eval(t), de_boor(&nurbs, t));
+            prop_assert!((a - b).length() < 1e-12 * (1.0 + a.length()), "t = {}", t);
+        }
+    }
+
+    /// Cone spline fits of the tangent surface of (t, a t², b t³) develop isometrically:
+    /// boundary arc splines keep their lengths in the plane.
+    #[test]
+    fn developments_are_isometric(a in 0.5f64..2.0, b in 0.5f64..2.0, tolerance in 1e-4f64..1e-2) {
+        let coefficients = [a, b];
+        let mut spline = null_mut();
+        let mut max_error = 0.0;
+        let status = unsafe {
+            rmf_cone_spline_approximate(
+                std::ptr::null(), Some(cubic), coefficients.as_ptr() as *mut c_void,
+                0.2, 1.2, 0.5, 4.0, tolerance, RMF_CONE_RULE_MIN_VERTEX_DISTANCE, 10_000,
+                &mut spline, &mut max_error,
+            )
+        };
+        prop_assert_eq!(status, RmfStatus::RmfOk);
+        prop_assert!(max_error <= tolerance);
+        let mut flat = null_mut();
+        prop_assert_eq!(unsafe { rmf_cone_spline_develop(spline, &mut flat) }, RmfStatus::RmfOk);
+        for t in [-0.2, 0.0, 0.3] {
+            let (l0, l1) = (boundary_length(spline, t), boundary_length(flat, t));
+            prop_assert!((l0 - l1).abs() < 1e-6 * l0, "t = {}: {} vs {}", t, l0, l1);
+        }
+        unsafe {
+            rmf_cone_spline_free(flat);
+            rmf_cone_spline_free(spline);
+        }
+    }
+
+    /// Invalid Hermite data — one coordinate NaN or infinite, a zero tangent, a repeated
+    /// point — give RMF_ERROR_INVALID_INPUT from every Hermite entry point, with nothing
+    /// written.
+    #[test]
+    fn invalid_hermite_data_give_a_status_never_a_panic(
+        (points, tangents) in hermite_data(),
+        index in 0usize..8,
+        kind in 0usize..4,
+    ) {
+        let (mut points, mut tangents): (Vec<RmfVec3>, Vec<RmfVec3>) =
+            (points.into_iter().map(vec3).collect(), tangents.into_iter().map(vec3).collect());
+        let (n, i) = (points.len(), index % points.len());
+        match kind {
+            0 => points[i].y = f64::NAN,
+            1 => tangents[i].z = f64::NEG_INFINITY,
+            2 => tangents[i] = RmfVec3::default(),
+            // A point repeated by its successor (or predecessor, for the last one).
+            _ => points[if i + 1 < n { i + 1 } else { i - 1 }] = points[i],
+        }
+        let (p, t) = (points.as_ptr(), tangents.as_ptr());
+        let up = vec3(DVec3::Z);
+        let sentinel = 0x5EED0 as *mut _;
+        let (mut c, mut f) = (sentinel, sentinel as *mut _);
+        let s = unsafe { rmf_ph_spline_hermite(p, t, n, &mut c) };
+        prop_assert_eq!(s, RmfStatus::RmfErrorInvalidInput);
+        prop_assert_eq!(c, sentinel);
+        let s = unsafe { rmf_mobius_rrmf_hermite(p, t, n, up, &mut c, &mut f) };
+        prop_assert_eq!(s, RmfStatus::RmfErrorInvalidInput);
+        prop_assert!(c == sentinel && f == sentinel as *mut _);
+        let s = unsafe { rmf_rrmf_spline_hermite(p, t, n, up, 3, 8, &mut c, &mut f) };
+        prop_assert_eq!(s, RmfStatus::RmfErrorInvalidInput);
+        prop_assert!(c == sentinel && f == sentinel as *mut _);
+    }
+
+    /// Random bytes run through every capability's fuzz program (the harness of fuzz/,
+    /// which checks the C API's contract after every call) without a violation.
+    #[test]
+    fn random_programs_keep_the_contract(bytes in prop::collection::vec(any::<u8>(), 0..256)) {
+        for (_, target) in harness::TARGETS {
+            target(&bytes);
+        }
+    }
+}
+
+#[path = "../fuzz/src/lib.rs"]
+#[allow(dead_code)]
+mod harness;
+
+/// The curve (t, a t², b t³) for a C callback, `user` pointing to [a, b].
+unsafe extern "C" fn cubic(t: f64, user: *mut c_void, point: *mut RmfVec3, tangent: *mut RmfVec3) {
+    let [a, b] = *(user as *const [f64; 2]);
+    *point = vec3(DVec3::new(t, a * t * t, b * t * t * t));
+    *tangent = vec3(DVec3::new(1.0, 2.0 * a * t, 3.0 * b * t * t));
+}
+
+/// The length of the boundary arc spline at distance `t` along the rulings, by a fine
+/// polyline on its curve handle.
+fn boundary_length(spline: *const RmfConeSpline, t: f64) -> f64 {
+    let mut curve = null_mut();
+    assert_eq!(
+        unsafe { rmf_cone_spline_boundary(spline, t, &mut curve) },
+        RmfStatus::RmfOk
+    );
+    let (mut lo, mut hi) = (0.0, 0.0);
+    unsafe { rmfsurf::ffi::curve::rmf_curve_domain(curve, &mut lo, &mut hi) };
+    let n = 20_000;
+    let point = |i: usize| {
+        let mut p = RmfVec3::default();
+        let s = lo + (hi - lo) * i as f64 / n as f64;
+        unsafe { rmf_curve_eval(curve, s.min(hi), &mut p, std::ptr::null_mut()) };
+        DVec3::new(p.x, p.y, p.z)
+    };
+    let length = (0..n).map(|i| (point(i + 1) - point(i)).length()).sum();
+    unsafe { rmf_curve_free(curve) };
+    length
+}
