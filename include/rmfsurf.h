@@ -1084,7 +1084,7 @@ RmfStatus rmf_frames_eval(const struct RmfFrames *frames,
  * @param[out] out Receives the frames; free with rmf_frames_free. Untouched on failure.
  * @return RMF_OK on success.
  * @return RMF_ERROR_NULL_POINTER If curve or out is NULL.
- * @return RMF_ERROR_INVALID_INPUT If sample_count < 2, initial_normal is not finite, zero or
+ * @return RMF_ERROR_INVALID_INPUT If sample_count < 2 or > 2^24, initial_normal is not finite, zero or
  *         tangent to the curve, or the curve is singular at a sample.
  */
 RmfStatus rmf_double_reflection_frames(const struct RmfCurve *curve,
@@ -1248,7 +1248,7 @@ RmfStatus rmf_mobius_rrmf_hermite(const struct RmfVec3 *points,
  * @param[in] user Passed to callback unchanged; may be NULL.
  * @param[in] t_min, t_max The callback's parameter interval (finite, t_min < t_max);
  *            ignored for curve.
- * @param[in] segments Number of segments, ≥ 1.
+ * @param[in] segments Number of segments, 1 … 2^24.
  * @param[in] initial_normal As for rmf_mobius_rrmf_hermite.
  * @param[out] curve_out Receives the approximating curve; free with rmf_curve_free.
  * @param[out] frames_out Receives its frames; free with rmf_frames_free. Both are written
@@ -1429,8 +1429,9 @@ RmfStatus rmf_ph_frenet_frames(const struct RmfCurve *ph_spline, struct RmfFrame
  * The exact rotation-minimizing frame of a PH cubic spline at given parameters, in closed
  * form: the Frenet frame turned by the angle (30)–(31) of Mäurer & Jüttler (no quadrature),
  * the constants chained across the joints from initial_normal. On (nearly) straight
- * segments (sin θ ≤ 1e-6), where the Frenet frame degenerates, the frame carried by the
- * smallest rotation of the tangent is used; it differs from the RMF by less than 1e-11 rad.
+ * segments (sin θ ≤ 1e-3), where the Frenet frame degenerates, the frame carried by the
+ * smallest rotation of the tangent is used; it differs from the RMF by about θ³ (below 1e-8
+ * rad).
  *
  * @param[in] ph_spline A PH cubic spline, G1.
  * @param[in] initial_normal As for rmf_ph_rational_rmf.
@@ -1523,14 +1524,14 @@ RmfStatus rmf_sweep_gaussian_curvature(const struct RmfCurve *spine,
  * Size query: with points = NULL and capacity = 0 only count is written.
  *
  * @param[in] spine, frames, profile As for rmf_sweep_surface.
- * @param[in] v_samples Number of spine parameters, ≥ 2.
+ * @param[in] v_samples Number of spine parameters, 2 … 2^24.
  * @param[out] points Buffer for capacity points.
  * @param[in] capacity Capacity of points.
  * @param[out] count Receives the number of points.
  * @return RMF_OK on success or for a size query.
  * @return RMF_ERROR_NULL_POINTER If spine, frames, profile or count is NULL, or points is
  *         NULL with capacity > 0.
- * @return RMF_ERROR_INVALID_INPUT If v_samples < 2 or the frames are not rational frames of
+ * @return RMF_ERROR_INVALID_INPUT If v_samples < 2 or > 2^24, or the frames are not rational frames of
  *         the spine.
  * @return RMF_ERROR_BUFFER_TOO_SMALL If 0 < capacity < count; then only count is written.
  */

@@ -203,7 +203,7 @@ fn gaussian_curvature(s: &mut Session) {
 
 fn parabolic_points(s: &mut Session) {
     let (spine, frames, profile) = (s.curve(), s.frames(), s.curve());
-    let samples = s.input.code();
+    let samples = u32::try_from(s.input.work()).unwrap_or(u32::MAX);
     let capacity = s.input.work().min(256);
     let mut points = poisoned_buffer::<RmfParabolicPoint>(capacity);
     let mut count = poisoned::<usize>();

@@ -11,6 +11,7 @@ use super::input::{curve_or_callback, hermite_arrays, RmfCurveCallback};
 use super::status::RmfStatus;
 use super::types::RmfVec3;
 use crate::bezier::{check_in_domain, PiecewiseCurve};
+use crate::curve::check_sample_count;
 use crate::frames::rational::RationalFrames;
 use crate::frames::{FrameField, FrameKind};
 use crate::hermite::HermiteSegment;
@@ -493,14 +494,14 @@ pub struct RmfParabolicPoint {
 /// Size query: with points = NULL and capacity = 0 only count is written.
 ///
 /// @param[in] spine, frames, profile As for rmf_sweep_surface.
-/// @param[in] v_samples Number of spine parameters, ≥ 2.
+/// @param[in] v_samples Number of spine parameters, 2 … 2^24.
 /// @param[out] points Buffer for capacity points.
 /// @param[in] capacity Capacity of points.
 /// @param[out] count Receives the number of points.
 /// @return RMF_OK on success or for a size query.
 /// @return RMF_ERROR_NULL_POINTER If spine, frames, profile or count is NULL, or points is
 ///         NULL with capacity > 0.
-/// @return RMF_ERROR_INVALID_INPUT If v_samples < 2 or the frames are not rational frames of
+/// @return RMF_ERROR_INVALID_INPUT If v_samples < 2 or > 2^24, or the frames are not rational frames of
 ///         the spine.
 /// @return RMF_ERROR_BUFFER_TOO_SMALL If 0 < capacity < count; then only count is written.
 #[no_mangle]
@@ -518,9 +519,7 @@ pub unsafe extern "C" fn rmf_sweep_parabolic_points(
         let (spine, frames, profile) = sweep_inputs(spine, frames, profile)?;
         let points = buffer(points, capacity, "points")?;
         let count = out_ptr(count, "count")?;
-        if v_samples < 2 {
-            return invalid_arg(format!("v_samples = {v_samples} must be at least 2"));
-        }
+        check_sample_count(v_samples as usize, 2, "v_samples")?;
         let lines =
             ProfileSurface::new(spine, frames, profile)?.parabolic_lines(v_samples as usize);
         let found = parabolic_points(&lines, spine.domain(), profile.domain(), v_samples as usize);
