@@ -169,7 +169,7 @@ pub enum BaseFrame {
 
 impl BaseFrame {
     pub fn of(cubic: &PhCubic) -> Self {
-        let cubic = cubic.normalized();
+        let cubic = cubic.normalized().exactly_ph();
         if cubic.bend() > NEARLY_STRAIGHT {
             Self::Frenet {
                 numerators: frenet_numerators(&cubic),

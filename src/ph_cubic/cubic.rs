@@ -10,9 +10,11 @@
 //! conditioned where the angles of (17) do not (nearly straight polygons);
 //! [`PhCubic::polygon_condition`] evaluates (17) literally.
 
+use super::hermite::ph_cubic_hermite;
 use crate::bezier::bernstein::{self, product};
 use crate::bezier::RationalBezierCurve;
 use crate::error::{invalid, Result};
+use crate::hermite::HermiteSegment;
 use crate::math::{angle_between, robust_length};
 use glam::DVec3;
 
@@ -21,6 +23,10 @@ use glam::DVec3;
 /// [`PhCubic::ph_tolerance`]). Control points passed through NURBS data stay near 1e-15; a
 /// cubic that is not PH is off by far more.
 pub const PH_TOLERANCE: f64 = 1e-9;
+
+/// A hodograph residual at the level of round-off in the polygon itself (below it, a cubic
+/// is taken as exactly PH; see [`PhCubic::exactly_ph`]).
+const ROUND_OFF_RESIDUAL: f64 = 4.0 * f64::EPSILON;
 
 /// A regular PH cubic on [0, 1] (end legs of non-zero length, |x'| polynomial).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -214,6 +220,39 @@ impl PhCubic {
         Self {
             points: self.points.map(|p| (p - origin) / longest),
         }
+    }
+
+    /// The PH cubic through this polygon's end points and end tangents (the interpolant of
+    /// Table 1 nearest to it) when its hodograph residual is above round-off; itself
+    /// otherwise (and when no interpolant exists).
+    ///
+    /// The frames (19), (29) and the angle (30) assume the PH identity |x'| = σ exactly, and
+    /// a residual r turns into an orthonormality error of about r / sin²θ (2e-5 for r = 1e-9
+    /// at θ = 2e-3, a fuzz finding): a polygon accepted within [`PH_TOLERANCE`] (data read
+    /// from files, or rounded far from the origin) gets its frames from the exact PH cubic
+    /// of its own Hermite data, which it matches at both ends and within r inside.
+    pub fn exactly_ph(&self) -> Self {
+        if self.hodograph_residual() <= ROUND_OFF_RESIDUAL {
+            return *self;
+        }
+        let [p0, _, _, p3] = self.points;
+        let [h0, _, h2] = self.legs();
+        let Ok(data) = HermiteSegment::new(p0, h0, p3, h2) else {
+            return *self;
+        };
+        let Ok(solutions) = ph_cubic_hermite(&data) else {
+            return *self;
+        };
+        let distance = |c: &PhCubic| {
+            c.points
+                .iter()
+                .zip(&self.points)
+                .fold(0.0f64, |m, (a, b)| m.max((*a - *b).length()))
+        };
+        std::iter::once(solutions.shape_matching)
+            .chain(solutions.other)
+            .min_by(|a, b| distance(a).total_cmp(&distance(b)))
+            .unwrap_or(*self)
     }
 
     /// Sum of the leg lengths, the criterion of Table 1 for the shape-matching interpolant.

@@ -47,6 +47,9 @@ pub fn frenet_numerators(cubic: &PhCubic) -> FrameNumerators {
 pub fn ph_frenet_frames(spline: &PiecewiseCurve) -> Result<RationalFrames> {
     let mut pieces = FramePieces::new(spline.breaks());
     for (k, cubic) in ph_cubics(spline)?.iter().enumerate() {
+        // The frame does not change under translation and scaling; on the exactly PH cubic
+        // of the same data the formulas of (19) hold to round-off (see `exactly_ph`).
+        let cubic = &cubic.normalized().exactly_ph();
         if cubic.bend() <= STRAIGHT {
             return invalid!(
                 "ph_spline segment {k} is a straight line: its Frenet frame is undefined"
@@ -74,6 +77,38 @@ mod tests {
             let f = frames.frame(t);
             assert!((f.f2 - expected.f2).length() < 1e-13, "t = {t}");
             assert!((f.tangent - expected.tangent).length() < 1e-13, "t = {t}");
+        }
+    }
+
+    /// Fuzz finding: a segment of 4e-13 at distance 1 from the origin (its polygon PH only
+    /// to 1e-3, within the tolerance its rounding allows) had Frenet frames 1e-3 from
+    /// orthonormal; a PH cubic perturbed by 1e-10 near a straight line, 2e-5.
+    #[test]
+    fn frames_are_orthonormal_for_polygons_that_are_ph_only_within_tolerance() {
+        let tiny = crate::bezier::RationalBezierCurve::polynomial(&[
+            DVec3::X,
+            DVec3::new(0.9999999999995625, -4.375e-13, -3.125e-14),
+        ])
+        .unwrap();
+        let (b, perturbation) = (2e-3f64, 1e-10);
+        let (s, c) = b.sin_cos();
+        let exact = crate::ph_cubic::ph_spline_hermite(
+            &[DVec3::ZERO, DVec3::new(1.0, 0.3 * b, 0.1 * b)],
+            &[DVec3::X, DVec3::new(c, s, 0.2 * s).normalize()],
+        )
+        .unwrap();
+        let mut poles: Vec<DVec3> = exact.segments()[0].poles().collect();
+        poles[1].y += perturbation;
+        let perturbed = crate::bezier::RationalBezierCurve::polynomial(&poles).unwrap();
+        for segment in [tiny, perturbed] {
+            let spline = PiecewiseCurve::with_unit_intervals(vec![segment]).unwrap();
+            let frames = ph_frenet_frames(&spline).unwrap();
+            for i in 0..=20 {
+                let f = frames.frame(i as f64 / 20.0);
+                let error = crate::frames::metrics::orthonormality_error(&f);
+                // Both polygons bend by about 1e-3 rad: (19) is conditioned like ε/θ² there.
+                assert!(error < 1e-7, "{error:e}");
+            }
         }
     }
 
