@@ -82,6 +82,12 @@ fn spline_approximate(s: &mut Session) {
         (None, null_mut())
     };
     let (t_min, t_max, tolerance) = (s.input.f64(), s.input.f64(), s.input.f64());
+    if tracing() {
+        eprintln!(
+            "approximate on [{t_min:e}, {t_max:e}] within {tolerance:e}, callback {}",
+            callback.is_some()
+        );
+    }
     let mut out = poisoned();
     let mut distance = poisoned::<f64>();
     let status = unsafe {
