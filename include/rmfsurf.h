@@ -1420,8 +1420,8 @@ RmfStatus rmf_ph_rational_rmf_twisted(const struct RmfCurve *ph_spline,
  * @param[out] out Receives the frames (RMF_FRAMES_RATIONAL); free with rmf_frames_free.
  * @return RMF_OK on success.
  * @return RMF_ERROR_NULL_POINTER If ph_spline or out is NULL.
- * @return RMF_ERROR_INVALID_INPUT If a segment is not a PH cubic or is a straight line (no
- *         Frenet frame).
+ * @return RMF_ERROR_INVALID_INPUT If a segment is not a PH cubic or is (nearly) straight,
+ *         sin θ ≤ 1e-4 (no Frenet frame, or none computable to 1e-7).
  */
 RmfStatus rmf_ph_frenet_frames(const struct RmfCurve *ph_spline, struct RmfFrames **out);
 

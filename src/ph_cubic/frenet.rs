@@ -14,7 +14,10 @@ use crate::frames::rational::RationalFrames;
 use glam::DVec3;
 
 /// sin θ below which a cubic counts as a straight line, whose Frenet frame is undefined.
-const STRAIGHT: f64 = 1e-12;
+/// (19) is conditioned like ε/sin²θ: below 1e-4 its orthonormality error (about
+/// 6e-16/sin²θ) would exceed 1e-7 (a fuzz finding: at sin θ = 1e-11 the "frame" had vectors
+/// of length 1.3).
+const STRAIGHT: f64 = 1e-4;
 
 /// The Frenet frame (19), n = (σx'' − σ'x')/(Kσ), b = x' × x''/(Kσ), K = 6L₂|sin θ| = |x' × x''|/σ.
 ///
@@ -52,7 +55,9 @@ pub fn ph_frenet_frames(spline: &PiecewiseCurve) -> Result<RationalFrames> {
         let cubic = &cubic.normalized().exactly_ph();
         if cubic.bend() <= STRAIGHT {
             return invalid!(
-                "ph_spline segment {k} is a straight line: its Frenet frame is undefined"
+                "ph_spline segment {k} is (nearly) straight (sin θ = {:.1e} ≤ {STRAIGHT:e}): its \
+                 Frenet frame is undefined or cannot be computed accurately",
+                cubic.bend()
             );
         }
         pieces.push_all(k, 0.0, 1.0, frenet_numerators(cubic).positive_pieces()?);
@@ -112,6 +117,24 @@ mod tests {
         }
     }
 
+    /// Fuzz finding: a cubic bending by 1e-11 got a "Frenet frame" with vectors of length 1.3.
+    #[test]
+    fn nearly_straight_segments_are_refused() {
+        let data = crate::hermite::HermiteSegment::new(
+            DVec3::new(0.9999999999921875, -7.8125e-12, -4.6875e-12),
+            DVec3::new(0.9999999999921875, -7.8125e-12, -4.6875e-12),
+            DVec3::new(3.0, 0.0, 0.0),
+            DVec3::new(1.0000000026484375, -7.8125e-12, 5.78125e-11),
+        )
+        .unwrap();
+        let cubic = crate::ph_cubic::hermite::ph_cubic_hermite(&data)
+            .unwrap()
+            .shape_matching;
+        let spline = PiecewiseCurve::with_unit_intervals(vec![cubic.to_bezier()]).unwrap();
+        let e = ph_frenet_frames(&spline).unwrap_err();
+        assert!(e.message().contains("(nearly) straight"), "{e}");
+    }
+
     #[test]
     fn straight_segments_have_no_frenet_frame() {
         let line = crate::bezier::RationalBezierCurve::polynomial(&[
@@ -123,6 +146,9 @@ mod tests {
         .unwrap();
         let spline = PiecewiseCurve::with_unit_intervals(vec![line]).unwrap();
         let e = ph_frenet_frames(&spline).unwrap_err();
-        assert!(e.message().contains("segment 0 is a straight line"), "{e}");
+        assert!(
+            e.message().contains("segment 0 is (nearly) straight"),
+            "{e}"
+        );
     }
 }

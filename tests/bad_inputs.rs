@@ -1,0 +1,876 @@
+//! The README's table of bad inputs, checked: every row is a call through the C API with one
+//! bad argument, the status it must return, and the argument its message must name. The test
+//! runs each call and then checks that the README's table lists the same rows with the same
+//! status (so the table cannot drift from the library).
+
+use rmfsurf::ffi::cone_spline::*;
+use rmfsurf::ffi::curve::*;
+use rmfsurf::ffi::frames::*;
+use rmfsurf::ffi::mobius::*;
+use rmfsurf::ffi::ph_cubic::*;
+use rmfsurf::ffi::rrmf_quintic::*;
+use rmfsurf::ffi::status::{rmf_last_error, rmf_status_name};
+use rmfsurf::ffi::surface::*;
+use rmfsurf::ffi::{RmfCurve, RmfFrames, RmfStatus, RmfVec3};
+use std::ffi::{c_void, CStr};
+use std::ptr::{null, null_mut};
+
+const NAN: f64 = f64::NAN;
+
+fn v(x: f64, y: f64, z: f64) -> RmfVec3 {
+    RmfVec3 { x, y, z }
+}
+
+/// A valid cubic NURBS curve (the arguments the NURBS rows break one at a time).
+struct Nurbs {
+    degree: u32,
+    poles: Vec<RmfVec3>,
+    weights: Vec<f64>,
+    knots: Vec<f64>,
+}
+
+impl Nurbs {
+    fn valid() -> Self {
+        Self {
+            degree: 3,
+            poles: vec![v(0., 0., 0.), v(1., 2., 0.), v(2., -1., 1.), v(3., 0., 2.)],
+            weights: vec![1.0; 4],
+            knots: vec![0., 0., 0., 0., 1., 1., 1., 1.],
+        }
+    }
+
+    fn create(&self) -> (RmfStatus, *mut RmfCurve) {
+        let mut out = null_mut();
+        let status = unsafe {
+            rmf_nurbs_curve_create(
+                self.degree,
+                self.poles.as_ptr(),
+                self.weights.as_ptr(),
+                self.poles.len(),
+                self.knots.as_ptr(),
+                self.knots.len(),
+                &mut out,
+            )
+        };
+        (status, out)
+    }
+}
+
+/// Helix Hermite data (valid), 5 points.
+fn helix() -> (Vec<RmfVec3>, Vec<RmfVec3>) {
+    (0..5)
+        .map(|i| {
+            let t = 0.7 * i as f64;
+            (v(t.cos(), t.sin(), 0.4 * t), v(-t.sin(), t.cos(), 0.4))
+        })
+        .unzip()
+}
+
+/// Valid handles for the rows that need them.
+struct Fixtures {
+    curve: *mut RmfCurve,
+    ph_spline: *mut RmfCurve,
+    rmf: *mut RmfFrames,
+}
+
+impl Fixtures {
+    fn new() -> Self {
+        let (points, tangents) = helix();
+        let (mut ph_spline, mut rmf) = (null_mut(), null_mut());
+        unsafe {
+            assert_eq!(
+                rmf_ph_spline_hermite(points.as_ptr(), tangents.as_ptr(), 5, &mut ph_spline),
+                RmfStatus::RmfOk
+            );
+            assert_eq!(
+                rmf_ph_rational_rmf(ph_spline, v(0., 0., 1.), &mut rmf),
+                RmfStatus::RmfOk
+            );
+        }
+        let (status, curve) = Nurbs::valid().create();
+        assert_eq!(status, RmfStatus::RmfOk);
+        Self {
+            curve,
+            ph_spline,
+            rmf,
+        }
+    }
+}
+
+impl Drop for Fixtures {
+    fn drop(&mut self) {
+        unsafe {
+            rmf_frames_free(self.rmf);
+            rmf_curve_free(self.ph_spline);
+            rmf_curve_free(self.curve);
+        }
+    }
+}
+
+/// A Hermite call of the PH, Möbius and RRMF splines on broken helix data.
+fn ph_spline_with(edit: impl Fn(&mut Vec<RmfVec3>, &mut Vec<RmfVec3>)) -> RmfStatus {
+    let (mut points, mut tangents) = helix();
+    edit(&mut points, &mut tangents);
+    let mut out = null_mut();
+    unsafe { rmf_ph_spline_hermite(points.as_ptr(), tangents.as_ptr(), points.len(), &mut out) }
+}
+
+unsafe extern "C" fn nan_callback(
+    _: f64,
+    _: *mut c_void,
+    point: *mut RmfVec3,
+    tangent: *mut RmfVec3,
+) {
+    *point = v(NAN, 0.0, 0.0);
+    *tangent = v(1.0, 0.0, 0.0);
+}
+
+unsafe extern "C" fn twisted_cubic(
+    t: f64,
+    _: *mut c_void,
+    point: *mut RmfVec3,
+    tangent: *mut RmfVec3,
+) {
+    *point = v(t, t * t, t * t * t);
+    *tangent = v(1.0, 2.0 * t, 3.0 * t * t);
+}
+
+/// One row: what is bad, the entry point, the expected status, and a word the message must
+/// contain (the argument's name).
+struct Row {
+    what: &'static str,
+    function: &'static str,
+    expected: RmfStatus,
+    names: &'static str,
+    call: fn(&Fixtures) -> RmfStatus,
+}
+
+use RmfStatus::{
+    RmfErrorBufferTooSmall as TOO_SMALL, RmfErrorInvalidInput as INVALID,
+    RmfErrorNoSolution as NO_SOLUTION, RmfErrorNullPointer as NULL,
+};
+
+fn rows() -> Vec<Row> {
+    vec![
+        Row {
+            what: "NULL handle",
+            function: "rmf_curve_eval",
+            expected: NULL,
+            names: "curve",
+            call: |_| unsafe { rmf_curve_eval(null(), 0.5, &mut v(0., 0., 0.), null_mut()) },
+        },
+        Row {
+            what: "NULL out-pointer",
+            function: "rmf_ph_spline_hermite",
+            expected: NULL,
+            names: "out",
+            call: |_| {
+                let (p, t) = helix();
+                unsafe { rmf_ph_spline_hermite(p.as_ptr(), t.as_ptr(), 5, null_mut()) }
+            },
+        },
+        Row {
+            what: "parameter NaN",
+            function: "rmf_curve_eval",
+            expected: INVALID,
+            names: "t",
+            call: |f| unsafe { rmf_curve_eval(f.curve, NAN, &mut v(0., 0., 0.), null_mut()) },
+        },
+        Row {
+            what: "parameter outside the domain",
+            function: "rmf_frames_eval",
+            expected: INVALID,
+            names: "t",
+            call: |f| {
+                let (mut a, mut b, mut c) = (v(0., 0., 0.), v(0., 0., 0.), v(0., 0., 0.));
+                unsafe { rmf_frames_eval(f.rmf, 1e6, &mut a, &mut b, &mut c) }
+            },
+        },
+        Row {
+            what: "NURBS pole ±Inf",
+            function: "rmf_nurbs_curve_create",
+            expected: INVALID,
+            names: "poles[2]",
+            call: |_| {
+                let mut n = Nurbs::valid();
+                n.poles[2].y = f64::INFINITY;
+                n.create().0
+            },
+        },
+        Row {
+            what: "NURBS weight 0 or negative",
+            function: "rmf_nurbs_curve_create",
+            expected: INVALID,
+            names: "weights[1]",
+            call: |_| {
+                let mut n = Nurbs::valid();
+                n.weights[1] = -0.5;
+                n.create().0
+            },
+        },
+        Row {
+            what: "NURBS knot NaN",
+            function: "rmf_nurbs_curve_create",
+            expected: INVALID,
+            names: "knots[5]",
+            call: |_| {
+                let mut n = Nurbs::valid();
+                n.knots[5] = NAN;
+                n.create().0
+            },
+        },
+        Row {
+            what: "NURBS knots not clamped",
+            function: "rmf_nurbs_curve_create",
+            expected: INVALID,
+            names: "knots",
+            call: |_| {
+                let mut n = Nurbs::valid();
+                n.knots[0] = -1.0;
+                n.create().0
+            },
+        },
+        Row {
+            what: "NURBS degree ≥ pole count",
+            function: "rmf_nurbs_curve_create",
+            expected: INVALID,
+            names: "degree",
+            call: |_| {
+                let mut n = Nurbs::valid();
+                n.degree = 4;
+                n.knots.push(1.0);
+                n.knots.insert(0, 0.0);
+                n.create().0
+            },
+        },
+        Row {
+            what: "NURBS degree 2³²−1",
+            function: "rmf_nurbs_curve_create",
+            expected: INVALID,
+            names: "degree",
+            call: |_| {
+                let mut n = Nurbs::valid();
+                n.degree = u32::MAX;
+                n.create().0
+            },
+        },
+        Row {
+            what: "sample count 1 or above 2²⁴",
+            function: "rmf_double_reflection_frames",
+            expected: INVALID,
+            names: "sample_count",
+            call: |f| {
+                let mut out = null_mut();
+                unsafe {
+                    rmf_double_reflection_frames(f.curve, v(0., 0., 1.), usize::MAX, &mut out)
+                }
+            },
+        },
+        Row {
+            what: "initial normal along the tangent",
+            function: "rmf_ph_rational_rmf",
+            expected: INVALID,
+            names: "initial_normal",
+            call: |f| {
+                let mut out = null_mut();
+                unsafe { rmf_ph_rational_rmf(f.ph_spline, v(0., 1., 0.4), &mut out) }
+            },
+        },
+        Row {
+            what: "initial normal zero or NaN",
+            function: "rmf_ph_rational_rmf",
+            expected: INVALID,
+            names: "initial_normal",
+            call: |f| {
+                let mut out = null_mut();
+                unsafe { rmf_ph_rational_rmf(f.ph_spline, v(0., 0., 0.), &mut out) }
+            },
+        },
+        Row {
+            what: "frames of another curve",
+            function: "rmf_sweep_surface",
+            expected: INVALID,
+            names: "frames",
+            call: |f| {
+                let mut out = null_mut();
+                unsafe { rmf_sweep_surface(f.curve, f.rmf, f.curve, &mut out) }
+            },
+        },
+        Row {
+            what: "buffer too small",
+            function: "rmf_surface_tessellate",
+            expected: TOO_SMALL,
+            names: "need",
+            call: |f| {
+                let (mut surface, mut np, mut nt) = (null_mut(), 0, 0);
+                let mut points = [v(0., 0., 0.); 4];
+                let mut triangles = [0u32; 3];
+                unsafe {
+                    rmf_sweep_surface(f.ph_spline, f.rmf, f.curve, &mut surface);
+                    let status = rmf_surface_tessellate(
+                        surface,
+                        4,
+                        4,
+                        points.as_mut_ptr(),
+                        4,
+                        triangles.as_mut_ptr(),
+                        1,
+                        &mut np,
+                        &mut nt,
+                    );
+                    rmf_surface_free(surface);
+                    status
+                }
+            },
+        },
+        Row {
+            what: "Hermite points coincide",
+            function: "rmf_ph_spline_hermite",
+            expected: INVALID,
+            names: "points[1] and points[2]",
+            call: |_| ph_spline_with(|p, _| p[2] = p[1]),
+        },
+        Row {
+            what: "Hermite tangent zero",
+            function: "rmf_ph_spline_hermite",
+            expected: INVALID,
+            names: "tangents[3]",
+            call: |_| ph_spline_with(|_, t| t[3] = v(0., 0., 0.)),
+        },
+        Row {
+            what: "Hermite coordinate beyond ±1e300",
+            function: "rmf_ph_spline_hermite",
+            expected: INVALID,
+            names: "points[4]",
+            call: |_| ph_spline_with(|p, _| p[4].x = 1e308),
+        },
+        Row {
+            what: "Hermite point subnormal distance apart",
+            function: "rmf_ph_spline_hermite",
+            expected: INVALID,
+            names: "coincide",
+            call: |_| ph_spline_with(|p, _| p[1] = v(p[0].x + 5e-324, p[0].y, p[0].z)),
+        },
+        Row {
+            what: "one point only",
+            function: "rmf_ph_spline_hermite",
+            expected: INVALID,
+            names: "count",
+            call: |_| {
+                ph_spline_with(|p, t| {
+                    p.truncate(1);
+                    t.truncate(1);
+                })
+            },
+        },
+        Row {
+            what: "tangents antiparallel along the chord",
+            function: "rmf_ph_cubic_hermite",
+            expected: NO_SOLUTION,
+            names: "",
+            call: |_| {
+                let mut out = null_mut();
+                unsafe {
+                    rmf_ph_cubic_hermite(
+                        v(0., 0., 0.),
+                        v(1., 0., 0.),
+                        v(1., 0., 0.),
+                        v(-1., 0., 0.),
+                        &mut out,
+                        null_mut(),
+                    )
+                }
+            },
+        },
+        Row {
+            what: "parallel tangents off the chord",
+            function: "rmf_ph_cubic_hermite",
+            expected: NO_SOLUTION,
+            names: "",
+            call: |_| {
+                let mut out = null_mut();
+                unsafe {
+                    rmf_ph_cubic_hermite(
+                        v(0., 0., 0.),
+                        v(1., 0., 0.),
+                        v(1., 1., 0.),
+                        v(1., 0., 0.),
+                        &mut out,
+                        null_mut(),
+                    )
+                }
+            },
+        },
+        Row {
+            what: "a curve that is not a PH spline",
+            function: "rmf_ph_rational_rmf",
+            expected: INVALID,
+            names: "ph_spline",
+            call: |f| {
+                let mut out = null_mut();
+                unsafe { rmf_ph_rational_rmf(f.curve, v(0., 0., 1.), &mut out) }
+            },
+        },
+        Row {
+            what: "tolerance 0, negative or NaN",
+            function: "rmf_ph_spline_approximate",
+            expected: INVALID,
+            names: "tolerance",
+            call: |f| {
+                let (mut out, mut d) = (null_mut(), 0.0);
+                unsafe {
+                    rmf_ph_spline_approximate(
+                        f.curve,
+                        None,
+                        null_mut(),
+                        0.,
+                        1.,
+                        -1e-3,
+                        &mut out,
+                        &mut d,
+                    )
+                }
+            },
+        },
+        Row {
+            what: "callback writes NaN",
+            function: "rmf_ph_spline_approximate",
+            expected: INVALID,
+            names: "callback",
+            call: |_| {
+                let (mut out, mut d) = (null_mut(), 0.0);
+                unsafe {
+                    rmf_ph_spline_approximate(
+                        null(),
+                        Some(nan_callback),
+                        null_mut(),
+                        0.,
+                        1.,
+                        1e-3,
+                        &mut out,
+                        &mut d,
+                    )
+                }
+            },
+        },
+        Row {
+            what: "both a curve and a callback",
+            function: "rmf_ph_spline_approximate",
+            expected: INVALID,
+            names: "either",
+            call: |f| {
+                let (mut out, mut d) = (null_mut(), 0.0);
+                unsafe {
+                    rmf_ph_spline_approximate(
+                        f.curve,
+                        Some(twisted_cubic),
+                        null_mut(),
+                        0.,
+                        1.,
+                        1e-3,
+                        &mut out,
+                        &mut d,
+                    )
+                }
+            },
+        },
+        Row {
+            what: "twist NaN",
+            function: "rmf_ph_rational_rmf_twisted",
+            expected: INVALID,
+            names: "twist",
+            call: |f| {
+                let mut out = null_mut();
+                unsafe { rmf_ph_rational_rmf_twisted(f.ph_spline, v(0., 0., 1.), NAN, 0, &mut out) }
+            },
+        },
+        Row {
+            what: "closure asked of an open spine",
+            function: "rmf_ph_rational_rmf_twisted",
+            expected: INVALID,
+            names: "closed",
+            call: |f| {
+                let mut out = null_mut();
+                unsafe { rmf_ph_rational_rmf_twisted(f.ph_spline, v(0., 0., 1.), 0.0, 4, &mut out) }
+            },
+        },
+        Row {
+            what: "v_samples 2³²−1",
+            function: "rmf_sweep_parabolic_points",
+            expected: INVALID,
+            names: "v_samples",
+            call: |f| {
+                let mut count = 0;
+                unsafe {
+                    rmf_sweep_parabolic_points(
+                        f.ph_spline,
+                        f.rmf,
+                        f.curve,
+                        u32::MAX,
+                        null_mut(),
+                        0,
+                        &mut count,
+                    )
+                }
+            },
+        },
+        Row {
+            what: "Möbius segments above 2²⁴",
+            function: "rmf_mobius_rrmf_approximate",
+            expected: INVALID,
+            names: "segments",
+            call: |f| {
+                let (mut c, mut fr) = (null_mut(), null_mut());
+                unsafe {
+                    rmf_mobius_rrmf_approximate(
+                        f.curve,
+                        None,
+                        null_mut(),
+                        0.,
+                        1.,
+                        1 << 40,
+                        v(0., 0., 1.),
+                        &mut c,
+                        &mut fr,
+                    )
+                }
+            },
+        },
+        Row {
+            what: "inversion radius 0",
+            function: "rmf_mobius_point",
+            expected: INVALID,
+            names: "radius",
+            call: |_| {
+                let map = RmfInversion {
+                    kind: RMF_INVERSION_SPHERE,
+                    center: v(0., 0., 0.),
+                    radius: 0.0,
+                    normal: v(0., 0., 1.),
+                };
+                unsafe { rmf_mobius_point(&map, 1, v(1., 0., 0.), &mut v(0., 0., 0.)) }
+            },
+        },
+        Row {
+            what: "point at the inversion centre",
+            function: "rmf_mobius_point",
+            expected: INVALID,
+            names: "centre",
+            call: |_| {
+                let map = RmfInversion {
+                    kind: RMF_INVERSION_SPHERE,
+                    center: v(1., 2., 3.),
+                    radius: 1.0,
+                    normal: v(0., 0., 1.),
+                };
+                unsafe { rmf_mobius_point(&map, 1, v(1., 2., 3.), &mut v(0., 0., 0.)) }
+            },
+        },
+        Row {
+            what: "unknown inversion kind",
+            function: "rmf_mobius_point",
+            expected: INVALID,
+            names: "kind",
+            call: |_| {
+                let map = RmfInversion {
+                    kind: 7,
+                    center: v(0., 0., 0.),
+                    radius: 1.0,
+                    normal: v(0., 0., 1.),
+                };
+                unsafe { rmf_mobius_point(&map, 1, v(1., 0., 0.), &mut v(0., 0., 0.)) }
+            },
+        },
+        Row {
+            what: "planar Hermite data (RRMF)",
+            function: "rmf_rrmf_quintic_solutions",
+            expected: INVALID,
+            names: "planar",
+            call: |_| {
+                let mut count = 0;
+                unsafe {
+                    rmf_rrmf_quintic_solutions(
+                        v(0., 0., 0.),
+                        v(1., 0., 0.),
+                        v(1., 1., 0.),
+                        v(0., 1., 0.),
+                        1.0,
+                        null_mut(),
+                        0,
+                        &mut count,
+                    )
+                }
+            },
+        },
+        Row {
+            what: "η NaN",
+            function: "rmf_rrmf_quintic_solutions",
+            expected: INVALID,
+            names: "eta",
+            call: |_| {
+                let mut count = 0;
+                unsafe {
+                    rmf_rrmf_quintic_solutions(
+                        v(0., 0., 0.),
+                        v(1., 0., 1.),
+                        v(1., 1., 1.),
+                        v(0., 1., 1.),
+                        NAN,
+                        null_mut(),
+                        0,
+                        &mut count,
+                    )
+                }
+            },
+        },
+        Row {
+            what: "solutions buffer too small",
+            function: "rmf_rrmf_quintic_solutions",
+            expected: TOO_SMALL,
+            names: "capacity",
+            call: |_| {
+                let mut count = 0;
+                let mut one = [RmfRrmfQuintic::default(); 1];
+                unsafe {
+                    rmf_rrmf_quintic_solutions(
+                        v(0., 0., 0.),
+                        v(1., 0., 1.),
+                        v(1., 1., 1.),
+                        v(0., 1., 1.),
+                        4.325,
+                        one.as_mut_ptr(),
+                        1,
+                        &mut count,
+                    )
+                }
+            },
+        },
+        Row {
+            what: "η samples 0 or above 10⁶",
+            function: "rmf_rrmf_quintic_best",
+            expected: INVALID,
+            names: "eta_samples",
+            call: |_| {
+                let (mut best, mut n) = (RmfRrmfQuintic::default(), 0);
+                unsafe {
+                    rmf_rrmf_quintic_best(
+                        v(0., 0., 0.),
+                        v(1., 0., 1.),
+                        v(1., 1., 1.),
+                        v(0., 1., 1.),
+                        RMF_RRMF_MEASURE_SCALED_ENERGY_RMF,
+                        usize::MAX,
+                        &mut best,
+                        &mut n,
+                    )
+                }
+            },
+        },
+        Row {
+            what: "unknown shape measure",
+            function: "rmf_rrmf_quintic_best",
+            expected: INVALID,
+            names: "measure",
+            call: |_| {
+                let (mut best, mut n) = (RmfRrmfQuintic::default(), 0);
+                unsafe {
+                    rmf_rrmf_quintic_best(
+                        v(0., 0., 0.),
+                        v(1., 0., 1.),
+                        v(1., 1., 1.),
+                        v(0., 1., 1.),
+                        99,
+                        16,
+                        &mut best,
+                        &mut n,
+                    )
+                }
+            },
+        },
+        Row {
+            what: "a solution of other data",
+            function: "rmf_rrmf_quintic_curve",
+            expected: INVALID,
+            names: "solution",
+            call: |_| {
+                let wrong = RmfRrmfQuintic {
+                    eta: 1.0,
+                    rho: 0.5,
+                    ..Default::default()
+                };
+                let (mut c, mut f) = (null_mut(), null_mut());
+                unsafe {
+                    rmf_rrmf_quintic_curve(
+                        v(0., 0., 0.),
+                        v(1., 0., 1.),
+                        v(1., 1., 1.),
+                        v(0., 1., 1.),
+                        &wrong,
+                        v(0., 0., 1.),
+                        &mut c,
+                        &mut f,
+                    )
+                }
+            },
+        },
+        Row {
+            what: "cone element with side along the ruling",
+            function: "rmf_cone_spline_hermite",
+            expected: INVALID,
+            names: "side",
+            call: |_| {
+                let e = RmfConeElement {
+                    point: v(0., 0., 0.),
+                    ruling: v(0., 0., 1.),
+                    side: v(0., 0., 2.),
+                };
+                let second = RmfConeElement {
+                    point: v(1., 0., 0.),
+                    ..e
+                };
+                let mut out = null_mut();
+                unsafe {
+                    rmf_cone_spline_hermite(
+                        [e, second].as_ptr(),
+                        2,
+                        RMF_CONE_RULE_MIN_VERTEX_DISTANCE,
+                        0.0,
+                        null(),
+                        &mut out,
+                    )
+                }
+            },
+        },
+        Row {
+            what: "unknown cone rule",
+            function: "rmf_cone_spline_approximate",
+            expected: INVALID,
+            names: "rule",
+            call: |_| {
+                let (mut out, mut e) = (null_mut(), 0.0);
+                unsafe {
+                    rmf_cone_spline_approximate(
+                        null(),
+                        Some(twisted_cubic),
+                        null_mut(),
+                        0.2,
+                        1.2,
+                        0.5,
+                        6.0,
+                        1e-3,
+                        99,
+                        100,
+                        &mut out,
+                        &mut e,
+                    )
+                }
+            },
+        },
+        Row {
+            what: "max_pieces 1",
+            function: "rmf_cone_spline_approximate",
+            expected: INVALID,
+            names: "max_pieces",
+            call: |_| {
+                let (mut out, mut e) = (null_mut(), 0.0);
+                unsafe {
+                    rmf_cone_spline_approximate(
+                        null(),
+                        Some(twisted_cubic),
+                        null_mut(),
+                        0.2,
+                        1.2,
+                        0.5,
+                        6.0,
+                        1e-3,
+                        0,
+                        1,
+                        &mut out,
+                        &mut e,
+                    )
+                }
+            },
+        },
+        Row {
+            what: "strip through a cone vertex",
+            function: "rmf_cone_spline_surface",
+            expected: INVALID,
+            names: "vertex",
+            call: |_| {
+                let (mut spline, mut e, mut surface) = (null_mut(), 0.0, null_mut());
+                unsafe {
+                    rmf_cone_spline_approximate(
+                        null(),
+                        Some(twisted_cubic),
+                        null_mut(),
+                        0.2,
+                        1.2,
+                        0.5,
+                        6.0,
+                        1e-3,
+                        0,
+                        1000,
+                        &mut spline,
+                        &mut e,
+                    );
+                    let status = rmf_cone_spline_surface(spline, -100.0, 100.0, &mut surface);
+                    rmf_cone_spline_free(spline);
+                    status
+                }
+            },
+        },
+    ]
+}
+
+fn last_error() -> String {
+    unsafe { CStr::from_ptr(rmf_last_error()) }
+        .to_string_lossy()
+        .into_owned()
+}
+
+fn status_name(status: RmfStatus) -> String {
+    unsafe { CStr::from_ptr(rmf_status_name(status as u32)) }
+        .to_string_lossy()
+        .into_owned()
+}
+
+#[test]
+fn every_bad_input_gets_its_status_and_a_message_naming_it() {
+    let fixtures = Fixtures::new();
+    for row in rows() {
+        let status = (row.call)(&fixtures);
+        let message = last_error();
+        assert_eq!(status, row.expected, "{}: {message}", row.what);
+        assert!(
+            message.starts_with(&format!("{}: ", row.function)),
+            "{}: {message}",
+            row.what
+        );
+        assert!(message.contains(row.names), "{}: {message}", row.what);
+    }
+}
+
+#[test]
+fn the_readme_lists_every_row_with_its_status() {
+    let readme =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+    let table = readme
+        .split("### Bad inputs")
+        .nth(1)
+        .expect("a '### Bad inputs' section in the README");
+    let lines: Vec<&str> = table.lines().take_while(|l| !l.starts_with("##")).collect();
+    for row in rows() {
+        let line = lines
+            .iter()
+            .find(|l| l.starts_with(&format!("| {} |", row.what)))
+            .unwrap_or_else(|| panic!("README: no row for '{}'", row.what));
+        assert!(
+            line.contains(&format!("`{}`", row.function))
+                && line.contains(&status_name(row.expected)),
+            "README row for '{}' should name `{}` and {}: {line}",
+            row.what,
+            row.function,
+            status_name(row.expected)
+        );
+    }
+}
