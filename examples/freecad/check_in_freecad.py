@@ -18,7 +18,7 @@ What is checked, each figure printed with its limit:
   E. FreeCAD's mesh reader reads the tool's OBJ as the library's tessellation;
   F. both macros, with a selection as the GUI would give it.
 freecadcmd exits 0 on an exception, so the script exits 1 itself on any failure, and
-prints FREECAD CHECKS OK last when everything passed.
+prints FREECAD CHECKS OK last (report lines start with '| ') when everything passed.
 """
 
 import json
@@ -44,17 +44,23 @@ GRID = 21
 failures = []
 
 
+def say(text):
+    """Prints one line of the report; the marker sets it apart from FreeCAD's own output
+    (banner, progress bars and recompute messages share stdout without newlines)."""
+    print("\n| " + text)
+
+
 def check(name, value, limit, below=True):
     """Records a figure; it passes if value <= limit (or >= limit when below=False)."""
     ok = value <= limit if below else value >= limit
     relation = "<=" if below else ">="
-    print("  %-66s %10.3e  (%s %.0e)%s" % (name, value, relation, limit, "" if ok else "  FAILED"))
+    say("  %-66s %10.3e  (%s %.3g)%s" % (name, value, relation, limit, "" if ok else "  FAILED"))
     if not ok:
         failures.append(name)
 
 
 def require(name, condition):
-    print("  %-66s %s" % (name, "yes" if condition else "NO  FAILED"))
+    say("  %-66s %s" % (name, "yes" if condition else "NO  FAILED"))
     if not condition:
         failures.append(name)
 
@@ -172,7 +178,7 @@ def scaled_gauss(part, surface):
 
 
 def part_a():
-    print("A. Part objects from the NURBS views (ctypes), FreeCAD curvature")
+    say("A. Part objects from the NURBS views (ctypes), FreeCAD curvature")
     parts = {}
     for name in ("helix_pipe_mobius", "helix_strip_rrmf", "nurbs_moulding_ph"):
         curve, frames, surface = built(name)
@@ -209,7 +215,7 @@ def part_a():
 
 
 def part_b(parts):
-    print("B. STEP written by FreeCAD re-imports to the same surface")
+    say("B. STEP written by FreeCAD re-imports to the same surface")
     for name, (surface, part) in sorted(parts.items()):
         path = os.path.join(WORK, "freecad_%s.step" % name)
         Part.Face(part).exportStep(path)
@@ -226,7 +232,7 @@ def part_b(parts):
 
 
 def part_c(parts):
-    print("C. FreeCAD reads the tool's STEP (faces and curves)")
+    say("C. FreeCAD reads the tool's STEP (faces and curves)")
     spline, t_min, t_max = built_cone_spline()
     curves = {name: built(name)[0] for name in ("helix_pipe_mobius", "helix_strip_rrmf", "nurbs_moulding_ph")}
     curves["cone_spline"] = (spline.boundary(t_min), spline.boundary(t_max))
@@ -253,7 +259,7 @@ def part_c(parts):
 
 
 def part_d():
-    print("D. FreeCAD reads the tool's DXF flat pattern")
+    say("D. FreeCAD reads the tool's DXF flat pattern")
     spline, t_min, t_max = built_cone_spline()
     pieces = spline.piece_count()
     document = FreeCAD.newDocument("dxf")
@@ -279,7 +285,7 @@ def part_d():
 
 
 def part_e(parts):
-    print("E. FreeCAD's mesh reader reads the tool's OBJ")
+    say("E. FreeCAD's mesh reader reads the tool's OBJ")
     for name in ("helix_pipe_mobius", "helix_strip_rrmf", "nurbs_moulding_ph", "cone_spline"):
         job = example(name)
         steps = job.get("mesh", {})
@@ -364,7 +370,7 @@ def area(face, parts=8):
 
 
 def part_f():
-    print("F. The macros")
+    say("F. The macros")
     here = os.path.dirname(os.path.abspath(__file__))
     document = FreeCAD.newDocument("macros")
     spine, sketch = sweep_inputs(document)
@@ -417,7 +423,7 @@ def part_f():
 
 
 def main():
-    print("rmfsurf %s in FreeCAD %s" % (rmf.library().rmf_version().decode(), ".".join(FreeCAD.Version()[:3])))
+    say("rmfsurf %s in FreeCAD %s" % (rmf.library().rmf_version().decode(), ".".join(FreeCAD.Version()[:3])))
     parts = part_a()
     part_b(parts)
     part_c(parts)
@@ -425,9 +431,9 @@ def main():
     part_e(parts)
     part_f()
     if failures:
-        print("FREECAD CHECKS FAILED: %s" % "; ".join(failures))
+        say("FREECAD CHECKS FAILED: %s" % "; ".join(failures))
         sys.exit(1)
-    print("FREECAD CHECKS OK")
+    say("FREECAD CHECKS OK")
     sys.exit(0)
 
 
