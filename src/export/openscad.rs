@@ -1,8 +1,9 @@
 //! OpenSCAD `.scad` files (OpenSCAD User Manual, "Primitive Solids: polyhedron" and
 //! "Transformations: multmatrix"):
 //!
-//! * `rmf_solid()`: the solid as one `polyhedron()` — points and faces, each face listed
-//!   clockwise seen from outside, as OpenSCAD requires; the file calls it at top level;
+//! * `rmf_solid()`: the solid as one `polyhedron()` of `rmf_points()` and `rmf_faces()`,
+//!   each face listed clockwise seen from outside, as OpenSCAD requires; the file calls it
+//!   at top level;
 //! * for sweeps, `rmf_transforms()`: the frames along the spine as 4 × 4 matrices with
 //!   columns (f₂, f₃, t, x), which place a 2-D shape drawn in the xy-plane in the normal
 //!   plane — the list BOSL2's `sweep(shape, transforms)` takes — and `rmf_sweep(shape)`,
@@ -69,17 +70,17 @@ pub fn solid_to_scad(
         "// {title}\n// Written by rmfsurf {}: a closed polyhedron, exact to the tessellation.\n\n",
         env!("CARGO_PKG_VERSION")
     );
-    out.push_str("module rmf_solid() polyhedron(\n  points = [\n");
+    out.push_str("function rmf_points() = [\n");
     for p in &solid.points {
-        let _ = writeln!(out, "    {},", point(*p));
+        let _ = writeln!(out, "  {},", point(*p));
     }
-    out.push_str("  ],\n  faces = [\n");
+    out.push_str("];\n\nfunction rmf_faces() = [\n");
     for face in &solid.faces {
         // Counter-clockwise from outside in the mesh; OpenSCAD wants clockwise.
         let indices: Vec<String> = face.iter().rev().map(u32::to_string).collect();
-        let _ = writeln!(out, "    [{}],", indices.join(", "));
+        let _ = writeln!(out, "  [{}],", indices.join(", "));
     }
-    out.push_str("  ],\n  convexity = 10);\n");
+    out.push_str("];\n\nmodule rmf_solid() polyhedron(points = rmf_points(), faces = rmf_faces(), convexity = 10);\n");
     if let Some(placements) = placements {
         out.push_str("\n// The frames along the spine: columns f2, f3, tangent, point.\nfunction rmf_transforms() = [\n");
         for (x, f) in placements {
@@ -104,7 +105,7 @@ mod tests {
         };
         let frame = Frame::from_tangent_normal(DVec3::Z, DVec3::X);
         let scad = solid_to_scad("t", &solid, Some(&[(DVec3::new(1.0, 2.0, 3.0), frame)]));
-        assert!(scad.contains("    [1, 2, 0],\n"));
+        assert!(scad.contains("\n  [1, 2, 0],\n"));
         assert!(scad.contains("[[1, 0, 0, 1], [0, 1, 0, 2], [0, 0, 1, 3], [0, 0, 0, 1]]"));
         assert!(scad.contains("module rmf_sweep"));
         assert!(scad.trim_end().ends_with("rmf_solid();"));
