@@ -26,7 +26,11 @@ fn freecad_reads_our_files_and_builds_exact_part_objects() {
         let step = format!("{example}.step");
         let obj = format!("{example}.obj");
         let curves = format!("{example}_curves.step");
-        run_cli(&files, example, &["-q", "-o", &step, "-o", &obj, "--curves", &curves]);
+        run_cli(
+            &files,
+            example,
+            &["-q", "-o", &step, "-o", &obj, "--curves", &curves],
+        );
     }
     run_cli(&files, "cone_spline", &["-q", "-o", "cone_spline.dxf"]);
     let work = fresh_dir("freecad_work");

@@ -34,6 +34,12 @@ fn opencascade_kernel_example_builds_and_checks_the_surfaces() {
     let mut flags = vec!["-std=c++17", system.as_str()];
     flags.extend(STRICT);
     let libs: Vec<String> = TOOLKITS.iter().map(|t| format!("-l{t}")).collect();
-    let exe = build("occ_kernel", true, &["examples/occ/occ_kernel.cpp"], &flags, &libs);
+    let exe = build(
+        "occ_kernel",
+        true,
+        &["examples/occ/occ_kernel.cpp"],
+        &flags,
+        &libs,
+    );
     run(&exe, false);
 }

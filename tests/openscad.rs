@@ -40,12 +40,22 @@ fn read_stl(path: &Path) -> (Vec<Triangle>, Vec<[String; 3]>) {
         .lines()
         .filter_map(|l| l.trim().strip_prefix("vertex "))
         .collect();
-    assert!(!vertices.is_empty() && vertices.len() % 3 == 0, "{} holds no triangles", path.display());
+    assert!(
+        !vertices.is_empty() && vertices.len() % 3 == 0,
+        "{} holds no triangles",
+        path.display()
+    );
     let point = |v: &str| {
-        let xs: Vec<f64> = v.split_whitespace().map(|x| x.parse().expect("a number")).collect();
+        let xs: Vec<f64> = v
+            .split_whitespace()
+            .map(|x| x.parse().expect("a number"))
+            .collect();
         [xs[0], xs[1], xs[2]]
     };
-    let triangles = vertices.chunks(3).map(|t| [point(t[0]), point(t[1]), point(t[2])]).collect();
+    let triangles = vertices
+        .chunks(3)
+        .map(|t| [point(t[0]), point(t[1]), point(t[2])])
+        .collect();
     let keys = vertices
         .chunks(3)
         .map(|t| [t[0].to_string(), t[1].to_string(), t[2].to_string()])
@@ -70,11 +80,16 @@ fn check_closed_manifold(keys: &[[String; 3]], name: &str) -> usize {
             "{name}: a degenerate triangle"
         );
         for k in 0..3 {
-            *directed.entry((corner[k], corner[(k + 1) % 3])).or_default() += 1;
+            *directed
+                .entry((corner[k], corner[(k + 1) % 3]))
+                .or_default() += 1;
         }
     }
     for (&(a, b), &count) in &directed {
-        assert_eq!(count, 1, "{name}: edge {a} → {b} used {count} times in one direction");
+        assert_eq!(
+            count, 1,
+            "{name}: edge {a} → {b} used {count} times in one direction"
+        );
         assert_eq!(
             directed.get(&(b, a)),
             Some(&1),
@@ -85,7 +100,13 @@ fn check_closed_manifold(keys: &[[String; 3]], name: &str) -> usize {
 }
 
 fn stl_volume(triangles: &[Triangle]) -> f64 {
-    let cross = |a: [f64; 3], b: [f64; 3]| [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+    let cross = |a: [f64; 3], b: [f64; 3]| {
+        [
+            a[1] * b[2] - a[2] * b[1],
+            a[2] * b[0] - a[0] * b[2],
+            a[0] * b[1] - a[1] * b[0],
+        ]
+    };
     triangles
         .iter()
         .map(|[a, b, c]| {
@@ -105,7 +126,9 @@ fn polyhedron_volume(scad: &str) -> f64 {
             .skip(1)
             .take_while(|l| l.trim_start().starts_with('['))
             .map(|l| {
-                l.trim().trim_end_matches(',').trim_matches(|c| c == '[' || c == ']')
+                l.trim()
+                    .trim_end_matches(',')
+                    .trim_matches(|c| c == '[' || c == ']')
                     .split(',')
                     .map(|x| x.trim().parse().expect("a number"))
                     .collect()
@@ -132,7 +155,10 @@ fn rendered_solid(dir: &Path, scad: &str, stl: &str) -> (usize, usize, f64) {
     let (triangles, keys) = read_stl(&dir.join(stl));
     let edges = check_closed_manifold(&keys, stl);
     let volume = stl_volume(&triangles);
-    assert!(volume > 0.0, "{stl}: negative volume {volume}: the faces point inwards");
+    assert!(
+        volume > 0.0,
+        "{stl}: negative volume {volume}: the faces point inwards"
+    );
     (triangles.len(), edges, volume)
 }
 
@@ -149,7 +175,10 @@ fn openscad_renders_closed_manifolds() {
             "{example}: {triangles} triangles, {edges} edges, each in exactly 2 triangles, consistently oriented; volume {volume:.6} (polyhedron {written:.6}, rel. diff {relative:.1e})"
         );
         // OpenSCAD prints 6 significant digits.
-        assert!(relative < 1e-4, "{example}: STL volume {volume} vs polyhedron {written}");
+        assert!(
+            relative < 1e-4,
+            "{example}: STL volume {volume} vs polyhedron {written}"
+        );
 
         // Through CGAL: a small cube cut off at the solid's first point.
         let csg = format!("{example}_csg.scad");
@@ -160,7 +189,10 @@ fn openscad_renders_closed_manifolds() {
         .unwrap();
         let (triangles, _, cut) = rendered_solid(&dir, &csg, &format!("{example}_csg.stl"));
         println!("  CGAL difference with a cube: {triangles} triangles, closed manifold, volume {volume:.9} - {:.3e}", volume - cut);
-        assert!(cut < volume && cut > volume - 1e-6 - 1e-4 * volume, "{example}: volume after the cut {cut} vs {volume}");
+        assert!(
+            cut < volume && cut > volume - 1e-6 - 1e-4 * volume,
+            "{example}: volume after the cut {cut} vs {volume}"
+        );
 
         if example.starts_with("cone") {
             continue;

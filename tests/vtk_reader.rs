@@ -23,26 +23,50 @@ fn records(text: &str, tag: &str) -> Vec<Vec<f64>> {
 
 #[test]
 fn vtk_reads_the_tools_vtp_files() {
-    let (include, libs) = vtk_flags(&["IOXML", "CommonCore", "CommonDataModel", "CommonExecutionModel"]);
+    let (include, libs) = vtk_flags(&[
+        "IOXML",
+        "CommonCore",
+        "CommonDataModel",
+        "CommonExecutionModel",
+    ]);
     let mut flags = vec!["-std=c++17", include.as_str()];
     flags.extend(STRICT);
-    let reader = build("vtk_read_vtp", true, &["tests/programs/vtk_read_vtp.cpp"], &flags, &libs);
+    let reader = build(
+        "vtk_read_vtp",
+        true,
+        &["tests/programs/vtk_read_vtp.cpp"],
+        &flags,
+        &libs,
+    );
     let dir = fresh_dir("vtk_reader");
     for example in EXAMPLES {
         let (vtp, obj) = (format!("{example}.vtp"), format!("{example}.obj"));
         run_cli(&dir, example, &["-q", "-o", &vtp, "-o", &obj]);
-        let out = Command::new(&reader).arg(dir.join(&vtp)).output().expect("the reader runs");
-        assert!(out.status.success(), "VTK failed on {vtp}: {}", String::from_utf8_lossy(&out.stderr));
+        let out = Command::new(&reader)
+            .arg(dir.join(&vtp))
+            .output()
+            .expect("the reader runs");
+        assert!(
+            out.status.success(),
+            "VTK failed on {vtp}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
         let read = String::from_utf8_lossy(&out.stdout);
         let written = std::fs::read_to_string(dir.join(&obj)).expect("obj written");
         let (points, obj_points) = (records(&read, "v"), records(&written, "v"));
-        assert_eq!(points, obj_points, "{vtp}: VTK's points differ from the mesh's");
+        assert_eq!(
+            points, obj_points,
+            "{vtp}: VTK's points differ from the mesh's"
+        );
         let faces = records(&read, "f");
         let obj_faces: Vec<Vec<f64>> = records(&written, "f")
             .into_iter()
             .map(|f| f.into_iter().map(|k| k - 1.0).collect())
             .collect();
-        assert_eq!(faces, obj_faces, "{vtp}: VTK's triangles differ from the mesh's");
+        assert_eq!(
+            faces, obj_faces,
+            "{vtp}: VTK's triangles differ from the mesh's"
+        );
         let normals = records(&read, "n");
         assert_eq!(normals.len(), points.len(), "{vtp}: one normal per point");
         let unit = normals

@@ -42,14 +42,20 @@ pub fn parse(args: impl IntoIterator<Item = String>) -> Result<Command, String> 
             "-o" | "--output" => {
                 let path = PathBuf::from(value(&arg)?);
                 let format = Format::of(&path).ok_or_else(|| {
-                    format!("{arg} {}: unknown format; use one of {EXTENSIONS}", path.display())
+                    format!(
+                        "{arg} {}: unknown format; use one of {EXTENSIONS}",
+                        path.display()
+                    )
                 })?;
                 run.outputs.push((path, format));
             }
             "--curves" => {
                 let path = PathBuf::from(value(&arg)?);
                 if Format::of(&path) != Some(Format::Step) {
-                    return Err(format!("--curves {}: curves are written as STEP (.step or .stp)", path.display()));
+                    return Err(format!(
+                        "--curves {}: curves are written as STEP (.step or .stp)",
+                        path.display()
+                    ));
                 }
                 run.curves = Some(path);
             }
@@ -74,18 +80,30 @@ mod tests {
 
     #[test]
     fn options_and_errors() {
-        let Command::Run(run) = parse_str(&["in.json", "-o", "a.step", "--output", "b.SCAD", "-q"]).unwrap() else {
+        let Command::Run(run) =
+            parse_str(&["in.json", "-o", "a.step", "--output", "b.SCAD", "-q"]).unwrap()
+        else {
             panic!("a run")
         };
         assert_eq!(run.input, "in.json");
         assert_eq!(run.outputs[1].1, Format::Scad);
         assert!(run.quiet);
         assert_eq!(parse_str(&["-h"]), Ok(Command::Help));
-        assert!(parse_str(&["in.json", "-o", "a.xyz"]).unwrap_err().contains("unknown format"));
-        assert!(parse_str(&["in.json", "-o"]).unwrap_err().contains("needs a file name"));
+        assert!(parse_str(&["in.json", "-o", "a.xyz"])
+            .unwrap_err()
+            .contains("unknown format"));
+        assert!(parse_str(&["in.json", "-o"])
+            .unwrap_err()
+            .contains("needs a file name"));
         assert!(parse_str(&[]).unwrap_err().contains("no input"));
-        assert!(parse_str(&["a.json", "b.json"]).unwrap_err().contains("more than one"));
-        assert!(parse_str(&["a.json", "--curves", "c.vtp"]).unwrap_err().contains("STEP"));
-        assert!(parse_str(&["a.json", "--frobnicate"]).unwrap_err().contains("unknown option"));
+        assert!(parse_str(&["a.json", "b.json"])
+            .unwrap_err()
+            .contains("more than one"));
+        assert!(parse_str(&["a.json", "--curves", "c.vtp"])
+            .unwrap_err()
+            .contains("STEP"));
+        assert!(parse_str(&["a.json", "--frobnicate"])
+            .unwrap_err()
+            .contains("unknown option"));
     }
 }

@@ -122,9 +122,7 @@ fn exact_rmf_spine(
 ) -> Result<(PiecewiseCurve, RationalFrames, Option<f64>), InputError> {
     let n = job.initial_normal;
     let through = |points: &[DVec3], tangents: &[DVec3]| match job.method {
-        Method::Mobius => {
-            mobius_hermite_points(points, tangents, n).map(|r| (r.curve, r.frames))
-        }
+        Method::Mobius => mobius_hermite_points(points, tangents, n).map(|r| (r.curve, r.frames)),
         _ => hermite_sequence(points, tangents)
             .and_then(|s| rrmf_spline(&s, ShapeMeasure::ScaledEnergyRmf, ETA_SAMPLES, n))
             .map(|r| (r.curve, r.frames)),
@@ -199,8 +197,13 @@ pub fn run_cone_spline(job: &ConeJob) -> Result<ConeOutcome, InputError> {
         } => {
             let curve = curve.to_piecewise().map_err(at(field))?;
             let surface = TangentSurface::new(&curve, *v_min, *v_max).map_err(at(field))?;
-            let fit = approximate(&surface, job.tolerance, Rule::MinimalVertexDistance, job.max_pieces)
-                .map_err(at("cone_spline.tolerance"))?;
+            let fit = approximate(
+                &surface,
+                job.tolerance,
+                Rule::MinimalVertexDistance,
+                job.max_pieces,
+            )
+            .map_err(at("cone_spline.tolerance"))?;
             (fit.spline, Some(fit.max_error))
         }
         Developable::Ruled(nurbs) => {
@@ -208,8 +211,13 @@ pub fn run_cone_spline(job: &ConeJob) -> Result<ConeOutcome, InputError> {
                 .to_piecewise()
                 .and_then(RuledSurface::new)
                 .map_err(at(field))?;
-            let fit = approximate(&surface, job.tolerance, Rule::MinimalVertexDistance, job.max_pieces)
-                .map_err(at("cone_spline.tolerance"))?;
+            let fit = approximate(
+                &surface,
+                job.tolerance,
+                Rule::MinimalVertexDistance,
+                job.max_pieces,
+            )
+            .map_err(at("cone_spline.tolerance"))?;
             (fit.spline, Some(fit.max_error))
         }
     };

@@ -126,7 +126,10 @@ fn read_mesh(root: &Field) -> InputResult<MeshOptions> {
         if let Some(f) = mesh.optional("v_steps")? {
             options.v_steps = f.count(1, MAX_STEPS)?;
         }
-        options.thickness = mesh.optional("thickness")?.map(|f| f.positive()).transpose()?;
+        options.thickness = mesh
+            .optional("thickness")?
+            .map(|f| f.positive())
+            .transpose()?;
     }
     Ok(options)
 }
@@ -141,7 +144,10 @@ fn read_sweep(sweep: &Field) -> InputResult<SweepJob> {
                 Some(&(_, m)) => m,
                 None => {
                     let names: Vec<&str> = METHODS.iter().map(|(n, _)| *n).collect();
-                    return f.error(format!("unknown method \"{name}\"; expected one of {}", names.join(", ")));
+                    return f.error(format!(
+                        "unknown method \"{name}\"; expected one of {}",
+                        names.join(", ")
+                    ));
                 }
             }
         }
@@ -161,7 +167,9 @@ fn read_sweep(sweep: &Field) -> InputResult<SweepJob> {
 }
 
 fn read_tolerance(parent: &Field) -> InputResult<f64> {
-    parent.optional("tolerance")?.map_or(Ok(1e-4), |f| f.positive())
+    parent
+        .optional("tolerance")?
+        .map_or(Ok(1e-4), |f| f.positive())
 }
 
 fn read_spine(spine: &Field) -> InputResult<Spine> {
@@ -173,7 +181,11 @@ fn read_spine(spine: &Field) -> InputResult<Spine> {
     let tangents_field = spine.required("tangents")?;
     let tangents = vectors(&tangents_field)?;
     if tangents.len() != points.len() {
-        return tangents_field.error(format!("{} tangents for {} points", tangents.len(), points.len()));
+        return tangents_field.error(format!(
+            "{} tangents for {} points",
+            tangents.len(),
+            points.len()
+        ));
     }
     Ok(Spine::Hermite { points, tangents })
 }
@@ -185,14 +197,19 @@ fn vectors(field: &Field) -> InputResult<Vec<DVec3>> {
 /// `{"degree", "poles", "weights" (optional), "knots"}`; `planar`: poles may be [x, y].
 fn read_nurbs_curve(nurbs: &Field, planar: bool) -> InputResult<NurbsCurve> {
     nurbs.only(&["degree", "poles", "weights", "knots"])?;
-    let degree = nurbs.required("degree")?.count(1, rmfsurf::bezier::MAX_DEGREE)?;
+    let degree = nurbs
+        .required("degree")?
+        .count(1, rmfsurf::bezier::MAX_DEGREE)?;
     let poles = nurbs
         .required("poles")?
         .array()?
         .iter()
         .map(|f| if planar { f.point_2d() } else { f.vec3() })
         .collect::<InputResult<Vec<_>>>()?;
-    let weights = nurbs.optional("weights")?.map(|f| f.numbers()).transpose()?;
+    let weights = nurbs
+        .optional("weights")?
+        .map(|f| f.numbers())
+        .transpose()?;
     let knots = nurbs.required("knots")?.numbers()?;
     NurbsCurve::new(degree, poles, weights, knots).or_else(|e| nurbs.error(e.message()))
 }
@@ -200,7 +217,9 @@ fn read_nurbs_curve(nurbs: &Field, planar: bool) -> InputResult<NurbsCurve> {
 /// `{"degree_u", "degree_v", "poles": rows (one per u index) of [x, y, z], "weights" (rows,
 /// optional), "knots_u", "knots_v"}`.
 fn read_nurbs_surface(nurbs: &Field) -> InputResult<NurbsSurface> {
-    nurbs.only(&["degree_u", "degree_v", "poles", "weights", "knots_u", "knots_v"])?;
+    nurbs.only(&[
+        "degree_u", "degree_v", "poles", "weights", "knots_u", "knots_v",
+    ])?;
     let degree = |key: &str| nurbs.required(key)?.count(1, rmfsurf::bezier::MAX_DEGREE);
     let rows_field = nurbs.required("poles")?;
     let rows: Vec<Vec<DVec3>> = rows_field
@@ -242,16 +261,25 @@ fn read_profile(profile: &Field) -> InputResult<(NurbsCurve, bool)> {
         "circle" => {
             body.only(&["radius", "center"])?;
             let radius = body.required("radius")?.positive()?;
-            let center = body.optional("center")?.map_or(Ok(DVec3::ZERO), |f| f.point_2d())?;
+            let center = body
+                .optional("center")?
+                .map_or(Ok(DVec3::ZERO), |f| f.point_2d())?;
             circle(center, radius)
         }
         "line" => {
             body.only(&["from", "to"])?;
-            let ends = [body.required("from")?.point_2d()?, body.required("to")?.point_2d()?];
+            let ends = [
+                body.required("from")?.point_2d()?,
+                body.required("to")?.point_2d()?,
+            ];
             polyline(&ends)
         }
         "polygon" => {
-            let mut corners = body.array()?.iter().map(Field::point_2d).collect::<InputResult<Vec<_>>>()?;
+            let mut corners = body
+                .array()?
+                .iter()
+                .map(Field::point_2d)
+                .collect::<InputResult<Vec<_>>>()?;
             if corners.len() < 3 {
                 return body.error(format!("needs at least 3 corners, got {}", corners.len()));
             }
@@ -266,9 +294,24 @@ fn read_profile(profile: &Field) -> InputResult<(NurbsCurve, bool)> {
 
 /// The full circle as a degree-2 NURBS of four quarters (weights 1, 1/√2, 1).
 fn circle(center: DVec3, radius: f64) -> rmfsurf::Result<NurbsCurve> {
-    let corners = [(1.0, 0.0), (1.0, 1.0), (0.0, 1.0), (-1.0, 1.0), (-1.0, 0.0), (-1.0, -1.0), (0.0, -1.0), (1.0, -1.0), (1.0, 0.0)];
-    let poles = corners.iter().map(|&(x, y)| center + radius * DVec3::new(x, y, 0.0)).collect();
-    let weights = (0..9).map(|k| if k % 2 == 1 { FRAC_1_SQRT_2 } else { 1.0 }).collect();
+    let corners = [
+        (1.0, 0.0),
+        (1.0, 1.0),
+        (0.0, 1.0),
+        (-1.0, 1.0),
+        (-1.0, 0.0),
+        (-1.0, -1.0),
+        (0.0, -1.0),
+        (1.0, -1.0),
+        (1.0, 0.0),
+    ];
+    let poles = corners
+        .iter()
+        .map(|&(x, y)| center + radius * DVec3::new(x, y, 0.0))
+        .collect();
+    let weights = (0..9)
+        .map(|k| if k % 2 == 1 { FRAC_1_SQRT_2 } else { 1.0 })
+        .collect();
     let knots = vec![0.0, 0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 3.0, 3.0, 4.0, 4.0, 4.0];
     NurbsCurve::new(2, poles, Some(weights), knots)
 }
@@ -310,14 +353,19 @@ fn read_cone(cone: &Field) -> InputResult<ConeJob> {
     };
     let strip = cone.required("strip")?;
     strip.only(&["t_min", "t_max"])?;
-    let (t_min, t_max) = (strip.required("t_min")?.number()?, strip.required("t_max")?.number()?);
+    let (t_min, t_max) = (
+        strip.required("t_min")?.number()?,
+        strip.required("t_max")?.number()?,
+    );
     if t_min >= t_max {
         return strip.error(format!("t_min = {t_min} must be less than t_max = {t_max}"));
     }
     Ok(ConeJob {
         developable,
         tolerance: read_tolerance(cone)?,
-        max_pieces: cone.optional("max_pieces")?.map_or(Ok(10_000), |f| f.count(2, 1_000_000))?,
+        max_pieces: cone
+            .optional("max_pieces")?
+            .map_or(Ok(10_000), |f| f.count(2, 1_000_000))?,
         t_min,
         t_max,
     })
@@ -326,5 +374,6 @@ fn read_cone(cone: &Field) -> InputResult<ConeJob> {
 fn read_element(field: &Field) -> InputResult<Element> {
     field.only(&["point", "ruling", "side"])?;
     let v = |key: &str| field.required(key)?.vec3();
-    Element::new(v("point")?, v("ruling")?, v("side")?, field.path()).or_else(|e| field.error(e.message()))
+    Element::new(v("point")?, v("ruling")?, v("side")?, field.path())
+        .or_else(|e| field.error(e.message()))
 }

@@ -22,7 +22,7 @@ impl fmt::Display for InputError {
 pub type InputResult<T> = Result<T, InputError>;
 
 /// A JSON value and where it is in the document.
-#[derive(Clone)]
+#[derive(Clone, Debug)]
 pub struct Field<'a> {
     path: String,
     value: &'a Value,
@@ -205,7 +205,10 @@ impl<'a> Field<'a> {
         match (xs.as_slice(), planar_allowed) {
             ([x, y, z], _) => Ok(DVec3::new(*x, *y, *z)),
             ([x, y], true) => Ok(DVec3::new(*x, *y, 0.0)),
-            (_, true) => self.error(format!("must be [x, y] or [x, y, z], got {} numbers", xs.len())),
+            (_, true) => self.error(format!(
+                "must be [x, y] or [x, y, z], got {} numbers",
+                xs.len()
+            )),
             (_, false) => self.error(format!("must be [x, y, z], got {} numbers", xs.len())),
         }
     }
@@ -261,8 +264,15 @@ mod tests {
             sweep.required("method").unwrap_err().to_string(),
             "sweep.method: is missing"
         );
-        assert!(sweep.only(&["profile"]).unwrap_err().to_string().starts_with("sweep.spine: unknown field"));
+        assert!(sweep
+            .only(&["profile"])
+            .unwrap_err()
+            .to_string()
+            .starts_with("sweep.spine: unknown field"));
         let e = Document::parse("{\"a\": ", "in.json").err().unwrap();
-        assert!(e.to_string().starts_with("in.json: malformed JSON: EOF"), "{e}");
+        assert!(
+            e.to_string().starts_with("in.json: malformed JSON: EOF"),
+            "{e}"
+        );
     }
 }

@@ -70,7 +70,11 @@ fn read_input(input: &str) -> Result<String, String> {
 
 /// Reads, builds, measures, writes.
 fn execute(run: &Run) -> Result<(), String> {
-    let source = if run.input == "-" { "(stdin)" } else { &run.input };
+    let source = if run.input == "-" {
+        "(stdin)"
+    } else {
+        &run.input
+    };
     let document = Document::parse(&read_input(&run.input)?, source).map_err(|e| e.to_string())?;
     let job = Job::read(&document.root()).map_err(|e| e.to_string())?;
     if let Construction::Sweep(_) = job.construction {
@@ -95,7 +99,8 @@ fn execute(run: &Run) -> Result<(), String> {
         files.push((path.clone(), text));
     }
     if let Some(path) = &run.curves {
-        let text = output::render_curves(path, &outcome).map_err(|e| format!("--curves {}: {e}", path.display()))?;
+        let text = output::render_curves(path, &outcome)
+            .map_err(|e| format!("--curves {}: {e}", path.display()))?;
         files.push((path.clone(), text));
     }
     output::write_all(&files)?;

@@ -74,17 +74,37 @@ pub fn render(
     let surface = surface_of(outcome);
     let (u, v) = (mesh.u_steps, mesh.v_steps);
     Ok(match format {
-        Format::Step => step::surfaces_to_step(&[&NurbsSurface::from_piecewise(surface)?], &name)?,
+        Format::Step => {
+            let nurbs = NurbsSurface::from_piecewise(surface).map_err(|e| {
+                rmfsurf::Error::InvalidInput(format!(
+                    "the surface is not one continuous NURBS ({}); Frenet frames jump at the spine's joints",
+                    e.message()
+                ))
+            })?;
+            step::surfaces_to_step(&[&nurbs], &name)?
+        }
         Format::Vtp => {
             let m = tessellate(surface, u, v)?;
             vtk::mesh_to_vtp(&m.points, &m.triangles, Some(&grid_normals(surface, u, v)))
         }
         Format::Obj => {
             let m = tessellate(surface, u, v)?;
-            obj::mesh_to_obj(&name, &m.points, &m.triangles, Some(&grid_normals(surface, u, v)))
+            obj::mesh_to_obj(
+                &name,
+                &m.points,
+                &m.triangles,
+                Some(&grid_normals(surface, u, v)),
+            )
         }
         Format::Scad => {
-            let solid = closed_mesh(surface, u, v, mesh.thickness)?;
+            let solid =
+                closed_mesh(surface, u, v, mesh.thickness).map_err(|e| match mesh.thickness {
+                    None => rmfsurf::Error::InvalidInput(format!(
+                        "{} (give mesh.thickness)",
+                        e.message()
+                    )),
+                    Some(_) => e,
+                })?;
             let placements = match outcome {
                 Outcome::Sweep(o) => Some(
                     grid_parameters(o.surface.v_breaks(), v)
@@ -125,7 +145,10 @@ pub fn render_curves(path: &Path, outcome: &Outcome) -> rmfsurf::Result<String> 
 
 /// `dir/.name.rmfsurf-<pid>.tmp` beside `path`.
 fn temporary(path: &Path) -> PathBuf {
-    let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("output");
+    let name = path
+        .file_name()
+        .and_then(|n| n.to_str())
+        .unwrap_or("output");
     path.with_file_name(format!(".{name}.rmfsurf-{}.tmp", std::process::id()))
 }
 

@@ -44,7 +44,9 @@ pub struct Summary {
 impl Summary {
     pub fn of(job: &Job, outcome: &Outcome) -> rmfsurf::Result<Self> {
         let figures = match (&job.construction, outcome) {
-            (Construction::Sweep(j), Outcome::Sweep(o)) => sweep_figures(j.method, j.profile_is_line, o)?,
+            (Construction::Sweep(j), Outcome::Sweep(o)) => {
+                sweep_figures(j.method, j.profile_is_line, o)?
+            }
             (_, Outcome::ConeSpline(o)) => cone_figures(o)?,
             _ => unreachable!("the outcome matches the job"),
         };
@@ -61,12 +63,19 @@ impl Summary {
     }
 
     pub fn to_text(&self) -> String {
-        let width = self.figures.iter().map(|f| f.label.chars().count()).max().unwrap_or(0);
+        let width = self
+            .figures
+            .iter()
+            .map(|f| f.label.chars().count())
+            .max()
+            .unwrap_or(0);
         self.figures
             .iter()
             .map(|f| {
                 let value = match &f.value {
-                    Value::Number(n) if n.is_f64() => format!("{:.3e}", n.as_f64().unwrap_or(f64::NAN)),
+                    Value::Number(n) if n.is_f64() => {
+                        format!("{:.3e}", n.as_f64().unwrap_or(f64::NAN))
+                    }
                     Value::String(s) => s.clone(),
                     other => other.to_string(),
                 };
@@ -85,12 +94,20 @@ fn method_name(method: Method) -> &'static str {
     }
 }
 
-fn surface_shape(surface: &PiecewiseSurface) -> rmfsurf::Result<String> {
-    let n = NurbsSurface::from_piecewise(surface)?;
-    Ok(format!(
-        "NURBS of degree ({}, {}), {} × {} poles",
-        n.degree_u, n.degree_v, n.pole_count_u, n.pole_count_v
-    ))
+/// The NURBS's degrees and poles, or why the patches do not form one NURBS (Frenet frames
+/// jump at the joints of a G1 spine).
+fn surface_shape(surface: &PiecewiseSurface) -> String {
+    match NurbsSurface::from_piecewise(surface) {
+        Ok(n) => format!(
+            "NURBS of degree ({}, {}), {} × {} poles",
+            n.degree_u, n.degree_v, n.pole_count_u, n.pole_count_v
+        ),
+        Err(e) => format!(
+            "{} rational patches, not one continuous NURBS ({})",
+            surface.patches().len(),
+            e.message()
+        ),
+    }
 }
 
 fn sweep_figures(method: Method, line: bool, o: &SweepOutcome) -> rmfsurf::Result<Vec<Figure>> {
@@ -99,22 +116,45 @@ fn sweep_figures(method: Method, line: bool, o: &SweepOutcome) -> rmfsurf::Resul
         figure("spine_segments", "spine segments", o.spine.segments().len()),
     ];
     if let Some(d) = o.spine_distance {
-        figures.push(figure("spine_distance", "spine: max distance from the input", d));
+        figures.push(figure(
+            "spine_distance",
+            "spine: max distance from the input",
+            d,
+        ));
     }
-    let field = FrameField::new(Arc::new(o.spine.clone()), FrameKind::Rational(o.frames.clone()))?;
+    let field = FrameField::new(
+        Arc::new(o.spine.clone()),
+        FrameKind::Rational(o.frames.clone()),
+    )?;
     let (mut defect, mut orthonormality) = (0.0f64, 0.0f64);
     for t in grid_parameters(o.frames.breaks(), SAMPLES) {
         defect = defect.max(rmf_defect(&field, t)?.abs());
         orthonormality = orthonormality.max(orthonormality_error(&field.frame(t)?));
     }
-    figures.push(figure("frame_pieces", "frame pieces (rational)", o.frames.segments().len()));
-    figures.push(figure("rmf_defect", "frames: max |f2'·f3|/|x'| (rad per unit length)", defect));
-    figures.push(figure("orthonormality", "frames: max orthonormality error", orthonormality));
+    figures.push(figure(
+        "frame_pieces",
+        "frame pieces (rational)",
+        o.frames.segments().len(),
+    ));
+    figures.push(figure(
+        "rmf_defect",
+        "frames: max |f2'·f3|/|x'| (rad per unit length)",
+        defect,
+    ));
+    figures.push(figure(
+        "orthonormality",
+        "frames: max orthonormality error",
+        orthonormality,
+    ));
     if method == Method::PhRmf {
         let angle = angle_errors(&o.spine, &o.frames)?.max;
-        figures.push(figure("rmf_angle_error", "frames: max angle to the exact RMF (rad)", angle));
+        figures.push(figure(
+            "rmf_angle_error",
+            "frames: max angle to the exact RMF (rad)",
+            angle,
+        ));
     }
-    figures.push(figure("surface", "surface", surface_shape(&o.surface)?));
+    figures.push(figure("surface", "surface", surface_shape(&o.surface)));
     figures.push(figure(
         "orthogonality",
         "surface: max |cos| between parameter lines",
@@ -155,9 +195,13 @@ fn cone_figures(o: &ConeOutcome) -> rmfsurf::Result<Vec<Figure>> {
         ),
     )];
     if let Some(e) = o.fit_error {
-        figures.push(figure("fit_deviation", "fit: max distance from the input surface", e));
+        figures.push(figure(
+            "fit_deviation",
+            "fit: max distance from the input surface",
+            e,
+        ));
     }
-    figures.push(figure("surface", "surface", surface_shape(&o.surface)?));
+    figures.push(figure("surface", "surface", surface_shape(&o.surface)));
     figures.push(figure(
         "developability",
         "surface: max |K|·size²",
@@ -244,8 +288,10 @@ fn ruling_angle_error(o: &ConeOutcome) -> f64 {
 
 /// The summary as JSON text, for `-o summary.json`.
 pub fn json_text(summary: &Summary) -> String {
-    let mut text = serde_json::to_string_pretty(&json!({ "rmfsurf": env!("CARGO_PKG_VERSION"), "figures": summary.to_json() }))
-        .expect("figures serialize");
+    let mut text = serde_json::to_string_pretty(
+        &json!({ "rmfsurf": env!("CARGO_PKG_VERSION"), "figures": summary.to_json() }),
+    )
+    .expect("figures serialize");
     text.push('\n');
     text
 }

@@ -220,4 +220,3 @@ pub fn run(exe: &Path, valgrind: bool) {
         out.status
     );
 }
-
