@@ -14,6 +14,7 @@
 
 use crate::bezier::PiecewiseSurface;
 use crate::error::{invalid, Result};
+use crate::math::bounding_diagonal;
 use crate::mesh::{grid_normals, tessellate, TriangleMesh};
 use glam::DVec3;
 use std::collections::HashSet;
@@ -45,19 +46,10 @@ impl ClosedMesh {
 fn closure(mesh: &TriangleMesh) -> (bool, bool) {
     let (rows, cols) = (mesh.rows, mesh.columns);
     let at = |i: usize, j: usize| mesh.points[i * cols + j];
-    let tolerance = CLOSURE_TOLERANCE * diagonal(&mesh.points);
+    let tolerance = CLOSURE_TOLERANCE * bounding_diagonal(mesh.points.iter().copied());
     let closed_u = (0..cols).all(|j| at(0, j).distance(at(rows - 1, j)) <= tolerance);
     let closed_v = (0..rows).all(|i| at(i, 0).distance(at(i, cols - 1)) <= tolerance);
     (closed_u, closed_v)
-}
-
-fn diagonal(points: &[DVec3]) -> f64 {
-    let (lo, hi) = points
-        .iter()
-        .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), &p| {
-            (lo.min(p), hi.max(p))
-        });
-    (hi - lo).length()
 }
 
 /// The solid bounded by `surface` (see the module notes), tessellated with `u_steps` ×

@@ -162,6 +162,13 @@ fn rendered_solid(dir: &Path, scad: &str, stl: &str) -> (usize, usize, f64) {
     (triangles.len(), edges, volume)
 }
 
+/// Writes `<name>.scad` that uses the tool's `scad` and draws `body`, and renders it.
+fn render_using(dir: &Path, scad: &str, name: &str, body: &str) -> (usize, usize, f64) {
+    let file = format!("{name}.scad");
+    std::fs::write(dir.join(&file), format!("use <{scad}>\n{body}\n")).unwrap();
+    rendered_solid(dir, &file, &format!("{name}.stl"))
+}
+
 #[test]
 fn openscad_renders_closed_manifolds() {
     let dir = fresh_dir("openscad");
@@ -181,13 +188,12 @@ fn openscad_renders_closed_manifolds() {
         );
 
         // Through CGAL: a small cube cut off at the solid's first point.
-        let csg = format!("{example}_csg.scad");
-        std::fs::write(
-            dir.join(&csg),
-            format!("use <{scad}>\ndifference() {{ rmf_solid(); translate(rmf_points()[0]) cube(0.01, center = true); }}\n"),
-        )
-        .unwrap();
-        let (triangles, _, cut) = rendered_solid(&dir, &csg, &format!("{example}_csg.stl"));
+        let (triangles, _, cut) = render_using(
+            &dir,
+            &scad,
+            &format!("{example}_csg"),
+            "difference() { rmf_solid(); translate(rmf_points()[0]) cube(0.01, center = true); }",
+        );
         println!("  CGAL difference with a cube: {triangles} triangles, closed manifold, volume {volume:.9} - {:.3e}", volume - cut);
         assert!(
             cut < volume && cut > volume - 1e-6 - 1e-4 * volume,
@@ -197,13 +203,12 @@ fn openscad_renders_closed_manifolds() {
         if example.starts_with("cone") {
             continue;
         }
-        let sweep = format!("{example}_sweep.scad");
-        std::fs::write(
-            dir.join(&sweep),
-            format!("use <{scad}>\nrmf_sweep([for (a = [0:30:330]) 0.05 * [cos(a), sin(a)]]);\n"),
-        )
-        .unwrap();
-        let (triangles, _, tube) = rendered_solid(&dir, &sweep, &format!("{example}_sweep.stl"));
+        let (triangles, _, tube) = render_using(
+            &dir,
+            &scad,
+            &format!("{example}_sweep"),
+            "rmf_sweep([for (a = [0:30:330]) 0.05 * [cos(a), sin(a)]]);",
+        );
         println!("  rmf_sweep of a 12-gon with rmf_transforms(): {triangles} triangles, closed manifold, volume {tube:.6}");
     }
 }

@@ -2,11 +2,11 @@
 //! frames by the chosen method, the sweep; or the cone spline, its surface strip and its
 //! development. Failures of the geometry are reported at the input field they come from.
 
-use crate::job::{ConeJob, Developable, Method, Spine, SweepJob};
+use crate::job::{ConeJob, Developable as Input, Method, Spine, SweepJob};
 use crate::json::InputError;
 use glam::DVec3;
 use rmfsurf::bezier::{PiecewiseCurve, PiecewiseSurface};
-use rmfsurf::cone_spline::developable::{RuledSurface, TangentSurface};
+use rmfsurf::cone_spline::developable::{Developable, RuledSurface, TangentSurface};
 use rmfsurf::cone_spline::{approximate, ConeSpline, FlatPattern, Rule};
 use rmfsurf::curve::{uniform_parameters, ParametricCurve};
 use rmfsurf::frames::compare::nearest_parameter;
@@ -182,43 +182,43 @@ fn distance(approx: &PiecewiseCurve, reference: &PiecewiseCurve, params: &[f64])
         .fold(0.0, f64::max)
 }
 
+/// The cone spline within the job's tolerance of a developable, and the deviation reached.
+fn fit(surface: &dyn Developable, job: &ConeJob) -> Result<(ConeSpline, Option<f64>), InputError> {
+    let fit = approximate(
+        surface,
+        job.tolerance,
+        Rule::MinimalVertexDistance,
+        job.max_pieces,
+    )
+    .map_err(at("cone_spline.tolerance"))?;
+    Ok((fit.spline, Some(fit.max_error)))
+}
+
 pub fn run_cone_spline(job: &ConeJob) -> Result<ConeOutcome, InputError> {
     let field = "cone_spline.developable";
     let (spline, fit_error) = match &job.developable {
-        Developable::Elements(elements) => {
+        Input::Elements(elements) => {
             let (spline, _) = ConeSpline::hermite(elements, Rule::MinimalVertexDistance, None)
                 .map_err(at(field))?;
             (spline, None)
         }
-        Developable::TangentSurface {
+        Input::TangentSurface {
             curve,
             v_min,
             v_max,
         } => {
             let curve = curve.to_piecewise().map_err(at(field))?;
-            let surface = TangentSurface::new(&curve, *v_min, *v_max).map_err(at(field))?;
-            let fit = approximate(
-                &surface,
-                job.tolerance,
-                Rule::MinimalVertexDistance,
-                job.max_pieces,
-            )
-            .map_err(at("cone_spline.tolerance"))?;
-            (fit.spline, Some(fit.max_error))
+            fit(
+                &TangentSurface::new(&curve, *v_min, *v_max).map_err(at(field))?,
+                job,
+            )?
         }
-        Developable::Ruled(nurbs) => {
+        Input::Ruled(nurbs) => {
             let surface = nurbs
                 .to_piecewise()
                 .and_then(RuledSurface::new)
                 .map_err(at(field))?;
-            let fit = approximate(
-                &surface,
-                job.tolerance,
-                Rule::MinimalVertexDistance,
-                job.max_pieces,
-            )
-            .map_err(at("cone_spline.tolerance"))?;
-            (fit.spline, Some(fit.max_error))
+            fit(&surface, job)?
         }
     };
     let (t_min, t_max) = (job.t_min, job.t_max);

@@ -7,12 +7,12 @@
 
 use crate::construct::{ConeOutcome, Outcome, SweepOutcome};
 use crate::job::{Construction, Job, Method};
-use rmfsurf::bezier::{NurbsSurface, PiecewiseCurve, PiecewiseSurface};
+use rmfsurf::bezier::{NurbsSurface, PiecewiseSurface};
 use rmfsurf::cone_spline::developable::max_scaled_curvature;
 use rmfsurf::cone_spline::{PatternEdge, PieceKind};
 use rmfsurf::frames::metrics::{orthonormality_error, parameter_line_cosine, rmf_defect};
 use rmfsurf::frames::{FrameField, FrameKind};
-use rmfsurf::math::{angle_between, GaussLegendre};
+use rmfsurf::math::angle_between;
 use rmfsurf::mesh::grid_parameters;
 use rmfsurf::ph_cubic::accuracy::angle_errors;
 use serde_json::{json, Map, Value};
@@ -238,15 +238,6 @@ fn cone_figures(o: &ConeOutcome) -> rmfsurf::Result<Vec<Figure>> {
     Ok(figures)
 }
 
-fn length(curve: &PiecewiseCurve) -> f64 {
-    let rule = GaussLegendre::new(24);
-    curve
-        .breaks()
-        .windows(2)
-        .map(|w| rule.integrate(w[0], w[1], |v| curve.eval_jet(v).d1.length()))
-        .sum()
-}
-
 /// The surface's boundary curves against the pattern's arcs and lines (the outline runs
 /// along t_min over the n pieces, then back along t_max).
 fn boundary_length_error(o: &ConeOutcome) -> rmfsurf::Result<f64> {
@@ -255,7 +246,7 @@ fn boundary_length_error(o: &ConeOutcome) -> rmfsurf::Result<f64> {
     let sides = [(o.t_min, &edges[..n]), (o.t_max, &edges[n + 1..2 * n + 1])];
     let mut worst = 0.0f64;
     for (t, flat) in sides {
-        let spatial = length(&o.spline.boundary(t)?);
+        let spatial = o.spline.boundary(t)?.arc_length();
         let developed: f64 = flat.iter().map(PatternEdge::length).sum();
         worst = worst.max((spatial - developed).abs() / spatial);
     }

@@ -18,6 +18,7 @@
 
 use crate::bezier::{NurbsCurve, NurbsSurface};
 use crate::error::{invalid, Result};
+use crate::math::bounding_diagonal;
 use glam::DVec3;
 use std::fmt::Write;
 
@@ -200,18 +201,10 @@ fn collapsed(c: &NurbsCurve, tolerance: f64) -> bool {
     c.poles.iter().all(|p| p.distance(c.poles[0]) <= tolerance)
 }
 
-fn pole_diagonal(poles: &[DVec3]) -> f64 {
-    let (lo, hi) = poles
-        .iter()
-        .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), &p| {
-            (lo.min(p), hi.max(p))
-        });
-    (hi - lo).length()
-}
-
 /// Writes the face: surface, vertices, edges (seams shared) and the loop.
 fn face_entities(out: &mut Entities, surface: &NurbsSurface, context_2d: usize) -> usize {
-    let tolerance = SAME_TOLERANCE * pole_diagonal(&surface.poles).max(f64::MIN_POSITIVE);
+    let tolerance =
+        SAME_TOLERANCE * bounding_diagonal(surface.poles.iter().copied()).max(f64::MIN_POSITIVE);
     let surface_id = surface_entity(out, surface);
     let sides = boundaries(surface);
     let mut vertices: Vec<(DVec3, usize)> = Vec::new();
