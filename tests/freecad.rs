@@ -1,5 +1,5 @@
 //! FreeCAD, headless (`freecadcmd`, Debian package freecad): the command-line tool writes
-//! STEP faces and curves, OBJ meshes and the DXF flat pattern of every example in
+//! STEP faces and curves, OBJ meshes and the DXF and SVG flat pattern of every example in
 //! examples/cli/, and `examples/freecad/check_in_freecad.py` runs inside FreeCAD against the
 //! shared library through the pure-Python glue: Part objects from the NURBS views, FreeCAD's
 //! own Gaussian curvature, STEP written by FreeCAD and read back, the tool's files read by
@@ -32,7 +32,11 @@ fn freecad_reads_our_files_and_builds_exact_part_objects() {
             &["-q", "-o", &step, "-o", &obj, "--curves", &curves],
         );
     }
-    run_cli(&files, "cone_spline", &["-q", "-o", "cone_spline.dxf"]);
+    run_cli(
+        &files,
+        "cone_spline",
+        &["-q", "-o", "cone_spline.dxf", "-o", "cone_spline.svg"],
+    );
     let work = fresh_dir("freecad_work");
     let script = root().join("examples/freecad/check_in_freecad.py");
     let out = Command::new("freecadcmd")
@@ -50,5 +54,40 @@ fn freecad_reads_our_files_and_builds_exact_part_objects() {
         out.status.success() && report(&stdout).any(|l| l == "FREECAD CHECKS OK"),
         "the FreeCAD checks failed ({}):\n{stdout}\n{stderr}",
         out.status
+    );
+}
+
+/// The README's FreeCAD console example, run as written (with the glue on the path).
+#[test]
+fn readme_freecad_example_runs() {
+    let readme = std::fs::read_to_string(root().join("README.md")).expect("README.md");
+    let start = readme
+        .find("```python\n")
+        .expect("a Python example in the README")
+        + 10;
+    let end = start + readme[start..].find("```").expect("the end of the example");
+    let dir = fresh_dir("freecad_readme");
+    let script = format!(
+        "import sys\nsys.path.insert(0, {:?})\n{}\nprint('\\n| README example: valid face', tube.isValid())\nsys.exit(0 if tube.isValid() else 1)\n",
+        root().join("examples/freecad").display().to_string(),
+        &readme[start..end]
+    );
+    std::fs::write(dir.join("readme_example.py"), script).unwrap();
+    let out = Command::new("freecadcmd")
+        .arg("readme_example.py")
+        .current_dir(&dir)
+        .env("RMFSURF_LIBRARY", toolchain().lib_dir.join("librmfsurf.so"))
+        .output()
+        .unwrap_or_else(|e| panic!("cannot run freecadcmd ({e}): {SETUP_HINT}"));
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    report(&stdout).for_each(|line| println!("{line}"));
+    assert!(
+        out.status.success() && report(&stdout).any(|l| l == "README example: valid face True"),
+        "the README's FreeCAD example failed:\n{stdout}\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(
+        dir.join("tube.step").exists(),
+        "the example writes tube.step"
     );
 }

@@ -281,3 +281,27 @@ fn files_and_command_line_errors() {
     }
     assert!(files_in(&dir).is_empty());
 }
+
+#[test]
+fn readme_json_example_runs() {
+    let readme =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("../README.md"))
+            .unwrap();
+    let start = readme
+        .find("```json\n")
+        .expect("a JSON example in the README")
+        + 8;
+    let end = start + readme[start..].find("```").unwrap();
+    let dir = scratch("readme");
+    let out = tool(
+        &dir,
+        &["-", "-o", "moulding.step", "-o", "moulding.scad"],
+        Some(&readme[start..end]),
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert_eq!(files_in(&dir), ["moulding.scad", "moulding.step"]);
+}

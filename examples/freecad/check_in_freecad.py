@@ -4,7 +4,7 @@ Started by the test command (tests/freecad.rs), which builds the library, runs t
 command-line tool on examples/cli/*.json and passes, in the environment:
   RMFSURF_LIBRARY   librmfsurf.so
   RMFSURF_EXAMPLES  examples/cli (the JSON inputs)
-  RMFSURF_FILES     the tool's outputs: <example>.step, _curves.step, .obj, cone_spline.dxf
+  RMFSURF_FILES     the tool's outputs: <example>.step, _curves.step, .obj, cone_spline.dxf/.svg
   RMFSURF_WORK      a scratch directory (FreeCAD's own STEP files)
 
 What is checked, each figure printed with its limit:
@@ -14,7 +14,8 @@ What is checked, each figure printed with its limit:
   B. a STEP file written by FreeCAD re-imports to the same surface;
   C. FreeCAD reads the tool's STEP faces and curves back as the same geometry;
   D. FreeCAD reads the tool's DXF flat pattern: true arcs and lines, isometric to the
-     spatial boundary curves (measured by FreeCAD on the tool's curve STEP);
+     spatial boundary curves (measured by FreeCAD on the tool's curve STEP); and the SVG
+     drawing of the same pattern;
   E. FreeCAD's mesh reader reads the tool's OBJ as the library's tessellation;
   F. both macros, with a selection as the GUI would give it.
 freecadcmd exits 0 on an exception, so the script exits 1 itself on any failure, and
@@ -259,7 +260,7 @@ def part_c(parts):
 
 
 def part_d():
-    say("D. FreeCAD reads the tool's DXF flat pattern")
+    say("D. FreeCAD reads the tool's DXF and SVG flat pattern")
     spline, t_min, t_max = built_cone_spline()
     pieces = spline.piece_count()
     document = FreeCAD.newDocument("dxf")
@@ -277,6 +278,17 @@ def part_d():
     flat = sum(e.Length for e in arcs)
     check("DXF arcs vs STEP boundary curves (both measured by FreeCAD): rel. length error",
           abs(flat - spatial) / spatial, 1e-9)
+    dxf_length = sum(e.Length for e in edges)
+    FreeCAD.closeDocument(document.Name)
+    # The SVG drawing of the same pattern, through FreeCAD's SVG importer (which turns every
+    # path segment into a B-spline): as many segments, the same total length.
+    import importSVG
+    document = FreeCAD.newDocument("svg")
+    importSVG.insert(os.path.join(FILES, "cone_spline.svg"), document.Name)
+    svg_edges = [e for o in document.Objects if hasattr(o, "Shape") for e in o.Shape.Edges]
+    require("SVG: %d path segments = DXF entities" % len(svg_edges), len(svg_edges) == len(edges))
+    check("SVG vs DXF, total length (both read by FreeCAD): rel. error",
+          abs(sum(e.Length for e in svg_edges) - dxf_length) / dxf_length, 1e-9)
     FreeCAD.closeDocument(document.Name)
 
 

@@ -62,6 +62,23 @@ fn real(x: f64) -> String {
     }
 }
 
+/// The text of a STEP string literal (without the quotes): printable ASCII only (Part 21
+/// encodes anything else specially; names here need no more), apostrophes and backslashes
+/// doubled.
+fn string(text: &str) -> String {
+    text.chars()
+        .map(|c| {
+            if c.is_ascii_graphic() || c == ' ' {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect::<String>()
+        .replace('\\', "\\\\")
+        .replace('\'', "''")
+}
+
 /// `(a,b,c)` of already formatted items.
 fn list(items: impl IntoIterator<Item = String>) -> String {
     format!("({})", items.into_iter().collect::<Vec<_>>().join(","))
@@ -280,7 +297,7 @@ fn face_entities(out: &mut Entities, surface: &NurbsSurface, context_2d: usize) 
 /// The product structure and the 3-D context (millimetres, radians); returns the numbers of
 /// the product's shape and of the context, for the representation.
 fn product_and_context(out: &mut Entities, name: &str) -> (usize, usize) {
-    let name = name.replace('\'', "''");
+    let name = string(name);
     let application =
         out.add("APPLICATION_CONTEXT('core data for automotive mechanical design processes')");
     out.add(format!(
@@ -326,7 +343,7 @@ fn represent(out: &mut Entities, shape: usize, entity: String) {
 
 /// The exchange structure: header and the numbered entities.
 fn exchange_structure(entities: &Entities, name: &str) -> String {
-    let name = name.replace('\'', "''");
+    let name = string(name);
     let mut s = String::new();
     s.push_str("ISO-10303-21;\nHEADER;\n");
     s.push_str("FILE_DESCRIPTION(('rmfsurf exact rational geometry'),'2;1');\n");
@@ -366,7 +383,7 @@ pub fn surfaces_to_step(surfaces: &[&NurbsSurface], name: &str) -> Result<String
     let model = out.add(format!("SHELL_BASED_SURFACE_MODEL('',(#{shell}))"));
     let representation = format!(
         "MANIFOLD_SURFACE_SHAPE_REPRESENTATION('{}',(#{placement},#{model}),#{context})",
-        name.replace('\'', "''")
+        string(name)
     );
     represent(&mut out, shape, representation);
     Ok(exchange_structure(&out, name))
@@ -383,7 +400,7 @@ pub fn curves_to_step(curves: &[&NurbsCurve], name: &str) -> Result<String> {
     let set = out.add(format!("GEOMETRIC_CURVE_SET('',{})", refs(&ids)));
     let representation = format!(
         "GEOMETRICALLY_BOUNDED_WIREFRAME_SHAPE_REPRESENTATION('{}',(#{set}),#{context})",
-        name.replace('\'', "''")
+        string(name)
     );
     represent(&mut out, shape, representation);
     Ok(exchange_structure(&out, name))
@@ -451,6 +468,7 @@ mod tests {
             assert_eq!(s.parse::<f64>().unwrap(), x, "{s}");
         }
         assert_eq!(real(1e-7), "1.E-7");
+        assert_eq!(string("it's a\\b, ü"), "it''s a\\\\b, _");
         assert_eq!(
             knots_and_multiplicities(&[0.0, 0.0, 0.5, 1.0, 1.0]).1,
             vec![2, 1, 2]
