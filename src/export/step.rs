@@ -218,23 +218,34 @@ fn collapsed(c: &NurbsCurve, tolerance: f64) -> bool {
     c.poles.iter().all(|p| p.distance(c.poles[0]) <= tolerance)
 }
 
-/// Writes the face: surface, vertices, edges (seams shared) and the loop.
-fn face_entities(out: &mut Entities, surface: &NurbsSurface, context_2d: usize) -> usize {
-    let tolerance =
-        SAME_TOLERANCE * bounding_diagonal(surface.poles.iter().copied()).max(f64::MIN_POSITIVE);
-    let surface_id = surface_entity(out, surface);
-    let sides = boundaries(surface);
-    let mut vertices: Vec<(DVec3, usize)> = Vec::new();
-    let mut vertex = |out: &mut Entities, p: DVec3| -> usize {
-        if let Some(&(_, id)) = vertices.iter().find(|(q, _)| q.distance(p) <= tolerance) {
+/// The entities of one face under construction: vertices are shared where boundary curves
+/// meet (and where a closed surface's corners coincide).
+struct Face<'a> {
+    out: &'a mut Entities,
+    surface: usize,
+    context_2d: usize,
+    tolerance: f64,
+    vertices: Vec<(DVec3, usize)>,
+}
+
+impl Face<'_> {
+    fn vertex(&mut self, p: DVec3) -> usize {
+        if let Some(&(_, id)) = self
+            .vertices
+            .iter()
+            .find(|(q, _)| q.distance(p) <= self.tolerance)
+        {
             return id;
         }
-        let point = out.point(p);
-        let id = out.add(format!("VERTEX_POINT('',#{point})"));
-        vertices.push((p, id));
+        let point = self.out.point(p);
+        let id = self.out.add(format!("VERTEX_POINT('',#{point})"));
+        self.vertices.push((p, id));
         id
-    };
-    let pcurve = |out: &mut Entities, side: &Boundary| -> usize {
+    }
+
+    /// The boundary's line in the surface's parameter plane.
+    fn pcurve(&mut self, side: &Boundary) -> usize {
+        let out = &mut *self.out;
         let origin = out.point_2d(side.origin.0, side.origin.1);
         let direction = out.add(format!(
             "DIRECTION('',({},{}))",
@@ -244,9 +255,49 @@ fn face_entities(out: &mut Entities, surface: &NurbsSurface, context_2d: usize) 
         let vector = out.add(format!("VECTOR('',#{direction},1.)"));
         let line = out.add(format!("LINE('',#{origin},#{vector})"));
         let representation = out.add(format!(
-            "DEFINITIONAL_REPRESENTATION('',(#{line}),#{context_2d})"
+            "DEFINITIONAL_REPRESENTATION('',(#{line}),#{})",
+            self.context_2d
         ));
-        out.add(format!("PCURVE('',#{surface_id},#{representation})"))
+        out.add(format!("PCURVE('',#{},#{representation})", self.surface))
+    }
+
+    /// The edge along `side`; with `seam`, the coinciding opposite side, it is a seam
+    /// carrying both parameter lines.
+    fn edge(&mut self, side: &Boundary, seam: Option<&Boundary>) -> usize {
+        let curve = &side.curve;
+        let start = self.vertex(curve.poles[0]);
+        let end = self.vertex(curve.poles[curve.poles.len() - 1]);
+        let geometry = curve_entity(self.out, curve);
+        let mut pcurves = vec![self.pcurve(side)];
+        if let Some(other) = seam {
+            pcurves.push(self.pcurve(other));
+        }
+        let kind = if seam.is_some() {
+            "SEAM_CURVE"
+        } else {
+            "SURFACE_CURVE"
+        };
+        let on_surface = self.out.add(format!(
+            "{kind}('',#{geometry},{},.PCURVE_S1.)",
+            refs(&pcurves)
+        ));
+        self.out
+            .add(format!("EDGE_CURVE('',#{start},#{end},#{on_surface},.T.)"))
+    }
+}
+
+/// Writes the face: surface, vertices, edges (seams shared) and the loop.
+fn face_entities(out: &mut Entities, surface: &NurbsSurface, context_2d: usize) -> usize {
+    let tolerance =
+        SAME_TOLERANCE * bounding_diagonal(surface.poles.iter().copied()).max(f64::MIN_POSITIVE);
+    let surface_id = surface_entity(out, surface);
+    let sides = boundaries(surface);
+    let mut face = Face {
+        out,
+        surface: surface_id,
+        context_2d,
+        tolerance,
+        vertices: Vec::new(),
     };
     // The two sides of a closed direction coincide: (0, 2) when closed in v, (1, 3) in u.
     let seam_of = |k: usize| {
@@ -259,26 +310,11 @@ fn face_entities(out: &mut Entities, surface: &NurbsSurface, context_2d: usize) 
         if collapsed(&sides[k].curve, tolerance) {
             continue;
         }
-        let edge = match (edges[k], seam_of(k)) {
-            (Some(edge), _) => edge,
-            (None, partner) => {
-                let curve = &sides[k].curve;
-                let start = vertex(out, curve.poles[0]);
-                let end = vertex(out, curve.poles[curve.poles.len() - 1]);
-                let geometry = curve_entity(out, curve);
-                let mut pcurves = vec![pcurve(out, &sides[k])];
-                let kind = match partner {
-                    Some(p) => {
-                        pcurves.push(pcurve(out, &sides[p]));
-                        "SEAM_CURVE"
-                    }
-                    None => "SURFACE_CURVE",
-                };
-                let on_surface = out.add(format!(
-                    "{kind}('',#{geometry},{},.PCURVE_S1.)",
-                    refs(&pcurves)
-                ));
-                let edge = out.add(format!("EDGE_CURVE('',#{start},#{end},#{on_surface},.T.)"));
+        let edge = match edges[k] {
+            Some(edge) => edge,
+            None => {
+                let partner = seam_of(k);
+                let edge = face.edge(&sides[k], partner.map(|p| &sides[p]));
                 edges[k] = Some(edge);
                 if let Some(p) = partner {
                     edges[p] = Some(edge);
@@ -287,8 +323,12 @@ fn face_entities(out: &mut Entities, surface: &NurbsSurface, context_2d: usize) 
             }
         };
         let forward = if k < 2 { ".T." } else { ".F." };
-        loop_edges.push(out.add(format!("ORIENTED_EDGE('',*,*,#{edge},{forward})")));
+        loop_edges.push(
+            face.out
+                .add(format!("ORIENTED_EDGE('',*,*,#{edge},{forward})")),
+        );
     }
+    let out = face.out;
     let edge_loop = out.add(format!("EDGE_LOOP('',{})", refs(&loop_edges)));
     let bound = out.add(format!("FACE_OUTER_BOUND('',#{edge_loop},.T.)"));
     out.add(format!("ADVANCED_FACE('',(#{bound}),#{surface_id},.T.)"))
