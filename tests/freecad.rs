@@ -45,6 +45,9 @@ fn freecad_reads_our_files_and_builds_exact_part_objects() {
         .env("RMFSURF_EXAMPLES", root().join("examples/cli"))
         .env("RMFSURF_FILES", &files)
         .env("RMFSURF_WORK", &work)
+        // FreeCAD keeps its settings under $HOME: each run gets its own, untouched by the
+        // user's (and by the other test running at the same time).
+        .env("HOME", &work)
         .output()
         .unwrap_or_else(|e| panic!("cannot run freecadcmd ({e}): {SETUP_HINT}"));
     let stdout = String::from_utf8_lossy(&out.stdout);
@@ -77,6 +80,7 @@ fn readme_freecad_example_runs() {
         .arg("readme_example.py")
         .current_dir(&dir)
         .env("RMFSURF_LIBRARY", toolchain().lib_dir.join("librmfsurf.so"))
+        .env("HOME", &dir)
         .output()
         .unwrap_or_else(|e| panic!("cannot run freecadcmd ({e}): {SETUP_HINT}"));
     let stdout = String::from_utf8_lossy(&out.stdout);
