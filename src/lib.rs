@@ -11,11 +11,13 @@
 //! | [`hermite`] | validated G1 Hermite data (points + unit tangents) |
 //! | [`frames`] | Frenet frames, the double-reflection RMF (the reference), rational frames, metrics |
 //! | [`mesh`] | triangle meshes of surfaces on the patch grid |
+//! | [`solid`] | closed, outward-oriented meshes: capped tubes, thickened sheets |
 //! | [`mobius`] | Möbius maps, exact images of curves and frames, rational-RMF curves (Bartoň et al.) |
 //! | [`sweep`] | sweep surfaces x + c₂ f₂ + c₃ f₃ with exact rational frames |
 //! | [`ph_cubic`] | PH cubic splines, their exact and rational RMFs, profile-surface analysis (Mäurer & Jüttler) |
 //! | [`rrmf_quintic`] | quintics with exact rational RMFs by G1 Hermite interpolation (Farouki, Giannelli & Sestini) |
 //! | [`cone_spline`] | cone spline surfaces: G1 cone pairs, approximation of developables, development, bending, offsets |
+//! | [`export`] | STEP, VTK, OBJ, OpenSCAD, SVG and DXF files |
 //! | `ffi` | the C API: handles, status codes, last error, panic boundary |
 //!
 //! The geometry lives in safe Rust and knows nothing of C; a Rust user calls it directly.
@@ -29,6 +31,8 @@ pub mod cone_spline;
 pub mod curve;
 /// cbindgen:ignore
 mod error;
+/// cbindgen:ignore
+pub mod export;
 pub mod ffi;
 /// cbindgen:ignore
 pub mod frames;
@@ -44,6 +48,8 @@ pub mod mobius;
 pub mod ph_cubic;
 /// cbindgen:ignore
 pub mod rrmf_quintic;
+/// cbindgen:ignore
+pub mod solid;
 /// cbindgen:ignore
 pub mod sweep;
 #[cfg(test)]

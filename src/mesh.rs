@@ -91,6 +91,21 @@ pub fn tessellate(
     })
 }
 
+/// Unit normals s_u × s_v / |s_u × s_v| at the points of `tessellate(surface, u_steps,
+/// v_steps)`, in the same order; zero where the surface is singular.
+pub fn grid_normals(surface: &PiecewiseSurface, u_steps: usize, v_steps: usize) -> Vec<DVec3> {
+    let vs = grid_parameters(surface.v_breaks(), v_steps);
+    grid_parameters(surface.u_breaks(), u_steps)
+        .iter()
+        .flat_map(|&u| {
+            vs.iter().map(move |&v| {
+                let jet = surface.eval_jet(u, v);
+                jet.du.cross(jet.dv).normalize_or_zero()
+            })
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -134,6 +149,7 @@ mod tests {
             })
             .sum();
         assert!((area - 1.0).abs() < 1e-14);
+        assert!(grid_normals(&s, 3, 2).iter().all(|n| *n == DVec3::Z));
         assert!(tessellate(&s, 0, 2).is_err());
         assert!(mesh_size(&s, usize::MAX, 2).is_err());
     }

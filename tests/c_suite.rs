@@ -15,155 +15,11 @@
 //! them. Missing system packages make the tests fail with a message naming the setup
 //! command (README), never skip.
 
-use std::path::{Path, PathBuf};
+mod support;
+
+use std::path::Path;
 use std::process::Command;
-use std::sync::OnceLock;
-
-const SETUP_HINT: &str =
-    "run the README's test command (scripts/test), which installs the Debian packages";
-
-struct Toolchain {
-    cc: PathBuf,
-    cxx: PathBuf,
-    /// target/<profile>, where cargo put librmfsurf.so.
-    lib_dir: PathBuf,
-    /// Where the test programs go.
-    out_dir: PathBuf,
-}
-
-fn root() -> &'static Path {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-}
-
-/// Builds the cdylib (cargo test itself only builds the rlib) and finds the compilers; once.
-fn toolchain() -> &'static Toolchain {
-    static TOOLCHAIN: OnceLock<Toolchain> = OnceLock::new();
-    TOOLCHAIN.get_or_init(|| {
-        let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
-        let status = Command::new(cargo)
-            .args(["build", "--lib", "--quiet"])
-            .current_dir(root())
-            .status()
-            .expect("cargo runs");
-        assert!(status.success(), "cargo build --lib failed");
-        // The test binary lives in target/<profile>/deps.
-        let exe = std::env::current_exe().expect("test binary path");
-        let lib_dir = exe
-            .parent()
-            .and_then(Path::parent)
-            .expect("target/<profile>")
-            .to_path_buf();
-        assert!(
-            lib_dir.join("librmfsurf.so").exists(),
-            "librmfsurf.so not found in {}",
-            lib_dir.display()
-        );
-        let out_dir = lib_dir.join("c_tests");
-        std::fs::create_dir_all(&out_dir).expect("output directory");
-        let compiler = |cpp: bool| {
-            cc::Build::new()
-                .cpp(cpp)
-                .target(env!("RMFSURF_TARGET"))
-                .host(env!("RMFSURF_HOST"))
-                .opt_level(1)
-                .debug(true)
-                .cargo_metadata(false)
-                .out_dir(&out_dir)
-                .try_get_compiler()
-                .expect("a C/C++ compiler (gcc, g++)")
-                .path()
-                .to_path_buf()
-        };
-        Toolchain {
-            cc: compiler(false),
-            cxx: compiler(true),
-            lib_dir,
-            out_dir,
-        }
-    })
-}
-
-/// The VTK include directory (/usr/include/vtk-X.Y) and its version suffix.
-fn vtk() -> (PathBuf, String) {
-    let dir = std::fs::read_dir("/usr/include")
-        .ok()
-        .and_then(|entries| {
-            entries
-                .filter_map(Result::ok)
-                .map(|e| e.path())
-                .filter(|p| p.join("vtkCurvatures.h").exists())
-                .max()
-        })
-        .unwrap_or_else(|| panic!("VTK headers (libvtk9-dev) not found: {SETUP_HINT}"));
-    let version = dir
-        .file_name()
-        .and_then(|n| n.to_str())
-        .and_then(|n| n.strip_prefix("vtk-"))
-        .expect("vtk-X.Y")
-        .to_string();
-    (dir, version)
-}
-
-const STRICT: &[&str] = &["-Wall", "-Wextra", "-Wpedantic", "-Werror"];
-
-/// Compiles `sources` (relative to c_tests/) into `name` with `flags`, linked against
-/// librmfsurf and `libs`.
-fn build(name: &str, cpp: bool, sources: &[&str], flags: &[&str], libs: &[String]) -> PathBuf {
-    let tc = toolchain();
-    let exe = tc.out_dir.join(name);
-    let mut cmd = Command::new(if cpp { &tc.cxx } else { &tc.cc });
-    cmd.args(flags)
-        .arg("-g")
-        .arg("-I")
-        .arg(root().join("include"))
-        .arg("-I")
-        .arg(root().join("c_tests"));
-    cmd.args(sources.iter().map(|s| root().join(s)));
-    cmd.arg("-o")
-        .arg(&exe)
-        .arg("-L")
-        .arg(&tc.lib_dir)
-        .arg("-lrmfsurf");
-    cmd.arg(format!("-Wl,-rpath,{}", tc.lib_dir.display()));
-    cmd.args(libs).arg("-lm");
-    let out = cmd.output().expect("compiler runs");
-    assert!(
-        out.status.success(),
-        "compiling {name} failed:\n{:?}\n{}",
-        cmd,
-        String::from_utf8_lossy(&out.stderr)
-    );
-    exe
-}
-
-/// Runs a test program (optionally under valgrind), echoes its output and asserts success.
-fn run(exe: &Path, valgrind: bool) {
-    let mut cmd = if valgrind {
-        let mut c = Command::new("valgrind");
-        c.args([
-            "--quiet",
-            "--error-exitcode=99",
-            "--leak-check=full",
-            "--errors-for-leak-kinds=definite,indirect",
-            "--show-leak-kinds=definite,indirect",
-        ]);
-        c.arg(exe);
-        c
-    } else {
-        Command::new(exe)
-    };
-    let out = cmd
-        .output()
-        .unwrap_or_else(|e| panic!("cannot run {} ({e}): {SETUP_HINT}", exe.display()));
-    print!("{}", String::from_utf8_lossy(&out.stdout));
-    eprint!("{}", String::from_utf8_lossy(&out.stderr));
-    assert!(
-        out.status.success(),
-        "{} failed with {}",
-        exe.display(),
-        out.status
-    );
-}
+use support::{build, root, run, toolchain, vtk_flags, SETUP_HINT, STRICT};
 
 #[test]
 fn header_compiles_alone_as_c99_and_cpp() {
@@ -252,20 +108,14 @@ fn geometry_suites_with_openmesh_and_vtk() {
         Path::new("/usr/include/OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh").exists(),
         "OpenMesh headers (libopenmesh-dev) not found: {SETUP_HINT}"
     );
-    let (vtk_dir, version) = vtk();
-    // VTK's own headers are not -Wpedantic clean: include them as system headers.
-    let vtk_include = format!("-isystem{}", vtk_dir.display());
-    let mut flags = vec!["-std=c++17", vtk_include.as_str()];
-    flags.extend(STRICT);
-    let mut libs: Vec<String> = [
+    let (vtk_include, mut libs) = vtk_flags(&[
         "CommonCore",
         "CommonDataModel",
         "CommonExecutionModel",
         "FiltersGeneral",
-    ]
-    .iter()
-    .map(|m| format!("-lvtk{m}-{version}"))
-    .collect();
+    ]);
+    let mut flags = vec!["-std=c++17", vtk_include.as_str()];
+    flags.extend(STRICT);
     libs.push("-lOpenMeshCore".into());
     for name in suites("geometry_", ".cpp") {
         let source = format!("c_tests/{name}");

@@ -5,6 +5,7 @@
 use super::curve::{CurveJet, RationalBezierCurve};
 use super::surface::{RationalBezierPatch, SurfaceJet};
 use crate::error::{invalid, Result};
+use crate::math::GaussLegendre;
 use glam::DVec3;
 
 /// Relative tolerance for parameters that fall just outside a domain by round-off.
@@ -123,6 +124,16 @@ impl PiecewiseCurve {
     pub fn eval(&self, t: f64) -> DVec3 {
         let (k, s) = self.locate(t);
         self.segments[k].eval(s)
+    }
+
+    /// The arc length, by 24-point Gauss–Legendre quadrature on every segment (exact to
+    /// round-off for the smooth speeds of rational segments of moderate degree).
+    pub fn arc_length(&self) -> f64 {
+        let rule = GaussLegendre::new(24);
+        self.breaks
+            .windows(2)
+            .map(|w| rule.integrate(w[0], w[1], |t| self.eval_jet(t).d1.length()))
+            .sum()
     }
 
     /// Point and derivatives with respect to the global parameter.

@@ -141,17 +141,6 @@ mod tests {
     use super::super::pair::Rule;
     use super::super::test_support::{cubic_hermite, tangent_surface, twisted_cubic, Helix};
     use super::*;
-    use crate::bezier::PiecewiseCurve;
-    use crate::math::GaussLegendre;
-
-    fn length(curve: &PiecewiseCurve) -> f64 {
-        let rule = GaussLegendre::new(24);
-        curve
-            .breaks()
-            .windows(2)
-            .map(|w| rule.integrate(w[0], w[1], |v| curve.eval_jet(v).d1.length()))
-            .sum()
-    }
 
     fn splines() -> Vec<ConeSpline> {
         let helix = Helix {
@@ -199,8 +188,8 @@ mod tests {
                 let surface = bent.surface(t0, t1).unwrap();
                 for t in [t0, t1] {
                     let (a, b) = (
-                        length(&spline.boundary(t).unwrap()),
-                        length(&bent.boundary(t).unwrap()),
+                        spline.boundary(t).unwrap().arc_length(),
+                        bent.boundary(t).unwrap().arc_length(),
                     );
                     assert!(
                         (a - b).abs() < 1e-12 * a,

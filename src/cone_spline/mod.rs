@@ -16,6 +16,7 @@
 //! | [`osculating`] | osculating cones and their joining cones | (3), (14), Figs. 13–15 |
 //! | [`develop`] | bending sequences and the exact development | φ sin α = const, Figs. 16–17 |
 //! | [`offset`] | offsets, again cone splines | "Introduction" |
+//! | [`pattern`] | the flat pattern of a strip: lines and circular arcs for cutting | Figs. 16–17 |
 
 pub mod approximate;
 pub mod biarc;
@@ -25,6 +26,7 @@ pub mod element;
 mod offset;
 pub mod osculating;
 pub mod pair;
+pub mod pattern;
 pub mod piece;
 pub mod region;
 pub mod spline;
@@ -33,6 +35,7 @@ mod surface;
 pub use approximate::{approximate, Approximation};
 pub use element::Element;
 pub use pair::{cone_pair, ConePair, PairCase, Rule};
+pub use pattern::{FlatPattern, PatternEdge};
 pub use piece::{ConePiece, Motion, PieceKind};
 pub use region::Region;
 pub use spline::ConeSpline;

@@ -36,7 +36,7 @@ impl ConeSpline {
     }
 
     /// Checks bounds: finite, t₀ < t₁, and no vertex on a ruling segment of the strip.
-    fn check_bounds(&self, t0: f64, t1: f64) -> Result<()> {
+    pub(super) fn check_bounds(&self, t0: f64, t1: f64) -> Result<()> {
         if !(t0.is_finite() && t1.is_finite()) || t0 >= t1 {
             return invalid!("t_min = {t0}, t_max = {t1} must be finite with t_min < t_max");
         }

@@ -9,6 +9,21 @@ use glam::DVec3;
 /// Relative size below which a projected vector counts as zero.
 const PARALLEL_TOLERANCE: f64 = 1e-12;
 
+/// The length of the diagonal of the axis-aligned box around `points` (a model's size,
+/// for relative tolerances); 0 for no points.
+pub fn bounding_diagonal(points: impl IntoIterator<Item = DVec3>) -> f64 {
+    let (lo, hi) = points
+        .into_iter()
+        .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), p| {
+            (lo.min(p), hi.max(p))
+        });
+    if lo.x > hi.x {
+        0.0
+    } else {
+        (hi - lo).length()
+    }
+}
+
 /// `v` itself if all its components are finite.
 pub fn check_finite(v: DVec3, name: &str) -> Result<DVec3> {
     if v.is_finite() {

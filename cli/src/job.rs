@@ -1,0 +1,379 @@
+//! What the input JSON asks for, read into typed values. Every value is checked here, and
+//! every error names its field (see `--help` for the schema).
+
+use crate::json::{Field, InputResult};
+use glam::DVec3;
+use rmfsurf::bezier::{NurbsCurve, NurbsSurface};
+use rmfsurf::cone_spline::Element;
+use std::f64::consts::FRAC_1_SQRT_2;
+
+/// How the frames along the spine are made.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Method {
+    /// PH cubic spline, rational approximation of its RMF (Mäurer & Jüttler).
+    PhRmf,
+    /// PH cubic spline, its rational Frenet frame (for comparison: not rotation-minimizing).
+    Frenet,
+    /// Degree-6 curves with exact rational RMFs by Möbius maps (Bartoň, Jüttler & Wang).
+    Mobius,
+    /// RRMF quintics with exact rational RMFs (Farouki, Giannelli & Sestini).
+    Rrmf,
+}
+
+pub const METHODS: [(&str, Method); 4] = [
+    ("ph-rmf", Method::PhRmf),
+    ("frenet", Method::Frenet),
+    ("mobius", Method::Mobius),
+    ("rrmf", Method::Rrmf),
+];
+
+/// The spine as given.
+#[derive(Clone, Debug)]
+pub enum Spine {
+    /// A curve to approximate within the tolerance.
+    Nurbs(NurbsCurve),
+    /// G1 Hermite data to interpolate.
+    Hermite {
+        points: Vec<DVec3>,
+        tangents: Vec<DVec3>,
+    },
+}
+
+#[derive(Clone, Debug)]
+pub struct SweepJob {
+    pub spine: Spine,
+    pub method: Method,
+    pub tolerance: f64,
+    pub initial_normal: DVec3,
+    /// In the normal plane: x along f₂, y along f₃.
+    pub profile: NurbsCurve,
+    /// A single straight segment: the sweep is developable.
+    pub profile_is_line: bool,
+}
+
+/// The developable surface a cone spline approximates (or the elements it interpolates).
+#[derive(Clone, Debug)]
+pub enum Developable {
+    TangentSurface {
+        curve: NurbsCurve,
+        v_min: f64,
+        v_max: f64,
+    },
+    Ruled(NurbsSurface),
+    Elements(Vec<Element>),
+}
+
+#[derive(Clone, Debug)]
+pub struct ConeJob {
+    pub developable: Developable,
+    pub tolerance: f64,
+    pub max_pieces: usize,
+    /// The strip: signed distances along the rulings from the reference points.
+    pub t_min: f64,
+    pub t_max: f64,
+}
+
+#[derive(Clone, Debug)]
+pub enum Construction {
+    Sweep(SweepJob),
+    ConeSpline(ConeJob),
+}
+
+/// How the surface is tessellated for meshes and solids.
+#[derive(Clone, Copy, Debug)]
+pub struct MeshOptions {
+    pub u_steps: usize,
+    pub v_steps: usize,
+    /// For solids of open surfaces (sheets): the sheet thickness.
+    pub thickness: Option<f64>,
+}
+
+#[derive(Clone, Debug)]
+pub struct Job {
+    pub construction: Construction,
+    pub mesh: MeshOptions,
+}
+
+/// Largest tessellation steps per patch accepted from the input.
+const MAX_STEPS: usize = 1000;
+
+impl Job {
+    pub fn read(root: &Field) -> InputResult<Self> {
+        root.only(&["sweep", "cone_spline", "mesh"])?;
+        let (kind, body) = root.variant_of(&["sweep", "cone_spline"], &["mesh"])?;
+        let construction = match kind {
+            "sweep" => Construction::Sweep(read_sweep(&body)?),
+            _ => Construction::ConeSpline(read_cone(&body)?),
+        };
+        Ok(Self {
+            construction,
+            mesh: read_mesh(root)?,
+        })
+    }
+}
+
+fn read_mesh(root: &Field) -> InputResult<MeshOptions> {
+    let mut options = MeshOptions {
+        u_steps: 8,
+        v_steps: 8,
+        thickness: None,
+    };
+    if let Some(mesh) = root.optional("mesh")? {
+        mesh.only(&["u_steps", "v_steps", "thickness"])?;
+        if let Some(f) = mesh.optional("u_steps")? {
+            options.u_steps = f.count(1, MAX_STEPS)?;
+        }
+        if let Some(f) = mesh.optional("v_steps")? {
+            options.v_steps = f.count(1, MAX_STEPS)?;
+        }
+        options.thickness = mesh
+            .optional("thickness")?
+            .map(|f| f.positive())
+            .transpose()?;
+    }
+    Ok(options)
+}
+
+fn read_sweep(sweep: &Field) -> InputResult<SweepJob> {
+    sweep.only(&["spine", "method", "tolerance", "initial_normal", "profile"])?;
+    let method = match sweep.optional("method")? {
+        None => Method::PhRmf,
+        Some(f) => {
+            let name = f.string()?;
+            match METHODS.iter().find(|(n, _)| *n == name) {
+                Some(&(_, m)) => m,
+                None => {
+                    let names: Vec<&str> = METHODS.iter().map(|(n, _)| *n).collect();
+                    return f.error(format!(
+                        "unknown method \"{name}\"; expected one of {}",
+                        names.join(", ")
+                    ));
+                }
+            }
+        }
+    };
+    let (profile, profile_is_line) = read_profile(&sweep.required("profile")?)?;
+    Ok(SweepJob {
+        spine: read_spine(&sweep.required("spine")?)?,
+        method,
+        tolerance: read_tolerance(sweep)?,
+        initial_normal: match sweep.optional("initial_normal")? {
+            Some(f) => f.vec3()?,
+            None => DVec3::Z,
+        },
+        profile,
+        profile_is_line,
+    })
+}
+
+fn read_tolerance(parent: &Field) -> InputResult<f64> {
+    parent
+        .optional("tolerance")?
+        .map_or(Ok(1e-4), |f| f.positive())
+}
+
+fn read_spine(spine: &Field) -> InputResult<Spine> {
+    let (kind, body) = spine.variant_of(&["nurbs", "points"], &["tangents"])?;
+    if kind == "nurbs" {
+        return Ok(Spine::Nurbs(read_nurbs_curve(&body, false)?));
+    }
+    let points = vectors(&body)?;
+    let tangents_field = spine.required("tangents")?;
+    let tangents = vectors(&tangents_field)?;
+    if tangents.len() != points.len() {
+        return tangents_field.error(format!(
+            "{} tangents for {} points",
+            tangents.len(),
+            points.len()
+        ));
+    }
+    Ok(Spine::Hermite { points, tangents })
+}
+
+fn vectors(field: &Field) -> InputResult<Vec<DVec3>> {
+    field.array()?.iter().map(Field::vec3).collect()
+}
+
+/// `{"degree", "poles", "weights" (optional), "knots"}`; `planar`: poles may be [x, y].
+fn read_nurbs_curve(nurbs: &Field, planar: bool) -> InputResult<NurbsCurve> {
+    nurbs.only(&["degree", "poles", "weights", "knots"])?;
+    let degree = nurbs
+        .required("degree")?
+        .count(1, rmfsurf::bezier::MAX_DEGREE)?;
+    let poles = nurbs
+        .required("poles")?
+        .array()?
+        .iter()
+        .map(|f| if planar { f.point_2d() } else { f.vec3() })
+        .collect::<InputResult<Vec<_>>>()?;
+    let weights = nurbs
+        .optional("weights")?
+        .map(|f| f.numbers())
+        .transpose()?;
+    let knots = nurbs.required("knots")?.numbers()?;
+    NurbsCurve::new(degree, poles, weights, knots).or_else(|e| nurbs.error(e.message()))
+}
+
+/// `{"degree_u", "degree_v", "poles": rows (one per u index) of [x, y, z], "weights" (rows,
+/// optional), "knots_u", "knots_v"}`.
+fn read_nurbs_surface(nurbs: &Field) -> InputResult<NurbsSurface> {
+    nurbs.only(&[
+        "degree_u", "degree_v", "poles", "weights", "knots_u", "knots_v",
+    ])?;
+    let degree = |key: &str| nurbs.required(key)?.count(1, rmfsurf::bezier::MAX_DEGREE);
+    let rows_field = nurbs.required("poles")?;
+    let rows: Vec<Vec<DVec3>> = rows_field
+        .array()?
+        .iter()
+        .map(vectors)
+        .collect::<InputResult<_>>()?;
+    let columns = rows.first().map_or(0, Vec::len);
+    if rows.iter().any(|r| r.len() != columns) {
+        return rows_field.error("every row of poles must have the same length");
+    }
+    let weights = match nurbs.optional("weights")? {
+        Some(f) => Some(
+            f.array()?
+                .iter()
+                .map(Field::numbers)
+                .collect::<InputResult<Vec<_>>>()?
+                .concat(),
+        ),
+        None => None,
+    };
+    NurbsSurface::new(
+        degree("degree_u")?,
+        degree("degree_v")?,
+        rows.len(),
+        columns,
+        rows.concat(),
+        weights,
+        nurbs.required("knots_u")?.numbers()?,
+        nurbs.required("knots_v")?.numbers()?,
+    )
+    .or_else(|e| nurbs.error(e.message()))
+}
+
+/// The profile and whether it is one straight segment.
+fn read_profile(profile: &Field) -> InputResult<(NurbsCurve, bool)> {
+    let (kind, body) = profile.variant(&["circle", "line", "polygon", "nurbs"])?;
+    let curve = match kind {
+        "circle" => {
+            body.only(&["radius", "center"])?;
+            let radius = body.required("radius")?.positive()?;
+            let center = body
+                .optional("center")?
+                .map_or(Ok(DVec3::ZERO), |f| f.point_2d())?;
+            circle(center, radius)
+        }
+        "line" => {
+            body.only(&["from", "to"])?;
+            let ends = [
+                body.required("from")?.point_2d()?,
+                body.required("to")?.point_2d()?,
+            ];
+            polyline(&ends)
+        }
+        "polygon" => {
+            let mut corners = body
+                .array()?
+                .iter()
+                .map(Field::point_2d)
+                .collect::<InputResult<Vec<_>>>()?;
+            if corners.len() < 3 {
+                return body.error(format!("needs at least 3 corners, got {}", corners.len()));
+            }
+            corners.push(corners[0]);
+            polyline(&corners)
+        }
+        _ => return Ok((read_nurbs_curve(&body, true)?, false)),
+    };
+    let curve = curve.or_else(|e| body.error(e.message()))?;
+    Ok((curve, kind == "line"))
+}
+
+/// The full circle as a degree-2 NURBS of four quarters (weights 1, 1/√2, 1).
+fn circle(center: DVec3, radius: f64) -> rmfsurf::Result<NurbsCurve> {
+    let corners = [
+        (1.0, 0.0),
+        (1.0, 1.0),
+        (0.0, 1.0),
+        (-1.0, 1.0),
+        (-1.0, 0.0),
+        (-1.0, -1.0),
+        (0.0, -1.0),
+        (1.0, -1.0),
+        (1.0, 0.0),
+    ];
+    let poles = corners
+        .iter()
+        .map(|&(x, y)| center + radius * DVec3::new(x, y, 0.0))
+        .collect();
+    let weights = (0..9)
+        .map(|k| if k % 2 == 1 { FRAC_1_SQRT_2 } else { 1.0 })
+        .collect();
+    let knots = vec![0.0, 0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 3.0, 3.0, 4.0, 4.0, 4.0];
+    NurbsCurve::new(2, poles, Some(weights), knots)
+}
+
+/// Straight segments through `points`, one knot interval each.
+fn polyline(points: &[DVec3]) -> rmfsurf::Result<NurbsCurve> {
+    let n = points.len();
+    let mut knots = vec![0.0];
+    knots.extend((0..n).map(|k| k as f64));
+    knots.push((n - 1) as f64);
+    NurbsCurve::new(1, points.to_vec(), None, knots)
+}
+
+fn read_cone(cone: &Field) -> InputResult<ConeJob> {
+    cone.only(&["developable", "tolerance", "max_pieces", "strip"])?;
+    let developable = cone.required("developable")?;
+    let (kind, body) = developable.variant(&["tangent_surface", "ruled", "elements"])?;
+    let developable = match kind {
+        "tangent_surface" => {
+            body.only(&["curve", "v_min", "v_max"])?;
+            let curve = body.required("curve")?;
+            let (_, nurbs) = curve.variant(&["nurbs"])?;
+            Developable::TangentSurface {
+                curve: read_nurbs_curve(&nurbs, false)?,
+                v_min: body.required("v_min")?.number()?,
+                v_max: body.required("v_max")?.number()?,
+            }
+        }
+        "ruled" => {
+            let (_, nurbs) = body.variant(&["nurbs"])?;
+            Developable::Ruled(read_nurbs_surface(&nurbs)?)
+        }
+        _ => Developable::Elements(
+            body.array()?
+                .iter()
+                .map(read_element)
+                .collect::<InputResult<_>>()?,
+        ),
+    };
+    let strip = cone.required("strip")?;
+    strip.only(&["t_min", "t_max"])?;
+    let (t_min, t_max) = (
+        strip.required("t_min")?.number()?,
+        strip.required("t_max")?.number()?,
+    );
+    if t_min >= t_max {
+        return strip.error(format!("t_min = {t_min} must be less than t_max = {t_max}"));
+    }
+    Ok(ConeJob {
+        developable,
+        tolerance: read_tolerance(cone)?,
+        max_pieces: cone
+            .optional("max_pieces")?
+            .map_or(Ok(10_000), |f| f.count(2, 1_000_000))?,
+        t_min,
+        t_max,
+    })
+}
+
+fn read_element(field: &Field) -> InputResult<Element> {
+    field.only(&["point", "ruling", "side"])?;
+    let v = |key: &str| field.required(key)?.vec3();
+    Element::new(v("point")?, v("ruling")?, v("side")?, field.path())
+        .or_else(|e| field.error(e.message()))
+}

@@ -1,0 +1,179 @@
+//! The files the tool writes, chosen by extension, and writing them all-or-nothing: every
+//! file is first written beside its destination under a temporary name, and renamed only
+//! when all of them were written, so a failure leaves no partial output behind.
+
+use crate::construct::Outcome;
+use crate::job::MeshOptions;
+use crate::summary::{json_text, Summary};
+use rmfsurf::bezier::{NurbsCurve, NurbsSurface, PiecewiseSurface};
+use rmfsurf::export::{dxf, obj, openscad, step, svg, vtk};
+use rmfsurf::mesh::{grid_normals, grid_parameters, tessellate};
+use rmfsurf::solid::closed_mesh;
+use std::fs;
+use std::path::{Path, PathBuf};
+
+/// What a file holds, by its extension.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Format {
+    Step,
+    Vtp,
+    Obj,
+    Scad,
+    Svg,
+    Dxf,
+    Json,
+}
+
+pub const EXTENSIONS: &str = ".step/.stp, .vtp, .obj, .scad, .svg, .dxf, .json";
+
+impl Format {
+    pub fn of(path: &Path) -> Option<Self> {
+        let extension = path.extension()?.to_str()?.to_ascii_lowercase();
+        Some(match extension.as_str() {
+            "step" | "stp" => Format::Step,
+            "vtp" => Format::Vtp,
+            "obj" => Format::Obj,
+            "scad" => Format::Scad,
+            "svg" => Format::Svg,
+            "dxf" => Format::Dxf,
+            "json" => Format::Json,
+            _ => return None,
+        })
+    }
+
+    /// Flat patterns exist only for developments (cone splines).
+    pub fn is_pattern(self) -> bool {
+        matches!(self, Format::Svg | Format::Dxf)
+    }
+}
+
+/// The product name written into files: the output's file stem.
+fn title(path: &Path) -> String {
+    path.file_stem()
+        .and_then(|s| s.to_str())
+        .unwrap_or("rmfsurf")
+        .to_string()
+}
+
+fn surface_of(outcome: &Outcome) -> &PiecewiseSurface {
+    match outcome {
+        Outcome::Sweep(o) => &o.surface,
+        Outcome::ConeSpline(o) => &o.surface,
+    }
+}
+
+/// The text of the file `path` in `format`.
+pub fn render(
+    path: &Path,
+    format: Format,
+    outcome: &Outcome,
+    summary: &Summary,
+    mesh: &MeshOptions,
+) -> rmfsurf::Result<String> {
+    let name = title(path);
+    let surface = surface_of(outcome);
+    let (u, v) = (mesh.u_steps, mesh.v_steps);
+    Ok(match format {
+        Format::Step => {
+            let nurbs = NurbsSurface::from_piecewise(surface).map_err(|e| {
+                rmfsurf::Error::InvalidInput(format!(
+                    "the surface is not one continuous NURBS ({}); Frenet frames jump at the spine's joints",
+                    e.message()
+                ))
+            })?;
+            step::surfaces_to_step(&[&nurbs], &name)?
+        }
+        Format::Vtp => {
+            let m = tessellate(surface, u, v)?;
+            vtk::mesh_to_vtp(&m.points, &m.triangles, Some(&grid_normals(surface, u, v)))
+        }
+        Format::Obj => {
+            let m = tessellate(surface, u, v)?;
+            obj::mesh_to_obj(
+                &name,
+                &m.points,
+                &m.triangles,
+                Some(&grid_normals(surface, u, v)),
+            )
+        }
+        Format::Scad => {
+            let solid =
+                closed_mesh(surface, u, v, mesh.thickness).map_err(|e| match mesh.thickness {
+                    None => rmfsurf::Error::InvalidInput(format!(
+                        "{} (give mesh.thickness)",
+                        e.message()
+                    )),
+                    Some(_) => e,
+                })?;
+            let placements = match outcome {
+                Outcome::Sweep(o) => Some(
+                    grid_parameters(o.surface.v_breaks(), v)
+                        .into_iter()
+                        .map(|t| (o.spine.eval(t), o.frames.frame(t)))
+                        .collect::<Vec<_>>(),
+                ),
+                Outcome::ConeSpline(_) => None,
+            };
+            openscad::solid_to_scad(&name, &solid, placements.as_deref())
+        }
+        Format::Svg | Format::Dxf => {
+            let Outcome::ConeSpline(o) = outcome else {
+                unreachable!("checked before the construction")
+            };
+            if format == Format::Svg {
+                svg::pattern_to_svg(&name, &o.pattern)
+            } else {
+                dxf::pattern_to_dxf(&o.pattern)
+            }
+        }
+        Format::Json => json_text(summary),
+    })
+}
+
+/// The curves of `--curves`: the spine of a sweep, the two boundary arc splines of a cone
+/// spline strip.
+pub fn render_curves(path: &Path, outcome: &Outcome) -> rmfsurf::Result<String> {
+    let curves = match outcome {
+        Outcome::Sweep(o) => vec![NurbsCurve::from_piecewise(&o.spine)?],
+        Outcome::ConeSpline(o) => vec![
+            NurbsCurve::from_piecewise(&o.spline.boundary(o.t_min)?)?,
+            NurbsCurve::from_piecewise(&o.spline.boundary(o.t_max)?)?,
+        ],
+    };
+    step::curves_to_step(&curves.iter().collect::<Vec<_>>(), &title(path))
+}
+
+/// `dir/.name.rmfsurf-<pid>.tmp` beside `path`.
+fn temporary(path: &Path) -> PathBuf {
+    let name = path
+        .file_name()
+        .and_then(|n| n.to_str())
+        .unwrap_or("output");
+    path.with_file_name(format!(".{name}.rmfsurf-{}.tmp", std::process::id()))
+}
+
+/// Writes every file or none (see the module notes); the error names the file.
+pub fn write_all(files: &[(PathBuf, String)]) -> Result<(), String> {
+    let mut written: Vec<(PathBuf, &Path)> = Vec::with_capacity(files.len());
+    let clean = |written: &[(PathBuf, &Path)]| {
+        for (temp, _) in written {
+            let _ = fs::remove_file(temp);
+        }
+    };
+    for (path, text) in files {
+        let temp = temporary(path);
+        if let Err(e) = fs::write(&temp, text) {
+            let _ = fs::remove_file(&temp);
+            clean(&written);
+            return Err(format!("cannot write {}: {e}", path.display()));
+        }
+        written.push((temp, path));
+    }
+    for (k, (temp, path)) in written.iter().enumerate() {
+        if let Err(e) = fs::rename(temp, path) {
+            clean(&written[k..]);
+            return Err(format!("cannot write {}: {e}", path.display()));
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,288 @@
+//! The accuracy figures of a construction, measured on its result: for sweeps the spine's
+//! distance from its input, the frames' rotation-minimizing defect and orthonormality (and,
+//! for PH cubic RMFs, the angle to the exact RMF), the surface's parameter-line
+//! orthogonality and, for line profiles, its developability; for cone splines the fit
+//! deviation, developability, and the isometry of the development (boundary and ruling
+//! lengths, ruling–boundary angles, flatness).
+
+use crate::construct::{ConeOutcome, Outcome, SweepOutcome};
+use crate::job::{Construction, Job, Method};
+use rmfsurf::bezier::{NurbsSurface, PiecewiseSurface};
+use rmfsurf::cone_spline::developable::max_scaled_curvature;
+use rmfsurf::cone_spline::{PatternEdge, PieceKind};
+use rmfsurf::frames::metrics::{orthonormality_error, parameter_line_cosine, rmf_defect};
+use rmfsurf::frames::{FrameField, FrameKind};
+use rmfsurf::math::angle_between;
+use rmfsurf::mesh::grid_parameters;
+use rmfsurf::ph_cubic::accuracy::angle_errors;
+use serde_json::{json, Map, Value};
+use std::sync::Arc;
+
+/// Samples per frame piece (defect, orthonormality) and per patch (surface measures).
+const SAMPLES: usize = 32;
+const SURFACE_SAMPLES: usize = 8;
+
+/// One figure: a JSON key, a label for people, a value.
+pub struct Figure {
+    pub key: &'static str,
+    pub label: &'static str,
+    pub value: Value,
+}
+
+fn figure(key: &'static str, label: &'static str, value: impl Into<Value>) -> Figure {
+    Figure {
+        key,
+        label,
+        value: value.into(),
+    }
+}
+
+pub struct Summary {
+    pub figures: Vec<Figure>,
+}
+
+impl Summary {
+    pub fn of(job: &Job, outcome: &Outcome) -> rmfsurf::Result<Self> {
+        let figures = match (&job.construction, outcome) {
+            (Construction::Sweep(j), Outcome::Sweep(o)) => {
+                sweep_figures(j.method, j.profile_is_line, o)?
+            }
+            (_, Outcome::ConeSpline(o)) => cone_figures(o)?,
+            _ => unreachable!("the outcome matches the job"),
+        };
+        Ok(Self { figures })
+    }
+
+    pub fn to_json(&self) -> Value {
+        let map: Map<String, Value> = self
+            .figures
+            .iter()
+            .map(|f| (f.key.to_string(), f.value.clone()))
+            .collect();
+        Value::Object(map)
+    }
+
+    pub fn to_text(&self) -> String {
+        let width = self
+            .figures
+            .iter()
+            .map(|f| f.label.chars().count())
+            .max()
+            .unwrap_or(0);
+        self.figures
+            .iter()
+            .map(|f| {
+                let value = match &f.value {
+                    Value::Number(n) if n.is_f64() => {
+                        format!("{:.3e}", n.as_f64().unwrap_or(f64::NAN))
+                    }
+                    Value::String(s) => s.clone(),
+                    other => other.to_string(),
+                };
+                format!("  {:width$}  {value}\n", f.label)
+            })
+            .collect()
+    }
+}
+
+fn method_name(method: Method) -> &'static str {
+    match method {
+        Method::PhRmf => "PH cubic spline, rational RMF (Mäurer & Jüttler)",
+        Method::Frenet => "PH cubic spline, rational Frenet frame (not rotation-minimizing)",
+        Method::Mobius => "exact rational RMF by Möbius maps (Bartoň, Jüttler & Wang)",
+        Method::Rrmf => "RRMF quintics, exact rational RMF (Farouki, Giannelli & Sestini)",
+    }
+}
+
+/// The NURBS's degrees and poles, or why the patches do not form one NURBS (Frenet frames
+/// jump at the joints of a G1 spine).
+fn surface_shape(surface: &PiecewiseSurface) -> String {
+    match NurbsSurface::from_piecewise(surface) {
+        Ok(n) => format!(
+            "NURBS of degree ({}, {}), {} × {} poles",
+            n.degree_u, n.degree_v, n.pole_count_u, n.pole_count_v
+        ),
+        Err(e) => format!(
+            "{} rational patches, not one continuous NURBS ({})",
+            surface.patches().len(),
+            e.message()
+        ),
+    }
+}
+
+fn sweep_figures(method: Method, line: bool, o: &SweepOutcome) -> rmfsurf::Result<Vec<Figure>> {
+    let mut figures = vec![
+        figure("method", "method", method_name(method)),
+        figure("spine_segments", "spine segments", o.spine.segments().len()),
+    ];
+    if let Some(d) = o.spine_distance {
+        figures.push(figure(
+            "spine_distance",
+            "spine: max distance from the input",
+            d,
+        ));
+    }
+    let field = FrameField::new(
+        Arc::new(o.spine.clone()),
+        FrameKind::Rational(o.frames.clone()),
+    )?;
+    let (mut defect, mut orthonormality) = (0.0f64, 0.0f64);
+    for t in grid_parameters(o.frames.breaks(), SAMPLES) {
+        defect = defect.max(rmf_defect(&field, t)?.abs());
+        orthonormality = orthonormality.max(orthonormality_error(&field.frame(t)?));
+    }
+    figures.push(figure(
+        "frame_pieces",
+        "frame pieces (rational)",
+        o.frames.segments().len(),
+    ));
+    figures.push(figure(
+        "rmf_defect",
+        "frames: max |f2'·f3|/|x'| (rad per unit length)",
+        defect,
+    ));
+    figures.push(figure(
+        "orthonormality",
+        "frames: max orthonormality error",
+        orthonormality,
+    ));
+    if method == Method::PhRmf {
+        let angle = angle_errors(&o.spine, &o.frames)?.max;
+        figures.push(figure(
+            "rmf_angle_error",
+            "frames: max angle to the exact RMF (rad)",
+            angle,
+        ));
+    }
+    figures.push(figure("surface", "surface", surface_shape(&o.surface)));
+    figures.push(figure(
+        "orthogonality",
+        "surface: max |cos| between parameter lines",
+        max_parameter_line_cosine(&o.surface),
+    ));
+    if line {
+        figures.push(figure(
+            "developability",
+            "surface: max |K|·size² (line profile: developable)",
+            max_scaled_curvature(&o.surface),
+        ));
+    }
+    Ok(figures)
+}
+
+fn max_parameter_line_cosine(surface: &PiecewiseSurface) -> f64 {
+    let vs = grid_parameters(surface.v_breaks(), SURFACE_SAMPLES);
+    grid_parameters(surface.u_breaks(), SURFACE_SAMPLES)
+        .iter()
+        .flat_map(|&u| vs.iter().map(move |&v| (u, v)))
+        .map(|(u, v)| parameter_line_cosine(&surface.eval_jet(u, v)))
+        .filter(|c| c.is_finite())
+        .fold(0.0, f64::max)
+}
+
+fn cone_figures(o: &ConeOutcome) -> rmfsurf::Result<Vec<Figure>> {
+    let pieces = o.spline.pieces();
+    let count = |kind: PieceKind| pieces.iter().filter(|p| p.kind() == kind).count();
+    let mut figures = vec![figure(
+        "pieces",
+        "cone spline pieces",
+        format!(
+            "{} ({} cones, {} cylinders, {} planes)",
+            pieces.len(),
+            count(PieceKind::Cone),
+            count(PieceKind::Cylinder),
+            count(PieceKind::Plane)
+        ),
+    )];
+    if let Some(e) = o.fit_error {
+        figures.push(figure(
+            "fit_deviation",
+            "fit: max distance from the input surface",
+            e,
+        ));
+    }
+    figures.push(figure("surface", "surface", surface_shape(&o.surface)));
+    figures.push(figure(
+        "developability",
+        "surface: max |K|·size²",
+        max_scaled_curvature(&o.surface),
+    ));
+    figures.push(figure(
+        "boundary_length_error",
+        "development: boundary lengths, max relative error",
+        boundary_length_error(o)?,
+    ));
+    figures.push(figure(
+        "ruling_length_error",
+        "development: ruling lengths, max relative error",
+        ruling_length_error(o),
+    ));
+    figures.push(figure(
+        "ruling_angle_error",
+        "development: ruling–boundary angles, max error (rad)",
+        ruling_angle_error(o),
+    ));
+    let flatness = o
+        .developed
+        .patches()
+        .iter()
+        .flat_map(|p| p.homogeneous().iter().map(|h| (h.z / h.w).abs()))
+        .fold(0.0, f64::max);
+    figures.push(figure("flatness", "development: max |z|", flatness));
+    let (lo, hi) = o.pattern.bounds();
+    figures.push(figure(
+        "pattern_size",
+        "flat pattern: width × height",
+        format!("{:.6} × {:.6}", hi.x - lo.x, hi.y - lo.y),
+    ));
+    Ok(figures)
+}
+
+/// The surface's boundary curves against the pattern's arcs and lines (the outline runs
+/// along t_min over the n pieces, then back along t_max).
+fn boundary_length_error(o: &ConeOutcome) -> rmfsurf::Result<f64> {
+    let n = o.spline.pieces().len();
+    let edges = &o.pattern.outline;
+    let sides = [(o.t_min, &edges[..n]), (o.t_max, &edges[n + 1..2 * n + 1])];
+    let mut worst = 0.0f64;
+    for (t, flat) in sides {
+        let spatial = o.spline.boundary(t)?.arc_length();
+        let developed: f64 = flat.iter().map(PatternEdge::length).sum();
+        worst = worst.max((spatial - developed).abs() / spatial);
+    }
+    Ok(worst)
+}
+
+/// Every ruling of the pattern (end rulings and bend lines) against t_max − t_min.
+fn ruling_length_error(o: &ConeOutcome) -> f64 {
+    let n = o.spline.pieces().len();
+    let expected = o.t_max - o.t_min;
+    [o.pattern.outline[n], o.pattern.outline[2 * n + 1]]
+        .iter()
+        .chain(&o.pattern.bend_lines)
+        .map(|e| (e.length() - expected).abs() / expected)
+        .fold(0.0, f64::max)
+}
+
+/// The angle between ruling and boundary at every piece junction and both bounds, on the
+/// surface and on its development (v = k is the start of piece k in both).
+fn ruling_angle_error(o: &ConeOutcome) -> f64 {
+    let angle = |s: &PiecewiseSurface, u: f64, v: f64| {
+        let j = s.eval_jet(u, v);
+        angle_between(j.du, j.dv)
+    };
+    (0..=o.spline.pieces().len())
+        .flat_map(|k| [(o.t_min, k as f64), (o.t_max, k as f64)])
+        .map(|(u, v)| (angle(&o.surface, u, v) - angle(&o.developed, u, v)).abs())
+        .fold(0.0, f64::max)
+}
+
+/// The summary as JSON text, for `-o summary.json`.
+pub fn json_text(summary: &Summary) -> String {
+    let mut text = serde_json::to_string_pretty(
+        &json!({ "rmfsurf": env!("CARGO_PKG_VERSION"), "figures": summary.to_json() }),
+    )
+    .expect("figures serialize");
+    text.push('\n');
+    text
+}

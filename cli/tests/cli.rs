@@ -1,0 +1,307 @@
+//! The command-line tool as a user meets it: `--help` and its examples, every output
+//! format, the summary, and bad input — malformed JSON, unknown methods and fields, bad
+//! numbers, missing files, unwritable outputs — each with a message naming the field or
+//! file, a non-zero exit status, and no output files left behind.
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+
+const TOOL: &str = env!("CARGO_BIN_EXE_rmfsurf");
+
+fn examples() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/cli")
+}
+
+/// A fresh, empty directory for one test.
+fn scratch(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn tool(dir: &Path, args: &[&str], stdin: Option<&str>) -> Output {
+    let mut child = Command::new(TOOL)
+        .args(args)
+        .current_dir(dir)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the tool starts");
+    // The tool may exit before reading its input (bad options): ignore a broken pipe.
+    let _ = child
+        .stdin
+        .take()
+        .unwrap()
+        .write_all(stdin.unwrap_or("").as_bytes());
+    child.wait_with_output().unwrap()
+}
+
+fn files_in(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .collect();
+    names.sort();
+    names
+}
+
+/// Runs the tool on `json` (from standard input), expecting failure with exit status 1, a
+/// message containing every one of `expected`, and nothing written.
+fn fails_with(name: &str, json: &str, expected: &[&str]) {
+    let dir = scratch(name);
+    let out = tool(&dir, &["-", "-o", "out.step", "-o", "out.scad"], Some(json));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{name}: {stderr}");
+    for e in expected {
+        assert!(stderr.contains(e), "{name}: {stderr:?} should say {e:?}");
+    }
+    assert!(
+        files_in(&dir).is_empty(),
+        "{name}: wrote {:?}",
+        files_in(&dir)
+    );
+}
+
+const GOOD_SWEEP: &str = r#"{"sweep": {"spine": {"points": [[1,0,0],[0,1,0.5],[-1,0,1]],
+    "tangents": [[0,1,0.3],[-1,0,0.3],[0,-1,0.3]]}, "profile": {"circle": {"radius": 0.1}}}}"#;
+
+#[test]
+fn help_lists_the_formats_and_its_example_runs() {
+    let dir = scratch("help");
+    let out = tool(&dir, &["--help"], None);
+    assert!(out.status.success());
+    let help = String::from_utf8_lossy(&out.stdout);
+    for word in [
+        ".step",
+        ".vtp",
+        ".obj",
+        ".scad",
+        ".svg",
+        ".dxf",
+        "EXAMPLES",
+        "cone_spline",
+    ] {
+        assert!(help.contains(word), "--help should mention {word}");
+    }
+    // The first example pipes JSON into the tool: run exactly that.
+    let start = help.find("echo '").expect("an echo example") + 6;
+    let end = start + help[start..].find("' |").expect("the end of the JSON");
+    let json = &help[start..end];
+    let out = tool(
+        &dir,
+        &["-", "-o", "tube.step", "-o", "tube.scad"],
+        Some(json),
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert_eq!(files_in(&dir), ["tube.scad", "tube.step"]);
+    let version = tool(&dir, &["--version"], None);
+    assert!(String::from_utf8_lossy(&version.stdout).starts_with("rmfsurf 0."));
+}
+
+#[test]
+fn every_format_and_the_summary() {
+    let dir = scratch("formats");
+    let cone = examples().join("cone_spline.json");
+    let outputs = [
+        "c.step", "c.stp", "c.vtp", "c.obj", "c.scad", "c.svg", "c.dxf", "c.json",
+    ];
+    let mut args = vec![cone.to_str().unwrap()];
+    for o in &outputs {
+        args.extend(["-o", o]);
+    }
+    args.extend(["--curves", "curves.step"]);
+    let out = tool(&dir, &args, None);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let summary = String::from_utf8_lossy(&out.stdout);
+    assert!(summary.contains("development: boundary lengths, max relative error"));
+    let mut expected: Vec<String> = outputs.iter().map(|s| s.to_string()).collect();
+    expected.push("curves.step".into());
+    expected.sort();
+    assert_eq!(files_in(&dir), expected);
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("c.json")).unwrap()).unwrap();
+    let figures = &json["figures"];
+    for key in [
+        "fit_deviation",
+        "developability",
+        "boundary_length_error",
+        "ruling_length_error",
+        "ruling_angle_error",
+        "flatness",
+    ] {
+        let value = figures[key]
+            .as_f64()
+            .unwrap_or_else(|| panic!("figure {key}"));
+        assert!(value < 1e-3, "{key} = {value}");
+    }
+    let dxf = std::fs::read_to_string(dir.join("c.dxf")).unwrap();
+    assert!(dxf.contains("\nARC\n") && dxf.contains("\nLINE\n") && !dxf.contains("POLYLINE"));
+    let svg = std::fs::read_to_string(dir.join("c.svg")).unwrap();
+    assert!(svg.contains(" A ") && svg.contains("mm\""));
+    // Sweeps: every method.
+    for method in ["ph-rmf", "frenet", "mobius", "rrmf"] {
+        let json = GOOD_SWEEP.replace(
+            "\"profile\"",
+            &format!("\"method\": \"{method}\", \"profile\""),
+        );
+        let out = tool(&dir, &["-", "-o", "sweep.json"], Some(&json));
+        assert!(
+            out.status.success(),
+            "{method}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let figures: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(dir.join("sweep.json")).unwrap())
+                .unwrap();
+        let defect = figures["figures"]["rmf_defect"].as_f64().unwrap();
+        // The Frenet frame turns about the tangent; the exact rational RMFs do not, and the
+        // PH cubic one follows the exact RMF (of two 90° segments here) to its accuracy.
+        match method {
+            "frenet" => assert!(defect > 0.1, "{method}: {defect}"),
+            "ph-rmf" => {
+                let angle = figures["figures"]["rmf_angle_error"].as_f64().unwrap();
+                assert!(defect < 1e-3 && angle < 1e-3, "{method}: {defect}, {angle}");
+            }
+            _ => assert!(defect < 1e-12, "{method}: {defect}"),
+        }
+    }
+}
+
+#[test]
+fn bad_json_is_reported_at_the_field() {
+    fails_with(
+        "malformed",
+        "{\"sweep\": {",
+        &["(stdin): malformed JSON", "line 1"],
+    );
+    fails_with(
+        "method",
+        &GOOD_SWEEP.replace("\"profile\"", "\"method\": \"spline\", \"profile\""),
+        &["sweep.method: unknown method \"spline\"; expected one of ph-rmf, frenet, mobius, rrmf"],
+    );
+    fails_with(
+        "unknown_field",
+        &GOOD_SWEEP.replace("\"profile\"", "\"profil\": 1, \"profile\""),
+        &["sweep.profil: unknown field"],
+    );
+    fails_with(
+        "radius",
+        &GOOD_SWEEP.replace("0.1}", "-0.1}"),
+        &["sweep.profile.circle.radius: must be positive, got -0.1"],
+    );
+    fails_with(
+        "point",
+        &GOOD_SWEEP.replace("[0,1,0.5]", "[0,\"a\",0.5]"),
+        &["sweep.spine.points[1][1]: must be a finite number, got a string"],
+    );
+    fails_with(
+        "tangent_count",
+        &GOOD_SWEEP.replace("[-1,0,0.3],", ""),
+        &["sweep.spine.tangents: 2 tangents for 3 points"],
+    );
+    fails_with(
+        "knots",
+        r#"{"sweep": {"spine": {"nurbs": {"degree": 2, "poles": [[0,0,0],[1,1,0],[2,0,0]],
+            "knots": [0, 0, 1, 0.5, 1, 1]}}, "profile": {"circle": {"radius": 0.1}}}}"#,
+        &["sweep.spine.nurbs: knots decrease at index 3"],
+    );
+    fails_with(
+        "nothing",
+        "{}",
+        &["(top level): needs one of sweep, cone_spline"],
+    );
+    fails_with(
+        "strip",
+        r#"{"cone_spline": {"developable": {"elements": []}, "strip": {"t_min": 1, "t_max": 0}}}"#,
+        &["cone_spline.strip: t_min = 1 must be less than t_max = 0"],
+    );
+    fails_with(
+        "open_profile",
+        &GOOD_SWEEP.replace(
+            r#"{"circle": {"radius": 0.1}}"#,
+            r#"{"line": {"from": [0, -0.1], "to": [0, 0.1]}}"#,
+        ),
+        &[
+            "--output out.scad",
+            "needs a thickness (give mesh.thickness)",
+        ],
+    );
+    fails_with(
+        "initial_normal",
+        &GOOD_SWEEP.replace(
+            "\"profile\"",
+            "\"initial_normal\": [0, 1, 0.3], \"profile\"",
+        ),
+        &["sweep.initial_normal"],
+    );
+}
+
+#[test]
+fn files_and_command_line_errors() {
+    let dir = scratch("files");
+    let out = tool(&dir, &["missing.json", "-o", "a.step"], None);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("cannot read missing.json"));
+    // One unwritable output: nothing is written, not even the writable one, and no
+    // temporary file stays behind.
+    let out = tool(
+        &dir,
+        &["-", "-o", "good.step", "-o", "no/such/dir/bad.step"],
+        Some(GOOD_SWEEP),
+    );
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("cannot write no/such/dir/bad.step"));
+    assert!(files_in(&dir).is_empty(), "left {:?}", files_in(&dir));
+    // A flat pattern of a sweep does not exist.
+    let out = tool(&dir, &["-", "-o", "a.dxf"], Some(GOOD_SWEEP));
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--output a.dxf: flat patterns"));
+    for (args, message) in [
+        (vec!["-", "-o", "a.xyz"], "unknown format"),
+        (vec![], "no input file given"),
+        (vec!["-", "--frobnicate"], "unknown option --frobnicate"),
+    ] {
+        let out = tool(&dir, &args, Some(GOOD_SWEEP));
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        assert!(
+            String::from_utf8_lossy(&out.stderr).contains(message),
+            "{args:?}"
+        );
+    }
+    assert!(files_in(&dir).is_empty());
+}
+
+#[test]
+fn readme_json_example_runs() {
+    let readme =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("../README.md"))
+            .unwrap();
+    let start = readme
+        .find("```json\n")
+        .expect("a JSON example in the README")
+        + 8;
+    let end = start + readme[start..].find("```").unwrap();
+    let dir = scratch("readme");
+    let out = tool(
+        &dir,
+        &["-", "-o", "moulding.step", "-o", "moulding.scad"],
+        Some(&readme[start..end]),
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert_eq!(files_in(&dir), ["moulding.scad", "moulding.step"]);
+}

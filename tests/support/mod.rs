@@ -1,0 +1,222 @@
+//! What the tests that drive external programs share: building the shared library (and
+//! the command-line tool), finding the C/C++ compilers with the `cc` crate, compiling test
+//! programs against librmfsurf, running them with their output echoed.
+//!
+//! Each test binary (`c_suite`, `freecad`, `openscad`, `opencascade`, `vtk_reader`)
+//! includes this module and uses a part of it.
+#![allow(dead_code)]
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::sync::OnceLock;
+
+pub const SETUP_HINT: &str =
+    "run the README's test command (scripts/test), which installs the Debian packages";
+
+pub struct Toolchain {
+    pub cc: PathBuf,
+    pub cxx: PathBuf,
+    /// target/<profile>, where cargo put librmfsurf.so.
+    pub lib_dir: PathBuf,
+    /// Where the test programs go.
+    pub out_dir: PathBuf,
+}
+
+pub fn root() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// Builds the cdylib (cargo test itself only builds the rlib) and finds the compilers; once.
+pub fn toolchain() -> &'static Toolchain {
+    static TOOLCHAIN: OnceLock<Toolchain> = OnceLock::new();
+    TOOLCHAIN.get_or_init(|| {
+        let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
+        let status = Command::new(cargo)
+            .args(["build", "--lib", "--quiet"])
+            .current_dir(root())
+            .status()
+            .expect("cargo runs");
+        assert!(status.success(), "cargo build --lib failed");
+        // The test binary lives in target/<profile>/deps.
+        let exe = std::env::current_exe().expect("test binary path");
+        let lib_dir = exe
+            .parent()
+            .and_then(Path::parent)
+            .expect("target/<profile>")
+            .to_path_buf();
+        assert!(
+            lib_dir.join("librmfsurf.so").exists(),
+            "librmfsurf.so not found in {}",
+            lib_dir.display()
+        );
+        let out_dir = lib_dir.join("c_tests");
+        std::fs::create_dir_all(&out_dir).expect("output directory");
+        let compiler = |cpp: bool| {
+            cc::Build::new()
+                .cpp(cpp)
+                .target(env!("RMFSURF_TARGET"))
+                .host(env!("RMFSURF_HOST"))
+                .opt_level(1)
+                .debug(true)
+                .cargo_metadata(false)
+                .out_dir(&out_dir)
+                .try_get_compiler()
+                .expect("a C/C++ compiler (gcc, g++)")
+                .path()
+                .to_path_buf()
+        };
+        Toolchain {
+            cc: compiler(false),
+            cxx: compiler(true),
+            lib_dir,
+            out_dir,
+        }
+    })
+}
+
+/// The VTK include directory (/usr/include/vtk-X.Y) and its version suffix.
+pub fn vtk() -> (PathBuf, String) {
+    let dir = std::fs::read_dir("/usr/include")
+        .ok()
+        .and_then(|entries| {
+            entries
+                .filter_map(Result::ok)
+                .map(|e| e.path())
+                .filter(|p| p.join("vtkCurvatures.h").exists())
+                .max()
+        })
+        .unwrap_or_else(|| panic!("VTK headers (libvtk9-dev) not found: {SETUP_HINT}"));
+    let version = dir
+        .file_name()
+        .and_then(|n| n.to_str())
+        .and_then(|n| n.strip_prefix("vtk-"))
+        .expect("vtk-X.Y")
+        .to_string();
+    (dir, version)
+}
+
+/// The `-isystem` flag for VTK's headers (they are not -Wpedantic clean: system headers)
+/// and the `-l` flags of the VTK `modules` (e.g. "CommonCore").
+pub fn vtk_flags(modules: &[&str]) -> (String, Vec<String>) {
+    let (dir, version) = vtk();
+    let libs = modules
+        .iter()
+        .map(|m| format!("-lvtk{m}-{version}"))
+        .collect();
+    (format!("-isystem{}", dir.display()), libs)
+}
+
+/// The command-line tool `rmfsurf`, built once (debug profile, beside the library).
+pub fn cli() -> PathBuf {
+    static CLI: OnceLock<PathBuf> = OnceLock::new();
+    CLI.get_or_init(|| {
+        let lib_dir = &toolchain().lib_dir;
+        let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
+        let status = Command::new(cargo)
+            .args(["build", "--quiet", "-p", "rmfsurf-cli", "--bin", "rmfsurf"])
+            .current_dir(root())
+            .status()
+            .expect("cargo runs");
+        assert!(status.success(), "cargo build -p rmfsurf-cli failed");
+        let exe = lib_dir.join("rmfsurf");
+        assert!(exe.exists(), "{} not built", exe.display());
+        exe
+    })
+    .clone()
+}
+
+/// An empty directory `name` under the test output directory.
+pub fn fresh_dir(name: &str) -> PathBuf {
+    let dir = toolchain().out_dir.join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("output directory");
+    dir
+}
+
+/// The example inputs of the command-line tool, examples/cli/<name>.json.
+pub const EXAMPLES: [&str; 4] = [
+    "cone_spline",
+    "helix_pipe_mobius",
+    "helix_strip_rrmf",
+    "nurbs_moulding_ph",
+];
+
+/// Runs the tool on examples/cli/<example>.json with the extra arguments `args` (relative
+/// paths are in `dir`); asserts success.
+pub fn run_cli(dir: &Path, example: &str, args: &[&str]) {
+    let input = root().join("examples/cli").join(format!("{example}.json"));
+    let out = Command::new(cli())
+        .arg(&input)
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .expect("the tool runs");
+    print!("{example}:\n{}", String::from_utf8_lossy(&out.stdout));
+    assert!(
+        out.status.success(),
+        "rmfsurf {} failed: {}",
+        input.display(),
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+pub const STRICT: &[&str] = &["-Wall", "-Wextra", "-Wpedantic", "-Werror"];
+
+/// Compiles `sources` (relative to c_tests/) into `name` with `flags`, linked against
+/// librmfsurf and `libs`.
+pub fn build(name: &str, cpp: bool, sources: &[&str], flags: &[&str], libs: &[String]) -> PathBuf {
+    let tc = toolchain();
+    let exe = tc.out_dir.join(name);
+    let mut cmd = Command::new(if cpp { &tc.cxx } else { &tc.cc });
+    cmd.args(flags)
+        .arg("-g")
+        .arg("-I")
+        .arg(root().join("include"))
+        .arg("-I")
+        .arg(root().join("c_tests"));
+    cmd.args(sources.iter().map(|s| root().join(s)));
+    cmd.arg("-o")
+        .arg(&exe)
+        .arg("-L")
+        .arg(&tc.lib_dir)
+        .arg("-lrmfsurf");
+    cmd.arg(format!("-Wl,-rpath,{}", tc.lib_dir.display()));
+    cmd.args(libs).arg("-lm");
+    let out = cmd.output().expect("compiler runs");
+    assert!(
+        out.status.success(),
+        "compiling {name} failed:\n{:?}\n{}",
+        cmd,
+        String::from_utf8_lossy(&out.stderr)
+    );
+    exe
+}
+
+/// Runs a test program (optionally under valgrind), echoes its output and asserts success.
+pub fn run(exe: &Path, valgrind: bool) {
+    let mut cmd = if valgrind {
+        let mut c = Command::new("valgrind");
+        c.args([
+            "--quiet",
+            "--error-exitcode=99",
+            "--leak-check=full",
+            "--errors-for-leak-kinds=definite,indirect",
+            "--show-leak-kinds=definite,indirect",
+        ]);
+        c.arg(exe);
+        c
+    } else {
+        Command::new(exe)
+    };
+    let out = cmd
+        .output()
+        .unwrap_or_else(|e| panic!("cannot run {} ({e}): {SETUP_HINT}", exe.display()));
+    print!("{}", String::from_utf8_lossy(&out.stdout));
+    eprint!("{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{} failed with {}",
+        exe.display(),
+        out.status
+    );
+}
