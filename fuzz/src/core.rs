@@ -326,7 +326,8 @@ fn tessellate(s: &mut Session) {
     let (us, vs) = (s.input.code(), s.input.code());
     let (pc, tc) = (s.input.work().min(1024), s.input.work().min(4096));
     let mut points = poisoned_buffer::<RmfVec3>(pc);
-    let mut triangles = poisoned_buffer::<u32>(tc);
+    // triangle_capacity counts triangles, of 3 indices each
+    let mut triangles = poisoned_buffer::<u32>(3 * tc);
     let (mut np, mut nt) = (poisoned::<usize>(), poisoned::<usize>());
     let status = unsafe {
         rmf_surface_tessellate(
@@ -350,7 +351,7 @@ fn tessellate(s: &mut Session) {
         ],
     ) && pc > 0
     {
-        let used = &triangles[..(3 * nt).min(tc)];
+        let used = &triangles[..(3 * nt).min(3 * tc)];
         assert!(
             used.iter().all(|&i| (i as usize) < np),
             "triangle index out of range"
