@@ -5,6 +5,7 @@
 use crate::error::{invalid, Result};
 use crate::math::{check_point, check_unit_direction};
 use glam::DVec3;
+use std::fmt::Display;
 
 /// Relative distance below which consecutive points count as coincident.
 const COINCIDENT: f64 = 1e-14;
@@ -44,7 +45,7 @@ impl HermiteSegment {
 }
 
 /// A finite point whose coordinates are within ±[`MAX_COORDINATE`].
-fn check_coordinates(p: DVec3, name: &str) -> Result<DVec3> {
+fn check_coordinates(p: DVec3, name: impl Display + Copy) -> Result<DVec3> {
     let p = check_point(p, name)?;
     if p.abs().max_element() > MAX_COORDINATE {
         return invalid!("{name} has a coordinate beyond ±{MAX_COORDINATE:e}");
@@ -52,7 +53,7 @@ fn check_coordinates(p: DVec3, name: &str) -> Result<DVec3> {
     Ok(p)
 }
 
-fn check_distinct(a: DVec3, b: DVec3, name_a: &str, name_b: &str) -> Result<()> {
+fn check_distinct(a: DVec3, b: DVec3, name_a: impl Display, name_b: impl Display) -> Result<()> {
     let scale = a
         .abs()
         .max_element()
@@ -79,8 +80,8 @@ pub fn hermite_sequence(points: &[DVec3], tangents: &[DVec3]) -> Result<Vec<Herm
     let mut checked = Vec::with_capacity(points.len());
     for (i, (&p, &t)) in points.iter().zip(tangents).enumerate() {
         checked.push((
-            check_coordinates(p, &format!("points[{i}]"))?,
-            check_unit_direction(t, &format!("tangents[{i}]"))?,
+            check_coordinates(p, format_args!("points[{i}]"))?,
+            check_unit_direction(t, format_args!("tangents[{i}]"))?,
         ));
     }
     checked
@@ -90,8 +91,8 @@ pub fn hermite_sequence(points: &[DVec3], tangents: &[DVec3]) -> Result<Vec<Herm
             check_distinct(
                 w[0].0,
                 w[1].0,
-                &format!("points[{i}]"),
-                &format!("points[{}]", i + 1),
+                format_args!("points[{i}]"),
+                format_args!("points[{}]", i + 1),
             )?;
             Ok(HermiteSegment {
                 p0: w[0].0,

@@ -7,7 +7,7 @@
 //! *Curves and Surfaces for CAGD*, ch. 5–6); de Casteljau's algorithm keeps evaluation
 //! stable (convex combinations only).
 
-use crate::math::{binomial, Complex};
+use crate::math::{binomial, binomial_row, reciprocal_binomial_row, Complex};
 use glam::{DVec3, DVec4};
 use std::ops::{Add, Mul, Sub};
 
@@ -175,15 +175,29 @@ pub fn product<A: Copy, B: Copy, C: Coefficient>(
     b: &[B],
     mul: impl Fn(A, B) -> C,
 ) -> Vec<C> {
+    let mut out = vec![C::default(); a.len() + b.len() - 1];
+    add_product(a, b, mul, &mut out);
+    out
+}
+
+/// Adds the coefficients of `a·b` (see [`product`]) to `out[..=m + n]`: sums of products
+/// without intermediate vectors, and products into buffers on the stack.
+pub fn add_product<A: Copy, B: Copy, C: Coefficient>(
+    a: &[A],
+    b: &[B],
+    mul: impl Fn(A, B) -> C,
+    out: &mut [C],
+) {
     let (m, n) = (a.len() - 1, b.len() - 1);
-    let mut out = vec![C::default(); m + n + 1];
+    let (row_a, row_b) = (binomial_row(m), binomial_row(n));
+    let reciprocals = reciprocal_binomial_row(m + n);
     for (i, &ai) in a.iter().enumerate() {
         for (j, &bj) in b.iter().enumerate() {
-            let scale = binomial(m, i) * binomial(n, j) / binomial(m + n, i + j);
+            // scale ≤ 1 before it meets the coefficients: no overflow for huge ones
+            let scale = row_a[i] * row_b[j] * reciprocals[i + j];
             out[i + j] = out[i + j] + mul(ai, bj) * scale;
         }
     }
-    out
 }
 
 /// The same polynomial written in degree n + r.
@@ -192,12 +206,14 @@ pub fn elevate<C: Coefficient>(coeffs: &[C], r: usize) -> Vec<C> {
     if r == 0 {
         return coeffs.to_vec();
     }
+    let (row_n, row_r) = (binomial_row(n), binomial_row(r));
+    let reciprocals = reciprocal_binomial_row(n + r);
     (0..=n + r)
         .map(|k| {
             let lo = k.saturating_sub(r);
             let hi = k.min(n);
             (lo..=hi).fold(C::default(), |acc, j| {
-                acc + coeffs[j] * (binomial(n, j) * binomial(r, k - j) / binomial(n + r, k))
+                acc + coeffs[j] * (row_n[j] * row_r[k - j] * reciprocals[k])
             })
         })
         .collect()

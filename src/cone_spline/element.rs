@@ -32,7 +32,7 @@ impl Element {
     /// Directions may have any non-zero length; `side` must be normal to `ruling` up to
     /// round-off (|cos| ≤ 1e-6) and is then orthogonalized exactly.
     pub fn new(point: DVec3, ruling: DVec3, side: DVec3, name: &str) -> Result<Self> {
-        let point = check_point(point, &format!("{name}.point"))?;
+        let point = check_point(point, format_args!("{name}.point"))?;
         let e = check_unit_direction(ruling, &format!("{name}.ruling"))?;
         let p = check_unit_direction(side, &format!("{name}.side"))?;
         let cos = p.dot(e);

@@ -90,14 +90,16 @@ impl RationalFrameSegment {
     /// rotation of a rotation-minimizing frame is again rotation-minimizing, which is how
     /// spline segments are made to agree at their joints.
     pub fn rotated(&self, angle: f64) -> Self {
+        let mut turned = self.clone();
+        turned.rotate(angle);
+        turned
+    }
+
+    /// Turns the frame about the tangent by a constant `angle`, in place.
+    pub fn rotate(&mut self, angle: f64) {
         let (s, c) = angle.sin_cos();
-        let mix = |a: &[DVec3], b: &[DVec3], ca: f64, cb: f64| {
-            a.iter().zip(b).map(|(&x, &y)| ca * x + cb * y).collect()
-        };
-        Self {
-            f2: mix(&self.f2, &self.f3, c, s),
-            f3: mix(&self.f3, &self.f2, c, -s),
-            denominator: self.denominator.clone(),
+        for (a, b) in self.f2.iter_mut().zip(self.f3.iter_mut()) {
+            (*a, *b) = (c * *a + s * *b, c * *b - s * *a);
         }
     }
 
@@ -130,6 +132,23 @@ pub fn frame_at(f2: &[DVec3], f3: &[DVec3], denominator: &[f64], s: f64) -> Fram
     // One basis evaluation for all seven coefficient sets (3 + 3 + 1), instead of a de
     // Casteljau run per set: frames are evaluated in bulk (meshes, sweeps, benchmarks).
     let n = denominator.len() - 1;
+    // At the ends (joints, chaining) the value is the end coefficient, with no rounding.
+    let end = if s == 0.0 {
+        Some(0)
+    } else if s == 1.0 {
+        Some(n)
+    } else {
+        None
+    };
+    if let Some(i) = end {
+        let d = denominator[i];
+        let (f2, f3) = (f2[i] / d, f3[i] / d);
+        return Frame {
+            tangent: f2.cross(f3),
+            f2,
+            f3,
+        };
+    }
     let mut basis = [0.0; MAX_DEGREE + 1];
     bernstein::basis(n, s, &mut basis);
     let combine = |c: &[DVec3]| {
@@ -204,7 +223,7 @@ impl RationalFrames {
     ) -> Result<Self> {
         check_breaks(&breaks, segments.len(), "frame breakpoints")?;
         let mut joined: Vec<RationalFrameSegment> = Vec::with_capacity(segments.len());
-        for (k, segment) in segments.into_iter().enumerate() {
+        for (k, mut segment) in segments.into_iter().enumerate() {
             let previous_end = joined.last().map(|p| p.frame(1.0));
             let angle = joining_turn(
                 &segment.frame(0.0),
@@ -212,7 +231,8 @@ impl RationalFrames {
                 initial_normal,
                 k,
             )?;
-            joined.push(segment.rotated(angle));
+            segment.rotate(angle);
+            joined.push(segment);
         }
         Ok(Self {
             segments: joined,

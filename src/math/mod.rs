@@ -13,7 +13,7 @@ mod roots;
 mod secant;
 mod vector;
 
-pub use binomial::binomial;
+pub use binomial::{binomial, binomial_row, reciprocal_binomial_row};
 pub use complex::Complex;
 pub use linear::solve_refined;
 pub use minimize::{minimize_bracketed, Minimum};

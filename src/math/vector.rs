@@ -5,6 +5,7 @@
 
 use crate::error::{invalid, Result};
 use glam::DVec3;
+use std::fmt::Display;
 
 /// Relative size below which a projected vector counts as zero.
 const PARALLEL_TOLERANCE: f64 = 1e-12;
@@ -24,8 +25,10 @@ pub fn bounding_diagonal(points: impl IntoIterator<Item = DVec3>) -> f64 {
     }
 }
 
-/// `v` itself if all its components are finite.
-pub fn check_finite(v: DVec3, name: &str) -> Result<DVec3> {
+/// `v` itself if all its components are finite. The `name` of the argument in the message is
+/// any `Display` (e.g. `format_args!("points[{i}]")`), formatted only for a failure: long
+/// input arrays are checked without a string per element.
+pub fn check_finite(v: DVec3, name: impl Display) -> Result<DVec3> {
     if v.is_finite() {
         Ok(v)
     } else {
@@ -39,7 +42,7 @@ pub fn check_finite(v: DVec3, name: &str) -> Result<DVec3> {
 }
 
 /// Alias of [`check_finite`] for points, for readability at call sites.
-pub fn check_point(p: DVec3, name: &str) -> Result<DVec3> {
+pub fn check_point(p: DVec3, name: impl Display) -> Result<DVec3> {
     check_finite(p, name)
 }
 
@@ -67,7 +70,7 @@ fn robust_normalize(v: DVec3) -> Option<DVec3> {
 }
 
 /// The unit vector along `v`; `v` must be finite and non-zero (it need not be unit).
-pub fn check_unit_direction(v: DVec3, name: &str) -> Result<DVec3> {
+pub fn check_unit_direction(v: DVec3, name: impl Display + Copy) -> Result<DVec3> {
     check_finite(v, name)?;
     match robust_normalize(v) {
         Some(u) => Ok(u),

@@ -334,7 +334,7 @@ pub fn convex_initial_normal(
     let rmf = ExactRmf::new(spline, start.f2, 0.0)?;
     let mut arcs = Vec::with_capacity(cubics.len());
     for (k, cubic) in cubics.iter().enumerate() {
-        let BaseFrame::Frenet { numerators, angle } = BaseFrame::of(cubic) else {
+        let BaseFrame::Frenet { numerators, angle } = BaseFrame::of(cubic)? else {
             return Err(Error::NoSolution(format!(
                 "spine segment {k} is (nearly) straight: the Gaussian curvature vanishes there"
             )));

@@ -15,7 +15,7 @@
 use super::cubic::PhCubic;
 use super::frenet::frenet_numerators;
 use super::rmf_angle::RmfAngle;
-use crate::bezier::bernstein::{self, product, restrict};
+use crate::bezier::bernstein::{self, add_product, product, restrict};
 use crate::error::{Error, Result};
 use crate::frames::rational::{frame_at, RationalFrameSegment, RationalFrames};
 use crate::frames::Frame;
@@ -55,41 +55,49 @@ impl FrameNumerators {
     /// The frame turned about the tangent by φ(v) = 2 arctan(γ/β), equation (29): with
     /// cos φ = (β² − γ²)/(β² + γ²), sin φ = 2βγ/(β² + γ²) the numerators become
     /// 2βγ E₃ + (β² − γ²) E₂ and (β² − γ²) E₃ − 2βγ E₂ over (β² + γ²) d.
-    pub fn turned(&self, gamma: &[f64], beta: &[f64]) -> Self {
+    pub fn turned(&self, gamma: &[f64; 3], beta: &[f64; 3]) -> Self {
         let mul = |a: f64, b: f64| a * b;
-        let bb = product(beta, beta, mul);
-        let gg = product(gamma, gamma, mul);
-        let cos_part: Vec<f64> = bb.iter().zip(&gg).map(|(b, g)| b - g).collect();
-        let sin_part: Vec<f64> = product(beta, gamma, mul).iter().map(|x| 2.0 * x).collect();
-        let norm: Vec<f64> = bb.iter().zip(&gg).map(|(b, g)| b + g).collect();
-        let scale = |s: &[f64], e: &[DVec3]| product(s, e, |a: f64, v: DVec3| v * a);
-        let combine = |a: Vec<DVec3>, b: Vec<DVec3>, sign: f64| -> Vec<DVec3> {
-            a.iter().zip(&b).map(|(&x, &y)| x + y * sign).collect()
+        let (mut bb, mut gg, mut bg) = ([0.0; 5], [0.0; 5], [0.0; 5]);
+        add_product(beta, beta, mul, &mut bb);
+        add_product(gamma, gamma, mul, &mut gg);
+        add_product(beta, gamma, mul, &mut bg);
+        let cos_part: [f64; 5] = std::array::from_fn(|k| bb[k] - gg[k]);
+        let sin_part = bg.map(|x| 2.0 * x);
+        let norm: [f64; 5] = std::array::from_fn(|k| bb[k] + gg[k]);
+        let scale = |a: f64, v: DVec3| v * a;
+        let turn = |cos_with: &[DVec3], sin_with: &[DVec3], sign: f64| {
+            let mut out = vec![DVec3::ZERO; cos_with.len() + 4];
+            add_product(&cos_part, cos_with, scale, &mut out);
+            add_product(&sin_part.map(|x| sign * x), sin_with, scale, &mut out);
+            out
         };
         Self {
-            e2: combine(scale(&cos_part, &self.e2), scale(&sin_part, &self.e3), 1.0),
-            e3: combine(scale(&cos_part, &self.e3), scale(&sin_part, &self.e2), -1.0),
+            e2: turn(&self.e2, &self.e3, 1.0),
+            e3: turn(&self.e3, &self.e2, -1.0),
             d: product(&norm, &self.d, mul),
         }
     }
 
     /// Splits [0, 1] until the denominator has positive Bernstein coefficients on every
     /// piece (positive weights for CAD), returning the pieces (v0, v1, segment).
-    pub fn positive_pieces(&self) -> Result<Vec<(f64, f64, RationalFrameSegment)>> {
+    pub fn positive_pieces(self) -> Result<Vec<(f64, f64, RationalFrameSegment)>> {
         let breaks = bernstein::positive_subdivision(&[&self.d], MAX_SUBDIVISION_DEPTH)
             .ok_or_else(|| {
                 Error::InvalidInput(
                     "the frame denominator vanishes on the segment (singular PH cubic)".into(),
                 )
             })?;
+        if breaks == [0.0, 1.0] {
+            return Ok(vec![(
+                0.0,
+                1.0,
+                RationalFrameSegment::new(self.e2, self.e3, self.d)?,
+            )]);
+        }
         breaks
             .windows(2)
             .map(|w| {
-                let piece = if w == [0.0, 1.0] {
-                    self.clone()
-                } else {
-                    self.restricted(w[0], w[1])
-                };
+                let piece = self.restricted(w[0], w[1]);
                 Ok((
                     w[0],
                     w[1],
@@ -168,9 +176,11 @@ pub enum BaseFrame {
 }
 
 impl BaseFrame {
-    pub fn of(cubic: &PhCubic) -> Self {
-        let cubic = cubic.normalized().exactly_ph();
-        if cubic.bend() > NEARLY_STRAIGHT {
+    /// Fails only for polygons that are PH within rounding but have no PH interpolant of
+    /// their end data ([`PhCubic::exactly_ph`]).
+    pub fn of(cubic: &PhCubic) -> Result<Self> {
+        let cubic = cubic.normalized().exactly_ph()?;
+        Ok(if cubic.bend() > NEARLY_STRAIGHT {
             Self::Frenet {
                 numerators: frenet_numerators(&cubic),
                 angle: RmfAngle::of(&cubic),
@@ -179,7 +189,7 @@ impl BaseFrame {
             Self::Carried {
                 numerators: carried_numerators(&cubic),
             }
-        }
+        })
     }
 
     pub fn numerators(&self) -> &FrameNumerators {
@@ -258,7 +268,7 @@ mod tests {
     #[test]
     fn frenet_base_frame_is_the_frenet_frame() {
         let c = example_cubic();
-        let base = BaseFrame::of(&c);
+        let base = BaseFrame::of(&c).unwrap();
         assert!(matches!(base, BaseFrame::Frenet { .. }));
         let n = base.numerators();
         assert_eq!(n.d.len(), 3);
@@ -307,7 +317,7 @@ mod tests {
     fn nearly_straight_cubics_carry_their_frame_exactly_adapted() {
         let cubic = gentle_helix_cubic(1e7);
         assert!(cubic.bend() < NEARLY_STRAIGHT);
-        let base = BaseFrame::of(&cubic);
+        let base = BaseFrame::of(&cubic).unwrap();
         assert!(matches!(base, BaseFrame::Carried { .. }));
         for i in 0..=8 {
             let v = i as f64 / 8.0;

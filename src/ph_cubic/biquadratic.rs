@@ -173,12 +173,13 @@ fn fit_dyn(data: AngleHermite, rate: &dyn Fn(f64) -> f64) -> Result<BiquadraticF
     for (t, &v) in target.iter_mut().zip(rule.nodes()) {
         *t = rate(v);
     }
-    let x = gauss_newton(&family, rule, &target)
-        .unwrap_or_else(|| scan_and_refine(&family, rule, &target));
-    let w = family.member(logistic(x));
+    let (x, objective) = gauss_newton(&family, rule, &target).unwrap_or_else(|| {
+        let x = scan_and_refine(&family, rule, &target);
+        (x, family.objective(rule, &target, logistic(x)))
+    });
     Ok(BiquadraticFit {
-        w,
-        objective: family.objective(rule, &target, logistic(x)),
+        w: family.member(logistic(x)),
+        objective,
     })
 }
 
@@ -226,49 +227,53 @@ impl Family {
             .sum()
     }
 
-    /// The residuals' weighted sums Σ wᵢ eᵢ Jᵢ and Σ wᵢ Jᵢ², eᵢ = R(vᵢ) − Ω'(vᵢ), Jᵢ = ∂R/∂α
-    /// for R = 2(g'b − gb')/(b² + g²), the angular velocity of (29).
-    fn gradient_terms(&self, rule: &GaussLegendre, target: &[f64], alpha: f64) -> (f64, f64) {
+    /// The residuals' weighted sums Σ wᵢ eᵢ Jᵢ, Σ wᵢ Jᵢ² and Σ wᵢ eᵢ² (= Î), eᵢ = R(vᵢ) − Ω'(vᵢ),
+    /// Jᵢ = ∂R/∂α for R = 2(g'b − gb')/(b² + g²), the angular velocity of (29).
+    fn gradient_terms(&self, rule: &GaussLegendre, target: &[f64], alpha: f64) -> (f64, f64, f64) {
         let w = self.member(alpha);
         let d = Biquadratic {
             numerator: self.gamma[1],
             denominator: self.beta[1],
         };
-        let (mut ej, mut jj) = (0.0, 0.0);
+        let (mut ej, mut jj, mut ee) = (0.0, 0.0, 0.0);
         for ((&v, &weight), &r) in rule.nodes().iter().zip(rule.weights()).zip(target) {
             let (g, b, dg, db) = w.parts(v);
             let (g_a, b_a, dg_a, db_a) = d.parts(v);
             let (n, den) = (dg * b - g * db, b * b + g * g);
             let n_a = dg_a * b + dg * b_a - g_a * db - g * db_a;
             let den_a = 2.0 * (b * b_a + g * g_a);
-            let rate = 2.0 * n / den;
-            let jacobian = 2.0 * (n_a * den - n * den_a) / (den * den);
+            let inverse = 1.0 / den;
+            let rate = 2.0 * n * inverse;
+            let jacobian = 2.0 * (n_a * den - n * den_a) * (inverse * inverse);
             ej += weight * (rate - r) * jacobian;
             jj += weight * jacobian * jacobian;
+            ee += weight * (rate - r) * (rate - r);
         }
-        (ej, jj)
+        (ej, jj, ee)
     }
 }
 
 /// Minimizes Î of (41) by Gauss–Newton steps in x (α = logistic(x)) from the symmetric
 /// member α = 1/2: the residuals are small (W follows Ω' closely), so a few steps reach the
-/// minimum. `None` if the steps do not settle (then [`scan_and_refine`] is used).
-fn gauss_newton(family: &Family, rule: &GaussLegendre, target: &[f64]) -> Option<f64> {
+/// minimum. Returns x with Î there; `None` if the steps do not settle (then
+/// [`scan_and_refine`] is used).
+fn gauss_newton(family: &Family, rule: &GaussLegendre, target: &[f64]) -> Option<(f64, f64)> {
     const STEPS: usize = 12;
     const SETTLED: f64 = 1e-10;
     let mut x = 0.0f64;
     for _ in 0..STEPS {
         let alpha = logistic(x);
-        let (ej, jj) = family.gradient_terms(rule, target, alpha);
+        let (ej, jj, objective) = family.gradient_terms(rule, target, alpha);
         // dα/dx = α(1 − α).
         let dx = -ej / (jj * alpha * (1.0 - alpha));
         if !dx.is_finite() {
             return None;
         }
-        x += dx.clamp(-2.0, 2.0);
         if dx.abs() < SETTLED {
-            return (x.abs() < 30.0).then_some(x);
+            // x is within SETTLED of the minimum, and Î at x is known.
+            return (x.abs() < 30.0).then_some((x, objective));
         }
+        x += dx.clamp(-2.0, 2.0);
     }
     None
 }

@@ -11,7 +11,7 @@
 //! [`PhCubic::polygon_condition`] evaluates (17) literally.
 
 use super::hermite::ph_cubic_hermite;
-use crate::bezier::bernstein::{self, product};
+use crate::bezier::bernstein::{self, add_product};
 use crate::bezier::RationalBezierCurve;
 use crate::error::{invalid, Result};
 use crate::hermite::HermiteSegment;
@@ -121,8 +121,9 @@ impl PhCubic {
         let legs = self.legs();
         let [l1, _, l3] = self.leg_lengths();
         let speed = [l1, self.speed_middle(), l3];
-        let squared = product(&legs, &legs, |a: DVec3, b: DVec3| a.dot(b));
-        let speed_squared = product(&speed, &speed, |a: f64, b: f64| a * b);
+        let (mut squared, mut speed_squared) = ([0.0; 5], [0.0; 5]);
+        add_product(&legs, &legs, |a: DVec3, b: DVec3| a.dot(b), &mut squared);
+        add_product(&speed, &speed, |a: f64, b: f64| a * b, &mut speed_squared);
         let scale = squared.iter().fold(0.0f64, |m, c| m.max(c.abs()));
         let worst = squared
             .iter()
@@ -224,24 +225,30 @@ impl PhCubic {
 
     /// The PH cubic through this polygon's end points and end tangents (the interpolant of
     /// Table 1 nearest to it) when its hodograph residual is above round-off; itself
-    /// otherwise (and when no interpolant exists).
+    /// otherwise.
     ///
     /// The frames (19), (29) and the angle (30) assume the PH identity |x'| = σ exactly, and
     /// a residual r turns into an orthonormality error of about r / sin²θ (2e-5 for r = 1e-9
     /// at θ = 2e-3, a fuzz finding): a polygon accepted within [`PH_TOLERANCE`] (data read
     /// from files, or rounded far from the origin) gets its frames from the exact PH cubic
-    /// of its own Hermite data, which it matches at both ends and within r inside.
-    pub fn exactly_ph(&self) -> Self {
-        if self.hodograph_residual() <= ROUND_OFF_RESIDUAL {
-            return *self;
+    /// of its own Hermite data, which it matches at both ends and within r inside. When no
+    /// PH cubic interpolates those data (a segment so short against its distance from the
+    /// origin that rounding reverses a leg: another fuzz finding, frames of length 0.5) the
+    /// frames cannot be made orthonormal, and the polygon is refused.
+    pub fn exactly_ph(&self) -> Result<Self> {
+        let residual = self.hodograph_residual();
+        if residual <= ROUND_OFF_RESIDUAL {
+            return Ok(*self);
         }
         let [p0, _, _, p3] = self.points;
         let [h0, _, h2] = self.legs();
-        let Ok(data) = HermiteSegment::new(p0, h0, p3, h2) else {
-            return *self;
-        };
-        let Ok(solutions) = ph_cubic_hermite(&data) else {
-            return *self;
+        let interpolants = HermiteSegment::new(p0, h0, p3, h2).and_then(|d| ph_cubic_hermite(&d));
+        let Ok(solutions) = interpolants else {
+            return invalid!(
+                "the control polygon is PH only within rounding (relative residual \
+                 {residual:.1e}) and no PH cubic interpolates its end points and tangents: \
+                 its frames cannot be computed orthonormal"
+            );
         };
         let distance = |c: &PhCubic| {
             c.points
@@ -249,10 +256,10 @@ impl PhCubic {
                 .zip(&self.points)
                 .fold(0.0f64, |m, (a, b)| m.max((*a - *b).length()))
         };
-        std::iter::once(solutions.shape_matching)
+        Ok(std::iter::once(solutions.shape_matching)
             .chain(solutions.other)
             .min_by(|a, b| distance(a).total_cmp(&distance(b)))
-            .unwrap_or(*self)
+            .unwrap_or(*self))
     }
 
     /// Sum of the leg lengths, the criterion of Table 1 for the shape-matching interpolant.

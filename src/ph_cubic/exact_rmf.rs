@@ -44,7 +44,8 @@ impl ExactRmf {
         let mut segments: Vec<Segment> = Vec::with_capacity(spline.segments().len());
         let mut arc_before = 0.0;
         for (k, cubic) in ph_cubics(spline)?.into_iter().enumerate() {
-            let base = BaseFrame::of(&cubic);
+            let base = BaseFrame::of(&cubic)
+                .map_err(|e| in_context(e, &format!("ph_spline segment {k}")))?;
             let previous_end = segments.last().map(|p| p.frame(1.0, twist_rate));
             let start_angle = joining_turn(
                 &base.numerators().frame(0.0),
@@ -153,8 +154,12 @@ impl SegmentTarget<'_> {
 
     /// g'(v) = Ω'(v) + ω·σ(v).
     pub fn rate(&self, v: f64) -> f64 {
-        let speed = bernstein::evaluate(&self.segment.cubic.speed(), v);
-        self.segment.base.rmf_rate(v) + self.twist_rate * speed
+        let rmf_rate = self.segment.base.rmf_rate(v);
+        if self.twist_rate == 0.0 {
+            // the RMF itself: no speed to evaluate (this runs at every quadrature node)
+            return rmf_rate;
+        }
+        rmf_rate + self.twist_rate * bernstein::evaluate(&self.segment.cubic.speed(), v)
     }
 
     /// The parameters in (0, 1) where g' = 0 (the angle turns back), in increasing order.

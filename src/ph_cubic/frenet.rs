@@ -5,6 +5,7 @@
 
 use super::base_frame::{FrameNumerators, FramePieces};
 use super::cubic::PhCubic;
+use super::in_context;
 use super::spline::ph_cubics;
 use crate::bezier::bernstein::{self, product, reduce_degree};
 
@@ -52,7 +53,10 @@ pub fn ph_frenet_frames(spline: &PiecewiseCurve) -> Result<RationalFrames> {
     for (k, cubic) in ph_cubics(spline)?.iter().enumerate() {
         // The frame does not change under translation and scaling; on the exactly PH cubic
         // of the same data the formulas of (19) hold to round-off (see `exactly_ph`).
-        let cubic = &cubic.normalized().exactly_ph();
+        let cubic = &cubic
+            .normalized()
+            .exactly_ph()
+            .map_err(|e| in_context(e, &format!("ph_spline segment {k}")))?;
         if cubic.bend() <= STRAIGHT {
             return invalid!(
                 "ph_spline segment {k} is (nearly) straight (sin θ = {:.1e} ≤ {STRAIGHT:e}): its \
@@ -113,6 +117,40 @@ mod tests {
                 let error = crate::frames::metrics::orthonormality_error(&f);
                 // Both polygons bend by about 1e-3 rad: (19) is conditioned like ε/θ² there.
                 assert!(error < 1e-7, "{error:e}");
+            }
+        }
+    }
+
+    /// Fuzz finding: a line of 1.1e-13 at distance 1 from the origin, elevated to a cubic,
+    /// bends by 3e-3 through rounding alone and has no PH interpolant of its end data; its
+    /// "Frenet frames" had vectors of length 0.5. Refused now, or else orthonormal.
+    #[test]
+    fn polygons_without_a_ph_interpolant_of_their_end_data_are_refused() {
+        let line = crate::bezier::RationalBezierCurve::from_weighted(
+            &[
+                DVec3::new(
+                    1.0000000000000406,
+                    4.0625000000000004e-14,
+                    4.0625000000000004e-14,
+                ),
+                DVec3::new(
+                    0.9999999999999313,
+                    8.125000000000001e-14,
+                    8.125000000000001e-14,
+                ),
+            ],
+            &[1.0000000000000004; 2],
+        )
+        .unwrap();
+        let spline = PiecewiseCurve::with_unit_intervals(vec![line]).unwrap();
+        match ph_frenet_frames(&spline) {
+            Err(e) => assert!(e.message().contains("no PH cubic interpolates"), "{e}"),
+            Ok(frames) => {
+                for i in 0..=20 {
+                    let f = frames.frame(i as f64 / 20.0);
+                    let error = crate::frames::metrics::orthonormality_error(&f);
+                    assert!(error < 1e-7, "{error:e}");
+                }
             }
         }
     }

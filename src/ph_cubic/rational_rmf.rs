@@ -219,12 +219,15 @@ fn piece_frame(
     v0: f64,
     v1: f64,
 ) -> Result<(super::base_frame::FrameNumerators, Option<BiquadraticFit>)> {
-    let numerators = restricted(segment.base(), v0, v1);
+    // The base numerators on the piece, borrowed when the piece is the whole segment.
+    let base = segment.base().numerators();
+    let restricted = (v0 != 0.0 || v1 != 1.0).then(|| base.restricted(v0, v1));
+    let numerators = restricted.as_ref().unwrap_or(base);
     let (g0, g1) = (segment.angle(v0), segment.angle(v1));
     let length = v1 - v0;
     let rate = |u: f64| segment.rate(v0 + u * length) * length;
     if g0 == g1 && rate(0.0) == 0.0 && rate(1.0) == 0.0 {
-        return Ok((numerators, None));
+        return Ok((restricted.unwrap_or_else(|| base.clone()), None));
     }
     let half_turn = 0.25 * (g1 - g0);
     let (w0, w1) = (-half_turn.tan(), half_turn.tan());
@@ -246,7 +249,7 @@ fn piece_frame(
 /// the family (37) onto itself), λ does. Fails for a (nearly) straight cubic, which has no
 /// Frenet frame to start from, and when Ω reaches ±π (w has a pole).
 pub fn cubic_rmf_fit(cubic: &PhCubic, omega0: f64) -> Result<BiquadraticFit> {
-    let BaseFrame::Frenet { angle, .. } = BaseFrame::of(cubic) else {
+    let BaseFrame::Frenet { angle, .. } = BaseFrame::of(cubic)? else {
         return invalid!("the cubic is (nearly) straight: its Frenet frame is undefined");
     };
     let omega = |v: f64| omega0 + angle.increment(v);
@@ -266,14 +269,6 @@ pub fn cubic_rmf_fit(cubic: &PhCubic, omega0: f64) -> Result<BiquadraticFit> {
         s1: slope(1.0),
     };
     fit(data, |v| angle.rate(v))
-}
-
-fn restricted(base: &BaseFrame, v0: f64, v1: f64) -> super::base_frame::FrameNumerators {
-    if v0 == 0.0 && v1 == 1.0 {
-        base.numerators().clone()
-    } else {
-        base.numerators().restricted(v0, v1)
-    }
 }
 
 #[cfg(test)]
