@@ -9,7 +9,7 @@ use std::ptr::null_mut;
 use super::callback::CallbackCurve;
 use super::core::or_null;
 use super::ph_cubic::hermite_data;
-use super::session::{checked, is_poisoned, poisoned, Session};
+use super::session::{checked, is_poisoned, poisoned, tracing, Session};
 
 /// The operations of this module.
 pub const OPS: &[fn(&mut Session)] = &[
@@ -68,6 +68,11 @@ fn frames(s: &mut Session) {
 fn rrmf_hermite(s: &mut Session) {
     let (points, tangents, n) = hermite_data(s);
     let normal = s.input.vec3();
+    if tracing() {
+        eprintln!(
+            "Möbius Hermite: points {points:?}, tangents {tangents:?}, n {n}, normal {normal:?}"
+        );
+    }
     let (mut c, mut f) = (poisoned(), poisoned());
     let status = unsafe {
         rmf_mobius_rrmf_hermite(

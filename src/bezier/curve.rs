@@ -127,6 +127,17 @@ impl RationalBezierCurve {
         }
     }
 
+    /// The same curve moved by `offset`: (w x, w) becomes (w (x + offset), w).
+    pub fn translated(&self, offset: DVec3) -> Self {
+        Self {
+            points: self
+                .points
+                .iter()
+                .map(|&h| h + (offset * h.w).extend(0.0))
+                .collect(),
+        }
+    }
+
     /// The pieces on [0, t] and [t, 1], each on [0, 1].
     pub fn split(&self, t: f64) -> (Self, Self) {
         let (a, b) = bernstein::split(&self.points, t);
