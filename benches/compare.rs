@@ -16,6 +16,8 @@
 //!
 //! Times are the fastest of several runs (the machine may be shared).
 
+mod support;
+
 use glam::DVec3;
 use rmfsurf::bezier::{NurbsSurface, PiecewiseCurve, PiecewiseSurface, RationalBezierCurve};
 use rmfsurf::cone_spline::developable::TangentSurface;
@@ -32,14 +34,11 @@ use rmfsurf::ph_cubic::ph_spline_hermite;
 use rmfsurf::ph_cubic::rational_rmf::{ph_rational_rmf, RmfOptions};
 use rmfsurf::rrmf_quintic::{rrmf_spline, ShapeMeasure};
 use rmfsurf::sweep::sweep;
-use std::hint::black_box;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
-use std::time::Instant;
+use support::{timed, REPEATS};
 
-/// Runs of each timed step; the fastest counts.
-const REPEATS: usize = 5;
 /// Frame samples per spline segment in the frame comparison: a coarse and a fine
 /// tessellation of the sweep.
 const SAMPLES_PER_SEGMENT: [usize; 2] = [2, 10];
@@ -56,19 +55,6 @@ fn main() {
 
 // ---------------------------------------------------------------------------------------
 // Timing and data
-
-/// Seconds of the fastest of REPEATS runs of `f`, with its last result.
-fn timed<T>(mut f: impl FnMut() -> T) -> (f64, T) {
-    let mut best = f64::INFINITY;
-    let mut result = None;
-    for _ in 0..REPEATS {
-        let start = Instant::now();
-        let r = black_box(f());
-        best = best.min(start.elapsed().as_secs_f64());
-        result = Some(r);
-    }
-    (best, result.expect("REPEATS > 0"))
-}
 
 /// The conical helix ((t/20 + 1) cos t, (t/20 + 1) sin t, 0.3 t) and its derivative.
 fn spiral(t: f64) -> (DVec3, DVec3) {

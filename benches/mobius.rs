@@ -4,14 +4,15 @@
 //!
 //!   cargo bench --bench mobius
 
+mod support;
+
 use glam::DVec3;
 use rmfsurf::curve::{uniform_parameters, ParametricCurve};
 use rmfsurf::frames::double_reflection::DoubleReflectionRmf;
 use rmfsurf::math::angle_between;
 use rmfsurf::mobius::mobius_approximate;
 use rmfsurf::Result;
-use std::hint::black_box;
-use std::time::Instant;
+use support::fastest_of;
 
 struct Helix;
 
@@ -42,17 +43,6 @@ impl ParametricCurve for Helix {
     }
 }
 
-/// Best of `runs` wall-clock times of `f`, in seconds.
-fn best_of<T>(runs: usize, mut f: impl FnMut() -> T) -> f64 {
-    (0..runs)
-        .map(|_| {
-            let start = Instant::now();
-            black_box(f());
-            start.elapsed().as_secs_f64()
-        })
-        .fold(f64::INFINITY, f64::min)
-}
-
 fn main() {
     let seed = DVec3::Z;
     for (name, curve) in [
@@ -60,7 +50,7 @@ fn main() {
         ("twisted cubic (paper's map)", &TwistedCubic),
     ] {
         let segments = 1000;
-        let t = best_of(5, || mobius_approximate(curve, segments, seed).unwrap());
+        let (t, _) = fastest_of(5, || mobius_approximate(curve, segments, seed).unwrap());
         println!(
             "Hermite construction, {name}, {segments} segments: {:.3} ms ({:.2} µs per segment)",
             t * 1e3,
@@ -71,13 +61,13 @@ fn main() {
     let samples = 100_000;
     let params = uniform_parameters(spline.curve.domain(), samples);
     let start = spline.frames.frame(0.0).f2;
-    let eval = best_of(5, || {
+    let (eval, _) = fastest_of(5, || {
         params
             .iter()
             .map(|&t| spline.frames.frame(t).f2.x)
             .sum::<f64>()
     });
-    let reflect = best_of(5, || {
+    let (reflect, _) = fastest_of(5, || {
         DoubleReflectionRmf::along(&spline.curve, params.clone(), start).unwrap()
     });
     println!(

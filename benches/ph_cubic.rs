@@ -6,6 +6,8 @@
 //!
 //! Run with `cargo bench --bench ph_cubic`.
 
+mod support;
+
 use glam::DVec3;
 use rmfsurf::bezier::{PiecewiseCurve, RationalBezierCurve};
 use rmfsurf::curve::uniform_parameters;
@@ -16,13 +18,10 @@ use rmfsurf::ph_cubic::exact_rmf::ExactRmf;
 use rmfsurf::ph_cubic::ph_spline_hermite;
 use rmfsurf::ph_cubic::rational_rmf::{ph_rational_rmf, RmfOptions};
 use rmfsurf::sweep::sweep;
-use std::hint::black_box;
-use std::time::{Duration, Instant};
+use support::{timed, REPEATS};
 
 const SEGMENTS: usize = 1_000;
 const FRAMES: usize = 100_000;
-/// Each measurement is repeated and the fastest run kept (the machine is shared).
-const REPEATS: usize = 5;
 
 /// The conical helix ((t/20 + 1) cos t, (t/20 + 1) sin t, 0.3 t) with its derivative.
 fn spiral(t: f64) -> (DVec3, DVec3) {
@@ -35,19 +34,6 @@ fn spiral(t: f64) -> (DVec3, DVec3) {
             0.3,
         ),
     )
-}
-
-/// The fastest of REPEATS runs of `f`, with its last result.
-fn timed<T>(mut f: impl FnMut() -> T) -> (Duration, T) {
-    let mut best = Duration::MAX;
-    let mut result = None;
-    for _ in 0..REPEATS {
-        let start = Instant::now();
-        let r = black_box(f());
-        best = best.min(start.elapsed());
-        result = Some(r);
-    }
-    (best, result.expect("REPEATS > 0"))
 }
 
 fn max_angle(exact: &ExactRmf, params: &[f64], frames: &[Frame]) -> f64 {
@@ -87,7 +73,7 @@ fn main() {
     let exact = ExactRmf::new(&spline, normal, 0.0).unwrap();
     let e_rational = max_angle(&exact, &params, &rational);
     let e_reflection = max_angle(&exact, &params, reflected.frames());
-    let ms = |d: Duration| d.as_secs_f64() * 1e3;
+    let ms = |seconds: f64| seconds * 1e3;
 
     println!("PH cubic pipeline, {SEGMENTS} segments (conical helix), fastest of {REPEATS} runs:");
     println!("  PH spline (Table 1)            {:9.3} ms", ms(t_spline));

@@ -150,6 +150,30 @@ use RmfStatus::{
     RmfErrorNoSolution as NO_SOLUTION, RmfErrorNullPointer as NULL,
 };
 
+/// `rmf_cone_spline_approximate` on the tangent surface of the twisted cubic (1e-3, t in
+/// [0.2, 1.2], v in [0.5, 6]) with the given rule and piece limit.
+unsafe fn twisted_cubic_cones(
+    rule: u32,
+    max_pieces: usize,
+    out: *mut *mut RmfConeSpline,
+) -> RmfStatus {
+    let mut max_error = 0.0;
+    rmf_cone_spline_approximate(
+        null(),
+        Some(twisted_cubic),
+        null_mut(),
+        0.2,
+        1.2,
+        0.5,
+        6.0,
+        1e-3,
+        rule,
+        max_pieces,
+        out,
+        &mut max_error,
+    )
+}
+
 fn rows() -> Vec<Row> {
     vec![
         Row {
@@ -747,23 +771,8 @@ fn rows() -> Vec<Row> {
             expected: INVALID,
             names: "rule",
             call: |_| {
-                let (mut out, mut e) = (null_mut(), 0.0);
-                unsafe {
-                    rmf_cone_spline_approximate(
-                        null(),
-                        Some(twisted_cubic),
-                        null_mut(),
-                        0.2,
-                        1.2,
-                        0.5,
-                        6.0,
-                        1e-3,
-                        99,
-                        100,
-                        &mut out,
-                        &mut e,
-                    )
-                }
+                let mut out = null_mut();
+                unsafe { twisted_cubic_cones(99, 100, &mut out) }
             },
         },
         Row {
@@ -772,23 +781,8 @@ fn rows() -> Vec<Row> {
             expected: INVALID,
             names: "max_pieces",
             call: |_| {
-                let (mut out, mut e) = (null_mut(), 0.0);
-                unsafe {
-                    rmf_cone_spline_approximate(
-                        null(),
-                        Some(twisted_cubic),
-                        null_mut(),
-                        0.2,
-                        1.2,
-                        0.5,
-                        6.0,
-                        1e-3,
-                        0,
-                        1,
-                        &mut out,
-                        &mut e,
-                    )
-                }
+                let mut out = null_mut();
+                unsafe { twisted_cubic_cones(0, 1, &mut out) }
             },
         },
         Row {
@@ -797,22 +791,9 @@ fn rows() -> Vec<Row> {
             expected: INVALID,
             names: "vertex",
             call: |_| {
-                let (mut spline, mut e, mut surface) = (null_mut(), 0.0, null_mut());
+                let (mut spline, mut surface) = (null_mut(), null_mut());
                 unsafe {
-                    rmf_cone_spline_approximate(
-                        null(),
-                        Some(twisted_cubic),
-                        null_mut(),
-                        0.2,
-                        1.2,
-                        0.5,
-                        6.0,
-                        1e-3,
-                        0,
-                        1000,
-                        &mut spline,
-                        &mut e,
-                    );
+                    twisted_cubic_cones(0, 1000, &mut spline);
                     let status = rmf_cone_spline_surface(spline, -100.0, 100.0, &mut surface);
                     rmf_cone_spline_free(spline);
                     status

@@ -30,6 +30,16 @@ impl CallbackCurve {
         }
         (Some(evaluate), (self as *mut Self).cast())
     }
+
+    /// This curve as the callback argument when `used`, else no callback (the entry points
+    /// take either a curve handle or a callback).
+    pub fn callback_if(&mut self, used: bool) -> (RmfCurveCallback, *mut c_void) {
+        if used {
+            self.as_callback()
+        } else {
+            (None, null_mut())
+        }
+    }
 }
 
 unsafe extern "C" fn evaluate(

@@ -71,11 +71,7 @@ fn fit_made(s: &mut Session, function: &str, status: RmfStatus, out: *mut RmfCon
 fn approximate(s: &mut Session) {
     let mut source = CallbackCurve::draw(&mut s.input);
     let curve = s.curve();
-    let (callback, user) = if s.input.flag() {
-        source.as_callback()
-    } else {
-        (None, null_mut())
-    };
+    let (callback, user) = source.callback_if(s.input.flag());
     let [t_min, t_max, v_min, v_max, tolerance] = [(); 5].map(|_| s.input.f64());
     let (rule, max_pieces) = (s.input.code(), s.input.work());
     let (mut out, mut e) = (poisoned(), poisoned::<f64>());
@@ -127,11 +123,7 @@ fn approximate_dual(s: &mut Session) {
 fn osculating(s: &mut Session) {
     let mut source = CallbackCurve::draw(&mut s.input);
     let curve = s.curve();
-    let (callback, user) = if s.input.flag() {
-        source.as_callback()
-    } else {
-        (None, null_mut())
-    };
+    let (callback, user) = source.callback_if(s.input.flag());
     let [t_min, t_max, v_min, v_max] = [(); 4].map(|_| s.input.f64());
     let n = s.input.len(8);
     let parameters = s.input.increasing(n);

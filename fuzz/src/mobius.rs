@@ -4,7 +4,6 @@
 
 use rmfsurf::ffi::mobius::*;
 use rmfsurf::ffi::RmfVec3;
-use std::ptr::null_mut;
 
 use super::callback::CallbackCurve;
 use super::core::or_null;
@@ -90,11 +89,7 @@ fn rrmf_hermite(s: &mut Session) {
 fn rrmf_approximate(s: &mut Session) {
     let mut source = CallbackCurve::draw(&mut s.input);
     let curve = s.curve();
-    let (callback, user) = if s.input.flag() {
-        source.as_callback()
-    } else {
-        (None, null_mut())
-    };
+    let (callback, user) = source.callback_if(s.input.flag());
     let (t_min, t_max) = (s.input.f64(), s.input.f64());
     let (segments, normal) = (s.input.work(), s.input.vec3());
     let (mut c, mut f) = (poisoned(), poisoned());

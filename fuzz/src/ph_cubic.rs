@@ -76,11 +76,7 @@ fn spline_hermite(s: &mut Session) {
 fn spline_approximate(s: &mut Session) {
     let mut source = CallbackCurve::draw(&mut s.input);
     let curve = s.curve();
-    let (callback, user) = if s.input.flag() {
-        source.as_callback()
-    } else {
-        (None, null_mut())
-    };
+    let (callback, user) = source.callback_if(s.input.flag());
     let (t_min, t_max, tolerance) = (s.input.f64(), s.input.f64(), s.input.f64());
     if tracing() {
         eprintln!(
