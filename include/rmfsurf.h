@@ -1965,7 +1965,7 @@ RmfStatus rmf_surface_tessellate(const struct RmfSurface *surface,
  * @return RMF_OK on success.
  * @return RMF_ERROR_NULL_POINTER If an argument is NULL.
  * @return RMF_ERROR_INVALID_INPUT If the frames are not rational or do not belong to the
- *         spine.
+ *         spine, or the surface would have more than 2^22 (4,194,304) control points.
  */
 RmfStatus rmf_sweep_surface(const struct RmfCurve *spine,
                             const struct RmfFrames *frames,

@@ -21,6 +21,11 @@ use glam::{DVec3, DVec4};
 /// Relative tolerance for the frames' tangent against the spine's.
 const TANGENT_TOLERANCE: f64 = 1e-8;
 
+/// Most control points of one sweep surface (2²², 128 MiB of homogeneous points): far above
+/// any CAD surface, and a bound on the work and memory a single call can ask for (a fuzz
+/// finding: a profile and spine of many segments made a call run for minutes in 4 GiB).
+pub const MAX_SWEEP_POLES: usize = 1 << 22;
+
 /// The sweep of `profile` (its x → f₂, y → f₃; z ignored) along `spine` with `frames`.
 /// The frames must belong to the spine: the spine's breakpoints or a refinement of them
 /// (the spine is then split to match), and frame tangent = spine tangent.
@@ -41,6 +46,7 @@ pub fn sweep(
         &refined
     };
     check_frames_fit_spine(spine, frames)?;
+    check_sweep_size(spine, frames, profile)?;
     let mut patches = Vec::with_capacity(profile.segments().len() * spine.segments().len());
     for piece in profile.segments() {
         for (segment, frame) in spine.segments().iter().zip(frames.segments()) {
@@ -48,6 +54,30 @@ pub fn sweep(
         }
     }
     PiecewiseSurface::new(patches, profile.breaks().to_vec(), spine.breaks().to_vec())
+}
+
+/// The surface's control points, counted before they are made: at most [`MAX_SWEEP_POLES`].
+fn check_sweep_size(
+    spine: &PiecewiseCurve,
+    frames: &RationalFrames,
+    profile: &PiecewiseCurve,
+) -> Result<()> {
+    let along_profile: usize = profile.segments().iter().map(|c| c.degree() + 1).sum();
+    let along_spine: usize = spine
+        .segments()
+        .iter()
+        .zip(frames.segments())
+        .map(|(x, f)| x.degree() + f.degree() + 1)
+        .sum();
+    match along_profile.checked_mul(along_spine) {
+        Some(poles) if poles <= MAX_SWEEP_POLES => Ok(()),
+        _ => invalid!(
+            "the sweep would have {along_profile} × {along_spine} control points ({} profile \
+             and {} spine segments), more than {MAX_SWEEP_POLES}",
+            profile.segments().len(),
+            spine.segments().len()
+        ),
+    }
 }
 
 /// One patch: profile piece × spine segment (see the module equation).
@@ -165,6 +195,19 @@ mod tests {
                 assert!(parameter_line_cosine(&jet) < 1e-14);
             }
         }
+    }
+
+    /// Fuzz finding: 2,048 profile × 2,048 spine segments (134 million control points) ran
+    /// for minutes in 4 GiB; sweeps are bounded by their control point count.
+    #[test]
+    fn sweeps_beyond_the_control_point_bound_are_refused() {
+        let (spine, frames) = arc_with_frames();
+        let pieces = MAX_SWEEP_POLES / 2 / 3 + 1; // poles per spine segment: 2 × (2 + 1)
+        let line = line_profile().segments()[0].clone();
+        let long = PiecewiseCurve::with_unit_intervals(vec![line; pieces]).unwrap();
+        let e = sweep(&spine, &frames, &long).unwrap_err();
+        assert!(e.message().contains("control points"), "{e}");
+        assert!(sweep(&spine, &frames, &line_profile()).is_ok());
     }
 
     #[test]

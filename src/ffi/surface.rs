@@ -479,7 +479,7 @@ pub unsafe extern "C" fn rmf_surface_tessellate(
 /// @return RMF_OK on success.
 /// @return RMF_ERROR_NULL_POINTER If an argument is NULL.
 /// @return RMF_ERROR_INVALID_INPUT If the frames are not rational or do not belong to the
-///         spine.
+///         spine, or the surface would have more than 2^22 (4,194,304) control points.
 #[no_mangle]
 pub unsafe extern "C" fn rmf_sweep_surface(
     spine: *const RmfCurve,

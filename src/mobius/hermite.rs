@@ -230,6 +230,20 @@ mod tests {
         assert!(tangent < 1e-6, "{tangent:e}");
     }
 
+    /// Fuzz finding: nearly planar data with t₀ ≈ −t₁ got the plane normal t₀ × t₁, at 0.06
+    /// to the chord, and frames 2e-6 from orthonormal.
+    #[test]
+    fn nearly_planar_data_with_opposite_tangents_have_orthonormal_frames() {
+        let points = [DVec3::X, DVec3::new(3.21875, 0.1875, 0.0)];
+        let tangents = [
+            DVec3::new(-0.5, 4.504815179920234e-91, 4.5048151799202344e-91),
+            DVec3::new(1.0000000290625, 2.90625e-8, 2.90625e-8),
+        ];
+        let result = mobius_hermite_points(&points, &tangents, DVec3::Z).unwrap();
+        let [_, orthonormality, _] = check_rational_rmf(&result);
+        assert!(orthonormality < 1e-12, "{orthonormality:e}");
+    }
+
     #[test]
     fn one_segment_is_a_sextic_on_the_sphere_with_an_exact_rmf() {
         let data = single();
