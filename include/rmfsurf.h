@@ -1172,8 +1172,9 @@ RmfStatus rmf_mobius_vector(const struct RmfInversion *maps,
  * @param[out] out Receives the image curve; free with rmf_curve_free.
  * @return RMF_OK on success.
  * @return RMF_ERROR_NULL_POINTER If curve, maps or out is NULL.
- * @return RMF_ERROR_INVALID_INPUT If the map is invalid or the curve passes through (or too
- *         near) an inversion centre.
+ * @return RMF_ERROR_INVALID_INPUT If the map is invalid, the curve passes through (or too
+ *         near) an inversion centre, or the image would have degree above 64 (each sphere
+ *         inversion doubles the degree).
  */
 RmfStatus rmf_mobius_curve(const struct RmfCurve *curve,
                            const struct RmfInversion *maps,
@@ -1193,8 +1194,10 @@ RmfStatus rmf_mobius_curve(const struct RmfCurve *curve,
  *             Both are written only on success.
  * @return RMF_OK on success.
  * @return RMF_ERROR_NULL_POINTER If frames, maps, curve_out or frames_out is NULL.
- * @return RMF_ERROR_INVALID_INPUT If the frames are not rational, the map is invalid, or the
- *         curve passes through an inversion centre.
+ * @return RMF_ERROR_INVALID_INPUT If the frames are not rational, the map is invalid, the
+ *         curve passes through an inversion centre, or the image or its frames would have
+ *         degree above 64 (a sphere inversion takes degree n to 2n, frames of degree m to
+ *         m + 2n).
  */
 RmfStatus rmf_mobius_frames(const struct RmfFrames *frames,
                             const struct RmfInversion *maps,

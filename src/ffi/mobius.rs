@@ -139,8 +139,9 @@ pub unsafe extern "C" fn rmf_mobius_vector(
 /// @param[out] out Receives the image curve; free with rmf_curve_free.
 /// @return RMF_OK on success.
 /// @return RMF_ERROR_NULL_POINTER If curve, maps or out is NULL.
-/// @return RMF_ERROR_INVALID_INPUT If the map is invalid or the curve passes through (or too
-///         near) an inversion centre.
+/// @return RMF_ERROR_INVALID_INPUT If the map is invalid, the curve passes through (or too
+///         near) an inversion centre, or the image would have degree above 64 (each sphere
+///         inversion doubles the degree).
 #[no_mangle]
 pub unsafe extern "C" fn rmf_mobius_curve(
     curve: *const RmfCurve,
@@ -170,8 +171,10 @@ pub unsafe extern "C" fn rmf_mobius_curve(
 ///             Both are written only on success.
 /// @return RMF_OK on success.
 /// @return RMF_ERROR_NULL_POINTER If frames, maps, curve_out or frames_out is NULL.
-/// @return RMF_ERROR_INVALID_INPUT If the frames are not rational, the map is invalid, or the
-///         curve passes through an inversion centre.
+/// @return RMF_ERROR_INVALID_INPUT If the frames are not rational, the map is invalid, the
+///         curve passes through an inversion centre, or the image or its frames would have
+///         degree above 64 (a sphere inversion takes degree n to 2n, frames of degree m to
+///         m + 2n).
 #[no_mangle]
 pub unsafe extern "C" fn rmf_mobius_frames(
     frames: *const RmfFrames,

@@ -16,7 +16,7 @@
 //! Bernstein coefficients as weights: segments are split until every weight is positive.
 
 use super::transform::{Inversion, MobiusMap};
-use crate::bezier::bernstein::{positive_subdivision, product, restrict};
+use crate::bezier::bernstein::{positive_subdivision, product, restrict, MAX_DEGREE};
 use crate::bezier::{PiecewiseCurve, RationalBezierCurve};
 use crate::error::{invalid, Result};
 use crate::frames::rational::{RationalFrameSegment, RationalFrames};
@@ -187,6 +187,27 @@ pub fn map_framed_curve(
     Ok((image, frames.expect("frames were given")))
 }
 
+/// The degrees of the image of a segment of degree `n` (and of frames of degree `m`) stay
+/// within [`MAX_DEGREE`]: a sphere inversion takes n to 2n and m to m + 2n (module notes), so
+/// a few inversions of a cubic already exceed it (a fuzz finding: frames of degree 188).
+fn check_image_degrees(map: &MobiusMap, n: usize, m: Option<usize>) -> Result<()> {
+    let (mut curve, mut frame) = (n, m);
+    for inversion in map.inversions() {
+        if let Inversion::Sphere { .. } = inversion {
+            frame = frame.map(|m| m.saturating_add(curve.saturating_mul(2)));
+            curve = curve.saturating_mul(2);
+        }
+    }
+    let frame = frame.unwrap_or(0);
+    if curve > MAX_DEGREE || frame > MAX_DEGREE {
+        return invalid!(
+            "the image would have degree {curve} (frames {frame}), above {MAX_DEGREE}: each \
+             sphere inversion doubles a curve's degree"
+        );
+    }
+    Ok(())
+}
+
 /// Maps every segment (with its frame, if any), splits where weights are not positive, and
 /// reassembles on the refined segmentation.
 fn map_pieces(
@@ -194,6 +215,10 @@ fn map_pieces(
     curve: &PiecewiseCurve,
     frames: Option<&RationalFrames>,
 ) -> Result<(PiecewiseCurve, Option<RationalFrames>)> {
+    for (k, segment) in curve.segments().iter().enumerate() {
+        let frame_degree = frames.map(|f| f.segments()[k].degree());
+        check_image_degrees(map, segment.degree(), frame_degree)?;
+    }
     let mut segments = Vec::new();
     let mut frame_segments = Vec::new();
     let mut breaks = vec![curve.breaks()[0]];
@@ -287,6 +312,24 @@ mod tests {
             worst < 1e-9,
             "transported RMF differs from double reflection by {worst}"
         );
+    }
+
+    /// Fuzz finding: repeated sphere inversions took frames to degree 188 and the Bernstein
+    /// products past their tables (a panic). Images beyond the degree bound are refused.
+    #[test]
+    fn images_beyond_the_degree_bound_are_refused() {
+        let (curve, frames) = planar_ph_cubic();
+        let sphere = Inversion::sphere(DVec3::new(1.0, -2.0, -1.0), 3.0).unwrap();
+        // A cubic: 3 → 6 → 12 → 24 → 48; its frames grow faster (m → m + 2n).
+        let four = MobiusMap::new(vec![sphere; 4]);
+        let e = map_framed_curve(&four, &curve, &frames).unwrap_err();
+        assert!(e.message().contains("above 64"), "{e}");
+        assert!(
+            map_curve(&four, &curve).is_ok(),
+            "the curve alone has degree 48"
+        );
+        let five = MobiusMap::new(vec![sphere; 5]);
+        assert!(map_curve(&five, &curve).is_err());
     }
 
     /// Corollary 1, exactly: the rational image of a rational RMF is a rational RMF of the
