@@ -3,7 +3,7 @@
 //! naming the C arguments (`points[i]`, `tangents[i]`, or `p0`, `t0`, `p1`, `t1`).
 
 use crate::error::{invalid, Result};
-use crate::math::{check_point, check_unit_direction};
+use crate::math::{check_point, check_unit_direction, robust_length};
 use glam::DVec3;
 use std::fmt::Display;
 
@@ -42,9 +42,9 @@ impl HermiteSegment {
         Ok(segment)
     }
 
-    /// |p1 − p0|.
+    /// |p1 − p0|, without overflow in the squares for coordinates beyond 1e154.
     pub fn chord_length(&self) -> f64 {
-        (self.p1 - self.p0).length()
+        robust_length(self.p1 - self.p0)
     }
 }
 

@@ -127,13 +127,14 @@ impl RationalBezierCurve {
         }
     }
 
-    /// The same curve moved by `offset`: (w x, w) becomes (w (x + offset), w).
-    pub fn translated(&self, offset: DVec3) -> Self {
+    /// The same curve scaled by `scale` about the origin, then moved by `offset`:
+    /// (w x, w) becomes (w (scale x + offset), w).
+    pub fn similar(&self, scale: f64, offset: DVec3) -> Self {
         Self {
             points: self
                 .points
                 .iter()
-                .map(|&h| h + (offset * h.w).extend(0.0))
+                .map(|&h| (h.truncate() * scale + offset * h.w).extend(h.w))
                 .collect(),
         }
     }

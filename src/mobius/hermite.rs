@@ -55,18 +55,22 @@ fn planar_cubic(data: &HermiteSegment, plane: &SegmentMap, index: usize) -> Resu
     let normal = plane.plane_normal;
     // The mapped tangents lie in the plane up to round-off; put them there exactly so the
     // cubic is planar and n is normal to it.
-    let into_plane = |p: DVec3, t: DVec3| {
-        let v = plane
-            .map
-            .normalized_differential(p, t)
-            .expect("end points are not the inversion centre");
-        v - v.dot(normal) * normal
+    let into_plane = |p: DVec3, t: DVec3| -> Result<DVec3> {
+        // None only where rounding puts an end point (numerically) at the inversion centre
+        // (a fuzz finding: this was a panic).
+        let v = plane.map.normalized_differential(p, t).ok_or_else(|| {
+            Error::NoSolution(format!(
+                "segment {index}: the Möbius map degenerates at an end point (numerically at \
+                 its inversion centre)"
+            ))
+        })?;
+        Ok(v - v.dot(normal) * normal)
     };
     let mapped = HermiteSegment::new(
         data.p0,
-        into_plane(data.p0, data.t0),
+        into_plane(data.p0, data.t0)?,
         data.p1,
-        into_plane(data.p1, data.t1),
+        into_plane(data.p1, data.t1)?,
     )
     .map_err(|e| {
         Error::NoSolution(format!(
@@ -87,13 +91,17 @@ fn interpolate_segment(
     (a, b): (f64, f64),
     pieces: &mut Pieces,
 ) -> Result<()> {
-    // Built at the chord's midpoint and moved there at the end: a segment short against its
-    // distance from the origin keeps its own precision in the spheres and inversions (a fuzz
-    // finding: a chord of 3e-14 at distance 1.7 had frames 2e-5 from orthonormal).
+    // Built with the chord's midpoint at the origin and a unit chord, then scaled and moved
+    // back (the construction commutes with similarities): a segment short against its
+    // distance from the origin keeps its own precision in the spheres and inversions, and a
+    // huge one does not overflow in their squares (fuzz findings: a chord of 3e-14 at
+    // distance 1.7 had frames 4e-2 from orthonormal; a chord of 4e153 met the inversion
+    // centre in round-off).
     let origin = 0.5 * (data.p0 + data.p1);
+    let scale = data.chord_length();
     let local = HermiteSegment {
-        p0: data.p0 - origin,
-        p1: data.p1 - origin,
+        p0: (data.p0 - origin) / scale,
+        p1: (data.p1 - origin) / scale,
         ..*data
     };
     let plane = chosen_segment_map(&local);
@@ -101,7 +109,7 @@ fn interpolate_segment(
     let points = cubic.to_bezier().homogeneous().to_vec();
     let frame = planar_frame(&cubic, plane.plane_normal);
     for (s1, curve, frame) in map_raw_segment(&plane.map, &points, Some(frame), index)? {
-        pieces.curves.push(curve.translated(origin));
+        pieces.curves.push(curve.similar(scale, origin));
         pieces.frames.extend(frame);
         pieces.breaks.push(global_parameter(a, b, s1));
     }
@@ -228,6 +236,11 @@ mod tests {
         let [_, orthonormality, tangent] = check_rational_rmf(&result);
         assert!(orthonormality < 1e-12, "{orthonormality:e}");
         assert!(tangent < 1e-6, "{tangent:e}");
+        // and a huge one (squares of 1e160 overflow) is the same curve scaled
+        let huge = 1e160;
+        let big = mobius_hermite_points(&[p0 * huge, (p0 + 1e-6) * huge], &tangents, normal);
+        let [_, orthonormality, _] = check_rational_rmf(&big.unwrap());
+        assert!(orthonormality < 1e-12, "{orthonormality:e}");
     }
 
     /// Fuzz finding: nearly planar data with t₀ ≈ −t₁ got the plane normal t₀ × t₁, at 0.06
