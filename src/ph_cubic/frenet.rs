@@ -89,6 +89,15 @@ mod tests {
         }
     }
 
+    /// Frames at 21 parameters of [0, 1] orthonormal within `tolerance`.
+    fn assert_orthonormal(frames: &RationalFrames, tolerance: f64) {
+        for i in 0..=20 {
+            let f = frames.frame(i as f64 / 20.0);
+            let error = crate::frames::metrics::orthonormality_error(&f);
+            assert!(error < tolerance, "{error:e}");
+        }
+    }
+
     /// Fuzz finding: a segment of 4e-13 at distance 1 from the origin (its polygon PH only
     /// to 1e-3, within the tolerance its rounding allows) had Frenet frames 1e-3 from
     /// orthonormal; a PH cubic perturbed by 1e-10 near a straight line, 2e-5.
@@ -111,13 +120,8 @@ mod tests {
         let perturbed = crate::bezier::RationalBezierCurve::polynomial(&poles).unwrap();
         for segment in [tiny, perturbed] {
             let spline = PiecewiseCurve::with_unit_intervals(vec![segment]).unwrap();
-            let frames = ph_frenet_frames(&spline).unwrap();
-            for i in 0..=20 {
-                let f = frames.frame(i as f64 / 20.0);
-                let error = crate::frames::metrics::orthonormality_error(&f);
-                // Both polygons bend by about 1e-3 rad: (19) is conditioned like ε/θ² there.
-                assert!(error < 1e-7, "{error:e}");
-            }
+            // Both polygons bend by about 1e-3 rad: (19) is conditioned like ε/θ² there.
+            assert_orthonormal(&ph_frenet_frames(&spline).unwrap(), 1e-7);
         }
     }
 
@@ -145,13 +149,7 @@ mod tests {
         let spline = PiecewiseCurve::with_unit_intervals(vec![line]).unwrap();
         match ph_frenet_frames(&spline) {
             Err(e) => assert!(e.message().contains("no PH cubic interpolates"), "{e}"),
-            Ok(frames) => {
-                for i in 0..=20 {
-                    let f = frames.frame(i as f64 / 20.0);
-                    let error = crate::frames::metrics::orthonormality_error(&f);
-                    assert!(error < 1e-7, "{error:e}");
-                }
-            }
+            Ok(frames) => assert_orthonormal(&frames, 1e-7),
         }
     }
 
