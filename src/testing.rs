@@ -7,6 +7,7 @@ use crate::frames::frenet::frenet_frame;
 use crate::frames::metrics::angle_about_tangent;
 use crate::frames::rational::{RationalFrameSegment, RationalFrames};
 use crate::frames::Frame;
+use crate::hermite::HermiteSegment;
 use crate::mobius::hermite::planar_frame;
 use crate::ph_cubic::PhCubic;
 use crate::Result;
@@ -85,6 +86,17 @@ pub fn planar_ph_cubic() -> (PiecewiseCurve, RationalFrames) {
         PiecewiseCurve::new(vec![cubic.to_bezier()], vec![0.0, 1.0]).expect("one segment"),
         RationalFrames::new(vec![frame], vec![0.0, 1.0]).expect("one segment"),
     )
+}
+
+/// One spatial G1 Hermite segment (non-planar, no symmetry): the Möbius tests' data.
+pub fn spatial_hermite_segment() -> HermiteSegment {
+    HermiteSegment::new(
+        DVec3::new(0.1, 0.0, -0.2),
+        DVec3::new(1.0, 0.4, 0.3),
+        DVec3::new(1.5, 1.2, 0.4),
+        DVec3::new(0.2, 1.0, 0.6),
+    )
+    .expect("valid data")
 }
 
 /// Planar G1 data through three points (a C-shaped arc in the xy-plane).

@@ -189,18 +189,10 @@ mod tests {
     use crate::frames::metrics::{angle_about_tangent, orthonormality_error, rmf_defect};
     use crate::frames::Frame;
     use crate::frames::{FrameField, FrameKind};
-    use crate::testing::{gap_to_double_reflection, planar_hermite_data, Helix};
+    use crate::testing::{
+        gap_to_double_reflection, planar_hermite_data, spatial_hermite_segment, Helix,
+    };
     use std::sync::Arc;
-
-    fn single() -> HermiteSegment {
-        HermiteSegment::new(
-            DVec3::new(0.1, 0.0, -0.2),
-            DVec3::new(1.0, 0.4, 0.3),
-            DVec3::new(1.5, 1.2, 0.4),
-            DVec3::new(0.2, 1.0, 0.6),
-        )
-        .unwrap()
-    }
 
     fn check_rational_rmf(result: &RationalRmfCurve) -> [f64; 3] {
         let field = FrameField::new(
@@ -259,7 +251,7 @@ mod tests {
 
     #[test]
     fn one_segment_is_a_sextic_on_the_sphere_with_an_exact_rmf() {
-        let data = single();
+        let data = spatial_hermite_segment();
         let result = mobius_hermite(&[data], &[0.0, 1.0], DVec3::Z).unwrap();
         assert!(result.curve.segments().iter().all(|s| s.degree() == 6));
         let (center, radius) = chosen_segment_map(&data).sphere.unwrap();
@@ -354,7 +346,12 @@ mod tests {
         let e = mobius_hermite_points(&[DVec3::ZERO, DVec3::ZERO], &[DVec3::X, DVec3::Y], DVec3::Z)
             .unwrap_err();
         assert!(e.message().contains("coincide"));
-        let e = mobius_hermite(&[single()], &[0.0, 1.0], DVec3::new(1.0, 0.4, 0.3)).unwrap_err();
+        let e = mobius_hermite(
+            &[spatial_hermite_segment()],
+            &[0.0, 1.0],
+            DVec3::new(1.0, 0.4, 0.3),
+        )
+        .unwrap_err();
         assert!(e.message().contains("initial_normal"));
     }
 }

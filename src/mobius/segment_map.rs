@@ -247,23 +247,13 @@ fn planar_map(h: &HermiteSegment) -> SegmentMap {
 mod tests {
     use super::*;
     use crate::curve::ParametricCurve;
-    use crate::testing::Helix;
+    use crate::testing::{spatial_hermite_segment, Helix};
 
     fn inversion_centre(m: &SegmentMap) -> Option<DVec3> {
         match m.map.inversions().first() {
             Some(Inversion::Sphere { center, .. }) => Some(*center),
             _ => None,
         }
-    }
-
-    fn data() -> HermiteSegment {
-        HermiteSegment::new(
-            DVec3::new(0.1, 0.0, -0.2),
-            DVec3::new(1.0, 0.4, 0.3),
-            DVec3::new(1.5, 1.2, 0.4),
-            DVec3::new(0.2, 1.0, 0.6),
-        )
-        .unwrap()
     }
 
     fn helix_segment(a: f64, b: f64) -> HermiteSegment {
@@ -305,7 +295,7 @@ mod tests {
 
     #[test]
     fn the_papers_map_takes_the_point_farthest_from_both_ends() {
-        let h = data();
+        let h = spatial_hermite_segment();
         let m = segment_map(&h);
         check_maps_onto_a_plane_through_both_points(&h, &m);
         let (center, radius) = m.sphere.unwrap();
@@ -335,7 +325,11 @@ mod tests {
 
     #[test]
     fn the_angle_sum_is_invariant_and_the_turning_map_makes_data_c_shaped() {
-        for h in [helix_segment(0.0, 1.0), helix_segment(0.3, 2.0), data()] {
+        for h in [
+            helix_segment(0.0, 1.0),
+            helix_segment(0.3, 2.0),
+            spatial_hermite_segment(),
+        ] {
             let chord = (h.p1 - h.p0).normalize();
             let paper = segment_map(&h);
             let angles = |m: &SegmentMap| {
