@@ -2,18 +2,16 @@
 //! e₂ = E₂/d, e₃ = E₃/d, with the angle function that turns it into the exact RMF:
 //!
 //! * a cubic that bends: the Frenet frame (19) (quadratic over quadratic) and Ω of (30);
-//! * a (nearly) straight cubic, sin θ ≤ [`NEARLY_STRAIGHT`]: there (19) degenerates (its
-//!   numerators cancel down to relative size sin θ, and vanish on a line; the frame is only
-//!   as orthonormal as the cubic is PH, divided by sin²θ). Instead the frame is carried along
-//!   by the rotation taking t₀ = t(0) to t(v) about t₀ × t(v),
+//! * a (nearly) straight cubic, sin θ ≤ [`NEARLY_STRAIGHT`], where the Frenet frame is
+//!   undefined or ill-conditioned (see there): the frame carried along by the rotation
+//!   taking t₀ = t(0) to t(v) about t₀ × t(v),
 //!   R x = x − (t·x)/(1 + t₀·t) (t₀ + t) for x ⊥ t₀, which for t = x'/σ is quartic over
 //!   quartic with denominator σ(σ + t₀·x'). Its twist about the tangent, relative to the RMF, is
-//!   of third order in the bend (about θ³, below 1e-8 here): it serves as the RMF itself
-//!   (angle function 0), and on a straight line it is the constant RMF. The threshold 1e-3
-//!   balances the two errors (6e-16/θ² against θ³).
+//!   of third order in the bend (about θ³, below 1e-11 here): it serves as the RMF itself
+//!   (angle function 0), and on a straight line it is the constant RMF.
 
 use super::cubic::PhCubic;
-use super::frenet::frenet_numerators;
+use super::frenet::{frenet_numerators, NEARLY_STRAIGHT};
 use super::rmf_angle::RmfAngle;
 use crate::bezier::bernstein::{self, add_product, product, restrict};
 use crate::error::{Error, Result};
@@ -21,9 +19,6 @@ use crate::frames::rational::{frame_at, RationalFrameSegment, RationalFrames};
 use crate::frames::Frame;
 use crate::math::orthonormal_to;
 use glam::DVec3;
-
-/// sin θ below which a cubic is treated as straight (see the module notes).
-pub const NEARLY_STRAIGHT: f64 = 1e-3;
 
 /// Halvings allowed to make a denominator's Bernstein coefficients positive.
 const MAX_SUBDIVISION_DEPTH: usize = 40;

@@ -6,42 +6,42 @@
 use super::base_frame::{FrameNumerators, FramePieces};
 use super::cubic::PhCubic;
 use super::in_context;
+use super::preimage::Preimage;
 use super::spline::ph_cubics;
-use crate::bezier::bernstein::{self, product, reduce_degree};
-
 use crate::bezier::PiecewiseCurve;
 use crate::error::{invalid, Result};
 use crate::frames::rational::RationalFrames;
 use glam::DVec3;
 
-/// sin θ below which a cubic counts as a straight line, whose Frenet frame is undefined.
-/// (19) is conditioned like ε/sin²θ: below 1e-4 its orthonormality error (about
-/// 6e-16/sin²θ) would exceed 1e-7 (a fuzz finding: at sin θ = 1e-11 the "frame" had vectors
-/// of length 1.3).
-const STRAIGHT: f64 = 1e-4;
+/// sin θ below which a cubic counts as straight and gets no Frenet frame. Orthonormal at any
+/// bend (see [`frenet_numerators`]), the frame is still only as well defined as its
+/// binormal h₀ × h₁ and the twist ρ of (30), both conditioned like ε/sin θ: the RMF built on
+/// it is 2e-11 rad from the double-reflection reference at sin θ = 1.6e-4, 3.5e-9 at 1.6e-6;
+/// on a line it is undefined (a fuzz finding: at sin θ = 1e-11 the literal (19) had vectors
+/// of length 1.3). Below it the RMF is built on the carried frame, whose error grows like
+/// θ³ (8e-12 rad at 7.9e-5, 8e-9 at 7.9e-4): 1e-4 balances the two.
+pub const NEARLY_STRAIGHT: f64 = 1e-4;
 
-/// The Frenet frame (19), n = (σx'' − σ'x')/(Kσ), b = x' × x''/(Kσ), K = 6L₂|sin θ| = |x' × x''|/σ.
-///
-/// Both numerators are quadratic although built from cubic products (their t³ terms cancel
-/// for every quadratic σ and x'), so they are brought back to degree 2. K is taken from both
-/// ends, |b̂(0)|/σ(0) = |b̂(1)|/σ(1) for a PH cubic, weighted towards the longer end leg (whose
-/// rounding matters less).
+/// The Frenet frame (19) over σ = |A|², computed as the Euler–Rodrigues frame of the cubic's
+/// quaternion preimage A turned by the constant angle that takes it to (19) (see
+/// [`super::preimage`]: orthonormal to rounding for every bend). The angle is read from the
+/// binormal x' × x'' ∝ h₀ × h₁ at v = 0 and h₁ × h₂ at v = 1, weighted by size.
 pub fn frenet_numerators(cubic: &PhCubic) -> FrameNumerators {
-    let d1 = bernstein::derivative(&cubic.control_points());
-    let d2 = bernstein::derivative(&d1);
-    let sigma = cubic.speed();
-    let dsigma = bernstein::derivative(&sigma);
-    let binormal = product(&d1, &d2, |a: DVec3, b: DVec3| a.cross(b));
-    let normal: Vec<DVec3> = product(&sigma, &d2, |s: f64, v: DVec3| v * s)
-        .iter()
-        .zip(product(&dsigma, &d1, |s: f64, v: DVec3| v * s))
-        .map(|(a, b)| *a - b)
-        .collect();
-    let k = (binormal[0].length() + binormal[3].length()) / (sigma[0] + sigma[2]);
+    let preimage = Preimage::of(cubic);
+    let (e2, e3) = preimage.frame_numerators();
+    let [h0, h1, h2] = cubic.legs();
+    let (b0, b1) = (h0.cross(h1), h1.cross(h2));
+    // b = cos α e₂ + sin α e₃, so n = b × t = sin α e₂ − cos α e₃.
+    let (cos, sin) = (b0.dot(e2[0]) + b1.dot(e2[2]), b0.dot(e3[0]) + b1.dot(e3[2]));
+    let turn = |a: f64, b: f64| -> Vec<DVec3> {
+        e2.iter().zip(&e3).map(|(x, y)| *x * a + *y * b).collect()
+    };
+    let norm = cos.hypot(sin);
+    let (cos, sin) = (cos / norm, sin / norm);
     FrameNumerators {
-        e2: reduce_degree(&normal),
-        e3: reduce_degree(&binormal),
-        d: sigma.iter().map(|s| s * k).collect(),
+        e2: turn(sin, -cos),
+        e3: turn(cos, sin),
+        d: preimage.speed(),
     }
 }
 
@@ -57,9 +57,9 @@ pub fn ph_frenet_frames(spline: &PiecewiseCurve) -> Result<RationalFrames> {
             .normalized()
             .exactly_ph()
             .map_err(|e| in_context(e, &format!("ph_spline segment {k}")))?;
-        if cubic.bend() <= STRAIGHT {
+        if cubic.bend() <= NEARLY_STRAIGHT {
             return invalid!(
-                "ph_spline segment {k} is (nearly) straight (sin θ = {:.1e} ≤ {STRAIGHT:e}): its \
+                "ph_spline segment {k} is (nearly) straight (sin θ = {:.1e} ≤ {NEARLY_STRAIGHT:e}): its \
                  Frenet frame is undefined or cannot be computed accurately",
                 cubic.bend()
             );
@@ -100,7 +100,8 @@ mod tests {
 
     /// Fuzz finding: a segment of 4e-13 at distance 1 from the origin (its polygon PH only
     /// to 1e-3, within the tolerance its rounding allows) had Frenet frames 1e-3 from
-    /// orthonormal; a PH cubic perturbed by 1e-10 near a straight line, 2e-5.
+    /// orthonormal; a PH cubic perturbed by 1e-10 near a straight line, 2e-5 (then 1e-7
+    /// from the exactly PH cubic of its data, now 7e-16 from its quaternion preimage).
     #[test]
     fn frames_are_orthonormal_for_polygons_that_are_ph_only_within_tolerance() {
         let tiny = crate::bezier::RationalBezierCurve::polynomial(&[
@@ -120,8 +121,9 @@ mod tests {
         let perturbed = crate::bezier::RationalBezierCurve::polynomial(&poles).unwrap();
         for segment in [tiny, perturbed] {
             let spline = PiecewiseCurve::with_unit_intervals(vec![segment]).unwrap();
-            // Both polygons bend by about 1e-3 rad: (19) is conditioned like ε/θ² there.
-            assert_orthonormal(&ph_frenet_frames(&spline).unwrap(), 1e-7);
+            // Both polygons bend by about 1e-3 rad, where (19) taken literally is conditioned
+            // like ε/θ²; from the quaternion preimage the frames are orthonormal to rounding.
+            assert_orthonormal(&ph_frenet_frames(&spline).unwrap(), 1e-14);
         }
     }
 
@@ -149,7 +151,7 @@ mod tests {
         let spline = PiecewiseCurve::with_unit_intervals(vec![line]).unwrap();
         match ph_frenet_frames(&spline) {
             Err(e) => assert!(e.message().contains("no PH cubic interpolates"), "{e}"),
-            Ok(frames) => assert_orthonormal(&frames, 1e-7),
+            Ok(frames) => assert_orthonormal(&frames, 1e-14),
         }
     }
 

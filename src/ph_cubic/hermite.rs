@@ -360,24 +360,16 @@ mod tests {
                                 .unwrap();
                         let normal = crate::math::orthonormal_to(data.t0);
                         let rmf = ph_rational_rmf(&spline, &RmfOptions::rmf(normal)).unwrap();
-                        // Frames are unit to about (ε·|b|/L_min + PH residual)/(r sin θ): the
-                        // legs are differences of rounded points, the polygon is PH only to
-                        // its residual, (19) divides by sin θ, and where the speed dips to
-                        // r = min σ / max σ (a nearly cuspidal interpolant) relative errors
-                        // grow by 1/r.
-                        let [l1, l2, l3] = c.leg_lengths();
-                        let size = c
-                            .control_points()
-                            .iter()
-                            .fold(0.0f64, |m, p| m.max(p.abs().max_element()));
-                        let rounding = f64::EPSILON * size / l1.min(l2).min(l3);
+                        // Frames are unit to rounding of the quaternion preimage relative
+                        // to the largest speed: about ε/r where the speed dips to
+                        // r = min σ / max σ (a nearly cuspidal interpolant). (Taken literally,
+                        // (19) divided the PH residual and the rounding of the legs by sin θ.)
                         let speeds: Vec<f64> = (0..=100)
                             .map(|i| c.derivative(i as f64 / 100.0).length())
                             .collect();
                         let r = speeds.iter().fold(f64::INFINITY, |m, &x| m.min(x))
                             / speeds.iter().fold(0.0f64, |m, &x| m.max(x));
-                        let bound = 1e-12
-                            + 64.0 * (rounding + c.hodograph_residual()) / (c.bend().min(1.0) * r);
+                        let bound = 1e-14 / r;
                         for v in [0.0, 0.3, 0.7, 1.0] {
                             let e = orthonormality_error(&rmf.frames.frame(v));
                             assert!(e < bound, "{e:e} > {bound:e}");

@@ -9,6 +9,7 @@
 //! | [`hermite`] | both PH cubics through G1 Hermite data | Table 1 |
 //! | [`spline`] | PH cubic splines through Hermite data; PH cubics of a spline | §3.2 |
 //! | [`approximate`] | PH cubic splines approximating any curve to a tolerance | Theorem 10 |
+//! | [`preimage`] | the quaternion form x' = A i A* and the Euler–Rodrigues frame | (17) |
 //! | [`frenet`] | the rational Frenet frame | (19) |
 //! | [`rmf_angle`] | the exact RMF angle against the Frenet frame, closed form | (30), (31) |
 //! | [`base_frame`] | the frame each segment's RMF is built on; frame numerators | (29) |
@@ -33,6 +34,7 @@ pub mod exact_rmf;
 pub mod frenet;
 pub mod hermite;
 pub mod offset;
+pub mod preimage;
 pub mod profile;
 
 pub mod rational_rmf;
