@@ -54,9 +54,13 @@ impl PhCubic {
         }
         let cubic = Self { points };
         let [h0, _, h2] = cubic.legs();
-        if h0 == DVec3::ZERO || h2 == DVec3::ZERO {
+        // An end leg below the rounding of the points has no direction (a property-test
+        // finding: a leg of 0.02 beside coordinates of 1e164 gave NaN frames with RMF_OK).
+        let rounding = f64::EPSILON * cubic.largest_coordinate();
+        if robust_length(h0) <= rounding || robust_length(h2) <= rounding {
             return invalid!(
-                "the first and last legs of a PH cubic must not vanish (singular end)"
+                "the first and last legs of a PH cubic must not vanish (singular end): they \
+                 must be longer than the rounding of the control points, {rounding:.1e}"
             );
         }
         let residual = cubic.hodograph_residual();
@@ -136,12 +140,16 @@ impl PhCubic {
     /// far from the origin, whose legs (differences of rounded points) are only exact to
     /// ε·|b|, which makes |x'|² uncertain by about ε·|b|/L relative.
     pub fn ph_tolerance(&self) -> f64 {
-        let coordinates = self
-            .points
-            .iter()
-            .fold(0.0f64, |m, p| m.max(p.abs().max_element()));
+        let coordinates = self.largest_coordinate();
         let longest = self.leg_lengths().iter().fold(0.0f64, |m, &l| m.max(l));
         PH_TOLERANCE.max(64.0 * f64::EPSILON * coordinates / longest)
+    }
+
+    /// The largest absolute coordinate of the control points (their rounding is ε times it).
+    fn largest_coordinate(&self) -> f64 {
+        self.points
+            .iter()
+            .fold(0.0f64, |m, p| m.max(p.abs().max_element()))
     }
 
     /// Condition (17) evaluated literally on the control polygon.
@@ -227,14 +235,16 @@ impl PhCubic {
     /// Table 1 nearest to it) when its hodograph residual is above round-off; itself
     /// otherwise.
     ///
-    /// The frames (19), (29) and the angle (30) assume the PH identity |x'| = σ exactly, and
-    /// a residual r turns into an orthonormality error of about r / sin²θ (2e-5 for r = 1e-9
-    /// at θ = 2e-3, a fuzz finding): a polygon accepted within [`PH_TOLERANCE`] (data read
-    /// from files, or rounded far from the origin) gets its frames from the exact PH cubic
-    /// of its own Hermite data, which it matches at both ends and within r inside. When no
-    /// PH cubic interpolates those data (a segment so short against its distance from the
-    /// origin that rounding reverses a leg: another fuzz finding, frames of length 0.5) the
-    /// frames cannot be made orthonormal, and the polygon is refused.
+    /// The frames (19), (29) and the angle (30) assume the PH identity |x'| = σ exactly.
+    /// Taken literally, (19) turned a residual r into an orthonormality error of about
+    /// r / sin²θ (2e-5 for r = 1e-9 at θ = 2e-3, a fuzz finding); computed from the quaternion
+    /// preimage ([`super::preimage`]) the frames are orthonormal anyway, but adapted to the PH
+    /// cubic nearest the polygon, whose hodograph differs from it by about r. So a polygon accepted
+    /// within [`PH_TOLERANCE`] (data read from files, or rounded far from the origin) gets its
+    /// frames from the exact PH cubic of its own Hermite data, which it matches at both ends
+    /// and within r inside. When no PH cubic interpolates those data (a segment so short
+    /// against its distance from the origin that rounding reverses a leg: another fuzz
+    /// finding, frames of length 0.5) no frame fits the polygon, and it is refused.
     pub fn exactly_ph(&self) -> Result<Self> {
         let residual = self.hodograph_residual();
         if residual <= ROUND_OFF_RESIDUAL {
@@ -287,6 +297,20 @@ mod tests {
         // σ/3 = (1 − v)² + 2v² is least at v = 1/3 (2/3) and largest at v = 1 (2).
         assert!((c.speed_ratio() - 1.0 / 3.0).abs() < 1e-15);
         assert!(c.hodograph_residual() < 1e-15);
+    }
+
+    /// Property-test finding: a quadratic NURBS with a pole at 1e164 taken as a PH spline;
+    /// its last leg, 0.02, is below the rounding of the points and its frames were NaN.
+    #[test]
+    fn end_legs_below_the_rounding_of_the_points_are_singular() {
+        let far = DVec3::new(1.0, 0.0, 1.1517219314030583e164);
+        let points = [far, far / 3.0, DVec3::new(0.0, 0.0208, 0.0), DVec3::ZERO];
+        let e = PhCubic::from_control_points(points).unwrap_err();
+        assert!(e.message().contains("singular end"), "{e}");
+        // The same shape near the origin is a regular (straight) PH cubic.
+        let near = DVec3::new(1.0, 0.0, 3.0);
+        let points = [near, near * (2.0 / 3.0), near / 3.0, DVec3::ZERO];
+        assert!(PhCubic::from_control_points(points).is_ok());
     }
 
     #[test]
