@@ -111,6 +111,17 @@ pub fn inflection_generators(surface: &dyn Developable, samples: usize) -> Resul
     Ok(roots)
 }
 
+/// Every algorithm steps through a developable in fractions of its domain's length, which
+/// must therefore be a finite f64 (a property-test finding: a domain of length beyond
+/// f64::MAX made the derivative stencil infinite and panicked).
+fn check_domain_length((lo, hi): (f64, f64)) -> Result<()> {
+    if (hi - lo).is_finite() {
+        Ok(())
+    } else {
+        invalid!("the parameter domain [{lo}, {hi}] has a length beyond the largest f64")
+    }
+}
+
 /// The tangent surface x(t) + v e(t) of a regular space curve over v ∈ [v₀, v₁].
 pub struct TangentSurface<'a> {
     curve: &'a dyn ParametricCurve,
@@ -123,6 +134,7 @@ impl<'a> TangentSurface<'a> {
         if !(v_min.is_finite() && v_max.is_finite()) || v_min >= v_max {
             return invalid!("v_min = {v_min}, v_max = {v_max} must be finite with v_min < v_max");
         }
+        check_domain_length(curve.domain())?;
         if v_min <= 0.0 && v_max >= 0.0 {
             return invalid!(
                 "v_min = {v_min} .. v_max = {v_max} contains 0: the region must not reach the curve, \
@@ -214,6 +226,7 @@ impl RuledSurface {
                 "a developable ruled surface needs degree_u = 1 and pole_count_u = 2 (rulings along u)"
             );
         }
+        check_domain_length(surface.domain_v())?;
         let k = max_scaled_curvature(&surface);
         if k > DEVELOPABILITY_TOLERANCE || k.is_nan() {
             return invalid!(
@@ -286,8 +299,10 @@ impl DualDevelopable {
         let normals = planes.iter().map(|u| u.truncate()).collect();
         let offsets = planes.iter().map(|u| DVec3::new(u.w, 0.0, 0.0)).collect();
         let curve = |poles| NurbsCurve::new(degree, poles, None, knots.to_vec())?.to_piecewise();
+        let normals = curve(normals)?;
+        check_domain_length(normals.domain())?;
         Ok(Self {
-            normals: curve(normals)?,
+            normals,
             offsets: curve(offsets)?,
             region,
         })
@@ -325,5 +340,36 @@ impl Developable for DualDevelopable {
             normal: u,
             range: (lo - mid, hi - mid),
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A line on a domain whose length overflows.
+    struct WideLine;
+
+    impl ParametricCurve for WideLine {
+        fn domain(&self) -> (f64, f64) {
+            (-1e308, 1e308)
+        }
+
+        fn point_derivative(&self, t: f64) -> Result<(DVec3, DVec3)> {
+            Ok((DVec3::X * t, DVec3::X))
+        }
+    }
+
+    #[test]
+    fn domains_whose_length_overflows_are_refused() {
+        let e = TangentSurface::new(&WideLine, 0.5, 1.0).err().unwrap();
+        assert!(e.message().contains("beyond the largest f64"), "{e}");
+        let planes = [DVec4::X, DVec4::Y, DVec4::Z];
+        let knots = [-1e308, -1e308, -1e308, 1e308, 1e308, 1e308];
+        let region = Region::new(DVec3::splat(-1.0), DVec3::ONE).unwrap();
+        let e = DualDevelopable::new(2, &planes, &knots, region)
+            .err()
+            .unwrap();
+        assert!(e.message().contains("beyond the largest f64"), "{e}");
     }
 }

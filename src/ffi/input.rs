@@ -74,7 +74,7 @@ impl ParametricCurve for CallbackCurve {
 }
 
 /// The curve to approximate: exactly one of `curve` (its whole domain) and `callback` (on
-/// `[t_min, t_max]`, finite, t_min < t_max) must be given.
+/// `[t_min, t_max]`, finite, t_min < t_max, of finite length) must be given.
 ///
 /// # Safety
 /// `curve` must be NULL or a valid handle; `callback` and `user` as documented for
@@ -89,9 +89,10 @@ pub(crate) unsafe fn curve_or_callback<'a>(
     match (curve.is_null(), callback) {
         (false, None) => Ok(Box::new((*curve).curve.as_ref().clone())),
         (true, Some(callback)) => {
-            if !(t_min.is_finite() && t_max.is_finite()) || t_min >= t_max {
+            if !(t_max - t_min).is_finite() || t_min >= t_max {
                 return invalid_arg(format!(
-                    "t_min = {t_min}, t_max = {t_max} must be finite with t_min < t_max"
+                    "t_min = {t_min}, t_max = {t_max} must be finite with t_min < t_max and \
+                     t_max − t_min finite"
                 ));
             }
             Ok(Box::new(CallbackCurve {
@@ -140,6 +141,9 @@ mod tests {
         let (p, t) = curve.point_unit_tangent(1.0).unwrap();
         assert!((p - DVec3::new(1f64.cos(), 1f64.sin(), 0.5)).length() < 1e-15);
         assert!((t.length() - 1.0).abs() < 1e-15);
+        // Property-test finding: a domain whose length overflows reached the cone splines.
+        let wide = unsafe { curve_or_callback(std::ptr::null(), Some(helix), user, -1e308, 1e308) };
+        assert!(wide.is_err());
         let quiet =
             unsafe { curve_or_callback(std::ptr::null(), Some(silent), user, 0.0, 1.0) }.unwrap();
         assert!(quiet.point_derivative(0.5).is_err());
