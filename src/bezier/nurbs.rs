@@ -98,6 +98,14 @@ fn check_knots(degree: usize, knots: &[f64], suffix: &str) -> Result<()> {
             knots[n - 1]
         );
     }
+    // Ends of multiplicity above degree + 1 leave a basis function that is zero everywhere
+    // (a property-test finding: a run of 5 for degree 3 overran the Bézier decomposition).
+    if knots[p + 1] == knots[0] || knots[n - p - 2] == knots[n - 1] {
+        return invalid!(
+            "knots{suffix}: an end knot has multiplicity above degree + 1 = {}",
+            p + 1
+        );
+    }
     let mut run = 1;
     for i in p + 1..n - p - 1 {
         run = if knots[i] == knots[i - 1] { run + 1 } else { 1 };
@@ -511,6 +519,15 @@ mod tests {
         )
         .unwrap_err();
         assert!(e.message().contains("multiplicity"));
+        // Property-test finding: end runs longer than degree + 1 (an index out of range).
+        let six = [c.poles.clone(), vec![DVec3::ONE]].concat();
+        for knots in [
+            vec![0.0, 0.0, 0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0, 1.0, 1.0],
+            vec![0.0, 0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0],
+        ] {
+            let e = NurbsCurve::new(3, six.clone(), None, knots).unwrap_err();
+            assert!(e.message().contains("end knot has multiplicity"), "{e}");
+        }
         let e = NurbsCurve::new(
             3,
             c.poles.clone(),

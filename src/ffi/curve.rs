@@ -71,8 +71,9 @@ impl RmfCurve {
 /// @param[in] poles pole_count Cartesian poles (finite).
 /// @param[in] weights pole_count weights (finite, > 0), or NULL for all weights 1.
 /// @param[in] pole_count Number of poles, ≥ degree + 1.
-/// @param[in] knots knot_count knots: non-decreasing, clamped (first and last degree + 1
-///            knots equal), interior multiplicities ≤ degree, non-empty domain.
+/// @param[in] knots knot_count knots: non-decreasing, clamped (the first and the last
+///            knot each of multiplicity exactly degree + 1), interior multiplicities ≤
+///            degree, non-empty domain.
 /// @param[in] knot_count Must equal pole_count + degree + 1.
 /// @param[out] out Receives the new curve; the caller frees it with rmf_curve_free.
 ///            Untouched on failure.
