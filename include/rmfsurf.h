@@ -925,8 +925,9 @@ RmfStatus rmf_cone_spline_fit_parameters(const struct RmfConeSpline *spline,
  * @param[in] poles pole_count Cartesian poles (finite).
  * @param[in] weights pole_count weights (finite, > 0), or NULL for all weights 1.
  * @param[in] pole_count Number of poles, ≥ degree + 1.
- * @param[in] knots knot_count knots: non-decreasing, clamped (first and last degree + 1
- *            knots equal), interior multiplicities ≤ degree, non-empty domain.
+ * @param[in] knots knot_count knots: non-decreasing, clamped (the first and the last
+ *            knot each of multiplicity exactly degree + 1), interior multiplicities ≤
+ *            degree, non-empty domain.
  * @param[in] knot_count Must equal pole_count + degree + 1.
  * @param[out] out Receives the new curve; the caller frees it with rmf_curve_free.
  *            Untouched on failure.
@@ -1490,7 +1491,8 @@ RmfStatus rmf_ph_rmf_angle_error(const struct RmfFrames *frames,
  * @param[in] spine, frames, profile As for rmf_sweep_surface.
  * @param[out] out Receives the margin.
  * @return RMF_OK, RMF_ERROR_NULL_POINTER if an argument is NULL, or
- *         RMF_ERROR_INVALID_INPUT if the frames are not rational frames of the spine.
+ *         RMF_ERROR_INVALID_INPUT if the frames are not rational frames of the spine, or
+ *         frame pieces × profile segments exceed 2^15 (a bound on the work of one call).
  */
 RmfStatus rmf_sweep_singularity_margin(const struct RmfCurve *spine,
                                        const struct RmfFrames *frames,
@@ -1507,8 +1509,8 @@ RmfStatus rmf_sweep_singularity_margin(const struct RmfCurve *spine,
  * @param[in] u, v Profile and spine parameters inside their domains.
  * @param[out] k Receives K.
  * @return RMF_OK, RMF_ERROR_NULL_POINTER if an argument is NULL, or
- *         RMF_ERROR_INVALID_INPUT if u or v is outside its domain or the frames are not
- *         rational frames of the spine.
+ *         RMF_ERROR_INVALID_INPUT if u or v is outside its domain, the frames are not
+ *         rational frames of the spine, or frame pieces × profile segments exceed 2^15.
  */
 RmfStatus rmf_sweep_gaussian_curvature(const struct RmfCurve *spine,
                                        const struct RmfFrames *frames,
@@ -1534,8 +1536,9 @@ RmfStatus rmf_sweep_gaussian_curvature(const struct RmfCurve *spine,
  * @return RMF_OK on success or for a size query.
  * @return RMF_ERROR_NULL_POINTER If spine, frames, profile or count is NULL, or points is
  *         NULL with capacity > 0.
- * @return RMF_ERROR_INVALID_INPUT If v_samples < 2 or > 2^24, or the frames are not rational frames of
- *         the spine.
+ * @return RMF_ERROR_INVALID_INPUT If v_samples < 2 or v_samples × profile segments > 2^24,
+ *         the frames are not rational frames of the spine, or frame pieces × profile
+ *         segments exceed 2^15.
  * @return RMF_ERROR_BUFFER_TOO_SMALL If 0 < capacity < count; then only count is written.
  */
 RmfStatus rmf_sweep_parabolic_points(const struct RmfCurve *spine,

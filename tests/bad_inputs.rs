@@ -97,6 +97,22 @@ impl Fixtures {
     }
 }
 
+/// The size query of `rmf_sweep_parabolic_points` for the fixtures' sweep of `profile`.
+fn parabolic_points_count(f: &Fixtures, profile: *mut RmfCurve, v_samples: u32) -> RmfStatus {
+    let mut count = 0;
+    unsafe {
+        rmf_sweep_parabolic_points(
+            f.ph_spline,
+            f.rmf,
+            profile,
+            v_samples,
+            null_mut(),
+            0,
+            &mut count,
+        )
+    }
+}
+
 impl Drop for Fixtures {
     fn drop(&mut self) {
         unsafe {
@@ -523,20 +539,14 @@ fn rows() -> Vec<Row> {
             function: "rmf_sweep_parabolic_points",
             expected: INVALID,
             names: "v_samples",
-            call: |f| {
-                let mut count = 0;
-                unsafe {
-                    rmf_sweep_parabolic_points(
-                        f.ph_spline,
-                        f.rmf,
-                        f.curve,
-                        u32::MAX,
-                        null_mut(),
-                        0,
-                        &mut count,
-                    )
-                }
-            },
+            call: |f| parabolic_points_count(f, f.curve, u32::MAX),
+        },
+        Row {
+            what: "v_samples 2²⁴ along a 4-segment profile",
+            function: "rmf_sweep_parabolic_points",
+            expected: INVALID,
+            names: "v_samples × profile segments",
+            call: |f| parabolic_points_count(f, f.ph_spline, 1 << 24),
         },
         Row {
             what: "Möbius segments above 2²⁴",

@@ -405,7 +405,8 @@ pub struct RmfSingularityMargin {
 /// @param[in] spine, frames, profile As for rmf_sweep_surface.
 /// @param[out] out Receives the margin.
 /// @return RMF_OK, RMF_ERROR_NULL_POINTER if an argument is NULL, or
-///         RMF_ERROR_INVALID_INPUT if the frames are not rational frames of the spine.
+///         RMF_ERROR_INVALID_INPUT if the frames are not rational frames of the spine, or
+///         frame pieces × profile segments exceed 2^15 (a bound on the work of one call).
 #[no_mangle]
 pub unsafe extern "C" fn rmf_sweep_singularity_margin(
     spine: *const RmfCurve,
@@ -439,8 +440,8 @@ pub unsafe extern "C" fn rmf_sweep_singularity_margin(
 /// @param[in] u, v Profile and spine parameters inside their domains.
 /// @param[out] k Receives K.
 /// @return RMF_OK, RMF_ERROR_NULL_POINTER if an argument is NULL, or
-///         RMF_ERROR_INVALID_INPUT if u or v is outside its domain or the frames are not
-///         rational frames of the spine.
+///         RMF_ERROR_INVALID_INPUT if u or v is outside its domain, the frames are not
+///         rational frames of the spine, or frame pieces × profile segments exceed 2^15.
 #[no_mangle]
 pub unsafe extern "C" fn rmf_sweep_gaussian_curvature(
     spine: *const RmfCurve,
@@ -501,8 +502,9 @@ pub struct RmfParabolicPoint {
 /// @return RMF_OK on success or for a size query.
 /// @return RMF_ERROR_NULL_POINTER If spine, frames, profile or count is NULL, or points is
 ///         NULL with capacity > 0.
-/// @return RMF_ERROR_INVALID_INPUT If v_samples < 2 or > 2^24, or the frames are not rational frames of
-///         the spine.
+/// @return RMF_ERROR_INVALID_INPUT If v_samples < 2 or v_samples × profile segments > 2^24,
+///         the frames are not rational frames of the spine, or frame pieces × profile
+///         segments exceed 2^15.
 /// @return RMF_ERROR_BUFFER_TOO_SMALL If 0 < capacity < count; then only count is written.
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
@@ -520,6 +522,9 @@ pub unsafe extern "C" fn rmf_sweep_parabolic_points(
         let points = buffer(points, capacity, "points")?;
         let count = out_ptr(count, "count")?;
         check_sample_count(v_samples as usize, 2, "v_samples")?;
+        // Each spine sample looks at every profile segment.
+        let work = (v_samples as usize).saturating_mul(profile.segments().len());
+        check_sample_count(work, 2, "v_samples × profile segments")?;
         let lines =
             ProfileSurface::new(spine, frames, profile)?.parabolic_lines(v_samples as usize);
         let found = parabolic_points(&lines, spine.domain(), profile.domain(), v_samples as usize);

@@ -42,12 +42,21 @@ use std::f64::consts::{FRAC_PI_2, PI, TAU};
 /// Samples per frame piece when scanning along the spine.
 const SAMPLES_PER_PIECE: usize = 32;
 
+/// Most frame pieces × profile segments one analysis takes (2¹⁵, e.g. a 1,000-segment spine
+/// with a 32-segment profile): the singularity margin scans every pair at 32 samples, about
+/// 30 µs a pair, so this bounds a call to about a second (a property-test finding: a random
+/// program's call ran for over 15 minutes).
+pub const MAX_ANALYSIS_PAIRS: usize = 1 << 15;
+
 /// A sweep of a planar profile along a spine with rational frames, as analysed here.
 pub struct ProfileSurface<'a> {
     spine: &'a PiecewiseCurve,
     frames: &'a RationalFrames,
     profile: &'a PiecewiseCurve,
     segments: Vec<ProfileSegment>,
+    /// (A, B) = h²ċ of every segment, computed once: the scans along the spine use them at
+    /// every sample.
+    tangents: Vec<(Vec<f64>, Vec<f64>)>,
 }
 
 /// Where a sweep comes closest to being singular (Corollary 7).
@@ -87,15 +96,25 @@ impl<'a> ProfileSurface<'a> {
         let (fb, sb) = (frames.breaks(), spine.breaks());
         if fb[0] != sb[0]
             || fb[fb.len() - 1] != sb[sb.len() - 1]
-            || sb.iter().any(|b| !fb.contains(b))
+            || sb.iter().any(|b| fb.binary_search_by(|f| f.total_cmp(b)).is_err())
         {
             return invalid!("frames do not belong to the spine: their breakpoints differ");
         }
+        let (pieces, profile_pieces) = (frames.segments().len(), profile.segments().len());
+        if pieces.saturating_mul(profile_pieces) > MAX_ANALYSIS_PAIRS {
+            return invalid!(
+                "{pieces} frame pieces × {profile_pieces} profile segments are more than \
+                 {MAX_ANALYSIS_PAIRS} pairs to analyse: split the sweep"
+            );
+        }
+        let segments = profile_segments(profile);
+        let tangents = segments.iter().map(ProfileSegment::scaled_tangent).collect();
         Ok(Self {
             spine,
             frames,
             profile,
-            segments: profile_segments(profile),
+            segments,
+            tangents,
         })
     }
 
@@ -135,9 +154,8 @@ impl<'a> ProfileSurface<'a> {
     fn least_stretch(&self, v: f64) -> (f64, f64) {
         let k = self.curvature_vector(v);
         let mut best = (f64::INFINITY, 0.0);
-        for (i, segment) in self.segments.iter().enumerate() {
-            let (a, b) = segment.scaled_tangent();
-            let along: Vec<f64> = a.iter().zip(&b).map(|(a, b)| a * k.x + b * k.y).collect();
+        for (i, (segment, (a, b))) in self.segments.iter().zip(&self.tangents).enumerate() {
+            let along: Vec<f64> = a.iter().zip(b).map(|(a, b)| a * k.x + b * k.y).collect();
             let candidates = critical_points(&along);
             for s in candidates {
                 let g = 1.0 - segment.jet(s).point.dot(k);
@@ -177,11 +195,10 @@ impl<'a> ProfileSurface<'a> {
     /// max ‖c(u)‖: at segment ends or where c·ċ = 0, i.e. X·A + Y·B = 0.
     fn max_profile_radius(&self) -> f64 {
         let mut radius = 0.0f64;
-        for segment in &self.segments {
-            let (a, b) = segment.scaled_tangent();
+        for (segment, (a, b)) in self.segments.iter().zip(&self.tangents) {
             let radial = super::profile::sum(
-                &bernstein::product(&segment.x, &a, |p, q| p * q),
-                &bernstein::product(&segment.y, &b, |p, q| p * q),
+                &bernstein::product(&segment.x, a, |p, q| p * q),
+                &bernstein::product(&segment.y, b, |p, q| p * q),
             );
             for s in critical_points(&radial) {
                 radius = radius.max(segment.jet(s).point.length());
@@ -243,11 +260,10 @@ impl<'a> ProfileSurface<'a> {
             if k == DVec2::ZERO || lines.straight_spine.iter().any(|&(a, b)| v >= a && v <= b) {
                 continue;
             }
-            for (i, segment) in self.segments.iter().enumerate() {
-                let (a, b) = segment.scaled_tangent();
+            for (i, (a, b)) in self.tangents.iter().enumerate() {
                 let condition: Vec<f64> =
-                    a.iter().zip(&b).map(|(a, b)| b * k.x - a * k.y).collect();
-                let size = a.iter().chain(&b).fold(0.0f64, |m, c| m.max(c.abs())) * k.length();
+                    a.iter().zip(b).map(|(a, b)| b * k.x - a * k.y).collect();
+                let size = a.iter().chain(b).fold(0.0f64, |m, c| m.max(c.abs())) * k.length();
                 if vanishes(&condition, size) {
                     continue;
                 }
@@ -445,6 +461,20 @@ mod tests {
         )
         .unwrap();
         PiecewiseCurve::new(vec![arc], vec![0.0, 1.0]).unwrap()
+    }
+
+    #[test]
+    fn analyses_beyond_the_pair_bound_are_refused() {
+        let spine = helix_spline(2, 0.15);
+        let rmf = ph_rational_rmf(&spine, &RmfOptions::rmf(DVec3::Z)).unwrap();
+        let pieces = rmf.frames.segments().len();
+        let profile = arc_profile(0.3, DVec3::ZERO);
+        let arc = profile.segments()[0].clone();
+        let many = MAX_ANALYSIS_PAIRS / pieces + 1;
+        let long = PiecewiseCurve::with_unit_intervals(vec![arc; many]).unwrap();
+        let e = ProfileSurface::new(&spine, &rmf.frames, &long).err().unwrap();
+        assert!(e.message().contains("pairs to analyse"), "{e}");
+        assert!(ProfileSurface::new(&spine, &rmf.frames, &profile).is_ok());
     }
 
     #[test]
