@@ -96,7 +96,9 @@ impl<'a> ProfileSurface<'a> {
         let (fb, sb) = (frames.breaks(), spine.breaks());
         if fb[0] != sb[0]
             || fb[fb.len() - 1] != sb[sb.len() - 1]
-            || sb.iter().any(|b| fb.binary_search_by(|f| f.total_cmp(b)).is_err())
+            || sb
+                .iter()
+                .any(|b| fb.binary_search_by(|f| f.total_cmp(b)).is_err())
         {
             return invalid!("frames do not belong to the spine: their breakpoints differ");
         }
@@ -108,7 +110,10 @@ impl<'a> ProfileSurface<'a> {
             );
         }
         let segments = profile_segments(profile);
-        let tangents = segments.iter().map(ProfileSegment::scaled_tangent).collect();
+        let tangents = segments
+            .iter()
+            .map(ProfileSegment::scaled_tangent)
+            .collect();
         Ok(Self {
             spine,
             frames,
@@ -261,8 +266,7 @@ impl<'a> ProfileSurface<'a> {
                 continue;
             }
             for (i, (a, b)) in self.tangents.iter().enumerate() {
-                let condition: Vec<f64> =
-                    a.iter().zip(b).map(|(a, b)| b * k.x - a * k.y).collect();
+                let condition: Vec<f64> = a.iter().zip(b).map(|(a, b)| b * k.x - a * k.y).collect();
                 let size = a.iter().chain(b).fold(0.0f64, |m, c| m.max(c.abs())) * k.length();
                 if vanishes(&condition, size) {
                     continue;
@@ -472,7 +476,9 @@ mod tests {
         let arc = profile.segments()[0].clone();
         let many = MAX_ANALYSIS_PAIRS / pieces + 1;
         let long = PiecewiseCurve::with_unit_intervals(vec![arc; many]).unwrap();
-        let e = ProfileSurface::new(&spine, &rmf.frames, &long).err().unwrap();
+        let e = ProfileSurface::new(&spine, &rmf.frames, &long)
+            .err()
+            .unwrap();
         assert!(e.message().contains("pairs to analyse"), "{e}");
         assert!(ProfileSurface::new(&spine, &rmf.frames, &profile).is_ok());
     }
