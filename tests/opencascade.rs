@@ -27,7 +27,7 @@ fn opencascade_kernel_example_builds_and_checks_the_surfaces() {
     let include = Path::new("/usr/include/opencascade");
     assert!(
         include.join("Geom_BSplineSurface.hxx").exists(),
-        "OpenCascade headers (libocct-modeling-algorithms-dev) not found: {SETUP_HINT}"
+        "OpenCascade headers (libocct-modeling-data-dev) not found: {SETUP_HINT}"
     );
     // OpenCascade's headers are not -Wpedantic clean: include them as system headers.
     let system = format!("-isystem{}", include.display());

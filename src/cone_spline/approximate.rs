@@ -135,7 +135,11 @@ fn fit_interval(
     }
     let pieces_so_far: usize = out.iter().map(|(_, p, _)| p.pieces.len()).sum();
     let (lo, hi) = surface.domain();
-    if pieces_so_far + 4 > max_pieces || b - a < 1e-9 * (hi - lo) {
+    let m = 0.5 * (a + b);
+    // An interval of adjacent floats has no midpoint strictly inside: halving it again would
+    // recurse forever (a property-test finding: a domain 2 ulps wide overflowed the stack).
+    let unsplittable = !(m > a && m < b);
+    if pieces_so_far + 4 > max_pieces || b - a < 1e-9 * (hi - lo) || unsplittable {
         return Err(Error::NotConverged(match attempt {
             Ok((error, _)) => format!(
                 "tolerance {tolerance:.3e} not reached with at most {max_pieces} pieces \
@@ -147,7 +151,6 @@ fn fit_interval(
             ),
         }));
     }
-    let m = 0.5 * (a + b);
     fit_interval(surface, a, m, tolerance, rule, max_pieces, out)?;
     fit_interval(surface, m, b, tolerance, rule, max_pieces, out)
 }
@@ -216,6 +219,26 @@ mod tests {
             &[1e-2, 1e-3, 1e-4, 1e-5],
         );
         assert!((2.5..4.5).contains(&order), "order {order}");
+    }
+
+    /// Property-test finding: on a domain of width 1e-7 at t = 1 no cone pair joined the
+    /// rulings (cylinder-first rule), the halving reached an interval of adjacent floats,
+    /// [1.0001, 1.0001000000000002], and went on returning it until the stack overflowed.
+    #[test]
+    fn intervals_too_narrow_to_halve_are_an_error() {
+        let helix = Helix {
+            radius: 1.0,
+            pitch: 0.5,
+            domain: (1.0001, 1.00010010001),
+        };
+        for rule in [Rule::CylinderFirst, Rule::MinimalVertexDistance] {
+            let surface = tangent_surface(&helix, 0.1, 1.0);
+            let e = approximate(&surface, 1.0001, rule, 29).err().unwrap();
+            assert!(
+                e.message().contains("no cone pair joins the rulings"),
+                "{e}"
+            );
+        }
     }
 
     #[test]

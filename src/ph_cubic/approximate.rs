@@ -82,10 +82,16 @@ pub fn ph_spline_approximate(
                 last = b;
             }
             outcome => {
-                if b.t - a.t <= min_interval || accepted.len() + pending.len() >= MAX_SEGMENTS {
+                let m = 0.5 * (a.t + b.t);
+                // Adjacent floats have no midpoint strictly between them.
+                let unsplittable = !(m > a.t && m < b.t);
+                if b.t - a.t <= min_interval
+                    || unsplittable
+                    || accepted.len() + pending.len() >= MAX_SEGMENTS
+                {
                     return Err(give_up(&a, &b, outcome, tolerance));
                 }
-                let mid = sample(curve, 0.5 * (a.t + b.t))?;
+                let mid = sample(curve, m)?;
                 pending.push((mid, b));
                 pending.push((a, mid));
             }
