@@ -4,6 +4,7 @@
 
 use crate::bezier::PiecewiseCurve;
 use crate::error::{invalid, Result};
+use crate::math::robust_normalize;
 use glam::DVec3;
 
 /// A regular parametric space curve.
@@ -17,11 +18,12 @@ pub trait ParametricCurve {
     /// The point and the unit tangent at `t`; fails where the curve is singular.
     fn point_unit_tangent(&self, t: f64) -> Result<(DVec3, DVec3)> {
         let (p, d) = self.point_derivative(t)?;
-        let length = d.length();
-        if !length.is_finite() || length <= 0.0 {
-            return invalid!("the curve is singular (zero or non-finite derivative) at t = {t}");
+        // Scaled before squaring: a derivative of 3e-162 has a subnormal square, and d/|d|
+        // was 0.994 long (a property-test finding).
+        match robust_normalize(d) {
+            Some(tangent) => Ok((p, tangent)),
+            None => invalid!("the curve is singular (zero or non-finite derivative) at t = {t}"),
         }
-        Ok((p, d / length))
     }
 }
 
@@ -67,6 +69,21 @@ pub fn uniform_parameters((lo, hi): (f64, f64), count: usize) -> Vec<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Property-test finding: a segment of length 3e-162, whose derivative has a subnormal
+    /// square, gave a "unit" tangent of length 0.994.
+    #[test]
+    fn tiny_derivatives_give_unit_tangents() {
+        let tiny = DVec3::new(0.0, 3.125e-162, 0.0);
+        let segment = crate::bezier::RationalBezierCurve::polynomial(&[tiny, DVec3::ZERO]).unwrap();
+        let line = PiecewiseCurve::with_unit_intervals(vec![segment]).unwrap();
+        let (_, tangent) = line.point_unit_tangent(0.5).unwrap();
+        assert!((tangent.length() - 1.0).abs() < 1e-15, "{tangent}");
+        let subnormal =
+            crate::bezier::RationalBezierCurve::polynomial(&[DVec3::Y * 1e-310, DVec3::ZERO]);
+        let line = PiecewiseCurve::with_unit_intervals(vec![subnormal.unwrap()]).unwrap();
+        assert!(line.point_unit_tangent(0.5).is_err());
+    }
 
     /// Fuzz finding: a sample count of 2³¹ or more was attempted (an allocation of 16 GiB
     /// or a capacity-overflow panic) instead of refused.

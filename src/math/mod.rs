@@ -22,5 +22,6 @@ pub use roots::{bisect_root, quadratic_roots, real_roots_in, real_roots_power};
 pub use secant::secant_refine;
 pub use vector::{
     angle_between, bounding_diagonal, check_finite, check_point, check_unit_direction,
-    normal_plane_unit, orthogonalized, orthonormal_to, robust_length, signed_angle,
+    normal_plane_unit, orthogonalized, orthonormal_to, robust_length, robust_normalize,
+    signed_angle,
 };

@@ -56,8 +56,9 @@ pub fn robust_length(v: DVec3) -> f64 {
     largest * (v / largest).length()
 }
 
-/// `v / |v|`, or `None` for zero or non-finite vectors.
-fn robust_normalize(v: DVec3) -> Option<DVec3> {
+/// `v / |v|` without underflow or overflow in the squares, or `None` for zero, subnormal or
+/// non-finite vectors.
+pub fn robust_normalize(v: DVec3) -> Option<DVec3> {
     if !v.is_finite() {
         return None;
     }
