@@ -14,6 +14,7 @@ use super::homogeneous::{lift, project};
 use super::piecewise::{PiecewiseCurve, PiecewiseSurface};
 use super::surface::RationalBezierPatch;
 use crate::error::{invalid, Error, Result};
+use crate::math::largest_coordinate;
 use glam::{DVec3, DVec4};
 
 /// Relative tolerance for poles that must coincide where segments meet.
@@ -413,7 +414,7 @@ fn clamped_knots(breaks: &[f64], degree: usize) -> Vec<f64> {
 
 /// A length scale of a point set, for relative tolerances (at least 1).
 fn coordinate_scale(points: impl Iterator<Item = DVec3>) -> f64 {
-    points.fold(1.0f64, |m, p| m.max(p.abs().max_element()))
+    largest_coordinate(points).max(1.0)
 }
 
 fn homogeneous_close(a: DVec4, b: DVec4, scale: f64) -> bool {

@@ -13,6 +13,7 @@ use super::pair::{cone_pair, ConePair, Rule};
 use super::piece::ConePiece;
 use super::spline::ConeSpline;
 use crate::error::{invalid, Error, Result};
+use crate::math::interior_midpoint;
 
 /// Rulings sampled per interval (plus one) and points per ruling for the deviation.
 const RULING_SAMPLES: usize = 12;
@@ -135,11 +136,8 @@ fn fit_interval(
     }
     let pieces_so_far: usize = out.iter().map(|(_, p, _)| p.pieces.len()).sum();
     let (lo, hi) = surface.domain();
-    let m = 0.5 * (a + b);
-    // An interval of adjacent floats has no midpoint strictly inside: halving it again would
-    // recurse forever (a property-test finding: a domain 2 ulps wide overflowed the stack).
-    let unsplittable = !(m > a && m < b);
-    if pieces_so_far + 4 > max_pieces || b - a < 1e-9 * (hi - lo) || unsplittable {
+    let too_fine = pieces_so_far + 4 > max_pieces || b - a < 1e-9 * (hi - lo);
+    let Some(m) = interior_midpoint(a, b).filter(|_| !too_fine) else {
         return Err(Error::NotConverged(match attempt {
             Ok((error, _)) => format!(
                 "tolerance {tolerance:.3e} not reached with at most {max_pieces} pieces \
@@ -150,7 +148,7 @@ fn fit_interval(
                 e.message()
             ),
         }));
-    }
+    };
     fit_interval(surface, a, m, tolerance, rule, max_pieces, out)?;
     fit_interval(surface, m, b, tolerance, rule, max_pieces, out)
 }

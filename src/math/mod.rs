@@ -18,10 +18,10 @@ pub use complex::Complex;
 pub use linear::solve_refined;
 pub use minimize::{minimize_bracketed, Minimum};
 pub use quadrature::GaussLegendre;
-pub use roots::{bisect_root, quadratic_roots, real_roots_in, real_roots_power};
+pub use roots::{bisect_root, interior_midpoint, quadratic_roots, real_roots_in, real_roots_power};
 pub use secant::secant_refine;
 pub use vector::{
     angle_between, bounding_diagonal, check_finite, check_point, check_unit_direction,
-    normal_plane_unit, orthogonalized, orthonormal_to, robust_length, robust_normalize,
-    signed_angle,
+    largest_coordinate, normal_plane_unit, orthogonalized, orthonormal_to, robust_length,
+    robust_normalize, signed_angle,
 };

@@ -152,6 +152,15 @@ fn solve_bracketed(p: &[f64], mut a: f64, mut b: f64, fa: f64) -> f64 {
     x
 }
 
+/// The midpoint of `[a, b]` (a < b) when it lies strictly inside; `None` for an interval of
+/// adjacent floats (or one whose midpoint overflows), which halving would return unchanged:
+/// adaptive subdivision stops there instead of recursing forever (a property-test finding:
+/// a cone spline fit overflowed the stack on [1.0001, 1.0001000000000002]).
+pub fn interior_midpoint(a: f64, b: f64) -> Option<f64> {
+    let m = 0.5 * (a + b);
+    (m > a && m < b).then_some(m)
+}
+
 /// A root of a continuous function with a sign change on `[a, b]` (`f(a)·f(b) ≤ 0`), by
 /// bisection to the absolute tolerance `tol`; `None` without a sign change or for NaN values.
 pub fn bisect_root(mut f: impl FnMut(f64) -> f64, mut a: f64, mut b: f64, tol: f64) -> Option<f64> {

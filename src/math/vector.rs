@@ -25,6 +25,14 @@ pub fn bounding_diagonal(points: impl IntoIterator<Item = DVec3>) -> f64 {
     }
 }
 
+/// The largest absolute coordinate of `points` (the rounding of each is ε times it); 0 for
+/// no points.
+pub fn largest_coordinate(points: impl IntoIterator<Item = DVec3>) -> f64 {
+    points
+        .into_iter()
+        .fold(0.0f64, |m, p| m.max(p.abs().max_element()))
+}
+
 /// `v` itself if all its components are finite. The `name` of the argument in the message is
 /// any `Display` (e.g. `format_args!("points[{i}]")`), formatted only for a failure: long
 /// input arrays are checked without a string per element.

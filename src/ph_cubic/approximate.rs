@@ -17,7 +17,7 @@ use crate::curve::{uniform_parameters, ParametricCurve};
 use crate::error::{invalid, Error, Result};
 use crate::hermite::HermiteSegment;
 use crate::math::angle_between;
-use crate::math::{minimize_bracketed, real_roots_in};
+use crate::math::{interior_midpoint, minimize_bracketed, real_roots_in};
 use glam::DVec3;
 
 /// Samples per interval for the distance, each way.
@@ -82,15 +82,11 @@ pub fn ph_spline_approximate(
                 last = b;
             }
             outcome => {
-                let m = 0.5 * (a.t + b.t);
-                // Adjacent floats have no midpoint strictly between them.
-                let unsplittable = !(m > a.t && m < b.t);
-                if b.t - a.t <= min_interval
-                    || unsplittable
-                    || accepted.len() + pending.len() >= MAX_SEGMENTS
-                {
+                let too_fine =
+                    b.t - a.t <= min_interval || accepted.len() + pending.len() >= MAX_SEGMENTS;
+                let Some(m) = interior_midpoint(a.t, b.t).filter(|_| !too_fine) else {
                     return Err(give_up(&a, &b, outcome, tolerance));
-                }
+                };
                 let mid = sample(curve, m)?;
                 pending.push((mid, b));
                 pending.push((a, mid));

@@ -15,7 +15,7 @@ use crate::bezier::bernstein::{self, add_product};
 use crate::bezier::RationalBezierCurve;
 use crate::error::{invalid, Result};
 use crate::hermite::HermiteSegment;
-use crate::math::{angle_between, robust_length};
+use crate::math::{angle_between, largest_coordinate, robust_length};
 use glam::DVec3;
 
 /// Largest relative hodograph residual (see [`PhCubic::hodograph_residual`]) accepted for a
@@ -56,7 +56,7 @@ impl PhCubic {
         let [h0, _, h2] = cubic.legs();
         // An end leg below the rounding of the points has no direction (a property-test
         // finding: a leg of 0.02 beside coordinates of 1e164 gave NaN frames with RMF_OK).
-        let rounding = f64::EPSILON * cubic.largest_coordinate();
+        let rounding = f64::EPSILON * largest_coordinate(points);
         if robust_length(h0) <= rounding || robust_length(h2) <= rounding {
             return invalid!(
                 "the first and last legs of a PH cubic must not vanish (singular end): they \
@@ -140,16 +140,9 @@ impl PhCubic {
     /// far from the origin, whose legs (differences of rounded points) are only exact to
     /// ε·|b|, which makes |x'|² uncertain by about ε·|b|/L relative.
     pub fn ph_tolerance(&self) -> f64 {
-        let coordinates = self.largest_coordinate();
+        let coordinates = largest_coordinate(self.points);
         let longest = self.leg_lengths().iter().fold(0.0f64, |m, &l| m.max(l));
         PH_TOLERANCE.max(64.0 * f64::EPSILON * coordinates / longest)
-    }
-
-    /// The largest absolute coordinate of the control points (their rounding is ε times it).
-    fn largest_coordinate(&self) -> f64 {
-        self.points
-            .iter()
-            .fold(0.0f64, |m, p| m.max(p.abs().max_element()))
     }
 
     /// Condition (17) evaluated literally on the control polygon.

@@ -232,7 +232,7 @@ mod tests {
         assert_eq!(b[3], data.p1);
         // Control points are rounded in absolute coordinates: legs are exact to ε |b|.
         let [l1, _, l3] = c.leg_lengths();
-        let scale = b.iter().fold(1.0f64, |m, p| m.max(p.abs().max_element()));
+        let scale = crate::math::largest_coordinate(b).max(1.0);
         assert!(((b[1] - b[0]) - l1 * data.t0).length() < 4.0 * f64::EPSILON * scale);
         assert!(((b[3] - b[2]) - l3 * data.t1).length() < 4.0 * f64::EPSILON * scale);
         assert!(

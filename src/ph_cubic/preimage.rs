@@ -124,8 +124,9 @@ impl Preimage {
         ]
     }
 
-    /// The hodograph x' = A i A* (Bernstein coefficients).
-    pub fn hodograph(&self) -> Vec<DVec3> {
+    /// The hodograph x' = A i A* (Bernstein coefficients): the tests' check of the preimage.
+    #[cfg(test)]
+    fn hodograph(&self) -> Vec<DVec3> {
         self.sandwich(I)
     }
 

@@ -29,7 +29,7 @@ use super::in_context;
 use crate::bezier::PiecewiseCurve;
 use crate::error::{invalid, Result};
 use crate::frames::rational::RationalFrames;
-use crate::math::check_finite;
+use crate::math::{check_finite, largest_coordinate};
 use glam::DVec3;
 use std::f64::consts::{FRAC_PI_2, PI};
 
@@ -151,12 +151,8 @@ fn added_turn(spline: &PiecewiseCurve, rmf: &ExactRmf, options: &RmfOptions) -> 
 fn check_closed(spline: &PiecewiseCurve) -> Result<()> {
     let (lo, hi) = spline.domain();
     let (start, end) = (spline.eval_jet(lo), spline.eval_jet(hi));
-    let size = spline
-        .segments()
-        .iter()
-        .flat_map(|s| s.poles())
-        .fold(0.0f64, |m, p| m.max(p.abs().max_element()))
-        .max(f64::MIN_POSITIVE);
+    let size =
+        largest_coordinate(spline.segments().iter().flat_map(|s| s.poles())).max(f64::MIN_POSITIVE);
     if (end.point - start.point).length() > CLOSED_TOLERANCE * size {
         return invalid!(
             "closure needs a closed spline, but it ends at {} and starts at {}",
