@@ -1,50 +1,159 @@
-//! The error type of the geometry core.
+//! The error type of the geometry core: a kind, a message, and the context it was raised in.
 //!
-//! Each variant carries a message that names the offending argument, so that the C layer
-//! can hand it to the caller unchanged (`rmf_last_error`). The C status code of each
-//! variant is fixed in `ffi::status`.
+//! The message names the offending argument in the terms of the Rust API ("tangent 3",
+//! "weights"); callers add context from the outside in ("segment 2", "spine") with
+//! [`Error::context`] or [`ResultExt::context`], and [`Display`](fmt::Display) prints the
+//! chain outermost first: `segment 2: tangent 3 is zero`. The C layer maps the kind to a
+//! status code; nothing here knows about C.
 
 use std::fmt;
 
-/// Why a geometric construction failed.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub enum Error {
+/// What went wrong, independent of the message.
+#[non_exhaustive]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ErrorKind {
     /// NaN/Inf, zero or non-normalizable vectors, coincident points, too few items,
     /// malformed knot vectors, parameters outside a domain.
-    InvalidInput(String),
+    InvalidInput,
     /// The data admit no interpolant or construction of the requested kind.
-    NoSolution(String),
-    /// An iteration did not reach its tolerance within its limits.
-    NotConverged(String),
+    NoSolution,
+    /// An iteration did not reach its tolerance within its limits (or its work budget).
+    NotConverged,
+}
+
+impl ErrorKind {
+    fn describe(self) -> &'static str {
+        match self {
+            ErrorKind::InvalidInput => "invalid input",
+            ErrorKind::NoSolution => "no solution",
+            ErrorKind::NotConverged => "not converged",
+        }
+    }
+}
+
+/// Why a geometric construction failed.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Error {
+    kind: ErrorKind,
+    message: String,
+    /// Outermost first.
+    context: Vec<String>,
 }
 
 /// Result of a geometric construction.
 pub type Result<T> = std::result::Result<T, Error>;
 
 impl Error {
-    /// The message, without the kind.
-    pub fn message(&self) -> &str {
-        match self {
-            Error::InvalidInput(m) | Error::NoSolution(m) | Error::NotConverged(m) => m,
+    /// An error of `kind` with `message`.
+    pub fn new(kind: ErrorKind, message: impl Into<String>) -> Self {
+        Error {
+            kind,
+            message: message.into(),
+            context: Vec::new(),
         }
+    }
+
+    /// An [`ErrorKind::InvalidInput`] error.
+    pub fn invalid_input(message: impl Into<String>) -> Self {
+        Self::new(ErrorKind::InvalidInput, message)
+    }
+
+    /// An [`ErrorKind::NoSolution`] error.
+    pub fn no_solution(message: impl Into<String>) -> Self {
+        Self::new(ErrorKind::NoSolution, message)
+    }
+
+    /// An [`ErrorKind::NotConverged`] error.
+    pub fn not_converged(message: impl Into<String>) -> Self {
+        Self::new(ErrorKind::NotConverged, message)
+    }
+
+    /// The kind of failure.
+    pub fn kind(&self) -> ErrorKind {
+        self.kind
+    }
+
+    /// Whether this is an error of `kind`.
+    pub fn is(&self, kind: ErrorKind) -> bool {
+        self.kind == kind
+    }
+
+    /// The innermost message, without context.
+    pub fn reason(&self) -> &str {
+        &self.message
+    }
+
+    /// The contexts, outermost first.
+    pub fn contexts(&self) -> impl Iterator<Item = &str> {
+        self.context.iter().map(String::as_str)
+    }
+
+    /// The same error, raised inside `context` (e.g. "segment 3").
+    pub fn context(mut self, context: impl Into<String>) -> Self {
+        self.context.insert(0, context.into());
+        self
+    }
+
+    /// The message with its contexts, outermost first: `segment 3: tangent 1 is zero`.
+    pub fn message(&self) -> String {
+        let mut out = String::new();
+        for c in &self.context {
+            out.push_str(c);
+            out.push_str(": ");
+        }
+        out.push_str(&self.message);
+        out
     }
 }
 
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let kind = match self {
-            Error::InvalidInput(_) => "invalid input",
-            Error::NoSolution(_) => "no solution",
-            Error::NotConverged(_) => "not converged",
-        };
-        write!(f, "{kind}: {}", self.message())
+        write!(f, "{}: {}", self.kind.describe(), self.message())
     }
 }
 
 impl std::error::Error for Error {}
 
-/// Shorthand for `Err(Error::InvalidInput(..))` with a formatted message.
-macro_rules! invalid {
-    ($($arg:tt)*) => { Err($crate::Error::InvalidInput(format!($($arg)*))) };
+/// Context for the errors of a [`Result`].
+pub trait ResultExt<T> {
+    /// Adds `context` to the error, if any.
+    fn context(self, context: impl Into<String>) -> Result<T>;
+    /// Adds the context `f()` to the error, if any (computed only on failure).
+    fn with_context<C: Into<String>>(self, f: impl FnOnce() -> C) -> Result<T>;
 }
-pub(crate) use invalid;
+
+impl<T> ResultExt<T> for Result<T> {
+    fn context(self, context: impl Into<String>) -> Result<T> {
+        self.map_err(|e| e.context(context))
+    }
+
+    fn with_context<C: Into<String>>(self, f: impl FnOnce() -> C) -> Result<T> {
+        self.map_err(|e| e.context(f()))
+    }
+}
+
+/// `Err(Error::invalid_input(format!(..)))`.
+macro_rules! invalid {
+    ($($arg:tt)*) => { Err($crate::Error::invalid_input(format!($($arg)*))) };
+}
+/// `Err(Error::no_solution(format!(..)))`.
+macro_rules! no_solution {
+    ($($arg:tt)*) => { Err($crate::Error::no_solution(format!($($arg)*))) };
+}
+pub(crate) use {invalid, no_solution};
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn context_reads_outermost_first() {
+        let e: Result<()> = Err(Error::no_solution("no real root"));
+        let e = e.context("segment 3").context("spine").unwrap_err();
+        assert_eq!(e.message(), "spine: segment 3: no real root");
+        assert_eq!(e.to_string(), "no solution: spine: segment 3: no real root");
+        assert_eq!(e.reason(), "no real root");
+        assert!(e.is(ErrorKind::NoSolution));
+        assert_eq!(e.contexts().collect::<Vec<_>>(), ["spine", "segment 3"]);
+    }
+}

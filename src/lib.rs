@@ -55,4 +55,4 @@ pub mod sweep;
 #[cfg(test)]
 mod testing;
 
-pub use error::{Error, Result};
+pub use error::{Error, ErrorKind, Result, ResultExt};

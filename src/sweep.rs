@@ -39,8 +39,8 @@ pub fn sweep(
         spine
     } else {
         refined = spine.refined(frames.breaks()).map_err(|_| {
-            crate::Error::InvalidInput(
-                "frames do not belong to the spine: their parameter breakpoints differ".into(),
+            crate::Error::invalid_input(
+                "frames do not belong to the spine: their parameter breakpoints differ",
             )
         })?;
         &refined

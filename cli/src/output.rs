@@ -76,7 +76,7 @@ pub fn render(
     Ok(match format {
         Format::Step => {
             let nurbs = NurbsSurface::from_piecewise(surface).map_err(|e| {
-                rmfsurf::Error::InvalidInput(format!(
+                rmfsurf::Error::invalid_input(format!(
                     "the surface is not one continuous NURBS ({}); Frenet frames jump at the spine's joints",
                     e.message()
                 ))
@@ -99,7 +99,7 @@ pub fn render(
         Format::Scad => {
             let solid =
                 closed_mesh(surface, u, v, mesh.thickness).map_err(|e| match mesh.thickness {
-                    None => rmfsurf::Error::InvalidInput(format!(
+                    None => rmfsurf::Error::invalid_input(format!(
                         "{} (give mesh.thickness)",
                         e.message()
                     )),

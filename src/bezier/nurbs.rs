@@ -13,7 +13,7 @@ use super::curve::RationalBezierCurve;
 use super::homogeneous::{lift, project};
 use super::piecewise::{PiecewiseCurve, PiecewiseSurface};
 use super::surface::RationalBezierPatch;
-use crate::error::{invalid, Error, Result};
+use crate::error::{invalid, Result};
 use crate::math::largest_coordinate;
 use glam::{DVec3, DVec4};
 
@@ -365,9 +365,9 @@ impl NurbsSurface {
                         let slot = &mut net[(a * pu + i) * nv + b * pv + j];
                         match slot {
                             Some(existing) if !homogeneous_close(*existing, h, scale) => {
-                                return Err(Error::InvalidInput(format!(
+                                return invalid!(
                                     "patch ({a}, {b}) does not join its neighbours in homogeneous coordinates"
-                                )));
+                                );
                             }
                             Some(_) => {}
                             None => *slot = Some(h),

@@ -138,7 +138,7 @@ fn fit_interval(
     let (lo, hi) = surface.domain();
     let too_fine = pieces_so_far + 4 > max_pieces || b - a < 1e-9 * (hi - lo);
     let Some(m) = interior_midpoint(a, b).filter(|_| !too_fine) else {
-        return Err(Error::NotConverged(match attempt {
+        return Err(Error::not_converged(match attempt {
             Ok((error, _)) => format!(
                 "tolerance {tolerance:.3e} not reached with at most {max_pieces} pieces \
                  (deviation {error:.3e} on [{a}, {b}])"
@@ -348,6 +348,6 @@ mod tests {
             assert!(approximate(&surface, tol, Rule::MinimalVertexDistance, 100).is_err());
         }
         let err = approximate(&surface, 1e-9, Rule::MinimalVertexDistance, 8).unwrap_err();
-        assert!(matches!(err, Error::NotConverged(_)), "{err}");
+        assert!(err.is(crate::ErrorKind::NotConverged), "{err}");
     }
 }

@@ -19,6 +19,7 @@ use super::element::Element;
 use super::region::Region;
 use crate::bezier::{NurbsCurve, PiecewiseCurve, PiecewiseSurface};
 use crate::curve::{uniform_parameters, ParametricCurve};
+use crate::error::no_solution;
 use crate::error::{invalid, Error, Result};
 use crate::frames::metrics::gaussian_curvature;
 use glam::{DVec3, DVec4};
@@ -59,9 +60,9 @@ pub trait Developable {
         };
         let motion = (nearest(b)? - nearest(a)?).dot(q);
         if motion.is_nan() || motion == 0.0 {
-            return Err(Error::NoSolution(format!(
+            return no_solution!(
                 "the rulings do not move at t = {t}: the surface is singular there"
-            )));
+            );
         }
         Ok(Element::from_frame(
             r.point,
@@ -191,9 +192,9 @@ impl Developable for TangentSurface<'_> {
         let [x, d1, d2] = self.derivatives(t)?;
         let binormal = d1.cross(d2);
         if binormal.length() <= 1e-10 * d1.length() * d2.length() || binormal.is_nan() {
-            return Err(Error::NoSolution(format!(
+            return no_solution!(
                 "the curve has zero curvature at t = {t}: its tangent surface has no tangent plane there"
-            )));
+            );
         }
         let e = d1.normalize();
         let (v0, v1) = self.distances;
@@ -268,9 +269,7 @@ impl Developable for RuledSurface {
         let (a, b) = (self.surface.eval(u0, t), self.surface.eval(u1, t));
         let half = 0.5 * (b - a).length();
         if half.is_nan() || half == 0.0 {
-            return Err(Error::NoSolution(format!(
-                "the ruling at v = {t} has zero length"
-            )));
+            return no_solution!("the ruling at v = {t} has zero length");
         }
         let jet = self.surface.eval_jet(0.5 * (u0 + u1), t);
         Ok(Ruling {
@@ -319,9 +318,9 @@ impl Developable for DualDevelopable {
         let (u, du, u0, du0) = (n.point, n.d1, o.point.x, o.d1.x);
         let d = u.cross(du);
         if d.length() <= 1e-12 * u.length() * du.length() || d.is_nan() {
-            return Err(Error::NoSolution(format!(
+            return no_solution!(
                 "U(t) and U'(t) are parallel at t = {t}: no ruling (the planes do not turn)"
-            )));
+            );
         }
         // The point of U ∩ U̇ in the span of u and u̇: a u + b u̇ with u·x = −u₀, u̇·x = −u̇₀.
         let (g11, g12, g22) = (u.dot(u), u.dot(du), du.dot(du));
@@ -331,7 +330,7 @@ impl Developable for DualDevelopable {
         let x = a * u + b * du;
         let e = d.normalize();
         let (lo, hi) = self.region.clip_line(x, e).ok_or_else(|| {
-            Error::NoSolution(format!("the ruling at t = {t} misses the region box"))
+            Error::no_solution(format!("the ruling at t = {t} misses the region box"))
         })?;
         let mid = 0.5 * (lo + hi);
         Ok(Ruling {

@@ -23,6 +23,7 @@ use super::element::Element;
 use super::pair::joins;
 use super::piece::{ConePiece, Motion};
 use super::spline::ConeSpline;
+use crate::error::no_solution;
 use crate::error::{invalid, Error, Result};
 use crate::math::{real_roots_in, secant_refine};
 use glam::{DMat3, DVec3, DVec4};
@@ -72,9 +73,7 @@ pub fn osculating_cone(surface: &dyn Developable, t: f64) -> Result<OsculatingCo
     if turning.abs() <= 1e-9 * omega.length().max(1e-300) {
         let spin = omega.dot(el.ruling);
         if spin.abs() <= 1e-12 * speed.abs() {
-            return Err(Error::NoSolution(format!(
-                "the ruling at t = {t} is an inflection generator of a cylinder"
-            )));
+            return no_solution!("the ruling at t = {t} is an inflection generator of a cylinder");
         }
         // Rotation ω_e about the axis through o = x + ρn moves x with ω_e ρ p.
         return Ok(OsculatingCone {
@@ -144,8 +143,8 @@ type Chart<'a> = Box<dyn Fn(f64) -> (DVec3, DVec3) + 'a>;
 /// for every real root of (14) on both conics, consistent ones only.
 fn joining_candidates(d1: &OsculatingCone, d2: &OsculatingCone) -> Result<Vec<[ConePiece; 3]>> {
     let (Some(v1), Some(v2)) = (d1.vertex, d2.vertex) else {
-        return Err(Error::NoSolution(
-            "an osculating cylinder cannot be joined by the quartic (14); use the Hermite cone pairs".into(),
+        return Err(Error::no_solution(
+            "an osculating cylinder cannot be joined by the quartic (14); use the Hermite cone pairs",
         ));
     };
     let oriented = |c: &OsculatingCone| {
@@ -160,8 +159,8 @@ fn joining_candidates(d1: &OsculatingCone, d2: &OsculatingCone) -> Result<Vec<[C
     let (c1, c2) = (k1.dot(e1), k2.dot(e2));
     let (s1, s2) = ((1.0 - c1 * c1).sqrt(), (1.0 - c2 * c2).sqrt());
     if s1 <= 1e-12 || s2 <= 1e-12 {
-        return Err(Error::NoSolution(
-            "a degenerate osculating cone (half angle 0)".into(),
+        return Err(Error::no_solution(
+            "a degenerate osculating cone (half angle 0)",
         ));
     }
     let (u1, u2) = (k1.extend(-c1), k2.extend(-c2));
@@ -366,9 +365,8 @@ pub fn join_osculating(d1: &OsculatingCone, d2: &OsculatingCone) -> Result<[Cone
             total(a).total_cmp(&total(b))
         })
         .ok_or_else(|| {
-            Error::NoSolution(
-                "no consistent filling cone joins the two osculating cones (rulings too far apart)"
-                    .into(),
+            Error::no_solution(
+                "no consistent filling cone joins the two osculating cones (rulings too far apart)",
             )
         })
 }
@@ -530,9 +528,8 @@ mod tests {
         assert!(error < 1e-3);
         // Too far apart, no consistent filling cone exists (the paper's interval of e₂).
         let far = uniform_parameters((0.2, 1.2), 3);
-        assert!(matches!(
-            osculating_spline(&surface, &far),
-            Err(Error::NoSolution(_))
-        ));
+        assert!(
+            osculating_spline(&surface, &far).is_err_and(|e| e.is(crate::ErrorKind::NoSolution))
+        );
     }
 }

@@ -23,6 +23,7 @@ use super::biarc::{biarc, equal_lambda, lambda_through, partner_lambda, Biarc};
 use super::element::{check_consecutive, Element};
 use super::piece::ConePiece;
 use super::region::Region;
+use crate::error::no_solution;
 use crate::error::{invalid, Error, Result};
 use crate::math::{quadratic_roots, secant_refine, solve_refined};
 use glam::{DMat3, DVec3};
@@ -152,9 +153,8 @@ pub(crate) fn joins(end: &Element, b: &Element, scale: f64) -> Result<()> {
         || (end.normal() - b.normal()).length() > JOIN_TOLERANCE
         || off_line > JOIN_TOLERANCE * scale
     {
-        return Err(Error::NoSolution(
-            "the pair does not reach the second element with its ruling orientation and side"
-                .into(),
+        return Err(Error::no_solution(
+            "the pair does not reach the second element with its ruling orientation and side",
         ));
     }
     Ok(())
@@ -177,11 +177,11 @@ fn pair_from_apexes(
         (Apex::Infinite, Apex::Finite(q)) => (q, a.ruling),
         (Apex::Finite(p), Apex::Infinite) => (p, b.ruling),
         (Apex::Infinite, Apex::Infinite) => {
-            return Err(Error::NoSolution("both vertices at infinity".into()))
+            return Err(Error::no_solution("both vertices at infinity"))
         }
     };
     if direction.length() <= 1e-12 * scale {
-        return Err(Error::NoSolution("the two vertices coincide".into()));
+        return Err(Error::no_solution("the two vertices coincide"));
     }
     let first = match v1 {
         Apex::Finite(p) => ConePiece::cone(p, *a, sign * direction),
@@ -392,18 +392,18 @@ fn family_pair(
         if let Some(found) = best_pair(a, b, family, family.boundary_candidates(r), region, scale) {
             return Ok(found);
         }
-        return Err(Error::NoSolution(
-            "the region of interest contains every admissible vertex of the cone pairs".into(),
+        return Err(Error::no_solution(
+            "the region of interest contains every admissible vertex of the cone pairs",
         ));
     }
-    Err(Error::NoSolution(format!(
+    no_solution!(
         "no cone pair of the rule {rule:?} joins the elements consistently{}",
         if region.is_some() {
             " with its vertices outside the region"
         } else {
             ""
         }
-    )))
+    )
 }
 
 /// The spherical (or planar) biarc of a finished pair: the junction point c where the
@@ -429,8 +429,8 @@ fn general_case(
     let offset = b.point - a.point;
     let rhs = DVec3::new(0.0, b.side.dot(offset), -offset.dot(n2));
     let Some(y) = solve_refined(rows, rhs) else {
-        return Err(Error::NoSolution(
-            "the inscribed sphere of the two elements is undefined (parallel normal planes)".into(),
+        return Err(Error::no_solution(
+            "the inscribed sphere of the two elements is undefined (parallel normal planes)",
         ));
     };
     let m = a.point + y;
@@ -468,8 +468,8 @@ fn constant_slope_case(
     let meet = |el: &Element| -> Result<DVec3> {
         let s = el.ruling.dot(normal);
         if s.abs() <= 1e-12 {
-            return Err(Error::NoSolution(
-                "a ruling is parallel to the plane π of the constant-slope case".into(),
+            return Err(Error::no_solution(
+                "a ruling is parallel to the plane π of the constant-slope case",
             ));
         }
         Ok(el.at((a.point - el.point).dot(normal) / s))
@@ -493,13 +493,13 @@ fn biarc_lambdas(a1: DVec3, p1: DVec3, a2: DVec3, p2: DVec3, rule: Rule) -> Resu
     let lambda1 = match rule {
         Rule::Given(l) => l,
         _ => equal_lambda(a1, p1, a2, p2)
-            .ok_or_else(|| Error::NoSolution("no biarc with equal positive legs".into()))?,
+            .ok_or_else(|| Error::no_solution("no biarc with equal positive legs"))?,
     };
     let lambda2 = partner_lambda(a1, p1, a2, p2, lambda1)
-        .ok_or_else(|| Error::NoSolution(format!("lambda1 = {lambda1} gives no second arc")))?;
+        .ok_or_else(|| Error::no_solution(format!("lambda1 = {lambda1} gives no second arc")))?;
     if (lambda1 + lambda2).abs() <= 1e-14 * (lambda1.abs() + lambda2.abs()) {
-        return Err(Error::NoSolution(
-            "the biarc degenerates (lambda1 + lambda2 = 0)".into(),
+        return Err(Error::no_solution(
+            "the biarc degenerates (lambda1 + lambda2 = 0)",
         ));
     }
     Ok((lambda1, lambda2))
@@ -514,21 +514,19 @@ fn cone_case(
     scale: f64,
 ) -> Result<ConePair> {
     if matches!(rule, Rule::CylinderFirst | Rule::CylinderSecond) {
-        return Err(Error::NoSolution(
-            "the rulings intersect: every cone pair has their common vertex, none is a cylinder"
-                .into(),
+        return Err(Error::no_solution(
+            "the rulings intersect: every cone pair has their common vertex, none is a cylinder",
         ));
     }
     if region.is_some_and(|r| r.contains(v)) {
-        return Err(Error::NoSolution(format!(
+        return no_solution!(
             "the region of interest contains every possible vertex: the rulings meet at {v}"
-        )));
+        );
     }
     let (s1, s2) = (a.parameter_of(v), b.parameter_of(v));
     if s1 == 0.0 || s2 == 0.0 || (s1 < 0.0) != (s2 < 0.0) {
-        return Err(Error::NoSolution(
-            "the element points lie at or on different sides of the common vertex of the rulings"
-                .into(),
+        return Err(Error::no_solution(
+            "the element points lie at or on different sides of the common vertex of the rulings",
         ));
     }
     // The nappe of the reference points: aᵢ = v + σ R eᵢ on the sphere about v.

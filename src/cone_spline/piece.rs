@@ -136,8 +136,8 @@ impl ConePiece {
             .max(vertex.abs().max_element())
             .max(1e-300);
         if rho.abs() <= 1e-12 * scale {
-            return Err(Error::NoSolution(
-                "a cone vertex falls on the reference point of its ruling".into(),
+            return Err(Error::no_solution(
+                "a cone vertex falls on the reference point of its ruling",
             ));
         }
         // k × e = sin β · p with sin β > 0: a positive rotation moves the reference point
@@ -173,8 +173,8 @@ impl ConePiece {
         }
         if yn.abs() <= 1e-12 * len {
             if yp <= 0.0 {
-                return Err(Error::NoSolution(
-                    "the parallel ruling lies behind the side vector of the plane strip".into(),
+                return Err(Error::no_solution(
+                    "the parallel ruling lies behind the side vector of the plane strip",
                 ));
             }
             return Ok(Self {

@@ -10,7 +10,8 @@ use super::element::Element;
 use super::pair::{cone_pair, ConePair, Rule};
 use super::piece::ConePiece;
 use super::region::Region;
-use crate::error::{invalid, Error, Result};
+use crate::error::no_solution;
+use crate::error::{invalid, Result};
 
 /// Tolerance of the G1 check between consecutive pieces (unit vectors; lengths relative).
 const CHAIN_TOLERANCE: f64 = 1e-9;
@@ -41,10 +42,10 @@ impl ConeSpline {
                         || (s.point - end.point).cross(end.ruling).length()
                             > CHAIN_TOLERANCE * scale
                     {
-                        return Err(Error::NoSolution(format!(
+                        return no_solution!(
                             "piece {k} does not start on the end ruling and tangent plane of piece {}",
                             k - 1
-                        )));
+                        );
                     }
                     ConePiece {
                         start: end,
@@ -81,11 +82,12 @@ impl ConeSpline {
             .enumerate()
             .map(|(i, w)| {
                 let names = (format!("elements[{i}]"), format!("elements[{}]", i + 1));
-                cone_pair(&w[0], &w[1], rule, region, (&names.0, &names.1)).map_err(|e| match e {
-                    Error::NoSolution(m) => {
-                        Error::NoSolution(format!("between {} and {}: {m}", names.0, names.1))
+                cone_pair(&w[0], &w[1], rule, region, (&names.0, &names.1)).map_err(|e| {
+                    if e.is(crate::ErrorKind::NoSolution) {
+                        e.context(format!("between {} and {}", names.0, names.1))
+                    } else {
+                        e
                     }
-                    other => other,
                 })
             })
             .collect::<Result<Vec<_>>>()?;

@@ -12,6 +12,7 @@ use super::piece::ConePiece;
 use super::region::Region;
 use super::spline::ConeSpline;
 use crate::bezier::{PiecewiseCurve, PiecewiseSurface, RationalBezierCurve};
+use crate::error::no_solution;
 use crate::error::{invalid, Error, Result};
 use crate::math::minimize_bracketed;
 
@@ -90,15 +91,15 @@ impl ConeSpline {
         let (mut t0, mut t1) = (f64::NEG_INFINITY, f64::INFINITY);
         for (k, piece) in self.pieces().iter().enumerate() {
             let (lo, hi) = piece_box_bounds(piece, region).ok_or_else(|| {
-                Error::NoSolution(format!("a ruling of piece {k} misses the region box"))
+                Error::no_solution(format!("a ruling of piece {k} misses the region box"))
             })?;
             t0 = t0.max(lo);
             t1 = t1.min(hi);
         }
         if t0 >= t1 {
-            return Err(Error::NoSolution(format!(
+            return no_solution!(
                 "no strip of the cone spline lies inside the region box (entry {t0} ≥ exit {t1})"
-            )));
+            );
         }
         // Vertices inside split the strip: keep the widest part free of them.
         let mut cuts: Vec<f64> = self

@@ -31,7 +31,7 @@ pub(crate) type FfiResult<T = ()> = Result<T, FfiError>;
 
 /// Shorthand for an invalid-input failure detected in the C layer.
 pub(crate) fn invalid_arg<T>(message: String) -> FfiResult<T> {
-    Err(FfiError::Core(Error::InvalidInput(message)))
+    Err(FfiError::Core(Error::invalid_input(message)))
 }
 
 /// Runs an entry point body: catches panics, maps errors to status codes and records the
@@ -43,7 +43,7 @@ pub(crate) fn guard(function: &str, body: impl FnOnce() -> FfiResult) -> RmfStat
             (RmfStatus::RmfErrorNullPointer, format!("{name} is NULL"))
         }
         Ok(Err(FfiError::BufferTooSmall(m))) => (RmfStatus::RmfErrorBufferTooSmall, m),
-        Ok(Err(FfiError::Core(e))) => (RmfStatus::from(&e), e.message().to_string()),
+        Ok(Err(FfiError::Core(e))) => (RmfStatus::from(&e), e.message()),
         Err(panic) => {
             let what = panic
                 .downcast_ref::<&str>()
@@ -219,9 +219,9 @@ mod tests {
             RmfStatus::RmfErrorNullPointer
         );
         assert_eq!(last_error(), "f: curve is NULL");
-        let no_solution = guard("f", || Err(Error::NoSolution("no real root".into()).into()));
+        let no_solution = guard("f", || Err(Error::no_solution("no real root").into()));
         assert_eq!(no_solution, RmfStatus::RmfErrorNoSolution);
-        let not_converged = guard("f", || Err(Error::NotConverged("slow".into()).into()));
+        let not_converged = guard("f", || Err(Error::not_converged("slow").into()));
         assert_eq!(not_converged, RmfStatus::RmfErrorNotConverged);
         assert_eq!(
             guard("f", || Err(FfiError::BufferTooSmall("need 3".into()))),

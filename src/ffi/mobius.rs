@@ -61,7 +61,7 @@ unsafe fn mobius_map(maps: *const RmfInversion, count: usize) -> FfiResult<Mobiu
                 }
             };
             inversion.map_err(|e| {
-                FfiError::Core(crate::Error::InvalidInput(format!(
+                FfiError::Core(crate::Error::invalid_input(format!(
                     "maps[{i}].{}",
                     e.message()
                 )))

@@ -1,6 +1,6 @@
 //! Status codes, the thread-local last-error message, and the library version.
 
-use crate::error::Error;
+use crate::error::{Error, ErrorKind};
 use libc::c_char;
 use std::cell::RefCell;
 use std::ffi::CString;
@@ -45,10 +45,10 @@ const STATUS_NAMES: [(RmfStatus, &str); 7] = [
 
 impl From<&Error> for RmfStatus {
     fn from(e: &Error) -> Self {
-        match e {
-            Error::InvalidInput(_) => RmfStatus::RmfErrorInvalidInput,
-            Error::NoSolution(_) => RmfStatus::RmfErrorNoSolution,
-            Error::NotConverged(_) => RmfStatus::RmfErrorNotConverged,
+        match e.kind() {
+            ErrorKind::InvalidInput => RmfStatus::RmfErrorInvalidInput,
+            ErrorKind::NoSolution => RmfStatus::RmfErrorNoSolution,
+            ErrorKind::NotConverged => RmfStatus::RmfErrorNotConverged,
         }
     }
 }

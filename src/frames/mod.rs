@@ -114,7 +114,7 @@ impl FrameField {
             FrameKind::Frenet => {
                 let jet = self.curve.eval_jet(t);
                 frenet::frenet_frame(jet.d1, jet.d2).ok_or_else(|| {
-                    crate::Error::InvalidInput(format!(
+                    crate::Error::invalid_input(format!(
                         "the Frenet frame is undefined at t = {t} (zero curvature)"
                     ))
                 })

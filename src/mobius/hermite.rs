@@ -59,7 +59,7 @@ fn planar_cubic(data: &HermiteSegment, plane: &SegmentMap, index: usize) -> Resu
         // None only where rounding puts an end point (numerically) at the inversion centre
         // (a fuzz finding: this was a panic).
         let v = plane.map.normalized_differential(p, t).ok_or_else(|| {
-            Error::NoSolution(format!(
+            Error::no_solution(format!(
                 "segment {index}: the Möbius map degenerates at an end point (numerically at \
                  its inversion centre)"
             ))
@@ -73,13 +73,13 @@ fn planar_cubic(data: &HermiteSegment, plane: &SegmentMap, index: usize) -> Resu
         into_plane(data.p1, data.t1)?,
     )
     .map_err(|e| {
-        Error::NoSolution(format!(
+        Error::no_solution(format!(
             "segment {index}: the mapped data degenerate ({})",
             e.message()
         ))
     })?;
     Ok(ph_cubic_hermite(&mapped)
-        .map_err(|e| Error::NoSolution(format!("segment {index}: {}", e.message())))?
+        .map_err(|e| Error::no_solution(format!("segment {index}: {}", e.message())))?
         .shape_matching)
 }
 

@@ -31,6 +31,7 @@ use super::profile::{interior_roots, profile_segments, vanishes, ProfileSegment}
 use super::spline::ph_cubics;
 use crate::bezier::bernstein;
 use crate::bezier::{locate, PiecewiseCurve};
+use crate::error::no_solution;
 use crate::error::{invalid, Error, Result};
 use crate::frames::metrics::angle_about_tangent;
 use crate::frames::rational::RationalFrames;
@@ -355,9 +356,9 @@ pub fn convex_initial_normal(
     let mut arcs = Vec::with_capacity(cubics.len());
     for (k, cubic) in cubics.iter().enumerate() {
         let BaseFrame::Frenet { numerators, angle } = BaseFrame::of(cubic)? else {
-            return Err(Error::NoSolution(format!(
+            return no_solution!(
                 "spine segment {k} is (nearly) straight: the Gaussian curvature vanishes there"
-            )));
+            );
         };
         let t = spline.breaks()[k];
         let omega0 = angle_about_tangent(&numerators.frame(0.0), &rmf.frame(t));
@@ -365,10 +366,10 @@ pub fn convex_initial_normal(
     }
     let (spread, spread_start) = covering_arc(&arcs);
     if turn + spread >= PI {
-        return Err(Error::NoSolution(format!(
+        return no_solution!(
             "the profile turns by δ = {turn:.4} rad and the RMF by ΔΩ = {spread:.4} rad against the \
              Frenet frame: δ + ΔΩ ≥ π, no Ω₀ gives K of one sign (Corollary 9)"
-        )));
+        );
     }
     // K ∝ −a'·sin(a + Ω): centre a + Ω at ∓π/2.
     let direction = (a_end - a_start).signum();
@@ -390,10 +391,10 @@ fn profile_turn(profile: &PiecewiseCurve) -> Result<(f64, f64, f64)> {
     for (i, segment) in profile_segments(profile).iter().enumerate() {
         let numerator = segment.curvature_numerator();
         if let Some(&s) = interior_roots(&numerator).first() {
-            return Err(Error::NoSolution(format!(
+            return no_solution!(
                 "the profile is not convex: it inflects at u = {}",
                 global(profile.breaks(), i, s)
-            )));
+            );
         }
         for j in 0..=16 {
             let d = segment.jet(j as f64 / 16.0).d1;
@@ -407,8 +408,8 @@ fn profile_turn(profile: &PiecewiseCurve) -> Result<(f64, f64, f64)> {
     }
     let steps: Vec<f64> = angles.windows(2).map(|w| w[1] - w[0]).collect();
     if steps.iter().any(|&d| d > 1e-12) && steps.iter().any(|&d| d < -1e-12) {
-        return Err(Error::NoSolution(
-            "the profile is not convex: its tangent turns both ways".into(),
+        return Err(Error::no_solution(
+            "the profile is not convex: its tangent turns both ways",
         ));
     }
     let (first, last) = (angles[0], angles[angles.len() - 1]);
@@ -606,10 +607,8 @@ mod tests {
         )
         .unwrap();
         let wide = PiecewiseCurve::new(vec![half], vec![0.0, 1.0]).unwrap();
-        assert!(matches!(
-            convex_initial_normal(&spine, &wide, true),
-            Err(Error::NoSolution(_))
-        ));
+        assert!(convex_initial_normal(&spine, &wide, true)
+            .is_err_and(|e| e.is(crate::ErrorKind::NoSolution)));
     }
 
     #[test]

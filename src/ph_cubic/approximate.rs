@@ -14,6 +14,7 @@ use super::hermite::ph_cubic_hermite;
 use crate::bezier::bernstein::{self, product, to_power};
 use crate::bezier::PiecewiseCurve;
 use crate::curve::{uniform_parameters, ParametricCurve};
+use crate::error::no_solution;
 use crate::error::{invalid, Error, Result};
 use crate::hermite::HermiteSegment;
 use crate::math::angle_between;
@@ -119,10 +120,11 @@ pub fn ph_spline_uniform(curve: &dyn ParametricCurve, segments: usize) -> Result
                 max_distance = max_distance.max(distance);
             }
             None => {
-                return Err(Error::NoSolution(format!(
+                return no_solution!(
                     "no PH cubic interpolates the curve on [{}, {}]",
-                    w[0].t, w[1].t
-                )))
+                    w[0].t,
+                    w[1].t
+                )
             }
         }
     }
@@ -167,19 +169,19 @@ fn fit_interval(
             let cubic = solutions.shape_matching;
             Ok(Some((cubic, distance(curve, a.t, b.t, &cubic)?)))
         }
-        Err(Error::NoSolution(_)) => Ok(None),
+        Err(e) if e.is(crate::ErrorKind::NoSolution) => Ok(None),
         Err(e) => Err(e),
     }
 }
 
 fn give_up(a: &Sample, b: &Sample, outcome: Option<(PhCubic, f64)>, tolerance: f64) -> Error {
     match outcome {
-        None => Error::NoSolution(format!(
+        None => Error::no_solution(format!(
             "no PH cubic interpolates the curve near [{}, {}] even on a short interval (a corner, \
              cusp or inflection?)",
             a.t, b.t
         )),
-        Some((_, distance)) => Error::NotConverged(format!(
+        Some((_, distance)) => Error::not_converged(format!(
             "distance {distance:.3e} > tolerance {tolerance:.3e} near [{}, {}] after the limit of \
              {MAX_SEGMENTS} segments or the shortest interval",
             a.t, b.t

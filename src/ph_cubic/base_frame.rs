@@ -78,8 +78,8 @@ impl FrameNumerators {
     pub fn positive_pieces(self) -> Result<Vec<(f64, f64, RationalFrameSegment)>> {
         let breaks = bernstein::positive_subdivision(&[&self.d], MAX_SUBDIVISION_DEPTH)
             .ok_or_else(|| {
-                Error::InvalidInput(
-                    "the frame denominator vanishes on the segment (singular PH cubic)".into(),
+                Error::invalid_input(
+                    "the frame denominator vanishes on the segment (singular PH cubic)",
                 )
             })?;
         if breaks == [0.0, 1.0] {

@@ -10,6 +10,7 @@
 //! an end slope is zero (s₁ = 0 makes (37) degenerate), which happens where a twisted target
 //! angle has an extremum. Decreasing data (the other sign of the torsion) are mirrored.
 
+use crate::error::no_solution;
 use crate::error::{Error, Result};
 use crate::math::{minimize_bracketed, GaussLegendre};
 use std::sync::OnceLock;
@@ -144,8 +145,8 @@ fn fit_dyn(data: AngleHermite, rate: &dyn Fn(f64) -> f64) -> Result<BiquadraticF
                 objective: objective(&Biquadratic::constant(data.w0), rate),
             })
         } else {
-            Err(Error::NoSolution(
-                "w(0) = w(1) with non-zero slopes: the angle is not monotone on the piece".into(),
+            Err(Error::no_solution(
+                "w(0) = w(1) with non-zero slopes: the angle is not monotone on the piece",
             ))
         };
     }
@@ -295,9 +296,9 @@ fn nonnegative_slope(s: f64, delta: f64) -> Result<f64> {
     } else if s >= -SLOPE_ROUND_OFF * delta {
         Ok(0.0)
     } else {
-        Err(Error::NoSolution(format!(
+        no_solution!(
             "slope {s:e} against the direction of the angle: it is not monotone on the piece"
-        )))
+        )
     }
 }
 

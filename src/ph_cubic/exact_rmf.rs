@@ -9,11 +9,11 @@
 
 use super::base_frame::BaseFrame;
 use super::cubic::PhCubic;
-use super::in_context;
 use super::spline::ph_cubics;
 use crate::bezier::bernstein;
 use crate::bezier::{locate, PiecewiseCurve};
 use crate::error::Result;
+use crate::error::ResultExt;
 use crate::frames::metrics::angle_about_tangent;
 use crate::frames::rational::joining_turn;
 use crate::frames::Frame;
@@ -44,8 +44,7 @@ impl ExactRmf {
         let mut segments: Vec<Segment> = Vec::with_capacity(spline.segments().len());
         let mut arc_before = 0.0;
         for (k, cubic) in ph_cubics(spline)?.into_iter().enumerate() {
-            let base = BaseFrame::of(&cubic)
-                .map_err(|e| in_context(e, &format!("ph_spline segment {k}")))?;
+            let base = BaseFrame::of(&cubic).with_context(|| format!("ph_spline segment {k}"))?;
             let previous_end = segments.last().map(|p| p.frame(1.0, twist_rate));
             let start_angle = joining_turn(
                 &base.numerators().frame(0.0),
@@ -53,7 +52,7 @@ impl ExactRmf {
                 initial_normal,
                 k,
             )
-            .map_err(|e| in_context(e, "ph_spline"))?;
+            .context("ph_spline")?;
             segments.push(Segment {
                 cubic,
                 base,

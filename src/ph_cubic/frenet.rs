@@ -5,10 +5,10 @@
 
 use super::base_frame::{FrameNumerators, FramePieces};
 use super::cubic::PhCubic;
-use super::in_context;
 use super::preimage::Preimage;
 use super::spline::ph_cubics;
 use crate::bezier::PiecewiseCurve;
+use crate::error::ResultExt;
 use crate::error::{invalid, Result};
 use crate::frames::rational::RationalFrames;
 use glam::DVec3;
@@ -56,7 +56,7 @@ pub fn ph_frenet_frames(spline: &PiecewiseCurve) -> Result<RationalFrames> {
         let cubic = &cubic
             .normalized()
             .exactly_ph()
-            .map_err(|e| in_context(e, &format!("ph_spline segment {k}")))?;
+            .with_context(|| format!("ph_spline segment {k}"))?;
         if cubic.bend() <= NEARLY_STRAIGHT {
             return invalid!(
                 "ph_spline segment {k} is (nearly) straight (sin θ = {:.1e} ≤ {NEARLY_STRAIGHT:e}): its \

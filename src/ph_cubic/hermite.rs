@@ -20,6 +20,7 @@
 //! of the data (Theorem 10 (i)); the other is returned as well.
 
 use super::cubic::PhCubic;
+use crate::error::no_solution;
 use crate::error::{Error, Result};
 use crate::hermite::HermiteSegment;
 use crate::math::quadratic_roots;
@@ -75,10 +76,9 @@ pub fn ph_cubic_hermite(data: &HermiteSegment) -> Result<PhHermiteSolutions> {
     cubics.sort_by(|a, b| a.polygon_length().total_cmp(&b.polygon_length()));
     let mut cubics = cubics.into_iter();
     let Some(shape_matching) = cubics.next() else {
-        return Err(Error::NoSolution(
+        return Err(Error::no_solution(
             "the PH cubics through these data have a (numerical) cusp: their speed falls below \
-             1e-8 of its maximum"
-                .into(),
+             1e-8 of its maximum",
         ));
     };
     Ok(PhHermiteSolutions {
@@ -96,16 +96,14 @@ fn straight_interpolant(data: &HermiteSegment, unit_chord: DVec3) -> Result<Opti
         return Ok(None);
     }
     if unit_chord.cross(data.t0).length() > COLLINEAR {
-        return Err(Error::NoSolution(
+        return Err(Error::no_solution(
             "the end tangents are parallel but the chord p1 − p0 is not along them: no PH cubic \
-             interpolates these data"
-                .into(),
+             interpolates these data",
         ));
     }
     if unit_chord.dot(data.t0) <= 0.0 {
-        return Err(Error::NoSolution(
-            "the end tangents point against the chord p1 − p0: no PH cubic interpolates these data"
-                .into(),
+        return Err(Error::no_solution(
+            "the end tangents point against the chord p1 − p0: no PH cubic interpolates these data",
         ));
     }
     let chord = data.p1 - data.p0;
@@ -134,10 +132,9 @@ fn leg_lengths(data: &HermiteSegment, chord: DVec3) -> Result<Vec<(f64, f64)>> {
     let c = 4.0 * off_f.length_squared() + (along_q * along_q + across * across) / (q2 * q2);
     let sums = sum_roots(a, b, c);
     if sums.is_empty() {
-        return Err(Error::NoSolution(
+        return Err(Error::no_solution(
             "the PH condition (*) of Table 1 has no real root for these data: no PH cubic \
-             interpolates them (try shorter segments)"
-                .into(),
+             interpolates them (try shorter segments)",
         ));
     }
     let difference = -along_q / q2;
@@ -147,8 +144,8 @@ fn leg_lengths(data: &HermiteSegment, chord: DVec3) -> Result<Vec<(f64, f64)>> {
         .filter(|&(l1, l3)| l1 > 1e-14 && l3 > 1e-14)
         .collect();
     if valid.is_empty() {
-        return Err(Error::NoSolution(
-            "every PH cubic through these data runs against t0 or t1 (reversed end tangent)".into(),
+        return Err(Error::no_solution(
+            "every PH cubic through these data runs against t0 or t1 (reversed end tangent)",
         ));
     }
     Ok(valid)
@@ -179,9 +176,9 @@ fn interpolant(data: &HermiteSegment, l1: f64, l3: f64) -> Result<Option<PhCubic
         data.p1,
     ];
     if points.iter().any(|p| !p.is_finite()) {
-        return Err(Error::NoSolution(format!(
+        return no_solution!(
             "the interpolant's inner control points overflow (legs {l1:.1e}, {l3:.1e})"
-        )));
+        );
     }
     let cubic = PhCubic::from_trusted_points(points);
     if cubic.speed_ratio() < SINGULAR_SPEED {
@@ -189,10 +186,10 @@ fn interpolant(data: &HermiteSegment, l1: f64, l3: f64) -> Result<Option<PhCubic
     }
     let residual = cubic.hodograph_residual();
     if residual.is_nan() || residual > cubic.ph_tolerance() {
-        return Err(Error::NoSolution(format!(
+        return no_solution!(
             "the interpolant misses the PH condition (17) by {residual:.1e}: the data are too \
              ill-conditioned for a PH cubic"
-        )));
+        );
     }
     Ok(Some(cubic))
 }
@@ -327,12 +324,9 @@ mod tests {
         assert_eq!(s.shape_matching.bend(), 0.0);
         let offset = segment(DVec3::ZERO, DVec3::X, DVec3::new(3.0, 1.0, 0.0), DVec3::X);
         let e = ph_cubic_hermite(&offset).unwrap_err();
-        assert!(matches!(e, Error::NoSolution(_)) && e.message().contains("parallel"));
+        assert!(e.is(crate::ErrorKind::NoSolution) && e.message().contains("parallel"));
         let backwards = segment(DVec3::ZERO, DVec3::X, -DVec3::X, DVec3::X);
-        assert!(matches!(
-            ph_cubic_hermite(&backwards),
-            Err(Error::NoSolution(_))
-        ));
+        assert!(ph_cubic_hermite(&backwards).is_err_and(|e| e.is(crate::ErrorKind::NoSolution)));
         // An S-shape: tangents nearly parallel, chord far off their line.
         let s_shape = segment(
             DVec3::ZERO,
@@ -341,7 +335,7 @@ mod tests {
             DVec3::new(1.0, 0.0, 0.0),
         );
         let e = ph_cubic_hermite(&s_shape).unwrap_err();
-        assert!(matches!(e, Error::NoSolution(_)), "{e}");
+        assert!(e.is(crate::ErrorKind::NoSolution), "{e}");
     }
 
     #[test]
@@ -378,8 +372,8 @@ mod tests {
                         solved += 1;
                     }
                 }
-                Err(Error::NoSolution(m)) => {
-                    assert!(!m.is_empty());
+                Err(e) if e.is(crate::ErrorKind::NoSolution) => {
+                    assert!(!e.message().is_empty());
                     refused += 1;
                 }
                 Err(e) => panic!("{e}"),

@@ -46,14 +46,3 @@ pub(crate) mod test_curves;
 pub use cubic::PhCubic;
 pub use hermite::{ph_cubic_hermite, PhHermiteSolutions};
 pub use spline::{ph_cubics, ph_spline_hermite};
-
-use crate::error::Error;
-
-/// `e` with its message prefixed by `context` (which segment, which argument), same kind.
-pub(crate) fn in_context(e: Error, context: &str) -> Error {
-    match e {
-        Error::InvalidInput(m) => Error::InvalidInput(format!("{context}: {m}")),
-        Error::NoSolution(m) => Error::NoSolution(format!("{context}: {m}")),
-        Error::NotConverged(m) => Error::NotConverged(format!("{context}: {m}")),
-    }
-}

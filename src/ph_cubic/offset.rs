@@ -8,10 +8,10 @@
 //! circular arcs and planar PH curves pass; other profiles (an ellipse, a generic cubic) have
 //! no rational offset and are refused.
 
-use super::in_context;
 use super::profile::{difference, profile_segments, sum, ProfileSegment};
 use crate::bezier::bernstein::{self, from_power, product, restrict, to_power};
 use crate::bezier::{PiecewiseCurve, RationalBezierCurve};
+use crate::error::ResultExt;
 use crate::error::{invalid, Error, Result};
 use glam::DVec4;
 
@@ -32,11 +32,11 @@ pub fn offset_profile(profile: &PiecewiseCurve, distance: f64) -> Result<Piecewi
     let mut breaks = vec![profile.breaks()[0]];
     for (k, segment) in profile_segments(profile).iter().enumerate() {
         let (a, b) = (profile.breaks()[k], profile.breaks()[k + 1]);
-        let homogeneous = offset_segment(segment, distance)
-            .map_err(|e| in_context(e, &format!("profile segment {k}")))?;
+        let homogeneous =
+            offset_segment(segment, distance).with_context(|| format!("profile segment {k}"))?;
         let weights: Vec<f64> = homogeneous.iter().map(|h| h.w).collect();
         let cuts = bernstein::positive_subdivision(&[&weights], 40).ok_or_else(|| {
-            Error::InvalidInput(format!("profile segment {k} has a singular point (ċ = 0)"))
+            Error::invalid_input(format!("profile segment {k} has a singular point (ċ = 0)"))
         })?;
         for w in cuts.windows(2) {
             segments.push(RationalBezierCurve::from_homogeneous(restrict(
@@ -59,10 +59,9 @@ fn offset_segment(segment: &ProfileSegment, d: f64) -> Result<Vec<DVec4>> {
     let mul = |p: f64, q: f64| p * q;
     let speed_squared = sum(&product(&a, &a, mul), &product(&b, &b, mul));
     let Some(s) = polynomial_sqrt(&speed_squared) else {
-        return Err(Error::NoSolution(
+        return Err(Error::no_solution(
             "|c'| is not rational (A² + B² is no perfect square): the offset is not a rational \
-             curve; only lines, circular arcs and planar PH curves have rational offsets"
-                .into(),
+             curve; only lines, circular arcs and planar PH curves have rational offsets",
         ));
     };
     let (factor, shift) = match exact_quotient(&s, &segment.h) {
@@ -241,7 +240,7 @@ mod tests {
             .unwrap(),
         );
         let e = offset_profile(&ellipse, 0.1).unwrap_err();
-        assert!(matches!(e, Error::NoSolution(_)) && e.message().contains("profile segment 0"));
+        assert!(e.is(crate::ErrorKind::NoSolution) && e.message().contains("profile segment 0"));
         assert!(offset_profile(&circle_arc(), f64::NAN).is_err());
     }
 

@@ -25,8 +25,8 @@ use super::base_frame::{BaseFrame, FramePieces};
 use super::biquadratic::{fit, AngleHermite, BiquadraticFit};
 use super::cubic::PhCubic;
 use super::exact_rmf::{ExactRmf, SegmentTarget};
-use super::in_context;
 use crate::bezier::PiecewiseCurve;
+use crate::error::ResultExt;
 use crate::error::{invalid, Result};
 use crate::frames::rational::RationalFrames;
 use crate::math::{check_finite, largest_coordinate};
@@ -108,9 +108,9 @@ pub fn ph_rational_rmf(spline: &PiecewiseCurve, options: &RmfOptions) -> Result<
     let mut fits = Vec::new();
     for k in 0..target.segment_count() {
         let segment = target.segment_target(k);
-        let context = |e| in_context(e, &format!("ph_spline segment {k}"));
-        for (v0, v1) in monotone_pieces(&segment).map_err(context)? {
-            let (numerators, fit) = piece_frame(&segment, v0, v1).map_err(context)?;
+        let context = || format!("ph_spline segment {k}");
+        for (v0, v1) in monotone_pieces(&segment).with_context(context)? {
+            let (numerators, fit) = piece_frame(&segment, v0, v1).with_context(context)?;
             pieces.push_all(k, v0, v1, numerators.positive_pieces()?);
             fits.push(PieceFit {
                 segment: k,

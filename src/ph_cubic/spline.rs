@@ -4,8 +4,8 @@
 
 use super::cubic::PhCubic;
 use super::hermite::ph_cubic_hermite;
-use super::in_context;
 use crate::bezier::{PiecewiseCurve, RationalBezierCurve};
+use crate::error::ResultExt;
 use crate::error::{invalid, Result};
 use crate::hermite::{hermite_sequence, HermiteSegment};
 use glam::DVec3;
@@ -26,12 +26,7 @@ pub fn ph_spline_from_segments(segments: &[HermiteSegment]) -> Result<PiecewiseC
         .map(|(i, s)| {
             ph_cubic_hermite(s)
                 .map(|solutions| solutions.shape_matching.to_bezier())
-                .map_err(|e| {
-                    in_context(
-                        e,
-                        &format!("segment {i} (points[{i}] to points[{}])", i + 1),
-                    )
-                })
+                .with_context(|| format!("segment {i} (points[{i}] to points[{}])", i + 1))
         })
         .collect::<Result<Vec<RationalBezierCurve>>>()?;
     PiecewiseCurve::with_unit_intervals(cubics)
@@ -44,9 +39,7 @@ pub fn ph_cubics(curve: &PiecewiseCurve) -> Result<Vec<PhCubic>> {
         .segments()
         .iter()
         .enumerate()
-        .map(|(k, segment)| {
-            as_ph_cubic(segment).map_err(|e| in_context(e, &format!("ph_spline segment {k}")))
-        })
+        .map(|(k, segment)| as_ph_cubic(segment).with_context(|| format!("ph_spline segment {k}")))
         .collect()
 }
 
@@ -69,7 +62,6 @@ fn as_ph_cubic(segment: &RationalBezierCurve) -> Result<PhCubic> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::error::Error;
 
     fn helix(t: f64) -> (DVec3, DVec3) {
         (
@@ -98,7 +90,7 @@ mod tests {
         let points = [DVec3::ZERO, DVec3::X, DVec3::new(2.0, 1.0, 0.0)];
         let tangents = [DVec3::X, DVec3::X, DVec3::X];
         let e = ph_spline_hermite(&points, &tangents).unwrap_err();
-        assert!(matches!(e, Error::NoSolution(_)));
+        assert!(e.is(crate::ErrorKind::NoSolution));
         assert!(
             e.message().contains("segment 1 (points[1] to points[2])"),
             "{e}"

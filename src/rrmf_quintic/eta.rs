@@ -9,7 +9,8 @@
 use super::canonical::CanonicalHermite;
 use super::measures::ShapeMeasure;
 use super::solutions::{solve, RrmfQuintic};
-use crate::error::{invalid, Error, Result};
+use crate::error::no_solution;
+use crate::error::{invalid, Result};
 use crate::hermite::HermiteSegment;
 use crate::math::minimize_bracketed;
 use std::f64::consts::TAU;
@@ -50,9 +51,9 @@ pub fn best_quintic(
         }
     }
     let Some(sampled) = best else {
-        return Err(Error::NoSolution(format!(
+        return no_solution!(
             "none of the eta_samples = {eta_samples} sampled values of η admits an RRMF quintic interpolant"
-        )));
+        );
     };
     let quintic = refine(&c, sampled, measure, TAU / eta_samples as f64);
     Ok(BestQuintic {
@@ -186,8 +187,8 @@ mod tests {
     #[test]
     fn refuses_zero_samples_and_reports_data_without_interpolants() {
         let e = best_quintic(&example_1(), ShapeMeasure::ArcLength, 0).unwrap_err();
-        assert!(matches!(e, Error::InvalidInput(_)) && e.message().contains("eta_samples"));
+        assert!(e.is(crate::ErrorKind::InvalidInput) && e.message().contains("eta_samples"));
         let none = best_quintic(&data(2.0, 3.1, 1.5), ShapeMeasure::ArcLength, 360).unwrap_err();
-        assert!(matches!(none, Error::NoSolution(_)), "{none}");
+        assert!(none.is(crate::ErrorKind::NoSolution), "{none}");
     }
 }

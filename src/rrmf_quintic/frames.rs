@@ -15,7 +15,8 @@
 use super::hopf::RmfNumerators;
 use super::solutions::RrmfQuintic;
 use crate::bezier::PiecewiseCurve;
-use crate::error::{Error, Result};
+use crate::error::no_solution;
+use crate::error::Result;
 use crate::frames::rational::{RationalFrameSegment, RationalFrames};
 use glam::DVec3;
 
@@ -44,10 +45,10 @@ pub fn quintic_rmf(quintics: &[RrmfQuintic], initial_normal: DVec3) -> Result<Ra
     for (k, quintic) in quintics.iter().enumerate() {
         let mut pieces = Vec::new();
         if !split(quintic, 0.0, 1.0, 0, &mut pieces) {
-            return Err(Error::NoSolution(format!(
+            return no_solution!(
                 "the speed of quintic {k} (almost) vanishes: the curve is numerically singular \
                  and has no rational frame with positive weights"
-            )));
+            );
         }
         for (end, rmf) in pieces {
             segments.push(RationalFrameSegment::new(rmf.f2, rmf.f3, rmf.denominator)?);

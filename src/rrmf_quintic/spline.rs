@@ -58,11 +58,7 @@ fn in_segment(k: usize, e: Error) -> Error {
         k + 1,
         k + 1
     );
-    match e {
-        Error::InvalidInput(m) => Error::InvalidInput(format!("{context}: {m}")),
-        Error::NoSolution(m) => Error::NoSolution(format!("{context}: {m}")),
-        Error::NotConverged(m) => Error::NotConverged(format!("{context}: {m}")),
-    }
+    e.context(context)
 }
 
 #[cfg(test)]
