@@ -1,5 +1,5 @@
 /* The public header must compile on its own, as C99 and as C++, with
- * -Wall -Wextra -Wpedantic -Werror (see tests/c_suite.rs). */
+ * -Wall -Wextra -Wpedantic -Werror (see capi/tests/c_suite.rs). */
 #include "rmfsurf.h"
 
 int main(void) {

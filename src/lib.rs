@@ -18,39 +18,23 @@
 //! | [`rrmf_quintic`] | quintics with exact rational RMFs by G1 Hermite interpolation (Farouki, Giannelli & Sestini) |
 //! | [`cone_spline`] | cone spline surfaces: G1 cone pairs, approximation of developables, development, bending, offsets |
 //! | [`export`] | STEP, VTK, OBJ, OpenSCAD, SVG and DXF files |
-//! | `ffi` | the C API: handles, status codes, last error, panic boundary |
 //!
-//! The geometry lives in safe Rust and knows nothing of C; a Rust user calls it directly.
-//! Only `ffi` is visible to cbindgen (the other modules are marked `cbindgen:ignore`).
+//! The geometry lives in safe Rust and knows nothing of C; the C ABI is the crate
+//! `rmfsurf-capi` (directory `capi/`), built on this crate's public API.
 
-/// cbindgen:ignore
 pub mod bezier;
-/// cbindgen:ignore
 pub mod cone_spline;
-/// cbindgen:ignore
 pub mod curve;
-/// cbindgen:ignore
 mod error;
-/// cbindgen:ignore
 pub mod export;
-pub mod ffi;
-/// cbindgen:ignore
 pub mod frames;
-/// cbindgen:ignore
 pub mod hermite;
-/// cbindgen:ignore
 pub mod math;
-/// cbindgen:ignore
 pub mod mesh;
-/// cbindgen:ignore
 pub mod mobius;
-/// cbindgen:ignore
 pub mod ph_cubic;
-/// cbindgen:ignore
 pub mod rrmf_quintic;
-/// cbindgen:ignore
 pub mod solid;
-/// cbindgen:ignore
 pub mod sweep;
 #[cfg(test)]
 mod testing;

@@ -2,8 +2,8 @@
 //! coefficients, which may also misbehave as callers' code does — write NaN, write nothing,
 //! or give a zero tangent.
 
-use rmfsurf::ffi::input::RmfCurveCallback;
-use rmfsurf::ffi::RmfVec3;
+use rmfsurf_capi::input::RmfCurveCallback;
+use rmfsurf_capi::RmfVec3;
 use std::ffi::c_void;
 use std::ptr::null_mut;
 

@@ -2,8 +2,8 @@
 //! pairs, the three approximations and osculating cones, pieces, surfaces, boundaries,
 //! bending, development, offsets and the fit reports.
 
-use rmfsurf::ffi::cone_spline::*;
-use rmfsurf::ffi::RmfStatus;
+use rmfsurf_capi::cone_spline::*;
+use rmfsurf_capi::RmfStatus;
 use std::ptr::{null, null_mut};
 
 use super::callback::CallbackCurve;

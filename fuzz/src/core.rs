@@ -3,12 +3,12 @@
 //! status helpers. Every capability's target mixes these in, so that its results are also
 //! read back through every accessor.
 
-use rmfsurf::ffi::curve::*;
-use rmfsurf::ffi::frames::*;
-use rmfsurf::ffi::status::{rmf_status_name, rmf_version};
-use rmfsurf::ffi::surface::*;
-use rmfsurf::ffi::types::{RmfBezierCurve, RmfBezierPatch, RmfNurbsCurve, RmfNurbsSurface};
-use rmfsurf::ffi::RmfVec3;
+use rmfsurf_capi::curve::*;
+use rmfsurf_capi::frames::*;
+use rmfsurf_capi::status::{rmf_status_name, rmf_version};
+use rmfsurf_capi::surface::*;
+use rmfsurf_capi::types::{RmfBezierCurve, RmfBezierPatch, RmfNurbsCurve, RmfNurbsSurface};
+use rmfsurf_capi::RmfVec3;
 use std::ptr::{null, null_mut};
 
 use super::input::Input;
@@ -192,7 +192,7 @@ fn curve_copy(s: &mut Session) {
             &mut knot_count,
         )
     };
-    let too_small = status == rmfsurf::ffi::RmfStatus::RmfErrorBufferTooSmall;
+    let too_small = status == rmfsurf_capi::RmfStatus::RmfErrorBufferTooSmall;
     checked(
         "rmf_curve_nurbs_copy",
         status,
@@ -309,7 +309,7 @@ fn surface_copy(s: &mut Session) {
             d,
         )
     };
-    let too_small = status == rmfsurf::ffi::RmfStatus::RmfErrorBufferTooSmall;
+    let too_small = status == rmfsurf_capi::RmfStatus::RmfErrorBufferTooSmall;
     checked(
         "rmf_surface_nurbs_copy",
         status,
@@ -379,7 +379,7 @@ fn frenet(s: &mut Session) {
 }
 
 /// Evaluates frames at `t` and checks they are orthonormal when the call succeeds.
-fn eval_frames(frames: *const rmfsurf::ffi::RmfFrames, t: f64) {
+fn eval_frames(frames: *const rmfsurf_capi::RmfFrames, t: f64) {
     let mut out = [poisoned::<RmfVec3>(); 3];
     let [a, b, c] = &mut out;
     let status = unsafe { rmf_frames_eval(frames, t, a, b, c) };

@@ -7,7 +7,7 @@
 //! reads a tag byte that picks one of these shapes, then the bytes it needs. When the bytes
 //! run out every draw returns a fixed ordinary value, so any prefix of an input is valid.
 
-use rmfsurf::ffi::RmfVec3;
+use rmfsurf_capi::RmfVec3;
 use std::f64::consts::FRAC_1_SQRT_2;
 
 /// Doubles that break naive geometry code.

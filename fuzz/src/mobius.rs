@@ -2,8 +2,8 @@
 //! vectors, curves and frames under chains of inversions, and curves with exact rational
 //! RMFs by Hermite interpolation and by approximation of curves and callbacks.
 
-use rmfsurf::ffi::mobius::*;
-use rmfsurf::ffi::RmfVec3;
+use rmfsurf_capi::mobius::*;
+use rmfsurf_capi::RmfVec3;
 
 use super::callback::CallbackCurve;
 use super::core::or_null;

@@ -2,8 +2,8 @@
 //! splines, approximation of curves and callbacks, rational, twisted, Frenet and exact
 //! RMFs, angle errors, and the profile-surface analysis.
 
-use rmfsurf::ffi::ph_cubic::*;
-use rmfsurf::ffi::{RmfStatus, RmfVec3};
+use rmfsurf_capi::ph_cubic::*;
+use rmfsurf_capi::{RmfStatus, RmfVec3};
 use std::ptr::null_mut;
 
 use super::callback::CallbackCurve;

@@ -1,8 +1,8 @@
 //! Operations on the RRMF quintic entry points (Farouki, Giannelli & Sestini): solutions
 //! for one η, canonical angles, curves with their exact RMF, the best η, and splines.
 
-use rmfsurf::ffi::rrmf_quintic::*;
-use rmfsurf::ffi::{RmfStatus, RmfVec3};
+use rmfsurf_capi::rrmf_quintic::*;
+use rmfsurf_capi::{RmfStatus, RmfVec3};
 
 use super::core::or_null;
 use super::ph_cubic::hermite_data;

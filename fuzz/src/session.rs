@@ -7,12 +7,12 @@
 //! * a succeeding constructor returns a handle, which later calls use and the end frees;
 //! * frames are orthonormal and finite wherever they evaluate.
 
-use rmfsurf::ffi::cone_spline::{rmf_cone_spline_free, RmfConeSpline};
-use rmfsurf::ffi::curve::rmf_curve_free;
-use rmfsurf::ffi::frames::rmf_frames_free;
-use rmfsurf::ffi::status::rmf_last_error;
-use rmfsurf::ffi::surface::rmf_surface_free;
-use rmfsurf::ffi::{RmfCurve, RmfFrames, RmfStatus, RmfSurface, RmfVec3};
+use rmfsurf_capi::cone_spline::{rmf_cone_spline_free, RmfConeSpline};
+use rmfsurf_capi::curve::rmf_curve_free;
+use rmfsurf_capi::frames::rmf_frames_free;
+use rmfsurf_capi::status::rmf_last_error;
+use rmfsurf_capi::surface::rmf_surface_free;
+use rmfsurf_capi::{RmfCurve, RmfFrames, RmfStatus, RmfSurface, RmfVec3};
 use std::ffi::CStr;
 use std::mem::{size_of, MaybeUninit};
 

@@ -7,8 +7,8 @@ use super::boundary::{
 };
 use super::status::RmfStatus;
 use super::types::{piece_views, PieceViews, RmfBezierCurve, RmfNurbsCurve, RmfVec3};
-use crate::bezier::{check_in_domain, check_nurbs_counts, NurbsCurve, PiecewiseCurve};
-use crate::error::Result;
+use rmfsurf::bezier::{check_in_domain, check_nurbs_counts, NurbsCurve, PiecewiseCurve};
+use rmfsurf::Result;
 use std::sync::{Arc, OnceLock};
 
 /// A piecewise rational Bézier space curve (opaque). Created by the rmf_* constructors,

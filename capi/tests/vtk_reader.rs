@@ -34,7 +34,7 @@ fn vtk_reads_the_tools_vtp_files() {
     let reader = build(
         "vtk_read_vtp",
         true,
-        &["tests/programs/vtk_read_vtp.cpp"],
+        &["capi/tests/programs/vtk_read_vtp.cpp"],
         &flags,
         &libs,
     );

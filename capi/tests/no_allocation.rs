@@ -4,15 +4,15 @@
 //! (Construction allocates, of course; it happens before counting starts.)
 
 use glam::DVec3;
-use rmfsurf::ffi::curve::{rmf_curve_eval, rmf_curve_free, rmf_nurbs_curve_create};
-use rmfsurf::ffi::frames::{rmf_double_reflection_frames, rmf_frames_eval, rmf_frames_free};
-use rmfsurf::ffi::mobius::rmf_mobius_rrmf_hermite;
-use rmfsurf::ffi::ph_cubic::{rmf_ph_rational_rmf, rmf_ph_spline_hermite};
-use rmfsurf::ffi::surface::{rmf_surface_eval, rmf_surface_free, rmf_sweep_surface};
-use rmfsurf::ffi::{RmfCurve, RmfFrames, RmfStatus, RmfSurface, RmfVec3};
 use rmfsurf::ph_cubic::ph_spline_hermite;
 use rmfsurf::ph_cubic::rational_rmf::{ph_rational_rmf, RmfOptions};
 use rmfsurf::sweep::sweep;
+use rmfsurf_capi::curve::{rmf_curve_eval, rmf_curve_free, rmf_nurbs_curve_create};
+use rmfsurf_capi::frames::{rmf_double_reflection_frames, rmf_frames_eval, rmf_frames_free};
+use rmfsurf_capi::mobius::rmf_mobius_rrmf_hermite;
+use rmfsurf_capi::ph_cubic::{rmf_ph_rational_rmf, rmf_ph_spline_hermite};
+use rmfsurf_capi::surface::{rmf_surface_eval, rmf_surface_free, rmf_sweep_surface};
+use rmfsurf_capi::{RmfCurve, RmfFrames, RmfStatus, RmfSurface, RmfVec3};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 use std::ptr::null_mut;

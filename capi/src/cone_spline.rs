@@ -12,11 +12,11 @@ use super::input::{curve_or_callback, RmfCurveCallback};
 use super::status::RmfStatus;
 use super::surface::RmfSurface;
 use super::types::RmfVec3;
-use crate::cone_spline::approximate::approximate;
-use crate::cone_spline::developable::{DualDevelopable, RuledSurface, TangentSurface};
-use crate::cone_spline::osculating::osculating_spline;
-use crate::cone_spline::{ConePiece, ConeSpline, Element, PairCase, PieceKind, Region, Rule};
 use glam::DVec4;
+use rmfsurf::cone_spline::approximate::approximate;
+use rmfsurf::cone_spline::developable::{DualDevelopable, RuledSurface, TangentSurface};
+use rmfsurf::cone_spline::osculating::osculating_spline;
+use rmfsurf::cone_spline::{ConePiece, ConeSpline, Element, PairCase, PieceKind, Region, Rule};
 use std::ffi::c_void;
 
 /// A G1 Hermite element: a ruling through `point` with direction `ruling` and the tangent
@@ -237,7 +237,7 @@ pub unsafe extern "C" fn rmf_cone_spline_hermite(
                     &format!("elements[{i}]"),
                 )
             })
-            .collect::<crate::Result<Vec<_>>>()?;
+            .collect::<rmfsurf::Result<Vec<_>>>()?;
         let rule = rule_from(rule, parameter)?;
         let region = if region.is_null() {
             None
@@ -264,7 +264,7 @@ pub unsafe extern "C" fn rmf_cone_spline_hermite(
 
 /// Writes a fitted spline and its deviation.
 unsafe fn finish_fit(
-    fit: crate::cone_spline::Approximation,
+    fit: rmfsurf::cone_spline::Approximation,
     out: *mut *mut RmfConeSpline,
     max_error: Option<*mut f64>,
 ) {
@@ -710,7 +710,7 @@ pub unsafe extern "C" fn rmf_cone_spline_boundary(
 unsafe fn derive(
     spline: *const RmfConeSpline,
     out: *mut *mut RmfConeSpline,
-    make: impl FnOnce(&ConeSpline) -> crate::Result<ConeSpline>,
+    make: impl FnOnce(&ConeSpline) -> rmfsurf::Result<ConeSpline>,
 ) -> FfiResult {
     let spline = reference(spline, "spline")?;
     let out = out_ptr(out, "out")?;

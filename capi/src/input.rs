@@ -4,11 +4,11 @@
 use super::boundary::{invalid_arg, slice, FfiError, FfiResult};
 use super::curve::RmfCurve;
 use super::types::RmfVec3;
-use crate::curve::ParametricCurve;
-use crate::error::{invalid, Result};
-use crate::hermite::{hermite_sequence, HermiteSegment};
 use glam::DVec3;
 use libc::c_void;
+use rmfsurf::curve::ParametricCurve;
+use rmfsurf::hermite::{hermite_sequence, HermiteSegment};
+use rmfsurf::{Error, Result};
 
 /// An analytic curve given by the caller: writes the point and the tangent (the derivative,
 /// or any non-zero multiple of it) at parameter t into *point and *tangent. It must not
@@ -67,7 +67,9 @@ impl ParametricCurve for CallbackCurve {
         unsafe { (self.callback)(t, self.user, &mut point, &mut tangent) };
         let (point, tangent): (DVec3, DVec3) = (point.into(), tangent.into());
         if !point.is_finite() || !tangent.is_finite() {
-            return invalid!("the callback gave a non-finite (or no) point or tangent at t = {t}");
+            return Err(Error::invalid_input(format!(
+                "the callback gave a non-finite (or no) point or tangent at t = {t}"
+            )));
         }
         Ok((point, tangent))
     }

@@ -8,16 +8,16 @@
 use glam::DVec3;
 use proptest::prelude::*;
 use rmfsurf::bezier::{NurbsCurve, PiecewiseCurve};
-use rmfsurf::ffi::cone_spline::*;
-use rmfsurf::ffi::curve::{rmf_curve_eval, rmf_curve_free};
-use rmfsurf::ffi::mobius::rmf_mobius_rrmf_hermite;
-use rmfsurf::ffi::ph_cubic::rmf_ph_spline_hermite;
-use rmfsurf::ffi::rrmf_quintic::rmf_rrmf_spline_hermite;
-use rmfsurf::ffi::{RmfStatus, RmfVec3};
 use rmfsurf::frames::metrics::{angle_about_tangent, orthonormality_error};
 use rmfsurf::ph_cubic::exact_rmf::ExactRmf;
 use rmfsurf::ph_cubic::rational_rmf::{ph_rational_rmf, RmfOptions};
 use rmfsurf::ph_cubic::{ph_cubics, ph_spline_hermite};
+use rmfsurf_capi::cone_spline::*;
+use rmfsurf_capi::curve::{rmf_curve_eval, rmf_curve_free};
+use rmfsurf_capi::mobius::rmf_mobius_rrmf_hermite;
+use rmfsurf_capi::ph_cubic::rmf_ph_spline_hermite;
+use rmfsurf_capi::rrmf_quintic::rmf_rrmf_spline_hermite;
+use rmfsurf_capi::{RmfStatus, RmfVec3};
 use std::ffi::c_void;
 use std::ptr::null_mut;
 
@@ -214,7 +214,7 @@ proptest! {
     }
 }
 
-#[path = "../fuzz/src/lib.rs"]
+#[path = "../../fuzz/src/lib.rs"]
 #[allow(dead_code)]
 mod harness;
 
@@ -234,7 +234,7 @@ fn boundary_length(spline: *const RmfConeSpline, t: f64) -> f64 {
         RmfStatus::RmfOk
     );
     let (mut lo, mut hi) = (0.0, 0.0);
-    unsafe { rmfsurf::ffi::curve::rmf_curve_domain(curve, &mut lo, &mut hi) };
+    unsafe { rmfsurf_capi::curve::rmf_curve_domain(curve, &mut lo, &mut hi) };
     let n = 20_000;
     let point = |i: usize| {
         let mut p = RmfVec3::default();

@@ -7,7 +7,7 @@
 //! failing call writes nothing.
 
 use super::status::{set_last_error, RmfStatus};
-use crate::error::Error;
+use rmfsurf::Error;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
 /// Why an entry point failed, before mapping to a status code.
@@ -178,6 +178,51 @@ pub(crate) unsafe fn buffer<'a, T>(
     Ok(std::slice::from_raw_parts_mut(p, capacity))
 }
 
+/// An options struct of the C API. Its first field is `size_t struct_size`, which the
+/// caller's `rmf_*_options_init` set to the size of the struct *it* was compiled with: a
+/// program built against an older header passes a shorter struct, and the fields it does
+/// not know keep their defaults. Structs only grow at the end.
+///
+/// # Safety
+/// Implementors are `#[repr(C)]` plain data whose first field is a `usize` and for which
+/// any bit pattern of their fields is a valid value (numbers, vectors, `u32` codes).
+#[allow(dead_code)] // until the first options struct
+pub(crate) unsafe trait OptionsStruct: Copy + Default {
+    /// The size of the first published version of the struct.
+    const FIRST_SIZE: usize;
+}
+
+/// The caller's options, or the defaults where `options` is NULL.
+///
+/// # Safety
+/// `options` must be NULL or point to at least `struct_size` readable bytes.
+#[allow(dead_code)] // until the first options struct
+pub(crate) unsafe fn options<T: OptionsStruct>(
+    options: *const T,
+    name: &'static str,
+) -> FfiResult<T> {
+    let mut value = T::default();
+    if options.is_null() {
+        return Ok(value);
+    }
+    check_aligned(options, name)?;
+    let size = options.cast::<usize>().read();
+    if size < T::FIRST_SIZE || size > std::mem::size_of::<T>() {
+        return invalid_arg(format!(
+            "{name}->struct_size = {size} is no size of this struct ({} to {} bytes): \
+             initialise it with its rmf_*_options_init function",
+            T::FIRST_SIZE,
+            std::mem::size_of::<T>()
+        ));
+    }
+    std::ptr::copy_nonoverlapping(
+        options.cast::<u8>(),
+        (&mut value as *mut T).cast::<u8>(),
+        size,
+    );
+    Ok(value)
+}
+
 /// `value` as usize from a C `uint32_t` degree or count (always fits on supported targets).
 pub(crate) fn to_usize(value: u32) -> usize {
     value as usize
@@ -186,7 +231,7 @@ pub(crate) fn to_usize(value: u32) -> usize {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ffi::status::rmf_last_error;
+    use crate::status::rmf_last_error;
     use std::ffi::CStr;
 
     fn last_error() -> String {
@@ -233,6 +278,53 @@ mod tests {
             "f: need 3",
             "success leaves the last error alone"
         );
+    }
+
+    #[repr(C)]
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    struct Grown {
+        struct_size: usize,
+        old: f64,
+        new: f64,
+    }
+    impl Default for Grown {
+        fn default() -> Self {
+            Grown {
+                struct_size: std::mem::size_of::<Grown>(),
+                old: 1.0,
+                new: 2.0,
+            }
+        }
+    }
+    unsafe impl OptionsStruct for Grown {
+        const FIRST_SIZE: usize = 16;
+    }
+
+    #[test]
+    fn options_of_an_older_header_keep_the_new_fields_default() {
+        let given = Grown {
+            struct_size: 16,
+            old: 5.0,
+            new: 99.0,
+        };
+        let read = unsafe { options(&given, "options") }.unwrap();
+        assert_eq!((read.old, read.new), (5.0, 2.0));
+        let full = Grown {
+            struct_size: 24,
+            ..given
+        };
+        assert_eq!(unsafe { options(&full, "options") }.unwrap().new, 99.0);
+        assert_eq!(
+            unsafe { options::<Grown>(std::ptr::null(), "o") }.unwrap(),
+            Grown::default()
+        );
+        for bad in [0, 8, 32] {
+            let wrong = Grown {
+                struct_size: bad,
+                ..given
+            };
+            assert!(unsafe { options(&wrong, "options") }.is_err());
+        }
     }
 
     #[test]

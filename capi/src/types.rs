@@ -1,7 +1,7 @@
 //! Plain data exchanged with C: vectors and borrowed views of NURBS and Bézier data.
 
-use crate::bezier::homogeneous::project;
 use glam::{DVec3, DVec4};
+use rmfsurf::bezier::homogeneous::project;
 
 /// C-layout copies of Bézier pieces (segments or patches): Cartesian poles and weights of
 /// each, the arrays behind `RmfBezierCurve` and `RmfBezierPatch` views.

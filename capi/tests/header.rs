@@ -16,7 +16,7 @@ fn committed_header_is_what_cbindgen_generates() {
         .expect("cbindgen generates the header");
     let mut generated = Vec::new();
     bindings.write(&mut generated);
-    let path = root.join("include/rmfsurf.h");
+    let path = root.join("../include/rmfsurf.h");
     if std::env::var_os("RMFSURF_BLESS_HEADER").is_some() {
         std::fs::write(&path, &generated).expect("header written");
         return;

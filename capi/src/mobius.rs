@@ -7,13 +7,13 @@ use super::frames::{rational_frames, RmfFrames};
 use super::input::{curve_or_callback, hermite_arrays, RmfCurveCallback};
 use super::status::RmfStatus;
 use super::types::RmfVec3;
-use crate::frames::{FrameField, FrameKind};
-use crate::mobius::{
+use glam::DVec3;
+use libc::c_void;
+use rmfsurf::frames::{FrameField, FrameKind};
+use rmfsurf::mobius::{
     map_curve, map_framed_curve, mobius_approximate, mobius_hermite, Inversion, MobiusMap,
     RationalRmfCurve,
 };
-use glam::DVec3;
-use libc::c_void;
 use std::sync::Arc;
 
 /// RmfInversion.kind: inversion in the sphere (center, radius).
@@ -61,7 +61,7 @@ unsafe fn mobius_map(maps: *const RmfInversion, count: usize) -> FfiResult<Mobiu
                 }
             };
             inversion.map_err(|e| {
-                FfiError::Core(crate::Error::invalid_input(format!(
+                FfiError::Core(rmfsurf::Error::invalid_input(format!(
                     "maps[{i}].{}",
                     e.message()
                 )))
@@ -72,7 +72,7 @@ unsafe fn mobius_map(maps: *const RmfInversion, count: usize) -> FfiResult<Mobiu
 }
 
 fn finite(v: RmfVec3, name: &str) -> FfiResult<DVec3> {
-    Ok(crate::math::check_finite(v.into(), name)?)
+    Ok(rmfsurf::math::check_finite(v.into(), name)?)
 }
 
 /// The image μ(point) of a point under a Möbius transformation.

@@ -1,7 +1,7 @@
 //! Status codes, the thread-local last-error message, and the library version.
 
-use crate::error::{Error, ErrorKind};
 use libc::c_char;
+use rmfsurf::{Error, ErrorKind};
 use std::cell::RefCell;
 use std::ffi::CString;
 
@@ -49,6 +49,8 @@ impl From<&Error> for RmfStatus {
             ErrorKind::InvalidInput => RmfStatus::RmfErrorInvalidInput,
             ErrorKind::NoSolution => RmfStatus::RmfErrorNoSolution,
             ErrorKind::NotConverged => RmfStatus::RmfErrorNotConverged,
+            // A kind the core gains later is refused input until it has a status of its own.
+            _ => RmfStatus::RmfErrorInvalidInput,
         }
     }
 }
@@ -56,9 +58,12 @@ impl From<&Error> for RmfStatus {
 /// Major version of the library; equals the first number of rmf_version().
 pub const RMF_VERSION_MAJOR: u32 = 0;
 /// Minor version of the library.
-pub const RMF_VERSION_MINOR: u32 = 1;
+pub const RMF_VERSION_MINOR: u32 = 2;
 /// Patch version of the library.
 pub const RMF_VERSION_PATCH: u32 = 0;
+/// The ABI number: the N of the shared library's SONAME librmfsurf.so.N, raised on every
+/// ABI break (0.1.0 had no SONAME; 0.2.0 is ABI 1).
+pub const RMF_ABI_VERSION: u32 = 1;
 
 thread_local! {
     static LAST_ERROR: RefCell<CString> = RefCell::new(CString::default());

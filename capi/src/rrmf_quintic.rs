@@ -1,4 +1,4 @@
-//! The C API of RRMF quintics (`crate::rrmf_quintic`): all interpolants for one η, the
+//! The C API of RRMF quintics (`rmfsurf::rrmf_quintic`): all interpolants for one η, the
 //! curve and exact rational RMF of one of them, the η of least shape measure, and G1
 //! splines with one continuous rational RMF.
 
@@ -10,14 +10,14 @@ use super::frames::RmfFrames;
 use super::input::hermite_arrays;
 use super::status::RmfStatus;
 use super::types::RmfVec3;
-use crate::bezier::PiecewiseCurve;
-use crate::frames::rational::RationalFrames;
-use crate::frames::{FrameField, FrameKind};
-use crate::hermite::HermiteSegment;
-use crate::math::Complex;
-use crate::rrmf_quintic::canonical::CanonicalHermite;
-use crate::rrmf_quintic::frames::{quintic_curve, quintic_rmf};
-use crate::rrmf_quintic::{best_quintic, rrmf_quintics, rrmf_spline, RrmfQuintic, ShapeMeasure};
+use rmfsurf::bezier::PiecewiseCurve;
+use rmfsurf::frames::rational::RationalFrames;
+use rmfsurf::frames::{FrameField, FrameKind};
+use rmfsurf::hermite::HermiteSegment;
+use rmfsurf::math::Complex;
+use rmfsurf::rrmf_quintic::canonical::CanonicalHermite;
+use rmfsurf::rrmf_quintic::frames::{quintic_curve, quintic_rmf};
+use rmfsurf::rrmf_quintic::{best_quintic, rrmf_quintics, rrmf_spline, RrmfQuintic, ShapeMeasure};
 
 /// One RRMF quintic Hermite interpolant (Farouki, Giannelli & Sestini, Section 4).
 ///

@@ -4,12 +4,12 @@ use super::boundary::{free_handle, guard, invalid_arg, out_ptr, reference, write
 use super::curve::RmfCurve;
 use super::status::RmfStatus;
 use super::types::RmfVec3;
-use crate::bezier::{check_in_domain, PiecewiseCurve};
-use crate::curve::{check_sample_count, uniform_parameters};
-use crate::error::Result;
-use crate::frames::double_reflection::DoubleReflectionRmf;
-use crate::frames::rational::{FrameVector, RationalFrames};
-use crate::frames::{FrameField, FrameKind};
+use rmfsurf::bezier::{check_in_domain, PiecewiseCurve};
+use rmfsurf::curve::{check_sample_count, uniform_parameters};
+use rmfsurf::frames::double_reflection::DoubleReflectionRmf;
+use rmfsurf::frames::rational::{FrameVector, RationalFrames};
+use rmfsurf::frames::{FrameField, FrameKind};
+use rmfsurf::Result;
 
 /// Frames along a curve (opaque): exact rational frames, double-reflection samples, or
 /// pointwise Frenet frames. Freed with rmf_frames_free. Immutable; may be read from

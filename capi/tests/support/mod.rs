@@ -16,40 +16,39 @@ pub const SETUP_HINT: &str =
 pub struct Toolchain {
     pub cc: PathBuf,
     pub cxx: PathBuf,
-    /// target/<profile>, where cargo put librmfsurf.so.
+    /// Where librmfsurf.so (→ librmfsurf.so.N, the SONAME) and librmfsurf.a are staged
+    /// for the test programs, as an installed library would be laid out.
     pub lib_dir: PathBuf,
     /// Where the test programs go.
     pub out_dir: PathBuf,
 }
 
+/// The repository root.
 pub fn root() -> &'static Path {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
+    Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
 }
 
-/// Builds the cdylib (cargo test itself only builds the rlib) and finds the compilers; once.
+/// Builds the C library (cargo test itself only builds the rlib), stages it under its
+/// installed names and finds the compilers; once.
 pub fn toolchain() -> &'static Toolchain {
     static TOOLCHAIN: OnceLock<Toolchain> = OnceLock::new();
     TOOLCHAIN.get_or_init(|| {
         let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
         let status = Command::new(cargo)
-            .args(["build", "--lib", "--quiet"])
+            .args(["build", "-p", "rmfsurf-capi", "--lib", "--quiet"])
             .current_dir(root())
             .status()
             .expect("cargo runs");
-        assert!(status.success(), "cargo build --lib failed");
+        assert!(status.success(), "cargo build -p rmfsurf-capi --lib failed");
         // The test binary lives in target/<profile>/deps.
         let exe = std::env::current_exe().expect("test binary path");
-        let lib_dir = exe
+        let profile_dir = exe
             .parent()
             .and_then(Path::parent)
             .expect("target/<profile>")
             .to_path_buf();
-        assert!(
-            lib_dir.join("librmfsurf.so").exists(),
-            "librmfsurf.so not found in {}",
-            lib_dir.display()
-        );
-        let out_dir = lib_dir.join("c_tests");
+        let lib_dir = stage_library(&profile_dir);
+        let out_dir = profile_dir.join("c_tests");
         std::fs::create_dir_all(&out_dir).expect("output directory");
         let compiler = |cpp: bool| {
             cc::Build::new()
@@ -72,6 +71,26 @@ pub fn toolchain() -> &'static Toolchain {
             out_dir,
         }
     })
+}
+
+/// Links cargo's librmfsurf_capi.{so,a} in `profile_dir` under the names a C program
+/// uses — librmfsurf.so.N (the SONAME the library carries), librmfsurf.so and
+/// librmfsurf.a — in `profile_dir`/lib, and returns that directory.
+fn stage_library(profile_dir: &Path) -> PathBuf {
+    let lib_dir = profile_dir.join("lib");
+    std::fs::create_dir_all(&lib_dir).expect("staging directory");
+    let soname = format!("librmfsurf.so.{}", env!("RMFSURF_ABI_VERSION"));
+    for (link, target) in [
+        (soname.as_str(), "../librmfsurf_capi.so"),
+        ("librmfsurf.so", soname.as_str()),
+        ("librmfsurf.a", "../librmfsurf_capi.a"),
+    ] {
+        let path = lib_dir.join(link);
+        let _ = std::fs::remove_file(&path);
+        std::os::unix::fs::symlink(target, &path).expect("symlink in the staging directory");
+        assert!(path.exists(), "{} does not resolve", path.display());
+    }
+    lib_dir
 }
 
 /// The VTK include directory (/usr/include/vtk-X.Y) and its version suffix.
@@ -110,7 +129,7 @@ pub fn vtk_flags(modules: &[&str]) -> (String, Vec<String>) {
 pub fn cli() -> PathBuf {
     static CLI: OnceLock<PathBuf> = OnceLock::new();
     CLI.get_or_init(|| {
-        let lib_dir = &toolchain().lib_dir;
+        let profile_dir = toolchain().lib_dir.parent().expect("target/<profile>");
         let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
         let status = Command::new(cargo)
             .args(["build", "--quiet", "-p", "rmfsurf-cli", "--bin", "rmfsurf"])
@@ -118,7 +137,7 @@ pub fn cli() -> PathBuf {
             .status()
             .expect("cargo runs");
         assert!(status.success(), "cargo build -p rmfsurf-cli failed");
-        let exe = lib_dir.join("rmfsurf");
+        let exe = profile_dir.join("rmfsurf");
         assert!(exe.exists(), "{} not built", exe.display());
         exe
     })

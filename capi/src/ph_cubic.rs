@@ -1,5 +1,5 @@
 //! The C API of PH cubic splines, their rotation-minimizing frames and the analysis of
-//! profile surfaces (Mäurer & Jüttler; geometry in `crate::ph_cubic`). The profile surface
+//! profile surfaces (Mäurer & Jüttler; geometry in `rmfsurf::ph_cubic`). The profile surface
 //! itself is made by the generic rmf_sweep_surface.
 
 use super::boundary::{
@@ -10,20 +10,20 @@ use super::frames::{rational_frames, RmfFrames};
 use super::input::{curve_or_callback, hermite_arrays, RmfCurveCallback};
 use super::status::RmfStatus;
 use super::types::RmfVec3;
-use crate::bezier::{check_in_domain, PiecewiseCurve};
-use crate::curve::check_sample_count;
-use crate::frames::rational::RationalFrames;
-use crate::frames::{FrameField, FrameKind};
-use crate::hermite::HermiteSegment;
-use crate::ph_cubic::accuracy::angle_errors;
-use crate::ph_cubic::analysis::{convex_initial_normal, ProfileSurface};
-use crate::ph_cubic::approximate::{check_g1, ph_spline_approximate};
-use crate::ph_cubic::exact_rmf::ExactRmf;
-use crate::ph_cubic::frenet::ph_frenet_frames;
-use crate::ph_cubic::offset::offset_profile;
-use crate::ph_cubic::rational_rmf::{ph_rational_rmf, RmfOptions};
-use crate::ph_cubic::spline::ph_spline_from_segments;
-use crate::ph_cubic::{ph_cubic_hermite, PhCubic};
+use rmfsurf::bezier::{check_in_domain, PiecewiseCurve};
+use rmfsurf::curve::check_sample_count;
+use rmfsurf::frames::rational::RationalFrames;
+use rmfsurf::frames::{FrameField, FrameKind};
+use rmfsurf::hermite::HermiteSegment;
+use rmfsurf::ph_cubic::accuracy::angle_errors;
+use rmfsurf::ph_cubic::analysis::{convex_initial_normal, ProfileSurface};
+use rmfsurf::ph_cubic::approximate::{check_g1, ph_spline_approximate};
+use rmfsurf::ph_cubic::exact_rmf::ExactRmf;
+use rmfsurf::ph_cubic::frenet::ph_frenet_frames;
+use rmfsurf::ph_cubic::offset::offset_profile;
+use rmfsurf::ph_cubic::rational_rmf::{ph_rational_rmf, RmfOptions};
+use rmfsurf::ph_cubic::spline::ph_spline_from_segments;
+use rmfsurf::ph_cubic::{ph_cubic_hermite, PhCubic};
 use std::ffi::c_void;
 
 /// The G1 Hermite interpolants of Table 1 (Mäurer & Jüttler) with a PH cubic: the cubic
@@ -320,7 +320,7 @@ pub unsafe extern "C" fn rmf_ph_exact_rmf_eval(
         let frames = params
             .iter()
             .map(|&t| check_in_domain(t, domain, "t").map(|t| rmf.frame(t)))
-            .collect::<crate::Result<Vec<_>>>()?;
+            .collect::<rmfsurf::Result<Vec<_>>>()?;
         for (dst, f) in f2.iter_mut().zip(&frames) {
             *dst = f.f2.into();
         }
@@ -545,7 +545,7 @@ pub unsafe extern "C" fn rmf_sweep_parabolic_points(
 
 /// The parabolic lines as points on the sampled v lines (see rmf_sweep_parabolic_points).
 fn parabolic_points(
-    lines: &crate::ph_cubic::analysis::ParabolicLines,
+    lines: &rmfsurf::ph_cubic::analysis::ParabolicLines,
     (v0, v1): (f64, f64),
     (u0, u1): (f64, f64),
     samples: usize,

@@ -3,15 +3,15 @@
 //! runs each call and then checks that the README's table lists the same rows with the same
 //! status (so the table cannot drift from the library).
 
-use rmfsurf::ffi::cone_spline::*;
-use rmfsurf::ffi::curve::*;
-use rmfsurf::ffi::frames::*;
-use rmfsurf::ffi::mobius::*;
-use rmfsurf::ffi::ph_cubic::*;
-use rmfsurf::ffi::rrmf_quintic::*;
-use rmfsurf::ffi::status::{rmf_last_error, rmf_status_name};
-use rmfsurf::ffi::surface::*;
-use rmfsurf::ffi::{RmfCurve, RmfFrames, RmfStatus, RmfVec3};
+use rmfsurf_capi::cone_spline::*;
+use rmfsurf_capi::curve::*;
+use rmfsurf_capi::frames::*;
+use rmfsurf_capi::mobius::*;
+use rmfsurf_capi::ph_cubic::*;
+use rmfsurf_capi::rrmf_quintic::*;
+use rmfsurf_capi::status::{rmf_last_error, rmf_status_name};
+use rmfsurf_capi::surface::*;
+use rmfsurf_capi::{RmfCurve, RmfFrames, RmfStatus, RmfVec3};
 use std::ffi::{c_void, CStr};
 use std::ptr::{null, null_mut};
 
@@ -844,7 +844,7 @@ fn every_bad_input_gets_its_status_and_a_message_naming_it() {
 #[test]
 fn the_readme_lists_every_row_with_its_status() {
     let readme =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../README.md")).unwrap();
     let table = readme
         .split("### Bad inputs")
         .nth(1)
