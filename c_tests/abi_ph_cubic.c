@@ -662,8 +662,38 @@ static void test_profile_surface_analysis(void) {
     rmf_curve_free(big);
 }
 
+/* A curve made from a callback: the approximations sample it as they sample the callback
+   argument; entry points that need rational data refuse it, naming the argument. */
+static void test_callback_curve(void) {
+    double pitch = 0.5, d1 = -1, d2 = -2, lo = 0, hi = 0;
+    RmfCurve *analytic = NULL, *from_handle = NULL, *from_pair = NULL, *untouched = (RmfCurve *)&pitch;
+    RmfVec3 p = {0, 0, 0}, t = {0, 0, 0};
+    RmfNurbsCurve view;
+    size_t n1 = 0, n2 = 0;
+    CHECK_STATUS(rmf_callback_curve_create(helix, &pitch, 0, 2 * PI, &analytic), RMF_OK, "");
+    CHECK_STATUS(rmf_curve_domain(analytic, &lo, &hi), RMF_OK, "");
+    CHECK(lo == 0 && hi == 2 * PI, "a callback curve has the domain given");
+    CHECK_STATUS(rmf_curve_eval(analytic, 1.0, &p, &t), RMF_OK, "");
+    CHECK(fabs(p.x - cos(1.0)) < 1e-15 && fabs(t.z - pitch) < 1e-15, "eval gives the callback's values");
+    CHECK_STATUS(rmf_ph_spline_approximate(analytic, NULL, NULL, 0, 0, 1e-6, &from_handle, &d1), RMF_OK, "");
+    CHECK_STATUS(rmf_ph_spline_approximate(NULL, helix, &pitch, 0, 2 * PI, 1e-6, &from_pair, &d2), RMF_OK, "");
+    CHECK_STATUS(rmf_curve_segment_count(from_handle, &n1), RMF_OK, "");
+    CHECK_STATUS(rmf_curve_segment_count(from_pair, &n2), RMF_OK, "");
+    CHECK(n1 == n2 && d1 == d2, "a callback curve approximates as the callback pair does");
+    CHECK_STATUS(rmf_curve_nurbs(analytic, &view), RMF_ERROR_INVALID_INPUT, "callback curve");
+    CHECK_STATUS(rmf_curve_segment_count(analytic, &n1), RMF_ERROR_INVALID_INPUT, "callback curve");
+    CHECK_STATUS(rmf_callback_curve_create(NULL, &pitch, 0, 1, &untouched), RMF_ERROR_NULL_POINTER, "callback");
+    CHECK_STATUS(rmf_callback_curve_create(helix, &pitch, 1, 1, &untouched), RMF_ERROR_INVALID_INPUT, "t_min");
+    CHECK_STATUS(rmf_callback_curve_create(helix, &pitch, 0, NAN, &untouched), RMF_ERROR_INVALID_INPUT, "t_max");
+    CHECK(untouched == (RmfCurve *)&pitch, "out untouched on failure");
+    rmf_curve_free(from_pair);
+    rmf_curve_free(from_handle);
+    rmf_curve_free(analytic);
+}
+
 int main(void) {
     test_hermite();
+    test_callback_curve();
     test_spline_hermite();
     test_approximation_order();
     test_spline_approximate();

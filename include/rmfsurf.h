@@ -266,8 +266,10 @@ typedef uint32_t RmfStatus;
 typedef struct RmfConeSpline RmfConeSpline;
 
 /**
- * A piecewise rational Bézier space curve (opaque). Created by the rmf_* constructors,
- * freed with rmf_curve_free. Immutable; may be read from several threads at once.
+ * A space curve (opaque): piecewise rational Bézier (also a NURBS curve), or an analytic
+ * curve given by a callback. Created by the rmf_* constructors, freed with rmf_curve_free.
+ * Immutable; may be read from several threads at once (a callback curve: if its callback
+ * may be called from those threads).
  */
 typedef struct RmfCurve RmfCurve;
 
@@ -954,6 +956,30 @@ RmfStatus rmf_nurbs_curve_create(uint32_t degree,
                                  struct RmfCurve **out);
 
 /**
+ * Creates a curve from a callback: an analytic curve on [t_min, t_max] that the
+ * approximations sample (rmf_ph_spline_approximate, rmf_mobius_rrmf_approximate, the cone
+ * spline fits, wire edges). Entry points that need rational data (NURBS views, segments,
+ * sweeps, Möbius images) refuse it with RMF_ERROR_INVALID_INPUT; rmf_curve_eval gives the
+ * callback's point and tangent.
+ *
+ * @param[in] callback Writes the point and the tangent (the derivative, or any non-zero
+ *            multiple of it) at t; see RmfCurveCallback. It is called during the calls that
+ *            use the curve, from their threads.
+ * @param[in] user Passed to the callback unchanged; must stay valid while the curve exists.
+ * @param[in] t_min, t_max The domain: finite, t_min < t_max, t_max − t_min finite.
+ * @param[out] out Receives the new curve; free it with rmf_curve_free. Untouched on failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If callback or out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If the domain is invalid.
+ * \since 0.2
+ */
+RmfStatus rmf_callback_curve_create(RmfCurveCallback callback,
+                                    void *user,
+                                    double t_min,
+                                    double t_max,
+                                    struct RmfCurve **out);
+
+/**
  * Frees a curve. NULL is a no-op. Views obtained from the curve become invalid; frames and
  * surfaces built from it stay valid (they keep their own reference).
  */
@@ -974,10 +1000,12 @@ RmfStatus rmf_curve_domain(const struct RmfCurve *curve, double *t_min, double *
  * @param[in] curve The curve.
  * @param[in] t Parameter in the curve's domain (see rmf_curve_domain).
  * @param[out] point Receives x(t).
- * @param[out] derivative Receives x'(t); may be NULL if not wanted.
+ * @param[out] derivative Receives x'(t) (a callback curve: the tangent its callback gives);
+ *             may be NULL if not wanted.
  * @return RMF_OK on success.
  * @return RMF_ERROR_NULL_POINTER If curve or point is NULL.
- * @return RMF_ERROR_INVALID_INPUT If t is not finite or outside the domain.
+ * @return RMF_ERROR_INVALID_INPUT If t is not finite or outside the domain, or a callback
+ *         gives a non-finite value.
  */
 RmfStatus rmf_curve_eval(const struct RmfCurve *curve,
                          double t,

@@ -27,6 +27,16 @@ pub trait ParametricCurve {
     }
 }
 
+impl<C: ParametricCurve + ?Sized> ParametricCurve for &C {
+    fn domain(&self) -> (f64, f64) {
+        (**self).domain()
+    }
+
+    fn point_derivative(&self, t: f64) -> Result<(DVec3, DVec3)> {
+        (**self).point_derivative(t)
+    }
+}
+
 impl ParametricCurve for PiecewiseCurve {
     fn domain(&self) -> (f64, f64) {
         PiecewiseCurve::domain(self)

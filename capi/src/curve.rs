@@ -1,20 +1,35 @@
 //! `RmfCurve`: a piecewise rational Bézier space curve (also a NURBS curve), with its
-//! NURBS and per-segment views.
+//! NURBS and per-segment views — or an analytic curve the caller evaluates in a callback,
+//! which the approximations sample (rmf_callback_curve_create).
 
 use super::boundary::{
-    buffer, free_handle, guard, optional_out, out_ptr, reference, slice, to_usize, write, FfiError,
-    FfiResult,
+    buffer, free_handle, guard, invalid_arg, optional_out, out_ptr, reference, slice, to_usize,
+    write, FfiError, FfiResult,
 };
+use super::input::{callback_curve, CallbackCurve, RmfCurveCallback};
 use super::status::RmfStatus;
 use super::types::{piece_views, PieceViews, RmfBezierCurve, RmfNurbsCurve, RmfVec3};
+use libc::c_void;
 use rmfsurf::bezier::{check_in_domain, check_nurbs_counts, NurbsCurve, PiecewiseCurve};
+use rmfsurf::curve::ParametricCurve;
 use rmfsurf::Result;
 use std::sync::{Arc, OnceLock};
 
-/// A piecewise rational Bézier space curve (opaque). Created by the rmf_* constructors,
-/// freed with rmf_curve_free. Immutable; may be read from several threads at once.
+/// A space curve (opaque): piecewise rational Bézier (also a NURBS curve), or an analytic
+/// curve given by a callback. Created by the rmf_* constructors, freed with rmf_curve_free.
+/// Immutable; may be read from several threads at once (a callback curve: if its callback
+/// may be called from those threads).
 pub struct RmfCurve {
-    pub(crate) curve: Arc<PiecewiseCurve>,
+    geometry: Geometry,
+}
+
+enum Geometry {
+    Rational(Rational),
+    Callback(CallbackCurve),
+}
+
+struct Rational {
+    curve: Arc<PiecewiseCurve>,
     /// The caller's NURBS data when the curve was created from it: the NURBS view shows it
     /// unchanged.
     source: Option<NurbsCurve>,
@@ -35,10 +50,12 @@ impl RmfCurve {
     /// The curve may be shared (an `Arc`) with frames built along it.
     pub(crate) fn new(curve: impl Into<Arc<PiecewiseCurve>>, source: Option<NurbsCurve>) -> Self {
         Self {
-            curve: curve.into(),
-            source,
-            nurbs: OnceLock::new(),
-            segments: OnceLock::new(),
+            geometry: Geometry::Rational(Rational {
+                curve: curve.into(),
+                source,
+                nurbs: OnceLock::new(),
+                segments: OnceLock::new(),
+            }),
         }
     }
 
@@ -47,11 +64,51 @@ impl RmfCurve {
         Box::into_raw(Box::new(self))
     }
 
+    /// The rational curve, for the entry points that compute with its Bézier segments; a
+    /// callback curve is refused, naming the argument `name`.
+    pub(crate) fn rational(&self, name: &str) -> FfiResult<&Arc<PiecewiseCurve>> {
+        self.rational_parts(name).map(|r| &r.curve)
+    }
+
+    fn rational_parts(&self, name: &str) -> FfiResult<&Rational> {
+        match &self.geometry {
+            Geometry::Rational(r) => Ok(r),
+            Geometry::Callback(_) => invalid_arg(format!(
+                "{name} is a callback curve: this needs a rational curve (NURBS data or a \
+                 computed curve); approximate it first, e.g. with rmf_ph_spline_approximate"
+            )),
+        }
+    }
+
+    /// The rational curve, if it is one.
+    pub(crate) fn as_rational(&self) -> Option<&Arc<PiecewiseCurve>> {
+        match &self.geometry {
+            Geometry::Rational(r) => Some(&r.curve),
+            Geometry::Callback(_) => None,
+        }
+    }
+
+    /// The curve as the approximations sample it (point and tangent at a parameter).
+    pub(crate) fn sampled(&self) -> Box<dyn ParametricCurve + '_> {
+        match &self.geometry {
+            Geometry::Rational(r) => Box::new(r.curve.as_ref()),
+            Geometry::Callback(c) => Box::new(c),
+        }
+    }
+
+    fn domain(&self) -> (f64, f64) {
+        match &self.geometry {
+            Geometry::Rational(r) => r.curve.domain(),
+            Geometry::Callback(c) => c.domain(),
+        }
+    }
+
     fn nurbs_view(&self) -> FfiResult<&NurbsView> {
-        let view = self.nurbs.get_or_init(|| {
-            let nurbs = match &self.source {
+        let r = self.rational_parts("curve")?;
+        let view = r.nurbs.get_or_init(|| {
+            let nurbs = match &r.source {
                 Some(n) => n.clone(),
-                None => NurbsCurve::from_piecewise(&self.curve)?,
+                None => NurbsCurve::from_piecewise(&r.curve)?,
             };
             let poles = nurbs.poles.iter().map(|&p| p.into()).collect();
             Ok(NurbsView { nurbs, poles })
@@ -59,9 +116,10 @@ impl RmfCurve {
         view.as_ref().map_err(|e| FfiError::Core(e.clone()))
     }
 
-    fn segment_views(&self) -> &PieceViews {
-        self.segments
-            .get_or_init(|| piece_views(self.curve.segments().iter().map(|s| s.homogeneous())))
+    fn segment_views(&self) -> FfiResult<&PieceViews> {
+        let r = self.rational_parts("curve")?;
+        Ok(r.segments
+            .get_or_init(|| piece_views(r.curve.segments().iter().map(|s| s.homogeneous()))))
     }
 }
 
@@ -120,6 +178,43 @@ pub unsafe extern "C" fn rmf_nurbs_curve_create(
     })
 }
 
+/// Creates a curve from a callback: an analytic curve on [t_min, t_max] that the
+/// approximations sample (rmf_ph_spline_approximate, rmf_mobius_rrmf_approximate, the cone
+/// spline fits, wire edges). Entry points that need rational data (NURBS views, segments,
+/// sweeps, Möbius images) refuse it with RMF_ERROR_INVALID_INPUT; rmf_curve_eval gives the
+/// callback's point and tangent.
+///
+/// @param[in] callback Writes the point and the tangent (the derivative, or any non-zero
+///            multiple of it) at t; see RmfCurveCallback. It is called during the calls that
+///            use the curve, from their threads.
+/// @param[in] user Passed to the callback unchanged; must stay valid while the curve exists.
+/// @param[in] t_min, t_max The domain: finite, t_min < t_max, t_max − t_min finite.
+/// @param[out] out Receives the new curve; free it with rmf_curve_free. Untouched on failure.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If callback or out is NULL.
+/// @return RMF_ERROR_INVALID_INPUT If the domain is invalid.
+/// \since 0.2
+#[no_mangle]
+pub unsafe extern "C" fn rmf_callback_curve_create(
+    callback: RmfCurveCallback,
+    user: *mut c_void,
+    t_min: f64,
+    t_max: f64,
+    out: *mut *mut RmfCurve,
+) -> RmfStatus {
+    guard("rmf_callback_curve_create", || {
+        let out = out_ptr(out, "out")?;
+        let Some(callback) = callback else {
+            return Err(FfiError::Null("callback"));
+        };
+        let curve = RmfCurve {
+            geometry: Geometry::Callback(callback_curve(callback, user, t_min, t_max)?),
+        };
+        write(out, curve.into_raw());
+        Ok(())
+    })
+}
+
 /// Frees a curve. NULL is a no-op. Views obtained from the curve become invalid; frames and
 /// surfaces built from it stay valid (they keep their own reference).
 #[no_mangle]
@@ -141,7 +236,7 @@ pub unsafe extern "C" fn rmf_curve_domain(
     guard("rmf_curve_domain", || {
         let curve = reference(curve, "curve")?;
         let (t_min, t_max) = (out_ptr(t_min, "t_min")?, out_ptr(t_max, "t_max")?);
-        let (lo, hi) = curve.curve.domain();
+        let (lo, hi) = curve.domain();
         write(t_min, lo);
         write(t_max, hi);
         Ok(())
@@ -153,10 +248,12 @@ pub unsafe extern "C" fn rmf_curve_domain(
 /// @param[in] curve The curve.
 /// @param[in] t Parameter in the curve's domain (see rmf_curve_domain).
 /// @param[out] point Receives x(t).
-/// @param[out] derivative Receives x'(t); may be NULL if not wanted.
+/// @param[out] derivative Receives x'(t) (a callback curve: the tangent its callback gives);
+///             may be NULL if not wanted.
 /// @return RMF_OK on success.
 /// @return RMF_ERROR_NULL_POINTER If curve or point is NULL.
-/// @return RMF_ERROR_INVALID_INPUT If t is not finite or outside the domain.
+/// @return RMF_ERROR_INVALID_INPUT If t is not finite or outside the domain, or a callback
+///         gives a non-finite value.
 #[no_mangle]
 pub unsafe extern "C" fn rmf_curve_eval(
     curve: *const RmfCurve,
@@ -168,11 +265,11 @@ pub unsafe extern "C" fn rmf_curve_eval(
         let curve = reference(curve, "curve")?;
         let point = out_ptr(point, "point")?;
         let derivative = optional_out(derivative, "derivative")?;
-        let t = check_in_domain(t, curve.curve.domain(), "t")?;
-        let jet = curve.curve.eval_jet(t);
-        write(point, jet.point.into());
+        let t = check_in_domain(t, curve.domain(), "t")?;
+        let (p, d1) = curve.sampled().point_derivative(t)?;
+        write(point, p.into());
         if let Some(d) = derivative {
-            write(d, jet.d1.into());
+            write(d, d1.into());
         }
         Ok(())
     })
@@ -285,7 +382,7 @@ pub unsafe extern "C" fn rmf_curve_segment_count(
     guard("rmf_curve_segment_count", || {
         let curve = reference(curve, "curve")?;
         let count = out_ptr(count, "count")?;
-        write(count, curve.curve.segments().len());
+        write(count, curve.rational("curve")?.segments().len());
         Ok(())
     })
 }
@@ -305,14 +402,14 @@ pub unsafe extern "C" fn rmf_curve_segment(
     guard("rmf_curve_segment", || {
         let curve = reference(curve, "curve")?;
         let view = out_ptr(view, "view")?;
-        let segments = curve.segment_views();
+        let segments = curve.segment_views()?;
         let Some((poles, weights)) = segments.get(index) else {
             return super::boundary::invalid_arg(format!(
                 "index = {index} but the curve has {} segments",
                 segments.len()
             ));
         };
-        let breaks = curve.curve.breaks();
+        let breaks = curve.rational("curve")?.breaks();
         write(
             view,
             RmfBezierCurve {

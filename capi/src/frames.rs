@@ -111,9 +111,10 @@ pub unsafe extern "C" fn rmf_double_reflection_frames(
         let curve = reference(curve, "curve")?;
         let out = out_ptr(out, "out")?;
         check_sample_count(sample_count, 2, "sample_count")?;
-        let params = uniform_parameters(curve.curve.domain(), sample_count);
-        let rmf = DoubleReflectionRmf::along(curve.curve.as_ref(), params, initial_normal.into())?;
-        let field = FrameField::new(curve.curve.clone(), FrameKind::DoubleReflection(rmf))?;
+        let curve = curve.rational("curve")?;
+        let params = uniform_parameters(curve.domain(), sample_count);
+        let rmf = DoubleReflectionRmf::along(curve.as_ref(), params, initial_normal.into())?;
+        let field = FrameField::new(curve.clone(), FrameKind::DoubleReflection(rmf))?;
         write(out, RmfFrames::into_raw(field));
         Ok(())
     })
@@ -135,7 +136,7 @@ pub unsafe extern "C" fn rmf_frenet_frames(
     guard("rmf_frenet_frames", || {
         let curve = reference(curve, "curve")?;
         let out = out_ptr(out, "out")?;
-        let field = FrameField::new(curve.curve.clone(), FrameKind::Frenet)?;
+        let field = FrameField::new(curve.rational("curve")?.clone(), FrameKind::Frenet)?;
         write(out, RmfFrames::into_raw(field));
         Ok(())
     })

@@ -75,8 +75,34 @@ impl ParametricCurve for CallbackCurve {
     }
 }
 
-/// The curve to approximate: exactly one of `curve` (its whole domain) and `callback` (on
-/// `[t_min, t_max]`, finite, t_min < t_max, of finite length) must be given.
+// SAFETY: the C contract of rmf_callback_curve_create: a callback curve may be used from the
+// threads its callback may be called from; the library calls it only during calls that use
+// the curve.
+unsafe impl Send for CallbackCurve {}
+unsafe impl Sync for CallbackCurve {}
+
+/// A callback curve on `[t_min, t_max]` (finite, t_min < t_max, of finite length).
+pub(crate) fn callback_curve(
+    callback: unsafe extern "C" fn(f64, *mut c_void, *mut RmfVec3, *mut RmfVec3),
+    user: *mut c_void,
+    t_min: f64,
+    t_max: f64,
+) -> FfiResult<CallbackCurve> {
+    if !(t_max - t_min).is_finite() || t_min >= t_max {
+        return invalid_arg(format!(
+            "t_min = {t_min}, t_max = {t_max} must be finite with t_min < t_max and \
+             t_max − t_min finite"
+        ));
+    }
+    Ok(CallbackCurve {
+        callback,
+        user,
+        domain: (t_min, t_max),
+    })
+}
+
+/// The curve to approximate: exactly one of `curve` (its whole domain; a rational or a
+/// callback curve) and `callback` (on `[t_min, t_max]`) must be given.
 ///
 /// # Safety
 /// `curve` must be NULL or a valid handle; `callback` and `user` as documented for
@@ -89,20 +115,8 @@ pub(crate) unsafe fn curve_or_callback<'a>(
     t_max: f64,
 ) -> FfiResult<Box<dyn ParametricCurve + 'a>> {
     match (curve.is_null(), callback) {
-        (false, None) => Ok(Box::new((*curve).curve.as_ref().clone())),
-        (true, Some(callback)) => {
-            if !(t_max - t_min).is_finite() || t_min >= t_max {
-                return invalid_arg(format!(
-                    "t_min = {t_min}, t_max = {t_max} must be finite with t_min < t_max and \
-                     t_max − t_min finite"
-                ));
-            }
-            Ok(Box::new(CallbackCurve {
-                callback,
-                user,
-                domain: (t_min, t_max),
-            }))
-        }
+        (false, None) => Ok((*curve).sampled()),
+        (true, Some(callback)) => Ok(Box::new(callback_curve(callback, user, t_min, t_max)?)),
         (true, None) => Err(FfiError::Null("curve and callback")),
         (false, Some(_)) => invalid_arg("give either curve or callback, not both".to_string()),
     }

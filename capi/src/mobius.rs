@@ -153,7 +153,7 @@ pub unsafe extern "C" fn rmf_mobius_curve(
         let curve = reference(curve, "curve")?;
         let out = out_ptr(out, "out")?;
         let map = mobius_map(maps, count)?;
-        let image = map_curve(&map, &curve.curve)?;
+        let image = map_curve(&map, curve.rational("curve")?)?;
         write(out, RmfCurve::new(image, None).into_raw());
         Ok(())
     })

@@ -150,12 +150,15 @@ pub unsafe extern "C" fn rmf_ph_spline_approximate(
             ));
         }
         let source = curve_or_callback(curve, callback, user, t_min, t_max)?;
-        let breaks = if curve.is_null() {
-            vec![t_min, t_max]
-        } else {
-            let piecewise = &(*curve).curve;
-            check_g1(piecewise)?;
-            piecewise.breaks().to_vec()
+        let breaks = match curve.as_ref().and_then(RmfCurve::as_rational) {
+            Some(piecewise) => {
+                check_g1(piecewise)?;
+                piecewise.breaks().to_vec()
+            }
+            None => {
+                let (lo, hi) = source.domain();
+                vec![lo, hi]
+            }
         };
         let result = ph_spline_approximate(source.as_ref(), &breaks, tolerance)?;
         write(out, RmfCurve::new(result.spline, None).into_raw());
@@ -242,7 +245,7 @@ unsafe fn rational_rmf_into(
 ) -> FfiResult {
     let spline = reference(ph_spline, "ph_spline")?;
     let out = out_ptr(out, "out")?;
-    let rmf = ph_rational_rmf(&spline.curve, &options)?;
+    let rmf = ph_rational_rmf(spline.rational("ph_spline")?, &options)?;
     write_frames(spline, rmf.frames, out)
 }
 
@@ -252,7 +255,10 @@ unsafe fn write_frames(
     frames: RationalFrames,
     out: *mut *mut RmfFrames,
 ) -> FfiResult {
-    let field = FrameField::new(spline.curve.clone(), FrameKind::Rational(frames))?;
+    let field = FrameField::new(
+        spline.rational("ph_spline")?.clone(),
+        FrameKind::Rational(frames),
+    )?;
     write(out, RmfFrames::into_raw(field));
     Ok(())
 }
@@ -276,7 +282,11 @@ pub unsafe extern "C" fn rmf_ph_frenet_frames(
     guard("rmf_ph_frenet_frames", || {
         let spline = reference(ph_spline, "ph_spline")?;
         let out = out_ptr(out, "out")?;
-        write_frames(spline, ph_frenet_frames(&spline.curve)?, out)
+        write_frames(
+            spline,
+            ph_frenet_frames(spline.rational("ph_spline")?)?,
+            out,
+        )
     })
 }
 
@@ -315,8 +325,8 @@ pub unsafe extern "C" fn rmf_ph_exact_rmf_eval(
         } else {
             Some(buffer(f3, count, "f3")?)
         };
-        let rmf = ExactRmf::new(&spline.curve, initial_normal.into(), 0.0)?;
-        let domain = spline.curve.domain();
+        let rmf = ExactRmf::new(spline.rational("ph_spline")?, initial_normal.into(), 0.0)?;
+        let domain = spline.rational("ph_spline")?.domain();
         let frames = params
             .iter()
             .map(|&t| check_in_domain(t, domain, "t").map(|t| rmf.frame(t)))
@@ -611,7 +621,11 @@ pub unsafe extern "C" fn rmf_ph_convex_initial_normal(
         let profile = reference(profile, "profile")?;
         let initial_normal = out_ptr(initial_normal, "initial_normal")?;
         let margin = optional_out(margin, "margin")?;
-        let start = convex_initial_normal(&spline.curve, &profile.curve, elliptic != 0)?;
+        let start = convex_initial_normal(
+            spline.rational("ph_spline")?,
+            profile.rational("profile")?,
+            elliptic != 0,
+        )?;
         write(initial_normal, start.initial_normal.into());
         if let Some(m) = margin {
             write(m, start.margin);
@@ -645,7 +659,7 @@ pub unsafe extern "C" fn rmf_profile_offset(
     guard("rmf_profile_offset", || {
         let profile = reference(profile, "profile")?;
         let out = out_ptr(out, "out")?;
-        let offset = offset_profile(&profile.curve, distance)?;
+        let offset = offset_profile(profile.rational("profile")?, distance)?;
         write(out, RmfCurve::new(offset, None).into_raw());
         Ok(())
     })
@@ -660,5 +674,9 @@ unsafe fn sweep_inputs<'a>(
     let spine = reference(spine, "spine")?;
     let frames = reference(frames, "frames")?;
     let profile = reference(profile, "profile")?;
-    Ok((&spine.curve, rational_frames(frames)?, &profile.curve))
+    Ok((
+        spine.rational("spine")?,
+        rational_frames(frames)?,
+        profile.rational("profile")?,
+    ))
 }

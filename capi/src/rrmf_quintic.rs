@@ -115,7 +115,10 @@ unsafe fn write_curve_and_frames(
     frames_out: *mut *mut RmfFrames,
 ) -> FfiResult {
     let handle = RmfCurve::new(curve, None);
-    let field = FrameField::new(handle.curve.clone(), FrameKind::Rational(frames))?;
+    let field = FrameField::new(
+        handle.rational("curve")?.clone(),
+        FrameKind::Rational(frames),
+    )?;
     write(curve_out, handle.into_raw());
     write(frames_out, RmfFrames::into_raw(field));
     Ok(())

@@ -492,7 +492,11 @@ pub unsafe extern "C" fn rmf_sweep_surface(
         let frames = reference(frames, "frames")?;
         let profile = reference(profile, "profile")?;
         let out = out_ptr(out, "out")?;
-        let surface = sweep(&spine.curve, rational_frames(frames)?, &profile.curve)?;
+        let surface = sweep(
+            spine.rational("spine")?,
+            rational_frames(frames)?,
+            profile.rational("profile")?,
+        )?;
         write(out, RmfSurface::new(surface, None).into_raw());
         Ok(())
     })
