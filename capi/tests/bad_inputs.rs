@@ -1,7 +1,7 @@
-//! The README's table of bad inputs, checked: every row is a call through the C API with one
-//! bad argument, the status it must return, and the argument its message must name. The test
-//! runs each call and then checks that the README's table lists the same rows with the same
-//! status (so the table cannot drift from the library).
+//! The table of bad inputs in docs/hardening.md, checked: every row is a call through the C
+//! API with one bad argument, the status it must return, and the argument its message must
+//! name. The test runs each call and then checks that the table lists the same rows with the
+//! same status (so the table cannot drift from the library).
 
 use rmfsurf_capi::cone_spline::*;
 use rmfsurf_capi::curve::*;
@@ -842,23 +842,24 @@ fn every_bad_input_gets_its_status_and_a_message_naming_it() {
 }
 
 #[test]
-fn the_readme_lists_every_row_with_its_status() {
-    let readme =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../README.md")).unwrap();
-    let table = readme
-        .split("### Bad inputs")
+fn the_docs_list_every_row_with_its_status() {
+    let docs =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/hardening.md"))
+            .unwrap();
+    let table = docs
+        .split("## Bad inputs")
         .nth(1)
-        .expect("a '### Bad inputs' section in the README");
+        .expect("a '## Bad inputs' section in docs/hardening.md");
     let lines: Vec<&str> = table.lines().take_while(|l| !l.starts_with("##")).collect();
     for row in rows() {
         let line = lines
             .iter()
             .find(|l| l.starts_with(&format!("| {} |", row.what)))
-            .unwrap_or_else(|| panic!("README: no row for '{}'", row.what));
+            .unwrap_or_else(|| panic!("docs/hardening.md: no row for '{}'", row.what));
         assert!(
             line.contains(&format!("`{}`", row.function))
                 && line.contains(&status_name(row.expected)),
-            "README row for '{}' should name `{}` and {}: {line}",
+            "docs/hardening.md row for '{}' should name `{}` and {}: {line}",
             row.what,
             row.function,
             status_name(row.expected)

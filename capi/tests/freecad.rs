@@ -60,24 +60,26 @@ fn freecad_reads_our_files_and_builds_exact_part_objects() {
     );
 }
 
-/// The README's FreeCAD console example, run as written (with the glue on the path).
+/// The FreeCAD console example of docs/cad-integration.md (its first Python block), run as
+/// written (with the glue on the path).
 #[test]
-fn readme_freecad_example_runs() {
-    let readme = std::fs::read_to_string(root().join("README.md")).expect("README.md");
-    let start = readme
+fn docs_freecad_example_runs() {
+    let docs = std::fs::read_to_string(root().join("docs/cad-integration.md"))
+        .expect("docs/cad-integration.md");
+    let start = docs
         .find("```python\n")
-        .expect("a Python example in the README")
+        .expect("a Python example in docs/cad-integration.md")
         + 10;
-    let end = start + readme[start..].find("```").expect("the end of the example");
-    let dir = fresh_dir("freecad_readme");
+    let end = start + docs[start..].find("```").expect("the end of the example");
+    let dir = fresh_dir("freecad_docs");
     let script = format!(
-        "import sys\nsys.path.insert(0, {:?})\n{}\nprint('\\n| README example: valid face', tube.isValid())\nsys.exit(0 if tube.isValid() else 1)\n",
+        "import sys\nsys.path.insert(0, {:?})\n{}\nprint('\\n| docs example: valid face', tube.isValid())\nsys.exit(0 if tube.isValid() else 1)\n",
         root().join("examples/freecad").display().to_string(),
-        &readme[start..end]
+        &docs[start..end]
     );
-    std::fs::write(dir.join("readme_example.py"), script).unwrap();
+    std::fs::write(dir.join("docs_example.py"), script).unwrap();
     let out = Command::new("freecadcmd")
-        .arg("readme_example.py")
+        .arg("docs_example.py")
         .current_dir(&dir)
         .env("RMFSURF_LIBRARY", toolchain().lib_dir.join("librmfsurf.so"))
         .env("HOME", &dir)
@@ -86,8 +88,8 @@ fn readme_freecad_example_runs() {
     let stdout = String::from_utf8_lossy(&out.stdout);
     report(&stdout).for_each(|line| println!("{line}"));
     assert!(
-        out.status.success() && report(&stdout).any(|l| l == "README example: valid face True"),
-        "the README's FreeCAD example failed:\n{stdout}\n{}",
+        out.status.success() && report(&stdout).any(|l| l == "docs example: valid face True"),
+        "the FreeCAD example of docs/cad-integration.md failed:\n{stdout}\n{}",
         String::from_utf8_lossy(&out.stderr)
     );
     assert!(

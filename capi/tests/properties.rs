@@ -131,7 +131,7 @@ proptest! {
             let error = orthonormality_error(&frame);
             prop_assert!(error < 1e-13 / r, "t = {}: {:e} (speed ratio {:e})", t, error, r);
             // Tangents turning up to 0.9 rad per segment: the rational RMF follows the exact
-            // one to within 1e-4 rad (1e-6 and below for fine splines, see the README).
+            // one to within 1e-4 rad (1e-6 and below for fine splines, see docs/ph-cubic.md).
             let angle = angle_about_tangent(&exact.frame(t), &frame).abs();
             prop_assert!(angle < 1e-4, "t = {}: {}", t, angle);
         }

@@ -283,20 +283,21 @@ fn files_and_command_line_errors() {
 }
 
 #[test]
-fn readme_json_example_runs() {
-    let readme =
-        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("../README.md"))
-            .unwrap();
-    let start = readme
+fn docs_json_example_runs() {
+    let docs = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/cad-integration.md"),
+    )
+    .unwrap();
+    let start = docs
         .find("```json\n")
-        .expect("a JSON example in the README")
+        .expect("a JSON example in docs/cad-integration.md")
         + 8;
-    let end = start + readme[start..].find("```").unwrap();
-    let dir = scratch("readme");
+    let end = start + docs[start..].find("```").unwrap();
+    let dir = scratch("docs");
     let out = tool(
         &dir,
         &["-", "-o", "moulding.step", "-o", "moulding.scad"],
-        Some(&readme[start..end]),
+        Some(&docs[start..end]),
     );
     assert!(
         out.status.success(),

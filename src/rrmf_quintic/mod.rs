@@ -1,7 +1,7 @@
 //! Quintic space curves with rational rotation-minimizing frames (RRMF quintics) by G1
 //! Hermite interpolation: R. T. Farouki, C. Giannelli and A. Sestini, "Geometric design
-//! using space curves with rational rotation-minimizing frames" (papers/
-//! rrmf-quintic-hermite.md).
+//! using space curves with rational rotation-minimizing frames" (reference [3] of
+//! docs/references.md).
 //!
 //! A spatial PH quintic is given by two complex quadratics α(t), β(t) through the Hopf map
 //! (2)–(3); it has a rational RMF (9) of degree 8 exactly when its coefficients satisfy
