@@ -9,6 +9,7 @@ use super::boundary::{
 use super::input::{callback_curve, CallbackCurve, RmfCurveCallback};
 use super::status::RmfStatus;
 use super::types::{piece_views, PieceViews, RmfBezierCurve, RmfNurbsCurve, RmfVec3};
+use glam::DVec3;
 use libc::c_void;
 use rmfsurf::bezier::{check_in_domain, check_nurbs_counts, NurbsCurve, PiecewiseCurve};
 use rmfsurf::curve::ParametricCurve;
@@ -93,6 +94,15 @@ impl RmfCurve {
         match &self.geometry {
             Geometry::Rational(r) => Box::new(r.curve.as_ref()),
             Geometry::Callback(c) => Box::new(c),
+        }
+    }
+
+    /// The point and the derivative (a callback curve: the tangent it gives) at `t`, without
+    /// allocating.
+    fn point_derivative(&self, t: f64) -> Result<(DVec3, DVec3)> {
+        match &self.geometry {
+            Geometry::Rational(r) => r.curve.point_derivative(t),
+            Geometry::Callback(c) => c.point_derivative(t),
         }
     }
 
@@ -266,7 +276,7 @@ pub unsafe extern "C" fn rmf_curve_eval(
         let point = out_ptr(point, "point")?;
         let derivative = optional_out(derivative, "derivative")?;
         let t = check_in_domain(t, curve.domain(), "t")?;
-        let (p, d1) = curve.sampled().point_derivative(t)?;
+        let (p, d1) = curve.point_derivative(t)?;
         write(point, p.into());
         if let Some(d) = derivative {
             write(d, d1.into());
