@@ -19,21 +19,13 @@
 mod support;
 
 use glam::DVec3;
-use rmfsurf::bezier::{NurbsSurface, PiecewiseCurve, PiecewiseSurface, RationalBezierCurve};
-use rmfsurf::cone_spline::developable::TangentSurface;
-use rmfsurf::cone_spline::{approximate, ConeSpline, Rule};
-use rmfsurf::curve::{uniform_parameters, ParametricCurve};
-use rmfsurf::frames::double_reflection::DoubleReflectionRmf;
-use rmfsurf::frames::metrics::{angle_about_tangent, gaussian_curvature, parameter_line_cosine};
-use rmfsurf::frames::rational::RationalFrames;
-use rmfsurf::frames::Frame;
-use rmfsurf::hermite::hermite_sequence;
-use rmfsurf::mobius::hermite::mobius_hermite_points;
-use rmfsurf::ph_cubic::exact_rmf::ExactRmf;
-use rmfsurf::ph_cubic::ph_spline_hermite;
-use rmfsurf::ph_cubic::rational_rmf::{ph_rational_rmf, RmfOptions};
-use rmfsurf::rrmf_quintic::{rrmf_spline, ShapeMeasure};
-use rmfsurf::sweep::sweep;
+use rmfsurf::metrics::{angle_about_tangent, gaussian_curvature, parameter_line_cosine};
+use rmfsurf::{
+    approximate_developable, hermite_sequence, mobius_hermite_points, ph_rational_rmf,
+    ph_spline_hermite, rrmf_spline, sweep, uniform_parameters, ConeSpline, DoubleReflectionRmf,
+    ExactRmf, Frame, NurbsSurface, ParametricCurve, PiecewiseCurve, PiecewiseSurface,
+    RationalBezierCurve, RationalFrames, RmfOptions, Rule, ShapeMeasure, TangentSurface,
+};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
@@ -637,7 +629,9 @@ fn developables_section() {
     println!("| --- | --- | --- | --- | --- | --- |");
     let surface = TangentSurface::new(&TwistedCubic, 0.5, 8.0).unwrap();
     for tolerance in [1e-2, 1e-3, 1e-4, 1e-5] {
-        let fit = |tol| approximate(&surface, tol, Rule::MinimalVertexDistance, 100_000).unwrap();
+        let fit = |tol| {
+            approximate_developable(&surface, tol, Rule::MinimalVertexDistance, 100_000).unwrap()
+        };
         let (fit_time, result) = timed(|| fit(tolerance));
         let (develop_time, flat) = timed(|| {
             let flat = result.spline.developed().unwrap();

@@ -5,10 +5,10 @@
 //!     cargo bench --bench cone_spline
 
 use glam::DVec3;
-use rmfsurf::bezier::{bernstein, NurbsSurface, PiecewiseCurve, RationalBezierCurve};
-use rmfsurf::cone_spline::developable::TangentSurface;
-use rmfsurf::cone_spline::{approximate, ConeSpline, Rule};
-use rmfsurf::curve::ParametricCurve;
+use rmfsurf::{
+    approximate_developable, ConeSpline, NurbsSurface, ParametricCurve, PiecewiseCurve,
+    RationalBezierCurve, Rule, TangentSurface,
+};
 use std::hint::black_box;
 use std::time::Instant;
 
@@ -27,7 +27,7 @@ impl ParametricCurve for Helix {
 
 fn twisted_cubic() -> PiecewiseCurve {
     let power = [DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::Z];
-    let segment = RationalBezierCurve::polynomial(&bernstein::from_power(&power))
+    let segment = RationalBezierCurve::from_power(&power)
         .unwrap()
         .restricted(0.2, 1.2);
     PiecewiseCurve::new(vec![segment], vec![0.2, 1.2]).unwrap()
@@ -60,9 +60,11 @@ fn main() {
     println!("cone spline benchmark: tolerance 1e-4, region v in [0.5, 8] from the curve, half a turn of the helix");
     for (name, curve) in inputs {
         let surface = TangentSurface::new(curve, 0.5, 8.0).unwrap();
-        let fit = approximate(&surface, 1e-4, Rule::MinimalVertexDistance, 100_000).unwrap();
-        let fit_time =
-            time(|| approximate(&surface, 1e-4, Rule::MinimalVertexDistance, 100_000).unwrap());
+        let fit =
+            approximate_developable(&surface, 1e-4, Rule::MinimalVertexDistance, 100_000).unwrap();
+        let fit_time = time(|| {
+            approximate_developable(&surface, 1e-4, Rule::MinimalVertexDistance, 100_000).unwrap()
+        });
         let develop_time = time(|| develop(&fit.spline));
         println!(
             "  {name:<22} {:>4} pieces (deviation {:.2e}): fit {:>8.3} ms, develop + NURBS {:>8.1} us",

@@ -7,11 +7,10 @@
 mod support;
 
 use glam::DVec3;
-use rmfsurf::curve::{uniform_parameters, ParametricCurve};
-use rmfsurf::frames::double_reflection::DoubleReflectionRmf;
-use rmfsurf::math::angle_between;
-use rmfsurf::mobius::mobius_approximate;
-use rmfsurf::Result;
+use rmfsurf::metrics::angle_between;
+use rmfsurf::{
+    mobius_approximate, uniform_parameters, DoubleReflectionRmf, ParametricCurve, Result,
+};
 use support::fastest_of;
 
 struct Helix;

@@ -9,15 +9,11 @@
 mod support;
 
 use glam::DVec3;
-use rmfsurf::bezier::{PiecewiseCurve, RationalBezierCurve};
-use rmfsurf::curve::uniform_parameters;
-use rmfsurf::frames::double_reflection::DoubleReflectionRmf;
-use rmfsurf::frames::metrics::angle_about_tangent;
-use rmfsurf::frames::Frame;
-use rmfsurf::ph_cubic::exact_rmf::ExactRmf;
-use rmfsurf::ph_cubic::ph_spline_hermite;
-use rmfsurf::ph_cubic::rational_rmf::{ph_rational_rmf, RmfOptions};
-use rmfsurf::sweep::sweep;
+use rmfsurf::metrics::angle_about_tangent;
+use rmfsurf::{
+    ph_rational_rmf, ph_spline_hermite, sweep, uniform_parameters, DoubleReflectionRmf, ExactRmf,
+    Frame, PiecewiseCurve, RationalBezierCurve, RmfOptions,
+};
 use support::{timed, REPEATS};
 
 const SEGMENTS: usize = 1_000;

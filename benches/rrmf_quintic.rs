@@ -7,11 +7,10 @@
 //!   same curve beside it — its time, and its distance from the exact frame.
 
 use glam::DVec3;
-use rmfsurf::curve::uniform_parameters;
-use rmfsurf::frames::double_reflection::DoubleReflectionRmf;
-use rmfsurf::hermite::{hermite_sequence, HermiteSegment};
-use rmfsurf::rrmf_quintic::frames::{quintic_curve, quintic_rmf};
-use rmfsurf::rrmf_quintic::{best_quintic, rrmf_quintics, rrmf_spline, ShapeMeasure};
+use rmfsurf::{
+    best_quintic, hermite_sequence, quintic_curve, quintic_rmf, rrmf_quintics, rrmf_spline,
+    uniform_parameters, DoubleReflectionRmf, HermiteSegment, ShapeMeasure,
+};
 use std::f64::consts::{PI, TAU};
 use std::hint::black_box;
 use std::time::{Duration, Instant};

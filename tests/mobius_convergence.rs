@@ -10,14 +10,11 @@
 //! Run `cargo test --test mobius_convergence -- --nocapture` to see the tables.
 
 use glam::DVec3;
-use rmfsurf::bezier::{PiecewiseCurve, RationalBezierCurve};
-use rmfsurf::curve::{uniform_parameters, ParametricCurve};
-use rmfsurf::frames::compare::{frame_errors, FrameErrors, ReferenceRmf};
-use rmfsurf::frames::double_reflection::DoubleReflectionRmf;
-use rmfsurf::frames::{FrameField, FrameKind};
-use rmfsurf::mobius::mobius_approximate;
-use rmfsurf::ph_cubic::exact_rmf::ExactRmf;
-use rmfsurf::Result;
+use rmfsurf::metrics::{frame_errors, FrameErrors, ReferenceRmf};
+use rmfsurf::{
+    mobius_approximate, uniform_parameters, DoubleReflectionRmf, ExactRmf, FrameField, FrameKind,
+    ParametricCurve, PiecewiseCurve, RationalBezierCurve, Result,
+};
 use std::sync::Arc;
 
 const SEGMENTS: [usize; 7] = [1, 2, 4, 8, 16, 32, 64];

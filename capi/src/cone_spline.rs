@@ -12,11 +12,11 @@ use super::input::{curve_or_callback, RmfCurveCallback};
 use super::status::RmfStatus;
 use super::surface::RmfSurface;
 use super::types::RmfVec3;
-use glam::DVec4;
-use rmfsurf::cone_spline::approximate::approximate;
-use rmfsurf::cone_spline::developable::{DualDevelopable, RuledSurface, TangentSurface};
-use rmfsurf::cone_spline::osculating::osculating_spline;
-use rmfsurf::cone_spline::{ConePiece, ConeSpline, Element, PairCase, PieceKind, Region, Rule};
+use rmfsurf::glam::DVec4;
+use rmfsurf::{
+    approximate_developable, osculating_spline, ConePiece, ConeSpline, DualDevelopable, Element,
+    PairCase, PieceKind, Region, Rule, RuledSurface, TangentSurface,
+};
 use std::ffi::c_void;
 
 /// A G1 Hermite element: a ruling through `point` with direction `ruling` and the tangent
@@ -264,7 +264,7 @@ pub unsafe extern "C" fn rmf_cone_spline_hermite(
 
 /// Writes a fitted spline and its deviation.
 unsafe fn finish_fit(
-    fit: rmfsurf::cone_spline::Approximation,
+    fit: rmfsurf::Approximation,
     out: *mut *mut RmfConeSpline,
     max_error: Option<*mut f64>,
 ) {
@@ -348,7 +348,7 @@ pub unsafe extern "C" fn rmf_cone_spline_approximate(
         let rule = fit_rule(rule)?;
         let surface = TangentSurface::new(input.as_ref(), v_min, v_max)?;
         finish_fit(
-            approximate(&surface, tolerance, rule, max_pieces)?,
+            approximate_developable(&surface, tolerance, rule, max_pieces)?,
             out,
             max_error,
         );
@@ -397,7 +397,7 @@ pub unsafe extern "C" fn rmf_cone_spline_approximate_ruled(
         let rule = fit_rule(rule)?;
         let ruled = RuledSurface::new(surface.surface.as_ref().clone())?;
         finish_fit(
-            approximate(&ruled, tolerance, rule, max_pieces)?,
+            approximate_developable(&ruled, tolerance, rule, max_pieces)?,
             out,
             max_error,
         );
@@ -460,7 +460,7 @@ pub unsafe extern "C" fn rmf_cone_spline_approximate_dual(
         let rule = fit_rule(rule)?;
         let dual = DualDevelopable::new(degree as usize, &planes, knots, region)?;
         finish_fit(
-            approximate(&dual, tolerance, rule, max_pieces)?,
+            approximate_developable(&dual, tolerance, rule, max_pieces)?,
             out,
             max_error,
         );

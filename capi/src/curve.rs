@@ -9,11 +9,10 @@ use super::boundary::{
 use super::input::{callback_curve, CallbackCurve, RmfCurveCallback};
 use super::status::RmfStatus;
 use super::types::{piece_views, PieceViews, RmfBezierCurve, RmfNurbsCurve, RmfVec3};
-use glam::DVec3;
 use libc::c_void;
-use rmfsurf::bezier::{check_in_domain, check_nurbs_counts, NurbsCurve, PiecewiseCurve};
-use rmfsurf::curve::ParametricCurve;
-use rmfsurf::Result;
+use rmfsurf::glam::DVec3;
+use rmfsurf::validate::{check_in_domain, check_nurbs_counts};
+use rmfsurf::{NurbsCurve, ParametricCurve, PiecewiseCurve, Result};
 use std::sync::{Arc, OnceLock};
 
 /// A space curve (opaque): piecewise rational Bézier (also a NURBS curve), or an analytic

@@ -4,12 +4,11 @@ use super::boundary::{free_handle, guard, invalid_arg, out_ptr, reference, write
 use super::curve::RmfCurve;
 use super::status::RmfStatus;
 use super::types::RmfVec3;
-use rmfsurf::bezier::{check_in_domain, PiecewiseCurve};
-use rmfsurf::curve::{check_sample_count, uniform_parameters};
-use rmfsurf::frames::double_reflection::DoubleReflectionRmf;
-use rmfsurf::frames::rational::{FrameVector, RationalFrames};
-use rmfsurf::frames::{FrameField, FrameKind};
-use rmfsurf::Result;
+use rmfsurf::validate::{check_in_domain, check_sample_count};
+use rmfsurf::{
+    uniform_parameters, DoubleReflectionRmf, FrameField, FrameKind, FrameVector, PiecewiseCurve,
+    RationalFrames, Result,
+};
 
 /// Frames along a curve (opaque): exact rational frames, double-reflection samples, or
 /// pointwise Frenet frames. Freed with rmf_frames_free. Immutable; may be read from

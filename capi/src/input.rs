@@ -4,11 +4,9 @@
 use super::boundary::{invalid_arg, slice, FfiError, FfiResult};
 use super::curve::RmfCurve;
 use super::types::RmfVec3;
-use glam::DVec3;
 use libc::c_void;
-use rmfsurf::curve::ParametricCurve;
-use rmfsurf::hermite::{hermite_sequence, HermiteSegment};
-use rmfsurf::{Error, Result};
+use rmfsurf::glam::DVec3;
+use rmfsurf::{hermite_sequence, Error, HermiteSegment, ParametricCurve, Result};
 
 /// An analytic curve given by the caller: writes the point and the tangent (the derivative,
 /// or any non-zero multiple of it) at parameter t into *point and *tangent. It must not

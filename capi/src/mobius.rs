@@ -7,12 +7,11 @@ use super::frames::{rational_frames, RmfFrames};
 use super::input::{curve_or_callback, hermite_arrays, RmfCurveCallback};
 use super::status::RmfStatus;
 use super::types::RmfVec3;
-use glam::DVec3;
 use libc::c_void;
-use rmfsurf::frames::{FrameField, FrameKind};
-use rmfsurf::mobius::{
-    map_curve, map_framed_curve, mobius_approximate, mobius_hermite, Inversion, MobiusMap,
-    RationalRmfCurve,
+use rmfsurf::glam::DVec3;
+use rmfsurf::{
+    map_curve, map_framed_curve, mobius_approximate, mobius_hermite, FrameField, FrameKind,
+    Inversion, MobiusMap, RationalRmfCurve,
 };
 use std::sync::Arc;
 
@@ -72,7 +71,7 @@ unsafe fn mobius_map(maps: *const RmfInversion, count: usize) -> FfiResult<Mobiu
 }
 
 fn finite(v: RmfVec3, name: &str) -> FfiResult<DVec3> {
-    Ok(rmfsurf::math::check_finite(v.into(), name)?)
+    Ok(rmfsurf::validate::check_finite(v.into(), name)?)
 }
 
 /// The image μ(point) of a point under a Möbius transformation.

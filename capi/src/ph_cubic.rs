@@ -10,20 +10,13 @@ use super::frames::{rational_frames, RmfFrames};
 use super::input::{curve_or_callback, hermite_arrays, RmfCurveCallback};
 use super::status::RmfStatus;
 use super::types::RmfVec3;
-use rmfsurf::bezier::{check_in_domain, PiecewiseCurve};
-use rmfsurf::curve::check_sample_count;
-use rmfsurf::frames::rational::RationalFrames;
-use rmfsurf::frames::{FrameField, FrameKind};
-use rmfsurf::hermite::HermiteSegment;
-use rmfsurf::ph_cubic::accuracy::angle_errors;
-use rmfsurf::ph_cubic::analysis::{convex_initial_normal, ProfileSurface};
-use rmfsurf::ph_cubic::approximate::{check_g1, ph_spline_approximate};
-use rmfsurf::ph_cubic::exact_rmf::ExactRmf;
-use rmfsurf::ph_cubic::frenet::ph_frenet_frames;
-use rmfsurf::ph_cubic::offset::offset_profile;
-use rmfsurf::ph_cubic::rational_rmf::{ph_rational_rmf, RmfOptions};
-use rmfsurf::ph_cubic::spline::ph_spline_from_segments;
-use rmfsurf::ph_cubic::{ph_cubic_hermite, PhCubic};
+use rmfsurf::validate::{check_in_domain, check_sample_count};
+use rmfsurf::{
+    angle_errors, check_g1, convex_initial_normal, offset_profile, ph_cubic_hermite,
+    ph_frenet_frames, ph_rational_rmf, ph_spline_approximate, ph_spline_from_segments, ExactRmf,
+    FrameField, FrameKind, HermiteSegment, PhCubic, PiecewiseCurve, ProfileSurface, RationalFrames,
+    RmfOptions,
+};
 use std::ffi::c_void;
 
 /// The G1 Hermite interpolants of Table 1 (Mäurer & Jüttler) with a PH cubic: the cubic
@@ -555,7 +548,7 @@ pub unsafe extern "C" fn rmf_sweep_parabolic_points(
 
 /// The parabolic lines as points on the sampled v lines (see rmf_sweep_parabolic_points).
 fn parabolic_points(
-    lines: &rmfsurf::ph_cubic::analysis::ParabolicLines,
+    lines: &rmfsurf::ParabolicLines,
     (v0, v1): (f64, f64),
     (u0, u1): (f64, f64),
     samples: usize,

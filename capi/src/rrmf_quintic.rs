@@ -10,14 +10,11 @@ use super::frames::RmfFrames;
 use super::input::hermite_arrays;
 use super::status::RmfStatus;
 use super::types::RmfVec3;
-use rmfsurf::bezier::PiecewiseCurve;
-use rmfsurf::frames::rational::RationalFrames;
-use rmfsurf::frames::{FrameField, FrameKind};
-use rmfsurf::hermite::HermiteSegment;
-use rmfsurf::math::Complex;
-use rmfsurf::rrmf_quintic::canonical::CanonicalHermite;
-use rmfsurf::rrmf_quintic::frames::{quintic_curve, quintic_rmf};
-use rmfsurf::rrmf_quintic::{best_quintic, rrmf_quintics, rrmf_spline, RrmfQuintic, ShapeMeasure};
+use rmfsurf::{
+    best_quintic, quintic_curve, quintic_rmf, rrmf_quintics, rrmf_spline, CanonicalHermite,
+    Complex, FrameField, FrameKind, HermiteSegment, PiecewiseCurve, RationalFrames, RrmfQuintic,
+    ShapeMeasure,
+};
 
 /// One RRMF quintic Hermite interpolant (Farouki, Giannelli & Sestini, Section 4).
 ///

@@ -9,10 +9,8 @@ use super::curve::RmfCurve;
 use super::frames::{rational_frames, RmfFrames};
 use super::status::RmfStatus;
 use super::types::{piece_views, PieceViews, RmfBezierPatch, RmfNurbsSurface, RmfVec3};
-use rmfsurf::bezier::{check_in_domain, check_nurbs_counts, NurbsSurface, PiecewiseSurface};
-use rmfsurf::mesh::{mesh_size, tessellate};
-use rmfsurf::sweep::sweep;
-use rmfsurf::Result;
+use rmfsurf::validate::{check_in_domain, check_nurbs_counts};
+use rmfsurf::{mesh_size, sweep, tessellate, NurbsSurface, PiecewiseSurface, Result};
 use std::sync::{Arc, OnceLock};
 
 /// A piecewise rational tensor-product surface s(u, v) (opaque). Freed with
@@ -505,8 +503,8 @@ pub unsafe extern "C" fn rmf_sweep_surface(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use glam::DVec4;
-    use rmfsurf::bezier::RationalBezierPatch;
+    use rmfsurf::glam::DVec4;
+    use rmfsurf::RationalBezierPatch;
 
     /// Two bilinear patches that do not meet: no single NURBS, but each patch has a view.
     fn torn() -> RmfSurface {

@@ -1,7 +1,6 @@
 //! Plain data exchanged with C: vectors and borrowed views of NURBS and Bézier data.
 
-use glam::{DVec3, DVec4};
-use rmfsurf::bezier::homogeneous::project;
+use rmfsurf::glam::{DVec3, DVec4};
 
 /// C-layout copies of Bézier pieces (segments or patches): Cartesian poles and weights of
 /// each, the arrays behind `RmfBezierCurve` and `RmfBezierPatch` views.
@@ -11,7 +10,10 @@ pub(crate) type PieceViews = Vec<(Vec<RmfVec3>, Vec<f64>)>;
 pub(crate) fn piece_views<'a>(pieces: impl Iterator<Item = &'a [DVec4]>) -> PieceViews {
     pieces
         .map(|points| {
-            let poles = points.iter().map(|&h| project(h).into()).collect();
+            let poles = points
+                .iter()
+                .map(|&h| (h.truncate() / h.w).into())
+                .collect();
             (poles, points.iter().map(|h| h.w).collect())
         })
         .collect()

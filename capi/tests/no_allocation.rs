@@ -3,10 +3,8 @@
 //! made on the calling thread, and the count must not move while 10,000 evaluations run.
 //! (Construction allocates, of course; it happens before counting starts.)
 
-use glam::DVec3;
-use rmfsurf::ph_cubic::ph_spline_hermite;
-use rmfsurf::ph_cubic::rational_rmf::{ph_rational_rmf, RmfOptions};
-use rmfsurf::sweep::sweep;
+use rmfsurf::glam::DVec3;
+use rmfsurf::{ph_rational_rmf, ph_spline_hermite, sweep, RmfOptions};
 use rmfsurf_capi::curve::{rmf_curve_eval, rmf_curve_free, rmf_nurbs_curve_create};
 use rmfsurf_capi::frames::{rmf_double_reflection_frames, rmf_frames_eval, rmf_frames_free};
 use rmfsurf_capi::mobius::rmf_mobius_rrmf_hermite;
@@ -179,9 +177,8 @@ fn rust_api_evaluation_does_not_allocate() {
         .unzip();
     let spline = ph_spline_hermite(&points, &tangents).unwrap();
     let rmf = ph_rational_rmf(&spline, &RmfOptions::rmf(DVec3::Z)).unwrap();
-    let profile = rmfsurf::bezier::PiecewiseCurve::with_unit_intervals(vec![
-        rmfsurf::bezier::RationalBezierCurve::polynomial(&[DVec3::X * 0.1, DVec3::Y * 0.2])
-            .unwrap(),
+    let profile = rmfsurf::PiecewiseCurve::with_unit_intervals(vec![
+        rmfsurf::RationalBezierCurve::polynomial(&[DVec3::X * 0.1, DVec3::Y * 0.2]).unwrap(),
     ])
     .unwrap();
     let surface = sweep(&spline, &rmf.frames, &profile).unwrap();

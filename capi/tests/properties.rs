@@ -5,13 +5,12 @@
 //! and random twisted cubics for cone splines. Invalid data take valid data and break one
 //! thing: a NaN or infinite coordinate, a zero tangent, a repeated point, a count of 1.
 
-use glam::DVec3;
 use proptest::prelude::*;
-use rmfsurf::bezier::{NurbsCurve, PiecewiseCurve};
-use rmfsurf::frames::metrics::{angle_about_tangent, orthonormality_error};
-use rmfsurf::ph_cubic::exact_rmf::ExactRmf;
-use rmfsurf::ph_cubic::rational_rmf::{ph_rational_rmf, RmfOptions};
-use rmfsurf::ph_cubic::{ph_cubics, ph_spline_hermite};
+use rmfsurf::glam::DVec3;
+use rmfsurf::metrics::{angle_about_tangent, orthonormality_error};
+use rmfsurf::{
+    ph_cubics, ph_rational_rmf, ph_spline_hermite, ExactRmf, NurbsCurve, PiecewiseCurve, RmfOptions,
+};
 use rmfsurf_capi::cone_spline::*;
 use rmfsurf_capi::curve::{rmf_curve_eval, rmf_curve_free};
 use rmfsurf_capi::mobius::rmf_mobius_rrmf_hermite;

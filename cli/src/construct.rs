@@ -4,22 +4,15 @@
 
 use crate::job::{ConeJob, Developable as Input, Method, Spine, SweepJob};
 use crate::json::InputError;
-use glam::DVec3;
-use rmfsurf::bezier::{PiecewiseCurve, PiecewiseSurface};
-use rmfsurf::cone_spline::developable::{Developable, RuledSurface, TangentSurface};
-use rmfsurf::cone_spline::{approximate, ConeSpline, FlatPattern, Rule};
-use rmfsurf::curve::{uniform_parameters, ParametricCurve};
-use rmfsurf::frames::compare::nearest_parameter;
-use rmfsurf::frames::rational::RationalFrames;
-use rmfsurf::hermite::hermite_sequence;
-use rmfsurf::mesh::grid_parameters;
-use rmfsurf::mobius::{mobius_approximate, mobius_hermite_points};
-use rmfsurf::ph_cubic::approximate::{check_g1, ph_spline_approximate};
-use rmfsurf::ph_cubic::frenet::ph_frenet_frames;
-use rmfsurf::ph_cubic::ph_spline_hermite;
-use rmfsurf::ph_cubic::rational_rmf::{ph_rational_rmf, RmfOptions};
-use rmfsurf::rrmf_quintic::{rrmf_spline, ShapeMeasure};
-use rmfsurf::sweep::sweep;
+use rmfsurf::glam::DVec3;
+use rmfsurf::metrics::nearest_parameter;
+use rmfsurf::{
+    approximate_developable, check_g1, grid_parameters, hermite_sequence, mobius_approximate,
+    mobius_hermite_points, ph_frenet_frames, ph_rational_rmf, ph_spline_approximate,
+    ph_spline_hermite, rrmf_spline, sweep, uniform_parameters, ConeSpline, Developable,
+    FlatPattern, ParametricCurve, PiecewiseCurve, PiecewiseSurface, RationalFrames, RmfOptions,
+    Rule, RuledSurface, ShapeMeasure, TangentSurface,
+};
 
 /// Most segments the Möbius and RRMF methods use to reach the tolerance on a NURBS spine
 /// (doubled from the NURBS's own segment count).
@@ -184,7 +177,7 @@ fn distance(approx: &PiecewiseCurve, reference: &PiecewiseCurve, params: &[f64])
 
 /// The cone spline within the job's tolerance of a developable, and the deviation reached.
 fn fit(surface: &dyn Developable, job: &ConeJob) -> Result<(ConeSpline, Option<f64>), InputError> {
-    let fit = approximate(
+    let fit = approximate_developable(
         surface,
         job.tolerance,
         Rule::MinimalVertexDistance,

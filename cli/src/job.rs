@@ -2,9 +2,8 @@
 //! every error names its field (see `--help` for the schema).
 
 use crate::json::{Field, InputResult};
-use glam::DVec3;
-use rmfsurf::bezier::{NurbsCurve, NurbsSurface};
-use rmfsurf::cone_spline::Element;
+use rmfsurf::glam::DVec3;
+use rmfsurf::{Element, NurbsCurve, NurbsSurface};
 use std::f64::consts::FRAC_1_SQRT_2;
 
 /// How the frames along the spine are made.
@@ -197,9 +196,7 @@ fn vectors(field: &Field) -> InputResult<Vec<DVec3>> {
 /// `{"degree", "poles", "weights" (optional), "knots"}`; `planar`: poles may be [x, y].
 fn read_nurbs_curve(nurbs: &Field, planar: bool) -> InputResult<NurbsCurve> {
     nurbs.only(&["degree", "poles", "weights", "knots"])?;
-    let degree = nurbs
-        .required("degree")?
-        .count(1, rmfsurf::bezier::MAX_DEGREE)?;
+    let degree = nurbs.required("degree")?.count(1, rmfsurf::MAX_DEGREE)?;
     let poles = nurbs
         .required("poles")?
         .array()?
@@ -220,7 +217,7 @@ fn read_nurbs_surface(nurbs: &Field) -> InputResult<NurbsSurface> {
     nurbs.only(&[
         "degree_u", "degree_v", "poles", "weights", "knots_u", "knots_v",
     ])?;
-    let degree = |key: &str| nurbs.required(key)?.count(1, rmfsurf::bezier::MAX_DEGREE);
+    let degree = |key: &str| nurbs.required(key)?.count(1, rmfsurf::MAX_DEGREE);
     let rows_field = nurbs.required("poles")?;
     let rows: Vec<Vec<DVec3>> = rows_field
         .array()?

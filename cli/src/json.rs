@@ -2,7 +2,7 @@
 //! a [`Field`] that knows its path (`sweep.profile.circle.radius`), so a bad value is
 //! reported where it is, never as a bare type error.
 
-use glam::DVec3;
+use rmfsurf::glam::DVec3;
 use serde_json::{Map, Value};
 use std::fmt;
 

@@ -5,10 +5,11 @@
 use crate::construct::Outcome;
 use crate::job::MeshOptions;
 use crate::summary::{json_text, Summary};
-use rmfsurf::bezier::{NurbsCurve, NurbsSurface, PiecewiseSurface};
 use rmfsurf::export::{dxf, obj, openscad, step, svg, vtk};
-use rmfsurf::mesh::{grid_normals, grid_parameters, tessellate};
-use rmfsurf::solid::closed_mesh;
+use rmfsurf::{
+    closed_mesh, grid_normals, grid_parameters, tessellate, NurbsCurve, NurbsSurface,
+    PiecewiseSurface,
+};
 use std::fs;
 use std::path::{Path, PathBuf};
 

@@ -7,14 +7,11 @@
 
 use crate::construct::{ConeOutcome, Outcome, SweepOutcome};
 use crate::job::{Construction, Job, Method};
-use rmfsurf::bezier::{NurbsSurface, PiecewiseSurface};
-use rmfsurf::cone_spline::developable::max_scaled_curvature;
-use rmfsurf::cone_spline::{PatternEdge, PieceKind};
-use rmfsurf::frames::metrics::{orthonormality_error, parameter_line_cosine, rmf_defect};
-use rmfsurf::frames::{FrameField, FrameKind};
-use rmfsurf::math::angle_between;
-use rmfsurf::mesh::grid_parameters;
-use rmfsurf::ph_cubic::accuracy::angle_errors;
+use rmfsurf::metrics::{angle_between, orthonormality_error, parameter_line_cosine, rmf_defect};
+use rmfsurf::{
+    angle_errors, grid_parameters, max_scaled_curvature, FrameField, FrameKind, NurbsSurface,
+    PatternEdge, PieceKind, PiecewiseSurface,
+};
 use serde_json::{json, Map, Value};
 use std::sync::Arc;
 

@@ -1,9 +1,4 @@
-use glam::DVec3;
-use rmfsurf::bezier::{NurbsCurve, NurbsSurface};
-use rmfsurf::ph_cubic::accuracy::angle_errors;
-use rmfsurf::ph_cubic::rational_rmf::{ph_rational_rmf, RmfOptions};
-use rmfsurf::ph_cubic::spline::ph_spline_hermite;
-use rmfsurf::sweep::sweep;
+use rmfsurf::prelude::*;
 
 fn main() -> rmfsurf::Result<()> {
     // G1 Hermite data: 17 points and unit tangents of the helix (cos t, sin t, 0.3 t).

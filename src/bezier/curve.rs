@@ -61,6 +61,11 @@ impl RationalBezierCurve {
         Self::from_homogeneous(poles.iter().map(|&p| p.extend(1.0)).collect())
     }
 
+    /// The polynomial curve Σ cₖ tᵏ on [0, 1] from its power-basis coefficients cₖ.
+    pub fn from_power(coefficients: &[DVec3]) -> Result<Self> {
+        Self::polynomial(&super::bernstein::from_power(coefficients))
+    }
+
     /// Assembles `numerator / denominator` from Bernstein coefficients of equal degree.
     /// Used for frame vectors given as a vector polynomial over a positive scalar one.
     pub fn from_numerator_denominator(numerator: &[DVec3], denominator: &[f64]) -> Result<Self> {

@@ -9,7 +9,9 @@
 //! complementary arc). The Bézier planes of a cone segment are the polar planes of these
 //! Bézier points with respect to Σ.
 
-use glam::{DVec3, DVec4};
+use glam::DVec3;
+#[cfg(test)]
+use glam::DVec4;
 
 /// A biarc a₁, b₁, c, b₂, a₂ with the weights of b₁ and b₂ (end weights 1).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -81,6 +83,7 @@ pub fn lambda_through(a: DVec3, p: DVec3, c: DVec3) -> f64 {
     (c - a).length_squared() / (2.0 * (c - a).dot(p))
 }
 
+#[cfg(test)]
 /// The polar plane of the homogeneous point `y` (xyz = y₀·y, w = y₀) with respect to the
 /// sphere (x − m)² = r², as plane coordinates (u₁, u₂, u₃, u₀) in glam's (x, y, z, w) order,
 /// so that a homogeneous point X lies on it iff `plane.dot(X) = 0`:

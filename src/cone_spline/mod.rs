@@ -32,7 +32,7 @@ pub mod region;
 pub mod spline;
 mod surface;
 
-pub use approximate::{approximate, Approximation};
+pub use approximate::Approximation;
 pub use element::Element;
 pub use pair::{cone_pair, ConePair, PairCase, Rule};
 pub use pattern::{FlatPattern, PatternEdge};

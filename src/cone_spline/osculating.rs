@@ -43,6 +43,7 @@ pub struct OsculatingCone {
 }
 
 impl OsculatingCone {
+    #[cfg(test)]
     /// Half angle α (π/2 at an inflection generator, where the cone is the tangent plane).
     pub fn half_angle(&self) -> f64 {
         self.axis

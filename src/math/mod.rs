@@ -16,7 +16,7 @@ mod vector;
 pub use binomial::{binomial, binomial_row, reciprocal_binomial_row};
 pub use complex::Complex;
 pub use linear::solve_refined;
-pub use minimize::{minimize_bracketed, Minimum};
+pub use minimize::minimize_bracketed;
 pub use quadrature::GaussLegendre;
 pub use roots::{bisect_root, interior_midpoint, quadratic_roots, real_roots_in, real_roots_power};
 pub use secant::secant_refine;

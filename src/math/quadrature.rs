@@ -59,6 +59,7 @@ impl GaussLegendre {
             * h
     }
 
+    #[cfg(test)]
     /// ∫ₐᵇ f by the rule applied on `pieces` equal subintervals.
     pub fn integrate_composite(
         &self,

@@ -13,7 +13,10 @@ use super::cubic::PhCubic;
 use super::hermite::ph_cubic_hermite;
 use crate::bezier::bernstein::{self, product, to_power};
 use crate::bezier::PiecewiseCurve;
-use crate::curve::{uniform_parameters, ParametricCurve};
+#[cfg(test)]
+use crate::curve::uniform_parameters;
+use crate::curve::ParametricCurve;
+#[cfg(test)]
 use crate::error::no_solution;
 use crate::error::{invalid, Error, Result};
 use crate::hermite::HermiteSegment;
@@ -104,6 +107,7 @@ pub fn ph_spline_approximate(
     })
 }
 
+#[cfg(test)]
 /// The PH cubic spline through `segments` + 1 samples at uniform parameters, with its
 /// measured distance to the curve (no adaptivity: for convergence studies).
 pub fn ph_spline_uniform(curve: &dyn ParametricCurve, segments: usize) -> Result<PhApproximation> {

@@ -47,6 +47,7 @@ impl Biquadratic {
         }
     }
 
+    #[cfg(test)]
     /// The member of (37) with parameter λ, for increasing data (35) with λ > λ* (38).
     pub fn from_lambda(data: &AngleHermite, lambda: f64) -> Self {
         let AngleHermite { w0, w1, s0, s1 } = *data;
@@ -81,6 +82,7 @@ impl Biquadratic {
         (g, b, dg, db)
     }
 
+    #[cfg(test)]
     pub fn eval(&self, v: f64) -> f64 {
         let (g, b, _, _) = self.parts(v);
         g / b
@@ -101,6 +103,7 @@ impl Biquadratic {
     }
 }
 
+#[cfg(test)]
 /// λ* of Lemma 11 (38): members of (37) with λ > λ* are monotone without poles.
 pub fn lambda_star(data: &AngleHermite) -> f64 {
     data.s0 / (data.w1 - data.w0) - 2.0

@@ -231,7 +231,7 @@ impl PhCubic {
     /// The frames (19), (29) and the angle (30) assume the PH identity |x'| = σ exactly.
     /// Taken literally, (19) turned a residual r into an orthonormality error of about
     /// r / sin²θ (2e-5 for r = 1e-9 at θ = 2e-3, a fuzz finding); computed from the quaternion
-    /// preimage ([`super::preimage`]) the frames are orthonormal anyway, but adapted to the PH
+    /// preimage (x' = A i A*) the frames are orthonormal anyway, but adapted to the PH
     /// cubic nearest the polygon, whose hodograph differs from it by about r. So a polygon accepted
     /// within [`PH_TOLERANCE`] (data read from files, or rounded far from the origin) gets its
     /// frames from the exact PH cubic of its own Hermite data, which it matches at both ends

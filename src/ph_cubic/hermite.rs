@@ -52,7 +52,7 @@ pub struct PhHermiteSolutions {
 /// Both PH cubics interpolating `data` (Table 1), the shape-matching one first.
 ///
 /// Works for spatial and planar data alike (planar data give planar PH cubics, the
-/// Tschirnhausen cubics). Fails with [`Error::NoSolution`] when (*) has no real root, when
+/// Tschirnhausen cubics). Fails with [`ErrorKind::NoSolution`](crate::ErrorKind::NoSolution) when (*) has no real root, when
 /// every root reverses an end tangent, or for parallel end tangents with the chord off their
 /// line.
 pub fn ph_cubic_hermite(data: &HermiteSegment) -> Result<PhHermiteSolutions> {

@@ -21,8 +21,11 @@
 //! rational and still exact at every joint; where the rate Ω' + (φ/S)σ changes sign inside a
 //! segment, the segment is split there so that each W is monotone.
 
-use super::base_frame::{BaseFrame, FramePieces};
+#[cfg(test)]
+use super::base_frame::BaseFrame;
+use super::base_frame::FramePieces;
 use super::biquadratic::{fit, AngleHermite, BiquadraticFit};
+#[cfg(test)]
 use super::cubic::PhCubic;
 use super::exact_rmf::{ExactRmf, SegmentTarget};
 use crate::bezier::PiecewiseCurve;
@@ -239,6 +242,7 @@ fn piece_frame(
     Ok((turned, Some(fitted)))
 }
 
+#[cfg(test)]
 /// The paper's setting for one PH cubic (§3.4, Figures 5 and 6): W approximating
 /// tan(Ω(v)/2) on all of [0, 1], with Ω(0) = `omega0` against the Frenet frame (π/2 starts f₂
 /// at the binormal, as in Figure 5). The frame does not depend on `omega0` (turning w maps
