@@ -239,3 +239,60 @@ pub fn run(exe: &Path, valgrind: bool) {
         out.status
     );
 }
+
+/// The Python test environment of scripts/python-env (Debian's Python 3.11 with build123d,
+/// OCP and pytest from PyPI, kept in target/venv between runs); once.
+pub fn python_env() -> PathBuf {
+    static VENV: OnceLock<PathBuf> = OnceLock::new();
+    VENV.get_or_init(|| {
+        let out = Command::new(root().join("scripts/python-env"))
+            .output()
+            .unwrap_or_else(|e| panic!("cannot run scripts/python-env ({e}): {SETUP_HINT}"));
+        eprint!("{}", String::from_utf8_lossy(&out.stderr));
+        assert!(out.status.success(), "scripts/python-env failed");
+        PathBuf::from(String::from_utf8_lossy(&out.stdout).trim())
+    })
+    .clone()
+}
+
+/// The wheel of the Python package (`pip wheel ./python`, maturin), carrying the library,
+/// built once into target/python-wheel; its path.
+pub fn python_wheel() -> PathBuf {
+    static WHEEL: OnceLock<PathBuf> = OnceLock::new();
+    WHEEL
+        .get_or_init(|| {
+            let dir = root().join("target/python-wheel");
+            let _ = std::fs::remove_dir_all(&dir);
+            let start = std::time::Instant::now();
+            let out = Command::new(python_env().join("bin/pip"))
+                .args([
+                    "wheel",
+                    "--quiet",
+                    "--no-deps",
+                    "--disable-pip-version-check",
+                ])
+                .arg(root().join("python"))
+                .arg("-w")
+                .arg(&dir)
+                .output()
+                .expect("pip runs");
+            assert!(
+                out.status.success(),
+                "pip wheel ./python failed:\n{}",
+                String::from_utf8_lossy(&out.stderr)
+            );
+            let wheel = std::fs::read_dir(&dir)
+                .expect("the wheel directory")
+                .filter_map(Result::ok)
+                .map(|e| e.path())
+                .find(|p| p.extension().is_some_and(|x| x == "whl"))
+                .expect("pip wheel wrote a wheel");
+            println!(
+                "pip wheel ./python: {} in {:.0} s",
+                wheel.file_name().unwrap().to_string_lossy(),
+                start.elapsed().as_secs_f64()
+            );
+            wheel
+        })
+        .clone()
+}

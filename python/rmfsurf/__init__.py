@@ -1,0 +1,52 @@
+"""rmfsurf: exact rational curves, rotation-minimizing frames and surfaces for sweeping and
+sheet-metal design, over the C library librmfsurf (bundled in this package).
+
+The four methods of the library:
+
+* PH cubic splines and their rational rotation-minimizing frame (Mäurer & Jüttler):
+  :func:`ph_spline_hermite`, :func:`ph_spline_approximate`, :func:`ph_rational_rmf`;
+* curves with exact rational RMFs by Möbius maps (Bartoň, Jüttler & Wang):
+  :func:`mobius_rrmf_hermite`, :func:`mobius_rrmf_approximate`;
+* RRMF quintics (Farouki, Giannelli & Sestini): :func:`rrmf_spline_hermite`, ...;
+* cone spline surfaces and their flat patterns (Leopoldseder & Pottmann):
+  :func:`cone_spline_approximate`, :meth:`ConeSpline.flat_pattern`, ...
+
+and what is made of them: :func:`sweep_surface` (a profile along a spine with exact rational
+frames) and :func:`wire_sweep` (a profile along a wire of lines, arcs and curves, closed into a
+solid). Arrays go in and come out as NumPy arrays; failures raise :class:`RmfError` (one
+subclass per status); library objects are freed by the garbage collector.
+
+CAD adapters: :mod:`rmfsurf.ocp` (OpenCascade's Python bindings, as used by build123d and
+CadQuery) and :mod:`rmfsurf.freecad` (FreeCAD's Part objects).
+"""
+
+from ._core import (BufferTooSmallError, InternalError, InvalidInputError, NoSolutionError,
+                    NotConvergedError, NullPointerError, RmfError, ffi, lib, live_handles)
+from .cone_splines import (ConeElement, ConePiece, ConeSpline, FlatPattern,
+                           cone_spline_approximate, cone_spline_approximate_dual,
+                           cone_spline_approximate_ruled, cone_spline_hermite,
+                           cone_spline_osculating)
+from .curves import (BezierSegment, Curve, Inversion, NurbsCurve, RrmfQuintic, distinct_knots,
+                     flat_knots, mobius_curve, mobius_point, mobius_rrmf_approximate,
+                     mobius_rrmf_hermite, ph_cubic_hermite, ph_spline_approximate,
+                     ph_spline_hermite, profile_offset, rrmf_quintic_best, rrmf_quintic_curve,
+                     rrmf_quintic_solutions, rrmf_spline_hermite)
+from .frames import (Frames, double_reflection_frames, frenet_frames, mobius_frames,
+                     ph_exact_rmf, ph_frenet_frames, ph_rational_rmf, ph_rmf_angle_error)
+from .shapes import Arc, CurveEdge, Line, Shape, ShapeFace, SweepReport, wire_sweep
+from .surfaces import (BezierPatch, NurbsSurface, SingularityMargin, Surface,
+                       convex_initial_normal, gaussian_curvature, parabolic_points,
+                       singularity_margin, sweep_surface)
+
+
+def rmf_version() -> str:
+    """The version of the loaded librmfsurf, rmf_version()."""
+    return ffi.string(lib.rmf_version()).decode()
+
+
+#: The package version: that of the library it carries.
+__version__ = rmf_version()
+#: The library's ABI number (the N of librmfsurf.so.N).
+ABI_VERSION: int = lib.RMF_ABI_VERSION
+
+__all__ = [name for name in dir() if not name.startswith("_") and name not in ("ffi", "lib")]

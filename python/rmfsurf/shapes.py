@@ -1,0 +1,226 @@
+"""Wire sweeps (``rmf_wire_sweep``, ``RmfShape``): a closed planar profile, with holes,
+swept along a connected wire of lines, circular arcs and curves, with rotation-minimizing
+frames and round or mitred corners; the result is a set of faces — exact rational swept
+faces and planar caps bounded by loops — that closes into a solid.
+
+The profile is given in the plane normal to the wire at its start, as 2-D coordinates
+(x, y) along (f2, f3) of the frame there (z ignored); the CAD adapters
+(:mod:`rmfsurf.ocp`, :mod:`rmfsurf.freecad`) convert a profile placed in space to these
+coordinates.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, List, Optional, Sequence, Tuple, Union
+
+import numpy as np
+
+from . import _core
+from ._core import call, ffi, lib
+from .curves import ArrayLike, Curve, as_curve
+from .surfaces import Surface
+
+
+@dataclass(frozen=True)
+class Line:
+    """A straight edge from `start` to `end`."""
+
+    start: Sequence[float]
+    end: Sequence[float]
+
+
+@dataclass(frozen=True)
+class Arc:
+    """A circular arc from `start` through `through` to `end`."""
+
+    start: Sequence[float]
+    through: Sequence[float]
+    end: Sequence[float]
+
+
+@dataclass(frozen=True)
+class CurveEdge:
+    """An edge along a whole :class:`rmfsurf.Curve`."""
+
+    curve: Curve
+
+
+Edge = Union[Line, Arc, CurveEdge]
+
+
+def _has_wire_sweep() -> bool:
+    return hasattr(lib, "rmf_wire_sweep")
+
+
+def _require_wire_sweep() -> None:
+    if not _has_wire_sweep():
+        raise NotImplementedError(
+            "this librmfsurf (%s) has no rmf_wire_sweep" % ffi.string(lib.rmf_version()).decode())
+
+
+def corners() -> dict:
+    """The corner options of :func:`wire_sweep`."""
+    return {"round": lib.RMF_CORNER_ROUND, "miter": lib.RMF_CORNER_MITER}
+
+
+def _edges(edges: Sequence[Edge]) -> Tuple[Any, int, List[Any]]:
+    """An RmfEdge array, its length, and what must stay alive during the call."""
+    if isinstance(edges, (Line, Arc, CurveEdge)):
+        edges = [edges]
+    try:
+        edges = list(edges)
+    except TypeError:
+        raise TypeError("edges: expected a sequence of rmfsurf.Line, Arc or CurveEdge, got %s"
+                        % type(edges).__name__) from None
+    array = ffi.new("RmfEdge[]", max(len(edges), 1))
+    keep: List[Any] = []
+    for i, e in enumerate(edges):
+        name = "edges[%d]" % i
+        item = array[i]
+        if isinstance(e, Line):
+            item.kind = lib.RMF_EDGE_LINE
+            item.points[0] = _core.vec3(e.start, name + ".start")
+            item.points[1] = _core.vec3(e.end, name + ".end")
+        elif isinstance(e, Arc):
+            item.kind = lib.RMF_EDGE_ARC
+            item.points[0] = _core.vec3(e.start, name + ".start")
+            item.points[1] = _core.vec3(e.through, name + ".through")
+            item.points[2] = _core.vec3(e.end, name + ".end")
+        elif isinstance(e, CurveEdge):
+            item.kind = lib.RMF_EDGE_CURVE
+            item.curve = as_curve(e.curve, name + ".curve")._ptr
+            keep.append(e.curve)
+        else:
+            raise TypeError("%s: expected an rmfsurf.Line, Arc or CurveEdge, got %s"
+                            % (name, type(e).__name__))
+    return array, len(edges), keep
+
+
+@dataclass(frozen=True)
+class SweepReport:
+    """Figures of a wire sweep: the largest distance of the spine from the wire, the RMF
+    angle error (radians), the largest |cos| of the angle between parameter lines (0:
+    orthogonal, lines of curvature), the singularity margin (> 0: regular), the face
+    count."""
+
+    spine_distance: float
+    rmf_angle_error: float
+    max_parameter_cosine: float
+    singularity_margin: float
+    face_count: int
+
+
+@dataclass(frozen=True)
+class ShapeFace:
+    """One face of a :class:`Shape`: kind "swept" (its `surface`) or "plane" (a cap in the
+    plane through `plane_origin` with `plane_normal`, bounded by `loops`, the first the
+    outer one); `spine_edge` and `profile_edge` say where a swept face comes from;
+    `reversed` that the face's outward normal is −∂s/∂u × ∂s/∂v (or −plane_normal)."""
+
+    kind: str
+    surface: Optional[Surface]
+    plane_origin: np.ndarray
+    plane_normal: np.ndarray
+    loops: List[Curve]
+    spine_edge: int
+    profile_edge: int
+    reversed: bool
+
+
+class Shape:
+    """The result of :func:`wire_sweep`; freed when collected (its faces' surfaces and
+    loops keep it alive)."""
+
+    __slots__ = ("_ptr", "__weakref__")
+
+    def __init__(self, pointer: Any) -> None:
+        self._ptr = pointer
+
+    @property
+    def face_count(self) -> int:
+        return int(lib.rmf_shape_face_count(self._ptr))
+
+    @property
+    def is_solid(self) -> bool:
+        """Whether the faces close into a solid (a closed profile swept with caps)."""
+        return bool(lib.rmf_shape_is_solid(self._ptr))
+
+    def faces(self) -> List[ShapeFace]:
+        """Every face, with borrowed surfaces and loop curves."""
+        result = []
+        face = ffi.new("RmfShapeFace *")
+        loop = ffi.new("RmfCurve **")
+        for i in range(self.face_count):
+            call("rmf_shape_face", self._ptr, i, face)
+            loops = []
+            for k in range(face.loop_count):
+                call("rmf_shape_face_loop", self._ptr, i, k, loop)
+                loops.append(Curve(ffi.cast("RmfCurve *", loop[0]), self))
+            swept = face.kind == lib.RMF_FACE_SWEPT
+            surface = Surface(ffi.cast("RmfSurface *", face.surface), self) if swept else None
+            result.append(ShapeFace("swept" if swept else "plane", surface,
+                                    _core.from_vec3(face.plane_origin),
+                                    _core.from_vec3(face.plane_normal), loops,
+                                    int(face.spine_edge), int(face.profile_edge),
+                                    bool(face.reversed)))
+        return result
+
+    def report(self) -> SweepReport:
+        r = ffi.new("RmfSweepReport *")
+        call("rmf_shape_report", self._ptr, r)
+        return SweepReport(r.spine_distance, r.rmf_angle_error, r.max_parameter_cosine,
+                           r.singularity_margin, int(r.face_count))
+
+    def write_step(self, path: str) -> None:
+        """Writes the shape as a STEP file (exact faces, a closed shell for a solid)."""
+        call("rmf_shape_write_step", self._ptr, str(path).encode())
+
+    def __repr__(self) -> str:
+        return "<rmfsurf.Shape %d faces%s>" % (self.face_count, ", solid" if self.is_solid else "")
+
+
+def wire_sweep(edges: Sequence[Edge], profile: Curve, holes: Sequence[Curve] = (), *,
+               solid: bool = True, corner: str = "round",
+               corner_radius: Optional[float] = None, tolerance: float = 1e-4,
+               join_tolerance: Optional[float] = None,
+               initial_normal: Optional[ArrayLike] = None, twist: float = 0.0,
+               closure_symmetry: int = 0) -> Shape:
+    """Sweeps a closed profile (with `holes`) along a connected wire of `edges`.
+
+    Args:
+        edges: :class:`Line`, :class:`Arc` and :class:`CurveEdge` items, end to end.
+        profile: closed curve in the start normal plane, x along f2, y along f3.
+        holes: closed curves inside the profile, same coordinates.
+        solid: close the shape with planar caps (needs a closed profile).
+        corner: "round" (the profile swept around the corner) or "miter".
+        corner_radius: the rounding radius of "round" corners (None: the library's).
+        tolerance: distance tolerance of the spine approximation.
+        join_tolerance: how far consecutive edges may be apart (None: the library's).
+        initial_normal: f2 at the start (None: the library's choice).
+        twist: extra turn of the frame from start to end, radians.
+        closure_symmetry: for a closed wire, the profile's symmetry order k ≥ 1 so that
+            the frame closes modulo 2π/k (0: open wire).
+    """
+    _require_wire_sweep()
+    array, count, keep = _edges(edges)
+    prof = as_curve(profile, "profile")
+    hole_list = [as_curve(h, "holes[%d]" % i) for i, h in enumerate(holes)]
+    hole_array = ffi.new("RmfCurve *[]", [h._ptr for h in hole_list] or [ffi.NULL])
+    options = ffi.new("RmfWireSweepOptions *")
+    call("rmf_wire_sweep_options_init", options)
+    options.tolerance = _core.number(tolerance, "tolerance")
+    if join_tolerance is not None:
+        options.join_tolerance = _core.number(join_tolerance, "join_tolerance")
+    options.corner = _core.choice(corner, "corner", corners())
+    if corner_radius is not None:
+        options.corner_radius = _core.number(corner_radius, "corner_radius")
+    if initial_normal is not None:
+        options.initial_normal = _core.vec3(initial_normal, "initial_normal")
+    options.twist = _core.number(twist, "twist")
+    options.closure_symmetry = _core.integer(closure_symmetry, "closure_symmetry")
+    options.solid = 1 if solid else 0
+    out = ffi.new("RmfShape **")
+    call("rmf_wire_sweep", array, count, prof._ptr, hole_array, len(hole_list), options, out)
+    del keep
+    return Shape(_core.owned("shape", out[0]))
