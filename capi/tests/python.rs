@@ -54,7 +54,7 @@ fn wheel_installs_without_rust_and_passes_the_python_tests() {
         .expect("pip runs");
     assert!(status.success(), "pip install {} failed", wheel.display());
     let out = Command::new(venv.join("bin/python"))
-        .args(["-m", "pytest", "-q", "-s", "-p", "no:cacheprovider"])
+        .args(["-m", "pytest", "-q", "-s", "-rs", "-p", "no:cacheprovider"])
         .current_dir(root().join("python/tests"))
         .env("PATH", &path)
         .env("RMFSURF_REPOSITORY", root())

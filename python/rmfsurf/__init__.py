@@ -27,7 +27,7 @@ from .cone_splines import (ConeElement, ConePiece, ConeSpline, FlatPattern,
                            cone_spline_approximate_ruled, cone_spline_hermite,
                            cone_spline_osculating)
 from .curves import (BezierSegment, Curve, Inversion, NurbsCurve, RrmfQuintic, distinct_knots,
-                     flat_knots, mobius_curve, mobius_point, mobius_rrmf_approximate,
+                     flat_knots, join_nurbs, mobius_curve, mobius_point, mobius_rrmf_approximate,
                      mobius_rrmf_hermite, ph_cubic_hermite, ph_spline_approximate,
                      ph_spline_hermite, profile_offset, rrmf_quintic_best, rrmf_quintic_curve,
                      rrmf_quintic_solutions, rrmf_spline_hermite)

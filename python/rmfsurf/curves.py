@@ -454,3 +454,41 @@ def mobius_curve(curve: Curve, maps: Sequence[Inversion]) -> Curve:
     out = _core.out_pointer("RmfCurve")
     call("rmf_mobius_curve", as_curve(curve, "curve")._ptr, array, n, out)
     return Curve._owned(out)
+
+
+# ---------------------------------------------------------------------------------------
+# Joining the edges of a CAD wire into one curve
+
+
+def join_nurbs(pieces: Sequence[NurbsCurve], name: str = "curves",
+               tolerance: Optional[float] = None) -> NurbsCurve:
+    """NURBS pieces of one degree, each ending where the next starts, as one NURBS: piece k
+    on the parameters [k, k + 1], joined by knots of multiplicity p (C0: every piece stays
+    exactly what it was). A piece's weights are scaled (which leaves a rational curve
+    unchanged) so that its first weight equals the last weight of the piece before.
+    Consecutive pieces may be `tolerance` apart (default 1e-9 of the coordinates' size);
+    the joint is then where the earlier piece ends. CAD adapters raise the pieces to a
+    common degree with their kernel first."""
+    pieces = list(pieces)
+    if not pieces:
+        raise ValueError("%s: nothing to join" % name)
+    p = pieces[0].degree
+    poles, weights, knots = [pieces[0].poles[:1]], [pieces[0].weights[:1]], [np.zeros(p + 1)]
+    for k, piece in enumerate(pieces):
+        if piece.degree != p:
+            raise ValueError("%s[%d]: degree %d, expected %d (raise the degrees first)"
+                             % (name, k, piece.degree, p))
+        w = piece.weights * (weights[-1][-1] / piece.weights[0])
+        gap = np.linalg.norm(piece.poles[0] - poles[-1][-1])
+        size = max(np.abs(piece.poles).max(), np.abs(poles[-1]).max(), 1.0)
+        if gap > (1e-9 * size if tolerance is None else tolerance):
+            raise ValueError("%s[%d] starts %.3g away from where %s[%d] ends"
+                             % (name, k, gap, name, k - 1))
+        lo, hi = piece.knots[0], piece.knots[-1]
+        inner = (piece.knots[p + 1:-(p + 1)] - lo) / (hi - lo) + k
+        poles.append(piece.poles[1:])
+        weights.append(w[1:])
+        knots.append(np.concatenate([inner, np.full(p, k + 1.0)]))
+    knots.append([float(len(pieces))])
+    return NurbsCurve(p, np.concatenate(poles), np.concatenate(weights),
+                      np.concatenate(knots))

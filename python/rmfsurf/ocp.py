@@ -1,0 +1,441 @@
+"""rmfsurf for OpenCascade's Python bindings (OCP), as build123d and CadQuery use them.
+
+OCP objects both ways:
+
+* in: ``TopoDS_Edge``, ``TopoDS_Wire``, ``Geom_BSplineCurve`` (any ``Geom_Curve``) and
+  build123d / CadQuery objects (anything with ``.wrapped``) → :class:`rmfsurf.Curve` and
+  wire-sweep edges;
+* out: :class:`rmfsurf.Curve` → ``Geom_BSplineCurve``, ``TopoDS_Edge``;
+  :class:`rmfsurf.Surface` → ``Geom_BSplineSurface``, ``TopoDS_Face``; an
+  :class:`rmfsurf.Shape` → ``TopoDS_Solid`` (sewn faces, planar caps).
+
+:func:`sweep` is the one call build123d and CadQuery users need::
+
+    import build123d as bd, rmfsurf.ocp
+    with bd.BuildLine() as route:
+        bd.Polyline((0, 0, 0), (40, 0, 0), (40, 30, 10))
+    ring = bd.Circle(3)          # in the plane normal to the route at its start
+    pipe = rmfsurf.ocp.sweep(route.wire(), ring)   # a build123d Solid
+    part = bd.Box(10, 10, 10) + pipe
+
+How the profile is placed: as for build123d's own ``sweep``, the profile lies in the plane
+normal to the path at its start and is given where it is in space (a Face, with holes, or a
+closed Wire). Its coordinates relative to the path's start point, along the plane's x
+direction (f2, the initial normal of the rotation-minimizing frame) and along
+tangent × f2 (f3), are the 2-D profile of :func:`rmfsurf.wire_sweep`.
+"""
+
+from __future__ import annotations
+
+from typing import Any, List, Optional, Tuple
+
+import numpy as np
+
+from . import _core
+from .curves import Curve, NurbsCurve, join_nurbs
+from .shapes import Arc, CurveEdge, Edge, Line, Shape, wire_sweep
+from .surfaces import Surface
+
+from OCP.BRep import BRep_Tool
+from OCP.BRepAdaptor import BRepAdaptor_Curve, BRepAdaptor_Surface
+from OCP.BRepBuilderAPI import (BRepBuilderAPI_MakeEdge, BRepBuilderAPI_MakeFace,
+                                BRepBuilderAPI_MakeSolid, BRepBuilderAPI_MakeWire,
+                                BRepBuilderAPI_Sewing)
+from OCP.BRepCheck import BRepCheck_Analyzer
+from OCP.BRepGProp import BRepGProp
+from OCP.BRepLib import BRepLib_FindSurface
+from OCP.BRepTools import BRepTools, BRepTools_WireExplorer
+from OCP.Geom import Geom_BSplineCurve, Geom_BSplineSurface, Geom_Curve, Geom_TrimmedCurve
+from OCP.GeomAbs import GeomAbs_Circle, GeomAbs_Line, GeomAbs_Plane
+from OCP.GeomConvert import GeomConvert
+from OCP.GProp import GProp_GProps
+from OCP.gp import gp_Dir, gp_Pln, gp_Pnt, gp_Vec
+from OCP.ShapeFix import ShapeFix_Shape
+
+try:  # OCP 7.x: the TColgp/TColStd arrays
+    from OCP.TColgp import TColgp_Array1OfPnt, TColgp_Array2OfPnt
+    from OCP.TColStd import (TColStd_Array1OfInteger, TColStd_Array1OfReal,
+                             TColStd_Array2OfReal)
+except ImportError:  # OCP 8: the same NCollection arrays under OCP.collections
+    from OCP.collections import Array1_double as TColStd_Array1OfReal
+    from OCP.collections import Array1_gp_Pnt as TColgp_Array1OfPnt
+    from OCP.collections import Array1_int as TColStd_Array1OfInteger
+    from OCP.collections import Array2_double as TColStd_Array2OfReal
+    from OCP.collections import Array2_gp_Pnt as TColgp_Array2OfPnt
+from OCP.TopAbs import TopAbs_EDGE, TopAbs_FACE, TopAbs_REVERSED, TopAbs_SHELL, TopAbs_SOLID, TopAbs_WIRE
+from OCP.TopExp import TopExp, TopExp_Explorer
+from OCP.TopoDS import TopoDS, TopoDS_Shape
+
+
+def _downcast(kind: str) -> Any:
+    """TopoDS::Edge and friends: static methods (Edge_s) in OCP 7, functions of the TopoDS
+    namespace in OCP 8."""
+    return getattr(TopoDS, kind + "_s", None) or getattr(TopoDS, kind)
+
+
+_as_edge, _as_wire, _as_face = _downcast("Edge"), _downcast("Wire"), _downcast("Face")
+_as_shell, _as_solid = _downcast("Shell"), _downcast("Solid")
+
+_WIRE_LIKE = ("a wire or an edge (build123d/CadQuery Wire or Edge, TopoDS_Wire, TopoDS_Edge "
+              "or Geom_BSplineCurve)")
+_PROFILE_LIKE = ("a planar profile (build123d/CadQuery Face or closed Wire, TopoDS_Face or "
+                 "TopoDS_Wire)")
+
+
+def _unwrap(value: Any) -> Any:
+    """The OCP object of a build123d/CadQuery object (its .wrapped), else the value."""
+    return getattr(value, "wrapped", value)
+
+
+def _describe(value: Any) -> str:
+    cls = type(value)
+    module = cls.__module__.split(".")[0]
+    return cls.__name__ if module == "builtins" else "%s %s" % (module, cls.__name__)
+
+
+def _shape_of(value: Any, name: str, kinds: Tuple[Any, ...], what: str) -> TopoDS_Shape:
+    raw = _unwrap(value)
+    if not isinstance(raw, TopoDS_Shape) or raw.IsNull() or raw.ShapeType() not in kinds:
+        raise TypeError("%s: expected %s, got %s" % (name, what, _describe(value)))
+    return raw
+
+
+def _pnt(p: gp_Pnt) -> np.ndarray:
+    return np.array(p.Coord())
+
+
+# ---------------------------------------------------------------------------------------
+# Curves both ways
+
+
+def _bspline_data(curve: Geom_BSplineCurve) -> NurbsCurve:
+    n, p = curve.NbPoles(), curve.Degree()
+    poles = np.array([curve.Pole(i).Coord() for i in range(1, n + 1)])
+    weights = np.array([curve.Weight(i) for i in range(1, n + 1)])
+    knots = np.array([curve.Knot(i) for i in range(1, curve.NbKnots() + 1)])
+    mults = [curve.Multiplicity(i) for i in range(1, curve.NbKnots() + 1)]
+    return NurbsCurve(p, poles, weights, np.repeat(knots, mults))
+
+
+def _edge_bspline(edge: Any, degree: Optional[int] = None) -> Geom_BSplineCurve:
+    """The exact NURBS form of an edge's curve over its range, in the edge's direction,
+    raised to `degree` if given."""
+    curve = BRep_Tool.Curve_s(edge, 0.0, 0.0)
+    if isinstance(curve, tuple):  # bindings that return the range too
+        curve = curve[0]
+    first, last = BRep_Tool.Range_s(edge)
+    if curve is None:
+        raise ValueError("an edge without a 3-D curve")
+    bspline = GeomConvert.CurveToBSplineCurve_s(Geom_TrimmedCurve(curve, first, last))
+    if bspline.IsPeriodic():
+        bspline.SetNotPeriodic()
+    if edge.Orientation() == TopAbs_REVERSED:
+        bspline.Reverse()
+    if degree is not None and bspline.Degree() < degree:
+        bspline.IncreaseDegree(degree)
+    return bspline
+
+
+def curve(value: Any) -> Curve:
+    """An :class:`rmfsurf.Curve` from an OCP curve or edge: a ``Geom_BSplineCurve`` (any
+    ``Geom_Curve`` with finite bounds), a ``TopoDS_Edge`` (its range, its orientation) or a
+    build123d/CadQuery Edge. Exact: lines, circles and B-splines have NURBS forms."""
+    raw = _unwrap(value)
+    if isinstance(raw, Geom_Curve):
+        bspline = GeomConvert.CurveToBSplineCurve_s(raw)
+        if bspline.IsPeriodic():
+            bspline.SetNotPeriodic()
+    elif isinstance(raw, TopoDS_Shape) and not raw.IsNull() and raw.ShapeType() == TopAbs_EDGE:
+        bspline = _edge_bspline(_as_edge(raw))
+    else:
+        raise TypeError("curve: expected an edge or a curve (build123d/CadQuery Edge, "
+                        "TopoDS_Edge or Geom_Curve), got %s" % _describe(value))
+    d = _bspline_data(bspline)
+    return Curve.from_nurbs(d.degree, d.poles, d.knots, d.weights)
+
+
+def _array1_pnt(points: np.ndarray) -> TColgp_Array1OfPnt:
+    a = TColgp_Array1OfPnt(1, len(points))
+    for i, p in enumerate(points, 1):
+        a.SetValue(i, gp_Pnt(*map(float, p)))
+    return a
+
+
+def _array1_real(values: np.ndarray) -> TColStd_Array1OfReal:
+    a = TColStd_Array1OfReal(1, len(values))
+    for i, v in enumerate(values, 1):
+        a.SetValue(i, float(v))
+    return a
+
+
+def _array1_int(values: np.ndarray) -> TColStd_Array1OfInteger:
+    a = TColStd_Array1OfInteger(1, len(values))
+    for i, v in enumerate(values, 1):
+        a.SetValue(i, int(v))
+    return a
+
+
+def bspline_curve(value: Curve) -> Geom_BSplineCurve:
+    """An :class:`rmfsurf.Curve` as a ``Geom_BSplineCurve`` (the same poles, weights and
+    knots)."""
+    d = _core.instance(value, "curve", Curve, "an rmfsurf.Curve").nurbs()
+    knots, mults = d.distinct_knots()
+    return Geom_BSplineCurve(_array1_pnt(d.poles), _array1_real(d.weights),
+                             _array1_real(knots), _array1_int(mults), d.degree)
+
+
+def edge(value: Curve) -> Any:
+    """An :class:`rmfsurf.Curve` as a ``TopoDS_Edge``."""
+    return BRepBuilderAPI_MakeEdge(bspline_curve(value)).Edge()
+
+
+# ---------------------------------------------------------------------------------------
+# Surfaces out
+
+
+def bspline_surface(value: Surface) -> Geom_BSplineSurface:
+    """An :class:`rmfsurf.Surface` as a ``Geom_BSplineSurface`` (rows of poles along u, as
+    the library's NURBS view)."""
+    d = _core.instance(value, "surface", Surface, "an rmfsurf.Surface").nurbs()
+    nu, nv = d.weights.shape
+    poles = TColgp_Array2OfPnt(1, nu, 1, nv)
+    weights = TColStd_Array2OfReal(1, nu, 1, nv)
+    for i in range(nu):
+        for j in range(nv):
+            poles.SetValue(i + 1, j + 1, gp_Pnt(*map(float, d.poles[i, j])))
+            weights.SetValue(i + 1, j + 1, float(d.weights[i, j]))
+    ku, mu = np.unique(d.knots_u, return_counts=True)
+    kv, mv = np.unique(d.knots_v, return_counts=True)
+    return Geom_BSplineSurface(poles, weights, _array1_real(ku), _array1_real(kv),
+                               _array1_int(mu), _array1_int(mv), d.degree_u, d.degree_v)
+
+
+def face(value: Surface, tolerance: float = 1e-7) -> Any:
+    """An :class:`rmfsurf.Surface` as a ``TopoDS_Face`` bounded by its parameter domain."""
+    return BRepBuilderAPI_MakeFace(bspline_surface(value), tolerance).Face()
+
+
+# ---------------------------------------------------------------------------------------
+# Wire sweeps
+
+
+def _ordered_edges(path: Any) -> List[Any]:
+    """The edges of a wire in connection order, each with its orientation in the wire."""
+    raw = _shape_of(path, "path", (TopAbs_WIRE, TopAbs_EDGE), _WIRE_LIKE)
+    if raw.ShapeType() == TopAbs_EDGE:
+        return [_as_edge(raw)]
+    edges = []
+    explorer = BRepTools_WireExplorer(_as_wire(raw))
+    while explorer.More():
+        edges.append(explorer.Current())
+        explorer.Next()
+    if not edges:
+        raise ValueError("path: the wire has no edges")
+    return edges
+
+
+def path_edges(path: Any) -> List[Edge]:
+    """The wire-sweep edges of an OCP wire or edge (or a build123d/CadQuery one), in order:
+    straight edges as :class:`rmfsurf.Line`, circular arcs as :class:`rmfsurf.Arc`, every
+    other edge as its exact NURBS curve."""
+    raw = _unwrap(path)
+    if isinstance(raw, Geom_Curve):
+        return [CurveEdge(curve(raw))]
+    result: List[Edge] = []
+    for e in _ordered_edges(path):
+        adaptor = BRepAdaptor_Curve(e)
+        start = _pnt(BRep_Tool.Pnt_s(TopExp.FirstVertex_s(e, True)))
+        end = _pnt(BRep_Tool.Pnt_s(TopExp.LastVertex_s(e, True)))
+        kind = adaptor.GetType()
+        if kind == GeomAbs_Line:
+            result.append(Line(start, end))
+        elif kind == GeomAbs_Circle and not BRep_Tool.IsClosed_s(e):
+            middle = _pnt(adaptor.Value(0.5 * (adaptor.FirstParameter() + adaptor.LastParameter())))
+            result.append(Arc(start, middle, end))
+        else:
+            d = _bspline_data(_edge_bspline(e))
+            result.append(CurveEdge(Curve.from_nurbs(d.degree, d.poles, d.knots, d.weights)))
+    return result
+
+
+def _start_frame(path: Any) -> Tuple[np.ndarray, np.ndarray]:
+    """The path's start point and unit tangent there (in the wire's direction)."""
+    raw = _unwrap(path)
+    if isinstance(raw, Geom_Curve):
+        bspline = GeomConvert.CurveToBSplineCurve_s(raw)
+    else:
+        bspline = _edge_bspline(_ordered_edges(path)[0])
+    p, v = gp_Pnt(), gp_Vec()
+    bspline.D1(bspline.FirstParameter(), p, v)
+    t = np.array(v.Coord())
+    return _pnt(p), t / np.linalg.norm(t)
+
+
+def _profile_plane(profile: Any, tolerance: float) -> Tuple[Any, List[Any], gp_Pln]:
+    """The outer wire, the inner wires and the plane of a planar profile."""
+    raw = _shape_of(profile, "profile", (TopAbs_FACE, TopAbs_WIRE, TopAbs_EDGE), _PROFILE_LIKE)
+    if raw.ShapeType() == TopAbs_FACE:
+        f = _as_face(raw)
+        surface = BRepAdaptor_Surface(f)
+        if surface.GetType() != GeomAbs_Plane:
+            raise ValueError("profile: the face is not planar")
+        outer = BRepTools.OuterWire_s(f)
+        inner = []
+        explorer = TopExp_Explorer(f, TopAbs_WIRE)
+        while explorer.More():
+            w = _as_wire(explorer.Current())
+            if not w.IsSame(outer):
+                inner.append(w)
+            explorer.Next()
+        return outer, inner, surface.Plane()
+    if raw.ShapeType() == TopAbs_EDGE:
+        raw = BRepBuilderAPI_MakeWire(_as_edge(raw)).Wire()
+    wire = _as_wire(raw)
+    if not BRep_Tool.IsClosed_s(wire):
+        raise ValueError("profile: the wire is not closed")
+    finder = BRepLib_FindSurface(wire, tolerance, True)
+    if not finder.Found():
+        raise ValueError("profile: the wire is not planar (within %g)" % tolerance)
+    plane = BRepAdaptor_Surface(BRepBuilderAPI_MakeFace(finder.Surface(), 1e-7).Face()).Plane()
+    return wire, [], plane
+
+
+def _wire_curve(wire: Any, origin: np.ndarray, f2: np.ndarray, f3: np.ndarray,
+                name: str, tolerance: float) -> Curve:
+    """A closed wire as one curve in the (f2, f3) coordinates about origin."""
+    edges = _ordered_edges(wire)
+    degree = max(_edge_bspline(e).Degree() for e in edges)
+    pieces = []
+    for e in edges:
+        d = _bspline_data(_edge_bspline(e, degree))
+        local = d.poles - origin
+        planar = np.c_[local @ f2, local @ f3, np.zeros(len(local))]
+        pieces.append(NurbsCurve(d.degree, planar, d.weights, d.knots))
+    joined = join_nurbs(pieces, name, tolerance)
+    return Curve.from_nurbs(joined.degree, joined.poles, joined.knots, joined.weights)
+
+
+def profile_curves(profile: Any, origin: Any, tangent: Any, tolerance: float = 1e-4
+                   ) -> Tuple[Curve, List[Curve], np.ndarray]:
+    """A planar profile placed in space (normal to `tangent` through `origin`) as the
+    2-D outer curve, hole curves and initial normal f2 of :func:`rmfsurf.wire_sweep`.
+    f2 is the x direction of the profile's plane."""
+    origin = np.asarray(origin, dtype=float)
+    t = np.asarray(tangent, dtype=float)
+    t = t / np.linalg.norm(t)
+    outer, inner, plane = _profile_plane(profile, tolerance)
+    axis = plane.Position()
+    normal = np.array(axis.Direction().Coord())
+    tilt = np.linalg.norm(np.cross(normal, t))
+    if tilt > 1e-6:
+        raise ValueError("profile: its plane must be normal to the path at the path's start "
+                         "(it is tilted by %.3g degrees)" % np.degrees(np.arcsin(min(tilt, 1))))
+    off = abs(np.dot(np.array(axis.Location().Coord()) - origin, normal))
+    if off > tolerance:
+        raise ValueError("profile: its plane must pass through the path's start point (it "
+                         "is %.3g away)" % off)
+    x = np.array(axis.XDirection().Coord())
+    f2 = x - np.dot(x, t) * t
+    f2 /= np.linalg.norm(f2)
+    f3 = np.cross(t, f2)
+    outer_curve = _wire_curve(outer, origin, f2, f3, "profile", tolerance)
+    holes = [_wire_curve(w, origin, f2, f3, "profile hole %d" % i, tolerance)
+             for i, w in enumerate(inner)]
+    return outer_curve, holes, f2
+
+
+def _cap(loops: List[Curve], origin: np.ndarray, normal: np.ndarray) -> Any:
+    """A planar face bounded by closed loop curves (the first the outer one)."""
+    plane = gp_Pln(gp_Pnt(*map(float, origin)), gp_Dir(*map(float, normal)))
+    wires = [BRepBuilderAPI_MakeWire(edge(c)).Wire() for c in loops]
+    maker = BRepBuilderAPI_MakeFace(plane, wires[0], True)
+    for w in wires[1:]:
+        maker.Add(_as_wire(w.Reversed()))
+    return maker.Face()
+
+
+def shape(value: Shape, tolerance: float = 1e-6) -> Any:
+    """An :class:`rmfsurf.Shape` as OCP: its swept faces (``Geom_BSplineSurface``) and
+    planar caps sewn together, closed into a ``TopoDS_Solid`` when the shape is a solid
+    (else the sewn shell)."""
+    sewing = BRepBuilderAPI_Sewing(tolerance)
+    for f in _core.instance(value, "shape", Shape, "an rmfsurf.Shape").faces():
+        if f.kind == "swept":
+            sewing.Add(face(f.surface))
+        else:
+            sewing.Add(_cap(f.loops, f.plane_origin, f.plane_normal))
+    sewing.Perform()
+    sewn = sewing.SewedShape()
+    if not value.is_solid:
+        return sewn
+    return closed_solid(sewn)
+
+
+def closed_solid(sewn: Any) -> Any:
+    """A sewn closed shell (or a compound holding one) as a valid ``TopoDS_Solid`` with
+    outward normals; ValueError if it does not close."""
+    explorer = TopExp_Explorer(sewn, TopAbs_SHELL)
+    if not explorer.More():
+        raise ValueError("the faces do not sew into a shell")
+    solid = BRepBuilderAPI_MakeSolid(_as_shell(explorer.Current())).Solid()
+    fix = ShapeFix_Shape(solid)
+    fix.Perform()
+    fixed = fix.Shape()
+    explorer = TopExp_Explorer(fixed, TopAbs_SOLID)
+    solid = _as_solid(explorer.Current()) if explorer.More() else solid
+    if volume(solid) < 0:
+        solid = _as_solid(solid.Reversed())
+    return solid
+
+
+def volume(value: Any, relative_error: float = 1e-9) -> float:
+    """The volume of an OCP solid (BRepGProp's adaptive integration to `relative_error`;
+    the fixed-order default is off by 1e-4 on the library's degree-(2, 9) faces)."""
+    props = GProp_GProps()
+    BRepGProp.VolumeProperties_s(_unwrap(value), props, relative_error)
+    return props.Mass()
+
+
+def is_valid(value: Any) -> bool:
+    """OpenCascade's own check of a shape (BRepCheck_Analyzer)."""
+    return BRepCheck_Analyzer(_unwrap(value)).IsValid()
+
+
+def _wrap_like(template: Any, raw: Any) -> Any:
+    """`raw` as a build123d/CadQuery Solid when `template` was one of theirs."""
+    module = type(template).__module__.split(".")[0]
+    if module == "build123d":
+        import build123d
+
+        return build123d.Solid(raw) if raw.ShapeType() == TopAbs_SOLID else build123d.Shell(raw)
+    if module == "cadquery":
+        import cadquery
+
+        return cadquery.Shape.cast(raw)
+    return raw
+
+
+def sweep(path: Any, profile: Any, *, solid: bool = True, corner: str = "round",
+          corner_radius: Optional[float] = None, tolerance: float = 1e-4) -> Any:
+    """Sweeps `profile` along `path` with rotation-minimizing frames (rmf_wire_sweep).
+
+    Args:
+        path: a build123d/CadQuery Wire or Edge, a TopoDS_Wire/TopoDS_Edge or a
+            Geom_BSplineCurve: lines, arcs and curves end to end.
+        profile: a planar Face (holes allowed) or closed Wire in the plane normal to the
+            path at its start, placed where it is in space (as for build123d's sweep).
+        solid: close the result with planar caps into a solid (else the open shell).
+        corner: "round" or "miter" at the path's corners.
+        corner_radius: the rounding radius of round corners (None: the library's).
+        tolerance: the distance tolerance of the sweep (spine approximation, joints).
+
+    Returns:
+        A ``TopoDS_Solid`` (or shell) — a build123d ``Solid`` / CadQuery ``Shape`` when
+        `path` was a build123d / CadQuery object — to fuse, cut and export.
+    """
+    edges = path_edges(path)
+    origin, tangent = _start_frame(path)
+    outer, holes, f2 = profile_curves(profile, origin, tangent, tolerance)
+    result = wire_sweep(edges, outer, holes, solid=solid, corner=corner,
+                        corner_radius=corner_radius, tolerance=tolerance, initial_normal=f2)
+    return _wrap_like(path, shape(result, min(tolerance, 1e-6)))
