@@ -1,8 +1,8 @@
 """Checks rmfsurf inside FreeCAD, headless: run with `freecadcmd check_in_freecad.py`.
 
-Started by the test command (tests/freecad.rs), which builds the library, runs the rmfsurf
+Started by the test command (capi/tests/freecad.rs), which installs the Python package
+rmfsurf (the wheel, carrying the library) where FreeCAD finds it, runs the rmfsurf
 command-line tool on examples/cli/*.json and passes, in the environment:
-  RMFSURF_LIBRARY   librmfsurf.so
   RMFSURF_EXAMPLES  examples/cli (the JSON inputs)
   RMFSURF_FILES     the tool's outputs: <example>.step, _curves.step, .obj, cone_spline.dxf/.svg
   RMFSURF_WORK      a scratch directory (FreeCAD's own STEP files)
@@ -33,8 +33,8 @@ import Mesh
 import Part
 import Sketcher  # noqa: F401  (registers Sketcher::SketchObject)
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import rmfsurf_freecad as rmf  # noqa: E402
+import rmfsurf  # noqa: E402
+import rmfsurf.freecad as rmf  # noqa: E402
 
 V = FreeCAD.Vector
 EXAMPLES = os.environ.get("RMFSURF_EXAMPLES", "")
@@ -83,7 +83,7 @@ def size_of(points):
 
 
 def surface_samples(library_surface):
-    u0, u1, v0, v1 = library_surface.domain()
+    u0, u1, v0, v1 = library_surface.domain
     return [(u, v) for u in grid(u0, u1) for v in grid(v0, v1)]
 
 
@@ -93,13 +93,13 @@ def surface_samples(library_surface):
 
 def polyline(points):
     n = len(points)
-    return rmf.Curve.from_nurbs(1, points, [0.0] + [float(k) for k in range(n)] + [n - 1.0])
+    return rmfsurf.Curve.from_nurbs(1, points, [0.0] + [float(k) for k in range(n)] + [n - 1.0])
 
 
 def circle(radius):
     r, s = radius, 0.5 ** 0.5
     corners = [(1, 0), (1, 1), (0, 1), (-1, 1), (-1, 0), (-1, -1), (0, -1), (1, -1), (1, 0)]
-    return rmf.Curve.from_nurbs(2, [(r * x, r * y, 0) for x, y in corners],
+    return rmfsurf.Curve.from_nurbs(2, [(r * x, r * y, 0) for x, y in corners],
                                 [0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 4],
                                 [s if k % 2 else 1.0 for k in range(9)])
 
@@ -119,28 +119,25 @@ def built(name):
     spine = sweep["spine"]
     normal = sweep.get("initial_normal", [0, 0, 1])
     if sweep["method"] == "mobius":
-        curve, frames = rmf.mobius_hermite(spine["points"], spine["tangents"], normal)
+        curve, frames = rmfsurf.mobius_rrmf_hermite(spine["points"], spine["tangents"], normal)
     elif sweep["method"] == "rrmf":
-        curve, frames = rmf.rrmf_spline(spine["points"], spine["tangents"], normal)
+        curve, frames = rmfsurf.rrmf_spline_hermite(spine["points"], spine["tangents"], normal)
     else:
         n = spine["nurbs"]
-        nurbs = rmf.Curve.from_nurbs(n["degree"], n["poles"], n["knots"], n.get("weights"))
+        nurbs = rmfsurf.Curve.from_nurbs(n["degree"], n["poles"], n["knots"], n.get("weights"))
         curve, frames = rmf.spine_with_frames(nurbs, sweep["method"], sweep["tolerance"], normal)
-    return curve, frames, rmf.sweep(curve, frames, profile_of(sweep["profile"]))
+    return curve, frames, rmfsurf.sweep_surface(curve, frames, profile_of(sweep["profile"]))
 
 
 def built_cone_spline():
     cone = example("cone_spline")["cone_spline"]
     tangent = cone["developable"]["tangent_surface"]
     n = tangent["curve"]["nurbs"]
-    curve = rmf.Curve.from_nurbs(n["degree"], n["poles"], n["knots"])
-    spline, error = rmf.ctypes.c_void_p(), rmf.ctypes.c_double()
-    rmf.call("rmf_cone_spline_approximate", curve.pointer, None, None, 0.0, 0.0,
-             tangent["v_min"], tangent["v_max"], cone["tolerance"],
-             rmf.RMF_CONE_RULE_MIN_VERTEX_DISTANCE, 10000, rmf.ctypes.byref(spline),
-             rmf.ctypes.byref(error))
+    curve = rmfsurf.Curve.from_nurbs(n["degree"], n["poles"], n["knots"])
+    spline = rmfsurf.cone_spline_approximate(curve, (tangent["v_min"], tangent["v_max"]),
+                                             cone["tolerance"])
     strip = cone["strip"]
-    return rmf.ConeSpline(spline), strip["t_min"], strip["t_max"]
+    return spline, strip["t_min"], strip["t_max"]
 
 
 # ---------------------------------------------------------------------------------------
@@ -148,20 +145,21 @@ def built_cone_spline():
 
 
 def max_distance(pairs):
-    return max((a - b).Length for a, b in pairs)
+    """max |a − b| over pairs of a FreeCAD.Vector and a point (NumPy or Vector)."""
+    return max((a - V(*b)).Length for a, b in pairs)
 
 
 def check_curve(label, curve):
-    part = curve.to_part()
+    part = rmf.part_curve(curve)
     require("%s: spine Part.BSplineCurve edge isValid()" % label, part.toShape().isValid())
-    lo, hi = curve.domain()
+    lo, hi = curve.domain
     error = max_distance((part.value(t), curve.eval(t)) for t in grid(lo, hi, 201))
     check("%s: spine, |Part value - rmf_curve_eval|" % label, error, 1e-9)
     return part
 
 
 def check_surface(label, surface):
-    part = surface.to_part()
+    part = rmf.part_surface(surface)
     face = Part.Face(part)
     require("%s: Part.Face of the Part.BSplineSurface isValid()" % label, face.isValid())
     samples = surface_samples(surface)
@@ -172,14 +170,14 @@ def check_surface(label, surface):
 
 def scaled_gauss(part, surface):
     """max |K|·size² by FreeCAD's own curvature, inside the domain."""
-    u0, u1, v0, v1 = surface.domain()
-    size = size_of([surface.eval(u, v) for u, v in surface_samples(surface)])
+    u0, u1, v0, v1 = surface.domain
+    size = size_of([V(*surface.eval(u, v)) for u, v in surface_samples(surface)])
     inner = [(u, v) for u in grid(u0, u1)[1:-1] for v in grid(v0, v1)[1:-1]]
     return max(abs(part.curvature(u, v, "Gauss")) for u, v in inner) * size ** 2
 
 
 def part_a():
-    say("A. Part objects from the NURBS views (ctypes), FreeCAD curvature")
+    say("A. Part objects from the NURBS views (rmfsurf.freecad), FreeCAD curvature")
     parts = {}
     for name in ("helix_pipe_mobius", "helix_strip_rrmf", "nurbs_moulding_ph"):
         curve, frames, surface = built(name)
@@ -187,17 +185,16 @@ def part_a():
         parts[name] = (surface, check_surface(name, surface))
     # Developable: the same NURBS spine with a line profile (PH cubic rational RMF).
     moulding = example("nurbs_moulding_ph")["sweep"]["spine"]["nurbs"]
-    spine = rmf.Curve.from_nurbs(moulding["degree"], moulding["poles"], moulding["knots"])
+    spine = rmfsurf.Curve.from_nurbs(moulding["degree"], moulding["poles"], moulding["knots"])
     line = polyline([(-0.2, 0, 0), (0.2, 0, 0)])
     ph, ph_frames = rmf.spine_with_frames(spine, "ph-rmf", 1e-5)
-    parts["ph_strip"] = (rmf.sweep(ph, ph_frames, line), None)
+    parts["ph_strip"] = (rmfsurf.sweep_surface(ph, ph_frames, line), None)
     # Control: one PH cubic with its Frenet frame, not rotation-minimizing: K != 0.
-    one = rmf.Curve.made_by("rmf_ph_spline_hermite", rmf.vec3_array([(0, 0, 0), (1, 1, 1)]),
-                            rmf.vec3_array([(1, 0, 0), (0, 1, 0)]), 2)
-    parts["frenet_strip"] = (rmf.sweep(one, rmf.Frames.made_by("rmf_ph_frenet_frames", one.pointer), line), None)
+    one = rmfsurf.ph_spline_hermite([(0, 0, 0), (1, 1, 1)], [(1, 0, 0), (0, 1, 0)])
+    parts["frenet_strip"] = (rmfsurf.sweep_surface(one, rmfsurf.ph_frenet_frames(one), line), None)
     spline, t_min, t_max = built_cone_spline()
     parts["cone_spline"] = (spline.surface(t_min, t_max), None)
-    parts["cone_spline_developed"] = (spline.developed().surface(t_min, t_max), None)
+    parts["cone_spline_developed"] = (spline.develop().surface(t_min, t_max), None)
     for name in ("ph_strip", "frenet_strip", "cone_spline", "cone_spline_developed"):
         surface, _ = parts[name]
         parts[name] = (surface, check_surface(name, surface))
@@ -250,7 +247,7 @@ def part_c(parts):
                 len(edges) == len(expected) and all(e.isValid() for e in edges))
         error = 0.0
         for edge, curve in zip(edges, expected):
-            lo, hi = curve.domain()
+            lo, hi = curve.domain
             error = max(error, max_distance((edge.Curve.value(t), curve.eval(t)) for t in grid(lo, hi, 201)))
         check("%s_curves.step: |FreeCAD curve - rmf_curve_eval|" % name, error, 1e-9)
 
@@ -262,7 +259,7 @@ def part_c(parts):
 def part_d():
     say("D. FreeCAD reads the tool's DXF and SVG flat pattern")
     spline, t_min, t_max = built_cone_spline()
-    pieces = spline.piece_count()
+    pieces = spline.piece_count
     document = FreeCAD.newDocument("dxf")
     Import.readDXF(os.path.join(FILES, "cone_spline.dxf"))
     edges = [e for o in document.Objects if hasattr(o, "Shape") for e in o.Shape.Edges]
@@ -307,7 +304,7 @@ def part_e(parts):
                 mesh.CountPoints == len(points) and mesh.CountFacets == len(triangles))
         # FreeCAD's mesh kernel stores single-precision floats: relative rounding 2^-24
         # per coordinate, so |error| / max |coordinate| stays below sqrt(3)·2^-24 = 1.03e-7.
-        error = max((V(p.x, p.y, p.z) - q).Length / max(abs(q.x), abs(q.y), abs(q.z))
+        error = max((V(p.x, p.y, p.z) - V(*q)).Length / max(abs(q))
                     for p, q in zip(mesh.Points, points))
         check("%s.obj: |FreeCAD mesh point - tessellation| / |point| (float32)" % name, error, 1.04e-7)
 
@@ -328,8 +325,9 @@ class Selected:
 def sweep_inputs(document):
     nurbs = example("nurbs_moulding_ph")["sweep"]["spine"]["nurbs"]
     curve = Part.BSplineCurve()
-    knots, multiplicities = rmf.knots_and_multiplicities(nurbs["knots"])
-    curve.buildFromPolesMultsKnots([V(*p) for p in nurbs["poles"]], multiplicities, knots, False, 3)
+    knots, multiplicities = rmfsurf.distinct_knots(nurbs["knots"])
+    curve.buildFromPolesMultsKnots([V(*p) for p in nurbs["poles"]], [int(m) for m in multiplicities],
+                                   [float(k) for k in knots], False, 3)
     spine = document.addObject("Part::Feature", "Spine")
     spine.Shape = curve.toShape()
     sketch = document.addObject("Sketcher::SketchObject", "Profile")
@@ -434,14 +432,44 @@ def part_f():
     FreeCAD.closeDocument(document.Name)
 
 
+# ---------------------------------------------------------------------------------------
+# G. The wire sweep: rmfsurf.freecad.sweep of a Part wire into a Part.Solid
+
+
+def part_g():
+    say("G. rmfsurf.freecad.sweep: a wire of a line and an arc, a ring profile")
+    if not rmfsurf.shapes._has_wire_sweep():
+        say("  NOT RUN: this librmfsurf has no rmf_wire_sweep")
+        return
+    line = Part.LineSegment(V(0, 0, 0), V(20, 0, 0)).toShape()
+    arc = Part.ArcOfCircle(Part.Circle(V(20, 10, 0), V(0, 0, 1), 10), -1.5707963267948966, 0).toShape()
+    wire = Part.Wire([line, arc])
+    outer, inner = Part.makeCircle(2, V(0, 0, 0), V(1, 0, 0)), Part.makeCircle(1, V(0, 0, 0), V(1, 0, 0))
+    ring = Part.Face([Part.Wire([outer]), Part.Wire([inner])])
+    solid = rmf.sweep(wire, ring)
+    require("sweep: a valid Part.Solid", solid.ShapeType == "Solid" and solid.isValid())
+    expected = 3.141592653589793 * (4 - 1) * wire.Length
+    check("sweep: rel. volume error against pi (R^2 - r^2) L", abs(solid.Volume - expected) / expected, 1e-9)
+    box = Part.makeBox(10, 10, 10, V(-5, -5, -5))
+    fused = box.fuse(solid)
+    require("sweep: fuses with a box into a valid shape", fused.isValid())
+    try:
+        rmf.sweep(ring, ring)
+        require("sweep: a Part.Face as the wire is refused", False)
+    except TypeError as e:
+        require("sweep: a Part.Face as the wire is a TypeError naming 'wire' (%s)" % e, str(e).startswith("wire:"))
+
+
 def main():
-    say("rmfsurf %s in FreeCAD %s" % (rmf.library().rmf_version().decode(), ".".join(FreeCAD.Version()[:3])))
+    say("rmfsurf %s (%s) in FreeCAD %s, Python %s" % (rmfsurf.__version__, os.path.dirname(rmfsurf.__file__),
+                                                   ".".join(FreeCAD.Version()[:3]), sys.version.split()[0]))
     parts = part_a()
     part_b(parts)
     part_c(parts)
     part_d()
     part_e(parts)
     part_f()
+    part_g()
     if failures:
         say("FREECAD CHECKS FAILED: %s" % "; ".join(failures))
         sys.exit(1)

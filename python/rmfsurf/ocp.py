@@ -62,7 +62,7 @@ except ImportError:  # OCP 8: the same NCollection arrays under OCP.collections
     from OCP.collections import Array1_int as TColStd_Array1OfInteger
     from OCP.collections import Array2_double as TColStd_Array2OfReal
     from OCP.collections import Array2_gp_Pnt as TColgp_Array2OfPnt
-from OCP.TopAbs import TopAbs_EDGE, TopAbs_FACE, TopAbs_REVERSED, TopAbs_SHELL, TopAbs_SOLID, TopAbs_WIRE
+from OCP.TopAbs import TopAbs_COMPOUND, TopAbs_EDGE, TopAbs_FACE, TopAbs_REVERSED, TopAbs_SHELL, TopAbs_SOLID, TopAbs_WIRE
 from OCP.TopExp import TopExp, TopExp_Explorer
 from OCP.TopoDS import TopoDS, TopoDS_Shape
 
@@ -78,8 +78,8 @@ _as_shell, _as_solid = _downcast("Shell"), _downcast("Solid")
 
 _WIRE_LIKE = ("a wire or an edge (build123d/CadQuery Wire or Edge, TopoDS_Wire, TopoDS_Edge "
               "or Geom_BSplineCurve)")
-_PROFILE_LIKE = ("a planar profile (build123d/CadQuery Face or closed Wire, TopoDS_Face or "
-                 "TopoDS_Wire)")
+_PROFILE_LIKE = ("a planar profile (build123d/CadQuery Face, Sketch or closed Wire, TopoDS_Face "
+                 "or TopoDS_Wire)")
 
 
 def _unwrap(value: Any) -> Any:
@@ -273,7 +273,18 @@ def _start_frame(path: Any) -> Tuple[np.ndarray, np.ndarray]:
 
 def _profile_plane(profile: Any, tolerance: float) -> Tuple[Any, List[Any], gp_Pln]:
     """The outer wire, the inner wires and the plane of a planar profile."""
-    raw = _shape_of(profile, "profile", (TopAbs_FACE, TopAbs_WIRE, TopAbs_EDGE), _PROFILE_LIKE)
+    raw = _shape_of(profile, "profile", (TopAbs_FACE, TopAbs_WIRE, TopAbs_EDGE, TopAbs_COMPOUND),
+                    _PROFILE_LIKE)
+    if raw.ShapeType() == TopAbs_COMPOUND:  # a build123d sketch such as Circle(3)
+        faces = []
+        explorer = TopExp_Explorer(raw, TopAbs_FACE)
+        while explorer.More():
+            faces.append(explorer.Current())
+            explorer.Next()
+        if len(faces) != 1:
+            raise ValueError("profile: a compound (sketch) must hold exactly one face, it "
+                             "holds %d" % len(faces))
+        raw = faces[0]
     if raw.ShapeType() == TopAbs_FACE:
         f = _as_face(raw)
         surface = BRepAdaptor_Surface(f)

@@ -1,0 +1,422 @@
+"""rmfsurf for FreeCAD: Part objects both ways, wire sweeps, profile sweeps along an edge
+and cone spline surfaces with their flat patterns.
+
+Runs inside FreeCAD (``import FreeCAD, Part`` must work): install the package where
+FreeCAD's Python finds it (docs/install.md, "FreeCAD"); the library comes with the package.
+
+* in: ``Part.Edge``/``Part.Wire``/sketches and ``Part.BSplineCurve``/``BSplineSurface``
+  (any curve or surface FreeCAD can express as NURBS) → :class:`rmfsurf.Curve`,
+  :class:`rmfsurf.Surface`, wire-sweep edges;
+* out: ``Part.BSplineCurve``, ``Part.BSplineSurface``, ``Part.Face``, ``Part.Shape``
+  (a solid for a closed sweep).
+
+:func:`sweep` is the wire sweep; the macros RmfSweep and RmfConeSpline (examples/freecad/)
+call :func:`sweep_selection` and :func:`cone_spline_selection`.
+"""
+
+from __future__ import annotations
+
+from typing import Any, List, Optional, Sequence, Tuple
+
+import numpy as np
+
+import FreeCAD
+import Part
+
+from . import _core
+from .cone_splines import ConeSpline, cone_spline_approximate_ruled
+from .curves import (Curve, NurbsCurve, distinct_knots, flat_knots, join_nurbs,
+                     mobius_rrmf_approximate, ph_spline_approximate, rrmf_spline_hermite)
+from .frames import Frames, ph_frenet_frames, ph_rational_rmf
+from .shapes import Arc, CurveEdge, Edge, Line, Shape, wire_sweep
+from .surfaces import Surface, sweep_surface
+
+RmfError = _core.RmfError
+V = FreeCAD.Vector
+
+
+def vector(p: Any) -> Any:
+    """A FreeCAD.Vector from a 3-sequence (e.g. a NumPy point)."""
+    return V(float(p[0]), float(p[1]), float(p[2]))
+
+
+# ---------------------------------------------------------------------------------------
+# Curves and surfaces both ways
+
+
+def _part_curve_data(curve: Any) -> NurbsCurve:
+    curve = curve.copy()
+    if curve.isPeriodic():
+        curve.setNotPeriodic()
+    knots = flat_knots(curve.getKnots(), curve.getMultiplicities())
+    return NurbsCurve(curve.Degree, np.array([tuple(p) for p in curve.getPoles()]),
+                      np.array(curve.getWeights()), knots)
+
+
+def _edge_bspline(edge: Any, placement: Any = None, degree: Optional[int] = None) -> Any:
+    """The exact B-spline of an edge over its range, in the edge's direction in its wire,
+    moved by `placement`, raised to `degree`."""
+    curve = edge.Curve.toBSpline(edge.FirstParameter, edge.LastParameter)
+    if edge.Orientation == "Reversed":
+        curve.reverse()
+    if placement is not None:
+        curve.transform(placement.toMatrix())
+    if degree is not None and curve.Degree < degree:
+        curve.increaseDegree(degree)
+    return curve
+
+
+def curve(value: Any, placement: Any = None) -> Curve:
+    """An :class:`rmfsurf.Curve` from a ``Part.Edge`` (its range) or a Part curve
+    (``Part.BSplineCurve``, line, circle, ...: its NURBS form), optionally moved by
+    `placement` (e.g. the inverse of a sketch's placement)."""
+    if isinstance(value, Part.Edge):
+        bspline = _edge_bspline(value, placement)
+    elif hasattr(value, "toBSpline"):
+        bspline = value.toBSpline()
+        if placement is not None:
+            bspline.transform(placement.toMatrix())
+    else:
+        raise TypeError("curve: expected a Part.Edge or a Part curve, got %s"
+                        % type(value).__name__)
+    d = _part_curve_data(bspline)
+    return Curve.from_nurbs(d.degree, d.poles, d.knots, d.weights)
+
+
+def part_curve(value: Curve) -> Any:
+    """An :class:`rmfsurf.Curve` as a ``Part.BSplineCurve`` (knots with multiplicities)."""
+    d = _core.instance(value, "curve", Curve, "an rmfsurf.Curve").nurbs()
+    knots, mults = distinct_knots(d.knots)
+    result = Part.BSplineCurve()
+    result.buildFromPolesMultsKnots([vector(p) for p in d.poles], [int(m) for m in mults],
+                                    [float(k) for k in knots], False, d.degree,
+                                    [float(w) for w in d.weights])
+    return result
+
+
+def surface(value: Any, rulings_along_v: bool = False) -> Surface:
+    """An :class:`rmfsurf.Surface` from a ``Part.BSplineSurface`` (or a Part.Face: its
+    NURBS form); `rulings_along_v` swaps u and v."""
+    if isinstance(value, Part.Face):
+        value = value.toNurbs().Faces[0].Surface
+    if not isinstance(value, Part.BSplineSurface):
+        raise TypeError("surface: expected a Part.BSplineSurface or a Part.Face, got %s"
+                        % type(value).__name__)
+    s = value.copy()
+    if s.isUPeriodic():
+        s.setUNotPeriodic()
+    if s.isVPeriodic():
+        s.setVNotPeriodic()
+    if rulings_along_v:
+        s.exchangeUV()
+    poles = np.array([[tuple(p) for p in row] for row in s.getPoles()])
+    return Surface.from_nurbs(s.UDegree, s.VDegree, poles,
+                              flat_knots(s.getUKnots(), s.getUMultiplicities()),
+                              flat_knots(s.getVKnots(), s.getVMultiplicities()),
+                              np.array(s.getWeights()))
+
+
+def part_surface(value: Surface) -> Any:
+    """An :class:`rmfsurf.Surface` as a ``Part.BSplineSurface`` (pole rows along u)."""
+    d = _core.instance(value, "surface", Surface, "an rmfsurf.Surface").nurbs()
+    ku, mu = distinct_knots(d.knots_u)
+    kv, mv = distinct_knots(d.knots_v)
+    result = Part.BSplineSurface()
+    result.buildFromPolesMultsKnots(
+        [[vector(p) for p in row] for row in d.poles], [int(m) for m in mu],
+        [int(m) for m in mv], [float(k) for k in ku], [float(k) for k in kv], False, False,
+        d.degree_u, d.degree_v, [[float(w) for w in row] for row in d.weights])
+    return result
+
+
+def part_face(value: Surface) -> Any:
+    """An :class:`rmfsurf.Surface` as a ``Part.Face`` bounded by its parameter domain."""
+    return Part.Face(part_surface(value))
+
+
+# ---------------------------------------------------------------------------------------
+# Sweeping a sketch along an edge with a chosen frame
+
+
+METHODS = ("ph-rmf", "mobius", "rrmf", "frenet")
+
+
+def spine_with_frames(spine: Curve, method: str = "ph-rmf", tolerance: float = 1e-4,
+                      initial_normal: Sequence[float] = (0, 0, 1),
+                      segments: Optional[int] = None) -> Tuple[Curve, Frames]:
+    """A spine with rational frames by `method`: "ph-rmf" (PH cubic spline within
+    `tolerance`, its rational RMF), "frenet" (the same spline's rational Frenet frame),
+    "mobius" (exact rational RMF, `segments` Hermite segments, default 16) or "rrmf" (RRMF
+    quintics through `segments` + 1 samples)."""
+    if method in ("ph-rmf", "frenet"):
+        ph, _ = ph_spline_approximate(spine, tolerance)
+        if method == "ph-rmf":
+            return ph, ph_rational_rmf(ph, initial_normal)
+        return ph, ph_frenet_frames(ph)
+    segments = segments or 16
+    if method == "mobius":
+        return mobius_rrmf_approximate(spine, segments, initial_normal)
+    if method == "rrmf":
+        ts = np.linspace(*spine.domain, segments + 1)
+        points, tangents = spine.eval(ts, derivative=True)
+        return rrmf_spline_hermite(points, tangents, initial_normal)
+    raise ValueError("method: expected one of %s, got %r" % (", ".join(METHODS), method))
+
+
+def sweep_sketch_along_edge(sketch: Any, edge: Any, method: str = "ph-rmf",
+                            tolerance: float = 1e-4,
+                            initial_normal: Sequence[float] = (0, 0, 1)) -> Any:
+    """The sketch's edges, in the sketch's own xy coordinates (x along f2, y along f3),
+    swept along `edge` with frames by `method`: one exact rational face per sketch edge, as
+    a Part.Shell (or a single Part.Face)."""
+    spine, frames = spine_with_frames(curve(edge), method, tolerance, initial_normal)
+    local = sketch.Placement.inverse()
+    faces = [part_face(sweep_surface(spine, frames, curve(e, local)))
+             for e in sketch.Shape.Edges]
+    if not faces:
+        raise ValueError("sketch: %s has no edges to sweep" % sketch.Label)
+    return faces[0] if len(faces) == 1 else Part.Shell(faces)
+
+
+# ---------------------------------------------------------------------------------------
+# Wire sweeps
+
+
+def _shape_of(value: Any, name: str) -> Any:
+    """A Part shape from a shape or a document object with one (a sketch, a feature)."""
+    if isinstance(value, Part.Shape):
+        return value
+    shape = getattr(value, "Shape", None)
+    if isinstance(shape, Part.Shape):
+        return shape
+    raise TypeError("%s: expected a Part shape or a document object with one (a sketch), "
+                    "got %s" % (name, type(value).__name__))
+
+
+def _wire_of(value: Any, name: str, what: str) -> Any:
+    shape = _shape_of(value, name)
+    if isinstance(shape, Part.Edge):
+        return Part.Wire([shape])
+    if isinstance(shape, Part.Wire):
+        return shape
+    if shape.ShapeType == "Compound" and len(shape.Wires) == 1 and not shape.Faces:
+        return shape.Wires[0]  # a sketch with one wire
+    raise TypeError("%s: expected %s, got a %s" % (name, what, shape.ShapeType))
+
+
+def path_edges(path: Any) -> List[Edge]:
+    """The wire-sweep edges of a Part.Wire/Part.Edge/sketch, in order: lines as
+    :class:`rmfsurf.Line`, circular arcs as :class:`rmfsurf.Arc`, other edges exactly as
+    NURBS."""
+    wire = _wire_of(path, "wire", "a Part.Wire, a Part.Edge or a sketch with one wire")
+    result: List[Edge] = []
+    for e in wire.OrderedEdges:
+        reverse = e.Orientation == "Reversed"
+        a, b = e.FirstParameter, e.LastParameter
+        start, end = (e.valueAt(b), e.valueAt(a)) if reverse else (e.valueAt(a), e.valueAt(b))
+        if isinstance(e.Curve, (Part.Line, Part.LineSegment)):
+            result.append(Line(tuple(start), tuple(end)))
+        elif isinstance(e.Curve, Part.Circle) and not e.isClosed():
+            result.append(Arc(tuple(start), tuple(e.valueAt(0.5 * (a + b))), tuple(end)))
+        else:
+            result.append(CurveEdge(curve(e)))
+    return result
+
+
+def _wire_curve(wire: Any, origin: np.ndarray, f2: np.ndarray, f3: np.ndarray, name: str,
+                tolerance: float) -> Curve:
+    """A closed wire as one curve in (f2, f3) coordinates about `origin`."""
+    edges = wire.OrderedEdges
+    degree = max(_edge_bspline(e).Degree for e in edges)
+    pieces = []
+    for e in edges:
+        d = _part_curve_data(_edge_bspline(e, degree=degree))
+        local = d.poles - origin
+        pieces.append(NurbsCurve(d.degree, np.c_[local @ f2, local @ f3, np.zeros(len(local))],
+                                 d.weights, d.knots))
+    joined = join_nurbs(pieces, name, tolerance)
+    return Curve.from_nurbs(joined.degree, joined.poles, joined.knots, joined.weights)
+
+
+def profile_curves(profile: Any, origin: Any, tangent: Any, tolerance: float = 1e-4
+                   ) -> Tuple[Curve, List[Curve], np.ndarray]:
+    """A planar profile (Part.Face with holes, closed Part.Wire, or a sketch) in the plane
+    normal to `tangent` through `origin`, as the 2-D outer curve, holes and initial normal
+    f2 (the x direction of the profile's placement, e.g. the sketch's x axis) of
+    :func:`rmfsurf.wire_sweep`."""
+    shape = _shape_of(profile, "profile")
+    if isinstance(shape, Part.Face):
+        face = shape
+    else:
+        wire = _wire_of(shape, "profile", "a Part.Face, a closed Part.Wire or a sketch")
+        if not wire.isClosed():
+            raise ValueError("profile: the wire is not closed")
+        face = Part.Face(wire)
+    if not isinstance(face.Surface, Part.Plane):
+        raise ValueError("profile: not planar")
+    o = np.asarray(origin, dtype=float)
+    t = np.asarray(tangent, dtype=float)
+    t /= np.linalg.norm(t)
+    normal = np.array(tuple(face.Surface.Axis))
+    tilt = np.linalg.norm(np.cross(normal, t))
+    if tilt > 1e-6:
+        raise ValueError("profile: its plane must be normal to the wire at the wire's start "
+                         "(it is tilted by %.3g degrees)" % np.degrees(np.arcsin(min(tilt, 1))))
+    off = abs(np.dot(np.array(tuple(face.Surface.Position)) - o, normal))
+    if off > tolerance:
+        raise ValueError("profile: its plane must pass through the wire's start point (it "
+                         "is %.3g away)" % off)
+    placement = getattr(profile, "Placement", None) if not isinstance(profile, Part.Shape) else None
+    x_axis = placement.Rotation.multVec(V(1, 0, 0)) if placement is not None else None
+    x = np.array(tuple(x_axis if x_axis is not None else face.Surface.XAxis))
+    f2 = x - np.dot(x, t) * t
+    f2 /= np.linalg.norm(f2)
+    f3 = np.cross(t, f2)
+    outer = _wire_curve(face.OuterWire, o, f2, f3, "profile", tolerance)
+    holes = [_wire_curve(w, o, f2, f3, "profile hole %d" % i, tolerance)
+             for i, w in enumerate(w for w in face.Wires if not w.isSame(face.OuterWire))]
+    return outer, holes, f2
+
+
+def part_shape(value: Shape, tolerance: float = 1e-6) -> Any:
+    """An :class:`rmfsurf.Shape` as a Part.Shape: exact swept faces and planar caps sewn
+    into a Part.Solid when the shape is a solid (else a Part.Shell)."""
+    faces = []
+    for f in _core.instance(value, "shape", Shape, "an rmfsurf.Shape").faces():
+        if f.kind == "swept":
+            faces.append(part_face(f.surface))
+        else:
+            wires = [Part.Wire([part_curve(c).toShape()]) for c in f.loops]
+            faces.append(Part.Face(Part.Plane(vector(f.plane_origin), vector(f.plane_normal)),
+                                   wires))
+    shell = Part.Shell(faces)
+    shell.sewShape(tolerance)
+    if not value.is_solid:
+        return shell
+    solid = Part.Solid(Part.Shell(shell.Faces))
+    solid.fix(tolerance, tolerance, tolerance)
+    if solid.Volume < 0:
+        solid.reverse()
+    return solid
+
+
+def _start_frame(wire: Any) -> Tuple[np.ndarray, np.ndarray]:
+    first = _wire_of(wire, "wire", "a Part.Wire, a Part.Edge or a sketch").OrderedEdges[0]
+    bspline = _edge_bspline(first)
+    a = bspline.FirstParameter
+    return np.array(tuple(bspline.value(a))), np.array(tuple(bspline.tangent(a)[0]))
+
+
+def sweep(wire: Any, profile: Any, *, solid: bool = True, corner: str = "round",
+          corner_radius: Optional[float] = None, tolerance: float = 1e-4) -> Any:
+    """Sweeps `profile` along `wire` with rotation-minimizing frames (rmf_wire_sweep).
+
+    Args:
+        wire: a Part.Wire, a Part.Edge or a sketch (one wire): lines, arcs and curves.
+        profile: a planar Part.Face (holes allowed), a closed Part.Wire or a sketch, in the
+            plane normal to the wire at its start, where it is in space; its x axis (a
+            sketch's) is the frame's initial normal f2.
+        solid: close the result with planar caps into a solid.
+        corner: "round" or "miter".
+        corner_radius: the rounding radius of round corners (None: the library's).
+        tolerance: the distance tolerance of the sweep.
+
+    Returns:
+        A Part.Shape: a Part.Solid (or a Part.Shell with ``solid=False``).
+    """
+    edges = path_edges(wire)
+    origin, tangent = _start_frame(wire)
+    outer, holes, f2 = profile_curves(profile, origin, tangent, tolerance)
+    result = wire_sweep(edges, outer, holes, solid=solid, corner=corner,
+                        corner_radius=corner_radius, tolerance=tolerance, initial_normal=f2)
+    return part_shape(result, min(tolerance, 1e-6))
+
+
+# ---------------------------------------------------------------------------------------
+# Cone splines and flat patterns
+
+
+def cone_spline_from_face(face: Any, tolerance: float = 1e-4, max_pieces: int = 10000
+                          ) -> Tuple[ConeSpline, float, float, float]:
+    """A developable face (its NURBS form of degree 1 in one direction: the rulings)
+    approximated by a cone spline. Returns (spline, t_min, t_max, max_error): the strip
+    spans the first ruling's length about its middle."""
+    nurbs = face.toNurbs().Faces[0].Surface
+    if nurbs.UDegree != 1 and nurbs.VDegree != 1:
+        raise ValueError("face: not ruled: its NURBS form has degree (%d, %d), and a "
+                         "developable needs degree 1 along its rulings"
+                         % (nurbs.UDegree, nurbs.VDegree))
+    ruled = surface(nurbs, rulings_along_v=nurbs.UDegree != 1)
+    spline = cone_spline_approximate_ruled(ruled, tolerance, max_pieces=max_pieces)
+    u0, u1, v0, _ = ruled.domain
+    half = 0.5 * float(np.linalg.norm(ruled.eval(u0, v0) - ruled.eval(u1, v0)))
+    return spline, -half, half, spline.fit_error
+
+
+def flat_pattern_edges(developed: ConeSpline, t_min: float, t_max: float) -> List[Any]:
+    """The cutting outline of a developed cone spline strip as Part edges: circular arcs
+    (or lines) along both boundaries, one per boundary segment, and the two end rulings."""
+    edges = []
+    for t in (t_min, t_max):
+        boundary = developed.boundary(t)
+        breaks = sorted(set(boundary.nurbs().knots))
+        for a, b in zip(breaks, breaks[1:]):
+            p, m, q = (vector(boundary.eval(s)) for s in (a, 0.5 * (a + b), b))
+            line = Part.LineSegment(p, q).toShape()
+            if line.distToShape(Part.Vertex(m))[0] < 1e-12 * (1 + p.Length):
+                edges.append(line)
+            else:
+                edges.append(Part.Arc(p, m, q).toShape())
+    first, last = developed.boundary(t_min), developed.boundary(t_max)
+    for s in first.domain:
+        edges.append(Part.LineSegment(vector(first.eval(s)), vector(last.eval(s))).toShape())
+    return edges
+
+
+# ---------------------------------------------------------------------------------------
+# The macros' entry points: they take the Gui selection and the document, so that they
+# run (and are tested) without the GUI.
+
+
+def _selected(selection: Any, want: Any) -> Any:
+    for item in selection:
+        for name, sub in zip(item.SubElementNames or [""], item.SubObjects or [None]):
+            found = want(item.Object, name, sub)
+            if found is not None:
+                return found
+    return None
+
+
+def sweep_selection(selection: Any, document: Any, method: str = "ph-rmf",
+                    tolerance: float = 1e-4) -> Any:
+    """Macro RmfSweep: sweeps the selected sketch along the selected edge."""
+    sketch = _selected(selection, lambda o, n, s: o if o.TypeId == "Sketcher::SketchObject" else None)
+    edge = _selected(selection, lambda o, n, s: s if n.startswith("Edge") and o is not sketch else None)
+    if sketch is None or edge is None:
+        raise ValueError("select a profile sketch and an edge of another object (the spine)")
+    feature = document.addObject("Part::Feature", "RmfSweep")
+    feature.Shape = sweep_sketch_along_edge(sketch, edge, method, tolerance)
+    document.recompute()
+    return feature
+
+
+def cone_spline_selection(selection: Any, document: Any, tolerance: float = 1e-4) -> List[Any]:
+    """Macro RmfConeSpline: the selected developable face as a cone spline surface, its
+    development (a flat face in the xy-plane) and its cutting outline."""
+    face = _selected(selection, lambda o, n, s: s if n.startswith("Face") else None)
+    if face is None:
+        raise ValueError("select one developable face")
+    spline, t_min, t_max, error = cone_spline_from_face(face, tolerance)
+    developed = spline.develop()
+    features = []
+    for name, shape in (("ConeSpline", part_face(spline.surface(t_min, t_max))),
+                        ("FlatPattern", part_face(developed.surface(t_min, t_max))),
+                        ("CuttingOutline",
+                         Part.Compound(flat_pattern_edges(developed, t_min, t_max)))):
+        feature = document.addObject("Part::Feature", name)
+        feature.Shape = shape
+        features.append(feature)
+    document.recompute()
+    FreeCAD.Console.PrintMessage("rmfsurf: %d cone pieces within %.3g of the face\n"
+                                 % (spline.piece_count, error))
+    return features
