@@ -21,12 +21,22 @@ use support::{fresh_dir, python_env, python_wheel, root, run_cli, EXAMPLES, SETU
 fn install_for_freecad(home: &Path) {
     let target = home.join(".local/share/FreeCAD/AdditionalPythonPackages");
     let status = Command::new(python_env().join("bin/pip"))
-        .args(["install", "--quiet", "--no-deps", "--disable-pip-version-check", "--target"])
+        .args([
+            "install",
+            "--quiet",
+            "--no-deps",
+            "--disable-pip-version-check",
+            "--target",
+        ])
         .arg(&target)
         .arg(python_wheel())
         .status()
         .expect("pip runs");
-    assert!(status.success(), "pip install --target {} failed", target.display());
+    assert!(
+        status.success(),
+        "pip install --target {} failed",
+        target.display()
+    );
 }
 
 /// The script's report lines (marked "| "), without FreeCAD's banner and progress output.
@@ -81,7 +91,9 @@ fn freecad_reads_our_files_and_builds_exact_part_objects() {
 /// package installed as docs/install.md says); it must leave a valid shape in `result`.
 fn run_docs_example(doc: &str, heading: &str, name: &str) {
     let text = std::fs::read_to_string(root().join(doc)).expect(doc);
-    let section = text.find(heading).unwrap_or_else(|| panic!("{doc} has {heading:?}"));
+    let section = text
+        .find(heading)
+        .unwrap_or_else(|| panic!("{doc} has {heading:?}"));
     let start = section
         + text[section..]
             .find("```python\n")
@@ -113,5 +125,9 @@ fn run_docs_example(doc: &str, heading: &str, name: &str) {
 #[test]
 fn docs_freecad_examples_run() {
     run_docs_example("docs/install.md", "## FreeCAD", "freecad_docs_install");
-    run_docs_example("docs/cad-integration.md", "## FreeCAD", "freecad_docs_integration");
+    run_docs_example(
+        "docs/cad-integration.md",
+        "## FreeCAD",
+        "freecad_docs_integration",
+    );
 }

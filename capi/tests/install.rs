@@ -242,3 +242,46 @@ fn cmake_version_file_refuses_other_versions() {
         }
     }
 }
+
+/// The commands of docs/install.md ("C and C++"), run as written in a scratch directory
+/// holding the consumer projects (and `scripts/install`, forwarding to this repository's),
+/// with PREFIX a prefix of its own instead of ~/.local.
+#[test]
+fn docs_install_commands_run() {
+    let text = std::fs::read_to_string(root().join("docs/install.md")).expect("docs/install.md");
+    let section = text
+        .find("## C and C++")
+        .expect("docs/install.md has ## C and C++");
+    let start = section + text[section..].find("```sh\n").expect("a sh block") + 6;
+    let end = start + text[start..].find("```").expect("the end of the block");
+    let commands: String = text[start..end]
+        .lines()
+        .filter(|l| !l.starts_with("PREFIX="))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    let dir = consumers("docs").parent().expect("scratch").to_path_buf();
+    std::fs::create_dir_all(dir.join("examples")).unwrap();
+    std::fs::rename(dir.join("consumers"), dir.join("examples/consumers")).unwrap();
+    std::fs::create_dir_all(dir.join("scripts")).unwrap();
+    let forward = format!(
+        "#!/bin/sh\nexec {:?} \"$@\"\n",
+        root().join("scripts/install").canonicalize().unwrap()
+    );
+    std::fs::write(dir.join("scripts/install"), forward).unwrap();
+    succeeds(
+        Command::new("chmod")
+            .arg("+x")
+            .arg(dir.join("scripts/install")),
+    );
+    let out = succeeds(
+        Command::new("bash")
+            .args(["-euo", "pipefail", "-c", &commands])
+            .current_dir(&dir)
+            .env("PREFIX", scratch("docs-prefix")),
+    );
+    assert_eq!(
+        out.matches("consumer OK").count(),
+        3,
+        "the Makefile, shared and static CMake consumers ran:\n{out}"
+    );
+}
