@@ -15,7 +15,7 @@ mod support;
 
 use std::path::PathBuf;
 use std::process::Command;
-use support::{python_env, python_wheel, root, SETUP_HINT};
+use support::{maturin_lock, python_env, python_wheel, root, SETUP_HINT};
 
 /// A PATH with the virtual environment and the system's programs but no Rust toolchain.
 fn path_without_rust(venv: &std::path::Path) -> String {
@@ -79,12 +79,14 @@ fn pip_install_of_the_source_builds_the_library() {
         .status()
         .unwrap_or_else(|e| panic!("cannot run /usr/bin/python3 ({e}): {SETUP_HINT}"));
     assert!(made.success(), "python3 -m venv failed");
+    let maturin = maturin_lock();
     let start = std::time::Instant::now();
     let out = Command::new(venv.join("bin/pip"))
         .args(["install", "--quiet", "--disable-pip-version-check"])
         .arg(root().join("python"))
         .output()
         .expect("pip runs");
+    drop(maturin);
     assert!(
         out.status.success(),
         "pip install ./python failed:\n{}",

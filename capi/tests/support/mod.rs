@@ -8,7 +8,7 @@
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
-use std::sync::OnceLock;
+use std::sync::{Mutex, MutexGuard, OnceLock};
 
 pub const SETUP_HINT: &str =
     "run the README's test command (scripts/test), which installs the Debian packages";
@@ -255,6 +255,13 @@ pub fn python_env() -> PathBuf {
     .clone()
 }
 
+/// Held while maturin builds the package: every maturin build stages the library in the same
+/// target/maturin directory, so two at once remove each other's files.
+pub fn maturin_lock() -> MutexGuard<'static, ()> {
+    static LOCK: Mutex<()> = Mutex::new(());
+    LOCK.lock().unwrap_or_else(|poisoned| poisoned.into_inner())
+}
+
 /// The wheel of the Python package (`pip wheel ./python`, maturin), carrying the library,
 /// built once into target/python-wheel; its path.
 pub fn python_wheel() -> PathBuf {
@@ -263,6 +270,7 @@ pub fn python_wheel() -> PathBuf {
         .get_or_init(|| {
             let dir = root().join("target/python-wheel");
             let _ = std::fs::remove_dir_all(&dir);
+            let _maturin = maturin_lock();
             let start = std::time::Instant::now();
             let out = Command::new(python_env().join("bin/pip"))
                 .args([
