@@ -60,7 +60,7 @@ mod testing;
 pub use glam;
 
 // Errors.
-pub use error::{Error, ErrorKind, Result, ResultExt};
+pub use error::{Error, ErrorKind, Num, Result, ResultExt};
 
 // Curves and surfaces: rational Bézier pieces, NURBS, sampled curves, Hermite data.
 pub use bezier::{
