@@ -13,7 +13,7 @@ use super::Frame;
 use crate::bezier::bernstein::{self, MAX_DEGREE};
 use crate::bezier::{check_breaks, locate, RationalBezierCurve};
 use crate::error::{invalid, Result};
-use crate::math::normal_plane_unit;
+use crate::math::{angle_between, normal_plane_unit, reciprocal_length};
 use glam::DVec3;
 
 /// Largest distance between unit tangents of consecutive segments at their joint.
@@ -101,6 +101,15 @@ impl RationalFrameSegment {
         for (a, b) in self.f2.iter_mut().zip(self.f3.iter_mut()) {
             (*a, *b) = (c * *a + s * *b, c * *b - s * *a);
         }
+    }
+
+    /// Sets the frame at the start (`at_start`) or the end of the segment to `frame`, keeping
+    /// the denominator there: the end coefficients become `frame.f2·d`, `frame.f3·d`.
+    pub fn pin_end(&mut self, at_start: bool, frame: &Frame) {
+        let i = if at_start { 0 } else { self.degree() };
+        let d = self.denominator[i];
+        self.f2[i] = frame.f2 * d;
+        self.f3[i] = frame.f3 * d;
     }
 
     /// One frame vector as a rational Bézier curve of vectors (its "points" lie on the unit
@@ -240,6 +249,73 @@ impl RationalFrames {
         })
     }
 
+    /// Joins per-piece RMFs of a G1 curve into one frame field whose frame at every
+    /// breakpoint is computed once and shared by the two pieces meeting there, so that they
+    /// agree exactly (no tolerance: nothing is compared). `tangents[k]` is the curve's unit
+    /// tangent at `breaks[k]` where it is known exactly (the Hermite data at the joints of a
+    /// spline), `None` inside a segment, where the tangent of the piece ending there is used.
+    /// At each breakpoint the shared frame has that tangent and f₂ = the previous piece's
+    /// end f₂ put into its normal plane (`initial_normal` at the start); the next piece is
+    /// turned by a constant about its tangent to start with it, and both pieces' end
+    /// coefficients are set to it. Also returns the largest angle by which a piece's own end
+    /// frame was moved (its tangent against the shared one, or its f₂ about it): the
+    /// rounding of the construction, a figure for the tests.
+    pub fn joined(
+        segments: Vec<RationalFrameSegment>,
+        breaks: Vec<f64>,
+        tangents: &[Option<DVec3>],
+        initial_normal: DVec3,
+    ) -> Result<(Self, f64)> {
+        check_breaks(&breaks, segments.len(), "frame breakpoints")?;
+        if tangents.len() != breaks.len() {
+            return invalid!(
+                "{} joint tangents for {} frame breakpoints",
+                tangents.len(),
+                breaks.len()
+            );
+        }
+        let shared = |tangent: DVec3, f2: DVec3, name: &str| -> Result<Frame> {
+            Ok(Frame::from_tangent_normal(
+                tangent,
+                normal_plane_unit(f2, tangent, name)?,
+            ))
+        };
+        let mut correction = 0.0f64;
+        let mut joined: Vec<RationalFrameSegment> = Vec::with_capacity(segments.len());
+        let mut joint: Option<Frame> = None;
+        for (k, mut segment) in segments.into_iter().enumerate() {
+            let start = segment.frame(0.0);
+            let frame = match joint {
+                None => {
+                    let tangent = tangents[0].unwrap_or(start.tangent);
+                    shared(tangent, initial_normal, "initial_normal")?
+                }
+                Some(frame) => frame,
+            };
+            correction = correction.max(angle_between(start.tangent, frame.tangent));
+            let turn =
+                angle_about_tangent(&start, &Frame::from_tangent_normal(start.tangent, frame.f2));
+            segment.rotate(turn);
+            segment.pin_end(true, &frame);
+            let end = segment.frame(1.0);
+            let tangent = tangents[k + 1].unwrap_or(end.tangent);
+            let next = shared(tangent, end.f2, "the frame at a joint")?;
+            correction = correction
+                .max(angle_between(end.tangent, next.tangent))
+                .max(angle_between(end.f2, next.f2));
+            segment.pin_end(false, &next);
+            joined.push(segment);
+            joint = Some(next);
+        }
+        Ok((
+            Self {
+                segments: joined,
+                breaks,
+            },
+            correction,
+        ))
+    }
+
     pub fn segments(&self) -> &[RationalFrameSegment] {
         &self.segments
     }
@@ -248,10 +324,10 @@ impl RationalFrames {
         &self.breaks
     }
 
-    /// Segment, local parameter and segment length at the global parameter `t`.
+    /// Segment, local parameter and 1 / segment length at the global parameter `t`.
     fn locate(&self, t: f64) -> (usize, f64, f64) {
         let (k, s) = locate(&self.breaks, t);
-        (k, s, self.breaks[k + 1] - self.breaks[k])
+        (k, s, reciprocal_length(self.breaks[k], self.breaks[k + 1]))
     }
 
     pub fn frame(&self, t: f64) -> Frame {
@@ -261,9 +337,9 @@ impl RationalFrames {
 
     /// f₂ and df₂/dt (global parameter).
     pub fn f2_with_derivative(&self, t: f64) -> (DVec3, DVec3) {
-        let (k, s, h) = self.locate(t);
+        let (k, s, scale) = self.locate(t);
         let (f2, d) = self.segments[k].f2_with_derivative(s);
-        (f2, d / h)
+        (f2, d * scale)
     }
 }
 

@@ -172,14 +172,23 @@ impl PhCubic {
 
     /// min σ / max σ on [0, 1]. σ/3 = L₁ − 2bv + cv² is convex (c = L₁ − 2L₂cos θ + L₃ > 0), so
     /// its maximum is at an end and its minimum at an end or at the vertex, where it is
-    /// (L₁L₃ − L₂²cos²θ)/c (the a²/c of (31)).
+    /// (L₁L₃ − L₂²cos²θ)/c (the a²/c of (31)). For L₂cos θ ≥ 0 the value there is taken from
+    /// the Bernstein form L₁(1 − v)² + 2L₂cos θ v(1 − v) + L₃v² instead, a sum of positive
+    /// terms: for nearly straight polygons the literal formula is 0/0 (a cubic turning by
+    /// 2e-9 rad had a "cusp"), while σ is then nearly constant and any v near the vertex
+    /// gives its least value.
     pub fn speed_ratio(&self) -> f64 {
         let [l1, _, l3] = self.leg_lengths();
         let m = self.speed_middle();
         let (b, c) = (l1 - m, l1 - 2.0 * m + l3);
         let vertex = b / c;
         let least = if vertex > 0.0 && vertex < 1.0 {
-            (l1 * l3 - m * m).max(0.0) / c
+            if m >= 0.0 {
+                let u = 1.0 - vertex;
+                l1 * u * u + 2.0 * m * vertex * u + l3 * vertex * vertex
+            } else {
+                (l1 * l3 - m * m).max(0.0) / c
+            }
         } else {
             l1.min(l3)
         };
