@@ -274,4 +274,34 @@ mod tests {
             .message()
             .contains("normal"));
     }
+
+    /// Issue finding: (1e200, 0, 0) inverted in the unit sphere gave (0, 0, 0) (the square
+    /// 1e400 overflowed), a sphere of radius 1e300 gave (inf, NaN, NaN). Images are now
+    /// computed without squares: exact where representable, `None` where they are not.
+    #[test]
+    fn images_neither_underflow_nor_overflow_in_squares() {
+        let unit = Inversion::sphere(DVec3::ZERO, 1.0).unwrap();
+        let image = unit.apply(DVec3::new(1e200, 0.0, 0.0)).unwrap();
+        assert!(
+            (image.x - 1e-200).abs() < 1e-215 && image.y == 0.0,
+            "{image}"
+        );
+        let tiny = unit.apply(DVec3::new(0.0, -3e-200, 4e-200)).unwrap();
+        assert!(
+            (tiny / 1e199 - DVec3::new(0.0, -1.2, 1.6)).length() < 1e-15,
+            "{tiny}"
+        );
+        let huge = Inversion::sphere(DVec3::new(1.0, 2.0, 3.0), 1e300).unwrap();
+        assert_eq!(
+            huge.apply(DVec3::new(2.0, 2.0, 3.0)),
+            None,
+            "1e600 is not a double"
+        );
+        let far = huge.apply(DVec3::new(1.0, 2.0, 3.0 + 1e300)).unwrap();
+        assert!((far / 1e300 - DVec3::Z).length() < 1e-15, "{far}");
+        let d = unit.differential(DVec3::new(1e200, 0.0, 0.0), DVec3::Y);
+        assert!((d.y - 1e-400f64.max(0.0)).abs() <= f64::MIN_POSITIVE && d.is_finite());
+        let n = unit.normalized_differential(DVec3::new(1e200, 0.0, 0.0), DVec3::X);
+        assert_eq!(n, -DVec3::X);
+    }
 }
