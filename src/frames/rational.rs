@@ -16,8 +16,31 @@ use crate::error::{invalid, Result};
 use crate::math::{angle_between, normal_plane_unit, reciprocal_length};
 use glam::DVec3;
 
-/// Largest distance between unit tangents of consecutive segments at their joint.
+/// Largest distance between unit tangents of consecutive segments at their joint, unless the
+/// rounding of the curve's control points allows more ([`g1_tolerance`]).
 const G1_TOLERANCE: f64 = 1e-9;
+
+/// The G1 tolerance for frames along `curve`: [`G1_TOLERANCE`], or the direction error of
+/// its end legs, 64·ε·|P|/|leg| (differences of control points rounded to ε|P|), where that
+/// is larger — a spline of legs 0.18 translated by 1e6 has tangents known to 1.2e-9 only
+/// (it was refused as "not G1").
+pub fn g1_tolerance(curve: &crate::bezier::PiecewiseCurve) -> f64 {
+    let mut worst = G1_TOLERANCE;
+    for segment in curve.segments() {
+        let poles: Vec<DVec3> = segment.poles().collect();
+        let n = poles.len() - 1;
+        if n == 0 {
+            continue;
+        }
+        let size = crate::math::largest_coordinate(poles.iter().copied());
+        let leg = crate::math::robust_length(poles[1] - poles[0])
+            .min(crate::math::robust_length(poles[n] - poles[n - 1]));
+        if leg > 0.0 {
+            worst = worst.max(64.0 * f64::EPSILON * size / leg);
+        }
+    }
+    worst
+}
 
 /// Which frame vector.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -186,11 +209,12 @@ pub fn joining_turn(
     previous_end: Option<&Frame>,
     initial_normal: DVec3,
     k: usize,
+    tolerance: f64,
 ) -> Result<f64> {
     let target = match previous_end {
         None => normal_plane_unit(initial_normal, start.tangent, "initial_normal")?,
         Some(end) => {
-            if (end.tangent - start.tangent).length() > G1_TOLERANCE {
+            if (end.tangent - start.tangent).length() > tolerance.max(G1_TOLERANCE) {
                 return invalid!(
                     "segments {} and {k} do not share their tangent: the spline is not G1",
                     k - 1
@@ -205,18 +229,50 @@ pub fn joining_turn(
     ))
 }
 
-/// Rational frames along a piecewise curve; segment k lives on `[breaks[k], breaks[k+1]]`.
+/// What rational frames are known to be, against the rotation-minimizing frame (RMF) of
+/// their curve: set by the construction that made them, so that analyses which hold for an
+/// RMF only (the profile-surface analysis of Mäurer & Jüttler §2.3) refuse other frames, and
+/// accuracy measures take off a twist only where one was built in.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Turning {
+    /// A rotation-minimizing frame: exact (Möbius images, RRMF quintics) or the rational
+    /// approximation of one (PH cubic splines, §3.4 of Mäurer & Jüttler).
+    RotationMinimizing,
+    /// The RMF turned in addition by `total` radians from start to end, linearly in arc
+    /// length (a twist, or the closure of a closed spine).
+    Twisted { total: f64 },
+    /// Nothing is known: Frenet frames, frames of unknown origin.
+    Unknown,
+}
 
+/// Rational frames along a piecewise curve; segment k lives on `[breaks[k], breaks[k+1]]`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct RationalFrames {
     segments: Vec<RationalFrameSegment>,
     breaks: Vec<f64>,
+    turning: Turning,
 }
 
 impl RationalFrames {
+    /// Frames of unknown turning ([`Turning::Unknown`]; see [`RationalFrames::with_turning`]).
     pub fn new(segments: Vec<RationalFrameSegment>, breaks: Vec<f64>) -> Result<Self> {
         check_breaks(&breaks, segments.len(), "frame breakpoints")?;
-        Ok(Self { segments, breaks })
+        Ok(Self {
+            segments,
+            breaks,
+            turning: Turning::Unknown,
+        })
+    }
+
+    /// The same frames, declared to turn as `turning` says (the constructions that know it).
+    pub fn with_turning(mut self, turning: Turning) -> Self {
+        self.turning = turning;
+        self
+    }
+
+    /// How the frames turn against the RMF, as far as known.
+    pub fn turning(&self) -> Turning {
+        self.turning
     }
 
     /// Joins per-segment rational frames of a G1 spline into one continuous frame field:
@@ -230,6 +286,17 @@ impl RationalFrames {
         breaks: Vec<f64>,
         initial_normal: DVec3,
     ) -> Result<Self> {
+        Self::chained_within(segments, breaks, initial_normal, 0.0)
+    }
+
+    /// [`RationalFrames::chained`] with the G1 tolerance of the curve the frames follow
+    /// (see [`g1_tolerance`]).
+    pub fn chained_within(
+        segments: Vec<RationalFrameSegment>,
+        breaks: Vec<f64>,
+        initial_normal: DVec3,
+        tolerance: f64,
+    ) -> Result<Self> {
         check_breaks(&breaks, segments.len(), "frame breakpoints")?;
         let mut joined: Vec<RationalFrameSegment> = Vec::with_capacity(segments.len());
         for (k, mut segment) in segments.into_iter().enumerate() {
@@ -239,6 +306,7 @@ impl RationalFrames {
                 previous_end.as_ref(),
                 initial_normal,
                 k,
+                tolerance,
             )?;
             segment.rotate(angle);
             joined.push(segment);
@@ -246,6 +314,7 @@ impl RationalFrames {
         Ok(Self {
             segments: joined,
             breaks,
+            turning: Turning::Unknown,
         })
     }
 
@@ -311,6 +380,7 @@ impl RationalFrames {
             Self {
                 segments: joined,
                 breaks,
+                turning: Turning::Unknown,
             },
             correction,
         ))

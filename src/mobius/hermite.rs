@@ -26,7 +26,7 @@ use super::segment_map::{chosen_segment_map, SegmentMap};
 use crate::bezier::{PiecewiseCurve, RationalBezierCurve};
 use crate::curve::{check_sample_count, uniform_parameters, ParametricCurve};
 use crate::error::{invalid, Error, Result};
-use crate::frames::rational::{RationalFrameSegment, RationalFrames};
+use crate::frames::rational::{RationalFrameSegment, RationalFrames, Turning};
 use crate::hermite::{hermite_sequence, HermiteSegment};
 use crate::ph_cubic::hermite::ph_cubic_hermite;
 use crate::ph_cubic::PhCubic;
@@ -182,7 +182,7 @@ pub fn mobius_hermite(
     )?;
     Ok(RationalRmfCurve {
         curve: PiecewiseCurve::new(pieces.curves, pieces.breaks)?,
-        frames,
+        frames: frames.with_turning(Turning::RotationMinimizing),
         joint_correction: pieces.correction.max(frame_correction),
     })
 }

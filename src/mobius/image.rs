@@ -22,7 +22,7 @@ use super::transform::{Inversion, MobiusMap};
 use crate::bezier::bernstein::{positive_subdivision, product, restrict, MAX_DEGREE};
 use crate::bezier::{PiecewiseCurve, RationalBezierCurve};
 use crate::error::{invalid, Result};
-use crate::frames::rational::{RationalFrameSegment, RationalFrames};
+use crate::frames::rational::{RationalFrameSegment, RationalFrames, Turning};
 use crate::math::largest_coordinate;
 use glam::{DVec3, DVec4};
 
@@ -305,8 +305,15 @@ fn map_pieces(
             breaks.push(global_parameter(a, b, s1));
         }
     }
+    // Theorem 1: the image of an RMF is an RMF; a twist against it is not kept as such
+    // (the image's arc length is another).
     let frames = match frames {
-        Some(_) => Some(RationalFrames::new(frame_segments, breaks.clone())?),
+        Some(f) => Some(
+            RationalFrames::new(frame_segments, breaks.clone())?.with_turning(match f.turning() {
+                Turning::RotationMinimizing => Turning::RotationMinimizing,
+                _ => Turning::Unknown,
+            }),
+        ),
         None => None,
     };
     Ok((PiecewiseCurve::new(segments, breaks)?, frames))

@@ -147,9 +147,14 @@ impl<'a> FramePieces<'a> {
     }
 
     /// The frames joined continuously, starting at `initial_normal` (see
-    /// [`RationalFrames::chained`]).
-    pub fn into_chained_frames(self, initial_normal: DVec3) -> Result<RationalFrames> {
-        RationalFrames::chained(self.segments, self.breaks, initial_normal)
+    /// [`RationalFrames::chained_within`]), within the G1 tolerance `tolerance` of the
+    /// spline.
+    pub fn into_chained_frames(
+        self,
+        initial_normal: DVec3,
+        tolerance: f64,
+    ) -> Result<RationalFrames> {
+        RationalFrames::chained_within(self.segments, self.breaks, initial_normal, tolerance)
     }
 }
 
