@@ -140,6 +140,12 @@ pub mod validate {
     pub use crate::math::check_finite;
 }
 
+/// Overflow-free arithmetic the C layer shares with the geometry: points of a parameter
+/// interval of any width, lengths of vectors of any size.
+pub mod numeric {
+    pub use crate::math::{lerp, robust_length};
+}
+
 /// What most programs need: `use rmfsurf::prelude::*;`.
 pub mod prelude {
     pub use crate::{
