@@ -241,8 +241,11 @@ pub fn turning_segment_map(h: &HermiteSegment) -> Option<SegmentMap> {
                 continue;
             }
             // Farther from the end points: a smaller |κ| (the centre is at distance 1/|κ|).
+            // Symmetric data (a helix) have two mirror solutions of equal |κ|: the first
+            // found (the turning along +plane normal) is kept unless another is clearly
+            // farther, so that rounding (a translation of the data) cannot swap them.
             let closeness = towards(root).curvature.abs();
-            if best.is_none_or(|(c, _)| closeness < c) {
+            if best.is_none_or(|(c, _)| closeness < c * (1.0 - 1e-6)) {
                 best = Some((closeness, root));
             }
         }
