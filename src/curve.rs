@@ -4,7 +4,7 @@
 
 use crate::bezier::PiecewiseCurve;
 use crate::error::{invalid, Result};
-use crate::math::robust_normalize;
+use crate::math::{lerp, robust_normalize};
 use glam::DVec3;
 
 /// A regular parametric space curve.
@@ -70,7 +70,7 @@ pub fn uniform_parameters((lo, hi): (f64, f64), count: usize) -> Vec<f64> {
             if i == last {
                 hi
             } else {
-                lo + (hi - lo) * i as f64 / last as f64
+                lerp(lo, hi, i as f64 / last as f64)
             }
         })
         .collect()

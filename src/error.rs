@@ -142,9 +142,69 @@ macro_rules! no_solution {
 }
 pub(crate) use {invalid, no_solution};
 
+/// A number as messages print it: at most six significant digits, in plain form between
+/// 1e-4 and 1e6 and as `1.5e-200` outside (Rust's `{}` writes 1e200 with 200 digits). The
+/// one formatter of numbers in messages, of the geometry and of the C layer.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Num(pub f64);
+
+impl fmt::Display for Num {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let x = self.0;
+        if !x.is_finite() || x == 0.0 {
+            return write!(f, "{x}");
+        }
+        let magnitude = x.abs();
+        if (1e-4..1e6).contains(&magnitude) {
+            // Six significant digits, trailing zeros dropped.
+            let decimals = (5 - magnitude.log10().floor() as i32).max(0) as usize;
+            let text = format!("{x:.decimals$}");
+            let text = if text.contains('.') {
+                text.trim_end_matches('0').trim_end_matches('.')
+            } else {
+                &text
+            };
+            write!(f, "{text}")
+        } else {
+            let shortest = format!("{x:e}");
+            let digits = shortest
+                .split('e')
+                .next()
+                .unwrap_or("")
+                .trim_start_matches('-');
+            if digits.chars().filter(char::is_ascii_digit).count() <= 6 {
+                return write!(f, "{shortest}");
+            }
+            let text = format!("{x:.5e}");
+            let (mantissa, exponent) = text.split_once('e').expect("exponent form");
+            let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
+            write!(f, "{mantissa}e{exponent}")
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn numbers_print_short() {
+        let cases = [
+            (1e200, "1e200"),
+            (-2.5e-320, "-2.5e-320"),
+            (0.1, "0.1"),
+            (2.176412345678, "2.17641"),
+            (123456.7, "123457"),
+            (0.5, "0.5"),
+            (0.0, "0"),
+            (1e-5, "1e-5"),
+            (4e-320, "4e-320"),
+            (f64::NAN, "NaN"),
+        ];
+        for (x, expected) in cases {
+            assert_eq!(Num(x).to_string(), expected, "{x:e}");
+        }
+    }
 
     #[test]
     fn context_reads_outermost_first() {

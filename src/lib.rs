@@ -60,7 +60,7 @@ mod testing;
 pub use glam;
 
 // Errors.
-pub use error::{Error, ErrorKind, Result, ResultExt};
+pub use error::{Error, ErrorKind, Num, Result, ResultExt};
 
 // Curves and surfaces: rational Bézier pieces, NURBS, sampled curves, Hermite data.
 pub use bezier::{
@@ -138,6 +138,12 @@ pub mod validate {
     pub use crate::bezier::{check_in_domain, check_nurbs_counts};
     pub use crate::curve::check_sample_count;
     pub use crate::math::check_finite;
+}
+
+/// Overflow-free arithmetic the C layer shares with the geometry: points of a parameter
+/// interval of any width, lengths of vectors of any size.
+pub mod numeric {
+    pub use crate::math::{lerp, robust_length};
 }
 
 /// What most programs need: `use rmfsurf::prelude::*;`.

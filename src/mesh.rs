@@ -28,7 +28,7 @@ pub struct TriangleMesh {
 pub fn grid_parameters(breaks: &[f64], steps: usize) -> Vec<f64> {
     let mut params = Vec::with_capacity((breaks.len() - 1) * steps + 1);
     for w in breaks.windows(2) {
-        params.extend((0..steps).map(|k| w[0] + (w[1] - w[0]) * k as f64 / steps as f64));
+        params.extend((0..steps).map(|k| crate::math::lerp(w[0], w[1], k as f64 / steps as f64)));
     }
     params.push(breaks[breaks.len() - 1]);
     params

@@ -16,6 +16,7 @@ use crate::bezier::bernstein::product;
 use crate::bezier::{PiecewiseCurve, PiecewiseSurface, RationalBezierCurve, RationalBezierPatch};
 use crate::error::{invalid, Result};
 use crate::frames::rational::{RationalFrameSegment, RationalFrames};
+use crate::math::robust_normalize;
 use glam::{DVec3, DVec4};
 
 /// Relative tolerance for the frames' tangent against the spine's.
@@ -38,11 +39,7 @@ pub fn sweep(
     let spine = if spine.breaks() == frames.breaks() {
         spine
     } else {
-        refined = spine.refined(frames.breaks()).map_err(|_| {
-            crate::Error::invalid_input(
-                "frames do not belong to the spine: their parameter breakpoints differ",
-            )
-        })?;
+        refined = refined_to_frames(spine, frames)?;
         &refined
     };
     check_frames_fit_spine(spine, frames)?;
@@ -106,6 +103,26 @@ fn sweep_patch(
     ])
 }
 
+/// The spine split at the frames' breakpoints (which must refine its own).
+fn refined_to_frames(spine: &PiecewiseCurve, frames: &RationalFrames) -> Result<PiecewiseCurve> {
+    spine.refined(frames.breaks()).map_err(|_| {
+        crate::Error::invalid_input(
+            "frames do not belong to the spine: their parameter breakpoints differ",
+        )
+    })
+}
+
+/// Refuses frames that do not belong to `spine` as [`sweep`] does: breakpoints that do not
+/// refine the spine's, or a tangent f₂ × f₃ other than the spine's (frames built on another
+/// spine with the same breakpoints).
+pub fn check_frames_belong_to(spine: &PiecewiseCurve, frames: &RationalFrames) -> Result<()> {
+    if spine.breaks() == frames.breaks() {
+        check_frames_fit_spine(spine, frames)
+    } else {
+        check_frames_fit_spine(&refined_to_frames(spine, frames)?, frames)
+    }
+}
+
 /// The frames must share the spine's breakpoints and be adapted to it (f₂ × f₃ = the
 /// spine's unit tangent), checked at both ends and the middle of every segment.
 fn check_frames_fit_spine(spine: &PiecewiseCurve, frames: &RationalFrames) -> Result<()> {
@@ -114,9 +131,9 @@ fn check_frames_fit_spine(spine: &PiecewiseCurve, frames: &RationalFrames) -> Re
     }
     for (k, (segment, frame)) in spine.segments().iter().zip(frames.segments()).enumerate() {
         for s in [0.0, 0.5, 1.0] {
-            let d = segment.eval_jet(s).d1;
+            let d = robust_normalize(segment.eval_jet(s).d1);
             let tangent = frame.frame(s).tangent;
-            if d.length() == 0.0 || (d.normalize() - tangent).length() > TANGENT_TOLERANCE {
+            if d.is_none_or(|d| (d - tangent).length() > TANGENT_TOLERANCE) {
                 return invalid!(
                     "frames do not belong to the spine: their tangent differs on segment {k}"
                 );

@@ -6,12 +6,22 @@ use super::curve::RmfCurve;
 use super::types::RmfVec3;
 use libc::c_void;
 use rmfsurf::glam::DVec3;
-use rmfsurf::{hermite_sequence, Error, HermiteSegment, ParametricCurve, Result};
+use rmfsurf::numeric::{lerp, robust_length};
+use rmfsurf::{hermite_sequence, Error, HermiteSegment, Num, ParametricCurve, Result};
 
 /// An analytic curve given by the caller: writes the point and the tangent (the derivative,
 /// or any non-zero multiple of it) at parameter t into *point and *tangent. It must not
 /// unwind or longjmp; it is called from the calling thread only, during the call it was
 /// passed to.
+///
+/// One rule for every entry point taking a callback: the multiple is found once, from the
+/// callback's own points (the speed |x'| by a fourth-order difference at the middle of the
+/// domain, and the orientation along increasing t), and divided out, so a tangent 1e80 or
+/// 1e-85 times the derivative, or pointing backwards (a negative multiple), gives the same
+/// results as the derivative itself; a tangent within 1e-6 of the derivative is taken as
+/// it is. Tangents should be a constant multiple (a varying one is only its direction to
+/// algorithms that differentiate it, the cone approximations). Subnormal tangents
+/// (components below 2.2e-308) are refused: their direction is not resolved in double.
 pub type RmfCurveCallback = Option<
     unsafe extern "C" fn(t: f64, user: *mut c_void, point: *mut RmfVec3, tangent: *mut RmfVec3),
 >;
@@ -42,19 +52,40 @@ pub(crate) unsafe fn hermite_arrays(
     Ok(hermite_sequence(&points, &tangents)?)
 }
 
-/// A curve defined by a C callback on `[t_min, t_max]`.
+/// A curve defined by a C callback on `[t_min, t_max]`, its tangents divided by the
+/// constant multiple of the derivative they are ([`RmfCurveCallback`]).
 pub(crate) struct CallbackCurve {
     callback: unsafe extern "C" fn(f64, *mut c_void, *mut RmfVec3, *mut RmfVec3),
     user: *mut c_void,
     domain: (f64, f64),
+    /// The derivative is the callback's tangent times this (±1 when it is the derivative
+    /// already, up to its sign).
+    factor: f64,
 }
 
-impl ParametricCurve for CallbackCurve {
-    fn domain(&self) -> (f64, f64) {
-        self.domain
+/// A tangent within this relative distance of the estimated derivative is taken as it is.
+const DERIVATIVE_MATCH: f64 = 1e-6;
+
+impl CallbackCurve {
+    /// The callback on `domain` (finite, of finite length), with the multiple of its
+    /// tangents found from its points (see [`RmfCurveCallback`]).
+    pub(crate) fn new(
+        callback: unsafe extern "C" fn(f64, *mut c_void, *mut RmfVec3, *mut RmfVec3),
+        user: *mut c_void,
+        domain: (f64, f64),
+    ) -> Result<Self> {
+        let mut curve = Self {
+            callback,
+            user,
+            domain,
+            factor: 1.0,
+        };
+        curve.factor = curve.derivative_factor()?;
+        Ok(curve)
     }
 
-    fn point_derivative(&self, t: f64) -> Result<(DVec3, DVec3)> {
+    /// The point and tangent as the callback gives them, checked finite and not subnormal.
+    fn raw(&self, t: f64) -> Result<(DVec3, DVec3)> {
         let nan = RmfVec3 {
             x: f64::NAN,
             y: f64::NAN,
@@ -66,10 +97,84 @@ impl ParametricCurve for CallbackCurve {
         let (point, tangent): (DVec3, DVec3) = (point.into(), tangent.into());
         if !point.is_finite() || !tangent.is_finite() {
             return Err(Error::invalid_input(format!(
-                "the callback gave a non-finite (or no) point or tangent at t = {t}"
+                "the callback gave a non-finite (or no) point or tangent at t = {}",
+                Num(t)
+            )));
+        }
+        let largest = tangent.abs().max_element();
+        if largest != 0.0 && !largest.is_normal() {
+            return Err(Error::invalid_input(format!(
+                "the callback's tangent at t = {} is subnormal (largest component {}, below \
+                 2.2e-308): its direction is not resolved in double precision; give a larger \
+                 multiple of the derivative",
+                Num(t),
+                Num(largest)
             )));
         }
         Ok((point, tangent))
+    }
+
+    /// The factor from the callback's tangents to the derivative: at the first of a few
+    /// parameters where the tangent and the points' difference are usable, the speed from
+    /// a fourth-order central difference of the points over the tangent's length, signed by
+    /// their orientation.
+    fn derivative_factor(&self) -> Result<f64> {
+        let (lo, hi) = self.domain;
+        for fraction in [0.5, 0.25, 0.75, 0.125, 0.875] {
+            let t = lerp(lo, hi, fraction);
+            let (_, tangent) = self.raw(t)?;
+            let h = (1e-3 * (hi - lo)).max(4.0 * f64::EPSILON * t.abs());
+            let points =
+                [-2.0, -1.0, 1.0, 2.0].map(|k| self.raw((t + k * h).clamp(lo, hi)).map(|(p, _)| p));
+            let [a, b, c, d] = match points {
+                [Ok(a), Ok(b), Ok(c), Ok(d)] => [a, b, c, d],
+                _ => continue,
+            };
+            // (−x(t+2h) + 8x(t+h) − 8x(t−h) + x(t−2h)) / 12h, the differences first.
+            let difference = (c - b) * (8.0 / 12.0) - (d - a) * (1.0 / 12.0);
+            let (length, along) = (robust_length(tangent), robust_length(difference));
+            if length == 0.0 || along == 0.0 {
+                continue;
+            }
+            let sign = if tangent.dot(difference) < 0.0 {
+                -1.0
+            } else {
+                1.0
+            };
+            let speed = along / h;
+            let ratio = length / speed;
+            if !(ratio.is_finite() && ratio > 0.0) {
+                continue;
+            }
+            if (ratio - 1.0).abs() <= DERIVATIVE_MATCH {
+                return Ok(sign);
+            }
+            return Ok(sign * (speed / length));
+        }
+        Err(Error::invalid_input(
+            "the callback gives zero tangents or constant points at t_min + (0.125 … 0.875)·(t_max − t_min): \
+             it describes no regular curve",
+        ))
+    }
+}
+
+impl ParametricCurve for CallbackCurve {
+    fn domain(&self) -> (f64, f64) {
+        self.domain
+    }
+
+    fn point_derivative(&self, t: f64) -> Result<(DVec3, DVec3)> {
+        let (point, tangent) = self.raw(t)?;
+        let derivative = tangent * self.factor;
+        if !derivative.is_finite() {
+            return Err(Error::invalid_input(format!(
+                "the callback's tangent at t = {} is {} times the one at the middle of the \
+                 domain: beyond the range of double as a derivative",
+                Num(t),
+                Num(robust_length(tangent) / (1.0 / self.factor.abs()))
+            )));
+        }
+        Ok((point, derivative))
     }
 }
 
@@ -92,11 +197,7 @@ pub(crate) fn callback_curve(
              t_max − t_min finite"
         ));
     }
-    Ok(CallbackCurve {
-        callback,
-        user,
-        domain: (t_min, t_max),
-    })
+    Ok(CallbackCurve::new(callback, user, (t_min, t_max))?)
 }
 
 /// The curve to approximate: exactly one of `curve` (its whole domain; a rational or a
@@ -158,9 +259,9 @@ mod tests {
         // Property-test finding: a domain whose length overflows reached the cone splines.
         let wide = unsafe { curve_or_callback(std::ptr::null(), Some(helix), user, -1e308, 1e308) };
         assert!(wide.is_err());
-        let quiet =
-            unsafe { curve_or_callback(std::ptr::null(), Some(silent), user, 0.0, 1.0) }.unwrap();
-        assert!(quiet.point_derivative(0.5).is_err());
+        // A callback that writes nothing is refused when its multiple is sought.
+        let quiet = unsafe { curve_or_callback(std::ptr::null(), Some(silent), user, 0.0, 1.0) };
+        assert!(quiet.is_err());
         assert!(
             unsafe { curve_or_callback(std::ptr::null(), Some(helix), user, 1.0, 1.0) }.is_err()
         );

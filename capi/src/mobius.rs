@@ -81,8 +81,13 @@ fn finite(v: RmfVec3, name: &str) -> FfiResult<DVec3> {
 /// @param[out] image Receives μ(point). Untouched on failure.
 /// @return RMF_OK on success.
 /// @return RMF_ERROR_NULL_POINTER If maps or image is NULL.
+/// Computed without squares of distances: (1e200, 0, 0) in the unit sphere goes to
+/// (1e-200, 0, 0), and images beyond the range of double are refused, never infinite.
+///
 /// @return RMF_ERROR_INVALID_INPUT If count = 0, an inversion is invalid (radius ≤ 0, zero
-///         normal, non-finite), or the point is sent to infinity (a sphere centre).
+///         normal, non-finite), or the image is not finite: the point is sent to infinity (a
+///         sphere centre) or beyond ±1.8e308 (e.g. a radius of 1e300 and a point at
+///         distance 1 from the centre).
 #[no_mangle]
 pub unsafe extern "C" fn rmf_mobius_point(
     maps: *const RmfInversion,
@@ -94,7 +99,11 @@ pub unsafe extern "C" fn rmf_mobius_point(
         let image = out_ptr(image, "image")?;
         let map = mobius_map(maps, count)?;
         let Some(p) = map.apply(finite(point, "point")?) else {
-            return invalid_arg("point is an inversion centre: its image is at infinity".into());
+            return invalid_arg(
+                "the image of point is at infinity (point is an inversion centre) or beyond \
+                 the range of double"
+                    .into(),
+            );
         };
         write(image, p.into());
         Ok(())

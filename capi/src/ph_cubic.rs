@@ -338,8 +338,10 @@ pub unsafe extern "C" fn rmf_ph_exact_rmf_eval(
 
 /// The accuracy of rational frames along a PH cubic spline (e.g. from rmf_ph_rational_rmf):
 /// the largest angle about the tangent between them and the exact RMF (closed form, started
-/// from the same frame), per spline segment. Frames made with a twist are compared after
-/// taking off a twist linear in arc length (their total turn against the RMF at the end).
+/// from the same frame), per spline segment. Frames made with a twist
+/// (rmf_ph_rational_rmf_twisted, also the turn that closes a closed spine) are compared after
+/// taking off that twist, linear in arc length; every other frame is compared with the RMF
+/// itself, so a frame that drifts against the RMF (e.g. a Frenet frame) reports its drift.
 ///
 /// Size query: with per_segment = NULL and capacity = 0 only segment_count (and max_angle)
 /// are written.
@@ -405,11 +407,18 @@ pub struct RmfSingularityMargin {
 /// rmf_sweep_surface): condition (9) evaluated exactly over the profile (roots of a
 /// polynomial) and scanned and refined along the spine.
 ///
-/// @param[in] spine, frames, profile As for rmf_sweep_surface.
+/// The analyses of §2.3 hold for rotation-minimizing frames only: frames that are not an
+/// RMF (Frenet frames, twisted frames, frames of unknown origin) are refused, as are frames
+/// of another spine (breakpoints or tangent differ, as for rmf_sweep_surface).
+///
+/// @param[in] spine, frames, profile As for rmf_sweep_surface; frames from
+///            rmf_ph_rational_rmf, rmf_mobius_rrmf_hermite / _approximate, rmf_rrmf_* or
+///            rmf_mobius_frames of such frames.
 /// @param[out] out Receives the margin.
 /// @return RMF_OK, RMF_ERROR_NULL_POINTER if an argument is NULL, or
-///         RMF_ERROR_INVALID_INPUT if the frames are not rational frames of the spine, or
-///         frame pieces × profile segments exceed 2^15 (a bound on the work of one call).
+///         RMF_ERROR_INVALID_INPUT if the frames are not rational frames of the spine (their
+///         breakpoints or their tangent differ), are not rotation-minimizing, or frame
+///         pieces × profile segments exceed 2^15 (a bound on the work of one call).
 #[no_mangle]
 pub unsafe extern "C" fn rmf_sweep_singularity_margin(
     spine: *const RmfCurve,
@@ -439,12 +448,14 @@ pub unsafe extern "C" fn rmf_sweep_singularity_margin(
 /// rational RMFs it agrees with the NURBS surface up to the frames' approximation error).
 /// Its sign tells elliptic (K > 0) from hyperbolic (K < 0) regions.
 ///
-/// @param[in] spine, frames, profile As for rmf_sweep_surface.
+/// @param[in] spine, frames, profile As for rmf_sweep_singularity_margin (rotation-minimizing
+///            frames of the spine).
 /// @param[in] u, v Profile and spine parameters inside their domains.
 /// @param[out] k Receives K.
 /// @return RMF_OK, RMF_ERROR_NULL_POINTER if an argument is NULL, or
 ///         RMF_ERROR_INVALID_INPUT if u or v is outside its domain, the frames are not
-///         rational frames of the spine, or frame pieces × profile segments exceed 2^15.
+///         rotation-minimizing rational frames of the spine, or frame pieces × profile
+///         segments exceed 2^15.
 #[no_mangle]
 pub unsafe extern "C" fn rmf_sweep_gaussian_curvature(
     spine: *const RmfCurve,
@@ -497,7 +508,8 @@ pub struct RmfParabolicPoint {
 ///
 /// Size query: with points = NULL and capacity = 0 only count is written.
 ///
-/// @param[in] spine, frames, profile As for rmf_sweep_surface.
+/// @param[in] spine, frames, profile As for rmf_sweep_singularity_margin (rotation-minimizing
+///            frames of the spine).
 /// @param[in] v_samples Number of spine parameters, 2 … 2^24.
 /// @param[out] points Buffer for capacity points.
 /// @param[in] capacity Capacity of points.
@@ -506,8 +518,8 @@ pub struct RmfParabolicPoint {
 /// @return RMF_ERROR_NULL_POINTER If spine, frames, profile or count is NULL, or points is
 ///         NULL with capacity > 0.
 /// @return RMF_ERROR_INVALID_INPUT If v_samples < 2 or v_samples × profile segments > 2^24,
-///         the frames are not rational frames of the spine, or frame pieces × profile
-///         segments exceed 2^15.
+///         the frames are not rotation-minimizing rational frames of the spine, or frame
+///         pieces × profile segments exceed 2^15.
 /// @return RMF_ERROR_BUFFER_TOO_SMALL If 0 < capacity < count; then only count is written.
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]

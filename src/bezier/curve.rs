@@ -144,6 +144,28 @@ impl RationalBezierCurve {
         }
     }
 
+    /// The same curve with its start (`at_start`) or end point moved to `point` and the
+    /// neighbouring control point moved onto the line through it along `tangent`, weights
+    /// kept: the end point and the end tangent's direction become exactly the given ones
+    /// (for curves that already have them up to rounding). Also returns the angle by which
+    /// the end leg turned.
+    pub fn with_pinned_end(&self, at_start: bool, point: DVec3, tangent: DVec3) -> (Self, f64) {
+        let n = self.degree();
+        let (end, next) = if at_start { (0, 1) } else { (n, n - 1) };
+        let mut points = self.points.clone();
+        let mut turned = 0.0;
+        let end_weight = points[end].w;
+        points[end] = lift(point, end_weight);
+        if n >= 1 {
+            let weight = points[next].w;
+            let leg = project(points[next]) - point;
+            let along = leg.dot(tangent) * tangent;
+            turned = crate::math::angle_between(leg, along);
+            points[next] = lift(point + along, weight);
+        }
+        (Self { points }, turned)
+    }
+
     /// The pieces on [0, t] and [t, 1], each on [0, 1].
     pub fn split(&self, t: f64) -> (Self, Self) {
         let (a, b) = bernstein::split(&self.points, t);

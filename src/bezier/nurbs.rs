@@ -7,18 +7,30 @@
 //! multiplied by a constant (which changes neither geometry nor parameterization) so that
 //! the pole shared by two segments has the same weight on both sides. That is exactly the
 //! layout OpenCascade `Geom_BSpline*`, FreeCAD, IGES 126/128 and STEP accept.
+//!
+//! Range. Every NURBS accepted evaluates to finite values: weights are scaled by a power of
+//! two (exactly) so that the largest is 1 before they multiply the poles (all weights 5e-324
+//! are the weights 1), parameters are handled by the overflow-free interval arithmetic of
+//! `math::interval` (knots ±1e308), and data whose values are not representable are refused
+//! with the reason: poles beyond ±1e300 (the homogeneous derivatives would overflow), weights
+//! more than 1e300 apart, and segments whose derivatives would exceed 1e300 — a knot span
+//! too short for its poles (a domain [0, 5e-324]), the bound p·(w_max/w_min)·|ΔP|/h for the
+//! first and its square over |ΔP| for the second derivative.
 
 use super::bernstein::MAX_DEGREE;
 use super::curve::RationalBezierCurve;
 use super::homogeneous::{lift, project};
 use super::piecewise::{PiecewiseCurve, PiecewiseSurface};
 use super::surface::RationalBezierPatch;
-use crate::error::{invalid, Result};
-use crate::math::largest_coordinate;
+use crate::error::{invalid, Num, Result};
+use crate::math::{fraction, largest_coordinate, reciprocal_length};
 use glam::{DVec3, DVec4};
 
 /// Relative tolerance for poles that must coincide where segments meet.
 const JOINT_TOLERANCE: f64 = 1e-9;
+
+/// Largest coordinate of an accepted pole, weight ratio and derivative bound (module notes).
+pub const MAX_VALUE: f64 = 1e300;
 
 /// A NURBS curve with Cartesian poles, positive weights and a clamped knot vector.
 #[derive(Clone, Debug, PartialEq)]
@@ -124,11 +136,88 @@ fn check_poles_and_weights(poles: &[DVec3], weights: &[f64]) -> Result<()> {
     if let Some(i) = poles.iter().position(|p| !p.is_finite()) {
         return invalid!("poles[{i}] has a non-finite component");
     }
+    if let Some(i) = poles.iter().position(|p| p.abs().max_element() > MAX_VALUE) {
+        return invalid!(
+            "poles[{i}] has a coordinate beyond ±{}: the curve's derivatives would overflow",
+            Num(MAX_VALUE)
+        );
+    }
     if weights.len() != poles.len() {
         return invalid!("{} weights for {} poles", weights.len(), poles.len());
     }
     if let Some(i) = weights.iter().position(|w| !(w.is_finite() && *w > 0.0)) {
-        return invalid!("weights[{i}] = {} must be finite and positive", weights[i]);
+        return invalid!(
+            "weights[{i}] = {} must be finite and positive",
+            Num(weights[i])
+        );
+    }
+    let (low, high) = extreme_positions(weights);
+    if weights[low] < weights[high] / MAX_VALUE {
+        return invalid!(
+            "weights[{high}] = {} is more than {} times weights[{low}] = {}: a weight ratio \
+             double precision cannot evaluate",
+            Num(weights[high]),
+            Num(MAX_VALUE),
+            Num(weights[low])
+        );
+    }
+    Ok(())
+}
+
+/// Indices of the smallest and the largest value.
+fn extreme_positions(values: &[f64]) -> (usize, usize) {
+    let by = |a: &(usize, &f64), b: &(usize, &f64)| a.1.total_cmp(b.1);
+    let low = values.iter().enumerate().min_by(by).map_or(0, |(i, _)| i);
+    let high = values.iter().enumerate().max_by(by).map_or(0, |(i, _)| i);
+    (low, high)
+}
+
+/// The weights scaled by one power of two so that the largest lies in [0.5, 1) (exact).
+fn normalized_weights(weights: &[f64]) -> Vec<f64> {
+    let largest = weights.iter().fold(0.0f64, |m, &w| m.max(w));
+    let exponent = -(largest.log2().floor() as i32) - 1;
+    weights
+        .iter()
+        .map(|&w| times_power_of_two(w, exponent))
+        .collect()
+}
+
+/// x·2^k, exact, for exponents beyond the range of one power of two (2^1074 for 5e-324).
+fn times_power_of_two(x: f64, k: i32) -> f64 {
+    let half = k / 2;
+    x * 2f64.powi(half) * 2f64.powi(k - half)
+}
+
+/// Refuses a segment (of `degree`, on the parameter intervals `spans`) whose first or
+/// second derivative could exceed [`MAX_VALUE`] (module notes); `what` names it.
+fn check_derivative_range(
+    points: &[DVec4],
+    degree: usize,
+    spans: &[(f64, f64)],
+    what: impl std::fmt::Display,
+) -> Result<()> {
+    let weights: Vec<f64> = points.iter().map(|h| h.w).collect();
+    let (low, high) = extreme_positions(&weights);
+    let ratio = weights[high] / weights[low];
+    let first = project(points[0]);
+    let spread = largest_coordinate(points.iter().map(|&h| project(h) - first));
+    let p = degree.max(1) as f64;
+    for &(a, b) in spans {
+        let reciprocal = reciprocal_length(a, b);
+        let d1 = p * ratio * spread * reciprocal;
+        let d2 = d1 * p * ratio * reciprocal;
+        if !(d1 <= MAX_VALUE && d2 <= MAX_VALUE) {
+            return invalid!(
+                "{what}: its derivatives could exceed {} (knot span [{}, {}], poles {} apart, \
+                 weight ratio {}): beyond the range of double precision; use a longer \
+                 parameter interval or smaller coordinates",
+                Num(MAX_VALUE),
+                Num(a),
+                Num(b),
+                Num(spread),
+                Num(ratio)
+            );
+        }
     }
     Ok(())
 }
@@ -161,7 +250,7 @@ fn decompose(degree: usize, knots: &[f64], nets: &mut [Vec<DVec4>]) -> Vec<f64> 
                 } else if j > k {
                     net[j - 1]
                 } else {
-                    let alpha = (u - knots[j]) / (knots[j + p] - knots[j]);
+                    let alpha = fraction(u, knots[j], knots[j + p]);
                     net[j] * alpha + net[j - 1] * (1.0 - alpha)
                 };
                 inserted.push(q);
@@ -201,12 +290,17 @@ impl NurbsCurve {
         let mut nets = [self
             .poles
             .iter()
-            .zip(&self.weights)
-            .map(|(&x, &w)| lift(x, w))
+            .zip(normalized_weights(&self.weights))
+            .map(|(&x, w)| lift(x, w))
             .collect::<Vec<_>>()];
         let breaks = decompose(p, &self.knots, &mut nets);
         let segments = (0..breaks.len() - 1)
-            .map(|k| RationalBezierCurve::from_homogeneous(nets[0][k * p..=k * p + p].to_vec()))
+            .map(|k| {
+                let points = &nets[0][k * p..=k * p + p];
+                let span = (breaks[k], breaks[k + 1]);
+                check_derivative_range(points, p, &[span], format_args!("segment {k}"))?;
+                RationalBezierCurve::from_homogeneous(points.to_vec())
+            })
             .collect::<Result<Vec<_>>>()?;
         PiecewiseCurve::new(segments, breaks)
     }
@@ -294,8 +388,8 @@ impl NurbsSurface {
         let lifted: Vec<DVec4> = self
             .poles
             .iter()
-            .zip(&self.weights)
-            .map(|(&x, &w)| lift(x, w))
+            .zip(normalized_weights(&self.weights))
+            .map(|(&x, w)| lift(x, w))
             .collect();
         // Rows (fixed i) along v first, then the columns of the result along u.
         let mut rows: Vec<Vec<DVec4>> = lifted
@@ -318,6 +412,16 @@ impl NurbsSurface {
                         points.push(columns[b * pv + j][a * pu + i]);
                     }
                 }
+                let spans = [
+                    (u_breaks[a], u_breaks[a + 1]),
+                    (v_breaks[b], v_breaks[b + 1]),
+                ];
+                check_derivative_range(
+                    &points,
+                    pu.max(pv),
+                    &spans,
+                    format_args!("patch ({a}, {b})"),
+                )?;
                 patches.push(RationalBezierPatch::from_homogeneous(pu, pv, points)?);
             }
         }
@@ -579,5 +683,139 @@ mod tests {
             let (u, v) = (i as f64 / 7.0, 1.0 - i as f64 / 7.0);
             assert!((again.eval(u, v) - pw.eval(u, v)).length() < 1e-14);
         }
+    }
+
+    /// Issue finding (overflowing NURBS): knots ±1e308 evaluated to the first pole or NaN,
+    /// all weights 5e-324 to Inf/NaN. Both are the curve of knots [0, 1] and weights 1.
+    #[test]
+    fn extreme_knots_and_weights_evaluate_like_their_normalized_curve() {
+        let poles = vec![
+            DVec3::ZERO,
+            DVec3::new(1.0, 1.0, 0.0),
+            DVec3::new(2.0, 0.0, 1.0),
+            DVec3::new(3.0, 1.0, 0.0),
+        ];
+        let unit = |k: f64| vec![k, k, k, k];
+        let reference = NurbsCurve::new(3, poles.clone(), None, [unit(0.0), unit(1.0)].concat())
+            .unwrap()
+            .to_piecewise()
+            .unwrap();
+        let wide = NurbsCurve::new(3, poles.clone(), None, [unit(-1e308), unit(1e308)].concat())
+            .unwrap()
+            .to_piecewise()
+            .unwrap();
+        let light = NurbsCurve::new(
+            3,
+            poles.clone(),
+            Some(vec![5e-324; 4]),
+            [unit(0.0), unit(1.0)].concat(),
+        )
+        .unwrap()
+        .to_piecewise()
+        .unwrap();
+        for i in 0..=8 {
+            let s = i as f64 / 8.0;
+            let expected = reference.eval_jet(s);
+            let t = crate::math::lerp(-1e308, 1e308, s);
+            let jet = wide.eval_jet(t);
+            assert!(
+                (jet.point - expected.point).length() < 1e-15,
+                "{s}: {}",
+                jet.point
+            );
+            // d/dt = d/ds / 2e308.
+            assert!((jet.d1 * 1e308 * 2.0 - expected.d1).length() < 1e-14 * expected.d1.length());
+            assert!(jet.d2.is_finite());
+            let jet = light.eval_jet(s);
+            assert!((jet.point - expected.point).length() < 1e-15);
+            assert!((jet.d1 - expected.d1).length() < 1e-14 && jet.d2.is_finite());
+        }
+        assert!((wide.eval(0.0) - DVec3::new(1.5, 0.5, 0.375)).length() < 1e-15);
+    }
+
+    /// Issue finding (overflowing NURBS): data whose evaluation overflows — a weight of
+    /// 1e308 among weights 1 (NaN derivatives), poles at ±1e308 (infinite derivatives), a
+    /// domain [0, 5e-324] (an infinite derivative) — are refused at creation, saying why.
+    #[test]
+    fn data_whose_evaluation_would_overflow_are_refused_with_the_reason() {
+        let poles = vec![DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::ONE];
+        let knots = vec![0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0];
+        let message = |poles: Vec<DVec3>, weights: Option<Vec<f64>>, knots: Vec<f64>| {
+            NurbsCurve::new(3, poles, weights, knots)
+                .and_then(|c| c.to_piecewise())
+                .unwrap_err()
+                .message()
+        };
+        let heavy = message(
+            poles.clone(),
+            Some(vec![1.0, 1e308, 1.0, 1.0]),
+            knots.clone(),
+        );
+        assert!(
+            heavy.contains("weights[1] = 1e308") && heavy.contains("1e300"),
+            "{heavy}"
+        );
+        let far = vec![DVec3::ZERO, DVec3::X * 1e308, -DVec3::X * 1e308, DVec3::ONE];
+        let far = message(far, None, knots.clone());
+        assert!(
+            far.starts_with("poles[1] has a coordinate beyond ±1e300"),
+            "{far}"
+        );
+        let short = [vec![0.0; 4], vec![5e-324; 4]].concat();
+        let short = message(poles.clone(), None, short);
+        assert!(
+            short.starts_with("segment 0: its derivatives could exceed 1e300")
+                && short.contains("5e-324"),
+            "{short}"
+        );
+        // Within range: a span of 1e-150 has derivatives of 1e150 and 1e300 at most.
+        let tiny = [vec![0.0; 4], vec![1e-140; 4]].concat();
+        let c = NurbsCurve::new(3, poles, None, tiny)
+            .unwrap()
+            .to_piecewise()
+            .unwrap();
+        let jet = c.eval_jet(5e-141);
+        assert!(jet.d1.is_finite() && jet.d2.is_finite());
+    }
+
+    /// Surfaces likewise: knots ±1e308 in u and subnormal weights evaluate like the
+    /// normalized surface; a patch whose derivatives overflow is refused.
+    #[test]
+    fn extreme_surfaces_evaluate_or_are_refused() {
+        let poles: Vec<DVec3> = (0..4)
+            .flat_map(|i| (0..2).map(move |j| DVec3::new(i as f64, j as f64, (i * j) as f64)))
+            .collect();
+        let make = |knots_u: Vec<f64>, weights: Option<Vec<f64>>| {
+            NurbsSurface::new(
+                3,
+                1,
+                4,
+                2,
+                poles.clone(),
+                weights,
+                knots_u,
+                vec![0.0, 0.0, 1.0, 1.0],
+            )
+            .and_then(|s| s.to_piecewise())
+        };
+        let unit = [vec![0.0; 4], vec![1.0; 4]].concat();
+        let reference = make(unit.clone(), None).unwrap();
+        let wide = make(
+            [vec![-1e308; 4], vec![1e308; 4]].concat(),
+            Some(vec![1e-320; 8]),
+        )
+        .unwrap();
+        for (s, v) in [(0.0, 0.0), (0.3, 0.7), (1.0, 0.5)] {
+            let jet = wide.eval_jet(crate::math::lerp(-1e308, 1e308, s), v);
+            let expected = reference.eval_jet(s, v);
+            assert!((jet.point - expected.point).length() < 1e-14);
+            assert!((jet.dv - expected.dv).length() < 1e-13 && jet.du.is_finite());
+            assert!(jet.duu.is_finite() && jet.duv.is_finite() && jet.dvv.is_finite());
+        }
+        let e = make([vec![0.0; 4], vec![5e-324; 4]].concat(), None).unwrap_err();
+        assert!(
+            e.message().starts_with("patch (0, 0): its derivatives"),
+            "{e}"
+        );
     }
 }

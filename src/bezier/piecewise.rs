@@ -4,12 +4,15 @@
 
 use super::curve::{CurveJet, RationalBezierCurve};
 use super::surface::{RationalBezierPatch, SurfaceJet};
+use crate::error::Num;
 use crate::error::{invalid, Result};
-use crate::math::GaussLegendre;
+use crate::math::{fraction, reciprocal_length, GaussLegendre};
 use glam::DVec3;
 
-/// Relative tolerance for parameters that fall just outside a domain by round-off.
-const DOMAIN_SLACK: f64 = 1e-12;
+/// Relative tolerance for parameters that fall just outside a domain by round-off: a
+/// parameter up to 1e-12·max(|t_min|, |t_max|, 1) outside is accepted and clamped to the end
+/// (the C header documents it with every domain).
+pub const DOMAIN_SLACK: f64 = 1e-12;
 
 /// Checks that `breaks` holds `pieces + 1` finite, strictly increasing breakpoints.
 pub fn check_breaks(breaks: &[f64], pieces: usize, name: &str) -> Result<()> {
@@ -36,15 +39,19 @@ pub fn check_breaks(breaks: &[f64], pieces: usize, name: &str) -> Result<()> {
 pub fn locate(breaks: &[f64], t: f64) -> (usize, f64) {
     let last = breaks.len() - 2;
     let k = breaks[1..=last].partition_point(|&b| b <= t);
-    let (a, b) = (breaks[k], breaks[k + 1]);
-    (k, ((t - a) / (b - a)).clamp(0.0, 1.0))
+    (k, fraction(t, breaks[k], breaks[k + 1]).clamp(0.0, 1.0))
 }
 
 /// `t` if it lies in `[lo, hi]` (allowing round-off slack), else an error naming `name`.
 pub fn check_in_domain(t: f64, (lo, hi): (f64, f64), name: &str) -> Result<f64> {
-    let slack = DOMAIN_SLACK * (hi - lo).abs().max(lo.abs()).max(hi.abs()).max(1.0);
+    let slack = DOMAIN_SLACK * lo.abs().max(hi.abs()).max(1.0);
     if !t.is_finite() || t < lo - slack || t > hi + slack {
-        return invalid!("{name} = {t} is outside the domain [{lo}, {hi}]");
+        return invalid!(
+            "{name} = {} is outside the domain [{}, {}]",
+            Num(t),
+            Num(lo),
+            Num(hi)
+        );
     }
     Ok(t.clamp(lo, hi))
 }
@@ -90,7 +97,7 @@ impl PiecewiseCurve {
             .map(|w| {
                 let (k, _) = self.locate(0.5 * (w[0] + w[1]));
                 let (a, b) = (self.breaks[k], self.breaks[k + 1]);
-                let (s0, s1) = ((w[0] - a) / (b - a), (w[1] - a) / (b - a));
+                let (s0, s1) = (fraction(w[0], a, b), fraction(w[1], a, b));
                 if s0 == 0.0 && s1 == 1.0 {
                     self.segments[k].clone()
                 } else {
@@ -139,7 +146,7 @@ impl PiecewiseCurve {
     /// Point and derivatives with respect to the global parameter.
     pub fn eval_jet(&self, t: f64) -> CurveJet {
         let (k, s) = self.locate(t);
-        let scale = 1.0 / (self.breaks[k + 1] - self.breaks[k]);
+        let scale = reciprocal_length(self.breaks[k], self.breaks[k + 1]);
         let jet = self.segments[k].eval_jet(s);
         CurveJet {
             point: jet.point,
@@ -220,8 +227,8 @@ impl PiecewiseSurface {
     pub fn eval_jet(&self, u: f64, v: f64) -> SurfaceJet {
         let (a, s) = locate(&self.u_breaks, u);
         let (b, t) = locate(&self.v_breaks, v);
-        let su = 1.0 / (self.u_breaks[a + 1] - self.u_breaks[a]);
-        let sv = 1.0 / (self.v_breaks[b + 1] - self.v_breaks[b]);
+        let su = reciprocal_length(self.u_breaks[a], self.u_breaks[a + 1]);
+        let sv = reciprocal_length(self.v_breaks[b], self.v_breaks[b + 1]);
         let j = self.patch(a, b).eval_jet(s, t);
         SurfaceJet {
             point: j.point,

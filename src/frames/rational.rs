@@ -13,11 +13,34 @@ use super::Frame;
 use crate::bezier::bernstein::{self, MAX_DEGREE};
 use crate::bezier::{check_breaks, locate, RationalBezierCurve};
 use crate::error::{invalid, Result};
-use crate::math::normal_plane_unit;
+use crate::math::{angle_between, normal_plane_unit, reciprocal_length};
 use glam::DVec3;
 
-/// Largest distance between unit tangents of consecutive segments at their joint.
+/// Largest distance between unit tangents of consecutive segments at their joint, unless the
+/// rounding of the curve's control points allows more ([`g1_tolerance`]).
 const G1_TOLERANCE: f64 = 1e-9;
+
+/// The G1 tolerance for frames along `curve`: [`G1_TOLERANCE`], or the direction error of
+/// its end legs, 64·ε·|P|/|leg| (differences of control points rounded to ε|P|), where that
+/// is larger — a spline of legs 0.18 translated by 1e6 has tangents known to 1.2e-9 only
+/// (it was refused as "not G1").
+pub fn g1_tolerance(curve: &crate::bezier::PiecewiseCurve) -> f64 {
+    let mut worst = G1_TOLERANCE;
+    for segment in curve.segments() {
+        let poles: Vec<DVec3> = segment.poles().collect();
+        let n = poles.len() - 1;
+        if n == 0 {
+            continue;
+        }
+        let size = crate::math::largest_coordinate(poles.iter().copied());
+        let leg = crate::math::robust_length(poles[1] - poles[0])
+            .min(crate::math::robust_length(poles[n] - poles[n - 1]));
+        if leg > 0.0 {
+            worst = worst.max(64.0 * f64::EPSILON * size / leg);
+        }
+    }
+    worst
+}
 
 /// Which frame vector.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -103,6 +126,15 @@ impl RationalFrameSegment {
         }
     }
 
+    /// Sets the frame at the start (`at_start`) or the end of the segment to `frame`, keeping
+    /// the denominator there: the end coefficients become `frame.f2·d`, `frame.f3·d`.
+    pub fn pin_end(&mut self, at_start: bool, frame: &Frame) {
+        let i = if at_start { 0 } else { self.degree() };
+        let d = self.denominator[i];
+        self.f2[i] = frame.f2 * d;
+        self.f3[i] = frame.f3 * d;
+    }
+
     /// One frame vector as a rational Bézier curve of vectors (its "points" lie on the unit
     /// sphere). The tangent f₂ × f₃ has numerator N₂ × N₃ over d².
     pub fn vector_curve(&self, which: FrameVector) -> Result<RationalBezierCurve> {
@@ -177,11 +209,12 @@ pub fn joining_turn(
     previous_end: Option<&Frame>,
     initial_normal: DVec3,
     k: usize,
+    tolerance: f64,
 ) -> Result<f64> {
     let target = match previous_end {
         None => normal_plane_unit(initial_normal, start.tangent, "initial_normal")?,
         Some(end) => {
-            if (end.tangent - start.tangent).length() > G1_TOLERANCE {
+            if (end.tangent - start.tangent).length() > tolerance.max(G1_TOLERANCE) {
                 return invalid!(
                     "segments {} and {k} do not share their tangent: the spline is not G1",
                     k - 1
@@ -196,18 +229,50 @@ pub fn joining_turn(
     ))
 }
 
-/// Rational frames along a piecewise curve; segment k lives on `[breaks[k], breaks[k+1]]`.
+/// What rational frames are known to be, against the rotation-minimizing frame (RMF) of
+/// their curve: set by the construction that made them, so that analyses which hold for an
+/// RMF only (the profile-surface analysis of Mäurer & Jüttler §2.3) refuse other frames, and
+/// accuracy measures take off a twist only where one was built in.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Turning {
+    /// A rotation-minimizing frame: exact (Möbius images, RRMF quintics) or the rational
+    /// approximation of one (PH cubic splines, §3.4 of Mäurer & Jüttler).
+    RotationMinimizing,
+    /// The RMF turned in addition by `total` radians from start to end, linearly in arc
+    /// length (a twist, or the closure of a closed spine).
+    Twisted { total: f64 },
+    /// Nothing is known: Frenet frames, frames of unknown origin.
+    Unknown,
+}
 
+/// Rational frames along a piecewise curve; segment k lives on `[breaks[k], breaks[k+1]]`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct RationalFrames {
     segments: Vec<RationalFrameSegment>,
     breaks: Vec<f64>,
+    turning: Turning,
 }
 
 impl RationalFrames {
+    /// Frames of unknown turning ([`Turning::Unknown`]; see [`RationalFrames::with_turning`]).
     pub fn new(segments: Vec<RationalFrameSegment>, breaks: Vec<f64>) -> Result<Self> {
         check_breaks(&breaks, segments.len(), "frame breakpoints")?;
-        Ok(Self { segments, breaks })
+        Ok(Self {
+            segments,
+            breaks,
+            turning: Turning::Unknown,
+        })
+    }
+
+    /// The same frames, declared to turn as `turning` says (the constructions that know it).
+    pub fn with_turning(mut self, turning: Turning) -> Self {
+        self.turning = turning;
+        self
+    }
+
+    /// How the frames turn against the RMF, as far as known.
+    pub fn turning(&self) -> Turning {
+        self.turning
     }
 
     /// Joins per-segment rational frames of a G1 spline into one continuous frame field:
@@ -221,6 +286,17 @@ impl RationalFrames {
         breaks: Vec<f64>,
         initial_normal: DVec3,
     ) -> Result<Self> {
+        Self::chained_within(segments, breaks, initial_normal, 0.0)
+    }
+
+    /// [`RationalFrames::chained`] with the G1 tolerance of the curve the frames follow
+    /// (see [`g1_tolerance`]).
+    pub fn chained_within(
+        segments: Vec<RationalFrameSegment>,
+        breaks: Vec<f64>,
+        initial_normal: DVec3,
+        tolerance: f64,
+    ) -> Result<Self> {
         check_breaks(&breaks, segments.len(), "frame breakpoints")?;
         let mut joined: Vec<RationalFrameSegment> = Vec::with_capacity(segments.len());
         for (k, mut segment) in segments.into_iter().enumerate() {
@@ -230,6 +306,7 @@ impl RationalFrames {
                 previous_end.as_ref(),
                 initial_normal,
                 k,
+                tolerance,
             )?;
             segment.rotate(angle);
             joined.push(segment);
@@ -237,7 +314,76 @@ impl RationalFrames {
         Ok(Self {
             segments: joined,
             breaks,
+            turning: Turning::Unknown,
         })
+    }
+
+    /// Joins per-piece RMFs of a G1 curve into one frame field whose frame at every
+    /// breakpoint is computed once and shared by the two pieces meeting there, so that they
+    /// agree exactly (no tolerance: nothing is compared). `tangents[k]` is the curve's unit
+    /// tangent at `breaks[k]` where it is known exactly (the Hermite data at the joints of a
+    /// spline), `None` inside a segment, where the tangent of the piece ending there is used.
+    /// At each breakpoint the shared frame has that tangent and f₂ = the previous piece's
+    /// end f₂ put into its normal plane (`initial_normal` at the start); the next piece is
+    /// turned by a constant about its tangent to start with it, and both pieces' end
+    /// coefficients are set to it. Also returns the largest angle by which a piece's own end
+    /// frame was moved (its tangent against the shared one, or its f₂ about it): the
+    /// rounding of the construction, a figure for the tests.
+    pub fn joined(
+        segments: Vec<RationalFrameSegment>,
+        breaks: Vec<f64>,
+        tangents: &[Option<DVec3>],
+        initial_normal: DVec3,
+    ) -> Result<(Self, f64)> {
+        check_breaks(&breaks, segments.len(), "frame breakpoints")?;
+        if tangents.len() != breaks.len() {
+            return invalid!(
+                "{} joint tangents for {} frame breakpoints",
+                tangents.len(),
+                breaks.len()
+            );
+        }
+        let shared = |tangent: DVec3, f2: DVec3, name: &str| -> Result<Frame> {
+            Ok(Frame::from_tangent_normal(
+                tangent,
+                normal_plane_unit(f2, tangent, name)?,
+            ))
+        };
+        let mut correction = 0.0f64;
+        let mut joined: Vec<RationalFrameSegment> = Vec::with_capacity(segments.len());
+        let mut joint: Option<Frame> = None;
+        for (k, mut segment) in segments.into_iter().enumerate() {
+            let start = segment.frame(0.0);
+            let frame = match joint {
+                None => {
+                    let tangent = tangents[0].unwrap_or(start.tangent);
+                    shared(tangent, initial_normal, "initial_normal")?
+                }
+                Some(frame) => frame,
+            };
+            correction = correction.max(angle_between(start.tangent, frame.tangent));
+            let turn =
+                angle_about_tangent(&start, &Frame::from_tangent_normal(start.tangent, frame.f2));
+            segment.rotate(turn);
+            segment.pin_end(true, &frame);
+            let end = segment.frame(1.0);
+            let tangent = tangents[k + 1].unwrap_or(end.tangent);
+            let next = shared(tangent, end.f2, "the frame at a joint")?;
+            correction = correction
+                .max(angle_between(end.tangent, next.tangent))
+                .max(angle_between(end.f2, next.f2));
+            segment.pin_end(false, &next);
+            joined.push(segment);
+            joint = Some(next);
+        }
+        Ok((
+            Self {
+                segments: joined,
+                breaks,
+                turning: Turning::Unknown,
+            },
+            correction,
+        ))
     }
 
     pub fn segments(&self) -> &[RationalFrameSegment] {
@@ -248,10 +394,10 @@ impl RationalFrames {
         &self.breaks
     }
 
-    /// Segment, local parameter and segment length at the global parameter `t`.
+    /// Segment, local parameter and 1 / segment length at the global parameter `t`.
     fn locate(&self, t: f64) -> (usize, f64, f64) {
         let (k, s) = locate(&self.breaks, t);
-        (k, s, self.breaks[k + 1] - self.breaks[k])
+        (k, s, reciprocal_length(self.breaks[k], self.breaks[k + 1]))
     }
 
     pub fn frame(&self, t: f64) -> Frame {
@@ -261,9 +407,9 @@ impl RationalFrames {
 
     /// f₂ and df₂/dt (global parameter).
     pub fn f2_with_derivative(&self, t: f64) -> (DVec3, DVec3) {
-        let (k, s, h) = self.locate(t);
+        let (k, s, scale) = self.locate(t);
         let (f2, d) = self.segments[k].f2_with_derivative(s);
-        (f2, d / h)
+        (f2, d * scale)
     }
 }
 

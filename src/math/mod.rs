@@ -6,6 +6,8 @@
 
 mod binomial;
 mod complex;
+mod double_double;
+mod interval;
 mod linear;
 mod minimize;
 mod quadrature;
@@ -15,10 +17,14 @@ mod vector;
 
 pub use binomial::{binomial, binomial_row, reciprocal_binomial_row};
 pub use complex::Complex;
+pub use double_double::{DoubleDouble, DoubleDoubleVec3};
+pub use interval::{fraction, length_or_half, lerp, reciprocal_length};
 pub use linear::solve_refined;
 pub use minimize::minimize_bracketed;
 pub use quadrature::GaussLegendre;
-pub use roots::{bisect_root, interior_midpoint, quadratic_roots, real_roots_in, real_roots_power};
+pub use roots::{
+    bisect_root, illinois_root, interior_midpoint, quadratic_roots, real_roots_in, real_roots_power,
+};
 pub use secant::secant_refine;
 pub use vector::{
     angle_between, bounding_diagonal, check_finite, check_point, check_unit_direction,

@@ -192,6 +192,75 @@ pub fn bisect_root(mut f: impl FnMut(f64) -> f64, mut a: f64, mut b: f64, tol: f
     Some(0.5 * (a + b))
 }
 
+/// A root of a continuous function with a sign change between `(a, f(a))` and `(b, f(b))`,
+/// by the Illinois variant of regula falsi (superlinear, always bracketed), with a bisection
+/// step whenever three steps have not halved the bracket (a jump of f, which has no root,
+/// is then closed in as fast as by bisection), to the absolute tolerance `tol` in x; `None`
+/// without a sign change or for NaN values.
+pub fn illinois_root(
+    mut f: impl FnMut(f64) -> f64,
+    (mut a, mut fa): (f64, f64),
+    (mut b, mut fb): (f64, f64),
+    tol: f64,
+) -> Option<f64> {
+    if fa.is_nan() || fb.is_nan() || fa * fb > 0.0 {
+        return None;
+    }
+    if fa == 0.0 {
+        return Some(a);
+    }
+    if fb == 0.0 {
+        return Some(b);
+    }
+    let (mut side, mut steps, mut width) = (0i8, 0, (b - a).abs());
+    let mut previous = f64::NAN;
+    for _ in 0..400 {
+        if (b - a).abs() <= tol {
+            break;
+        }
+        steps += 1;
+        let bisect = steps > 3 && (b - a).abs() > 0.5 * width;
+        let mut x = if bisect {
+            0.5 * (a + b)
+        } else {
+            (a * fb - b * fa) / (fb - fa)
+        };
+        if !(x > a.min(b) && x < a.max(b)) {
+            x = 0.5 * (a + b);
+        }
+        if bisect || (b - a).abs() <= 0.5 * width {
+            (steps, width) = (0, (b - a).abs());
+        }
+        // Converged when the steps stall below the tolerance (the far end of the bracket
+        // need not move in).
+        if (x - previous).abs() <= tol {
+            return Some(x);
+        }
+        previous = x;
+        let fx = f(x);
+        if fx.is_nan() {
+            return None;
+        }
+        if fx == 0.0 {
+            return Some(x);
+        }
+        if (fx < 0.0) == (fb < 0.0) {
+            (b, fb) = (x, fx);
+            if side == -1 {
+                fa *= 0.5;
+            }
+            side = -1;
+        } else {
+            (a, fa) = (x, fx);
+            if side == 1 {
+                fb *= 0.5;
+            }
+            side = 1;
+        }
+    }
+    Some(if fa.abs() < fb.abs() { a } else { b })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -207,6 +276,24 @@ mod tests {
             c = next;
         }
         c
+    }
+
+    #[test]
+    fn illinois_converges_on_bracketed_roots() {
+        let mut calls = 0;
+        let root = illinois_root(
+            |x| {
+                calls += 1;
+                x.powi(3) - 2.0
+            },
+            (0.0, -2.0),
+            (2.0, 6.0),
+            1e-14,
+        )
+        .unwrap();
+        assert!((root - 2f64.cbrt()).abs() < 1e-14, "{root}");
+        assert!(calls < 20, "{calls} evaluations");
+        assert!(illinois_root(|x| x, (1.0, 1.0), (2.0, 2.0), 1e-9).is_none());
     }
 
     #[test]

@@ -78,12 +78,19 @@ pub fn robust_normalize(v: DVec3) -> Option<DVec3> {
     Some(scaled / scaled.length())
 }
 
-/// The unit vector along `v`; `v` must be finite and non-zero (it need not be unit).
+/// The unit vector along `v`; `v` must be finite and non-zero (it need not be unit), and not
+/// subnormal (a largest component below f64::MIN_POSITIVE ≈ 2.2e-308, whose direction double
+/// precision does not resolve).
 pub fn check_unit_direction(v: DVec3, name: impl Display + Copy) -> Result<DVec3> {
     check_finite(v, name)?;
     match robust_normalize(v) {
         Some(u) => Ok(u),
-        None => invalid!("{name} is a zero vector and has no direction"),
+        None if v == DVec3::ZERO => invalid!("{name} is a zero vector and has no direction"),
+        None => invalid!(
+            "{name} is subnormal (largest component {}, below 2.2e-308): its direction is not \
+             resolved in double precision; scale it",
+            crate::error::Num(v.abs().max_element())
+        ),
     }
 }
 
@@ -91,10 +98,7 @@ pub fn check_unit_direction(v: DVec3, name: impl Display + Copy) -> Result<DVec3
 ///
 /// This is how a caller's `initial_normal` becomes the first frame vector f2.
 pub fn normal_plane_unit(n: DVec3, tangent: DVec3, name: &str) -> Result<DVec3> {
-    let n = check_finite(n, name)?;
-    let Some(unit) = robust_normalize(n) else {
-        return invalid!("{name} is a zero vector");
-    };
+    let unit = check_unit_direction(n, name)?;
     let projected = unit - unit.dot(tangent) * tangent;
     if projected.length() < PARALLEL_TOLERANCE {
         return invalid!(
@@ -150,6 +154,18 @@ mod tests {
         assert!((tiny.length() - 1.0).abs() < 1e-15);
         let huge = check_unit_direction(DVec3::new(1e300, -1e300, 1e300), "t").unwrap();
         assert!((huge.length() - 1.0).abs() < 1e-15);
+    }
+
+    /// Issue finding: a subnormal tangent was reported as "a zero vector".
+    #[test]
+    fn subnormal_vectors_are_named_as_such() {
+        let e = check_unit_direction(DVec3::new(1e-310, 0.0, 0.0), "tangents[1]").unwrap_err();
+        assert!(
+            e.message()
+                .starts_with("tangents[1] is subnormal (largest component 1e-310"),
+            "{e}"
+        );
+        assert!(check_unit_direction(DVec3::new(3e-308, 0.0, 0.0), "t").is_ok());
     }
 
     #[test]

@@ -9,7 +9,10 @@
 //!
 //!   d*μ(v) = (V·|D|² − 2 (V·D) D) / (d·|D|²)                (degree m + 2n).
 //!
-//! A plane reflection acts linearly and keeps degrees. Every inversion reverses
+//! D is divided by a power of two of its size first (|D|² neither overflows nor underflows),
+//! and the maps of the Hermite construction, spheres through a point near the data, use
+//! D = n̂·w + κ(X − a·w) and the image formula of the `transform` notes (no cancellation
+//! against a far centre). A plane reflection acts linearly and keeps degrees. Every inversion reverses
 //! orientation, so f₃ is negated to keep f₃ = t × f₂. By Theorem 1 the image of a
 //! rotation-minimizing frame is rotation-minimizing on the image curve, so exact rational
 //! RMFs map to exact rational RMFs. Images may have positive *functions* with negative
@@ -19,7 +22,8 @@ use super::transform::{Inversion, MobiusMap};
 use crate::bezier::bernstein::{positive_subdivision, product, restrict, MAX_DEGREE};
 use crate::bezier::{PiecewiseCurve, RationalBezierCurve};
 use crate::error::{invalid, Result};
-use crate::frames::rational::{RationalFrameSegment, RationalFrames};
+use crate::frames::rational::{RationalFrameSegment, RationalFrames, Turning};
+use crate::math::largest_coordinate;
 use glam::{DVec3, DVec4};
 
 /// Halvings allowed per segment when making weights positive (2⁻³⁰ of a segment is far
@@ -71,39 +75,105 @@ pub fn map_raw_segment(
         .collect()
 }
 
-/// D = X − c·w and q = |D|² of a segment, for the sphere inversion centred at `center`.
-fn offset_and_square(points: &[DVec4], center: DVec3) -> (Vec<DVec3>, Vec<f64>) {
-    let d: Vec<DVec3> = points.iter().map(|h| h.truncate() - center * h.w).collect();
-    let q = product(&d, &d, |a: DVec3, b: DVec3| a.dot(b));
-    (d, q)
-}
-
-/// The image of a segment under one inversion.
-fn invert_points(inv: &Inversion, points: &[DVec4]) -> Homogeneous {
+/// The axis of the reflection (12) along a segment, as Bernstein coefficients of the
+/// segment's degree, for a sphere inversion (`None` for a plane, whose axis is constant):
+/// (X − c·w)/S for a sphere with centre c (S a power of two of the size of X − c·w, so that
+/// its square neither overflows nor underflows), n̂·w + κ(X − a·w) for a sphere through a
+/// (module notes of `transform`). Either is a positive multiple of y − c at every point.
+fn reflection_axis(inv: &Inversion, points: &[DVec4]) -> Option<Vec<DVec3>> {
     match *inv {
-        Inversion::Sphere { center, radius } => {
-            let (d, q) = offset_and_square(points, center);
-            let w: Vec<f64> = points.iter().map(|h| h.w).collect();
-            let wd = product(&w, &d, |a: f64, b: DVec3| b * a);
-            q.iter()
-                .zip(&wd)
-                .map(|(&qi, &wdi)| (center * qi + wdi * (radius * radius)).extend(qi))
-                .collect()
+        Inversion::Sphere { center, .. } => {
+            let d: Vec<DVec3> = points.iter().map(|h| h.truncate() - center * h.w).collect();
+            let scale = power_of_two_above(largest_coordinate(d.iter().copied()));
+            Some(d.iter().map(|&v| v / scale).collect())
         }
-        Inversion::Plane { point, normal } => points
-            .iter()
-            .map(|h| {
-                (h.truncate() - 2.0 * (h.truncate() - point * h.w).dot(normal) * normal).extend(h.w)
-            })
-            .collect(),
+        Inversion::Plane { .. } => None,
+        Inversion::Through {
+            point,
+            normal,
+            curvature,
+        } => (curvature != 0.0).then(|| {
+            points
+                .iter()
+                .map(|h| normal * h.w + (h.truncate() - point * h.w) * curvature)
+                .collect()
+        }),
     }
 }
 
-/// A frame along the segment `points`, carried through one inversion (f₃ negated).
+/// The power of two at or above `x` (1 for zero), so that dividing by it is exact.
+fn power_of_two_above(x: f64) -> f64 {
+    if x > 0.0 && x.is_finite() {
+        2f64.powi(x.log2().ceil() as i32)
+    } else {
+        1.0
+    }
+}
+
+/// |v|² of a vector polynomial, in Bernstein form of twice its degree.
+fn square(v: &[DVec3]) -> Vec<f64> {
+    product(v, v, |a: DVec3, b: DVec3| a.dot(b))
+}
+
+/// The image of a segment under one inversion: for a sphere with centre c, radius r and
+/// the axis D/S of [`reflection_axis`], c + r² D/|D|² = (c·|D/S|² + (r²/S)·w·D/S) / |D/S|²;
+/// for a sphere through a, the formula of the `transform` module notes; a plane reflects
+/// the coefficients (degree kept).
+fn invert_points(inv: &Inversion, points: &[DVec4]) -> Homogeneous {
+    let weights: Vec<f64> = points.iter().map(|h| h.w).collect();
+    match (*inv, reflection_axis(inv, points)) {
+        (Inversion::Sphere { center, radius }, Some(axis)) => {
+            let d: Vec<DVec3> = points.iter().map(|h| h.truncate() - center * h.w).collect();
+            let scale = power_of_two_above(largest_coordinate(d.iter().copied()));
+            let factor = radius * (radius / scale);
+            let q = square(&axis);
+            let wd = product(&weights, &axis, |a: f64, b: DVec3| b * a);
+            q.iter()
+                .zip(&wd)
+                .map(|(&qi, &wdi)| (center * qi + wdi * factor).extend(qi))
+                .collect()
+        }
+        (
+            Inversion::Through {
+                point,
+                normal,
+                curvature,
+            },
+            Some(axis),
+        ) => {
+            let delta: Vec<DVec3> = points.iter().map(|h| h.truncate() - point * h.w).collect();
+            let reflected: Vec<DVec3> = delta
+                .iter()
+                .map(|&d| d - 2.0 * d.dot(normal) * normal)
+                .collect();
+            let q = square(&axis);
+            let w_reflected = product(&weights, &reflected, |a: f64, b: DVec3| b * a);
+            let delta_squared = square(&delta);
+            q.iter()
+                .zip(&w_reflected)
+                .zip(&delta_squared)
+                .map(|((&qi, &wr), &dd)| (point * qi + wr - normal * (curvature * dd)).extend(qi))
+                .collect()
+        }
+        (Inversion::Plane { point, normal }, _) | (Inversion::Through { point, normal, .. }, _) => {
+            points
+                .iter()
+                .map(|h| {
+                    (h.truncate() - 2.0 * (h.truncate() - point * h.w).dot(normal) * normal)
+                        .extend(h.w)
+                })
+                .collect()
+        }
+        (Inversion::Sphere { .. }, None) => unreachable!("a sphere has an axis"),
+    }
+}
+
+/// A frame along the segment `points`, carried through one inversion by the reflection
+/// (12) in its axis (f₃ negated: an inversion reverses orientation).
 fn transport_frame(inv: &Inversion, points: &[DVec4], frame: RawFrame) -> RawFrame {
-    match *inv {
-        Inversion::Sphere { center, .. } => {
-            let (d, q) = offset_and_square(points, center);
+    match (reflection_axis(inv, points), *inv) {
+        (Some(d), _) => {
+            let q = square(&d);
             let reflect = |v: &[DVec3], sign: f64| -> Vec<DVec3> {
                 let vq = product(v, &q, |a: DVec3, b: f64| a * b);
                 let vd = product(v, &d, |a: DVec3, b: DVec3| a.dot(b));
@@ -119,7 +189,7 @@ fn transport_frame(inv: &Inversion, points: &[DVec4], frame: RawFrame) -> RawFra
                 denominator: product(&frame.denominator, &q, |a: f64, b: f64| a * b),
             }
         }
-        Inversion::Plane { normal, .. } => {
+        (None, Inversion::Plane { normal, .. } | Inversion::Through { normal, .. }) => {
             let reflect = |v: &[DVec3], sign: f64| {
                 v.iter()
                     .map(|&x| (x - 2.0 * x.dot(normal) * normal) * sign)
@@ -131,6 +201,7 @@ fn transport_frame(inv: &Inversion, points: &[DVec4], frame: RawFrame) -> RawFra
                 denominator: frame.denominator,
             }
         }
+        (None, Inversion::Sphere { .. }) => unreachable!("a sphere has an axis"),
     }
 }
 
@@ -163,11 +234,7 @@ fn positive_pieces(points: &[DVec4], frame: Option<&RawFrame>, segment: usize) -
 
 /// `a + (b − a)·s`, exactly `a` and `b` at the ends (breakpoints must match exactly).
 pub fn global_parameter(a: f64, b: f64, s: f64) -> f64 {
-    match s {
-        0.0 => a,
-        1.0 => b,
-        _ => a + (b - a) * s,
-    }
+    crate::math::lerp(a, b, s)
 }
 
 /// The image of a piecewise curve under a Möbius map, exactly.
@@ -193,7 +260,7 @@ pub fn map_framed_curve(
 fn check_image_degrees(map: &MobiusMap, n: usize, m: Option<usize>) -> Result<()> {
     let (mut curve, mut frame) = (n, m);
     for inversion in map.inversions() {
-        if let Inversion::Sphere { .. } = inversion {
+        if inversion.is_sphere() {
             frame = frame.map(|m| m.saturating_add(curve.saturating_mul(2)));
             curve = curve.saturating_mul(2);
         }
@@ -238,8 +305,15 @@ fn map_pieces(
             breaks.push(global_parameter(a, b, s1));
         }
     }
+    // Theorem 1: the image of an RMF is an RMF; a twist against it is not kept as such
+    // (the image's arc length is another).
     let frames = match frames {
-        Some(_) => Some(RationalFrames::new(frame_segments, breaks.clone())?),
+        Some(f) => Some(
+            RationalFrames::new(frame_segments, breaks.clone())?.with_turning(match f.turning() {
+                Turning::RotationMinimizing => Turning::RotationMinimizing,
+                _ => Turning::Unknown,
+            }),
+        ),
         None => None,
     };
     Ok((PiecewiseCurve::new(segments, breaks)?, frames))

@@ -21,20 +21,36 @@
 //!   turn by as much as the spatial ones, |a₁ − a₀| = ∠(t₀, t₁): C-shaped, nearly isosceles
 //!   (the invariant sum is O(h²), the turning O(h)), with planar curvature ≈ the curve's.
 //!
-//! The sphere's centre z solves (z − p₀)·t₀ = 0, (z − p₁)·t₁ = 0, (z − m)·(p₁ − p₀) = 0 (m the
-//! midpoint). When t₀, t₁ and the chord are (nearly) coplanar the system is singular: the
-//! sphere degenerates to a plane and the data are planar — then no map is needed. The
-//! threshold 1e-8 on the normalized determinant balances the two errors: below it the
-//! sphere's radius exceeds 1e8 chords and the inversion loses more digits than treating the
-//! data as planar costs (≤ 1e-8 rad).
+//! Nearly planar data: no threshold. With m the chord's midpoint, e the unit chord and
+//! L/2 = ℓ, the sphere's centre is z = m + Y/s with
+//!
+//! ```text
+//!   Y = −ℓ (c₀ t₁ × e + c₁ t₀ × e),   s = det(t₀, t₁, e),   cᵢ = tᵢ·e,
+//! ```
+//!
+//! (the solution of (z − p₀)·t₀ = 0, (z − p₁)·t₁ = 0, (z − m)·e = 0 by Cramer's rule, kept
+//! in homogeneous form): Y and s are continuous in the data and s → 0 is the planar limit,
+//! where z goes to infinity. A circle of the pencil whose centre lies from m along the unit
+//! w ⟂ e puts f at m + w/μ with
+//!
+//! ```text
+//!   μ = s / (Y·w + sgn(Y·w) √((Y·w)² + s²ℓ²)),
+//! ```
+//!
+//! also continuous, 0 in the planar limit. The inversion is taken in the form through p₀
+//! (`Inversion::Through`: normal n̂ = v/|v|, curvature κ = μ/|v| with v = −ℓμe − w), whose
+//! image formula has no cancellation against the far centre and becomes the reflection in
+//! the data's plane as s → 0; the image plane's normal is the image of the sphere's normal at
+//! p₀, ∝ −ℓs·e − Y, reflected in n̂. So the map, the planar data and the result move
+//! continuously into the planar case (s = 0 exactly: no map at all), and the mapped tangents
+//! lie in the plane to rounding.
 
 use super::transform::{Inversion, MobiusMap};
 use crate::hermite::HermiteSegment;
-use crate::math::{angle_between, bisect_root, orthonormal_to, signed_angle, solve_refined};
-use glam::{DMat3, DVec3};
-
-/// Below this |det(t₀, t₁, chord/|chord|)| the data count as planar.
-const PLANAR_TOLERANCE: f64 = 1e-8;
+use crate::math::{
+    angle_between, illinois_root, orthonormal_to, signed_angle, DoubleDouble, DoubleDoubleVec3,
+};
+use glam::DVec3;
 
 /// Largest asymmetry |a₀ + a₁| / |a₁ − a₀| of the planar data for which the paper's map is
 /// kept: its PH cubic then has leg ratios L₁/L₂ = L₂/L₃ within about [0.68, 1.47].
@@ -51,42 +67,102 @@ pub struct SegmentMap {
     pub map: MobiusMap,
     /// Unit normal of the plane the data lie in after the map.
     pub plane_normal: DVec3,
-    /// The sphere (centre, radius) for non-planar data.
+    /// The sphere (centre, radius) for non-planar data, when representable (`None` also
+    /// where nearly planar data have a centre beyond the range of f64).
     pub sphere: Option<(DVec3, f64)>,
 }
 
-/// The sphere through p₀ and p₁ touching t₀ and t₁, or `None` for (nearly) planar data.
-///
-/// For short segments the system is nearly singular (t₀, t₁ and the chord almost parallel),
-/// but what the construction needs is a small *residual* — the tangents touching the sphere
-/// to round-off — not an accurate centre. So the system is posed relative to the chord's
-/// midpoint m (right-hand sides of the chord's size, no cancellation of absolute
-/// coordinates) and the solution refined twice against its residual.
-pub fn segment_sphere(h: &HermiteSegment) -> Option<(DVec3, f64)> {
-    let chord = h.p1 - h.p0;
-    let unit_chord = chord / chord.length();
-    let rows = DMat3::from_cols(h.t0, h.t1, unit_chord).transpose();
-    if rows.determinant().abs() < PLANAR_TOLERANCE {
-        return None;
+/// The sphere of the module notes in homogeneous form: centre m + Y/s.
+#[derive(Clone, Copy, Debug)]
+struct PencilSphere {
+    midpoint: DVec3,
+    /// Unit chord e.
+    chord: DVec3,
+    /// ℓ = |p₁ − p₀| / 2.
+    half: f64,
+    y: DVec3,
+    s: f64,
+}
+
+impl PencilSphere {
+    fn of(h: &HermiteSegment) -> Self {
+        let chord = h.p1 - h.p0;
+        let length = chord.length();
+        let e = chord / length;
+        let half = 0.5 * length;
+        // Y and s in double-double: for nearly parallel tangents Y is a tiny difference of
+        // its terms (1e-10 of them for a helix sampled at 1e-4), and its direction would be
+        // lost in doubles, tilting the sphere off the tangents by 1e-10.
+        let (t0, t1, ed) = (
+            DoubleDoubleVec3::from(h.t0),
+            DoubleDoubleVec3::from(h.t1),
+            DoubleDoubleVec3::from(e),
+        );
+        let y = (t1.cross(ed).scaled(t0.dot(ed)) + t0.cross(ed).scaled(t1.dot(ed)))
+            .scaled(DoubleDouble::from(-half))
+            .value();
+        let s = t0.cross(t1).dot(ed).value();
+        Self {
+            midpoint: 0.5 * (h.p0 + h.p1),
+            chord: e,
+            half,
+            y,
+            s,
+        }
     }
-    // y = z − m: y·t₀ = −(chord·t₀)/2, y·t₁ = (chord·t₁)/2, y·chord = 0.
-    let rhs = DVec3::new(-0.5 * chord.dot(h.t0), 0.5 * chord.dot(h.t1), 0.0);
-    let y = solve_refined(rows, rhs)?;
-    let midpoint = 0.5 * (h.p0 + h.p1);
-    Some((midpoint + y, (0.5 * chord + y).length()))
+
+    /// Exactly planar data (the sphere is a plane, or the data a line).
+    fn is_planar(&self) -> bool {
+        self.s == 0.0
+    }
+
+    /// Centre and radius, when representable.
+    fn centre_radius(&self) -> Option<(DVec3, f64)> {
+        if self.is_planar() {
+            return None;
+        }
+        let offset = self.y / self.s;
+        let centre = self.midpoint + offset;
+        let radius = offset.length().hypot(self.half);
+        (centre.is_finite() && radius.is_finite()).then_some((centre, radius))
+    }
+
+    /// The unit normal of the sphere at p₀ (either orientation), continuous into the plane.
+    fn normal_at_start(&self) -> DVec3 {
+        let n = -self.half * self.s * self.chord - self.y;
+        if n.length() > 0.0 {
+            n.normalize()
+        } else {
+            orthonormal_to(self.chord)
+        }
+    }
+}
+
+/// The sphere through p₀ and p₁ touching t₀ and t₁, or `None` for planar data (and for
+/// nearly planar data whose centre is beyond the range of f64).
+pub fn segment_sphere(h: &HermiteSegment) -> Option<(DVec3, f64)> {
+    PencilSphere::of(h).centre_radius()
 }
 
 /// The map used for a segment: the paper's, unless its planar data are S-shaped or nearly so
 /// (asymmetry above 1/4: the PH cubic degenerates towards a vanishing leg), in which case the
 /// turning map, which is C-shaped and nearly isosceles for any smooth curve sampled finely.
+///
+/// The paper's map is also given up when its planar data turn by less than half the spatial
+/// turn ∠(t₀, t₁): near the symmetric case (every helix segment) its planar turning is
+/// near zero — for finely sampled curves at the level of rounding, where the asymmetry is
+/// noise (a helix sampled 1e-4 apart had planar data turning by 5e-9 rad, "C-shaped" by
+/// chance, against 9e-5 in space). For generic data its turning is close to the spatial one.
 pub fn chosen_segment_map(h: &HermiteSegment) -> SegmentMap {
     let paper = segment_map(h);
     let asymmetry = planar_asymmetry(h, &paper);
-    if asymmetry <= MAX_ASYMMETRY {
+    let turns_enough = paper.map.inversions().is_empty()
+        || turning(h, &paper).abs() >= 0.5 * angle_between(h.t0, h.t1);
+    if asymmetry <= MAX_ASYMMETRY && turns_enough {
         return paper;
     }
     match turning_segment_map(h) {
-        Some(turning) if planar_asymmetry(h, &turning) < asymmetry => turning,
+        Some(turning) if planar_asymmetry(h, &turning) < asymmetry || !turns_enough => turning,
         _ => paper,
     }
 }
@@ -94,7 +170,7 @@ pub fn chosen_segment_map(h: &HermiteSegment) -> SegmentMap {
 /// |a₀ + a₁| / |a₁ − a₀| of the planar data under `m` (0 for isosceles data, ≥ 1 for
 /// S-shaped ones; 0 for planar data, which need no map).
 pub fn planar_asymmetry(h: &HermiteSegment, m: &SegmentMap) -> f64 {
-    if m.sphere.is_none() {
+    if m.map.inversions().is_empty() {
         return 0.0;
     }
     let chord = (h.p1 - h.p0).normalize();
@@ -107,9 +183,18 @@ pub fn planar_asymmetry(h: &HermiteSegment, m: &SegmentMap) -> f64 {
 
 /// The paper's map: f is the point of the sphere farthest from both end points.
 pub fn segment_map(h: &HermiteSegment) -> SegmentMap {
-    match segment_sphere(h) {
-        None => planar_map(h),
-        Some(sphere) => map_through_circle(h, sphere, great_circle_normal(h, sphere.0)),
+    let sphere = PencilSphere::of(h);
+    if sphere.is_planar() {
+        return planar_map(h);
+    }
+    // The great circle through p₀, p₁ and the centre: its centre lies from m along Y.
+    // When the chord is a diameter (the centre at m) f lies opposite to where the tangents
+    // lead (a great circle from p₀ to p₁ peaks in direction t₀ − t₁).
+    let radius = sphere.y.length().hypot(sphere.half * sphere.s.abs());
+    if sphere.y.length() > 1e-9 * radius {
+        map_towards(h, &sphere, sphere.y.normalize())
+    } else {
+        map_towards(h, &sphere, across_chord(h, sphere.chord))
     }
 }
 
@@ -117,34 +202,55 @@ pub fn segment_map(h: &HermiteSegment) -> SegmentMap {
 /// circles the one with f farther from the end points; `None` for planar data or when the
 /// pencil has no such circle.
 pub fn turning_segment_map(h: &HermiteSegment) -> Option<SegmentMap> {
-    let sphere = segment_sphere(h)?;
-    let chord = (h.p1 - h.p0).normalize();
-    let e1 = orthonormal_to(chord);
-    let e2 = chord.cross(e1);
-    let centre = |g: f64| farthest_on_circle(h, sphere.0, g.cos() * e1 + g.sin() * e2);
+    let sphere = PencilSphere::of(h);
+    if sphere.is_planar() {
+        return None;
+    }
+    let e1 = orthonormal_to(sphere.chord);
+    let e2 = sphere.chord.cross(e1);
+    let towards = |g: f64| Towards::new(h, &sphere, g.cos() * e1 + g.sin() * e2);
     let target = angle_between(h.t0, h.t1);
+    // Where Y·w = 0 the circle is centred at m and f crosses to its other side: the turning
+    // jumps there, so the pencil is sampled on both sides of it and not across.
+    let jump = (-sphere.y.dot(e1))
+        .atan2(sphere.y.dot(e2))
+        .rem_euclid(std::f64::consts::PI);
     let step = std::f64::consts::PI / PENCIL_SAMPLES as f64;
-    let mut best: Option<(f64, DVec3)> = None;
+    let mut at: Vec<f64> = (0..=PENCIL_SAMPLES).map(|k| k as f64 * step).collect();
+    at.extend(
+        [jump - 1e-9, jump + 1e-9]
+            .into_iter()
+            .filter(|g| (0.0..=std::f64::consts::PI).contains(g)),
+    );
+    at.sort_by(f64::total_cmp);
+    let samples: Vec<(f64, f64)> = at.iter().map(|&g| (g, towards(g).turning(h))).collect();
+    let mut best: Option<(f64, f64)> = None;
     for sign in [1.0, -1.0] {
-        let residual = |g: f64| turning_through(h, sphere, centre(g)) - sign * target;
-        for k in 0..PENCIL_SAMPLES {
-            let (g0, g1) = (k as f64 * step, (k + 1) as f64 * step);
-            let (r0, r1) = (residual(g0), residual(g1));
-            // A sign change, not a jump of the angles through ±π.
-            if r0 * r1 > 0.0 || (r0 - r1).abs() > std::f64::consts::PI {
+        let residual = |g: f64| towards(g).turning(h) - sign * target;
+        for pair in samples.windows(2) {
+            let ((g0, t0), (g1, t1)) = (pair[0], pair[1]);
+            let (r0, r1) = (t0 - sign * target, t1 - sign * target);
+            // A sign change, not a jump of the angles through ±π or of f across the circle.
+            if r0 * r1 > 0.0 || (r0 - r1).abs() > std::f64::consts::PI || (g0 < jump && jump < g1) {
                 continue;
             }
-            let Some(root) = bisect_root(residual, g0, g1, 1e-10) else {
+            let Some(root) = illinois_root(residual, (g0, r0), (g1, r1), 1e-11) else {
                 continue;
             };
-            let f = centre(root);
-            let distance = (f - h.p0).length().min((f - h.p1).length());
-            if best.is_none_or(|(d, _)| distance > d) {
-                best = Some((distance, f));
+            if residual(root).abs() > 1e-9 * target.max(1e-3) {
+                continue;
+            }
+            // Farther from the end points: a smaller |κ| (the centre is at distance 1/|κ|).
+            // Symmetric data (a helix) have two mirror solutions of equal |κ|: the first
+            // found (the turning along +plane normal) is kept unless another is clearly
+            // farther, so that rounding (a translation of the data) cannot swap them.
+            let closeness = towards(root).curvature.abs();
+            if best.is_none_or(|(c, _)| closeness < c * (1.0 - 1e-6)) {
+                best = Some((closeness, root));
             }
         }
     }
-    best.map(|(_, f)| map_from_centre(h, sphere, f))
+    best.map(|(_, g)| towards(g).map(&sphere))
 }
 
 /// Signed angle from the chord to the mapped tangent at `p`, about the plane normal.
@@ -153,71 +259,93 @@ fn chord_angle(m: &SegmentMap, chord: DVec3, p: DVec3, t: DVec3) -> f64 {
     signed_angle(chord, image, m.plane_normal)
 }
 
-/// Normal of the plane of the great circle through p₀ and p₁: it contains the chord and the
-/// centre — or, for antipodal end points, the chord and the way the tangents lead (a great
-/// circle from p₀ to p₁ peaks in direction t₀ − t₁).
-fn great_circle_normal(h: &HermiteSegment, center: DVec3) -> DVec3 {
+/// The planar turning a₁ − a₀ of the data under `m`.
+fn turning(h: &HermiteSegment, m: &SegmentMap) -> f64 {
     let chord = (h.p1 - h.p0).normalize();
-    let towards_midpoint = 0.5 * (h.p0 + h.p1) - center;
-    let radius = (h.p0 - center).length();
-    let in_plane = if towards_midpoint.length() > 1e-9 * radius {
-        towards_midpoint
-    } else {
-        h.t0 - h.t1
-    };
-    let n = chord.cross(in_plane);
-    if n.length() > 1e-12 {
-        n.normalize()
+    chord_angle(m, chord, h.p1, h.t1) - chord_angle(m, chord, h.p0, h.t0)
+}
+
+/// A unit vector across the chord, against the way the tangents lead: where f goes when the
+/// circle's centre is the chord's midpoint (every point of the circle is then equally far).
+fn across_chord(h: &HermiteSegment, chord: DVec3) -> DVec3 {
+    let lead = h.t0 - h.t1;
+    let across = lead - lead.dot(chord) * chord;
+    if across.length() > 1e-12 {
+        -across.normalize()
     } else {
         orthonormal_to(chord)
     }
 }
 
-/// The point of the circle (sphere ∩ plane through p₀ with unit `normal` ⟂ chord) farthest
-/// from both end points: where the inversion is centred.
-fn farthest_on_circle(h: &HermiteSegment, center: DVec3, normal: DVec3) -> DVec3 {
-    let circle_center = center - (center - h.p0).dot(normal) * normal;
-    let circle_radius = (h.p0 - circle_center).length();
-    let mut away = 0.5 * (h.p0 + h.p1) - circle_center;
-    if away.length() <= 1e-9 * circle_radius {
-        // The chord is a diameter of the circle: f opposite to where the tangents lead.
-        let across = normal.cross((h.p1 - h.p0).normalize());
-        away = if across.dot(h.t0 - h.t1) >= 0.0 {
-            across
+/// The inversion centred at the point f of the sphere on the circle of the pencil whose
+/// centre lies from the midpoint along the unit `w` ⟂ chord, farthest from both end points
+/// (f = m + w/μ, module notes), in the form through p₀.
+fn map_towards(h: &HermiteSegment, sphere: &PencilSphere, w: DVec3) -> SegmentMap {
+    Towards::new(h, sphere, w).map(sphere)
+}
+
+/// The inversion of [`map_towards`] before it is wrapped in a map: its normal n̂ and
+/// curvature κ at p₀ (the form through p₀), and the plane it maps the sphere onto.
+struct Towards {
+    p0: DVec3,
+    normal: DVec3,
+    curvature: f64,
+    plane_normal: DVec3,
+}
+
+impl Towards {
+    fn new(h: &HermiteSegment, sphere: &PencilSphere, w: DVec3) -> Self {
+        let (s, half) = (sphere.s, sphere.half);
+        let yw = sphere.y.dot(w);
+        let root = yw.hypot(s * half);
+        // Where the circle is centred at m (|Y·w| negligible) f lies against the way the
+        // tangents lead: on the side of `across_chord` (μ of the sign of s there).
+        let side = if yw.abs() > 1e-9 * root {
+            yw.signum()
+        } else if across_chord(h, sphere.chord).dot(w) >= 0.0 {
+            s.signum()
         } else {
-            -across
+            -s.signum()
         };
+        let mu = s / (yw + side * root);
+        let v = -half * mu * sphere.chord - w;
+        let length = v.length();
+        let normal = v / length;
+        let n = sphere.normal_at_start();
+        Self {
+            p0: h.p0,
+            normal,
+            curvature: mu / length,
+            plane_normal: (n - 2.0 * n.dot(normal) * normal).normalize(),
+        }
     }
-    circle_center - circle_radius * away.normalize()
-}
 
-/// The inversion centred at `f` (on the sphere) that fixes both end points.
-fn map_from_centre(h: &HermiteSegment, (center, radius): (DVec3, f64), f: DVec3) -> SegmentMap {
-    SegmentMap {
-        map: MobiusMap::new(vec![Inversion::Sphere {
-            center: f,
-            radius: (h.p0 - f).length(),
-        }]),
-        plane_normal: (f - center) / radius,
-        sphere: Some((center, radius)),
+    fn map(&self, sphere: &PencilSphere) -> SegmentMap {
+        SegmentMap {
+            map: MobiusMap::new(vec![Inversion::Through {
+                point: self.p0,
+                normal: self.normal,
+                curvature: self.curvature,
+            }]),
+            plane_normal: self.plane_normal,
+            sphere: sphere.centre_radius(),
+        }
     }
-}
 
-fn map_through_circle(h: &HermiteSegment, sphere: (DVec3, f64), normal: DVec3) -> SegmentMap {
-    map_from_centre(h, sphere, farthest_on_circle(h, sphere.0, normal))
-}
-
-/// The planar turning a₁ − a₀ of the data under the inversion centred at `f`, computed
-/// without building the map (the pencil search evaluates it many times).
-fn turning_through(h: &HermiteSegment, (center, radius): (DVec3, f64), f: DVec3) -> f64 {
-    let normal = (f - center) / radius;
-    let chord = (h.p1 - h.p0).normalize();
-    let angle = |p: DVec3, t: DVec3| {
-        let y = p - f;
-        let image = t - 2.0 * t.dot(y) / y.length_squared() * y;
-        signed_angle(chord, image, normal)
-    };
-    angle(h.p1, h.t1) - angle(h.p0, h.t0)
+    /// The planar turning a₁ − a₀ of the data under this inversion (the reflections (12)
+    /// in n̂ at p₀ and in n̂ + κ(p₁ − p₀) at p₁), without building the map: the pencil search
+    /// evaluates it many times.
+    fn turning(&self, h: &HermiteSegment) -> f64 {
+        let chord = (h.p1 - h.p0).normalize();
+        let reflect = |t: DVec3, axis: DVec3| {
+            let axis = axis.normalize();
+            t - 2.0 * t.dot(axis) * axis
+        };
+        let image0 = reflect(h.t0, self.normal);
+        let image1 = reflect(h.t1, self.normal + self.curvature * (h.p1 - h.p0));
+        signed_angle(chord, image1, self.plane_normal)
+            - signed_angle(chord, image0, self.plane_normal)
+    }
 }
 
 /// Planar data need no map; the plane is that of t₀ × t₁, else t₀ × chord, else any plane
@@ -250,10 +378,7 @@ mod tests {
     use crate::testing::{spatial_hermite_segment, Helix};
 
     fn inversion_centre(m: &SegmentMap) -> Option<DVec3> {
-        match m.map.inversions().first() {
-            Some(Inversion::Sphere { center, .. }) => Some(*center),
-            _ => None,
-        }
+        m.map.inversions().first().and_then(Inversion::center)
     }
 
     fn helix_segment(a: f64, b: f64) -> HermiteSegment {
@@ -411,5 +536,38 @@ mod tests {
             (f - center).dot(DVec3::Y) < 0.0,
             "f lies opposite to where the segment goes"
         );
+    }
+
+    /// Issue finding (dense samples): a helix sampled 1e-4 apart has tangents whose
+    /// Y = c₀ t₁ × e + c₁ t₀ × e is 1e-10 of its terms; in doubles the sphere missed the
+    /// tangents by 2e-10 rad (then more than the G1 tolerance of the joints). In
+    /// double-double it touches them to rounding, and the map takes both onto its plane.
+    #[test]
+    fn nearly_parallel_tangents_touch_the_sphere_to_rounding() {
+        for h in [1e-2, 1e-4, 1e-6] {
+            let data = helix_segment(0.0021, 0.0021 + h);
+            let (origin, scale) = (0.5 * (data.p0 + data.p1), (data.p1 - data.p0).length());
+            let local = HermiteSegment {
+                p0: (data.p0 - origin) / scale,
+                p1: (data.p1 - origin) / scale,
+                ..data
+            };
+            let sphere = PencilSphere::of(&local);
+            let n = sphere.normal_at_start();
+            assert!(
+                local.t0.dot(n).abs() < 1e-15,
+                "h = {h}: {:e}",
+                local.t0.dot(n)
+            );
+            let m = chosen_segment_map(&local);
+            for (p, t) in [(local.p0, local.t0), (local.p1, local.t1)] {
+                let image = m.map.normalized_differential(p, t).unwrap();
+                let off = image.dot(m.plane_normal).abs();
+                assert!(
+                    off < 1e-14,
+                    "h = {h}: the image tangent is {off:e} off the plane"
+                );
+            }
+        }
     }
 }

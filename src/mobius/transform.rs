@@ -7,9 +7,23 @@
 //! `d*φ_y(v) = v − 2 (v·(y − c)) (y − c) / |y − c|²` — a point-dependent orthogonal map.
 //! Theorem 1 is why these matter here: d*μ carries rotation-minimizing frames of a curve to
 //! rotation-minimizing frames of its image.
+//!
+//! Accuracy. An inversion's image of y is evaluated in coordinates centred at its centre and
+//! scaled by |y − c| (no overflow or underflow in the squares: (1e200, 0, 0) in the unit
+//! sphere goes to 1e-200). The maps of the Hermite construction have centres far from the
+//! data (a sphere of radius 1e8 chords for nearly planar data), where c + r²(y − c)/|y − c|²
+//! would cancel eight digits; they are given by a point `a` the sphere passes through, its
+//! unit normal n̂ there and its signed curvature κ (centre a − n̂/κ), and evaluated as
+//!
+//! ```text
+//!   φ(y) = a + (Δ − 2(n̂·Δ) n̂ − κ|Δ|² n̂) / |n̂ + κΔ|²,   Δ = y − a,
+//! ```
+//!
+//! which has no cancellation, and at κ = 0 is the reflection in the plane through `a`
+//! normal to n̂: the family is continuous from spheres to planes.
 
 use crate::error::{invalid, Result};
-use crate::math::{check_finite, check_unit_direction};
+use crate::math::{check_finite, check_unit_direction, robust_length, robust_normalize};
 use glam::DVec3;
 
 /// One inversion: in a sphere, or in a plane (a reflection, which fixes ∞).
@@ -19,6 +33,15 @@ pub enum Inversion {
     Sphere { center: DVec3, radius: f64 },
     /// Reflection in the plane through `point` with unit `normal`.
     Plane { point: DVec3, normal: DVec3 },
+    /// The inversion in the sphere through `point` with unit `normal` there and signed
+    /// `curvature` κ, i.e. centred at point − normal/κ with radius 1/|κ| (the module notes);
+    /// κ = 0 is the reflection in the plane through `point` normal to `normal`. (n̂, κ) and
+    /// (−n̂, −κ) are the same map.
+    Through {
+        point: DVec3,
+        normal: DVec3,
+        curvature: f64,
+    },
 }
 
 impl Inversion {
@@ -39,38 +62,96 @@ impl Inversion {
         })
     }
 
-    /// The image of `y`, or `None` for the centre of a sphere inversion (it goes to ∞).
+    /// The image of `y`, or `None` for the centre of a sphere inversion (it goes to ∞) and
+    /// for images beyond the range of f64.
     pub fn apply(&self, y: DVec3) -> Option<DVec3> {
-        match *self {
+        let image = match *self {
             Self::Sphere { center, radius } => {
                 let d = y - center;
-                let q = d.length_squared();
-                (q > 0.0).then(|| center + d * (radius * radius / q))
+                let length = robust_length(d);
+                if length == 0.0 {
+                    return None;
+                }
+                // r²/|d| as r·(r/|d|), along the unit d/|d|: no square over- or underflows.
+                center + (d / length) * (radius * (radius / length))
             }
-            Self::Plane { point, normal } => Some(y - 2.0 * (y - point).dot(normal) * normal),
+            Self::Plane { point, normal } => y - 2.0 * (y - point).dot(normal) * normal,
+            Self::Through {
+                point,
+                normal,
+                curvature,
+            } => {
+                let delta = y - point;
+                let axis = normal + curvature * delta;
+                let q = axis.length_squared();
+                if q == 0.0 {
+                    return None;
+                }
+                let reflected = delta - 2.0 * delta.dot(normal) * normal;
+                point + (reflected - curvature * delta.length_squared() * normal) / q
+            }
+        };
+        image.is_finite().then_some(image)
+    }
+
+    /// The direction from the centre towards `y` (the axis of the reflection (12)), any
+    /// length; the normal for a plane.
+    fn axis(&self, y: DVec3) -> DVec3 {
+        match *self {
+            Self::Sphere { center, .. } => y - center,
+            Self::Plane { normal, .. } => normal,
+            Self::Through {
+                point,
+                normal,
+                curvature,
+            } => normal + curvature * (y - point),
         }
     }
 
     /// The differential dφ_y(v): r² (|d|² v − 2 (v·d) d) / |d|⁴ with d = y − c, eq. (10)
-    /// scaled to radius r; a plane reflection is its own differential.
+    /// scaled to radius r, i.e. (r/|d|)² times the reflection (12); a plane reflection is its
+    /// own differential.
     pub fn differential(&self, y: DVec3, v: DVec3) -> DVec3 {
-        match *self {
+        let stretch = match *self {
             Self::Sphere { center, radius } => {
-                let d = y - center;
-                let q = d.length_squared();
-                (v * q - 2.0 * v.dot(d) * d) * (radius * radius / (q * q))
+                let ratio = radius / robust_length(y - center);
+                ratio * ratio
             }
-            Self::Plane { normal, .. } => v - 2.0 * v.dot(normal) * normal,
-        }
+            Self::Plane { .. } => 1.0,
+            Self::Through { .. } => 1.0 / self.axis(y).length_squared(),
+        };
+        self.normalized_differential(y, v) * stretch
     }
 
     /// The normalized differential d*φ_y(v), eq. (12): length-preserving.
     pub fn normalized_differential(&self, y: DVec3, v: DVec3) -> DVec3 {
-        let axis = match *self {
-            Self::Sphere { center, .. } => y - center,
-            Self::Plane { normal, .. } => normal,
+        let axis = match robust_normalize(self.axis(y)) {
+            Some(unit) => unit,
+            None => return v,
         };
-        v - 2.0 * v.dot(axis) / axis.length_squared() * axis
+        v - 2.0 * v.dot(axis) * axis
+    }
+
+    /// The centre of a sphere inversion (`None` for planes).
+    pub fn center(&self) -> Option<DVec3> {
+        match *self {
+            Self::Sphere { center, .. } => Some(center),
+            Self::Plane { .. } => None,
+            Self::Through {
+                point,
+                normal,
+                curvature,
+            } => (curvature != 0.0).then(|| point - normal / curvature),
+        }
+    }
+
+    /// True for an inversion in a sphere (which doubles the degree of a rational curve).
+    pub fn is_sphere(&self) -> bool {
+        match *self {
+            Self::Sphere { .. } => true,
+            Self::Plane { .. } => false,
+            Self::Through { curvature, .. } => curvature != 0.0,
+        }
     }
 }
 
@@ -192,5 +273,35 @@ mod tests {
             .unwrap_err()
             .message()
             .contains("normal"));
+    }
+
+    /// Issue finding: (1e200, 0, 0) inverted in the unit sphere gave (0, 0, 0) (the square
+    /// 1e400 overflowed), a sphere of radius 1e300 gave (inf, NaN, NaN). Images are now
+    /// computed without squares: exact where representable, `None` where they are not.
+    #[test]
+    fn images_neither_underflow_nor_overflow_in_squares() {
+        let unit = Inversion::sphere(DVec3::ZERO, 1.0).unwrap();
+        let image = unit.apply(DVec3::new(1e200, 0.0, 0.0)).unwrap();
+        assert!(
+            (image.x - 1e-200).abs() < 1e-215 && image.y == 0.0,
+            "{image}"
+        );
+        let tiny = unit.apply(DVec3::new(0.0, -3e-200, 4e-200)).unwrap();
+        assert!(
+            (tiny / 1e199 - DVec3::new(0.0, -1.2, 1.6)).length() < 1e-15,
+            "{tiny}"
+        );
+        let huge = Inversion::sphere(DVec3::new(1.0, 2.0, 3.0), 1e300).unwrap();
+        assert_eq!(
+            huge.apply(DVec3::new(2.0, 2.0, 3.0)),
+            None,
+            "1e600 is not a double"
+        );
+        let far = huge.apply(DVec3::new(1.0, 2.0, 3.0 + 1e300)).unwrap();
+        assert!((far / 1e300 - DVec3::Z).length() < 1e-15, "{far}");
+        let d = unit.differential(DVec3::new(1e200, 0.0, 0.0), DVec3::Y);
+        assert!((d.y - 1e-400f64.max(0.0)).abs() <= f64::MIN_POSITIVE && d.is_finite());
+        let n = unit.normalized_differential(DVec3::new(1e200, 0.0, 0.0), DVec3::X);
+        assert_eq!(n, -DVec3::X);
     }
 }

@@ -3,15 +3,16 @@
 //! closed-form RMF of [`ExactRmf`] started from the same frame, maximal per spline segment.
 //!
 //! Frames made with a twist (rational_rmf, item 7) follow the RMF turned by φ·s/S. The
-//! comparison takes that off: φ is the frames' turn against the RMF at the end of the spline,
-//! tracked continuously along the samples (zero, up to round-off, for an RMF: the rational
-//! frames are exact at every joint).
+//! comparison takes that off for such frames only, with the φ they were built with
+//! ([`Turning::Twisted`]): any other frame is compared with the RMF itself, so that a frame
+//! drifting uniformly against the RMF shows its drift (the end turn taken off as a twist
+//! for every frame hid it).
 
 use super::exact_rmf::ExactRmf;
 use crate::bezier::PiecewiseCurve;
 use crate::error::{invalid, Result};
 use crate::frames::metrics::angle_about_tangent;
-use crate::frames::rational::RationalFrames;
+use crate::frames::rational::{RationalFrames, Turning};
 use crate::math::minimize_bracketed;
 use crate::mesh::grid_parameters;
 use std::f64::consts::PI;
@@ -26,8 +27,8 @@ pub struct AngleErrors {
     pub per_segment: Vec<f64>,
     /// The largest of them.
     pub max: f64,
-    /// φ: the turn of the frames against the RMF from start to end, taken off as a twist
-    /// linear in arc length.
+    /// φ: the twist the frames were built with ([`Turning::Twisted`], 0 for other frames),
+    /// taken off linearly in arc length.
     pub twist: f64,
 }
 
@@ -43,7 +44,10 @@ pub fn angle_errors(spline: &PiecewiseCurve, frames: &RationalFrames) -> Result<
     let raw = |t: f64| angle_about_tangent(&exact.frame(t), &frames.frame(t));
     let samples = grid_parameters(fb, SAMPLES_PER_PIECE);
     let unwrapped = unwrap(samples.iter().map(|&t| raw(t)));
-    let twist = *unwrapped.last().expect("samples");
+    let twist = match frames.turning() {
+        Turning::Twisted { total } => total,
+        Turning::RotationMinimizing | Turning::Unknown => 0.0,
+    };
     let total = exact.total_length();
     let error_near = |t: f64, reference: f64| {
         let turned = reference + wrap(raw(t) - reference);
@@ -138,16 +142,39 @@ mod tests {
         // The twist ω·s(v) is not of the arctan form W follows best: 3e-5 rad on this coarse
         // spline (8 segments per turn of the helix), against 5e-6 without twist.
         assert!(errors.max < 1e-4, "{errors:?}");
-        // The Frenet frame of a helix turns against its RMF by −∫τ ds; on the PH spline that
-        // turn is no longer uniform (the frame even jumps at the joints): a large error.
+        // The Frenet frame of a helix turns against its RMF by −∫τ ds: no twist of its own is
+        // taken off, so the whole turn is its error.
         let frenet = angle_errors(&spline, &ph_frenet_frames(&spline).unwrap()).unwrap();
-        assert!(frenet.twist.abs() > 1.0);
-        assert!(frenet.max > 1e-3, "{frenet:?}");
+        assert_eq!(frenet.twist, 0.0);
+        assert!(frenet.max > 1.0, "{frenet:?}");
     }
 
     #[test]
     fn rejects_frames_of_another_curve() {
         let rmf = ph_rational_rmf(&helix_spline(3, 0.8), &RmfOptions::rmf(DVec3::Y)).unwrap();
         assert!(angle_errors(&helix_spline(4, 0.8), &rmf.frames).is_err());
+    }
+
+    /// Issue finding (paper gaps): the end turn was taken off as a twist for every frame, so
+    /// a frame drifting uniformly against the RMF reported no error. The same twisted frames
+    /// with their twist unknown now report it.
+    #[test]
+    fn a_uniformly_drifting_frame_is_caught() {
+        let spline = helix_spline(6, 0.8);
+        let options = RmfOptions {
+            twist: 0.5,
+            ..RmfOptions::rmf(DVec3::Y)
+        };
+        let twisted = ph_rational_rmf(&spline, &options).unwrap().frames;
+        let known = angle_errors(&spline, &twisted).unwrap();
+        assert!(known.max < 1e-4, "{known:?}");
+        let drifting = twisted.with_turning(Turning::Unknown);
+        let caught = angle_errors(&spline, &drifting).unwrap();
+        assert!((caught.max - 0.5).abs() < 1e-3, "{caught:?}");
+        assert!(
+            caught.per_segment.windows(2).all(|w| w[1] > w[0]),
+            "the drift grows along the spline: {:?}",
+            caught.per_segment
+        );
     }
 }

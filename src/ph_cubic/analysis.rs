@@ -32,11 +32,13 @@ use super::spline::ph_cubics;
 use crate::bezier::bernstein;
 use crate::bezier::{locate, PiecewiseCurve};
 use crate::error::no_solution;
+use crate::error::Num;
 use crate::error::{invalid, Error, Result};
 use crate::frames::metrics::angle_about_tangent;
-use crate::frames::rational::RationalFrames;
+use crate::frames::rational::{RationalFrames, Turning};
 use crate::math::minimize_bracketed;
 use crate::mesh::grid_parameters;
+use crate::sweep::check_frames_belong_to;
 use glam::{DVec2, DVec3};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
@@ -87,21 +89,35 @@ pub struct ParabolicLines {
 }
 
 impl<'a> ProfileSurface<'a> {
-    /// The sweep of `profile` along `spine` with `frames` (the frames must belong to the
-    /// spine: its breakpoints or a refinement of them).
+    /// The sweep of `profile` along `spine` with `frames`. The frames must belong to the
+    /// spine as for [`sweep`](crate::sweep::sweep) (its breakpoints or a refinement, and its
+    /// tangent), and be rotation-minimizing ([`Turning::RotationMinimizing`]): the formulas
+    /// of the module notes hold for an RMF only — for frames turning about the tangent at a
+    /// rate ω the surface's s_v has the part ω(c₂f₃ − c₃f₂) across the spine, and g, K and
+    /// (14) are other functions (the choice: refuse, rather than answer a question that was
+    /// not asked).
     pub fn new(
         spine: &'a PiecewiseCurve,
         frames: &'a RationalFrames,
         profile: &'a PiecewiseCurve,
     ) -> Result<Self> {
-        let (fb, sb) = (frames.breaks(), spine.breaks());
-        if fb[0] != sb[0]
-            || fb[fb.len() - 1] != sb[sb.len() - 1]
-            || sb
-                .iter()
-                .any(|b| fb.binary_search_by(|f| f.total_cmp(b)).is_err())
-        {
-            return invalid!("frames do not belong to the spine: their breakpoints differ");
+        check_frames_belong_to(spine, frames)?;
+        match frames.turning() {
+            Turning::RotationMinimizing => {}
+            Turning::Twisted { total } => {
+                return invalid!(
+                    "frames are twisted against the rotation-minimizing frame (by {} rad): the \
+                     profile-surface analysis (Mäurer & Jüttler §2.3) holds for RMF sweeps only",
+                    Num(total)
+                )
+            }
+            Turning::Unknown => {
+                return invalid!(
+                    "frames are not known to be rotation-minimizing (e.g. Frenet frames): the \
+                     profile-surface analysis (Mäurer & Jüttler §2.3) holds for RMF sweeps only; \
+                     use the frames of rmf_ph_rational_rmf, rmf_mobius_rrmf_* or rmf_rrmf_*"
+                )
+            }
         }
         let (pieces, profile_pieces) = (frames.segments().len(), profile.segments().len());
         if pieces.saturating_mul(profile_pieces) > MAX_ANALYSIS_PAIRS {
@@ -618,5 +634,52 @@ mod tests {
 
         let (len, start) = covering_arc(&[(6.2, 0.2), (0.3, 0.1)]);
         assert!((len - (0.4 + TAU - 6.2)).abs() < 1e-12 && (start - 6.2).abs() < 1e-12);
+    }
+
+    /// Issue finding: the three analyses accepted frames built on another spine with the
+    /// same breakpoints and answered (rmf_sweep_surface refuses them: "tangent differs").
+    #[test]
+    fn frames_of_another_spine_are_refused() {
+        let spine = helix_spline(4, 0.6);
+        let other = helix_spline(4, 0.5);
+        assert_eq!(spine.breaks(), other.breaks());
+        let rmf = ph_rational_rmf(&other, &RmfOptions::rmf(DVec3::Z)).unwrap();
+        let profile = arc_profile(0.3, DVec3::ZERO);
+        let e = ProfileSurface::new(&spine, &rmf.frames, &profile)
+            .err()
+            .unwrap();
+        assert!(e.message().contains("tangent differs"), "{e}");
+        assert!(sweep(&spine, &rmf.frames, &profile).is_err());
+    }
+
+    /// Issue finding (paper gaps): the analyses assume an RMF but answered for Frenet and
+    /// twisted frames, with values that hold only for an RMF sweep. They refuse them.
+    #[test]
+    fn frames_that_are_not_rotation_minimizing_are_refused() {
+        let spine = helix_spline(4, 0.6);
+        let profile = arc_profile(0.3, DVec3::ZERO);
+        let frenet = crate::ph_cubic::frenet::ph_frenet_frames(&spine).unwrap();
+        let e = ProfileSurface::new(&spine, &frenet, &profile)
+            .err()
+            .unwrap();
+        assert!(
+            e.message().contains("not known to be rotation-minimizing"),
+            "{e}"
+        );
+        let options = RmfOptions {
+            twist: 0.3,
+            ..RmfOptions::rmf(DVec3::Z)
+        };
+        let twisted = ph_rational_rmf(&spine, &options).unwrap();
+        let e = ProfileSurface::new(&spine, &twisted.frames, &profile)
+            .err()
+            .unwrap();
+        assert!(
+            e.message().contains("twisted") && e.message().contains("0.3 rad"),
+            "{e}"
+        );
+        // The RMF of the same spine is analysed; the Frenet sweep's curvature is not (13).
+        let rmf = ph_rational_rmf(&spine, &RmfOptions::rmf(DVec3::Z)).unwrap();
+        assert!(ProfileSurface::new(&spine, &rmf.frames, &profile).is_ok());
     }
 }

@@ -123,12 +123,7 @@ impl<'a> FramePieces<'a> {
     /// Global parameter of the local parameter v of segment k; the segment's own
     /// breakpoints are hit exactly (frames must contain the curve's breakpoints).
     fn global(&self, k: usize, v: f64) -> f64 {
-        let (a, b) = (self.spline_breaks[k], self.spline_breaks[k + 1]);
-        match v {
-            0.0 => a,
-            1.0 => b,
-            _ => a + v * (b - a),
-        }
+        crate::math::lerp(self.spline_breaks[k], self.spline_breaks[k + 1], v)
     }
 
     /// Appends pieces (p0, p1, frame) on [p0, p1] ⊂ [0, 1] of a part [v0, v1] of segment k.
@@ -152,9 +147,14 @@ impl<'a> FramePieces<'a> {
     }
 
     /// The frames joined continuously, starting at `initial_normal` (see
-    /// [`RationalFrames::chained`]).
-    pub fn into_chained_frames(self, initial_normal: DVec3) -> Result<RationalFrames> {
-        RationalFrames::chained(self.segments, self.breaks, initial_normal)
+    /// [`RationalFrames::chained_within`]), within the G1 tolerance `tolerance` of the
+    /// spline.
+    pub fn into_chained_frames(
+        self,
+        initial_normal: DVec3,
+        tolerance: f64,
+    ) -> Result<RationalFrames> {
+        RationalFrames::chained_within(self.segments, self.breaks, initial_normal, tolerance)
     }
 }
 

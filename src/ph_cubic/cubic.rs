@@ -87,17 +87,28 @@ impl PhCubic {
         [b[1] - b[0], b[2] - b[1], b[3] - b[2]]
     }
 
-    /// L₁, L₂, L₃.
+    /// L₁, L₂, L₃ (without over- or underflow in the squares).
     pub fn leg_lengths(&self) -> [f64; 3] {
-        self.legs().map(DVec3::length)
+        self.legs().map(robust_length)
+    }
+
+    /// The legs divided by the longest one, and its length: the products of the scalar
+    /// quantities below are taken on these, so that cubics of any size (1e-200 … 1e200) have
+    /// no square that under- or overflows (a helix ×1e-200 "missed the PH condition by NaN").
+    fn unit_legs(&self) -> ([DVec3; 3], f64) {
+        let legs = self.legs();
+        let longest = legs.iter().fold(0.0f64, |m, &h| m.max(robust_length(h)));
+        if longest == 0.0 {
+            return (legs, 1.0);
+        }
+        (legs.map(|h| h / longest), longest)
     }
 
     /// L₂ cos θ, the middle coefficient of σ/3. Both expressions h₀·h₁/L₁ and h₁·h₂/L₃ give it
     /// for a PH cubic; their mean keeps a rounded polygon symmetric in its two ends.
     pub fn speed_middle(&self) -> f64 {
-        let [h0, h1, h2] = self.legs();
-        let [l1, _, l3] = self.leg_lengths();
-        0.5 * (h0.dot(h1) / l1 + h1.dot(h2) / l3)
+        let ([h0, h1, h2], scale) = self.unit_legs();
+        0.5 * (h0.dot(h1) / h0.length() + h1.dot(h2) / h2.length()) * scale
     }
 
     /// Bernstein coefficients of the speed σ = |x'| (18): 3(L₁, L₂cosθ, L₃). The middle one
@@ -122,9 +133,10 @@ impl PhCubic {
     /// max |coefficient of |x'|² − σ²| / max |coefficient of |x'|²|, in the degree-4 Bernstein
     /// basis: zero exactly for PH cubics (see the module notes).
     pub fn hodograph_residual(&self) -> f64 {
-        let legs = self.legs();
-        let [l1, _, l3] = self.leg_lengths();
-        let speed = [l1, self.speed_middle(), l3];
+        let (legs, _) = self.unit_legs();
+        let [h0, h1, h2] = legs;
+        let (l1, l3) = (h0.length(), h2.length());
+        let speed = [l1, 0.5 * (h0.dot(h1) / l1 + h1.dot(h2) / l3), l3];
         let (mut squared, mut speed_squared) = ([0.0; 5], [0.0; 5]);
         add_product(&legs, &legs, |a: DVec3, b: DVec3| a.dot(b), &mut squared);
         add_product(&speed, &speed, |a: f64, b: f64| a * b, &mut speed_squared);
@@ -147,8 +159,8 @@ impl PhCubic {
 
     /// Condition (17) evaluated literally on the control polygon.
     pub fn polygon_condition(&self) -> PolygonCondition {
-        let [h0, h1, h2] = self.legs();
-        let [l1, l2, l3] = self.leg_lengths();
+        let ([h0, h1, h2], _) = self.unit_legs();
+        let [l1, l2, l3] = [h0, h1, h2].map(DVec3::length);
         let (n1, n2) = (h0.cross(h1), h1.cross(h2));
         let cos_psi = (n1 != DVec3::ZERO && n2 != DVec3::ZERO)
             .then(|| n1.dot(n2) / (n1.length() * n2.length()));
@@ -162,8 +174,8 @@ impl PhCubic {
 
     /// sin θ, θ = ∠(h₀, h₁): how far the polygon bends (0 for a straight line).
     pub fn bend(&self) -> f64 {
-        let [h0, h1, _] = self.legs();
-        let [l1, l2, _] = self.leg_lengths();
+        let ([h0, h1, _], _) = self.unit_legs();
+        let (l1, l2) = (h0.length(), h1.length());
         if l2 == 0.0 {
             return 0.0;
         }
@@ -172,14 +184,23 @@ impl PhCubic {
 
     /// min σ / max σ on [0, 1]. σ/3 = L₁ − 2bv + cv² is convex (c = L₁ − 2L₂cos θ + L₃ > 0), so
     /// its maximum is at an end and its minimum at an end or at the vertex, where it is
-    /// (L₁L₃ − L₂²cos²θ)/c (the a²/c of (31)).
+    /// (L₁L₃ − L₂²cos²θ)/c (the a²/c of (31)). For L₂cos θ ≥ 0 the value there is taken from
+    /// the Bernstein form L₁(1 − v)² + 2L₂cos θ v(1 − v) + L₃v² instead, a sum of positive
+    /// terms: for nearly straight polygons the literal formula is 0/0 (a cubic turning by
+    /// 2e-9 rad had a "cusp"), while σ is then nearly constant and any v near the vertex
+    /// gives its least value.
     pub fn speed_ratio(&self) -> f64 {
         let [l1, _, l3] = self.leg_lengths();
         let m = self.speed_middle();
         let (b, c) = (l1 - m, l1 - 2.0 * m + l3);
         let vertex = b / c;
         let least = if vertex > 0.0 && vertex < 1.0 {
-            (l1 * l3 - m * m).max(0.0) / c
+            if m >= 0.0 {
+                let u = 1.0 - vertex;
+                l1 * u * u + 2.0 * m * vertex * u + l3 * vertex * vertex
+            } else {
+                (l1 * l3 - m * m).max(0.0) / c
+            }
         } else {
             l1.min(l3)
         };
@@ -188,10 +209,10 @@ impl PhCubic {
 
     /// Curvature κ(v) = 6L₂|sin θ| / σ(v)² (18).
     pub fn curvature(&self, v: f64) -> f64 {
-        let [h0, h1, _] = self.legs();
-        let [l1, _, _] = self.leg_lengths();
-        let sigma = bernstein::evaluate(&self.speed(), v);
-        6.0 * h0.cross(h1).length() / l1 / (sigma * sigma)
+        let unit = self.normalized();
+        let ([h0, h1, _], scale) = self.unit_legs();
+        let sigma = bernstein::evaluate(&unit.speed(), v);
+        6.0 * h0.cross(h1).length() / h0.length() / (sigma * sigma) / scale
     }
 
     /// The cubic as a polynomial Bézier curve.
@@ -257,7 +278,7 @@ impl PhCubic {
             c.points
                 .iter()
                 .zip(&self.points)
-                .fold(0.0f64, |m, (a, b)| m.max((*a - *b).length()))
+                .fold(0.0f64, |m, (a, b)| m.max(robust_length(*a - *b)))
         };
         Ok(std::iter::once(solutions.shape_matching)
             .chain(solutions.other)

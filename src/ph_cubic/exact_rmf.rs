@@ -15,7 +15,7 @@ use crate::bezier::{locate, PiecewiseCurve};
 use crate::error::Result;
 use crate::error::ResultExt;
 use crate::frames::metrics::angle_about_tangent;
-use crate::frames::rational::joining_turn;
+use crate::frames::rational::{g1_tolerance, joining_turn};
 use crate::frames::Frame;
 use glam::DVec3;
 
@@ -43,6 +43,7 @@ impl ExactRmf {
     pub fn new(spline: &PiecewiseCurve, initial_normal: DVec3, twist_rate: f64) -> Result<Self> {
         let mut segments: Vec<Segment> = Vec::with_capacity(spline.segments().len());
         let mut arc_before = 0.0;
+        let tolerance = g1_tolerance(spline);
         for (k, cubic) in ph_cubics(spline)?.into_iter().enumerate() {
             let base = BaseFrame::of(&cubic).with_context(|| format!("ph_spline segment {k}"))?;
             let previous_end = segments.last().map(|p| p.frame(1.0, twist_rate));
@@ -51,6 +52,7 @@ impl ExactRmf {
                 previous_end.as_ref(),
                 initial_normal,
                 k,
+                tolerance,
             )
             .context("ph_spline")?;
             segments.push(Segment {

@@ -91,7 +91,8 @@ pub fn ph_cubic_hermite(data: &HermiteSegment) -> Result<PhHermiteSolutions> {
 /// positive end legs is PH; this is the canonical one). Parallel tangents with the chord off
 /// their line, or pointing against the chord, admit no PH cubic. `None` for other data.
 fn straight_interpolant(data: &HermiteSegment, unit_chord: DVec3) -> Result<Option<PhCubic>> {
-    let parallel = data.t0.cross(data.t1).length() <= COLLINEAR && data.t0.dot(data.t1) > 0.0;
+    let parallel =
+        data.t0.cross(data.t1 - data.t0).length() <= COLLINEAR && data.t0.dot(data.t1) > 0.0;
     if !parallel {
         return Ok(None);
     }
@@ -121,11 +122,10 @@ fn straight_interpolant(data: &HermiteSegment, unit_chord: DVec3) -> Result<Opti
 fn leg_lengths(data: &HermiteSegment, chord: DVec3) -> Result<Vec<(f64, f64)>> {
     let (t0, t1) = (data.t0, data.t1);
     let k = 0.5 * (t0 + t1);
-    let q = 0.5 * (t1 - t0);
+    let (q, across) = tangent_difference(t0, t1, chord);
     let q2 = q.length_squared();
     let f = q / q2.sqrt();
     let along_q = chord.dot(q);
-    let across = chord.dot(t0.cross(t1));
     let off_f = chord - chord.dot(f) * f;
     let a = 4.0 * k.length_squared() - 1.0;
     let b = -8.0 * k.dot(chord);
@@ -149,6 +149,23 @@ fn leg_lengths(data: &HermiteSegment, chord: DVec3) -> Result<Vec<(f64, f64)>> {
         ));
     }
     Ok(valid)
+}
+
+/// q = (t₁ − t₀)/2 and chord·(t₀ × t₁) from the tangents' parts along the unit chord e,
+/// cᵢ = tᵢ·e, and across it, uᵢ = tᵢ − cᵢe: q = ((c₁ − c₀)e + u₁ − u₀)/2 with
+/// c₁ − c₀ = (|u₀|² − |u₁|²)/(c₀ + c₁), and e·(u₀ × u₁). For nearly parallel tangents (a fine
+/// spline) (*) divides these by |q|² and |q|⁴; the literal differences of the unit vectors
+/// carry their rounding ε, the sines |uᵢ| carry only ε|uᵢ| (planar data turning by 5e-9 rad
+/// had "no real root" of (*), and a cubic whose legs did not turn equally).
+fn tangent_difference(t0: DVec3, t1: DVec3, e: DVec3) -> (DVec3, f64) {
+    let (c0, c1) = (t0.dot(e), t1.dot(e));
+    let (u0, u1) = (t0 - c0 * e, t1 - c1 * e);
+    let across = e.dot(u0.cross(u1));
+    if c0 + c1 <= 0.5 {
+        return (0.5 * (t1 - t0), across);
+    }
+    let along = (u0.length_squared() - u1.length_squared()) / (c0 + c1);
+    (0.5 * (along * e + (u1 - u0)), across)
 }
 
 /// Real roots of a s² + b s + c, a double root kept when round-off makes the discriminant
@@ -401,5 +418,45 @@ mod tests {
         let offset = mid - helix(t);
         let normal_part = offset - offset.dot(tangent(t)) * tangent(t);
         assert!(normal_part.length() < 1e-15, "{normal_part}");
+    }
+
+    /// Issue finding (Möbius splines of densely sampled curves): planar C-shaped data turning
+    /// by 5e-9 rad had "no real root" of (*): t₀ × t₁ of the unit tangents rounds to ε and (*)
+    /// divides it by |q|² ≈ 6e-18.
+    #[test]
+    fn nearly_straight_planar_data_have_their_cubic() {
+        // In the xy-plane and in general position (where the unit tangents' rounding, not
+        // the cross product, decides below ~1e-8 rad: data turning less are noise).
+        let tilt = glam::DQuat::from_axis_angle(DVec3::new(0.3, -0.5, 0.8).normalize(), 0.7);
+        for (tilt, (a0, a1)) in [
+            (glam::DQuat::IDENTITY, (-2.05e-9, 2.62e-9)),
+            (glam::DQuat::IDENTITY, (1e-12, -1.2e-12)),
+            (tilt, (-3e-6, 2.5e-6)),
+            (tilt, (-4e-5, 4.3e-5)),
+        ] {
+            let direction = |a: f64| tilt * DVec3::new(a.cos(), a.sin(), 0.0);
+            let data = segment(
+                tilt * DVec3::new(0.3, -0.2, 0.0),
+                direction(a0),
+                tilt * DVec3::new(1.3, -0.2, 0.0),
+                direction(a1),
+            );
+            let s = ph_cubic_hermite(&data).unwrap_or_else(|e| panic!("{a0:e} {a1:e}: {e}"));
+            let c = s.shape_matching;
+            let b = c.control_points();
+            assert_eq!((b[0], b[3]), (data.p0, data.p1));
+            assert!((b[1] - b[0]).normalize().cross(data.t0).length() < 1e-15);
+            assert!((b[3] - b[2]).normalize().cross(data.t1).length() < 1e-15);
+            assert!(c.hodograph_residual() <= c.ph_tolerance());
+            // No cusp (legs in the ratio the asymmetry asks), and the legs turn equally up to the tangents' rounding: their
+            // directions are known to ε, so the turns θ₁₂, θ₂₃ to about ε / θ.
+            assert!(c.speed_ratio() > 0.5, "{}", c.speed_ratio());
+            let p = c.polygon_condition();
+            let turn = (a1 - a0).abs();
+            assert!(
+                (p.theta12 - p.theta23).abs() < 1e-3 * turn,
+                "{a0:e} {a1:e}: {p:?}"
+            );
+        }
     }
 }

@@ -44,7 +44,7 @@ pub fn offset_profile(profile: &PiecewiseCurve, distance: f64) -> Result<Piecewi
                 w[0],
                 w[1],
             ))?);
-            breaks.push(if w[1] == 1.0 { b } else { a + w[1] * (b - a) });
+            breaks.push(crate::math::lerp(a, b, w[1]));
         }
     }
     PiecewiseCurve::new(segments, breaks)

@@ -31,7 +31,7 @@ use super::exact_rmf::{ExactRmf, SegmentTarget};
 use crate::bezier::PiecewiseCurve;
 use crate::error::ResultExt;
 use crate::error::{invalid, Result};
-use crate::frames::rational::RationalFrames;
+use crate::frames::rational::{g1_tolerance, RationalFrames, Turning};
 use crate::math::{check_finite, largest_coordinate};
 use glam::DVec3;
 use std::f64::consts::{FRAC_PI_2, PI};
@@ -124,8 +124,15 @@ pub fn ph_rational_rmf(spline: &PiecewiseCurve, options: &RmfOptions) -> Result<
             });
         }
     }
+    let turning = if total_twist == 0.0 {
+        Turning::RotationMinimizing
+    } else {
+        Turning::Twisted { total: total_twist }
+    };
     Ok(RationalRmf {
-        frames: pieces.into_chained_frames(initial_normal)?,
+        frames: pieces
+            .into_chained_frames(initial_normal, g1_tolerance(spline))?
+            .with_turning(turning),
         pieces: fits,
         total_twist,
     })
@@ -621,5 +628,33 @@ mod tests {
         };
         let e = ph_rational_rmf(&spline, &absurd).unwrap_err();
         assert!(e.message().contains("twist is too large"), "{e}");
+    }
+
+    /// Issue finding (translation): a helix spline of legs 0.18 moved by (1e6, −2e6, 3e6) was
+    /// refused as "not G1" — its tangents, differences of control points rounded to ε·4e6,
+    /// are known to 1e-9 only, the G1 tolerance of the joints. The tolerance now follows the
+    /// rounding of the control points.
+    #[test]
+    fn a_spline_far_from_the_origin_is_g1_to_its_rounding() {
+        let offset = DVec3::new(1e6, -2e6, 3e6);
+        let (points, tangents): (Vec<DVec3>, Vec<DVec3>) = (0..9)
+            .map(|i| {
+                let (p, t) = crate::testing::helix(0.5 * i as f64, 0.4);
+                (p + offset, t)
+            })
+            .unzip();
+        let spline = crate::ph_cubic::ph_spline_hermite(&points, &tangents).unwrap();
+        let rmf = ph_rational_rmf(&spline, &RmfOptions::rmf(DVec3::Z)).unwrap();
+        let near = helix_spline(8, 0.5);
+        let reference = ph_rational_rmf(&near, &RmfOptions::rmf(DVec3::Z)).unwrap();
+        for i in 0..=80 {
+            let t = 0.1 * i as f64;
+            let (a, b) = (rmf.frames.frame(t), reference.frames.frame(t));
+            assert!(
+                (a.f2 - b.f2).length() < 1e-8,
+                "t = {t}: {:e}",
+                (a.f2 - b.f2).length()
+            );
+        }
     }
 }

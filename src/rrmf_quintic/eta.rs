@@ -45,7 +45,7 @@ pub fn best_quintic(
         let found = least(&solve(&c, TAU * k as f64 / eta_samples as f64), measure);
         if let Some(q) = found {
             admissible += 1;
-            if best.is_none_or(|b| q.measures.get(measure) < b.measures.get(measure)) {
+            if best.is_none_or(|b| clearly_less(q.measures.get(measure), b.measures.get(measure))) {
                 best = Some(q);
             }
         }
@@ -62,12 +62,23 @@ pub fn best_quintic(
     })
 }
 
-/// The solution of least `measure` among `solutions`.
+/// Relative difference of two measures below which they count as equal: symmetric data
+/// (a helix) have mirror solutions (ρ and 1/ρ) of one measure, and rounding — a change of
+/// scale or a translation of the data — must not swap them.
+const SAME_MEASURE: f64 = 1e-9;
+
+/// `a` smaller than `b` by more than rounding.
+fn clearly_less(a: f64, b: f64) -> bool {
+    a < b - SAME_MEASURE * b.abs()
+}
+
+/// The solution of least `measure` among `solutions` (given in increasing ρ); of solutions
+/// of the same measure (to [`SAME_MEASURE`]) the one of least ρ.
 fn least(solutions: &[RrmfQuintic], measure: ShapeMeasure) -> Option<RrmfQuintic> {
-    solutions
-        .iter()
-        .copied()
-        .min_by(|a, b| a.measures.get(measure).total_cmp(&b.measures.get(measure)))
+    solutions.iter().copied().fold(None, |best, q| match best {
+        Some(b) if !clearly_less(q.measures.get(measure), b.measures.get(measure)) => Some(b),
+        _ => Some(q),
+    })
 }
 
 /// Brent's method on [η − step, η + step] around the sampled best; keeps the sample if the
@@ -86,7 +97,7 @@ fn refine(
         ETA_TOLERANCE,
     );
     match at(minimum.x) {
-        Some(q) if q.measures.get(measure) < sampled.measures.get(measure) => q,
+        Some(q) if clearly_less(q.measures.get(measure), sampled.measures.get(measure)) => q,
         _ => sampled,
     }
 }

@@ -17,7 +17,7 @@ use super::solutions::RrmfQuintic;
 use crate::bezier::PiecewiseCurve;
 use crate::error::no_solution;
 use crate::error::Result;
-use crate::frames::rational::{RationalFrameSegment, RationalFrames};
+use crate::frames::rational::{g1_tolerance, RationalFrameSegment, RationalFrames, Turning};
 use glam::DVec3;
 
 /// Largest ratio of the frame weights (the RMF denominator's Bernstein coefficients) on one
@@ -55,7 +55,11 @@ pub fn quintic_rmf(quintics: &[RrmfQuintic], initial_normal: DVec3) -> Result<Ra
             breaks.push(k as f64 + end);
         }
     }
-    RationalFrames::chained(segments, breaks, initial_normal)
+    let tolerance = g1_tolerance(&quintic_curve(quintics)?);
+    Ok(
+        RationalFrames::chained_within(segments, breaks, initial_normal, tolerance)?
+            .with_turning(Turning::RotationMinimizing),
+    )
 }
 
 /// Appends the pieces of [s0, s1] (their right ends and frames) to `out`, halving until the
