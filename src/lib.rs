@@ -14,6 +14,7 @@
 //! | [`solid`] | closed, outward-oriented meshes: capped tubes, thickened sheets |
 //! | [`mobius`] | Möbius maps, exact images of curves and frames, rational-RMF curves (Bartoň et al.) |
 //! | [`sweep`] | sweep surfaces x + c₂ f₂ + c₃ f₃ with exact rational frames |
+//! | [`wire`] | sweeps along wires of lines, arcs and curves with corners: closed solids of exact faces |
 //! | [`ph_cubic`] | PH cubic splines, their exact and rational RMFs, profile-surface analysis (Mäurer & Jüttler) |
 //! | [`rrmf_quintic`] | quintics with exact rational RMFs by G1 Hermite interpolation (Farouki, Giannelli & Sestini) |
 //! | [`cone_spline`] | cone spline surfaces: G1 cone pairs, approximation of developables, development, bending, offsets |
@@ -38,5 +39,6 @@ pub mod solid;
 pub mod sweep;
 #[cfg(test)]
 mod testing;
+pub mod wire;
 
 pub use error::{Error, ErrorKind, Result, ResultExt};
