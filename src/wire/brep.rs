@@ -620,9 +620,16 @@ impl<'a> Topology<'a> {
         let n = lp.edges.len();
         let next = if lp.closed { (e + 1) % n } else { e + 1 };
         let sides = boundaries(s);
-        let line = |k: usize| PCurve::Line {
-            origin: sides[k].origin,
-            direction: sides[k].direction,
+        let line = |k: usize| {
+            let (u, v) = sides[k].origin;
+            if k % 2 == 1 {
+                spine_pcurve(u, &s.knots_v)
+            } else {
+                PCurve::Line {
+                    origin: (u, v),
+                    direction: sides[k].direction,
+                }
+            }
         };
         let (top_edge, shift) = if j + 1 < self.stations {
             (self.sections[j + 1][l][e], 0.0)
@@ -738,6 +745,25 @@ impl<'a> Topology<'a> {
         };
         Ok((face, brep))
     }
+}
+
+/// The parameter line u = const of a spine edge: a `LINE`, or for a face of several spans
+/// along the spine the same line as a degree-1 B-spline with knots at the spans, so that
+/// OpenCascade's adaptive integration (BRepGProp with a tolerance) splits there.
+fn spine_pcurve(u: f64, knots_v: &[f64]) -> PCurve {
+    let mut breaks = knots_v.to_vec();
+    breaks.dedup();
+    if breaks.len() == 2 {
+        return PCurve::Line {
+            origin: (u, 0.0),
+            direction: (0.0, 1.0),
+        };
+    }
+    let mut knots = vec![breaks[0]];
+    knots.extend_from_slice(&breaks);
+    knots.push(breaks[breaks.len() - 1]);
+    let poles = breaks.iter().map(|&v| DVec3::new(u, v, 0.0)).collect();
+    PCurve::Curve(NurbsCurve::new(1, poles, None, knots).expect("increasing breaks"))
 }
 
 /// A profile edge as a curve in the cap's plane coordinates (x along f₂, y along the

@@ -154,6 +154,12 @@ pub fn sweep_wire(
     let size_n = size / scale;
     let chain = edge::chain(&raw, options.join_tolerance * size_n, size_n)?;
     let profile = Profile::new(&outer, &holes, options.solid, options.join_tolerance)?;
+    let mode = match options.corner {
+        Corner::Miter => CornerMode::Miter,
+        Corner::Round(Some(r)) => CornerMode::Round(r / scale),
+        Corner::Round(None) => CornerMode::Round(DEFAULT_RADIUS_FACTOR * profile.radius()),
+    };
+    let chain = edge::split_arcs(corner::resolve(chain, mode, scale)?);
     let faces = chain.pieces.len().saturating_mul(profile.edge_count());
     if faces > MAX_FACES {
         return invalid!(
@@ -161,12 +167,6 @@ pub fn sweep_wire(
              than {MAX_FACES}"
         );
     }
-    let mode = match options.corner {
-        Corner::Miter => CornerMode::Miter,
-        Corner::Round(Some(r)) => CornerMode::Round(r / scale),
-        Corner::Round(None) => CornerMode::Round(DEFAULT_RADIUS_FACTOR * profile.radius()),
-    };
-    let chain = corner::resolve(chain, mode, scale)?;
     let transport = frame::transport(
         &chain,
         &FrameOptions {

@@ -1,6 +1,10 @@
 //! The cross-section of a wire sweep: an outer loop and optional holes, planar curves in
-//! the normal plane (x ↦ f₂, y ↦ f₃, z = 0), each split at its G0 corners into the profile
-//! edges that become one lateral face each.
+//! the normal plane (x ↦ f₂, y ↦ f₃, z = 0), each split into the profile edges that become
+//! one lateral face each: at its G0 corners and at the joints of its Bézier segments, so
+//! that every face is a single rational patch across the profile. (OpenCascade's
+//! fixed-order volume and area integration, which FreeCAD's `Shape.Volume` uses, does not
+//! split at knots: a circle swept as one face of four quarters reads 4.5e-3 off in volume,
+//! as four faces 1e-11.)
 //!
 //! Also what the sweep needs to know about the profile: its signed area per loop (which way
 //! it turns, so faces are oriented outwards), its extent in a direction (the support
@@ -9,10 +13,9 @@
 //! whether a turn by 2π/k maps it onto itself (closure of closed wires modulo its
 //! symmetry).
 
-use super::edge::{end_direction, G1_ANGLE};
 use crate::bezier::{PiecewiseCurve, RationalBezierCurve};
 use crate::error::{invalid, Result};
-use crate::math::{angle_between, bounding_diagonal};
+use crate::math::bounding_diagonal;
 use crate::ph_cubic::profile::{critical_points, ProfileSegment};
 use glam::{DVec2, DVec3, DVec4};
 
@@ -25,7 +28,7 @@ const POLYGON_SAMPLES: usize = 32;
 /// One loop of the profile.
 #[derive(Clone, Debug)]
 pub(crate) struct ProfileLoop {
-    /// Consecutive edges, split at G0 corners; a closed loop without corners is one edge.
+    /// Consecutive edges, one per Bézier segment.
     pub edges: Vec<PiecewiseCurve>,
     pub closed: bool,
     /// Signed area (closed loops; 0 for open ones): positive when counter-clockwise.
@@ -261,8 +264,7 @@ fn profile_loop(curve: &PiecewiseCurve, tolerance: f64) -> Result<ProfileLoop> {
     if closed {
         flat = super::edge::with_ends(&flat, start, start);
     }
-    let corners = corner_indices(&flat, closed);
-    let edges = split(&flat, &corners, closed);
+    let edges = split(&flat);
     let area = if closed {
         signed_area(&polygon_of(&edges))
     } else {
@@ -278,49 +280,17 @@ fn profile_loop(curve: &PiecewiseCurve, tolerance: f64) -> Result<ProfileLoop> {
     })
 }
 
-/// Indices k of the segments that start at a G0 corner (k = 0: the closing joint of a
-/// closed curve).
-fn corner_indices(curve: &PiecewiseCurve, closed: bool) -> Vec<usize> {
-    let segments = curve.segments();
-    let n = segments.len();
-    let corner = |before: &RationalBezierCurve, after: &RationalBezierCurve| {
-        angle_between(end_direction(before, true), end_direction(after, false)) > G1_ANGLE
-    };
-    let mut corners: Vec<usize> = (1..n)
-        .filter(|&k| corner(&segments[k - 1], &segments[k]))
-        .collect();
-    if closed && corner(&segments[n - 1], &segments[0]) {
-        corners.insert(0, 0);
-    }
-    corners
-}
-
-/// The edges between the corners. A closed curve whose start is no corner has its first
-/// and last runs joined into one edge (the part before the start shifted behind the end).
-fn split(curve: &PiecewiseCurve, corners: &[usize], closed: bool) -> Vec<PiecewiseCurve> {
-    let segments = curve.segments();
+/// One edge per Bézier segment, on the curve's own parameters.
+fn split(curve: &PiecewiseCurve) -> Vec<PiecewiseCurve> {
     let breaks = curve.breaks();
-    let n = segments.len();
-    let run = |a: usize, b: usize| {
-        PiecewiseCurve::new(segments[a..b].to_vec(), breaks[a..=b].to_vec()).expect("a run")
-    };
-    let mut cuts: Vec<usize> = corners.iter().copied().filter(|&k| k > 0).collect();
-    if cuts.is_empty() || !closed || corners.first() == Some(&0) {
-        cuts.insert(0, 0);
-        cuts.push(n);
-        return cuts.windows(2).map(|w| run(w[0], w[1])).collect();
-    }
-    // Closed, with corners, smooth at the start: the wrapping edge runs from the last
-    // corner to the end and on, shifted by the period, to the first corner.
-    let (first, last) = (cuts[0], cuts[cuts.len() - 1]);
-    let period = breaks[n] - breaks[0];
-    let mut edges: Vec<PiecewiseCurve> = cuts.windows(2).map(|w| run(w[0], w[1])).collect();
-    let mut wrapped: Vec<RationalBezierCurve> = segments[last..].to_vec();
-    wrapped.extend_from_slice(&segments[..first]);
-    let mut wrapped_breaks: Vec<f64> = breaks[last..].to_vec();
-    wrapped_breaks.extend(breaks[1..=first].iter().map(|&b| b + period));
-    edges.push(PiecewiseCurve::new(wrapped, wrapped_breaks).expect("a wrapped run"));
-    edges
+    curve
+        .segments()
+        .iter()
+        .enumerate()
+        .map(|(k, s)| {
+            PiecewiseCurve::new(vec![s.clone()], breaks[k..=k + 1].to_vec()).expect("a segment")
+        })
+        .collect()
 }
 
 /// A dense polygon through a closed loop (its edges in order).
@@ -435,27 +405,19 @@ mod tests {
     }
 
     #[test]
-    fn a_smooth_closed_loop_is_one_edge_and_corners_split_it() {
+    fn a_circle_is_four_edges_and_holes_are_loops() {
         let profile = Profile::new(&circle(1.0), &[circle(0.5)], true, 1e-9).unwrap();
-        assert_eq!(profile.loops[0].edges.len(), 1);
+        assert_eq!(profile.loops[0].edges.len(), 4);
+        assert_eq!(profile.loops[1].edges[2].breaks(), &[2.0, 3.0]);
         assert!((profile.radius() - 1.0).abs() < 1e-15);
         assert!((profile.support(DVec2::new(0.6, 0.8)) - 1.0).abs() < 1e-12);
-        // A D shape starting in the middle of its straight side: the wrapping edge joins
-        // the end and the start.
-        let d = polyline(&[
-            (0., 0.),
-            (0., 1.),
-            (-1., 1.),
-            (-1., -1.),
-            (0., -1.),
-            (0., 0.),
-        ]);
-        let profile = Profile::new(&d, &[], true, 1e-9).unwrap();
-        let edges = &profile.loops[0].edges;
-        assert_eq!(edges.len(), 4);
-        let wrap = &edges[3];
-        assert_eq!(wrap.breaks(), &[4.0, 5.0, 6.0]);
-        assert!((wrap.eval(6.0) - DVec3::new(0., 1., 0.)).length() < 1e-15);
+        assert!(profile.loops[1].area > 0.0);
+        // A quarter turn maps the quarters onto one another.
+        let images = profile.symmetry(std::f64::consts::FRAC_PI_2).unwrap();
+        assert_eq!(
+            images[1].iter().map(|i| i.1).collect::<Vec<_>>(),
+            [1, 2, 3, 0]
+        );
     }
 
     #[test]

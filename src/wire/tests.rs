@@ -184,7 +184,11 @@ fn a_pipe_route_of_lines_and_an_arc_is_an_exact_solid() {
     let options = WireSweep::default();
     let shape = sweep_wire(&pipe_route(), &circle(1.0), &[], &options).unwrap();
     assert!(shape.is_solid());
-    assert_eq!(shape.faces().len(), 5, "three lateral faces and two caps");
+    assert_eq!(
+        shape.faces().len(),
+        14,
+        "three lateral faces per quarter of the circle and two caps"
+    );
     assert_closed_oriented(shape.brep());
     let length = 20.0 + 2.5 * PI;
     let v = volume(&shape);
@@ -199,7 +203,7 @@ fn a_pipe_route_of_lines_and_an_arc_is_an_exact_solid() {
     assert!(shape.report().max_parameter_cosine < 1e-12);
     assert_eq!(shape.report().spine_distance, 0.0);
     // Exact: every point of the lateral faces is at distance 1 from the spine.
-    let torus = shape.faces()[1].surface.as_ref().unwrap();
+    let torus = shape.faces()[4].surface.as_ref().unwrap();
     assert_eq!(
         torus.patches()[0].degree_v(),
         2,
@@ -207,14 +211,14 @@ fn a_pipe_route_of_lines_and_an_arc_is_an_exact_solid() {
     );
     for i in 0..=8 {
         for j in 0..=8 {
-            let p = torus.eval(4.0 * i as f64 / 8.0, j as f64 / 8.0);
+            let p = torus.eval(i as f64 / 8.0, j as f64 / 8.0);
             let radial = ((p.truncate() - glam::DVec2::new(10., 5.)).length() - 5.0).hypot(p.z);
             assert!((radial - 1.0).abs() < 1e-14, "{radial}");
         }
     }
     let step = shape.to_step("pipe").unwrap();
     assert!(step.contains("MANIFOLD_SOLID_BREP") && step.contains("CLOSED_SHELL"));
-    assert_eq!(step.matches("ADVANCED_FACE(").count(), 5);
+    assert_eq!(step.matches("ADVANCED_FACE(").count(), 14);
     assert!(step.contains("PLANE("));
 }
 
@@ -227,7 +231,7 @@ fn a_hollow_pipe_has_holes_and_the_volume_of_the_annulus() {
         &WireSweep::default(),
     )
     .unwrap();
-    assert_eq!(shape.faces().len(), 8);
+    assert_eq!(shape.faces().len(), 26);
     assert_closed_oriented(shape.brep());
     let expected = PI * (1.0 - 0.64) * (20.0 + 2.5 * PI);
     assert!(relative(volume(&shape), expected) < 1e-12);
@@ -469,4 +473,80 @@ fn results_do_not_depend_on_scale_or_position() {
             }
         }
     }
+}
+
+#[test]
+#[ignore]
+fn write_samples_for_manual_checks() {
+    let dir = std::path::Path::new("/tmp/wire_samples");
+    std::fs::create_dir_all(dir).unwrap();
+    let d = WireSweep::default();
+    let write = |name: &str, shape: Shape| {
+        std::fs::write(
+            dir.join(format!("{name}.step")),
+            shape.to_step(name).unwrap(),
+        )
+        .unwrap();
+        println!("{name}: volume {:.15}", volume(&shape));
+    };
+    write(
+        "pipe",
+        sweep_wire(&pipe_route(), &circle(1.0), &[], &d).unwrap(),
+    );
+    write(
+        "hollow",
+        sweep_wire(&pipe_route(), &circle(1.0), &[circle(0.8)], &d).unwrap(),
+    );
+    write(
+        "miter",
+        sweep_wire(
+            &staircase(),
+            &square(0.5),
+            &[],
+            &WireSweep {
+                corner: Corner::Miter,
+                ..d
+            },
+        )
+        .unwrap(),
+    );
+    write(
+        "round",
+        sweep_wire(
+            &staircase(),
+            &square(0.5),
+            &[],
+            &WireSweep {
+                corner: Corner::Round(Some(1.0)),
+                ..d
+            },
+        )
+        .unwrap(),
+    );
+    let half = vec![
+        line([0., 0., 0.], [10., 0., 0.]),
+        Edge::Arc {
+            start: DVec3::new(10., 0., 0.),
+            through: DVec3::new(15., 5., 0.),
+            end: DVec3::new(10., 10., 0.),
+        },
+        line([10., 10., 0.], [0., 10., 0.]),
+    ];
+    let s = sweep_wire(&half, &circle(1.0), &[], &d).unwrap();
+    println!("half: exact {:.15}", PI * (20.0 + 5.0 * PI));
+    write("half", s);
+    write(
+        "closed_nurbs",
+        sweep_wire(
+            &[Edge::Curve(closed_nurbs())],
+            &square(0.3),
+            &[],
+            &WireSweep {
+                tolerance: 1e-5,
+                closure_symmetry: 4,
+                ..d
+            },
+        )
+        .unwrap(),
+    );
 }
