@@ -134,6 +134,7 @@ impl Shape {
     }
 
     /// The topology as written to STEP (for checks).
+    #[cfg(test)]
     pub(crate) fn brep(&self) -> &Brep {
         &self.brep
     }
@@ -169,15 +170,6 @@ impl Placement {
             })
             .collect::<Result<Vec<_>>>()?;
         PiecewiseSurface::new(patches, s.u_breaks().to_vec(), s.v_breaks().to_vec())
-    }
-
-    fn curve(&self, c: &PiecewiseCurve) -> PiecewiseCurve {
-        let segments = c
-            .segments()
-            .iter()
-            .map(|s| s.similar(self.scale, self.offset))
-            .collect();
-        PiecewiseCurve::new(segments, c.breaks().to_vec()).expect("the same breaks")
     }
 }
 

@@ -338,16 +338,21 @@ fn not_planar(joint: &Joint, piece: &Piece) -> Error {
 
 #[cfg(test)]
 mod tests {
-    use super::super::edge::{chain, RawEdge};
+    use super::super::edge::{chain, RawEdge, Units};
     use super::*;
     use std::f64::consts::FRAC_PI_2;
+
+    const UNIT: Units = Units {
+        scale: 1.0,
+        offset: DVec3::ZERO,
+    };
 
     fn polyline(points: &[[f64; 3]]) -> Chain {
         let edges: Vec<RawEdge> = points
             .windows(2)
             .map(|w| RawEdge::Line(DVec3::from(w[0]), DVec3::from(w[1])))
             .collect();
-        chain(&edges, 1e-9, 10.0).unwrap()
+        chain(&edges, 1e-9, 10.0, UNIT).unwrap()
     }
 
     #[test]
@@ -391,7 +396,7 @@ mod tests {
                 DVec3::new(2., 0., 0.),
             ),
         ];
-        let c = chain(&edges, 1e-9, 5.0).unwrap();
+        let c = chain(&edges, 1e-9, 5.0, UNIT).unwrap();
         assert_eq!(c.joints[0].kind, JointKind::Corner);
         let r = resolve(c, CornerMode::Round(0.5), 1.0).unwrap();
         let Geometry::Arc(elbow) = &r.pieces[1].geometry else {

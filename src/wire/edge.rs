@@ -441,6 +441,23 @@ pub(crate) struct Chain {
     pub closed: bool,
 }
 
+/// How normalized coordinates are shown to the caller: p ↦ scale·p + offset.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Units {
+    pub scale: f64,
+    pub offset: DVec3,
+}
+
+impl Units {
+    pub fn point(&self, p: DVec3) -> DVec3 {
+        p * self.scale + self.offset
+    }
+
+    pub fn length(&self, l: f64) -> f64 {
+        l * self.scale
+    }
+}
+
 /// An edge as given, in normalized coordinates (see `sweep_wire`).
 #[derive(Clone, Debug)]
 pub(crate) enum RawEdge {
@@ -481,14 +498,14 @@ impl RawEdge {
 
 /// The oriented, connected chain of `edges` (module notes). `tolerance` is the largest gap
 /// between consecutive edge ends; `size` the wire's size (for relative tests).
-pub(crate) fn chain(edges: &[RawEdge], tolerance: f64, size: f64) -> Result<Chain> {
+pub(crate) fn chain(edges: &[RawEdge], tolerance: f64, size: f64, units: Units) -> Result<Chain> {
     if edges.is_empty() {
         return invalid!("edges: a wire needs at least one edge");
     }
     for (k, e) in edges.iter().enumerate() {
-        check_edge(e, tolerance).map_err(|e| e.context(format!("edge {k}")))?;
+        check_edge(e, tolerance, units).map_err(|e| e.context(format!("edge {k}")))?;
     }
-    let oriented = orient(edges, tolerance)?;
+    let oriented = orient(edges, tolerance, units)?;
     let n = oriented.len();
     let (first, _) = oriented[0].0.ends();
     let (_, last) = oriented[n - 1].0.ends();
@@ -540,11 +557,12 @@ pub(crate) fn chain(edges: &[RawEdge], tolerance: f64, size: f64) -> Result<Chai
 }
 
 /// Each edge on its own: not of zero length, arcs with a circle.
-fn check_edge(edge: &RawEdge, tolerance: f64) -> Result<()> {
+fn check_edge(edge: &RawEdge, tolerance: f64, units: Units) -> Result<()> {
+    let p = |q: &DVec3| units.point(*q);
     match edge {
         RawEdge::Line(a, b) => {
             if a.distance(*b) <= tolerance {
-                return invalid!("a line of zero length (from {a} to {b})");
+                return invalid!("a line of zero length (from {} to {})", p(a), p(b));
             }
         }
         RawEdge::Arc(a, m, c) => {
@@ -553,15 +571,25 @@ fn check_edge(edge: &RawEdge, tolerance: f64) -> Result<()> {
                 || m.distance(*c) <= tolerance
             {
                 return invalid!(
-                    "an arc whose points coincide ({a}, {m}, {c}): give a full circle as two arcs"
+                    "an arc whose points coincide ({}, {}, {}): give a full circle as two arcs",
+                    p(a),
+                    p(m),
+                    p(c)
                 );
             }
-            Arc::through(*a, *m, *c)?;
+            if Arc::through(*a, *m, *c).is_err() {
+                return invalid!(
+                    "an arc whose three points ({}, {}, {}) are collinear: they define no circle",
+                    p(a),
+                    p(m),
+                    p(c)
+                );
+            }
         }
         RawEdge::Curve(c) => {
             let poles: Vec<DVec3> = c.segments().iter().flat_map(|s| s.poles()).collect();
-            if poles.iter().all(|p| p.distance(poles[0]) <= tolerance) {
-                return invalid!("a curve of zero length (all its poles at {})", poles[0]);
+            if poles.iter().all(|q| q.distance(poles[0]) <= tolerance) {
+                return invalid!("a curve of zero length (all its poles at {})", p(&poles[0]));
             }
         }
     }
@@ -569,7 +597,7 @@ fn check_edge(edge: &RawEdge, tolerance: f64) -> Result<()> {
 }
 
 /// Each edge forwards or backwards so that it starts where the previous one ends.
-fn orient(edges: &[RawEdge], tolerance: f64) -> Result<Vec<(RawEdge, bool)>> {
+fn orient(edges: &[RawEdge], tolerance: f64, units: Units) -> Result<Vec<(RawEdge, bool)>> {
     let mut oriented: Vec<(RawEdge, bool)> = Vec::with_capacity(edges.len());
     for (k, e) in edges.iter().enumerate() {
         let (s, t) = e.ends();
@@ -589,11 +617,15 @@ fn orient(edges: &[RawEdge], tolerance: f64) -> Result<Vec<(RawEdge, bool)>> {
                 if gs > tolerance && gt > tolerance {
                     return invalid!(
                         "edges {} and {k} do not meet: the nearest ends are {:.3e} apart, more \
-                         than the join tolerance {tolerance:.3e} (edge {} ends at {end}, edge {k} \
-                         runs from {s} to {t})",
+                         than the join tolerance {:.3e} (edge {} ends at {}, edge {k} runs from \
+                         {} to {})",
                         k - 1,
-                        gs.min(gt),
-                        k - 1
+                        units.length(gs.min(gt)),
+                        units.length(tolerance),
+                        k - 1,
+                        units.point(end),
+                        units.point(s),
+                        units.point(t)
                     );
                 }
                 gs <= gt
@@ -609,8 +641,10 @@ fn orient(edges: &[RawEdge], tolerance: f64) -> Result<Vec<(RawEdge, bool)>> {
         let gap = first.ends().1.distance(second.ends().0);
         if gap > tolerance {
             return invalid!(
-                "edges 0 and 1 do not meet: the nearest ends are {gap:.3e} apart, more than the \
-                 join tolerance {tolerance:.3e}"
+                "edges 0 and 1 do not meet: the nearest ends are {:.3e} apart, more than the \
+                 join tolerance {:.3e}",
+                units.length(gap),
+                units.length(tolerance)
             );
         }
     }
@@ -868,6 +902,11 @@ pub(crate) fn turn_about(a: DVec3, b: DVec3, axis: DVec3) -> f64 {
 mod tests {
     use super::*;
 
+    const UNIT: Units = Units {
+        scale: 1.0,
+        offset: DVec3::ZERO,
+    };
+
     fn line(a: [f64; 3], b: [f64; 3]) -> RawEdge {
         RawEdge::Line(DVec3::from(a), DVec3::from(b))
     }
@@ -899,7 +938,7 @@ mod tests {
             line([1., 1., 0.], [1., 1e-9, 0.]),
             line([1., 1., 0.], [0., 1., 0.]),
         ];
-        let chain = chain(&edges, 1e-7, 2.0).unwrap();
+        let chain = chain(&edges, 1e-7, 2.0, UNIT).unwrap();
         assert!(!chain.closed);
         assert_eq!(chain.pieces.len(), 3);
         assert_eq!(chain.joints.len(), 2);
@@ -910,7 +949,7 @@ mod tests {
             line([0., 0., 0.], [1., 0., 0.]),
             line([1., 1e-3, 0.], [2., 0., 0.]),
         ];
-        let e = super::chain(&gap, 1e-7, 2.0).unwrap_err();
+        let e = super::chain(&gap, 1e-7, 2.0, UNIT).unwrap_err();
         assert!(e.message().contains("edges 0 and 1 do not meet"), "{e}");
         assert!(e.message().contains("1.000e-3"), "{e}");
     }
@@ -921,10 +960,10 @@ mod tests {
             line([0., 0., 0.], [1., 0., 0.]),
             line([1., 0., 0.], [0.5, 0., 0.]),
         ];
-        let e = chain(&back, 1e-7, 1.0).unwrap_err();
+        let e = chain(&back, 1e-7, 1.0, UNIT).unwrap_err();
         assert!(e.message().contains("turns back"), "{e}");
         let zero = [line([0., 0., 0.], [0., 0., 0.])];
-        let e = chain(&zero, 1e-7, 1.0).unwrap_err();
+        let e = chain(&zero, 1e-7, 1.0, UNIT).unwrap_err();
         assert!(
             e.message().contains("edge 0") && e.message().contains("zero length"),
             "{e}"
@@ -953,7 +992,7 @@ mod tests {
         ])
         .unwrap();
         let curve = PiecewiseCurve::with_unit_intervals(vec![quarter, straight, bent]).unwrap();
-        let chain = chain(&[RawEdge::Curve(curve)], 1e-7, 4.0).unwrap();
+        let chain = chain(&[RawEdge::Curve(curve)], 1e-7, 4.0, UNIT).unwrap();
         let kinds: Vec<&str> = chain
             .pieces
             .iter()

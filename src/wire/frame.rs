@@ -97,8 +97,6 @@ pub(crate) struct Framed {
 pub(crate) struct Transport {
     pub pieces: Vec<Framed>,
     pub closed: bool,
-    /// The turn added to the RMF from start to end (twist and closure), radians.
-    pub total_twist: f64,
     /// Closed wires: the frame after the closing joint is the start frame turned by this
     /// (a multiple of 2π/k up to rounding).
     pub closing_turn: f64,
@@ -305,7 +303,6 @@ pub(crate) fn transport(chain: &Chain, options: &FrameOptions) -> Result<Transpo
     Ok(Transport {
         pieces,
         closed: chain.closed,
-        total_twist,
         closing_turn,
     })
 }

@@ -152,8 +152,12 @@ pub fn sweep_wire(
         .map(|h| normalized(h, 1.0 / scale, DVec3::ZERO))
         .collect();
     let size_n = size / scale;
-    let chain = edge::chain(&raw, options.join_tolerance * size_n, size_n)?;
-    let profile = Profile::new(&outer, &holes, options.solid, options.join_tolerance)?;
+    let units = edge::Units {
+        scale,
+        offset: center,
+    };
+    let chain = edge::chain(&raw, options.join_tolerance * size_n, size_n, units)?;
+    let profile = Profile::new(&outer, &holes, options.solid, options.join_tolerance, scale)?;
     let mode = match options.corner {
         Corner::Miter => CornerMode::Miter,
         Corner::Round(Some(r)) => CornerMode::Round(r / scale),

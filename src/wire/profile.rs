@@ -46,17 +46,22 @@ pub(crate) type EdgeImage = (usize, usize, f64);
 
 impl Profile {
     /// The profile of `outer` with `holes`; `solid` needs closed loops. `tolerance` is the
-    /// relative distance within which a loop's end meets its start.
+    /// relative distance within which a loop's end meets its start; `unit` converts lengths
+    /// to the caller's units for messages.
     pub fn new(
         outer: &PiecewiseCurve,
         holes: &[PiecewiseCurve],
         solid: bool,
         tolerance: f64,
+        unit: f64,
     ) -> Result<Self> {
-        let mut loops = vec![profile_loop(outer, tolerance).map_err(|e| e.context("profile"))?];
+        let mut loops =
+            vec![profile_loop(outer, tolerance, unit).map_err(|e| e.context("profile"))?];
         for (k, hole) in holes.iter().enumerate() {
-            loops
-                .push(profile_loop(hole, tolerance).map_err(|e| e.context(format!("holes[{k}]")))?);
+            loops.push(
+                profile_loop(hole, tolerance, unit)
+                    .map_err(|e| e.context(format!("holes[{k}]")))?,
+            );
         }
         let outer = &loops[0];
         if solid && !outer.closed {
@@ -64,8 +69,8 @@ impl Profile {
             let last = &outer.edges[outer.edges.len() - 1];
             return invalid!(
                 "profile: a solid needs a closed profile, but it starts at {} and ends at {}",
-                first.eval(first.domain().0).truncate(),
-                last.eval(last.domain().1).truncate()
+                first.eval(first.domain().0).truncate() * unit,
+                last.eval(last.domain().1).truncate() * unit
             );
         }
         if !holes.is_empty() && !outer.closed {
@@ -225,7 +230,7 @@ fn same_edge(
 }
 
 /// One loop: planar, snapped shut if its ends meet, split at its corners.
-fn profile_loop(curve: &PiecewiseCurve, tolerance: f64) -> Result<ProfileLoop> {
+fn profile_loop(curve: &PiecewiseCurve, tolerance: f64, unit: f64) -> Result<ProfileLoop> {
     let poles: Vec<DVec3> = curve.segments().iter().flat_map(|s| s.poles()).collect();
     if poles.iter().any(|p| !p.is_finite()) {
         return invalid!("has a non-finite pole");
@@ -242,7 +247,7 @@ fn profile_loop(curve: &PiecewiseCurve, tolerance: f64) -> Result<ProfileLoop> {
         return invalid!(
             "pole {k} has z = {}: the profile lies in the normal plane (x along f2, y along f3, \
              z = 0)",
-            p.z
+            p.z * unit
         );
     }
     let flat: Vec<RationalBezierCurve> = curve
@@ -390,7 +395,7 @@ mod tests {
     #[test]
     fn a_square_has_four_edges_and_quarter_turn_symmetry() {
         let square = polyline(&[(1., 1.), (-1., 1.), (-1., -1.), (1., -1.), (1., 1.)]);
-        let profile = Profile::new(&square, &[], true, 1e-9).unwrap();
+        let profile = Profile::new(&square, &[], true, 1e-9, 1.0).unwrap();
         let lp = &profile.loops[0];
         assert_eq!(lp.edges.len(), 4);
         assert!(lp.closed && (lp.area - 4.0).abs() < 1e-12);
@@ -406,7 +411,7 @@ mod tests {
 
     #[test]
     fn a_circle_is_four_edges_and_holes_are_loops() {
-        let profile = Profile::new(&circle(1.0), &[circle(0.5)], true, 1e-9).unwrap();
+        let profile = Profile::new(&circle(1.0), &[circle(0.5)], true, 1e-9, 1.0).unwrap();
         assert_eq!(profile.loops[0].edges.len(), 4);
         assert_eq!(profile.loops[1].edges[2].breaks(), &[2.0, 3.0]);
         assert!((profile.radius() - 1.0).abs() < 1e-15);
@@ -423,12 +428,12 @@ mod tests {
     #[test]
     fn bad_profiles_are_refused() {
         let open = polyline(&[(0., 0.), (1., 0.), (1., 1.)]);
-        let e = Profile::new(&open, &[], true, 1e-9).unwrap_err();
+        let e = Profile::new(&open, &[], true, 1e-9, 1.0).unwrap_err();
         assert!(e.message().contains("closed profile"), "{e}");
-        assert!(Profile::new(&open, &[], false, 1e-9).is_ok());
-        let e = Profile::new(&open, &[circle(0.1)], false, 1e-9).unwrap_err();
+        assert!(Profile::new(&open, &[], false, 1e-9, 1.0).is_ok());
+        let e = Profile::new(&open, &[circle(0.1)], false, 1e-9, 1.0).unwrap_err();
         assert!(e.message().contains("holes need a closed"), "{e}");
-        let e = Profile::new(&circle(1.0), &[circle(2.0)], true, 1e-9).unwrap_err();
+        let e = Profile::new(&circle(1.0), &[circle(2.0)], true, 1e-9, 1.0).unwrap_err();
         assert!(
             e.message().contains("cross") || e.message().contains("outside"),
             "{e}"
@@ -439,7 +444,7 @@ mod tests {
         ])
         .unwrap()])
         .unwrap();
-        let e = Profile::new(&lifted, &[], false, 1e-9).unwrap_err();
+        let e = Profile::new(&lifted, &[], false, 1e-9, 1.0).unwrap_err();
         assert!(e.message().contains("z = 0.5"), "{e}");
     }
 }
