@@ -12,6 +12,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <time.h>
 
 #include "nurbs_eval.h"
 #include "rmf_check.h"
@@ -206,8 +207,11 @@ static void test_pipe_route(void) {
     CHECK(report.spine_distance == 0 && report.rmf_angle_error == 0 && report.face_count == 14, "exact spine");
     CHECK(report.max_parameter_cosine <= 1e-12 && report.singularity_margin > 0.79, "margin 1 - 1/5");
     CHECK(report.seam_gap == 0 && report.corner_turn == 0, "no closure, no corners");
-    CHECK_STATUS(rmf_shape_write_step(shape, "abi_wire_pipe.step"), RMF_OK, "");
-    FILE *file = fopen("abi_wire_pipe.step", "r");
+    char path[512];
+    snprintf(path, sizeof path, "%s/abi_wire_%ld.step", getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp",
+             (long)time(NULL) ^ (long)(uintptr_t)&path);
+    CHECK_STATUS(rmf_shape_write_step(shape, path), RMF_OK, "");
+    FILE *file = fopen(path, "r");
     CHECK(file != NULL, "the STEP file is written");
     if (file) {
         char line_text[4096];
@@ -217,7 +221,7 @@ static void test_pipe_route(void) {
         fclose(file);
         CHECK(solid, "a MANIFOLD_SOLID_BREP");
     }
-    remove("abi_wire_pipe.step");
+    remove(path);
     /* With a hole: the annulus. */
     const RmfCurve *holes[1] = {hole};
     CHECK_STATUS(rmf_wire_sweep(e, 3, profile, holes, 1, NULL, &hollow), RMF_OK, "");
