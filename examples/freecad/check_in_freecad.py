@@ -17,12 +17,18 @@ What is checked, each figure printed with its limit:
      spatial boundary curves (measured by FreeCAD on the tool's curve STEP); and the SVG
      drawing of the same pattern;
   E. FreeCAD's mesh reader reads the tool's OBJ as the library's tessellation;
-  F. both macros, with a selection as the GUI would give it.
+  F. both macros, with a selection as the GUI would give it;
+  G. wire sweeps: a Part.Wire of lines, arcs and a NURBS edge, polylines with round and miter
+     corners, a closed wire, through the glue (rmf_wire_sweep) into a Part.Solid read from
+     the STEP: valid, FreeCAD's own Shape.Volume against the closed form, the parameter lines
+     of every face by FreeCAD's derivatives; beside FreeCAD's own sweep (makePipeShell) of
+     the same wire; and the tool's pipe.step (examples/cli/pipe.json) as one valid solid.
 freecadcmd exits 0 on an exception, so the script exits 1 itself on any failure, and
 prints FREECAD CHECKS OK last (report lines start with '| ') when everything passed.
 """
 
 import json
+import math
 import os
 import sys
 import traceback
@@ -434,6 +440,114 @@ def part_f():
     FreeCAD.closeDocument(document.Name)
 
 
+def max_face_cosine(shape, faces=None):
+    """max |cos| between the parameter lines of the faces, by FreeCAD's derivatives, on
+    13 × 13 points inside each face's parameter box."""
+    worst = 0.0
+    for face in faces if faces is not None else shape.Faces:
+        u0, u1, v0, v1 = face.ParameterRange
+        for u in grid(u0, u1, 13)[1:-1]:
+            for v in grid(v0, v1, 13)[1:-1]:
+                du, dv = face.derivative1At(u, v)
+                if du.Length * dv.Length > 0:
+                    worst = max(worst, abs(du.dot(dv)) / (du.Length * dv.Length))
+    return worst
+
+
+def own_sweep(wire, profile, transition=0):
+    """FreeCAD's own sweep (OpenCascade's MakePipeShell, corrected Frenet) made solid, or
+    the reason it failed."""
+    try:
+        shape = wire.makePipeShell([profile], True, False, transition)
+        return shape, ""
+    except Exception as e:  # noqa: BLE001 (FreeCAD raises Part.OCCError and others)
+        return None, str(e)
+
+
+def compare(label, ours, exact, wire, profile, transition=0):
+    """Prints rmfsurf's solid beside FreeCAD's own sweep of the same wire."""
+    own, why = own_sweep(wire, profile, transition)
+    say("  %-40s rmfsurf: valid %s, %d faces, volume error %.1e, max |cos| %.1e" % (
+        label, ours.isValid(), len(ours.Faces), abs(ours.Volume - exact) / exact, max_face_cosine(ours)))
+    if own is None:
+        say("  %-40s FreeCAD makePipeShell: failed (%s)" % ("", why))
+    else:
+        say("  %-40s FreeCAD makePipeShell: valid %s, %d faces, volume error %.1e, max |cos| %.1e" % (
+            "", own.isValid(), len(own.Faces), abs(own.Volume - exact) / exact, max_face_cosine(own)))
+
+
+def part_g():
+    say("G. Wire sweeps: Part.Wire in, Part.Solid out, against FreeCAD's own sweep")
+    pi, s = 3.141592653589793, 0.5 ** 0.5
+    segment = lambda a, b: Part.LineSegment(V(*a), V(*b)).toShape()  # noqa: E731
+    arc = lambda a, m, b: Part.Arc(V(*a), V(*m), V(*b)).toShape()  # noqa: E731
+    route = Part.Wire([segment((0, 0, 0), (10, 0, 0)), arc((10, 0, 0), (10 + 5 * s, 5 - 5 * s, 0), (15, 5, 0)),
+                       segment((15, 5, 0), (15, 15, 0))])
+    circle = Part.Wire(Part.makeCircle(1.0, V(0, 0, 0), V(1, 0, 0)))
+    shape = rmf.sweep_wire(route, circle)
+    solid = shape.to_part()
+    exact = pi * (20 + 2.5 * pi)
+    require("line-arc-line: FreeCAD reads one valid Part.Solid from rmf_shape_write_step",
+            isinstance(solid, Part.Solid) and solid.isValid())
+    check("line-arc-line, r = 1: FreeCAD's Shape.Volume against pi r^2 L, relative",
+          abs(solid.Volume - exact) / exact, 1e-9)
+    check("line-arc-line: max |cos| between parameter lines, every face", max_face_cosine(solid), 1e-12)
+    compare("line-arc-line, circle r = 1", solid, exact, route, circle)
+    # On into the issue's NURBS edge, G1 with the last line.
+    nurbs = Part.BSplineCurve()
+    nurbs.buildFromPolesMultsKnots([V(15, 15, 0), V(15, 20, 0), V(20, 25, 5), V(25, 25, 5)], [4, 4], [0, 1], False, 3)
+    longer = Part.Wire(route.Edges + [nurbs.toShape()])
+    shape = rmf.sweep_wire(longer, circle, tolerance=1e-5)
+    solid = shape.to_part()
+    report = shape.report()
+    require("line-arc-line-NURBS: one valid Part.Solid", isinstance(solid, Part.Solid) and solid.isValid())
+    faces = shape.faces()
+    along = lambda edges: [f for f, info in zip(solid.Faces, faces) if info.spine_edge in edges]  # noqa: E731
+    check("line-arc-line-NURBS: max |cos| on the faces along lines and arcs",
+          max_face_cosine(solid, along((0, 1, 2))), 1e-12)
+    check("line-arc-line-NURBS: max |cos| on the faces along the NURBS edge",
+          max_face_cosine(solid, along((3,))), 1e-6)
+    check("line-arc-line-NURBS: PH spline within the tolerance of the NURBS", report.spine_distance, 1e-5)
+    compare("line-arc-line-NURBS, circle r = 1", solid, solid.Volume, longer, circle)
+    # A 3-D polyline with three right angles, square profile of half side 0.5.
+    stairs = Part.Wire([segment((0, 0, 0), (6, 0, 0)), segment((6, 0, 0), (6, 6, 0)),
+                        segment((6, 6, 0), (6, 6, 6)), segment((6, 6, 6), (0, 6, 6))])
+    square = Part.makePolygon([V(0, 0.5, 0.5), V(0, -0.5, 0.5), V(0, -0.5, -0.5), V(0, 0.5, -0.5), V(0, 0.5, 0.5)])
+    for corner, radius, length, transition in (("round", 1.0, 24 - 3 * (2 - pi / 2), 2), ("miter", 0.0, 24.0, 1)):
+        shape = rmf.sweep_wire(stairs, square, corner=corner, radius=radius)
+        solid = shape.to_part()
+        require("polyline, %s corners: one valid Part.Solid" % corner, isinstance(solid, Part.Solid) and solid.isValid())
+        check("polyline, %s corners: Shape.Volume against the closed form, relative" % corner,
+              abs(solid.Volume - length) / length, 1e-9)
+        check("polyline, %s corners: frame turn about the tangent across the corners, rad" % corner,
+              shape.report().corner_turn, 1e-12)
+        compare("polyline, three 90-degree corners, %s" % corner, solid, length, stairs, square, transition)
+    # A closed rounded rectangle, square profile of half side 0.2.
+    q = lambda c, a: arc(*[(c[0] + math.cos(t), c[1] + math.sin(t), 0) for t in (a, a + pi / 4, a + pi / 2)])  # noqa: E731
+    rounded = Part.Wire([segment((0, -1, 0), (4, -1, 0)), q((4, 0), -pi / 2), segment((5, 0, 0), (5, 2, 0)),
+                         q((4, 2), 0), segment((4, 3, 0), (0, 3, 0)), q((0, 2), pi / 2),
+                         segment((-1, 2, 0), (-1, 0, 0)), q((0, 0), pi)])
+    small = Part.makePolygon([V(0, -1.2, 0.2), V(0, -0.8, 0.2), V(0, -0.8, -0.2), V(0, -1.2, -0.2),
+                              V(0, -1.2, 0.2)])
+    shape = rmf.sweep_wire(rounded, small)
+    solid = shape.to_part()
+    length = 12 + 2 * pi
+    require("rounded rectangle (closed): one valid Part.Solid", isinstance(solid, Part.Solid) and solid.isValid())
+    check("rounded rectangle: seam gap where the wire closes", shape.report().seam_gap, 1e-12)
+    check("rounded rectangle: Shape.Volume against A L, relative", abs(solid.Volume - 0.16 * length) / (0.16 * length),
+          1e-9)
+    compare("rounded rectangle (closed), square", solid, 0.16 * length, rounded, small)
+    # The tool's STEP solid of the issue's input.
+    path = os.path.join(FILES, "pipe.step")
+    if FILES and os.path.exists(path):
+        read = Part.Shape()
+        read.read(path)
+        require("the tool's pipe.step (examples/cli/pipe.json): one valid Part.Solid",
+                len(read.Solids) == 1 and read.isValid())
+    else:
+        require("the tool's pipe.step (examples/cli/pipe.json) was written", False)
+
+
 def main():
     say("rmfsurf %s in FreeCAD %s" % (rmf.library().rmf_version().decode(), ".".join(FreeCAD.Version()[:3])))
     parts = part_a()
@@ -442,6 +556,7 @@ def main():
     part_d()
     part_e(parts)
     part_f()
+    part_g()
     if failures:
         say("FREECAD CHECKS FAILED: %s" % "; ".join(failures))
         sys.exit(1)

@@ -16,6 +16,10 @@ High-level functions, used by the two macros beside this file:
   Moebius maps or RRMF quintics); one exact rational face per profile edge.
 * ``cone_spline_from_face(face, tolerance)``: a developable face approximated by a cone
   spline surface, its exact development and the cutting outline (true arcs and lines).
+* ``sweep_wire(wire, profile, holes, corner, radius, ...)``: a ``Part.Wire`` of lines, arcs
+  and curves (smooth or with sharp corners, open or closed) and a closed profile (a wire,
+  face or edge placed at the wire's start in its normal plane, or a sketch) as a
+  ``Part.Solid`` of exact faces (``rmf_wire_sweep``); ``Part.Shell`` for open profiles.
 
 C API conventions (include/rmfsurf.h): every function returns a status (0 = RMF_OK),
 rmf_last_error() gives the message; handles are freed by rmf_*_free.
@@ -68,6 +72,64 @@ class NurbsSurfaceView(ctypes.Structure):
     ]
 
 
+class Edge(ctypes.Structure):
+    """RmfEdge: kind (RMF_EDGE_*), three points, a curve handle for RMF_EDGE_CURVE."""
+
+    _fields_ = [("kind", ctypes.c_uint32), ("points", Vec3 * 3), ("curve", ctypes.c_void_p)]
+
+
+class WireSweepOptions(ctypes.Structure):
+    """RmfWireSweepOptions (initialised by rmf_wire_sweep_options_init)."""
+
+    _fields_ = [
+        ("struct_size", ctypes.c_size_t),
+        ("tolerance", ctypes.c_double),
+        ("join_tolerance", ctypes.c_double),
+        ("corner", ctypes.c_uint32),
+        ("corner_radius", ctypes.c_double),
+        ("initial_normal", Vec3),
+        ("twist", ctypes.c_double),
+        ("closure_symmetry", ctypes.c_uint32),
+        ("solid", ctypes.c_uint32),
+    ]
+
+
+class ShapeFace(ctypes.Structure):
+    """RmfShapeFace: one face of an RmfShape (the surface pointer is borrowed)."""
+
+    _fields_ = [
+        ("kind", ctypes.c_uint32),
+        ("surface", ctypes.c_void_p),
+        ("plane_origin", Vec3),
+        ("plane_normal", Vec3),
+        ("loop_count", ctypes.c_size_t),
+        ("spine_edge", ctypes.c_size_t),
+        ("profile_edge", ctypes.c_size_t),
+        ("reversed", ctypes.c_uint32),
+        ("profile_loop", ctypes.c_size_t),
+        ("round_corner", ctypes.c_uint32),
+    ]
+
+
+class SweepReport(ctypes.Structure):
+    """RmfSweepReport: the accuracy figures of a wire sweep."""
+
+    _fields_ = [
+        ("spine_distance", ctypes.c_double),
+        ("rmf_angle_error", ctypes.c_double),
+        ("max_parameter_cosine", ctypes.c_double),
+        ("singularity_margin", ctypes.c_double),
+        ("face_count", ctypes.c_size_t),
+        ("corner_turn", ctypes.c_double),
+        ("seam_gap", ctypes.c_double),
+    ]
+
+
+RMF_EDGE_LINE, RMF_EDGE_ARC, RMF_EDGE_CURVE = 0, 1, 2
+RMF_CORNER_ROUND, RMF_CORNER_MITER = 0, 1
+RMF_FACE_SWEPT, RMF_FACE_PLANE = 0, 1
+CORNERS = {"round": RMF_CORNER_ROUND, "miter": RMF_CORNER_MITER}
+
 RMF_CONE_RULE_MIN_VERTEX_DISTANCE = 0
 RMF_RRMF_MEASURE_SCALED_ENERGY_RMF = 3
 RRMF_ETA_SAMPLES = 64
@@ -114,8 +176,20 @@ _SIGNATURES = {
     "rmf_cone_spline_develop": [P, PP],
     "rmf_cone_spline_boundary": [P, ctypes.c_double, PP],
     "rmf_cone_spline_piece_count": [P, ctypes.POINTER(SIZE)],
+    "rmf_wire_sweep_options_init": [ctypes.POINTER(WireSweepOptions)],
+    "rmf_wire_sweep": [ctypes.POINTER(Edge), SIZE, P, ctypes.POINTER(ctypes.c_void_p), SIZE,
+                       ctypes.POINTER(WireSweepOptions), PP],
+    "rmf_shape_free": [P],
+    "rmf_shape_face_count": [P],
+    "rmf_shape_is_solid": [P],
+    "rmf_shape_face": [P, SIZE, ctypes.POINTER(ShapeFace)],
+    "rmf_shape_face_loop": [P, SIZE, SIZE, PP],
+    "rmf_shape_report": [P, ctypes.POINTER(SweepReport)],
+    "rmf_shape_write_step": [P, ctypes.c_char_p],
 }
-_VOID = {"rmf_curve_free", "rmf_frames_free", "rmf_surface_free", "rmf_cone_spline_free"}
+_VOID = {"rmf_curve_free", "rmf_frames_free", "rmf_surface_free", "rmf_cone_spline_free",
+         "rmf_shape_free"}
+_SIZE = {"rmf_shape_face_count": ctypes.c_size_t, "rmf_shape_is_solid": ctypes.c_uint32}
 _STRING = {"rmf_last_error", "rmf_version"}
 
 _library = None
@@ -145,7 +219,8 @@ def library():
             function = getattr(lib, name)
             function.argtypes = arguments
             function.restype = (None if name in _VOID
-                                else ctypes.c_char_p if name in _STRING else ctypes.c_uint32)
+                                else ctypes.c_char_p if name in _STRING
+                                else _SIZE.get(name, ctypes.c_uint32))
         _library = lib
     return _library
 
@@ -194,6 +269,45 @@ def double_array(values):
     return (ctypes.c_double * len(values))(*[float(x) for x in values])
 
 
+def circle_bspline(edge):
+    """A circular edge as a rational quadratic B-spline of spans of at most 90 degrees
+    (weights cos of the half span; exact). OpenCascade's own conversion uses 120-degree spans,
+    which its fixed-order volume integration (Shape.Volume) resolves less well."""
+    import math
+    circle = edge.Curve
+    a, b = edge.FirstParameter, edge.LastParameter
+    n = max(1, int(math.ceil((b - a) / (0.5 * math.pi) - 1e-9)))
+    half = 0.5 * (b - a) / n
+    center, x = circle.Center, circle.XAxis
+    y = circle.Axis.cross(x)
+    point = lambda t, r: center + x * (r * math.cos(t)) + y * (r * math.sin(t))  # noqa: E731
+    poles, weights = [point(a, circle.Radius)], [1.0]
+    for k in range(n):
+        t = a + 2 * half * k
+        poles += [point(t + half, circle.Radius / math.cos(half)), point(t + 2 * half, circle.Radius)]
+        weights += [math.cos(half), 1.0]
+    poles[-1] = edge.valueAt(b)
+    poles[0] = edge.valueAt(a)
+    knots = [a + 2 * half * k for k in range(n)] + [b]
+    curve = Part.BSplineCurve()
+    curve.buildFromPolesMultsKnots(poles, [3] + [2] * (n - 1) + [3], knots, False, 2, weights)
+    return curve
+
+
+def exact_bspline(edge):
+    """The edge's exact NURBS form on the edge's range, clamped: circles by
+    circle_bspline, everything else by OpenCascade's NURBS conversion (lines as degree 1;
+    Curve.toBSpline would approximate a circle by a polynomial of degree 13)."""
+    if isinstance(edge.Curve, Part.Circle):
+        return circle_bspline(edge)
+    nurbs = edge.toNurbs().Edges[0]
+    curve = nurbs.Curve.copy()
+    if curve.isPeriodic():
+        curve.setNotPeriodic()
+    curve.segment(nurbs.FirstParameter, nurbs.LastParameter)
+    return curve
+
+
 def knots_and_multiplicities(knots):
     """A flat clamped knot vector as FreeCAD's distinct knots and multiplicities."""
     distinct, multiplicities = [], []
@@ -239,7 +353,7 @@ class Curve(Handle):
     def from_edge(cls, edge, placement=None):
         """The edge's exact NURBS form (a line, circle, B-spline … of FreeCAD), optionally
         moved by `placement` (e.g. the inverse of a sketch's placement)."""
-        curve = edge.Curve.toBSpline(edge.FirstParameter, edge.LastParameter)
+        curve = exact_bspline(edge)
         if placement is not None:
             curve.transform(placement.toMatrix())
         return cls.from_part(curve)
@@ -365,6 +479,60 @@ class ConeSpline(Handle):
         return n.value
 
 
+class Shape(Handle):
+    """RmfShape: the result of a wire sweep, a closed solid or a sheet of exact faces."""
+
+    _free = "rmf_shape_free"
+
+    def faces(self):
+        """The faces as ShapeFace records (lateral faces first, then the caps)."""
+        out = []
+        for k in range(library().rmf_shape_face_count(self.pointer)):
+            face = ShapeFace()
+            call("rmf_shape_face", self.pointer, k, ctypes.byref(face))
+            out.append(face)
+        return out
+
+    def surfaces(self):
+        """The lateral faces' surfaces as Part.BSplineSurface (exact, from the NURBS views)."""
+        surfaces = []
+        for face in self.faces():
+            if face.kind == RMF_FACE_SWEPT:
+                view = Surface(ctypes.c_void_p(face.surface))
+                surfaces.append(view.to_part())
+                view.pointer = None  # borrowed from the shape: not freed here
+        return surfaces
+
+    def is_solid(self):
+        return bool(library().rmf_shape_is_solid(self.pointer))
+
+    def report(self):
+        r = SweepReport()
+        call("rmf_shape_report", self.pointer, ctypes.byref(r))
+        return r
+
+    def write_step(self, path):
+        call("rmf_shape_write_step", self.pointer, os.fsencode(path))
+
+    def to_part(self):
+        """The shape as FreeCAD reads its STEP file: one Part.Solid (faces sharing their
+        edges), or the shell of a sheet."""
+        import tempfile
+        directory = tempfile.mkdtemp(prefix="rmfsurf-")
+        path = os.path.join(directory, "shape.step")
+        try:
+            self.write_step(path)
+            shape = Part.Shape()
+            shape.read(path)
+        finally:
+            if os.path.exists(path):
+                os.remove(path)
+            os.rmdir(directory)
+        if self.is_solid() and shape.Solids:
+            return shape.Solids[0]
+        return shape.Shells[0] if shape.Shells else shape
+
+
 # ---------------------------------------------------------------------------------------
 # Constructions
 
@@ -440,6 +608,153 @@ def sweep_sketch_along_edge(sketch, edge, method="ph-rmf", tolerance=1e-4,
     if not faces:
         raise RmfError("the sketch %s has no edges to sweep" % sketch.Label)
     return faces[0] if len(faces) == 1 else Part.Shell(faces)
+
+
+def _wire_edges(wire):
+    """The edges of a Part.Wire (or Part.Edge) as RmfEdges, in the wire's order: lines
+    and circular arcs as such, every other edge as its exact NURBS form. Returns the array
+    and the curve handles it borrows."""
+    edges = wire.OrderedEdges if hasattr(wire, "OrderedEdges") else [wire]
+    records, handles = [], []
+    for edge in edges:
+        a, b = edge.FirstParameter, edge.LastParameter
+        curve = edge.Curve
+        record = Edge()
+        if isinstance(curve, (Part.Line, Part.LineSegment)):
+            record.kind = RMF_EDGE_LINE
+            record.points[0], record.points[1] = vec3(edge.valueAt(a)), vec3(edge.valueAt(b))
+        elif isinstance(curve, Part.Circle) and not edge.isClosed():
+            record.kind = RMF_EDGE_ARC
+            for k, t in enumerate((a, 0.5 * (a + b), b)):
+                record.points[k] = vec3(edge.valueAt(t))
+        elif isinstance(curve, Part.Circle):
+            # A full circle: two half arcs.
+            m = 0.5 * (a + b)
+            for lo, hi in ((a, m), (m, b)):
+                half = Edge()
+                half.kind = RMF_EDGE_ARC
+                for k, t in enumerate((lo, 0.5 * (lo + hi), hi)):
+                    half.points[k] = vec3(edge.valueAt(t))
+                records.append(half)
+            continue
+        else:
+            handle = Curve.from_edge(edge)
+            handles.append(handle)
+            record.kind = RMF_EDGE_CURVE
+            record.curve = handle.pointer
+        records.append(record)
+    return (Edge * len(records))(*records), handles
+
+
+def _start_frame(wire):
+    """The wire's start point and unit tangent (along the first ordered edge)."""
+    edges = wire.OrderedEdges if hasattr(wire, "OrderedEdges") else [wire]
+    first = edges[0]
+    if len(edges) > 1:
+        second = edges[1]
+        ends = [v.Point for v in second.Vertexes]
+        if min((first.valueAt(first.FirstParameter) - e).Length for e in ends) < \
+                min((first.valueAt(first.LastParameter) - e).Length for e in ends):
+            p = first.valueAt(first.LastParameter)
+            return p, -first.tangentAt(first.LastParameter)
+    return first.valueAt(first.FirstParameter), first.tangentAt(first.FirstParameter)
+
+
+def _profile_loop(shape, to_local):
+    """One closed (or open) loop of edges as a single library NURBS curve in the normal
+    plane's coordinates: each edge's exact NURBS form, oriented along the loop, mapped by
+    `to_local` (a FreeCAD Matrix), raised to a common degree and joined with C0 knots."""
+    edges = shape.OrderedEdges if hasattr(shape, "OrderedEdges") else shape.Edges
+    pieces = []
+    for edge in edges:
+        b = exact_bspline(edge)
+        if edge.Orientation == "Reversed":
+            b.reverse()
+        b.transform(to_local)
+        pieces.append(b)
+    # Each piece must start where the previous one ends: reverse those given backwards.
+    if len(pieces) > 1:
+        ends = (pieces[1].StartPoint, pieces[1].EndPoint)
+        if min((pieces[0].StartPoint - e).Length for e in ends) < min((pieces[0].EndPoint - e).Length for e in ends):
+            pieces[0].reverse()
+    for k in range(1, len(pieces)):
+        previous_end = pieces[k - 1].EndPoint
+        if (pieces[k].EndPoint - previous_end).Length < (pieces[k].StartPoint - previous_end).Length:
+            pieces[k].reverse()
+    degree = max(p.Degree for p in pieces)
+    for p in pieces:
+        if p.Degree < degree:
+            p.increaseDegree(degree)
+    poles, weights, knots = [], [], []
+    for p in pieces:
+        flat = flat_knots(p.getKnots(), p.getMultiplicities())
+        w = p.getWeights()
+        if not poles:
+            poles, weights, knots = list(p.getPoles()), list(w), flat
+            continue
+        # Join: the shared pole once, the second piece's weights scaled to match it, its
+        # knots shifted to continue, the joint knot of multiplicity `degree` (C0).
+        scale = weights[-1] / w[0]
+        shift = knots[-1] - flat[0]
+        poles += list(p.getPoles())[1:]
+        weights += [x * scale for x in w[1:]]
+        knots = knots[:-1] + [k + shift for k in flat[degree + 1:]]
+    return Curve.from_nurbs(degree, [(q.x, q.y, q.z) for q in poles], knots, weights)
+
+
+def sweep_wire(wire, profile, holes=(), corner="round", radius=0.0, tolerance=1e-4, solid=True,
+               twist=0.0, closure_symmetry=0, initial_normal=None, join_tolerance=1e-7):
+    """The profile swept along a Part.Wire of lines, arcs and curves (rmf_wire_sweep), as an
+    rmfsurf Shape; ``.to_part()`` gives the Part.Solid.
+
+    `profile` and `holes` are closed wires (or faces, edges) placed at the wire's start in
+    its normal plane, as FreeCAD's own sweep takes them, or sketches (their x axis along
+    f2). `corner`: "round" (a tangent arc of `radius`; 0: 1.5 times the profile's radius)
+    or "miter". `initial_normal`: f2 at the start (default: the profile sketch's x axis, or
+    the library's default for a placed profile)."""
+    origin, tangent = _start_frame(wire)
+    tangent.normalize()
+    sketch = getattr(profile, "TypeId", "") == "Sketcher::SketchObject"
+    if initial_normal is None:
+        if sketch:
+            initial_normal = profile.Placement.Rotation.multVec(FreeCAD.Vector(1, 0, 0))
+        else:
+            up = FreeCAD.Vector(0, 0, 1) if abs(tangent.z) < 0.9 else FreeCAD.Vector(1, 0, 0)
+            initial_normal = up - tangent * up.dot(tangent)
+    f2 = FreeCAD.Vector(initial_normal)
+    f2 = (f2 - tangent * f2.dot(tangent)).normalize()
+    f3 = tangent.cross(f2)
+
+    def local(shape):
+        if getattr(shape, "TypeId", "") == "Sketcher::SketchObject":
+            return _profile_loop(shape.Shape, shape.Placement.inverse().toMatrix())
+        m = FreeCAD.Matrix(f2.x, f2.y, f2.z, -f2.dot(origin), f3.x, f3.y, f3.z, -f3.dot(origin),
+                           tangent.x, tangent.y, tangent.z, -tangent.dot(origin), 0, 0, 0, 1)
+        if hasattr(shape, "OuterWire"):
+            shape = shape.OuterWire
+        return _profile_loop(shape, m)
+
+    outer = local(profile)
+    inner = [local(h) for h in holes]
+    edges, handles = _wire_edges(wire)
+    options = WireSweepOptions()
+    call("rmf_wire_sweep_options_init", ctypes.byref(options))
+    options.tolerance = tolerance
+    options.join_tolerance = join_tolerance
+    if corner not in CORNERS:
+        raise RmfError("corner must be one of %s, not %r" % (", ".join(CORNERS), corner))
+    options.corner = CORNERS[corner]
+    options.corner_radius = radius
+    options.initial_normal = vec3(f2)
+    options.twist = twist
+    options.closure_symmetry = closure_symmetry
+    options.solid = 1 if solid else 0
+    hole_array = (ctypes.c_void_p * max(1, len(inner)))(*[h.pointer.value for h in inner])
+    out = ctypes.c_void_p()
+    call("rmf_wire_sweep", edges, len(edges), outer.pointer, hole_array, len(inner), ctypes.byref(options),
+         ctypes.byref(out))
+    del handles  # the library copied what it needs
+    return Shape(out)
 
 
 def cone_spline_from_face(face, tolerance=1e-4, max_pieces=10000):
