@@ -207,6 +207,7 @@ static void test_pipe_route(void) {
     CHECK(report.spine_distance == 0 && report.rmf_angle_error == 0 && report.face_count == 14, "exact spine");
     CHECK(report.max_parameter_cosine <= 1e-12 && report.singularity_margin > 0.79, "margin 1 - 1/5");
     CHECK(report.seam_gap == 0 && report.corner_turn == 0, "no closure, no corners");
+    CHECK(report.joint_gap < 1e-13, "the faces meet at the joints");
     char path[512];
     snprintf(path, sizeof path, "%s/abi_wire_%ld.step", getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp",
              (long)time(NULL) ^ (long)(uintptr_t)&path);

@@ -662,6 +662,13 @@ typedef struct RmfSweepReport {
    * wire closes (0 for open wires), in the wire's units.
    */
   double seam_gap;
+  /**
+   * Added in 0.2: the largest distance between the sections of consecutive pieces at the
+   * joints inside the wire (rounding at G1 joints; ½θ²·r at near-tangent joints, where a
+   * line meets a curved edge at an angle θ so slight that the line is cut by the curved
+   * edge's normal plane), in the wire's units.
+   */
+  double joint_gap;
 } RmfSweepReport;
 
 /**

@@ -114,6 +114,11 @@ pub struct RmfSweepReport {
     /// Added in 0.2: closed wires: the largest distance between the sections where the
     /// wire closes (0 for open wires), in the wire's units.
     pub seam_gap: f64,
+    /// Added in 0.2: the largest distance between the sections of consecutive pieces at the
+    /// joints inside the wire (rounding at G1 joints; ½θ²·r at near-tangent joints, where a
+    /// line meets a curved edge at an angle θ so slight that the line is cut by the curved
+    /// edge's normal plane), in the wire's units.
+    pub joint_gap: f64,
 }
 
 /// Frees a shape; its face surfaces and loop curves become invalid. NULL is a no-op.
@@ -252,6 +257,7 @@ pub unsafe extern "C" fn rmf_shape_report(
                 face_count: r.face_count,
                 corner_turn: r.corner_turn,
                 seam_gap: r.seam_gap,
+                joint_gap: r.joint_gap,
             },
         );
         Ok(())

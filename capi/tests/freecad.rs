@@ -3,7 +3,8 @@
 //! examples/cli/, and `examples/freecad/check_in_freecad.py` runs inside FreeCAD against the
 //! shared library through the pure-Python glue: Part objects from the NURBS views, FreeCAD's
 //! own Gaussian curvature, STEP written by FreeCAD and read back, the tool's files read by
-//! FreeCAD, and both macros. The script prints every figure with its limit.
+//! FreeCAD, both macros, and wire sweeps (Part.Wire in, Part.Solid out, beside FreeCAD's own
+//! makePipeShell; the tool's pipe.step). The script prints every figure with its limit.
 //!
 //! `cargo test --test freecad -- --nocapture` shows them.
 
@@ -37,6 +38,8 @@ fn freecad_reads_our_files_and_builds_exact_part_objects() {
         "cone_spline",
         &["-q", "-o", "cone_spline.dxf", "-o", "cone_spline.svg"],
     );
+    // The wire sweep input: its STEP solid.
+    run_cli(&files, "pipe", &["-q", "-o", "pipe.step"]);
     let work = fresh_dir("freecad_work");
     let script = root().join("examples/freecad/check_in_freecad.py");
     let out = Command::new("freecadcmd")

@@ -122,6 +122,7 @@ class SweepReport(ctypes.Structure):
         ("face_count", ctypes.c_size_t),
         ("corner_turn", ctypes.c_double),
         ("seam_gap", ctypes.c_double),
+        ("joint_gap", ctypes.c_double),
     ]
 
 

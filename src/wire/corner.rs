@@ -19,6 +19,10 @@
 //!   cylinder along a line is an affine image of the profile); legs that are arcs or curves
 //!   are refused.
 //!
+//! Data given to a few decimals leave slight corners where edges were meant to be tangent;
+//! in miter mode those between a line and a curved edge are cut exactly (the line by the
+//! curved edge's normal plane, see `JointKind::NearTangent`).
+//!
 //! Whether the profile fits the corner (Mäurer & Jüttler Cor. 7: ρ above the profile's
 //! extent towards the corner's centre; miter legs longer than the profile's cut) is decided
 //! with the frame, in `frame`.
@@ -45,12 +49,12 @@ pub(crate) enum CornerMode {
 
 /// The chain with its corners resolved. `unit` converts lengths to the caller's units for
 /// messages.
-pub(crate) fn resolve(chain: Chain, mode: CornerMode, unit: f64) -> Result<Chain> {
+pub(crate) fn resolve(chain: Chain, mode: CornerMode, unit: f64, profile_radius: f64) -> Result<Chain> {
     if !chain.joints.iter().any(|j| j.kind == JointKind::Corner) {
         return Ok(chain);
     }
     match mode {
-        CornerMode::Miter => miter(chain),
+        CornerMode::Miter => miter(near_tangent(chain, profile_radius)),
         CornerMode::Round(radius) => match round(&chain, radius)? {
             Ok(rounded) => Ok(rounded),
             Err(joint) => {
@@ -81,6 +85,47 @@ fn rounded_down(x: f64) -> f64 {
     } else {
         x
     }
+}
+
+/// Largest section mismatch ½θ²·r of a near-tangent joint, relative to the wire's size.
+const NEAR_TANGENT_GAP: f64 = 1e-9;
+
+/// Miter mode: corners between a line and a curved edge so slight that the line's oblique
+/// section by the curved edge's normal plane matches that edge's section (see
+/// [`JointKind::NearTangent`]), where a miter (straight legs only) could not be made: data
+/// given to a few decimals leave such corners where the edges were meant to be tangent.
+/// (Round corners round them, with an exact elbow.)
+fn near_tangent(mut chain: Chain, profile_radius: f64) -> Chain {
+    let m = chain.pieces.len();
+    let size = chain
+        .pieces
+        .iter()
+        .flat_map(|p| p.geometry.hull_points())
+        .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), p| (lo.min(p), hi.max(p)));
+    let size = (size.1 - size.0).length();
+    for (i, joint) in chain.joints.iter_mut().enumerate() {
+        if joint.kind != JointKind::Corner {
+            continue;
+        }
+        let theta = joint.angle();
+        if 0.5 * theta * theta * profile_radius > NEAR_TANGENT_GAP * size {
+            continue;
+        }
+        let straight = |p: &Piece| matches!(p.geometry, Geometry::Line { .. });
+        let (before, after) = (&chain.pieces[i], &chain.pieces[(i + 1) % m]);
+        joint.kind = match (straight(before), straight(after)) {
+            (true, false) => JointKind::NearTangent {
+                normal: joint.outgoing,
+                line_before: true,
+            },
+            (false, true) => JointKind::NearTangent {
+                normal: joint.incoming,
+                line_before: false,
+            },
+            _ => continue,
+        };
+    }
+    chain
 }
 
 /// Miter joints: both legs must be straight.
@@ -288,15 +333,10 @@ fn fillet(
         (s, t) = (s1, t1);
     }
     let room = |x: f64, lo: f64, hi: f64| x - lo > LEFT_OVER * (hi - lo);
+    // No tangent points on the free parts of the edges (pinned at an end, or no circle of
+    // this radius touches both there): the radius does not fit.
     if !converged {
-        let pinned = s <= fa.lo || t >= fb.hi;
-        if pinned {
-            return Ok(None);
-        }
-        return Err(Error::not_converged(format!(
-            "{}: the round corner of radius {radius} could not be solved on the edges",
-            joint.name
-        )));
+        return Ok(None);
     }
     if !room(s, fa.lo, fa.hi) || !room(fb.hi - t + fb.lo, fb.lo, fb.hi) {
         return Ok(None);
@@ -358,7 +398,7 @@ mod tests {
     #[test]
     fn a_right_angle_gets_a_quarter_circle_tangent_to_both_legs() {
         let c = polyline(&[[0., 0., 0.], [4., 0., 0.], [4., 4., 0.]]);
-        let r = resolve(c, CornerMode::Round(1.0), 1.0).unwrap();
+        let r = resolve(c, CornerMode::Round(1.0), 1.0, 0.1).unwrap();
         assert_eq!(r.pieces.len(), 3);
         let Geometry::Arc(arc) = &r.pieces[1].geometry else {
             panic!("an elbow")
@@ -376,11 +416,11 @@ mod tests {
     fn a_radius_too_large_is_refused_with_the_largest_that_fits() {
         // Legs of 4 and 2 with two right angles: the middle leg holds 2 × ρ, so ρ ≤ 1.
         let c = polyline(&[[0., 0., 0.], [4., 0., 0.], [4., 2., 0.], [0., 2., 0.]]);
-        let e = resolve(c.clone(), CornerMode::Round(1.5), 1.0).unwrap_err();
+        let e = resolve(c.clone(), CornerMode::Round(1.5), 1.0, 0.1).unwrap_err();
         assert!(e.message().contains("does not fit"), "{e}");
         let largest: f64 = e.message().rsplit(' ').next().unwrap().parse().unwrap();
         assert!(largest <= 1.0 && largest > 1.0 - 1e-8, "{e}");
-        assert!(resolve(c, CornerMode::Round(0.99), 1.0).is_ok());
+        assert!(resolve(c, CornerMode::Round(0.99), 1.0, 0.1).is_ok());
     }
 
     #[test]
@@ -398,7 +438,7 @@ mod tests {
         ];
         let c = chain(&edges, 1e-9, 5.0, UNIT).unwrap();
         assert_eq!(c.joints[0].kind, JointKind::Corner);
-        let r = resolve(c, CornerMode::Round(0.5), 1.0).unwrap();
+        let r = resolve(c, CornerMode::Round(0.5), 1.0, 0.1).unwrap();
         let Geometry::Arc(elbow) = &r.pieces[1].geometry else {
             panic!("an elbow")
         };
@@ -420,7 +460,7 @@ mod tests {
     #[test]
     fn miters_need_straight_legs() {
         let c = polyline(&[[0., 0., 0.], [4., 0., 0.], [4., 4., 0.]]);
-        let m = resolve(c, CornerMode::Miter, 1.0).unwrap();
+        let m = resolve(c, CornerMode::Miter, 1.0, 0.1).unwrap();
         let JointKind::Miter { normal } = m.joints[0].kind else {
             panic!("a miter")
         };

@@ -410,6 +410,12 @@ pub(crate) enum JointKind {
     /// A miter: both legs are cut by the plane through the joint with this unit normal
     /// (the bisector of the tangents); the frame is reflected in it.
     Miter { normal: DVec3 },
+    /// A corner so slight, between a line and a curved edge, that the line is cut by the
+    /// curved edge's normal plane at the joint (unit `normal`; the line is the piece
+    /// before the joint when `line_before`) and the frame projected across: the line's
+    /// oblique section and the curved edge's normal section differ by ½θ²·r (θ the angle,
+    /// r the profile's radius), below a billionth of the wire's size.
+    NearTangent { normal: DVec3, line_before: bool },
 }
 
 /// The joint after piece i (between pieces i and i + 1, or the last and the first of a

@@ -202,12 +202,18 @@ fn default_normal(chain: &Chain) -> DVec3 {
     }
 }
 
-/// Which pieces may turn about the tangent (all but miter legs) and the miter planes at
-/// the ends of each piece.
+/// The planes cutting each piece at its start and end: miter planes, and the normal planes
+/// of curved edges at near-tangent joints (only lines are cut; they may not turn about
+/// the tangent).
 fn miters(chain: &Chain) -> Vec<[Option<(DVec3, DVec3)>; 2]> {
     let m = chain.pieces.len();
-    let plane = |j: &Joint| match j.kind {
+    // A miter cuts both legs; a near-tangent joint only its straight side.
+    let plane = |j: &Joint, line_side: bool| match j.kind {
         JointKind::Miter { normal } => Some((j.point, normal)),
+        JointKind::NearTangent {
+            normal,
+            line_before,
+        } if line_before == line_side => Some((j.point, normal)),
         _ => None,
     };
     (0..m)
@@ -219,7 +225,10 @@ fn miters(chain: &Chain) -> Vec<[Option<(DVec3, DVec3)>; 2]> {
             } else {
                 None
             };
-            [before.and_then(plane), chain.joints.get(i).and_then(plane)]
+            [
+                before.and_then(|j| plane(j, false)),
+                chain.joints.get(i).and_then(|j| plane(j, true)),
+            ]
         })
         .collect()
 }

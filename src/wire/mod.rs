@@ -163,7 +163,7 @@ pub fn sweep_wire(
         Corner::Round(Some(r)) => CornerMode::Round(r / scale),
         Corner::Round(None) => CornerMode::Round(DEFAULT_RADIUS_FACTOR * profile.radius()),
     };
-    let chain = edge::split_arcs(corner::resolve(chain, mode, scale)?);
+    let chain = edge::split_arcs(corner::resolve(chain, mode, scale, profile.radius())?);
     let faces = chain.pieces.len().saturating_mul(profile.edge_count());
     if faces > MAX_FACES {
         return invalid!(

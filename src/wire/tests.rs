@@ -6,7 +6,6 @@
 use super::*;
 use crate::bezier::{NurbsCurve, RationalBezierCurve};
 use crate::export::step::Brep;
-use crate::math::GaussLegendre;
 use std::collections::HashMap;
 use std::f64::consts::{FRAC_1_SQRT_2, PI};
 
@@ -70,47 +69,9 @@ pub(crate) fn pipe_route() -> Vec<Edge> {
     ]
 }
 
-/// The enclosed volume, ⅓ ∮ x·n dA, by Gauss–Legendre quadrature on every face.
+/// The enclosed volume of a solid.
 pub(crate) fn volume(shape: &Shape) -> f64 {
-    let rule = GaussLegendre::new(24);
-    let mut total = 0.0;
-    for face in shape.faces() {
-        let flux = match face.kind {
-            FaceKind::Swept => {
-                let s = face.surface.as_ref().unwrap();
-                s.patches()
-                    .iter()
-                    .map(|p| {
-                        rule.integrate(0.0, 1.0, |u| {
-                            rule.integrate(0.0, 1.0, |v| {
-                                let j = p.eval_jet(u, v);
-                                j.point.dot(j.du.cross(j.dv))
-                            })
-                        })
-                    })
-                    .sum::<f64>()
-                    * if face.reversed { -1.0 } else { 1.0 }
-            }
-            FaceKind::Plane => {
-                let (o, n) = face.plane.unwrap();
-                // ∫ x·n dA = (o·n) · area, the area by ½ ∮ (x × dx)·n over the loops.
-                let area: f64 = face
-                    .loops
-                    .iter()
-                    .flat_map(|l| l.segments())
-                    .map(|seg| {
-                        rule.integrate(0.0, 1.0, |t| {
-                            let j = seg.eval_jet(t);
-                            0.5 * (j.point - o).cross(j.d1).dot(n)
-                        })
-                    })
-                    .sum();
-                o.dot(n) * area
-            }
-        };
-        total += flux;
-    }
-    total / 3.0
+    shape.volume().expect("a solid")
 }
 
 /// Every edge is used exactly twice, once in each direction once the faces' orientation is
@@ -202,6 +163,7 @@ fn a_pipe_route_of_lines_and_an_arc_is_an_exact_solid() {
     assert!(relative(v, PI * length) < 1e-12);
     assert!(shape.report().max_parameter_cosine < 1e-12);
     assert_eq!(shape.report().spine_distance, 0.0);
+    assert!(shape.report().joint_gap < 1e-14, "{}", shape.report().joint_gap);
     // Exact: every point of the lateral faces is at distance 1 from the spine.
     let torus = shape.faces()[4].surface.as_ref().unwrap();
     assert_eq!(
@@ -220,6 +182,39 @@ fn a_pipe_route_of_lines_and_an_arc_is_an_exact_solid() {
     assert!(step.contains("MANIFOLD_SOLID_BREP") && step.contains("CLOSED_SHELL"));
     assert_eq!(step.matches("ADVANCED_FACE(").count(), 14);
     assert!(step.contains("PLANE("));
+}
+
+/// The issue's pipe route: its arc is given through a point rounded to 4 decimals, which
+/// leaves corners of 1e-5 rad at the arc's ends; both corner modes sweep it: round corners
+/// with tiny exact elbows, miters with the lines cut by the arc's normal planes there
+/// (near-tangent joints).
+#[test]
+fn the_issues_rounded_pipe_route_sweeps_with_round_and_miter_corners() {
+    let edges = vec![
+        line([0., 0., 0.], [10., 0., 0.]),
+        Edge::Arc {
+            start: DVec3::new(10., 0., 0.),
+            through: DVec3::new(13.5355, 1.4645, 0.),
+            end: DVec3::new(15., 5., 0.),
+        },
+        line([15., 5., 0.], [15., 15., 0.]),
+    ];
+    for corner in [Corner::Miter, Corner::Round(Some(2.0))] {
+        let options = WireSweep {
+            corner,
+            ..WireSweep::default()
+        };
+        let shape = sweep_wire(&edges, &circle(1.0), &[], &options).unwrap();
+        assert_closed_oriented(shape.brep());
+        let r = shape.report();
+        println!(
+            "issue's route, {corner:?}: joint gap {:.1e}, faces {}, max |cos| {:.1e}",
+            r.joint_gap, r.face_count, r.max_parameter_cosine
+        );
+        assert!(r.joint_gap < 1e-9, "{}", r.joint_gap);
+        let elbows = if corner == Corner::Miter { 0 } else { 2 };
+        assert_eq!(r.face_count, 14 + 4 * elbows, "elbows of round corners");
+    }
 }
 
 #[test]
