@@ -9,8 +9,8 @@ use rmfsurf_capi::frames::*;
 use rmfsurf_capi::mobius::*;
 use rmfsurf_capi::ph_cubic::*;
 use rmfsurf_capi::rrmf_quintic::*;
-use rmfsurf_capi::status::{rmf_last_error, rmf_status_name};
 use rmfsurf_capi::shape::*;
+use rmfsurf_capi::status::{rmf_last_error, rmf_status_name};
 use rmfsurf_capi::surface::*;
 use rmfsurf_capi::wire::*;
 use rmfsurf_capi::{RmfCurve, RmfFrames, RmfShape, RmfStatus, RmfVec3};
@@ -169,7 +169,11 @@ fn pipe_route() -> Vec<RmfEdge> {
         line(v(0., 0., 0.), v(10., 0., 0.)),
         RmfEdge {
             kind: RMF_EDGE_ARC,
-            points: [v(10., 0., 0.), v(10. + 5. * s, 5. - 5. * s, 0.), v(15., 5., 0.)],
+            points: [
+                v(10., 0., 0.),
+                v(10. + 5. * s, 5. - 5. * s, 0.),
+                v(15., 5., 0.),
+            ],
             curve: null(),
         },
         line(v(15., 5., 0.), v(15., 15., 0.)),
@@ -189,7 +193,15 @@ fn curve(degree: u32, poles: &[RmfVec3]) -> *mut RmfCurve {
     };
     let mut out = null_mut();
     let status = unsafe {
-        rmf_nurbs_curve_create(degree, poles.as_ptr(), null(), n, knots.as_ptr(), knots.len(), &mut out)
+        rmf_nurbs_curve_create(
+            degree,
+            poles.as_ptr(),
+            null(),
+            n,
+            knots.as_ptr(),
+            knots.len(),
+            &mut out,
+        )
     };
     assert_eq!(status, RmfStatus::RmfOk);
     out
@@ -198,13 +210,31 @@ fn curve(degree: u32, poles: &[RmfVec3]) -> *mut RmfCurve {
 /// The circle of radius r (four rational quarters).
 fn circle(r: f64) -> *mut RmfCurve {
     let s = std::f64::consts::FRAC_1_SQRT_2;
-    let c = [(1., 0.), (1., 1.), (0., 1.), (-1., 1.), (-1., 0.), (-1., -1.), (0., -1.), (1., -1.), (1., 0.)];
+    let c = [
+        (1., 0.),
+        (1., 1.),
+        (0., 1.),
+        (-1., 1.),
+        (-1., 0.),
+        (-1., -1.),
+        (0., -1.),
+        (1., -1.),
+        (1., 0.),
+    ];
     let poles: Vec<RmfVec3> = c.iter().map(|&(x, y)| v(r * x, r * y, 0.)).collect();
     let weights: Vec<f64> = (0..9).map(|k| if k % 2 == 1 { s } else { 1.0 }).collect();
     let knots = [0., 0., 0., 1., 1., 2., 2., 3., 3., 4., 4., 4.];
     let mut out = null_mut();
     let status = unsafe {
-        rmf_nurbs_curve_create(2, poles.as_ptr(), weights.as_ptr(), 9, knots.as_ptr(), 12, &mut out)
+        rmf_nurbs_curve_create(
+            2,
+            poles.as_ptr(),
+            weights.as_ptr(),
+            9,
+            knots.as_ptr(),
+            12,
+            &mut out,
+        )
     };
     assert_eq!(status, RmfStatus::RmfOk);
     out
@@ -935,7 +965,10 @@ fn rows() -> Vec<Row> {
             expected: INVALID,
             names: "edge 0",
             call: |_| {
-                let cusp = curve(3, &[v(0., 0., 0.), v(1., 1., 0.), v(0., 1., 0.), v(1., 0., 0.)]);
+                let cusp = curve(
+                    3,
+                    &[v(0., 0., 0.), v(1., 1., 0.), v(0., 1., 0.), v(1., 0., 0.)],
+                );
                 let e = [RmfEdge {
                     kind: RMF_EDGE_CURVE,
                     points: [v(0., 0., 0.); 3],
@@ -1013,7 +1046,11 @@ fn rows() -> Vec<Row> {
                     line(v(-2., 4., 0.), v(0., 2., 0.)),
                     RmfEdge {
                         kind: RMF_EDGE_ARC,
-                        points: [v(0., 2., 0.), v(2f64.sqrt(), 2f64.sqrt(), 0.), v(2., 0., 0.)],
+                        points: [
+                            v(0., 2., 0.),
+                            v(2f64.sqrt(), 2f64.sqrt(), 0.),
+                            v(2., 0., 0.),
+                        ],
                         curve: null(),
                     },
                 ];

@@ -19,7 +19,7 @@ mod support;
 
 use std::path::Path;
 use std::process::Command;
-use support::{build, root, run, toolchain, vtk_flags, SETUP_HINT, STRICT};
+use support::{build, fresh_dir, root, run, toolchain, vtk_flags, SETUP_HINT, STRICT};
 
 #[test]
 fn header_compiles_alone_as_c99_and_cpp() {
@@ -170,5 +170,48 @@ fn readme_c_example_compiles_and_runs() {
     run(
         &build("readme_example", false, &[source.as_str()], &flags, &[]),
         false,
+    );
+}
+
+/// Every other complete C example of the README (a block with `int main`) compiles and
+/// runs, in a scratch directory (the wire sweep example writes pipe.step).
+#[test]
+fn readme_c_programs_compile_and_run() {
+    let readme = std::fs::read_to_string(root().join("README.md")).expect("README.md");
+    let blocks: Vec<&str> = readme
+        .split("```c\n")
+        .skip(1)
+        .filter_map(|b| b.split("```").next())
+        .filter(|b| b.contains("int main("))
+        .collect();
+    assert!(blocks.len() >= 2, "the README's C programs");
+    let dir = fresh_dir("readme_programs");
+    for (k, block) in blocks.iter().enumerate().skip(1) {
+        let source = dir.join(format!("readme_program_{k}.c"));
+        std::fs::write(&source, block).expect("example written");
+        let mut flags = vec!["-std=c99"];
+        flags.extend(STRICT);
+        let source = source.to_str().expect("UTF-8 path").to_string();
+        let exe = build(
+            &format!("readme_program_{k}"),
+            false,
+            &[source.as_str()],
+            &flags,
+            &[],
+        );
+        let out = Command::new(&exe)
+            .current_dir(&dir)
+            .output()
+            .expect("the example runs");
+        print!("{}", String::from_utf8_lossy(&out.stdout));
+        assert!(
+            out.status.success(),
+            "README C program {k} failed: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
+    assert!(
+        dir.join("pipe.step").exists(),
+        "the wire sweep example writes pipe.step"
     );
 }

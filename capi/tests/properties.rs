@@ -269,17 +269,36 @@ fn polyline_wire() -> impl Strategy<Value = Vec<DVec3>> {
 /// The circle of radius r about the origin (four rational quarters).
 fn circle_profile(r: f64) -> PiecewiseCurve {
     let s = std::f64::consts::FRAC_1_SQRT_2;
-    let c = [(1., 0.), (1., 1.), (0., 1.), (-1., 1.), (-1., 0.), (-1., -1.), (0., -1.), (1., -1.), (1., 0.)];
-    let poles = c.iter().map(|&(x, y)| DVec3::new(r * x, r * y, 0.0)).collect();
+    let c = [
+        (1., 0.),
+        (1., 1.),
+        (0., 1.),
+        (-1., 1.),
+        (-1., 0.),
+        (-1., -1.),
+        (0., -1.),
+        (1., -1.),
+        (1., 0.),
+    ];
+    let poles = c
+        .iter()
+        .map(|&(x, y)| DVec3::new(r * x, r * y, 0.0))
+        .collect();
     let weights = (0..9).map(|k| if k % 2 == 1 { s } else { 1.0 }).collect();
     let knots = vec![0., 0., 0., 1., 1., 2., 2., 3., 3., 4., 4., 4.];
-    NurbsCurve::new(2, poles, Some(weights), knots).unwrap().to_piecewise().unwrap()
+    NurbsCurve::new(2, poles, Some(weights), knots)
+        .unwrap()
+        .to_piecewise()
+        .unwrap()
 }
 
 fn sweep_polyline(points: &[DVec3], r: f64, corner: Corner) -> rmfsurf::Result<Shape> {
     let edges: Vec<Edge> = points
         .windows(2)
-        .map(|w| Edge::Line { from: w[0], to: w[1] })
+        .map(|w| Edge::Line {
+            from: w[0],
+            to: w[1],
+        })
         .collect();
     let options = WireSweep {
         corner,

@@ -99,7 +99,10 @@ pub fn run_wire(job: &WireJob) -> Result<Shape, InputError> {
         .enumerate()
         .map(|(k, e)| {
             Ok(match e {
-                WireEdge::Line { from, to } => Edge::Line { from: *from, to: *to },
+                WireEdge::Line { from, to } => Edge::Line {
+                    from: *from,
+                    to: *to,
+                },
                 WireEdge::Arc {
                     start,
                     through,

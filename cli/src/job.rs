@@ -76,8 +76,15 @@ pub struct ConeJob {
 /// One edge of a wire spine.
 #[derive(Clone, Debug)]
 pub enum WireEdge {
-    Line { from: DVec3, to: DVec3 },
-    Arc { start: DVec3, through: DVec3, end: DVec3 },
+    Line {
+        from: DVec3,
+        to: DVec3,
+    },
+    Arc {
+        start: DVec3,
+        through: DVec3,
+        end: DVec3,
+    },
     Nurbs(NurbsCurve),
 }
 
@@ -253,9 +260,7 @@ fn read_wire(sweep: &Field) -> InputResult<WireJob> {
             .optional("initial_normal")?
             .map(|f| f.vec3())
             .transpose()?,
-        twist: sweep
-            .optional("twist")?
-            .map_or(Ok(0.0), |f| f.number())?,
+        twist: sweep.optional("twist")?.map_or(Ok(0.0), |f| f.number())?,
         closure_symmetry: sweep
             .optional("closure_symmetry")?
             .map_or(Ok(0), |f| f.count(0, 1 << 16).map(|k| k as u32))?,
@@ -299,7 +304,9 @@ fn read_corner(corner: &Field) -> InputResult<rmfsurf::wire::Corner> {
         return match name {
             "round" => Ok(Corner::Round(None)),
             "miter" => Ok(Corner::Miter),
-            other => corner.error(format!("unknown corner \"{other}\"; expected round or miter")),
+            other => corner.error(format!(
+                "unknown corner \"{other}\"; expected round or miter"
+            )),
         };
     }
     let (_, body) = corner.variant(&["round"])?;

@@ -201,7 +201,11 @@ fn wire_figures(edges: usize, shape: &rmfsurf::wire::Shape) -> Vec<Figure> {
         figure("joint_gap", "largest gap between sections at joints", r.joint_gap),
     ];
     if let Some(v) = shape.volume() {
-        figures.push(figure("volume", "volume (divergence theorem, Gauss–Legendre)", v));
+        figures.push(figure(
+            "volume",
+            "volume (divergence theorem, Gauss–Legendre)",
+            v,
+        ));
     }
     figures
 }

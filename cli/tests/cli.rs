@@ -314,12 +314,27 @@ fn wire_sweeps_write_step_solids() {
     let pipe = examples().join("pipe.json");
     let out = tool(
         &dir,
-        &[pipe.to_str().unwrap(), "-o", "pipe.step", "-o", "pipe.json", "--curves", "spine.step"],
+        &[
+            pipe.to_str().unwrap(),
+            "-o",
+            "pipe.step",
+            "-o",
+            "pipe.json",
+            "--curves",
+            "spine.step",
+        ],
         None,
     );
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let summary = String::from_utf8_lossy(&out.stdout);
-    assert!(summary.contains("closed solid") && summary.contains("true"), "{summary}");
+    assert!(
+        summary.contains("closed solid") && summary.contains("true"),
+        "{summary}"
+    );
     let step = std::fs::read_to_string(dir.join("pipe.step")).unwrap();
     assert!(step.contains("MANIFOLD_SOLID_BREP") && step.contains("CLOSED_SHELL"));
     let figures: serde_json::Value =
@@ -336,15 +351,29 @@ fn wire_sweeps_write_step_solids() {
     let miter = json.replace(r#"{"round": {"radius": 2}}"#, r#""miter""#);
     assert_ne!(miter, json);
     let out = tool(&dir, &["-", "-o", "miter.step"], Some(&miter));
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     // Sheets of open profiles; a mesh of a wire sweep is refused, and nothing is written.
     let sheet = json.replace(
         r#"{"circle": {"radius": 1}, "holes": [{"circle": {"radius": 0.8}}]}"#,
         r#"{"line": {"from": [-1, 0], "to": [1, 0]}}"#,
     );
-    let out = tool(&dir, &["-", "-o", "sheet.step"], Some(&sheet.replace("\"solid\": true", "\"solid\": false")));
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    assert!(std::fs::read_to_string(dir.join("sheet.step")).unwrap().contains("OPEN_SHELL"));
+    let out = tool(
+        &dir,
+        &["-", "-o", "sheet.step"],
+        Some(&sheet.replace("\"solid\": true", "\"solid\": false")),
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(std::fs::read_to_string(dir.join("sheet.step"))
+        .unwrap()
+        .contains("OPEN_SHELL"));
     let out = tool(&dir, &["-", "-o", "mesh.obj"], Some(&json));
     assert_eq!(out.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&out.stderr).contains("STEP solid"));
@@ -360,7 +389,11 @@ fn wire_fails_with(name: &str, json: &str, expected: &[&str]) {
     for e in expected {
         assert!(stderr.contains(e), "{name}: {stderr:?} should say {e:?}");
     }
-    assert!(files_in(&dir).is_empty(), "{name}: wrote {:?}", files_in(&dir));
+    assert!(
+        files_in(&dir).is_empty(),
+        "{name}: wrote {:?}",
+        files_in(&dir)
+    );
 }
 
 #[test]
@@ -368,8 +401,15 @@ fn bad_wires_are_reported_at_the_field() {
     let json = std::fs::read_to_string(examples().join("pipe.json")).unwrap();
     wire_fails_with(
         "wire_gap",
-        &json.replace("[15, 5, 0], \"to\": [15, 15, 0]", "[15, 5.5, 0], \"to\": [15, 15, 0]"),
-        &["sweep.spine.wire[2]", "edges 1 and 2 do not meet", "5.000e-1 apart"],
+        &json.replace(
+            "[15, 5, 0], \"to\": [15, 15, 0]",
+            "[15, 5.5, 0], \"to\": [15, 15, 0]",
+        ),
+        &[
+            "sweep.spine.wire[2]",
+            "edges 1 and 2 do not meet",
+            "5.000e-1 apart",
+        ],
     );
     wire_fails_with(
         "wire_corner",
@@ -396,12 +436,18 @@ fn bad_wires_are_reported_at_the_field() {
     );
     wire_fails_with(
         "wire_fold",
-        &json.replace(r#""circle": {"radius": 1}, "holes": [{"circle": {"radius": 0.8}}]"#, r#""circle": {"radius": 6}"#),
+        &json.replace(
+            r#""circle": {"radius": 1}, "holes": [{"circle": {"radius": 0.8}}]"#,
+            r#""circle": {"radius": 6}"#,
+        ),
         &["sweep", "would fold"],
     );
     wire_fails_with(
         "wire_edge",
-        &json.replace("{\"line\": {\"from\": [0, 0, 0]", "{\"spline\": {\"from\": [0, 0, 0]"),
+        &json.replace(
+            "{\"line\": {\"from\": [0, 0, 0]",
+            "{\"spline\": {\"from\": [0, 0, 0]",
+        ),
         &["sweep.spine.wire[0].spline: unknown field; expected one of line, arc, nurbs"],
     );
 }

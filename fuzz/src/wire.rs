@@ -37,11 +37,31 @@ fn add(a: RmfVec3, b: RmfVec3) -> RmfVec3 {
 /// drawn from the input, added to the curve pool.
 fn profile_curve(s: &mut Session) {
     let r = s.input.f64();
+    if super::session::tracing() {
+        eprintln!("profile curve: size {r}");
+    }
     let q = std::f64::consts::FRAC_1_SQRT_2;
-    let (poles, weights, knots, degree): (Vec<RmfVec3>, Vec<f64>, Vec<f64>, u32) = if s.input.flag() {
-        let c = [(1., 0.), (1., 1.), (0., 1.), (-1., 1.), (-1., 0.), (-1., -1.), (0., -1.), (1., -1.), (1., 0.)];
+    let (poles, weights, knots, degree): (Vec<RmfVec3>, Vec<f64>, Vec<f64>, u32) = if s.input.flag()
+    {
+        let c = [
+            (1., 0.),
+            (1., 1.),
+            (0., 1.),
+            (-1., 1.),
+            (-1., 0.),
+            (-1., -1.),
+            (0., -1.),
+            (1., -1.),
+            (1., 0.),
+        ];
         (
-            c.iter().map(|&(x, y)| RmfVec3 { x: r * x, y: r * y, z: 0.0 }).collect(),
+            c.iter()
+                .map(|&(x, y)| RmfVec3 {
+                    x: r * x,
+                    y: r * y,
+                    z: 0.0,
+                })
+                .collect(),
             (0..9).map(|k| if k % 2 == 1 { q } else { 1.0 }).collect(),
             vec![0., 0., 0., 1., 1., 2., 2., 3., 3., 4., 4., 4.],
             2,
@@ -49,7 +69,13 @@ fn profile_curve(s: &mut Session) {
     } else {
         let c = [(1., 1.), (-1., 1.), (-1., -1.), (1., -1.), (1., 1.)];
         (
-            c.iter().map(|&(x, y)| RmfVec3 { x: r * x, y: r * y, z: 0.0 }).collect(),
+            c.iter()
+                .map(|&(x, y)| RmfVec3 {
+                    x: r * x,
+                    y: r * y,
+                    z: 0.0,
+                })
+                .collect(),
             vec![1.0; 5],
             vec![0., 0., 1., 2., 3., 4., 4.],
             1,
@@ -57,7 +83,15 @@ fn profile_curve(s: &mut Session) {
     };
     let mut out = poisoned();
     let status = unsafe {
-        rmf_nurbs_curve_create(degree, poles.as_ptr(), weights.as_ptr(), poles.len(), knots.as_ptr(), knots.len(), &mut out)
+        rmf_nurbs_curve_create(
+            degree,
+            poles.as_ptr(),
+            weights.as_ptr(),
+            poles.len(),
+            knots.as_ptr(),
+            knots.len(),
+            &mut out,
+        )
     };
     s.made("rmf_nurbs_curve_create", status, Some(out), None);
 }
@@ -75,9 +109,16 @@ fn edges(s: &mut Session) -> Vec<RmfEdge> {
                 6 => RMF_EDGE_CURVE,
                 _ => s.input.code(),
             };
-            let start = if s.input.below(8) == 0 { s.input.vec3() } else { at };
+            let start = if s.input.below(8) == 0 {
+                s.input.vec3()
+            } else {
+                at
+            };
             let (through, end) = if s.input.flag() {
-                (add(start, s.input.small_vec3()), add(start, s.input.small_vec3()))
+                (
+                    add(start, s.input.small_vec3()),
+                    add(start, s.input.small_vec3()),
+                )
             } else {
                 (s.input.vec3(), s.input.vec3())
             };
@@ -100,7 +141,11 @@ fn options(s: &mut Session) -> RmfWireSweepOptions {
     if s.input.flag() {
         o.join_tolerance = s.input.f64();
     }
-    o.corner = if s.input.below(4) == 0 { s.input.code() } else { s.input.below(2) as u32 };
+    o.corner = if s.input.below(4) == 0 {
+        s.input.code()
+    } else {
+        s.input.below(2) as u32
+    };
     if s.input.flag() {
         o.corner_radius = s.input.f64();
     }
@@ -111,7 +156,11 @@ fn options(s: &mut Session) -> RmfWireSweepOptions {
         o.twist = s.input.f64();
     }
     o.closure_symmetry = s.input.code();
-    o.solid = if s.input.below(8) == 0 { s.input.code() } else { s.input.below(2) as u32 };
+    o.solid = if s.input.below(8) == 0 {
+        s.input.code()
+    } else {
+        s.input.below(2) as u32
+    };
     if s.input.below(16) == 0 {
         o.struct_size = s.input.work();
     }
@@ -124,6 +173,12 @@ fn wire_sweep(s: &mut Session) {
     let holes: Vec<*const RmfCurve> = (0..s.input.len(2)).map(|_| s.curve()).collect();
     let options = options(s);
     let with_options = s.input.below(8) != 0;
+    if super::session::tracing() {
+        eprintln!(
+            "wire sweep: edges {edges:?}, holes {}, options {options:?}",
+            holes.len()
+        );
+    }
     let mut out: *mut RmfShape = poisoned();
     let status = unsafe {
         rmf_wire_sweep(
@@ -132,7 +187,11 @@ fn wire_sweep(s: &mut Session) {
             profile,
             or_null(&mut s.input, &holes),
             holes.len(),
-            if with_options { &options } else { std::ptr::null() },
+            if with_options {
+                &options
+            } else {
+                std::ptr::null()
+            },
             &mut out,
         )
     };
@@ -145,7 +204,11 @@ fn shape_faces(s: &mut Session) {
     assert!(shape.is_null() || count > 0, "a shape without faces");
     let solid = unsafe { rmf_shape_is_solid(shape) };
     assert!(solid <= 1);
-    let index = if s.input.flag() { s.input.work() } else { s.input.below(count.max(1)) };
+    let index = if s.input.flag() {
+        s.input.work()
+    } else {
+        s.input.below(count.max(1))
+    };
     let mut face = poisoned::<RmfShapeFace>();
     let status = unsafe { rmf_shape_face(shape, index, &mut face) };
     if !checked("rmf_shape_face", status, &[is_poisoned(&face)]) {
@@ -158,16 +221,32 @@ fn shape_faces(s: &mut Session) {
             let (mut u0, mut u1, mut v0, mut v1) = (0.0, 0.0, 0.0, 0.0);
             let mut p = poisoned::<RmfVec3>();
             unsafe {
-                assert!(status_ok("rmf_surface_domain", rmf_surface_domain(face.surface, &mut u0, &mut u1, &mut v0, &mut v1)));
-                let status = rmf_surface_eval(face.surface, 0.5 * (u0 + u1), 0.5 * (v0 + v1), &mut p, null_mut(), null_mut());
+                assert!(status_ok(
+                    "rmf_surface_domain",
+                    rmf_surface_domain(face.surface, &mut u0, &mut u1, &mut v0, &mut v1)
+                ));
+                let status = rmf_surface_eval(
+                    face.surface,
+                    0.5 * (u0 + u1),
+                    0.5 * (v0 + v1),
+                    &mut p,
+                    null_mut(),
+                    null_mut(),
+                );
                 assert!(status_ok("rmf_surface_eval", status));
             }
-            assert!(p.x.is_finite() && p.y.is_finite() && p.z.is_finite(), "a face point {p:?}");
+            assert!(
+                p.x.is_finite() && p.y.is_finite() && p.z.is_finite(),
+                "a face point {p:?}"
+            );
         }
         RMF_FACE_PLANE => {
             assert!(face.surface.is_null() && face.loop_count >= 1);
             let n = face.plane_normal;
-            assert!(((n.x * n.x + n.y * n.y + n.z * n.z).sqrt() - 1.0).abs() < 1e-9, "cap normal {n:?}");
+            assert!(
+                ((n.x * n.x + n.y * n.y + n.z * n.z).sqrt() - 1.0).abs() < 1e-9,
+                "cap normal {n:?}"
+            );
             let l = s.input.below(face.loop_count + 1);
             let mut c = poisoned::<*const RmfCurve>();
             let status = unsafe { rmf_shape_face_loop(shape, index, l, &mut c) };
@@ -197,7 +276,11 @@ fn shape_report(s: &mut Session) {
         assert!(x.is_finite() && x >= 0.0, "report: {name} = {x}");
     }
     assert!(r.max_parameter_cosine <= 1.0 + 1e-12);
-    assert!(r.singularity_margin > 0.0 && r.singularity_margin <= 1.0 + 1e-12, "margin {}", r.singularity_margin);
+    assert!(
+        r.singularity_margin > 0.0 && r.singularity_margin <= 1.0 + 1e-12,
+        "margin {}",
+        r.singularity_margin
+    );
     assert_eq!(r.face_count, unsafe { rmf_shape_face_count(shape) });
 }
 

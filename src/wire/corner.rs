@@ -49,7 +49,12 @@ pub(crate) enum CornerMode {
 
 /// The chain with its corners resolved. `unit` converts lengths to the caller's units for
 /// messages.
-pub(crate) fn resolve(chain: Chain, mode: CornerMode, unit: f64, profile_radius: f64) -> Result<Chain> {
+pub(crate) fn resolve(
+    chain: Chain,
+    mode: CornerMode,
+    unit: f64,
+    profile_radius: f64,
+) -> Result<Chain> {
     if !chain.joints.iter().any(|j| j.kind == JointKind::Corner) {
         return Ok(chain);
     }
@@ -101,7 +106,9 @@ fn near_tangent(mut chain: Chain, profile_radius: f64) -> Chain {
         .pieces
         .iter()
         .flat_map(|p| p.geometry.hull_points())
-        .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), p| (lo.min(p), hi.max(p)));
+        .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), p| {
+            (lo.min(p), hi.max(p))
+        });
     let size = (size.1 - size.0).length();
     for (i, joint) in chain.joints.iter_mut().enumerate() {
         if joint.kind != JointKind::Corner {

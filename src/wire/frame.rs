@@ -39,7 +39,7 @@ use crate::ph_cubic::accuracy::angle_errors;
 use crate::ph_cubic::analysis::ProfileSurface;
 use crate::ph_cubic::approximate::ph_spline_approximate;
 use crate::ph_cubic::base_frame::{FrameNumerators, FramePieces};
-use crate::ph_cubic::biquadratic::{fit, AngleHermite};
+use crate::ph_cubic::biquadratic::{fit, AngleHermite, Biquadratic};
 use crate::ph_cubic::exact_rmf::ExactRmf;
 use crate::ph_cubic::ph_cubics;
 use crate::ph_cubic::rational_rmf::{ph_rational_rmf, RmfOptions};
@@ -49,8 +49,8 @@ use std::f64::consts::{FRAC_PI_2, PI};
 /// Samples per segment at which twisted lines and arcs are compared with their target.
 const ERROR_SAMPLES: usize = 64;
 
-/// Deepest halving of a twisted segment into pieces turning by at most π/2.
-const MAX_HALVINGS: usize = 20;
+/// Deepest halving of a twisted segment (2⁻¹⁶ of it).
+const MAX_HALVINGS: usize = 16;
 
 /// How the frame is set up (normalized coordinates).
 #[derive(Clone, Copy, Debug)]
@@ -460,7 +460,8 @@ fn max_error(frames: &RationalFrames, target: impl Fn(f64) -> Frame) -> f64 {
 
 /// The base frames of the segments (numerators on [0, 1] each) turned by 2 arctan W ≈ the
 /// target `angle(k, s)`, W of the family (37) fitted to the rate `rate(k, s)` (local
-/// parameter) on pieces turning by at most π/2; exact at the ends of every piece.
+/// parameter), on pieces halved until 2 arctan W is within [`TWIST_ACCURACY`] of the target
+/// (and turns by at most π/2); exact at the ends of every piece.
 fn turned_frames(
     breaks: &[f64],
     bases: &[FrameNumerators],
@@ -470,23 +471,10 @@ fn turned_frames(
     let mut pieces = FramePieces::new(breaks);
     for (k, base) in bases.iter().enumerate() {
         let mut parts = Vec::new();
-        halve(&|s| angle(k, s), 0.0, 1.0, 0, &mut parts);
-        for (v0, v1) in parts {
-            let numerators = base.restricted(v0, v1);
+        fit_parts(&|s| angle(k, s), &|s| rate(k, s), 0.0, 1.0, 0, &mut parts)?;
+        for (v0, v1, w) in parts {
             let (g0, g1) = (angle(k, v0), angle(k, v1));
-            let quarter = 0.25 * (g1 - g0);
-            let (w0, w1) = (-quarter.tan(), quarter.tan());
-            let length = v1 - v0;
-            let local = |u: f64| rate(k, v0 + u * length) * length;
-            let slope = |w: f64, r: f64| 0.5 * (1.0 + w * w) * r;
-            let data = AngleHermite {
-                w0,
-                w1,
-                s0: slope(w0, local(0.0)),
-                s1: slope(w1, local(1.0)),
-            };
-            let fitted = fit(data, local)?;
-            let turned = numerators.turned(&fitted.w.numerator, &fitted.w.denominator);
+            let turned = base.restricted(v0, v1).turned(&w.numerator, &w.denominator);
             let mut segments = turned.positive_pieces()?;
             for (_, _, segment) in segments.iter_mut() {
                 segment.rotate(0.5 * (g0 + g1));
@@ -497,15 +485,45 @@ fn turned_frames(
     pieces.into_frames()
 }
 
-/// [a, b] halved until no part turns by more than π/2.
-fn halve(angle: &dyn Fn(f64) -> f64, a: f64, b: f64, depth: usize, out: &mut Vec<(f64, f64)>) {
-    if (angle(b) - angle(a)).abs() <= FRAC_PI_2 || depth == MAX_HALVINGS {
-        out.push((a, b));
-        return;
+/// Largest angle (radians) between a twisted line's or arc's rational frame and its target.
+const TWIST_ACCURACY: f64 = 1e-10;
+
+/// The W of the part [a, b] (the target angle less its mean there, over 2), halved while it
+/// turns by more than π/2 or misses the target by more than [`TWIST_ACCURACY`] (sampled).
+fn fit_parts(
+    angle: &dyn Fn(f64) -> f64,
+    rate: &dyn Fn(f64) -> f64,
+    a: f64,
+    b: f64,
+    depth: usize,
+    out: &mut Vec<(f64, f64, Biquadratic)>,
+) -> Result<()> {
+    let (g0, g1) = (angle(a), angle(b));
+    let mid = 0.5 * (g0 + g1);
+    let length = b - a;
+    let local = |u: f64| rate(a + u * length) * length;
+    let quarter = 0.25 * (g1 - g0);
+    let (w0, w1) = (-quarter.tan(), quarter.tan());
+    let slope = |w: f64, r: f64| 0.5 * (1.0 + w * w) * r;
+    let data = AngleHermite {
+        w0,
+        w1,
+        s0: slope(w0, local(0.0)),
+        s1: slope(w1, local(1.0)),
+    };
+    let w = fit(data, local)?.w;
+    let miss = (1..ERROR_SAMPLES)
+        .map(|i| i as f64 / ERROR_SAMPLES as f64)
+        .map(|u| (2.0 * w.eval(u).atan() + mid - angle(a + u * length)).abs())
+        .fold(0.0, f64::max);
+    let turns_too_much = (g1 - g0).abs() > FRAC_PI_2;
+    if (turns_too_much || miss > TWIST_ACCURACY) && depth < MAX_HALVINGS {
+        let m = 0.5 * (a + b);
+        fit_parts(angle, rate, a, m, depth + 1, out)?;
+        return fit_parts(angle, rate, m, b, depth + 1, out);
     }
-    let mid = 0.5 * (a + b);
-    halve(angle, a, mid, depth + 1, out);
-    halve(angle, mid, b, depth + 1, out);
+    out.push((a, b, w));
+    Ok(())
 }
 
 /// The least singularity margin of the sweep (Cor. 7; see the module notes), or the

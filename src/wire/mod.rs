@@ -96,6 +96,11 @@ impl Default for WireSweep {
     }
 }
 
+/// The range of wire sizes (bounding-box diagonals) taken: scaled by a power of two to 1,
+/// every coordinate stays a normal number.
+const MIN_SIZE: f64 = 1e-290;
+const MAX_SIZE: f64 = 1e290;
+
 /// The factor of the radius of a default round corner over the profile's radius.
 const DEFAULT_RADIUS_FACTOR: f64 = 1.5;
 
@@ -130,6 +135,12 @@ pub fn sweep_wire(
     if !(size > 0.0 && size.is_finite()) {
         return invalid!("edges: the wire has no extent (size {size})");
     }
+    if !(MIN_SIZE..=MAX_SIZE).contains(&size) {
+        return invalid!(
+            "edges: the wire's size {size:e} is outside [{MIN_SIZE:e}, {MAX_SIZE:e}] (its \
+             coordinates would not stay normal numbers)"
+        );
+    }
     let center = 0.5 * lo + 0.5 * hi;
     // A power of two: scaling by it is exact.
     let scale = 2f64.powi(size.log2().round() as i32);
@@ -151,6 +162,24 @@ pub fn sweep_wire(
         .iter()
         .map(|h| normalized(h, 1.0 / scale, DVec3::ZERO))
         .collect();
+    for (name, curve) in std::iter::once(("profile".to_string(), &outer)).chain(
+        holes
+            .iter()
+            .enumerate()
+            .map(|(k, h)| (format!("holes[{k}]"), h)),
+    ) {
+        if curve
+            .segments()
+            .iter()
+            .flat_map(|s| s.homogeneous())
+            .any(|h| !h.is_finite())
+        {
+            return invalid!(
+                "{name}: its coordinates are out of proportion to the wire's size {size:e} \
+                 (or not finite)"
+            );
+        }
+    }
     let size_n = size / scale;
     let units = edge::Units {
         scale,

@@ -163,7 +163,11 @@ fn a_pipe_route_of_lines_and_an_arc_is_an_exact_solid() {
     assert!(relative(v, PI * length) < 1e-12);
     assert!(shape.report().max_parameter_cosine < 1e-12);
     assert_eq!(shape.report().spine_distance, 0.0);
-    assert!(shape.report().joint_gap < 1e-14, "{}", shape.report().joint_gap);
+    assert!(
+        shape.report().joint_gap < 1e-14,
+        "{}",
+        shape.report().joint_gap
+    );
     // Exact: every point of the lateral faces is at distance 1 from the spine.
     let torus = shape.faces()[4].surface.as_ref().unwrap();
     assert_eq!(
@@ -543,5 +547,153 @@ fn write_samples_for_manual_checks() {
             },
         )
         .unwrap(),
+    );
+}
+
+/// A twist turns the frames along lines and arcs too (rational, the biquadratic W fitted to
+/// the linear turn): still a closed solid, the faces meeting at every joint, the frame
+/// within 1e-6 rad of the RMF turned linearly in arc length, and the volume unchanged.
+#[test]
+fn a_twist_turns_the_frame_along_lines_and_arcs_and_keeps_the_solid() {
+    let options = WireSweep {
+        corner: Corner::Round(Some(1.0)),
+        twist: 1.5,
+        ..WireSweep::default()
+    };
+    let shape = sweep_wire(&staircase(), &square(0.5), &[], &options).unwrap();
+    assert_closed_oriented(shape.brep());
+    let r = shape.report();
+    println!(
+        "staircase with a twist of 1.5 rad: frames within {:.1e} rad of the twisted RMF, joint gap {:.1e}, \
+         max |cos| {:.1e}",
+        r.rmf_angle_error, r.joint_gap, r.max_parameter_cosine
+    );
+    assert!(r.rmf_angle_error < 1e-9, "{}", r.rmf_angle_error);
+    assert!(r.joint_gap < 1e-12, "{}", r.joint_gap);
+    assert!(
+        r.max_parameter_cosine > 1e-3,
+        "a twist tilts the parameter lines"
+    );
+    let length = 24.0 - 3.0 * (2.0 - PI / 2.0);
+    assert!(
+        relative(volume(&shape), length) < 1e-9,
+        "{}",
+        volume(&shape)
+    );
+    // The frame turns by the twist in all: the end section is the untwisted one turned.
+    let plain = sweep_wire(
+        &staircase(),
+        &square(0.5),
+        &[],
+        &WireSweep {
+            twist: 0.0,
+            ..options
+        },
+    )
+    .unwrap();
+    let end = |s: &Shape| {
+        let f = &s.faces()[s.faces().len() - 3 - 3];
+        let surface = f.surface.as_ref().unwrap();
+        surface.eval(surface.domain_u().0, surface.domain_v().1)
+    };
+    let centre = DVec3::new(0.0, 6.0, 6.0);
+    let (a, b) = (end(&plain) - centre, end(&shape) - centre);
+    let turn = a.cross(b).dot(DVec3::X).atan2(a.dot(b));
+    assert!((turn.abs() - 1.5).abs() < 1e-9, "{turn}");
+}
+
+/// A closed polyline in 3-D: its discrete RMF comes back turned (the holonomy), and the
+/// closure spreads the smallest turn over the lines and elbows, rational there.
+#[test]
+fn a_closed_3d_polyline_closes_by_a_turn_spread_over_lines_and_elbows() {
+    let points = [
+        [0., 0., 0.],
+        [6., 0., 0.],
+        [6., 5., 2.],
+        [1., 6., 6.],
+        [0., 0., 0.],
+    ];
+    let edges: Vec<Edge> = points.windows(2).map(|w| line(w[0], w[1])).collect();
+    let options = WireSweep {
+        corner: Corner::Round(Some(1.0)),
+        ..WireSweep::default()
+    };
+    let shape = sweep_wire(&edges, &circle(0.3), &[], &options).unwrap();
+    assert!(shape.is_solid());
+    assert_closed_oriented(shape.brep());
+    let r = shape.report();
+    println!(
+        "closed 3-D polyline, circle: seam gap {:.1e}, frames within {:.1e} rad of the turned RMF",
+        r.seam_gap, r.rmf_angle_error
+    );
+    assert!(r.seam_gap < 1e-12, "{}", r.seam_gap);
+    assert!(r.rmf_angle_error < 1e-9, "{}", r.rmf_angle_error);
+    assert!(
+        r.max_parameter_cosine > 1e-6,
+        "the closure turn tilts the parameter lines"
+    );
+    // A miter polyline cannot turn at all: refused, unless the turn is a symmetry.
+    let miter = WireSweep {
+        corner: Corner::Miter,
+        ..options
+    };
+    let e = sweep_wire(&edges, &circle(0.3), &[], &miter).unwrap_err();
+    assert!(e.message().contains("every edge is a miter leg"), "{e}");
+}
+
+/// A PH cubic spline given as an edge is swept along as it is (distance 0), with its
+/// rational RMF.
+#[test]
+fn a_ph_spline_edge_is_used_as_it_is() {
+    let (points, tangents): (Vec<DVec3>, Vec<DVec3>) = (0..=4)
+        .map(|i| {
+            let t = 0.5 * i as f64;
+            (
+                DVec3::new(3.0 * t.cos(), 3.0 * t.sin(), t),
+                DVec3::new(-3.0 * t.sin(), 3.0 * t.cos(), 1.0),
+            )
+        })
+        .unzip();
+    let spline = crate::ph_cubic::ph_spline_hermite(&points, &tangents).unwrap();
+    let shape = sweep_wire(
+        &[Edge::Curve(spline.clone())],
+        &circle(0.2),
+        &[],
+        &WireSweep::default(),
+    )
+    .unwrap();
+    assert_eq!(shape.report().spine_distance, 0.0);
+    assert_eq!(shape.spine()[0].segments().len(), spline.segments().len());
+    assert!(shape.report().max_parameter_cosine < 1e-5);
+}
+
+/// Fuzz finding: a circle of subnormal radius (6e-313) as the only edge made the wire's
+/// size subnormal, its scale 2⁻¹⁰³⁶ and 1/scale infinite: NaN control points and a panic.
+/// Sizes outside [1e-290, 1e290] are refused.
+#[test]
+fn wires_of_subnormal_or_huge_size_are_refused() {
+    let tiny = super::normalized(&circle(1.0), 6.25e-313, DVec3::ZERO);
+    let e = sweep_wire(
+        &[Edge::Curve(tiny)],
+        &circle(1e-313),
+        &[],
+        &WireSweep::default(),
+    )
+    .unwrap_err();
+    assert!(e.message().contains("outside [1e-290, 1e290]"), "{e}");
+    let huge = [line([0., 0., 0.], [1e300, 0., 0.])];
+    assert!(sweep_wire(&huge, &circle(1e299), &[], &WireSweep::default()).is_err());
+    let out_of_proportion = [line([0., 0., 0.], [1e-200, 0., 0.])];
+    let e = sweep_wire(
+        &out_of_proportion,
+        &circle(1e200),
+        &[],
+        &WireSweep::default(),
+    )
+    .unwrap_err();
+    assert!(
+        e.message()
+            .contains("profile: its coordinates are out of proportion"),
+        "{e}"
     );
 }
