@@ -18,7 +18,7 @@
 
 mod support;
 
-use glam::DVec3;
+use rmfsurf::glam::DVec3;
 use rmfsurf::metrics::{angle_about_tangent, gaussian_curvature, parameter_line_cosine};
 use rmfsurf::{
     approximate_developable, hermite_sequence, mobius_hermite_points, ph_rational_rmf,

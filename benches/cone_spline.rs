@@ -4,7 +4,7 @@
 //!
 //!     cargo bench --bench cone_spline
 
-use glam::DVec3;
+use rmfsurf::glam::DVec3;
 use rmfsurf::{
     approximate_developable, ConeSpline, NurbsSurface, ParametricCurve, PiecewiseCurve,
     RationalBezierCurve, Rule, TangentSurface,

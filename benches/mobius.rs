@@ -6,7 +6,7 @@
 
 mod support;
 
-use glam::DVec3;
+use rmfsurf::glam::DVec3;
 use rmfsurf::metrics::angle_between;
 use rmfsurf::{
     mobius_approximate, uniform_parameters, DoubleReflectionRmf, ParametricCurve, Result,

@@ -8,7 +8,7 @@
 
 mod support;
 
-use glam::DVec3;
+use rmfsurf::glam::DVec3;
 use rmfsurf::metrics::angle_about_tangent;
 use rmfsurf::{
     ph_rational_rmf, ph_spline_hermite, sweep, uniform_parameters, DoubleReflectionRmf, ExactRmf,

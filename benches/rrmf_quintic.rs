@@ -6,7 +6,7 @@
 //!   whole spline, with the double-reflection RMF (the library's reference method) of the
 //!   same curve beside it — its time, and its distance from the exact frame.
 
-use glam::DVec3;
+use rmfsurf::glam::DVec3;
 use rmfsurf::{
     best_quintic, hermite_sequence, quintic_curve, quintic_rmf, rrmf_quintics, rrmf_spline,
     uniform_parameters, DoubleReflectionRmf, HermiteSegment, ShapeMeasure,

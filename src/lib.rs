@@ -13,6 +13,7 @@
 //! | exact rational RMFs by Möbius maps | Bartoň, Jüttler & Wang \[BJW\] | [`MobiusMap`], [`mobius_hermite`], [`mobius_approximate`] |
 //! | quintics with exact rational RMFs | Farouki, Giannelli & Sestini \[FGS\] | [`rrmf_quintics`], [`best_quintic`], [`rrmf_spline`] |
 //! | cone spline surfaces, development, bending | Leopoldseder & Pottmann \[LP\] | [`cone_pair`], [`approximate_developable`], [`ConeSpline`], [`FlatPattern`] |
+//! | sweeps along wires of lines, arcs and curves into closed solids | \[MJ\] on curve edges, exact cylinders and tori | [`sweep_wire`], [`Edge`], [`WireSweep`], [`Shape`] |
 //!
 //! The papers are cited in full in `docs/references.md`; module and item docs cite them by
 //! equation number. Curves and surfaces are [`PiecewiseCurve`] and [`PiecewiseSurface`]
@@ -55,6 +56,7 @@ mod solid;
 mod sweep;
 #[cfg(test)]
 mod testing;
+mod wire;
 
 /// The vector types of every signature (f64 throughout).
 pub use glam;
@@ -117,6 +119,11 @@ pub use cone_spline::{
     PairCase, PatternEdge, PieceKind, Region, Rule,
 };
 
+// Sweeps along wires (lines, arcs, curves, corners) into closed solids of exact faces.
+pub use wire::{
+    sweep_wire, Corner, Edge, Face, FaceKind, Shape, SweepReport, WireSweep, MAX_FACES,
+};
+
 // Meshes of surfaces (for viewers and mesh checks).
 pub use mesh::{grid_normals, grid_parameters, mesh_size, tessellate, TriangleMesh};
 pub use solid::{closed_mesh, ClosedMesh};
@@ -150,9 +157,10 @@ pub mod numeric {
 pub mod prelude {
     pub use crate::{
         angle_errors, approximate_developable, mobius_approximate, mobius_hermite, ph_rational_rmf,
-        ph_spline_approximate, ph_spline_hermite, rrmf_spline, sweep, ConeSpline, Error, ErrorKind,
-        ExactRmf, FrameField, NurbsCurve, NurbsSurface, ParametricCurve, PiecewiseCurve,
-        PiecewiseSurface, RationalFrames, Result, ResultExt, RmfOptions,
+        ph_spline_approximate, ph_spline_hermite, rrmf_spline, sweep, sweep_wire, ConeSpline, Edge,
+        Error, ErrorKind, ExactRmf, FrameField, NurbsCurve, NurbsSurface, ParametricCurve,
+        PiecewiseCurve, PiecewiseSurface, RationalFrames, Result, ResultExt, RmfOptions, Shape,
+        WireSweep,
     };
     pub use glam::DVec3;
 }

@@ -9,7 +9,7 @@
 //!
 //! Run `cargo test --test mobius_convergence -- --nocapture` to see the tables.
 
-use glam::DVec3;
+use rmfsurf::glam::DVec3;
 use rmfsurf::metrics::{frame_errors, FrameErrors, ReferenceRmf};
 use rmfsurf::{
     mobius_approximate, uniform_parameters, DoubleReflectionRmf, ExactRmf, FrameField, FrameKind,

@@ -3,7 +3,7 @@
 //! (`boundary::guard`), map `Result` to `RmfStatus`, and write out-pointers last.
 //!
 //! One module per C type: [`curve`] (`RmfCurve`), [`frames`] (`RmfFrames`), [`surface`]
-//! (`RmfSurface`); [`status`] holds the status codes, last error and version; [`types`]
+//! (`RmfSurface`), [`shape`] (`RmfShape`, made by the wire sweeps of [`wire`]); [`status`] holds the status codes, last error and version; [`types`]
 //! the plain data structs and borrowed views; [`input`] the inputs several capabilities
 //! share (Hermite arrays, callback curves). The header `include/rmfsurf.h` is generated
 //! from these modules by cbindgen.
@@ -21,13 +21,16 @@ pub mod input;
 pub mod mobius;
 pub mod ph_cubic;
 pub mod rrmf_quintic;
+pub mod shape;
 pub mod status;
 pub mod surface;
 pub mod types;
+pub mod wire;
 
 pub use cone_spline::RmfConeSpline;
 pub use curve::RmfCurve;
 pub use frames::RmfFrames;
+pub use shape::RmfShape;
 pub use status::RmfStatus;
 pub use surface::RmfSurface;
 pub use types::{RmfBezierCurve, RmfBezierPatch, RmfNurbsCurve, RmfNurbsSurface, RmfVec3};

@@ -9,9 +9,11 @@ use rmfsurf_capi::frames::*;
 use rmfsurf_capi::mobius::*;
 use rmfsurf_capi::ph_cubic::*;
 use rmfsurf_capi::rrmf_quintic::*;
+use rmfsurf_capi::shape::*;
 use rmfsurf_capi::status::{rmf_last_error, rmf_status_name};
 use rmfsurf_capi::surface::*;
-use rmfsurf_capi::{RmfCurve, RmfFrames, RmfStatus, RmfVec3};
+use rmfsurf_capi::wire::*;
+use rmfsurf_capi::{RmfCurve, RmfFrames, RmfShape, RmfStatus, RmfVec3};
 use std::ffi::{c_void, CStr};
 use std::ptr::{null, null_mut};
 
@@ -149,6 +151,131 @@ unsafe extern "C" fn twisted_cubic(
 ) {
     *point = v(t, t * t, t * t * t);
     *tangent = v(1.0, 2.0 * t, 3.0 * t * t);
+}
+
+/// A line edge of a wire.
+fn line(a: RmfVec3, b: RmfVec3) -> RmfEdge {
+    RmfEdge {
+        kind: RMF_EDGE_LINE,
+        points: [a, b, v(0., 0., 0.)],
+        curve: null(),
+    }
+}
+
+/// Line (10) – tangent quarter arc (radius 5) – line (10).
+fn pipe_route() -> Vec<RmfEdge> {
+    let s = std::f64::consts::FRAC_1_SQRT_2;
+    vec![
+        line(v(0., 0., 0.), v(10., 0., 0.)),
+        RmfEdge {
+            kind: RMF_EDGE_ARC,
+            points: [
+                v(10., 0., 0.),
+                v(10. + 5. * s, 5. - 5. * s, 0.),
+                v(15., 5., 0.),
+            ],
+            curve: null(),
+        },
+        line(v(15., 5., 0.), v(15., 15., 0.)),
+    ]
+}
+
+/// A NURBS curve from poles (one Bézier segment, or degree 1 through them).
+fn curve(degree: u32, poles: &[RmfVec3]) -> *mut RmfCurve {
+    let n = poles.len();
+    let knots: Vec<f64> = if degree as usize + 1 == n {
+        [vec![0.0; n], vec![1.0; n]].concat()
+    } else {
+        let mut k = vec![0.0];
+        k.extend((0..n).map(|i| i as f64));
+        k.push((n - 1) as f64);
+        k
+    };
+    let mut out = null_mut();
+    let status = unsafe {
+        rmf_nurbs_curve_create(
+            degree,
+            poles.as_ptr(),
+            null(),
+            n,
+            knots.as_ptr(),
+            knots.len(),
+            &mut out,
+        )
+    };
+    assert_eq!(status, RmfStatus::RmfOk);
+    out
+}
+
+/// The circle of radius r (four rational quarters).
+fn circle(r: f64) -> *mut RmfCurve {
+    let s = std::f64::consts::FRAC_1_SQRT_2;
+    let c = [
+        (1., 0.),
+        (1., 1.),
+        (0., 1.),
+        (-1., 1.),
+        (-1., 0.),
+        (-1., -1.),
+        (0., -1.),
+        (1., -1.),
+        (1., 0.),
+    ];
+    let poles: Vec<RmfVec3> = c.iter().map(|&(x, y)| v(r * x, r * y, 0.)).collect();
+    let weights: Vec<f64> = (0..9).map(|k| if k % 2 == 1 { s } else { 1.0 }).collect();
+    let knots = [0., 0., 0., 1., 1., 2., 2., 3., 3., 4., 4., 4.];
+    let mut out = null_mut();
+    let status = unsafe {
+        rmf_nurbs_curve_create(
+            2,
+            poles.as_ptr(),
+            weights.as_ptr(),
+            9,
+            knots.as_ptr(),
+            12,
+            &mut out,
+        )
+    };
+    assert_eq!(status, RmfStatus::RmfOk);
+    out
+}
+
+/// rmf_wire_sweep of `edges` and `profile` (freed after) with `holes` and options edited by
+/// `edit`; the shape, if any, is freed.
+fn wire_sweep(
+    edges: &[RmfEdge],
+    profile: *mut RmfCurve,
+    holes: &[*mut RmfCurve],
+    edit: impl Fn(&mut RmfWireSweepOptions),
+) -> RmfStatus {
+    let mut options = std::mem::MaybeUninit::<RmfWireSweepOptions>::uninit();
+    let mut out: *mut RmfShape = null_mut();
+    unsafe {
+        rmf_wire_sweep_options_init(options.as_mut_ptr());
+        let mut options = options.assume_init();
+        edit(&mut options);
+        let holes_c: Vec<*const RmfCurve> = holes.iter().map(|&h| h.cast_const()).collect();
+        let status = rmf_wire_sweep(
+            edges.as_ptr(),
+            edges.len(),
+            profile,
+            holes_c.as_ptr(),
+            holes_c.len(),
+            &options,
+            &mut out,
+        );
+        rmf_shape_free(out);
+        rmf_curve_free(profile);
+        for &h in holes {
+            rmf_curve_free(h);
+        }
+        status
+    }
+}
+
+/// A polyline wire through `points` (lines).
+fn polyline(points: &[RmfVec3]) -> Vec<RmfEdge> {
+    points.windows(2).map(|w| line(w[0], w[1])).collect()
 }
 
 /// One row: what is bad, the entry point, the expected status, and a word the message must
@@ -808,6 +935,175 @@ fn rows() -> Vec<Row> {
                     rmf_cone_spline_free(spline);
                     status
                 }
+            },
+        },
+        Row {
+            what: "disconnected wire edges",
+            function: "rmf_wire_sweep",
+            expected: INVALID,
+            names: "edges 1 and 2 do not meet: the nearest ends are 5.000e-1 apart",
+            call: |_| {
+                let mut e = pipe_route();
+                e[2].points[0].y = 5.5;
+                wire_sweep(&e, circle(1.0), &[], |_| {})
+            },
+        },
+        Row {
+            what: "zero-length wire edge",
+            function: "rmf_wire_sweep",
+            expected: INVALID,
+            names: "edge 2: a line of zero length",
+            call: |_| {
+                let mut e = pipe_route();
+                e[2].points[1] = e[2].points[0];
+                wire_sweep(&e, circle(1.0), &[], |_| {})
+            },
+        },
+        Row {
+            what: "wire edge with a cusp",
+            function: "rmf_wire_sweep",
+            expected: INVALID,
+            names: "edge 0",
+            call: |_| {
+                let cusp = curve(
+                    3,
+                    &[v(0., 0., 0.), v(1., 1., 0.), v(0., 1., 0.), v(1., 0., 0.)],
+                );
+                let e = [RmfEdge {
+                    kind: RMF_EDGE_CURVE,
+                    points: [v(0., 0., 0.); 3],
+                    curve: cusp,
+                }];
+                let status = wire_sweep(&e, circle(0.01), &[], |_| {});
+                unsafe { rmf_curve_free(cusp) };
+                status
+            },
+        },
+        Row {
+            what: "180° reversal at a joint",
+            function: "rmf_wire_sweep",
+            expected: INVALID,
+            names: "joint between edges 0 and 1: the wire turns back on itself",
+            call: |_| {
+                let e = polyline(&[v(0., 0., 0.), v(10., 0., 0.), v(5., 0., 0.)]);
+                wire_sweep(&e, circle(1.0), &[], |_| {})
+            },
+        },
+        Row {
+            what: "open profile for a solid",
+            function: "rmf_wire_sweep",
+            expected: INVALID,
+            names: "profile: a solid needs a closed profile",
+            call: |_| {
+                let open = curve(1, &[v(-1., 0., 0.), v(1., 0., 0.), v(1., 1., 0.)]);
+                wire_sweep(&pipe_route(), open, &[], |_| {})
+            },
+        },
+        Row {
+            what: "open profile with holes",
+            function: "rmf_wire_sweep",
+            expected: INVALID,
+            names: "holes need a closed outer profile",
+            call: |_| {
+                let open = curve(1, &[v(-1., 0., 0.), v(1., 0., 0.), v(1., 1., 0.)]);
+                wire_sweep(&pipe_route(), open, &[circle(0.1)], |o| o.solid = 0)
+            },
+        },
+        Row {
+            what: "corner radius that does not fit",
+            function: "rmf_wire_sweep",
+            expected: INVALID,
+            names: "the largest radius that fits every corner is 0.99999",
+            call: |_| {
+                let e = polyline(&[v(0., 0., 0.), v(4., 0., 0.), v(4., 2., 0.), v(0., 2., 0.)]);
+                wire_sweep(&e, circle(0.1), &[], |o| o.corner_radius = 1.5)
+            },
+        },
+        Row {
+            what: "corner radius below the profile's extent",
+            function: "rmf_wire_sweep",
+            expected: INVALID,
+            names: "the smallest radius allowed is 0.5",
+            call: |_| {
+                let e = polyline(&[v(0., 0., 0.), v(4., 0., 0.), v(4., 4., 0.)]);
+                wire_sweep(&e, circle(0.5), &[], |o| o.corner_radius = 0.2)
+            },
+        },
+        Row {
+            what: "profile reaching past an arc's centre",
+            function: "rmf_wire_sweep",
+            expected: INVALID,
+            names: "edge 1: the arc's radius 4.99999",
+            call: |_| wire_sweep(&pipe_route(), circle(6.0), &[], |_| {}),
+        },
+        Row {
+            what: "miter corner on an arc",
+            function: "rmf_wire_sweep",
+            expected: INVALID,
+            names: "a miter corner needs straight legs",
+            call: |_| {
+                let e = [
+                    line(v(-2., 4., 0.), v(0., 2., 0.)),
+                    RmfEdge {
+                        kind: RMF_EDGE_ARC,
+                        points: [
+                            v(0., 2., 0.),
+                            v(2f64.sqrt(), 2f64.sqrt(), 0.),
+                            v(2., 0., 0.),
+                        ],
+                        curve: null(),
+                    },
+                ];
+                wire_sweep(&e, circle(0.1), &[], |o| o.corner = RMF_CORNER_MITER)
+            },
+        },
+        Row {
+            what: "unknown edge kind",
+            function: "rmf_wire_sweep",
+            expected: INVALID,
+            names: "edges[1].kind = 7",
+            call: |_| {
+                let mut e = pipe_route();
+                e[1].kind = 7;
+                wire_sweep(&e, circle(1.0), &[], |_| {})
+            },
+        },
+        Row {
+            what: "options not initialised",
+            function: "rmf_wire_sweep",
+            expected: INVALID,
+            names: "options->struct_size = 0",
+            call: |_| wire_sweep(&pipe_route(), circle(1.0), &[], |o| o.struct_size = 0),
+        },
+        Row {
+            what: "face index out of range",
+            function: "rmf_shape_face",
+            expected: INVALID,
+            names: "index = 99 but the shape has 14 faces",
+            call: |_| unsafe {
+                let (e, profile) = (pipe_route(), circle(1.0));
+                let mut shape = null_mut();
+                rmf_wire_sweep(e.as_ptr(), 3, profile, null(), 0, null(), &mut shape);
+                let mut face = std::mem::MaybeUninit::uninit();
+                let status = rmf_shape_face(shape, 99, face.as_mut_ptr());
+                rmf_shape_free(shape);
+                rmf_curve_free(profile);
+                status
+            },
+        },
+        Row {
+            what: "STEP path in a missing directory",
+            function: "rmf_shape_write_step",
+            expected: INVALID,
+            names: "cannot write no/such/dir/pipe.step",
+            call: |_| unsafe {
+                let (e, profile) = (pipe_route(), circle(1.0));
+                let mut shape = null_mut();
+                rmf_wire_sweep(e.as_ptr(), 3, profile, null(), 0, null(), &mut shape);
+                let status = rmf_shape_write_step(shape, c"no/such/dir/pipe.step".as_ptr());
+                rmf_shape_free(shape);
+                rmf_curve_free(profile);
+                status
             },
         },
     ]

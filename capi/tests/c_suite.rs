@@ -19,7 +19,7 @@ mod support;
 
 use std::path::Path;
 use std::process::Command;
-use support::{build, root, run, toolchain, vtk_flags, SETUP_HINT, STRICT};
+use support::{build, fresh_dir, root, run, toolchain, vtk_flags, SETUP_HINT, STRICT};
 
 #[test]
 fn header_compiles_alone_as_c99_and_cpp() {
@@ -170,5 +170,54 @@ fn readme_c_example_compiles_and_runs() {
     run(
         &build("readme_example", false, &[source.as_str()], &flags, &[]),
         false,
+    );
+}
+
+/// Every complete C program of the pages in docs/ (a block with `int main`) compiles and
+/// runs, in a scratch directory (the wire sweep example writes pipe.step).
+#[test]
+fn docs_c_programs_compile_and_run() {
+    let mut pages: Vec<_> = std::fs::read_dir(root().join("docs"))
+        .expect("docs/")
+        .filter_map(Result::ok)
+        .map(|e| e.path())
+        .filter(|p| p.extension().is_some_and(|x| x == "md"))
+        .collect();
+    pages.sort();
+    let dir = fresh_dir("docs_programs");
+    let mut count = 0;
+    for page in &pages {
+        let text = std::fs::read_to_string(page).expect("a docs page");
+        let blocks = text
+            .split("```c\n")
+            .skip(1)
+            .filter_map(|b| b.split("```").next())
+            .filter(|b| b.contains("int main("));
+        for block in blocks {
+            count += 1;
+            let name = format!("docs_program_{count}");
+            let source = dir.join(format!("{name}.c"));
+            std::fs::write(&source, block).expect("example written");
+            let mut flags = vec!["-std=c99"];
+            flags.extend(STRICT);
+            let source = source.to_str().expect("UTF-8 path").to_string();
+            let exe = build(&name, false, &[source.as_str()], &flags, &[]);
+            let out = Command::new(&exe)
+                .current_dir(&dir)
+                .output()
+                .expect("the example runs");
+            print!("{}", String::from_utf8_lossy(&out.stdout));
+            assert!(
+                out.status.success(),
+                "the C program {count} of {} failed: {}",
+                page.display(),
+                String::from_utf8_lossy(&out.stderr)
+            );
+        }
+    }
+    assert!(count >= 3, "the C programs of docs/: {count}");
+    assert!(
+        dir.join("pipe.step").exists(),
+        "the wire sweep example writes pipe.step"
     );
 }

@@ -64,6 +64,8 @@ fn freecad_reads_our_files_and_builds_exact_part_objects() {
         "cone_spline",
         &["-q", "-o", "cone_spline.dxf", "-o", "cone_spline.svg"],
     );
+    // The wire sweep input: its STEP solid.
+    run_cli(&files, "pipe", &["-q", "-o", "pipe.step"]);
     let work = fresh_dir("freecad_work");
     install_for_freecad(&work);
     let script = root().join("examples/freecad/check_in_freecad.py");

@@ -10,8 +10,8 @@
 //!
 //! Everything goes through the C API, as a C program would call it.
 
-use glam::DVec3;
 use proptest::prelude::*;
+use rmfsurf::glam::DVec3;
 use rmfsurf_capi::cone_spline::*;
 use rmfsurf_capi::curve::{rmf_curve_domain, rmf_curve_eval, rmf_curve_free};
 use rmfsurf_capi::frames::{rmf_frames_eval, rmf_frames_free};

@@ -1,7 +1,14 @@
-//! The C++ kernel example `examples/occ/occ_kernel.cpp`, built against OpenCascade from
-//! Debian (libocct-modeling-algorithms-dev) and run: Geom_BSplineSurface from
-//! rmf_surface_nurbs, BRepCheck validity, points and derivatives against rmf_surface_eval,
-//! GeomLProp_SLProps Gaussian curvature. The example prints its figures and fails on any.
+//! The C++ kernel examples, built against OpenCascade from Debian and run:
+//! * `examples/occ/occ_kernel.cpp`: Geom_BSplineSurface from rmf_surface_nurbs, BRepCheck
+//!   validity, points and derivatives against rmf_surface_eval, GeomLProp_SLProps Gaussian
+//!   curvature;
+//! * `examples/occ/occ_wire.cpp`: wire sweeps (rmf_wire_sweep) written as STEP and read by
+//!   OpenCascade's STEPControl_Reader: one valid Solid (BRepCheck_Analyzer), the volume by
+//!   BRepGProp's adaptive integration against the closed form (≤ 1e-9), the parameter lines
+//!   of the faces, the corners and the seam; beside BRepOffsetAPI_MakePipeShell (corrected
+//!   Frenet and Frenet) on the same wires, measured by the same code.
+//!
+//! The examples print their figures and fail on any of rmfsurf's.
 //!
 //! `cargo test --test opencascade -- --nocapture` shows them.
 
@@ -21,6 +28,41 @@ const TOOLKITS: [&str; 8] = [
     "TKMath",
     "TKernel",
 ];
+
+/// What the wire example links in addition: STEP, the sweep (TKOffset) and what they use.
+const WIRE_TOOLKITS: [&str; 6] = [
+    "TKSTEP",
+    "TKXSBase",
+    "TKOffset",
+    "TKFillet",
+    "TKBool",
+    "TKShHealing",
+];
+
+#[test]
+fn opencascade_reads_the_wire_sweeps_as_valid_solids() {
+    let include = Path::new("/usr/include/opencascade");
+    assert!(
+        include.join("STEPControl_Reader.hxx").exists(),
+        "OpenCascade's STEP headers (libocct-data-exchange-dev) not found: {SETUP_HINT}"
+    );
+    let system = format!("-isystem{}", include.display());
+    let mut flags = vec!["-std=c++17", system.as_str()];
+    flags.extend(STRICT);
+    let libs: Vec<String> = WIRE_TOOLKITS
+        .iter()
+        .chain(&TOOLKITS)
+        .map(|t| format!("-l{t}"))
+        .collect();
+    let exe = build(
+        "occ_wire",
+        true,
+        &["examples/occ/occ_wire.cpp"],
+        &flags,
+        &libs,
+    );
+    run(&exe, false);
+}
 
 #[test]
 fn opencascade_kernel_example_builds_and_checks_the_surfaces() {

@@ -2,16 +2,16 @@
 //! frames by the chosen method, the sweep; or the cone spline, its surface strip and its
 //! development. Failures of the geometry are reported at the input field they come from.
 
-use crate::job::{ConeJob, Developable as Input, Method, Spine, SweepJob};
+use crate::job::{ConeJob, Developable as Input, Method, Spine, SweepJob, WireEdge, WireJob};
 use crate::json::InputError;
 use rmfsurf::glam::DVec3;
 use rmfsurf::metrics::nearest_parameter;
 use rmfsurf::{
     approximate_developable, check_g1, grid_parameters, hermite_sequence, mobius_approximate,
     mobius_hermite_points, ph_frenet_frames, ph_rational_rmf, ph_spline_approximate,
-    ph_spline_hermite, rrmf_spline, sweep, uniform_parameters, ConeSpline, Developable,
-    FlatPattern, ParametricCurve, PiecewiseCurve, PiecewiseSurface, RationalFrames, RmfOptions,
-    Rule, RuledSurface, ShapeMeasure, TangentSurface,
+    ph_spline_hermite, rrmf_spline, sweep, sweep_wire, uniform_parameters, ConeSpline, Developable,
+    Edge, FlatPattern, ParametricCurve, PiecewiseCurve, PiecewiseSurface, RationalFrames,
+    RmfOptions, Rule, RuledSurface, Shape, ShapeMeasure, TangentSurface, WireSweep,
 };
 
 /// Most segments the Möbius and RRMF methods use to reach the tolerance on a NURBS spine
@@ -45,6 +45,7 @@ pub struct ConeOutcome {
 
 pub enum Outcome {
     Sweep(SweepOutcome),
+    Wire(Shape),
     ConeSpline(ConeOutcome),
 }
 
@@ -79,6 +80,94 @@ pub fn run_sweep(job: &SweepJob) -> Result<SweepOutcome, InputError> {
         surface,
         spine_distance,
     })
+}
+
+/// The wire sweep: the shape, or the failure at the field its message names (an edge or
+/// a joint of the wire, the profile, a hole, the corner).
+pub fn run_wire(job: &WireJob) -> Result<Shape, InputError> {
+    let edges = job
+        .edges
+        .iter()
+        .enumerate()
+        .map(|(k, e)| {
+            Ok(match e {
+                WireEdge::Line { from, to } => Edge::Line {
+                    from: *from,
+                    to: *to,
+                },
+                WireEdge::Arc {
+                    start,
+                    through,
+                    end,
+                } => Edge::Arc {
+                    start: *start,
+                    through: *through,
+                    end: *end,
+                },
+                WireEdge::Nurbs(n) => Edge::Curve(n.to_piecewise().map_err(|e| InputError {
+                    path: format!("sweep.spine.wire[{k}].nurbs"),
+                    message: e.to_string(),
+                })?),
+            })
+        })
+        .collect::<Result<Vec<_>, InputError>>()?;
+    let curve = |n: &rmfsurf::NurbsCurve, path: String| {
+        n.to_piecewise().map_err(|e| InputError {
+            path,
+            message: e.to_string(),
+        })
+    };
+    let profile = curve(&job.profile, "sweep.profile".into())?;
+    let holes = job
+        .holes
+        .iter()
+        .enumerate()
+        .map(|(k, h)| curve(h, format!("sweep.profile.holes[{k}]")))
+        .collect::<Result<Vec<_>, _>>()?;
+    let options = WireSweep {
+        tolerance: job.tolerance,
+        join_tolerance: job.join_tolerance,
+        corner: job.corner,
+        initial_normal: job.initial_normal,
+        twist: job.twist,
+        closure_symmetry: job.closure_symmetry,
+        solid: job.solid,
+    };
+    sweep_wire(&edges, &profile, &holes, &options).map_err(|e| InputError {
+        path: wire_blame(&e.message()),
+        message: e.to_string(),
+    })
+}
+
+/// The input field a wire sweep's message is about.
+fn wire_blame(message: &str) -> String {
+    let number_after = |prefix: &str| {
+        message.find(prefix).and_then(|k| {
+            message[k + prefix.len()..]
+                .split(|c: char| !c.is_ascii_digit())
+                .next()
+                .and_then(|n| n.parse::<usize>().ok())
+        })
+    };
+    if let Some(k) = number_after("holes[") {
+        return format!("sweep.profile.holes[{k}]");
+    }
+    if message.starts_with("profile") {
+        return "sweep.profile".into();
+    }
+    if message.contains("corner radius") || message.contains("miter corner") {
+        return "sweep.corner".into();
+    }
+    if let Some(k) = number_after(" and ").filter(|_| message.contains("edges ")) {
+        return format!("sweep.spine.wire[{k}]");
+    }
+    if let Some(k) = number_after("edge ") {
+        return format!("sweep.spine.wire[{k}]");
+    }
+    if message.contains("closure_symmetry") {
+        return "sweep.closure_symmetry".into();
+    }
+    "sweep".into()
 }
 
 /// Frames fail on the initial normal when it is tangent to the spine at the start.

@@ -72,9 +72,41 @@ pub struct ConeJob {
     pub t_max: f64,
 }
 
+/// One edge of a wire spine.
+#[derive(Clone, Debug)]
+pub enum WireEdge {
+    Line {
+        from: DVec3,
+        to: DVec3,
+    },
+    Arc {
+        start: DVec3,
+        through: DVec3,
+        end: DVec3,
+    },
+    Nurbs(NurbsCurve),
+}
+
+/// A sweep along a wire of lines, arcs and NURBS edges (`"spine": {"wire": [...]}`).
+#[derive(Clone, Debug)]
+pub struct WireJob {
+    pub edges: Vec<WireEdge>,
+    pub corner: rmfsurf::Corner,
+    pub tolerance: f64,
+    pub join_tolerance: f64,
+    pub initial_normal: Option<DVec3>,
+    pub twist: f64,
+    pub closure_symmetry: u32,
+    /// In the normal plane: x along f₂, y along f₃.
+    pub profile: NurbsCurve,
+    pub holes: Vec<NurbsCurve>,
+    pub solid: bool,
+}
+
 #[derive(Clone, Debug)]
 pub enum Construction {
     Sweep(SweepJob),
+    Wire(WireJob),
     ConeSpline(ConeJob),
 }
 
@@ -101,6 +133,7 @@ impl Job {
         root.only(&["sweep", "cone_spline", "mesh"])?;
         let (kind, body) = root.variant_of(&["sweep", "cone_spline"], &["mesh"])?;
         let construction = match kind {
+            "sweep" if is_wire(&body)? => Construction::Wire(read_wire(&body)?),
             "sweep" => Construction::Sweep(read_sweep(&body)?),
             _ => Construction::ConeSpline(read_cone(&body)?),
         };
@@ -163,6 +196,123 @@ fn read_sweep(sweep: &Field) -> InputResult<SweepJob> {
         profile,
         profile_is_line,
     })
+}
+
+/// Whether a sweep's spine is a wire (`{"wire": [...]}`).
+fn is_wire(sweep: &Field) -> InputResult<bool> {
+    match sweep.optional("spine")? {
+        Some(spine) => Ok(spine.optional("wire").ok().flatten().is_some()),
+        None => Ok(false),
+    }
+}
+
+fn read_wire(sweep: &Field) -> InputResult<WireJob> {
+    sweep.only(&[
+        "spine",
+        "corner",
+        "tolerance",
+        "join_tolerance",
+        "initial_normal",
+        "twist",
+        "closure_symmetry",
+        "profile",
+        "solid",
+    ])?;
+    let spine = sweep.required("spine")?;
+    spine.only(&["wire"])?;
+    let edges = spine
+        .required("wire")?
+        .array()?
+        .iter()
+        .map(read_wire_edge)
+        .collect::<InputResult<Vec<_>>>()?;
+    if edges.is_empty() {
+        return spine.required("wire")?.error("needs at least one edge");
+    }
+    let profile_field = sweep.required("profile")?;
+    let (kind, body) =
+        profile_field.variant_of(&["circle", "line", "polygon", "nurbs"], &["holes"])?;
+    let (profile, _) = profile_curve(kind, &body)?;
+    let holes = match profile_field.optional("holes")? {
+        Some(list) => list
+            .array()?
+            .iter()
+            .map(|hole| {
+                let (kind, body) = hole.variant(&["circle", "polygon", "nurbs"])?;
+                profile_curve(kind, &body).map(|(c, _)| c)
+            })
+            .collect::<InputResult<Vec<_>>>()?,
+        None => Vec::new(),
+    };
+    let defaults = rmfsurf::WireSweep::default();
+    Ok(WireJob {
+        edges,
+        corner: match sweep.optional("corner")? {
+            Some(f) => read_corner(&f)?,
+            None => defaults.corner,
+        },
+        tolerance: read_tolerance(sweep)?,
+        join_tolerance: sweep
+            .optional("join_tolerance")?
+            .map_or(Ok(defaults.join_tolerance), |f| f.positive())?,
+        initial_normal: sweep
+            .optional("initial_normal")?
+            .map(|f| f.vec3())
+            .transpose()?,
+        twist: sweep.optional("twist")?.map_or(Ok(0.0), |f| f.number())?,
+        closure_symmetry: sweep
+            .optional("closure_symmetry")?
+            .map_or(Ok(0), |f| f.count(0, 1 << 16).map(|k| k as u32))?,
+        profile,
+        holes,
+        solid: match sweep.optional("solid")? {
+            Some(f) => f.boolean()?,
+            None => defaults.solid,
+        },
+    })
+}
+
+/// `{"line": {"from", "to"}}`, `{"arc": {"start", "through", "end"}}` or `{"nurbs": {...}}`.
+fn read_wire_edge(edge: &Field) -> InputResult<WireEdge> {
+    let (kind, body) = edge.variant(&["line", "arc", "nurbs"])?;
+    let point = |key: &str| body.required(key)?.vec3();
+    Ok(match kind {
+        "line" => {
+            body.only(&["from", "to"])?;
+            WireEdge::Line {
+                from: point("from")?,
+                to: point("to")?,
+            }
+        }
+        "arc" => {
+            body.only(&["start", "through", "end"])?;
+            WireEdge::Arc {
+                start: point("start")?,
+                through: point("through")?,
+                end: point("end")?,
+            }
+        }
+        _ => WireEdge::Nurbs(read_nurbs_curve(&body, false)?),
+    })
+}
+
+/// `{"round": {"radius": r}}` (or `{"round": {}}`, `"round"`: the default radius) or `"miter"`.
+fn read_corner(corner: &Field) -> InputResult<rmfsurf::Corner> {
+    use rmfsurf::Corner;
+    if let Ok(name) = corner.string() {
+        return match name {
+            "round" => Ok(Corner::Round(None)),
+            "miter" => Ok(Corner::Miter),
+            other => corner.error(format!(
+                "unknown corner \"{other}\"; expected round or miter"
+            )),
+        };
+    }
+    let (_, body) = corner.variant(&["round"])?;
+    body.only(&["radius"])?;
+    Ok(Corner::Round(
+        body.optional("radius")?.map(|f| f.positive()).transpose()?,
+    ))
 }
 
 fn read_tolerance(parent: &Field) -> InputResult<f64> {
@@ -254,6 +404,12 @@ fn read_nurbs_surface(nurbs: &Field) -> InputResult<NurbsSurface> {
 /// The profile and whether it is one straight segment.
 fn read_profile(profile: &Field) -> InputResult<(NurbsCurve, bool)> {
     let (kind, body) = profile.variant(&["circle", "line", "polygon", "nurbs"])?;
+    profile_curve(kind, &body)
+}
+
+/// The profile curve of a `{"circle" | "line" | "polygon" | "nurbs": body}` and whether it
+/// is one straight segment.
+fn profile_curve(kind: &str, body: &Field) -> InputResult<(NurbsCurve, bool)> {
     let curve = match kind {
         "circle" => {
             body.only(&["radius", "center"])?;
@@ -283,7 +439,7 @@ fn read_profile(profile: &Field) -> InputResult<(NurbsCurve, bool)> {
             corners.push(corners[0]);
             polyline(&corners)
         }
-        _ => return Ok((read_nurbs_curve(&body, true)?, false)),
+        _ => return Ok((read_nurbs_curve(body, true)?, false)),
     };
     let curve = curve.or_else(|e| body.error(e.message()))?;
     Ok((curve, kind == "line"))

@@ -154,6 +154,13 @@ impl<'a> Field<'a> {
         }
     }
 
+    pub fn boolean(&self) -> InputResult<bool> {
+        match self.value {
+            Value::Bool(b) => Ok(*b),
+            other => self.error(format!("must be true or false, got {}", kind(other))),
+        }
+    }
+
     pub fn number(&self) -> InputResult<f64> {
         match self.value.as_f64() {
             Some(x) if x.is_finite() => Ok(x),

@@ -19,7 +19,7 @@ mod output;
 mod summary;
 
 use args::{Command, Run};
-use construct::{run_cone_spline, run_sweep, Outcome};
+use construct::{run_cone_spline, run_sweep, run_wire, Outcome};
 use job::{Construction, Job};
 use json::Document;
 use std::io::Read;
@@ -77,7 +77,7 @@ fn execute(run: &Run) -> Result<(), String> {
     };
     let document = Document::parse(&read_input(&run.input)?, source).map_err(|e| e.to_string())?;
     let job = Job::read(&document.root()).map_err(|e| e.to_string())?;
-    if let Construction::Sweep(_) = job.construction {
+    if let Construction::Sweep(_) | Construction::Wire(_) = job.construction {
         if let Some((path, _)) = run.outputs.iter().find(|(_, f)| f.is_pattern()) {
             return Err(format!(
                 "--output {}: flat patterns (.svg, .dxf) are made of developments: give a cone_spline",
@@ -87,6 +87,7 @@ fn execute(run: &Run) -> Result<(), String> {
     }
     let outcome = match &job.construction {
         Construction::Sweep(sweep) => Outcome::Sweep(run_sweep(sweep).map_err(|e| e.to_string())?),
+        Construction::Wire(wire) => Outcome::Wire(run_wire(wire).map_err(|e| e.to_string())?),
         Construction::ConeSpline(cone) => {
             Outcome::ConeSpline(run_cone_spline(cone).map_err(|e| e.to_string())?)
         }

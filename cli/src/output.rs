@@ -60,6 +60,24 @@ fn surface_of(outcome: &Outcome) -> &PiecewiseSurface {
     match outcome {
         Outcome::Sweep(o) => &o.surface,
         Outcome::ConeSpline(o) => &o.surface,
+        Outcome::Wire(_) => unreachable!("wire sweeps are rendered by render_wire"),
+    }
+}
+
+/// The files of a wire sweep: its STEP solid (or sheet) and the summary.
+fn render_wire(
+    name: &str,
+    format: Format,
+    shape: &rmfsurf::Shape,
+    summary: &Summary,
+) -> rmfsurf::Result<String> {
+    match format {
+        Format::Step => shape.to_step(name),
+        Format::Json => Ok(json_text(summary)),
+        _ => Err(rmfsurf::Error::invalid_input(
+            "a wire sweep is written as a STEP solid (.step, .stp) and its summary (.json); \
+             meshes and flat patterns are not available for it",
+        )),
     }
 }
 
@@ -72,6 +90,9 @@ pub fn render(
     mesh: &MeshOptions,
 ) -> rmfsurf::Result<String> {
     let name = title(path);
+    if let Outcome::Wire(shape) = outcome {
+        return render_wire(&name, format, shape, summary);
+    }
     let surface = surface_of(outcome);
     let (u, v) = (mesh.u_steps, mesh.v_steps);
     Ok(match format {
@@ -113,7 +134,7 @@ pub fn render(
                         .map(|t| (o.spine.eval(t), o.frames.frame(t)))
                         .collect::<Vec<_>>(),
                 ),
-                Outcome::ConeSpline(_) => None,
+                Outcome::ConeSpline(_) | Outcome::Wire(_) => None,
             };
             openscad::solid_to_scad(&name, &solid, placements.as_deref())
         }
@@ -136,6 +157,11 @@ pub fn render(
 pub fn render_curves(path: &Path, outcome: &Outcome) -> rmfsurf::Result<String> {
     let curves = match outcome {
         Outcome::Sweep(o) => vec![NurbsCurve::from_piecewise(&o.spine)?],
+        Outcome::Wire(shape) => shape
+            .spine()
+            .iter()
+            .map(NurbsCurve::from_piecewise)
+            .collect::<rmfsurf::Result<Vec<_>>>()?,
         Outcome::ConeSpline(o) => vec![
             NurbsCurve::from_piecewise(&o.spline.boundary(o.t_min)?)?,
             NurbsCurve::from_piecewise(&o.spline.boundary(o.t_max)?)?,

@@ -45,6 +45,7 @@ impl Summary {
                 sweep_figures(j.method, j.profile_is_line, o)?
             }
             (_, Outcome::ConeSpline(o)) => cone_figures(o)?,
+            (Construction::Wire(j), Outcome::Wire(shape)) => wire_figures(j.edges.len(), shape),
             _ => unreachable!("the outcome matches the job"),
         };
         Ok(Self { figures })
@@ -165,6 +166,45 @@ fn sweep_figures(method: Method, line: bool, o: &SweepOutcome) -> rmfsurf::Resul
         ));
     }
     Ok(figures)
+}
+
+fn wire_figures(edges: usize, shape: &rmfsurf::Shape) -> Vec<Figure> {
+    let r = shape.report();
+    let caps = shape
+        .faces()
+        .iter()
+        .filter(|f| f.kind == rmfsurf::FaceKind::Plane)
+        .count();
+    let mut figures = vec![
+        figure(
+            "method",
+            "method",
+            "wire sweep: lines and arcs exact, curves by PH cubic splines with rational RMFs (Mäurer & Jüttler)",
+        ),
+        figure("edges", "wire edges", edges),
+        figure("spine_pieces", "spine pieces (lines, arcs, elbows, PH splines)", shape.spine().len()),
+        figure(
+            "faces",
+            "faces",
+            format!("{} ({} lateral, {caps} planar caps)", r.face_count, r.face_count - caps),
+        ),
+        figure("solid", "closed solid", shape.is_solid()),
+        figure("spine_distance", "spine: max distance of PH splines from curve edges", r.spine_distance),
+        figure("rmf_angle_error", "frames: max angle to the exact RMF (rad)", r.rmf_angle_error),
+        figure("orthogonality", "surface: max |cos| between parameter lines", r.max_parameter_cosine),
+        figure("singularity_margin", "least singularity margin (Cor. 7)", r.singularity_margin),
+        figure("corner_turn", "frames: max turn about the tangent across corners (rad)", r.corner_turn),
+        figure("seam_gap", "closed wire: seam gap", r.seam_gap),
+        figure("joint_gap", "largest gap between sections at joints", r.joint_gap),
+    ];
+    if let Some(v) = shape.volume() {
+        figures.push(figure(
+            "volume",
+            "volume (divergence theorem, Gauss–Legendre)",
+            v,
+        ));
+    }
+    figures
 }
 
 fn max_parameter_line_cosine(surface: &PiecewiseSurface) -> f64 {

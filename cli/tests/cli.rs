@@ -306,3 +306,149 @@ fn docs_json_example_runs() {
     );
     assert_eq!(files_in(&dir), ["moulding.scad", "moulding.step"]);
 }
+
+/// The issue's input (examples/cli/pipe.json): `rmfsurf pipe.json -o pipe.step` writes the
+/// solid, with round corners and with miters; the summary gives its figures.
+#[test]
+fn wire_sweeps_write_step_solids() {
+    let dir = scratch("wire");
+    let pipe = examples().join("pipe.json");
+    let out = tool(
+        &dir,
+        &[
+            pipe.to_str().unwrap(),
+            "-o",
+            "pipe.step",
+            "-o",
+            "pipe.json",
+            "--curves",
+            "spine.step",
+        ],
+        None,
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let summary = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        summary.contains("closed solid") && summary.contains("true"),
+        "{summary}"
+    );
+    let step = std::fs::read_to_string(dir.join("pipe.step")).unwrap();
+    assert!(step.contains("MANIFOLD_SOLID_BREP") && step.contains("CLOSED_SHELL"));
+    let figures: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("pipe.json")).unwrap()).unwrap();
+    let f = &figures["figures"];
+    assert!(f["spine_distance"].as_f64().unwrap() <= 1e-4);
+    assert!(f["joint_gap"].as_f64().unwrap() <= 1e-9);
+    assert!(f["orthogonality"].as_f64().unwrap() <= 1e-6);
+    let volume = f["volume"].as_f64().unwrap();
+    assert!(volume > 40.0 && volume < 60.0, "{volume}");
+    let spine = std::fs::read_to_string(dir.join("spine.step")).unwrap();
+    assert!(spine.contains("GEOMETRIC_CURVE_SET"));
+    let json = std::fs::read_to_string(&pipe).unwrap();
+    let miter = json.replace(r#"{"round": {"radius": 2}}"#, r#""miter""#);
+    assert_ne!(miter, json);
+    let out = tool(&dir, &["-", "-o", "miter.step"], Some(&miter));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    // Sheets of open profiles; a mesh of a wire sweep is refused, and nothing is written.
+    let sheet = json.replace(
+        r#"{"circle": {"radius": 1}, "holes": [{"circle": {"radius": 0.8}}]}"#,
+        r#"{"line": {"from": [-1, 0], "to": [1, 0]}}"#,
+    );
+    let out = tool(
+        &dir,
+        &["-", "-o", "sheet.step"],
+        Some(&sheet.replace("\"solid\": true", "\"solid\": false")),
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(std::fs::read_to_string(dir.join("sheet.step"))
+        .unwrap()
+        .contains("OPEN_SHELL"));
+    let out = tool(&dir, &["-", "-o", "mesh.obj"], Some(&json));
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("STEP solid"));
+    assert!(!dir.join("mesh.obj").exists());
+}
+
+/// As `fails_with`, for a wire sweep written as STEP.
+fn wire_fails_with(name: &str, json: &str, expected: &[&str]) {
+    let dir = scratch(name);
+    let out = tool(&dir, &["-", "-o", "out.step"], Some(json));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{name}: {stderr}");
+    for e in expected {
+        assert!(stderr.contains(e), "{name}: {stderr:?} should say {e:?}");
+    }
+    assert!(
+        files_in(&dir).is_empty(),
+        "{name}: wrote {:?}",
+        files_in(&dir)
+    );
+}
+
+#[test]
+fn bad_wires_are_reported_at_the_field() {
+    let json = std::fs::read_to_string(examples().join("pipe.json")).unwrap();
+    wire_fails_with(
+        "wire_gap",
+        &json.replace(
+            "[15, 5, 0], \"to\": [15, 15, 0]",
+            "[15, 5.5, 0], \"to\": [15, 15, 0]",
+        ),
+        &[
+            "sweep.spine.wire[2]",
+            "edges 1 and 2 do not meet",
+            "5.000e-1 apart",
+        ],
+    );
+    wire_fails_with(
+        "wire_corner",
+        &json.replace(r#"{"round": {"radius": 2}}"#, r#""square""#),
+        &["sweep.corner: unknown corner \"square\""],
+    );
+    wire_fails_with(
+        "wire_radius",
+        &json.replace(r#"{"radius": 2}"#, r#"{"radius": 200}"#),
+        &["sweep.corner", "does not fit"],
+    );
+    wire_fails_with(
+        "wire_open_profile",
+        &json.replace(
+            r#"{"circle": {"radius": 1}, "holes": [{"circle": {"radius": 0.8}}]}"#,
+            r#"{"line": {"from": [-1, 0], "to": [1, 0]}}"#,
+        ),
+        &["sweep.profile", "a solid needs a closed profile"],
+    );
+    wire_fails_with(
+        "wire_hole",
+        &json.replace(r#"{"radius": 0.8}"#, r#"{"radius": 1.5}"#),
+        &["sweep.profile.holes[0]", "lies outside the profile"],
+    );
+    wire_fails_with(
+        "wire_fold",
+        &json.replace(
+            r#""circle": {"radius": 1}, "holes": [{"circle": {"radius": 0.8}}]"#,
+            r#""circle": {"radius": 6}"#,
+        ),
+        &["sweep", "would fold"],
+    );
+    wire_fails_with(
+        "wire_edge",
+        &json.replace(
+            "{\"line\": {\"from\": [0, 0, 0]",
+            "{\"spline\": {\"from\": [0, 0, 0]",
+        ),
+        &["sweep.spine.wire[0].spline: unknown field; expected one of line, arc, nurbs"],
+    );
+}

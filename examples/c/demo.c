@@ -16,7 +16,10 @@
  *   5. profile surfaces along PH cubic splines: a moulding along a conical helix with the
  *      rational RMF and with the Frenet frame, and a square tube along a closed trefoil;
  *   6. a curve with an exact rational RMF by Möbius transformations of planar PH cubics
- *      (Bartoň, Jüttler & Wang), and the developable strip x + v f2 swept along it.
+ *      (Bartoň, Jüttler & Wang), and the developable strip x + v f2 swept along it;
+ *   7. wire sweeps: a pipe route of lines, a tangent arc and a NURBS edge swept as a hollow
+ *      pipe, and a square duct along a polyline with mitred corners: closed solids written
+ *      as STEP (open them in FreeCAD), one face of each as a mesh.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -545,6 +548,88 @@ static void demo_mobius(void) {
     rmf_curve_free(curve);
 }
 
+/* ---- 7. a pipe route: a wire of lines, arcs and a NURBS, swept into STEP solids ---- */
+
+static RmfVec3 vec(double x, double y, double z) {
+    RmfVec3 v;
+    v.x = x, v.y = y, v.z = z;
+    return v;
+}
+
+static RmfCurve *circle_profile(double r) {
+    const double s = 0.70710678118654752440;
+    const RmfVec3 p[9] = {{r, 0, 0},   {r, r, 0},   {0, r, 0},  {-r, r, 0}, {-r, 0, 0},
+                          {-r, -r, 0}, {0, -r, 0}, {r, -r, 0}, {r, 0, 0}};
+    const double w[9] = {1, s, 1, s, 1, s, 1, s, 1}, k[12] = {0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 4};
+    RmfCurve *c = NULL;
+    TRY(rmf_nurbs_curve_create(2, p, w, 9, k, 12, &c));
+    return c;
+}
+
+static void write_shape(const RmfShape *shape, const char *name, const char *what) {
+    char path[512];
+    RmfSweepReport r;
+    size_t f;
+    snprintf(path, sizeof path, "%s/%s.step", out_dir, name);
+    TRY(rmf_shape_write_step(shape, path));
+    written(path, what);
+    TRY(rmf_shape_report(shape, &r));
+    printf("  %zu faces, %s; PH splines within %.1e of the NURBS edge, frames within %.1e rad of the RMF, max |cos| "
+           "between parameter lines %.1e, least singularity margin %.2f\n",
+           r.face_count, rmf_shape_is_solid(shape) ? "a closed solid" : "a sheet", r.spine_distance, r.rmf_angle_error,
+           r.max_parameter_cosine, r.singularity_margin);
+    for (f = 0; f < rmf_shape_face_count(shape); f++) { /* the first lateral face as a mesh */
+        RmfShapeFace face;
+        TRY(rmf_shape_face(shape, f, &face));
+        if (face.kind == RMF_FACE_SWEPT) {
+            char mesh[256];
+            snprintf(mesh, sizeof mesh, "%s_face%zu", name, f);
+            write_tessellation(face.surface, 8, 8, mesh, "one lateral face (exact rational surface)");
+            break;
+        }
+    }
+}
+
+static void demo_pipe_route(void) {
+    const double s = 0.70710678118654752440;
+    const RmfVec3 poles[4] = {{15, 10, 0}, {15, 15, 0}, {20, 20, 5}, {25, 20, 5}};
+    const RmfVec3 square[5] = {{0.7, 0.7, 0}, {-0.7, 0.7, 0}, {-0.7, -0.7, 0}, {0.7, -0.7, 0}, {0.7, 0.7, 0}};
+    const double knots[8] = {0, 0, 0, 0, 1, 1, 1, 1}, square_knots[7] = {0, 0, 1, 2, 3, 4, 4};
+    RmfCurve *nurbs = NULL, *outer = circle_profile(1.0), *inner = circle_profile(0.8), *duct = NULL;
+    const RmfCurve *holes[1];
+    RmfEdge edges[5];
+    RmfWireSweepOptions options;
+    RmfShape *pipe = NULL, *mitred = NULL;
+
+    printf("7. wire sweeps into STEP solids: a pipe route (line, tangent arc, line, NURBS), a mitred duct\n");
+    TRY(rmf_nurbs_curve_create(3, poles, NULL, 4, knots, 8, &nurbs));
+    TRY(rmf_nurbs_curve_create(1, square, NULL, 5, square_knots, 7, &duct));
+    memset(edges, 0, sizeof edges);
+    edges[0].kind = RMF_EDGE_LINE, edges[0].points[0] = vec(0, 0, 0), edges[0].points[1] = vec(10, 0, 0);
+    edges[1].kind = RMF_EDGE_ARC, edges[1].points[0] = vec(10, 0, 0);
+    edges[1].points[1] = vec(10 + 5 * s, 5 - 5 * s, 0), edges[1].points[2] = vec(15, 5, 0);
+    edges[2].kind = RMF_EDGE_LINE, edges[2].points[0] = vec(15, 5, 0), edges[2].points[1] = vec(15, 10, 0);
+    edges[3].kind = RMF_EDGE_CURVE, edges[3].curve = nurbs;
+    holes[0] = inner;
+    TRY(rmf_wire_sweep_options_init(&options));
+    options.corner_radius = 2;
+    TRY(rmf_wire_sweep(edges, 4, outer, holes, 1, &options, &pipe));
+    write_shape(pipe, "pipe_route_hollow", "hollow pipe, circle r = 1 with a hole r = 0.8 (STEP solid)");
+    /* A duct with a sharp corner: a polyline, mitred. */
+    edges[0].points[1] = vec(10, 0, 0);
+    edges[1].kind = RMF_EDGE_LINE, edges[1].points[0] = vec(10, 0, 0), edges[1].points[1] = vec(10, 10, 0);
+    edges[2].kind = RMF_EDGE_LINE, edges[2].points[0] = vec(10, 10, 0), edges[2].points[1] = vec(10, 10, 8);
+    options.corner = RMF_CORNER_MITER;
+    TRY(rmf_wire_sweep(edges, 3, duct, NULL, 0, &options, &mitred));
+    write_shape(mitred, "duct_mitred", "square duct with two mitred corners (STEP solid)");
+    rmf_shape_free(mitred);
+    rmf_shape_free(pipe);
+    rmf_curve_free(duct);
+    rmf_curve_free(inner);
+    rmf_curve_free(outer);
+    rmf_curve_free(nurbs);
+}
+
 int main(int argc, char **argv) {
     if (argc > 1) out_dir = argv[1];
     if (mkdir(out_dir, 0777) != 0 && errno != EEXIST) {
@@ -558,5 +643,6 @@ int main(int argc, char **argv) {
     demo_cone_spline();
     demo_profile_surfaces();
     demo_mobius();
+    demo_pipe_route();
     return 0;
 }

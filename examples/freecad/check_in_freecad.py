@@ -17,12 +17,18 @@ What is checked, each figure printed with its limit:
      spatial boundary curves (measured by FreeCAD on the tool's curve STEP); and the SVG
      drawing of the same pattern;
   E. FreeCAD's mesh reader reads the tool's OBJ as the library's tessellation;
-  F. both macros, with a selection as the GUI would give it.
+  F. both macros, with a selection as the GUI would give it;
+  G. wire sweeps: a Part.Wire of lines, arcs and a NURBS edge, polylines with round and miter
+     corners, a closed wire, through the glue (rmf_wire_sweep) into a Part.Solid read from
+     the STEP: valid, FreeCAD's own Shape.Volume against the closed form, the parameter lines
+     of every face by FreeCAD's derivatives; beside FreeCAD's own sweep (makePipeShell) of
+     the same wire; and the tool's pipe.step (examples/cli/pipe.json) as one valid solid.
 freecadcmd exits 0 on an exception, so the script exits 1 itself on any failure, and
 prints FREECAD CHECKS OK last (report lines start with '| ') when everything passed.
 """
 
 import json
+import math
 import os
 import sys
 import traceback

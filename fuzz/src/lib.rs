@@ -21,6 +21,7 @@ pub mod mobius;
 pub mod ph_cubic;
 pub mod rrmf_quintic;
 pub mod session;
+pub mod wire;
 
 use session::Session;
 
@@ -43,6 +44,7 @@ pub const TARGETS: &[(&str, Target)] = &[
     ("mobius", mobius),
     ("rrmf_quintic", rrmf_quintic),
     ("cone_spline", cone_spline),
+    ("wire", wire),
 ];
 
 /// NURBS curves and surfaces, views, evaluation, tessellation, frames, sweeps.
@@ -64,4 +66,10 @@ pub fn rrmf_quintic(input: &[u8]) {
 
 pub fn cone_spline(input: &[u8]) {
     run(input, cone_spline::OPS)
+}
+
+/// Wire sweeps, with the PH splines and NURBS curves they take as edges and profiles.
+pub fn wire(input: &[u8]) {
+    let ops: Vec<fn(&mut Session)> = wire::OPS.iter().chain(ph_cubic::OPS).copied().collect();
+    run(input, &ops)
 }

@@ -10,9 +10,10 @@
 use rmfsurf_capi::cone_spline::{rmf_cone_spline_free, RmfConeSpline};
 use rmfsurf_capi::curve::rmf_curve_free;
 use rmfsurf_capi::frames::rmf_frames_free;
+use rmfsurf_capi::shape::rmf_shape_free;
 use rmfsurf_capi::status::rmf_last_error;
 use rmfsurf_capi::surface::rmf_surface_free;
-use rmfsurf_capi::{RmfCurve, RmfFrames, RmfStatus, RmfSurface, RmfVec3};
+use rmfsurf_capi::{RmfCurve, RmfFrames, RmfShape, RmfStatus, RmfSurface, RmfVec3};
 use std::ffi::CStr;
 use std::mem::{size_of, MaybeUninit};
 
@@ -131,6 +132,7 @@ pub struct Pool {
     pub frames: Vec<*mut RmfFrames>,
     pub surfaces: Vec<*mut RmfSurface>,
     pub splines: Vec<*mut RmfConeSpline>,
+    pub shapes: Vec<*mut RmfShape>,
 }
 
 impl Drop for Pool {
@@ -141,6 +143,7 @@ impl Drop for Pool {
             self.frames.drain(..).for_each(|h| rmf_frames_free(h));
             self.surfaces.drain(..).for_each(|h| rmf_surface_free(h));
             self.splines.drain(..).for_each(|h| rmf_cone_spline_free(h));
+            self.shapes.drain(..).for_each(|h| rmf_shape_free(h));
         }
     }
 }
@@ -202,6 +205,10 @@ impl<'a> Session<'a> {
         pick(&mut self.input, &self.pool.splines)
     }
 
+    pub fn shape(&mut self) -> *const RmfShape {
+        pick(&mut self.input, &self.pool.shapes)
+    }
+
     /// Checks a constructor's status and adopts its handles (curve and/or frames).
     pub fn made(
         &mut self,
@@ -228,6 +235,11 @@ impl<'a> Session<'a> {
     pub fn made_spline(&mut self, function: &str, status: RmfStatus, s: *mut RmfConeSpline) {
         let ok = status_ok(function, status);
         adopt(function, ok, s, &mut self.pool.splines);
+    }
+
+    pub fn made_shape(&mut self, function: &str, status: RmfStatus, s: *mut RmfShape) {
+        let ok = status_ok(function, status);
+        adopt(function, ok, s, &mut self.pool.shapes);
     }
 
     /// Runs operations chosen by the input from `ops` until the input is used up (at most

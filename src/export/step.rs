@@ -7,7 +7,13 @@
 //!   §4.4.12/§4.4.15) bounded by its four boundary curves, in an `OPEN_SHELL` of a
 //!   `SHELL_BASED_SURFACE_MODEL` (`MANIFOLD_SURFACE_SHAPE_REPRESENTATION`);
 //! * curves become rational B-spline curves in a `GEOMETRIC_CURVE_SET`
-//!   (`GEOMETRICALLY_BOUNDED_WIREFRAME_SHAPE_REPRESENTATION`).
+//!   (`GEOMETRICALLY_BOUNDED_WIREFRAME_SHAPE_REPRESENTATION`);
+//! * a B-rep ([`Brep`]: faces on rational B-spline surfaces and planes, sharing their
+//!   edges and vertices, each edge used once in each direction) becomes a
+//!   `MANIFOLD_SOLID_BREP` of a `CLOSED_SHELL` (`ADVANCED_BREP_SHAPE_REPRESENTATION`), or
+//!   an `OPEN_SHELL` for a sheet. Every edge is written once, as a `SURFACE_CURVE` carrying
+//!   its parameter line on each face that uses it (a `SEAM_CURVE` when one face uses it
+//!   twice); on a plane the parameter curve is the 2-D B-spline in the plane's axes.
 //!
 //! The boundary curves are exact: a clamped NURBS surface's boundary is the NURBS curve of
 //! its first/last row or column of poles. Each edge carries its parameter-space line
@@ -150,16 +156,16 @@ fn surface_entity(out: &mut Entities, surface: &NurbsSurface) -> usize {
 }
 
 /// One of the four boundaries of a surface, as the NURBS curve it is.
-struct Boundary {
-    curve: NurbsCurve,
+pub(crate) struct Boundary {
+    pub curve: NurbsCurve,
     /// The line in (u, v) the boundary's parameter t maps to: origin + t · direction.
-    origin: (f64, f64),
-    direction: (f64, f64),
+    pub origin: (f64, f64),
+    pub direction: (f64, f64),
 }
 
 /// The boundaries v = v₀, u = u₁, v = v₁, u = u₀ (counter-clockwise in the parameter plane:
 /// the face's loop traverses the first two forwards, the last two backwards).
-fn boundaries(s: &NurbsSurface) -> [Boundary; 4] {
+pub(crate) fn boundaries(s: &NurbsSurface) -> [Boundary; 4] {
     let (nu, nv) = (s.pole_count_u, s.pole_count_v);
     let (u0, u1) = (s.knots_u[0], s.knots_u[s.knots_u.len() - 1]);
     let (v0, v1) = (s.knots_v[0], s.knots_v[s.knots_v.len() - 1]);
@@ -245,20 +251,11 @@ impl Face<'_> {
 
     /// The boundary's line in the surface's parameter plane.
     fn pcurve(&mut self, side: &Boundary) -> usize {
-        let out = &mut *self.out;
-        let origin = out.point_2d(side.origin.0, side.origin.1);
-        let direction = out.add(format!(
-            "DIRECTION('',({},{}))",
-            real(side.direction.0),
-            real(side.direction.1)
-        ));
-        let vector = out.add(format!("VECTOR('',#{direction},1.)"));
-        let line = out.add(format!("LINE('',#{origin},#{vector})"));
-        let representation = out.add(format!(
-            "DEFINITIONAL_REPRESENTATION('',(#{line}),#{})",
-            self.context_2d
-        ));
-        out.add(format!("PCURVE('',#{},#{representation})", self.surface))
+        let line = PCurve::Line {
+            origin: side.origin,
+            direction: side.direction,
+        };
+        pcurve_entity(self.out, self.surface, self.context_2d, &line)
     }
 
     /// The edge along `side`; with `seam`, the coinciding opposite side, it is a seam
@@ -284,6 +281,43 @@ impl Face<'_> {
         self.out
             .add(format!("EDGE_CURVE('',#{start},#{end},#{on_surface},.T.)"))
     }
+}
+
+/// A curve in a surface's parameter plane (a `PCURVE` with its 2-D geometry).
+fn pcurve_entity(out: &mut Entities, surface: usize, context_2d: usize, pcurve: &PCurve) -> usize {
+    let geometry = match pcurve {
+        PCurve::Line { origin, direction } => {
+            let origin = out.point_2d(origin.0, origin.1);
+            let direction = out.add(format!(
+                "DIRECTION('',({},{}))",
+                real(direction.0),
+                real(direction.1)
+            ));
+            let vector = out.add(format!("VECTOR('',#{direction},1.)"));
+            out.add(format!("LINE('',#{origin},#{vector})"))
+        }
+        PCurve::Curve(curve) => curve_entity_2d(out, curve),
+    };
+    let representation = out.add(format!(
+        "DEFINITIONAL_REPRESENTATION('',(#{geometry}),#{context_2d})"
+    ));
+    out.add(format!("PCURVE('',#{surface},#{representation})"))
+}
+
+/// The complex entity of a rational B-spline curve in a parameter plane (x, y of the poles).
+fn curve_entity_2d(out: &mut Entities, curve: &NurbsCurve) -> usize {
+    let poles: Vec<usize> = curve.poles.iter().map(|p| out.point_2d(p.x, p.y)).collect();
+    let (knots, multiplicities) = knots_and_multiplicities(&curve.knots);
+    out.add(format!(
+        "( BOUNDED_CURVE() B_SPLINE_CURVE({},{},.UNSPECIFIED.,.F.,.F.) \
+         B_SPLINE_CURVE_WITH_KNOTS({},{},.UNSPECIFIED.) CURVE() GEOMETRIC_REPRESENTATION_ITEM() \
+         RATIONAL_B_SPLINE_CURVE({}) REPRESENTATION_ITEM('') )",
+        curve.degree,
+        refs(&poles),
+        multiplicities_list(&multiplicities),
+        reals(&knots),
+        reals(&curve.weights)
+    ))
 }
 
 /// Writes the face: surface, vertices, edges (seams shared) and the loop.
@@ -425,6 +459,224 @@ pub fn surfaces_to_step(surfaces: &[&NurbsSurface], name: &str) -> Result<String
         "MANIFOLD_SURFACE_SHAPE_REPRESENTATION('{}',(#{placement},#{model}),#{context})",
         string(name)
     );
+    represent(&mut out, shape, representation);
+    Ok(exchange_structure(&out, name))
+}
+
+/// A boundary representation to write: faces on surfaces, bounded by loops of shared edges
+/// between shared vertices.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Brep {
+    pub vertices: Vec<DVec3>,
+    pub edges: Vec<BrepEdge>,
+    pub faces: Vec<BrepFace>,
+    /// The faces bound a solid (a closed shell); otherwise a sheet (an open shell).
+    pub closed: bool,
+}
+
+/// An edge: its 3-D curve from the vertex `start` (at the curve's first parameter) to `end`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BrepEdge {
+    pub curve: NurbsCurve,
+    pub start: usize,
+    pub end: usize,
+}
+
+/// An edge's curve in a face's parameter plane, on the edge curve's parameter.
+#[derive(Clone, Debug, PartialEq)]
+pub enum PCurve {
+    /// origin + t · direction.
+    Line {
+        origin: (f64, f64),
+        direction: (f64, f64),
+    },
+    /// A 2-D curve (the x, y of its poles).
+    Curve(NurbsCurve),
+}
+
+/// An edge used by a face's loop, along its curve (`forward`) or against it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BrepUse {
+    pub edge: usize,
+    pub forward: bool,
+    pub pcurve: Option<PCurve>,
+}
+
+/// A loop of a face: counter-clockwise in the face's parameter plane (about its normal)
+/// for the outer bound, clockwise for holes.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BrepBound {
+    pub uses: Vec<BrepUse>,
+    pub outer: bool,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum BrepSurface {
+    Nurbs(NurbsSurface),
+    /// The plane through `origin` with unit `normal`; parameters along `x_axis` and
+    /// `normal × x_axis`.
+    Plane {
+        origin: DVec3,
+        normal: DVec3,
+        x_axis: DVec3,
+    },
+}
+
+/// A face: its surface, whether the face's normal is the surface's (`same_sense`), its
+/// loops.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BrepFace {
+    pub surface: BrepSurface,
+    pub same_sense: bool,
+    pub bounds: Vec<BrepBound>,
+}
+
+fn direction(out: &mut Entities, d: DVec3) -> usize {
+    out.add(format!(
+        "DIRECTION('',({},{},{}))",
+        real(d.x),
+        real(d.y),
+        real(d.z)
+    ))
+}
+
+fn flag(value: bool) -> &'static str {
+    if value {
+        ".T."
+    } else {
+        ".F."
+    }
+}
+
+/// A STEP file holding the B-rep, the product called `name`: a `MANIFOLD_SOLID_BREP` when
+/// it is closed, a shell-based surface model otherwise (module notes).
+pub fn brep_to_step(brep: &Brep, name: &str) -> Result<String> {
+    if brep.faces.is_empty() {
+        return invalid!("a STEP file needs at least one face");
+    }
+    let mut out = Entities { lines: Vec::new() };
+    let (shape, context) = product_and_context(&mut out, name);
+    let origin = out.point(DVec3::ZERO);
+    let z = out.add("DIRECTION('',(0.,0.,1.))");
+    let x = out.add("DIRECTION('',(1.,0.,0.))");
+    let placement = out.add(format!("AXIS2_PLACEMENT_3D('',#{origin},#{z},#{x})"));
+    let context_2d = out.add(
+        "( GEOMETRIC_REPRESENTATION_CONTEXT(2) PARAMETRIC_REPRESENTATION_CONTEXT() \
+         REPRESENTATION_CONTEXT('2D SPACE','') )",
+    );
+    let surfaces: Vec<usize> = brep
+        .faces
+        .iter()
+        .map(|f| match &f.surface {
+            BrepSurface::Nurbs(s) => surface_entity(&mut out, s),
+            BrepSurface::Plane {
+                origin,
+                normal,
+                x_axis,
+            } => {
+                let point = out.point(*origin);
+                let (axis, reference) =
+                    (direction(&mut out, *normal), direction(&mut out, *x_axis));
+                let frame = out.add(format!(
+                    "AXIS2_PLACEMENT_3D('',#{point},#{axis},#{reference})"
+                ));
+                out.add(format!("PLANE('',#{frame})"))
+            }
+        })
+        .collect();
+    let vertices: Vec<usize> = brep
+        .vertices
+        .iter()
+        .map(|&p| {
+            let point = out.point(p);
+            out.add(format!("VERTEX_POINT('',#{point})"))
+        })
+        .collect();
+    // The parameter curves of every edge, by the faces that use it.
+    let mut pcurves: Vec<Vec<(usize, &PCurve)>> = vec![Vec::new(); brep.edges.len()];
+    for (f, face) in brep.faces.iter().enumerate() {
+        for u in face.bounds.iter().flat_map(|b| &b.uses) {
+            let Some(edge) = pcurves.get_mut(u.edge) else {
+                return invalid!("face {f} uses edge {} of {}", u.edge, brep.edges.len());
+            };
+            if let Some(p) = &u.pcurve {
+                edge.push((f, p));
+            }
+        }
+    }
+    let mut edges = Vec::with_capacity(brep.edges.len());
+    for (e, edge) in brep.edges.iter().enumerate() {
+        let (Some(&start), Some(&end)) = (vertices.get(edge.start), vertices.get(edge.end)) else {
+            return invalid!("edge {e} joins vertices that do not exist");
+        };
+        let curve = curve_entity(&mut out, &edge.curve);
+        let on_faces: Vec<usize> = pcurves[e]
+            .iter()
+            .map(|&(f, p)| pcurve_entity(&mut out, surfaces[f], context_2d, p))
+            .collect();
+        let seam = pcurves[e].len() == 2 && pcurves[e][0].0 == pcurves[e][1].0;
+        let geometry = if on_faces.is_empty() {
+            curve
+        } else {
+            let kind = if seam { "SEAM_CURVE" } else { "SURFACE_CURVE" };
+            out.add(format!(
+                "{kind}('',#{curve},{},.PCURVE_S1.)",
+                refs(&on_faces)
+            ))
+        };
+        edges.push(out.add(format!("EDGE_CURVE('',#{start},#{end},#{geometry},.T.)")));
+    }
+    let faces: Vec<usize> = brep
+        .faces
+        .iter()
+        .zip(&surfaces)
+        .map(|(face, &surface)| {
+            let bounds: Vec<usize> = face
+                .bounds
+                .iter()
+                .map(|bound| {
+                    let uses: Vec<usize> = bound
+                        .uses
+                        .iter()
+                        .map(|u| {
+                            out.add(format!(
+                                "ORIENTED_EDGE('',*,*,#{},{})",
+                                edges[u.edge],
+                                flag(u.forward)
+                            ))
+                        })
+                        .collect();
+                    let edge_loop = out.add(format!("EDGE_LOOP('',{})", refs(&uses)));
+                    let kind = if bound.outer {
+                        "FACE_OUTER_BOUND"
+                    } else {
+                        "FACE_BOUND"
+                    };
+                    out.add(format!("{kind}('',#{edge_loop},.T.)"))
+                })
+                .collect();
+            out.add(format!(
+                "ADVANCED_FACE('',{},#{surface},{})",
+                refs(&bounds),
+                flag(face.same_sense)
+            ))
+        })
+        .collect();
+    let representation = if brep.closed {
+        let shell = out.add(format!("CLOSED_SHELL('',{})", refs(&faces)));
+        let solid = out.add(format!("MANIFOLD_SOLID_BREP('',#{shell})"));
+        format!(
+            "ADVANCED_BREP_SHAPE_REPRESENTATION('{}',(#{placement},#{solid}),#{context})",
+            string(name)
+        )
+    } else {
+        let shell = out.add(format!("OPEN_SHELL('',{})", refs(&faces)));
+        let model = out.add(format!("SHELL_BASED_SURFACE_MODEL('',(#{shell}))"));
+        format!(
+            "MANIFOLD_SURFACE_SHAPE_REPRESENTATION('{}',(#{placement},#{model}),#{context})",
+            string(name)
+        )
+    };
     represent(&mut out, shape, representation);
     Ok(exchange_structure(&out, name))
 }

@@ -41,16 +41,6 @@ pub fn reciprocal_length(a: f64, b: f64) -> f64 {
     }
 }
 
-/// b − a, or half of it with `halved = true` when the length itself overflows.
-pub fn length_or_half(a: f64, b: f64) -> (f64, bool) {
-    let length = b - a;
-    if length.is_finite() {
-        (length, false)
-    } else {
-        (0.5 * b - 0.5 * a, true)
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -64,7 +54,6 @@ mod tests {
         assert_eq!(fraction(0.0, a, b), 0.5);
         assert_eq!(fraction(b, a, b), 1.0);
         assert!((reciprocal_length(a, b) - 5e-309).abs() < 1e-320);
-        assert_eq!(length_or_half(a, b), (1e308, true));
         assert_eq!(fraction(5e-324, 0.0, 5e-324), 1.0);
         assert!(reciprocal_length(0.0, 5e-324).is_infinite());
         assert_eq!(lerp(1.0, 3.0, 0.25), 1.5);

@@ -18,7 +18,7 @@ mod vector;
 pub use binomial::{binomial, binomial_row, reciprocal_binomial_row};
 pub use complex::Complex;
 pub use double_double::{DoubleDouble, DoubleDoubleVec3};
-pub use interval::{fraction, length_or_half, lerp, reciprocal_length};
+pub use interval::{fraction, lerp, reciprocal_length};
 pub use linear::solve_refined;
 pub use minimize::minimize_bracketed;
 pub use quadrature::GaussLegendre;

@@ -138,12 +138,6 @@ impl PencilSphere {
     }
 }
 
-/// The sphere through p₀ and p₁ touching t₀ and t₁, or `None` for planar data (and for
-/// nearly planar data whose centre is beyond the range of f64).
-pub fn segment_sphere(h: &HermiteSegment) -> Option<(DVec3, f64)> {
-    PencilSphere::of(h).centre_radius()
-}
-
 /// The map used for a segment: the paper's, unless its planar data are S-shaped or nearly so
 /// (asymmetry above 1/4: the PH cubic degenerates towards a vanishing leg), in which case the
 /// turning map, which is C-shaped and nearly isosceles for any smooth curve sampled finely.

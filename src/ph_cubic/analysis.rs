@@ -27,9 +27,8 @@
 use super::base_frame::BaseFrame;
 use super::exact_rmf::ExactRmf;
 use super::frenet::frenet_numerators;
-use super::profile::{interior_roots, profile_segments, vanishes, ProfileSegment};
+use super::profile::{critical_points, interior_roots, profile_segments, vanishes, ProfileSegment};
 use super::spline::ph_cubics;
-use crate::bezier::bernstein;
 use crate::bezier::{locate, PiecewiseCurve};
 use crate::error::no_solution;
 use crate::error::Num;
@@ -214,19 +213,12 @@ impl<'a> ProfileSurface<'a> {
         }
     }
 
-    /// max ‖c(u)‖: at segment ends or where c·ċ = 0, i.e. X·A + Y·B = 0.
+    /// max ‖c(u)‖.
     fn max_profile_radius(&self) -> f64 {
-        let mut radius = 0.0f64;
-        for (segment, (a, b)) in self.segments.iter().zip(&self.tangents) {
-            let radial = super::profile::sum(
-                &bernstein::product(&segment.x, a, |p, q| p * q),
-                &bernstein::product(&segment.y, b, |p, q| p * q),
-            );
-            for s in critical_points(&radial) {
-                radius = radius.max(segment.jet(s).point.length());
-            }
-        }
-        radius
+        self.segments
+            .iter()
+            .map(ProfileSegment::max_radius)
+            .fold(0.0, f64::max)
     }
 
     /// max κ of the spine, sampled and refined.
@@ -297,16 +289,6 @@ impl<'a> ProfileSurface<'a> {
         }
         lines
     }
-}
-
-/// The roots in (0, 1) of a Bernstein polynomial, with both ends (the candidates for an
-/// extremum of a function whose derivative's numerator it is).
-fn critical_points(p: &[f64]) -> Vec<f64> {
-    let mut points = vec![0.0, 1.0];
-    if p.iter().any(|&c| c != 0.0) {
-        points.extend(interior_roots(p));
-    }
-    points
 }
 
 /// Global parameter of the local parameter s on interval i of `breaks`.

@@ -82,7 +82,7 @@ impl Biquadratic {
         (g, b, dg, db)
     }
 
-    #[cfg(test)]
+    /// W(v).
     pub fn eval(&self, v: f64) -> f64 {
         let (g, b, _, _) = self.parts(v);
         g / b

@@ -68,6 +68,17 @@ impl ProfileSegment {
         (part(&self.x), part(&self.y))
     }
 
+    /// max ‖c‖ on the segment: at its ends or where c·ċ = 0, i.e. X·A + Y·B = 0 with
+    /// (A, B) = h²ċ.
+    pub fn max_radius(&self) -> f64 {
+        let (a, b) = self.scaled_tangent();
+        let radial = sum(&product(&self.x, &a, mul), &product(&self.y, &b, mul));
+        critical_points(&radial)
+            .into_iter()
+            .map(|s| self.jet(s).point.length())
+            .fold(0.0, f64::max)
+    }
+
     /// h³(x'y'' − x''y') = det[[h, X, Y], [h', X', Y'], [h'', X'', Y'']]: the numerator of the
     /// profile curvature (11).
     pub fn curvature_numerator(&self) -> Vec<f64> {
@@ -111,6 +122,16 @@ pub fn difference(a: &[f64], b: &[f64]) -> Vec<f64> {
 /// The segments of a profile curve.
 pub fn profile_segments(profile: &PiecewiseCurve) -> Vec<ProfileSegment> {
     profile.segments().iter().map(ProfileSegment::of).collect()
+}
+
+/// The roots in (0, 1) of a Bernstein polynomial, with both ends (the candidates for an
+/// extremum of a function whose derivative's numerator it is).
+pub fn critical_points(p: &[f64]) -> Vec<f64> {
+    let mut points = vec![0.0, 1.0];
+    if p.iter().any(|&c| c != 0.0) {
+        points.extend(interior_roots(p));
+    }
+    points
 }
 
 /// Whether a Bernstein polynomial vanishes identically, relative to `scale`.

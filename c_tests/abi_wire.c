@@ -1,0 +1,445 @@
+/*
+ * C99 tests of the wire sweep ABI (rmf_wire_sweep, RmfShape): a pipe route of lines and an
+ * arc, polylines with round and miter corners, a closed NURBS; every figure measured from
+ * the exported NURBS views with the suite's own evaluator (nurbs_eval.c): distance of the
+ * faces from the spine, orthogonality of the parameter lines, and the enclosed volume by
+ * the divergence theorem (Gauss–Legendre on every knot span) against the closed forms.
+ * Then the bad inputs of issue 18: each returns its status with a message naming the edge,
+ * joint, loop or option, leaves the out-pointer untouched and writes no file. Runs under
+ * valgrind and AddressSanitizer (no leaks).
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <time.h>
+
+#include "nurbs_eval.h"
+#include "rmf_check.h"
+
+#define vec3(x, y, z) ((RmfVec3){(x), (y), (z)})
+
+static const double PI = 3.14159265358979323846;
+
+/* Gauss–Legendre nodes and weights on [0, 1] (Newton on the Legendre polynomial). */
+#define GAUSS 16
+static double gauss_x[GAUSS], gauss_w[GAUSS];
+static void gauss_init(void) {
+    for (int i = 0; i < GAUSS; ++i) {
+        double x = cos(PI * (i + 0.75) / (GAUSS + 0.5)), dp = 1;
+        for (int it = 0; it < 100; ++it) {
+            double p0 = 1, p1 = x;
+            for (int k = 2; k <= GAUSS; ++k) {
+                double p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
+                p0 = p1;
+                p1 = p2;
+            }
+            dp = GAUSS * (x * p1 - p0) / (x * x - 1);
+            double dx = p1 / dp;
+            x -= dx;
+            if (fabs(dx) < 1e-16) break;
+        }
+        gauss_x[i] = 0.5 * (1 - x);
+        gauss_w[i] = 1.0 / ((1 - x * x) * dp * dp) * 2 * 0.5;
+    }
+}
+
+/* Distinct knots of a clamped knot vector. */
+static size_t breaks_of(const double *knots, size_t count, double *out) {
+    size_t n = 0;
+    for (size_t k = 0; k < count; ++k)
+        if (n == 0 || knots[k] != out[n - 1]) out[n++] = knots[k];
+    return n;
+}
+
+/* ∫∫ S · (S_u × S_v) over a surface, Gauss on every knot span. */
+static double flux(const RmfNurbsSurface *s) {
+    double bu[512], bv[512], total = 0;
+    size_t nu = breaks_of(s->knots_u, s->knot_count_u, bu), nv = breaks_of(s->knots_v, s->knot_count_v, bv);
+    for (size_t a = 0; a + 1 < nu; ++a)
+        for (size_t b = 0; b + 1 < nv; ++b)
+            for (int i = 0; i < GAUSS; ++i)
+                for (int j = 0; j < GAUSS; ++j) {
+                    RmfVec3 d[3][3];
+                    double u = bu[a] + (bu[a + 1] - bu[a]) * gauss_x[i], v = bv[b] + (bv[b + 1] - bv[b]) * gauss_x[j];
+                    ne_surface_derivatives(s, u, v, d);
+                    total += gauss_w[i] * gauss_w[j] * (bu[a + 1] - bu[a]) * (bv[b + 1] - bv[b]) *
+                             ne_dot(d[0][0], ne_cross(d[1][0], d[0][1]));
+                }
+    return total;
+}
+
+/* ½ ∮ ((C − o) × C') · n over a closed curve: the area it bounds in the plane (o, n). */
+static double loop_area(const RmfNurbsCurve *c, RmfVec3 o, RmfVec3 n) {
+    double br[512], total = 0;
+    size_t nb = breaks_of(c->knots, c->knot_count, br);
+    for (size_t a = 0; a + 1 < nb; ++a)
+        for (int i = 0; i < GAUSS; ++i) {
+            RmfVec3 d[3];
+            ne_curve_derivatives(c, br[a] + (br[a + 1] - br[a]) * gauss_x[i], d);
+            total += 0.5 * gauss_w[i] * (br[a + 1] - br[a]) * ne_dot(ne_cross(ne_sub(d[0], o), d[1]), n);
+        }
+    return total;
+}
+
+/* The enclosed volume ⅓ ∮ x · n dA, with the suite's evaluator only. */
+static double volume(const RmfShape *shape) {
+    double total = 0;
+    for (size_t f = 0; f < rmf_shape_face_count(shape); ++f) {
+        RmfShapeFace face;
+        CHECK_STATUS(rmf_shape_face(shape, f, &face), RMF_OK, "");
+        if (face.kind == RMF_FACE_SWEPT) {
+            RmfNurbsSurface view;
+            CHECK_STATUS(rmf_surface_nurbs(face.surface, &view), RMF_OK, "");
+            total += (face.reversed ? -1 : 1) * flux(&view);
+        } else {
+            double area = 0;
+            for (size_t l = 0; l < face.loop_count; ++l) {
+                const RmfCurve *c = NULL;
+                RmfNurbsCurve view;
+                CHECK_STATUS(rmf_shape_face_loop(shape, f, l, &c), RMF_OK, "");
+                CHECK_STATUS(rmf_curve_nurbs(c, &view), RMF_OK, "");
+                area += loop_area(&view, face.plane_origin, face.plane_normal);
+            }
+            total += ne_dot(face.plane_origin, face.plane_normal) * area;
+        }
+    }
+    return total / 3;
+}
+
+static RmfCurve *nurbs(uint32_t degree, const RmfVec3 *poles, const double *weights, size_t n, const double *knots) {
+    RmfCurve *c = NULL;
+    CHECK_STATUS(rmf_nurbs_curve_create(degree, poles, weights, n, knots, n + degree + 1, &c), RMF_OK, "");
+    return c;
+}
+
+/* The circle of radius r about the origin, four rational quarters. */
+static RmfCurve *circle(double r) {
+    const double s = 0.70710678118654752440;
+    const RmfVec3 p[9] = {vec3(r, 0, 0),   vec3(r, r, 0),   vec3(0, r, 0),  vec3(-r, r, 0), vec3(-r, 0, 0),
+                          vec3(-r, -r, 0), vec3(0, -r, 0), vec3(r, -r, 0), vec3(r, 0, 0)};
+    const double w[9] = {1, s, 1, s, 1, s, 1, s, 1};
+    const double k[12] = {0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 4};
+    return nurbs(2, p, w, 9, k);
+}
+
+/* The square of half side a, counter-clockwise. */
+static RmfCurve *square(double a) {
+    const RmfVec3 p[5] = {vec3(a, a, 0), vec3(-a, a, 0), vec3(-a, -a, 0), vec3(a, -a, 0), vec3(a, a, 0)};
+    const double k[7] = {0, 0, 1, 2, 3, 4, 4};
+    return nurbs(1, p, NULL, 5, k);
+}
+
+static RmfEdge line(RmfVec3 a, RmfVec3 b) {
+    RmfEdge e = {RMF_EDGE_LINE, {a, b, vec3(0, 0, 0)}, NULL};
+    return e;
+}
+
+static RmfEdge arc(RmfVec3 a, RmfVec3 m, RmfVec3 b) {
+    RmfEdge e = {RMF_EDGE_ARC, {a, m, b}, NULL};
+    return e;
+}
+
+/* Line (10) – quarter arc of radius 5 – line (10); its length 20 + 2.5π. */
+static void pipe_route(RmfEdge e[3]) {
+    const double s = 0.70710678118654752440;
+    e[0] = line(vec3(0, 0, 0), vec3(10, 0, 0));
+    e[1] = arc(vec3(10, 0, 0), vec3(10 + 5 * s, 5 - 5 * s, 0), vec3(15, 5, 0));
+    e[2] = line(vec3(15, 5, 0), vec3(15, 15, 0));
+}
+
+/* Distance of a point from the pipe route's spine. */
+static double from_spine(RmfVec3 p) {
+    if (p.x <= 10) return hypot(p.y, p.z);
+    if (p.y >= 5) return hypot(p.x - 15, p.z);
+    return hypot(hypot(p.x - 10, p.y - 5) - 5, p.z);
+}
+
+static void test_options(void) {
+    RmfWireSweepOptions o;
+    CHECK_STATUS(rmf_wire_sweep_options_init(&o), RMF_OK, "");
+    CHECK(o.struct_size == sizeof o && o.tolerance == 1e-4 && o.join_tolerance == 1e-7, "defaults");
+    CHECK(o.corner == RMF_CORNER_ROUND && o.corner_radius == 0 && o.solid == 1 && o.closure_symmetry == 0,
+          "round corners, default radius, solids");
+    CHECK_STATUS(rmf_wire_sweep_options_init(NULL), RMF_ERROR_NULL_POINTER, "options");
+}
+
+static void test_pipe_route(void) {
+    RmfEdge e[3];
+    RmfCurve *profile = circle(1), *hole = circle(0.8);
+    RmfShape *shape = NULL, *hollow = NULL;
+    RmfSweepReport report;
+    double worst_radius = 0, worst_cos = 0;
+    pipe_route(e);
+    CHECK_STATUS(rmf_wire_sweep(e, 3, profile, NULL, 0, NULL, &shape), RMF_OK, "");
+    if (!shape) return;
+    CHECK(rmf_shape_is_solid(shape) == 1, "a closed solid");
+    CHECK(rmf_shape_face_count(shape) == 14, "four quarters per edge, two caps");
+    for (size_t f = 0; f < rmf_shape_face_count(shape); ++f) {
+        RmfShapeFace face;
+        RmfNurbsSurface view;
+        CHECK_STATUS(rmf_shape_face(shape, f, &face), RMF_OK, "");
+        if (face.kind != RMF_FACE_SWEPT) {
+            CHECK(face.surface == NULL && face.loop_count == 1, "a cap with one loop");
+            continue;
+        }
+        CHECK(face.spine_edge == f / 4 && face.profile_edge == f % 4 && face.reversed == 0, "faces in order");
+        CHECK_STATUS(rmf_surface_nurbs(face.surface, &view), RMF_OK, "");
+        CHECK(view.degree_v == (face.spine_edge == 1 ? 2u : 1u), "degree 1 along lines, 2 along the arc");
+        for (int i = 0; i <= 8; ++i)
+            for (int j = 0; j <= 8; ++j) {
+                RmfVec3 d[3][3];
+                double u = view.knots_u[0] + (view.knots_u[view.knot_count_u - 1] - view.knots_u[0]) * i / 8;
+                double v = view.knots_v[0] + (view.knots_v[view.knot_count_v - 1] - view.knots_v[0]) * j / 8;
+                ne_surface_derivatives(&view, u, v, d);
+                worst_radius = fmax(worst_radius, fabs(from_spine(d[0][0]) - 1));
+                worst_cos = fmax(worst_cos, ne_parameter_line_cosine(d));
+            }
+    }
+    const double exact = PI * (20 + 2.5 * PI), v = volume(shape);
+    printf("pipe route, circle r = 1: faces at distance 1 from the spine within %.1e, max |cos| %.1e, "
+           "volume %.15f vs pi r^2 L %.15f (relative %.1e)\n",
+           worst_radius, worst_cos, v, exact, fabs(v - exact) / exact);
+    CHECK(worst_radius < 1e-14, "exact cylinders and torus");
+    CHECK(worst_cos <= 1e-12, "orthogonal parameter lines on lines and arcs");
+    CHECK(fabs(v - exact) <= 1e-12 * exact, "volume pi r^2 L");
+    CHECK_STATUS(rmf_shape_report(shape, &report), RMF_OK, "");
+    CHECK(report.spine_distance == 0 && report.rmf_angle_error == 0 && report.face_count == 14, "exact spine");
+    CHECK(report.max_parameter_cosine <= 1e-12 && report.singularity_margin > 0.79, "margin 1 - 1/5");
+    CHECK(report.seam_gap == 0 && report.corner_turn == 0, "no closure, no corners");
+    CHECK(report.joint_gap < 1e-13, "the faces meet at the joints");
+    char path[512];
+    snprintf(path, sizeof path, "%s/abi_wire_%ld.step", getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp",
+             (long)time(NULL) ^ (long)(uintptr_t)&path);
+    CHECK_STATUS(rmf_shape_write_step(shape, path), RMF_OK, "");
+    FILE *file = fopen(path, "r");
+    CHECK(file != NULL, "the STEP file is written");
+    if (file) {
+        char line_text[4096];
+        int solid = 0;
+        while (fgets(line_text, sizeof line_text, file))
+            if (strstr(line_text, "MANIFOLD_SOLID_BREP")) solid = 1;
+        fclose(file);
+        CHECK(solid, "a MANIFOLD_SOLID_BREP");
+    }
+    remove(path);
+    /* With a hole: the annulus. */
+    const RmfCurve *holes[1] = {hole};
+    CHECK_STATUS(rmf_wire_sweep(e, 3, profile, holes, 1, NULL, &hollow), RMF_OK, "");
+    if (hollow) {
+        const double annulus = PI * (1 - 0.64) * (20 + 2.5 * PI), vh = volume(hollow);
+        CHECK(rmf_shape_face_count(hollow) == 26, "inner faces too");
+        CHECK(fabs(vh - annulus) <= 1e-12 * annulus, "hollow pipe volume");
+        for (size_t f = 0; f < rmf_shape_face_count(hollow); ++f) {
+            RmfShapeFace face;
+            CHECK_STATUS(rmf_shape_face(hollow, f, &face), RMF_OK, "");
+            if (face.kind == RMF_FACE_SWEPT)
+                CHECK(face.reversed == (face.profile_loop == 1), "inner faces point into the hole");
+            else
+                CHECK(face.loop_count == 2, "caps with a hole");
+        }
+    }
+    rmf_shape_free(hollow);
+    rmf_shape_free(shape);
+    rmf_curve_free(hole);
+    rmf_curve_free(profile);
+}
+
+/* Three right angles in 3-D, legs of 6; round (radius 1) and miter. */
+static void test_corners(void) {
+    RmfEdge e[4] = {line(vec3(0, 0, 0), vec3(6, 0, 0)), line(vec3(6, 0, 0), vec3(6, 6, 0)),
+                    line(vec3(6, 6, 0), vec3(6, 6, 6)), line(vec3(6, 6, 6), vec3(0, 6, 6))};
+    RmfCurve *profile = square(0.5);
+    RmfWireSweepOptions o;
+    rmf_wire_sweep_options_init(&o);
+    for (int miter = 0; miter <= 1; ++miter) {
+        RmfShape *shape = NULL;
+        RmfSweepReport r;
+        o.corner = miter ? RMF_CORNER_MITER : RMF_CORNER_ROUND;
+        o.corner_radius = 1;
+        CHECK_STATUS(rmf_wire_sweep(e, 4, profile, NULL, 0, &o, &shape), RMF_OK, "");
+        if (!shape) continue;
+        const double length = miter ? 24 : 24 - 3 * (2 - PI / 2), v = volume(shape);
+        CHECK_STATUS(rmf_shape_report(shape, &r), RMF_OK, "");
+        printf("polyline, three 90-degree corners, %s: volume %.15f vs %.15f (relative %.1e), frame turn across "
+               "corners %.1e rad\n",
+               miter ? "miter" : "round", v, length, fabs(v - length) / length, r.corner_turn);
+        CHECK(fabs(v - length) <= 1e-12 * length, "volume of the square tube");
+        CHECK(r.corner_turn <= 1e-12, "no turn about the tangent at corners");
+        CHECK(rmf_shape_face_count(shape) == (miter ? 18u : 30u), "faces per leg (and elbow), two caps");
+        rmf_shape_free(shape);
+    }
+    rmf_curve_free(profile);
+}
+
+/* A closed cubic NURBS (eight uniform spans of a periodic B-spline through a bent loop). */
+static RmfCurve *closed_loop(void) {
+    RmfVec3 c[8], p[25];
+    double k[29];
+    for (int i = 0; i < 8; ++i) {
+        const double a = 2 * PI * i / 8;
+        c[i] = vec3(4 * cos(a), 3 * sin(a), 1.5 * sin(2 * a));
+    }
+    for (int i = 0; i < 8; ++i) {
+        RmfVec3 a = c[i], b = c[(i + 1) % 8], d = c[(i + 2) % 8], e = c[(i + 3) % 8];
+        p[3 * i] = ne_scale(ne_add(ne_add(a, ne_scale(b, 4)), d), 1.0 / 6);
+        p[3 * i + 1] = ne_scale(ne_add(ne_scale(b, 2), d), 1.0 / 3);
+        p[3 * i + 2] = ne_scale(ne_add(b, ne_scale(d, 2)), 1.0 / 3);
+        if (i == 7) p[24] = ne_scale(ne_add(ne_add(b, ne_scale(d, 4)), e), 1.0 / 6);
+    }
+    p[24] = p[0];
+    for (int i = 0; i < 4; ++i) k[i] = 0, k[25 + i] = 8;
+    for (int i = 1; i < 8; ++i) k[3 * i + 1] = k[3 * i + 2] = k[3 * i + 3] = i;
+    return nurbs(3, p, NULL, 25, k);
+}
+
+static void test_closed_nurbs(void) {
+    RmfCurve *loop = closed_loop(), *profile = square(0.3);
+    RmfEdge e = {RMF_EDGE_CURVE, {vec3(0, 0, 0), vec3(0, 0, 0), vec3(0, 0, 0)}, loop};
+    RmfWireSweepOptions o;
+    RmfShape *shape = NULL;
+    RmfSweepReport r;
+    rmf_wire_sweep_options_init(&o);
+    o.tolerance = 1e-5;
+    o.closure_symmetry = 4;
+    CHECK_STATUS(rmf_wire_sweep(&e, 1, profile, NULL, 0, &o, &shape), RMF_OK, "");
+    if (shape) {
+        CHECK_STATUS(rmf_shape_report(shape, &r), RMF_OK, "");
+        printf("closed NURBS, square profile: seam gap %.1e, spine within %.1e of the NURBS, %zu faces\n", r.seam_gap,
+               r.spine_distance, r.face_count);
+        CHECK(rmf_shape_is_solid(shape) && r.face_count == 4, "a closed ring, no caps");
+        CHECK(r.seam_gap <= 1e-12 && r.spine_distance <= 1e-5, "no seam, within the tolerance");
+    }
+    rmf_shape_free(shape);
+    rmf_curve_free(profile);
+    rmf_curve_free(loop);
+}
+
+static RmfShape *sentinel(void) { return (RmfShape *)(uintptr_t)0x5e5e; }
+
+/* A failing call leaves *out untouched. */
+#define REFUSED(call_with_out, status, mention)                                                   \
+    do {                                                                                          \
+        RmfShape *out = sentinel();                                                               \
+        CHECK_STATUS(call_with_out, status, mention);                                             \
+        CHECK(out == sentinel(), "out untouched on failure");                                     \
+    } while (0)
+
+static void test_bad_inputs(void) {
+    RmfEdge e[3], bad[3];
+    RmfCurve *profile = circle(1), *small = circle(0.1), *sq = square(0.5);
+    const double open_knots[5] = {0, 0, 1, 2, 2};
+    const RmfVec3 open_poles[3] = {vec3(0, 0, 0), vec3(1, 0, 0), vec3(1, 1, 0)};
+    RmfCurve *open = nurbs(1, open_poles, NULL, 3, open_knots);
+    const RmfCurve *holes[1] = {small}, *null_hole[1] = {NULL};
+    RmfWireSweepOptions o;
+    pipe_route(e);
+    rmf_wire_sweep_options_init(&o);
+
+    REFUSED(rmf_wire_sweep(NULL, 3, profile, NULL, 0, NULL, &out), RMF_ERROR_NULL_POINTER, "edges");
+    REFUSED(rmf_wire_sweep(e, 0, profile, NULL, 0, NULL, &out), RMF_ERROR_INVALID_INPUT, "edge_count");
+    REFUSED(rmf_wire_sweep(e, 3, NULL, NULL, 0, NULL, &out), RMF_ERROR_NULL_POINTER, "profile");
+    REFUSED(rmf_wire_sweep(e, 3, profile, NULL, 1, NULL, &out), RMF_ERROR_NULL_POINTER, "holes");
+    REFUSED(rmf_wire_sweep(e, 3, profile, null_hole, 1, NULL, &out), RMF_ERROR_INVALID_INPUT, "holes[0]");
+    CHECK_STATUS(rmf_wire_sweep(e, 3, profile, NULL, 0, NULL, NULL), RMF_ERROR_NULL_POINTER, "out");
+
+    memcpy(bad, e, sizeof bad);
+    bad[1].kind = 7;
+    REFUSED(rmf_wire_sweep(bad, 3, profile, NULL, 0, NULL, &out), RMF_ERROR_INVALID_INPUT, "edges[1].kind");
+    memcpy(bad, e, sizeof bad);
+    bad[2].points[1].y = nan_value();
+    REFUSED(rmf_wire_sweep(bad, 3, profile, NULL, 0, NULL, &out), RMF_ERROR_INVALID_INPUT, "edges[2].points[1]");
+    memcpy(bad, e, sizeof bad);
+    bad[1].kind = RMF_EDGE_CURVE;
+    REFUSED(rmf_wire_sweep(bad, 3, profile, NULL, 0, NULL, &out), RMF_ERROR_INVALID_INPUT, "edges[1].curve");
+    /* Disconnected: the third edge starts 0.5 away, the gap in the message. */
+    memcpy(bad, e, sizeof bad);
+    bad[2].points[0].y = 5.5;
+    REFUSED(rmf_wire_sweep(bad, 3, profile, NULL, 0, NULL, &out), RMF_ERROR_INVALID_INPUT,
+            "edges 1 and 2 do not meet: the nearest ends are 5.000e-1 apart");
+    /* Zero length. */
+    memcpy(bad, e, sizeof bad);
+    bad[2].points[1] = bad[2].points[0];
+    REFUSED(rmf_wire_sweep(bad, 3, profile, NULL, 0, NULL, &out), RMF_ERROR_INVALID_INPUT,
+            "edge 2: a line of zero length");
+    /* A 180° reversal at a joint. */
+    memcpy(bad, e, sizeof bad);
+    bad[1] = line(vec3(10, 0, 0), vec3(5, 0, 0));
+    REFUSED(rmf_wire_sweep(bad, 2, profile, NULL, 0, NULL, &out), RMF_ERROR_INVALID_INPUT,
+            "joint between edges 0 and 1: the wire turns back on itself");
+    /* Profiles: open for a solid, open with holes. */
+    REFUSED(rmf_wire_sweep(e, 3, open, NULL, 0, NULL, &out), RMF_ERROR_INVALID_INPUT,
+            "a solid needs a closed profile");
+    o.solid = 0;
+    REFUSED(rmf_wire_sweep(e, 3, open, holes, 1, &o, &out), RMF_ERROR_INVALID_INPUT, "holes need a closed");
+    o.solid = 2;
+    REFUSED(rmf_wire_sweep(e, 3, profile, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT, "options->solid");
+    rmf_wire_sweep_options_init(&o);
+    /* The profile reaches past the arc's centre (radius 5): refused with the largest reach. */
+    {
+        RmfCurve *big = circle(6);
+        REFUSED(rmf_wire_sweep(e, 3, big, NULL, 0, NULL, &out), RMF_ERROR_INVALID_INPUT,
+                "edge 1: the arc's radius 4.99999");
+        rmf_curve_free(big);
+    }
+    /* Corners: a radius that does not fit, one below the profile's extent, miters on arcs. */
+    {
+        RmfEdge poly[3] = {line(vec3(0, 0, 0), vec3(4, 0, 0)), line(vec3(4, 0, 0), vec3(4, 2, 0)),
+                           line(vec3(4, 2, 0), vec3(0, 2, 0))};
+        RmfEdge with_arc[2] = {line(vec3(-2, 4, 0), vec3(0, 2, 0)),
+                               arc(vec3(0, 2, 0), vec3(sqrt(2.0), sqrt(2.0), 0), vec3(2, 0, 0))};
+        RmfCurve *tiny = square(0.1);
+        o.corner_radius = 1.5;
+        REFUSED(rmf_wire_sweep(poly, 3, tiny, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
+                "the largest radius that fits every corner is 0.99999");
+        o.corner_radius = 0.05;
+        REFUSED(rmf_wire_sweep(poly, 3, tiny, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT, "smallest radius allowed");
+        o.corner_radius = -1;
+        REFUSED(rmf_wire_sweep(poly, 3, tiny, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT, "options->corner_radius");
+        o.corner_radius = 0;
+        o.corner = RMF_CORNER_MITER;
+        REFUSED(rmf_wire_sweep(with_arc, 2, tiny, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
+                "a miter corner needs straight legs, but edge 1 is an arc");
+        o.corner = 9;
+        REFUSED(rmf_wire_sweep(poly, 3, tiny, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT, "options->corner");
+        rmf_wire_sweep_options_init(&o);
+        o.struct_size = 3;
+        REFUSED(rmf_wire_sweep(poly, 3, tiny, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT, "struct_size");
+        rmf_curve_free(tiny);
+    }
+    /* Accessors on NULL and out of range; no file for a failure. */
+    CHECK(rmf_shape_face_count(NULL) == 0 && rmf_shape_is_solid(NULL) == 0, "NULL has no faces");
+    {
+        RmfShape *shape = NULL;
+        RmfShapeFace face;
+        RmfSweepReport r;
+        const RmfCurve *c = NULL;
+        CHECK_STATUS(rmf_wire_sweep(e, 3, profile, NULL, 0, NULL, &shape), RMF_OK, "");
+        CHECK_STATUS(rmf_shape_face(shape, 99, &face), RMF_ERROR_INVALID_INPUT, "index = 99");
+        CHECK_STATUS(rmf_shape_face(NULL, 0, &face), RMF_ERROR_NULL_POINTER, "shape");
+        CHECK_STATUS(rmf_shape_face_loop(shape, 0, 0, &c), RMF_ERROR_INVALID_INPUT, "loop = 0");
+        CHECK(c == NULL, "no loop written");
+        CHECK_STATUS(rmf_shape_report(shape, NULL), RMF_ERROR_NULL_POINTER, "out");
+        CHECK_STATUS(rmf_shape_report(NULL, &r), RMF_ERROR_NULL_POINTER, "shape");
+        CHECK_STATUS(rmf_shape_write_step(shape, NULL), RMF_ERROR_NULL_POINTER, "path");
+        CHECK_STATUS(rmf_shape_write_step(shape, "no/such/directory/pipe.step"), RMF_ERROR_INVALID_INPUT,
+                     "cannot write");
+        CHECK(fopen("no/such/directory/pipe.step", "r") == NULL, "nothing written");
+        rmf_shape_free(shape);
+        rmf_shape_free(NULL);
+    }
+    rmf_curve_free(open);
+    rmf_curve_free(sq);
+    rmf_curve_free(small);
+    rmf_curve_free(profile);
+}
+
+int main(void) {
+    gauss_init();
+    test_options();
+    test_pipe_route();
+    test_corners();
+    test_closed_nurbs();
+    test_bad_inputs();
+    return rmf_check_exit_code("abi_wire");
+}

@@ -1,0 +1,313 @@
+//! `RmfShape`: the result of a wire sweep — a closed solid or a sheet — with its faces as
+//! borrowed `RmfSurface` views (lateral faces) and planes with boundary loops (caps), its
+//! accuracy report, and its STEP file.
+
+use super::boundary::{free_handle, guard, invalid_arg, out_ptr, reference, write, FfiError};
+use super::curve::RmfCurve;
+use super::status::RmfStatus;
+use super::surface::RmfSurface;
+use super::types::RmfVec3;
+use libc::c_char;
+use rmfsurf::{FaceKind, Shape};
+use std::ffi::CStr;
+use std::io::Write;
+
+/// What a face of an RmfShape is (values fixed).
+pub type RmfFaceKind = u32;
+/// A lateral face: an exact rational RmfSurface (u along the profile edge, v along the
+/// wire).
+pub const RMF_FACE_SWEPT: RmfFaceKind = 0;
+/// A planar cap at an end of an open wire, bounded by profile loops.
+pub const RMF_FACE_PLANE: RmfFaceKind = 1;
+
+/// A closed solid or a sheet of exact faces (opaque). Made by rmf_wire_sweep, freed with
+/// rmf_shape_free. Immutable; may be read from several threads at once.
+pub struct RmfShape {
+    shape: Shape,
+    /// The lateral faces' surfaces (None for caps), the views of rmf_shape_face.
+    surfaces: Vec<Option<RmfSurface>>,
+    /// The caps' loops, the views of rmf_shape_face_loop.
+    loops: Vec<Vec<RmfCurve>>,
+}
+
+impl RmfShape {
+    pub(crate) fn new(shape: Shape) -> Self {
+        let surfaces = shape
+            .faces()
+            .iter()
+            .map(|f| f.surface.clone().map(|s| RmfSurface::new(s, None)))
+            .collect();
+        let loops = shape
+            .faces()
+            .iter()
+            .map(|f| {
+                f.loops
+                    .iter()
+                    .map(|l| RmfCurve::new(l.clone(), None))
+                    .collect()
+            })
+            .collect();
+        Self {
+            shape,
+            surfaces,
+            loops,
+        }
+    }
+
+    pub(crate) fn into_raw(self) -> *mut Self {
+        Box::into_raw(Box::new(self))
+    }
+}
+
+/// One face of an RmfShape (a copy; the pointers are borrowed from the shape).
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct RmfShapeFace {
+    pub kind: RmfFaceKind,
+    /// RMF_FACE_SWEPT: the face's surface, borrowed: valid until the shape is freed (do not
+    /// free it). NULL for caps.
+    pub surface: *const RmfSurface,
+    /// RMF_FACE_PLANE: a point of the cap's plane (the wire's end) and its unit normal,
+    /// pointing out of the solid. Zero for lateral faces.
+    pub plane_origin: RmfVec3,
+    pub plane_normal: RmfVec3,
+    /// RMF_FACE_PLANE: the number of boundary loops (the first is the outer one; the others
+    /// are the holes); rmf_shape_face_loop gives them. 0 for lateral faces (their boundary
+    /// is their surface's natural boundary).
+    pub loop_count: usize,
+    /// RMF_FACE_SWEPT: the index of the wire edge the face lies along (as given to
+    /// rmf_wire_sweep) and of the profile edge it sweeps (Bézier segments of the profile,
+    /// then of holes[0], holes[1], ...). Caps: the wire edge at that end, and 0.
+    pub spine_edge: usize,
+    pub profile_edge: usize,
+    /// 1 if the face's outward normal is −(s_u × s_v) (its surface runs the other way).
+    pub reversed: u32,
+    /// Added in 0.2: the loop the profile edge belongs to (0 the profile, 1 + h holes[h]).
+    pub profile_loop: usize,
+    /// Added in 0.2: 1 if the face is the elbow of a round corner after spine_edge.
+    pub round_corner: u32,
+}
+
+/// How accurate a wire sweep is (all figures measured on the result).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default)]
+pub struct RmfSweepReport {
+    /// Largest sampled distance between a curve edge and its PH cubic spline, in the wire's
+    /// units (0 when every edge is a line or an arc).
+    pub spine_distance: f64,
+    /// Largest angle (radians) between the frames used and the exact RMF plus the twist and
+    /// closure turn (linear in arc length); 0 on untwisted lines and arcs.
+    pub rmf_angle_error: f64,
+    /// Largest |cos| of the angle between the parameter lines of the lateral faces, sampled
+    /// on every patch (0 for an exact RMF sweep; a twist or a closure turn tilts them, and
+    /// miter legs are ruled between oblique sections).
+    pub max_parameter_cosine: f64,
+    /// The least singularity margin g = 1 − κ c·n over the sweep (Mäurer & Jüttler Cor. 7;
+    /// 1 where the wire is straight), and 1 − cuts/length for miter legs; > 0.
+    pub singularity_margin: f64,
+    /// Number of faces.
+    pub face_count: usize,
+    /// Added in 0.2: the largest turn of the frame about the tangent across a corner, against
+    /// the minimal rotation of the tangent there (round corners: across the elbow; miters:
+    /// across the miter plane), radians.
+    pub corner_turn: f64,
+    /// Added in 0.2: closed wires: the largest distance between the sections where the
+    /// wire closes (0 for open wires), in the wire's units.
+    pub seam_gap: f64,
+    /// Added in 0.2: the largest distance between the sections of consecutive pieces at the
+    /// joints inside the wire (rounding at G1 joints; ½θ²·r at near-tangent joints, where a
+    /// line meets a curved edge at an angle θ so slight that the line is cut by the curved
+    /// edge's normal plane), in the wire's units.
+    pub joint_gap: f64,
+}
+
+/// Frees a shape; its face surfaces and loop curves become invalid. NULL is a no-op.
+/// \since 0.2
+#[no_mangle]
+pub unsafe extern "C" fn rmf_shape_free(shape: *mut RmfShape) {
+    free_handle(shape)
+}
+
+/// The number of faces of a shape (lateral faces first, then the caps); 0 for NULL.
+/// \since 0.2
+#[no_mangle]
+pub unsafe extern "C" fn rmf_shape_face_count(shape: *const RmfShape) -> usize {
+    if shape.is_null() {
+        return 0;
+    }
+    (*shape).shape.faces().len()
+}
+
+/// Whether a shape is a closed, consistently oriented solid (1) or a sheet (0); 0 for NULL.
+/// \since 0.2
+#[no_mangle]
+pub unsafe extern "C" fn rmf_shape_is_solid(shape: *const RmfShape) -> u32 {
+    if shape.is_null() {
+        return 0;
+    }
+    u32::from((*shape).shape.is_solid())
+}
+
+/// Describes face `index` of a shape.
+///
+/// @param[in] shape The shape.
+/// @param[in] index 0 ≤ index < rmf_shape_face_count(shape).
+/// @param[out] out Receives the face; its surface pointer is borrowed from the shape.
+/// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if index is out of range.
+/// \since 0.2
+#[no_mangle]
+pub unsafe extern "C" fn rmf_shape_face(
+    shape: *const RmfShape,
+    index: usize,
+    out: *mut RmfShapeFace,
+) -> RmfStatus {
+    guard("rmf_shape_face", || {
+        let shape = reference(shape, "shape")?;
+        let out = out_ptr(out, "out")?;
+        let faces = shape.shape.faces();
+        let Some(face) = faces.get(index) else {
+            return invalid_arg(format!(
+                "index = {index} but the shape has {} faces",
+                faces.len()
+            ));
+        };
+        let (origin, normal) = face.plane.unwrap_or_default();
+        write(
+            out,
+            RmfShapeFace {
+                kind: match face.kind {
+                    FaceKind::Swept => RMF_FACE_SWEPT,
+                    FaceKind::Plane => RMF_FACE_PLANE,
+                },
+                surface: shape.surfaces[index]
+                    .as_ref()
+                    .map_or(std::ptr::null(), |s| s as *const RmfSurface),
+                plane_origin: origin.into(),
+                plane_normal: normal.into(),
+                loop_count: face.loops.len(),
+                spine_edge: face.spine_edge,
+                profile_edge: face.profile_edge,
+                reversed: u32::from(face.reversed),
+                profile_loop: face.profile_loop,
+                round_corner: u32::from(face.round_corner),
+            },
+        );
+        Ok(())
+    })
+}
+
+/// Boundary loop `loop` of a planar cap: a closed 3-D curve, counter-clockwise about the
+/// cap's outward normal for the outer loop (index 0), clockwise for holes.
+///
+/// @param[in] shape The shape.
+/// @param[in] face A face of kind RMF_FACE_PLANE.
+/// @param[in] loop 0 ≤ loop < the face's loop_count.
+/// @param[out] out Receives the curve, borrowed: valid until the shape is freed (do not free it).
+/// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if face or loop is out
+///         of range (lateral faces have no loops).
+/// \since 0.2
+#[no_mangle]
+pub unsafe extern "C" fn rmf_shape_face_loop(
+    shape: *const RmfShape,
+    face: usize,
+    r#loop: usize,
+    out: *mut *const RmfCurve,
+) -> RmfStatus {
+    guard("rmf_shape_face_loop", || {
+        let shape = reference(shape, "shape")?;
+        let out = out_ptr(out, "out")?;
+        let Some(loops) = shape.loops.get(face) else {
+            return invalid_arg(format!(
+                "face = {face} but the shape has {} faces",
+                shape.loops.len()
+            ));
+        };
+        let Some(curve) = loops.get(r#loop) else {
+            return invalid_arg(format!(
+                "loop = {} but face {face} has {} loops",
+                r#loop,
+                loops.len()
+            ));
+        };
+        write(out, curve as *const RmfCurve);
+        Ok(())
+    })
+}
+
+/// The accuracy figures of a wire sweep (see RmfSweepReport).
+///
+/// @return RMF_OK, or RMF_ERROR_NULL_POINTER if shape or out is NULL.
+/// \since 0.2
+#[no_mangle]
+pub unsafe extern "C" fn rmf_shape_report(
+    shape: *const RmfShape,
+    out: *mut RmfSweepReport,
+) -> RmfStatus {
+    guard("rmf_shape_report", || {
+        let shape = reference(shape, "shape")?;
+        let out = out_ptr(out, "out")?;
+        let r = shape.shape.report();
+        write(
+            out,
+            RmfSweepReport {
+                spine_distance: r.spine_distance,
+                rmf_angle_error: r.rmf_angle_error,
+                max_parameter_cosine: r.max_parameter_cosine,
+                singularity_margin: r.singularity_margin,
+                face_count: r.face_count,
+                corner_turn: r.corner_turn,
+                seam_gap: r.seam_gap,
+                joint_gap: r.joint_gap,
+            },
+        );
+        Ok(())
+    })
+}
+
+/// Writes a shape as a STEP AP214 file: a solid as a MANIFOLD_SOLID_BREP (a closed shell of
+/// ADVANCED_FACEs on rational B-spline surfaces and planes, sharing edges and vertices),
+/// a sheet as an open shell. FreeCAD and OpenCascade read it as one valid Solid. The file
+/// is written under a temporary name beside `path` and renamed: on failure nothing is
+/// written at `path`.
+///
+/// @param[in] shape The shape.
+/// @param[in] path The file's path (NUL-terminated; its stem names the product).
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If shape or path is NULL.
+/// @return RMF_ERROR_INVALID_INPUT If the file cannot be written (the message says why).
+/// \since 0.2
+#[no_mangle]
+pub unsafe extern "C" fn rmf_shape_write_step(
+    shape: *const RmfShape,
+    path: *const c_char,
+) -> RmfStatus {
+    guard("rmf_shape_write_step", || {
+        let shape = reference(shape, "shape")?;
+        if path.is_null() {
+            return Err(FfiError::Null("path"));
+        }
+        use std::os::unix::ffi::OsStrExt;
+        let path =
+            std::path::Path::new(std::ffi::OsStr::from_bytes(CStr::from_ptr(path).to_bytes()));
+        let name = path
+            .file_stem()
+            .and_then(|s| s.to_str())
+            .unwrap_or("rmfsurf");
+        let text = shape.shape.to_step(name)?;
+        write_atomically(path, text.as_bytes())
+            .or_else(|e| invalid_arg(format!("cannot write {}: {e}", path.display())))
+    })
+}
+
+/// Writes `bytes` beside `path` under a temporary name, then renames it to `path`.
+fn write_atomically(path: &std::path::Path, bytes: &[u8]) -> std::io::Result<()> {
+    let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("shape");
+    let temp = path.with_file_name(format!(".{name}.rmfsurf-{}.tmp", std::process::id()));
+    let result = std::fs::File::create(&temp)
+        .and_then(|mut f| f.write_all(bytes).and_then(|()| f.sync_all()))
+        .and_then(|()| std::fs::rename(&temp, path));
+    if result.is_err() {
+        let _ = std::fs::remove_file(&temp);
+    }
+    result
+}

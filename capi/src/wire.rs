@@ -1,0 +1,278 @@
+//! The C API of wire sweeps (geometry in `rmfsurf::wire`): a wire of lines, arcs and
+//! curves, a planar profile with optional holes, and the options, in; an `RmfShape` (a
+//! closed solid or a sheet of exact rational faces) out.
+
+use super::boundary::{
+    guard, invalid_arg, options as read_options, out_ptr, reference, slice, write, FfiError,
+    OptionsStruct,
+};
+use super::curve::RmfCurve;
+use super::shape::RmfShape;
+use super::status::RmfStatus;
+use super::types::RmfVec3;
+use rmfsurf::glam::DVec3;
+use rmfsurf::PiecewiseCurve;
+use rmfsurf::{sweep_wire, Corner, Edge, WireSweep};
+
+/// What an RmfEdge is (values fixed, validated).
+pub type RmfEdgeKind = u32;
+/// A straight line from points[0] to points[1].
+pub const RMF_EDGE_LINE: RmfEdgeKind = 0;
+/// A circular arc from points[0] through points[1] to points[2].
+pub const RMF_EDGE_ARC: RmfEdgeKind = 1;
+/// A curve (any RmfCurve: NURBS data, PH, Möbius or RRMF curves, callbacks approximated
+/// first with rmf_ph_spline_approximate, ...) on its whole domain.
+pub const RMF_EDGE_CURVE: RmfEdgeKind = 2;
+
+/// One edge of a wire, in either orientation. Unused points are ignored; `curve` is read
+/// only for RMF_EDGE_CURVE (borrowed for the call; the shape keeps nothing of it).
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct RmfEdge {
+    pub kind: RmfEdgeKind,
+    pub points: [RmfVec3; 3],
+    pub curve: *const RmfCurve,
+}
+
+/// How sharp (G0) joints of a wire are resolved (values fixed, validated).
+pub type RmfCorner = u32;
+/// The corner replaced by a circular arc of corner_radius tangent to both edges (the
+/// edges must lie in the plane of the corner near it): an exact torus elbow.
+pub const RMF_CORNER_ROUND: RmfCorner = 0;
+/// Both legs cut by the plane bisecting the corner, the frame reflected in it (the legs
+/// must be straight lines).
+pub const RMF_CORNER_MITER: RmfCorner = 1;
+
+/// Options of rmf_wire_sweep. Initialise with rmf_wire_sweep_options_init, then change
+/// fields; the struct only grows at the end.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct RmfWireSweepOptions {
+    /// sizeof(RmfWireSweepOptions), set by rmf_wire_sweep_options_init.
+    pub struct_size: usize,
+    /// Largest distance of the PH cubic spline from a curve edge, absolute (default 1e-4).
+    pub tolerance: f64,
+    /// Largest gap between consecutive edge ends, relative to the wire's size (the diagonal
+    /// of its bounding box); default 1e-7, below 1e-2. Gaps within it are closed by moving
+    /// the later edge's start onto the earlier edge's end. Also the relative gap within
+    /// which a profile loop counts as closed.
+    pub join_tolerance: f64,
+    /// Sharp joints: RMF_CORNER_ROUND (default) or RMF_CORNER_MITER.
+    pub corner: RmfCorner,
+    /// RMF_CORNER_ROUND: the radius (finite, > 0); 0 = 1.5 times the profile's largest
+    /// distance from the spine (default).
+    pub corner_radius: f64,
+    /// f2 at the wire's start, projected onto the normal plane; the zero vector (default)
+    /// = the unit normal of the plane through the start tangent and the wire's point
+    /// farthest from the tangent line (the wire's plane for a planar wire), or some normal
+    /// of a straight wire.
+    pub initial_normal: RmfVec3,
+    /// Extra turn about the tangent over the whole wire, radians, linear in arc length
+    /// (default 0).
+    pub twist: f64,
+    /// Closed wires: the frame closes modulo 2π/k with the smallest extra turn (k ≥ 1, e.g.
+    /// 4 for a square profile); 0 (default) = 1. The turn must map the profile onto itself.
+    pub closure_symmetry: u32,
+    /// 1 (default): a closed solid (refuses open profiles); 0: the lateral faces only.
+    pub solid: u32,
+}
+
+impl Default for RmfWireSweepOptions {
+    fn default() -> Self {
+        let d = WireSweep::default();
+        Self {
+            struct_size: std::mem::size_of::<Self>(),
+            tolerance: d.tolerance,
+            join_tolerance: d.join_tolerance,
+            corner: RMF_CORNER_ROUND,
+            corner_radius: 0.0,
+            initial_normal: RmfVec3::default(),
+            twist: 0.0,
+            closure_symmetry: 0,
+            solid: 1,
+        }
+    }
+}
+
+// SAFETY: #[repr(C)], first field size_t, every field a number or a u32 code (any bit
+// pattern is a value, validated on use).
+unsafe impl OptionsStruct for RmfWireSweepOptions {
+    const FIRST_SIZE: usize = std::mem::size_of::<RmfWireSweepOptions>();
+}
+
+/// Writes the default options and their struct_size.
+///
+/// @param[out] options Receives the defaults (see RmfWireSweepOptions).
+/// @return RMF_OK, or RMF_ERROR_NULL_POINTER if options is NULL.
+/// \since 0.2
+#[no_mangle]
+pub unsafe extern "C" fn rmf_wire_sweep_options_init(
+    options: *mut RmfWireSweepOptions,
+) -> RmfStatus {
+    guard("rmf_wire_sweep_options_init", || {
+        let options = out_ptr(options, "options")?;
+        write(options, RmfWireSweepOptions::default());
+        Ok(())
+    })
+}
+
+/// The options as the geometry takes them (validated).
+fn wire_options(o: &RmfWireSweepOptions) -> Result<WireSweep, FfiError> {
+    let corner = match o.corner {
+        RMF_CORNER_ROUND if o.corner_radius == 0.0 => Corner::Round(None),
+        RMF_CORNER_ROUND => {
+            if !(o.corner_radius.is_finite() && o.corner_radius > 0.0) {
+                return invalid_arg(format!(
+                    "options->corner_radius = {} must be finite and positive (0: the default)",
+                    o.corner_radius
+                ));
+            }
+            Corner::Round(Some(o.corner_radius))
+        }
+        RMF_CORNER_MITER => Corner::Miter,
+        other => {
+            return invalid_arg(format!(
+                "options->corner = {other} is no RmfCorner (RMF_CORNER_ROUND = 0, RMF_CORNER_MITER = 1)"
+            ))
+        }
+    };
+    if o.solid > 1 {
+        return invalid_arg(format!("options->solid = {} must be 0 or 1", o.solid));
+    }
+    let normal: DVec3 = o.initial_normal.into();
+    Ok(WireSweep {
+        tolerance: o.tolerance,
+        join_tolerance: o.join_tolerance,
+        corner,
+        initial_normal: (normal != DVec3::ZERO).then_some(normal),
+        twist: o.twist,
+        closure_symmetry: o.closure_symmetry,
+        solid: o.solid == 1,
+    })
+}
+
+/// The edges as the geometry takes them (kinds and points checked, curves borrowed).
+///
+/// # Safety
+/// Every `curve` of a curve edge must be NULL or a valid handle.
+unsafe fn wire_edges(edges: &[RmfEdge]) -> Result<Vec<Edge>, FfiError> {
+    edges
+        .iter()
+        .enumerate()
+        .map(|(k, e)| {
+            let point = |i: usize| -> Result<DVec3, FfiError> {
+                let p: DVec3 = e.points[i].into();
+                if !p.is_finite() {
+                    return invalid_arg(format!("edges[{k}].points[{i}] = {p} is not finite"));
+                }
+                Ok(p)
+            };
+            Ok(match e.kind {
+                RMF_EDGE_LINE => Edge::Line {
+                    from: point(0)?,
+                    to: point(1)?,
+                },
+                RMF_EDGE_ARC => Edge::Arc {
+                    start: point(0)?,
+                    through: point(1)?,
+                    end: point(2)?,
+                },
+                RMF_EDGE_CURVE => {
+                    if e.curve.is_null() {
+                        return invalid_arg(format!(
+                            "edges[{k}].curve is NULL (an RMF_EDGE_CURVE edge)"
+                        ));
+                    }
+                    Edge::Curve(
+                        reference(e.curve, "edges[].curve")?
+                            .rational(&format!("edges[{k}].curve"))?
+                            .as_ref()
+                            .clone(),
+                    )
+                }
+                other => {
+                    return invalid_arg(format!(
+                        "edges[{k}].kind = {other} is no RmfEdgeKind (LINE 0, ARC 1, CURVE 2)"
+                    ))
+                }
+            })
+        })
+        .collect()
+}
+
+/// Sweeps a planar profile along a wire of lines, arcs and curves (rmfsurf's wire sweep):
+///
+/// - the edges may come in either orientation; each must start where the previous one
+///   ends (within options->join_tolerance); a wire whose end meets its start is closed;
+/// - lines and arcs (also NURBS segments that are exactly straight or circular) are swept
+///   exactly: along a line the rotation-minimizing frame (RMF) is constant and a circle
+///   gives an exact cylinder patch, along an arc the frame turns with it and the face is
+///   rational of degree 2 along the arc (an exact torus patch for a circle). Other curves
+///   are approximated by a PH cubic spline within options->tolerance and carry its rational
+///   RMF (Mäurer & Jüttler, eqs. (29), (36)–(42)). One RMF runs along the whole wire: it
+///   is carried across every joint without a turn about the tangent;
+/// - sharp joints are rounded (a tangent arc, exact torus elbow) or mitred (options->corner);
+/// - a closed wire closes without a seam: the RMF's holonomy is cancelled by the smallest
+///   turn modulo 2π/closure_symmetry, spread linearly in arc length;
+/// - the profile (x along f2, y along f3, z = 0) is split at its Bézier segment joints:
+///   one lateral face per profile segment per line, quarter arc, or curve edge. With
+///   options->solid the profile and the holes must be closed, and an open wire gets planar
+///   caps: the faces form a closed, outward-oriented solid sharing its edges.
+///
+/// Refused before anything is built: a profile reaching past the centre of curvature of an
+/// arc, corner or curve (Mäurer & Jüttler Cor. 7), miter cuts that cross inside the
+/// profile, a corner radius that does not fit the edges; the message names the edge or
+/// joint and gives the largest (or smallest) allowed value.
+///
+/// @param[in] edges edge_count edges (≥ 1), consecutive along the wire.
+/// @param[in] edge_count Number of edges.
+/// @param[in] profile The outer profile loop (a curve in the normal plane, z = 0).
+/// @param[in] holes hole_count inner loops (closed, inside the profile, disjoint), or NULL
+///            when hole_count is 0. Need a closed profile.
+/// @param[in] hole_count Number of holes.
+/// @param[in] options NULL for the defaults, or initialised by rmf_wire_sweep_options_init.
+/// @param[out] out Receives the shape; free with rmf_shape_free. Untouched on failure.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If edges (with edge_count > 0), profile, a hole, holes
+///         (with hole_count > 0) or out is NULL.
+/// @return RMF_ERROR_INVALID_INPUT If an edge, the profile, a hole or an option is invalid
+///         or the sweep would fold (the message names the edge, joint, loop or option).
+/// @return RMF_ERROR_NO_SOLUTION / RMF_ERROR_NOT_CONVERGED If a curve edge admits no PH
+///         cubic spline within the tolerance (e.g. a cusp).
+/// \since 0.2
+#[no_mangle]
+pub unsafe extern "C" fn rmf_wire_sweep(
+    edges: *const RmfEdge,
+    edge_count: usize,
+    profile: *const RmfCurve,
+    holes: *const *const RmfCurve,
+    hole_count: usize,
+    options: *const RmfWireSweepOptions,
+    out: *mut *mut RmfShape,
+) -> RmfStatus {
+    guard("rmf_wire_sweep", || {
+        let out = out_ptr(out, "out")?;
+        if edge_count == 0 {
+            return invalid_arg("edge_count = 0: a wire needs at least one edge".into());
+        }
+        let edges = wire_edges(slice(edges, edge_count, "edges")?)?;
+        let profile = reference(profile, "profile")?;
+        let holes: Vec<PiecewiseCurve> = slice(holes, hole_count, "holes")?
+            .iter()
+            .enumerate()
+            .map(|(k, &h)| {
+                if h.is_null() {
+                    return invalid_arg(format!("holes[{k}] is NULL"));
+                }
+                Ok(reference(h, "holes[]")?
+                    .rational(&format!("holes[{k}]"))?
+                    .as_ref()
+                    .clone())
+            })
+            .collect::<Result<_, _>>()?;
+        let options = wire_options(&read_options(options, "options")?)?;
+        let shape = sweep_wire(&edges, profile.rational("profile")?, &holes, &options)?;
+        write(out, RmfShape::new(shape).into_raw());
+        Ok(())
+    })
+}

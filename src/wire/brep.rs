@@ -1,0 +1,893 @@
+//! The B-rep of a wire sweep: its faces, their shared edges and vertices, and how each
+//! face is oriented.
+//!
+//! Faces. For every spine piece and every profile edge one lateral face, the sweep
+//! s(u, v) = x(v) + c₂(u) f₂(v) + c₃(u) f₃(v) (Mäurer & Jüttler (1), u along the profile
+//! edge, v along the piece) as an exact rational surface:
+//! * along an untwisted line, the ruled patch between its two end sections — of degree
+//!   (m, 1), a cylinder patch for a circle; a miter plane at an end replaces that section by
+//!   its parallel projection along the line onto the plane, c ↦ x + c₂f₂ + c₃f₃ + (c·q) t,
+//!   which is linear in c and so keeps the profile's weights;
+//! * along an untwisted arc, with the frame of `frame` over the arc's own weights w,
+//!   S = h ⊗ (X, w) + C₂ ⊗ (F₂, 0) + C₃ ⊗ (F₃, 0): degree (m, 2), an exact torus patch;
+//! * along PH pieces and twisted lines and arcs, the general rational sweep (42) of
+//!   [`crate::sweep`].
+//!
+//! An open wire gets a planar cap at each end, bounded by the profile's loops there.
+//!
+//! Topology. Stations k = 0 … M separate the M pieces (a closed wire's station M is station
+//! 0, its profile edges turned onto one another by the closing turn). Section edges lie at
+//! the stations (one per profile edge), spine edges along the pieces (one per profile
+//! vertex, the profile's G0 corners and the start of a smooth closed loop, which is the
+//! seam of its faces). In its parameter plane every lateral face runs counter-clockwise
+//! along v = v₀, u = u₁, v = v₁, u = u₀; its normal s_u × s_v points out of the solid for an
+//! outer loop turning counter-clockwise in (f₂, f₃) and for a hole turning clockwise (else
+//! the face is marked reversed). Caps are bounded counter-clockwise about their outward
+//! normal (holes clockwise), so every edge is used once in each direction.
+
+use super::edge::Geometry;
+use super::frame::{arc_numerators, PieceFrame, Transport};
+use super::profile::{EdgeImage, Profile};
+use crate::bezier::{
+    NurbsCurve, NurbsSurface, PiecewiseCurve, PiecewiseSurface, RationalBezierCurve,
+    RationalBezierPatch,
+};
+use crate::error::{invalid, Result};
+use crate::export::step::{
+    boundaries, Brep, BrepBound, BrepEdge, BrepFace, BrepSurface, BrepUse, PCurve,
+};
+use crate::frames::metrics::{angle_about_tangent, parameter_line_cosine};
+use crate::frames::Frame;
+use crate::math::GaussLegendre;
+use crate::mesh::grid_parameters;
+use crate::sweep::sweep;
+use glam::{DVec3, DVec4};
+
+/// Samples per patch and direction for the parameter-line measure of the report.
+const COSINE_SAMPLES: usize = 8;
+
+/// Gauss–Legendre nodes per patch and direction for [`Shape::volume`].
+const VOLUME_NODES: usize = 24;
+
+/// What a face of a [`Shape`] is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FaceKind {
+    /// A lateral face: a profile edge swept along a spine piece.
+    Swept,
+    /// A planar cap at an end of an open wire.
+    Plane,
+}
+
+/// One face of a [`Shape`].
+#[derive(Clone, Debug)]
+pub struct Face {
+    pub kind: FaceKind,
+    /// [`FaceKind::Swept`]: the exact rational surface (u along the profile edge, v along
+    /// the spine).
+    pub surface: Option<PiecewiseSurface>,
+    /// [`FaceKind::Plane`]: a point of the cap's plane and its unit normal, pointing out of
+    /// the solid.
+    pub plane: Option<(DVec3, DVec3)>,
+    /// [`FaceKind::Plane`]: the boundary loops as closed curves (outer first), counter-
+    /// clockwise about the normal (holes clockwise).
+    pub loops: Vec<PiecewiseCurve>,
+    /// The edge of the wire the face lies along (for caps: the edge at that end).
+    pub spine_edge: usize,
+    /// The profile edge it sweeps (numbered over all loops, outer loop first).
+    pub profile_edge: usize,
+    /// 0 for the outer loop, 1 + h for hole h.
+    pub profile_loop: usize,
+    /// The elbow of a round corner after `spine_edge`.
+    pub round_corner: bool,
+    /// The face's outward normal is −(s_u × s_v).
+    pub reversed: bool,
+}
+
+/// How accurate a wire sweep is.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SweepReport {
+    /// Largest distance between a curve edge and its PH cubic spline (0 when every edge is a
+    /// line or an arc), in the wire's units.
+    pub spine_distance: f64,
+    /// Largest angle (radians) between the frames used and the exact RMF (plus the twist
+    /// and closure turn, linear in arc length); 0 on untwisted lines and arcs.
+    pub rmf_angle_error: f64,
+    /// Largest |cos| of the angle between the parameter lines of the lateral faces (0 on an
+    /// exact RMF sweep, Mäurer & Jüttler (43)), sampled on every patch; miter legs, ruled
+    /// between oblique sections, are not orthogonal.
+    pub max_parameter_cosine: f64,
+    /// The least singularity margin g = 1 − κ c·n over the sweep (Cor. 7; 1 where the spine
+    /// is straight), and for miter legs 1 − (length of the cuts)/(length of the leg); > 0.
+    pub singularity_margin: f64,
+    pub face_count: usize,
+    /// Largest turn of the frame about the tangent across a corner, against the minimal
+    /// rotation of the tangent there (round corners: across the elbow; miters: across the
+    /// miter plane), radians.
+    pub corner_turn: f64,
+    /// Closed wires: the largest distance between the sections where the wire closes (0
+    /// for open wires), in the wire's units.
+    pub seam_gap: f64,
+    /// The largest distance between the sections of consecutive pieces at the joints
+    /// inside the wire (0 at G1 joints up to rounding; ½θ²·r at near-tangent joints), in
+    /// the wire's units.
+    pub joint_gap: f64,
+}
+
+/// The result of a wire sweep: a closed solid or a sheet.
+#[derive(Clone, Debug)]
+pub struct Shape {
+    faces: Vec<Face>,
+    brep: Brep,
+    solid: bool,
+    report: SweepReport,
+    spine: Vec<PiecewiseCurve>,
+}
+
+impl Shape {
+    pub fn faces(&self) -> &[Face] {
+        &self.faces
+    }
+
+    /// Whether the faces bound a closed, consistently oriented solid.
+    pub fn is_solid(&self) -> bool {
+        self.solid
+    }
+
+    pub fn report(&self) -> &SweepReport {
+        &self.report
+    }
+
+    /// The curves swept along, in order: the lines, arcs and round-corner elbows exactly,
+    /// curve edges as their PH cubic splines.
+    pub fn spine(&self) -> &[PiecewiseCurve] {
+        &self.spine
+    }
+
+    /// The enclosed volume of a solid (`None` for a sheet): ⅓ ∮ x·n dA by 24-point
+    /// Gauss–Legendre quadrature on every patch and cap loop segment.
+    pub fn volume(&self) -> Option<f64> {
+        if !self.solid {
+            return None;
+        }
+        let rule = GaussLegendre::new(VOLUME_NODES);
+        let flux: f64 = self
+            .faces
+            .iter()
+            .map(|face| match (&face.surface, face.plane) {
+                (Some(s), _) => {
+                    let sign = if face.reversed { -1.0 } else { 1.0 };
+                    sign * s
+                        .patches()
+                        .iter()
+                        .map(|p| {
+                            rule.integrate(0.0, 1.0, |u| {
+                                rule.integrate(0.0, 1.0, |v| {
+                                    let j = p.eval_jet(u, v);
+                                    j.point.dot(j.du.cross(j.dv))
+                                })
+                            })
+                        })
+                        .sum::<f64>()
+                }
+                // ∫ x·n dA = (o·n)·area, the area by ½ ∮ ((x − o) × dx)·n over the loops.
+                (None, Some((o, n))) => {
+                    let area: f64 = face
+                        .loops
+                        .iter()
+                        .flat_map(|l| l.segments())
+                        .map(|seg| {
+                            rule.integrate(0.0, 1.0, |t| {
+                                let j = seg.eval_jet(t);
+                                0.5 * (j.point - o).cross(j.d1).dot(n)
+                            })
+                        })
+                        .sum();
+                    o.dot(n) * area
+                }
+                _ => 0.0,
+            })
+            .sum();
+        Some(flux / 3.0)
+    }
+
+    /// The shape as a STEP AP214 file: a `MANIFOLD_SOLID_BREP` for a solid, an open shell
+    /// otherwise; faces share their edges.
+    pub fn to_step(&self, name: &str) -> Result<String> {
+        crate::export::step::brep_to_step(&self.brep, name)
+    }
+
+    /// The topology as written to STEP (for checks).
+    #[cfg(test)]
+    pub(crate) fn brep(&self) -> &Brep {
+        &self.brep
+    }
+}
+
+/// How normalized coordinates map back: x ↦ scale·x + offset.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Placement {
+    pub scale: f64,
+    pub offset: DVec3,
+}
+
+impl Placement {
+    fn point(&self, p: DVec3) -> DVec3 {
+        p * self.scale + self.offset
+    }
+
+    fn homogeneous(&self, h: DVec4) -> DVec4 {
+        (h.truncate() * self.scale + self.offset * h.w).extend(h.w)
+    }
+
+    fn curve(&self, c: &PiecewiseCurve) -> PiecewiseCurve {
+        let segments = c
+            .segments()
+            .iter()
+            .map(|s| s.similar(self.scale, self.offset))
+            .collect();
+        PiecewiseCurve::new(segments, c.breaks().to_vec()).expect("the same breaks")
+    }
+
+    fn surface(&self, s: &PiecewiseSurface) -> Result<PiecewiseSurface> {
+        let patches = s
+            .patches()
+            .iter()
+            .map(|p| {
+                let points = p
+                    .homogeneous()
+                    .iter()
+                    .map(|&h| self.homogeneous(h))
+                    .collect();
+                RationalBezierPatch::from_homogeneous(p.degree_u(), p.degree_v(), points)
+            })
+            .collect::<Result<Vec<_>>>()?;
+        PiecewiseSurface::new(patches, s.u_breaks().to_vec(), s.v_breaks().to_vec())
+    }
+}
+
+/// The lateral surface of one framed piece and one profile edge (module notes), in
+/// normalized coordinates.
+fn lateral(framed: &super::frame::Framed, edge: &PiecewiseCurve) -> Result<PiecewiseSurface> {
+    match (&framed.piece.geometry, &framed.frame) {
+        (Geometry::Line { a, b }, PieceFrame::Constant { f2, f3 }) => {
+            let t = framed.start.tangent;
+            let section = |p: DVec3, miter: Option<(DVec3, DVec3)>, h: DVec4| {
+                let mut x = p * h.w + *f2 * h.x + *f3 * h.y;
+                if let Some((_, m)) = miter {
+                    x -= t * ((*f2 * h.x + *f3 * h.y).dot(m) / t.dot(m));
+                }
+                x.extend(h.w)
+            };
+            let patches = edge
+                .segments()
+                .iter()
+                .map(|seg| {
+                    let points = seg
+                        .homogeneous()
+                        .iter()
+                        .flat_map(|&h| {
+                            [
+                                section(*a, framed.miters[0], h),
+                                section(*b, framed.miters[1], h),
+                            ]
+                        })
+                        .collect();
+                    RationalBezierPatch::from_homogeneous(seg.degree(), 1, points)
+                })
+                .collect::<Result<Vec<_>>>()?;
+            PiecewiseSurface::new(patches, edge.breaks().to_vec(), vec![0.0, 1.0])
+        }
+        (Geometry::Arc(arc), PieceFrame::Circular { a, b }) => {
+            let spine = &framed.spine;
+            let mut patches = Vec::new();
+            for seg in edge.segments() {
+                for along in spine.segments() {
+                    let frame = &arc_numerators(arc, along, *a, *b);
+                    let x = along.homogeneous();
+                    let points = seg
+                        .homogeneous()
+                        .iter()
+                        .flat_map(|&h| {
+                            (0..x.len()).map(move |l| {
+                                (x[l].truncate() * h.w + frame.e2[l] * h.x + frame.e3[l] * h.y)
+                                    .extend(h.w * x[l].w)
+                            })
+                        })
+                        .collect();
+                    patches.push(RationalBezierPatch::from_homogeneous(
+                        seg.degree(),
+                        2,
+                        points,
+                    )?);
+                }
+            }
+            PiecewiseSurface::new(patches, edge.breaks().to_vec(), spine.breaks().to_vec())
+        }
+        (_, PieceFrame::Rational(frames)) => sweep(&framed.spine, frames, edge),
+        _ => invalid!("internal: a frame that does not fit its piece"),
+    }
+}
+
+/// Builds the shape (in the caller's coordinates) from the framed pieces and the profile.
+pub(crate) fn build(
+    transport: &Transport,
+    profile: &Profile,
+    solid: bool,
+    placement: Placement,
+    margin: f64,
+) -> Result<Shape> {
+    let m = transport.pieces.len();
+    // Lateral surfaces, normalized, [piece][loop][edge].
+    let mut normalized: Vec<Vec<Vec<PiecewiseSurface>>> = Vec::with_capacity(m);
+    for framed in &transport.pieces {
+        let mut loops = Vec::with_capacity(profile.loops.len());
+        for lp in &profile.loops {
+            let faces = lp
+                .edges
+                .iter()
+                .map(|e| lateral(framed, e))
+                .collect::<Result<Vec<_>>>()
+                .map_err(|e| e.context(format!("edge {}", framed.piece.edge)))?;
+            loops.push(faces);
+        }
+        normalized.push(loops);
+    }
+    let images = closure_images(transport, profile)?;
+    let seam_gap = seam_gap(&normalized, profile, images.as_ref()) * placement.scale;
+    let joint_gap = joint_gap(&normalized) * placement.scale;
+    let max_cosine = normalized
+        .iter()
+        .flatten()
+        .flatten()
+        .map(max_parameter_cosine)
+        .fold(0.0, f64::max);
+    // In the caller's coordinates.
+    let surfaces: Vec<Vec<Vec<PiecewiseSurface>>> = normalized
+        .iter()
+        .map(|loops| {
+            loops
+                .iter()
+                .map(|faces| faces.iter().map(|s| placement.surface(s)).collect())
+                .collect::<Result<_>>()
+        })
+        .collect::<Result<_>>()?;
+    let nurbs: Vec<Vec<Vec<NurbsSurface>>> = surfaces
+        .iter()
+        .map(|loops| {
+            loops
+                .iter()
+                .map(|faces| faces.iter().map(NurbsSurface::from_piecewise).collect())
+                .collect::<Result<_>>()
+        })
+        .collect::<Result<_>>()?;
+    let mut topology = Topology::new(transport, profile, &nurbs, images.as_ref());
+    let mut faces = Vec::new();
+    let mut brep_faces = Vec::new();
+    for (j, framed) in transport.pieces.iter().enumerate() {
+        let mut global_edge = 0;
+        for (l, lp) in profile.loops.iter().enumerate() {
+            for e in 0..lp.edges.len() {
+                let reversed = lp.closed && ((lp.area > 0.0) != (l == 0));
+                brep_faces.push(topology.lateral_face(j, l, e, &nurbs[j][l][e], !reversed));
+                faces.push(Face {
+                    kind: FaceKind::Swept,
+                    surface: Some(surfaces[j][l][e].clone()),
+                    plane: None,
+                    loops: Vec::new(),
+                    spine_edge: framed.piece.edge,
+                    profile_edge: global_edge,
+                    profile_loop: l,
+                    round_corner: framed.piece.corner.is_some(),
+                    reversed,
+                });
+                global_edge += 1;
+            }
+        }
+    }
+    let capped = !transport.closed && profile.loops[0].closed;
+    if capped && solid {
+        for end in [false, true] {
+            let (face, brep_face) = topology.cap(end, transport, profile, placement)?;
+            faces.push(face);
+            brep_faces.push(brep_face);
+        }
+    }
+    let closed_shell = solid && profile.loops[0].closed;
+    let report = SweepReport {
+        spine_distance: transport
+            .pieces
+            .iter()
+            .map(|p| p.distance)
+            .fold(0.0, f64::max)
+            * placement.scale,
+        rmf_angle_error: transport
+            .pieces
+            .iter()
+            .map(|p| p.angle_error)
+            .fold(0.0, f64::max),
+        max_parameter_cosine: max_cosine,
+        singularity_margin: margin,
+        face_count: faces.len(),
+        corner_turn: corner_turn(transport),
+        seam_gap,
+        joint_gap,
+    };
+    Ok(Shape {
+        faces,
+        brep: Brep {
+            vertices: topology.vertices,
+            edges: topology.edges,
+            faces: brep_faces,
+            closed: closed_shell,
+        },
+        solid: closed_shell,
+        report,
+        spine: transport
+            .pieces
+            .iter()
+            .map(|p| placement.curve(&p.spine))
+            .collect(),
+    })
+}
+
+/// A closed wire's closing turn as a map of the profile's edges onto themselves (the
+/// identity for an open wire: `None`).
+fn closure_images(transport: &Transport, profile: &Profile) -> Result<Option<Vec<Vec<EdgeImage>>>> {
+    if !transport.closed {
+        return Ok(None);
+    }
+    let turn = transport.closing_turn;
+    let identity = turn.abs() <= 1e-9;
+    let images = if identity {
+        Some(
+            profile
+                .loops
+                .iter()
+                .enumerate()
+                .map(|(l, lp)| (0..lp.edges.len()).map(|e| (l, e, 0.0)).collect())
+                .collect(),
+        )
+    } else {
+        profile.symmetry(turn)
+    };
+    let Some(images) = images else {
+        return invalid!(
+            "closure_symmetry: the frame closes turned by {:.6} rad (a multiple of 2π/k), but \
+             that turn does not map the profile onto itself edge by edge (each edge onto one \
+             with the same parameterization); use closure_symmetry = 1 or a symmetric profile",
+            turn
+        );
+    };
+    for (l, lp) in profile.loops.iter().enumerate() {
+        if !lp.closed
+            && images[l]
+                .iter()
+                .enumerate()
+                .any(|(e, &(l2, e2, _))| l2 != l || e2 != e)
+        {
+            return invalid!(
+                "closure_symmetry: an open profile closes only without a turn, but the frame \
+                 closes turned by {turn:.6} rad"
+            );
+        }
+    }
+    Ok(Some(images))
+}
+
+/// Largest distance between the sections where a closed wire closes.
+fn seam_gap(
+    surfaces: &[Vec<Vec<PiecewiseSurface>>],
+    profile: &Profile,
+    images: Option<&Vec<Vec<EdgeImage>>>,
+) -> f64 {
+    let Some(images) = images else { return 0.0 };
+    let last = surfaces.len() - 1;
+    let mut gap = 0.0f64;
+    for (l, lp) in profile.loops.iter().enumerate() {
+        for e in 0..lp.edges.len() {
+            let (l2, e2, shift) = images[l][e];
+            let (end, start) = (&surfaces[last][l][e], &surfaces[0][l2][e2]);
+            let v1 = end.domain_v().1;
+            let v0 = start.domain_v().0;
+            for u in grid_parameters(end.u_breaks(), COSINE_SAMPLES) {
+                gap = gap.max(end.eval(u, v1).distance(start.eval(u + shift, v0)));
+            }
+        }
+    }
+    gap
+}
+
+/// Largest distance between the end section of each piece and the start section of the
+/// next (the same profile edge, the same parameter).
+fn joint_gap(surfaces: &[Vec<Vec<PiecewiseSurface>>]) -> f64 {
+    let mut gap = 0.0f64;
+    for pair in surfaces.windows(2) {
+        for (before, after) in pair[0].iter().flatten().zip(pair[1].iter().flatten()) {
+            let (v1, v0) = (before.domain_v().1, after.domain_v().0);
+            for u in grid_parameters(before.u_breaks(), COSINE_SAMPLES) {
+                gap = gap.max(before.eval(u, v1).distance(after.eval(u, v0)));
+            }
+        }
+    }
+    gap
+}
+
+fn max_parameter_cosine(s: &PiecewiseSurface) -> f64 {
+    let us = grid_parameters(s.u_breaks(), COSINE_SAMPLES);
+    let vs = grid_parameters(s.v_breaks(), COSINE_SAMPLES);
+    us.iter()
+        .flat_map(|&u| vs.iter().map(move |&v| (u, v)))
+        .map(|(u, v)| parameter_line_cosine(&s.eval_jet(u, v)))
+        .filter(|c| c.is_finite())
+        .fold(0.0, f64::max)
+}
+
+/// v turned about the unit axis by θ (Rodrigues).
+fn rotate(v: DVec3, axis: DVec3, theta: f64) -> DVec3 {
+    let (s, c) = theta.sin_cos();
+    v * c + axis.cross(v) * s + axis * axis.dot(v) * (1.0 - c)
+}
+
+/// The frame turned by the minimal rotation taking its tangent to `tangent`.
+fn minimal_rotation(frame: &Frame, tangent: DVec3) -> DVec3 {
+    let axis = frame.tangent.cross(tangent);
+    if axis.length() == 0.0 {
+        return frame.f2;
+    }
+    let theta = axis.length().atan2(frame.tangent.dot(tangent));
+    rotate(frame.f2, axis.normalize(), theta)
+}
+
+/// Largest turn about the tangent across corners (see [`SweepReport::corner_turn`]).
+fn corner_turn(transport: &Transport) -> f64 {
+    let pieces = &transport.pieces;
+    let m = pieces.len();
+    let turn = |before: &Frame, after: &Frame| {
+        let carried =
+            Frame::from_tangent_normal(after.tangent, minimal_rotation(before, after.tangent));
+        angle_about_tangent(&carried, after).abs()
+    };
+    let mut worst = 0.0f64;
+    for (i, p) in pieces.iter().enumerate() {
+        if p.piece.corner.is_some() {
+            // Across the elbow: the arc's RMF is the rotation about its axis by its angle.
+            if let Geometry::Arc(arc) = &p.piece.geometry {
+                let carried = rotate(p.start.f2, arc.normal, arc.angle);
+                let carried = Frame::from_tangent_normal(p.end.tangent, carried);
+                worst = worst.max(angle_about_tangent(&carried, &p.end).abs());
+            }
+        }
+        if p.miters[1].is_some() {
+            let next = &pieces[(i + 1) % m];
+            worst = worst.max(turn(&p.end, &next.start));
+        }
+    }
+    worst
+}
+
+/// Vertices and edges shared by the faces (module notes).
+struct Topology<'a> {
+    vertices: Vec<DVec3>,
+    edges: Vec<BrepEdge>,
+    /// Section edges [station][loop][edge] (a closed wire has no station M of its own).
+    sections: Vec<Vec<Vec<usize>>>,
+    /// Spine edges [piece][loop][vertex].
+    spines: Vec<Vec<Vec<usize>>>,
+    images: Option<&'a Vec<Vec<EdgeImage>>>,
+    profile: &'a Profile,
+    stations: usize,
+}
+
+impl<'a> Topology<'a> {
+    fn new(
+        transport: &Transport,
+        profile: &'a Profile,
+        nurbs: &[Vec<Vec<NurbsSurface>>],
+        images: Option<&'a Vec<Vec<EdgeImage>>>,
+    ) -> Self {
+        let m = transport.pieces.len();
+        let stations = if transport.closed { m } else { m + 1 };
+        let mut t = Topology {
+            vertices: Vec::new(),
+            edges: Vec::new(),
+            sections: Vec::new(),
+            spines: Vec::new(),
+            images,
+            profile,
+            stations,
+        };
+        // Vertices [station][loop][vertex].
+        let mut vertex: Vec<Vec<Vec<usize>>> = Vec::with_capacity(stations);
+        for k in 0..stations {
+            let mut loops = Vec::new();
+            for (l, lp) in profile.loops.iter().enumerate() {
+                let count = lp.edges.len() + usize::from(!lp.closed);
+                let ids = (0..count)
+                    .map(|v| {
+                        let (face, at_end) = if k < m {
+                            (&nurbs[k][l], false)
+                        } else {
+                            (&nurbs[m - 1][l], true)
+                        };
+                        let (e, last_u) = if v < lp.edges.len() {
+                            (v, false)
+                        } else {
+                            (v - 1, true)
+                        };
+                        let s = &face[e];
+                        let i = if last_u { s.pole_count_u - 1 } else { 0 };
+                        let j = if at_end { s.pole_count_v - 1 } else { 0 };
+                        t.vertices.push(s.poles[i * s.pole_count_v + j]);
+                        t.vertices.len() - 1
+                    })
+                    .collect();
+                loops.push(ids);
+            }
+            vertex.push(loops);
+        }
+        let vertex_at = |k: usize, l: usize, v: usize| -> usize {
+            if k < stations {
+                return vertex[k][l][v];
+            }
+            // A closed wire's station M: the image of the vertex at station 0.
+            let lp = &profile.loops[l];
+            match images {
+                Some(images) if v < lp.edges.len() => {
+                    let (l2, e2, _) = images[l][v];
+                    vertex[0][l2][e2]
+                }
+                _ => vertex[0][l][v],
+            }
+        };
+        // Section edges.
+        for k in 0..stations {
+            let mut loops = Vec::new();
+            for (l, lp) in profile.loops.iter().enumerate() {
+                let n = lp.edges.len();
+                let ids = (0..n)
+                    .map(|e| {
+                        let (s, side) = if k < m {
+                            (&nurbs[k][l][e], 0)
+                        } else {
+                            (&nurbs[m - 1][l][e], 2)
+                        };
+                        let curve = boundaries(s)[side].curve.clone();
+                        let next = if lp.closed { (e + 1) % n } else { e + 1 };
+                        t.edges.push(BrepEdge {
+                            curve,
+                            start: vertex[k][l][e],
+                            end: vertex[k][l][next],
+                        });
+                        t.edges.len() - 1
+                    })
+                    .collect();
+                loops.push(ids);
+            }
+            t.sections.push(loops);
+        }
+        // Spine edges.
+        for (j, faces) in nurbs.iter().enumerate().take(m) {
+            let mut loops = Vec::new();
+            for (l, lp) in profile.loops.iter().enumerate() {
+                let n = lp.edges.len();
+                let count = n + usize::from(!lp.closed);
+                let ids = (0..count)
+                    .map(|v| {
+                        let (s, side) = if v < n {
+                            (&faces[l][v], 3)
+                        } else {
+                            (&faces[l][n - 1], 1)
+                        };
+                        t.edges.push(BrepEdge {
+                            curve: boundaries(s)[side].curve.clone(),
+                            start: vertex_at(j, l, v),
+                            end: vertex_at(j + 1, l, v),
+                        });
+                        t.edges.len() - 1
+                    })
+                    .collect();
+                loops.push(ids);
+            }
+            t.spines.push(loops);
+        }
+        t
+    }
+
+    /// The lateral face (j, l, e): its four sides counter-clockwise in (u, v).
+    fn lateral_face(
+        &mut self,
+        j: usize,
+        l: usize,
+        e: usize,
+        s: &NurbsSurface,
+        same_sense: bool,
+    ) -> BrepFace {
+        let lp = &self.profile.loops[l];
+        let n = lp.edges.len();
+        let next = if lp.closed { (e + 1) % n } else { e + 1 };
+        let sides = boundaries(s);
+        let line = |k: usize| {
+            let (u, v) = sides[k].origin;
+            if k % 2 == 1 {
+                spine_pcurve(u, &s.knots_v)
+            } else {
+                PCurve::Line {
+                    origin: (u, v),
+                    direction: sides[k].direction,
+                }
+            }
+        };
+        let (top_edge, shift) = if j + 1 < self.stations {
+            (self.sections[j + 1][l][e], 0.0)
+        } else {
+            match self.images {
+                Some(images) => {
+                    let (l2, e2, shift) = images[l][e];
+                    (self.sections[0][l2][e2], shift)
+                }
+                None => (self.sections[0][l][e], 0.0),
+            }
+        };
+        let top = PCurve::Line {
+            origin: (sides[2].origin.0 - shift, sides[2].origin.1),
+            direction: sides[2].direction,
+        };
+        let uses = vec![
+            BrepUse {
+                edge: self.sections[j][l][e],
+                forward: true,
+                pcurve: Some(line(0)),
+            },
+            BrepUse {
+                edge: self.spines[j][l][next],
+                forward: true,
+                pcurve: Some(line(1)),
+            },
+            BrepUse {
+                edge: top_edge,
+                forward: false,
+                pcurve: Some(top),
+            },
+            BrepUse {
+                edge: self.spines[j][l][e],
+                forward: false,
+                pcurve: Some(line(3)),
+            },
+        ];
+        BrepFace {
+            surface: BrepSurface::Nurbs(s.clone()),
+            same_sense,
+            bounds: vec![BrepBound { uses, outer: true }],
+        }
+    }
+
+    /// The cap at the start (`end` false) or the end of an open wire.
+    fn cap(
+        &mut self,
+        end: bool,
+        transport: &Transport,
+        profile: &Profile,
+        placement: Placement,
+    ) -> Result<(Face, BrepFace)> {
+        let m = transport.pieces.len();
+        let (station, framed) = if end {
+            (m, &transport.pieces[m - 1])
+        } else {
+            (0, &transport.pieces[0])
+        };
+        let frame = if end { framed.end } else { framed.start };
+        let origin = if end {
+            framed.piece.geometry.end()
+        } else {
+            framed.piece.geometry.start()
+        };
+        let normal = if end { frame.tangent } else { -frame.tangent };
+        let mut bounds = Vec::new();
+        let mut loops = Vec::new();
+        for (l, lp) in profile.loops.iter().enumerate() {
+            let counter_clockwise = lp.area > 0.0;
+            // Outer loops run counter-clockwise about the outward normal, holes clockwise;
+            // the normal is f₂ × f₃ at the end and its opposite at the start.
+            let forward = (l == 0) == (counter_clockwise == end);
+            let mut uses: Vec<BrepUse> = lp
+                .edges
+                .iter()
+                .enumerate()
+                .map(|(e, edge)| BrepUse {
+                    edge: self.sections[station][l][e],
+                    forward,
+                    pcurve: Some(PCurve::Curve(planar_pcurve(edge, placement.scale, !end))),
+                })
+                .collect();
+            if !forward {
+                uses.reverse();
+            }
+            loops.push(loop_curve(&uses, &self.edges)?);
+            bounds.push(BrepBound {
+                uses,
+                outer: l == 0,
+            });
+        }
+        let origin = placement.point(origin);
+        let face = Face {
+            kind: FaceKind::Plane,
+            surface: None,
+            plane: Some((origin, normal)),
+            loops,
+            spine_edge: framed.piece.edge,
+            profile_edge: 0,
+            profile_loop: 0,
+            round_corner: false,
+            reversed: false,
+        };
+        let brep = BrepFace {
+            surface: BrepSurface::Plane {
+                origin,
+                normal,
+                x_axis: frame.f2,
+            },
+            same_sense: true,
+            bounds,
+        };
+        Ok((face, brep))
+    }
+}
+
+/// The parameter line u = const of a spine edge: a `LINE`, or for a face of several spans
+/// along the spine the same line as a degree-1 B-spline with knots at the spans, so that
+/// OpenCascade's adaptive integration (BRepGProp with a tolerance) splits there.
+fn spine_pcurve(u: f64, knots_v: &[f64]) -> PCurve {
+    let mut breaks = knots_v.to_vec();
+    breaks.dedup();
+    if breaks.len() == 2 {
+        return PCurve::Line {
+            origin: (u, 0.0),
+            direction: (0.0, 1.0),
+        };
+    }
+    let mut knots = vec![breaks[0]];
+    knots.extend_from_slice(&breaks);
+    knots.push(breaks[breaks.len() - 1]);
+    let poles = breaks.iter().map(|&v| DVec3::new(u, v, 0.0)).collect();
+    PCurve::Curve(NurbsCurve::new(1, poles, None, knots).expect("increasing breaks"))
+}
+
+/// A profile edge as a curve in the cap's plane coordinates (x along f₂, y along the
+/// normal × f₂: f₃ at the end, −f₃ at the start), in the caller's units.
+fn planar_pcurve(edge: &PiecewiseCurve, scale: f64, flip: bool) -> NurbsCurve {
+    let y = if flip { -1.0 } else { 1.0 };
+    let segments = edge
+        .segments()
+        .iter()
+        .map(|s| {
+            let h = s
+                .homogeneous()
+                .iter()
+                .map(|h| DVec4::new(h.x * scale, h.y * scale * y, 0.0, h.w))
+                .collect();
+            RationalBezierCurve::from_homogeneous(h).expect("finite")
+        })
+        .collect();
+    let curve = PiecewiseCurve::new(segments, edge.breaks().to_vec()).expect("same breaks");
+    NurbsCurve::from_piecewise(&curve).expect("a continuous profile edge")
+}
+
+/// The closed 3-D curve of a cap's bound: its edges' curves in the order and direction of
+/// the uses.
+fn loop_curve(uses: &[BrepUse], edges: &[BrepEdge]) -> Result<PiecewiseCurve> {
+    let mut segments: Vec<RationalBezierCurve> = Vec::new();
+    let mut breaks = vec![0.0];
+    for u in uses {
+        let piece = edges[u.edge].curve.to_piecewise()?;
+        let piece = if u.forward {
+            piece
+        } else {
+            super::edge::reversed(&piece)
+        };
+        let (lo, _) = piece.domain();
+        let offset = breaks[breaks.len() - 1] - lo;
+        segments.extend_from_slice(piece.segments());
+        breaks.extend(piece.breaks()[1..].iter().map(|b| b + offset));
+    }
+    PiecewiseCurve::new(segments, breaks)
+}

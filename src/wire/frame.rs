@@ -1,0 +1,641 @@
+//! One rotation-minimizing frame (f₂, f₃) along the whole wire, carried from the start
+//! piece by piece:
+//!
+//! * along a line the RMF is constant;
+//! * along a circular arc it keeps its coefficients (a, b) in the Frenet frame,
+//!   f₂ = a N + b B with N the principal normal and B the arc's normal (a planar curve has
+//!   no torsion, so its Frenet frame is rotation-minimizing). With N = (c − x)/R this frame
+//!   is rational of degree 2 with the arc's own weights — the sweep of a rational profile is
+//!   then a rational patch of degree (m, 2), an exact torus for a circle;
+//! * along any other curve, the PH cubic spline that approximates it within the tolerance
+//!   (Mäurer & Jüttler Theorem 10) carries its rational RMF (29) with the biquadratic W of
+//!   (36)–(41), exact at the ends, started from the frame that arrives;
+//! * at a G1 joint the frame is projected onto the next normal plane (the identity when the
+//!   tangents agree: no twist at joints); at a miter it is reflected in the miter plane.
+//!
+//! Twist and closure. A caller's `twist` is added as a turn linear in arc length over the
+//! whole wire. A closed wire's RMF comes back turned by its holonomy Δ; the smallest turn φ
+//! that closes it modulo 2π/k (k the profile's symmetry) is added in the same way, as the
+//! closed-spine sweep of [`crate::ph_cubic::rational_rmf`] does — spread over every piece
+//! except miter legs, whose frame must stay constant for the miter cut to be exact. On PH
+//! pieces the turn enters the Hermite data of W; on lines and arcs the base frame is turned
+//! by 2 arctan W with W of the same family fitted to tan(φ(s)/2), so the frames stay
+//! rational and exact at every joint.
+//!
+//! Before anything is built the sweep is checked for folding (Cor. 7): g = 1 − κ c·n > 0
+//! everywhere — along arcs g = 1 − h(N)/R with h the profile's support function, along PH
+//! pieces the margin of [`crate::ph_cubic::analysis`] — and each miter leg must be longer
+//! than the profile's cuts at its ends.
+
+use super::edge::{Arc, Chain, Geometry, Joint, JointKind, Piece};
+use super::profile::Profile;
+use crate::bezier::{PiecewiseCurve, RationalBezierCurve};
+use crate::error::{invalid, Result, ResultExt};
+use crate::frames::metrics::angle_about_tangent;
+use crate::frames::rational::RationalFrames;
+use crate::frames::Frame;
+use crate::math::{normal_plane_unit, orthogonalized, orthonormal_to, signed_angle};
+use crate::ph_cubic::accuracy::angle_errors;
+use crate::ph_cubic::analysis::ProfileSurface;
+use crate::ph_cubic::approximate::ph_spline_approximate;
+use crate::ph_cubic::base_frame::{FrameNumerators, FramePieces};
+use crate::ph_cubic::biquadratic::{fit, AngleHermite, Biquadratic};
+use crate::ph_cubic::exact_rmf::ExactRmf;
+use crate::ph_cubic::ph_cubics;
+use crate::ph_cubic::rational_rmf::{ph_rational_rmf, RmfOptions};
+use glam::{DVec2, DVec3};
+use std::f64::consts::{FRAC_PI_2, PI};
+
+/// Samples per segment at which twisted lines and arcs are compared with their target.
+const ERROR_SAMPLES: usize = 64;
+
+/// Deepest halving of a twisted segment (2⁻¹⁶ of it).
+const MAX_HALVINGS: usize = 16;
+
+/// How the frame is set up (normalized coordinates).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct FrameOptions {
+    pub initial_normal: Option<DVec3>,
+    pub twist: f64,
+    /// Closed wires: k of 2π/k (≥ 1).
+    pub closure_symmetry: u32,
+    /// PH approximation of curves.
+    pub tolerance: f64,
+}
+
+/// The frame along one piece.
+#[derive(Clone, Debug)]
+pub(crate) enum PieceFrame {
+    /// An untwisted line: constant.
+    Constant { f2: DVec3, f3: DVec3 },
+    /// An untwisted arc: f₂ = a N + b B, f₃ = a B − b N.
+    Circular { a: f64, b: f64 },
+    /// Rational frames along the piece's spine curve (PH pieces, twisted lines and arcs).
+    Rational(RationalFrames),
+}
+
+/// A piece with its frame.
+#[derive(Clone, Debug)]
+pub(crate) struct Framed {
+    pub piece: Piece,
+    /// The curve swept along: the line, the arc, or the PH spline of a curve.
+    pub spine: PiecewiseCurve,
+    pub frame: PieceFrame,
+    pub start: Frame,
+    pub end: Frame,
+    pub length: f64,
+    /// Distance of the PH spline from the curve (0 for lines and arcs).
+    pub distance: f64,
+    /// Largest angle between the frames and the exact (twisted) RMF.
+    pub angle_error: f64,
+    /// Miter planes (point, unit normal) cutting a straight leg at its start and end.
+    pub miters: [Option<(DVec3, DVec3)>; 2],
+}
+
+/// The framed pieces of a wire.
+#[derive(Clone, Debug)]
+pub(crate) struct Transport {
+    pub pieces: Vec<Framed>,
+    pub closed: bool,
+    /// Closed wires: the frame after the closing joint is the start frame turned by this
+    /// (a multiple of 2π/k up to rounding).
+    pub closing_turn: f64,
+}
+
+/// The spine curves and PH approximation distances of the pieces.
+fn spines(chain: &Chain, tolerance: f64) -> Result<Vec<(PiecewiseCurve, f64)>> {
+    chain
+        .pieces
+        .iter()
+        .map(|piece| {
+            Ok(match &piece.geometry {
+                Geometry::Line { a, b } => (line_curve(*a, *b), 0.0),
+                Geometry::Arc(arc) => (arc.curve(), 0.0),
+                Geometry::Curve(c) => {
+                    if is_ph_spline(c) {
+                        (c.clone(), 0.0)
+                    } else {
+                        let fit = ph_spline_approximate(c, c.breaks(), tolerance)
+                            .with_context(|| format!("edge {}", piece.edge))?;
+                        (fit.spline, fit.max_distance)
+                    }
+                }
+            })
+        })
+        .collect()
+}
+
+/// A curve that is already a PH cubic spline (cubic polynomial segments satisfying (17)).
+fn is_ph_spline(curve: &PiecewiseCurve) -> bool {
+    curve
+        .segments()
+        .iter()
+        .all(|s| s.degree() == 3 && s.is_polynomial())
+        && ph_cubics(curve).is_ok()
+}
+
+pub(crate) fn line_curve(a: DVec3, b: DVec3) -> PiecewiseCurve {
+    let line = RationalBezierCurve::polynomial(&[a, b]).expect("finite points");
+    PiecewiseCurve::new(vec![line], vec![0.0, 1.0]).expect("one segment")
+}
+
+/// The frame carried across a joint: reflected in a miter plane, projected onto the next
+/// normal plane.
+fn across(joint: &Joint, f2: DVec3) -> DVec3 {
+    let carried = match joint.kind {
+        JointKind::Miter { normal } => f2 - 2.0 * f2.dot(normal) * normal,
+        _ => f2,
+    };
+    orthogonalized(carried, joint.outgoing).normalize()
+}
+
+/// The coefficients (a, b) of f₂ in (N, B) at the start of an arc.
+fn arc_coefficients(arc: &Arc, f2: DVec3) -> (f64, f64) {
+    let (a, b) = (f2.dot(arc.principal_normal(0.0)), f2.dot(arc.normal));
+    let norm = a.hypot(b);
+    (a / norm, b / norm)
+}
+
+/// f₂ at the end of a piece without twist.
+fn carry(piece: &Piece, spine: &PiecewiseCurve, f2: DVec3) -> Result<DVec3> {
+    Ok(match &piece.geometry {
+        Geometry::Line { .. } => f2,
+        Geometry::Arc(arc) => {
+            let (a, b) = arc_coefficients(arc, f2);
+            a * arc.principal_normal(arc.angle) + b * arc.normal
+        }
+        Geometry::Curve(_) => {
+            let exact =
+                ExactRmf::new(spine, f2, 0.0).with_context(|| format!("edge {}", piece.edge))?;
+            exact.frame(spine.domain().1).f2
+        }
+    })
+}
+
+/// The default f₂ at the start: the unit normal of the plane through the start tangent
+/// and the wire's point farthest from the tangent line (the wire's plane for a planar
+/// wire), or any normal of a straight wire.
+fn default_normal(chain: &Chain) -> DVec3 {
+    let first = &chain.pieces[0].geometry;
+    let (p0, t0) = (first.start(), first.start_tangent());
+    let size = chain
+        .pieces
+        .iter()
+        .flat_map(|p| p.geometry.hull_points())
+        .fold(0.0f64, |m, p| m.max(p.distance(p0)));
+    let farthest = chain
+        .pieces
+        .iter()
+        .flat_map(|p| p.geometry.hull_points())
+        .map(|p| t0.cross(p - p0))
+        .fold(DVec3::ZERO, |best, c| {
+            if c.length() > best.length() {
+                c
+            } else {
+                best
+            }
+        });
+    if farthest.length() > 1e-9 * size {
+        farthest.normalize()
+    } else {
+        orthonormal_to(t0)
+    }
+}
+
+/// The planes cutting each piece at its start and end: miter planes, and the normal planes
+/// of curved edges at near-tangent joints (only lines are cut; they may not turn about
+/// the tangent).
+fn miters(chain: &Chain) -> Vec<[Option<(DVec3, DVec3)>; 2]> {
+    let m = chain.pieces.len();
+    // A miter cuts both legs; a near-tangent joint only its straight side.
+    let plane = |j: &Joint, line_side: bool| match j.kind {
+        JointKind::Miter { normal } => Some((j.point, normal)),
+        JointKind::NearTangent {
+            normal,
+            line_before,
+        } if line_before == line_side => Some((j.point, normal)),
+        _ => None,
+    };
+    (0..m)
+        .map(|i| {
+            let before = if i > 0 {
+                chain.joints.get(i - 1)
+            } else if chain.closed {
+                chain.joints.last()
+            } else {
+                None
+            };
+            [
+                before.and_then(|j| plane(j, false)),
+                chain.joints.get(i).and_then(|j| plane(j, true)),
+            ]
+        })
+        .collect()
+}
+
+/// The frame along the chain (module notes).
+pub(crate) fn transport(chain: &Chain, options: &FrameOptions) -> Result<Transport> {
+    let spines = spines(chain, options.tolerance)?;
+    let m = chain.pieces.len();
+    let first = &chain.pieces[0].geometry;
+    let t0 = first.start_tangent();
+    let f2_start = match options.initial_normal {
+        Some(n) => normal_plane_unit(n, t0, "initial_normal")?,
+        None => default_normal(chain),
+    };
+    let lengths: Vec<f64> = chain
+        .pieces
+        .iter()
+        .zip(&spines)
+        .map(|(p, (spine, _))| match &p.geometry {
+            // The arc length of a PH spline is a polynomial: exact.
+            Geometry::Curve(_) => ph_cubics(spine)
+                .map(|cubics| cubics.iter().map(|c| c.arc_length()).sum())
+                .unwrap_or_else(|_| spine.arc_length()),
+            g => g.length(),
+        })
+        .collect();
+    let miters = miters(chain);
+    let twistable: Vec<bool> = miters
+        .iter()
+        .map(|m| m[0].is_none() && m[1].is_none())
+        .collect();
+    // Pass 1: the RMF's holonomy of a closed wire.
+    let mut total_twist = options.twist;
+    if chain.closed {
+        let mut f2 = f2_start;
+        for ((piece, spine), joint) in chain.pieces.iter().zip(&spines).zip(&chain.joints).take(m) {
+            f2 = carry(piece, &spine.0, f2)?;
+            f2 = across(joint, f2);
+        }
+        let holonomy = signed_angle(f2_start, f2, t0);
+        let period = 2.0 * PI / options.closure_symmetry.max(1) as f64;
+        let residual = holonomy + options.twist;
+        total_twist = options.twist - residual + period * (residual / period).round();
+    }
+    let turnable: f64 = lengths
+        .iter()
+        .zip(&twistable)
+        .filter(|(_, &t)| t)
+        .map(|(l, _)| l)
+        .sum();
+    let rate = if total_twist == 0.0 {
+        0.0
+    } else if turnable > 0.0 {
+        total_twist / turnable
+    } else {
+        return invalid!(
+            "the frame must turn by {total_twist:.6} rad (twist and closure) but every edge is a \
+             miter leg, whose frame cannot turn; use round corners"
+        );
+    };
+    // Pass 2: the frames.
+    let mut pieces = Vec::with_capacity(m);
+    let mut f2 = f2_start;
+    for i in 0..m {
+        let piece = &chain.pieces[i];
+        let (spine, distance) = spines[i].clone();
+        let turn = if twistable[i] { rate * lengths[i] } else { 0.0 };
+        let framed = frame_piece(piece, spine, distance, lengths[i], f2, turn, miters[i])
+            .with_context(|| format!("edge {}", piece.edge))?;
+        f2 = framed.end.f2;
+        if let Some(joint) = chain.joints.get(i) {
+            f2 = across(joint, f2);
+        }
+        pieces.push(framed);
+    }
+    let closing_turn = if chain.closed {
+        signed_angle(f2_start, f2, t0)
+    } else {
+        0.0
+    };
+    Ok(Transport {
+        pieces,
+        closed: chain.closed,
+        closing_turn,
+    })
+}
+
+/// The frame along one piece starting at f₂, turned by `turn` in total (linear in arc
+/// length).
+fn frame_piece(
+    piece: &Piece,
+    spine: PiecewiseCurve,
+    distance: f64,
+    length: f64,
+    f2: DVec3,
+    turn: f64,
+    miters: [Option<(DVec3, DVec3)>; 2],
+) -> Result<Framed> {
+    let geometry = &piece.geometry;
+    let tangent = geometry.start_tangent();
+    let f2 = orthogonalized(f2, tangent).normalize();
+    let start = Frame::from_tangent_normal(tangent, f2);
+    let (frame, end, angle_error) = match geometry {
+        Geometry::Line { .. } if turn == 0.0 => {
+            (PieceFrame::Constant { f2, f3: start.f3 }, start, 0.0)
+        }
+        Geometry::Line { .. } => {
+            let base = FrameNumerators {
+                e2: vec![f2; 2],
+                e3: vec![start.f3; 2],
+                d: vec![1.0; 2],
+            };
+            let frames = turned_frames(spine.breaks(), &[base], &|_, v| turn * v, &|_, _| turn)?;
+            let error = max_error(&frames, |v| start.rotated(turn * v));
+            let end = frames.frame(1.0);
+            (PieceFrame::Rational(frames), end, error)
+        }
+        Geometry::Arc(arc) => {
+            let (a, b) = arc_coefficients(arc, f2);
+            let exact = |phi: f64| {
+                let n = arc.principal_normal(phi);
+                Frame::from_tangent_normal(arc.tangent(phi), a * n + b * arc.normal)
+            };
+            if turn == 0.0 {
+                (PieceFrame::Circular { a, b }, exact(arc.angle), 0.0)
+            } else {
+                let (frames, error) = twisted_arc(arc, &spine, a, b, turn)?;
+                let end = frames.frame(1.0);
+                (PieceFrame::Rational(frames), end, error)
+            }
+        }
+        Geometry::Curve(_) => {
+            let options = RmfOptions {
+                twist: turn,
+                ..RmfOptions::rmf(f2)
+            };
+            let rmf = ph_rational_rmf(&spine, &options)?;
+            let error = angle_errors(&spine, &rmf.frames)?.max;
+            let end = rmf.frames.frame(spine.domain().1);
+            (PieceFrame::Rational(rmf.frames), end, error)
+        }
+    };
+    Ok(Framed {
+        piece: piece.clone(),
+        spine,
+        frame,
+        start,
+        end,
+        length,
+        distance,
+        angle_error,
+        miters,
+    })
+}
+
+/// Rational frames along an arc (its segments on k/n), the RMF f₂ = aN + bB turned by
+/// `turn` linearly in arc length; with the largest angle to that target.
+fn twisted_arc(
+    arc: &Arc,
+    spine: &PiecewiseCurve,
+    a: f64,
+    b: f64,
+    turn: f64,
+) -> Result<(RationalFrames, f64)> {
+    let n = spine.segments().len();
+    let bases: Vec<FrameNumerators> = spine
+        .segments()
+        .iter()
+        .map(|s| arc_numerators(arc, s, a, b))
+        .collect();
+    let step = arc.angle / n as f64;
+    let phi = |k: usize, s: f64| {
+        let p = spine.segments()[k].eval(s) - arc.center;
+        k as f64 * step + signed_angle(arc.point(k as f64 * step) - arc.center, p, arc.normal)
+    };
+    let per_angle = turn / arc.angle;
+    let angle = |k: usize, s: f64| per_angle * phi(k, s);
+    let rate =
+        |k: usize, s: f64| per_angle * spine.segments()[k].eval_jet(s).d1.length() / arc.radius;
+    let frames = turned_frames(spine.breaks(), &bases, &angle, &rate)?;
+    let target = |v: f64| {
+        let (k, s) = spine.locate(v);
+        let p = phi(k, s);
+        let nrm = arc.principal_normal(p);
+        Frame::from_tangent_normal(arc.tangent(p), a * nrm + b * arc.normal).rotated(per_angle * p)
+    };
+    let error = max_error(&frames, target);
+    Ok((frames, error))
+}
+
+/// The arc's RMF numerators on one of its rational quadratic segments: with the segment's
+/// homogeneous points (w P, w), N = (w c − w P)/R, F₂ = aN + b w B, F₃ = a w B − b N, over w.
+pub(crate) fn arc_numerators(
+    arc: &Arc,
+    segment: &RationalBezierCurve,
+    a: f64,
+    b: f64,
+) -> FrameNumerators {
+    let h = segment.homogeneous();
+    let normals: Vec<DVec3> = h
+        .iter()
+        .map(|p| (arc.center * p.w - p.truncate()) / arc.radius)
+        .collect();
+    FrameNumerators {
+        e2: normals
+            .iter()
+            .zip(h)
+            .map(|(&nrm, p)| a * nrm + b * p.w * arc.normal)
+            .collect(),
+        e3: normals
+            .iter()
+            .zip(h)
+            .map(|(&nrm, p)| a * p.w * arc.normal - b * nrm)
+            .collect(),
+        d: h.iter().map(|p| p.w).collect(),
+    }
+}
+
+/// Largest angle between the frames and a target frame along [0, 1].
+fn max_error(frames: &RationalFrames, target: impl Fn(f64) -> Frame) -> f64 {
+    let breaks = frames.breaks();
+    let (lo, hi) = (breaks[0], breaks[breaks.len() - 1]);
+    let samples = ERROR_SAMPLES * frames.segments().len();
+    (0..=samples)
+        .map(|i| lo + (hi - lo) * i as f64 / samples as f64)
+        .map(|v| angle_about_tangent(&target(v), &frames.frame(v)).abs())
+        .fold(0.0, f64::max)
+}
+
+/// The base frames of the segments (numerators on [0, 1] each) turned by 2 arctan W ≈ the
+/// target `angle(k, s)`, W of the family (37) fitted to the rate `rate(k, s)` (local
+/// parameter), on pieces halved until 2 arctan W is within [`TWIST_ACCURACY`] of the target
+/// (and turns by at most π/2); exact at the ends of every piece.
+fn turned_frames(
+    breaks: &[f64],
+    bases: &[FrameNumerators],
+    angle: &dyn Fn(usize, f64) -> f64,
+    rate: &dyn Fn(usize, f64) -> f64,
+) -> Result<RationalFrames> {
+    let mut pieces = FramePieces::new(breaks);
+    for (k, base) in bases.iter().enumerate() {
+        let mut parts = Vec::new();
+        fit_parts(&|s| angle(k, s), &|s| rate(k, s), 0.0, 1.0, 0, &mut parts)?;
+        for (v0, v1, w) in parts {
+            let (g0, g1) = (angle(k, v0), angle(k, v1));
+            let turned = base.restricted(v0, v1).turned(&w.numerator, &w.denominator);
+            let mut segments = turned.positive_pieces()?;
+            for (_, _, segment) in segments.iter_mut() {
+                segment.rotate(0.5 * (g0 + g1));
+            }
+            pieces.push_all(k, v0, v1, segments);
+        }
+    }
+    pieces.into_frames()
+}
+
+/// Largest angle (radians) between a twisted line's or arc's rational frame and its target.
+const TWIST_ACCURACY: f64 = 1e-10;
+
+/// The W of the part [a, b] (the target angle less its mean there, over 2), halved while it
+/// turns by more than π/2 or misses the target by more than [`TWIST_ACCURACY`] (sampled).
+fn fit_parts(
+    angle: &dyn Fn(f64) -> f64,
+    rate: &dyn Fn(f64) -> f64,
+    a: f64,
+    b: f64,
+    depth: usize,
+    out: &mut Vec<(f64, f64, Biquadratic)>,
+) -> Result<()> {
+    let (g0, g1) = (angle(a), angle(b));
+    let mid = 0.5 * (g0 + g1);
+    let length = b - a;
+    let local = |u: f64| rate(a + u * length) * length;
+    let quarter = 0.25 * (g1 - g0);
+    let (w0, w1) = (-quarter.tan(), quarter.tan());
+    let slope = |w: f64, r: f64| 0.5 * (1.0 + w * w) * r;
+    let data = AngleHermite {
+        w0,
+        w1,
+        s0: slope(w0, local(0.0)),
+        s1: slope(w1, local(1.0)),
+    };
+    let w = fit(data, local)?.w;
+    let miss = (1..ERROR_SAMPLES)
+        .map(|i| i as f64 / ERROR_SAMPLES as f64)
+        .map(|u| (2.0 * w.eval(u).atan() + mid - angle(a + u * length)).abs())
+        .fold(0.0, f64::max);
+    let turns_too_much = (g1 - g0).abs() > FRAC_PI_2;
+    if (turns_too_much || miss > TWIST_ACCURACY) && depth < MAX_HALVINGS {
+        let m = 0.5 * (a + b);
+        fit_parts(angle, rate, a, m, depth + 1, out)?;
+        return fit_parts(angle, rate, m, b, depth + 1, out);
+    }
+    out.push((a, b, w));
+    Ok(())
+}
+
+/// The least singularity margin of the sweep (Cor. 7; see the module notes), or the
+/// refusal naming the edge or joint where the profile reaches past the centre of
+/// curvature. `unit` converts lengths to the caller's units for messages.
+pub(crate) fn singularity_margin(
+    transport: &Transport,
+    profile: &Profile,
+    unit: f64,
+) -> Result<f64> {
+    let mut least = 1.0f64;
+    for framed in &transport.pieces {
+        let piece = &framed.piece;
+        let margin = match (&piece.geometry, &framed.frame) {
+            (Geometry::Line { .. }, PieceFrame::Constant { f2, f3 }) => {
+                miter_margin(framed, *f2, *f3, profile, unit)?
+            }
+            (Geometry::Line { .. }, _) => 1.0,
+            (Geometry::Arc(arc), PieceFrame::Circular { a, b }) => {
+                let reach = profile.support(DVec2::new(*a, -*b));
+                let margin = 1.0 - reach / arc.radius;
+                if margin <= 0.0 {
+                    return Err(fold_at_arc(piece, arc.radius, reach, unit));
+                }
+                margin
+            }
+            (_, PieceFrame::Rational(frames)) => {
+                let mut least = f64::INFINITY;
+                for (_, _, edge) in profile.edges() {
+                    let analysis = ProfileSurface::new(&framed.spine, frames, edge)
+                        .with_context(|| format!("edge {}", piece.edge))?;
+                    let m = analysis.singularity_margin();
+                    if m.margin <= 0.0 {
+                        if let Geometry::Arc(arc) = &piece.geometry {
+                            let reach = arc.radius * (1.0 - m.margin);
+                            return Err(fold_at_arc(piece, arc.radius, reach, unit));
+                        }
+                        return invalid!(
+                            "edge {}: the profile reaches past the spine's centre of curvature \
+                             near its parameter {:.6} (singularity margin g = {:.3e}, Mäurer & \
+                             Jüttler Cor. 7): the sweep would fold; the profile may be at most \
+                             {:.6} times as large there",
+                            piece.edge,
+                            m.v,
+                            m.margin,
+                            1.0 / (1.0 - m.margin)
+                        );
+                    }
+                    least = least.min(m.margin);
+                }
+                least
+            }
+            _ => 1.0,
+        };
+        least = least.min(margin);
+    }
+    Ok(least)
+}
+
+fn fold_at_arc(piece: &Piece, radius: f64, reach: f64, unit: f64) -> crate::Error {
+    crate::Error::invalid_input(match &piece.corner {
+        Some(joint) => format!(
+            "{joint}: the corner radius {} is smaller than the profile's extent {} towards the \
+             corner's centre: the sweep would fold (Mäurer & Jüttler Cor. 7); the smallest \
+             radius allowed is {}",
+            radius * unit,
+            reach * unit,
+            reach * unit
+        ),
+        None => format!(
+            "edge {}: the arc's radius {} is smaller than the profile's extent {} towards its \
+             centre: the sweep would fold (Mäurer & Jüttler Cor. 7); the profile may reach at \
+             most {} towards the centre",
+            piece.edge,
+            radius * unit,
+            reach * unit,
+            radius * unit
+        ),
+    })
+}
+
+/// A straight leg cut by miter planes: the length of its shortest ruling over its length
+/// (≤ 0: the cuts cross inside the profile).
+fn miter_margin(
+    framed: &Framed,
+    f2: DVec3,
+    f3: DVec3,
+    profile: &Profile,
+    unit: f64,
+) -> Result<f64> {
+    let t = framed.start.tangent;
+    // The offset along t from a section to the miter plane is c·q, q = −(f₂·m, f₃·m)/(t·m).
+    let offset = |plane: Option<(DVec3, DVec3)>| {
+        plane.map_or(DVec2::ZERO, |(_, m)| {
+            -DVec2::new(f2.dot(m), f3.dot(m)) / t.dot(m)
+        })
+    };
+    let g = offset(framed.miters[1]) - offset(framed.miters[0]);
+    if g == DVec2::ZERO {
+        return Ok(1.0);
+    }
+    let shortening = profile.support(-g);
+    let margin = 1.0 - shortening / framed.length;
+    if margin <= 0.0 {
+        return invalid!(
+            "edge {}: the miter cuts at its ends cross inside the profile: the edge is {} long \
+             but its cuts take {}; the profile may be at most {:.6} times as large",
+            framed.piece.edge,
+            framed.length * unit,
+            shortening * unit,
+            framed.length / shortening
+        );
+    }
+    Ok(margin)
+}

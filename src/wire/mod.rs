@@ -1,0 +1,281 @@
+//! Sweeps along the paths CAD users draw: wires of lines, circular arcs and curves, with
+//! smooth and sharp joints, open or closed, giving closed solids (or sheets) whose every
+//! face is exact rational geometry.
+//!
+//! | module | computes |
+//! | --- | --- |
+//! | `edge` | the wire's edges oriented and joined; lines and arcs recognised in curve data; joints classified (G1, corner, reversal) |
+//! | `corner` | sharp joints resolved: round (a tangent circular arc, solved on curves too) or miter (the bisecting plane) |
+//! | `profile` | the cross-section's loops split at their corners, their orientation, extent (support function) and symmetry |
+//! | `frame` | one RMF along the whole wire: constant on lines, the rational frame of arcs, the PH cubic rational RMF (Mäurer & Jüttler (29), (36)–(41)) on curves; twist, closure, the Cor. 7 margin |
+//! | `brep` | the faces (exact cylinders, tori, sweeps (42)), planar caps, shared edges, orientation; the accuracy report |
+//!
+//! The work is done in coordinates centred on the wire and scaled by a power of two to its
+//! size, so that the result does not depend on where the wire is or how large it is
+//! (1e-200 … 1e200), and mapped back exactly at the end.
+
+mod brep;
+mod corner;
+mod edge;
+mod frame;
+mod profile;
+
+pub use brep::{Face, FaceKind, Shape, SweepReport};
+
+use crate::bezier::PiecewiseCurve;
+use crate::error::{invalid, Result};
+use crate::math::robust_length;
+use corner::CornerMode;
+use edge::RawEdge;
+use frame::FrameOptions;
+use glam::DVec3;
+use profile::Profile;
+
+/// Most lateral faces one sweep may have (spine pieces × profile edges).
+pub const MAX_FACES: usize = 1 << 16;
+
+/// One edge of a wire, in either orientation.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Edge {
+    /// The straight line from `from` to `to`.
+    Line { from: DVec3, to: DVec3 },
+    /// The circular arc from `start` through `through` to `end`.
+    Arc {
+        start: DVec3,
+        through: DVec3,
+        end: DVec3,
+    },
+    /// Any curve on its whole domain (NURBS data, PH, Möbius or RRMF curves, ...). Its
+    /// segments that are exactly straight or circular are swept as lines and arcs.
+    Curve(PiecewiseCurve),
+}
+
+/// How sharp (G0) joints of the wire are resolved.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Corner {
+    /// A circular arc of this radius tangent to both edges (`None`: 1.5 times the
+    /// profile's largest distance from the spine).
+    Round(Option<f64>),
+    /// Both legs cut by the plane bisecting the corner; straight legs only.
+    Miter,
+}
+
+/// The options of a wire sweep.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WireSweep {
+    /// Largest distance of the PH cubic spline from a curve edge (absolute; default 1e-4).
+    pub tolerance: f64,
+    /// Largest gap between consecutive edge ends, relative to the wire's size (its
+    /// bounding-box diagonal); default 1e-7. Also the gap within which a profile loop is
+    /// closed, relative to the profile's size.
+    pub join_tolerance: f64,
+    pub corner: Corner,
+    /// f₂ at the wire's start, projected onto the normal plane. `None`: the normal of the
+    /// plane through the start tangent and the wire's point farthest from the tangent line
+    /// (the wire's plane for planar wires), or any normal for a straight wire.
+    pub initial_normal: Option<DVec3>,
+    /// Extra turn about the tangent over the whole wire, radians, linear in arc length.
+    pub twist: f64,
+    /// Closed wires: the frame closes modulo 2π/k (k ≥ 1; 0 is taken as 1).
+    pub closure_symmetry: u32,
+    /// A closed solid (the profile must be closed); otherwise the lateral faces only.
+    pub solid: bool,
+}
+
+impl Default for WireSweep {
+    fn default() -> Self {
+        Self {
+            tolerance: 1e-4,
+            join_tolerance: 1e-7,
+            corner: Corner::Round(None),
+            initial_normal: None,
+            twist: 0.0,
+            closure_symmetry: 0,
+            solid: true,
+        }
+    }
+}
+
+/// The range of wire sizes (bounding-box diagonals) taken: scaled by a power of two to 1,
+/// every coordinate stays a normal number.
+const MIN_SIZE: f64 = 1e-290;
+const MAX_SIZE: f64 = 1e290;
+
+/// The factor of the radius of a default round corner over the profile's radius.
+const DEFAULT_RADIUS_FACTOR: f64 = 1.5;
+
+/// The sweep of `profile` (with `holes`; planar curves in the normal plane, x ↦ f₂,
+/// y ↦ f₃, z = 0) along the wire of `edges` (see the module notes).
+pub fn sweep_wire(
+    edges: &[Edge],
+    profile: &PiecewiseCurve,
+    holes: &[PiecewiseCurve],
+    options: &WireSweep,
+) -> Result<Shape> {
+    check_options(options)?;
+    let points: Vec<DVec3> = edges.iter().flat_map(edge_points).collect();
+    if let Some((k, p)) = edges.iter().enumerate().find_map(|(k, e)| {
+        edge_points(e)
+            .into_iter()
+            .find(|p| !p.is_finite())
+            .map(|p| (k, p))
+    }) {
+        return invalid!("edge {k} has a non-finite point {p}");
+    }
+    if edges.is_empty() {
+        return invalid!("edges: a wire needs at least one edge");
+    }
+    let (lo, hi) = points
+        .iter()
+        .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), &p| {
+            (lo.min(p), hi.max(p))
+        });
+    // The diagonal without overflow or underflow in its squares.
+    let size = robust_length(0.5 * hi - 0.5 * lo) * 2.0;
+    if !(size > 0.0 && size.is_finite()) {
+        return invalid!("edges: the wire has no extent (size {size})");
+    }
+    if !(MIN_SIZE..=MAX_SIZE).contains(&size) {
+        return invalid!(
+            "edges: the wire's size {size:e} is outside [{MIN_SIZE:e}, {MAX_SIZE:e}] (its \
+             coordinates would not stay normal numbers)"
+        );
+    }
+    let center = 0.5 * lo + 0.5 * hi;
+    // A power of two: scaling by it is exact.
+    let scale = 2f64.powi(size.log2().round() as i32);
+    let unit = |p: DVec3| (p - center) / scale;
+    let raw: Vec<RawEdge> = edges
+        .iter()
+        .map(|e| match e {
+            Edge::Line { from, to } => RawEdge::Line(unit(*from), unit(*to)),
+            Edge::Arc {
+                start,
+                through,
+                end,
+            } => RawEdge::Arc(unit(*start), unit(*through), unit(*end)),
+            Edge::Curve(c) => RawEdge::Curve(normalized(c, 1.0 / scale, -center / scale)),
+        })
+        .collect();
+    let outer = normalized(profile, 1.0 / scale, DVec3::ZERO);
+    let holes: Vec<PiecewiseCurve> = holes
+        .iter()
+        .map(|h| normalized(h, 1.0 / scale, DVec3::ZERO))
+        .collect();
+    for (name, curve) in std::iter::once(("profile".to_string(), &outer)).chain(
+        holes
+            .iter()
+            .enumerate()
+            .map(|(k, h)| (format!("holes[{k}]"), h)),
+    ) {
+        if curve
+            .segments()
+            .iter()
+            .flat_map(|s| s.homogeneous())
+            .any(|h| !h.is_finite())
+        {
+            return invalid!(
+                "{name}: its coordinates are out of proportion to the wire's size {size:e} \
+                 (or not finite)"
+            );
+        }
+    }
+    let size_n = size / scale;
+    let units = edge::Units {
+        scale,
+        offset: center,
+    };
+    let chain = edge::chain(&raw, options.join_tolerance * size_n, size_n, units)?;
+    let profile = Profile::new(&outer, &holes, options.solid, options.join_tolerance, scale)?;
+    let mode = match options.corner {
+        Corner::Miter => CornerMode::Miter,
+        Corner::Round(Some(r)) => CornerMode::Round(r / scale),
+        Corner::Round(None) => CornerMode::Round(DEFAULT_RADIUS_FACTOR * profile.radius()),
+    };
+    let chain = edge::split_arcs(corner::resolve(chain, mode, scale, profile.radius())?);
+    let faces = chain.pieces.len().saturating_mul(profile.edge_count());
+    if faces > MAX_FACES {
+        return invalid!(
+            "the sweep would have {faces} lateral faces (spine pieces × profile edges), more \
+             than {MAX_FACES}"
+        );
+    }
+    let transport = frame::transport(
+        &chain,
+        &FrameOptions {
+            initial_normal: options.initial_normal.filter(|n| *n != DVec3::ZERO),
+            twist: options.twist,
+            closure_symmetry: options.closure_symmetry.max(1),
+            tolerance: options.tolerance / scale,
+        },
+    )?;
+    let margin = frame::singularity_margin(&transport, &profile, scale)?;
+    brep::build(
+        &transport,
+        &profile,
+        options.solid,
+        brep::Placement {
+            scale,
+            offset: center,
+        },
+        margin,
+    )
+}
+
+fn check_options(options: &WireSweep) -> Result<()> {
+    if !(options.tolerance.is_finite() && options.tolerance > 0.0) {
+        return invalid!(
+            "tolerance = {} must be finite and positive",
+            options.tolerance
+        );
+    }
+    if !(options.join_tolerance.is_finite()
+        && options.join_tolerance > 0.0
+        && options.join_tolerance < 1e-2)
+    {
+        return invalid!(
+            "join_tolerance = {} must be positive and below 1e-2 (it is relative to the wire's size)",
+            options.join_tolerance
+        );
+    }
+    if let Corner::Round(Some(r)) = options.corner {
+        if !(r.is_finite() && r > 0.0) {
+            return invalid!("corner_radius = {r} must be finite and positive");
+        }
+    }
+    if !options.twist.is_finite() {
+        return invalid!("twist = {} must be finite", options.twist);
+    }
+    if let Some(n) = options.initial_normal {
+        if !n.is_finite() {
+            return invalid!("initial_normal = {n} must be finite");
+        }
+    }
+    Ok(())
+}
+
+/// The points that span an edge (for the wire's size and centre).
+fn edge_points(edge: &Edge) -> Vec<DVec3> {
+    match edge {
+        Edge::Line { from, to } => vec![*from, *to],
+        Edge::Arc {
+            start,
+            through,
+            end,
+        } => vec![*start, *through, *end],
+        Edge::Curve(c) => c.segments().iter().flat_map(|s| s.poles()).collect(),
+    }
+}
+
+/// The curve scaled by `scale` and moved by `offset`.
+fn normalized(curve: &PiecewiseCurve, scale: f64, offset: DVec3) -> PiecewiseCurve {
+    let segments = curve
+        .segments()
+        .iter()
+        .map(|s| s.similar(scale, offset))
+        .collect();
+    PiecewiseCurve::new(segments, curve.breaks().to_vec()).expect("the same breaks")
+}
+
+#[cfg(test)]
+pub(crate) mod tests;

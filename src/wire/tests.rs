@@ -1,0 +1,699 @@
+//! End-to-end checks of wire sweeps: exact geometry on lines and arcs (distance from the
+//! spine, orthogonal parameter lines), volumes against closed forms (divergence theorem by
+//! Gauss–Legendre quadrature on the faces themselves), a closed and consistently oriented
+//! B-rep (every edge used once in each direction), seamless closed wires, refusals.
+
+use super::*;
+use crate::bezier::{NurbsCurve, RationalBezierCurve};
+use crate::export::step::Brep;
+use std::collections::HashMap;
+use std::f64::consts::{FRAC_1_SQRT_2, PI};
+
+/// The circle of radius r (four rational quarters), centred.
+pub(crate) fn circle(r: f64) -> PiecewiseCurve {
+    let s = FRAC_1_SQRT_2;
+    let q = |a: (f64, f64), m: (f64, f64), b: (f64, f64)| {
+        RationalBezierCurve::from_weighted(
+            &[
+                DVec3::new(a.0, a.1, 0.0) * r,
+                DVec3::new(m.0, m.1, 0.0) * r,
+                DVec3::new(b.0, b.1, 0.0) * r,
+            ],
+            &[1.0, s, 1.0],
+        )
+        .unwrap()
+    };
+    PiecewiseCurve::with_unit_intervals(vec![
+        q((1., 0.), (1., 1.), (0., 1.)),
+        q((0., 1.), (-1., 1.), (-1., 0.)),
+        q((-1., 0.), (-1., -1.), (0., -1.)),
+        q((0., -1.), (1., -1.), (1., 0.)),
+    ])
+    .unwrap()
+}
+
+/// The square of half side a (corners on the axes' diagonals), counter-clockwise.
+pub(crate) fn square(a: f64) -> PiecewiseCurve {
+    let c = [(a, a), (-a, a), (-a, -a), (a, -a), (a, a)];
+    let segments = c
+        .windows(2)
+        .map(|w| {
+            RationalBezierCurve::polynomial(&[
+                DVec3::new(w[0].0, w[0].1, 0.0),
+                DVec3::new(w[1].0, w[1].1, 0.0),
+            ])
+            .unwrap()
+        })
+        .collect();
+    PiecewiseCurve::with_unit_intervals(segments).unwrap()
+}
+
+fn line(a: [f64; 3], b: [f64; 3]) -> Edge {
+    Edge::Line {
+        from: DVec3::from(a),
+        to: DVec3::from(b),
+    }
+}
+
+/// Line – tangent quarter arc (radius 5) – line, as a pipe route.
+pub(crate) fn pipe_route() -> Vec<Edge> {
+    let s = FRAC_1_SQRT_2;
+    vec![
+        line([0., 0., 0.], [10., 0., 0.]),
+        Edge::Arc {
+            start: DVec3::new(10., 0., 0.),
+            through: DVec3::new(10. + 5. * s, 5. - 5. * s, 0.),
+            end: DVec3::new(15., 5., 0.),
+        },
+        line([15., 5., 0.], [15., 15., 0.]),
+    ]
+}
+
+/// The enclosed volume of a solid.
+pub(crate) fn volume(shape: &Shape) -> f64 {
+    shape.volume().expect("a solid")
+}
+
+/// Every edge is used exactly twice, once in each direction once the faces' orientation is
+/// applied: a closed, consistently oriented shell.
+pub(crate) fn assert_closed_oriented(brep: &Brep) {
+    let mut uses: HashMap<usize, (usize, usize)> = HashMap::new();
+    for face in &brep.faces {
+        for u in face.bounds.iter().flat_map(|b| &b.uses) {
+            let forward = u.forward == face.same_sense;
+            let entry = uses.entry(u.edge).or_default();
+            if forward {
+                entry.0 += 1;
+            } else {
+                entry.1 += 1;
+            }
+        }
+    }
+    assert_eq!(uses.len(), brep.edges.len(), "every edge is used");
+    for (edge, (f, b)) in uses {
+        assert_eq!(
+            (f, b),
+            (1, 1),
+            "edge {edge}: {f} forward, {b} backward uses"
+        );
+    }
+    // Consecutive uses of a loop meet at a vertex.
+    for (k, face) in brep.faces.iter().enumerate() {
+        for bound in &face.bounds {
+            let ends: Vec<(usize, usize)> = bound
+                .uses
+                .iter()
+                .map(|u| {
+                    let e = &brep.edges[u.edge];
+                    if u.forward {
+                        (e.start, e.end)
+                    } else {
+                        (e.end, e.start)
+                    }
+                })
+                .collect();
+            for i in 0..ends.len() {
+                let next = ends[(i + 1) % ends.len()];
+                assert_eq!(
+                    ends[i].1, next.0,
+                    "face {k}: the loop is broken after use {i}"
+                );
+            }
+        }
+    }
+    // Edge curves end at their vertices.
+    for (k, e) in brep.edges.iter().enumerate() {
+        let (first, last) = (e.curve.poles[0], e.curve.poles[e.curve.poles.len() - 1]);
+        let size = 1.0 + first.length();
+        assert!(
+            first.distance(brep.vertices[e.start]) < 1e-9 * size,
+            "edge {k} start"
+        );
+        assert!(
+            last.distance(brep.vertices[e.end]) < 1e-9 * size,
+            "edge {k} end"
+        );
+    }
+}
+
+fn relative(a: f64, b: f64) -> f64 {
+    (a - b).abs() / b.abs()
+}
+
+#[test]
+fn a_pipe_route_of_lines_and_an_arc_is_an_exact_solid() {
+    let options = WireSweep::default();
+    let shape = sweep_wire(&pipe_route(), &circle(1.0), &[], &options).unwrap();
+    assert!(shape.is_solid());
+    assert_eq!(
+        shape.faces().len(),
+        14,
+        "three lateral faces per quarter of the circle and two caps"
+    );
+    assert_closed_oriented(shape.brep());
+    let length = 20.0 + 2.5 * PI;
+    let v = volume(&shape);
+    println!(
+        "line–arc–line pipe, r = 1: volume {v:.15} against π r² L = {:.15}, relative error {:.1e}; \
+         max |cos| between parameter lines {:.1e}",
+        PI * length,
+        relative(v, PI * length),
+        shape.report().max_parameter_cosine
+    );
+    assert!(relative(v, PI * length) < 1e-12);
+    assert!(shape.report().max_parameter_cosine < 1e-12);
+    assert_eq!(shape.report().spine_distance, 0.0);
+    assert!(
+        shape.report().joint_gap < 1e-14,
+        "{}",
+        shape.report().joint_gap
+    );
+    // Exact: every point of the lateral faces is at distance 1 from the spine.
+    let torus = shape.faces()[4].surface.as_ref().unwrap();
+    assert_eq!(
+        torus.patches()[0].degree_v(),
+        2,
+        "rational degree 2 along the arc"
+    );
+    for i in 0..=8 {
+        for j in 0..=8 {
+            let p = torus.eval(i as f64 / 8.0, j as f64 / 8.0);
+            let radial = ((p.truncate() - glam::DVec2::new(10., 5.)).length() - 5.0).hypot(p.z);
+            assert!((radial - 1.0).abs() < 1e-14, "{radial}");
+        }
+    }
+    let step = shape.to_step("pipe").unwrap();
+    assert!(step.contains("MANIFOLD_SOLID_BREP") && step.contains("CLOSED_SHELL"));
+    assert_eq!(step.matches("ADVANCED_FACE(").count(), 14);
+    assert!(step.contains("PLANE("));
+}
+
+/// The issue's pipe route: its arc is given through a point rounded to 4 decimals, which
+/// leaves corners of 1e-5 rad at the arc's ends; both corner modes sweep it: round corners
+/// with tiny exact elbows, miters with the lines cut by the arc's normal planes there
+/// (near-tangent joints).
+#[test]
+fn the_issues_rounded_pipe_route_sweeps_with_round_and_miter_corners() {
+    let edges = vec![
+        line([0., 0., 0.], [10., 0., 0.]),
+        Edge::Arc {
+            start: DVec3::new(10., 0., 0.),
+            through: DVec3::new(13.5355, 1.4645, 0.),
+            end: DVec3::new(15., 5., 0.),
+        },
+        line([15., 5., 0.], [15., 15., 0.]),
+    ];
+    for corner in [Corner::Miter, Corner::Round(Some(2.0))] {
+        let options = WireSweep {
+            corner,
+            ..WireSweep::default()
+        };
+        let shape = sweep_wire(&edges, &circle(1.0), &[], &options).unwrap();
+        assert_closed_oriented(shape.brep());
+        let r = shape.report();
+        println!(
+            "issue's route, {corner:?}: joint gap {:.1e}, faces {}, max |cos| {:.1e}",
+            r.joint_gap, r.face_count, r.max_parameter_cosine
+        );
+        assert!(r.joint_gap < 1e-9, "{}", r.joint_gap);
+        let elbows = if corner == Corner::Miter { 0 } else { 2 };
+        assert_eq!(r.face_count, 14 + 4 * elbows, "elbows of round corners");
+    }
+}
+
+#[test]
+fn a_hollow_pipe_has_holes_and_the_volume_of_the_annulus() {
+    let shape = sweep_wire(
+        &pipe_route(),
+        &circle(1.0),
+        &[circle(0.8)],
+        &WireSweep::default(),
+    )
+    .unwrap();
+    assert_eq!(shape.faces().len(), 26);
+    assert_closed_oriented(shape.brep());
+    let expected = PI * (1.0 - 0.64) * (20.0 + 2.5 * PI);
+    assert!(relative(volume(&shape), expected) < 1e-12);
+    // Holes turn clockwise about the cap's outward normal: the cap's loops cancel.
+    let cap = shape
+        .faces()
+        .iter()
+        .find(|f| f.kind == FaceKind::Plane)
+        .unwrap();
+    assert_eq!(cap.loops.len(), 2);
+}
+
+/// A polyline with three right angles, each leg 6 long, in 3-D.
+fn staircase() -> Vec<Edge> {
+    vec![
+        line([0., 0., 0.], [6., 0., 0.]),
+        line([6., 0., 0.], [6., 6., 0.]),
+        line([6., 6., 0.], [6., 6., 6.]),
+        line([6., 6., 6.], [0., 6., 6.]),
+    ]
+}
+
+#[test]
+fn round_and_miter_corners_give_solids_with_the_closed_form_volume() {
+    let area = 4.0 * 0.25; // square of half side 0.5
+    for (corner, expected_length) in [
+        (Corner::Miter, 24.0),
+        // Each corner cuts 2ρ of straight leg and adds the quarter circle ρπ/2.
+        (Corner::Round(Some(1.0)), 24.0 - 3.0 * (2.0 - PI / 2.0)),
+    ] {
+        let options = WireSweep {
+            corner,
+            ..WireSweep::default()
+        };
+        let shape = sweep_wire(&staircase(), &square(0.5), &[], &options).unwrap();
+        assert_closed_oriented(shape.brep());
+        let v = volume(&shape);
+        let turn = shape.report().corner_turn;
+        println!(
+            "polyline with three 90° corners, {corner:?}: volume {v:.15} against {:.15} \
+             (relative {:.1e}), frame turn across the corners {turn:.1e} rad",
+            area * expected_length,
+            relative(v, area * expected_length)
+        );
+        assert!(relative(v, area * expected_length) < 1e-12);
+        assert!(turn < 1e-12, "{turn}");
+    }
+}
+
+#[test]
+fn a_rounded_rectangle_closes_without_a_seam() {
+    let s = FRAC_1_SQRT_2;
+    let arc = |c: (f64, f64), a: f64| {
+        let p = |t: f64| DVec3::new(c.0 + t.cos(), c.1 + t.sin(), 0.0);
+        Edge::Arc {
+            start: p(a),
+            through: p(a + PI / 4.0),
+            end: p(a + PI / 2.0),
+        }
+    };
+    let _ = s;
+    let edges = vec![
+        line([0., -1., 0.], [4., -1., 0.]),
+        arc((4., 0.), -PI / 2.0),
+        line([5., 0., 0.], [5., 2., 0.]),
+        arc((4., 2.), 0.0),
+        line([4., 3., 0.], [0., 3., 0.]),
+        arc((0., 2.), PI / 2.0),
+        line([-1., 2., 0.], [-1., 0., 0.]),
+        arc((0., 0.), PI),
+    ];
+    let shape = sweep_wire(&edges, &square(0.2), &[], &WireSweep::default()).unwrap();
+    assert!(shape.is_solid());
+    assert_eq!(shape.faces().len(), 32, "no caps");
+    assert_closed_oriented(shape.brep());
+    let length = 2.0 * (4.0 + 2.0) + 2.0 * PI;
+    let v = volume(&shape);
+    let gap = shape.report().seam_gap;
+    println!(
+        "rounded rectangle, square profile: seam gap {gap:.1e}, volume relative error {:.1e}",
+        relative(v, 0.16 * length)
+    );
+    assert!(gap <= 1e-12);
+    assert!(relative(v, 0.16 * length) < 1e-12);
+}
+
+/// A closed, non-planar NURBS (a periodic cubic through a bent loop, made clamped by knot
+/// insertion at the seam).
+pub(crate) fn closed_nurbs() -> PiecewiseCurve {
+    // Uniform cubic B-spline, periodic: poles wrap around.
+    let p: Vec<DVec3> = (0..8)
+        .map(|k| {
+            let a = 2.0 * PI * k as f64 / 8.0;
+            DVec3::new(4.0 * a.cos(), 3.0 * a.sin(), 1.5 * (2.0 * a).sin())
+        })
+        .collect();
+    // Each uniform span as a Bézier segment (B-spline to Bézier for uniform cubics).
+    let segments = (0..8)
+        .map(|k| {
+            let (a, b, c, d) = (p[k], p[(k + 1) % 8], p[(k + 2) % 8], p[(k + 3) % 8]);
+            RationalBezierCurve::polynomial(&[
+                (a + 4.0 * b + c) / 6.0,
+                (2.0 * b + c) / 3.0,
+                (b + 2.0 * c) / 3.0,
+                (b + 4.0 * c + d) / 6.0,
+            ])
+            .unwrap()
+        })
+        .collect();
+    PiecewiseCurve::with_unit_intervals(segments).unwrap()
+}
+
+#[test]
+fn a_closed_nurbs_closes_modulo_the_profile_symmetry() {
+    let curve = closed_nurbs();
+    let _ = NurbsCurve::from_piecewise(&curve).unwrap();
+    for k in [1, 4] {
+        let options = WireSweep {
+            tolerance: 1e-5,
+            closure_symmetry: k,
+            ..WireSweep::default()
+        };
+        let shape = sweep_wire(&[Edge::Curve(curve.clone())], &square(0.3), &[], &options).unwrap();
+        assert!(shape.is_solid());
+        assert_closed_oriented(shape.brep());
+        let r = shape.report();
+        println!(
+            "closed NURBS, square profile, closure modulo 2π/{k}: seam gap {:.1e}, spine within \
+             {:.1e}, RMF within {:.1e} rad, max |cos| {:.1e}",
+            r.seam_gap, r.spine_distance, r.rmf_angle_error, r.max_parameter_cosine
+        );
+        assert!(r.seam_gap <= 1e-12, "{}", r.seam_gap);
+        assert!(r.spine_distance <= 1e-5);
+        // The closure turn (≤ π/k) is a twist: the parameter lines are not orthogonal.
+        assert!(r.rmf_angle_error <= 1e-6);
+    }
+}
+
+#[test]
+fn bad_wires_and_profiles_are_refused_naming_the_edge_or_joint() {
+    let d = WireSweep::default();
+    let message =
+        |edges: &[Edge], profile: &PiecewiseCurve, holes: &[PiecewiseCurve], o: &WireSweep| {
+            sweep_wire(edges, profile, holes, o).unwrap_err().message()
+        };
+    let gap = [
+        line([0., 0., 0.], [1., 0., 0.]),
+        line([1., 0.1, 0.], [2., 0., 0.]),
+    ];
+    assert!(message(&gap, &circle(0.1), &[], &d).contains("edges 0 and 1 do not meet"));
+    let zero = [
+        line([0., 0., 0.], [1., 0., 0.]),
+        line([1., 0., 0.], [1., 0., 0.]),
+    ];
+    let m = message(&zero, &circle(0.1), &[], &d);
+    assert!(m.contains("edge 1: a line of zero length"), "{m}");
+    let back = [
+        line([0., 0., 0.], [1., 0., 0.]),
+        line([1., 0., 0.], [0.2, 0., 0.]),
+    ];
+    assert!(message(&back, &circle(0.1), &[], &d).contains("turns back"));
+    let open = square(0.5).segments()[..3].to_vec();
+    let open = PiecewiseCurve::with_unit_intervals(open).unwrap();
+    assert!(message(&staircase(), &open, &[], &d).contains("closed profile"));
+    let sheet = WireSweep { solid: false, ..d };
+    let shape = sweep_wire(&staircase(), &open, &[], &sheet).unwrap();
+    assert!(!shape.is_solid() && shape.faces().iter().all(|f| f.kind == FaceKind::Swept));
+    assert!(message(&staircase(), &open, &[circle(0.1)], &sheet).contains("holes need a closed"));
+    let big = WireSweep {
+        corner: Corner::Round(Some(4.0)),
+        ..d
+    };
+    let m = message(&staircase(), &square(0.5), &[], &big);
+    assert!(
+        m.contains("does not fit")
+            && m.contains("the largest radius that fits every corner is 2.99999999"),
+        "{m}"
+    );
+    let small = WireSweep {
+        corner: Corner::Round(Some(0.4)),
+        ..d
+    };
+    let m = message(&staircase(), &square(0.5), &[], &small);
+    assert!(
+        m.contains("joint between edges 0 and 1")
+            && m.contains("smallest radius allowed is 0.7071067"),
+        "{m}"
+    );
+    // An arc of radius 5 and a profile reaching 6 towards its centre.
+    let m = message(&pipe_route(), &circle(6.0), &[], &d);
+    assert!(m.contains("edge 1") && m.contains("at most 4.99999"), "{m}");
+    let miter = WireSweep {
+        corner: Corner::Miter,
+        ..d
+    };
+    let m = message(&staircase(), &square(5.0), &[], &miter);
+    assert!(m.contains("miter cuts"), "{m}");
+}
+
+#[test]
+fn results_do_not_depend_on_scale_or_position() {
+    let options = WireSweep {
+        corner: Corner::Round(Some(1.0)),
+        ..WireSweep::default()
+    };
+    let unit = sweep_wire(&staircase(), &square(0.5), &[], &options).unwrap();
+    for (scale, shift) in [
+        (1e-200, DVec3::ZERO),
+        (1e200, DVec3::ZERO),
+        (1.0, DVec3::new(1e6, -3e6, 7.0)),
+        (2f64.powi(300), DVec3::ZERO),
+    ] {
+        let moved: Vec<Edge> = staircase()
+            .iter()
+            .map(|e| match e {
+                Edge::Line { from, to } => Edge::Line {
+                    from: *from * scale + shift,
+                    to: *to * scale + shift,
+                },
+                _ => unreachable!(),
+            })
+            .collect();
+        let profile = super::normalized(&square(0.5), scale, DVec3::ZERO);
+        let o = WireSweep {
+            corner: Corner::Round(Some(scale)),
+            ..options
+        };
+        let shape = sweep_wire(&moved, &profile, &[], &o).unwrap();
+        assert_eq!(shape.faces().len(), unit.faces().len());
+        for (a, b) in unit.faces().iter().zip(shape.faces()) {
+            let (Some(sa), Some(sb)) = (&a.surface, &b.surface) else {
+                continue;
+            };
+            for u in [0.0, 0.3, 0.7] {
+                for v in [0.0, 0.5, 1.0] {
+                    let (pa, pb) = (sa.eval(u, v), (sb.eval(u, v) - shift) / scale);
+                    assert!(pa.distance(pb) < 1e-9, "scale {scale:e}: {pa} vs {pb}");
+                }
+            }
+        }
+    }
+}
+
+#[test]
+#[ignore]
+fn write_samples_for_manual_checks() {
+    let dir = std::path::Path::new("/tmp/wire_samples");
+    std::fs::create_dir_all(dir).unwrap();
+    let d = WireSweep::default();
+    let write = |name: &str, shape: Shape| {
+        std::fs::write(
+            dir.join(format!("{name}.step")),
+            shape.to_step(name).unwrap(),
+        )
+        .unwrap();
+        println!("{name}: volume {:.15}", volume(&shape));
+    };
+    write(
+        "pipe",
+        sweep_wire(&pipe_route(), &circle(1.0), &[], &d).unwrap(),
+    );
+    write(
+        "hollow",
+        sweep_wire(&pipe_route(), &circle(1.0), &[circle(0.8)], &d).unwrap(),
+    );
+    write(
+        "miter",
+        sweep_wire(
+            &staircase(),
+            &square(0.5),
+            &[],
+            &WireSweep {
+                corner: Corner::Miter,
+                ..d
+            },
+        )
+        .unwrap(),
+    );
+    write(
+        "round",
+        sweep_wire(
+            &staircase(),
+            &square(0.5),
+            &[],
+            &WireSweep {
+                corner: Corner::Round(Some(1.0)),
+                ..d
+            },
+        )
+        .unwrap(),
+    );
+    let half = vec![
+        line([0., 0., 0.], [10., 0., 0.]),
+        Edge::Arc {
+            start: DVec3::new(10., 0., 0.),
+            through: DVec3::new(15., 5., 0.),
+            end: DVec3::new(10., 10., 0.),
+        },
+        line([10., 10., 0.], [0., 10., 0.]),
+    ];
+    let s = sweep_wire(&half, &circle(1.0), &[], &d).unwrap();
+    println!("half: exact {:.15}", PI * (20.0 + 5.0 * PI));
+    write("half", s);
+    write(
+        "closed_nurbs",
+        sweep_wire(
+            &[Edge::Curve(closed_nurbs())],
+            &square(0.3),
+            &[],
+            &WireSweep {
+                tolerance: 1e-5,
+                closure_symmetry: 4,
+                ..d
+            },
+        )
+        .unwrap(),
+    );
+}
+
+/// A twist turns the frames along lines and arcs too (rational, the biquadratic W fitted to
+/// the linear turn): still a closed solid, the faces meeting at every joint, the frame
+/// within 1e-6 rad of the RMF turned linearly in arc length, and the volume unchanged.
+#[test]
+fn a_twist_turns_the_frame_along_lines_and_arcs_and_keeps_the_solid() {
+    let options = WireSweep {
+        corner: Corner::Round(Some(1.0)),
+        twist: 1.5,
+        ..WireSweep::default()
+    };
+    let shape = sweep_wire(&staircase(), &square(0.5), &[], &options).unwrap();
+    assert_closed_oriented(shape.brep());
+    let r = shape.report();
+    println!(
+        "staircase with a twist of 1.5 rad: frames within {:.1e} rad of the twisted RMF, joint gap {:.1e}, \
+         max |cos| {:.1e}",
+        r.rmf_angle_error, r.joint_gap, r.max_parameter_cosine
+    );
+    assert!(r.rmf_angle_error < 1e-9, "{}", r.rmf_angle_error);
+    assert!(r.joint_gap < 1e-12, "{}", r.joint_gap);
+    assert!(
+        r.max_parameter_cosine > 1e-3,
+        "a twist tilts the parameter lines"
+    );
+    let length = 24.0 - 3.0 * (2.0 - PI / 2.0);
+    assert!(
+        relative(volume(&shape), length) < 1e-9,
+        "{}",
+        volume(&shape)
+    );
+    // The frame turns by the twist in all: the end section is the untwisted one turned.
+    let plain = sweep_wire(
+        &staircase(),
+        &square(0.5),
+        &[],
+        &WireSweep {
+            twist: 0.0,
+            ..options
+        },
+    )
+    .unwrap();
+    let end = |s: &Shape| {
+        let f = &s.faces()[s.faces().len() - 3 - 3];
+        let surface = f.surface.as_ref().unwrap();
+        surface.eval(surface.domain_u().0, surface.domain_v().1)
+    };
+    let centre = DVec3::new(0.0, 6.0, 6.0);
+    let (a, b) = (end(&plain) - centre, end(&shape) - centre);
+    let turn = a.cross(b).dot(DVec3::X).atan2(a.dot(b));
+    assert!((turn.abs() - 1.5).abs() < 1e-9, "{turn}");
+}
+
+/// A closed polyline in 3-D: its discrete RMF comes back turned (the holonomy), and the
+/// closure spreads the smallest turn over the lines and elbows, rational there.
+#[test]
+fn a_closed_3d_polyline_closes_by_a_turn_spread_over_lines_and_elbows() {
+    let points = [
+        [0., 0., 0.],
+        [6., 0., 0.],
+        [6., 5., 2.],
+        [1., 6., 6.],
+        [0., 0., 0.],
+    ];
+    let edges: Vec<Edge> = points.windows(2).map(|w| line(w[0], w[1])).collect();
+    let options = WireSweep {
+        corner: Corner::Round(Some(1.0)),
+        ..WireSweep::default()
+    };
+    let shape = sweep_wire(&edges, &circle(0.3), &[], &options).unwrap();
+    assert!(shape.is_solid());
+    assert_closed_oriented(shape.brep());
+    let r = shape.report();
+    println!(
+        "closed 3-D polyline, circle: seam gap {:.1e}, frames within {:.1e} rad of the turned RMF",
+        r.seam_gap, r.rmf_angle_error
+    );
+    assert!(r.seam_gap < 1e-12, "{}", r.seam_gap);
+    assert!(r.rmf_angle_error < 1e-9, "{}", r.rmf_angle_error);
+    assert!(
+        r.max_parameter_cosine > 1e-6,
+        "the closure turn tilts the parameter lines"
+    );
+    // A miter polyline cannot turn at all: refused, unless the turn is a symmetry.
+    let miter = WireSweep {
+        corner: Corner::Miter,
+        ..options
+    };
+    let e = sweep_wire(&edges, &circle(0.3), &[], &miter).unwrap_err();
+    assert!(e.message().contains("every edge is a miter leg"), "{e}");
+}
+
+/// A PH cubic spline given as an edge is swept along as it is (distance 0), with its
+/// rational RMF.
+#[test]
+fn a_ph_spline_edge_is_used_as_it_is() {
+    let (points, tangents): (Vec<DVec3>, Vec<DVec3>) = (0..=4)
+        .map(|i| {
+            let t = 0.5 * i as f64;
+            (
+                DVec3::new(3.0 * t.cos(), 3.0 * t.sin(), t),
+                DVec3::new(-3.0 * t.sin(), 3.0 * t.cos(), 1.0),
+            )
+        })
+        .unzip();
+    let spline = crate::ph_cubic::ph_spline_hermite(&points, &tangents).unwrap();
+    let shape = sweep_wire(
+        &[Edge::Curve(spline.clone())],
+        &circle(0.2),
+        &[],
+        &WireSweep::default(),
+    )
+    .unwrap();
+    assert_eq!(shape.report().spine_distance, 0.0);
+    assert_eq!(shape.spine()[0].segments().len(), spline.segments().len());
+    assert!(shape.report().max_parameter_cosine < 1e-5);
+}
+
+/// Fuzz finding: a circle of subnormal radius (6e-313) as the only edge made the wire's
+/// size subnormal, its scale 2⁻¹⁰³⁶ and 1/scale infinite: NaN control points and a panic.
+/// Sizes outside [1e-290, 1e290] are refused.
+#[test]
+fn wires_of_subnormal_or_huge_size_are_refused() {
+    let tiny = super::normalized(&circle(1.0), 6.25e-313, DVec3::ZERO);
+    let e = sweep_wire(
+        &[Edge::Curve(tiny)],
+        &circle(1e-313),
+        &[],
+        &WireSweep::default(),
+    )
+    .unwrap_err();
+    assert!(e.message().contains("outside [1e-290, 1e290]"), "{e}");
+    let huge = [line([0., 0., 0.], [1e300, 0., 0.])];
+    assert!(sweep_wire(&huge, &circle(1e299), &[], &WireSweep::default()).is_err());
+    let out_of_proportion = [line([0., 0., 0.], [1e-200, 0., 0.])];
+    let e = sweep_wire(
+        &out_of_proportion,
+        &circle(1e200),
+        &[],
+        &WireSweep::default(),
+    )
+    .unwrap_err();
+    assert!(
+        e.message()
+            .contains("profile: its coordinates are out of proportion"),
+        "{e}"
+    );
+}
