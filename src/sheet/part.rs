@@ -373,7 +373,7 @@ fn flip_u(patch: RationalBezierPatch, flip: bool) -> RationalBezierPatch {
         .expect("the same points")
 }
 
-fn scaled_edge(edge: &PatternEdge, s: f64) -> PatternEdge {
+pub(crate) fn scaled_edge(edge: &PatternEdge, s: f64) -> PatternEdge {
     match *edge {
         PatternEdge::Line { from, to } => PatternEdge::Line {
             from: from * s,
