@@ -7,7 +7,7 @@ use super::flat::{flat_layout, FlatLayout};
 use super::marks::{flat_to_part, part_to_flat, part_to_surface, surface_to_part};
 use super::thickness::{layers, Layer, Layers, Sheet};
 use super::transition::{transition, TransitionFit};
-use super::trim::{patch_area, patch_nurbs, Face, Similarity, TrimmedSpline};
+use super::trim::{patch_nurbs, Face, Similarity, TrimmedSpline};
 use crate::bezier::{
     NurbsSurface, PiecewiseCurve, PiecewiseSurface, RationalBezierCurve, RationalBezierPatch,
 };
@@ -117,6 +117,25 @@ impl SheetPart {
         );
         let (part, fit) = transition(&b, &t, options.tolerance / frame.scale, options.max_pieces)?;
         Self::new(part, frame, options, fit)
+    }
+
+    /// The part of a developable ruled surface of degree (1, n) between its two rails (its
+    /// boundaries u = u₀ and u = u₁), over its whole v domain.
+    pub fn between_rails(surface: &PiecewiseSurface, options: &SheetOptions) -> Result<Self> {
+        let _ = (surface, options);
+        invalid!("parts between rails are not built yet")
+    }
+
+    /// The part of the tangent surface x(t) + v·x′(t)/|x′(t)| over the whole curve and
+    /// v ∈ [v_min, v_max].
+    pub fn tangent_surface(
+        curve: &PiecewiseCurve,
+        v_min: f64,
+        v_max: f64,
+        options: &SheetOptions,
+    ) -> Result<Self> {
+        let _ = (curve, v_min, v_max, options);
+        invalid!("parts of tangent surfaces are not built yet")
     }
 
     pub(crate) fn new(
@@ -233,6 +252,37 @@ impl SheetPart {
         PiecewiseCurve::new(segments, curve.breaks().to_vec())
     }
 
+    /// The area of a layer (caller's units²), by 16-point Gauss–Legendre quadrature on
+    /// every patch.
+    pub fn area(&self, layer: Layer) -> Result<f64> {
+        let g = crate::math::GaussLegendre::new(16);
+        Ok(self
+            .surface(layer)?
+            .patches()
+            .iter()
+            .map(|p| {
+                g.integrate(0.0, 1.0, |u| {
+                    g.integrate(0.0, 1.0, |v| {
+                        let j = p.eval_jet(u, v);
+                        j.du.cross(j.dv).length()
+                    })
+                })
+            })
+            .sum())
+    }
+
+    /// The length of a boundary curve of a layer, by 24-point Gauss–Legendre quadrature on
+    /// every segment.
+    pub fn boundary_length(&self, layer: Layer, side: Side) -> Result<f64> {
+        let g = crate::math::GaussLegendre::new(24);
+        Ok(self
+            .boundary(layer, side)?
+            .segments()
+            .iter()
+            .map(|s| g.integrate(0.0, 1.0, |t| s.eval_jet(t).d1.length()))
+            .sum())
+    }
+
     fn user_patch(&self, p: &RationalBezierPatch) -> RationalBezierPatch {
         RationalBezierPatch::from_homogeneous(
             p.degree_u(),
@@ -287,7 +337,7 @@ impl SheetPart {
         }
         patches
             .into_iter()
-            .filter(|p| patch_area(p, 6) > 1e-24)
+            .filter(|p| !TrimmedSpline::degenerate(p))
             .map(|p| patch_nurbs(self.user_patch(&p)))
             .collect()
     }
@@ -303,6 +353,16 @@ impl SheetPart {
         })
     }
 
+    /// The lengths of the flat pattern's first and second boundary (the outline without
+    /// the end rulings; caller's units), for comparison with the formed neutral layer's.
+    pub fn flat_boundary_lengths(&self) -> Result<[f64; 2]> {
+        let layout = self.flat_layout()?;
+        let sum = |edges: &[PatternEdge]| {
+            edges.iter().map(PatternEdge::length).sum::<f64>() * self.frame.scale
+        };
+        Ok([sum(&layout.first), sum(&layout.second)])
+    }
+
     /// The developed boundaries of the neutral layer, internal units.
     pub(crate) fn flat_layout(&self) -> Result<FlatLayout> {
         flat_layout(
@@ -313,6 +373,7 @@ impl SheetPart {
     }
 
     /// The scale from internal to the caller's units.
+    #[cfg(test)]
     pub(crate) fn scale(&self) -> f64 {
         self.frame.scale
     }

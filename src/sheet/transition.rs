@@ -521,8 +521,14 @@ fn pieces(
                     (_, true) => [TrimSpec::Plane, TrimSpec::Vertex],
                     _ => [TrimSpec::Plane, TrimSpec::Plane],
                 };
+                // Chained as ConeSpline::new will (each piece from the end of the one
+                // before), so that the pieces built on these ends stay as built.
                 for p in fit.spline.pieces() {
-                    pieces.push(*p);
+                    let mut piece = *p;
+                    if let Some(previous) = pieces.last() {
+                        piece.start = previous.end();
+                    }
+                    pieces.push(piece);
                     specs.push(spec);
                 }
             }
@@ -536,6 +542,21 @@ fn pieces(
     Ok((pieces, specs, deviation))
 }
 
+/// The plane sector about `vertex` from the ruling of `start` to the ruling direction
+/// `end` (projected into the start's tangent plane): a rotation about the plane's normal.
+fn sector(start: Element, vertex: DVec3, end: DVec3) -> ConePiece {
+    let n = start.normal();
+    let e1 = (end - end.dot(n) * n).normalize();
+    ConePiece {
+        start,
+        motion: Motion::Rotation {
+            origin: vertex,
+            axis: n,
+            angle: signed_angle(start.ruling, e1, n),
+        },
+    }
+}
+
 /// The plane sector (or strip) from the ruling of `start` to the ruling `to`.
 fn planar_piece(
     start: Element,
@@ -544,19 +565,26 @@ fn planar_piece(
 ) -> Result<(ConePiece, [TrimSpec; 2])> {
     let end_ruling = to.1 - to.0;
     if from.0 == to.0 {
-        let piece = ConePiece::cone(from.0, start, end_ruling)?;
-        return Ok((piece, [TrimSpec::Point(from.0), TrimSpec::Plane]));
+        return Ok((
+            sector(start, from.0, end_ruling),
+            [TrimSpec::Point(from.0), TrimSpec::Plane],
+        ));
     }
     if from.1 == to.1 {
-        let piece = ConePiece::cone(from.1, start, end_ruling)?;
-        return Ok((piece, [TrimSpec::Plane, TrimSpec::Point(from.1)]));
+        return Ok((
+            sector(start, from.1, end_ruling),
+            [TrimSpec::Plane, TrimSpec::Point(from.1)],
+        ));
     }
     let d0 = start.ruling;
     let piece = if d0.cross(end_ruling.normalize()).length() <= 1e-12 {
         ConePiece::cylinder(start, to.0)?
     } else {
-        let vertex = meet(from.0, d0, to.0, to.1, start.normal());
-        ConePiece::cone(vertex, start, end_ruling)?
+        sector(
+            start,
+            meet(from.0, d0, to.0, to.1, start.normal()),
+            end_ruling,
+        )
     };
     Ok((piece, [TrimSpec::Plane, TrimSpec::Plane]))
 }

@@ -24,13 +24,12 @@
 //! moved reference point. The cut faces of the solid (the laser's normal cut) are the
 //! ruled strips X(v) + s·n(v) between two layers, again of the same form.
 
-use crate::bezier::bernstein::{self, Coefficient};
+use crate::bezier::bernstein;
 use crate::bezier::{
     NurbsSurface, PiecewiseCurve, PiecewiseSurface, RationalBezierCurve, RationalBezierPatch,
 };
 use crate::cone_spline::{ConePiece, ConeSpline, Motion};
 use crate::error::{no_solution, Result};
-use crate::math::GaussLegendre;
 use glam::{DVec3, DVec4};
 use std::f64::consts::PI;
 
@@ -222,11 +221,6 @@ pub(crate) struct TrimmedSpline {
     pub closed: bool,
 }
 
-fn elevate_rows<C: Coefficient>(rows: [Vec<C>; 2]) -> [Vec<C>; 2] {
-    let degree = rows[0].len().max(rows[1].len()) - 1;
-    rows.map(|r| bernstein::elevate_to(&r, degree))
-}
-
 impl TrimmedSpline {
     pub fn pieces(&self) -> &[ConePiece] {
         self.spline.pieces()
@@ -248,18 +242,32 @@ impl TrimmedSpline {
         row
     }
 
-    /// The patch of piece `k` between the layers at `s0` (u = 0) and `s1` (u = 1) along
-    /// trim `side` (a cut face), or, with `side = None`, the patch of the layer at `s0`
-    /// between its two trims.
+    /// The patch of piece `k`: a layer between its two trims, or a cut face along one trim
+    /// between two layers. Both rows are written in the piece's largest row degree, so that
+    /// the faces of a solid share their boundary curves in one representation.
     pub fn patch(&self, k: usize, face: Face) -> RationalBezierPatch {
         let rows = match face {
             Face::Layer(s) => [self.row(k, 0, s), self.row(k, 1, s)],
             Face::Cut { side, from, to } => [self.row(k, side, from), self.row(k, side, to)],
         };
-        let [r0, r1] = elevate_rows(rows);
-        let degree = r0.len() - 1;
+        let degree = self.trims[k].iter().map(Trim::degree).max().unwrap_or(0) + 2;
+        let [r0, r1] = rows.map(|r| bernstein::elevate_to(&r, degree));
         RationalBezierPatch::from_homogeneous(1, degree, [r0, r1].concat())
             .expect("trimmed rows have positive weights")
+    }
+
+    /// Whether a patch (internal coordinates) has no area: both rows collapsed to points —
+    /// the cut face at a vertex on a boundary, a crease on its own layer (every ruling the
+    /// same segment).
+    pub fn degenerate(patch: &RationalBezierPatch) -> bool {
+        let n = patch.degree_v() + 1;
+        let points: Vec<DVec3> = patch
+            .homogeneous()
+            .iter()
+            .map(|h| h.truncate() / h.w)
+            .collect();
+        let collapsed = |r: &[DVec3]| r.iter().all(|p| p.distance(r[0]) <= 1e-12);
+        collapsed(&points[..n]) && collapsed(&points[n..])
     }
 
     /// The end face at the first (`end = false`) or last ruling of an open part, between
@@ -348,8 +356,9 @@ pub(crate) fn fraction_rate(angle: f64, v: f64) -> f64 {
 }
 
 /// Surface area of a patch by Gauss–Legendre quadrature (`n` × `n` nodes).
+#[cfg(test)]
 pub(crate) fn patch_area(patch: &RationalBezierPatch, n: usize) -> f64 {
-    let g = GaussLegendre::new(n);
+    let g = crate::math::GaussLegendre::new(n);
     g.integrate(0.0, 1.0, |u| {
         g.integrate(0.0, 1.0, |v| {
             let j = patch.eval_jet(u, v);
