@@ -236,23 +236,22 @@ pub(crate) fn signed_area(edges: &[PatternEdge]) -> f64 {
         .sum::<f64>()
 }
 
-/// The same edge with its start point moved to `p` (closing round-off gaps).
-fn starting_at(edge: PatternEdge, p: DVec2) -> PatternEdge {
+/// The edge between the points `from` and `to`: a line, or the arc of the same sweep
+/// through both (centre and radius recomputed, so that both ends lie on its circle).
+fn between(edge: PatternEdge, from: DVec2, to: DVec2) -> PatternEdge {
     match edge {
-        PatternEdge::Line { to, .. } => PatternEdge::Line { from: p, to },
-        PatternEdge::Arc {
-            center,
-            radius,
-            to,
-            sweep,
-            ..
-        } => PatternEdge::Arc {
-            center,
-            radius,
-            from: p,
-            to,
-            sweep,
-        },
+        PatternEdge::Line { .. } => PatternEdge::Line { from, to },
+        PatternEdge::Arc { sweep, .. } => {
+            let d = to - from;
+            let half = 0.5 * d.length();
+            PatternEdge::Arc {
+                center: from + 0.5 * d + perp(d / d.length()) * (half / (0.5 * sweep).tan()),
+                radius: half / (0.5 * sweep).sin().abs(),
+                from,
+                to,
+                sweep,
+            }
+        }
     }
 }
 
@@ -323,14 +322,26 @@ pub(crate) fn flat_layout(part: &TrimmedSpline, s: f64, tolerance: f64) -> Resul
     })
 }
 
-/// Drops point-like edges and makes each edge start exactly where the one before ends.
+/// Drops point-like edges and closes the round-off gaps between the others (a vertex
+/// computed on two pieces differs by ~1e-12): where a line meets an arc the joint is the
+/// arc's end point, between arcs the first arc's, and every arc is redrawn through its
+/// joints, so that its DXF form (centre, radius, angles) gives the same end points.
 fn close_loop(edges: Vec<PatternEdge>, size: f64) -> Vec<PatternEdge> {
     let kept: Vec<PatternEdge> = edges
         .into_iter()
         .filter(|e| e.length() > POINT_LENGTH * size)
         .collect();
     let m = kept.len();
+    let joints: Vec<DVec2> = (0..m)
+        .map(|k| {
+            let (before, after) = (&kept[(k + m - 1) % m], &kept[k]);
+            match (before, after) {
+                (PatternEdge::Line { .. }, PatternEdge::Arc { from, .. }) => *from,
+                _ => before.end(),
+            }
+        })
+        .collect();
     (0..m)
-        .map(|k| starting_at(kept[k], kept[(k + m - 1) % m].end()))
+        .map(|k| between(kept[k], joints[k], joints[(k + 1) % m]))
         .collect()
 }
