@@ -13,9 +13,9 @@ use super::curve::RmfCurve;
 use super::status::RmfStatus;
 use super::surface::RmfSurface;
 use super::types::{RmfVec2, RmfVec3};
+use rmfsurf::export::{dxf, step, svg};
 use rmfsurf::glam::DVec2;
 use rmfsurf::PatternEdge;
-use rmfsurf::export::{dxf, step, svg};
 use rmfsurf::{Layer, Reference, Sheet, SheetOptions, SheetPart, Side};
 use std::ffi::c_char;
 
@@ -281,7 +281,8 @@ pub unsafe extern "C" fn rmf_cone_spline_transition(
         let top = reference(top, "top")?;
         let out = out_ptr(out, "out")?;
         let options = options_from(options)?;
-        let part = SheetPart::transition(bottom.rational("bottom")?, top.rational("top")?, &options)?;
+        let part =
+            SheetPart::transition(bottom.rational("bottom")?, top.rational("top")?, &options)?;
         write(out, RmfConeSpline::of_part(part)?.into_raw());
         Ok(())
     })

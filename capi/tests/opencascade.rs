@@ -51,7 +51,7 @@ fn opencascade_kernel_example_builds_and_checks_the_surfaces() {
 /// Gauss–Legendre quadrature.
 #[test]
 fn opencascade_reads_the_formed_hopper_as_a_valid_closed_solid() {
-    use rmfsurf::sheet::{Layer, Reference, Sheet, SheetOptions, SheetPart};
+    use rmfsurf::{Layer, Reference, Sheet, SheetOptions, SheetPart};
     let dir = support::fresh_dir("occ_hopper");
     support::run_cli(&dir, "hopper", &["-q", "-o", "hopper.step"]);
     let (bottom, top) = hopper_curves();
@@ -62,7 +62,11 @@ fn opencascade_reads_the_formed_hopper_as_a_valid_closed_solid() {
         max_pieces: 100_000,
     };
     let part = SheetPart::transition(&bottom, &top, &options).unwrap();
-    let (inner, neutral) = (area(&part, Layer::Inner), area(&part, Layer::Neutral));
+    let (inner, neutral) = (
+        part.area(Layer::Inner).unwrap(),
+        part.area(Layer::Neutral).unwrap(),
+    );
+    println!("areas of the inner and neutral layers: {inner:.9}, {neutral:.9}");
     let (t, kt) = (2.0, 0.8);
     let volume = t * (inner + 0.5 * t * (neutral - inner) / kt);
     let include = Path::new("/usr/include/opencascade");
@@ -101,12 +105,9 @@ fn opencascade_reads_the_formed_hopper_as_a_valid_closed_solid() {
 }
 
 /// The curves of examples/cli/hopper.json: the square and the circle (rational quadratics).
-fn hopper_curves() -> (
-    rmfsurf::bezier::PiecewiseCurve,
-    rmfsurf::bezier::PiecewiseCurve,
-) {
-    use glam::DVec3;
-    use rmfsurf::bezier::{homogeneous::lift, PiecewiseCurve, RationalBezierCurve};
+fn hopper_curves() -> (rmfsurf::PiecewiseCurve, rmfsurf::PiecewiseCurve) {
+    use rmfsurf::glam::DVec3;
+    use rmfsurf::{PiecewiseCurve, RationalBezierCurve};
     let c = [
         DVec3::new(-100.0, -100.0, 0.0),
         DVec3::new(100.0, -100.0, 0.0),
@@ -124,11 +125,10 @@ fn hopper_curves() -> (
     let circle = (0..4)
         .map(|k| {
             let (p0, p2) = (at(k), at(k + 1));
-            RationalBezierCurve::from_homogeneous(vec![
-                lift(p0, 1.0),
-                lift(p0 + p2 - centre, std::f64::consts::FRAC_1_SQRT_2),
-                lift(p2, 1.0),
-            ])
+            RationalBezierCurve::from_weighted(
+                &[p0, p0 + p2 - centre, p2],
+                &[1.0, std::f64::consts::FRAC_1_SQRT_2, 1.0],
+            )
             .unwrap()
         })
         .collect();
@@ -136,22 +136,4 @@ fn hopper_curves() -> (
         PiecewiseCurve::with_unit_intervals(square).unwrap(),
         PiecewiseCurve::with_unit_intervals(circle).unwrap(),
     )
-}
-
-/// Area of a layer by Gauss–Legendre quadrature on every patch.
-fn area(part: &rmfsurf::sheet::SheetPart, layer: rmfsurf::sheet::Layer) -> f64 {
-    let g = rmfsurf::math::GaussLegendre::new(16);
-    part.surface(layer)
-        .unwrap()
-        .patches()
-        .iter()
-        .map(|p| {
-            g.integrate(0.0, 1.0, |u| {
-                g.integrate(0.0, 1.0, |v| {
-                    let j = p.eval_jet(u, v);
-                    j.du.cross(j.dv).length()
-                })
-            })
-        })
-        .sum()
 }

@@ -9,8 +9,8 @@ use crate::construct::{ConeOutcome, Outcome, SheetOutcome, SweepOutcome};
 use crate::job::{Construction, Job, Method};
 use rmfsurf::metrics::{angle_between, orthonormality_error, parameter_line_cosine, rmf_defect};
 use rmfsurf::{
-    angle_errors, grid_parameters, max_scaled_curvature, FrameField, FrameKind, NurbsSurface,
-    Layer, PatternEdge, PieceKind, PiecewiseSurface, Side,
+    angle_errors, grid_parameters, max_scaled_curvature, FrameField, FrameKind, Layer,
+    NurbsSurface, PatternEdge, PieceKind, PiecewiseSurface, Side,
 };
 use serde_json::{json, Map, Value};
 use std::sync::Arc;

@@ -500,13 +500,13 @@ def hopper_nurbs(spec):
     polygon, a circle of four rational quadratics), as library curves."""
     corners = spec["bottom"]["polygon"]
     n = len(corners)
-    square = rmf.Curve.from_nurbs(1, corners + [corners[0]], [0] + list(range(n + 1)) + [n])
+    square = rmfsurf.Curve.from_nurbs(1, corners + [corners[0]], [0] + list(range(n + 1)) + [n])
     c = spec["top"]["circle"]
     (cx, cy, cz), r = c["center"], c["radius"]
     xs, ys = [1, 1, 0, -1, -1, -1, 0, 1, 1], [0, 1, 1, 1, 0, -1, -1, -1, 0]
     s = 0.5 ** 0.5
-    circle = rmf.Curve.from_nurbs(2, [(cx + r * x, cy + r * y, cz) for x, y in zip(xs, ys)],
-                                  [0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 4], [s if k % 2 else 1 for k in range(9)])
+    circle = rmfsurf.Curve.from_nurbs(2, [(cx + r * x, cy + r * y, cz) for x, y in zip(xs, ys)],
+                                      [0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 4], [s if k % 2 else 1 for k in range(9)])
     return square, circle
 
 
@@ -563,14 +563,10 @@ def part_h():
     t, k, tol = spec["thickness"], spec["k_factor"], spec["tolerance"]
     # The tool's part, rebuilt here from the same curves through the glue.
     square_curve, circle_curve = hopper_nurbs(spec["transition"])
-    options = rmf.SheetOptions()
-    rmf.call("rmf_sheet_options_init", rmf.ctypes.byref(options))
-    options.tolerance, options.thickness, options.k_factor = tol, t, k
-    part = rmf.SheetPart.made_by("rmf_cone_spline_transition", square_curve.pointer, circle_curve.pointer,
-                                 rmf.ctypes.byref(options))
+    part = rmfsurf.transition(square_curve, circle_curve, thickness=t, k_factor=k, tolerance=tol)
     # The exact areas of the layers, by quadrature on FreeCAD's own B-spline faces.
-    inner = area(part.layer("inner").to_face(), 2)
-    neutral_face = part.layer("neutral").to_face()
+    inner = area(rmf.part_face(part.layer("inner")), 2)
+    neutral_face = rmf.part_face(part.layer("neutral"))
     neutral = area(neutral_face, 2)
     # Offsets of a developable grow linearly in area: A(s) = A(0) + s (A(kt) - A(0)) / kt,
     # and the sheet's volume is t A(t/2).
@@ -581,7 +577,7 @@ def part_h():
             len(solid.Solids) == 1 and solid.isValid() and len(shells) == 1 and shells[0].isClosed())
     check("hopper.step: FreeCAD's solid volume against t·A(t/2), relative", abs(solid.Volume - volume) / volume, 1e-8)
     # The DXF flat pattern read by FreeCAD: lines and arcs, one closed outline, bend lines.
-    flat_face, bends = part.flat_pattern()
+    flat_face, bends = rmf.flat_pattern(part)
     outline = flat_face.OuterWire.Edges
     dxf_doc = FreeCAD.newDocument("hopper_dxf")
     Import.readDXF(os.path.join(FILES, "hopper.dxf"))
@@ -616,7 +612,7 @@ def part_h():
     own = rmf.transition(square.Shape, circle.Shape.Edges[0], t, k, tol)
     limit = tol * neutral / volume
     check("transition of FreeCAD's square and circle: volume against the tool's, relative",
-          abs(own.solid().Volume - solid.Volume) / solid.Volume, limit)
+          abs(rmf.part_solid(own).Volume - solid.Volume) / solid.Volume, limit)
     here = os.path.dirname(os.path.abspath(__file__))
     run_macro(os.path.join(here, "RmfTransition.FCMacro"), [Selected(square), Selected(circle, ["Edge1"])], document)
     made = [document.getObject(n) for n in ("Transition", "FlatPattern", "BendLines")]

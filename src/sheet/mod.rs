@@ -23,6 +23,5 @@ mod trim;
 pub use part::{PartReport, SheetOptions, SheetPart, Side};
 pub use thickness::{Layer, Reference, Sheet};
 
-
 #[cfg(test)]
 mod tests;
