@@ -191,6 +191,26 @@
 #define RMF_RRMF_MEASURE_SCALED_ENERGY_FRENET 4
 
 /**
+ * RmfFlatEdge.kind: a straight segment.
+ */
+#define RMF_FLAT_EDGE_LINE 0
+
+/**
+ * RmfFlatEdge.kind: a circular arc.
+ */
+#define RMF_FLAT_EDGE_ARC 1
+
+/**
+ * RmfFlatEdge.layer: the cutting outline.
+ */
+#define RMF_FLAT_CUT 0
+
+/**
+ * RmfFlatEdge.layer: a bend line (a ruling where two pieces meet).
+ */
+#define RMF_FLAT_BEND 1
+
+/**
  * Major version of the library; equals the first number of rmf_version().
  */
 #define RMF_VERSION_MAJOR 0
@@ -282,12 +302,6 @@ typedef struct RmfCurve RmfCurve;
 typedef struct RmfFrames RmfFrames;
 
 /**
- * A closed solid or a sheet of exact faces (opaque). Made by rmf_wire_sweep, freed with
- * rmf_shape_free. Immutable; may be read from several threads at once.
- */
-typedef struct RmfShape RmfShape;
-
-/**
  * A piecewise rational tensor-product surface s(u, v) (opaque). Freed with
  * rmf_surface_free. Immutable; may be read from several threads at once.
  */
@@ -337,15 +351,6 @@ typedef struct RmfBox {
  * or any non-zero multiple of it) at parameter t into *point and *tangent. It must not
  * unwind or longjmp; it is called from the calling thread only, during the call it was
  * passed to.
- *
- * One rule for every entry point taking a callback: the multiple is found once, from the
- * callback's own points (the speed |x'| by a fourth-order difference at the middle of the
- * domain, and the orientation along increasing t), and divided out, so a tangent 1e80 or
- * 1e-85 times the derivative, or pointing backwards (a negative multiple), gives the same
- * results as the derivative itself; a tangent within 1e-6 of the derivative is taken as
- * it is. Tangents should be a constant multiple (a varying one is only its direction to
- * algorithms that differentiate it, the cone approximations). Subnormal tangents
- * (components below 2.2e-308) are refused: their direction is not resolved in double.
  */
 typedef void (*RmfCurveCallback)(double t,
                                  void *user,
@@ -586,101 +591,127 @@ typedef struct RmfRrmfQuintic {
 } RmfRrmfQuintic;
 
 /**
- * What a face of an RmfShape is (values fixed).
+ * Which face of the sheet the designed surface is (RmfSheetOptions.reference).
  */
-typedef uint32_t RmfFaceKind;
+typedef uint32_t RmfSheetReference;
 
 /**
- * One face of an RmfShape (a copy; the pointers are borrowed from the shape).
+ * How a sheet-metal part is built and cut. Initialise with rmf_sheet_options_init, then
+ * change fields; the struct only grows at the end.
  */
-typedef struct RmfShapeFace {
-  RmfFaceKind kind;
+typedef struct RmfSheetOptions {
   /**
-   * RMF_FACE_SWEPT: the face's surface, borrowed: valid until the shape is freed (do not
-   * free it). NULL for caps.
+   * sizeof(RmfSheetOptions), written by rmf_sheet_options_init.
    */
-  const struct RmfSurface *surface;
+  size_t struct_size;
   /**
-   * RMF_FACE_PLANE: a point of the cap's plane (the wire's end) and its unit normal,
-   * pointing out of the solid. Zero for lateral faces.
+   * Largest distance of the surface from the designed developable and of the part's
+   * edges from the input's curves (default 1e-4), > 0.
    */
-  struct RmfVec3 plane_origin;
-  struct RmfVec3 plane_normal;
+  double tolerance;
   /**
-   * RMF_FACE_PLANE: the number of boundary loops (the first is the outer one; the others
-   * are the holes); rmf_shape_face_loop gives them. 0 for lateral faces (their boundary
-   * is their surface's natural boundary).
+   * Sheet thickness t (default 1), > 0.
    */
-  size_t loop_count;
+  double thickness;
   /**
-   * RMF_FACE_SWEPT: the index of the wire edge the face lies along (as given to
-   * rmf_wire_sweep) and of the profile edge it sweeps (Bézier segments of the profile,
-   * then of holes[0], holes[1], ...). Caps: the wire edge at that end, and 0.
+   * K-factor k (default 0.5): the neutral layer lies at k·t from the inner face,
+   * 0 ≤ k ≤ 1 (docs/sheet-metal.md has a table by material and bend ratio).
    */
-  size_t spine_edge;
-  size_t profile_edge;
+  double k_factor;
   /**
-   * 1 if the face's outward normal is −(s_u × s_v) (its surface runs the other way).
+   * RMF_SHEET_REFERENCE_* (default RMF_SHEET_REFERENCE_INNER).
    */
-  uint32_t reversed;
+  RmfSheetReference reference;
   /**
-   * Added in 0.2: the loop the profile edge belongs to (0 the profile, 1 + h holes[h]).
+   * Largest distance of the flat outline's biarcs from the exact developed boundary;
+   * 0 (the default) means the tolerance.
    */
-  size_t profile_loop;
+  double flat_tolerance;
   /**
-   * Added in 0.2: 1 if the face is the elbow of a round corner after spine_edge.
+   * Most cone pieces (default 100000), ≥ 2.
    */
-  uint32_t round_corner;
-} RmfShapeFace;
+  size_t max_pieces;
+} RmfSheetOptions;
 
 /**
- * How accurate a wire sweep is (all figures measured on the result).
+ * What the construction of a part measured and chose (caller's units).
  */
-typedef struct RmfSweepReport {
+typedef struct RmfSheetReport {
   /**
-   * Largest sampled distance between a curve edge and its PH cubic spline, in the wire's
-   * units (0 when every edge is a line or an arc).
+   * Number of cone, cylinder and plane pieces.
    */
-  double spine_distance;
+  size_t pieces;
   /**
-   * Largest angle (radians) between the frames used and the exact RMF plus the twist and
-   * closure turn (linear in arc length); 0 on untwisted lines and arcs.
+   * 1 if the part closes on itself (a transition), 0 for an open part.
    */
-  double rmf_angle_error;
+  uint32_t closed;
   /**
-   * Largest |cos| of the angle between the parameter lines of the lateral faces, sampled
-   * on every patch (0 for an exact RMF sweep; a twist or a closure turn tilts them, and
-   * miter legs are ruled between oblique sections).
+   * Largest sampled distance of the cone spline from the designed developable.
    */
-  double max_parameter_cosine;
+  double deviation;
   /**
-   * The least singularity margin g = 1 − κ c·n over the sweep (Mäurer & Jüttler Cor. 7;
-   * 1 where the wire is straight), and 1 − cuts/length for miter legs; > 0.
+   * Largest sampled distance of the first and second boundary from the input's curves.
    */
-  double singularity_margin;
+  double edge_distance[2];
   /**
-   * Number of faces.
+   * The smallest bend radius of the designed surface (0 at a vertex on an edge).
    */
-  size_t face_count;
+  double bend_radius;
   /**
-   * Added in 0.2: the largest turn of the frame about the tangent across a corner, against
-   * the minimal rotation of the tangent there (round corners: across the elbow; miters:
-   * across the miter plane), radians.
+   * Distances of the inner, neutral and outer layer from the designed surface, along
+   * the normal from the concave to the convex side.
    */
-  double corner_turn;
+  double inner;
+  double neutral;
+  double outer;
+} RmfSheetReport;
+
+/**
+ * A surface of the formed sheet.
+ */
+typedef uint32_t RmfSheetLayer;
+
+/**
+ * Which boundary of a part.
+ */
+typedef uint32_t RmfSheetSide;
+
+/**
+ * A point or vector in a plane (a flat pattern's coordinates).
+ */
+typedef struct RmfVec2 {
+  double x;
+  double y;
+} RmfVec2;
+
+/**
+ * One edge of a flat pattern: a line from `from` to `to`, or an arc about `center` of
+ * `radius` from `from` through the signed angle `sweep` (counter-clockwise when positive)
+ * to `to`. Coordinates in the caller's units, in the plane of the flat pattern.
+ */
+typedef struct RmfFlatEdge {
   /**
-   * Added in 0.2: closed wires: the largest distance between the sections where the
-   * wire closes (0 for open wires), in the wire's units.
+   * RMF_FLAT_CUT or RMF_FLAT_BEND.
    */
-  double seam_gap;
+  uint32_t layer;
   /**
-   * Added in 0.2: the largest distance between the sections of consecutive pieces at the
-   * joints inside the wire (rounding at G1 joints; ½θ²·r at near-tangent joints, where a
-   * line meets a curved edge at an angle θ so slight that the line is cut by the curved
-   * edge's normal plane), in the wire's units.
+   * RMF_FLAT_EDGE_LINE or RMF_FLAT_EDGE_ARC.
    */
-  double joint_gap;
-} RmfSweepReport;
+  uint32_t kind;
+  struct RmfVec2 from;
+  struct RmfVec2 to;
+  /**
+   * Arcs only (0 for lines).
+   */
+  struct RmfVec2 center;
+  double radius;
+  double sweep;
+} RmfFlatEdge;
+
+/**
+ * What rmf_cone_spline_part_export writes.
+ */
+typedef uint32_t RmfSheetFormat;
 
 /**
  * Borrowed view of a NURBS surface. Pole (i, j) is at index `i * pole_count_v + j`, i along
@@ -728,115 +759,73 @@ typedef struct RmfBezierPatch {
 } RmfBezierPatch;
 
 /**
- * How sharp (G0) joints of a wire are resolved (values fixed, validated).
+ * The designed surface is the inner face (the concave side of the bends): the sheet lies
+ * on the convex side. The default; the only choice for parts with a vertex on an edge
+ * (transitions from polygon corners), whose bend radius is 0 there.
  */
-typedef uint32_t RmfCorner;
+#define RMF_SHEET_REFERENCE_INNER 0
 
 /**
- * Options of rmf_wire_sweep. Initialise with rmf_wire_sweep_options_init, then change
- * fields; the struct only grows at the end.
+ * The designed surface is the neutral layer.
  */
-typedef struct RmfWireSweepOptions {
-  /**
-   * sizeof(RmfWireSweepOptions), set by rmf_wire_sweep_options_init.
-   */
-  size_t struct_size;
-  /**
-   * Largest distance of the PH cubic spline from a curve edge, absolute (default 1e-4).
-   */
-  double tolerance;
-  /**
-   * Largest gap between consecutive edge ends, relative to the wire's size (the diagonal
-   * of its bounding box); default 1e-7, below 1e-2. Gaps within it are closed by moving
-   * the later edge's start onto the earlier edge's end. Also the relative gap within
-   * which a profile loop counts as closed.
-   */
-  double join_tolerance;
-  /**
-   * Sharp joints: RMF_CORNER_ROUND (default) or RMF_CORNER_MITER.
-   */
-  RmfCorner corner;
-  /**
-   * RMF_CORNER_ROUND: the radius (finite, > 0); 0 = 1.5 times the profile's largest
-   * distance from the spine (default).
-   */
-  double corner_radius;
-  /**
-   * f2 at the wire's start, projected onto the normal plane; the zero vector (default)
-   * = the unit normal of the plane through the start tangent and the wire's point
-   * farthest from the tangent line (the wire's plane for a planar wire), or some normal
-   * of a straight wire.
-   */
-  struct RmfVec3 initial_normal;
-  /**
-   * Extra turn about the tangent over the whole wire, radians, linear in arc length
-   * (default 0).
-   */
-  double twist;
-  /**
-   * Closed wires: the frame closes modulo 2π/k with the smallest extra turn (k ≥ 1, e.g.
-   * 4 for a square profile); 0 (default) = 1. The turn must map the profile onto itself.
-   */
-  uint32_t closure_symmetry;
-  /**
-   * 1 (default): a closed solid (refuses open profiles); 0: the lateral faces only.
-   */
-  uint32_t solid;
-} RmfWireSweepOptions;
+#define RMF_SHEET_REFERENCE_NEUTRAL 1
 
 /**
- * What an RmfEdge is (values fixed, validated).
+ * The designed surface is the outer face: the sheet lies towards the bend centres.
  */
-typedef uint32_t RmfEdgeKind;
+#define RMF_SHEET_REFERENCE_OUTER 2
 
 /**
- * One edge of a wire, in either orientation. Unused points are ignored; `curve` is read
- * only for RMF_EDGE_CURVE (borrowed for the call; the shape keeps nothing of it).
+ * The designed surface (through the input's curves).
  */
-typedef struct RmfEdge {
-  RmfEdgeKind kind;
-  struct RmfVec3 points[3];
-  const struct RmfCurve *curve;
-} RmfEdge;
+#define RMF_SHEET_LAYER_REFERENCE 0
 
 /**
- * A lateral face: an exact rational RmfSurface (u along the profile edge, v along the
- * wire).
+ * The inner face (concave side).
  */
-#define RMF_FACE_SWEPT 0
+#define RMF_SHEET_LAYER_INNER 1
 
 /**
- * A planar cap at an end of an open wire, bounded by profile loops.
+ * The neutral layer, at k·t from the inner face: the one the flat pattern develops.
  */
-#define RMF_FACE_PLANE 1
+#define RMF_SHEET_LAYER_NEUTRAL 2
 
 /**
- * A straight line from points[0] to points[1].
+ * The outer face.
  */
-#define RMF_EDGE_LINE 0
+#define RMF_SHEET_LAYER_OUTER 3
 
 /**
- * A circular arc from points[0] through points[1] to points[2].
+ * The first boundary: a transition's bottom curve (u = 0 of the layer surfaces).
  */
-#define RMF_EDGE_ARC 1
+#define RMF_SHEET_SIDE_FIRST 0
 
 /**
- * A curve (any RmfCurve: NURBS data, PH, Möbius or RRMF curves, callbacks approximated
- * first with rmf_ph_spline_approximate, ...) on its whole domain.
+ * The second boundary: a transition's top curve (u = 1).
  */
-#define RMF_EDGE_CURVE 2
+#define RMF_SHEET_SIDE_SECOND 1
 
 /**
- * The corner replaced by a circular arc of corner_radius tangent to both edges (the
- * edges must lie in the plane of the corner near it): an exact torus elbow.
+ * STEP AP214: the formed part as a closed solid (MANIFOLD_SOLID_BREP) between its inner
+ * and outer face, with normal-cut edges.
  */
-#define RMF_CORNER_ROUND 0
+#define RMF_SHEET_FORMAT_STEP_SOLID 0
 
 /**
- * Both legs cut by the plane bisecting the corner, the frame reflected in it (the legs
- * must be straight lines).
+ * STEP AP214: the flat pattern as one planar face bounded by lines and circles.
  */
-#define RMF_CORNER_MITER 1
+#define RMF_SHEET_FORMAT_STEP_FLAT 1
+
+/**
+ * DXF R12: the flat pattern, LINE and ARC entities, outline on layer CUT, bend lines on
+ * layer BEND.
+ */
+#define RMF_SHEET_FORMAT_DXF 2
+
+/**
+ * SVG 1.1: the flat pattern in millimetres, bend lines dashed.
+ */
+#define RMF_SHEET_FORMAT_SVG 3
 
 #ifdef __cplusplus
 extern "C" {
@@ -1396,13 +1385,8 @@ RmfStatus rmf_frames_vector_curve(const struct RmfFrames *frames,
  * @param[out] image Receives μ(point). Untouched on failure.
  * @return RMF_OK on success.
  * @return RMF_ERROR_NULL_POINTER If maps or image is NULL.
- * Computed without squares of distances: (1e200, 0, 0) in the unit sphere goes to
- * (1e-200, 0, 0), and images beyond the range of double are refused, never infinite.
- *
  * @return RMF_ERROR_INVALID_INPUT If count = 0, an inversion is invalid (radius ≤ 0, zero
- *         normal, non-finite), or the image is not finite: the point is sent to infinity (a
- *         sphere centre) or beyond ±1.8e308 (e.g. a radius of 1e300 and a point at
- *         distance 1 from the centre).
+ *         normal, non-finite), or the point is sent to infinity (a sphere centre).
  */
 RmfStatus rmf_mobius_point(const struct RmfInversion *maps,
                            size_t count,
@@ -1720,10 +1704,8 @@ RmfStatus rmf_ph_exact_rmf_eval(const struct RmfCurve *ph_spline,
 /**
  * The accuracy of rational frames along a PH cubic spline (e.g. from rmf_ph_rational_rmf):
  * the largest angle about the tangent between them and the exact RMF (closed form, started
- * from the same frame), per spline segment. Frames made with a twist
- * (rmf_ph_rational_rmf_twisted, also the turn that closes a closed spine) are compared after
- * taking off that twist, linear in arc length; every other frame is compared with the RMF
- * itself, so a frame that drifts against the RMF (e.g. a Frenet frame) reports its drift.
+ * from the same frame), per spline segment. Frames made with a twist are compared after
+ * taking off a twist linear in arc length (their total turn against the RMF at the end).
  *
  * Size query: with per_segment = NULL and capacity = 0 only segment_count (and max_angle)
  * are written.
@@ -1752,18 +1734,11 @@ RmfStatus rmf_ph_rmf_angle_error(const struct RmfFrames *frames,
  * rmf_sweep_surface): condition (9) evaluated exactly over the profile (roots of a
  * polynomial) and scanned and refined along the spine.
  *
- * The analyses of §2.3 hold for rotation-minimizing frames only: frames that are not an
- * RMF (Frenet frames, twisted frames, frames of unknown origin) are refused, as are frames
- * of another spine (breakpoints or tangent differ, as for rmf_sweep_surface).
- *
- * @param[in] spine, frames, profile As for rmf_sweep_surface; frames from
- *            rmf_ph_rational_rmf, rmf_mobius_rrmf_hermite / _approximate, rmf_rrmf_* or
- *            rmf_mobius_frames of such frames.
+ * @param[in] spine, frames, profile As for rmf_sweep_surface.
  * @param[out] out Receives the margin.
  * @return RMF_OK, RMF_ERROR_NULL_POINTER if an argument is NULL, or
- *         RMF_ERROR_INVALID_INPUT if the frames are not rational frames of the spine (their
- *         breakpoints or their tangent differ), are not rotation-minimizing, or frame
- *         pieces × profile segments exceed 2^15 (a bound on the work of one call).
+ *         RMF_ERROR_INVALID_INPUT if the frames are not rational frames of the spine, or
+ *         frame pieces × profile segments exceed 2^15 (a bound on the work of one call).
  */
 RmfStatus rmf_sweep_singularity_margin(const struct RmfCurve *spine,
                                        const struct RmfFrames *frames,
@@ -1776,14 +1751,12 @@ RmfStatus rmf_sweep_singularity_margin(const struct RmfCurve *spine,
  * rational RMFs it agrees with the NURBS surface up to the frames' approximation error).
  * Its sign tells elliptic (K > 0) from hyperbolic (K < 0) regions.
  *
- * @param[in] spine, frames, profile As for rmf_sweep_singularity_margin (rotation-minimizing
- *            frames of the spine).
+ * @param[in] spine, frames, profile As for rmf_sweep_surface.
  * @param[in] u, v Profile and spine parameters inside their domains.
  * @param[out] k Receives K.
  * @return RMF_OK, RMF_ERROR_NULL_POINTER if an argument is NULL, or
  *         RMF_ERROR_INVALID_INPUT if u or v is outside its domain, the frames are not
- *         rotation-minimizing rational frames of the spine, or frame pieces × profile
- *         segments exceed 2^15.
+ *         rational frames of the spine, or frame pieces × profile segments exceed 2^15.
  */
 RmfStatus rmf_sweep_gaussian_curvature(const struct RmfCurve *spine,
                                        const struct RmfFrames *frames,
@@ -1801,8 +1774,7 @@ RmfStatus rmf_sweep_gaussian_curvature(const struct RmfCurve *spine,
  *
  * Size query: with points = NULL and capacity = 0 only count is written.
  *
- * @param[in] spine, frames, profile As for rmf_sweep_singularity_margin (rotation-minimizing
- *            frames of the spine).
+ * @param[in] spine, frames, profile As for rmf_sweep_surface.
  * @param[in] v_samples Number of spine parameters, 2 … 2^24.
  * @param[out] points Buffer for capacity points.
  * @param[in] capacity Capacity of points.
@@ -1811,8 +1783,8 @@ RmfStatus rmf_sweep_gaussian_curvature(const struct RmfCurve *spine,
  * @return RMF_ERROR_NULL_POINTER If spine, frames, profile or count is NULL, or points is
  *         NULL with capacity > 0.
  * @return RMF_ERROR_INVALID_INPUT If v_samples < 2 or v_samples × profile segments > 2^24,
- *         the frames are not rotation-minimizing rational frames of the spine, or frame
- *         pieces × profile segments exceed 2^15.
+ *         the frames are not rational frames of the spine, or frame pieces × profile
+ *         segments exceed 2^15.
  * @return RMF_ERROR_BUFFER_TOO_SMALL If 0 < capacity < count; then only count is written.
  */
 RmfStatus rmf_sweep_parabolic_points(const struct RmfCurve *spine,
@@ -2040,74 +2012,192 @@ RmfStatus rmf_rrmf_spline_hermite(const struct RmfVec3 *points,
                                   struct RmfFrames **frames);
 
 /**
- * Frees a shape; its face surfaces and loop curves become invalid. NULL is a no-op.
- * \since 0.2
- */
-void rmf_shape_free(struct RmfShape *shape);
-
-/**
- * The number of faces of a shape (lateral faces first, then the caps); 0 for NULL.
- * \since 0.2
- */
-size_t rmf_shape_face_count(const struct RmfShape *shape);
-
-/**
- * Whether a shape is a closed, consistently oriented solid (1) or a sheet (0); 0 for NULL.
- * \since 0.2
- */
-uint32_t rmf_shape_is_solid(const struct RmfShape *shape);
-
-/**
- * Describes face `index` of a shape.
+ * Writes the default options and the struct's size.
  *
- * @param[in] shape The shape.
- * @param[in] index 0 ≤ index < rmf_shape_face_count(shape).
- * @param[out] out Receives the face; its surface pointer is borrowed from the shape.
- * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if index is out of range.
+ * @param[out] options Receives the defaults (tolerance 1e-4, thickness 1, k_factor 0.5,
+ *             reference inner, flat_tolerance 0 = the tolerance, max_pieces 100000).
+ * @return RMF_OK, or RMF_ERROR_NULL_POINTER if options is NULL.
  * \since 0.2
  */
-RmfStatus rmf_shape_face(const struct RmfShape *shape, size_t index, struct RmfShapeFace *out);
+RmfStatus rmf_sheet_options_init(struct RmfSheetOptions *options);
 
 /**
- * Boundary loop `loop` of a planar cap: a closed 3-D curve, counter-clockwise about the
- * cap's outward normal for the outer loop (index 0), clockwise for holes.
+ * The transition piece between two closed convex planar curves — square-to-round,
+ * rectangle-to-round, round-to-round with offset or inclined planes, obround, polygon to
+ * polygon, any convex NURBS: the lateral surface of their convex hull, the developable
+ * that joins them. Flat triangles from straight edges, cones from corners to arcs
+ * (vertex at the corner), creases from corner to corner (bends of zero inner radius), and
+ * between two smooth arcs the rulings joining points with a common tangent plane; the
+ * cones and general parts as cone splines within the tolerance (Leopoldseder & Pottmann),
+ * G1 except at creases, each piece trimmed exactly by the two curves' planes. The sheet
+ * (thickness, K-factor) is that of `options`.
  *
- * @param[in] shape The shape.
- * @param[in] face A face of kind RMF_FACE_PLANE.
- * @param[in] loop 0 ≤ loop < the face's loop_count.
- * @param[out] out Receives the curve, borrowed: valid until the shape is freed (do not free it).
- * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if face or loop is out
- *         of range (lateral faces have no loops).
- * \since 0.2
- */
-RmfStatus rmf_shape_face_loop(const struct RmfShape *shape,
-                              size_t face,
-                              size_t loop,
-                              const struct RmfCurve **out);
-
-/**
- * The accuracy figures of a wire sweep (see RmfSweepReport).
+ * The curves must be closed and planar (to 1e-9 of their size), convex, and each must lie
+ * strictly on one side of the other's plane. Corners are where consecutive Bézier
+ * segments meet with different tangents (a polygon: degree 1 segments; a circle: rational
+ * quadratics).
  *
- * @return RMF_OK, or RMF_ERROR_NULL_POINTER if shape or out is NULL.
- * \since 0.2
- */
-RmfStatus rmf_shape_report(const struct RmfShape *shape, struct RmfSweepReport *out);
-
-/**
- * Writes a shape as a STEP AP214 file: a solid as a MANIFOLD_SOLID_BREP (a closed shell of
- * ADVANCED_FACEs on rational B-spline surfaces and planes, sharing edges and vertices),
- * a sheet as an open shell. FreeCAD and OpenCascade read it as one valid Solid. The file
- * is written under a temporary name beside `path` and renamed: on failure nothing is
- * written at `path`.
- *
- * @param[in] shape The shape.
- * @param[in] path The file's path (NUL-terminated; its stem names the product).
+ * @param[in] bottom The first boundary (e.g. from rmf_nurbs_curve_create).
+ * @param[in] top The second boundary.
+ * @param[in] options The sheet and tolerances, or NULL for the defaults; read during the
+ *            call only.
+ * @param[out] out Receives the part (an RmfConeSpline whose pieces are the designed
+ *             surface's); free with rmf_cone_spline_free. Untouched on failure.
  * @return RMF_OK on success.
- * @return RMF_ERROR_NULL_POINTER If shape or path is NULL.
- * @return RMF_ERROR_INVALID_INPUT If the file cannot be written (the message says why).
+ * @return RMF_ERROR_NULL_POINTER If bottom, top or out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If a curve is not closed, not planar or not convex (the
+ *         message names it and says by how much), the curves cross each other's planes,
+ *         or an option is out of range: tolerance ≤ 0, thickness ≤ 0, k_factor outside
+ *         [0, 1], an unknown reference, or a reference whose inner face would pass a
+ *         vertex (thickness beyond the smallest bend radius).
+ * @return RMF_ERROR_NO_SOLUTION If the hull has a degenerate ruling.
+ * @return RMF_ERROR_NOT_CONVERGED If the tolerance needs more than max_pieces pieces.
  * \since 0.2
  */
-RmfStatus rmf_shape_write_step(const struct RmfShape *shape, const char *path);
+RmfStatus rmf_cone_spline_transition(const struct RmfCurve *bottom,
+                                     const struct RmfCurve *top,
+                                     const struct RmfSheetOptions *options,
+                                     struct RmfConeSpline **out);
+
+/**
+ * What a part's construction measured: pieces, closure, distances of the surface and of
+ * the edges from the input, the smallest bend radius, the layers' distances.
+ *
+ * @param[out] report Receives the report.
+ * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if part is not a part.
+ * \since 0.2
+ */
+RmfStatus rmf_cone_spline_part_report(const struct RmfConeSpline *part,
+                                      struct RmfSheetReport *report);
+
+/**
+ * A layer of the formed part as one NURBS surface: u ∈ [0, 1] along the rulings from the
+ * first to the second boundary, v ∈ [k, k + 1] on piece k, G1 across the rulings (except
+ * at creases); exact rational (degree 1 in u).
+ *
+ * @param[in] layer RMF_SHEET_LAYER_*.
+ * @param[out] out Receives the surface; free with rmf_surface_free.
+ * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT for an unknown layer
+ *         or a handle that is not a part.
+ * \since 0.2
+ */
+RmfStatus rmf_cone_spline_part_surface(const struct RmfConeSpline *part,
+                                       RmfSheetLayer layer,
+                                       struct RmfSurface **out);
+
+/**
+ * A boundary curve of a layer (the edge of the formed part on that layer), with the
+ * surface's v parameter: on the designed surface within the tolerance of the input's
+ * curve (exactly in its plane for transitions).
+ *
+ * @param[in] layer RMF_SHEET_LAYER_*.
+ * @param[in] side RMF_SHEET_SIDE_FIRST or RMF_SHEET_SIDE_SECOND.
+ * @param[out] out Receives the curve; free with rmf_curve_free.
+ * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT for unknown codes.
+ * \since 0.2
+ */
+RmfStatus rmf_cone_spline_part_boundary(const struct RmfConeSpline *part,
+                                        RmfSheetLayer layer,
+                                        RmfSheetSide side,
+                                        struct RmfCurve **out);
+
+/**
+ * The flat pattern of the neutral layer for the cutter: the outline (RMF_FLAT_CUT) as
+ * lines and circular arcs only — exact where the development is a line or an arc, G1
+ * biarcs within the flat tolerance elsewhere —, closed (each edge starts where the one
+ * before ends, the last ends where the first starts) and counter-clockwise, followed by
+ * the bend lines (RMF_FLAT_BEND). A closed part (a transition) is cut open along its seam,
+ * the middle ruling of its largest planar piece.
+ *
+ * Size query: with capacity 0 (edges may be NULL) only count is written.
+ *
+ * @param[out] edges Buffer for capacity edges: the outline first, then the bend lines.
+ * @param[out] count Receives the number of edges.
+ * @return RMF_OK on success or for a size query.
+ * @return RMF_ERROR_NULL_POINTER If part or count is NULL, or edges is NULL with a
+ *         non-zero capacity.
+ * @return RMF_ERROR_BUFFER_TOO_SMALL If capacity is non-zero but too small; count is written.
+ * @return RMF_ERROR_INVALID_INPUT If the handle is not a part.
+ * \since 0.2
+ */
+RmfStatus rmf_cone_spline_flat_pattern(const struct RmfConeSpline *part,
+                                       struct RmfFlatEdge *edges,
+                                       size_t capacity,
+                                       size_t *count);
+
+/**
+ * Marks from the flat pattern to the formed part — holes, slots, text outlines, fold
+ * marks, given as points (curves as polylines): each flat point (coordinates of
+ * rmf_cone_spline_flat_pattern) to the point of `layer` straight across the sheet from
+ * its image on the neutral layer, by the exact isometry of the development (per piece a
+ * rotation by f·φ sin α about the developed vertex against f·φ about the axis, not the
+ * NURBS parameters), and optionally the unit normal there (from the inner to the outer
+ * face).
+ *
+ * @param[in] flat count points of the flat pattern.
+ * @param[in] layer RMF_SHEET_LAYER_*.
+ * @param[out] points count points on the layer.
+ * @param[out] normals count unit normals, or NULL.
+ * @return RMF_OK on success; nothing is written on failure.
+ * @return RMF_ERROR_NULL_POINTER If part, flat or points is NULL (count > 0).
+ * @return RMF_ERROR_INVALID_INPUT If a point is not finite or lies outside the flat
+ *         pattern (the message names it: flat[i]), for an unknown layer, or if the handle
+ *         is not a part.
+ * \since 0.2
+ */
+RmfStatus rmf_cone_spline_flat_to_surface(const struct RmfConeSpline *part,
+                                          const struct RmfVec2 *flat,
+                                          size_t count,
+                                          RmfSheetLayer layer,
+                                          struct RmfVec3 *points,
+                                          struct RmfVec3 *normals);
+
+/**
+ * Marks from the formed part to the flat pattern: each point on `layer` (within
+ * max_distance of it) to the flat pattern's point of the neutral layer straight across
+ * the sheet, by the exact isometry of the development.
+ *
+ * @param[in] points count points on the layer.
+ * @param[in] layer RMF_SHEET_LAYER_*.
+ * @param[in] max_distance Largest accepted distance of a point from the layer's part, ≥ 0.
+ * @param[out] flat count points of the flat pattern.
+ * @return RMF_OK on success; nothing is written on failure.
+ * @return RMF_ERROR_NULL_POINTER If part, points or flat is NULL (count > 0).
+ * @return RMF_ERROR_INVALID_INPUT If a point is not finite or farther than max_distance
+ *         from the layer's part (the message names it: points[i], and gives the distance),
+ *         max_distance is negative or not finite, the layer is unknown, or the handle is
+ *         not a part.
+ * \since 0.2
+ */
+RmfStatus rmf_cone_spline_surface_to_flat(const struct RmfConeSpline *part,
+                                          const struct RmfVec3 *points,
+                                          size_t count,
+                                          RmfSheetLayer layer,
+                                          double max_distance,
+                                          struct RmfVec2 *flat);
+
+/**
+ * The text of a file of the part: the formed solid or the flat pattern as STEP, the flat
+ * pattern as DXF or SVG (RMF_SHEET_FORMAT_*), exactly as the command-line tool writes it.
+ *
+ * Size query: with capacity 0 (buffer may be NULL) only length is written. Otherwise the
+ * text and a terminating NUL are written if capacity ≥ length + 1.
+ *
+ * @param[in] format RMF_SHEET_FORMAT_*.
+ * @param[out] buffer capacity bytes for the text and its NUL.
+ * @param[out] length Receives the length of the text (without the NUL).
+ * @return RMF_OK on success or for a size query.
+ * @return RMF_ERROR_NULL_POINTER If part or length is NULL, or buffer is NULL with a
+ *         non-zero capacity.
+ * @return RMF_ERROR_BUFFER_TOO_SMALL If 0 < capacity ≤ length; length is written.
+ * @return RMF_ERROR_INVALID_INPUT For an unknown format or a handle that is not a part.
+ * \since 0.2
+ */
+RmfStatus rmf_cone_spline_part_export(const struct RmfConeSpline *part,
+                                      RmfSheetFormat format,
+                                      char *buffer_,
+                                      size_t capacity,
+                                      size_t *length);
 
 /**
  * The message of the last failing call on the calling thread.
@@ -2321,65 +2411,6 @@ RmfStatus rmf_sweep_surface(const struct RmfCurve *spine,
                             const struct RmfFrames *frames,
                             const struct RmfCurve *profile,
                             struct RmfSurface **out);
-
-/**
- * Writes the default options and their struct_size.
- *
- * @param[out] options Receives the defaults (see RmfWireSweepOptions).
- * @return RMF_OK, or RMF_ERROR_NULL_POINTER if options is NULL.
- * \since 0.2
- */
-RmfStatus rmf_wire_sweep_options_init(struct RmfWireSweepOptions *options);
-
-/**
- * Sweeps a planar profile along a wire of lines, arcs and curves (rmfsurf's wire sweep):
- *
- * - the edges may come in either orientation; each must start where the previous one
- *   ends (within options->join_tolerance); a wire whose end meets its start is closed;
- * - lines and arcs (also NURBS segments that are exactly straight or circular) are swept
- *   exactly: along a line the rotation-minimizing frame (RMF) is constant and a circle
- *   gives an exact cylinder patch, along an arc the frame turns with it and the face is
- *   rational of degree 2 along the arc (an exact torus patch for a circle). Other curves
- *   are approximated by a PH cubic spline within options->tolerance and carry its rational
- *   RMF (Mäurer & Jüttler, eqs. (29), (36)–(42)). One RMF runs along the whole wire: it
- *   is carried across every joint without a turn about the tangent;
- * - sharp joints are rounded (a tangent arc, exact torus elbow) or mitred (options->corner);
- * - a closed wire closes without a seam: the RMF's holonomy is cancelled by the smallest
- *   turn modulo 2π/closure_symmetry, spread linearly in arc length;
- * - the profile (x along f2, y along f3, z = 0) is split at its Bézier segment joints:
- *   one lateral face per profile segment per line, quarter arc, or curve edge. With
- *   options->solid the profile and the holes must be closed, and an open wire gets planar
- *   caps: the faces form a closed, outward-oriented solid sharing its edges.
- *
- * Refused before anything is built: a profile reaching past the centre of curvature of an
- * arc, corner or curve (Mäurer & Jüttler Cor. 7), miter cuts that cross inside the
- * profile, a corner radius that does not fit the edges; the message names the edge or
- * joint and gives the largest (or smallest) allowed value.
- *
- * @param[in] edges edge_count edges (≥ 1), consecutive along the wire.
- * @param[in] edge_count Number of edges.
- * @param[in] profile The outer profile loop (a curve in the normal plane, z = 0).
- * @param[in] holes hole_count inner loops (closed, inside the profile, disjoint), or NULL
- *            when hole_count is 0. Need a closed profile.
- * @param[in] hole_count Number of holes.
- * @param[in] options NULL for the defaults, or initialised by rmf_wire_sweep_options_init.
- * @param[out] out Receives the shape; free with rmf_shape_free. Untouched on failure.
- * @return RMF_OK on success.
- * @return RMF_ERROR_NULL_POINTER If edges (with edge_count > 0), profile, a hole, holes
- *         (with hole_count > 0) or out is NULL.
- * @return RMF_ERROR_INVALID_INPUT If an edge, the profile, a hole or an option is invalid
- *         or the sweep would fold (the message names the edge, joint, loop or option).
- * @return RMF_ERROR_NO_SOLUTION / RMF_ERROR_NOT_CONVERGED If a curve edge admits no PH
- *         cubic spline within the tolerance (e.g. a cusp).
- * \since 0.2
- */
-RmfStatus rmf_wire_sweep(const struct RmfEdge *edges,
-                         size_t edge_count,
-                         const struct RmfCurve *profile,
-                         const struct RmfCurve *const *holes,
-                         size_t hole_count,
-                         const struct RmfWireSweepOptions *options,
-                         struct RmfShape **out);
 
 #ifdef __cplusplus
 }  // extern "C"

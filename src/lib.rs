@@ -14,6 +14,7 @@
 //! | quintics with exact rational RMFs | Farouki, Giannelli & Sestini \[FGS\] | [`rrmf_quintics`], [`best_quintic`], [`rrmf_spline`] |
 //! | cone spline surfaces, development, bending | Leopoldseder & Pottmann \[LP\] | [`cone_pair`], [`approximate_developable`], [`ConeSpline`], [`FlatPattern`] |
 //! | sweeps along wires of lines, arcs and curves into closed solids | \[MJ\] on curve edges, exact cylinders and tori | [`sweep_wire`], [`Edge`], [`WireSweep`], [`Shape`] |
+//! | sheet-metal parts: transitions, thickness, K-factor flat patterns, marks | \[LP\] and the classical transition layout | [`SheetPart`], [`SheetOptions`] |
 //!
 //! The papers are cited in full in `docs/references.md`; module and item docs cite them by
 //! equation number. Curves and surfaces are [`PiecewiseCurve`] and [`PiecewiseSurface`]
@@ -52,6 +53,7 @@ mod mesh;
 mod mobius;
 mod ph_cubic;
 mod rrmf_quintic;
+mod sheet;
 mod solid;
 mod sweep;
 #[cfg(test)]
@@ -123,6 +125,9 @@ pub use cone_spline::{
 pub use wire::{
     sweep_wire, Corner, Edge, Face, FaceKind, Shape, SweepReport, WireSweep, MAX_FACES,
 };
+// Sheet-metal parts: transition pieces between two curves, thickness and K-factor, the
+// neutral layer's flat pattern, marks between flat and formed [LP].
+pub use sheet::{Layer, PartReport, Reference, Sheet, SheetOptions, SheetPart, Side};
 
 // Meshes of surfaces (for viewers and mesh checks).
 pub use mesh::{grid_normals, grid_parameters, mesh_size, tessellate, TriangleMesh};

@@ -3,7 +3,9 @@
 //! (`boundary::guard`), map `Result` to `RmfStatus`, and write out-pointers last.
 //!
 //! One module per C type: [`curve`] (`RmfCurve`), [`frames`] (`RmfFrames`), [`surface`]
-//! (`RmfSurface`), [`shape`] (`RmfShape`, made by the wire sweeps of [`wire`]); [`status`] holds the status codes, last error and version; [`types`]
+//! (`RmfSurface`), [`shape`] (`RmfShape`, made by the wire sweeps of [`wire`]), [`sheet`]
+//! (`RmfSheetOptions`, sheet-metal parts); [`status`] holds the status codes, last error and
+//! version; [`types`]
 //! the plain data structs and borrowed views; [`input`] the inputs several capabilities
 //! share (Hermite arrays, callback curves). The header `include/rmfsurf.h` is generated
 //! from these modules by cbindgen.
@@ -22,6 +24,7 @@ pub mod mobius;
 pub mod ph_cubic;
 pub mod rrmf_quintic;
 pub mod shape;
+pub mod sheet;
 pub mod status;
 pub mod surface;
 pub mod types;
@@ -31,6 +34,7 @@ pub use cone_spline::RmfConeSpline;
 pub use curve::RmfCurve;
 pub use frames::RmfFrames;
 pub use shape::RmfShape;
+pub use sheet::{RmfFlatEdge, RmfSheetOptions, RmfSheetReport};
 pub use status::RmfStatus;
 pub use surface::RmfSurface;
-pub use types::{RmfBezierCurve, RmfBezierPatch, RmfNurbsCurve, RmfNurbsSurface, RmfVec3};
+pub use types::{RmfBezierCurve, RmfBezierPatch, RmfNurbsCurve, RmfNurbsSurface, RmfVec2, RmfVec3};

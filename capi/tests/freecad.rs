@@ -4,8 +4,11 @@
 //! Python package rmfsurf installed as docs/install.md says (the wheel, `pip install
 //! --target` into FreeCAD's AdditionalPythonPackages; no environment variable): Part objects
 //! from the NURBS views (rmfsurf.freecad), FreeCAD's own Gaussian curvature, STEP written by
-//! FreeCAD and read back, the tool's files read by FreeCAD, both macros and the wire sweep.
-//! The script prints every figure with its limit. The FreeCAD examples of the docs run too.
+//! FreeCAD and read back, the tool's files read by FreeCAD, the macros and the wire sweep,
+//! and the sheet-metal hopper (examples/cli/hopper.json): its STEP solid, DXF and flat STEP
+//! face read by FreeCAD, the transition built in FreeCAD, and the comparison with FreeCAD's
+//! own mesh unwrapping. The script prints every figure with its limit. The FreeCAD examples
+//! of the docs run too.
 //!
 //! `cargo test --test freecad -- --nocapture` shows them.
 
@@ -66,6 +69,19 @@ fn freecad_reads_our_files_and_builds_exact_part_objects() {
     );
     // The wire sweep input: its STEP solid.
     run_cli(&files, "pipe", &["-q", "-o", "pipe.step"]);
+    run_cli(
+        &files,
+        "hopper",
+        &[
+            "-q",
+            "-o",
+            "hopper.step",
+            "-o",
+            "hopper.dxf",
+            "-o",
+            "hopper.flat.step",
+        ],
+    );
     let work = fresh_dir("freecad_work");
     install_for_freecad(&work);
     let script = root().join("examples/freecad/check_in_freecad.py");

@@ -22,6 +22,7 @@ pub mod ph_cubic;
 pub mod rrmf_quintic;
 pub mod session;
 pub mod wire;
+pub mod sheet;
 
 use session::Session;
 
@@ -45,6 +46,7 @@ pub const TARGETS: &[(&str, Target)] = &[
     ("rrmf_quintic", rrmf_quintic),
     ("cone_spline", cone_spline),
     ("wire", wire),
+    ("sheet", sheet),
 ];
 
 /// NURBS curves and surfaces, views, evaluation, tessellation, frames, sweeps.
@@ -72,4 +74,7 @@ pub fn cone_spline(input: &[u8]) {
 pub fn wire(input: &[u8]) {
     let ops: Vec<fn(&mut Session)> = wire::OPS.iter().chain(ph_cubic::OPS).copied().collect();
     run(input, &ops)
+/// Sheet-metal parts: transitions, layers, flat patterns, marks, exports.
+pub fn sheet(input: &[u8]) {
+    run(input, sheet::OPS)
 }
