@@ -118,6 +118,28 @@ impl<'a> ProfileSurface<'a> {
                 )
             }
         }
+        Self::of_checked_frames(spine, frames, profile)
+    }
+
+    /// The sweep with any frames of the spine (orthonormal, f₁ the tangent), rotation
+    /// minimizing or not, for its singularity margin only: s_u lies in the normal plane and
+    /// the part of s_v along the tangent is |x′|·g whatever the frames' turn about the
+    /// tangent, so g > 0 everywhere still guarantees a regular sweep (g ≤ 0 then no longer
+    /// implies a fold: a sufficient test, as the wire sweeps use it).
+    pub(crate) fn with_adapted_frames(
+        spine: &'a PiecewiseCurve,
+        frames: &'a RationalFrames,
+        profile: &'a PiecewiseCurve,
+    ) -> Result<Self> {
+        check_frames_belong_to(spine, frames)?;
+        Self::of_checked_frames(spine, frames, profile)
+    }
+
+    fn of_checked_frames(
+        spine: &'a PiecewiseCurve,
+        frames: &'a RationalFrames,
+        profile: &'a PiecewiseCurve,
+    ) -> Result<Self> {
         let (pieces, profile_pieces) = (frames.segments().len(), profile.segments().len());
         if pieces.saturating_mul(profile_pieces) > MAX_ANALYSIS_PAIRS {
             return invalid!(

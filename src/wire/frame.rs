@@ -553,7 +553,7 @@ pub(crate) fn singularity_margin(
             (_, PieceFrame::Rational(frames)) => {
                 let mut least = f64::INFINITY;
                 for (_, _, edge) in profile.edges() {
-                    let analysis = ProfileSurface::new(&framed.spine, frames, edge)
+                    let analysis = ProfileSurface::with_adapted_frames(&framed.spine, frames, edge)
                         .with_context(|| format!("edge {}", piece.edge))?;
                     let m = analysis.singularity_margin();
                     if m.margin <= 0.0 {
