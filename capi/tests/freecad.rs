@@ -4,8 +4,9 @@
 //! Python package rmfsurf installed as docs/install.md says (the wheel, `pip install
 //! --target` into FreeCAD's AdditionalPythonPackages; no environment variable): Part objects
 //! from the NURBS views (rmfsurf.freecad), FreeCAD's own Gaussian curvature, STEP written by
-//! FreeCAD and read back, the tool's files read by FreeCAD, both macros and the wire sweep.
-//! The script prints every figure with its limit. The FreeCAD examples of the docs run too.
+//! FreeCAD and read back, the tool's files read by FreeCAD, rmfsurf.freecad's selection
+//! entry points and the wire sweep. The script prints every figure with its limit. The
+//! FreeCAD examples of the docs run too. (The macros and the workbench: workbench.rs.)
 //!
 //! `cargo test --test freecad -- --nocapture` shows them.
 

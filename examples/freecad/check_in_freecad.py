@@ -17,7 +17,9 @@ What is checked, each figure printed with its limit:
      spatial boundary curves (measured by FreeCAD on the tool's curve STEP); and the SVG
      drawing of the same pattern;
   E. FreeCAD's mesh reader reads the tool's OBJ as the library's tessellation;
-  F. both macros, with a selection as the GUI would give it.
+  F. rmfsurf.freecad's selection entry points (sweep_selection, cone_spline_selection),
+     with a selection as the GUI would give it (the macros are wrappers of the RmfSurf
+     workbench now, checked by capi/tests/workbench.rs).
 freecadcmd exits 0 on an exception, so the script exits 1 itself on any failure, and
 prints FREECAD CHECKS OK last (report lines start with '| ') when everything passed.
 """
@@ -310,7 +312,7 @@ def part_e(parts):
 
 
 # ---------------------------------------------------------------------------------------
-# F. The macros
+# F. The selection entry points
 
 
 class Selected:
@@ -336,20 +338,6 @@ def sweep_inputs(document):
     sketch.addGeometry(Part.Circle(V(0, 0, 0), V(0, 0, 1), 0.2))
     document.recompute()
     return spine, sketch
-
-
-def run_macro(path, selection, document):
-    """Runs a macro file as FreeCAD would, with a stand-in for the GUI's selection."""
-    import types
-    gui = types.ModuleType("FreeCADGui")
-    gui.Selection = types.SimpleNamespace(getSelectionEx=lambda: selection)
-    sys.modules["FreeCADGui"] = gui
-    FreeCAD.setActiveDocument(document.Name)
-    try:
-        with open(path) as f:
-            exec(compile(f.read(), path, "exec"), {"__file__": path, "__name__": "__main__"})
-    finally:
-        del sys.modules["FreeCADGui"]
 
 
 # 8-point Gauss-Legendre nodes and weights on [-1, 1].
@@ -380,13 +368,11 @@ def area(face, parts=8):
 
 
 def part_f():
-    say("F. The macros")
-    here = os.path.dirname(os.path.abspath(__file__))
-    document = FreeCAD.newDocument("macros")
+    say("F. The selection entry points")
+    document = FreeCAD.newDocument("selections")
     spine, sketch = sweep_inputs(document)
-    run_macro(os.path.join(here, "RmfSweep.FCMacro"), [Selected(sketch), Selected(spine, ["Edge1"])], document)
-    swept = document.getObject("RmfSweep")
-    require("RmfSweep.FCMacro: made RmfSweep, one valid face", swept is not None
+    swept = rmf.sweep_selection([Selected(sketch), Selected(spine, ["Edge1"])], document)
+    require("sweep_selection: made RmfSweep, one valid face", swept is not None
             and len(swept.Shape.Faces) == 1 and swept.Shape.isValid())
     face, edge = swept.Shape.Faces[0], spine.Shape.Edges[0]
     u0, u1, v0, v1 = face.ParameterRange
@@ -409,9 +395,9 @@ def part_f():
     part = document.addObject("Part::Feature", "Frustum")
     part.Shape = Part.Face(frustum)
     document.recompute()
-    run_macro(os.path.join(here, "RmfConeSpline.FCMacro"), [Selected(part, ["Face1"])], document)
+    rmf.cone_spline_selection([Selected(part, ["Face1"])], document)
     cone, flat, outline = (document.getObject(n) for n in ("ConeSpline", "FlatPattern", "CuttingOutline"))
-    require("RmfConeSpline.FCMacro: made ConeSpline, FlatPattern, CuttingOutline, all valid",
+    require("cone_spline_selection: made ConeSpline, FlatPattern, CuttingOutline, all valid",
             None not in (cone, flat, outline) and all(o.Shape.isValid() for o in (cone, flat, outline)))
     slant = (4.0 + 0.25) ** 0.5
     expected_area = 0.75 * 3.141592653589793 * 1.5 * slant
