@@ -60,10 +60,10 @@ inline std::vector<double> grid_parameters(const double *knots, size_t count, in
     return params;
 }
 
-inline SurfaceReport check_surface(const RmfNurbsSurface &surface, int steps_u, int steps_v) {
+/* The checks on the grid of the parameters `us` × `vs` (e.g. away from a singular row). */
+inline SurfaceReport check_surface_at(const RmfNurbsSurface &surface, const std::vector<double> &us,
+                                      const std::vector<double> &vs) {
     SurfaceReport r;
-    const std::vector<double> us = grid_parameters(surface.knots_u, surface.knot_count_u, steps_u);
-    const std::vector<double> vs = grid_parameters(surface.knots_v, surface.knot_count_v, steps_v);
     const size_t rows = us.size(), cols = vs.size();
     std::vector<RmfVec3> points(rows * cols);
     std::vector<double> k_analytic(rows * cols);
@@ -138,6 +138,11 @@ inline SurfaceReport check_surface(const RmfNurbsSurface &surface, int steps_u, 
             r.interior_vertices++;
         }
     return r;
+}
+
+inline SurfaceReport check_surface(const RmfNurbsSurface &surface, int steps_u, int steps_v) {
+    return check_surface_at(surface, grid_parameters(surface.knots_u, surface.knot_count_u, steps_u),
+                            grid_parameters(surface.knots_v, surface.knot_count_v, steps_v));
 }
 
 inline void print_report(const char *name, const SurfaceReport &r) {

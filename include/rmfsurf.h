@@ -191,6 +191,26 @@
 #define RMF_RRMF_MEASURE_SCALED_ENERGY_FRENET 4
 
 /**
+ * RmfFlatEdge.kind: a straight segment.
+ */
+#define RMF_FLAT_EDGE_LINE 0
+
+/**
+ * RmfFlatEdge.kind: a circular arc.
+ */
+#define RMF_FLAT_EDGE_ARC 1
+
+/**
+ * RmfFlatEdge.layer: the cutting outline.
+ */
+#define RMF_FLAT_CUT 0
+
+/**
+ * RmfFlatEdge.layer: a bend line (a ruling where two pieces meet).
+ */
+#define RMF_FLAT_BEND 1
+
+/**
  * Major version of the library; equals the first number of rmf_version().
  */
 #define RMF_VERSION_MAJOR 0
@@ -571,6 +591,129 @@ typedef struct RmfRrmfQuintic {
 } RmfRrmfQuintic;
 
 /**
+ * Which face of the sheet the designed surface is (RmfSheetOptions.reference).
+ */
+typedef uint32_t RmfSheetReference;
+
+/**
+ * How a sheet-metal part is built and cut. Initialise with rmf_sheet_options_init, then
+ * change fields; the struct only grows at the end.
+ */
+typedef struct RmfSheetOptions {
+  /**
+   * sizeof(RmfSheetOptions), written by rmf_sheet_options_init.
+   */
+  size_t struct_size;
+  /**
+   * Largest distance of the surface from the designed developable and of the part's
+   * edges from the input's curves (default 1e-4), > 0.
+   */
+  double tolerance;
+  /**
+   * Sheet thickness t (default 1), > 0.
+   */
+  double thickness;
+  /**
+   * K-factor k (default 0.5): the neutral layer lies at k·t from the inner face,
+   * 0 ≤ k ≤ 1 (docs/sheet-metal.md has a table by material and bend ratio).
+   */
+  double k_factor;
+  /**
+   * RMF_SHEET_REFERENCE_* (default RMF_SHEET_REFERENCE_INNER).
+   */
+  RmfSheetReference reference;
+  /**
+   * Largest distance of the flat outline's biarcs from the exact developed boundary;
+   * 0 (the default) means the tolerance.
+   */
+  double flat_tolerance;
+  /**
+   * Most cone pieces (default 100000), ≥ 2.
+   */
+  size_t max_pieces;
+} RmfSheetOptions;
+
+/**
+ * What the construction of a part measured and chose (caller's units).
+ */
+typedef struct RmfSheetReport {
+  /**
+   * Number of cone, cylinder and plane pieces.
+   */
+  size_t pieces;
+  /**
+   * 1 if the part closes on itself (a transition), 0 for an open part.
+   */
+  uint32_t closed;
+  /**
+   * Largest sampled distance of the cone spline from the designed developable.
+   */
+  double deviation;
+  /**
+   * Largest sampled distance of the first and second boundary from the input's curves.
+   */
+  double edge_distance[2];
+  /**
+   * The smallest bend radius of the designed surface (0 at a vertex on an edge).
+   */
+  double bend_radius;
+  /**
+   * Distances of the inner, neutral and outer layer from the designed surface, along
+   * the normal from the concave to the convex side.
+   */
+  double inner;
+  double neutral;
+  double outer;
+} RmfSheetReport;
+
+/**
+ * A surface of the formed sheet.
+ */
+typedef uint32_t RmfSheetLayer;
+
+/**
+ * Which boundary of a part.
+ */
+typedef uint32_t RmfSheetSide;
+
+/**
+ * A point or vector in a plane (a flat pattern's coordinates).
+ */
+typedef struct RmfVec2 {
+  double x;
+  double y;
+} RmfVec2;
+
+/**
+ * One edge of a flat pattern: a line from `from` to `to`, or an arc about `center` of
+ * `radius` from `from` through the signed angle `sweep` (counter-clockwise when positive)
+ * to `to`. Coordinates in the caller's units, in the plane of the flat pattern.
+ */
+typedef struct RmfFlatEdge {
+  /**
+   * RMF_FLAT_CUT or RMF_FLAT_BEND.
+   */
+  uint32_t layer;
+  /**
+   * RMF_FLAT_EDGE_LINE or RMF_FLAT_EDGE_ARC.
+   */
+  uint32_t kind;
+  struct RmfVec2 from;
+  struct RmfVec2 to;
+  /**
+   * Arcs only (0 for lines).
+   */
+  struct RmfVec2 center;
+  double radius;
+  double sweep;
+} RmfFlatEdge;
+
+/**
+ * What rmf_cone_spline_part_export writes.
+ */
+typedef uint32_t RmfSheetFormat;
+
+/**
  * Borrowed view of a NURBS surface. Pole (i, j) is at index `i * pole_count_v + j`, i along
  * u; the arrays are owned by the surface handle (do not free; valid until it is freed).
  */
@@ -614,6 +757,75 @@ typedef struct RmfBezierPatch {
   double v_start;
   double v_end;
 } RmfBezierPatch;
+
+/**
+ * The designed surface is the inner face (the concave side of the bends): the sheet lies
+ * on the convex side. The default; the only choice for parts with a vertex on an edge
+ * (transitions from polygon corners), whose bend radius is 0 there.
+ */
+#define RMF_SHEET_REFERENCE_INNER 0
+
+/**
+ * The designed surface is the neutral layer.
+ */
+#define RMF_SHEET_REFERENCE_NEUTRAL 1
+
+/**
+ * The designed surface is the outer face: the sheet lies towards the bend centres.
+ */
+#define RMF_SHEET_REFERENCE_OUTER 2
+
+/**
+ * The designed surface (through the input's curves).
+ */
+#define RMF_SHEET_LAYER_REFERENCE 0
+
+/**
+ * The inner face (concave side).
+ */
+#define RMF_SHEET_LAYER_INNER 1
+
+/**
+ * The neutral layer, at k·t from the inner face: the one the flat pattern develops.
+ */
+#define RMF_SHEET_LAYER_NEUTRAL 2
+
+/**
+ * The outer face.
+ */
+#define RMF_SHEET_LAYER_OUTER 3
+
+/**
+ * The first boundary: a transition's bottom curve (u = 0 of the layer surfaces).
+ */
+#define RMF_SHEET_SIDE_FIRST 0
+
+/**
+ * The second boundary: a transition's top curve (u = 1).
+ */
+#define RMF_SHEET_SIDE_SECOND 1
+
+/**
+ * STEP AP214: the formed part as a closed solid (MANIFOLD_SOLID_BREP) between its inner
+ * and outer face, with normal-cut edges.
+ */
+#define RMF_SHEET_FORMAT_STEP_SOLID 0
+
+/**
+ * STEP AP214: the flat pattern as one planar face bounded by lines and circles.
+ */
+#define RMF_SHEET_FORMAT_STEP_FLAT 1
+
+/**
+ * DXF R12: the flat pattern, LINE and ARC entities, outline on layer CUT, bend lines on
+ * layer BEND.
+ */
+#define RMF_SHEET_FORMAT_DXF 2
+
+/**
+ * SVG 1.1: the flat pattern in millimetres, bend lines dashed.
+ */
+#define RMF_SHEET_FORMAT_SVG 3
 
 #ifdef __cplusplus
 extern "C" {
@@ -1798,6 +2010,194 @@ RmfStatus rmf_rrmf_spline_hermite(const struct RmfVec3 *points,
                                   size_t eta_samples,
                                   struct RmfCurve **curve,
                                   struct RmfFrames **frames);
+
+/**
+ * Writes the default options and the struct's size.
+ *
+ * @param[out] options Receives the defaults (tolerance 1e-4, thickness 1, k_factor 0.5,
+ *             reference inner, flat_tolerance 0 = the tolerance, max_pieces 100000).
+ * @return RMF_OK, or RMF_ERROR_NULL_POINTER if options is NULL.
+ * \since 0.2
+ */
+RmfStatus rmf_sheet_options_init(struct RmfSheetOptions *options);
+
+/**
+ * The transition piece between two closed convex planar curves — square-to-round,
+ * rectangle-to-round, round-to-round with offset or inclined planes, obround, polygon to
+ * polygon, any convex NURBS: the lateral surface of their convex hull, the developable
+ * that joins them. Flat triangles from straight edges, cones from corners to arcs
+ * (vertex at the corner), creases from corner to corner (bends of zero inner radius), and
+ * between two smooth arcs the rulings joining points with a common tangent plane; the
+ * cones and general parts as cone splines within the tolerance (Leopoldseder & Pottmann),
+ * G1 except at creases, each piece trimmed exactly by the two curves' planes. The sheet
+ * (thickness, K-factor) is that of `options`.
+ *
+ * The curves must be closed and planar (to 1e-9 of their size), convex, and each must lie
+ * strictly on one side of the other's plane. Corners are where consecutive Bézier
+ * segments meet with different tangents (a polygon: degree 1 segments; a circle: rational
+ * quadratics).
+ *
+ * @param[in] bottom The first boundary (e.g. from rmf_nurbs_curve_create).
+ * @param[in] top The second boundary.
+ * @param[in] options The sheet and tolerances, or NULL for the defaults; read during the
+ *            call only.
+ * @param[out] out Receives the part (an RmfConeSpline whose pieces are the designed
+ *             surface's); free with rmf_cone_spline_free. Untouched on failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If bottom, top or out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If a curve is not closed, not planar or not convex (the
+ *         message names it and says by how much), the curves cross each other's planes,
+ *         or an option is out of range: tolerance ≤ 0, thickness ≤ 0, k_factor outside
+ *         [0, 1], an unknown reference, or a reference whose inner face would pass a
+ *         vertex (thickness beyond the smallest bend radius).
+ * @return RMF_ERROR_NO_SOLUTION If the hull has a degenerate ruling.
+ * @return RMF_ERROR_NOT_CONVERGED If the tolerance needs more than max_pieces pieces.
+ * \since 0.2
+ */
+RmfStatus rmf_cone_spline_transition(const struct RmfCurve *bottom,
+                                     const struct RmfCurve *top,
+                                     const struct RmfSheetOptions *options,
+                                     struct RmfConeSpline **out);
+
+/**
+ * What a part's construction measured: pieces, closure, distances of the surface and of
+ * the edges from the input, the smallest bend radius, the layers' distances.
+ *
+ * @param[out] report Receives the report.
+ * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if part is not a part.
+ * \since 0.2
+ */
+RmfStatus rmf_cone_spline_part_report(const struct RmfConeSpline *part,
+                                      struct RmfSheetReport *report);
+
+/**
+ * A layer of the formed part as one NURBS surface: u ∈ [0, 1] along the rulings from the
+ * first to the second boundary, v ∈ [k, k + 1] on piece k, G1 across the rulings (except
+ * at creases); exact rational (degree 1 in u).
+ *
+ * @param[in] layer RMF_SHEET_LAYER_*.
+ * @param[out] out Receives the surface; free with rmf_surface_free.
+ * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT for an unknown layer
+ *         or a handle that is not a part.
+ * \since 0.2
+ */
+RmfStatus rmf_cone_spline_part_surface(const struct RmfConeSpline *part,
+                                       RmfSheetLayer layer,
+                                       struct RmfSurface **out);
+
+/**
+ * A boundary curve of a layer (the edge of the formed part on that layer), with the
+ * surface's v parameter: on the designed surface within the tolerance of the input's
+ * curve (exactly in its plane for transitions).
+ *
+ * @param[in] layer RMF_SHEET_LAYER_*.
+ * @param[in] side RMF_SHEET_SIDE_FIRST or RMF_SHEET_SIDE_SECOND.
+ * @param[out] out Receives the curve; free with rmf_curve_free.
+ * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT for unknown codes.
+ * \since 0.2
+ */
+RmfStatus rmf_cone_spline_part_boundary(const struct RmfConeSpline *part,
+                                        RmfSheetLayer layer,
+                                        RmfSheetSide side,
+                                        struct RmfCurve **out);
+
+/**
+ * The flat pattern of the neutral layer for the cutter: the outline (RMF_FLAT_CUT) as
+ * lines and circular arcs only — exact where the development is a line or an arc, G1
+ * biarcs within the flat tolerance elsewhere —, closed (each edge starts where the one
+ * before ends, the last ends where the first starts) and counter-clockwise, followed by
+ * the bend lines (RMF_FLAT_BEND). A closed part (a transition) is cut open along its seam,
+ * the middle ruling of its largest planar piece.
+ *
+ * Size query: with capacity 0 (edges may be NULL) only count is written.
+ *
+ * @param[out] edges Buffer for capacity edges: the outline first, then the bend lines.
+ * @param[out] count Receives the number of edges.
+ * @return RMF_OK on success or for a size query.
+ * @return RMF_ERROR_NULL_POINTER If part or count is NULL, or edges is NULL with a
+ *         non-zero capacity.
+ * @return RMF_ERROR_BUFFER_TOO_SMALL If capacity is non-zero but too small; count is written.
+ * @return RMF_ERROR_INVALID_INPUT If the handle is not a part.
+ * \since 0.2
+ */
+RmfStatus rmf_cone_spline_flat_pattern(const struct RmfConeSpline *part,
+                                       struct RmfFlatEdge *edges,
+                                       size_t capacity,
+                                       size_t *count);
+
+/**
+ * Marks from the flat pattern to the formed part — holes, slots, text outlines, fold
+ * marks, given as points (curves as polylines): each flat point (coordinates of
+ * rmf_cone_spline_flat_pattern) to the point of `layer` straight across the sheet from
+ * its image on the neutral layer, by the exact isometry of the development (per piece a
+ * rotation by f·φ sin α about the developed vertex against f·φ about the axis, not the
+ * NURBS parameters), and optionally the unit normal there (from the inner to the outer
+ * face).
+ *
+ * @param[in] flat count points of the flat pattern.
+ * @param[in] layer RMF_SHEET_LAYER_*.
+ * @param[out] points count points on the layer.
+ * @param[out] normals count unit normals, or NULL.
+ * @return RMF_OK on success; nothing is written on failure.
+ * @return RMF_ERROR_NULL_POINTER If part, flat or points is NULL (count > 0).
+ * @return RMF_ERROR_INVALID_INPUT If a point is not finite or lies outside the flat
+ *         pattern (the message names it: flat[i]), for an unknown layer, or if the handle
+ *         is not a part.
+ * \since 0.2
+ */
+RmfStatus rmf_cone_spline_flat_to_surface(const struct RmfConeSpline *part,
+                                          const struct RmfVec2 *flat,
+                                          size_t count,
+                                          RmfSheetLayer layer,
+                                          struct RmfVec3 *points,
+                                          struct RmfVec3 *normals);
+
+/**
+ * Marks from the formed part to the flat pattern: each point on `layer` (within
+ * max_distance of it) to the flat pattern's point of the neutral layer straight across
+ * the sheet, by the exact isometry of the development.
+ *
+ * @param[in] points count points on the layer.
+ * @param[in] layer RMF_SHEET_LAYER_*.
+ * @param[in] max_distance Largest accepted distance of a point from the layer's part, ≥ 0.
+ * @param[out] flat count points of the flat pattern.
+ * @return RMF_OK on success; nothing is written on failure.
+ * @return RMF_ERROR_NULL_POINTER If part, points or flat is NULL (count > 0).
+ * @return RMF_ERROR_INVALID_INPUT If a point is not finite or farther than max_distance
+ *         from the layer's part (the message names it: points[i], and gives the distance),
+ *         max_distance is negative or not finite, the layer is unknown, or the handle is
+ *         not a part.
+ * \since 0.2
+ */
+RmfStatus rmf_cone_spline_surface_to_flat(const struct RmfConeSpline *part,
+                                          const struct RmfVec3 *points,
+                                          size_t count,
+                                          RmfSheetLayer layer,
+                                          double max_distance,
+                                          struct RmfVec2 *flat);
+
+/**
+ * The text of a file of the part: the formed solid or the flat pattern as STEP, the flat
+ * pattern as DXF or SVG (RMF_SHEET_FORMAT_*), exactly as the command-line tool writes it.
+ *
+ * Size query: with capacity 0 (buffer may be NULL) only length is written. Otherwise the
+ * text and a terminating NUL are written if capacity ≥ length + 1.
+ *
+ * @param[in] format RMF_SHEET_FORMAT_*.
+ * @param[out] buffer capacity bytes for the text and its NUL.
+ * @param[out] length Receives the length of the text (without the NUL).
+ * @return RMF_OK on success or for a size query.
+ * @return RMF_ERROR_NULL_POINTER If part or length is NULL, or buffer is NULL with a
+ *         non-zero capacity.
+ * @return RMF_ERROR_BUFFER_TOO_SMALL If 0 < capacity ≤ length; length is written.
+ * @return RMF_ERROR_INVALID_INPUT For an unknown format or a handle that is not a part.
+ * \since 0.2
+ */
+RmfStatus rmf_cone_spline_part_export(const struct RmfConeSpline *part,
+                                      RmfSheetFormat format,
+                                      char *buffer_,
+                                      size_t capacity,
+                                      size_t *length);
 
 /**
  * The message of the last failing call on the calling thread.

@@ -13,6 +13,7 @@
 //! | exact rational RMFs by Möbius maps | Bartoň, Jüttler & Wang \[BJW\] | [`MobiusMap`], [`mobius_hermite`], [`mobius_approximate`] |
 //! | quintics with exact rational RMFs | Farouki, Giannelli & Sestini \[FGS\] | [`rrmf_quintics`], [`best_quintic`], [`rrmf_spline`] |
 //! | cone spline surfaces, development, bending | Leopoldseder & Pottmann \[LP\] | [`cone_pair`], [`approximate_developable`], [`ConeSpline`], [`FlatPattern`] |
+//! | sheet-metal parts: transitions, thickness, K-factor flat patterns, marks | \[LP\] and the classical transition layout | [`SheetPart`], [`SheetOptions`] |
 //!
 //! The papers are cited in full in `docs/references.md`; module and item docs cite them by
 //! equation number. Curves and surfaces are [`PiecewiseCurve`] and [`PiecewiseSurface`]
@@ -51,6 +52,7 @@ mod mesh;
 mod mobius;
 mod ph_cubic;
 mod rrmf_quintic;
+mod sheet;
 mod solid;
 mod sweep;
 #[cfg(test)]
@@ -116,6 +118,10 @@ pub use cone_spline::{
     cone_pair, Approximation, ConePair, ConePiece, ConeSpline, Element, FlatPattern, Motion,
     PairCase, PatternEdge, PieceKind, Region, Rule,
 };
+
+// Sheet-metal parts: transition pieces between two curves, thickness and K-factor, the
+// neutral layer's flat pattern, marks between flat and formed [LP].
+pub use sheet::{Layer, PartReport, Reference, Sheet, SheetOptions, SheetPart, Side};
 
 // Meshes of surfaces (for viewers and mesh checks).
 pub use mesh::{grid_normals, grid_parameters, mesh_size, tessellate, TriangleMesh};

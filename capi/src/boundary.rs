@@ -186,7 +186,6 @@ pub(crate) unsafe fn buffer<'a, T>(
 /// # Safety
 /// Implementors are `#[repr(C)]` plain data whose first field is a `usize` and for which
 /// any bit pattern of their fields is a valid value (numbers, vectors, `u32` codes).
-#[allow(dead_code)] // until the first options struct
 pub(crate) unsafe trait OptionsStruct: Copy + Default {
     /// The size of the first published version of the struct.
     const FIRST_SIZE: usize;
@@ -196,7 +195,6 @@ pub(crate) unsafe trait OptionsStruct: Copy + Default {
 ///
 /// # Safety
 /// `options` must be NULL or point to at least `struct_size` readable bytes.
-#[allow(dead_code)] // until the first options struct
 pub(crate) unsafe fn options<T: OptionsStruct>(
     options: *const T,
     name: &'static str,

@@ -134,20 +134,36 @@ struct Fit {
 /// A cone spline surface (opaque). Freed with rmf_cone_spline_free. Immutable; may be read
 /// from several threads at once.
 pub struct RmfConeSpline {
-    spline: ConeSpline,
+    pub(crate) spline: ConeSpline,
     /// The pair case of each piece (RMF_CONE_CASE_*).
-    cases: Vec<u32>,
+    pub(crate) cases: Vec<u32>,
     fit: Option<Fit>,
+    /// A sheet-metal part (rmf_cone_spline_transition, rmf_cone_spline_part): `spline` is
+    /// its designed surface.
+    pub(crate) part: Option<std::sync::Arc<rmfsurf::SheetPart>>,
 }
 
 impl RmfConeSpline {
-    fn into_raw(self) -> *mut Self {
+    /// The handle of a sheet-metal part: its designed surface's cone spline and the part.
+    pub(crate) fn of_part(part: rmfsurf::SheetPart) -> rmfsurf::Result<Self> {
+        let spline = part.cone_spline()?;
+        Ok(Self {
+            cases: vec![RMF_CONE_CASE_NONE; spline.pieces().len()],
+            spline,
+            fit: None,
+            part: Some(std::sync::Arc::new(part)),
+        })
+    }
+
+    pub(crate) fn into_raw(self) -> *mut Self {
         Box::into_raw(Box::new(self))
     }
 
-    /// A derived spline (bent, developed, offset) keeps the cases and the fit report.
+    /// A derived spline (bent, developed, offset) keeps the cases and the fit report, not
+    /// the part.
     fn derived(&self, spline: ConeSpline) -> Self {
         Self {
+            part: None,
             spline,
             cases: self.cases.clone(),
             fit: self.fit.as_ref().map(|f| Fit {
@@ -255,6 +271,7 @@ pub unsafe extern "C" fn rmf_cone_spline_hermite(
                 spline,
                 cases,
                 fit: None,
+                part: None,
             }
             .into_raw(),
         );
@@ -273,6 +290,7 @@ unsafe fn finish_fit(
         write(p, fit.max_error);
     }
     let handle = RmfConeSpline {
+        part: None,
         spline: fit.spline,
         cases,
         fit: Some(Fit {
@@ -521,6 +539,7 @@ pub unsafe extern "C" fn rmf_cone_spline_osculating(
                 spline,
                 cases,
                 fit: None,
+                part: None,
             }
             .into_raw(),
         );

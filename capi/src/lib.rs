@@ -3,7 +3,7 @@
 //! (`boundary::guard`), map `Result` to `RmfStatus`, and write out-pointers last.
 //!
 //! One module per C type: [`curve`] (`RmfCurve`), [`frames`] (`RmfFrames`), [`surface`]
-//! (`RmfSurface`); [`status`] holds the status codes, last error and version; [`types`]
+//! (`RmfSurface`), [`sheet`] (`RmfSheetOptions`, sheet-metal parts); [`status`] holds the status codes, last error and version; [`types`]
 //! the plain data structs and borrowed views; [`input`] the inputs several capabilities
 //! share (Hermite arrays, callback curves). The header `include/rmfsurf.h` is generated
 //! from these modules by cbindgen.
@@ -21,6 +21,7 @@ pub mod input;
 pub mod mobius;
 pub mod ph_cubic;
 pub mod rrmf_quintic;
+pub mod sheet;
 pub mod status;
 pub mod surface;
 pub mod types;
@@ -28,6 +29,7 @@ pub mod types;
 pub use cone_spline::RmfConeSpline;
 pub use curve::RmfCurve;
 pub use frames::RmfFrames;
+pub use sheet::{RmfFlatEdge, RmfSheetOptions, RmfSheetReport};
 pub use status::RmfStatus;
 pub use surface::RmfSurface;
-pub use types::{RmfBezierCurve, RmfBezierPatch, RmfNurbsCurve, RmfNurbsSurface, RmfVec3};
+pub use types::{RmfBezierCurve, RmfBezierPatch, RmfNurbsCurve, RmfNurbsSurface, RmfVec2, RmfVec3};

@@ -44,6 +44,26 @@ impl From<RmfVec3> for DVec3 {
     }
 }
 
+/// A point or vector in a plane (a flat pattern's coordinates).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct RmfVec2 {
+    pub x: f64,
+    pub y: f64,
+}
+
+impl From<rmfsurf::glam::DVec2> for RmfVec2 {
+    fn from(v: rmfsurf::glam::DVec2) -> Self {
+        Self { x: v.x, y: v.y }
+    }
+}
+
+impl From<RmfVec2> for rmfsurf::glam::DVec2 {
+    fn from(v: RmfVec2) -> Self {
+        rmfsurf::glam::DVec2::new(v.x, v.y)
+    }
+}
+
 /// Borrowed view of a NURBS curve, the layout of OpenCascade Geom_BSplineCurve, FreeCAD
 /// Part.BSplineCurve, IGES 126 and STEP (with knots listed one by one, not with
 /// multiplicities).

@@ -9,9 +9,10 @@ use rmfsurf_capi::frames::*;
 use rmfsurf_capi::mobius::*;
 use rmfsurf_capi::ph_cubic::*;
 use rmfsurf_capi::rrmf_quintic::*;
+use rmfsurf_capi::sheet::*;
 use rmfsurf_capi::status::{rmf_last_error, rmf_status_name};
 use rmfsurf_capi::surface::*;
-use rmfsurf_capi::{RmfCurve, RmfFrames, RmfStatus, RmfVec3};
+use rmfsurf_capi::{RmfCurve, RmfFrames, RmfStatus, RmfVec2, RmfVec3};
 use std::ffi::{c_void, CStr};
 use std::ptr::{null, null_mut};
 
@@ -188,6 +189,107 @@ unsafe fn twisted_cubic_cones(
         out,
         &mut max_error,
     )
+}
+
+/// A closed polyline through `corners` (degree 1), or the circle about `centre` of radius r
+/// in the plane z = centre.z (four rational quadratic quarters).
+fn polygon_curve(corners: &[RmfVec3]) -> *mut RmfCurve {
+    let mut poles = corners.to_vec();
+    poles.push(corners[0]);
+    let n = poles.len();
+    let mut knots = vec![0.0];
+    knots.extend((0..n).map(|k| k as f64));
+    knots.push((n - 1) as f64);
+    let mut out = null_mut();
+    let status = unsafe {
+        rmf_nurbs_curve_create(
+            1,
+            poles.as_ptr(),
+            null(),
+            n,
+            knots.as_ptr(),
+            knots.len(),
+            &mut out,
+        )
+    };
+    assert_eq!(status, RmfStatus::RmfOk);
+    out
+}
+
+fn circle_curve(centre: RmfVec3, r: f64) -> *mut RmfCurve {
+    let xs = [1., 1., 0., -1., -1., -1., 0., 1., 1.];
+    let ys = [0., 1., 1., 1., 0., -1., -1., -1., 0.];
+    let poles: Vec<RmfVec3> = (0..9)
+        .map(|i| v(centre.x + r * xs[i], centre.y + r * ys[i], centre.z))
+        .collect();
+    let weights: Vec<f64> = (0..9)
+        .map(|i| if i % 2 == 1 { 0.5f64.sqrt() } else { 1.0 })
+        .collect();
+    let knots = [0., 0., 0., 1., 1., 2., 2., 3., 3., 4., 4., 4.];
+    let mut out = null_mut();
+    let status = unsafe {
+        rmf_nurbs_curve_create(
+            2,
+            poles.as_ptr(),
+            weights.as_ptr(),
+            9,
+            knots.as_ptr(),
+            12,
+            &mut out,
+        )
+    };
+    assert_eq!(status, RmfStatus::RmfOk);
+    out
+}
+
+fn square_curve() -> *mut RmfCurve {
+    polygon_curve(&[
+        v(-0.5, -0.5, 0.),
+        v(0.5, -0.5, 0.),
+        v(0.5, 0.5, 0.),
+        v(-0.5, 0.5, 0.),
+    ])
+}
+
+/// `rmf_cone_spline_transition` between `bottom` and `top` (freed here) with the default
+/// options at tolerance 1e-2 changed by `edit`; the part is freed.
+fn transition_with(
+    bottom: *mut RmfCurve,
+    top: *mut RmfCurve,
+    edit: impl Fn(&mut RmfSheetOptions),
+) -> RmfStatus {
+    let mut options = RmfSheetOptions::default();
+    unsafe { rmf_sheet_options_init(&mut options) };
+    options.tolerance = 1e-2;
+    edit(&mut options);
+    let mut out = null_mut();
+    unsafe {
+        let status = rmf_cone_spline_transition(bottom, top, &options, &mut out);
+        rmf_cone_spline_free(out);
+        rmf_curve_free(bottom);
+        rmf_curve_free(top);
+        status
+    }
+}
+
+/// A square-to-round part at tolerance 1e-2, for the rows that need one; `call` gets it,
+/// and the part is freed after.
+fn with_part(call: impl Fn(*mut RmfConeSpline) -> RmfStatus) -> RmfStatus {
+    let (bottom, top) = (square_curve(), circle_curve(v(0.1, 0., 1.), 0.3));
+    let mut options = RmfSheetOptions::default();
+    options.tolerance = 1e-2;
+    let mut part = null_mut();
+    unsafe {
+        assert_eq!(
+            rmf_cone_spline_transition(bottom, top, &options, &mut part),
+            RmfStatus::RmfOk
+        );
+        let status = call(part);
+        rmf_cone_spline_free(part);
+        rmf_curve_free(bottom);
+        rmf_curve_free(top);
+        status
+    }
 }
 
 fn rows() -> Vec<Row> {
@@ -810,6 +912,183 @@ fn rows() -> Vec<Row> {
                 }
             },
         },
+        Row {
+            what: "transition curve not closed",
+            function: "rmf_cone_spline_transition",
+            expected: INVALID,
+            names: "bottom is not closed",
+            call: |_| {
+                let poles = [v(0., 0., 0.), v(1., 0., 0.), v(1., 1., 0.)];
+                let knots = [0., 0., 1., 2., 2.];
+                let mut open = null_mut();
+                unsafe {
+                    rmf_nurbs_curve_create(
+                        1,
+                        poles.as_ptr(),
+                        null(),
+                        3,
+                        knots.as_ptr(),
+                        5,
+                        &mut open,
+                    )
+                };
+                transition_with(open, circle_curve(v(0.1, 0., 1.), 0.3), |_| {})
+            },
+        },
+        Row {
+            what: "transition curve not planar",
+            function: "rmf_cone_spline_transition",
+            expected: INVALID,
+            names: "top is not planar",
+            call: |_| {
+                let skew =
+                    polygon_curve(&[v(0., 0., 1.), v(1., 0., 1.), v(1., 1., 1.2), v(0., 1., 1.)]);
+                transition_with(square_curve(), skew, |_| {})
+            },
+        },
+        Row {
+            what: "transition curve not convex",
+            function: "rmf_cone_spline_transition",
+            expected: INVALID,
+            names: "bottom is not convex",
+            call: |_| {
+                let dart =
+                    polygon_curve(&[v(0., 0., 0.), v(2., 1., 0.), v(0., 0.5, 0.), v(-2., 1., 0.)]);
+                transition_with(dart, circle_curve(v(0.1, 0., 1.), 0.3), |_| {})
+            },
+        },
+        Row {
+            what: "transition curves that cross",
+            function: "rmf_cone_spline_transition",
+            expected: INVALID,
+            names: "the curves cross",
+            call: |_| {
+                let tilted = polygon_curve(&[
+                    v(-1., -1., -0.5),
+                    v(1., -1., 0.5),
+                    v(1., 1., 0.5),
+                    v(-1., 1., -0.5),
+                ]);
+                transition_with(square_curve(), tilted, |_| {})
+            },
+        },
+        Row {
+            what: "thickness 0",
+            function: "rmf_cone_spline_transition",
+            expected: INVALID,
+            names: "options->thickness",
+            call: |_| {
+                transition_with(square_curve(), circle_curve(v(0.1, 0., 1.), 0.3), |o| {
+                    o.thickness = 0.0
+                })
+            },
+        },
+        Row {
+            what: "K-factor outside [0, 1]",
+            function: "rmf_cone_spline_transition",
+            expected: INVALID,
+            names: "options->k_factor",
+            call: |_| {
+                transition_with(square_curve(), circle_curve(v(0.1, 0., 1.), 0.3), |o| {
+                    o.k_factor = 1.5
+                })
+            },
+        },
+        Row {
+            what: "thickness beyond the smallest bend radius",
+            function: "rmf_cone_spline_transition",
+            expected: INVALID,
+            names: "bend radius",
+            call: |_| {
+                transition_with(square_curve(), circle_curve(v(0.1, 0., 1.), 0.3), |o| {
+                    o.reference = RMF_SHEET_REFERENCE_OUTER
+                })
+            },
+        },
+        Row {
+            what: "sheet options of unknown size",
+            function: "rmf_cone_spline_transition",
+            expected: INVALID,
+            names: "options->struct_size",
+            call: |_| {
+                transition_with(square_curve(), circle_curve(v(0.1, 0., 1.), 0.3), |o| {
+                    o.struct_size = 8
+                })
+            },
+        },
+        Row {
+            what: "flat mark outside the part",
+            function: "rmf_cone_spline_flat_to_surface",
+            expected: INVALID,
+            names: "flat[1]",
+            call: |_| {
+                with_part(|part| {
+                    let flat = [RmfVec2 { x: 0.1, y: 0.0 }, RmfVec2 { x: 1e3, y: 0.0 }];
+                    let mut points = [v(0., 0., 0.); 2];
+                    unsafe {
+                        rmf_cone_spline_flat_to_surface(
+                            part,
+                            flat.as_ptr(),
+                            2,
+                            RMF_SHEET_LAYER_NEUTRAL,
+                            points.as_mut_ptr(),
+                            null_mut(),
+                        )
+                    }
+                })
+            },
+        },
+        Row {
+            what: "formed mark off the part",
+            function: "rmf_cone_spline_surface_to_flat",
+            expected: INVALID,
+            names: "points[0]",
+            call: |_| {
+                with_part(|part| {
+                    let points = [v(5., 5., 5.)];
+                    let mut flat = [RmfVec2 { x: 0., y: 0. }];
+                    unsafe {
+                        rmf_cone_spline_surface_to_flat(
+                            part,
+                            points.as_ptr(),
+                            1,
+                            RMF_SHEET_LAYER_OUTER,
+                            1e-6,
+                            flat.as_mut_ptr(),
+                        )
+                    }
+                })
+            },
+        },
+        Row {
+            what: "flat pattern buffer too small",
+            function: "rmf_cone_spline_flat_pattern",
+            expected: TOO_SMALL,
+            names: "need",
+            call: |_| {
+                with_part(|part| {
+                    let mut edges = [RmfFlatEdge::default(); 2];
+                    let mut count = 0;
+                    unsafe { rmf_cone_spline_flat_pattern(part, edges.as_mut_ptr(), 2, &mut count) }
+                })
+            },
+        },
+        Row {
+            what: "cone spline that is not a part",
+            function: "rmf_cone_spline_part_report",
+            expected: INVALID,
+            names: "not a sheet-metal part",
+            call: |_| {
+                let mut spline = null_mut();
+                let mut report = RmfSheetReport::default();
+                unsafe {
+                    twisted_cubic_cones(0, 1000, &mut spline);
+                    let status = rmf_cone_spline_part_report(spline, &mut report);
+                    rmf_cone_spline_free(spline);
+                    status
+                }
+            },
+        },
     ]
 }
 
@@ -831,6 +1110,7 @@ fn every_bad_input_gets_its_status_and_a_message_naming_it() {
     for row in rows() {
         let status = (row.call)(&fixtures);
         let message = last_error();
+        println!("{}: {} {message}", row.what, status_name(status));
         assert_eq!(status, row.expected, "{}: {message}", row.what);
         assert!(
             message.starts_with(&format!("{}: ", row.function)),

@@ -5,8 +5,11 @@
 //! --target` into FreeCAD's AdditionalPythonPackages; no environment variable): Part objects
 //! from the NURBS views (rmfsurf.freecad), FreeCAD's own Gaussian curvature, STEP written by
 //! FreeCAD and read back, the tool's files read by FreeCAD, rmfsurf.freecad's selection
-//! entry points and the wire sweep. The script prints every figure with its limit. The
-//! FreeCAD examples of the docs run too. (The macros and the workbench: workbench.rs.)
+//! entry points and the wire sweep, and the sheet-metal hopper (examples/cli/hopper.json):
+//! its STEP solid, DXF and flat STEP face read by FreeCAD, the transition built in FreeCAD,
+//! and the comparison with FreeCAD's own mesh unwrapping. The script prints every figure
+//! with its limit. The FreeCAD examples of the docs run too. (The macros and the
+//! workbench: workbench.rs.)
 //!
 //! `cargo test --test freecad -- --nocapture` shows them.
 
@@ -64,6 +67,19 @@ fn freecad_reads_our_files_and_builds_exact_part_objects() {
         &files,
         "cone_spline",
         &["-q", "-o", "cone_spline.dxf", "-o", "cone_spline.svg"],
+    );
+    run_cli(
+        &files,
+        "hopper",
+        &[
+            "-q",
+            "-o",
+            "hopper.step",
+            "-o",
+            "hopper.dxf",
+            "-o",
+            "hopper.flat.step",
+        ],
     );
     let work = fresh_dir("freecad_work");
     install_for_freecad(&work);

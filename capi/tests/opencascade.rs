@@ -43,3 +43,97 @@ fn opencascade_kernel_example_builds_and_checks_the_surfaces() {
     );
     run(&exe, false);
 }
+
+/// OpenCascade's STEP reader (TKSTEP, libocct-data-exchange-dev) on the formed hopper of
+/// examples/cli/hopper.json as the command-line tool writes it: one valid closed solid
+/// (BRepCheck, no free edges), whose volume (BRepGProp) is t·A(t/2) — the layers of a
+/// developable grow linearly in area, A(s) from the library's inner and neutral layers by
+/// Gauss–Legendre quadrature.
+#[test]
+fn opencascade_reads_the_formed_hopper_as_a_valid_closed_solid() {
+    use rmfsurf::{Layer, Reference, Sheet, SheetOptions, SheetPart};
+    let dir = support::fresh_dir("occ_hopper");
+    support::run_cli(&dir, "hopper", &["-q", "-o", "hopper.step"]);
+    let (bottom, top) = hopper_curves();
+    let options = SheetOptions {
+        tolerance: 1e-4,
+        sheet: Sheet::new(2.0, 0.4, Reference::Inner).unwrap(),
+        flat_tolerance: 0.0,
+        max_pieces: 100_000,
+    };
+    let part = SheetPart::transition(&bottom, &top, &options).unwrap();
+    let (inner, neutral) = (
+        part.area(Layer::Inner).unwrap(),
+        part.area(Layer::Neutral).unwrap(),
+    );
+    println!("areas of the inner and neutral layers: {inner:.9}, {neutral:.9}");
+    let (t, kt) = (2.0, 0.8);
+    let volume = t * (inner + 0.5 * t * (neutral - inner) / kt);
+    let include = Path::new("/usr/include/opencascade");
+    assert!(
+        include.join("STEPControl_Reader.hxx").exists(),
+        "OpenCascade's STEP headers (libocct-data-exchange-dev) not found: {SETUP_HINT}"
+    );
+    let system = format!("-isystem{}", include.display());
+    let mut flags = vec!["-std=c++17", system.as_str()];
+    flags.extend(STRICT);
+    let libs: Vec<String> = ["TKSTEP", "TKSTEPBase", "TKXSBase", "TKShHealing"]
+        .iter()
+        .chain(TOOLKITS.iter())
+        .map(|t| format!("-l{t}"))
+        .collect();
+    let exe = build(
+        "occ_read_solid",
+        true,
+        &["capi/tests/programs/occ_read_solid.cpp"],
+        &flags,
+        &libs,
+    );
+    let out = std::process::Command::new(&exe)
+        .arg(dir.join("hopper.step"))
+        .arg(format!("{volume:.12}"))
+        .arg("1e-8")
+        .output()
+        .expect("occ_read_solid runs");
+    print!("{}", String::from_utf8_lossy(&out.stdout));
+    assert!(
+        out.status.success(),
+        "OpenCascade does not read a valid closed solid of the expected volume:\n{}{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+/// The curves of examples/cli/hopper.json: the square and the circle (rational quadratics).
+fn hopper_curves() -> (rmfsurf::PiecewiseCurve, rmfsurf::PiecewiseCurve) {
+    use rmfsurf::glam::DVec3;
+    use rmfsurf::{PiecewiseCurve, RationalBezierCurve};
+    let c = [
+        DVec3::new(-100.0, -100.0, 0.0),
+        DVec3::new(100.0, -100.0, 0.0),
+        DVec3::new(100.0, 100.0, 0.0),
+        DVec3::new(-100.0, 100.0, 0.0),
+    ];
+    let square = (0..4)
+        .map(|k| RationalBezierCurve::polynomial(&[c[k], c[(k + 1) % 4]]).unwrap())
+        .collect();
+    let at = |k: usize| {
+        let a = k as f64 * std::f64::consts::FRAC_PI_2;
+        DVec3::new(20.0 + 60.0 * a.cos(), 60.0 * a.sin(), 150.0)
+    };
+    let centre = DVec3::new(20.0, 0.0, 150.0);
+    let circle = (0..4)
+        .map(|k| {
+            let (p0, p2) = (at(k), at(k + 1));
+            RationalBezierCurve::from_weighted(
+                &[p0, p0 + p2 - centre, p2],
+                &[1.0, std::f64::consts::FRAC_1_SQRT_2, 1.0],
+            )
+            .unwrap()
+        })
+        .collect();
+    (
+        PiecewiseCurve::with_unit_intervals(square).unwrap(),
+        PiecewiseCurve::with_unit_intervals(circle).unwrap(),
+    )
+}

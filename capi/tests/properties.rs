@@ -16,6 +16,7 @@ use rmfsurf_capi::curve::{rmf_curve_eval, rmf_curve_free};
 use rmfsurf_capi::mobius::rmf_mobius_rrmf_hermite;
 use rmfsurf_capi::ph_cubic::rmf_ph_spline_hermite;
 use rmfsurf_capi::rrmf_quintic::rmf_rrmf_spline_hermite;
+use rmfsurf_capi::sheet::*;
 use rmfsurf_capi::{RmfStatus, RmfVec3};
 use std::ffi::c_void;
 use std::ptr::null_mut;
@@ -203,6 +204,76 @@ proptest! {
         prop_assert!(c == sentinel && f == sentinel as *mut _);
     }
 
+    /// A transition between a random convex polygon (corners at sorted random angles on a
+    /// circle) and a random circle above it is the same part at every scale 1e-200 … 1e200
+    /// and translation: the same pieces, edges and flat pattern, scaled; the flat outline
+    /// closed, counter-clockwise, and as large as the formed neutral layer is (to the flat
+    /// tolerance along the edges).
+    #[test]
+    fn transitions_are_invariant_under_scaling_and_translation(
+        angles in prop::collection::vec(0.0f64..1.0, 3..8),
+        (cx, cy, height, radius) in (-0.3f64..0.3, -0.3f64..0.3, 0.5f64..2.0, 0.1f64..0.5),
+        exponent in -200i32..=200,
+        shift in (-1e3f64..1e3, -1e3f64..1e3, -1e3f64..1e3),
+    ) {
+        let mut angles: Vec<f64> = angles.iter().map(|a| a * std::f64::consts::TAU).collect();
+        angles.sort_by(f64::total_cmp);
+        angles.dedup_by(|a, b| (*a - *b).abs() < 0.05);
+        // Convex polygons only: every gap below π.
+        let gaps = angles.windows(2).map(|w| w[1] - w[0]).chain([angles[0] + std::f64::consts::TAU - angles[angles.len() - 1]]);
+        prop_assume!(angles.len() >= 3 && gaps.fold(0.0, f64::max) < 3.0);
+        let scale = 10f64.powi(exponent);
+        let shift = DVec3::new(shift.0, shift.1, shift.2) * scale;
+        let part = |s: f64, t: DVec3| {
+            let corners: Vec<DVec3> = angles.iter().map(|a| DVec3::new(a.cos(), a.sin(), 0.0) * s + t).collect();
+            sheet_transition(&corners, DVec3::new(cx, cy, height) * s + t, radius * s, 1e-2 * s, 0.01 * s)
+        };
+        let (Some(a), Some(b)) = (part(1.0, DVec3::ZERO), part(scale, shift)) else {
+            return Err(TestCaseError::fail("a transition failed"));
+        };
+        prop_assert_eq!(a.report.pieces, b.report.pieces);
+        for k in 0..2 {
+            let (ea, eb) = (a.report.edge_distance[k], b.report.edge_distance[k] / scale);
+            prop_assert!(ea <= 1e-2 && (ea - eb).abs() <= 1e-6 * ea.max(1e-9), "edge {}: {} vs {}", k, ea, eb);
+        }
+        let (area_a, area_b) = (outline_area(&a.edges, 1.0), outline_area(&b.edges, scale));
+        prop_assert!(area_a > 0.0, "counter-clockwise");
+        prop_assert!((area_a - area_b).abs() <= 1e-9 * area_a, "{} vs {}", area_a, area_b);
+        let cut: Vec<&RmfFlatEdge> = b.edges.iter().filter(|e| e.layer == RMF_FLAT_CUT).collect();
+        for (k, e) in cut.iter().enumerate() {
+            prop_assert!(e.to == cut[(k + 1) % cut.len()].from, "closed outline");
+        }
+    }
+
+    /// Bad sheet numbers — thickness ≤ 0 or not finite, K-factor outside [0, 1], a zero or
+    /// negative tolerance — give RMF_ERROR_INVALID_INPUT naming the field, nothing written.
+    #[test]
+    fn bad_sheet_options_give_a_status_never_a_part(
+        which in 0usize..3,
+        value in prop_oneof![Just(f64::NAN), Just(f64::INFINITY), -1e300f64..=0.0, 1.0001f64..1e300],
+    ) {
+        let corners = [DVec3::new(-1.0, -1.0, 0.0), DVec3::new(1.0, -1.0, 0.0), DVec3::new(1.0, 1.0, 0.0), DVec3::new(-1.0, 1.0, 0.0)];
+        let (bottom, top) = (polygon_handle(&corners), circle_handle(DVec3::new(0.0, 0.0, 1.0), 0.4));
+        let mut options = RmfSheetOptions::default();
+        options.tolerance = 1e-2;
+        let field = match which {
+            0 => { options.thickness = value.min(0.0); "options->thickness" }
+            1 => { options.k_factor = if value.is_nan() { value } else { value.abs() + 1.0 }; "options->k_factor" }
+            _ => { options.tolerance = value.min(0.0); "options->tolerance" }
+        };
+        let sentinel = 0x5EED0 as *mut RmfConeSpline;
+        let mut out = sentinel;
+        let status = unsafe { rmf_cone_spline_transition(bottom, top, &options, &mut out) };
+        let message = unsafe { std::ffi::CStr::from_ptr(rmfsurf_capi::status::rmf_last_error()) }.to_string_lossy().into_owned();
+        unsafe {
+            rmf_curve_free(bottom);
+            rmf_curve_free(top);
+        }
+        prop_assert_eq!(status, RmfStatus::RmfErrorInvalidInput);
+        prop_assert!(message.contains(field), "{}", message);
+        prop_assert_eq!(out, sentinel);
+    }
+
     /// Random bytes run through every capability's fuzz program (the harness of fuzz/,
     /// which checks the C API's contract after every call) without a violation.
     #[test]
@@ -244,4 +315,127 @@ fn boundary_length(spline: *const RmfConeSpline, t: f64) -> f64 {
     let length = (0..n).map(|i| (point(i + 1) - point(i)).length()).sum();
     unsafe { rmf_curve_free(curve) };
     length
+}
+
+/// A closed polygon through `corners` as a curve handle (degree 1).
+fn polygon_handle(corners: &[DVec3]) -> *mut rmfsurf_capi::RmfCurve {
+    let mut poles: Vec<RmfVec3> = corners.iter().map(|&c| vec3(c)).collect();
+    poles.push(poles[0]);
+    let n = poles.len();
+    let mut knots = vec![0.0];
+    knots.extend((0..n).map(|k| k as f64));
+    knots.push((n - 1) as f64);
+    let mut out = null_mut();
+    let status = unsafe {
+        rmfsurf_capi::curve::rmf_nurbs_curve_create(
+            1,
+            poles.as_ptr(),
+            std::ptr::null(),
+            n,
+            knots.as_ptr(),
+            knots.len(),
+            &mut out,
+        )
+    };
+    assert_eq!(status, RmfStatus::RmfOk);
+    out
+}
+
+/// The horizontal circle about `centre` of radius `r` (four rational quadratics).
+fn circle_handle(centre: DVec3, r: f64) -> *mut rmfsurf_capi::RmfCurve {
+    let xs = [1., 1., 0., -1., -1., -1., 0., 1., 1.];
+    let ys = [0., 1., 1., 1., 0., -1., -1., -1., 0.];
+    let poles: Vec<RmfVec3> = (0..9)
+        .map(|i| vec3(centre + DVec3::new(xs[i], ys[i], 0.0) * r))
+        .collect();
+    let weights: Vec<f64> = (0..9)
+        .map(|i| if i % 2 == 1 { 0.5f64.sqrt() } else { 1.0 })
+        .collect();
+    let knots = [0., 0., 0., 1., 1., 2., 2., 3., 3., 4., 4., 4.];
+    let mut out = null_mut();
+    let status = unsafe {
+        rmfsurf_capi::curve::rmf_nurbs_curve_create(
+            2,
+            poles.as_ptr(),
+            weights.as_ptr(),
+            9,
+            knots.as_ptr(),
+            12,
+            &mut out,
+        )
+    };
+    assert_eq!(status, RmfStatus::RmfOk);
+    out
+}
+
+struct Transition {
+    report: RmfSheetReport,
+    edges: Vec<RmfFlatEdge>,
+}
+
+/// A transition through the C API (polygon to circle) with its report and flat pattern.
+fn sheet_transition(
+    corners: &[DVec3],
+    centre: DVec3,
+    radius: f64,
+    tolerance: f64,
+    thickness: f64,
+) -> Option<Transition> {
+    let (bottom, top) = (polygon_handle(corners), circle_handle(centre, radius));
+    let mut options = RmfSheetOptions::default();
+    options.tolerance = tolerance;
+    options.thickness = thickness;
+    let mut part = null_mut();
+    let status = unsafe { rmf_cone_spline_transition(bottom, top, &options, &mut part) };
+    unsafe {
+        rmf_curve_free(bottom);
+        rmf_curve_free(top);
+    }
+    if status != RmfStatus::RmfOk {
+        return None;
+    }
+    let mut report = RmfSheetReport::default();
+    let mut count = 0;
+    unsafe {
+        assert_eq!(
+            rmf_cone_spline_part_report(part, &mut report),
+            RmfStatus::RmfOk
+        );
+        assert_eq!(
+            rmf_cone_spline_flat_pattern(part, null_mut(), 0, &mut count),
+            RmfStatus::RmfOk
+        );
+    }
+    let mut edges = vec![RmfFlatEdge::default(); count];
+    unsafe {
+        assert_eq!(
+            rmf_cone_spline_flat_pattern(part, edges.as_mut_ptr(), count, &mut count),
+            RmfStatus::RmfOk
+        );
+        rmf_cone_spline_free(part);
+    }
+    Some(Transition { report, edges })
+}
+
+/// The area enclosed by the outline (the RMF_FLAT_CUT edges) divided by scale² (Green's
+/// theorem on the scaled-down edges, which keeps 1e±200 in range).
+fn outline_area(edges: &[RmfFlatEdge], scale: f64) -> f64 {
+    edges
+        .iter()
+        .filter(|e| e.layer == RMF_FLAT_CUT)
+        .map(|e| {
+            let (a, b) = (
+                (e.from.x / scale, e.from.y / scale),
+                (e.to.x / scale, e.to.y / scale),
+            );
+            let chord = a.0 * b.1 - b.0 * a.1;
+            if e.kind == RMF_FLAT_EDGE_ARC {
+                let r = e.radius / scale;
+                chord + r * r * (e.sweep - e.sweep.sin())
+            } else {
+                chord
+            }
+        })
+        .sum::<f64>()
+        * 0.5
 }

@@ -2,7 +2,7 @@
 //! frames by the chosen method, the sweep; or the cone spline, its surface strip and its
 //! development. Failures of the geometry are reported at the input field they come from.
 
-use crate::job::{ConeJob, Developable as Input, Method, Spine, SweepJob};
+use crate::job::{ConeJob, Developable as Input, Method, SheetInput, SheetJob, Spine, SweepJob};
 use crate::json::InputError;
 use rmfsurf::glam::DVec3;
 use rmfsurf::metrics::nearest_parameter;
@@ -11,7 +11,7 @@ use rmfsurf::{
     mobius_hermite_points, ph_frenet_frames, ph_rational_rmf, ph_spline_approximate,
     ph_spline_hermite, rrmf_spline, sweep, uniform_parameters, ConeSpline, Developable,
     FlatPattern, ParametricCurve, PiecewiseCurve, PiecewiseSurface, RationalFrames, RmfOptions,
-    Rule, RuledSurface, ShapeMeasure, TangentSurface,
+    Rule, RuledSurface, ShapeMeasure, SheetPart, TangentSurface,
 };
 
 /// Most segments the Möbius and RRMF methods use to reach the tolerance on a NURBS spine
@@ -43,9 +43,16 @@ pub struct ConeOutcome {
     pub t_max: f64,
 }
 
+/// A sheet-metal part and its flat pattern.
+pub struct SheetOutcome {
+    pub part: SheetPart,
+    pub flat: FlatPattern,
+}
+
 pub enum Outcome {
     Sweep(SweepOutcome),
     ConeSpline(ConeOutcome),
+    Sheet(SheetOutcome),
 }
 
 /// The error of a construction step, at `path`.
@@ -228,4 +235,34 @@ pub fn run_cone_spline(job: &ConeJob) -> Result<ConeOutcome, InputError> {
         t_min,
         t_max,
     })
+}
+
+/// The sheet-metal part the job asks for, with its flat pattern.
+pub fn run_sheet(job: &SheetJob) -> Result<SheetOutcome, InputError> {
+    let part = match &job.input {
+        SheetInput::Transition { bottom, top } => {
+            let field = "sheet.transition";
+            let (b, t) = (
+                bottom.to_piecewise().map_err(at(field))?,
+                top.to_piecewise().map_err(at(field))?,
+            );
+            SheetPart::transition(&b, &t, &job.options).map_err(at(field))?
+        }
+        SheetInput::Ruled(nurbs) => {
+            let field = "sheet.ruled";
+            let surface = nurbs.to_piecewise().map_err(at(field))?;
+            SheetPart::between_rails(&surface, &job.options).map_err(at(field))?
+        }
+        SheetInput::TangentSurface {
+            curve,
+            v_min,
+            v_max,
+        } => {
+            let field = "sheet.tangent_surface";
+            let curve = curve.to_piecewise().map_err(at(field))?;
+            SheetPart::tangent_surface(&curve, *v_min, *v_max, &job.options).map_err(at(field))?
+        }
+    };
+    let flat = part.flat_pattern().map_err(at("sheet.flat_tolerance"))?;
+    Ok(SheetOutcome { part, flat })
 }

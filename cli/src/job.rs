@@ -3,7 +3,7 @@
 
 use crate::json::{Field, InputResult};
 use rmfsurf::glam::DVec3;
-use rmfsurf::{Element, NurbsCurve, NurbsSurface};
+use rmfsurf::{Element, NurbsCurve, NurbsSurface, Reference, Sheet, SheetOptions};
 use std::f64::consts::FRAC_1_SQRT_2;
 
 /// How the frames along the spine are made.
@@ -72,10 +72,32 @@ pub struct ConeJob {
     pub t_max: f64,
 }
 
+/// What a sheet-metal part is made from.
+#[derive(Clone, Debug)]
+pub enum SheetInput {
+    /// The transition piece between two closed convex planar curves.
+    Transition { bottom: NurbsCurve, top: NurbsCurve },
+    /// The part between the two rails of a developable ruled NURBS of degree (1, n).
+    Ruled(NurbsSurface),
+    /// The part of a tangent surface over its whole curve and [v_min, v_max].
+    TangentSurface {
+        curve: NurbsCurve,
+        v_min: f64,
+        v_max: f64,
+    },
+}
+
+#[derive(Clone, Debug)]
+pub struct SheetJob {
+    pub input: SheetInput,
+    pub options: SheetOptions,
+}
+
 #[derive(Clone, Debug)]
 pub enum Construction {
     Sweep(SweepJob),
     ConeSpline(ConeJob),
+    Sheet(SheetJob),
 }
 
 /// How the surface is tessellated for meshes and solids.
@@ -98,10 +120,11 @@ const MAX_STEPS: usize = 1000;
 
 impl Job {
     pub fn read(root: &Field) -> InputResult<Self> {
-        root.only(&["sweep", "cone_spline", "mesh"])?;
-        let (kind, body) = root.variant_of(&["sweep", "cone_spline"], &["mesh"])?;
+        root.only(&["sweep", "cone_spline", "sheet", "mesh"])?;
+        let (kind, body) = root.variant_of(&["sweep", "cone_spline", "sheet"], &["mesh"])?;
         let construction = match kind {
             "sweep" => Construction::Sweep(read_sweep(&body)?),
+            "sheet" => Construction::Sheet(read_sheet(&body)?),
             _ => Construction::ConeSpline(read_cone(&body)?),
         };
         Ok(Self {
@@ -373,4 +396,232 @@ fn read_element(field: &Field) -> InputResult<Element> {
     let v = |key: &str| field.required(key)?.vec3();
     Element::new(v("point")?, v("ruling")?, v("side")?, field.path())
         .or_else(|e| field.error(e.message()))
+}
+
+/// `{"sheet": {"transition": {"bottom": curve, "top": curve} | "ruled": {"nurbs": ...} |
+/// "tangent_surface": {...}, "thickness", "k_factor", "tolerance", "reference",
+/// "flat_tolerance", "max_pieces"}}`.
+fn read_sheet(sheet: &Field) -> InputResult<SheetJob> {
+    let choices = ["transition", "ruled", "tangent_surface"];
+    let others = [
+        "thickness",
+        "k_factor",
+        "tolerance",
+        "reference",
+        "flat_tolerance",
+        "max_pieces",
+    ];
+    let (kind, body) = sheet.variant_of(&choices, &others)?;
+    let input = match kind {
+        "transition" => {
+            body.only(&["bottom", "top"])?;
+            SheetInput::Transition {
+                bottom: read_closed_curve(&body.required("bottom")?)?,
+                top: read_closed_curve(&body.required("top")?)?,
+            }
+        }
+        "ruled" => {
+            let (_, nurbs) = body.variant(&["nurbs"])?;
+            SheetInput::Ruled(read_nurbs_surface(&nurbs)?)
+        }
+        _ => {
+            body.only(&["curve", "v_min", "v_max"])?;
+            let (_, nurbs) = body.required("curve")?.variant(&["nurbs"])?;
+            SheetInput::TangentSurface {
+                curve: read_nurbs_curve(&nurbs, false)?,
+                v_min: body.required("v_min")?.number()?,
+                v_max: body.required("v_max")?.number()?,
+            }
+        }
+    };
+    let thickness = sheet
+        .optional("thickness")?
+        .map_or(Ok(1.0), |f| f.positive())?;
+    let k_factor = match sheet.optional("k_factor")? {
+        None => 0.5,
+        Some(f) => {
+            let k = f.number()?;
+            if !(0.0..=1.0).contains(&k) {
+                return f.error(format!(
+                    "must lie in [0, 1] (the neutral layer lies within the sheet), got {k}"
+                ));
+            }
+            k
+        }
+    };
+    let reference = match sheet.optional("reference")? {
+        None => Reference::Inner,
+        Some(f) => match f.string()? {
+            "inner" => Reference::Inner,
+            "neutral" => Reference::Neutral,
+            "outer" => Reference::Outer,
+            other => {
+                return f.error(format!(
+                    "unknown reference \"{other}\"; expected one of inner, neutral, outer"
+                ))
+            }
+        },
+    };
+    let sheet_values =
+        Sheet::new(thickness, k_factor, reference).or_else(|e| sheet.error(e.message()))?;
+    Ok(SheetJob {
+        input,
+        options: SheetOptions {
+            tolerance: read_tolerance(sheet)?,
+            sheet: sheet_values,
+            flat_tolerance: match sheet.optional("flat_tolerance")? {
+                None => 0.0,
+                Some(f) => f.positive()?,
+            },
+            max_pieces: sheet
+                .optional("max_pieces")?
+                .map_or(Ok(100_000), |f| f.count(2, 1_000_000))?,
+        },
+    })
+}
+
+/// A closed planar curve in space: `{"polygon": [[x, y, z], ...]}`, `{"circle": {"center",
+/// "normal", "radius"}}`, `{"obround": {"center", "normal", "direction", "length",
+/// "radius"}}` or `{"nurbs": {...}}`.
+fn read_closed_curve(field: &Field) -> InputResult<NurbsCurve> {
+    let (kind, body) = field.variant(&["polygon", "circle", "obround", "nurbs"])?;
+    let curve = match kind {
+        "polygon" => {
+            let mut corners = vectors(&body)?;
+            if corners.len() < 3 {
+                return body.error(format!("needs at least 3 corners, got {}", corners.len()));
+            }
+            corners.push(corners[0]);
+            polyline(&corners)
+        }
+        "circle" => {
+            body.only(&["center", "normal", "radius"])?;
+            let (center, normal) = (body.required("center")?.vec3()?, plane_normal(&body)?);
+            let radius = body.required("radius")?.positive()?;
+            let x = orthonormal_to(normal);
+            space_circle(center, x, normal.cross(x), radius)
+        }
+        "obround" => {
+            body.only(&["center", "normal", "direction", "length", "radius"])?;
+            let (center, normal) = (body.required("center")?.vec3()?, plane_normal(&body)?);
+            let direction_field = body.required("direction")?;
+            let d = direction_field.vec3()?;
+            let x = d - d.dot(normal) * normal;
+            if !(x.length() > 1e-12 * d.length()) {
+                return direction_field.error("must not be parallel to the normal");
+            }
+            let x = x.normalize();
+            let length = body.required("length")?.positive()?;
+            let radius = body.required("radius")?.positive()?;
+            obround(center, x, normal.cross(x), length, radius)
+        }
+        _ => return read_nurbs_curve(&body, false),
+    };
+    curve.or_else(|e| body.error(e.message()))
+}
+
+/// A unit vector normal to the unit vector `n` (crossed with the axis least along it).
+fn orthonormal_to(n: DVec3) -> DVec3 {
+    let a = n.abs();
+    let axis = if a.x <= a.y && a.x <= a.z {
+        DVec3::X
+    } else if a.y <= a.z {
+        DVec3::Y
+    } else {
+        DVec3::Z
+    };
+    n.cross(axis).normalize()
+}
+
+fn plane_normal(body: &Field) -> InputResult<DVec3> {
+    let field = body.required("normal")?;
+    let n = field.vec3()?;
+    if !(n.length() > 0.0) {
+        return field.error("must not be zero");
+    }
+    Ok(n.normalize())
+}
+
+/// The circle about `center` in the plane spanned by the orthonormal `x`, `y`: four
+/// rational quadratic quarters.
+fn space_circle(center: DVec3, x: DVec3, y: DVec3, radius: f64) -> rmfsurf::Result<NurbsCurve> {
+    let corners = [
+        (1.0, 0.0),
+        (1.0, 1.0),
+        (0.0, 1.0),
+        (-1.0, 1.0),
+        (-1.0, 0.0),
+        (-1.0, -1.0),
+        (0.0, -1.0),
+        (1.0, -1.0),
+        (1.0, 0.0),
+    ];
+    let poles = corners
+        .iter()
+        .map(|&(a, b)| center + radius * (a * x + b * y))
+        .collect();
+    let weights = (0..9)
+        .map(|k| if k % 2 == 1 { FRAC_1_SQRT_2 } else { 1.0 })
+        .collect();
+    let knots = vec![0.0, 0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 3.0, 3.0, 4.0, 4.0, 4.0];
+    NurbsCurve::new(2, poles, Some(weights), knots)
+}
+
+/// Two half circles of `radius` about centres `length` apart along `x`, joined by lines:
+/// degree 2, the lines elevated.
+fn obround(
+    center: DVec3,
+    x: DVec3,
+    y: DVec3,
+    length: f64,
+    radius: f64,
+) -> rmfsurf::Result<NurbsCurve> {
+    let a = 0.5 * length;
+    let p = |u: f64, v: f64| center + u * x + v * y;
+    let s = FRAC_1_SQRT_2;
+    // (pole, weight) of each Bézier segment of degree 2, end points shared.
+    let segments = [
+        [
+            (p(-a, -radius), 1.0),
+            (p(0.0, -radius), 1.0),
+            (p(a, -radius), 1.0),
+        ],
+        [
+            (p(a, -radius), 1.0),
+            (p(a + radius, -radius), s),
+            (p(a + radius, 0.0), 1.0),
+        ],
+        [
+            (p(a + radius, 0.0), 1.0),
+            (p(a + radius, radius), s),
+            (p(a, radius), 1.0),
+        ],
+        [
+            (p(a, radius), 1.0),
+            (p(0.0, radius), 1.0),
+            (p(-a, radius), 1.0),
+        ],
+        [
+            (p(-a, radius), 1.0),
+            (p(-a - radius, radius), s),
+            (p(-a - radius, 0.0), 1.0),
+        ],
+        [
+            (p(-a - radius, 0.0), 1.0),
+            (p(-a - radius, -radius), s),
+            (p(-a, -radius), 1.0),
+        ],
+    ];
+    let mut poles = vec![segments[0][0].0];
+    let mut weights = vec![1.0];
+    let mut knots = vec![0.0, 0.0, 0.0];
+    for (k, seg) in segments.iter().enumerate() {
+        for &(q, w) in &seg[1..] {
+            poles.push(q);
+            weights.push(w);
+        }
+        knots.extend([(k + 1) as f64; 2]);
+    }
+    knots.push(segments.len() as f64);
+    NurbsCurve::new(2, poles, Some(weights), knots)
 }

@@ -19,7 +19,7 @@ mod output;
 mod summary;
 
 use args::{Command, Run};
-use construct::{run_cone_spline, run_sweep, Outcome};
+use construct::{run_cone_spline, run_sheet, run_sweep, Outcome};
 use job::{Construction, Job};
 use json::Document;
 use std::io::Read;
@@ -80,7 +80,7 @@ fn execute(run: &Run) -> Result<(), String> {
     if let Construction::Sweep(_) = job.construction {
         if let Some((path, _)) = run.outputs.iter().find(|(_, f)| f.is_pattern()) {
             return Err(format!(
-                "--output {}: flat patterns (.svg, .dxf) are made of developments: give a cone_spline",
+                "--output {}: flat patterns (.svg, .dxf) are made of developments: give a cone_spline or a sheet",
                 path.display()
             ));
         }
@@ -90,6 +90,7 @@ fn execute(run: &Run) -> Result<(), String> {
         Construction::ConeSpline(cone) => {
             Outcome::ConeSpline(run_cone_spline(cone).map_err(|e| e.to_string())?)
         }
+        Construction::Sheet(sheet) => Outcome::Sheet(run_sheet(sheet).map_err(|e| e.to_string())?),
     };
     let summary = Summary::of(&job, &outcome).map_err(|e| format!("measuring the result: {e}"))?;
     let mut files = Vec::new();

@@ -2,13 +2,13 @@
 //! file is first written beside its destination under a temporary name, and renamed only
 //! when all of them were written, so a failure leaves no partial output behind.
 
-use crate::construct::Outcome;
+use crate::construct::{Outcome, SheetOutcome};
 use crate::job::MeshOptions;
 use crate::summary::{json_text, Summary};
 use rmfsurf::export::{dxf, obj, openscad, step, svg, vtk};
 use rmfsurf::{
-    closed_mesh, grid_normals, grid_parameters, tessellate, NurbsCurve, NurbsSurface,
-    PiecewiseSurface,
+    closed_mesh, grid_normals, grid_parameters, tessellate, Layer, NurbsCurve, NurbsSurface,
+    PiecewiseSurface, Side,
 };
 use std::fs;
 use std::path::{Path, PathBuf};
@@ -17,6 +17,8 @@ use std::path::{Path, PathBuf};
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Format {
     Step,
+    /// `NAME.flat.step`: a flat pattern as one planar STEP face.
+    StepFlat,
     Vtp,
     Obj,
     Scad,
@@ -25,12 +27,17 @@ pub enum Format {
     Json,
 }
 
-pub const EXTENSIONS: &str = ".step/.stp, .vtp, .obj, .scad, .svg, .dxf, .json";
+pub const EXTENSIONS: &str = ".step/.stp, .flat.step, .vtp, .obj, .scad, .svg, .dxf, .json";
 
 impl Format {
     pub fn of(path: &Path) -> Option<Self> {
         let extension = path.extension()?.to_str()?.to_ascii_lowercase();
+        let flat = path
+            .file_stem()
+            .and_then(|s| s.to_str())
+            .is_some_and(|s| s.to_ascii_lowercase().ends_with(".flat"));
         Some(match extension.as_str() {
+            "step" | "stp" if flat => Format::StepFlat,
             "step" | "stp" => Format::Step,
             "vtp" => Format::Vtp,
             "obj" => Format::Obj,
@@ -42,9 +49,9 @@ impl Format {
         })
     }
 
-    /// Flat patterns exist only for developments (cone splines).
+    /// Flat patterns exist only for developments (cone splines, sheets).
     pub fn is_pattern(self) -> bool {
-        matches!(self, Format::Svg | Format::Dxf)
+        matches!(self, Format::Svg | Format::Dxf | Format::StepFlat)
     }
 }
 
@@ -60,7 +67,30 @@ fn surface_of(outcome: &Outcome) -> &PiecewiseSurface {
     match outcome {
         Outcome::Sweep(o) => &o.surface,
         Outcome::ConeSpline(o) => &o.surface,
+        Outcome::Sheet(_) => unreachable!("sheets are rendered by render_sheet"),
     }
+}
+
+/// The files of a sheet-metal part: the formed solid (STEP), the neutral layer's flat
+/// pattern (DXF, SVG, planar STEP face), the summary.
+fn render_sheet(
+    name: &str,
+    format: Format,
+    outcome: &SheetOutcome,
+    summary: &Summary,
+) -> rmfsurf::Result<String> {
+    Ok(match format {
+        Format::Step => step::solid_to_step(&outcome.part.solid_faces()?, name)?,
+        Format::StepFlat => step::flat_to_step(&outcome.flat, name)?,
+        Format::Dxf => dxf::pattern_to_dxf(&outcome.flat),
+        Format::Svg => svg::pattern_to_svg(name, &outcome.flat),
+        Format::Json => json_text(summary),
+        Format::Vtp | Format::Obj | Format::Scad => {
+            return Err(rmfsurf::Error::invalid_input(
+                "a sheet-metal part is written as .step (the formed solid), .flat.step, .dxf, .svg (the flat pattern) or .json",
+            ))
+        }
+    })
 }
 
 /// The text of the file `path` in `format`.
@@ -72,6 +102,9 @@ pub fn render(
     mesh: &MeshOptions,
 ) -> rmfsurf::Result<String> {
     let name = title(path);
+    if let Outcome::Sheet(sheet) = outcome {
+        return render_sheet(&name, format, sheet, summary);
+    }
     let surface = surface_of(outcome);
     let (u, v) = (mesh.u_steps, mesh.v_steps);
     Ok(match format {
@@ -113,18 +146,18 @@ pub fn render(
                         .map(|t| (o.spine.eval(t), o.frames.frame(t)))
                         .collect::<Vec<_>>(),
                 ),
-                Outcome::ConeSpline(_) => None,
+                Outcome::ConeSpline(_) | Outcome::Sheet(_) => None,
             };
             openscad::solid_to_scad(&name, &solid, placements.as_deref())
         }
-        Format::Svg | Format::Dxf => {
+        Format::Svg | Format::Dxf | Format::StepFlat => {
             let Outcome::ConeSpline(o) = outcome else {
                 unreachable!("checked before the construction")
             };
-            if format == Format::Svg {
-                svg::pattern_to_svg(&name, &o.pattern)
-            } else {
-                dxf::pattern_to_dxf(&o.pattern)
+            match format {
+                Format::Svg => svg::pattern_to_svg(&name, &o.pattern),
+                Format::Dxf => dxf::pattern_to_dxf(&o.pattern),
+                _ => step::flat_to_step(&o.pattern, &name)?,
             }
         }
         Format::Json => json_text(summary),
@@ -140,6 +173,10 @@ pub fn render_curves(path: &Path, outcome: &Outcome) -> rmfsurf::Result<String> 
             NurbsCurve::from_piecewise(&o.spline.boundary(o.t_min)?)?,
             NurbsCurve::from_piecewise(&o.spline.boundary(o.t_max)?)?,
         ],
+        Outcome::Sheet(o) => [Side::First, Side::Second]
+            .iter()
+            .map(|&side| NurbsCurve::from_piecewise(&o.part.boundary(Layer::Reference, side)?))
+            .collect::<rmfsurf::Result<Vec<_>>>()?,
     };
     step::curves_to_step(&curves.iter().collect::<Vec<_>>(), &title(path))
 }

@@ -5,12 +5,12 @@
 //! deviation, developability, and the isometry of the development (boundary and ruling
 //! lengths, ruling–boundary angles, flatness).
 
-use crate::construct::{ConeOutcome, Outcome, SweepOutcome};
+use crate::construct::{ConeOutcome, Outcome, SheetOutcome, SweepOutcome};
 use crate::job::{Construction, Job, Method};
 use rmfsurf::metrics::{angle_between, orthonormality_error, parameter_line_cosine, rmf_defect};
 use rmfsurf::{
-    angle_errors, grid_parameters, max_scaled_curvature, FrameField, FrameKind, NurbsSurface,
-    PatternEdge, PieceKind, PiecewiseSurface,
+    angle_errors, grid_parameters, max_scaled_curvature, FrameField, FrameKind, Layer,
+    NurbsSurface, PatternEdge, PieceKind, PiecewiseSurface, Side,
 };
 use serde_json::{json, Map, Value};
 use std::sync::Arc;
@@ -45,6 +45,7 @@ impl Summary {
                 sweep_figures(j.method, j.profile_is_line, o)?
             }
             (_, Outcome::ConeSpline(o)) => cone_figures(o)?,
+            (_, Outcome::Sheet(o)) => sheet_figures(o)?,
             _ => unreachable!("the outcome matches the job"),
         };
         Ok(Self { figures })
@@ -272,6 +273,119 @@ fn ruling_angle_error(o: &ConeOutcome) -> f64 {
         .flat_map(|k| [(o.t_min, k as f64), (o.t_max, k as f64)])
         .map(|(u, v)| (angle(&o.surface, u, v) - angle(&o.developed, u, v)).abs())
         .fold(0.0, f64::max)
+}
+
+fn sheet_figures(o: &SheetOutcome) -> rmfsurf::Result<Vec<Figure>> {
+    let part = &o.part;
+    let spline = part.cone_spline()?;
+    let pieces = spline.pieces();
+    let count = |kind: PieceKind| pieces.iter().filter(|p| p.kind() == kind).count();
+    let creases = pieces
+        .iter()
+        .filter(|p| {
+            p.kind() == PieceKind::Cylinder && p.radius() <= 1e-12 * p.start.point.length().max(1.0)
+        })
+        .count();
+    let report = part.report();
+    let sheet = part.sheet();
+    let mut figures = vec![
+        figure(
+            "part",
+            "part",
+            if part.is_closed() {
+                "transition piece (closed, cut open at its seam in the flat pattern)"
+            } else {
+                "part between its two boundary curves"
+            },
+        ),
+        figure(
+            "pieces",
+            "cone spline pieces",
+            format!(
+                "{} ({} cones, {} cylinders of which {creases} creases, {} planes)",
+                pieces.len(),
+                count(PieceKind::Cone),
+                count(PieceKind::Cylinder),
+                count(PieceKind::Plane)
+            ),
+        ),
+        figure(
+            "fit_deviation",
+            "surface: max distance from the designed developable",
+            report.deviation,
+        ),
+        figure(
+            "edge_distance_first",
+            "edges: first boundary, max distance from the input",
+            report.edge_distance[0],
+        ),
+        figure(
+            "edge_distance_second",
+            "edges: second boundary, max distance from the input",
+            report.edge_distance[1],
+        ),
+        figure(
+            "sheet",
+            "sheet",
+            format!(
+                "thickness {}, K-factor {}, designed surface = {:?} face",
+                sheet.thickness, sheet.k_factor, sheet.reference
+            ),
+        ),
+        figure(
+            "neutral_layer",
+            "neutral layer: distance from the designed surface",
+            part.layer_distance(Layer::Neutral),
+        ),
+        figure(
+            "bend_radius",
+            "smallest bend radius of the designed surface",
+            part.bend_radius(),
+        ),
+    ];
+    let formed = part.area(Layer::Neutral)?;
+    let flat = o.flat.area();
+    let arcs = o
+        .flat
+        .outline
+        .iter()
+        .filter(|e| matches!(e, PatternEdge::Arc { .. }))
+        .count();
+    figures.push(figure(
+        "flat_edges",
+        "flat pattern: outline edges",
+        format!(
+            "{} ({arcs} arcs, {} lines), {} bend lines",
+            o.flat.outline.len(),
+            o.flat.outline.len() - arcs,
+            o.flat.bend_lines.len()
+        ),
+    ));
+    let (lo, hi) = o.flat.bounds();
+    figures.push(figure(
+        "pattern_size",
+        "flat pattern: width × height",
+        format!("{:.6} × {:.6}", hi.x - lo.x, hi.y - lo.y),
+    ));
+    figures.push(figure("flat_area", "flat pattern: area", flat));
+    figures.push(figure("formed_area", "formed neutral layer: area", formed));
+    figures.push(figure(
+        "area_error",
+        "flat against formed area, relative",
+        (flat - formed).abs() / formed,
+    ));
+    let lengths = part.flat_boundary_lengths()?;
+    let mut worst = 0.0f64;
+    for (k, side) in [Side::First, Side::Second].iter().enumerate() {
+        let formed = part.boundary_length(Layer::Neutral, *side)?;
+        worst = worst.max((lengths[k] - formed).abs() / formed);
+    }
+    figures.push(figure(
+        "edge_length_error",
+        "flat against formed edge lengths, max relative",
+        worst,
+    ));
+    Ok(figures)
 }
 
 /// The summary as JSON text, for `-o summary.json`.

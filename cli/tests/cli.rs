@@ -306,3 +306,99 @@ fn docs_json_example_runs() {
     );
     assert_eq!(files_in(&dir), ["moulding.scad", "moulding.step"]);
 }
+
+/// The fixed input of issue 15 (examples/cli/hopper.json): the formed solid as STEP, the
+/// neutral layer's flat pattern as DXF, SVG and a planar STEP face, the figures as JSON.
+#[test]
+fn sheet_metal_hopper_writes_its_solid_and_flat_pattern() {
+    let dir = scratch("hopper");
+    let hopper = examples().join("hopper.json");
+    let out = tool(
+        &dir,
+        &[
+            hopper.to_str().unwrap(),
+            "-o",
+            "hopper.step",
+            "-o",
+            "hopper.dxf",
+            "-o",
+            "hopper.svg",
+            "-o",
+            "hopper.flat.step",
+            "-o",
+            "hopper.json",
+            "--curves",
+            "edges.step",
+        ],
+        None,
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let summary = String::from_utf8_lossy(&out.stdout);
+    println!("{summary}");
+    assert_eq!(
+        files_in(&dir),
+        [
+            "edges.step",
+            "hopper.dxf",
+            "hopper.flat.step",
+            "hopper.json",
+            "hopper.step",
+            "hopper.svg"
+        ]
+    );
+    let step = std::fs::read_to_string(dir.join("hopper.step")).unwrap();
+    assert!(step.contains("MANIFOLD_SOLID_BREP") && step.contains("CLOSED_SHELL"));
+    let flat = std::fs::read_to_string(dir.join("hopper.flat.step")).unwrap();
+    assert!(flat.contains("PLANE(") && flat.contains("CIRCLE(") && !flat.contains("B_SPLINE"));
+    let dxf = std::fs::read_to_string(dir.join("hopper.dxf")).unwrap();
+    assert!(dxf.contains("\nARC\n") && dxf.contains("\nBEND\n") && !dxf.contains("POLYLINE"));
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("hopper.json")).unwrap()).unwrap();
+    let figures = &json["figures"];
+    let figure = |key: &str| {
+        figures[key]
+            .as_f64()
+            .unwrap_or_else(|| panic!("figure {key}"))
+    };
+    assert!(figure("edge_distance_first") <= 1e-4 && figure("edge_distance_second") <= 1e-4);
+    assert!(figure("fit_deviation") <= 1e-4);
+    assert!(
+        figure("area_error") <= 1e-9,
+        "area {}",
+        figure("area_error")
+    );
+    assert!(figure("edge_length_error") <= 1e-9);
+    assert!(
+        (figure("neutral_layer") - 0.8).abs() < 1e-12,
+        "k t = 0.4 × 2"
+    );
+    // Bad sheets are refused at their field, nothing written.
+    for (json, expected) in [
+        (
+            r#"{"sheet": {"transition": {"bottom": {"polygon": [[0,0,0],[1,0,0],[1,1,0]]}, "top": {"circle": {"center": [0,0,1], "normal": [0,0,1], "radius": 0.2}}}, "k_factor": 1.5}}"#,
+            "sheet.k_factor: must lie in [0, 1]",
+        ),
+        (
+            r#"{"sheet": {"transition": {"bottom": {"polygon": [[0,0,0],[1,0,0],[1,1,0]]}, "top": {"circle": {"center": [0,0,1], "normal": [0,0,1], "radius": 0.2}}}, "thickness": -2}}"#,
+            "sheet.thickness: must be positive",
+        ),
+        (
+            r#"{"sheet": {"transition": {"bottom": {"polygon": [[0,0,0],[2,1,0],[0,0.5,0],[-2,1,0]]}, "top": {"circle": {"center": [0,0,1], "normal": [0,0,1], "radius": 0.2}}}}}"#,
+            "sheet.transition: bottom is not convex",
+        ),
+        (
+            r#"{"sheet": {"transition": {"bottom": {"polygon": [[0,0,0],[1,0,0],[1,1,0]]}, "top": {"circle": {"center": [0.5,0.3,0], "normal": [1,0,0], "radius": 0.2}}}}}"#,
+            "sheet.transition: the curves cross",
+        ),
+        (
+            r#"{"sheet": {"transition": {"bottom": {"polygon": [[0,0,0],[1,0,0],[1,1,0]]}, "top": {"circle": {"center": [0,0,1], "normal": [0,0,1], "radius": 0.2}}}, "reference": "outer", "thickness": 0.1}}"#,
+            "bend radius",
+        ),
+    ] {
+        fails_with("bad_sheet", json, &[expected]);
+    }
+}

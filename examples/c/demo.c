@@ -16,7 +16,11 @@
  *   5. profile surfaces along PH cubic splines: a moulding along a conical helix with the
  *      rational RMF and with the Frenet frame, and a square tube along a closed trefoil;
  *   6. a curve with an exact rational RMF by Möbius transformations of planar PH cubics
- *      (Bartoň, Jüttler & Wang), and the developable strip x + v f2 swept along it.
+ *      (Bartoň, Jüttler & Wang), and the developable strip x + v f2 swept along it;
+ *   7. sheet metal: a square-to-round hopper (square 200 × 200, circle of radius 60 150 above,
+ *      offset by 20) of 2 mm sheet, K-factor 0.4 — the formed solid as STEP, the flat pattern
+ *      of its neutral layer for the cutter as DXF (lines and arcs, bend lines on their own
+ *      layer) and SVG, and a hole marked in the flat pattern carried onto the formed part.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -545,6 +549,87 @@ static void demo_mobius(void) {
     rmf_curve_free(curve);
 }
 
+/* ---- 7. sheet metal: a square-to-round hopper ---- */
+
+/* Writes a part's file as the library renders it (RMF_SHEET_FORMAT_*). */
+static void write_part_file(const RmfConeSpline *part, RmfSheetFormat format, const char *name, const char *what) {
+    size_t length = 0;
+    char path[1024], *text;
+    FILE *f;
+    TRY(rmf_cone_spline_part_export(part, format, NULL, 0, &length));
+    text = malloc(length + 1);
+    if (!text) fail("malloc", RMF_ERROR_INTERNAL);
+    TRY(rmf_cone_spline_part_export(part, format, text, length + 1, &length));
+    f = open_output(name, path, sizeof path);
+    fwrite(text, 1, length, f);
+    fclose(f);
+    free(text);
+    written(path, what);
+}
+
+static void demo_hopper(void) {
+    const RmfVec3 square[5] = {{-100, -100, 0}, {100, -100, 0}, {100, 100, 0}, {-100, 100, 0}, {-100, -100, 0}};
+    const double square_knots[7] = {0, 0, 1, 2, 3, 4, 4};
+    const double xs[9] = {1, 1, 0, -1, -1, -1, 0, 1, 1}, ys[9] = {0, 1, 1, 1, 0, -1, -1, -1, 0};
+    const double circle_knots[12] = {0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 4};
+    RmfVec3 circle[9], formed[32];
+    RmfVec2 marks[32], back[32];
+    double weights[9], worst = 0, cx = 0, cy = 0;
+    RmfCurve *bottom = NULL, *top = NULL;
+    RmfConeSpline *part = NULL;
+    RmfSheetOptions options;
+    RmfSheetReport report;
+    RmfFlatEdge *edges;
+    size_t count = 0, arcs = 0, bends = 0, i;
+
+    printf("7. sheet metal: square-to-round hopper, 2 mm sheet, K-factor 0.4\n");
+    for (i = 0; i < 9; i++) {
+        circle[i].x = 20 + 60 * xs[i], circle[i].y = 60 * ys[i], circle[i].z = 150;
+        weights[i] = i % 2 ? sqrt(0.5) : 1.0;
+    }
+    TRY(rmf_nurbs_curve_create(1, square, NULL, 5, square_knots, 7, &bottom));
+    TRY(rmf_nurbs_curve_create(2, circle, weights, 9, circle_knots, 12, &top));
+    TRY(rmf_sheet_options_init(&options));
+    options.tolerance = 1e-4;
+    options.thickness = 2;
+    options.k_factor = 0.4;
+    TRY(rmf_cone_spline_transition(bottom, top, &options, &part));
+    TRY(rmf_cone_spline_part_report(part, &report));
+    printf("  %zu pieces (flat triangles, corner cones), edges within %.1e / %.1e of the square / circle,\n"
+           "  neutral layer %.2f mm from the inner face\n",
+           report.pieces, report.edge_distance[0], report.edge_distance[1], report.neutral - report.inner);
+    write_part_file(part, RMF_SHEET_FORMAT_STEP_SOLID, "hopper.step", "the formed part, a closed solid (STEP)");
+    write_part_file(part, RMF_SHEET_FORMAT_DXF, "hopper.dxf", "its flat pattern for the cutter (DXF: CUT, BEND)");
+    write_part_file(part, RMF_SHEET_FORMAT_SVG, "hopper.svg", "the flat pattern as a drawing (SVG, mm)");
+    TRY(rmf_cone_spline_flat_pattern(part, NULL, 0, &count));
+    edges = malloc(count * sizeof *edges);
+    if (!edges) fail("malloc", RMF_ERROR_INTERNAL);
+    TRY(rmf_cone_spline_flat_pattern(part, edges, count, &count));
+    for (i = 0; i < count; i++) {
+        arcs += edges[i].kind == RMF_FLAT_EDGE_ARC;
+        bends += edges[i].layer == RMF_FLAT_BEND;
+    }
+    printf("  flat pattern: %zu outline edges (%zu arcs, the rest lines), %zu bend lines\n", count - bends, arcs,
+           bends);
+    /* A hole of radius 10 drilled in the flat blank, about the middle of the first bend line:
+     * where it lands on the formed part (outer face), and back. */
+    for (i = 0; i < count && edges[i].layer != RMF_FLAT_BEND; i++) {}
+    if (i < count) cx = 0.5 * (edges[i].from.x + edges[i].to.x), cy = 0.5 * (edges[i].from.y + edges[i].to.y);
+    for (i = 0; i < 32; i++) {
+        marks[i].x = cx + 10 * cos(2 * PH_DEMO_PI * (double)i / 32);
+        marks[i].y = cy + 10 * sin(2 * PH_DEMO_PI * (double)i / 32);
+    }
+    TRY(rmf_cone_spline_flat_to_surface(part, marks, 32, RMF_SHEET_LAYER_OUTER, formed, NULL));
+    TRY(rmf_cone_spline_surface_to_flat(part, formed, 32, RMF_SHEET_LAYER_OUTER, 1e-9, back));
+    for (i = 0; i < 32; i++) worst = fmax(worst, hypot(back[i].x - marks[i].x, back[i].y - marks[i].y));
+    printf("  a hole of radius 10 in the flat pattern maps onto the formed outer face, e.g. (%.3f, %.3f, %.3f),\n"
+           "  and back to the flat pattern within %.1e\n", formed[0].x, formed[0].y, formed[0].z, worst);
+    free(edges);
+    rmf_cone_spline_free(part);
+    rmf_curve_free(bottom);
+    rmf_curve_free(top);
+}
+
 int main(int argc, char **argv) {
     if (argc > 1) out_dir = argv[1];
     if (mkdir(out_dir, 0777) != 0 && errno != EEXIST) {
@@ -558,5 +643,6 @@ int main(int argc, char **argv) {
     demo_cone_spline();
     demo_profile_surfaces();
     demo_mobius();
+    demo_hopper();
     return 0;
 }

@@ -19,7 +19,15 @@ What is checked, each figure printed with its limit:
   E. FreeCAD's mesh reader reads the tool's OBJ as the library's tessellation;
   F. rmfsurf.freecad's selection entry points (sweep_selection, cone_spline_selection),
      with a selection as the GUI would give it (the macros are wrappers of the RmfSurf
-     workbench now, checked by capi/tests/workbench.rs).
+     workbench now, checked by capi/tests/workbench.rs);
+  G. rmfsurf.freecad.sweep of a wire into a solid;
+  H. sheet metal (examples/cli/hopper.json, a square-to-round hopper): the tool's STEP solid
+     is a valid closed solid of the expected volume, its DXF flat pattern (read by FreeCAD)
+     encloses the area of the formed neutral layer and its flat STEP face the same; the
+     transition built in FreeCAD from a square wire and a circle edge (transition_selection);
+     and what a FreeCAD user has today to flatten the same part: the Mesh Design
+     workbench's unwrapper (flatmesh, LSCM) and an ideal unfolding of the triangles of
+     FreeCAD's mesher, their outline lengths and areas against the exact development.
 freecadcmd exits 0 on an exception, so the script exits 1 itself on any failure, and
 prints FREECAD CHECKS OK last (report lines start with '| ') when everything passed.
 """
@@ -446,6 +454,179 @@ def part_g():
         require("sweep: a Part.Face as the wire is a TypeError naming 'wire' (%s)" % e, str(e).startswith("wire:"))
 
 
+# ---------------------------------------------------------------------------------------
+# H. Sheet metal
+
+
+def hopper_curves(document):
+    """The hopper of examples/cli/hopper.json as FreeCAD shapes: a square wire, a circle."""
+    spec = example("hopper")["sheet"]["transition"]
+    square = Part.makePolygon([V(*p) for p in spec["bottom"]["polygon"]] + [V(*spec["bottom"]["polygon"][0])])
+    c = spec["top"]["circle"]
+    circle = Part.makeCircle(c["radius"], V(*c["center"]), V(*c["normal"]))
+    objects = []
+    for name, shape in (("Square", square), ("Circle", circle)):
+        o = document.addObject("Part::Feature", name)
+        o.Shape = shape
+        objects.append(o)
+    document.recompute()
+    return objects
+
+
+def loop_length_and_area(points):
+    """Length and (shoelace) area of a closed planar polygon."""
+    n = len(points)
+    length = sum(points[k].distanceToPoint(points[(k + 1) % n]) for k in range(n))
+    twice = sum(points[k].x * points[(k + 1) % n].y - points[(k + 1) % n].x * points[k].y for k in range(n))
+    return length, abs(0.5 * twice)
+
+
+def hopper_nurbs(spec):
+    """The hopper's curves as the command-line tool builds them from the JSON (a degree-1
+    polygon, a circle of four rational quadratics), as library curves."""
+    corners = spec["bottom"]["polygon"]
+    n = len(corners)
+    square = rmfsurf.Curve.from_nurbs(1, corners + [corners[0]], [0] + list(range(n + 1)) + [n])
+    c = spec["top"]["circle"]
+    (cx, cy, cz), r = c["center"], c["radius"]
+    xs, ys = [1, 1, 0, -1, -1, -1, 0, 1, 1], [0, 1, 1, 1, 0, -1, -1, -1, 0]
+    s = 0.5 ** 0.5
+    circle = rmfsurf.Curve.from_nurbs(2, [(cx + r * x, cy + r * y, cz) for x, y in zip(xs, ys)],
+                                      [0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 4], [s if k % 2 else 1 for k in range(9)])
+    return square, circle
+
+
+def unfolded_figures(label, faces, exact_length, exact_area, inner_cut):
+    """Meshes `faces` (the neutral layer cut in two disks) with FreeCAD's mesher and
+    flattens each: an ideal unfolding of the triangles (lengths and areas of the triangles
+    kept: the mesh's chordal errors) and FreeCAD's Mesh Design unwrapper (flatmesh, LSCM);
+    their outline lengths (without the inner cut, counted twice) and areas against the exact
+    development's."""
+    import MeshPart
+    for deflection in (1.0, 0.1):
+        meshes = [MeshPart.meshFromShape(Shape=f, LinearDeflection=deflection, AngularDeflection=0.5) for f in faces]
+        triangles, outline, area_sum = 0, 0.0, 0.0
+        unwrapped_length, unwrapped_area, unwrapper = 0.0, 0.0, "flatmesh"
+        for mesh in meshes:
+            points, tris = mesh.Topology
+            triangles += len(tris)
+            count = {}
+            for f in tris:
+                for a, b in ((f[0], f[1]), (f[1], f[2]), (f[2], f[0])):
+                    key = (min(a, b), max(a, b))
+                    count[key] = count.get(key, 0) + 1
+            outline += sum(points[a].distanceToPoint(points[b]) for (a, b), n in count.items() if n == 1)
+            area_sum += mesh.Area
+            try:
+                import numpy
+                import flatmesh
+                flat = flatmesh.FaceUnwrapper(numpy.array([[p.x, p.y, p.z] for p in points]),
+                                              numpy.array([list(f) for f in tris]))
+                flat.findFlatNodes(5, 0.95)
+                loops = [loop_length_and_area([V(*node) for node in loop]) for loop in flat.getFlatBoundaryNodes()]
+                length, enclosed = max(loops, key=lambda la: la[1])
+                unwrapped_length += length
+                unwrapped_area += enclosed
+            except Exception as e:  # the unwrapper is optional in FreeCAD's builds
+                unwrapper = "flatmesh not available (%s)" % e
+        outline -= 2 * inner_cut
+        unwrapped_length -= 2 * inner_cut
+        say("  %s, FreeCAD mesher (LinearDeflection %.1f, %d triangles), ideal unfolding of the triangles: "
+            "outline length error %.2e, area error %.2e" % (label, deflection, triangles,
+                                                           abs(outline - exact_length) / exact_length,
+                                                           abs(area_sum - exact_area) / exact_area))
+        if unwrapper == "flatmesh":
+            say("  %s, FreeCAD Mesh Design unwrapper (flatmesh, LSCM) of the same mesh: outline length error "
+                "%.2e, area error %.2e" % (label, abs(unwrapped_length - exact_length) / exact_length,
+                                           abs(unwrapped_area - exact_area) / exact_area))
+        else:
+            say("  %s: %s" % (label, unwrapper))
+
+
+def part_h():
+    say("H. Sheet metal: the square-to-round hopper (examples/cli/hopper.json)")
+    spec = example("hopper")["sheet"]
+    t, k, tol = spec["thickness"], spec["k_factor"], spec["tolerance"]
+    # The tool's part, rebuilt here from the same curves through the glue.
+    square_curve, circle_curve = hopper_nurbs(spec["transition"])
+    part = rmfsurf.transition(square_curve, circle_curve, thickness=t, k_factor=k, tolerance=tol)
+    # The exact areas of the layers, by quadrature on FreeCAD's own B-spline faces.
+    inner = area(rmf.part_face(part.layer("inner")), 2)
+    neutral_face = rmf.part_face(part.layer("neutral"))
+    neutral = area(neutral_face, 2)
+    # Offsets of a developable grow linearly in area: A(s) = A(0) + s (A(kt) - A(0)) / kt,
+    # and the sheet's volume is t A(t/2).
+    volume = t * (inner + 0.5 * t * (neutral - inner) / (k * t))
+    solid = Part.read(os.path.join(FILES, "hopper.step"))
+    shells = solid.Shells
+    require("hopper.step: one solid, %d faces, valid, closed shell" % len(solid.Faces),
+            len(solid.Solids) == 1 and solid.isValid() and len(shells) == 1 and shells[0].isClosed())
+    check("hopper.step: FreeCAD's solid volume against t·A(t/2), relative", abs(solid.Volume - volume) / volume, 1e-8)
+    # The DXF flat pattern read by FreeCAD: lines and arcs, one closed outline, bend lines.
+    flat_face, bends = rmf.flat_pattern(part)
+    outline = flat_face.OuterWire.Edges
+    dxf_doc = FreeCAD.newDocument("hopper_dxf")
+    Import.readDXF(os.path.join(FILES, "hopper.dxf"))
+    edges = [e for o in dxf_doc.Objects if hasattr(o, "Shape") for e in o.Shape.Edges]
+    arcs = [e for e in edges if isinstance(e.Curve, Part.Circle)]
+    lines = [e for e in edges if isinstance(e.Curve, (Part.Line, Part.LineSegment))]
+    require("hopper.dxf: %d entities, all true arcs (%d) or lines (%d)" % (len(edges), len(arcs), len(lines)),
+            len(arcs) + len(lines) == len(edges))
+    bend_ends = [(b.Vertexes[0].Point, b.Vertexes[-1].Point) for b in bends.Edges]
+
+    def is_bend(e):
+        # Classification only (FreeCAD's DXF reader rounds some coordinates in the 1e-7th).
+        a, b = e.Vertexes[0].Point, e.Vertexes[-1].Point
+        return not isinstance(e.Curve, Part.Circle) and any(
+            max(a.distanceToPoint(p), b.distanceToPoint(q)) < 1e-6
+            or max(a.distanceToPoint(q), b.distanceToPoint(p)) < 1e-6 for p, q in bend_ends)
+
+    cut = [e for e in edges if not is_bend(e)]
+    require("hopper.dxf: %d outline entities and %d bend lines" % (len(cut), len(edges) - len(cut)),
+            len(cut) == len(outline) and len(edges) - len(cut) == len(bend_ends))
+    dxf_face = Part.Face(Part.Wire(Part.__sortEdges__(cut)))
+    check("hopper.dxf read by FreeCAD: face area against the formed neutral layer's, relative",
+          abs(dxf_face.Area - neutral) / neutral, 1e-8)
+    flat_step = Part.read(os.path.join(FILES, "hopper.flat.step"))
+    check("hopper.flat.step: planar face area against the formed neutral layer's, relative",
+          abs(flat_step.Faces[0].Area - neutral) / neutral, 1e-8)
+    FreeCAD.closeDocument(dxf_doc.Name)
+    # Built in FreeCAD from its own shapes: a square wire and a circle edge, directly and by
+    # the selection entry point (as a selection gives them, at a tolerance of 1e-3).
+    document = FreeCAD.newDocument("sheet")
+    square, circle = hopper_curves(document)
+    own = rmf.transition(square.Shape, circle.Shape.Edges[0], t, k, tol)
+    limit = tol * neutral / volume
+    check("transition of FreeCAD's square and circle: volume against the tool's, relative",
+          abs(rmf.part_solid(own).Volume - solid.Volume) / solid.Volume, limit)
+    rmf.transition_selection([Selected(square), Selected(circle, ["Edge1"])], document, t, k, 1e-3)
+    made = [document.getObject(n) for n in ("Transition", "FlatPattern", "BendLines")]
+    require("transition_selection: made Transition, FlatPattern, BendLines, all valid",
+            None not in made and all(o.Shape.isValid() for o in made))
+    if None not in made:
+        check("transition_selection (tolerance 1e-3): volume against the tool's, relative",
+              abs(made[0].Shape.Volume - solid.Volume) / solid.Volume, 1e-3 * neutral / volume)
+        check("transition_selection: flat pattern |z| extent", made[1].Shape.BoundBox.ZLength, 1e-12)
+    FreeCAD.closeDocument(document.Name)
+    # What a FreeCAD user has today to flatten the same part: triangulate the formed neutral
+    # layer with FreeCAD's mesher and unfold it. (SheetMetal unfolds planes and cylinders
+    # only; CurvesWB is no Debian package.) The layer is cut in two disks at its middle
+    # ruling (an unwrapper needs disks; the seam is the other cut).
+    exact_length = sum(e.Length for e in outline)
+    exact_area = flat_face.Area
+    say("  exact development (rmfsurf): %d lines and arcs, outline length %.6f, area %.6f; "
+        "against the formed neutral layer %.2e" % (len(outline), exact_length, exact_area,
+                                                   abs(exact_area - neutral) / neutral))
+    surface = neutral_face.Surface
+    u0, u1, v0, v1 = surface.bounds()
+    middle = 0.5 * (v0 + v1)
+    first, second = surface.copy(), surface.copy()
+    first.segment(u0, u1, v0, middle)
+    second.segment(u0, u1, middle, v1)
+    inner_cut = surface.value(u0, middle).distanceToPoint(surface.value(u1, middle))
+    unfolded_figures("hopper", [Part.Face(first), Part.Face(second)], exact_length, exact_area, inner_cut)
+
+
 def main():
     say("rmfsurf %s (%s) in FreeCAD %s, Python %s" % (rmfsurf.__version__, os.path.dirname(rmfsurf.__file__),
                                                    ".".join(FreeCAD.Version()[:3]), sys.version.split()[0]))
@@ -456,6 +637,7 @@ def main():
     part_e(parts)
     part_f()
     part_g()
+    part_h()
     if failures:
         say("FREECAD CHECKS FAILED: %s" % "; ".join(failures))
         sys.exit(1)

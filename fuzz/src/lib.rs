@@ -21,6 +21,7 @@ pub mod mobius;
 pub mod ph_cubic;
 pub mod rrmf_quintic;
 pub mod session;
+pub mod sheet;
 
 use session::Session;
 
@@ -43,6 +44,7 @@ pub const TARGETS: &[(&str, Target)] = &[
     ("mobius", mobius),
     ("rrmf_quintic", rrmf_quintic),
     ("cone_spline", cone_spline),
+    ("sheet", sheet),
 ];
 
 /// NURBS curves and surfaces, views, evaluation, tessellation, frames, sweeps.
@@ -64,4 +66,9 @@ pub fn rrmf_quintic(input: &[u8]) {
 
 pub fn cone_spline(input: &[u8]) {
     run(input, cone_spline::OPS)
+}
+
+/// Sheet-metal parts: transitions, layers, flat patterns, marks, exports.
+pub fn sheet(input: &[u8]) {
+    run(input, sheet::OPS)
 }

@@ -9,7 +9,10 @@ The four methods of the library:
   :func:`mobius_rrmf_hermite`, :func:`mobius_rrmf_approximate`;
 * RRMF quintics (Farouki, Giannelli & Sestini): :func:`rrmf_spline_hermite`, ...;
 * cone spline surfaces and their flat patterns (Leopoldseder & Pottmann):
-  :func:`cone_spline_approximate`, :meth:`ConeSpline.flat_pattern`, ...
+  :func:`cone_spline_approximate`, :meth:`ConeSpline.flat_pattern`, ...;
+  sheet-metal parts of them: :func:`transition` (square-to-round and every convex
+  transition piece, with thickness and K-factor), :class:`SheetPart` (layers, solid, flat
+  pattern for the cutter, marks between flat and formed)
 
 and what is made of them: :func:`sweep_surface` (a profile along a spine with exact rational
 frames) and :func:`wire_sweep` (a profile along a wire of lines, arcs and curves, closed into a
@@ -34,6 +37,7 @@ from .curves import (BezierSegment, Curve, Inversion, NurbsCurve, RrmfQuintic, d
 from .frames import (Frames, double_reflection_frames, frenet_frames, mobius_frames,
                      ph_exact_rmf, ph_frenet_frames, ph_rational_rmf, ph_rmf_angle_error)
 from .shapes import Arc, CurveEdge, Line, Shape, ShapeFace, SweepReport, wire_sweep
+from .sheets import FlatEdge, SheetPart, SheetReport, transition
 from .surfaces import (BezierPatch, NurbsSurface, SingularityMargin, Surface,
                        convex_initial_normal, gaussian_curvature, parabolic_points,
                        singularity_margin, sweep_surface)

@@ -11,7 +11,8 @@ FreeCAD's Python finds it (docs/install.md, "FreeCAD"); the library comes with t
   (a solid for a closed sweep).
 
 :func:`sweep` is the wire sweep (:func:`sweep_with_report` with its figures, as the
-workbench's RmfSweep feature uses it).
+workbench's RmfSweep feature uses it); :func:`transition` the sheet-metal transition piece
+between two closed curves (its solid, flat pattern and bend lines as Part shapes).
 """
 
 from __future__ import annotations
@@ -29,6 +30,8 @@ from .curves import (Curve, NurbsCurve, distinct_knots, flat_knots, join_nurbs,
                      mobius_rrmf_approximate, ph_spline_approximate, rrmf_spline_hermite)
 from .frames import Frames, ph_frenet_frames, ph_rational_rmf
 from .shapes import Arc, CurveEdge, Edge, Line, Shape, SweepReport, wire_sweep
+from .sheets import SheetPart
+from .sheets import transition as _transition
 from .surfaces import Surface, sweep_surface
 
 RmfError = _core.RmfError
@@ -426,13 +429,67 @@ def flat_pattern_edges(developed: ConeSpline, t_min: float, t_max: float) -> Lis
 
 
 # ---------------------------------------------------------------------------------------
-# Sheet-metal transitions
+# Sheet metal: transition pieces
 
 
 def has_transitions() -> bool:
     """Whether the loaded library has the sheet-metal transitions
     (rmf_cone_spline_transition)."""
     return hasattr(_core.lib, "rmf_cone_spline_transition")
+
+
+def closed_curve(value: Any, name: str = "curve") -> Curve:
+    """A closed edge, wire or face outline (a circle, a polygon, a closed B-spline, ...) as
+    one :class:`rmfsurf.Curve`: its edges' exact B-splines in the wire's order, raised to
+    one degree and joined at knots of full multiplicity (corners stay corners)."""
+    shape = value.OuterWire if hasattr(value, "OuterWire") else value
+    if not hasattr(shape, "Edges") or not shape.Edges:
+        raise TypeError("%s: expected a closed Part edge or wire, got %s" % (name, type(value).__name__))
+    edges = shape.OrderedEdges if hasattr(shape, "OrderedEdges") else shape.Edges
+    degree = max(e.Curve.toBSpline(e.FirstParameter, e.LastParameter).Degree for e in edges)
+    pieces = [_part_curve_data(_edge_bspline(e, degree=degree)) for e in edges]
+    return Curve.from_nurbs(*_joined(join_nurbs(pieces, name)))
+
+
+def _joined(n: NurbsCurve) -> Tuple[int, np.ndarray, np.ndarray, np.ndarray]:
+    return n.degree, n.poles, n.knots, n.weights
+
+
+def transition(bottom: Any, top: Any, thickness: float = 1.0, k_factor: float = 0.5,
+               tolerance: float = 1e-4, **options: Any) -> SheetPart:
+    """The transition piece between two closed convex planar Part edges or wires (see
+    :func:`rmfsurf.transition`, which takes the same keyword options)."""
+    return _transition(closed_curve(bottom, "bottom"), closed_curve(top, "top"),
+                       thickness=thickness, k_factor=k_factor, tolerance=tolerance, **options)
+
+
+def part_solid(part: SheetPart) -> Any:
+    """The formed part as a ``Part.Solid``: its STEP solid, read by FreeCAD."""
+    import os
+    import tempfile
+    with tempfile.TemporaryDirectory(prefix="rmfsurf") as directory:
+        path = os.path.join(directory, "part.step")
+        with open(path, "w") as f:
+            f.write(part.export("step"))
+        shape = Part.Shape()
+        shape.read(path)
+    return shape.Solids[0]
+
+
+def flat_pattern(part: SheetPart) -> Tuple[Any, Any]:
+    """(the flat pattern of the neutral layer as a face in z = 0 bounded by Part lines and
+    arcs, the bend lines as a compound of segments)."""
+    outline, bends = [], []
+    for e in part.flat_edges():
+        a, b = V(e.start[0], e.start[1], 0), V(e.end[0], e.end[1], 0)
+        if e.kind == "arc":
+            c = V(e.center[0], e.center[1], 0)
+            turn = FreeCAD.Rotation(V(0, 0, 1), float(np.degrees(0.5 * e.sweep)))
+            shape = Part.Arc(a, c + turn.multVec(a - c), b).toShape()
+        else:
+            shape = Part.LineSegment(a, b).toShape()
+        (outline if e.layer == "cut" else bends).append(shape)
+    return Part.Face(Part.Wire(outline)), Part.Compound(bends)
 
 
 # ---------------------------------------------------------------------------------------
@@ -483,4 +540,31 @@ def cone_spline_selection(selection: Any, document: Any, tolerance: float = 1e-4
     document.recompute()
     FreeCAD.Console.PrintMessage("rmfsurf: %d cone pieces within %.3g of the face\n"
                                  % (spline.piece_count, error))
+    return features
+
+
+def transition_selection(selection: Any, document: Any, thickness: float = 1.0,
+                         k_factor: float = 0.5, tolerance: float = 1e-4) -> List[Any]:
+    """Macro RmfTransition: the transition piece between the two selected closed edges or
+    wires (or objects whose shape is one): the formed solid, the flat pattern of the
+    neutral layer (a face in the xy-plane; export it as DXF for the cutter) and its bend
+    lines."""
+    shapes = []
+    for item in selection:
+        subs = [s for s in (item.SubObjects or []) if s is not None]
+        shapes.extend(subs if subs else [item.Object.Shape])
+    closed = [s for s in shapes if s.isClosed() or (s.Wires and s.Wires[0].isClosed())]
+    if len(closed) != 2:
+        raise ValueError("select two closed edges or wires (e.g. a square and a circle in parallel planes)")
+    part = transition(closed[0], closed[1], thickness, k_factor, tolerance)
+    face, bends = flat_pattern(part)
+    features = []
+    for name, shape in (("Transition", part_solid(part)), ("FlatPattern", face), ("BendLines", bends)):
+        feature = document.addObject("Part::Feature", name)
+        feature.Shape = shape
+        features.append(feature)
+    document.recompute()
+    r = part.report()
+    FreeCAD.Console.PrintMessage("rmfsurf: transition of %d pieces, edges within %.3g / %.3g of the curves\n"
+                                 % (r.pieces, r.edge_distance[0], r.edge_distance[1]))
     return features

@@ -86,6 +86,24 @@ pub struct FlatPattern {
 }
 
 impl FlatPattern {
+    /// The area enclosed by the outline, positive when it runs counter-clockwise (Green's
+    /// theorem: the chords of its edges, plus the circular segments of its arcs).
+    pub fn area(&self) -> f64 {
+        0.5 * self
+            .outline
+            .iter()
+            .map(|e| {
+                let chord = e.start().perp_dot(e.end());
+                match *e {
+                    PatternEdge::Line { .. } => chord,
+                    PatternEdge::Arc { radius, sweep, .. } => {
+                        chord + radius * radius * (sweep - sweep.sin())
+                    }
+                }
+            })
+            .sum::<f64>()
+    }
+
     /// Lower-left and upper-right corners of the box around the outline (arcs included).
     pub fn bounds(&self) -> (DVec2, DVec2) {
         let mut lo = DVec2::splat(f64::INFINITY);

@@ -7,7 +7,11 @@
 //!   §4.4.12/§4.4.15) bounded by its four boundary curves, in an `OPEN_SHELL` of a
 //!   `SHELL_BASED_SURFACE_MODEL` (`MANIFOLD_SURFACE_SHAPE_REPRESENTATION`);
 //! * curves become rational B-spline curves in a `GEOMETRIC_CURVE_SET`
-//!   (`GEOMETRICALLY_BOUNDED_WIREFRAME_SHAPE_REPRESENTATION`).
+//!   (`GEOMETRICALLY_BOUNDED_WIREFRAME_SHAPE_REPRESENTATION`);
+//! * a closed solid (a formed sheet-metal part) is a `MANIFOLD_SOLID_BREP` of a
+//!   `CLOSED_SHELL` of such faces, every edge shared by two of them
+//!   (`ADVANCED_BREP_SHAPE_REPRESENTATION`);
+//! * a flat pattern is one `PLANE` face bounded by `LINE` and `CIRCLE` edges.
 //!
 //! The boundary curves are exact: a clamped NURBS surface's boundary is the NURBS curve of
 //! its first/last row or column of poles. Each edge carries its parameter-space line
@@ -17,6 +21,7 @@
 //! 17 significant digits, so every double round-trips exactly.
 
 use crate::bezier::{NurbsCurve, NurbsSurface};
+use crate::cone_spline::{FlatPattern, PatternEdge};
 use crate::error::{invalid, Result};
 use crate::math::bounding_diagonal;
 use glam::DVec3;
@@ -440,6 +445,293 @@ pub fn curves_to_step(curves: &[&NurbsCurve], name: &str) -> Result<String> {
     let set = out.add(format!("GEOMETRIC_CURVE_SET('',{})", refs(&ids)));
     let representation = format!(
         "GEOMETRICALLY_BOUNDED_WIREFRAME_SHAPE_REPRESENTATION('{}',(#{set}),#{context})",
+        string(name)
+    );
+    represent(&mut out, shape, representation);
+    Ok(exchange_structure(&out, name))
+}
+
+/// One boundary side of a face of a solid, with where its curve starts and ends.
+struct SolidSide {
+    face: usize,
+    /// Which side (the order of [`boundaries`]: counter-clockwise in (u, v)).
+    index: usize,
+    start: DVec3,
+    end: DVec3,
+}
+
+/// Whether two boundary curves are the same curve, run in the same direction (`Some(true)`),
+/// in opposite directions (`Some(false)`), or not the same (`None`): poles within
+/// `tolerance` and proportional weights, forwards or backwards.
+fn same_or_reversed(a: &NurbsCurve, b: &NurbsCurve, tolerance: f64) -> Option<bool> {
+    if a.poles.len() != b.poles.len() {
+        return None;
+    }
+    let forward = same_curve(a, b, tolerance);
+    if forward {
+        return Some(true);
+    }
+    let reversed = NurbsCurve {
+        degree: b.degree,
+        poles: b.poles.iter().rev().copied().collect(),
+        weights: b.weights.iter().rev().copied().collect(),
+        knots: b.knots.clone(),
+    };
+    same_curve(a, &reversed, tolerance).then_some(false)
+}
+
+/// The parameter range of a curve.
+fn curve_range(c: &NurbsCurve) -> (f64, f64) {
+    (c.knots[0], c.knots[c.knots.len() - 1])
+}
+
+/// A PCURVE: the line origin + t′·direction of a face's side, written for the parameter t
+/// of the edge's curve on [t0, t1], with the side's own parameter t′ on [s0, s1] running
+/// the same way (`same`) or backwards.
+fn pcurve_line(
+    out: &mut Entities,
+    surface: usize,
+    context_2d: usize,
+    side: &Boundary,
+    edge_range: (f64, f64),
+    same: bool,
+) -> usize {
+    let (t0, t1) = edge_range;
+    let (s0, s1) = curve_range(&side.curve);
+    let rate = (s1 - s0) / (t1 - t0);
+    // t′ = s0 + (t − t0)·rate, or s1 − (t − t0)·rate.
+    let (offset, slope) = if same {
+        (s0 - t0 * rate, rate)
+    } else {
+        (s1 + t0 * rate, -rate)
+    };
+    let (ox, oy) = (
+        side.origin.0 + offset * side.direction.0,
+        side.origin.1 + offset * side.direction.1,
+    );
+    let (dx, dy) = (slope * side.direction.0, slope * side.direction.1);
+    let magnitude = dx.hypot(dy);
+    let origin = out.point_2d(ox, oy);
+    let direction = out.add(format!(
+        "DIRECTION('',({},{}))",
+        real(dx / magnitude),
+        real(dy / magnitude)
+    ));
+    let vector = out.add(format!("VECTOR('',#{direction},{})", real(magnitude)));
+    let line = out.add(format!("LINE('',#{origin},#{vector})"));
+    let representation = out.add(format!(
+        "DEFINITIONAL_REPRESENTATION('',(#{line}),#{context_2d})"
+    ));
+    out.add(format!("PCURVE('',#{surface},#{representation})"))
+}
+
+/// A STEP file holding one closed solid (`MANIFOLD_SOLID_BREP` of a `CLOSED_SHELL`)
+/// bounded by `faces`, the product called `name`. Every face's normal ∂u × ∂v must point
+/// out of the solid, and each boundary side of a face that is not collapsed to a point must
+/// be the boundary side of exactly one other face (the same curve, either way round): the
+/// edge is written once, with the parameter line of both faces, and used in each face's
+/// loop in the direction that face's orientation asks for.
+pub fn solid_to_step(faces: &[NurbsSurface], name: &str) -> Result<String> {
+    if faces.is_empty() {
+        return invalid!("a solid needs at least one face");
+    }
+    let tolerance = SAME_TOLERANCE
+        * bounding_diagonal(faces.iter().flat_map(|f| f.poles.iter().copied()))
+            .max(f64::MIN_POSITIVE);
+    let all: Vec<[Boundary; 4]> = faces.iter().map(boundaries).collect();
+    let mut sides = Vec::new();
+    for (face, b) in all.iter().enumerate() {
+        for (index, side) in b.iter().enumerate() {
+            if collapsed(&side.curve, tolerance) {
+                continue;
+            }
+            let poles = &side.curve.poles;
+            sides.push(SolidSide {
+                face,
+                index,
+                start: poles[0],
+                end: poles[poles.len() - 1],
+            });
+        }
+    }
+    // Pair the sides: partner[i] = (j, same direction).
+    let mut partner: Vec<Option<(usize, bool)>> = vec![None; sides.len()];
+    for i in 0..sides.len() {
+        if partner[i].is_some() {
+            continue;
+        }
+        let a = &sides[i];
+        let found = (i + 1..sides.len()).find_map(|j| {
+            let b = &sides[j];
+            let ends = (a.start.distance(b.start) <= tolerance
+                && a.end.distance(b.end) <= tolerance)
+                || (a.start.distance(b.end) <= tolerance && a.end.distance(b.start) <= tolerance);
+            if partner[j].is_some() || !ends {
+                return None;
+            }
+            same_or_reversed(
+                &all[a.face][a.index].curve,
+                &all[b.face][b.index].curve,
+                tolerance,
+            )
+            .map(|same| (j, same))
+        });
+        let Some((j, same)) = found else {
+            return invalid!(
+                "the faces do not close: side {} of face {} is the side of no other face",
+                a.index,
+                a.face
+            );
+        };
+        partner[i] = Some((j, same));
+        partner[j] = Some((i, same));
+    }
+    let mut out = Entities { lines: Vec::new() };
+    let (shape, context) = product_and_context(&mut out, name);
+    let origin = out.point(DVec3::ZERO);
+    let z = out.add("DIRECTION('',(0.,0.,1.))");
+    let x = out.add("DIRECTION('',(1.,0.,0.))");
+    let placement = out.add(format!("AXIS2_PLACEMENT_3D('',#{origin},#{z},#{x})"));
+    let context_2d = out.add(
+        "( GEOMETRIC_REPRESENTATION_CONTEXT(2) PARAMETRIC_REPRESENTATION_CONTEXT() \
+         REPRESENTATION_CONTEXT('2D SPACE','') )",
+    );
+    let surface_ids: Vec<usize> = faces.iter().map(|f| surface_entity(&mut out, f)).collect();
+    let mut vertices: Vec<(DVec3, usize)> = Vec::new();
+    let mut vertex = |out: &mut Entities, p: DVec3| {
+        if let Some(&(_, id)) = vertices.iter().find(|(q, _)| q.distance(p) <= tolerance) {
+            return id;
+        }
+        let point = out.point(p);
+        let id = out.add(format!("VERTEX_POINT('',#{point})"));
+        vertices.push((p, id));
+        id
+    };
+    // The edge of each side: (edge entity, whether the side runs along the edge's curve).
+    let mut edge_of: Vec<Option<(usize, bool)>> = vec![None; sides.len()];
+    for i in 0..sides.len() {
+        if edge_of[i].is_some() {
+            continue;
+        }
+        let (j, same) = partner[i].expect("every side is paired");
+        let (a, b) = (&sides[i], &sides[j]);
+        let side_a = &all[a.face][a.index];
+        let side_b = &all[b.face][b.index];
+        let start = vertex(&mut out, a.start);
+        let end = vertex(&mut out, a.end);
+        let geometry = curve_entity(&mut out, &side_a.curve);
+        let range = curve_range(&side_a.curve);
+        let pa = pcurve_line(
+            &mut out,
+            surface_ids[a.face],
+            context_2d,
+            side_a,
+            range,
+            true,
+        );
+        let pb = pcurve_line(
+            &mut out,
+            surface_ids[b.face],
+            context_2d,
+            side_b,
+            range,
+            same,
+        );
+        let on_surfaces = out.add(format!(
+            "SURFACE_CURVE('',#{geometry},(#{pa},#{pb}),.PCURVE_S1.)"
+        ));
+        let edge = out.add(format!("EDGE_CURVE('',#{start},#{end},#{on_surfaces},.T.)"));
+        edge_of[i] = Some((edge, true));
+        edge_of[j] = Some((edge, same));
+    }
+    let mut face_ids = Vec::new();
+    for (face, &surface) in surface_ids.iter().enumerate() {
+        let mut loop_edges = Vec::new();
+        for (i, side) in sides.iter().enumerate().filter(|(_, s)| s.face == face) {
+            let (edge, along) = edge_of[i].expect("every side has its edge");
+            // The loop runs counter-clockwise in (u, v): sides 0 and 1 forwards.
+            let forward = (side.index < 2) == along;
+            let flag = if forward { ".T." } else { ".F." };
+            loop_edges.push(out.add(format!("ORIENTED_EDGE('',*,*,#{edge},{flag})")));
+        }
+        let edge_loop = out.add(format!("EDGE_LOOP('',{})", refs(&loop_edges)));
+        let bound = out.add(format!("FACE_OUTER_BOUND('',#{edge_loop},.T.)"));
+        face_ids.push(out.add(format!("ADVANCED_FACE('',(#{bound}),#{surface},.T.)")));
+    }
+    let shell = out.add(format!("CLOSED_SHELL('',{})", refs(&face_ids)));
+    let solid = out.add(format!("MANIFOLD_SOLID_BREP('',#{shell})"));
+    let representation = format!(
+        "ADVANCED_BREP_SHAPE_REPRESENTATION('{}',(#{placement},#{solid}),#{context})",
+        string(name)
+    );
+    represent(&mut out, shape, representation);
+    Ok(exchange_structure(&out, name))
+}
+
+/// A STEP file holding a flat pattern as one planar face in z = 0 (`PLANE`, bounded by
+/// `LINE` and `CIRCLE` edges, the outline counter-clockwise about +z), the product called
+/// `name`. The bend lines are not part of the face (the DXF and SVG files carry them).
+pub fn flat_to_step(pattern: &FlatPattern, name: &str) -> Result<String> {
+    let outline = &pattern.outline;
+    if outline.is_empty() {
+        return invalid!("a flat pattern needs at least one edge");
+    }
+    let mut out = Entities { lines: Vec::new() };
+    let (shape, context) = product_and_context(&mut out, name);
+    let origin = out.point(DVec3::ZERO);
+    let z = out.add("DIRECTION('',(0.,0.,1.))");
+    let x = out.add("DIRECTION('',(1.,0.,0.))");
+    let placement = out.add(format!("AXIS2_PLACEMENT_3D('',#{origin},#{z},#{x})"));
+    let plane = out.add(format!("PLANE('',#{placement})"));
+    let lift = |p: glam::DVec2| p.extend(0.0);
+    let vertices: Vec<usize> = outline
+        .iter()
+        .map(|e| {
+            let point = out.point(lift(e.start()));
+            out.add(format!("VERTEX_POINT('',#{point})"))
+        })
+        .collect();
+    let mut loop_edges = Vec::new();
+    for (k, edge) in outline.iter().enumerate() {
+        let (start, end) = (vertices[k], vertices[(k + 1) % vertices.len()]);
+        let (geometry, same) = match *edge {
+            PatternEdge::Line { from, to } => {
+                let d = to - from;
+                let p = out.point(lift(from));
+                let direction = out.add(format!(
+                    "DIRECTION('',({},{},0.))",
+                    real(d.x / d.length()),
+                    real(d.y / d.length())
+                ));
+                let vector = out.add(format!("VECTOR('',#{direction},{})", real(d.length())));
+                (out.add(format!("LINE('',#{p},#{vector})")), true)
+            }
+            PatternEdge::Arc {
+                center,
+                radius,
+                sweep,
+                ..
+            } => {
+                let c = out.point(lift(center));
+                let axis = out.add(format!("AXIS2_PLACEMENT_3D('',#{c},#{z},#{x})"));
+                // A CIRCLE runs counter-clockwise about +z: clockwise arcs run against it.
+                (
+                    out.add(format!("CIRCLE('',#{axis},{})", real(radius))),
+                    sweep > 0.0,
+                )
+            }
+        };
+        let flag = if same { ".T." } else { ".F." };
+        let e = out.add(format!("EDGE_CURVE('',#{start},#{end},#{geometry},{flag})"));
+        loop_edges.push(out.add(format!("ORIENTED_EDGE('',*,*,#{e},.T.)")));
+    }
+    let edge_loop = out.add(format!("EDGE_LOOP('',{})", refs(&loop_edges)));
+    let bound = out.add(format!("FACE_OUTER_BOUND('',#{edge_loop},.T.)"));
+    let face = out.add(format!("ADVANCED_FACE('',(#{bound}),#{plane},.T.)"));
+    let shell = out.add(format!("OPEN_SHELL('',(#{face}))"));
+    let model = out.add(format!("SHELL_BASED_SURFACE_MODEL('',(#{shell}))"));
+    let representation = format!(
+        "MANIFOLD_SURFACE_SHAPE_REPRESENTATION('{}',(#{placement},#{model}),#{context})",
         string(name)
     );
     represent(&mut out, shape, representation);

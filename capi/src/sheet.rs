@@ -1,0 +1,610 @@
+//! `RmfSheetOptions` and the sheet-metal parts of cone splines: transition pieces between
+//! two closed curves (rmf_cone_spline_transition), the sheet's layers and closed solid,
+//! the neutral layer's flat pattern for the cutter, and the maps between flat and formed.
+//! A part is an `RmfConeSpline` handle: the cone spline accessors (pieces, surface strips,
+//! development, offsets) work on its designed surface; the functions here need a part.
+
+use super::boundary::{
+    buffer, guard, invalid_arg, optional_out, out_ptr, reference, slice, write, FfiError,
+    FfiResult, OptionsStruct,
+};
+use super::cone_spline::RmfConeSpline;
+use super::curve::RmfCurve;
+use super::status::RmfStatus;
+use super::surface::RmfSurface;
+use super::types::{RmfVec2, RmfVec3};
+use rmfsurf::export::{dxf, step, svg};
+use rmfsurf::glam::DVec2;
+use rmfsurf::PatternEdge;
+use rmfsurf::{Layer, Reference, Sheet, SheetOptions, SheetPart, Side};
+use std::ffi::c_char;
+
+/// Which face of the sheet the designed surface is (RmfSheetOptions.reference).
+pub type RmfSheetReference = u32;
+/// The designed surface is the inner face (the concave side of the bends): the sheet lies
+/// on the convex side. The default; the only choice for parts with a vertex on an edge
+/// (transitions from polygon corners), whose bend radius is 0 there.
+pub const RMF_SHEET_REFERENCE_INNER: RmfSheetReference = 0;
+/// The designed surface is the neutral layer.
+pub const RMF_SHEET_REFERENCE_NEUTRAL: RmfSheetReference = 1;
+/// The designed surface is the outer face: the sheet lies towards the bend centres.
+pub const RMF_SHEET_REFERENCE_OUTER: RmfSheetReference = 2;
+
+/// A surface of the formed sheet.
+pub type RmfSheetLayer = u32;
+/// The designed surface (through the input's curves).
+pub const RMF_SHEET_LAYER_REFERENCE: RmfSheetLayer = 0;
+/// The inner face (concave side).
+pub const RMF_SHEET_LAYER_INNER: RmfSheetLayer = 1;
+/// The neutral layer, at k·t from the inner face: the one the flat pattern develops.
+pub const RMF_SHEET_LAYER_NEUTRAL: RmfSheetLayer = 2;
+/// The outer face.
+pub const RMF_SHEET_LAYER_OUTER: RmfSheetLayer = 3;
+
+/// Which boundary of a part.
+pub type RmfSheetSide = u32;
+/// The first boundary: a transition's bottom curve (u = 0 of the layer surfaces).
+pub const RMF_SHEET_SIDE_FIRST: RmfSheetSide = 0;
+/// The second boundary: a transition's top curve (u = 1).
+pub const RMF_SHEET_SIDE_SECOND: RmfSheetSide = 1;
+
+/// What rmf_cone_spline_part_export writes.
+pub type RmfSheetFormat = u32;
+/// STEP AP214: the formed part as a closed solid (MANIFOLD_SOLID_BREP) between its inner
+/// and outer face, with normal-cut edges.
+pub const RMF_SHEET_FORMAT_STEP_SOLID: RmfSheetFormat = 0;
+/// STEP AP214: the flat pattern as one planar face bounded by lines and circles.
+pub const RMF_SHEET_FORMAT_STEP_FLAT: RmfSheetFormat = 1;
+/// DXF R12: the flat pattern, LINE and ARC entities, outline on layer CUT, bend lines on
+/// layer BEND.
+pub const RMF_SHEET_FORMAT_DXF: RmfSheetFormat = 2;
+/// SVG 1.1: the flat pattern in millimetres, bend lines dashed.
+pub const RMF_SHEET_FORMAT_SVG: RmfSheetFormat = 3;
+
+/// RmfFlatEdge.kind: a straight segment.
+pub const RMF_FLAT_EDGE_LINE: u32 = 0;
+/// RmfFlatEdge.kind: a circular arc.
+pub const RMF_FLAT_EDGE_ARC: u32 = 1;
+/// RmfFlatEdge.layer: the cutting outline.
+pub const RMF_FLAT_CUT: u32 = 0;
+/// RmfFlatEdge.layer: a bend line (a ruling where two pieces meet).
+pub const RMF_FLAT_BEND: u32 = 1;
+
+/// How a sheet-metal part is built and cut. Initialise with rmf_sheet_options_init, then
+/// change fields; the struct only grows at the end.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct RmfSheetOptions {
+    /// sizeof(RmfSheetOptions), written by rmf_sheet_options_init.
+    pub struct_size: usize,
+    /// Largest distance of the surface from the designed developable and of the part's
+    /// edges from the input's curves (default 1e-4), > 0.
+    pub tolerance: f64,
+    /// Sheet thickness t (default 1), > 0.
+    pub thickness: f64,
+    /// K-factor k (default 0.5): the neutral layer lies at k·t from the inner face,
+    /// 0 ≤ k ≤ 1 (docs/sheet-metal.md has a table by material and bend ratio).
+    pub k_factor: f64,
+    /// RMF_SHEET_REFERENCE_* (default RMF_SHEET_REFERENCE_INNER).
+    pub reference: RmfSheetReference,
+    /// Largest distance of the flat outline's biarcs from the exact developed boundary;
+    /// 0 (the default) means the tolerance.
+    pub flat_tolerance: f64,
+    /// Most cone pieces (default 100000), ≥ 2.
+    pub max_pieces: usize,
+}
+
+impl Default for RmfSheetOptions {
+    fn default() -> Self {
+        Self {
+            struct_size: std::mem::size_of::<Self>(),
+            tolerance: 1e-4,
+            thickness: 1.0,
+            k_factor: 0.5,
+            reference: RMF_SHEET_REFERENCE_INNER,
+            flat_tolerance: 0.0,
+            max_pieces: 100_000,
+        }
+    }
+}
+
+// SAFETY: repr(C) plain data, first field usize; every bit pattern is a valid value.
+unsafe impl OptionsStruct for RmfSheetOptions {
+    const FIRST_SIZE: usize = std::mem::size_of::<Self>();
+}
+
+/// One edge of a flat pattern: a line from `from` to `to`, or an arc about `center` of
+/// `radius` from `from` through the signed angle `sweep` (counter-clockwise when positive)
+/// to `to`. Coordinates in the caller's units, in the plane of the flat pattern.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default)]
+pub struct RmfFlatEdge {
+    /// RMF_FLAT_CUT or RMF_FLAT_BEND.
+    pub layer: u32,
+    /// RMF_FLAT_EDGE_LINE or RMF_FLAT_EDGE_ARC.
+    pub kind: u32,
+    pub from: RmfVec2,
+    pub to: RmfVec2,
+    /// Arcs only (0 for lines).
+    pub center: RmfVec2,
+    pub radius: f64,
+    pub sweep: f64,
+}
+
+/// What the construction of a part measured and chose (caller's units).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default)]
+pub struct RmfSheetReport {
+    /// Number of cone, cylinder and plane pieces.
+    pub pieces: usize,
+    /// 1 if the part closes on itself (a transition), 0 for an open part.
+    pub closed: u32,
+    /// Largest sampled distance of the cone spline from the designed developable.
+    pub deviation: f64,
+    /// Largest sampled distance of the first and second boundary from the input's curves.
+    pub edge_distance: [f64; 2],
+    /// The smallest bend radius of the designed surface (0 at a vertex on an edge).
+    pub bend_radius: f64,
+    /// Distances of the inner, neutral and outer layer from the designed surface, along
+    /// the normal from the concave to the convex side.
+    pub inner: f64,
+    pub neutral: f64,
+    pub outer: f64,
+}
+
+fn reference_from(code: RmfSheetReference) -> FfiResult<Reference> {
+    Ok(match code {
+        RMF_SHEET_REFERENCE_INNER => Reference::Inner,
+        RMF_SHEET_REFERENCE_NEUTRAL => Reference::Neutral,
+        RMF_SHEET_REFERENCE_OUTER => Reference::Outer,
+        other => {
+            return invalid_arg(format!(
+                "options->reference = {other} is not one of the RMF_SHEET_REFERENCE_* values"
+            ))
+        }
+    })
+}
+
+fn layer_from(code: RmfSheetLayer) -> FfiResult<Layer> {
+    Ok(match code {
+        RMF_SHEET_LAYER_REFERENCE => Layer::Reference,
+        RMF_SHEET_LAYER_INNER => Layer::Inner,
+        RMF_SHEET_LAYER_NEUTRAL => Layer::Neutral,
+        RMF_SHEET_LAYER_OUTER => Layer::Outer,
+        other => {
+            return invalid_arg(format!(
+                "layer = {other} is not one of the RMF_SHEET_LAYER_* values"
+            ))
+        }
+    })
+}
+
+/// The core options; messages name the C fields.
+unsafe fn options_from(options: *const RmfSheetOptions) -> FfiResult<SheetOptions> {
+    let o = super::boundary::options(options, "options")?;
+    let sheet = Sheet::new(o.thickness, o.k_factor, reference_from(o.reference)?).map_err(|e| {
+        FfiError::Core(rmfsurf::Error::invalid_input(format!(
+            "options->{}",
+            e.message()
+        )))
+    })?;
+    if !(o.tolerance.is_finite() && o.tolerance > 0.0) {
+        return invalid_arg(format!(
+            "options->tolerance = {} must be finite and positive",
+            o.tolerance
+        ));
+    }
+    if !(o.flat_tolerance.is_finite() && o.flat_tolerance >= 0.0) {
+        return invalid_arg(format!(
+            "options->flat_tolerance = {} must be finite and ≥ 0 (0: the tolerance)",
+            o.flat_tolerance
+        ));
+    }
+    if o.max_pieces < 2 {
+        return invalid_arg(format!(
+            "options->max_pieces = {} must be at least 2",
+            o.max_pieces
+        ));
+    }
+    Ok(SheetOptions {
+        tolerance: o.tolerance,
+        sheet,
+        flat_tolerance: o.flat_tolerance,
+        max_pieces: o.max_pieces,
+    })
+}
+
+/// The part of a handle, or an error naming it.
+fn part_of<'a>(spline: &'a RmfConeSpline, name: &str) -> FfiResult<&'a SheetPart> {
+    spline.part.as_deref().ok_or_else(|| {
+        FfiError::Core(rmfsurf::Error::invalid_input(format!(
+            "{name} is not a sheet-metal part (make it with rmf_cone_spline_transition or rmf_cone_spline_part)"
+        )))
+    })
+}
+
+/// Writes the default options and the struct's size.
+///
+/// @param[out] options Receives the defaults (tolerance 1e-4, thickness 1, k_factor 0.5,
+///             reference inner, flat_tolerance 0 = the tolerance, max_pieces 100000).
+/// @return RMF_OK, or RMF_ERROR_NULL_POINTER if options is NULL.
+/// \since 0.2
+#[no_mangle]
+pub unsafe extern "C" fn rmf_sheet_options_init(options: *mut RmfSheetOptions) -> RmfStatus {
+    guard("rmf_sheet_options_init", || {
+        let options = out_ptr(options, "options")?;
+        write(options, RmfSheetOptions::default());
+        Ok(())
+    })
+}
+
+/// The transition piece between two closed convex planar curves — square-to-round,
+/// rectangle-to-round, round-to-round with offset or inclined planes, obround, polygon to
+/// polygon, any convex NURBS: the lateral surface of their convex hull, the developable
+/// that joins them. Flat triangles from straight edges, cones from corners to arcs
+/// (vertex at the corner), creases from corner to corner (bends of zero inner radius), and
+/// between two smooth arcs the rulings joining points with a common tangent plane; the
+/// cones and general parts as cone splines within the tolerance (Leopoldseder & Pottmann),
+/// G1 except at creases, each piece trimmed exactly by the two curves' planes. The sheet
+/// (thickness, K-factor) is that of `options`.
+///
+/// The curves must be closed and planar (to 1e-9 of their size), convex, and each must lie
+/// strictly on one side of the other's plane. Corners are where consecutive Bézier
+/// segments meet with different tangents (a polygon: degree 1 segments; a circle: rational
+/// quadratics).
+///
+/// @param[in] bottom The first boundary (e.g. from rmf_nurbs_curve_create).
+/// @param[in] top The second boundary.
+/// @param[in] options The sheet and tolerances, or NULL for the defaults; read during the
+///            call only.
+/// @param[out] out Receives the part (an RmfConeSpline whose pieces are the designed
+///             surface's); free with rmf_cone_spline_free. Untouched on failure.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If bottom, top or out is NULL.
+/// @return RMF_ERROR_INVALID_INPUT If a curve is not closed, not planar or not convex (the
+///         message names it and says by how much), the curves cross each other's planes,
+///         or an option is out of range: tolerance ≤ 0, thickness ≤ 0, k_factor outside
+///         [0, 1], an unknown reference, or a reference whose inner face would pass a
+///         vertex (thickness beyond the smallest bend radius).
+/// @return RMF_ERROR_NO_SOLUTION If the hull has a degenerate ruling.
+/// @return RMF_ERROR_NOT_CONVERGED If the tolerance needs more than max_pieces pieces.
+/// \since 0.2
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_transition(
+    bottom: *const RmfCurve,
+    top: *const RmfCurve,
+    options: *const RmfSheetOptions,
+    out: *mut *mut RmfConeSpline,
+) -> RmfStatus {
+    guard("rmf_cone_spline_transition", || {
+        let bottom = reference(bottom, "bottom")?;
+        let top = reference(top, "top")?;
+        let out = out_ptr(out, "out")?;
+        let options = options_from(options)?;
+        let part =
+            SheetPart::transition(bottom.rational("bottom")?, top.rational("top")?, &options)?;
+        write(out, RmfConeSpline::of_part(part)?.into_raw());
+        Ok(())
+    })
+}
+
+/// What a part's construction measured: pieces, closure, distances of the surface and of
+/// the edges from the input, the smallest bend radius, the layers' distances.
+///
+/// @param[out] report Receives the report.
+/// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if part is not a part.
+/// \since 0.2
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_part_report(
+    part: *const RmfConeSpline,
+    report: *mut RmfSheetReport,
+) -> RmfStatus {
+    guard("rmf_cone_spline_part_report", || {
+        let p = part_of(reference(part, "part")?, "part")?;
+        let report = out_ptr(report, "report")?;
+        let r = p.report();
+        write(
+            report,
+            RmfSheetReport {
+                pieces: p.piece_count(),
+                closed: u32::from(p.is_closed()),
+                deviation: r.deviation,
+                edge_distance: r.edge_distance,
+                bend_radius: p.bend_radius(),
+                inner: p.layer_distance(Layer::Inner),
+                neutral: p.layer_distance(Layer::Neutral),
+                outer: p.layer_distance(Layer::Outer),
+            },
+        );
+        Ok(())
+    })
+}
+
+/// A layer of the formed part as one NURBS surface: u ∈ [0, 1] along the rulings from the
+/// first to the second boundary, v ∈ [k, k + 1] on piece k, G1 across the rulings (except
+/// at creases); exact rational (degree 1 in u).
+///
+/// @param[in] layer RMF_SHEET_LAYER_*.
+/// @param[out] out Receives the surface; free with rmf_surface_free.
+/// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT for an unknown layer
+///         or a handle that is not a part.
+/// \since 0.2
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_part_surface(
+    part: *const RmfConeSpline,
+    layer: RmfSheetLayer,
+    out: *mut *mut RmfSurface,
+) -> RmfStatus {
+    guard("rmf_cone_spline_part_surface", || {
+        let p = part_of(reference(part, "part")?, "part")?;
+        let out = out_ptr(out, "out")?;
+        let surface = p.surface(layer_from(layer)?)?;
+        write(out, RmfSurface::new(surface, None).into_raw());
+        Ok(())
+    })
+}
+
+/// A boundary curve of a layer (the edge of the formed part on that layer), with the
+/// surface's v parameter: on the designed surface within the tolerance of the input's
+/// curve (exactly in its plane for transitions).
+///
+/// @param[in] layer RMF_SHEET_LAYER_*.
+/// @param[in] side RMF_SHEET_SIDE_FIRST or RMF_SHEET_SIDE_SECOND.
+/// @param[out] out Receives the curve; free with rmf_curve_free.
+/// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT for unknown codes.
+/// \since 0.2
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_part_boundary(
+    part: *const RmfConeSpline,
+    layer: RmfSheetLayer,
+    side: RmfSheetSide,
+    out: *mut *mut RmfCurve,
+) -> RmfStatus {
+    guard("rmf_cone_spline_part_boundary", || {
+        let p = part_of(reference(part, "part")?, "part")?;
+        let out = out_ptr(out, "out")?;
+        let side = match side {
+            RMF_SHEET_SIDE_FIRST => Side::First,
+            RMF_SHEET_SIDE_SECOND => Side::Second,
+            other => {
+                return invalid_arg(format!(
+                    "side = {other} is not one of the RMF_SHEET_SIDE_* values"
+                ))
+            }
+        };
+        let curve = p.boundary(layer_from(layer)?, side)?;
+        write(out, RmfCurve::new(curve, None).into_raw());
+        Ok(())
+    })
+}
+
+fn flat_edge(edge: &PatternEdge, layer: u32) -> RmfFlatEdge {
+    match *edge {
+        PatternEdge::Line { from, to } => RmfFlatEdge {
+            layer,
+            kind: RMF_FLAT_EDGE_LINE,
+            from: from.into(),
+            to: to.into(),
+            ..Default::default()
+        },
+        PatternEdge::Arc {
+            center,
+            radius,
+            from,
+            to,
+            sweep,
+        } => RmfFlatEdge {
+            layer,
+            kind: RMF_FLAT_EDGE_ARC,
+            from: from.into(),
+            to: to.into(),
+            center: center.into(),
+            radius,
+            sweep,
+        },
+    }
+}
+
+/// The flat pattern of the neutral layer for the cutter: the outline (RMF_FLAT_CUT) as
+/// lines and circular arcs only — exact where the development is a line or an arc, G1
+/// biarcs within the flat tolerance elsewhere —, closed (each edge starts where the one
+/// before ends, the last ends where the first starts) and counter-clockwise, followed by
+/// the bend lines (RMF_FLAT_BEND). A closed part (a transition) is cut open along its seam,
+/// the middle ruling of its largest planar piece.
+///
+/// Size query: with capacity 0 (edges may be NULL) only count is written.
+///
+/// @param[out] edges Buffer for capacity edges: the outline first, then the bend lines.
+/// @param[out] count Receives the number of edges.
+/// @return RMF_OK on success or for a size query.
+/// @return RMF_ERROR_NULL_POINTER If part or count is NULL, or edges is NULL with a
+///         non-zero capacity.
+/// @return RMF_ERROR_BUFFER_TOO_SMALL If capacity is non-zero but too small; count is written.
+/// @return RMF_ERROR_INVALID_INPUT If the handle is not a part.
+/// \since 0.2
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_flat_pattern(
+    part: *const RmfConeSpline,
+    edges: *mut RmfFlatEdge,
+    capacity: usize,
+    count: *mut usize,
+) -> RmfStatus {
+    guard("rmf_cone_spline_flat_pattern", || {
+        let p = part_of(reference(part, "part")?, "part")?;
+        let count = out_ptr(count, "count")?;
+        let edges = buffer(edges, capacity, "edges")?;
+        let flat = p.flat_pattern()?;
+        let all: Vec<RmfFlatEdge> = flat
+            .outline
+            .iter()
+            .map(|e| flat_edge(e, RMF_FLAT_CUT))
+            .chain(flat.bend_lines.iter().map(|e| flat_edge(e, RMF_FLAT_BEND)))
+            .collect();
+        if capacity != 0 && capacity < all.len() {
+            write(count, all.len());
+            return Err(FfiError::BufferTooSmall(format!(
+                "need {} edges, capacity is {capacity}",
+                all.len()
+            )));
+        }
+        edges[..all.len().min(capacity)].copy_from_slice(&all[..all.len().min(capacity)]);
+        write(count, all.len());
+        Ok(())
+    })
+}
+
+/// Marks from the flat pattern to the formed part — holes, slots, text outlines, fold
+/// marks, given as points (curves as polylines): each flat point (coordinates of
+/// rmf_cone_spline_flat_pattern) to the point of `layer` straight across the sheet from
+/// its image on the neutral layer, by the exact isometry of the development (per piece a
+/// rotation by f·φ sin α about the developed vertex against f·φ about the axis, not the
+/// NURBS parameters), and optionally the unit normal there (from the inner to the outer
+/// face).
+///
+/// @param[in] flat count points of the flat pattern.
+/// @param[in] layer RMF_SHEET_LAYER_*.
+/// @param[out] points count points on the layer.
+/// @param[out] normals count unit normals, or NULL.
+/// @return RMF_OK on success; nothing is written on failure.
+/// @return RMF_ERROR_NULL_POINTER If part, flat or points is NULL (count > 0).
+/// @return RMF_ERROR_INVALID_INPUT If a point is not finite or lies outside the flat
+///         pattern (the message names it: flat[i]), for an unknown layer, or if the handle
+///         is not a part.
+/// \since 0.2
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_flat_to_surface(
+    part: *const RmfConeSpline,
+    flat: *const RmfVec2,
+    count: usize,
+    layer: RmfSheetLayer,
+    points: *mut RmfVec3,
+    normals: *mut RmfVec3,
+) -> RmfStatus {
+    guard("rmf_cone_spline_flat_to_surface", || {
+        let p = part_of(reference(part, "part")?, "part")?;
+        let layer = layer_from(layer)?;
+        let flat = slice(flat, count, "flat")?;
+        let points = buffer(points, count, "points")?;
+        let mut normals = match optional_out(normals, "normals")? {
+            Some(n) => Some(buffer(n, count, "normals")?),
+            None => None,
+        };
+        let mapped = flat
+            .iter()
+            .enumerate()
+            .map(|(i, q)| p.flat_to_surface(DVec2::from(*q), layer, &format!("flat[{i}]")))
+            .collect::<rmfsurf::Result<Vec<_>>>()?;
+        for (i, (x, n)) in mapped.into_iter().enumerate() {
+            points[i] = x.into();
+            if let Some(normals) = normals.as_deref_mut() {
+                normals[i] = n.into();
+            }
+        }
+        Ok(())
+    })
+}
+
+/// Marks from the formed part to the flat pattern: each point on `layer` (within
+/// max_distance of it) to the flat pattern's point of the neutral layer straight across
+/// the sheet, by the exact isometry of the development.
+///
+/// @param[in] points count points on the layer.
+/// @param[in] layer RMF_SHEET_LAYER_*.
+/// @param[in] max_distance Largest accepted distance of a point from the layer's part, ≥ 0.
+/// @param[out] flat count points of the flat pattern.
+/// @return RMF_OK on success; nothing is written on failure.
+/// @return RMF_ERROR_NULL_POINTER If part, points or flat is NULL (count > 0).
+/// @return RMF_ERROR_INVALID_INPUT If a point is not finite or farther than max_distance
+///         from the layer's part (the message names it: points[i], and gives the distance),
+///         max_distance is negative or not finite, the layer is unknown, or the handle is
+///         not a part.
+/// \since 0.2
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_surface_to_flat(
+    part: *const RmfConeSpline,
+    points: *const RmfVec3,
+    count: usize,
+    layer: RmfSheetLayer,
+    max_distance: f64,
+    flat: *mut RmfVec2,
+) -> RmfStatus {
+    guard("rmf_cone_spline_surface_to_flat", || {
+        let p = part_of(reference(part, "part")?, "part")?;
+        let layer = layer_from(layer)?;
+        if !(max_distance.is_finite() && max_distance >= 0.0) {
+            return invalid_arg(format!(
+                "max_distance = {max_distance} must be finite and ≥ 0"
+            ));
+        }
+        let points = slice(points, count, "points")?;
+        let flat = buffer(flat, count, "flat")?;
+        let mapped = points
+            .iter()
+            .enumerate()
+            .map(|(i, y)| {
+                p.surface_to_flat((*y).into(), layer, max_distance, &format!("points[{i}]"))
+            })
+            .collect::<rmfsurf::Result<Vec<_>>>()?;
+        for (i, q) in mapped.into_iter().enumerate() {
+            flat[i] = q.into();
+        }
+        Ok(())
+    })
+}
+
+/// The text of a file of the part: the formed solid or the flat pattern as STEP, the flat
+/// pattern as DXF or SVG (RMF_SHEET_FORMAT_*), exactly as the command-line tool writes it.
+///
+/// Size query: with capacity 0 (buffer may be NULL) only length is written. Otherwise the
+/// text and a terminating NUL are written if capacity ≥ length + 1.
+///
+/// @param[in] format RMF_SHEET_FORMAT_*.
+/// @param[out] buffer capacity bytes for the text and its NUL.
+/// @param[out] length Receives the length of the text (without the NUL).
+/// @return RMF_OK on success or for a size query.
+/// @return RMF_ERROR_NULL_POINTER If part or length is NULL, or buffer is NULL with a
+///         non-zero capacity.
+/// @return RMF_ERROR_BUFFER_TOO_SMALL If 0 < capacity ≤ length; length is written.
+/// @return RMF_ERROR_INVALID_INPUT For an unknown format or a handle that is not a part.
+/// \since 0.2
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_part_export(
+    part: *const RmfConeSpline,
+    format: RmfSheetFormat,
+    buffer_: *mut c_char,
+    capacity: usize,
+    length: *mut usize,
+) -> RmfStatus {
+    guard("rmf_cone_spline_part_export", || {
+        let p = part_of(reference(part, "part")?, "part")?;
+        let length = out_ptr(length, "length")?;
+        let out = buffer(buffer_.cast::<u8>(), capacity, "buffer")?;
+        let text = match format {
+            RMF_SHEET_FORMAT_STEP_SOLID => step::solid_to_step(&p.solid_faces()?, "rmfsurf part")?,
+            RMF_SHEET_FORMAT_STEP_FLAT => {
+                step::flat_to_step(&p.flat_pattern()?, "rmfsurf flat pattern")?
+            }
+            RMF_SHEET_FORMAT_DXF => dxf::pattern_to_dxf(&p.flat_pattern()?),
+            RMF_SHEET_FORMAT_SVG => svg::pattern_to_svg("rmfsurf flat pattern", &p.flat_pattern()?),
+            other => {
+                return invalid_arg(format!(
+                    "format = {other} is not one of the RMF_SHEET_FORMAT_* values"
+                ))
+            }
+        };
+        let bytes = text.as_bytes();
+        if capacity != 0 && capacity <= bytes.len() {
+            write(length, bytes.len());
+            return Err(FfiError::BufferTooSmall(format!(
+                "need {} bytes (the text and its NUL), capacity is {capacity}",
+                bytes.len() + 1
+            )));
+        }
+        if capacity != 0 {
+            out[..bytes.len()].copy_from_slice(bytes);
+            out[bytes.len()] = 0;
+        }
+        write(length, bytes.len());
+        Ok(())
+    })
+}

@@ -1,0 +1,109 @@
+"""Sheet-metal parts through the Python API (rmfsurf.transition, SheetPart), checked with the
+tests' own arithmetic: the exported edge NURBS evaluated by tests/nurbs.py against the input
+circle, the flat outline's closure and area by Green's theorem, marks both ways, the files'
+texts, and errors naming the argument. Run by capi/tests/python.rs."""
+
+import math
+
+import numpy as np
+import pytest
+
+import rmfsurf
+from nurbs import curve_point, surface_point
+
+S = math.sqrt(0.5)
+
+
+def square(half=100.0, z=0.0):
+    corners = [[-half, -half, z], [half, -half, z], [half, half, z], [-half, half, z]]
+    return rmfsurf.Curve.from_nurbs(1, corners + [corners[0]], [0, 0, 1, 2, 3, 4, 4])
+
+
+def circle(centre=(20.0, 0.0, 150.0), radius=60.0):
+    unit = np.array([[1, 0, 0], [1, 1, 0], [0, 1, 0], [-1, 1, 0], [-1, 0, 0], [-1, -1, 0],
+                     [0, -1, 0], [1, -1, 0], [1, 0, 0]], dtype=float)
+    knots = rmfsurf.flat_knots([0, 1, 2, 3, 4], [3, 2, 2, 2, 3])
+    return rmfsurf.Curve.from_nurbs(2, np.array(centre) + radius * unit, knots, [1, S, 1, S, 1, S, 1, S, 1])
+
+
+@pytest.fixture(scope="module")
+def hopper():
+    return rmfsurf.transition(square(), circle(), thickness=2.0, k_factor=0.4, tolerance=1e-3)
+
+
+def test_the_hopper_edges_lie_on_the_input_curves(hopper):
+    report = hopper.report()
+    assert report.closed and report.pieces == hopper.piece_count > 8
+    assert report.edge_distance[0] <= 1e-3 and report.edge_distance[1] <= 1e-3
+    assert math.isclose(report.neutral - report.inner, 0.8) and math.isclose(report.outer, 2.0)
+    top = hopper.edge("reference", "second").nurbs()
+    worst = 0.0
+    for t in np.linspace(top.knots[0], top.knots[-1], 2001):
+        x, y, z = curve_point(top.degree, top.poles, top.weights, top.knots, t)
+        worst = max(worst, math.hypot(math.hypot(x - 20.0, y) - 60.0, z - 150.0))
+    assert worst <= 1e-3
+
+
+def test_the_flat_pattern_is_closed_counter_clockwise_and_as_large_as_formed(hopper):
+    edges = hopper.flat_edges()
+    cut = [e for e in edges if e.layer == "cut"]
+    assert {e.kind for e in cut} == {"line", "arc"}
+    for a, b in zip(cut, cut[1:] + cut[:1]):
+        assert np.array_equal(a.end, b.start)
+    twice = sum(e.start[0] * e.end[1] - e.end[0] * e.start[1]
+                + (e.radius ** 2 * (e.sweep - math.sin(e.sweep)) if e.kind == "arc" else 0.0)
+                for e in cut)
+    assert twice > 0
+    # The formed neutral layer's area, measured independently: the triangulated grid of the
+    # exported NURBS (chordal, converging as h²), 8 × 6 cells per knot span.
+    layer = hopper.layer("neutral").nurbs()
+    assert layer.degree_u == 1
+    spans = np.unique(layer.knots_v)
+    vs = np.concatenate([np.linspace(a, b, 6, endpoint=False) for a, b in zip(spans, spans[1:])] + [spans[-1:]])
+    us = np.linspace(0.0, 1.0, 9)
+    grid = np.array([[surface_point(layer.degree_u, layer.degree_v, layer.poles, layer.weights,
+                                    layer.knots_u, layer.knots_v, u, v) for v in vs] for u in us])
+    a, b, c = grid[:-1, :-1], grid[1:, :-1], grid[:-1, 1:]
+    d = grid[1:, 1:]
+    mesh = 0.5 * (np.linalg.norm(np.cross(b - a, c - a), axis=2) + np.linalg.norm(np.cross(b - d, c - d), axis=2)).sum()
+    assert 0.5 * twice == pytest.approx(mesh, rel=2e-3)
+
+
+def test_marks_go_both_ways(hopper):
+    bend = next(e for e in hopper.flat_edges() if e.layer == "bend")
+    flat = np.array([bend.start + s * (bend.end - bend.start) for s in (0.2, 0.5, 0.8)])
+    points, normals = hopper.flat_to_surface(flat, "outer", normals=True)
+    assert np.allclose(np.linalg.norm(normals, axis=1), 1.0)
+    back = hopper.surface_to_flat(points, "outer", max_distance=1e-9)
+    assert np.abs(back - flat).max() < 1e-9
+    with pytest.raises(rmfsurf.InvalidInputError, match=r"flat\[1\]"):
+        hopper.flat_to_surface([[0.0, 0.0], [1e4, 0.0]])
+    with pytest.raises(ValueError, match="points"):
+        hopper.flat_to_surface([[0.0, 0.0, 0.0]])
+
+
+def test_the_files_of_the_part(hopper):
+    step = hopper.export("step")
+    assert "MANIFOLD_SOLID_BREP" in step and "CLOSED_SHELL" in step
+    dxf = hopper.export("dxf")
+    assert "\nARC\n" in dxf and "\nBEND\n" in dxf and "POLYLINE" not in dxf
+    assert "PLANE(" in hopper.export("flat_step")
+    with pytest.raises(ValueError, match="format"):
+        hopper.export("iges")
+
+
+def test_bad_sheets_and_curves_name_the_argument():
+    with pytest.raises(rmfsurf.InvalidInputError, match=r"options->thickness"):
+        rmfsurf.transition(square(), circle(), thickness=0.0)
+    with pytest.raises(rmfsurf.InvalidInputError, match=r"options->k_factor"):
+        rmfsurf.transition(square(), circle(), k_factor=1.5)
+    with pytest.raises(rmfsurf.InvalidInputError, match="bend radius"):
+        rmfsurf.transition(square(), circle(), tolerance=1e-2, reference="outer")
+    dart = rmfsurf.Curve.from_nurbs(1, [[0, 0, 0], [2, 1, 0], [0, 0.5, 0], [-2, 1, 0], [0, 0, 0]],
+                                    [0, 0, 1, 2, 3, 4, 4])
+    with pytest.raises(rmfsurf.InvalidInputError, match="bottom is not convex"):
+        rmfsurf.transition(dart, circle())
+    with pytest.raises(TypeError, match="top"):
+        rmfsurf.transition(square(), "circle")
+    with pytest.raises(ValueError, match="reference"):
+        rmfsurf.transition(square(), circle(), reference="middle")

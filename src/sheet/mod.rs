@@ -1,0 +1,27 @@
+//! Sheet-metal parts from cone spline surfaces (Leopoldseder & Pottmann [LP]): parts
+//! bounded by the user's own curves, transition pieces between two closed curves, sheet
+//! thickness with K-factor flat patterns, and marks carried between flat and formed.
+//!
+//! | module | what it computes | from |
+//! | --- | --- | --- |
+//! | `profile` | closed convex planar curves by their Gauss map (corners, edges, arcs) | support functions |
+//! | `transition` | the convex-hull developable between two curves: planes, cones, creases | classical transition-piece layout; [LP] (5)–(12) |
+//! | `trim` | a cone spline trimmed between two boundary curves: rows, layers, cut faces | [LP] Fig. 1, "Introduction" (offsets) |
+//! | `thickness` | inner, neutral (K-factor) and outer layers; bend sides and radii | [LP] "Introduction" |
+//! | `flat` | the flat pattern of a layer: lines, arcs and biarcs | [LP] "Bending sequences and development", (7)–(8) |
+//! | `marks` | the isometry flat ↔ formed for points | φ sin α = const |
+//! | `part` | [`SheetPart`]: the public face of all of the above | |
+
+mod flat;
+mod marks;
+mod part;
+mod profile;
+mod thickness;
+mod transition;
+mod trim;
+
+pub use part::{PartReport, SheetOptions, SheetPart, Side};
+pub use thickness::{Layer, Reference, Sheet};
+
+#[cfg(test)]
+mod tests;

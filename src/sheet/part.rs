@@ -1,0 +1,485 @@
+//! [`SheetPart`]: a formed sheet-metal part — its designed surface (a trimmed cone
+//! spline), the sheet's inner, neutral and outer layers, the closed solid between inner
+//! and outer face with normal-cut edges (what a laser cut of the flat blank gives when
+//! formed), the flat pattern of the neutral layer, and the maps between flat and formed.
+
+use super::flat::{flat_layout, FlatLayout};
+use super::marks::{flat_to_part, part_to_flat, part_to_surface, surface_to_part};
+use super::thickness::{layers, Layer, Layers, Sheet};
+use super::transition::{transition, TransitionFit};
+use super::trim::{patch_nurbs, Face, Similarity, TrimmedSpline};
+use crate::bezier::{
+    NurbsSurface, PiecewiseCurve, PiecewiseSurface, RationalBezierCurve, RationalBezierPatch,
+};
+use crate::cone_spline::{ConePiece, ConeSpline, Element, FlatPattern, Motion, PatternEdge};
+use crate::error::{invalid, Result};
+use glam::{DVec2, DVec3};
+
+/// Which boundary curve of a part: the first (u = 0: a transition's bottom, the first rail)
+/// or the second.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Side {
+    First,
+    Second,
+}
+
+impl Side {
+    fn index(self) -> usize {
+        match self {
+            Side::First => 0,
+            Side::Second => 1,
+        }
+    }
+}
+
+/// How a part is built and cut.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SheetOptions {
+    /// Largest distance of the surface from the designed developable and of the part's
+    /// edges from the input curves (caller's units).
+    pub tolerance: f64,
+    /// The sheet.
+    pub sheet: Sheet,
+    /// Largest distance of the flat outline's biarcs from the exact developed boundary;
+    /// 0 means `tolerance`.
+    pub flat_tolerance: f64,
+    /// Most cone pieces.
+    pub max_pieces: usize,
+}
+
+impl SheetOptions {
+    fn check(&self) -> Result<()> {
+        if !(self.tolerance.is_finite() && self.tolerance > 0.0) {
+            return invalid!("tolerance = {} must be finite and positive", self.tolerance);
+        }
+        if !(self.flat_tolerance.is_finite() && self.flat_tolerance >= 0.0) {
+            return invalid!(
+                "flat_tolerance = {} must be finite and ≥ 0 (0: the tolerance)",
+                self.flat_tolerance
+            );
+        }
+        if self.max_pieces < 2 {
+            return invalid!("max_pieces = {} must be at least 2", self.max_pieces);
+        }
+        Sheet::new(
+            self.sheet.thickness,
+            self.sheet.k_factor,
+            self.sheet.reference,
+        )
+        .map(|_| ())
+    }
+}
+
+/// What the construction measured (caller's units).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PartReport {
+    /// Largest sampled distance of the cone spline from the designed developable.
+    pub deviation: f64,
+    /// Largest sampled distance of the first and second boundary from the input's.
+    pub edge_distance: [f64; 2],
+    /// The tolerance the cone fit was run with.
+    pub fit_tolerance: f64,
+}
+
+/// A sheet-metal part: see the module notes.
+#[derive(Clone, Debug)]
+pub struct SheetPart {
+    part: TrimmedSpline,
+    frame: Similarity,
+    layers: Layers,
+    sheet: Sheet,
+    /// Internal units.
+    flat_tolerance: f64,
+    report: PartReport,
+    /// The developed neutral layer (internal units).
+    developed: ConeSpline,
+}
+
+impl SheetPart {
+    /// The transition piece between two closed convex planar curves (see
+    /// [`transition`](super::transition)): `bottom` is the first boundary.
+    pub fn transition(
+        bottom: &PiecewiseCurve,
+        top: &PiecewiseCurve,
+        options: &SheetOptions,
+    ) -> Result<Self> {
+        options.check()?;
+        let frame = Similarity::fitting(
+            bottom
+                .segments()
+                .iter()
+                .chain(top.segments())
+                .flat_map(|s| s.poles()),
+        );
+        let (b, t) = (
+            internal_curve(bottom, &frame)?,
+            internal_curve(top, &frame)?,
+        );
+        let (part, fit) = transition(&b, &t, options.tolerance / frame.scale, options.max_pieces)?;
+        Self::new(part, frame, options, fit)
+    }
+
+    /// The part of a developable ruled surface of degree (1, n) between its two rails (its
+    /// boundaries u = u₀ and u = u₁), over its whole v domain.
+    pub fn between_rails(surface: &PiecewiseSurface, options: &SheetOptions) -> Result<Self> {
+        let _ = (surface, options);
+        invalid!("parts between rails are not built yet")
+    }
+
+    /// The part of the tangent surface x(t) + v·x′(t)/|x′(t)| over the whole curve and
+    /// v ∈ [v_min, v_max].
+    pub fn tangent_surface(
+        curve: &PiecewiseCurve,
+        v_min: f64,
+        v_max: f64,
+        options: &SheetOptions,
+    ) -> Result<Self> {
+        let _ = (curve, v_min, v_max, options);
+        invalid!("parts of tangent surfaces are not built yet")
+    }
+
+    pub(crate) fn new(
+        part: TrimmedSpline,
+        frame: Similarity,
+        options: &SheetOptions,
+        fit: TransitionFit,
+    ) -> Result<Self> {
+        let layers = layers(&part, &options.sheet, frame.scale)?;
+        let developed = part
+            .spline
+            .offset(layers.offset(Layer::Neutral))?
+            .developed()?;
+        let flat = if options.flat_tolerance > 0.0 {
+            options.flat_tolerance
+        } else {
+            options.tolerance
+        };
+        Ok(Self {
+            report: PartReport {
+                deviation: fit.deviation * frame.scale,
+                edge_distance: fit.edge_distance.map(|d| d * frame.scale),
+                fit_tolerance: fit.fit_tolerance * frame.scale,
+            },
+            part,
+            frame,
+            layers,
+            sheet: options.sheet,
+            flat_tolerance: flat / frame.scale,
+            developed,
+        })
+    }
+
+    pub fn report(&self) -> &PartReport {
+        &self.report
+    }
+
+    pub fn sheet(&self) -> &Sheet {
+        &self.sheet
+    }
+
+    /// Whether the part closes on itself (a transition around).
+    pub fn is_closed(&self) -> bool {
+        self.part.closed
+    }
+
+    pub fn piece_count(&self) -> usize {
+        self.part.pieces().len()
+    }
+
+    /// The cone spline of the designed surface, in the caller's coordinates.
+    pub fn cone_spline(&self) -> Result<ConeSpline> {
+        ConeSpline::new(
+            self.part
+                .pieces()
+                .iter()
+                .map(|p| user_piece(p, &self.frame))
+                .collect(),
+        )
+    }
+
+    /// Distance of `layer` from the designed surface along the unit normal from the concave
+    /// to the convex side (caller's units).
+    pub fn layer_distance(&self, layer: Layer) -> f64 {
+        self.layers.offset(layer) * self.layers.sign * self.frame.scale
+    }
+
+    /// The smallest bend radius of the designed surface over the part (caller's units; 0 at
+    /// a vertex on its edge or at a crease).
+    pub fn bend_radius(&self) -> f64 {
+        self.part
+            .pieces()
+            .iter()
+            .zip(&self.part.trims)
+            .filter(|(p, _)| super::thickness::bend_sign(p) != 0.0)
+            .map(|(p, t)| super::thickness::bend_radius(p, t))
+            .fold(f64::INFINITY, f64::min)
+            * self.frame.scale
+    }
+
+    /// A layer as one surface: u ∈ [0, 1] from the first to the second boundary along the
+    /// rulings, v ∈ [k, k + 1] on piece k; degree (1, ·), G1 across the rulings.
+    pub fn surface(&self, layer: Layer) -> Result<PiecewiseSurface> {
+        let surface = self.part.layer(self.layers.offset(layer))?;
+        let patches = surface
+            .patches()
+            .iter()
+            .map(|p| self.user_patch(p))
+            .collect();
+        PiecewiseSurface::new(
+            patches,
+            surface.u_breaks().to_vec(),
+            surface.v_breaks().to_vec(),
+        )
+    }
+
+    /// A boundary curve of a layer, v ∈ [k, k + 1] on piece k.
+    pub fn boundary(&self, layer: Layer, side: Side) -> Result<PiecewiseCurve> {
+        let curve = self
+            .part
+            .boundary(side.index(), self.layers.offset(layer))?;
+        let segments = curve
+            .segments()
+            .iter()
+            .map(|s| {
+                RationalBezierCurve::from_homogeneous(
+                    s.homogeneous()
+                        .iter()
+                        .map(|&h| self.frame.homogeneous_to_user(h))
+                        .collect(),
+                )
+            })
+            .collect::<Result<Vec<_>>>()?;
+        PiecewiseCurve::new(segments, curve.breaks().to_vec())
+    }
+
+    /// The area of a layer (caller's units²), by 16-point Gauss–Legendre quadrature on
+    /// every patch.
+    pub fn area(&self, layer: Layer) -> Result<f64> {
+        let g = crate::math::GaussLegendre::new(16);
+        Ok(self
+            .surface(layer)?
+            .patches()
+            .iter()
+            .map(|p| {
+                g.integrate(0.0, 1.0, |u| {
+                    g.integrate(0.0, 1.0, |v| {
+                        let j = p.eval_jet(u, v);
+                        j.du.cross(j.dv).length()
+                    })
+                })
+            })
+            .sum())
+    }
+
+    /// The length of a boundary curve of a layer, by 24-point Gauss–Legendre quadrature on
+    /// every segment.
+    pub fn boundary_length(&self, layer: Layer, side: Side) -> Result<f64> {
+        let g = crate::math::GaussLegendre::new(24);
+        Ok(self
+            .boundary(layer, side)?
+            .segments()
+            .iter()
+            .map(|s| g.integrate(0.0, 1.0, |t| s.eval_jet(t).d1.length()))
+            .sum())
+    }
+
+    fn user_patch(&self, p: &RationalBezierPatch) -> RationalBezierPatch {
+        RationalBezierPatch::from_homogeneous(
+            p.degree_u(),
+            p.degree_v(),
+            p.homogeneous()
+                .iter()
+                .map(|&h| self.frame.homogeneous_to_user(h))
+                .collect(),
+        )
+        .expect("a similarity keeps the weights")
+    }
+
+    /// The faces of the closed solid between the inner and the outer face, each with its
+    /// normal ∂u × ∂v pointing out of the solid: per piece the two layer faces and the cut
+    /// faces along both boundaries (the normal cut of the flat blank), and for an open part
+    /// the two end faces; faces of zero area (a crease on a layer, a vertex's cut) dropped.
+    pub fn solid_faces(&self) -> Result<Vec<NurbsSurface>> {
+        let (inner, outer) = (
+            self.layers.offset(Layer::Inner),
+            self.layers.offset(Layer::Outer),
+        );
+        let (lo, hi) = (inner.min(outer), inner.max(outer));
+        let sign = self.layers.sign;
+        let mut patches = Vec::new();
+        for k in 0..self.piece_count() {
+            // Layer faces: ∂u × ∂v = n; the solid's outward normal is −m on the inner face
+            // and +m on the outer, m = sign·n.
+            patches.push(flip_u(self.part.patch(k, Face::Layer(inner)), sign > 0.0));
+            patches.push(flip_u(self.part.patch(k, Face::Layer(outer)), sign < 0.0));
+            // Cut faces: ∂u × ∂v ∝ −(to − from)·e; outward −e on the first, +e on the second.
+            patches.push(self.part.patch(
+                k,
+                Face::Cut {
+                    side: 0,
+                    from: lo,
+                    to: hi,
+                },
+            ));
+            patches.push(self.part.patch(
+                k,
+                Face::Cut {
+                    side: 1,
+                    from: hi,
+                    to: lo,
+                },
+            ));
+        }
+        if !self.part.closed {
+            // ∂u × ∂v = −(to − from)·p: outward −p at the first ruling, +p at the last.
+            patches.push(self.part.end_patch(false, lo, hi));
+            patches.push(self.part.end_patch(true, hi, lo));
+        }
+        patches
+            .into_iter()
+            .filter(|p| !TrimmedSpline::degenerate(p))
+            .map(|p| patch_nurbs(self.user_patch(&p)))
+            .collect()
+    }
+
+    /// The flat pattern of the neutral layer for the cutter (caller's units): outline of
+    /// lines and arcs, counter-clockwise, and the bend lines.
+    pub fn flat_pattern(&self) -> Result<FlatPattern> {
+        let flat = self.flat_layout()?.pattern();
+        let scale = |e: &PatternEdge| scaled_edge(e, self.frame.scale);
+        Ok(FlatPattern {
+            outline: flat.outline.iter().map(scale).collect(),
+            bend_lines: flat.bend_lines.iter().map(scale).collect(),
+        })
+    }
+
+    /// The lengths of the flat pattern's first and second boundary (the outline without
+    /// the end rulings; caller's units), for comparison with the formed neutral layer's.
+    pub fn flat_boundary_lengths(&self) -> Result<[f64; 2]> {
+        let layout = self.flat_layout()?;
+        let sum = |edges: &[PatternEdge]| {
+            edges.iter().map(PatternEdge::length).sum::<f64>() * self.frame.scale
+        };
+        Ok([sum(&layout.first), sum(&layout.second)])
+    }
+
+    /// The developed boundaries of the neutral layer, internal units.
+    pub(crate) fn flat_layout(&self) -> Result<FlatLayout> {
+        flat_layout(
+            &self.part,
+            self.layers.offset(Layer::Neutral),
+            self.flat_tolerance,
+        )
+    }
+
+    /// The scale from internal to the caller's units.
+    #[cfg(test)]
+    pub(crate) fn scale(&self) -> f64 {
+        self.frame.scale
+    }
+
+    /// The point (and unit normal, from the concave to the convex side) on `layer` of the
+    /// flat pattern's point `q`; `name` is the caller's name of `q` for the message when it
+    /// lies outside the part (beyond the flat tolerance).
+    pub fn flat_to_surface(&self, q: DVec2, layer: Layer, name: &str) -> Result<(DVec3, DVec3)> {
+        if !q.is_finite() {
+            return invalid!("{name} = {q} is not finite");
+        }
+        let local = q / self.frame.scale;
+        let Some(p) = flat_to_part(
+            &self.part,
+            self.developed.pieces(),
+            local,
+            self.flat_tolerance,
+        ) else {
+            return invalid!("{name} = {q} lies outside the flat pattern of the part");
+        };
+        let (x, n) = part_to_surface(&self.part, p, self.layers.offset(layer));
+        Ok((self.frame.to_user(x), n * self.layers.sign))
+    }
+
+    /// The flat pattern's point of the point `y` on `layer` (the point straight across the
+    /// sheet on the neutral layer, developed); refused when `y` is farther than
+    /// `max_distance` from the layer's part.
+    pub fn surface_to_flat(
+        &self,
+        y: DVec3,
+        layer: Layer,
+        max_distance: f64,
+        name: &str,
+    ) -> Result<DVec2> {
+        if !y.is_finite() {
+            return invalid!("{name} = {y} is not finite");
+        }
+        let local = self.frame.to_internal(y);
+        let (p, distance) = surface_to_part(&self.part, self.layers.offset(layer), local);
+        let distance = distance * self.frame.scale;
+        if !(distance <= max_distance) {
+            return invalid!(
+                "{name} = {y} is {distance:.3e} from the part's {layer:?} layer (max_distance = {max_distance:.3e})"
+            );
+        }
+        Ok(part_to_flat(self.developed.pieces(), p) * self.frame.scale)
+    }
+}
+
+/// `patch` with u reversed (its two rows swapped) when `flip`.
+fn flip_u(patch: RationalBezierPatch, flip: bool) -> RationalBezierPatch {
+    if !flip {
+        return patch;
+    }
+    let n = patch.degree_v() + 1;
+    let h = patch.homogeneous();
+    RationalBezierPatch::from_homogeneous(1, patch.degree_v(), [&h[n..], &h[..n]].concat())
+        .expect("the same points")
+}
+
+pub(crate) fn scaled_edge(edge: &PatternEdge, s: f64) -> PatternEdge {
+    match *edge {
+        PatternEdge::Line { from, to } => PatternEdge::Line {
+            from: from * s,
+            to: to * s,
+        },
+        PatternEdge::Arc {
+            center,
+            radius,
+            from,
+            to,
+            sweep,
+        } => PatternEdge::Arc {
+            center: center * s,
+            radius: radius * s,
+            from: from * s,
+            to: to * s,
+            sweep,
+        },
+    }
+}
+
+/// A curve of the caller's in internal coordinates.
+pub(crate) fn internal_curve(curve: &PiecewiseCurve, frame: &Similarity) -> Result<PiecewiseCurve> {
+    let segments = curve
+        .segments()
+        .iter()
+        .map(|s| s.similar(1.0 / frame.scale, -frame.origin / frame.scale))
+        .collect();
+    PiecewiseCurve::new(segments, curve.breaks().to_vec())
+}
+
+/// A piece in the caller's coordinates.
+fn user_piece(p: &ConePiece, frame: &Similarity) -> ConePiece {
+    let start = Element::from_frame(frame.to_user(p.start.point), p.start.ruling, p.start.side);
+    let motion = match p.motion {
+        Motion::Rotation {
+            origin,
+            axis,
+            angle,
+        } => Motion::Rotation {
+            origin: frame.to_user(origin),
+            axis,
+            angle,
+        },
+        Motion::Translation(v) => Motion::Translation(v * frame.scale),
+    };
+    ConePiece { start, motion }
+}

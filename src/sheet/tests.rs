@@ -1,0 +1,533 @@
+//! The figures of issue 15 on the library's own evaluation (the C/C++, Python and CAD
+//! tests repeat them independently): the square-to-round hopper of the command-line
+//! example, its edges against the input curves, its flat pattern's area and edge lengths
+//! against the formed neutral layer, pieces per tolerance, and marks both ways.
+
+use super::profile::tests::{circle, polygon};
+use super::*;
+use crate::bezier::PiecewiseCurve;
+use crate::cone_spline::PatternEdge;
+use crate::math::GaussLegendre;
+use glam::{DVec2, DVec3};
+
+pub(crate) fn hopper_curves() -> (PiecewiseCurve, PiecewiseCurve) {
+    let bottom = polygon(&[
+        DVec3::new(-100.0, -100.0, 0.0),
+        DVec3::new(100.0, -100.0, 0.0),
+        DVec3::new(100.0, 100.0, 0.0),
+        DVec3::new(-100.0, 100.0, 0.0),
+    ]);
+    let top = circle(DVec3::new(20.0, 0.0, 150.0), DVec3::X, DVec3::Y, 60.0);
+    (bottom, top)
+}
+
+pub(crate) fn hopper_options(tolerance: f64) -> SheetOptions {
+    SheetOptions {
+        tolerance,
+        sheet: Sheet::new(2.0, 0.4, Reference::Inner).unwrap(),
+        flat_tolerance: 0.0,
+        max_pieces: 100_000,
+    }
+}
+
+/// Arc length of a piecewise curve by Gauss–Legendre quadrature per segment.
+fn length(curve: &PiecewiseCurve) -> f64 {
+    let g = GaussLegendre::new(24);
+    curve
+        .segments()
+        .iter()
+        .map(|s| g.integrate(0.0, 1.0, |t| s.eval_jet(t).d1.length()))
+        .sum()
+}
+
+fn surface_area(part: &SheetPart, layer: Layer) -> f64 {
+    let g = GaussLegendre::new(16);
+    part.surface(layer)
+        .unwrap()
+        .patches()
+        .iter()
+        .map(|p| {
+            g.integrate(0.0, 1.0, |u| {
+                g.integrate(0.0, 1.0, |v| {
+                    let j = p.eval_jet(u, v);
+                    j.du.cross(j.dv).length()
+                })
+            })
+        })
+        .sum()
+}
+
+#[test]
+fn square_to_round_hopper_figures() {
+    let (bottom, top) = hopper_curves();
+    let part = SheetPart::transition(&bottom, &top, &hopper_options(1e-4)).unwrap();
+    let r = part.report();
+    println!(
+        "hopper 1e-4: {} pieces, surface deviation {:.3e}, bottom edge {:.3e}, top edge {:.3e} (fit tolerance {:.3e})",
+        part.piece_count(),
+        r.deviation,
+        r.edge_distance[0],
+        r.edge_distance[1],
+        r.fit_tolerance
+    );
+    assert!(r.edge_distance.iter().all(|&d| d <= 1e-4));
+    assert!(part.is_closed());
+    let flat = part.flat_pattern().unwrap();
+    let n = flat.outline.len();
+    for k in 0..n {
+        assert_eq!(
+            flat.outline[k].end(),
+            flat.outline[(k + 1) % n].start(),
+            "gap after edge {k}"
+        );
+    }
+    let area = 0.5 * super::flat::signed_area(&flat.outline);
+    let formed = surface_area(&part, Layer::Neutral);
+    let arcs = flat
+        .outline
+        .iter()
+        .filter(|e| matches!(e, PatternEdge::Arc { .. }))
+        .count();
+    println!(
+        "hopper flat pattern: {n} edges ({arcs} arcs), {} bend lines, area {area:.9} vs formed neutral {formed:.9}: relative {:.3e}",
+        flat.bend_lines.len(),
+        (area - formed).abs() / formed
+    );
+    assert!(area > 0.0, "counter-clockwise");
+    // The biarcs of the top edge are within the flat tolerance of the exact developed edge:
+    // the areas differ by at most tolerance × edge length.
+    let top_length = length(&part.boundary(Layer::Neutral, Side::Second).unwrap());
+    assert!(
+        (area - formed).abs() <= 1e-4 * top_length,
+        "area {area} vs {formed}"
+    );
+    // Edge lengths: the formed neutral boundaries against the flat outline's.
+    let layout = part.flat_layout().unwrap();
+    let sum =
+        |edges: &[PatternEdge]| edges.iter().map(PatternEdge::length).sum::<f64>() * part.scale();
+    let bottom_length = length(&part.boundary(Layer::Neutral, Side::First).unwrap());
+    let (flat_bottom, flat_top) = (sum(&layout.first), sum(&layout.second));
+    let seam = part
+        .boundary(Layer::Neutral, Side::First)
+        .unwrap()
+        .eval(0.0)
+        .distance(
+            part.boundary(Layer::Neutral, Side::Second)
+                .unwrap()
+                .eval(0.0),
+        );
+    let flat_seam =
+        [layout.rulings[0].length(), layout.rulings[1].length()].map(|l| l * part.scale());
+    let relative = |a: f64, b: f64| (a - b).abs() / b;
+    println!(
+        "hopper neutral edge lengths, formed vs flat: bottom {bottom_length:.9} vs {flat_bottom:.9} ({:.1e}), top {top_length:.9} vs {flat_top:.9} ({:.1e}), seam {seam:.9} vs {:.9} / {:.9} ({:.1e})",
+        relative(flat_bottom, bottom_length),
+        relative(flat_top, top_length),
+        flat_seam[0],
+        flat_seam[1],
+        relative(flat_seam[0], seam).max(relative(flat_seam[1], seam))
+    );
+    assert!(relative(flat_bottom, bottom_length) <= 1e-9);
+    assert!(relative(flat_top, top_length) <= 1e-9);
+    assert!(relative(flat_seam[0], seam).max(relative(flat_seam[1], seam)) <= 1e-9);
+}
+
+/// A deterministic stream of numbers in [0, 1) (a 64-bit LCG; the tests need no crate).
+struct Stream(u64);
+
+impl Stream {
+    fn next(&mut self) -> f64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+/// Whether `p` is inside the closed outline, by the winding number of a dense polygon of
+/// it (independent of the library's maps), and its distance from the outline.
+fn inside(outline: &[PatternEdge], p: DVec2) -> (bool, f64) {
+    let mut polygon = Vec::new();
+    for e in outline {
+        match *e {
+            PatternEdge::Line { from, .. } => polygon.push(from),
+            PatternEdge::Arc {
+                center,
+                from,
+                sweep,
+                ..
+            } => {
+                for j in 0..16 {
+                    let a = sweep * j as f64 / 16.0;
+                    polygon.push(center + DVec2::from_angle(a).rotate(from - center));
+                }
+            }
+        }
+    }
+    let mut winding = 0.0;
+    let mut nearest = f64::INFINITY;
+    for k in 0..polygon.len() {
+        let (a, b) = (polygon[k] - p, polygon[(k + 1) % polygon.len()] - p);
+        winding += a.perp_dot(b).atan2(a.dot(b));
+        let d = b - a;
+        let s = (-a.dot(d) / d.length_squared()).clamp(0.0, 1.0);
+        nearest = nearest.min((a + s * d).length());
+    }
+    (winding.abs() > std::f64::consts::PI, nearest)
+}
+
+#[test]
+fn marks_go_from_flat_to_formed_and_back() {
+    let (bottom, top) = hopper_curves();
+    let part = SheetPart::transition(&bottom, &top, &hopper_options(1e-4)).unwrap();
+    let flat = part.flat_pattern().unwrap();
+    let (lo, hi) = flat.bounds();
+    let size = (hi - lo).length();
+    let mut stream = Stream(15);
+    let (mut count, mut worst, mut worst_outer, mut worst_geodesic) = (0, 0.0f64, 0.0f64, 0.0f64);
+    while count < 1000 {
+        let p = lo + (hi - lo) * DVec2::new(stream.next(), stream.next());
+        let (is_inside, margin) = inside(&flat.outline, p);
+        if !is_inside || margin < 1.0 {
+            continue;
+        }
+        count += 1;
+        let (x, n) = part.flat_to_surface(p, Layer::Neutral, "p").unwrap();
+        assert!((n.length() - 1.0).abs() < 1e-12);
+        let back = part
+            .surface_to_flat(x, Layer::Neutral, 1e-9 * size, "x")
+            .unwrap();
+        worst = worst.max(back.distance(p) / size);
+        let (y, _) = part.flat_to_surface(p, Layer::Outer, "p").unwrap();
+        let thickness = part.layer_distance(Layer::Outer) - part.layer_distance(Layer::Neutral);
+        assert!((y.distance(x) - thickness).abs() < 1e-9 * size);
+        let back = part
+            .surface_to_flat(y, Layer::Outer, 1e-9 * size, "y")
+            .unwrap();
+        worst_outer = worst_outer.max(back.distance(p) / size);
+        // Geodesics: a segment of length 1 in the flat maps to a curve of length 1 on the
+        // layer (polylines of 32 and 64 chords, Richardson-extrapolated).
+        let q = p + DVec2::from_angle(stream.next() * 6.3);
+        if count % 10 == 0 && inside(&flat.outline, q).0 {
+            let polyline = |m: usize| {
+                let points: Vec<DVec3> = (0..=m)
+                    .map(|j| {
+                        part.flat_to_surface(p.lerp(q, j as f64 / m as f64), Layer::Neutral, "s")
+                            .unwrap()
+                            .0
+                    })
+                    .collect();
+                points.windows(2).map(|w| w[0].distance(w[1])).sum::<f64>()
+            };
+            let length = (4.0 * polyline(64) - polyline(32)) / 3.0;
+            worst_geodesic = worst_geodesic.max((length - 1.0).abs());
+        }
+    }
+    println!(
+        "marks: 1000 flat points, round trip via the neutral layer max {worst:.3e}, via the outer layer {worst_outer:.3e} (relative to the pattern's size {size:.1}); \
+         100 flat segments of length 1 on the layer: max length error {worst_geodesic:.3e}"
+    );
+    assert!(worst <= 1e-12 && worst_outer <= 1e-12);
+    assert!(worst_geodesic <= 1e-8);
+    // Outside the part, and off the surface: refused, naming the argument.
+    let e = part
+        .flat_to_surface(hi + DVec2::ONE, Layer::Neutral, "marks[3]")
+        .unwrap_err();
+    assert!(
+        e.message().contains("marks[3]") && e.message().contains("outside"),
+        "{e}"
+    );
+    let (x, n) = part
+        .flat_to_surface(0.5 * (lo + hi), Layer::Neutral, "p")
+        .unwrap_or((DVec3::ZERO, DVec3::Z));
+    let e = part
+        .surface_to_flat(x + 0.1 * n, Layer::Neutral, 1e-3, "points[7]")
+        .unwrap_err();
+    assert!(e.message().contains("points[7]"), "{e}");
+}
+
+#[test]
+fn pieces_per_tolerance_on_the_hopper() {
+    let (bottom, top) = hopper_curves();
+    let mut counts = Vec::new();
+    for tolerance in [1e-2, 1e-3, 1e-4, 1e-5] {
+        let part = SheetPart::transition(&bottom, &top, &hopper_options(tolerance)).unwrap();
+        let r = part.report();
+        println!(
+            "hopper tolerance {tolerance:.0e}: {:4} pieces, surface deviation {:.3e}, edges {:.3e} / {:.3e}",
+            part.piece_count(),
+            r.deviation,
+            r.edge_distance[0],
+            r.edge_distance[1]
+        );
+        assert!(r.deviation <= tolerance && r.edge_distance.iter().all(|&d| d <= tolerance));
+        counts.push(part.piece_count());
+    }
+    assert!(counts.windows(2).all(|w| w[0] < w[1]));
+}
+
+#[test]
+fn scaled_and_moved_hoppers_are_similar() {
+    let (bottom, top) = hopper_curves();
+    let reference = SheetPart::transition(&bottom, &top, &hopper_options(1e-3)).unwrap();
+    // The area in the pattern's own size (at 1e-200 the area itself underflows).
+    let area = |p: &SheetPart, scale: f64| {
+        let outline: Vec<PatternEdge> = p
+            .flat_pattern()
+            .unwrap()
+            .outline
+            .iter()
+            .map(|e| super::part::scaled_edge(e, 1.0 / scale))
+            .collect();
+        0.5 * super::flat::signed_area(&outline)
+    };
+    let a0 = area(&reference, 1.0);
+    for (scale, shift) in [
+        (1e-200, DVec3::ZERO),
+        (1e200, DVec3::ZERO),
+        (1.0, DVec3::new(1e6, -3e5, 2e6)),
+        (1e-3, DVec3::splat(7.0)),
+    ] {
+        let map = |c: &PiecewiseCurve| {
+            PiecewiseCurve::new(
+                c.segments()
+                    .iter()
+                    .map(|s| s.similar(scale, shift))
+                    .collect(),
+                c.breaks().to_vec(),
+            )
+            .unwrap()
+        };
+        let mut options = hopper_options(1e-3 * scale);
+        options.sheet = Sheet::new(2.0 * scale, 0.4, Reference::Inner).unwrap();
+        let part = SheetPart::transition(&map(&bottom), &map(&top), &options).unwrap();
+        assert_eq!(
+            part.piece_count(),
+            reference.piece_count(),
+            "scale {scale:e}"
+        );
+        let a = area(&part, scale);
+        println!("hopper scaled by {scale:e}, moved by {shift}: {} pieces, flat area (scaled back) {a:.12} (relative {:.1e})", part.piece_count(), (a - a0).abs() / a0);
+        assert!((a - a0).abs() <= 1e-10 * a0);
+        let edge = part.report().edge_distance[1] / scale;
+        assert!(
+            (edge - reference.report().edge_distance[1]).abs()
+                <= 1e-6 * reference.report().edge_distance[1]
+        );
+    }
+}
+
+/// A closed curve of line segments and circular arcs through `points`, where an arc is
+/// given by its middle control point and weight.
+fn obround(length: f64, radius: f64, z: f64) -> PiecewiseCurve {
+    use crate::bezier::homogeneous::lift;
+    use crate::bezier::RationalBezierCurve;
+    let s = std::f64::consts::FRAC_1_SQRT_2;
+    let a = 0.5 * length;
+    let p = |x: f64, y: f64| DVec3::new(x, y, z);
+    let quarter = |p0: DVec3, p1: DVec3, p2: DVec3| {
+        RationalBezierCurve::from_homogeneous(vec![lift(p0, 1.0), lift(p1, s), lift(p2, 1.0)])
+            .unwrap()
+    };
+    let line = |p0: DVec3, p1: DVec3| RationalBezierCurve::polynomial(&[p0, p1]).unwrap();
+    let segments = vec![
+        line(p(-a, -radius), p(a, -radius)),
+        quarter(p(a, -radius), p(a + radius, -radius), p(a + radius, 0.0)),
+        quarter(p(a + radius, 0.0), p(a + radius, radius), p(a, radius)),
+        line(p(a, radius), p(-a, radius)),
+        quarter(p(-a, radius), p(-a - radius, radius), p(-a - radius, 0.0)),
+        quarter(p(-a - radius, 0.0), p(-a - radius, -radius), p(-a, -radius)),
+    ];
+    PiecewiseCurve::with_unit_intervals(segments).unwrap()
+}
+
+/// max |K|·size² at interior points (u ∈ [0.05, 0.95]: the rows at a vertex are
+/// singular), size the bounding-box diagonal.
+fn interior_curvature(surface: &crate::bezier::PiecewiseSurface) -> f64 {
+    let (mut lo, mut hi, mut k) = (DVec3::INFINITY, DVec3::NEG_INFINITY, 0.0f64);
+    for p in surface.patches() {
+        for i in 0..=6 {
+            for j in 0..=6 {
+                let jet = p.eval_jet(0.05 + 0.15 * i as f64, j as f64 / 6.0);
+                lo = lo.min(jet.point);
+                hi = hi.max(jet.point);
+                // A crease has no width on the designed surface: no curvature to measure.
+                if jet.dv.length() <= 1e-9 * jet.du.length() {
+                    continue;
+                }
+                k = k.max(crate::frames::metrics::gaussian_curvature(&jet).abs());
+            }
+        }
+    }
+    k * (hi - lo).length_squared()
+}
+
+/// Builds a transition and checks what every one must satisfy; returns the part.
+fn check_transition(
+    name: &str,
+    bottom: &PiecewiseCurve,
+    top: &PiecewiseCurve,
+    tolerance: f64,
+) -> SheetPart {
+    let mut options = hopper_options(tolerance);
+    options.sheet = Sheet::new(1.5, 0.33, Reference::Inner).unwrap();
+    let part =
+        SheetPart::transition(bottom, top, &options).unwrap_or_else(|e| panic!("{name}: {e}"));
+    let r = part.report();
+    let surface = part.surface(Layer::Reference).unwrap();
+    let k = interior_curvature(&surface);
+    let flat = part.flat_pattern().unwrap();
+    let area = 0.5 * super::flat::signed_area(&flat.outline);
+    let formed = surface_area(&part, Layer::Neutral);
+    let creases = part
+        .cone_spline()
+        .unwrap()
+        .pieces()
+        .iter()
+        .filter(|p| p.kind() == crate::cone_spline::PieceKind::Cylinder && p.radius() < 1e-9)
+        .count();
+    println!(
+        "{name}: {} pieces ({creases} creases), deviation {:.2e}, edges {:.2e} / {:.2e}, max |K|·size² {k:.1e}, flat area {area:.6} vs formed neutral {formed:.6} ({:.1e}), {} outline edges",
+        part.piece_count(),
+        r.deviation,
+        r.edge_distance[0],
+        r.edge_distance[1],
+        (area - formed).abs() / formed,
+        flat.outline.len()
+    );
+    assert!(r.edge_distance.iter().all(|&d| d <= tolerance), "{name}");
+    assert!(k < 1e-9, "{name}: K");
+    let top_length = length(&part.boundary(Layer::Neutral, Side::Second).unwrap())
+        + length(&part.boundary(Layer::Neutral, Side::First).unwrap());
+    assert!(
+        (area - formed).abs() <= tolerance * top_length,
+        "{name}: area"
+    );
+    // G1 across the rulings, except at creases.
+    let spline = part.cone_spline().unwrap();
+    for w in spline.pieces().windows(2) {
+        let (a, b) = (w[0].end(), w[1].start);
+        assert!(
+            a.normal().distance(b.normal()) < 1e-9,
+            "{name}: normal jump"
+        );
+    }
+    assert!(!part.solid_faces().unwrap().is_empty());
+    part
+}
+
+#[test]
+fn transitions_between_all_kinds_of_convex_curves() {
+    let rectangle = |w: f64, h: f64, z: f64| {
+        polygon(&[
+            DVec3::new(-w, -h, z),
+            DVec3::new(w, -h, z),
+            DVec3::new(w, h, z),
+            DVec3::new(-w, h, z),
+        ])
+    };
+    check_transition(
+        "rectangle-to-round",
+        &rectangle(150.0, 80.0, 0.0),
+        &circle(DVec3::new(0.0, 10.0, 120.0), DVec3::X, DVec3::Y, 50.0),
+        1e-3,
+    );
+    check_transition(
+        "round-to-round, offset",
+        &circle(DVec3::ZERO, DVec3::X, DVec3::Y, 100.0),
+        &circle(DVec3::new(40.0, 20.0, 150.0), DVec3::X, DVec3::Y, 50.0),
+        1e-3,
+    );
+    let tilt = DVec3::new(1.0, 0.0, 0.4).normalize();
+    check_transition(
+        "round-to-round, inclined",
+        &circle(DVec3::ZERO, DVec3::X, DVec3::Y, 100.0),
+        &circle(DVec3::new(0.0, 0.0, 200.0), tilt, DVec3::Y, 60.0),
+        1e-3,
+    );
+    check_transition(
+        "obround-to-round",
+        &obround(200.0, 60.0, 0.0),
+        &circle(DVec3::new(0.0, 0.0, 100.0), DVec3::X, DVec3::Y, 50.0),
+        1e-3,
+    );
+    let part = check_transition(
+        "rectangle-to-rectangle",
+        &rectangle(100.0, 60.0, 0.0),
+        &rectangle(40.0, 30.0, 80.0),
+        1e-3,
+    );
+    // Four trapezoids (one split at the seam) and four creases.
+    assert_eq!(part.piece_count(), 9);
+    check_transition(
+        "ellipse (NURBS) to round",
+        &circle(DVec3::ZERO, DVec3::X * 1.5, DVec3::Y, 80.0),
+        &circle(DVec3::new(10.0, 0.0, 100.0), DVec3::X, DVec3::Y, 40.0),
+        1e-3,
+    );
+    check_transition(
+        "square-to-round, inclined top",
+        &rectangle(100.0, 100.0, 0.0),
+        &circle(
+            DVec3::new(0.0, 0.0, 150.0),
+            DVec3::new(1.0, 0.0, -0.3).normalize(),
+            DVec3::Y,
+            60.0,
+        ),
+        1e-3,
+    );
+}
+
+#[test]
+fn bad_transitions_and_sheets_are_refused_naming_the_argument() {
+    let (bottom, top) = hopper_curves();
+    let try_with = |b: &PiecewiseCurve, t: &PiecewiseCurve, o: SheetOptions| {
+        SheetPart::transition(b, t, &o).unwrap_err().message()
+    };
+    let o = hopper_options(1e-3);
+    let below = circle(
+        DVec3::new(0.0, 0.0, -20.0),
+        DVec3::X,
+        DVec3::new(0.0, 0.6, 0.8),
+        60.0,
+    );
+    assert!(try_with(&bottom, &below, o).contains("the curves cross"));
+    let dart = polygon(&[
+        DVec3::ZERO,
+        DVec3::new(2.0, 1.0, 0.0),
+        DVec3::new(0.0, 0.5, 0.0),
+        DVec3::new(-2.0, 1.0, 0.0),
+    ]);
+    assert!(try_with(&dart, &top, o).contains("bottom is not convex"));
+    let open = PiecewiseCurve::with_unit_intervals(bottom.segments()[..3].to_vec()).unwrap();
+    let m = try_with(&open, &top, o);
+    assert!(
+        m.contains("bottom is not closed") && m.contains("apart"),
+        "{m}"
+    );
+    for (t, k, what) in [
+        (0.0, 0.4, "thickness"),
+        (-1.0, 0.4, "thickness"),
+        (f64::NAN, 0.4, "thickness"),
+        (2.0, 1.5, "k_factor"),
+        (2.0, -0.1, "k_factor"),
+    ] {
+        let mut o = hopper_options(1e-3);
+        o.sheet.thickness = t;
+        o.sheet.k_factor = k;
+        assert!(try_with(&bottom, &top, o).contains(what), "{what}");
+    }
+    let mut o = hopper_options(1e-3);
+    o.tolerance = 0.0;
+    assert!(try_with(&bottom, &top, o).contains("tolerance"));
+    // The designed surface as the outer face: the inner face would pass the corner cones'
+    // vertices (bend radius 0 at the corners).
+    let mut o = hopper_options(1e-3);
+    o.sheet.reference = Reference::Outer;
+    let m = try_with(&bottom, &top, o);
+    assert!(
+        m.contains("thickness = 2") && m.contains("bend radius"),
+        "{m}"
+    );
+}
