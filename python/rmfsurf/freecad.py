@@ -446,7 +446,7 @@ def closed_curve(value: Any, name: str = "curve") -> Curve:
     if not hasattr(shape, "Edges") or not shape.Edges:
         raise TypeError("%s: expected a closed Part edge or wire, got %s" % (name, type(value).__name__))
     edges = shape.OrderedEdges if hasattr(shape, "OrderedEdges") else shape.Edges
-    degree = max(e.Curve.toBSpline(e.FirstParameter, e.LastParameter).Degree for e in edges)
+    degree = max(_edge_bspline(e).Degree for e in edges)
     pieces = [_part_curve_data(_edge_bspline(e, degree=degree)) for e in edges]
     return Curve.from_nurbs(*_joined(join_nurbs(pieces, name)))
 
@@ -545,7 +545,7 @@ def cone_spline_selection(selection: Any, document: Any, tolerance: float = 1e-4
 
 def transition_selection(selection: Any, document: Any, thickness: float = 1.0,
                          k_factor: float = 0.5, tolerance: float = 1e-4) -> List[Any]:
-    """Macro RmfTransition: the transition piece between the two selected closed edges or
+    """The transition piece between the two selected closed edges or
     wires (or objects whose shape is one): the formed solid, the flat pattern of the
     neutral layer (a face in the xy-plane; export it as DXF for the cutter) and its bend
     lines."""
