@@ -67,13 +67,13 @@ class TransitionFeature(Feature):
     def compute(self, obj):
         self._part = None
         part = self.build(obj)
-        solid = _library().sheet_solid(part)
+        solid = _library().part_solid(part)
         report = part.report()
         obj.Shape = solid
         self._part = part
         self.set_outputs(obj, Deviation=report.deviation,
                          EdgeDistance=max(report.edge_distance),
-                         BendRadius=part.bend_radius, PieceCount=part.piece_count,
+                         BendRadius=report.bend_radius, PieceCount=report.pieces,
                          FaceCount=len(solid.Faces))
 
     @staticmethod

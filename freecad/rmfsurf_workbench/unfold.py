@@ -68,8 +68,8 @@ def pattern(obj):
     if is_feature(source, "RmfTransition") and not subs:
         from .transition import _library
         part = source.Proxy.sheet_part(source)
-        outline, bends = _library().sheet_flat_pattern(part)
-        return outline, bends, part.piece_count, part.report().deviation
+        face, bends = _library().flat_pattern(part)
+        return face.Edges, bends.Edges, part.piece_count, part.report().deviation
     faces = [f for s in inputs.shapes(obj.Source, "Source") for f in s.Faces]
     if len(faces) != 1:
         raise ValueError("Source: expected an RmfTransition or one developable face, got %s "
@@ -105,8 +105,11 @@ def make_unfold(doc, feature):
 
 def export_dxf(unfold, path):
     """Writes `unfold`'s flat pattern, in its own plane (without the feature's Placement), to
-    the DXF file `path` (:mod:`rmfsurf_workbench.dxf`: the outline on layer CUT, the bend
-    lines on layer BEND). Returns the numbers of outline and bend entities."""
+    the DXF file `path`: the outline on layer CUT, the bend lines on layer BEND, LINE and
+    ARC entities only. An RmfTransition's pattern is the library's own DXF of the part (the
+    command-line tool's, from the arcs' exact centres and radii); a face's is written by
+    :mod:`rmfsurf_workbench.dxf` from the feature's edges. Returns the numbers of outline
+    and bend entities."""
     from .dxf import write_flat_pattern
     if not is_feature(unfold, "RmfUnfold"):
         raise TypeError("unfold: expected an RmfUnfold, got %s" % getattr(unfold, "Label", unfold))
@@ -117,5 +120,10 @@ def export_dxf(unfold, path):
     parts = shape.childShapes()
     outline = [e for w in parts[0].Wires for e in w.Edges]
     bends = [s for s in parts[1:] if s.ShapeType == "Edge"]
-    write_flat_pattern(os.fspath(path), outline, bends)
+    source, subs = unfold.Source
+    if is_feature(source, "RmfTransition") and not [s for s in subs if s]:
+        with open(os.fspath(path), "w") as f:
+            f.write(source.Proxy.sheet_part(source).export("dxf"))
+    else:
+        write_flat_pattern(os.fspath(path), outline, bends)
     return len(outline), len(bends)

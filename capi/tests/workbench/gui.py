@@ -124,11 +124,11 @@ def run():
 
     if rf.has_transitions():
         bottom = doc.addObject("Sketcher::SketchObject", "Square")
-        bottom.Placement.Base = V(120, 0, 0)
+        bottom.Placement.Base = V(160, -30, 0)
         corners = [V(-30, -30, 0), V(30, -30, 0), V(30, 30, 0), V(-30, 30, 0)]
         for a, b in zip(corners, corners[1:] + corners[:1]):
             bottom.addGeometry(Part.LineSegment(a, b))
-        top = circle_sketch(doc, "Round", FreeCAD.Placement(V(126, 0, 45), FreeCAD.Rotation()),
+        top = circle_sketch(doc, "Round", FreeCAD.Placement(V(166, -30, 45), FreeCAD.Rotation()),
                             (18.0,))
         doc.recompute()
         select((bottom, []), (top, []))
@@ -136,11 +136,18 @@ def run():
         transitions = features(doc, "RmfTransition")
         require("RmfSurf_Transition on (square, circle): a valid RmfTransition",
                 len(transitions) == 1 and transitions[0].isValid())
+        # Edited in the property panel's place: a coarser tolerance, fewer pieces.
+        pieces = transitions[0].PieceCount
+        transitions[0].Tolerance = 0.01
+        doc.recompute()
+        require("Tolerance 1e-4 -> 1e-2, recomputed: %d -> %d pieces, valid"
+                % (pieces, transitions[0].PieceCount),
+                transitions[0].isValid() and transitions[0].PieceCount < pieces)
         select((transitions[0], []))
         FreeCADGui.runCommand("RmfSurf_Unfold")
         require("RmfSurf_Unfold on the transition: a second valid RmfUnfold",
                 len(features(doc, "RmfUnfold")) == 2 and features(doc, "RmfUnfold")[1].isValid())
-        features(doc, "RmfUnfold")[1].Placement.Base = V(100, 80, 0)
+        features(doc, "RmfUnfold")[1].Placement.Base = V(150, 90, 0)
         doc.recompute()
     else:
         say("  RmfSurf_Transition: NOT RUN: this librmfsurf has no rmf_cone_spline_transition")

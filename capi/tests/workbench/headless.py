@@ -21,7 +21,7 @@ What is checked, each figure printed with its limit:
      A_out)/2 (exact for a developable: areas are linear in the offset);
   E. persistence: saved, closed, reopened, the shapes cleared and recomputed: the same
      volumes, areas, faces and vertices; a constraint changed after reopening still drives;
-  F. the macros, as thin wrappers of make_sweep and make_unfold.
+  F. the macros, as thin wrappers of make_sweep, make_unfold and make_transition.
 freecadcmd exits 0 on an exception, so the script exits 1 itself on any failure, and prints
 WORKBENCH CHECKS OK last (report lines start with '| ') when everything passed.
 """
@@ -357,7 +357,7 @@ def dxf_segments(entity):
     a = (cx + r * math.cos(t0), cy + r * math.sin(t0))
     b = (cx + r * math.cos(t1), cy + r * math.sin(t1))
     term = 0.5 * (r * r * (t1 - t0) + r * (cx * (math.sin(t1) - math.sin(t0))
-                                           - cy * (math.cos(t0) - math.cos(t1))))
+                                           - cy * (math.cos(t1) - math.cos(t0))))
     return a, b, term
 
 
@@ -521,7 +521,7 @@ def part_d(doc):
     check("EdgeDistance against the input curves (tolerance 1e-4)", hopper.EdgeDistance, 1e-4)
     unfold = wb.make_unfold(doc, hopper)
     part = hopper.Proxy.sheet_part(hopper)
-    areas = {layer: sum(nurbs_area(f) for f in rf.sheet_layer_faces(part, layer))
+    areas = {layer: nurbs_area(rf.part_face(part.layer(layer)))
              for layer in ("inner", "neutral", "outer")}
     require("RmfUnfold of the transition: valid, %d bend lines" % unfold.BendLineCount,
             unfold.isValid() and unfold.BendLineCount > 0)
@@ -530,18 +530,25 @@ def part_d(doc):
     check("neutral area = inner + 0.4 (outer - inner) (linear in the offset)",
           rel(areas["neutral"], areas["inner"] + 0.4 * (areas["outer"] - areas["inner"])), 1e-9)
     check("volume against t (A_inner + A_outer) / 2",
-          rel(hopper.Shape.Volume, 2 * (areas["inner"] + areas["outer"]) / 2), 1e-7)
+          rel(hopper.Shape.Volume, 2 * (areas["inner"] + areas["outer"]) / 2), 1e-9)
     before = unfold.FlatArea.Value
     set_radius(top, radius[0], 50.0)
     doc.recompute()
     part = hopper.Proxy.sheet_part(hopper)
-    neutral = sum(nurbs_area(f) for f in rf.sheet_layer_faces(part, "neutral"))
+    neutral = nurbs_area(rf.part_face(part.layer("neutral")))
     check("top radius 60 -> 50, recomputed: flat area against the neutral layer's",
           rel(unfold.FlatArea.Value, neutral), 1e-9)
     say("  flat area %.12g before, %.12g after" % (before, unfold.FlatArea.Value))
     path = os.path.join(WORK, "hopper.dxf")
     wb.export_dxf(unfold, path)
-    outline = [e for e in read_dxf(path) if e.get("8") == "CUT"]
+    entities = read_dxf(path)
+    outline = [e for e in entities if e.get("8") == "CUT"]
+    bends = [e for e in entities if e.get("8") == "BEND"]
+    require("hopper DXF: %d CUT entities (ARC, LINE), %d BEND lines, as the feature's edges"
+            % (len(outline), len(bends)),
+            len(outline) == len(unfold.Shape.Faces[0].Edges)
+            and len(bends) == unfold.BendLineCount
+            and all(e["type"] in ("ARC", "LINE") for e in outline))
     check("hopper DXF outline area (this script's reader) against FlatArea",
           rel(loop_area(outline), unfold.FlatArea.Value), 1e-9)
     hopper.KFactor = 1.5
@@ -643,7 +650,7 @@ def run_macro(path, selection, document):
 
 
 def part_f(wire_sweeps):
-    say("F. The macros (thin wrappers of make_sweep and make_unfold)")
+    say("F. The macros (thin wrappers of make_sweep, make_unfold and make_transition)")
     macros = os.environ["RMFSURF_MACROS"]
     doc = FreeCAD.newDocument("macros")
     spine = doc.addObject("Part::Feature", "Spine")
@@ -667,6 +674,25 @@ def part_f(wire_sweeps):
     unfolds = [o for o in doc.Objects if getattr(getattr(o, "Proxy", None), "Type", "") == "RmfUnfold"]
     require("RmfConeSpline.FCMacro: one parametric RmfUnfold, valid",
             len(unfolds) == 1 and unfolds[0].isValid())
+    import rmfsurf.freecad as rf
+    if rf.has_transitions():
+        square = polyline_sketch(doc, "Square", FreeCAD.Placement(V(0, 50, 0), FreeCAD.Rotation()),
+                                 [(-20, -20, 0), (20, -20, 0), (20, 20, 0), (-20, 20, 0),
+                                  (-20, -20, 0)])
+        square.addConstraint(Sketcher.Constraint("Coincident", 3, 2, 0, 1))
+        round_, _ = circle_sketch(doc, "Round", FreeCAD.Placement(V(5, 50, 30), FreeCAD.Rotation()),
+                                  (12.0,))
+        doc.recompute()
+        run_macro(os.path.join(macros, "RmfTransition.FCMacro"),
+                  [Selected(square), Selected(round_)], doc)
+        kinds = [getattr(getattr(o, "Proxy", None), "Type", "") for o in doc.Objects]
+        made = [o for o in doc.Objects
+                if getattr(getattr(o, "Proxy", None), "Type", "") in ("RmfTransition", "RmfUnfold")]
+        require("RmfTransition.FCMacro: a parametric RmfTransition and its RmfUnfold, valid",
+                kinds.count("RmfTransition") == 1 and kinds.count("RmfUnfold") == 2
+                and all(o.isValid() for o in made))
+    else:
+        say("  RmfTransition.FCMacro: NOT RUN: this librmfsurf has no rmf_cone_spline_transition")
     FreeCAD.closeDocument(doc.Name)
 
 
