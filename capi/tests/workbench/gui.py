@@ -106,10 +106,11 @@ def run():
     sweeps = features(doc, "RmfSweep")
     import rmfsurf.shapes
     wire_sweeps = rmfsurf.shapes._has_wire_sweep()
-    require("RmfSurf_Sweep on (sketch, 3 edges): an RmfSweep%s"
-            % (", a valid solid" if wire_sweeps else " (NOT RUN: no rmf_wire_sweep)"),
-            len(sweeps) == 1 and (not wire_sweeps or (sweeps[0].isValid()
-                                                       and sweeps[0].Shape.ShapeType == "Solid")))
+    if wire_sweeps:
+        require("RmfSurf_Sweep on (sketch, 3 edges): an RmfSweep, a valid solid",
+                len(sweeps) == 1 and sweeps[0].isValid() and sweeps[0].Shape.ShapeType == "Solid")
+    else:
+        say("  RmfSurf_Sweep: NOT RUN: this librmfsurf has no rmf_wire_sweep (not added)")
 
     lateral = next("Face%d" % (i + 1) for i, f in enumerate(cone.Shape.Faces)
                    if isinstance(f.Surface, Part.Cone))
@@ -167,8 +168,8 @@ def run():
         QtGui.QApplication.processEvents()
     report = report_text()
     require("a wrong selection: reported ('RmfSweep: not added: ...'), no feature added",
-            "RmfSweep: not added: RmfSweep001: profile: expected one face" in report
-            and len(features(doc, "RmfSweep")) == 1)
+            "RmfSweep: not added: RmfSweep" in report and "profile: expected one face" in report
+            and len(features(doc, "RmfSweep")) == len(sweeps))
     require("the report view shows no Python traceback", "Traceback" not in report)
 
     FreeCADGui.Selection.clearSelection()
@@ -196,7 +197,7 @@ def run():
     r, g, b = colours["RmfSweep"]
     FreeCAD.ParamGet("User parameter:BaseApp/Preferences/View").SetUnsigned(
         "SelectionColor", (int(r * 255) << 24) | (int(g * 255) << 16) | (int(b * 255) << 8))
-    FreeCADGui.Selection.addSelection(features(doc, "RmfSweep")[0])
+    FreeCADGui.Selection.addSelection((features(doc, "RmfSweep") or [unfold])[0])
     QtCore.QTimer.singleShot(1500, screenshot)
 
 

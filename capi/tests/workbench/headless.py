@@ -288,6 +288,33 @@ def part_b(doc):
     doc.removeObject(line.Name)
     doc.recompute()
 
+    # A closed spine: a rounded rectangle of lines and quarter arcs (radius 5), a circle of
+    # radius 1 swept around it into a ring without caps; ClosureSymmetry on it.
+    r = 5.0
+    edges = []
+    for (x0, y0), (x1, y1), centre, a in (((r, 0), (30 - r, 0), (30 - r, r), -PI / 2),
+                                          ((30, r), (30, 20 - r), (30 - r, 20 - r), 0.0),
+                                          ((30 - r, 20), (r, 20), (r, 20 - r), PI / 2),
+                                          ((0, 20 - r), (0, r), (r, r), PI)):
+        edges.append(Part.LineSegment(V(x0, y0, -40), V(x1, y1, -40)).toShape())
+        edges.append(Part.ArcOfCircle(Part.Circle(V(centre[0], centre[1], -40), V(0, 0, 1), r),
+                                      a, a + PI / 2).toShape())
+    loop = doc.addObject("Part::Feature", "Loop")
+    loop.Shape = Part.Wire(edges)
+    disc, _ = circle_sketch(doc, "Disc", FreeCAD.Placement(V(r, 0, -40), Z_TO_X), (1.0,))
+    doc.recompute()
+    ring = wb.make_sweep(doc, (loop, ["Edge%d" % k for k in range(1, 9)]), disc)
+    length = 2 * (30 - 2 * r) + 2 * (20 - 2 * r) + 2 * PI * r
+    check_solid("a circle around a closed rounded rectangle (no caps)", ring.Shape, PI * length)
+    require("the closed ring: %d faces, none planar (no caps)" % len(ring.Shape.Faces),
+            not any(isinstance(f.Surface, Part.Plane) for f in ring.Shape.Faces))
+    ring.ClosureSymmetry = 4
+    doc.recompute()
+    check_solid("the same, ClosureSymmetry 4", ring.Shape, PI * length)
+    for name in (ring.Name, disc.Name, loop.Name):
+        doc.removeObject(name)
+    doc.recompute()
+
     # A circle along a sketch with a 90° corner: round (radius 8), then miter.
     start = FreeCAD.Placement(V(0, 0, 30), FreeCAD.Rotation())
     corner = polyline_sketch(doc, "Corner", start, [(0, 0, 0), (30, 0, 0), (30, 25, 0)])
