@@ -99,8 +99,9 @@ class Feature:
         self.add_properties(obj)
 
     def execute(self, obj):
-        label = obj.Label if obj.Label.startswith(self.TYPE) else "%s (%s)" % (obj.Label,
-                                                                              self.TYPE)
+        label = obj.Label
+        if not label.startswith(self.TYPE):
+            label = "%s (%s)" % (label, self.TYPE)
         try:
             self.compute(obj)
         except _input_errors() as e:

@@ -15,8 +15,6 @@ result.
 
 import math
 
-import FreeCAD
-
 from . import inputs
 from .feature import Feature, Property
 from .view import attach_view, hide

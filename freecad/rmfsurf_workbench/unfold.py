@@ -26,6 +26,7 @@ from . import inputs
 from .feature import Feature, Property, is_feature
 from .view import attach_view
 
+
 class UnfoldFeature(Feature):
     TYPE = "RmfUnfold"
     PROPERTIES = (

@@ -94,8 +94,8 @@ def run():
         Part.LineSegment(V(0, 0, 0), V(40, 0, 0)).toShape(),
         Part.ArcOfCircle(Part.Circle(V(40, 20, 0), V(0, 0, 1), 20), -math.pi / 2, 0).toShape(),
         Part.LineSegment(V(60, 20, 0), V(60, 60, 0)).toShape()])
-    ring = circle_sketch(doc, "Ring", FreeCAD.Placement(V(0, 0, 0), FreeCAD.Rotation(V(0, 1, 0), 90)),
-                         (4.0, 2.0))
+    normal_to_x = FreeCAD.Rotation(V(0, 1, 0), 90)
+    ring = circle_sketch(doc, "Ring", FreeCAD.Placement(V(0, 0, 0), normal_to_x), (4.0, 2.0))
     cone = doc.addObject("Part::Cone", "Frustum")
     cone.Radius1, cone.Radius2, cone.Height, cone.Angle = 15, 8, 25, 270
     cone.Placement.Base = V(-40, 40, 0)

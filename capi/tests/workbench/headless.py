@@ -273,8 +273,11 @@ def part_b(doc):
     rectangle.addConstraint(Sketcher.Constraint("Coincident", 3, 2, 0, 1))
     doc.recompute()
     bar = wb.make_sweep(doc, line, rectangle)
-    cap = lambda: next(f for f in bar.Shape.Faces if isinstance(f.Surface, Part.Plane)
-                       and abs(f.CenterOfMass.x - 30) < 1e-9).BoundBox
+
+    def cap():
+        return next(f for f in bar.Shape.Faces if isinstance(f.Surface, Part.Plane)
+                    and abs(f.CenterOfMass.x - 30) < 1e-9).BoundBox
+
     untwisted = cap()
     bar.Twist = 90
     doc.recompute()
@@ -373,7 +376,8 @@ def read_dxf(path):
 
 def dxf_segments(entity):
     """(start, end, signed area term ½∮(x dy − y dx)) of a LINE or ARC, as drawn."""
-    g = lambda code: float(entity[code])
+    def g(code):
+        return float(entity[code])
     if entity["type"] == "LINE":
         a, b = (g("10"), g("20")), (g("11"), g("21"))
         return a, b, 0.5 * (a[0] * b[1] - b[0] * a[1])
@@ -392,7 +396,9 @@ def loop_area(entities, tolerance=1e-6):
     """The area enclosed by LINE and ARC entities chained end to end (Green's theorem; an
     entity walked backwards counts negatively)."""
     pieces = [dxf_segments(e) for e in entities]
-    close = lambda p, q: math.hypot(p[0] - q[0], p[1] - q[1]) < tolerance
+
+    def close(p, q):
+        return math.hypot(p[0] - q[0], p[1] - q[1]) < tolerance
     a, end, total = pieces[0]
     start, remaining = a, pieces[1:]
     while remaining:
@@ -500,7 +506,6 @@ def part_c(doc):
 
 # ---------------------------------------------------------------------------------------
 # D. RmfTransition and its unfold
-
 
 
 def gauss_nodes(breaks, parts):
@@ -664,6 +669,11 @@ class Selected:
         self.SubObjects = [obj.Shape.getElement(n) for n in names]
 
 
+def kind_of(obj):
+    """The workbench feature type of a document object ("" for others)."""
+    return getattr(getattr(obj, "Proxy", None), "Type", "")
+
+
 def run_macro(path, selection, document):
     gui = types.ModuleType("FreeCADGui")
     gui.Selection = types.SimpleNamespace(getSelectionEx=lambda: selection)
@@ -687,18 +697,18 @@ def part_f(wire_sweeps):
     doc.recompute()
     run_macro(os.path.join(macros, "RmfSweep.FCMacro"),
               [Selected(profile), Selected(spine, ["Edge1", "Edge2"])], doc)
-    sweeps = [o for o in doc.Objects if getattr(getattr(o, "Proxy", None), "Type", "") == "RmfSweep"]
+    sweeps = [o for o in doc.Objects if kind_of(o) == "RmfSweep"]
     require("RmfSweep.FCMacro: one parametric RmfSweep%s"
             % (", a valid solid" if wire_sweeps else " (NOT RUN: no rmf_wire_sweep)"),
-            len(sweeps) == 1 and (not wire_sweeps or (sweeps[0].isValid()
-                                                       and sweeps[0].Shape.ShapeType == "Solid")))
+            len(sweeps) == 1 and (not wire_sweeps or (
+                sweeps[0].isValid() and sweeps[0].Shape.ShapeType == "Solid")))
     cone = doc.addObject("Part::Cone", "Cone")
     cone.Angle = 270
     doc.recompute()
     lateral = next("Face%d" % (i + 1) for i, f in enumerate(cone.Shape.Faces)
                    if isinstance(f.Surface, Part.Cone))
     run_macro(os.path.join(macros, "RmfConeSpline.FCMacro"), [Selected(cone, [lateral])], doc)
-    unfolds = [o for o in doc.Objects if getattr(getattr(o, "Proxy", None), "Type", "") == "RmfUnfold"]
+    unfolds = [o for o in doc.Objects if kind_of(o) == "RmfUnfold"]
     require("RmfConeSpline.FCMacro: one parametric RmfUnfold, valid",
             len(unfolds) == 1 and unfolds[0].isValid())
     import rmfsurf.freecad as rf
@@ -712,9 +722,8 @@ def part_f(wire_sweeps):
         doc.recompute()
         run_macro(os.path.join(macros, "RmfTransition.FCMacro"),
                   [Selected(square), Selected(round_)], doc)
-        kinds = [getattr(getattr(o, "Proxy", None), "Type", "") for o in doc.Objects]
-        made = [o for o in doc.Objects
-                if getattr(getattr(o, "Proxy", None), "Type", "") in ("RmfTransition", "RmfUnfold")]
+        kinds = [kind_of(o) for o in doc.Objects]
+        made = [o for o in doc.Objects if kind_of(o) in ("RmfTransition", "RmfUnfold")]
         require("RmfTransition.FCMacro: a parametric RmfTransition and its RmfUnfold, valid",
                 kinds.count("RmfTransition") == 1 and kinds.count("RmfUnfold") == 2
                 and all(o.isValid() for o in made))
@@ -725,9 +734,8 @@ def part_f(wire_sweeps):
 
 def main():
     import rmfsurf
-    say("rmfsurf %s in FreeCAD %s, Python %s" % (rmfsurf.__version__,
-                                                ".".join(FreeCAD.Version()[:3]),
-                                                sys.version.split()[0]))
+    say("rmfsurf %s in FreeCAD %s, Python %s"
+        % (rmfsurf.__version__, ".".join(FreeCAD.Version()[:3]), sys.version.split()[0]))
     import rmfsurf.shapes
     part_a()
     doc = FreeCAD.newDocument("workbench")
