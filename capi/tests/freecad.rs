@@ -4,11 +4,12 @@
 //! Python package rmfsurf installed as docs/install.md says (the wheel, `pip install
 //! --target` into FreeCAD's AdditionalPythonPackages; no environment variable): Part objects
 //! from the NURBS views (rmfsurf.freecad), FreeCAD's own Gaussian curvature, STEP written by
-//! FreeCAD and read back, the tool's files read by FreeCAD, the macros and the wire sweep,
-//! and the sheet-metal hopper (examples/cli/hopper.json): its STEP solid, DXF and flat STEP
-//! face read by FreeCAD, the transition built in FreeCAD, and the comparison with FreeCAD's
-//! own mesh unwrapping. The script prints every figure with its limit. The FreeCAD examples
-//! of the docs run too.
+//! FreeCAD and read back, the tool's files read by FreeCAD, rmfsurf.freecad's selection
+//! entry points and the wire sweep, and the sheet-metal hopper (examples/cli/hopper.json):
+//! its STEP solid, DXF and flat STEP face read by FreeCAD, the transition built in FreeCAD,
+//! and the comparison with FreeCAD's own mesh unwrapping. The script prints every figure
+//! with its limit. The FreeCAD examples of the docs run too. (The macros and the
+//! workbench: workbench.rs.)
 //!
 //! `cargo test --test freecad -- --nocapture` shows them.
 

@@ -17,12 +17,14 @@ What is checked, each figure printed with its limit:
      spatial boundary curves (measured by FreeCAD on the tool's curve STEP); and the SVG
      drawing of the same pattern;
   E. FreeCAD's mesh reader reads the tool's OBJ as the library's tessellation;
-  F. both macros, with a selection as the GUI would give it;
+  F. rmfsurf.freecad's selection entry points (sweep_selection, cone_spline_selection),
+     with a selection as the GUI would give it (the macros are wrappers of the RmfSurf
+     workbench now, checked by capi/tests/workbench.rs);
   G. rmfsurf.freecad.sweep of a wire into a solid;
   H. sheet metal (examples/cli/hopper.json, a square-to-round hopper): the tool's STEP solid
      is a valid closed solid of the expected volume, its DXF flat pattern (read by FreeCAD)
      encloses the area of the formed neutral layer and its flat STEP face the same; the
-     transition built in FreeCAD from a square wire and a circle edge (macro RmfTransition);
+     transition built in FreeCAD from a square wire and a circle edge (transition_selection);
      and what a FreeCAD user has today to flatten the same part: the Mesh Design
      workbench's unwrapper (flatmesh, LSCM) and an ideal unfolding of the triangles of
      FreeCAD's mesher, their outline lengths and areas against the exact development.
@@ -319,7 +321,7 @@ def part_e(parts):
 
 
 # ---------------------------------------------------------------------------------------
-# F. The macros
+# F. The selection entry points
 
 
 class Selected:
@@ -345,20 +347,6 @@ def sweep_inputs(document):
     sketch.addGeometry(Part.Circle(V(0, 0, 0), V(0, 0, 1), 0.2))
     document.recompute()
     return spine, sketch
-
-
-def run_macro(path, selection, document):
-    """Runs a macro file as FreeCAD would, with a stand-in for the GUI's selection."""
-    import types
-    gui = types.ModuleType("FreeCADGui")
-    gui.Selection = types.SimpleNamespace(getSelectionEx=lambda: selection)
-    sys.modules["FreeCADGui"] = gui
-    FreeCAD.setActiveDocument(document.Name)
-    try:
-        with open(path) as f:
-            exec(compile(f.read(), path, "exec"), {"__file__": path, "__name__": "__main__"})
-    finally:
-        del sys.modules["FreeCADGui"]
 
 
 # 8-point Gauss-Legendre nodes and weights on [-1, 1].
@@ -389,13 +377,11 @@ def area(face, parts=8):
 
 
 def part_f():
-    say("F. The macros")
-    here = os.path.dirname(os.path.abspath(__file__))
-    document = FreeCAD.newDocument("macros")
+    say("F. The selection entry points")
+    document = FreeCAD.newDocument("selections")
     spine, sketch = sweep_inputs(document)
-    run_macro(os.path.join(here, "RmfSweep.FCMacro"), [Selected(sketch), Selected(spine, ["Edge1"])], document)
-    swept = document.getObject("RmfSweep")
-    require("RmfSweep.FCMacro: made RmfSweep, one valid face", swept is not None
+    swept = rmf.sweep_selection([Selected(sketch), Selected(spine, ["Edge1"])], document)
+    require("sweep_selection: made RmfSweep, one valid face", swept is not None
             and len(swept.Shape.Faces) == 1 and swept.Shape.isValid())
     face, edge = swept.Shape.Faces[0], spine.Shape.Edges[0]
     u0, u1, v0, v1 = face.ParameterRange
@@ -418,9 +404,9 @@ def part_f():
     part = document.addObject("Part::Feature", "Frustum")
     part.Shape = Part.Face(frustum)
     document.recompute()
-    run_macro(os.path.join(here, "RmfConeSpline.FCMacro"), [Selected(part, ["Face1"])], document)
+    rmf.cone_spline_selection([Selected(part, ["Face1"])], document)
     cone, flat, outline = (document.getObject(n) for n in ("ConeSpline", "FlatPattern", "CuttingOutline"))
-    require("RmfConeSpline.FCMacro: made ConeSpline, FlatPattern, CuttingOutline, all valid",
+    require("cone_spline_selection: made ConeSpline, FlatPattern, CuttingOutline, all valid",
             None not in (cone, flat, outline) and all(o.Shape.isValid() for o in (cone, flat, outline)))
     slant = (4.0 + 0.25) ** 0.5
     expected_area = 0.75 * 3.141592653589793 * 1.5 * slant
@@ -607,22 +593,21 @@ def part_h():
           abs(flat_step.Faces[0].Area - neutral) / neutral, 1e-8)
     FreeCAD.closeDocument(dxf_doc.Name)
     # Built in FreeCAD from its own shapes: a square wire and a circle edge, directly and by
-    # the macro (as the GUI runs it, at the macro's tolerance).
+    # the selection entry point (as a selection gives them, at a tolerance of 1e-3).
     document = FreeCAD.newDocument("sheet")
     square, circle = hopper_curves(document)
     own = rmf.transition(square.Shape, circle.Shape.Edges[0], t, k, tol)
     limit = tol * neutral / volume
     check("transition of FreeCAD's square and circle: volume against the tool's, relative",
           abs(rmf.part_solid(own).Volume - solid.Volume) / solid.Volume, limit)
-    here = os.path.dirname(os.path.abspath(__file__))
-    run_macro(os.path.join(here, "RmfTransition.FCMacro"), [Selected(square), Selected(circle, ["Edge1"])], document)
+    rmf.transition_selection([Selected(square), Selected(circle, ["Edge1"])], document, t, k, 1e-3)
     made = [document.getObject(n) for n in ("Transition", "FlatPattern", "BendLines")]
-    require("RmfTransition.FCMacro: made Transition, FlatPattern, BendLines, all valid",
+    require("transition_selection: made Transition, FlatPattern, BendLines, all valid",
             None not in made and all(o.Shape.isValid() for o in made))
     if None not in made:
-        check("RmfTransition.FCMacro (tolerance 1e-3): volume against the tool's, relative",
+        check("transition_selection (tolerance 1e-3): volume against the tool's, relative",
               abs(made[0].Shape.Volume - solid.Volume) / solid.Volume, 1e-3 * neutral / volume)
-        check("RmfTransition.FCMacro: flat pattern |z| extent", made[1].Shape.BoundBox.ZLength, 1e-12)
+        check("transition_selection: flat pattern |z| extent", made[1].Shape.BoundBox.ZLength, 1e-12)
     FreeCAD.closeDocument(document.Name)
     # What a FreeCAD user has today to flatten the same part: triangulate the formed neutral
     # layer with FreeCAD's mesher and unfold it. (SheetMetal unfolds planes and cylinders

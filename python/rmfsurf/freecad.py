@@ -10,10 +10,9 @@ FreeCAD's Python finds it (docs/install.md, "FreeCAD"); the library comes with t
 * out: ``Part.BSplineCurve``, ``Part.BSplineSurface``, ``Part.Face``, ``Part.Shape``
   (a solid for a closed sweep).
 
-:func:`sweep` is the wire sweep; :func:`transition` the sheet-metal transition piece
-between two closed curves (its solid, flat pattern and bend lines as Part shapes). The macros
-RmfSweep, RmfConeSpline and RmfTransition (examples/freecad/) call :func:`sweep_selection`,
-:func:`cone_spline_selection` and :func:`transition_selection`.
+:func:`sweep` is the wire sweep (:func:`sweep_with_report` with its figures, as the
+workbench's RmfSweep feature uses it); :func:`transition` the sheet-metal transition piece
+between two closed curves (its solid, flat pattern and bend lines as Part shapes).
 """
 
 from __future__ import annotations
@@ -30,7 +29,7 @@ from .cone_splines import ConeSpline, cone_spline_approximate_ruled
 from .curves import (Curve, NurbsCurve, distinct_knots, flat_knots, join_nurbs,
                      mobius_rrmf_approximate, ph_spline_approximate, rrmf_spline_hermite)
 from .frames import Frames, ph_frenet_frames, ph_rational_rmf
-from .shapes import Arc, CurveEdge, Edge, Line, Shape, wire_sweep
+from .shapes import Arc, CurveEdge, Edge, Line, Shape, SweepReport, wire_sweep
 from .sheets import SheetPart
 from .sheets import transition as _transition
 from .surfaces import Surface, sweep_surface
@@ -59,8 +58,15 @@ def _part_curve_data(curve: Any) -> NurbsCurve:
 
 def _edge_bspline(edge: Any, placement: Any = None, degree: Optional[int] = None) -> Any:
     """The exact B-spline of an edge over its range, in the edge's direction in its wire,
-    moved by `placement`, raised to `degree`."""
-    curve = edge.Curve.toBSpline(edge.FirstParameter, edge.LastParameter)
+    moved by `placement`, raised to `degree`. (By the edge's NURBS conversion: in FreeCAD
+    0.20, ``Curve.toBSpline`` approximates circles and other conics by polynomial
+    B-splines, 7e-8 off on a circle of radius 3, and a conic's ``Curve.toNurbs`` drops its
+    placement.)"""
+    converted = edge.toNurbs().Edges[0]
+    curve = converted.Curve.copy()
+    a, b = converted.FirstParameter, converted.LastParameter
+    if max(abs(a - curve.FirstParameter), abs(b - curve.LastParameter)) > 1e-12 * (1 + abs(b - a)):
+        curve.segment(a, b)
     if edge.Orientation == "Reversed":
         curve.reverse()
     if placement is not None:
@@ -76,8 +82,8 @@ def curve(value: Any, placement: Any = None) -> Curve:
     `placement` (e.g. the inverse of a sketch's placement)."""
     if isinstance(value, Part.Edge):
         bspline = _edge_bspline(value, placement)
-    elif hasattr(value, "toBSpline"):
-        bspline = value.toBSpline()
+    elif hasattr(value, "toShape"):
+        bspline = _edge_bspline(value.toShape())
         if placement is not None:
             bspline.transform(placement.toMatrix())
     else:
@@ -242,20 +248,47 @@ def _wire_curve(wire: Any, origin: np.ndarray, f2: np.ndarray, f3: np.ndarray, n
     return Curve.from_nurbs(joined.degree, joined.poles, joined.knots, joined.weights)
 
 
+def _profile_face(shape: Any) -> Any:
+    """The one planar region of a profile: a face, a closed wire, or closed wires nested as
+    outer loops and holes (a sketch with inner loops: FreeCAD's Bullseye face maker)."""
+    if isinstance(shape, Part.Face):
+        return shape
+    if shape.Faces:
+        if len(shape.Faces) != 1:
+            raise ValueError("profile: expected one face, got %d" % len(shape.Faces))
+        return shape.Faces[0]
+    wires = [shape] if isinstance(shape, Part.Wire) else shape.Wires
+    if isinstance(shape, Part.Edge):
+        wires = [Part.Wire([shape])]
+    if not wires:
+        raise TypeError("profile: expected a Part.Face, closed wires or a sketch, got a %s "
+                        "without wires" % shape.ShapeType)
+    open_wires = [i for i, w in enumerate(wires) if not w.isClosed()]
+    if open_wires:
+        raise ValueError("profile: wire %d of %d is not closed" % (open_wires[0] + 1, len(wires)))
+    if len(wires) == 1:
+        return Part.Face(wires[0])
+    faces = Part.makeFace(wires, "Part::FaceMakerBullseye").Faces
+    if len(faces) != 1:
+        raise ValueError("profile: its %d closed wires bound %d separate regions; a sweep takes "
+                         "one region (with holes)" % (len(wires), len(faces)))
+    return faces[0]
+
+
+def _plane_x_axis(plane: Any) -> Any:
+    """A Part.Plane's x direction (its u direction): FreeCAD 0.20's Plane has no XAxis."""
+    axis = getattr(plane, "XAxis", None)
+    return axis if axis is not None else plane.Rotation.multVec(V(1, 0, 0))
+
+
 def profile_curves(profile: Any, origin: Any, tangent: Any, tolerance: float = 1e-4
                    ) -> Tuple[Curve, List[Curve], np.ndarray]:
-    """A planar profile (Part.Face with holes, closed Part.Wire, or a sketch) in the plane
+    """A planar profile (Part.Face with holes, closed Part.Wire, closed wires nested as
+    outer loop and holes, or a sketch of them) in the plane
     normal to `tangent` through `origin`, as the 2-D outer curve, holes and initial normal
     f2 (the x direction of the profile's placement, e.g. the sketch's x axis) of
     :func:`rmfsurf.wire_sweep`."""
-    shape = _shape_of(profile, "profile")
-    if isinstance(shape, Part.Face):
-        face = shape
-    else:
-        wire = _wire_of(shape, "profile", "a Part.Face, a closed Part.Wire or a sketch")
-        if not wire.isClosed():
-            raise ValueError("profile: the wire is not closed")
-        face = Part.Face(wire)
+    face = _profile_face(_shape_of(profile, "profile"))
     if not isinstance(face.Surface, Part.Plane):
         raise ValueError("profile: not planar")
     o = np.asarray(origin, dtype=float)
@@ -272,7 +305,7 @@ def profile_curves(profile: Any, origin: Any, tangent: Any, tolerance: float = 1
                          "is %.3g away)" % off)
     placement = getattr(profile, "Placement", None) if not isinstance(profile, Part.Shape) else None
     x_axis = placement.Rotation.multVec(V(1, 0, 0)) if placement is not None else None
-    x = np.array(tuple(x_axis if x_axis is not None else face.Surface.XAxis))
+    x = np.array(tuple(x_axis if x_axis is not None else _plane_x_axis(face.Surface)))
     f2 = x - np.dot(x, t) * t
     f2 /= np.linalg.norm(f2)
     f3 = np.cross(t, f2)
@@ -284,7 +317,9 @@ def profile_curves(profile: Any, origin: Any, tangent: Any, tolerance: float = 1
 
 def part_shape(value: Shape, tolerance: float = 1e-6) -> Any:
     """An :class:`rmfsurf.Shape` as a Part.Shape: exact swept faces and planar caps sewn
-    into a Part.Solid when the shape is a solid (else a Part.Shell)."""
+    into a Part.Solid when the shape is a solid, else the lateral faces sewn into a
+    Part.Shell (a Part.Compound of shells when the profile has holes: the outer and inner
+    walls do not meet)."""
     faces = []
     for f in _core.instance(value, "shape", Shape, "an rmfsurf.Shape").faces():
         if f.kind == "swept":
@@ -293,10 +328,13 @@ def part_shape(value: Shape, tolerance: float = 1e-6) -> Any:
             wires = [Part.Wire([part_curve(c).toShape()]) for c in f.loops]
             faces.append(Part.Face(Part.Plane(vector(f.plane_origin), vector(f.plane_normal)),
                                    wires))
+    if not value.is_solid:
+        sheet = Part.Compound(faces)
+        sheet.sewShape(tolerance)
+        shells = sheet.Shells
+        return shells[0] if len(shells) == 1 else Part.Compound(shells)
     shell = Part.Shell(faces)
     shell.sewShape(tolerance)
-    if not value.is_solid:
-        return shell
     solid = Part.Solid(Part.Shell(shell.Faces))
     solid.fix(tolerance, tolerance, tolerance)
     if solid.Volume < 0:
@@ -317,9 +355,9 @@ def sweep(wire: Any, profile: Any, *, solid: bool = True, corner: str = "round",
 
     Args:
         wire: a Part.Wire, a Part.Edge or a sketch (one wire): lines, arcs and curves.
-        profile: a planar Part.Face (holes allowed), a closed Part.Wire or a sketch, in the
-            plane normal to the wire at its start, where it is in space; its x axis (a
-            sketch's) is the frame's initial normal f2.
+        profile: a planar Part.Face (holes allowed), a closed Part.Wire or a sketch (inner
+            loops are holes), in the plane normal to the wire at its start, where it is in
+            space; its x axis (a sketch's) is the frame's initial normal f2.
         solid: close the result with planar caps into a solid.
         corner: "round" or "miter".
         corner_radius: the rounding radius of round corners (None: the library's).
@@ -328,12 +366,25 @@ def sweep(wire: Any, profile: Any, *, solid: bool = True, corner: str = "round",
     Returns:
         A Part.Shape: a Part.Solid (or a Part.Shell with ``solid=False``).
     """
+    return sweep_with_report(wire, profile, solid=solid, corner=corner,
+                             corner_radius=corner_radius, tolerance=tolerance)[0]
+
+
+def sweep_with_report(wire: Any, profile: Any, *, solid: bool = True, corner: str = "round",
+                      corner_radius: Optional[float] = None, tolerance: float = 1e-4,
+                      twist: float = 0.0, closure_symmetry: int = 0
+                      ) -> Tuple[Any, SweepReport]:
+    """:func:`sweep` with the wire sweep's `twist` (radians over the whole wire) and
+    `closure_symmetry` (closed wires: the frame closes modulo 2π/k), returning the
+    Part.Shape and the library's :class:`rmfsurf.SweepReport` (spine distance, RMF angle
+    error, parameter-line orthogonality, singularity margin, face count)."""
     edges = path_edges(wire)
     origin, tangent = _start_frame(wire)
     outer, holes, f2 = profile_curves(profile, origin, tangent, tolerance)
     result = wire_sweep(edges, outer, holes, solid=solid, corner=corner,
-                        corner_radius=corner_radius, tolerance=tolerance, initial_normal=f2)
-    return part_shape(result, min(tolerance, 1e-6))
+                        corner_radius=corner_radius, tolerance=tolerance, initial_normal=f2,
+                        twist=twist, closure_symmetry=closure_symmetry)
+    return part_shape(result, min(tolerance, 1e-6)), result.report()
 
 
 # ---------------------------------------------------------------------------------------
@@ -381,6 +432,12 @@ def flat_pattern_edges(developed: ConeSpline, t_min: float, t_max: float) -> Lis
 # Sheet metal: transition pieces
 
 
+def has_transitions() -> bool:
+    """Whether the loaded library has the sheet-metal transitions
+    (rmf_cone_spline_transition)."""
+    return hasattr(_core.lib, "rmf_cone_spline_transition")
+
+
 def closed_curve(value: Any, name: str = "curve") -> Curve:
     """A closed edge, wire or face outline (a circle, a polygon, a closed B-spline, ...) as
     one :class:`rmfsurf.Curve`: its edges' exact B-splines in the wire's order, raised to
@@ -389,7 +446,7 @@ def closed_curve(value: Any, name: str = "curve") -> Curve:
     if not hasattr(shape, "Edges") or not shape.Edges:
         raise TypeError("%s: expected a closed Part edge or wire, got %s" % (name, type(value).__name__))
     edges = shape.OrderedEdges if hasattr(shape, "OrderedEdges") else shape.Edges
-    degree = max(e.Curve.toBSpline(e.FirstParameter, e.LastParameter).Degree for e in edges)
+    degree = max(_edge_bspline(e).Degree for e in edges)
     pieces = [_part_curve_data(_edge_bspline(e, degree=degree)) for e in edges]
     return Curve.from_nurbs(*_joined(join_nurbs(pieces, name)))
 
@@ -436,8 +493,9 @@ def flat_pattern(part: SheetPart) -> Tuple[Any, Any]:
 
 
 # ---------------------------------------------------------------------------------------
-# The macros' entry points: they take the Gui selection and the document, so that they
-# run (and are tested) without the GUI.
+# Selection entry points: they take the Gui selection and the document, so that they run
+# (and are tested) without the GUI. They add plain Part::Feature copies; the RmfSurf
+# workbench (freecad/ in the repository) adds parametric features instead.
 
 
 def _selected(selection: Any, want: Any) -> Any:
@@ -451,7 +509,8 @@ def _selected(selection: Any, want: Any) -> Any:
 
 def sweep_selection(selection: Any, document: Any, method: str = "ph-rmf",
                     tolerance: float = 1e-4) -> Any:
-    """Macro RmfSweep: sweeps the selected sketch along the selected edge."""
+    """Sweeps the selected sketch, in its own xy coordinates, along the selected edge with
+    frames by `method` (one face per sketch edge, :func:`sweep_sketch_along_edge`)."""
     sketch = _selected(selection, lambda o, n, s: o if o.TypeId == "Sketcher::SketchObject" else None)
     edge = _selected(selection, lambda o, n, s: s if n.startswith("Edge") and o is not sketch else None)
     if sketch is None or edge is None:
@@ -463,8 +522,8 @@ def sweep_selection(selection: Any, document: Any, method: str = "ph-rmf",
 
 
 def cone_spline_selection(selection: Any, document: Any, tolerance: float = 1e-4) -> List[Any]:
-    """Macro RmfConeSpline: the selected developable face as a cone spline surface, its
-    development (a flat face in the xy-plane) and its cutting outline."""
+    """The selected developable face as a cone spline surface, its development (a flat
+    face in the xy-plane) and its cutting outline."""
     face = _selected(selection, lambda o, n, s: s if n.startswith("Face") else None)
     if face is None:
         raise ValueError("select one developable face")
@@ -486,7 +545,7 @@ def cone_spline_selection(selection: Any, document: Any, tolerance: float = 1e-4
 
 def transition_selection(selection: Any, document: Any, thickness: float = 1.0,
                          k_factor: float = 0.5, tolerance: float = 1e-4) -> List[Any]:
-    """Macro RmfTransition: the transition piece between the two selected closed edges or
+    """The transition piece between the two selected closed edges or
     wires (or objects whose shape is one): the formed solid, the flat pattern of the
     neutral layer (a face in the xy-plane; export it as DXF for the cutter) and its bend
     lines."""

@@ -1,0 +1,112 @@
+"""RmfSweep: a planar profile swept along a wire with rotation-minimizing frames, by the
+library's wire sweep (``rmf_wire_sweep`` through :func:`rmfsurf.freecad.sweep_with_report`).
+
+Lines and circular arcs of the spine give exact cylinders and tori; curve edges are
+approximated by a PH cubic spline within the tolerance and carry its rational RMF in closed
+form (Mäurer & Jüttler, eqs. (36)–(41)), one RMF across every joint; sharp joints get round
+(torus) or mitred corners. The wire sweep offers the PH RMF only (Method "ph-rmf"): the
+Möbius (Bartoň, Jüttler & Wang) and RRMF-quintic (Farouki, Giannelli & Sestini) frames are
+single-curve constructions of the Python package (``rmfsurf.freecad.spine_with_frames``),
+not wire sweeps.
+
+The accuracy figures are the library's report (``rmf_shape_report``), measured on the
+result.
+"""
+
+import math
+
+from . import inputs
+from .feature import Feature, Property
+from .view import attach_view, hide
+
+METHODS = ("ph-rmf",)
+CORNERS = ("round", "miter")
+
+
+class SweepFeature(Feature):
+    TYPE = "RmfSweep"
+    PROPERTIES = (
+        Property("App::PropertyLinkSubList", "Spine", "Sweep",
+                 "The wire: edges, wires or sketches of lines, arcs and curves, end to end"),
+        Property("App::PropertyLinkSub", "Profile", "Sweep",
+                 "A sketch (inner loops are holes), a planar face or closed edges, in the "
+                 "plane normal to the spine at its start; its x axis is the frame's initial "
+                 "normal"),
+        Property("App::PropertyEnumeration", "Method", "Sweep",
+                 "The frame: ph-rmf, the rational RMF of the PH cubic spline (exact on "
+                 "lines and arcs); the wire sweep offers no other", enum=METHODS),
+        Property("App::PropertyEnumeration", "Corner", "Sweep",
+                 "Sharp joints of the spine: round (a torus elbow) or miter", enum=CORNERS),
+        Property("App::PropertyLength", "CornerRadius", "Sweep",
+                 "Radius of round corners; 0: 1.5 times the profile's largest distance from "
+                 "the spine", default=0.0),
+        Property("App::PropertyFloat", "Tolerance", "Sweep",
+                 "Largest distance of the PH cubic spline from curve edges (mm)",
+                 default=1e-4),
+        Property("App::PropertyBool", "Solid", "Sweep",
+                 "Close the sweep with planar caps into a solid (else the lateral faces)",
+                 default=True),
+        Property("App::PropertyAngle", "Twist", "Sweep",
+                 "Extra turn of the frame about the tangent over the whole spine, linear in "
+                 "arc length", default=0.0),
+        Property("App::PropertyInteger", "ClosureSymmetry", "Sweep",
+                 "Closed spines: the frame closes modulo 360°/k, k the profile's rotational "
+                 "symmetry (e.g. 4 for a square); 0: closes exactly", default=0),
+        Property("App::PropertyFloat", "SpineDistance", "Accuracy",
+                 "Largest distance of the PH cubic spline from the curve edges (mm; 0 on "
+                 "lines and arcs)", output=True),
+        Property("App::PropertyFloat", "RmfDefect", "Accuracy",
+                 "Largest angle between the frames used and the exact RMF plus twist "
+                 "(radians)", output=True),
+        Property("App::PropertyFloat", "Orthogonality", "Accuracy",
+                 "Largest |cos| of the angle between the lateral faces' parameter lines (0: "
+                 "orthogonal, lines of curvature)", output=True),
+        Property("App::PropertyFloat", "SingularityMargin", "Accuracy",
+                 "Least 1 - κ·(profile distance) over the sweep (> 0: no self-intersection "
+                 "at the spine's curvature, Mäurer & Jüttler Cor. 7)", output=True),
+        Property("App::PropertyInteger", "FaceCount", "Accuracy",
+                 "Number of faces of the result", output=True),
+    )
+
+    def compute(self, obj):
+        from rmfsurf.freecad import sweep_with_report
+        if obj.Method not in METHODS:
+            raise ValueError("Method: %r is not offered by the wire sweep" % obj.Method)
+        if obj.ClosureSymmetry < 0:
+            raise ValueError("ClosureSymmetry: must be 0 or a symmetry order k >= 1, got %d"
+                             % obj.ClosureSymmetry)
+        radius = obj.CornerRadius.Value
+        shape, report = sweep_with_report(
+            inputs.wire(obj.Spine, "Spine"), inputs.profile(obj.Profile, "Profile"),
+            solid=obj.Solid, corner=obj.Corner, corner_radius=radius if radius > 0 else None,
+            tolerance=obj.Tolerance, twist=math.radians(obj.Twist.Value),
+            closure_symmetry=obj.ClosureSymmetry)
+        obj.Shape = shape
+        self.set_outputs(obj, SpineDistance=report.spine_distance,
+                         RmfDefect=report.rmf_angle_error,
+                         Orthogonality=report.max_parameter_cosine,
+                         SingularityMargin=report.singularity_margin,
+                         FaceCount=report.face_count)
+
+
+def make_sweep(doc, spine, profile, solid=True, corner="round", corner_radius=None,
+               tolerance=1e-4):
+    """See :func:`rmfsurf_workbench.make_sweep`."""
+    if corner not in CORNERS:
+        raise ValueError("corner: expected one of %s, got %r" % (", ".join(CORNERS), corner))
+    if corner_radius is not None and not corner_radius > 0:
+        raise ValueError("corner_radius: expected a radius > 0 or None, got %r" % corner_radius)
+    spine_links = inputs.link_sub_list(spine, "spine")
+    profile_link = inputs.link_sub(profile, "profile")
+    obj = doc.addObject("Part::FeaturePython", "RmfSweep")
+    SweepFeature(obj)
+    obj.Spine = spine_links
+    obj.Profile = profile_link
+    obj.Solid = bool(solid)
+    obj.Corner = corner
+    obj.CornerRadius = corner_radius or 0.0
+    obj.Tolerance = float(tolerance)
+    attach_view(obj, "RmfSweep", claims=("Profile", "Spine"))
+    hide(inputs.linked_objects(obj.Spine) + inputs.linked_objects(obj.Profile))
+    doc.recompute()
+    return obj
