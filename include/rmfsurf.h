@@ -302,6 +302,12 @@ typedef struct RmfCurve RmfCurve;
 typedef struct RmfFrames RmfFrames;
 
 /**
+ * A closed solid or a sheet of exact faces (opaque). Made by rmf_wire_sweep, freed with
+ * rmf_shape_free. Immutable; may be read from several threads at once.
+ */
+typedef struct RmfShape RmfShape;
+
+/**
  * A piecewise rational tensor-product surface s(u, v) (opaque). Freed with
  * rmf_surface_free. Immutable; may be read from several threads at once.
  */
@@ -351,6 +357,15 @@ typedef struct RmfBox {
  * or any non-zero multiple of it) at parameter t into *point and *tangent. It must not
  * unwind or longjmp; it is called from the calling thread only, during the call it was
  * passed to.
+ *
+ * One rule for every entry point taking a callback: the multiple is found once, from the
+ * callback's own points (the speed |x'| by a fourth-order difference at the middle of the
+ * domain, and the orientation along increasing t), and divided out, so a tangent 1e80 or
+ * 1e-85 times the derivative, or pointing backwards (a negative multiple), gives the same
+ * results as the derivative itself; a tangent within 1e-6 of the derivative is taken as
+ * it is. Tangents should be a constant multiple (a varying one is only its direction to
+ * algorithms that differentiate it, the cone approximations). Subnormal tangents
+ * (components below 2.2e-308) are refused: their direction is not resolved in double.
  */
 typedef void (*RmfCurveCallback)(double t,
                                  void *user,
@@ -591,6 +606,103 @@ typedef struct RmfRrmfQuintic {
 } RmfRrmfQuintic;
 
 /**
+ * What a face of an RmfShape is (values fixed).
+ */
+typedef uint32_t RmfFaceKind;
+
+/**
+ * One face of an RmfShape (a copy; the pointers are borrowed from the shape).
+ */
+typedef struct RmfShapeFace {
+  RmfFaceKind kind;
+  /**
+   * RMF_FACE_SWEPT: the face's surface, borrowed: valid until the shape is freed (do not
+   * free it). NULL for caps.
+   */
+  const struct RmfSurface *surface;
+  /**
+   * RMF_FACE_PLANE: a point of the cap's plane (the wire's end) and its unit normal,
+   * pointing out of the solid. Zero for lateral faces.
+   */
+  struct RmfVec3 plane_origin;
+  struct RmfVec3 plane_normal;
+  /**
+   * RMF_FACE_PLANE: the number of boundary loops (the first is the outer one; the others
+   * are the holes); rmf_shape_face_loop gives them. 0 for lateral faces (their boundary
+   * is their surface's natural boundary).
+   */
+  size_t loop_count;
+  /**
+   * RMF_FACE_SWEPT: the index of the wire edge the face lies along (as given to
+   * rmf_wire_sweep) and of the profile edge it sweeps (Bézier segments of the profile,
+   * then of holes[0], holes[1], ...). Caps: the wire edge at that end, and 0.
+   */
+  size_t spine_edge;
+  size_t profile_edge;
+  /**
+   * 1 if the face's outward normal is −(s_u × s_v) (its surface runs the other way).
+   */
+  uint32_t reversed;
+  /**
+   * Added in 0.2: the loop the profile edge belongs to (0 the profile, 1 + h holes[h]).
+   */
+  size_t profile_loop;
+  /**
+   * Added in 0.2: 1 if the face is the elbow of a round corner after spine_edge.
+   */
+  uint32_t round_corner;
+} RmfShapeFace;
+
+/**
+ * How accurate a wire sweep is (all figures measured on the result).
+ */
+typedef struct RmfSweepReport {
+  /**
+   * Largest sampled distance between a curve edge and its PH cubic spline, in the wire's
+   * units (0 when every edge is a line or an arc).
+   */
+  double spine_distance;
+  /**
+   * Largest angle (radians) between the frames used and the exact RMF plus the twist and
+   * closure turn (linear in arc length); 0 on untwisted lines and arcs.
+   */
+  double rmf_angle_error;
+  /**
+   * Largest |cos| of the angle between the parameter lines of the lateral faces, sampled
+   * on every patch (0 for an exact RMF sweep; a twist or a closure turn tilts them, and
+   * miter legs are ruled between oblique sections).
+   */
+  double max_parameter_cosine;
+  /**
+   * The least singularity margin g = 1 − κ c·n over the sweep (Mäurer & Jüttler Cor. 7;
+   * 1 where the wire is straight), and 1 − cuts/length for miter legs; > 0.
+   */
+  double singularity_margin;
+  /**
+   * Number of faces.
+   */
+  size_t face_count;
+  /**
+   * Added in 0.2: the largest turn of the frame about the tangent across a corner, against
+   * the minimal rotation of the tangent there (round corners: across the elbow; miters:
+   * across the miter plane), radians.
+   */
+  double corner_turn;
+  /**
+   * Added in 0.2: closed wires: the largest distance between the sections where the
+   * wire closes (0 for open wires), in the wire's units.
+   */
+  double seam_gap;
+  /**
+   * Added in 0.2: the largest distance between the sections of consecutive pieces at the
+   * joints inside the wire (rounding at G1 joints; ½θ²·r at near-tangent joints, where a
+   * line meets a curved edge at an angle θ so slight that the line is cut by the curved
+   * edge's normal plane), in the wire's units.
+   */
+  double joint_gap;
+} RmfSweepReport;
+
+/**
  * Which face of the sheet the designed surface is (RmfSheetOptions.reference).
  */
 typedef uint32_t RmfSheetReference;
@@ -759,6 +871,89 @@ typedef struct RmfBezierPatch {
 } RmfBezierPatch;
 
 /**
+ * How sharp (G0) joints of a wire are resolved (values fixed, validated).
+ */
+typedef uint32_t RmfCorner;
+
+/**
+ * Options of rmf_wire_sweep. Initialise with rmf_wire_sweep_options_init, then change
+ * fields; the struct only grows at the end.
+ */
+typedef struct RmfWireSweepOptions {
+  /**
+   * sizeof(RmfWireSweepOptions), set by rmf_wire_sweep_options_init.
+   */
+  size_t struct_size;
+  /**
+   * Largest distance of the PH cubic spline from a curve edge, absolute (default 1e-4).
+   */
+  double tolerance;
+  /**
+   * Largest gap between consecutive edge ends, relative to the wire's size (the diagonal
+   * of its bounding box); default 1e-7, below 1e-2. Gaps within it are closed by moving
+   * the later edge's start onto the earlier edge's end. Also the relative gap within
+   * which a profile loop counts as closed.
+   */
+  double join_tolerance;
+  /**
+   * Sharp joints: RMF_CORNER_ROUND (default) or RMF_CORNER_MITER.
+   */
+  RmfCorner corner;
+  /**
+   * RMF_CORNER_ROUND: the radius (finite, > 0); 0 = 1.5 times the profile's largest
+   * distance from the spine (default).
+   */
+  double corner_radius;
+  /**
+   * f2 at the wire's start, projected onto the normal plane; the zero vector (default)
+   * = the unit normal of the plane through the start tangent and the wire's point
+   * farthest from the tangent line (the wire's plane for a planar wire), or some normal
+   * of a straight wire.
+   */
+  struct RmfVec3 initial_normal;
+  /**
+   * Extra turn about the tangent over the whole wire, radians, linear in arc length
+   * (default 0).
+   */
+  double twist;
+  /**
+   * Closed wires: the frame closes modulo 2π/k with the smallest extra turn (k ≥ 1, e.g.
+   * 4 for a square profile); 0 (default) = 1. The turn must map the profile onto itself.
+   */
+  uint32_t closure_symmetry;
+  /**
+   * 1 (default): a closed solid (refuses open profiles); 0: the lateral faces only.
+   */
+  uint32_t solid;
+} RmfWireSweepOptions;
+
+/**
+ * What an RmfEdge is (values fixed, validated).
+ */
+typedef uint32_t RmfEdgeKind;
+
+/**
+ * One edge of a wire, in either orientation. Unused points are ignored; `curve` is read
+ * only for RMF_EDGE_CURVE (borrowed for the call; the shape keeps nothing of it).
+ */
+typedef struct RmfEdge {
+  RmfEdgeKind kind;
+  struct RmfVec3 points[3];
+  const struct RmfCurve *curve;
+} RmfEdge;
+
+/**
+ * A lateral face: an exact rational RmfSurface (u along the profile edge, v along the
+ * wire).
+ */
+#define RMF_FACE_SWEPT 0
+
+/**
+ * A planar cap at an end of an open wire, bounded by profile loops.
+ */
+#define RMF_FACE_PLANE 1
+
+/**
  * The designed surface is the inner face (the concave side of the bends): the sheet lies
  * on the convex side. The default; the only choice for parts with a vertex on an edge
  * (transitions from polygon corners), whose bend radius is 0 there.
@@ -826,6 +1021,34 @@ typedef struct RmfBezierPatch {
  * SVG 1.1: the flat pattern in millimetres, bend lines dashed.
  */
 #define RMF_SHEET_FORMAT_SVG 3
+
+/**
+ * A straight line from points[0] to points[1].
+ */
+#define RMF_EDGE_LINE 0
+
+/**
+ * A circular arc from points[0] through points[1] to points[2].
+ */
+#define RMF_EDGE_ARC 1
+
+/**
+ * A curve (any RmfCurve: NURBS data, PH, Möbius or RRMF curves, callbacks approximated
+ * first with rmf_ph_spline_approximate, ...) on its whole domain.
+ */
+#define RMF_EDGE_CURVE 2
+
+/**
+ * The corner replaced by a circular arc of corner_radius tangent to both edges (the
+ * edges must lie in the plane of the corner near it): an exact torus elbow.
+ */
+#define RMF_CORNER_ROUND 0
+
+/**
+ * Both legs cut by the plane bisecting the corner, the frame reflected in it (the legs
+ * must be straight lines).
+ */
+#define RMF_CORNER_MITER 1
 
 #ifdef __cplusplus
 extern "C" {
@@ -1385,8 +1608,13 @@ RmfStatus rmf_frames_vector_curve(const struct RmfFrames *frames,
  * @param[out] image Receives μ(point). Untouched on failure.
  * @return RMF_OK on success.
  * @return RMF_ERROR_NULL_POINTER If maps or image is NULL.
+ * Computed without squares of distances: (1e200, 0, 0) in the unit sphere goes to
+ * (1e-200, 0, 0), and images beyond the range of double are refused, never infinite.
+ *
  * @return RMF_ERROR_INVALID_INPUT If count = 0, an inversion is invalid (radius ≤ 0, zero
- *         normal, non-finite), or the point is sent to infinity (a sphere centre).
+ *         normal, non-finite), or the image is not finite: the point is sent to infinity (a
+ *         sphere centre) or beyond ±1.8e308 (e.g. a radius of 1e300 and a point at
+ *         distance 1 from the centre).
  */
 RmfStatus rmf_mobius_point(const struct RmfInversion *maps,
                            size_t count,
@@ -1704,8 +1932,10 @@ RmfStatus rmf_ph_exact_rmf_eval(const struct RmfCurve *ph_spline,
 /**
  * The accuracy of rational frames along a PH cubic spline (e.g. from rmf_ph_rational_rmf):
  * the largest angle about the tangent between them and the exact RMF (closed form, started
- * from the same frame), per spline segment. Frames made with a twist are compared after
- * taking off a twist linear in arc length (their total turn against the RMF at the end).
+ * from the same frame), per spline segment. Frames made with a twist
+ * (rmf_ph_rational_rmf_twisted, also the turn that closes a closed spine) are compared after
+ * taking off that twist, linear in arc length; every other frame is compared with the RMF
+ * itself, so a frame that drifts against the RMF (e.g. a Frenet frame) reports its drift.
  *
  * Size query: with per_segment = NULL and capacity = 0 only segment_count (and max_angle)
  * are written.
@@ -1734,11 +1964,18 @@ RmfStatus rmf_ph_rmf_angle_error(const struct RmfFrames *frames,
  * rmf_sweep_surface): condition (9) evaluated exactly over the profile (roots of a
  * polynomial) and scanned and refined along the spine.
  *
- * @param[in] spine, frames, profile As for rmf_sweep_surface.
+ * The analyses of §2.3 hold for rotation-minimizing frames only: frames that are not an
+ * RMF (Frenet frames, twisted frames, frames of unknown origin) are refused, as are frames
+ * of another spine (breakpoints or tangent differ, as for rmf_sweep_surface).
+ *
+ * @param[in] spine, frames, profile As for rmf_sweep_surface; frames from
+ *            rmf_ph_rational_rmf, rmf_mobius_rrmf_hermite / _approximate, rmf_rrmf_* or
+ *            rmf_mobius_frames of such frames.
  * @param[out] out Receives the margin.
  * @return RMF_OK, RMF_ERROR_NULL_POINTER if an argument is NULL, or
- *         RMF_ERROR_INVALID_INPUT if the frames are not rational frames of the spine, or
- *         frame pieces × profile segments exceed 2^15 (a bound on the work of one call).
+ *         RMF_ERROR_INVALID_INPUT if the frames are not rational frames of the spine (their
+ *         breakpoints or their tangent differ), are not rotation-minimizing, or frame
+ *         pieces × profile segments exceed 2^15 (a bound on the work of one call).
  */
 RmfStatus rmf_sweep_singularity_margin(const struct RmfCurve *spine,
                                        const struct RmfFrames *frames,
@@ -1751,12 +1988,14 @@ RmfStatus rmf_sweep_singularity_margin(const struct RmfCurve *spine,
  * rational RMFs it agrees with the NURBS surface up to the frames' approximation error).
  * Its sign tells elliptic (K > 0) from hyperbolic (K < 0) regions.
  *
- * @param[in] spine, frames, profile As for rmf_sweep_surface.
+ * @param[in] spine, frames, profile As for rmf_sweep_singularity_margin (rotation-minimizing
+ *            frames of the spine).
  * @param[in] u, v Profile and spine parameters inside their domains.
  * @param[out] k Receives K.
  * @return RMF_OK, RMF_ERROR_NULL_POINTER if an argument is NULL, or
  *         RMF_ERROR_INVALID_INPUT if u or v is outside its domain, the frames are not
- *         rational frames of the spine, or frame pieces × profile segments exceed 2^15.
+ *         rotation-minimizing rational frames of the spine, or frame pieces × profile
+ *         segments exceed 2^15.
  */
 RmfStatus rmf_sweep_gaussian_curvature(const struct RmfCurve *spine,
                                        const struct RmfFrames *frames,
@@ -1774,7 +2013,8 @@ RmfStatus rmf_sweep_gaussian_curvature(const struct RmfCurve *spine,
  *
  * Size query: with points = NULL and capacity = 0 only count is written.
  *
- * @param[in] spine, frames, profile As for rmf_sweep_surface.
+ * @param[in] spine, frames, profile As for rmf_sweep_singularity_margin (rotation-minimizing
+ *            frames of the spine).
  * @param[in] v_samples Number of spine parameters, 2 … 2^24.
  * @param[out] points Buffer for capacity points.
  * @param[in] capacity Capacity of points.
@@ -1783,8 +2023,8 @@ RmfStatus rmf_sweep_gaussian_curvature(const struct RmfCurve *spine,
  * @return RMF_ERROR_NULL_POINTER If spine, frames, profile or count is NULL, or points is
  *         NULL with capacity > 0.
  * @return RMF_ERROR_INVALID_INPUT If v_samples < 2 or v_samples × profile segments > 2^24,
- *         the frames are not rational frames of the spine, or frame pieces × profile
- *         segments exceed 2^15.
+ *         the frames are not rotation-minimizing rational frames of the spine, or frame
+ *         pieces × profile segments exceed 2^15.
  * @return RMF_ERROR_BUFFER_TOO_SMALL If 0 < capacity < count; then only count is written.
  */
 RmfStatus rmf_sweep_parabolic_points(const struct RmfCurve *spine,
@@ -2010,6 +2250,76 @@ RmfStatus rmf_rrmf_spline_hermite(const struct RmfVec3 *points,
                                   size_t eta_samples,
                                   struct RmfCurve **curve,
                                   struct RmfFrames **frames);
+
+/**
+ * Frees a shape; its face surfaces and loop curves become invalid. NULL is a no-op.
+ * \since 0.2
+ */
+void rmf_shape_free(struct RmfShape *shape);
+
+/**
+ * The number of faces of a shape (lateral faces first, then the caps); 0 for NULL.
+ * \since 0.2
+ */
+size_t rmf_shape_face_count(const struct RmfShape *shape);
+
+/**
+ * Whether a shape is a closed, consistently oriented solid (1) or a sheet (0); 0 for NULL.
+ * \since 0.2
+ */
+uint32_t rmf_shape_is_solid(const struct RmfShape *shape);
+
+/**
+ * Describes face `index` of a shape.
+ *
+ * @param[in] shape The shape.
+ * @param[in] index 0 ≤ index < rmf_shape_face_count(shape).
+ * @param[out] out Receives the face; its surface pointer is borrowed from the shape.
+ * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if index is out of range.
+ * \since 0.2
+ */
+RmfStatus rmf_shape_face(const struct RmfShape *shape, size_t index, struct RmfShapeFace *out);
+
+/**
+ * Boundary loop `loop` of a planar cap: a closed 3-D curve, counter-clockwise about the
+ * cap's outward normal for the outer loop (index 0), clockwise for holes.
+ *
+ * @param[in] shape The shape.
+ * @param[in] face A face of kind RMF_FACE_PLANE.
+ * @param[in] loop 0 ≤ loop < the face's loop_count.
+ * @param[out] out Receives the curve, borrowed: valid until the shape is freed (do not free it).
+ * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if face or loop is out
+ *         of range (lateral faces have no loops).
+ * \since 0.2
+ */
+RmfStatus rmf_shape_face_loop(const struct RmfShape *shape,
+                              size_t face,
+                              size_t loop,
+                              const struct RmfCurve **out);
+
+/**
+ * The accuracy figures of a wire sweep (see RmfSweepReport).
+ *
+ * @return RMF_OK, or RMF_ERROR_NULL_POINTER if shape or out is NULL.
+ * \since 0.2
+ */
+RmfStatus rmf_shape_report(const struct RmfShape *shape, struct RmfSweepReport *out);
+
+/**
+ * Writes a shape as a STEP AP214 file: a solid as a MANIFOLD_SOLID_BREP (a closed shell of
+ * ADVANCED_FACEs on rational B-spline surfaces and planes, sharing edges and vertices),
+ * a sheet as an open shell. FreeCAD and OpenCascade read it as one valid Solid. The file
+ * is written under a temporary name beside `path` and renamed: on failure nothing is
+ * written at `path`.
+ *
+ * @param[in] shape The shape.
+ * @param[in] path The file's path (NUL-terminated; its stem names the product).
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If shape or path is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If the file cannot be written (the message says why).
+ * \since 0.2
+ */
+RmfStatus rmf_shape_write_step(const struct RmfShape *shape, const char *path);
 
 /**
  * Writes the default options and the struct's size.
@@ -2411,6 +2721,65 @@ RmfStatus rmf_sweep_surface(const struct RmfCurve *spine,
                             const struct RmfFrames *frames,
                             const struct RmfCurve *profile,
                             struct RmfSurface **out);
+
+/**
+ * Writes the default options and their struct_size.
+ *
+ * @param[out] options Receives the defaults (see RmfWireSweepOptions).
+ * @return RMF_OK, or RMF_ERROR_NULL_POINTER if options is NULL.
+ * \since 0.2
+ */
+RmfStatus rmf_wire_sweep_options_init(struct RmfWireSweepOptions *options);
+
+/**
+ * Sweeps a planar profile along a wire of lines, arcs and curves (rmfsurf's wire sweep):
+ *
+ * - the edges may come in either orientation; each must start where the previous one
+ *   ends (within options->join_tolerance); a wire whose end meets its start is closed;
+ * - lines and arcs (also NURBS segments that are exactly straight or circular) are swept
+ *   exactly: along a line the rotation-minimizing frame (RMF) is constant and a circle
+ *   gives an exact cylinder patch, along an arc the frame turns with it and the face is
+ *   rational of degree 2 along the arc (an exact torus patch for a circle). Other curves
+ *   are approximated by a PH cubic spline within options->tolerance and carry its rational
+ *   RMF (Mäurer & Jüttler, eqs. (29), (36)–(42)). One RMF runs along the whole wire: it
+ *   is carried across every joint without a turn about the tangent;
+ * - sharp joints are rounded (a tangent arc, exact torus elbow) or mitred (options->corner);
+ * - a closed wire closes without a seam: the RMF's holonomy is cancelled by the smallest
+ *   turn modulo 2π/closure_symmetry, spread linearly in arc length;
+ * - the profile (x along f2, y along f3, z = 0) is split at its Bézier segment joints:
+ *   one lateral face per profile segment per line, quarter arc, or curve edge. With
+ *   options->solid the profile and the holes must be closed, and an open wire gets planar
+ *   caps: the faces form a closed, outward-oriented solid sharing its edges.
+ *
+ * Refused before anything is built: a profile reaching past the centre of curvature of an
+ * arc, corner or curve (Mäurer & Jüttler Cor. 7), miter cuts that cross inside the
+ * profile, a corner radius that does not fit the edges; the message names the edge or
+ * joint and gives the largest (or smallest) allowed value.
+ *
+ * @param[in] edges edge_count edges (≥ 1), consecutive along the wire.
+ * @param[in] edge_count Number of edges.
+ * @param[in] profile The outer profile loop (a curve in the normal plane, z = 0).
+ * @param[in] holes hole_count inner loops (closed, inside the profile, disjoint), or NULL
+ *            when hole_count is 0. Need a closed profile.
+ * @param[in] hole_count Number of holes.
+ * @param[in] options NULL for the defaults, or initialised by rmf_wire_sweep_options_init.
+ * @param[out] out Receives the shape; free with rmf_shape_free. Untouched on failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If edges (with edge_count > 0), profile, a hole, holes
+ *         (with hole_count > 0) or out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If an edge, the profile, a hole or an option is invalid
+ *         or the sweep would fold (the message names the edge, joint, loop or option).
+ * @return RMF_ERROR_NO_SOLUTION / RMF_ERROR_NOT_CONVERGED If a curve edge admits no PH
+ *         cubic spline within the tolerance (e.g. a cusp).
+ * \since 0.2
+ */
+RmfStatus rmf_wire_sweep(const struct RmfEdge *edges,
+                         size_t edge_count,
+                         const struct RmfCurve *profile,
+                         const struct RmfCurve *const *holes,
+                         size_t hole_count,
+                         const struct RmfWireSweepOptions *options,
+                         struct RmfShape **out);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -10,10 +10,10 @@ use rmfsurf_capi::mobius::*;
 use rmfsurf_capi::ph_cubic::*;
 use rmfsurf_capi::rrmf_quintic::*;
 use rmfsurf_capi::shape::*;
+use rmfsurf_capi::sheet::*;
 use rmfsurf_capi::status::{rmf_last_error, rmf_status_name};
 use rmfsurf_capi::surface::*;
 use rmfsurf_capi::wire::*;
-use rmfsurf_capi::sheet::*;
 use rmfsurf_capi::{RmfCurve, RmfFrames, RmfShape, RmfStatus, RmfVec2, RmfVec3};
 use std::ffi::{c_void, CStr};
 use std::ptr::{null, null_mut};
@@ -403,8 +403,10 @@ fn transition_with(
 /// and the part is freed after.
 fn with_part(call: impl Fn(*mut RmfConeSpline) -> RmfStatus) -> RmfStatus {
     let (bottom, top) = (square_curve(), circle_curve(v(0.1, 0., 1.), 0.3));
-    let mut options = RmfSheetOptions::default();
-    options.tolerance = 1e-2;
+    let options = RmfSheetOptions {
+        tolerance: 1e-2,
+        ..Default::default()
+    };
     let mut part = null_mut();
     unsafe {
         assert_eq!(
@@ -1206,6 +1208,9 @@ fn rows() -> Vec<Row> {
                 rmf_shape_free(shape);
                 rmf_curve_free(profile);
                 status
+            },
+        },
+        Row {
             what: "transition curve not closed",
             function: "rmf_cone_spline_transition",
             expected: INVALID,

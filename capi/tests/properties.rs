@@ -254,8 +254,7 @@ proptest! {
     ) {
         let corners = [DVec3::new(-1.0, -1.0, 0.0), DVec3::new(1.0, -1.0, 0.0), DVec3::new(1.0, 1.0, 0.0), DVec3::new(-1.0, 1.0, 0.0)];
         let (bottom, top) = (polygon_handle(&corners), circle_handle(DVec3::new(0.0, 0.0, 1.0), 0.4));
-        let mut options = RmfSheetOptions::default();
-        options.tolerance = 1e-2;
+        let mut options = RmfSheetOptions { tolerance: 1e-2, ..Default::default() };
         let field = match which {
             0 => { options.thickness = value.min(0.0); "options->thickness" }
             1 => { options.k_factor = if value.is_nan() { value } else { value.abs() + 1.0 }; "options->k_factor" }
@@ -453,6 +452,8 @@ proptest! {
         let (ra, rb) = (unit.report(), shape.report());
         prop_assert!((ra.singularity_margin - rb.singularity_margin).abs() <= 1e-9);
     }
+}
+
 /// A closed polygon through `corners` as a curve handle (degree 1).
 fn polygon_handle(corners: &[DVec3]) -> *mut rmfsurf_capi::RmfCurve {
     let mut poles: Vec<RmfVec3> = corners.iter().map(|&c| vec3(c)).collect();
@@ -518,9 +519,11 @@ fn sheet_transition(
     thickness: f64,
 ) -> Option<Transition> {
     let (bottom, top) = (polygon_handle(corners), circle_handle(centre, radius));
-    let mut options = RmfSheetOptions::default();
-    options.tolerance = tolerance;
-    options.thickness = thickness;
+    let options = RmfSheetOptions {
+        tolerance,
+        thickness,
+        ..Default::default()
+    };
     let mut part = null_mut();
     let status = unsafe { rmf_cone_spline_transition(bottom, top, &options, &mut part) };
     unsafe {

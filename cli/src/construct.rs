@@ -2,7 +2,9 @@
 //! frames by the chosen method, the sweep; or the cone spline, its surface strip and its
 //! development. Failures of the geometry are reported at the input field they come from.
 
-use crate::job::{ConeJob, Developable as Input, Method, SheetInput, SheetJob, Spine, SweepJob, WireEdge, WireJob};
+use crate::job::{
+    ConeJob, Developable as Input, Method, SheetInput, SheetJob, Spine, SweepJob, WireEdge, WireJob,
+};
 use crate::json::InputError;
 use rmfsurf::glam::DVec3;
 use rmfsurf::metrics::nearest_parameter;

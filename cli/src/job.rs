@@ -663,7 +663,7 @@ fn read_closed_curve(field: &Field) -> InputResult<NurbsCurve> {
             let direction_field = body.required("direction")?;
             let d = direction_field.vec3()?;
             let x = d - d.dot(normal) * normal;
-            if !(x.length() > 1e-12 * d.length()) {
+            if x.length().is_nan() || x.length() <= 1e-12 * d.length() {
                 return direction_field.error("must not be parallel to the normal");
             }
             let x = x.normalize();
@@ -692,7 +692,7 @@ fn orthonormal_to(n: DVec3) -> DVec3 {
 fn plane_normal(body: &Field) -> InputResult<DVec3> {
     let field = body.required("normal")?;
     let n = field.vec3()?;
-    if !(n.length() > 0.0) {
+    if n.length().is_nan() || n.length() <= 0.0 {
         return field.error("must not be zero");
     }
     Ok(n.normalize())

@@ -21,8 +21,8 @@ pub mod mobius;
 pub mod ph_cubic;
 pub mod rrmf_quintic;
 pub mod session;
-pub mod wire;
 pub mod sheet;
+pub mod wire;
 
 use session::Session;
 
@@ -74,6 +74,8 @@ pub fn cone_spline(input: &[u8]) {
 pub fn wire(input: &[u8]) {
     let ops: Vec<fn(&mut Session)> = wire::OPS.iter().chain(ph_cubic::OPS).copied().collect();
     run(input, &ops)
+}
+
 /// Sheet-metal parts: transitions, layers, flat patterns, marks, exports.
 pub fn sheet(input: &[u8]) {
     run(input, sheet::OPS)

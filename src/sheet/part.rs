@@ -414,7 +414,7 @@ impl SheetPart {
         let local = self.frame.to_internal(y);
         let (p, distance) = surface_to_part(&self.part, self.layers.offset(layer), local);
         let distance = distance * self.frame.scale;
-        if !(distance <= max_distance) {
+        if distance.is_nan() || distance > max_distance {
             return invalid!(
                 "{name} = {y} is {distance:.3e} from the part's {layer:?} layer (max_distance = {max_distance:.3e})"
             );

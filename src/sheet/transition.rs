@@ -208,7 +208,7 @@ impl Developable for HullStrip<'_> {
         let (p, q, nu) = self.contacts(t);
         let d = q - p;
         let length = d.length();
-        if !(length > 0.0) {
+        if length.is_nan() || length <= 0.0 {
             return no_solution!("a ruling of the transition has zero length");
         }
         Ok(Ruling {

@@ -198,11 +198,11 @@ impl Similarity {
         }
     }
 
-    pub fn to_user(&self, x: DVec3) -> DVec3 {
+    pub fn to_user(self, x: DVec3) -> DVec3 {
         self.origin + self.scale * x
     }
 
-    pub fn to_internal(&self, x: DVec3) -> DVec3 {
+    pub fn to_internal(self, x: DVec3) -> DVec3 {
         (x - self.origin) / self.scale
     }
 
