@@ -50,7 +50,11 @@ def vector(p: Any) -> Any:
 def _part_curve_data(curve: Any) -> NurbsCurve:
     curve = curve.copy()
     if curve.isPeriodic():
+        # FreeCAD 0.20's setNotPeriodic leaves the end knots unclamped (multiplicity 1);
+        # the segment over the whole period clamps them.
+        a, b = curve.FirstParameter, curve.LastParameter
         curve.setNotPeriodic()
+        curve.segment(a, b)
     knots = flat_knots(curve.getKnots(), curve.getMultiplicities())
     return NurbsCurve(curve.Degree, np.array([tuple(p) for p in curve.getPoles()]),
                       np.array(curve.getWeights()), knots)
