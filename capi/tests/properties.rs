@@ -234,7 +234,9 @@ proptest! {
         prop_assert_eq!(a.report.pieces, b.report.pieces);
         for k in 0..2 {
             let (ea, eb) = (a.report.edge_distance[k], b.report.edge_distance[k] / scale);
-            prop_assert!(ea <= 1e-2 && (ea - eb).abs() <= 1e-6 * ea.max(1e-9), "edge {}: {} vs {}", k, ea, eb);
+            // Edges lie on the curves to ~1e-10 of the part's size (rounding of the trims and
+            // of the sampled distance), where the two copies may differ; above it, 1e-6.
+            prop_assert!(ea <= 1e-2 && (ea - eb).abs() <= 1e-6 * ea + 1e-9, "edge {}: {} vs {}", k, ea, eb);
         }
         let (area_a, area_b) = (outline_area(&a.edges, 1.0), outline_area(&b.edges, scale));
         prop_assert!(area_a > 0.0, "counter-clockwise");

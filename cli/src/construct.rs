@@ -62,7 +62,7 @@ pub enum Outcome {
 fn at(path: &str) -> impl Fn(rmfsurf::Error) -> InputError + '_ {
     move |e| InputError {
         path: path.to_string(),
-        message: e.to_string(),
+        message: e.message(),
     }
 }
 
@@ -115,7 +115,7 @@ pub fn run_wire(job: &WireJob) -> Result<Shape, InputError> {
                 },
                 WireEdge::Nurbs(n) => Edge::Curve(n.to_piecewise().map_err(|e| InputError {
                     path: format!("sweep.spine.wire[{k}].nurbs"),
-                    message: e.to_string(),
+                    message: e.message(),
                 })?),
             })
         })
@@ -123,7 +123,7 @@ pub fn run_wire(job: &WireJob) -> Result<Shape, InputError> {
     let curve = |n: &rmfsurf::NurbsCurve, path: String| {
         n.to_piecewise().map_err(|e| InputError {
             path,
-            message: e.to_string(),
+            message: e.message(),
         })
     };
     let profile = curve(&job.profile, "sweep.profile".into())?;
@@ -144,7 +144,7 @@ pub fn run_wire(job: &WireJob) -> Result<Shape, InputError> {
     };
     sweep_wire(&edges, &profile, &holes, &options).map_err(|e| InputError {
         path: wire_blame(&e.message()),
-        message: e.to_string(),
+        message: e.message(),
     })
 }
 

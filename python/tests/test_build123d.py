@@ -17,6 +17,7 @@ from OCP.TopAbs import TopAbs_FACE  # noqa: E402
 from OCP.TopExp import TopExp_Explorer  # noqa: E402
 from OCP.BRepAdaptor import BRepAdaptor_Surface  # noqa: E402
 from OCP.GeomAbs import GeomAbs_Plane  # noqa: E402
+from OCP.TopoDS import TopoDS  # noqa: E402
 
 needs_wire_sweep = pytest.mark.skipif(
     not rmfsurf.shapes._has_wire_sweep(),
@@ -44,7 +45,7 @@ def lateral_cosine(shape):
     """max |cos| between parameter lines over the non-planar faces."""
     worst, explorer = 0.0, TopExp_Explorer(shape.wrapped, TopAbs_FACE)
     while explorer.More():
-        f = explorer.Current()
+        f = TopoDS.Face(explorer.Current())
         if BRepAdaptor_Surface(f).GetType() != GeomAbs_Plane:
             worst = max(worst, parameter_cosine(f))
         explorer.Next()

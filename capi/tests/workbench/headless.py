@@ -184,8 +184,9 @@ def divergence_volume(shape, parts=8):
     derivatives and oriented normals — independent of FreeCAD's volume integration."""
     normals = [f.normalAt(*f.ParameterRange[::2]) for f in shape.Faces
                if isinstance(f.Surface, Part.Plane)]
-    a = normals[0].cross(next((n for n in normals if n.cross(normals[0]).Length > 1e-6),
-                              V(0.3, 0.5, 0.7)))
+    # Without caps (a closed ring) any direction serves.
+    a = V(0.3, 0.5, 0.7) if not normals else normals[0].cross(
+        next((n for n in normals if n.cross(normals[0]).Length > 1e-6), V(0.3, 0.5, 0.7)))
     a.normalize()
     if any(abs(n.dot(a)) > 1e-12 for n in normals):
         raise ValueError("no direction lies in every cap's plane")
