@@ -167,9 +167,8 @@ impl SheetPart {
         options: &SheetOptions,
     ) -> Result<Self> {
         options.check()?;
-        if !(v_min.is_finite() && v_max.is_finite()) || v_min >= v_max {
-            return invalid!("v_min = {v_min}, v_max = {v_max} must be finite with v_min < v_max");
-        }
+        // The distances checked in the caller's units (the messages quote them).
+        TangentSurface::new(curve, v_min, v_max)?;
         // The frame of the region: the curve and its tangent lines out to the rails.
         let (lo, hi) = curve.domain();
         let points: Vec<DVec3> = (0..=64)
