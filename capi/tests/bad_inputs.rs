@@ -432,8 +432,10 @@ fn saddle_surface() -> *mut RmfSurface {
 /// (default options at tolerance 1e-2); the part, if any, is freed.
 fn tangent_part_with(v_min: f64, v_max: f64) -> RmfStatus {
     let circle = circle_curve(v(0., 0., 0.), 1.0);
-    let mut options = RmfSheetOptions::default();
-    options.tolerance = 1e-2;
+    let options = RmfSheetOptions {
+        tolerance: 1e-2,
+        ..Default::default()
+    };
     let mut out = null_mut();
     unsafe {
         let status = rmf_cone_spline_tangent_part(circle, v_min, v_max, &options, &mut out);
