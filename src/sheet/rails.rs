@@ -5,15 +5,17 @@
 //! trimmed on every piece between the two rails instead of between two parallel circles.
 //!
 //! On a piece, the ruling at the arc parameter v is L(v) + ρ e(v); the rail meets it (to
-//! within the fit) at the distance ρᵢ(v) of the rail point nearest to that line. ρᵢ is
+//! within the fit) at the distance ρᵢ(v) of its crossing with the plane through the ruling
+//! and the surface normal ([`Rail::crossing`]). ρᵢ is
 //! fitted by the cubic Hermite polynomial of its values and slopes at the piece's end
 //! rulings — shared with the neighbours, so the boundary is continuous, and tangent
 //! continuous to the accuracy of the slopes — and the piece's boundary is the exactly
 //! rational curve L(v) + ρᵢ(v) e(v) of degree 2 + 3 (the ruling segments from boundary to
-//! boundary: degree (1, 5)). A piece whose boundary strays from its rail by more than the
-//! tolerance is halved (the surface is unchanged; each half gets its own cubic). The cone
-//! fit takes half the tolerance and the boundaries the other half, so every boundary lies
-//! within the tolerance of the input's.
+//! boundary: degree (1, 5)). The cone fit takes half the tolerance and the boundaries the
+//! other half, so every boundary lies within the tolerance of the input's: a piece whose
+//! boundary strays from its rail by more than its half is halved (the surface is unchanged;
+//! each half gets its own cubic). A fit that puts a cone vertex on the part (the paper's Ω
+//! is the part here) is repeated at a quarter of the fit tolerance.
 
 use super::thickness::bend_sign;
 use super::transition::TransitionFit;
