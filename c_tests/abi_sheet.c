@@ -3,7 +3,9 @@
  * its report, layer surfaces and boundaries, flat pattern, marks both ways and file
  * exports; NULL pointers, bad options (struct_size, thickness, K-factor, reference,
  * tolerance), bad curves (open, not planar, crossing), marks outside the part and
- * handles that are not parts. Every failure returns its status with a message naming the
+ * handles that are not parts; a part between the rails of a ruled developable and of a
+ * tangent surface, checked with the suite's own evaluator (edges against the rails, flat
+ * area against the formed neutral layer). Every failure returns its status with a message naming the
  * argument and leaves out-pointers untouched; the program runs under valgrind and ASan.
  */
 #include <math.h>
@@ -258,6 +260,183 @@ static void test_part(RmfCurve *bottom, RmfCurve *top) {
     rmf_cone_spline_free(part);
 }
 
+/* The rail x(t) + s x'(t) of the twisted cubic x = (t, t², t³). */
+static RmfVec3 rail(double s, double t) { return vec3(t + s, t * t + 2 * s * t, t * t * t + 3 * s * t * t); }
+
+/* Distance from p to the rail s over t ∈ [0.2, 1.2]: a dense scan, then golden sections. */
+static double rail_distance(double s, RmfVec3 p) {
+    const int n = 4000;
+    const double g = 0.5 * (sqrt(5.0) - 1.0);
+    double best = 0.2, d = INFINITY, lo, hi;
+    int i, k;
+    for (i = 0; i <= n; i++) {
+        const double t = 0.2 + (double)i / n, e = ne_dist(rail(s, t), p);
+        if (e < d) d = e, best = t;
+    }
+    lo = fmax(0.2, best - 1.0 / n);
+    hi = fmin(1.2, best + 1.0 / n);
+    for (k = 0; k < 100; k++) {
+        const double a = hi - g * (hi - lo), b = lo + g * (hi - lo);
+        if (ne_dist(rail(s, a), p) < ne_dist(rail(s, b), p))
+            hi = b;
+        else
+            lo = a;
+    }
+    return fmin(d, ne_dist(rail(s, 0.5 * (lo + hi)), p));
+}
+
+/* The Bézier poles of the cubic rail s on [a, b] by blossoming: x's blossom plus s times
+ * that of x′ (degree 2, written as a cubic). */
+static RmfVec3 rail_pole(double s, double a, double b, int i) {
+    double u[3];
+    int k;
+    double m, sym2, prod;
+    for (k = 0; k < 3; k++) u[k] = k < i ? b : a;
+    m = (u[0] + u[1] + u[2]) / 3;
+    sym2 = (u[0] * u[1] + u[0] * u[2] + u[1] * u[2]) / 3;
+    prod = u[0] * u[1] * u[2];
+    return vec3(m + s, sym2 + 2 * s * m, prod + 3 * s * sym2);
+}
+
+/* Area of a NURBS surface by 8 × 8 Gauss–Legendre points per knot span (own evaluator). */
+static double nurbs_area(const RmfNurbsSurface *view) {
+    static const double x[8] = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290, -0.1834346424956498,
+                                0.1834346424956498,  0.5255324099163290,  0.7966664774136267,  0.9602898564975363};
+    static const double w[8] = {0.1012285362903763, 0.2223810344533745, 0.3137066458778873, 0.3626837833783620,
+                                0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
+    double area = 0;
+    size_t a, b;
+    int i, j;
+    for (a = 0; a + 1 < view->knot_count_u; a++) {
+        const double u0 = view->knots_u[a], u1 = view->knots_u[a + 1];
+        if (u1 <= u0) continue;
+        for (b = 0; b + 1 < view->knot_count_v; b++) {
+            const double v0 = view->knots_v[b], v1 = view->knots_v[b + 1];
+            if (v1 <= v0) continue;
+            for (i = 0; i < 8; i++)
+                for (j = 0; j < 8; j++) {
+                    RmfVec3 d[3][3], n;
+                    ne_surface_derivatives(view, u0 + 0.5 * (u1 - u0) * (x[i] + 1), v0 + 0.5 * (v1 - v0) * (x[j] + 1), d);
+                    n = vec3(d[1][0].y * d[0][1].z - d[1][0].z * d[0][1].y, d[1][0].z * d[0][1].x - d[1][0].x * d[0][1].z,
+                             d[1][0].x * d[0][1].y - d[1][0].y * d[0][1].x);
+                    area += 0.25 * (u1 - u0) * (v1 - v0) * w[i] * w[j] * ne_norm(n);
+                }
+        }
+    }
+    return area;
+}
+
+/* Signed area enclosed by the cutting outline: chords, plus the circular segments of arcs. */
+static double outline_area(const RmfFlatEdge *edges, size_t n) {
+    double twice = 0;
+    size_t i;
+    for (i = 0; i < n; i++) {
+        if (edges[i].layer != RMF_FLAT_CUT) continue;
+        twice += edges[i].from.x * edges[i].to.y - edges[i].from.y * edges[i].to.x;
+        if (edges[i].kind == RMF_FLAT_EDGE_ARC)
+            twice += edges[i].radius * edges[i].radius * (edges[i].sweep - sin(edges[i].sweep));
+    }
+    return 0.5 * twice;
+}
+
+/* The part between the rails x + x′/2 and x + x′ of the twisted cubic's tangent surface
+ * (a degree (1, 3) NURBS): its edges against the rails and its flat pattern's area
+ * against the formed neutral layer's, both with the suite's own evaluator; the tangent
+ * surface form; bad inputs. */
+static void test_rails(void) {
+    RmfVec3 poles[8];
+    static const double knots_u[4] = {0, 0, 1, 1}, knots_v[8] = {0.2, 0.2, 0.2, 0.2, 1.2, 1.2, 1.2, 1.2};
+    static const RmfVec3 saddle_poles[4] = {{-1, -1, 1}, {-1, 1, -1}, {1, -1, -1}, {1, 1, 1}};
+    static const double unit[4] = {0, 0, 1, 1};
+    RmfSurface *surface = NULL, *saddle = NULL, *neutral = NULL;
+    RmfConeSpline *part = NULL, *untouched = sentinel_part();
+    RmfSheetOptions o;
+    RmfSheetReport r;
+    RmfNurbsSurface view;
+    RmfFlatEdge *edges = NULL;
+    RmfCurve *curve = NULL;
+    size_t n_edges = 0, count = 0;
+    int i, side;
+    for (i = 0; i < 4; i++) {
+        poles[i] = rail_pole(0.5, 0.2, 1.2, i);
+        poles[4 + i] = rail_pole(1.0, 0.2, 1.2, i);
+    }
+    CHECK_STATUS(rmf_nurbs_surface_create(1, 3, poles, NULL, 2, 4, knots_u, 4, knots_v, 8, &surface), RMF_OK, "");
+    rmf_sheet_options_init(&o);
+    o.tolerance = 1e-4;
+    o.thickness = 0.02;
+    o.flat_tolerance = 1e-9;
+    CHECK_STATUS(rmf_cone_spline_part(surface, &o, &part), RMF_OK, "");
+    if (part) {
+        double worst[2] = {0, 0}, flat, formed = 0;
+        CHECK_STATUS(rmf_cone_spline_part_report(part, &r), RMF_OK, "");
+        CHECK(r.closed == 0 && r.pieces >= 2, "an open part of several pieces");
+        CHECK(r.deviation <= 1e-4 && r.edge_distance[0] <= 1e-4 && r.edge_distance[1] <= 1e-4, "within the tolerance");
+        for (side = 0; side < 2; side++) {
+            RmfCurve *edge = NULL;
+            RmfNurbsCurve ev;
+            CHECK_STATUS(rmf_cone_spline_part_boundary(part, RMF_SHEET_LAYER_REFERENCE, (uint32_t)side, &edge), RMF_OK, "");
+            if (!edge) continue;
+            CHECK_STATUS(rmf_curve_nurbs(edge, &ev), RMF_OK, "");
+            for (i = 0; i <= 400; i++) {
+                RmfVec3 d[3];
+                const double t0 = ev.knots[0], t1 = ev.knots[ev.knot_count - 1];
+                ne_curve_derivatives(&ev, t0 + (t1 - t0) * i / 400.0, d);
+                worst[side] = fmax(worst[side], rail_distance(side ? 1.0 : 0.5, d[0]));
+            }
+            rmf_curve_free(edge);
+        }
+        printf("  ruled part between rails: %zu pieces, edges %.3e / %.3e from the rails (own evaluator)\n", r.pieces,
+               worst[0], worst[1]);
+        CHECK(worst[0] <= 1e-4 && worst[1] <= 1e-4, "the edges lie within the tolerance of the rails");
+        CHECK(worst[0] > 1e-9 || worst[1] > 1e-9, "the measurement sees the fit (not trivially zero)");
+        CHECK_STATUS(rmf_cone_spline_flat_pattern(part, NULL, 0, &n_edges), RMF_OK, "");
+        edges = (RmfFlatEdge *)calloc(n_edges, sizeof(RmfFlatEdge));
+        CHECK_STATUS(rmf_cone_spline_flat_pattern(part, edges, n_edges, &count), RMF_OK, "");
+        flat = outline_area(edges, count);
+        CHECK_STATUS(rmf_cone_spline_part_surface(part, RMF_SHEET_LAYER_NEUTRAL, &neutral), RMF_OK, "");
+        if (neutral) {
+            CHECK_STATUS(rmf_surface_nurbs(neutral, &view), RMF_OK, "");
+            formed = nurbs_area(&view);
+            rmf_surface_free(neutral);
+        }
+        printf("  flat area %.12f vs formed neutral %.12f (relative %.1e)\n", flat, formed, fabs(flat - formed) / formed);
+        CHECK(flat > 0 && fabs(flat - formed) <= 1e-9 * formed, "flat area = formed neutral area to 1e-9");
+        free(edges);
+        rmf_cone_spline_free(part);
+    }
+    /* The tangent surface form: the twisted cubic itself, rails at 0.3 and 0.9. */
+    {
+        RmfVec3 cp[4];
+        static const double knots[8] = {0.2, 0.2, 0.2, 0.2, 1.2, 1.2, 1.2, 1.2};
+        for (i = 0; i < 4; i++) cp[i] = rail_pole(0.0, 0.2, 1.2, i);
+        CHECK_STATUS(rmf_nurbs_curve_create(3, cp, NULL, 4, knots, 8, &curve), RMF_OK, "");
+        part = NULL;
+        CHECK_STATUS(rmf_cone_spline_tangent_part(curve, 0.3, 0.9, &o, &part), RMF_OK, "");
+        if (part) {
+            CHECK_STATUS(rmf_cone_spline_part_report(part, &r), RMF_OK, "");
+            CHECK(r.edge_distance[0] <= 1e-4 && r.edge_distance[1] <= 1e-4, "tangent part within the tolerance");
+            rmf_cone_spline_free(part);
+        }
+        CHECK_STATUS(rmf_cone_spline_tangent_part(curve, -0.3, 0.9, &o, &untouched), RMF_ERROR_INVALID_INPUT, "contains 0");
+        CHECK_STATUS(rmf_cone_spline_tangent_part(curve, 0.9, 0.3, &o, &untouched), RMF_ERROR_INVALID_INPUT, "v_min");
+        CHECK_STATUS(rmf_cone_spline_tangent_part(curve, NAN, 0.3, &o, &untouched), RMF_ERROR_INVALID_INPUT, "v_min");
+        CHECK_STATUS(rmf_cone_spline_tangent_part(NULL, 0.3, 0.9, &o, &untouched), RMF_ERROR_NULL_POINTER, "curve");
+        CHECK_STATUS(rmf_cone_spline_tangent_part(curve, 0.3, 0.9, &o, NULL), RMF_ERROR_NULL_POINTER, "out");
+        rmf_curve_free(curve);
+    }
+    /* Bad inputs: not developable, NULL, bad options; nothing written. */
+    CHECK_STATUS(rmf_nurbs_surface_create(1, 1, saddle_poles, NULL, 2, 2, unit, 4, unit, 4, &saddle), RMF_OK, "");
+    CHECK_STATUS(rmf_cone_spline_part(saddle, &o, &untouched), RMF_ERROR_INVALID_INPUT, "not developable");
+    CHECK_STATUS(rmf_cone_spline_part(NULL, &o, &untouched), RMF_ERROR_NULL_POINTER, "surface");
+    CHECK_STATUS(rmf_cone_spline_part(surface, &o, NULL), RMF_ERROR_NULL_POINTER, "out");
+    o.k_factor = -0.1;
+    CHECK_STATUS(rmf_cone_spline_part(surface, &o, &untouched), RMF_ERROR_INVALID_INPUT, "options->k_factor");
+    CHECK(untouched == sentinel_part(), "failing calls write nothing");
+    rmf_surface_free(saddle);
+    rmf_surface_free(surface);
+}
+
 int main(void) {
     RmfCurve *bottom = square(0.5, 0), *top = circle(0.1, 0, 1, 0.3);
     test_options();
@@ -266,6 +445,7 @@ int main(void) {
         test_bad_curves(bottom, top);
         test_part(bottom, top);
     }
+    test_rails();
     rmf_curve_free(bottom);
     rmf_curve_free(top);
     return rmf_check_exit_code("abi_sheet");

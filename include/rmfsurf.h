@@ -2370,6 +2370,61 @@ RmfStatus rmf_cone_spline_transition(const struct RmfCurve *bottom,
                                      struct RmfConeSpline **out);
 
 /**
+ * The part of a developable ruled surface between its two rails: the surface's
+ * boundaries u = u₀ and u = u₁ (a NURBS of degree (1, n), rulings along u), over its whole
+ * v domain. The developable is approximated by a cone spline (Leopoldseder & Pottmann)
+ * within half the tolerance, with no cone vertex on the part, and each piece is trimmed
+ * between the rails — the ruling segments run from rail to rail (degree (1, 5) patches),
+ * G1 across pieces, each boundary within the tolerance of its rail — not between two
+ * parallel circles. The sheet (thickness, K-factor) is that of `options`.
+ *
+ * @param[in] surface A surface with degree_u = 1 and pole_count_u = 2 (e.g. from
+ *            rmf_nurbs_surface_create); its parameter v runs along the rails. Read during
+ *            the call only.
+ * @param[in] options The sheet and tolerances, or NULL for the defaults; read during the
+ *            call only.
+ * @param[out] out Receives the part (an RmfConeSpline whose pieces are the designed
+ *             surface's); free with rmf_cone_spline_free. Untouched on failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If surface or out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If the surface is not of degree 1 in u with one span, is
+ *         not developable (the message gives its max |K|·size²), or an option is out of
+ *         range (as for rmf_cone_spline_transition).
+ * @return RMF_ERROR_NO_SOLUTION If a ruling of the surface is degenerate.
+ * @return RMF_ERROR_NOT_CONVERGED If the tolerance needs more than max_pieces pieces, or
+ *         the cone fit keeps a vertex on the part.
+ * \since 0.2
+ */
+RmfStatus rmf_cone_spline_part(const struct RmfSurface *surface,
+                               const struct RmfSheetOptions *options,
+                               struct RmfConeSpline **out);
+
+/**
+ * The part of the tangent surface x(t) + v·x′(t)/|x′(t)| of a regular curve over the
+ * curve's whole domain, between the rails v = v_min and v = v_max: a cone spline within
+ * half the tolerance, trimmed on every piece between the two rails, as rmf_cone_spline_part.
+ *
+ * @param[in] curve A regular rational curve (NURBS data or a computed curve; not a
+ *            callback curve). Read during the call only.
+ * @param[in] v_min, v_max Signed distances along the unit tangent, finite, v_min < v_max,
+ *            0 outside [v_min, v_max] (the curve itself is the surface's edge of regression).
+ * @param[in] options The sheet and tolerances, or NULL for the defaults.
+ * @param[out] out Receives the part; free with rmf_cone_spline_free. Untouched on failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If curve or out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If curve is a callback curve, v_min or v_max is not
+ *         finite, v_min ≥ v_max, [v_min, v_max] contains 0, or an option is out of range.
+ * @return RMF_ERROR_NO_SOLUTION If the curve is not regular.
+ * @return RMF_ERROR_NOT_CONVERGED As for rmf_cone_spline_part.
+ * \since 0.2
+ */
+RmfStatus rmf_cone_spline_tangent_part(const struct RmfCurve *curve,
+                                       double v_min,
+                                       double v_max,
+                                       const struct RmfSheetOptions *options,
+                                       struct RmfConeSpline **out);
+
+/**
  * What a part's construction measured: pieces, closure, distances of the surface and of
  * the edges from the input, the smallest bend radius, the layers' distances.
  *

@@ -1,5 +1,6 @@
 //! `RmfSheetOptions` and the sheet-metal parts of cone splines: transition pieces between
-//! two closed curves (rmf_cone_spline_transition), the sheet's layers and closed solid,
+//! two closed curves (rmf_cone_spline_transition), parts between the rails of a ruled
+//! developable or of a tangent surface (rmf_cone_spline_part, rmf_cone_spline_tangent_part), the sheet's layers and closed solid,
 //! the neutral layer's flat pattern for the cutter, and the maps between flat and formed.
 //! A part is an `RmfConeSpline` handle: the cone spline accessors (pieces, surface strips,
 //! development, offsets) work on its designed surface; the functions here need a part.
@@ -218,7 +219,7 @@ unsafe fn options_from(options: *const RmfSheetOptions) -> FfiResult<SheetOption
 fn part_of<'a>(spline: &'a RmfConeSpline, name: &str) -> FfiResult<&'a SheetPart> {
     spline.part.as_deref().ok_or_else(|| {
         FfiError::Core(rmfsurf::Error::invalid_input(format!(
-            "{name} is not a sheet-metal part (make it with rmf_cone_spline_transition or rmf_cone_spline_part)"
+            "{name} is not a sheet-metal part (make it with rmf_cone_spline_transition, rmf_cone_spline_part or rmf_cone_spline_tangent_part)"
         )))
     })
 }
@@ -283,6 +284,82 @@ pub unsafe extern "C" fn rmf_cone_spline_transition(
         let options = options_from(options)?;
         let part =
             SheetPart::transition(bottom.rational("bottom")?, top.rational("top")?, &options)?;
+        write(out, RmfConeSpline::of_part(part)?.into_raw());
+        Ok(())
+    })
+}
+
+/// The part of a developable ruled surface between its two rails: the surface's
+/// boundaries u = u₀ and u = u₁ (a NURBS of degree (1, n), rulings along u), over its whole
+/// v domain. The developable is approximated by a cone spline (Leopoldseder & Pottmann)
+/// within half the tolerance, with no cone vertex on the part, and each piece is trimmed
+/// between the rails — the ruling segments run from rail to rail (degree (1, 5) patches),
+/// G1 across pieces, each boundary within the tolerance of its rail — not between two
+/// parallel circles. The sheet (thickness, K-factor) is that of `options`.
+///
+/// @param[in] surface A surface with degree_u = 1 and pole_count_u = 2 (e.g. from
+///            rmf_nurbs_surface_create); its parameter v runs along the rails. Read during
+///            the call only.
+/// @param[in] options The sheet and tolerances, or NULL for the defaults; read during the
+///            call only.
+/// @param[out] out Receives the part (an RmfConeSpline whose pieces are the designed
+///             surface's); free with rmf_cone_spline_free. Untouched on failure.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If surface or out is NULL.
+/// @return RMF_ERROR_INVALID_INPUT If the surface is not of degree 1 in u with one span, is
+///         not developable (the message gives its max |K|·size²), or an option is out of
+///         range (as for rmf_cone_spline_transition).
+/// @return RMF_ERROR_NO_SOLUTION If a ruling of the surface is degenerate.
+/// @return RMF_ERROR_NOT_CONVERGED If the tolerance needs more than max_pieces pieces, or
+///         the cone fit keeps a vertex on the part.
+/// \since 0.2
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_part(
+    surface: *const RmfSurface,
+    options: *const RmfSheetOptions,
+    out: *mut *mut RmfConeSpline,
+) -> RmfStatus {
+    guard("rmf_cone_spline_part", || {
+        let surface = reference(surface, "surface")?;
+        let out = out_ptr(out, "out")?;
+        let options = options_from(options)?;
+        let part = SheetPart::between_rails(surface.surface.as_ref(), &options)
+            .map_err(|e| e.context("surface"))?;
+        write(out, RmfConeSpline::of_part(part)?.into_raw());
+        Ok(())
+    })
+}
+
+/// The part of the tangent surface x(t) + v·x′(t)/|x′(t)| of a regular curve over the
+/// curve's whole domain, between the rails v = v_min and v = v_max: a cone spline within
+/// half the tolerance, trimmed on every piece between the two rails, as rmf_cone_spline_part.
+///
+/// @param[in] curve A regular rational curve (NURBS data or a computed curve; not a
+///            callback curve). Read during the call only.
+/// @param[in] v_min, v_max Signed distances along the unit tangent, finite, v_min < v_max,
+///            0 outside [v_min, v_max] (the curve itself is the surface's edge of regression).
+/// @param[in] options The sheet and tolerances, or NULL for the defaults.
+/// @param[out] out Receives the part; free with rmf_cone_spline_free. Untouched on failure.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If curve or out is NULL.
+/// @return RMF_ERROR_INVALID_INPUT If curve is a callback curve, v_min or v_max is not
+///         finite, v_min ≥ v_max, [v_min, v_max] contains 0, or an option is out of range.
+/// @return RMF_ERROR_NO_SOLUTION If the curve is not regular.
+/// @return RMF_ERROR_NOT_CONVERGED As for rmf_cone_spline_part.
+/// \since 0.2
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_tangent_part(
+    curve: *const RmfCurve,
+    v_min: f64,
+    v_max: f64,
+    options: *const RmfSheetOptions,
+    out: *mut *mut RmfConeSpline,
+) -> RmfStatus {
+    guard("rmf_cone_spline_tangent_part", || {
+        let curve = reference(curve, "curve")?;
+        let out = out_ptr(out, "out")?;
+        let options = options_from(options)?;
+        let part = SheetPart::tangent_surface(curve.rational("curve")?, v_min, v_max, &options)?;
         write(out, RmfConeSpline::of_part(part)?.into_raw());
         Ok(())
     })

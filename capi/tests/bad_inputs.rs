@@ -399,6 +399,52 @@ fn transition_with(
     }
 }
 
+/// The saddle z = xy as a degree (1, 1) surface: ruled, not developable.
+fn saddle_surface() -> *mut RmfSurface {
+    let poles = [
+        v(-1., -1., 1.),
+        v(-1., 1., -1.),
+        v(1., -1., -1.),
+        v(1., 1., 1.),
+    ];
+    let knots = [0., 0., 1., 1.];
+    let mut out = null_mut();
+    let status = unsafe {
+        rmf_nurbs_surface_create(
+            1,
+            1,
+            poles.as_ptr(),
+            null(),
+            2,
+            2,
+            knots.as_ptr(),
+            4,
+            knots.as_ptr(),
+            4,
+            &mut out,
+        )
+    };
+    assert_eq!(status, RmfStatus::RmfOk);
+    out
+}
+
+/// `rmf_cone_spline_tangent_part` of the circle of radius 1 between `v_min` and `v_max`
+/// (default options at tolerance 1e-2); the part, if any, is freed.
+fn tangent_part_with(v_min: f64, v_max: f64) -> RmfStatus {
+    let circle = circle_curve(v(0., 0., 0.), 1.0);
+    let options = RmfSheetOptions {
+        tolerance: 1e-2,
+        ..Default::default()
+    };
+    let mut out = null_mut();
+    unsafe {
+        let status = rmf_cone_spline_tangent_part(circle, v_min, v_max, &options, &mut out);
+        rmf_cone_spline_free(out);
+        rmf_curve_free(circle);
+        status
+    }
+}
+
 /// A square-to-round part at tolerance 1e-2, for the rows that need one; `call` gets it,
 /// and the part is freed after.
 fn with_part(call: impl Fn(*mut RmfConeSpline) -> RmfStatus) -> RmfStatus {
@@ -1370,6 +1416,46 @@ fn rows() -> Vec<Row> {
                     unsafe { rmf_cone_spline_flat_pattern(part, edges.as_mut_ptr(), 2, &mut count) }
                 })
             },
+        },
+        Row {
+            what: "ruled part of a surface that is not developable",
+            function: "rmf_cone_spline_part",
+            expected: INVALID,
+            names: "surface: the surface is not developable",
+            call: |_| {
+                let saddle = saddle_surface();
+                let mut out = null_mut();
+                unsafe {
+                    let status = rmf_cone_spline_part(saddle, null(), &mut out);
+                    rmf_cone_spline_free(out);
+                    rmf_surface_free(saddle);
+                    status
+                }
+            },
+        },
+        Row {
+            what: "ruled part of a NULL surface",
+            function: "rmf_cone_spline_part",
+            expected: NULL,
+            names: "surface",
+            call: |_| {
+                let mut out = null_mut();
+                unsafe { rmf_cone_spline_part(null(), null(), &mut out) }
+            },
+        },
+        Row {
+            what: "tangent part through the edge of regression",
+            function: "rmf_cone_spline_tangent_part",
+            expected: INVALID,
+            names: "contains 0",
+            call: |_| tangent_part_with(-0.5, 0.5),
+        },
+        Row {
+            what: "tangent part with v_min ≥ v_max",
+            function: "rmf_cone_spline_tangent_part",
+            expected: INVALID,
+            names: "v_min",
+            call: |_| tangent_part_with(0.5, 0.2),
         },
         Row {
             what: "cone spline that is not a part",

@@ -526,25 +526,75 @@ fn sheet_metal_hopper_writes_its_solid_and_flat_pattern() {
     for (json, expected) in [
         (
             r#"{"sheet": {"transition": {"bottom": {"polygon": [[0,0,0],[1,0,0],[1,1,0]]}, "top": {"circle": {"center": [0,0,1], "normal": [0,0,1], "radius": 0.2}}}, "k_factor": 1.5}}"#,
-            "sheet.k_factor: must lie in [0, 1]",
+            &["sheet.k_factor: must lie in [0, 1]"][..],
         ),
         (
             r#"{"sheet": {"transition": {"bottom": {"polygon": [[0,0,0],[1,0,0],[1,1,0]]}, "top": {"circle": {"center": [0,0,1], "normal": [0,0,1], "radius": 0.2}}}, "thickness": -2}}"#,
-            "sheet.thickness: must be positive",
+            &["sheet.thickness: must be positive"],
         ),
         (
             r#"{"sheet": {"transition": {"bottom": {"polygon": [[0,0,0],[2,1,0],[0,0.5,0],[-2,1,0]]}, "top": {"circle": {"center": [0,0,1], "normal": [0,0,1], "radius": 0.2}}}}}"#,
-            "sheet.transition: bottom is not convex",
+            &["sheet.transition", "bottom is not convex"],
         ),
         (
             r#"{"sheet": {"transition": {"bottom": {"polygon": [[0,0,0],[1,0,0],[1,1,0]]}, "top": {"circle": {"center": [0.5,0.3,0], "normal": [1,0,0], "radius": 0.2}}}}}"#,
-            "sheet.transition: the curves cross",
+            &["sheet.transition", "the curves cross"],
         ),
         (
             r#"{"sheet": {"transition": {"bottom": {"polygon": [[0,0,0],[1,0,0],[1,1,0]]}, "top": {"circle": {"center": [0,0,1], "normal": [0,0,1], "radius": 0.2}}}, "reference": "outer", "thickness": 0.1}}"#,
-            "bend radius",
+            &["bend radius"],
         ),
     ] {
-        fails_with("bad_sheet", json, &[expected]);
+        fails_with("bad_sheet", json, expected);
     }
+}
+
+#[test]
+fn sheet_metal_part_between_the_rails_of_a_ruled_developable() {
+    let dir = scratch("ruled_part");
+    let input = examples().join("ruled_part.json");
+    let out = tool(
+        &dir,
+        &[
+            input.to_str().unwrap(),
+            "-o",
+            "ruled.step",
+            "-o",
+            "ruled.dxf",
+            "-o",
+            "ruled.json",
+        ],
+        None,
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    println!("{}", String::from_utf8_lossy(&out.stdout));
+    assert_eq!(files_in(&dir), ["ruled.dxf", "ruled.json", "ruled.step"]);
+    let step = std::fs::read_to_string(dir.join("ruled.step")).unwrap();
+    assert!(step.contains("MANIFOLD_SOLID_BREP") && step.contains("CLOSED_SHELL"));
+    let dxf = std::fs::read_to_string(dir.join("ruled.dxf")).unwrap();
+    assert!(dxf.contains("\nARC\n") && !dxf.contains("POLYLINE"));
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("ruled.json")).unwrap()).unwrap();
+    let figure = |key: &str| {
+        json["figures"][key]
+            .as_f64()
+            .unwrap_or_else(|| panic!("figure {key}"))
+    };
+    assert!(figure("edge_distance_first") <= 1e-4 && figure("edge_distance_second") <= 1e-4);
+    assert!(
+        figure("area_error") <= 1e-9,
+        "area {}",
+        figure("area_error")
+    );
+    assert!(figure("edge_length_error") <= 1e-9);
+    // A ruled surface that is not developable (the saddle z = xy) is refused at its field.
+    fails_with(
+        "bad_ruled_part",
+        r#"{"sheet": {"ruled": {"nurbs": {"degree_u": 1, "degree_v": 1, "poles": [[[-1,-1,1],[-1,1,-1]],[[1,-1,-1],[1,1,1]]], "knots_u": [0,0,1,1], "knots_v": [0,0,1,1]}}}}"#,
+        &["sheet.ruled", "not developable"],
+    );
 }

@@ -1,12 +1,15 @@
 //! Operations on the sheet-metal entry points (issue 15): transitions between two closed
 //! curves — drawn polygons and circles in drawn planes (convex or not, crossing or not) or
 //! any curve of the pool —, with drawn options (sizes, tolerances, thickness, K-factor,
-//! reference); then reports, layer surfaces and boundaries, flat patterns, marks both ways
+//! reference); parts between the rails of drawn ruled surfaces (generalised cylinders,
+//! developable, or drawn poles, mostly not) and of tangent surfaces of pool curves between
+//! drawn distances; then reports, layer surfaces and boundaries, flat patterns, marks both ways
 //! and exports of whatever part was made.
 
 use rmfsurf_capi::cone_spline::RmfConeSpline;
 use rmfsurf_capi::curve::rmf_nurbs_curve_create;
 use rmfsurf_capi::sheet::*;
+use rmfsurf_capi::surface::rmf_nurbs_surface_create;
 use rmfsurf_capi::{RmfStatus, RmfVec2, RmfVec3};
 use std::ptr::{null, null_mut};
 
@@ -18,6 +21,9 @@ pub const OPS: &[fn(&mut Session)] = &[
     closed_curve,
     transition,
     transition,
+    ruled_surface,
+    part,
+    tangent_part,
     report,
     layer,
     flat_pattern,
@@ -138,6 +144,68 @@ fn transition(s: &mut Session) {
         )
     };
     s.made_spline("rmf_cone_spline_transition", status, out);
+}
+
+/// A degree (1, 3) surface, added to the pool: a drawn cubic and its translate by a drawn
+/// vector (a generalised cylinder, developable), or eight drawn poles.
+fn ruled_surface(s: &mut Session) {
+    let first: Vec<RmfVec3> = (0..4).map(|_| s.input.vec3()).collect();
+    let second: Vec<RmfVec3> = if s.input.flag() {
+        let d = s.input.small_vec3();
+        first.iter().map(|&p| add(p, d, 1.0)).collect()
+    } else {
+        (0..4).map(|_| s.input.vec3()).collect()
+    };
+    let poles = [first, second].concat();
+    let (knots_u, knots_v) = ([0., 0., 1., 1.], [0., 0., 0., 0., 1., 1., 1., 1.]);
+    let mut out = poisoned();
+    let status = unsafe {
+        rmf_nurbs_surface_create(
+            1,
+            3,
+            poles.as_ptr(),
+            null(),
+            2,
+            4,
+            knots_u.as_ptr(),
+            4,
+            knots_v.as_ptr(),
+            8,
+            &mut out,
+        )
+    };
+    s.made_surface("rmf_nurbs_surface_create", status, out);
+}
+
+fn part(s: &mut Session) {
+    let surface = s.surface();
+    let o = options(s);
+    let mut out = poisoned::<*mut RmfConeSpline>();
+    let status = unsafe {
+        rmf_cone_spline_part(
+            surface,
+            o.as_ref().map_or(null(), |o| o as *const RmfSheetOptions),
+            &mut out,
+        )
+    };
+    s.made_spline("rmf_cone_spline_part", status, out);
+}
+
+fn tangent_part(s: &mut Session) {
+    let curve = s.curve();
+    let (v_min, v_max) = (s.input.f64(), s.input.f64());
+    let o = options(s);
+    let mut out = poisoned::<*mut RmfConeSpline>();
+    let status = unsafe {
+        rmf_cone_spline_tangent_part(
+            curve,
+            v_min,
+            v_max,
+            o.as_ref().map_or(null(), |o| o as *const RmfSheetOptions),
+            &mut out,
+        )
+    };
+    s.made_spline("rmf_cone_spline_tangent_part", status, out);
 }
 
 fn report(s: &mut Session) {

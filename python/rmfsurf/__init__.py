@@ -37,7 +37,7 @@ from .curves import (BezierSegment, Curve, Inversion, NurbsCurve, RrmfQuintic, d
 from .frames import (Frames, double_reflection_frames, frenet_frames, mobius_frames,
                      ph_exact_rmf, ph_frenet_frames, ph_rational_rmf, ph_rmf_angle_error)
 from .shapes import Arc, CurveEdge, Line, Shape, ShapeFace, SweepReport, wire_sweep
-from .sheets import FlatEdge, SheetPart, SheetReport, transition
+from .sheets import FlatEdge, SheetPart, SheetReport, part_between_rails, tangent_part, transition
 from .surfaces import (BezierPatch, NurbsSurface, SingularityMargin, Surface,
                        convex_initial_normal, gaussian_curvature, parabolic_points,
                        singularity_margin, sweep_surface)

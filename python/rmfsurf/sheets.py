@@ -20,7 +20,7 @@ from . import _core
 from ._core import call, ffi, lib
 from .cone_splines import ConeSpline
 from .curves import ArrayLike, Curve, as_curve
-from .surfaces import Surface
+from .surfaces import Surface, as_surface
 
 REFERENCES: Dict[str, int] = {
     "inner": lib.RMF_SHEET_REFERENCE_INNER,
@@ -76,7 +76,8 @@ class FlatEdge:
 
 
 class SheetPart(ConeSpline):
-    """A sheet-metal part (rmf_cone_spline_transition); freed when collected."""
+    """A sheet-metal part (rmf_cone_spline_transition, rmf_cone_spline_part,
+    rmf_cone_spline_tangent_part); freed when collected."""
 
     __slots__ = ()
 
@@ -163,6 +164,20 @@ def _flat_points(value: ArrayLike, name: str) -> np.ndarray:
     return array
 
 
+def _options(thickness: float, k_factor: float, tolerance: float, reference: str,
+             flat_tolerance: float, max_pieces: int) -> Any:
+    """An RmfSheetOptions from the keyword arguments, each checked by name."""
+    options = ffi.new("RmfSheetOptions *")
+    call("rmf_sheet_options_init", options)
+    options.thickness = _core.number(thickness, "thickness")
+    options.k_factor = _core.number(k_factor, "k_factor")
+    options.tolerance = _core.number(tolerance, "tolerance")
+    options.reference = _core.choice(reference, "reference", REFERENCES)
+    options.flat_tolerance = _core.number(flat_tolerance, "flat_tolerance")
+    options.max_pieces = _core.integer(max_pieces, "max_pieces", 2)
+    return options
+
+
 def transition(bottom: Curve, top: Curve, *, thickness: float = 1.0, k_factor: float = 0.5,
                tolerance: float = 1e-4, reference: str = "inner", flat_tolerance: float = 0.0,
                max_pieces: int = 100000) -> SheetPart:
@@ -183,15 +198,38 @@ def transition(bottom: Curve, top: Curve, *, thickness: float = 1.0, k_factor: f
             developed edge (0: the tolerance).
         max_pieces: the most cone pieces.
     """
-    options = ffi.new("RmfSheetOptions *")
-    call("rmf_sheet_options_init", options)
-    options.thickness = _core.number(thickness, "thickness")
-    options.k_factor = _core.number(k_factor, "k_factor")
-    options.tolerance = _core.number(tolerance, "tolerance")
-    options.reference = _core.choice(reference, "reference", REFERENCES)
-    options.flat_tolerance = _core.number(flat_tolerance, "flat_tolerance")
-    options.max_pieces = _core.integer(max_pieces, "max_pieces", 2)
+    options = _options(thickness, k_factor, tolerance, reference, flat_tolerance, max_pieces)
     out = _core.out_pointer("RmfConeSpline")
     call("rmf_cone_spline_transition", as_curve(bottom, "bottom")._ptr,
          as_curve(top, "top")._ptr, options, out)
+    return SheetPart._owned(out)
+
+
+def part_between_rails(surface: Surface, *, thickness: float = 1.0, k_factor: float = 0.5,
+                       tolerance: float = 1e-4, reference: str = "inner",
+                       flat_tolerance: float = 0.0, max_pieces: int = 100000) -> SheetPart:
+    """The part of a developable ruled surface between its two rails (see
+    rmf_cone_spline_part): `surface` has degree 1 and two poles in u (rulings along u,
+    e.g. ``Surface.from_nurbs`` of two rails), v along the rails. The result is a cone
+    spline within half the tolerance, no cone vertex on the part, trimmed on every piece
+    between the rails, each edge within the tolerance of its rail. Keyword arguments as
+    for :func:`transition`.
+    """
+    options = _options(thickness, k_factor, tolerance, reference, flat_tolerance, max_pieces)
+    out = _core.out_pointer("RmfConeSpline")
+    call("rmf_cone_spline_part", as_surface(surface, "surface")._ptr, options, out)
+    return SheetPart._owned(out)
+
+
+def tangent_part(curve: Curve, v_min: float, v_max: float, *, thickness: float = 1.0,
+                 k_factor: float = 0.5, tolerance: float = 1e-4, reference: str = "inner",
+                 flat_tolerance: float = 0.0, max_pieces: int = 100000) -> SheetPart:
+    """The part of the tangent surface x(t) + v·x′(t)/|x′(t)| of a regular curve between
+    the rails v = v_min and v = v_max (0 outside [v_min, v_max]; see
+    rmf_cone_spline_tangent_part). Keyword arguments as for :func:`transition`.
+    """
+    options = _options(thickness, k_factor, tolerance, reference, flat_tolerance, max_pieces)
+    out = _core.out_pointer("RmfConeSpline")
+    call("rmf_cone_spline_tangent_part", as_curve(curve, "curve")._ptr,
+         _core.number(v_min, "v_min"), _core.number(v_max, "v_max"), options, out)
     return SheetPart._owned(out)

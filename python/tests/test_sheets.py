@@ -107,3 +107,56 @@ def test_bad_sheets_and_curves_name_the_argument():
         rmfsurf.transition(square(), "circle")
     with pytest.raises(ValueError, match="reference"):
         rmfsurf.transition(square(), circle(), reference="middle")
+
+
+def rail_pole(s, i):
+    """Bézier pole i on [0.2, 1.2] of the cubic x + s x′, x = (t, t², t³), by blossoming."""
+    u = [1.2] * i + [0.2] * (3 - i)
+    m, sym2, prod = sum(u) / 3, (u[0] * u[1] + u[0] * u[2] + u[1] * u[2]) / 3, u[0] * u[1] * u[2]
+    return [m + s, sym2 + 2 * s * m, prod + 3 * s * sym2]
+
+
+def twisted_cubic_rails():
+    """The tangent surface of the twisted cubic (t, t², t³) between the rails x + x′/2 and
+    x + x′, t in [0.2, 1.2], as a degree (1, 3) NURBS, and the rails densely sampled."""
+    pole = rail_pole
+    poles = [[pole(s, i) for i in range(4)] for s in (0.5, 1.0)]
+    surface = rmfsurf.Surface.from_nurbs(1, 3, poles, [0, 0, 1, 1], [0.2] * 4 + [1.2] * 4)
+    ts = np.linspace(0.2, 1.2, 20001)
+    rails = [np.stack([ts + s, ts ** 2 + 2 * s * ts, ts ** 3 + 3 * s * ts ** 2], axis=1) for s in (0.5, 1.0)]
+    return surface, rails
+
+
+def polyline_distance(polyline, p):
+    """Distance from p to a dense polyline (the two chords at its nearest vertex; a chord of
+    the rails sampled every 5e-5 in t sags by less than 1e-9 from the rail)."""
+    k = int(np.linalg.norm(polyline - p, axis=1).argmin())
+    best = np.linalg.norm(polyline[k] - p)
+    for a, b in ((k - 1, k), (k, k + 1)):
+        if 0 <= a and b < len(polyline):
+            d = polyline[b] - polyline[a]
+            s = np.clip(np.dot(p - polyline[a], d) / np.dot(d, d), 0.0, 1.0)
+            best = min(best, np.linalg.norm(polyline[a] + s * d - p))
+    return best
+
+
+def test_a_part_between_rails_has_its_edges_on_the_rails():
+    surface, rails = twisted_cubic_rails()
+    part = rmfsurf.part_between_rails(surface, thickness=0.02, tolerance=1e-4)
+    report = part.report()
+    assert not report.closed and report.pieces >= 2
+    for side, rail in zip(("first", "second"), rails):
+        edge = part.edge("reference", side).nurbs()
+        points = [np.array(curve_point(edge.degree, edge.poles, edge.weights, edge.knots, t))
+                  for t in np.linspace(edge.knots[0], edge.knots[-1], 301)]
+        worst = max(polyline_distance(rail, p) for p in points)
+        assert worst <= 1e-4
+    cut = [e for e in part.flat_edges() if e.layer == "cut"]
+    for a, b in zip(cut, cut[1:] + cut[:1]):
+        assert np.array_equal(a.end, b.start)
+    curve = rmfsurf.Curve.from_nurbs(3, [rail_pole(0.0, i) for i in range(4)], [0.2] * 4 + [1.2] * 4)
+    assert rmfsurf.tangent_part(curve, 0.3, 0.9, tolerance=1e-3).report().pieces >= 2
+    with pytest.raises(rmfsurf.InvalidInputError, match="contains 0"):
+        rmfsurf.tangent_part(curve, -0.3, 0.9)
+    with pytest.raises(TypeError, match="surface"):
+        rmfsurf.part_between_rails("surface")

@@ -41,4 +41,4 @@ pub use region::Region;
 pub use spline::ConeSpline;
 
 #[cfg(test)]
-mod test_support;
+pub(crate) mod test_support;

@@ -218,24 +218,6 @@ fn boundary_edges(
     Ok(())
 }
 
-/// Twice the signed area enclosed by a closed loop of lines and arcs (Green's theorem:
-/// chords, plus the circular segments of the arcs).
-pub(crate) fn signed_area(edges: &[PatternEdge]) -> f64 {
-    edges
-        .iter()
-        .map(|e| {
-            let (a, b) = (e.start(), e.end());
-            let chord = a.perp_dot(b);
-            match *e {
-                PatternEdge::Line { .. } => chord,
-                PatternEdge::Arc { radius, sweep, .. } => {
-                    chord + radius * radius * (sweep - sweep.sin())
-                }
-            }
-        })
-        .sum::<f64>()
-}
-
 /// The edge between the points `from` and `to`: a line, or the arc of the same sweep
 /// through both (centre and radius recomputed, so that both ends lie on its circle).
 fn between(edge: PatternEdge, from: DVec2, to: DVec2) -> PatternEdge {
@@ -274,16 +256,19 @@ impl FlatLayout {
         outline.extend(self.second.iter().rev().map(PatternEdge::reversed));
         outline.push(self.rulings[0].reversed());
         // Internal coordinates are of unit size.
-        let outline = close_loop(outline, 1.0);
-        let outline = if signed_area(&outline) < 0.0 {
-            outline.iter().rev().map(PatternEdge::reversed).collect()
-        } else {
-            outline
-        };
-        FlatPattern {
-            outline,
+        let mut pattern = FlatPattern {
+            outline: close_loop(outline, 1.0),
             bend_lines: self.bend_lines.clone(),
+        };
+        if pattern.area() < 0.0 {
+            pattern.outline = pattern
+                .outline
+                .iter()
+                .rev()
+                .map(PatternEdge::reversed)
+                .collect();
         }
+        pattern
     }
 }
 

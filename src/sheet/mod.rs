@@ -9,6 +9,7 @@
 //! | `trim` | a cone spline trimmed between two boundary curves: rows, layers, cut faces | [LP] Fig. 1, "Introduction" (offsets) |
 //! | `thickness` | inner, neutral (K-factor) and outer layers; bend sides and radii | [LP] "Introduction" |
 //! | `flat` | the flat pattern of a layer: lines, arcs and biarcs | [LP] "Bending sequences and development", (7)–(8) |
+//! | `rails` | parts between the rails of a ruled developable or of a tangent surface | [LP] (1), (2); distances along the rulings fitted as cubics |
 //! | `marks` | the isometry flat ↔ formed for points | φ sin α = const |
 //! | `part` | [`SheetPart`]: the public face of all of the above | |
 
@@ -16,6 +17,7 @@ mod flat;
 mod marks;
 mod part;
 mod profile;
+mod rails;
 mod thickness;
 mod transition;
 mod trim;

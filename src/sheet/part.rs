@@ -5,12 +5,14 @@
 
 use super::flat::{flat_layout, FlatLayout};
 use super::marks::{flat_to_part, part_to_flat, part_to_surface, surface_to_part};
+use super::rails::between_rails;
 use super::thickness::{layers, Layer, Layers, Sheet};
 use super::transition::{transition, TransitionFit};
 use super::trim::{patch_nurbs, Face, Similarity, TrimmedSpline};
 use crate::bezier::{
     NurbsSurface, PiecewiseCurve, PiecewiseSurface, RationalBezierCurve, RationalBezierPatch,
 };
+use crate::cone_spline::developable::{RuledSurface, TangentSurface};
 use crate::cone_spline::{ConePiece, ConeSpline, Element, FlatPattern, Motion, PatternEdge};
 use crate::error::{invalid, Result};
 use glam::{DVec2, DVec3};
@@ -119,23 +121,73 @@ impl SheetPart {
         Self::new(part, frame, options, fit)
     }
 
-    /// The part of a developable ruled surface of degree (1, n) between its two rails (its
-    /// boundaries u = u₀ and u = u₁), over its whole v domain.
+    /// The part of a developable ruled surface of degree (1, n) — rulings along u — between
+    /// its two rails (its boundaries u = u₀ and u = u₁), over its whole v domain: see
+    /// [`rails`](super::rails).
     pub fn between_rails(surface: &PiecewiseSurface, options: &SheetOptions) -> Result<Self> {
-        let _ = (surface, options);
-        invalid!("parts between rails are not built yet")
+        options.check()?;
+        let frame = Similarity::fitting(
+            surface
+                .patches()
+                .iter()
+                .flat_map(|p| p.homogeneous().iter().map(|h| h.truncate() / h.w)),
+        );
+        let patches = surface
+            .patches()
+            .iter()
+            .map(|p| {
+                RationalBezierPatch::from_homogeneous(
+                    p.degree_u(),
+                    p.degree_v(),
+                    p.homogeneous()
+                        .iter()
+                        .map(|h| ((h.truncate() - frame.origin * h.w) / frame.scale).extend(h.w))
+                        .collect(),
+                )
+            })
+            .collect::<Result<Vec<_>>>()?;
+        let internal = PiecewiseSurface::new(
+            patches,
+            surface.u_breaks().to_vec(),
+            surface.v_breaks().to_vec(),
+        )?;
+        let ruled = RuledSurface::new(internal)?;
+        let (part, fit) =
+            between_rails(&ruled, options.tolerance / frame.scale, options.max_pieces)?;
+        Self::new(part, frame, options, fit)
     }
 
-    /// The part of the tangent surface x(t) + v·x′(t)/|x′(t)| over the whole curve and
-    /// v ∈ [v_min, v_max].
+    /// The part of the tangent surface x(t) + v·x′(t)/|x′(t)| of a regular curve over its
+    /// whole domain and v ∈ [v_min, v_max] (0 ∉ [v_min, v_max]), between the rails v = v_min
+    /// and v = v_max: see [`rails`](super::rails).
     pub fn tangent_surface(
         curve: &PiecewiseCurve,
         v_min: f64,
         v_max: f64,
         options: &SheetOptions,
     ) -> Result<Self> {
-        let _ = (curve, v_min, v_max, options);
-        invalid!("parts of tangent surfaces are not built yet")
+        options.check()?;
+        // The distances checked in the caller's units (the messages quote them).
+        TangentSurface::new(curve, v_min, v_max)?;
+        // The frame of the region: the curve and its tangent lines out to the rails.
+        let (lo, hi) = curve.domain();
+        let points: Vec<DVec3> = (0..=64)
+            .flat_map(|j| {
+                let jet = curve.eval_jet(lo + (hi - lo) * j as f64 / 64.0);
+                let e = jet.d1.normalize_or_zero();
+                [jet.point + v_min * e, jet.point + v_max * e]
+            })
+            .chain(curve.segments().iter().flat_map(|s| s.poles()))
+            .collect();
+        let frame = Similarity::fitting(points);
+        let internal = internal_curve(curve, &frame)?;
+        let tangent = TangentSurface::new(&internal, v_min / frame.scale, v_max / frame.scale)?;
+        let (part, fit) = between_rails(
+            &tangent,
+            options.tolerance / frame.scale,
+            options.max_pieces,
+        )?;
+        Self::new(part, frame, options, fit)
     }
 
     pub(crate) fn new(

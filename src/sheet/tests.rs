@@ -81,7 +81,7 @@ fn square_to_round_hopper_figures() {
             "gap after edge {k}"
         );
     }
-    let area = 0.5 * super::flat::signed_area(&flat.outline);
+    let area = flat.area();
     let formed = surface_area(&part, Layer::Neutral);
     let arcs = flat
         .outline
@@ -280,7 +280,11 @@ fn scaled_and_moved_hoppers_are_similar() {
             .iter()
             .map(|e| super::part::scaled_edge(e, 1.0 / scale))
             .collect();
-        0.5 * super::flat::signed_area(&outline)
+        crate::FlatPattern {
+            outline,
+            bend_lines: vec![],
+        }
+        .area()
     };
     let a0 = area(&reference, 1.0);
     for (scale, shift) in [
@@ -378,7 +382,7 @@ fn check_transition(
     let surface = part.surface(Layer::Reference).unwrap();
     let k = interior_curvature(&surface);
     let flat = part.flat_pattern().unwrap();
-    let area = 0.5 * super::flat::signed_area(&flat.outline);
+    let area = flat.area();
     let formed = surface_area(&part, Layer::Neutral);
     let creases = part
         .cone_spline()
@@ -530,4 +534,279 @@ fn bad_transitions_and_sheets_are_refused_naming_the_argument() {
         m.contains("thickness = 2") && m.contains("bend radius"),
         "{m}"
     );
+}
+
+/// The ruled example of the cone spline fit (cone_spline::approximate's tests): the
+/// tangent surface of the twisted cubic (t, t², t³) between the rails x + x′/2 and x + x′,
+/// t ∈ [0.2, 1.2], as a polynomial NURBS of degree (1, 3), scaled by `scale` and moved by
+/// `shift`.
+fn twisted_cubic_ruled(scale: f64, shift: DVec3) -> crate::PiecewiseSurface {
+    use crate::bezier::bernstein;
+    let curve = crate::cone_spline::test_support::twisted_cubic(0.2, 1.2);
+    let segment = &curve.segments()[0];
+    let d: Vec<glam::DVec4> = bernstein::elevate(&bernstein::derivative(segment.homogeneous()), 1);
+    let mut poles = Vec::new();
+    for s in [0.5, 1.0] {
+        for (x, dx) in segment.homogeneous().iter().zip(&d) {
+            poles.push((scale * (x.truncate() + s * dx.truncate()) + shift).extend(1.0));
+        }
+    }
+    let patch = crate::RationalBezierPatch::from_homogeneous(1, 3, poles).unwrap();
+    crate::PiecewiseSurface::new(vec![patch], vec![0.0, 1.0], vec![0.2, 1.2]).unwrap()
+}
+
+/// Distance from `x` to the curve `c` over [a, b] (a dense scan, then golden sections
+/// about the nearest sample): independent of the library's searches.
+fn curve_distance(c: impl Fn(f64) -> DVec3, (a, b): (f64, f64), x: DVec3) -> f64 {
+    let n = 2000;
+    let t = |i: usize| a + (b - a) * i as f64 / n as f64;
+    let d = |s: f64| c(s).distance(x);
+    let best = (0..=n)
+        .min_by(|&i, &j| d(t(i)).total_cmp(&d(t(j))))
+        .unwrap();
+    let (mut lo, mut hi) = (t(best.max(1) - 1), t((best + 1).min(n)));
+    let g = 0.5 * (5f64.sqrt() - 1.0);
+    for _ in 0..100 {
+        let (x1, x2) = (hi - g * (hi - lo), lo + g * (hi - lo));
+        if d(x1) < d(x2) {
+            hi = x2;
+        } else {
+            lo = x1;
+        }
+    }
+    d(0.5 * (lo + hi)).min(d(t(best)))
+}
+
+/// Largest distance of the part's boundaries (reference layer, 17 points per piece) from
+/// the rails `rail(side, t)` over `domain`.
+fn boundary_against_rails(
+    part: &SheetPart,
+    rail: &impl Fn(usize, f64) -> DVec3,
+    domain: (f64, f64),
+) -> [f64; 2] {
+    let mut worst = [0.0f64; 2];
+    for (k, side) in [Side::First, Side::Second].into_iter().enumerate() {
+        let edge = part.boundary(Layer::Reference, side).unwrap();
+        for s in edge.segments() {
+            for j in 0..=16 {
+                let x = s.eval(j as f64 / 16.0);
+                worst[k] = worst[k].max(curve_distance(|t| rail(k, t), domain, x));
+            }
+        }
+    }
+    worst
+}
+
+/// The smallest distance of a cone vertex from the part's ruling segments (the patches of
+/// the reference layer at u ∈ [0, 1], 33 rulings per piece), relative to `size`: every
+/// ruling of a cone passes through its vertex, so the vertex is on the part exactly when
+/// it lies inside one of these segments.
+fn vertex_clearance(part: &SheetPart, size: f64) -> f64 {
+    let spline = part.cone_spline().unwrap();
+    let surface = part.surface(Layer::Reference).unwrap();
+    let mut clearance = f64::INFINITY;
+    for (piece, patch) in spline.pieces().iter().zip(surface.patches()) {
+        let Some(vertex) = piece.vertex() else {
+            continue;
+        };
+        for j in 0..=32 {
+            let v = j as f64 / 32.0;
+            let (a, b) = (patch.eval(0.0, v), patch.eval(1.0, v));
+            let d = b - a;
+            let s = ((vertex - a).dot(d) / d.length_squared()).clamp(0.0, 1.0);
+            clearance = clearance.min(vertex.distance(a + s * d) / size);
+        }
+    }
+    clearance
+}
+
+fn rails_options(tolerance: f64, flat_tolerance: f64) -> SheetOptions {
+    SheetOptions {
+        tolerance,
+        sheet: Sheet::new(0.02, 0.5, Reference::Inner).unwrap(),
+        flat_tolerance,
+        max_pieces: 100_000,
+    }
+}
+
+/// Relative differences of the flat pattern's area and boundary lengths from the formed
+/// neutral layer's (library quadrature of the NURBS on both sides).
+fn flat_against_formed(part: &SheetPart) -> (f64, f64) {
+    let flat = part.flat_pattern().unwrap();
+    let n = flat.outline.len();
+    for k in 0..n {
+        assert_eq!(flat.outline[k].end(), flat.outline[(k + 1) % n].start());
+    }
+    let (formed, area) = (surface_area(part, Layer::Neutral), flat.area());
+    assert!(area > 0.0, "counter-clockwise");
+    let lengths = part.flat_boundary_lengths().unwrap();
+    let formed_lengths =
+        [Side::First, Side::Second].map(|s| length(&part.boundary(Layer::Neutral, s).unwrap()));
+    let length_error = (0..2)
+        .map(|k| (lengths[k] - formed_lengths[k]).abs() / formed_lengths[k])
+        .fold(0.0, f64::max);
+    ((area - formed).abs() / formed, length_error)
+}
+
+#[test]
+fn parts_between_the_rails_of_a_ruled_developable() {
+    let surface = twisted_cubic_ruled(1.0, DVec3::ZERO);
+    // The input's own boundary curves, u = 0 and u = 1.
+    let rail = |side: usize, t: f64| surface.eval(side as f64, t);
+    let domain = (0.2, 1.2);
+    let size = 5.0;
+    let mut counts = Vec::new();
+    for tolerance in [1e-3, 1e-4, 1e-5] {
+        let part =
+            SheetPart::between_rails(&surface, &rails_options(tolerance, 1e-9 * size)).unwrap();
+        let r = part.report();
+        let worst = boundary_against_rails(&part, &rail, domain);
+        let (area_error, length_error) = flat_against_formed(&part);
+        let clearance = vertex_clearance(&part, size);
+        println!(
+            "ruled part between rails, tolerance {tolerance:.0e}: {} pieces, surface deviation {:.3e}, edges against the rails {:.3e} / {:.3e} \
+             (library {:.3e} / {:.3e}); flat area vs formed neutral {area_error:.1e}, edge lengths {length_error:.1e}; vertices {clearance:.2e}·size from the part",
+            part.piece_count(),
+            r.deviation,
+            worst[0],
+            worst[1],
+            r.edge_distance[0],
+            r.edge_distance[1],
+        );
+        assert!(worst.iter().all(|&w| w <= tolerance), "{worst:?}");
+        assert!(r.deviation <= tolerance);
+        assert!(area_error <= 1e-9, "{area_error}");
+        assert!(length_error <= 1e-9, "{length_error}");
+        assert!(clearance > 1e-6, "{clearance}");
+        // G1 across the pieces; the part starts on the input's first ruling.
+        let spline = part.cone_spline().unwrap();
+        for w in spline.pieces().windows(2) {
+            assert!(w[0].end().normal().distance(w[1].start.normal()) < 1e-9);
+        }
+        for (side, t) in [(Side::First, 0), (Side::Second, 1)] {
+            let start = part.boundary(Layer::Reference, side).unwrap().eval(0.0);
+            assert!(start.distance(rail(t, 0.2)) <= tolerance, "{start}");
+        }
+        // The measurement catches a rail off by ten tolerances.
+        let moved = |side: usize, t: f64| rail(side, t) + DVec3::Z * (10.0 * tolerance);
+        let off = boundary_against_rails(&part, &moved, domain);
+        assert!(off.iter().all(|&w| w > 5.0 * tolerance), "{off:?}");
+        counts.push(part.piece_count());
+    }
+    assert!(counts.windows(2).all(|w| w[0] <= w[1]), "{counts:?}");
+    // The area check catches a flat outline drawn with coarse biarcs (flat tolerance 1e-3).
+    let coarse = SheetPart::between_rails(&surface, &rails_options(1e-3, 1e-3)).unwrap();
+    let (area_error, length_error) = flat_against_formed(&coarse);
+    println!("coarse flat tolerance 1e-3: area {area_error:.1e}, lengths {length_error:.1e}");
+    assert!(area_error > 1e-9 && length_error > 1e-9);
+    // The vertex check catches a vertex on the part: the hopper's corner cones have theirs
+    // at the square's corners, on its bottom edge.
+    let (bottom, top) = hopper_curves();
+    let hopper = SheetPart::transition(&bottom, &top, &hopper_options(1e-3)).unwrap();
+    let on_edge = vertex_clearance(&hopper, 400.0);
+    assert!(on_edge < 1e-9, "{on_edge}");
+}
+
+#[test]
+fn parts_between_rails_are_similar_under_scaling_and_translation() {
+    let reference = SheetPart::between_rails(
+        &twisted_cubic_ruled(1.0, DVec3::ZERO),
+        &rails_options(1e-4, 1e-9),
+    )
+    .unwrap();
+    let area0 = reference.flat_pattern().unwrap().area();
+    let edge0 = reference.report().edge_distance;
+    for (scale, shift) in [
+        (1e-200, DVec3::ZERO),
+        (1e200, DVec3::ZERO),
+        (1.0, DVec3::new(1e6, -3e5, 2e6)),
+        (1e-3, DVec3::splat(7.0)),
+    ] {
+        let surface = twisted_cubic_ruled(scale, shift * scale);
+        let mut options = rails_options(1e-4 * scale, 1e-9 * scale);
+        options.sheet = Sheet::new(0.02 * scale, 0.5, Reference::Inner).unwrap();
+        let part = SheetPart::between_rails(&surface, &options).unwrap();
+        // The area in the pattern's own size (at 1e-200 the area itself underflows).
+        let outline: Vec<PatternEdge> = part
+            .flat_pattern()
+            .unwrap()
+            .outline
+            .iter()
+            .map(|e| super::part::scaled_edge(e, 1.0 / scale))
+            .collect();
+        let area = crate::FlatPattern {
+            outline,
+            bend_lines: vec![],
+        }
+        .area();
+        let edges = part.report().edge_distance.map(|d| d / scale);
+        let start = part
+            .boundary(Layer::Reference, Side::First)
+            .unwrap()
+            .eval(0.0);
+        println!(
+            "rails scaled by {scale:e}, moved by {shift}·scale: {} pieces (reference {}), flat area {:.1e} relative, edges {:.3e} / {:.3e}",
+            part.piece_count(),
+            reference.piece_count(),
+            (area - area0).abs() / area0,
+            edges[0],
+            edges[1]
+        );
+        assert_eq!(part.piece_count(), reference.piece_count());
+        assert!((area - area0).abs() <= 1e-10 * area0);
+        for k in 0..2 {
+            assert!((edges[k] - edge0[k]).abs() <= 1e-6 * edge0[k].max(1e-12));
+        }
+        // Compared in the input's own size ((1e200)² overflows).
+        let expected = surface_start() + shift;
+        assert!(
+            (start / scale).distance(expected) <= 1e-4,
+            "{start} vs {expected}"
+        );
+    }
+}
+
+/// The first rail's start on the unscaled input, x(0.2) + x′(0.2)/2.
+fn surface_start() -> DVec3 {
+    let t = 0.2;
+    DVec3::new(t, t * t, t * t * t) + 0.5 * DVec3::new(1.0, 2.0 * t, 3.0 * t * t)
+}
+
+#[test]
+fn parts_of_a_tangent_surface_between_two_distances() {
+    let curve = crate::cone_spline::test_support::twisted_cubic(0.2, 1.2);
+    let (v_min, v_max) = (0.3, 0.9);
+    // The rails from the curve's own derivative: x(t) + v x′(t)/|x′(t)|.
+    let rail = |side: usize, t: f64| {
+        let jet = curve.eval_jet(t);
+        jet.point + [v_min, v_max][side] * jet.d1.normalize()
+    };
+    let tolerance = 1e-4;
+    let part =
+        SheetPart::tangent_surface(&curve, v_min, v_max, &rails_options(tolerance, 1e-9)).unwrap();
+    let r = part.report();
+    let worst = boundary_against_rails(&part, &rail, (0.2, 1.2));
+    let (area_error, length_error) = flat_against_formed(&part);
+    let clearance = vertex_clearance(&part, 3.0);
+    println!(
+        "tangent surface of the twisted cubic, v in [0.3, 0.9]: {} pieces, deviation {:.3e}, edges against the rails {:.3e} / {:.3e} (library {:.3e} / {:.3e}); \
+         flat area {area_error:.1e}, lengths {length_error:.1e}; vertices {clearance:.2e}·size from the part",
+        part.piece_count(),
+        r.deviation,
+        worst[0],
+        worst[1],
+        r.edge_distance[0],
+        r.edge_distance[1]
+    );
+    assert!(worst.iter().all(|&d| d <= tolerance), "{worst:?}");
+    assert!(r.deviation <= tolerance);
+    assert!(area_error <= 1e-9 && length_error <= 1e-9);
+    assert!(clearance > 1e-6);
+    // The curve itself (v = 0) is the tangent surface's edge of regression: refused.
+    let e =
+        SheetPart::tangent_surface(&curve, -0.3, 0.9, &rails_options(tolerance, 0.0)).unwrap_err();
+    assert!(e.message().contains("contains 0"), "{e}");
+    let e =
+        SheetPart::tangent_surface(&curve, 0.9, 0.3, &rails_options(tolerance, 0.0)).unwrap_err();
+    assert!(e.message().contains("v_min"), "{e}");
 }

@@ -65,7 +65,6 @@ impl Trim {
     }
 
     /// A polynomial distance (Bernstein coefficients on [0, 1]).
-    #[allow(dead_code)]
     pub fn polynomial(coefficients: Vec<f64>) -> Self {
         Self {
             a: coefficients,
