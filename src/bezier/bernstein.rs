@@ -40,6 +40,11 @@ fn lerp<C: Coefficient>(a: C, b: C, t: f64) -> C {
     a * (1.0 - t) + b * t
 }
 
+/// Degrees up to which the evaluators work on a short stack array (spines, frames and
+/// sweeps have degree ≤ 9): zeroing the array of [`MAX_DEGREE`] + 1 coefficients took as
+/// long as the evaluation of a cubic.
+const SHORT: usize = 10;
+
 /// p(t) by de Casteljau's algorithm.
 ///
 /// # Panics
@@ -50,7 +55,16 @@ pub fn evaluate<C: Coefficient>(coeffs: &[C], t: f64) -> C {
         (1..=MAX_DEGREE + 1).contains(&n),
         "Bernstein degree out of range"
     );
-    let mut work = [C::default(); MAX_DEGREE + 1];
+    if n <= SHORT {
+        de_casteljau::<C, SHORT>(coeffs, t)
+    } else {
+        de_casteljau::<C, { MAX_DEGREE + 1 }>(coeffs, t)
+    }
+}
+
+fn de_casteljau<C: Coefficient, const N: usize>(coeffs: &[C], t: f64) -> C {
+    let n = coeffs.len();
+    let mut work = [C::default(); N];
     work[..n].copy_from_slice(coeffs);
     for level in (1..n).rev() {
         for i in 0..level {
@@ -68,8 +82,17 @@ pub fn evaluate_jet<C: Coefficient>(coeffs: &[C], t: f64) -> Jet<C> {
         (1..=MAX_DEGREE + 1).contains(&n),
         "Bernstein degree out of range"
     );
+    if n <= SHORT {
+        de_casteljau_jet::<C, SHORT>(coeffs, t)
+    } else {
+        de_casteljau_jet::<C, { MAX_DEGREE + 1 }>(coeffs, t)
+    }
+}
+
+fn de_casteljau_jet<C: Coefficient, const N: usize>(coeffs: &[C], t: f64) -> Jet<C> {
+    let n = coeffs.len();
     let degree = (n - 1) as f64;
-    let mut work = [C::default(); MAX_DEGREE + 1];
+    let mut work = [C::default(); N];
     work[..n].copy_from_slice(coeffs);
     for level in (3..n).rev() {
         for i in 0..level {
@@ -98,6 +121,38 @@ pub fn evaluate_jet<C: Coefficient>(coeffs: &[C], t: f64) -> Jet<C> {
             }
         }
     }
+}
+
+/// p(t) and p'(t) by de Casteljau's algorithm, stopping one level early.
+pub fn evaluate_d1<C: Coefficient>(coeffs: &[C], t: f64) -> (C, C) {
+    let n = coeffs.len();
+    assert!(
+        (1..=MAX_DEGREE + 1).contains(&n),
+        "Bernstein degree out of range"
+    );
+    if n <= SHORT {
+        de_casteljau_d1::<C, SHORT>(coeffs, t)
+    } else {
+        de_casteljau_d1::<C, { MAX_DEGREE + 1 }>(coeffs, t)
+    }
+}
+
+fn de_casteljau_d1<C: Coefficient, const N: usize>(coeffs: &[C], t: f64) -> (C, C) {
+    let n = coeffs.len();
+    if n == 1 {
+        return (coeffs[0], C::default());
+    }
+    let mut work = [C::default(); N];
+    work[..n].copy_from_slice(coeffs);
+    for level in (2..n).rev() {
+        for i in 0..level {
+            work[i] = lerp(work[i], work[i + 1], t);
+        }
+    }
+    (
+        lerp(work[0], work[1], t),
+        (work[1] - work[0]) * (n - 1) as f64,
+    )
 }
 
 /// The Bernstein basis functions B₀ⁿ(t), …, Bₙⁿ(t), written to `out[0..=n]` by the convex

@@ -459,7 +459,13 @@ impl NurbsSurface {
         for a in 0..ku {
             for b in 0..kv {
                 let patch = surface.patch(a, b);
-                let patch = patch.elevated(pu - patch.degree_u(), pv - patch.degree_v());
+                let raised;
+                let patch = if (patch.degree_u(), patch.degree_v()) == (pu, pv) {
+                    patch
+                } else {
+                    raised = patch.elevated(pu - patch.degree_u(), pv - patch.degree_v());
+                    &raised
+                };
                 // Match the corner shared with an already placed neighbour.
                 let corner = net[a * pu * nv + b * pv];
                 let factor = corner.map_or(1.0, |c| c.w / patch.at(0, 0).w);

@@ -143,6 +143,13 @@ impl PiecewiseCurve {
             .sum()
     }
 
+    /// Point and first derivative with respect to the global parameter.
+    pub fn point_derivative(&self, t: f64) -> (DVec3, DVec3) {
+        let (k, s) = self.locate(t);
+        let (point, d1) = self.segments[k].point_derivative(s);
+        (point, d1 * (1.0 / (self.breaks[k + 1] - self.breaks[k])))
+    }
+
     /// Point and derivatives with respect to the global parameter.
     pub fn eval_jet(&self, t: f64) -> CurveJet {
         let (k, s) = self.locate(t);
