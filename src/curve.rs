@@ -43,7 +43,7 @@ impl ParametricCurve for PiecewiseCurve {
     }
 
     fn point_derivative(&self, t: f64) -> Result<(DVec3, DVec3)> {
-        Ok(PiecewiseCurve::point_derivative(self, t))
+        Ok(self.eval_d1(t))
     }
 }
 

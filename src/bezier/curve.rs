@@ -111,7 +111,7 @@ impl RationalBezierCurve {
     }
 
     /// Point and first derivative with respect to the local parameter.
-    pub fn point_derivative(&self, t: f64) -> (DVec3, DVec3) {
+    pub fn eval_d1(&self, t: f64) -> (DVec3, DVec3) {
         let (h, h1) = bernstein::evaluate_d1(&self.points, t);
         let p = project(h);
         (p, (h1.truncate() - h1.w * p) / h.w)

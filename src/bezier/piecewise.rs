@@ -144,9 +144,9 @@ impl PiecewiseCurve {
     }
 
     /// Point and first derivative with respect to the global parameter.
-    pub fn point_derivative(&self, t: f64) -> (DVec3, DVec3) {
+    pub fn eval_d1(&self, t: f64) -> (DVec3, DVec3) {
         let (k, s) = self.locate(t);
-        let (point, d1) = self.segments[k].point_derivative(s);
+        let (point, d1) = self.segments[k].eval_d1(s);
         (point, d1 * (1.0 / (self.breaks[k + 1] - self.breaks[k])))
     }
 
