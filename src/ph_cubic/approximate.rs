@@ -8,24 +8,27 @@
 //! along each interval of the initial breaks, with the step control of an ODE solver: a trial
 //! interval of predicted length h is fitted and measured; with distance e the h⁴ law predicts
 //! the length h·(TARGET·tolerance/e)^¼ for a distance of TARGET·tolerance. A trial beyond the
-//! tolerance is shortened to that length; a first trial well within it (below EXTEND_BELOW)
-//! is extended to it once, and the longer of the two within the tolerance is kept, so that
-//! every kept cubic is close to the tolerance: the error is equidistributed, where halving
-//! keeps cubics up to 16 times more accurate than needed. The next segment starts from the
-//! kept one's prediction; the last two of an interval share what remains equally (no short
-//! tail). No interval is measured twice.
+//! tolerance is shortened to that length (three times in a row at most, then halved); a
+//! first trial within it but below EXTEND_BELOW·tolerance is extended to it once (to the
+//! interval's end if the law puts that within the tolerance, as on a straight line), and the
+//! longer of the two within the tolerance is kept. The next segment starts from the kept
+//! one's prediction; the last few steps of an interval share what remains equally, each
+//! stretched by up to STRETCH before another step is added (no short tail). So every kept
+//! cubic is close to the tolerance, the error equidistributed, where halving keeps cubics up
+//! to 16 times more accurate than needed; the count is that of the greedy farthest reach on
+//! the curves of the benchmark, or one more.
 //!
-//! Work bounds. Each trial costs [`EVALUATIONS_PER_TRIAL`] curve evaluations (its new end and
-//! the distance's interior samples). Per kept segment there is at most one extension and one
-//! first rejection; rejections after the first in a row at least halve the trial. The binary
-//! logarithm of the trial length rises by at most 4 per kept segment ([`MAX_GROWTH`] twice),
-//! never at the start of an interval (the step carries over, cut to the interval), and falls
-//! by at least 1 per such halving, from at most the domain's length down to no less than
-//! [`MIN_INTERVAL`] of it (40 halvings). So there are at most [`MAX_TRIALS_PER_SEGMENT`]
-//! trials per kept segment plus [`EXTRA_TRIALS`] in all, and the evaluations are at most
-//! `EVALUATIONS_PER_TRIAL · (MAX_TRIALS_PER_SEGMENT · segments + EXTRA_TRIALS)` plus one per
-//! initial break. Callers cap the work with [`ApproximationOptions`]; reaching a cap is
-//! `NotConverged`.
+//! Work bounds (constants of [`ApproximationOptions`]). Each trial costs
+//! `EVALUATIONS_PER_TRIAL` = 16 curve evaluations (its new end and the distance's interior
+//! samples). Per kept segment there are the kept trial, at most one extension and at most
+//! three predicted shortenings. The binary logarithm of the trial length rises by at most 4
+//! per kept segment ([`MAX_GROWTH`] twice; an extension to the interval's end ends the
+//! interval), starts each interval at most at its length, and falls by at least 1 per
+//! halving, down to no less than [`MIN_INTERVAL`] of the domain (40 halvings). So there are
+//! at most `MAX_TRIALS_PER_SEGMENT` = 9 trials per kept segment plus `TRIALS_PER_INTERVAL` =
+//! 43 per interval of the initial breaks, and at most 16·(9·segments + 43·intervals)
+//! evaluations plus one per initial break. Callers cap segments and evaluations with
+//! [`ApproximationOptions`]; reaching a cap is `NotConverged`.
 //!
 //! Distance (module `distance`): measured both ways on 16 subintervals, from curve samples
 //! to the cubic and from cubic points to the curve, with Newton's method on closest points.
@@ -46,30 +49,12 @@ use crate::math::{angle_between, largest_coordinate, robust_normalize};
 use glam::DVec3;
 use std::cell::Cell;
 
-pub use distance::distance;
+#[cfg(test)]
+use distance::distance;
 use distance::{measure, SUBINTERVALS};
-
-/// Most segments an approximation may have unless the caller allows more.
-pub const MAX_SEGMENTS: usize = 100_000;
-
-/// The most segments a caller may allow (2²⁰; each costs a few hundred bytes while it is
-/// built, so this bounds one call's memory to about half a gigabyte).
-pub const SEGMENT_LIMIT: usize = 1 << 20;
-
-/// Curve evaluations of one trial interval: its new end and the interior samples of the
-/// distance.
-pub const EVALUATIONS_PER_TRIAL: usize = SUBINTERVALS;
 
 /// Shortest trial interval, relative to the domain (about 2⁻⁴⁰).
 const MIN_INTERVAL: f64 = 1e-12;
-
-/// Most trials per kept segment (module notes): itself, an extension, a first rejection and
-/// four halvings.
-pub const MAX_TRIALS_PER_SEGMENT: usize = 7;
-
-/// Most trials of an approximation beyond [`MAX_TRIALS_PER_SEGMENT`] per segment: the
-/// halvings from the domain's length down to [`MIN_INTERVAL`], and a failing first rejection.
-pub const EXTRA_TRIALS: usize = 41;
 
 /// Largest angle (radians) between the one-sided tangents at a joint of a G1 input curve.
 const CORNER_TOLERANCE: f64 = 1e-9;
@@ -78,14 +63,24 @@ const CORNER_TOLERANCE: f64 = 1e-9;
 /// error (the c of c·h⁴ changes along the curve).
 const TARGET: f64 = 0.95;
 
+/// How far a step predicted for [`TARGET`]·tolerance may be stretched before the h⁴ law
+/// predicts the tolerance itself: TARGET^(−1/4).
+const STRETCH: f64 = 1.012_906_807_6;
+
 /// A first trial closer than this fraction of the tolerance is extended once (module notes).
-const EXTEND_BELOW: f64 = 0.85;
+const EXTEND_BELOW: f64 = 0.8;
 
 /// Largest factor by which one trial length may exceed the last kept one.
 const MAX_GROWTH: f64 = 4.0;
 
-/// Largest factor of the first shrink after a rejection (later ones in a row halve).
+/// Largest factor of a predicted shrink after a rejection.
 const FIRST_SHRINK: f64 = 0.97;
+
+/// Rejections in a row shortened as the h⁴ law predicts; later ones at least halve.
+const PREDICTED_SHRINKS: usize = 3;
+
+/// Steps of an interval's end shared equally (see `March::trial_end`).
+const BALANCED_STEPS: f64 = 5.0;
 
 /// Smallest factor of a predicted shrink (a badly wrong trial does not overshoot below it).
 const LEAST_SHRINK: f64 = 0.1;
@@ -95,31 +90,58 @@ const LEAST_SHRINK: f64 = 0.1;
 pub struct ApproximationOptions {
     /// Largest distance between the spline and the curve, finite and > 0.
     pub tolerance: f64,
-    /// Most PH segments, 1 ..= [`SEGMENT_LIMIT`].
+    /// Most PH segments, 1 ..= [`Self::SEGMENT_LIMIT`].
     pub max_segments: usize,
     /// Most curve evaluations (≥ 1); `usize::MAX` for no cap beyond the segment limit.
     pub max_evaluations: usize,
 }
 
 impl ApproximationOptions {
-    /// The tolerance with the default caps: [`MAX_SEGMENTS`] segments, evaluations uncapped.
+    /// Most segments an approximation may have unless the caller allows more.
+    pub const MAX_SEGMENTS: usize = 100_000;
+
+    /// The most segments a caller may allow (2²⁰; each costs a few hundred bytes while it
+    /// is built, so this bounds one call's memory to about half a gigabyte).
+    pub const SEGMENT_LIMIT: usize = 1 << 20;
+
+    /// Curve evaluations of one trial interval: its new end and the interior samples of
+    /// the distance.
+    pub const EVALUATIONS_PER_TRIAL: usize = SUBINTERVALS;
+
+    /// Most trials per kept segment (module notes): itself, an extension, three predicted
+    /// shortenings and four halvings.
+    pub const MAX_TRIALS_PER_SEGMENT: usize = 9;
+
+    /// Most trials per interval of the initial breaks beyond
+    /// [`Self::MAX_TRIALS_PER_SEGMENT`] per segment: the halvings from the interval's length
+    /// down to the shortest trial (2⁻⁴⁰ of the domain), and three predicted shortenings
+    /// before a failure.
+    pub const TRIALS_PER_INTERVAL: usize = 43;
+
+    /// The tolerance with the default caps: [`Self::MAX_SEGMENTS`] segments, evaluations
+    /// uncapped.
     pub fn new(tolerance: f64) -> Self {
         Self {
             tolerance,
-            max_segments: MAX_SEGMENTS,
+            max_segments: Self::MAX_SEGMENTS,
             max_evaluations: usize::MAX,
         }
     }
 
-    fn check(&self) -> Result<()> {
+    /// Checks the tolerance and the caps (the resolution of the tolerance needs the curve and
+    /// is checked by the approximation).
+    pub fn check(&self) -> Result<()> {
         let tolerance = self.tolerance;
         if !(tolerance.is_finite() && tolerance > 0.0) {
-            return invalid!("tolerance = {tolerance:e} must be finite and positive");
-        }
-        if !(1..=SEGMENT_LIMIT).contains(&self.max_segments) {
             return invalid!(
-                "max_segments = {} must be between 1 and {SEGMENT_LIMIT}",
-                self.max_segments
+                "tolerance = {tolerance:e} must be finite and positive (in the curve's units)"
+            );
+        }
+        if !(1..=Self::SEGMENT_LIMIT).contains(&self.max_segments) {
+            return invalid!(
+                "max_segments = {} must be between 1 and {}",
+                self.max_segments,
+                Self::SEGMENT_LIMIT
             );
         }
         if self.max_evaluations == 0 {
@@ -136,6 +158,8 @@ pub struct PhApproximation {
     pub spline: PiecewiseCurve,
     /// Largest measured distance between the spline and the curve.
     pub max_distance: f64,
+    /// The measured distance of each segment.
+    pub segment_distances: Vec<f64>,
     /// How many times the curve was evaluated.
     pub evaluations: usize,
 }
@@ -251,11 +275,13 @@ pub fn ph_spline_approximate_with(
     }
     let mut breaks: Vec<f64> = march.kept.iter().map(|k| k.start).collect();
     breaks.push(starts[starts.len() - 1].t);
-    let max_distance = march.kept.iter().fold(0.0f64, |m, k| m.max(k.distance));
+    let segment_distances: Vec<f64> = march.kept.iter().map(|k| k.distance).collect();
+    let max_distance = segment_distances.iter().fold(0.0f64, |m, &d| m.max(d));
     let segments = march.kept.iter().map(|k| k.cubic.to_bezier()).collect();
     Ok(PhApproximation {
         spline: PiecewiseCurve::new(segments, breaks)?,
         max_distance,
+        segment_distances,
         evaluations: sampler.evaluations.get(),
     })
 }
@@ -319,34 +345,50 @@ impl March<'_> {
 
     /// The next segment from `a`, found from the predicted `step` (module notes): a trial
     /// within the tolerance but well below it is extended once, as far as the h⁴ law
-    /// predicts; a trial beyond it is shortened until one is within.
+    /// predicts (to the interval's end if the law puts it within the tolerance); a trial
+    /// beyond it is shortened until one is within.
     fn segment(&self, a: &Sample, end: &Sample, mut step: f64) -> Result<Trial> {
         let tolerance = self.options.tolerance;
         let mut rejections = 0;
         let mut any_cubic = false;
         let mut kept: Option<Trial> = None;
         loop {
-            let Some(b) = self.trial_end(a, end, step)? else {
+            let Some(t) = trial_end(a.t, end.t, step) else {
                 return kept.ok_or_else(|| self.give_up(a, a.t + step, None, any_cubic));
+            };
+            if let Some(trial) = kept.take_if(|k| t <= k.end.t) {
+                // The extension would not reach beyond the trial kept (the last steps of an
+                // interval are shared equally).
+                return Ok(trial);
+            }
+            let b = if t == end.t {
+                *end
+            } else {
+                self.sampler.sample(t)?
             };
             let length = b.t - a.t;
             let outcome = fit_interval(self.sampler, a, &b)?;
             match outcome {
                 Some((cubic, distance)) if distance <= tolerance => {
-                    // Extending pays only where it can save a segment: not in the last two.
-                    let extend = kept.is_none()
-                        && distance < EXTEND_BELOW * tolerance
-                        && end.t - b.t > length;
                     let trial = Trial {
                         end: b,
                         cubic,
                         distance,
                         length,
                     };
-                    if !extend {
+                    if kept.is_some() || b.t == end.t || distance >= EXTEND_BELOW * tolerance {
                         return Ok(trial);
                     }
-                    step = length * growth(distance, tolerance);
+                    let predicted = if distance > 0.0 {
+                        length * (TARGET * tolerance / distance).powf(0.25)
+                    } else {
+                        f64::INFINITY
+                    };
+                    step = if a.t + predicted >= end.t {
+                        end.t - a.t
+                    } else {
+                        length * growth(distance, tolerance)
+                    };
                     kept = Some(trial);
                 }
                 _ => {
@@ -362,26 +404,6 @@ impl March<'_> {
                 }
             }
         }
-    }
-
-    /// The end of the next trial from `a`: at `step`, or the interval's end when it is within
-    /// the step, or half way to it when it is within two (no short tail). `None` when the
-    /// step is below the resolution of the parameter.
-    fn trial_end(&self, a: &Sample, end: &Sample, step: f64) -> Result<Option<Sample>> {
-        let remaining = end.t - a.t;
-        let steps = remaining / step;
-        if steps <= 1.0 {
-            return Ok(Some(*end));
-        }
-        let t = if steps <= 2.0 {
-            a.t + 0.5 * remaining
-        } else {
-            a.t + step
-        };
-        if !(t > a.t && t < end.t) {
-            return Ok(None);
-        }
-        self.sampler.sample(t).map(Some)
     }
 
     fn give_up(&self, a: &Sample, b: f64, distance: Option<f64>, any_cubic: bool) -> Error {
@@ -410,6 +432,24 @@ impl March<'_> {
     }
 }
 
+/// The end of the next trial from `a` in [a, end]: `end` when it is within the step
+/// (stretched to what the h⁴ law allows up to the tolerance itself, [`STRETCH`]), the equal
+/// share of the remainder when a few steps remain ([`BALANCED_STEPS`]: no short tail), else
+/// a + `step`. `None` when the step is below the resolution of the parameter.
+fn trial_end(a: f64, end: f64, step: f64) -> Option<f64> {
+    let remaining = end - a;
+    let steps = remaining / step;
+    if steps <= STRETCH {
+        return Some(end);
+    }
+    let t = if steps <= BALANCED_STEPS {
+        a + remaining / (steps / STRETCH).ceil()
+    } else {
+        a + step
+    };
+    (t > a && t < end).then_some(t)
+}
+
 /// The factor for the next trial after one within the tolerance at `distance`: the h⁴ law's
 /// prediction for [`TARGET`]·tolerance, at most [`MAX_GROWTH`].
 fn growth(distance: f64, tolerance: f64) -> f64 {
@@ -423,10 +463,14 @@ fn growth(distance: f64, tolerance: f64) -> f64 {
 }
 
 /// The factor for the next trial after the `rejections`-th in a row, at `distance` (`None`:
-/// no PH cubic): the h⁴ law's prediction, at most [`FIRST_SHRINK`] the first time and at most
-/// a half after that; a half without a cubic.
+/// no PH cubic): the h⁴ law's prediction, at most [`FIRST_SHRINK`] for the first
+/// [`PREDICTED_SHRINKS`] and at most a half after that; a half without a cubic.
 fn shrink(distance: Option<f64>, tolerance: f64, rejections: usize) -> f64 {
-    let most = if rejections == 1 { FIRST_SHRINK } else { 0.5 };
+    let most = if rejections <= PREDICTED_SHRINKS {
+        FIRST_SHRINK
+    } else {
+        0.5
+    };
     match distance {
         Some(d) if d.is_finite() => (TARGET * tolerance / d)
             .powf(0.25)
@@ -445,12 +489,12 @@ pub fn ph_spline_uniform(curve: &dyn ParametricCurve, segments: usize) -> Result
         .map(|t| sampler.sample(t))
         .collect::<Result<Vec<_>>>()?;
     let mut cubics = Vec::with_capacity(segments);
-    let mut max_distance = 0.0f64;
+    let mut segment_distances = Vec::with_capacity(segments);
     for w in samples.windows(2) {
         match fit_interval(&sampler, &w[0], &w[1])? {
             Some((cubic, distance)) => {
                 cubics.push(cubic.to_bezier());
-                max_distance = max_distance.max(distance);
+                segment_distances.push(distance);
             }
             None => {
                 return no_solution!(
@@ -463,7 +507,8 @@ pub fn ph_spline_uniform(curve: &dyn ParametricCurve, segments: usize) -> Result
     }
     Ok(PhApproximation {
         spline: PiecewiseCurve::new(cubics, samples.iter().map(|s| s.t).collect())?,
-        max_distance,
+        max_distance: segment_distances.iter().fold(0.0f64, |m, &d| m.max(d)),
+        segment_distances,
         evaluations: sampler.evaluations.get(),
     })
 }

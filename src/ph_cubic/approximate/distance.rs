@@ -16,6 +16,7 @@
 
 use super::{Sample, Sampler};
 use crate::bezier::closest::LocalCubic;
+#[cfg(test)]
 use crate::curve::ParametricCurve;
 use crate::error::Result;
 use crate::math::largest_coordinate;
@@ -78,7 +79,13 @@ fn hermite_model(p0: DVec3, t0: Option<DVec3>, p1: DVec3, t1: Option<DVec3>) -> 
 }
 
 /// The measured distance between `cubic` and `curve` on [a, b] (module notes).
-pub fn distance(curve: &dyn ParametricCurve, a: f64, b: f64, cubic: &PhCubic) -> Result<f64> {
+#[cfg(test)]
+pub(crate) fn distance(
+    curve: &dyn ParametricCurve,
+    a: f64,
+    b: f64,
+    cubic: &PhCubic,
+) -> Result<f64> {
     let sampler = Sampler::new(curve, usize::MAX);
     let (start, end) = (sampler.sample(a)?, sampler.sample(b)?);
     measure(&sampler, &start, &end, cubic)

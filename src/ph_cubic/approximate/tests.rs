@@ -170,16 +170,7 @@ impl ParametricCurve for Wiggly {
 /// 512 uniform segments measure as Σ eₖ^¼.
 fn h4_lower_bound(curve: &dyn ParametricCurve, tolerance: f64) -> f64 {
     let fine = ph_spline_uniform(curve, 512).unwrap();
-    let breaks = fine.spline.breaks();
-    let sum: f64 = (0..512)
-        .map(|k| {
-            let c: Vec<DVec3> = fine.spline.segments()[k].poles().collect();
-            let cubic = PhCubic::from_control_points([c[0], c[1], c[2], c[3]]).unwrap();
-            distance(curve, breaks[k], breaks[k + 1], &cubic)
-                .unwrap()
-                .powf(0.25)
-        })
-        .sum();
+    let sum: f64 = fine.segment_distances.iter().map(|e| e.powf(0.25)).sum();
     sum / tolerance.powf(0.25)
 }
 
@@ -250,7 +241,10 @@ fn work_stays_within_the_documented_bound() {
         let (lo, hi) = curve.domain();
         let a = ph_spline_approximate(curve, &[lo, hi], tolerance).unwrap();
         let segments = a.spline.segments().len();
-        let bound = EVALUATIONS_PER_TRIAL * (MAX_TRIALS_PER_SEGMENT * segments + EXTRA_TRIALS) + 2;
+        let bound = ApproximationOptions::EVALUATIONS_PER_TRIAL
+            * (ApproximationOptions::MAX_TRIALS_PER_SEGMENT * segments
+                + ApproximationOptions::TRIALS_PER_INTERVAL)
+            + 2;
         println!(
             "{name} at {tolerance:e}: {segments} segments, {} evaluations ({:.1} per \
              segment; bound {bound})",
@@ -259,7 +253,7 @@ fn work_stays_within_the_documented_bound() {
         );
         assert!(a.evaluations <= bound);
         // In practice far fewer: about two trials per segment.
-        assert!(a.evaluations <= 3 * EVALUATIONS_PER_TRIAL * segments + 200);
+        assert!(a.evaluations <= 3 * ApproximationOptions::EVALUATIONS_PER_TRIAL * segments + 200);
     }
 }
 
@@ -275,7 +269,7 @@ fn budgets_end_in_not_converged() {
         };
         ph_spline_approximate_with(&Helix, &domain, &options)
     };
-    let e = capped(MAX_SEGMENTS, full.evaluations / 2).unwrap_err();
+    let e = capped(ApproximationOptions::MAX_SEGMENTS, full.evaluations / 2).unwrap_err();
     assert!(e.is(crate::ErrorKind::NotConverged), "{e}");
     assert!(e.message().contains("budget of"), "{e}");
     let segments = full.spline.segments().len();
@@ -286,7 +280,9 @@ fn budgets_end_in_not_converged() {
     let exact = capped(segments, full.evaluations).unwrap();
     assert_eq!(exact.spline, full.spline);
     assert_eq!(exact.evaluations, full.evaluations);
-    for (max_segments, max_evaluations) in [(0, 1), (SEGMENT_LIMIT + 1, 1), (1, 0)] {
+    for (max_segments, max_evaluations) in
+        [(0, 1), (ApproximationOptions::SEGMENT_LIMIT + 1, 1), (1, 0)]
+    {
         let e = capped(max_segments, max_evaluations).unwrap_err();
         assert!(e.is(crate::ErrorKind::InvalidInput), "{e}");
     }
