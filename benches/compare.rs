@@ -49,6 +49,10 @@ fn main() {
         .ok();
     println!("rmfsurf side by side (sections 0: medians with ranges; 1–4: fastest of {REPEATS} runs; times on this machine)\n");
     user_path::section(program.as_ref());
+    if std::env::var_os("RMFSURF_BENCH_USER_PATH_ONLY").is_some() {
+        // For profiling the user's path alone (`perf record`).
+        return;
+    }
     user_path::breaks_section();
     user_path::poles_section(program.as_ref());
     user_path::scaling_section();
@@ -339,24 +343,22 @@ impl Profile {
                 .unwrap()
             }
             Profile::Circle(r) => {
-                // Four quarter arcs, weights 1, √2/2, 1.
-                let w = std::f64::consts::FRAC_1_SQRT_2;
-                let quarter = |k: usize| {
-                    let turn = |p: DVec3| {
-                        let (s, c) = (k as f64 * std::f64::consts::FRAC_PI_2).sin_cos();
-                        r * DVec3::new(c * p.x - s * p.y, s * p.x + c * p.y, 0.0)
-                    };
+                // Three arcs of 120°, weights 1, cos 60° = 1/2, 1, the middle pole at 2r
+                // on the bisector: 7 poles, the fewest of an exact rational quadratic
+                // circle (four quarter arcs take 9).
+                let at = |degrees: f64, radius: f64| {
+                    let (s, c) = degrees.to_radians().sin_cos();
+                    DVec3::new(radius * c, radius * s, 0.0)
+                };
+                let arc = |k: usize| {
+                    let a = 120.0 * k as f64;
                     RationalBezierCurve::from_weighted(
-                        &[
-                            turn(DVec3::X),
-                            turn(DVec3::new(1.0, 1.0, 0.0)),
-                            turn(DVec3::Y),
-                        ],
-                        &[1.0, w, 1.0],
+                        &[at(a, r), at(a + 60.0, 2.0 * r), at(a + 120.0, r)],
+                        &[1.0, 0.5, 1.0],
                     )
                     .unwrap()
                 };
-                PiecewiseCurve::with_unit_intervals((0..4).map(quarter).collect()).unwrap()
+                PiecewiseCurve::with_unit_intervals((0..3).map(arc).collect()).unwrap()
             }
         }
     }
