@@ -130,11 +130,23 @@ pub fn evaluate_d1<C: Coefficient>(coeffs: &[C], t: f64) -> (C, C) {
         (1..=MAX_DEGREE + 1).contains(&n),
         "Bernstein degree out of range"
     );
-    if n <= SHORT {
+    if n == 4 {
+        cubic_d1(coeffs, t)
+    } else if n <= SHORT {
         de_casteljau_d1::<C, SHORT>(coeffs, t)
     } else {
         de_casteljau_d1::<C, { MAX_DEGREE + 1 }>(coeffs, t)
     }
+}
+
+/// A cubic and its derivative from the basis directly (the spines' case: a third of de
+/// Casteljau's work). Exact at both ends like de Casteljau's algorithm.
+fn cubic_d1<C: Coefficient>(c: &[C], t: f64) -> (C, C) {
+    let u = 1.0 - t;
+    let (uu, ut, tt) = (u * u, u * t, t * t);
+    let point = c[0] * (uu * u) + c[1] * (3.0 * uu * t) + c[2] * (3.0 * ut * t) + c[3] * (tt * t);
+    let d1 = ((c[1] - c[0]) * uu + (c[2] - c[1]) * (2.0 * ut) + (c[3] - c[2]) * tt) * 3.0;
+    (point, d1)
 }
 
 fn de_casteljau_d1<C: Coefficient, const N: usize>(coeffs: &[C], t: f64) -> (C, C) {
