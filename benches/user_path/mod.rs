@@ -605,7 +605,7 @@ pub fn poles_section(program: Option<&Program>) {
         // ∫ c^¼ dt once, from an approximation at 1e-10 (h4_bound at 1e-6).
         let bound = h4_bound(&spine, 1e-6) * (1e-6 / tolerance).powf(0.25);
         // (9·segments + 1) poles along the spine, one per pole of the profile around it.
-        let fewest = (9 * bound.ceil() as usize + 1) * built.nurbs.pole_count_v;
+        let fewest = (9 * bound.ceil() as usize + 1) * built.nurbs.pole_count_u;
         let ours: Measured = measure(std::slice::from_ref(&built.surface), poles);
         let occ = program.map_or_else(
             || failed("not run".into()),
