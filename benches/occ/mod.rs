@@ -2,6 +2,7 @@
 //! documented there), built once with the system's C++ compiler and run as a child process
 //! with a time limit, so that a sweep that hangs is reported instead of stopping the table.
 
+use rmfsurf::glam::DVec3;
 use rmfsurf::{NurbsCurve, NurbsSurface, PiecewiseCurve};
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -14,6 +15,16 @@ pub enum Spine<'a> {
     Edges(&'a PiecewiseCurve),
     /// One B-spline edge: the user's NURBS data as they are.
     Nurbs(&'a NurbsCurve),
+    /// A wire of lines and circular arcs, as CAD users draw them.
+    Wire(&'a [WireEdge]),
+}
+
+/// An analytic edge of a wire.
+#[derive(Clone, Copy)]
+pub enum WireEdge {
+    Line(DVec3, DVec3),
+    /// Start, a point on the arc, end.
+    Arc(DVec3, DVec3, DVec3),
 }
 
 /// BRepOffsetAPI_MakePipeShell's trihedron.
@@ -190,6 +201,17 @@ fn spine_input(spine: &Spine) -> String {
             }
             input
         }
+        Spine::Wire(edges) => {
+            let p = |v: &DVec3| format!("{:?} {:?} {:?}", v.x, v.y, v.z);
+            let mut input = format!("wire {}\n", edges.len());
+            for e in edges.iter() {
+                input += &match e {
+                    WireEdge::Line(a, b) => format!("line {} {}\n", p(a), p(b)),
+                    WireEdge::Arc(a, m, b) => format!("arc {} {} {}\n", p(a), p(m), p(b)),
+                };
+            }
+            input
+        }
         Spine::Nurbs(nurbs) => {
             let mut input = format!(
                 "nurbs {} {} {}\n",
@@ -278,7 +300,7 @@ fn parse_sweep(text: &str) -> Result<Sweep, String> {
         let homogeneous = words.numbers(4 * nu * nv)?;
         let poles = homogeneous
             .chunks(4)
-            .map(|c| rmfsurf::glam::DVec3::new(c[0], c[1], c[2]))
+            .map(|c| DVec3::new(c[0], c[1], c[2]))
             .collect();
         let weights = homogeneous.chunks(4).map(|c| c[3]).collect();
         let surface = NurbsSurface::new(du, dv, nu, nv, poles, Some(weights), knots_u, knots_v)

@@ -12,6 +12,8 @@
 //       (one rational Bézier edge per segment)
 //     nurbs <degree> <pole_count> <knot_count>, the knots (each repeated by its
 //       multiplicity), pole_count lines "x y z w" (one B-spline edge: the user's NURBS data)
+//     wire <n>, then per edge: line <p0> <p1> | arc <p0> <through> <p1>
+//       (a wire of analytic edges: Geom_TrimmedCurve of a line or circle, as CAD users draw)
 //   profile line <x0 y0 z0> <x1 y1 z1>  |  profile circle <cx cy cz> <nx ny nz> <r>
 //   mode corrected_frenet | frenet
 //   tolerance <tol3d>   (BRepOffsetAPI_MakePipeShell::SetTolerance; 0 keeps the default 1e-4)
@@ -34,6 +36,7 @@
 #include <BRepOffsetAPI_MakePipeShell.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
+#include <GC_MakeArcOfCircle.hxx>
 #include <GC_MakeSegment.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
@@ -123,6 +126,23 @@ static TopoDS_Wire read_spine(std::istream &in) {
     BRepBuilderAPI_MakeWire wire;
     if (kind == "nurbs") {
         wire.Add(read_nurbs_edge(in));
+    } else if (kind == "wire") {
+        int n = 0;
+        in >> n;
+        for (int e = 0; e < n; e++) {
+            std::string edge;
+            in >> edge;
+            const gp_Pnt a = read_point(in);
+            const gp_Pnt b = read_point(in);
+            if (edge == "line") {
+                wire.Add(BRepBuilderAPI_MakeEdge(GC_MakeSegment(a, b).Value()).Edge());
+            } else if (edge == "arc") {
+                const gp_Pnt c = read_point(in);
+                wire.Add(BRepBuilderAPI_MakeEdge(GC_MakeArcOfCircle(a, b, c).Value()).Edge());
+            } else {
+                throw std::runtime_error("unknown edge " + edge);
+            }
+        }
     } else if (kind == "segments") {
         int n = 0;
         in >> n;

@@ -10,7 +10,7 @@
 
 mod memory;
 
-use super::occ::{Mode, Outcome, Program, Request, Spine};
+use super::occ::{Mode, Outcome, Program, Request, Spine, WireEdge};
 use super::{measure, Measured, Profile, NORMAL};
 use rmfsurf::glam::DVec3;
 use rmfsurf::{
@@ -40,8 +40,8 @@ const TOLERANCE: f64 = 1e-4;
 struct Case {
     name: &'static str,
     nurbs: NurbsCurve,
-    /// For OpenCascade: a wire of these edges instead of one B-spline edge.
-    edges: Option<PiecewiseCurve>,
+    /// For OpenCascade: a wire of these lines and arcs instead of one B-spline edge.
+    wire: Option<Vec<WireEdge>>,
     /// Circle radius and line profile [from, to] along f₂.
     circle: f64,
     line: (f64, f64),
@@ -49,8 +49,8 @@ struct Case {
 
 impl Case {
     fn spine(&self) -> Spine<'_> {
-        match &self.edges {
-            Some(edges) => Spine::Edges(edges),
+        match &self.wire {
+            Some(edges) => Spine::Wire(edges),
             None => Spine::Nurbs(&self.nurbs),
         }
     }
@@ -69,7 +69,7 @@ fn issue_spine() -> Case {
     Case {
         name: "issue spine (cubic Bézier)",
         nurbs: NurbsCurve::new(3, poles, None, knots).unwrap(),
-        edges: None,
+        wire: None,
         circle: 2.0,
         line: (0.5, 2.0),
     }
@@ -108,7 +108,7 @@ fn long_helix() -> Case {
     Case {
         name: "helix, 10 turns (C¹ cubic NURBS, 160 segments)",
         nurbs: hermite_nurbs(helix, 20.0 * PI, 160),
-        edges: None,
+        wire: None,
         circle: 0.5,
         line: (0.1, 0.5),
     }
@@ -122,15 +122,20 @@ fn pipe_route() -> Case {
     let axes = [DVec3::X, DVec3::Y, DVec3::Z];
     let (run, radius) = (3.0, 1.0);
     let mut point = DVec3::ZERO;
-    let mut edges = Vec::new();
+    let (mut edges, mut wire) = (Vec::new(), Vec::new());
     for k in 0..51 {
         let (d, next) = (axes[k % 3], axes[(k + 1) % 3]);
         let end = point + run * d;
         edges.push(RationalBezierCurve::polynomial(&[point, end]).unwrap());
+        wire.push(WireEdge::Line(point, end));
         point = end;
         if k < 50 {
             let corner = point + radius * d;
             let end = corner + radius * next;
+            // The arc's midpoint: the centre plus the radius along the bisector.
+            let centre = point + radius * next;
+            let middle = centre + radius * (corner - centre).normalize();
+            wire.push(WireEdge::Arc(point, middle, end));
             edges.push(
                 RationalBezierCurve::from_weighted(
                     &[point, corner, end],
@@ -156,12 +161,11 @@ fn pipe_route() -> Case {
         breaks.push(breaks.last().unwrap() + l);
     }
     let raised = edges.iter().map(|e| e.elevated(2 - e.degree())).collect();
-    let nurbs =
-        NurbsCurve::from_piecewise(&PiecewiseCurve::new(raised, breaks.clone()).unwrap()).unwrap();
+    let nurbs = NurbsCurve::from_piecewise(&PiecewiseCurve::new(raised, breaks).unwrap()).unwrap();
     Case {
         name: "pipe route, 100 edges (51 lines, 49 bends)",
         nurbs,
-        edges: Some(PiecewiseCurve::new(edges, breaks).unwrap()),
+        wire: Some(wire),
         circle: 0.3,
         line: (0.05, 0.3),
     }
@@ -211,20 +215,42 @@ fn our_path(
         max_distance: fit.max_distance,
         start_frame: rmf.frames.frame(fit.spline.domain().0),
         start: fit.spline.eval(fit.spline.domain().0),
-        surface,
-        nurbs: black_box(out),
+        surfaces: vec![surface],
+        nurbs: vec![black_box(out)],
     };
     (times, built)
 }
 
-/// What our path made.
+/// What our path made: one surface, or a wire sweep's faces.
 struct Built {
+    /// PH segments (for a wire sweep: spine pieces, lines, arcs and PH segments).
     segments: usize,
     max_distance: f64,
     start: DVec3,
     start_frame: rmfsurf::Frame,
-    surface: PiecewiseSurface,
-    nurbs: NurbsSurface,
+    surfaces: Vec<PiecewiseSurface>,
+    nurbs: Vec<NurbsSurface>,
+}
+
+impl Built {
+    fn poles(&self) -> usize {
+        self.nurbs
+            .iter()
+            .map(|n| n.pole_count_u * n.pole_count_v)
+            .sum()
+    }
+
+    /// BRepCheck_Analyzer on a face of each surface.
+    fn valid(&self, program: &Program) -> String {
+        for n in &self.nurbs {
+            match program.check(n) {
+                Ok(true) => {}
+                Ok(false) => return "INVALID".into(),
+                Err(e) => return format!("check failed: {e}"),
+            }
+        }
+        "valid".into()
+    }
 }
 
 /// Median and range of a sample of seconds.
@@ -419,15 +445,8 @@ pub fn section(program: Option<&Program>) {
                 time_cell(&fr.time),
                 ratio(&fr.time, total),
             );
-            let ours = measure(
-                std::slice::from_ref(&built.surface),
-                built.nurbs.pole_count_u * built.nurbs.pole_count_v,
-            );
-            let valid = program.map_or("—".to_string(), |p| match p.check(&built.nurbs) {
-                Ok(true) => "valid".into(),
-                Ok(false) => "INVALID".into(),
-                Err(e) => format!("check failed: {e}"),
-            });
+            let ours = measure(&built.surfaces, built.poles());
+            let valid = program.map_or("—".to_string(), |p| built.valid(p));
             quality.push((case.name, profile, built.max_distance, ours, valid, cf, fr));
         }
     }
@@ -601,12 +620,12 @@ pub fn poles_section(program: Option<&Program>) {
     let curve = profile.curve();
     for tolerance in [1e-1, 1e-2, 1e-3, 1e-4, 1e-6, 1e-8] {
         let (_, built) = our_path(&case.nurbs, &curve, &ApproximationOptions::new(tolerance));
-        let poles = built.nurbs.pole_count_u * built.nurbs.pole_count_v;
+        let poles = built.poles();
         // ∫ c^¼ dt once, from an approximation at 1e-10 (h4_bound at 1e-6).
         let bound = h4_bound(&spine, 1e-6) * (1e-6 / tolerance).powf(0.25);
         // (9·segments + 1) poles along the spine, one per pole of the profile around it.
-        let fewest = (9 * bound.ceil() as usize + 1) * built.nurbs.pole_count_u;
-        let ours: Measured = measure(std::slice::from_ref(&built.surface), poles);
+        let fewest = (9 * bound.ceil() as usize + 1) * built.nurbs[0].pole_count_u;
+        let ours: Measured = measure(&built.surfaces, poles);
         let occ = program.map_or_else(
             || failed("not run".into()),
             |p| {
