@@ -43,7 +43,7 @@ fn lerp<C: Coefficient>(a: C, b: C, t: f64) -> C {
 /// Degrees up to which the evaluators work on a short stack array (spines, frames and
 /// sweeps have degree ≤ 9): zeroing the array of [`MAX_DEGREE`] + 1 coefficients took as
 /// long as the evaluation of a cubic.
-const SHORT: usize = 10;
+pub(crate) const SHORT: usize = 10;
 
 /// p(t) by de Casteljau's algorithm.
 ///
@@ -191,9 +191,18 @@ pub fn basis_jet(n: usize, t: f64, out: &mut [[f64; 3]]) {
         n <= MAX_DEGREE && out.len() > n,
         "Bernstein degree out of range"
     );
+    if n < SHORT {
+        basis_jet_rows::<SHORT>(n, t, out)
+    } else {
+        basis_jet_rows::<{ MAX_DEGREE + 1 }>(n, t, out)
+    }
+}
+
+/// [`basis_jet`] with rows of N ≥ n + 1 entries on the stack.
+fn basis_jet_rows<const N: usize>(n: usize, t: f64, out: &mut [[f64; 3]]) {
     // Basis rows of degree n − 2 and n − 1 (all zero when that degree is negative).
-    let mut below = [[0.0; MAX_DEGREE + 2]; 2];
-    let mut row = [0.0; MAX_DEGREE + 2];
+    let mut below = [[0.0; N]; 2];
+    let mut row = [0.0; N];
     row[0] = 1.0;
     for d in 0..=n {
         if d > 0 {
@@ -211,8 +220,7 @@ pub fn basis_jet(n: usize, t: f64, out: &mut [[f64; 3]]) {
         }
     }
     // Index i − k into a row, zero outside it.
-    let shifted =
-        |r: &[f64; MAX_DEGREE + 2], i: usize, k: usize| if i >= k { r[i - k] } else { 0.0 };
+    let shifted = |r: &[f64; N], i: usize, k: usize| if i >= k { r[i - k] } else { 0.0 };
     let nf = n as f64;
     for i in 0..=n {
         let d1 = nf * (shifted(&below[1], i, 1) - below[1][i]);

@@ -1,7 +1,7 @@
 //! Tensor-product rational Bézier patches on [0, 1]², homogeneous control points stored
 //! row by row with index `i * (degree_v + 1) + j`, i along u (as in the NURBS views).
 
-use super::bernstein::{self, MAX_DEGREE};
+use super::bernstein::{self, MAX_DEGREE, SHORT};
 use super::homogeneous::{project, rational_partials, HomogeneousPartials};
 use crate::error::{invalid, Result};
 use glam::{DVec3, DVec4};
@@ -95,8 +95,18 @@ impl RationalBezierPatch {
     }
 
     pub fn eval(&self, u: f64, v: f64) -> DVec3 {
+        if self.degree_u < SHORT {
+            self.eval_with::<SHORT>(u, v)
+        } else {
+            self.eval_with::<{ MAX_DEGREE + 1 }>(u, v)
+        }
+    }
+
+    /// [`Self::eval`] with a column of N > degree_u points on the stack (zeroing the longest
+    /// column cost more than evaluating a patch of the sweeps' degrees).
+    fn eval_with<const N: usize>(&self, u: f64, v: f64) -> DVec3 {
         // Evaluate each row in v, then the resulting column in u.
-        let mut column = [DVec4::ZERO; MAX_DEGREE + 1];
+        let mut column = [DVec4::ZERO; N];
         let row_len = self.degree_v + 1;
         for (i, row) in self.points.chunks_exact(row_len).enumerate() {
             column[i] = bernstein::evaluate(row, v);
@@ -106,8 +116,52 @@ impl RationalBezierPatch {
 
     /// Point and partial derivatives up to order two (local parameters).
     pub fn eval_jet(&self, u: f64, v: f64) -> SurfaceJet {
-        let mut bu = [[0.0; 3]; MAX_DEGREE + 1];
-        let mut bv = [[0.0; 3]; MAX_DEGREE + 1];
+        if self.degree_u < SHORT && self.degree_v < SHORT {
+            self.jet_with::<SHORT>(u, v)
+        } else {
+            self.jet_with::<{ MAX_DEGREE + 1 }>(u, v)
+        }
+    }
+
+    /// Point and first partial derivatives (local parameters): the rows' sums of
+    /// [`Self::eval_jet`] without the second derivatives.
+    pub fn eval_d1(&self, u: f64, v: f64) -> [DVec3; 3] {
+        if self.degree_u < SHORT && self.degree_v < SHORT {
+            self.d1_with::<SHORT>(u, v)
+        } else {
+            self.d1_with::<{ MAX_DEGREE + 1 }>(u, v)
+        }
+    }
+
+    fn d1_with<const N: usize>(&self, u: f64, v: f64) -> [DVec3; 3] {
+        let mut bu = [[0.0; 3]; N];
+        let mut bv = [[0.0; 3]; N];
+        bernstein::basis_jet(self.degree_u, u, &mut bu);
+        bernstein::basis_jet(self.degree_v, v, &mut bv);
+        let (mut s, mut su, mut sv) = (DVec4::ZERO, DVec4::ZERO, DVec4::ZERO);
+        for (i, row) in self.points.chunks_exact(self.degree_v + 1).enumerate() {
+            let (mut r0, mut r1) = (DVec4::ZERO, DVec4::ZERO);
+            for (j, &p) in row.iter().enumerate() {
+                r0 += p * bv[j][0];
+                r1 += p * bv[j][1];
+            }
+            let [b, b1, _] = bu[i];
+            s += r0 * b;
+            su += r0 * b1;
+            sv += r1 * b;
+        }
+        let p = project(s);
+        [
+            p,
+            (su.truncate() - su.w * p) / s.w,
+            (sv.truncate() - sv.w * p) / s.w,
+        ]
+    }
+
+    /// [`Self::eval_jet`] with basis rows of N > both degrees on the stack.
+    fn jet_with<const N: usize>(&self, u: f64, v: f64) -> SurfaceJet {
+        let mut bu = [[0.0; 3]; N];
+        let mut bv = [[0.0; 3]; N];
         bernstein::basis_jet(self.degree_u, u, &mut bu);
         bernstein::basis_jet(self.degree_v, v, &mut bv);
         let mut h = HomogeneousPartials::default();

@@ -36,7 +36,7 @@ use crate::error::{invalid, Result};
 use crate::export::step::{
     boundaries, Brep, BrepBound, BrepEdge, BrepFace, BrepSurface, BrepUse, PCurve,
 };
-use crate::frames::metrics::{angle_about_tangent, parameter_line_cosine};
+use crate::frames::metrics::{angle_about_tangent, partials_cosine};
 use crate::frames::Frame;
 use crate::math::GaussLegendre;
 use crate::mesh::grid_parameters;
@@ -517,7 +517,10 @@ fn max_parameter_cosine(s: &PiecewiseSurface) -> f64 {
     let vs = grid_parameters(s.v_breaks(), COSINE_SAMPLES);
     us.iter()
         .flat_map(|&u| vs.iter().map(move |&v| (u, v)))
-        .map(|(u, v)| parameter_line_cosine(&s.eval_jet(u, v)))
+        .map(|(u, v)| {
+            let [_, du, dv] = s.eval_d1(u, v);
+            partials_cosine(du, dv)
+        })
         .filter(|c| c.is_finite())
         .fold(0.0, f64::max)
 }
