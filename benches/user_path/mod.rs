@@ -15,8 +15,8 @@ use super::{measure, Measured, Profile, NORMAL};
 use rmfsurf::glam::DVec3;
 use rmfsurf::{
     check_g1, ph_rational_rmf, ph_spline_approximate, ph_spline_approximate_with, sweep,
-    ApproximationOptions, NurbsCurve, NurbsSurface, ParametricCurve, PiecewiseCurve,
-    PiecewiseSurface, RationalBezierCurve, RmfOptions,
+    sweep_wire, ApproximationOptions, Edge, NurbsCurve, NurbsSurface, ParametricCurve,
+    PiecewiseCurve, PiecewiseSurface, RationalBezierCurve, RmfOptions, WireSweep,
 };
 use std::f64::consts::{FRAC_1_SQRT_2, PI};
 use std::hint::black_box;
@@ -221,6 +221,55 @@ fn our_path(
     (times, built)
 }
 
+/// The route as the wire a user draws, through rmf_wire_sweep (`sweep_wire`): lines and
+/// arcs swept exactly (constant frames, cylinders; the arcs' rational frames, tori), the
+/// lateral faces only (the line profile is open). The seconds of the sweep and of the
+/// faces' NURBS, in the steps' "sweep" and "NURBS out" places; `start` from our NURBS path
+/// at the same start (f₂ = `NORMAL` projected, as there).
+fn wire_path(edges: &[WireEdge], profile: &PiecewiseCurve, start: &Built) -> ([f64; 5], Built) {
+    let mut times = [0.0; 5];
+    let t = Instant::now();
+    let edges: Vec<Edge> = edges
+        .iter()
+        .map(|e| match *e {
+            WireEdge::Line(from, to) => Edge::Line { from, to },
+            WireEdge::Arc(start, through, end) => Edge::Arc {
+                start,
+                through,
+                end,
+            },
+        })
+        .collect();
+    let options = WireSweep {
+        tolerance: TOLERANCE,
+        initial_normal: Some(NORMAL),
+        solid: false,
+        ..WireSweep::default()
+    };
+    let shape = sweep_wire(&edges, profile, &[], &options).unwrap();
+    times[3] = t.elapsed().as_secs_f64();
+    let t = Instant::now();
+    let surfaces: Vec<PiecewiseSurface> = shape
+        .faces()
+        .iter()
+        .filter_map(|f| f.surface.clone())
+        .collect();
+    let nurbs: Vec<NurbsSurface> = surfaces
+        .iter()
+        .map(|s| NurbsSurface::from_piecewise(s).unwrap())
+        .collect();
+    times[4] = t.elapsed().as_secs_f64();
+    let built = Built {
+        segments: shape.spine().iter().map(|c| c.segments().len()).sum(),
+        max_distance: shape.report().spine_distance,
+        start: start.start,
+        start_frame: start.start_frame,
+        surfaces,
+        nurbs: black_box(nurbs),
+    };
+    (times, built)
+}
+
 /// What our path made: one surface, or a wire sweep's faces.
 struct Built {
     /// PH segments (for a wire sweep: spine pieces, lines, arcs and PH segments).
@@ -379,7 +428,7 @@ pub fn section(program: Option<&Program>) {
          {RUNS} runs (OpenCascade {OCC_RUNS} on the issue spine, 6 on the others) [range], in {ROUNDS} \
          rounds of ours and theirs in turn; ratios of the medians (and of the fastest runs)."
     );
-    println!("| spine | profile | PH segments | rmfsurf steps: {} (median ms) | rmfsurf total | OCC corrected Frenet | OCC / rmfsurf | OCC Frenet | OCC / rmfsurf |", STEPS.join(" / "));
+    println!("| spine | profile | segments (PH; route: spine pieces) | rmfsurf steps: {} (median ms) | rmfsurf total | OCC corrected Frenet | OCC / rmfsurf | OCC Frenet | OCC / rmfsurf |", STEPS.join(" / "));
     println!("| --- | --- | --- | --- | --- | --- | --- | --- | --- |");
     let mut quality = Vec::new();
     for case in [issue_spine(), long_helix(), pipe_route()] {
@@ -396,7 +445,15 @@ pub fn section(program: Option<&Program>) {
             // falls on both.
             for _ in 0..ROUNDS {
                 for _ in 0..RUNS / ROUNDS {
-                    let (t, b) = our_path(&case.nurbs, &curve, &options);
+                    let (t, b) = match &case.wire {
+                        Some(edges) => {
+                            let start = built
+                                .take()
+                                .unwrap_or_else(|| our_path(&case.nurbs, &curve, &options).1);
+                            wire_path(edges, &curve, &start)
+                        }
+                        None => our_path(&case.nurbs, &curve, &options),
+                    };
                     steps.push(t);
                     built = Some(b);
                 }
@@ -430,15 +487,22 @@ pub fn section(program: Option<&Program>) {
             );
             let totals: Vec<f64> = steps.iter().map(|s| s.iter().sum()).collect();
             let total = spread(&totals);
-            let per_step: Vec<String> = (0..5)
-                .map(|k| ms(spread(&steps.iter().map(|s| s[k]).collect::<Vec<_>>()).median))
-                .collect();
+            let step_median =
+                |k: usize| ms(spread(&steps.iter().map(|s| s[k]).collect::<Vec<_>>()).median);
+            let per_step = match case.wire {
+                Some(_) => format!(
+                    "rmf_wire_sweep {} / NURBS out {}",
+                    step_median(3),
+                    step_median(4)
+                ),
+                None => (0..5).map(step_median).collect::<Vec<_>>().join(" / "),
+            };
             println!(
                 "| {} | {} | {} | {} | {} | {} | {} | {} | {} |",
                 case.name,
                 profile.name(),
                 built.segments,
-                per_step.join(" / "),
+                per_step,
                 with_range(total),
                 time_cell(&cf.time),
                 ratio(&cf.time, total),
@@ -453,10 +517,12 @@ pub fn section(program: Option<&Program>) {
     println!(
         "Steps: NURBS in = rmf_nurbs_curve_create (validation, Bézier decomposition); approximate = \
          rmf_ph_spline_approximate (G1 check, PH spline); RMF = rmf_ph_rational_rmf; sweep = \
-         rmf_sweep_surface; NURBS out = the surface's NURBS view (one clamped NURBS). The Rust calls \
-         behind each C entry point are timed. OpenCascade: MakePipeShell's Build on the same spine (one \
-         B-spline edge; the route as a wire of its 100 lines and arcs) and profile placed at the spine's \
-         start; NurbsConvert of its faces is not timed.\n"
+         rmf_sweep_surface; NURBS out = the surface's NURBS view (one clamped NURBS). The route: \
+         rmf_wire_sweep on its 100 lines and arcs (exact cylinders and tori, lateral faces), then each \
+         face's NURBS. The Rust calls behind each C entry point are timed. OpenCascade: \
+         MakePipeShell's Build on the same spine (one B-spline edge; the route as the wire of its 100 \
+         analytic lines and arcs) and profile placed at the spine's start; NurbsConvert of its faces is \
+         not timed.\n"
     );
     println!("Quality, both surfaces measured by the same code (12 × 12 points per patch/face; validity: BRepCheck_Analyzer on OpenCascade's shape and on a face of our NURBS surface):");
     println!("| spine | profile | spine within | poles rmfsurf / OCC CF / OCC Frenet | valid rmfsurf / CF / Frenet | max \\|cos\\| rmfsurf / CF / Frenet | max \\|K\\| rmfsurf / CF / Frenet |");
