@@ -158,6 +158,48 @@ impl RationalBezierPatch {
         ]
     }
 
+    /// The first partials (s_u, s_v) at the (steps + 1)² local parameters (i/steps, j/steps),
+    /// passed to `visit`: the basis at each parameter computed once for the whole row or
+    /// column (grids of samples, e.g. the orthogonality of a sweep's parameter lines).
+    pub fn grid_partials(&self, steps: usize, mut visit: impl FnMut(DVec3, DVec3)) {
+        let (nu, nv) = (self.degree_u + 1, self.degree_v + 1);
+        let bases = |degree: usize| -> Vec<Vec<[f64; 3]>> {
+            (0..=steps)
+                .map(|k| {
+                    let mut b = vec![[0.0; 3]; degree + 1];
+                    bernstein::basis_jet(degree, k as f64 / steps as f64, &mut b);
+                    b
+                })
+                .collect()
+        };
+        let (bu, bv) = (bases(self.degree_u), bases(self.degree_v));
+        // Per v: each row's value and v-derivative (homogeneous).
+        let mut rows = vec![(DVec4::ZERO, DVec4::ZERO); nu];
+        for b in &bv {
+            for (r, row) in rows.iter_mut().zip(self.points.chunks_exact(nv)) {
+                *r = row
+                    .iter()
+                    .zip(b)
+                    .fold((DVec4::ZERO, DVec4::ZERO), |(r0, r1), (&p, w)| {
+                        (r0 + p * w[0], r1 + p * w[1])
+                    });
+            }
+            for a in &bu {
+                let (mut s, mut su, mut sv) = (DVec4::ZERO, DVec4::ZERO, DVec4::ZERO);
+                for ((r0, r1), w) in rows.iter().zip(a) {
+                    s += *r0 * w[0];
+                    su += *r0 * w[1];
+                    sv += *r1 * w[0];
+                }
+                let p = project(s);
+                visit(
+                    (su.truncate() - su.w * p) / s.w,
+                    (sv.truncate() - sv.w * p) / s.w,
+                );
+            }
+        }
+    }
+
     /// [`Self::eval_jet`] with basis rows of N > both degrees on the stack.
     fn jet_with<const N: usize>(&self, u: f64, v: f64) -> SurfaceJet {
         let mut bu = [[0.0; 3]; N];

@@ -512,17 +512,21 @@ fn joint_gap(surfaces: &[Vec<Vec<PiecewiseSurface>>]) -> f64 {
     gap
 }
 
+/// On a grid of COSINE_SAMPLES + 1 local parameters each way on every patch (|cos| does not
+/// depend on the patch's parameter scale).
 fn max_parameter_cosine(s: &PiecewiseSurface) -> f64 {
-    let us = grid_parameters(s.u_breaks(), COSINE_SAMPLES);
-    let vs = grid_parameters(s.v_breaks(), COSINE_SAMPLES);
-    us.iter()
-        .flat_map(|&u| vs.iter().map(move |&v| (u, v)))
-        .map(|(u, v)| {
-            let [_, du, dv] = s.eval_d1(u, v);
-            partials_cosine(du, dv)
-        })
-        .filter(|c| c.is_finite())
-        .fold(0.0, f64::max)
+    let mut worst = 0.0f64;
+    for a in 0..s.u_breaks().len() - 1 {
+        for b in 0..s.v_breaks().len() - 1 {
+            s.patch(a, b).grid_partials(COSINE_SAMPLES, |du, dv| {
+                let c = partials_cosine(du, dv);
+                if c.is_finite() {
+                    worst = worst.max(c);
+                }
+            });
+        }
+    }
+    worst
 }
 
 /// v turned about the unit axis by θ (Rodrigues).
