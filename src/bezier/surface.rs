@@ -163,19 +163,18 @@ impl RationalBezierPatch {
     /// column (grids of samples, e.g. the orthogonality of a sweep's parameter lines).
     pub fn grid_partials(&self, steps: usize, mut visit: impl FnMut(DVec3, DVec3)) {
         let (nu, nv) = (self.degree_u + 1, self.degree_v + 1);
-        let bases = |degree: usize| -> Vec<Vec<[f64; 3]>> {
-            (0..=steps)
-                .map(|k| {
-                    let mut b = vec![[0.0; 3]; degree + 1];
-                    bernstein::basis_jet(degree, k as f64 / steps as f64, &mut b);
-                    b
-                })
-                .collect()
+        // The bases at the steps + 1 parameters, one after the other.
+        let bases = |degree: usize| -> Vec<[f64; 3]> {
+            let mut all = vec![[0.0; 3]; (steps + 1) * (degree + 1)];
+            for (k, b) in all.chunks_exact_mut(degree + 1).enumerate() {
+                bernstein::basis_jet(degree, k as f64 / steps as f64, b);
+            }
+            all
         };
         let (bu, bv) = (bases(self.degree_u), bases(self.degree_v));
         // Per v: each row's value and v-derivative (homogeneous).
         let mut rows = vec![(DVec4::ZERO, DVec4::ZERO); nu];
-        for b in &bv {
+        for b in bv.chunks_exact(nv) {
             for (r, row) in rows.iter_mut().zip(self.points.chunks_exact(nv)) {
                 *r = row
                     .iter()
@@ -184,7 +183,7 @@ impl RationalBezierPatch {
                         (r0 + p * w[0], r1 + p * w[1])
                     });
             }
-            for a in &bu {
+            for a in bu.chunks_exact(nu) {
                 let (mut s, mut su, mut sv) = (DVec4::ZERO, DVec4::ZERO, DVec4::ZERO);
                 for ((r0, r1), w) in rows.iter().zip(a) {
                     s += *r0 * w[0];
@@ -286,6 +285,37 @@ mod tests {
             points.push(lift(p + DVec3::Z * 2.0, w));
         }
         RationalBezierPatch::from_homogeneous(2, 1, points).unwrap()
+    }
+
+    /// The grid's partials and eval_d1 are those of eval_jet at the same local parameters
+    /// (the grid in the order v outer, u inner; a rational patch of degrees (2, 3) with
+    /// uneven weights).
+    #[test]
+    fn grid_partials_match_the_jets() {
+        let points: Vec<DVec4> = (0..12)
+            .map(|k| {
+                let (i, j) = ((k / 4) as f64, (k % 4) as f64);
+                let w = 1.0 + 0.3 * ((k * 5) % 3) as f64;
+                DVec4::new(i * w, j * w, (i * j).sin() * w, w)
+            })
+            .collect();
+        let patch = RationalBezierPatch::from_homogeneous(2, 3, points).unwrap();
+        let mut seen = Vec::new();
+        patch.grid_partials(4, |du, dv| seen.push((du, dv)));
+        assert_eq!(seen.len(), 25);
+        for (k, (du, dv)) in seen.into_iter().enumerate() {
+            let (u, v) = ((k % 5) as f64 / 4.0, (k / 5) as f64 / 4.0);
+            let jet = patch.eval_jet(u, v);
+            assert!((du - jet.du).length() < 1e-13 * jet.du.length(), "{k}");
+            assert!((dv - jet.dv).length() < 1e-13 * jet.dv.length(), "{k}");
+            let [p, du1, dv1] = patch.eval_d1(u, v);
+            assert!(
+                (p - jet.point).length() < 1e-13 * (1.0 + jet.point.length()),
+                "{k}"
+            );
+            assert!((du1 - jet.du).length() < 1e-13 * jet.du.length(), "{k}");
+            assert!((dv1 - jet.dv).length() < 1e-13 * jet.dv.length(), "{k}");
+        }
     }
 
     #[test]
