@@ -1,22 +1,31 @@
 //! The side-by-side benchmark (`scripts/bench`, or `cargo bench --bench compare`): rmfsurf
 //! against what CAD users have today, on the same inputs in one run, printed as one table.
 //!
+//! 0. The user's path (module `user_path`): NURBS spine in → exact surface out, every step
+//!    timed, beside OpenCascade's BRepOffsetAPI_MakePipeShell in corrected-Frenet and Frenet
+//!    mode on the same NURBS data (the C++ program `benches/occ/pipe_shell.cpp`, run by module
+//!    `occ` with a time limit): the spine of issue 19, a 10-turn helix and a 100-edge pipe
+//!    route; then the breaks against halving, the greedy optimum and the h⁴ bound, poles
+//!    against OpenCascade's by tolerance, and the scaling from NURBS data with memory.
 //! 1. Frames: the rational RMF of a PH cubic spline, the exact rational RMFs of Möbius
 //!    images and RRMF quintics, each against the double-reflection RMF on the same curve
 //!    at the same samples: build time, time per frame, largest angle to a reference RMF
 //!    (the closed-form RMF of the PH spline; double reflection at 100× the samples for the
 //!    others), and how many double-reflection samples match our error and what they cost.
-//! 2. Sweeps: our profile surface against OpenCascade's BRepOffsetAPI_MakePipeShell in
-//!    corrected-Frenet mode (the C++ program `benches/occ/pipe_shell.cpp`) on the same
-//!    spine and profile; both results measured here by the same code (max |cos| between
-//!    parameter lines on a circle pipe, max |K| on a line profile).
+//! 2. Sweeps from Hermite data: our profile surface against MakePipeShell in corrected-Frenet
+//!    mode on the same spine (the PH spline's Bézier edges) and profile; both results
+//!    measured here by the same code (max |cos| between parameter lines on a circle pipe,
+//!    max |K| on a line profile).
 //! 3. Developables: cone spline fit + development against the tolerance.
-//! 4. Scaling: Hermite data → PH spline → RMF → sweep for 10 … 100,000 segments, with the
+//! 4. Scaling from Hermite data: PH spline → RMF → sweep for 10 … 100,000 segments, with the
 //!    exponent of a least-squares fit of log time against log segments.
 //!
-//! Times are the fastest of several runs (the machine may be shared).
+//! Times in sections 1–4 are the fastest of several runs; section 0 gives medians with
+//! their ranges (the machine may be shared).
 
+mod occ;
 mod support;
+mod user_path;
 
 use rmfsurf::glam::DVec3;
 use rmfsurf::metrics::{angle_about_tangent, gaussian_curvature, parameter_line_cosine};
@@ -26,9 +35,6 @@ use rmfsurf::{
     ExactRmf, Frame, NurbsSurface, ParametricCurve, PiecewiseCurve, PiecewiseSurface,
     RationalBezierCurve, RationalFrames, RmfOptions, Rule, ShapeMeasure, TangentSurface,
 };
-use std::io::Write;
-use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
 use support::{timed, REPEATS};
 
 /// Frame samples per spline segment in the frame comparison: a coarse and a fine
@@ -38,9 +44,20 @@ const SAMPLES_PER_SEGMENT: [usize; 2] = [2, 10];
 const NORMAL: DVec3 = DVec3::Z;
 
 fn main() {
-    println!("rmfsurf side by side (fastest of {REPEATS} runs; times on this machine)\n");
+    let program = occ::Program::build()
+        .map_err(|e| println!("OpenCascade columns skipped: {e}"))
+        .ok();
+    println!("rmfsurf side by side (sections 0: medians with ranges; 1–4: fastest of {REPEATS} runs; times on this machine)\n");
+    user_path::section(program.as_ref());
+    if std::env::var_os("RMFSURF_BENCH_USER_PATH_ONLY").is_some() {
+        // For profiling the user's path alone (`perf record`).
+        return;
+    }
+    user_path::breaks_section();
+    user_path::poles_section(program.as_ref());
+    user_path::scaling_section();
     frames_section();
-    sweeps_section();
+    sweeps_section(program.as_ref());
     developables_section();
     scaling_section();
 }
@@ -289,19 +306,19 @@ fn measure(surfaces: &[PiecewiseSurface], poles: usize) -> Measured {
     }
 }
 
-/// The two profiles: a circle of radius 0.2 (a pipe, for |cos|) and a line from 0.1 to 0.4
-/// along f₂ (a developable strip, for K).
+/// The two profiles: a circle of radius r (a pipe, for |cos|) and a line from a to b along
+/// f₂ (a developable strip, for K).
 #[derive(Clone, Copy)]
 enum Profile {
-    Circle,
-    Line,
+    Circle(f64),
+    Line(f64, f64),
 }
 
 impl Profile {
-    fn name(self) -> &'static str {
+    fn name(self) -> String {
         match self {
-            Profile::Circle => "circle r 0.2",
-            Profile::Line => "line along f2",
+            Profile::Circle(r) => format!("circle r {r}"),
+            Profile::Line(..) => "line along f2".into(),
         }
     }
 
@@ -309,41 +326,39 @@ impl Profile {
     /// pipe is not.
     fn curvature(self, max_k: f64) -> String {
         match self {
-            Profile::Line => format!("{max_k:.1e}"),
-            Profile::Circle => "— (pipe)".into(),
+            Profile::Line(..) => format!("{max_k:.1e}"),
+            Profile::Circle(_) => "— (pipe)".into(),
         }
     }
 
     /// The profile in the normal plane (x → f₂, y → f₃), as rmfsurf sweeps it.
     fn curve(self) -> PiecewiseCurve {
         match self {
-            Profile::Line => {
+            Profile::Line(a, b) => {
                 PiecewiseCurve::with_unit_intervals(vec![RationalBezierCurve::polynomial(&[
-                    DVec3::new(0.1, 0.0, 0.0),
-                    DVec3::new(0.4, 0.0, 0.0),
+                    DVec3::new(a, 0.0, 0.0),
+                    DVec3::new(b, 0.0, 0.0),
                 ])
                 .unwrap()])
                 .unwrap()
             }
-            Profile::Circle => {
-                // Four quarter arcs, weights 1, √2/2, 1.
-                let w = std::f64::consts::FRAC_1_SQRT_2;
-                let quarter = |k: usize| {
-                    let turn = |p: DVec3| {
-                        let (s, c) = (k as f64 * std::f64::consts::FRAC_PI_2).sin_cos();
-                        0.2 * DVec3::new(c * p.x - s * p.y, s * p.x + c * p.y, 0.0)
-                    };
+            Profile::Circle(r) => {
+                // Three arcs of 120°, weights 1, cos 60° = 1/2, 1, the middle pole at 2r
+                // on the bisector: 7 poles, the fewest of an exact rational quadratic
+                // circle (four quarter arcs take 9).
+                let at = |degrees: f64, radius: f64| {
+                    let (s, c) = degrees.to_radians().sin_cos();
+                    DVec3::new(radius * c, radius * s, 0.0)
+                };
+                let arc = |k: usize| {
+                    let a = 120.0 * k as f64;
                     RationalBezierCurve::from_weighted(
-                        &[
-                            turn(DVec3::X),
-                            turn(DVec3::new(1.0, 1.0, 0.0)),
-                            turn(DVec3::Y),
-                        ],
-                        &[1.0, w, 1.0],
+                        &[at(a, r), at(a + 60.0, 2.0 * r), at(a + 120.0, r)],
+                        &[1.0, 0.5, 1.0],
                     )
                     .unwrap()
                 };
-                PiecewiseCurve::with_unit_intervals((0..4).map(quarter).collect()).unwrap()
+                PiecewiseCurve::with_unit_intervals((0..3).map(arc).collect()).unwrap()
             }
         }
     }
@@ -351,14 +366,16 @@ impl Profile {
     /// The same profile placed at the spine's start for OpenCascade, in the plane of the
     /// start frame (f₂, f₃).
     fn occ_input(self, start: DVec3, frame: &Frame) -> String {
-        let p = |v: DVec3| format!("{} {} {}", v.x, v.y, v.z);
+        let p = |v: DVec3| format!("{:?} {:?} {:?}", v.x, v.y, v.z);
         match self {
-            Profile::Line => format!(
+            Profile::Line(a, b) => format!(
                 "profile line {} {}\n",
-                p(start + 0.1 * frame.f2),
-                p(start + 0.4 * frame.f2)
+                p(start + a * frame.f2),
+                p(start + b * frame.f2)
             ),
-            Profile::Circle => format!("profile circle {} {} 0.2\n", p(start), p(frame.tangent)),
+            Profile::Circle(r) => {
+                format!("profile circle {} {} {r:?}\n", p(start), p(frame.tangent))
+            }
         }
     }
 }
@@ -370,160 +387,26 @@ fn our_sweep(points: &[DVec3], tangents: &[DVec3], profile: &PiecewiseCurve) -> 
     sweep(&spline, &rmf.frames, profile).unwrap()
 }
 
-/// The OpenCascade program, built once with the system's C++ compiler.
-fn occ_program() -> Result<PathBuf, String> {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let out = root.join("target").join("occ_pipe_shell");
-    let status = Command::new("c++")
-        .args([
-            "-O2",
-            "-std=c++17",
-            "-w",
-            "-isystem",
-            "/usr/include/opencascade",
-        ])
-        .arg(root.join("benches/occ/pipe_shell.cpp"))
-        .arg("-o")
-        .arg(&out)
-        .args([
-            "-lTKOffset",
-            "-lTKFillet",
-            "-lTKBool",
-            "-lTKBO",
-            "-lTKShHealing",
-            "-lTKPrim",
-            "-lTKTopAlgo",
-            "-lTKGeomAlgo",
-            "-lTKBRep",
-            "-lTKGeomBase",
-            "-lTKG3d",
-            "-lTKG2d",
-            "-lTKMath",
-            "-lTKernel",
-        ])
-        .status()
-        .map_err(|e| format!("no C++ compiler ({e})"))?;
-    if status.success() {
-        Ok(out)
-    } else {
-        Err("building benches/occ/pipe_shell.cpp failed (OpenCascade dev packages: scripts/bench installs them)".into())
-    }
-}
-
-/// Runs MakePipeShell on the spine's Bézier segments; its time and its faces.
-fn occ_sweep(
-    program: &Path,
-    spine: &PiecewiseCurve,
-    profile: &str,
-) -> Result<(f64, Vec<NurbsSurface>), String> {
-    let mut input = format!("segments {}\n", spine.segments().len());
-    for segment in spine.segments() {
-        input += &format!("{}\n", segment.degree());
-        for (p, w) in segment.poles().zip(segment.weights()) {
-            input += &format!("{} {} {} {}\n", p.x, p.y, p.z, w);
-        }
-    }
-    input += profile;
-    input += &format!("repeats {REPEATS}\n");
-    let mut child = Command::new(program)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .map_err(|e| e.to_string())?;
-    child
-        .stdin
-        .take()
-        .unwrap()
-        .write_all(input.as_bytes())
-        .map_err(|e| e.to_string())?;
-    let output = child.wait_with_output().map_err(|e| e.to_string())?;
-    if !output.status.success() {
-        return Err(String::from_utf8_lossy(&output.stderr).into_owned());
-    }
-    parse_occ(&String::from_utf8_lossy(&output.stdout))
-}
-
-/// The words of the program's output, read as numbers (labels skipped by the caller).
-struct Words<'a>(std::str::SplitWhitespace<'a>);
-
-impl Words<'_> {
-    fn number(&mut self) -> Result<f64, String> {
-        let word = self.0.next().ok_or("truncated OpenCascade output")?;
-        word.parse().map_err(|e| format!("{word}: {e}"))
-    }
-
-    fn count(&mut self) -> Result<usize, String> {
-        Ok(self.number()? as usize)
-    }
-
-    fn numbers(&mut self, n: usize) -> Result<Vec<f64>, String> {
-        (0..n).map(|_| self.number()).collect()
-    }
-
-    fn skip(&mut self) {
-        self.0.next();
-    }
-}
-
-/// Reads the program's output (format in pipe_shell.cpp).
-fn parse_occ(text: &str) -> Result<(f64, Vec<NurbsSurface>), String> {
-    let mut words = Words(text.split_whitespace());
-    words.skip();
-    let time = words.number()? / 1e3;
-    words.skip();
-    let faces = words.count()?;
-    let mut surfaces = Vec::with_capacity(faces);
-    for _ in 0..faces {
-        let (du, dv, nu, nv) = (
-            words.count()?,
-            words.count()?,
-            words.count()?,
-            words.count()?,
-        );
-        let knot_count = words.count()?;
-        let knots_u = words.numbers(knot_count)?;
-        let knot_count = words.count()?;
-        let knots_v = words.numbers(knot_count)?;
-        let homogeneous = words.numbers(4 * nu * nv)?;
-        let poles = homogeneous
-            .chunks(4)
-            .map(|c| DVec3::new(c[0], c[1], c[2]))
-            .collect();
-        let weights = homogeneous.chunks(4).map(|c| c[3]).collect();
-        let surface = NurbsSurface::new(du, dv, nu, nv, poles, Some(weights), knots_u, knots_v)
-            .map_err(|e| e.to_string())?;
-        surfaces.push(surface);
-    }
-    Ok((time, surfaces))
-}
-
-fn sweeps_section() {
-    println!("2. SWEEPS against OpenCascade BRepOffsetAPI_MakePipeShell, corrected Frenet (same spine and profile)");
-    let program = match occ_program() {
-        Ok(p) => Some(p),
-        Err(e) => {
-            println!("OpenCascade column skipped: {e}");
-            None
-        }
-    };
+fn sweeps_section(program: Option<&occ::Program>) {
+    println!("2. SWEEPS FROM HERMITE DATA against OpenCascade BRepOffsetAPI_MakePipeShell, corrected Frenet (same spine and profile)");
     println!("| spine segments | profile | rmfsurf build | OCC build | rmfsurf poles | OCC poles (faces) | max \\|cos\\| rmfsurf | max \\|cos\\| OCC | max \\|K\\| rmfsurf | max \\|K\\| OCC |");
     println!("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |");
     for segments in [16, 64] {
         // Half a turn of the spiral per 16 segments: 0.2 rad per segment.
         let (points, tangents) = spiral_data(segments, 3.2 / segments as f64);
-        for profile in [Profile::Circle, Profile::Line] {
-            sweep_row(&program, &points, &tangents, profile, segments);
+        for profile in [Profile::Circle(0.2), Profile::Line(0.1, 0.4)] {
+            sweep_row(program, &points, &tangents, profile, segments);
         }
     }
     println!(
-        "Build: rmfsurf from the Hermite data (PH spline + RMF + surface); OpenCascade from the finished \
-         spine (the PH spline's Bézier edges). Both surfaces measured here at 12 × 12 points per patch/face.\n"
+        "Build: rmfsurf from Hermite data (PH spline + RMF + surface: not the user's path, which starts \
+         from NURBS data, section 0); OpenCascade from the finished spine (the PH spline's Bézier \
+         edges). Both surfaces measured here at 12 × 12 points per patch/face.\n"
     );
 }
 
 fn sweep_row(
-    program: &Option<PathBuf>,
+    program: Option<&occ::Program>,
     points: &[DVec3],
     tangents: &[DVec3],
     profile: Profile,
@@ -536,16 +419,29 @@ fn sweep_row(
         std::slice::from_ref(&surface),
         nurbs.pole_count_u * nurbs.pole_count_v,
     );
-    let occ = program.as_ref().map(|program| {
+    let occ = program.map(|program| {
         let spine = ph_spline_hermite(points, tangents).unwrap();
         let rmf = ph_rational_rmf(&spine, &RmfOptions::rmf(NORMAL)).unwrap();
-        let input = profile.occ_input(spine.eval(0.0), &rmf.frames.frame(0.0));
-        occ_sweep(program, &spine, &input).map(|(time, faces)| {
-            let poles = faces.iter().map(|f| f.pole_count_u * f.pole_count_v).sum();
-            let pieces: Vec<PiecewiseSurface> =
-                faces.iter().map(|f| f.to_piecewise().unwrap()).collect();
-            (time, faces.len(), measure(&pieces, poles))
-        })
+        let request = occ::Request {
+            spine: occ::Spine::Edges(&spine),
+            profile: profile.occ_input(spine.eval(0.0), &rmf.frames.frame(0.0)),
+            mode: occ::Mode::CorrectedFrenet,
+            tolerance: 0.0,
+            repeats: REPEATS,
+            time_limit: std::time::Duration::from_secs(120),
+        };
+        match program.sweep(&request) {
+            occ::Outcome::Done(result) => {
+                let faces = &result.faces;
+                let poles = faces.iter().map(|f| f.pole_count_u * f.pole_count_v).sum();
+                let pieces: Vec<PiecewiseSurface> =
+                    faces.iter().map(|f| f.to_piecewise().unwrap()).collect();
+                let fastest = result.times.iter().copied().fold(f64::INFINITY, f64::min);
+                Ok((fastest, faces.len(), measure(&pieces, poles)))
+            }
+            occ::Outcome::Failed(e) => Err(e),
+            occ::Outcome::TimedOut(limit) => Err(format!("no result after {limit:?}")),
+        }
     });
     let (occ_time, occ_poles, occ_cos, occ_k) = match occ {
         Some(Ok((time, faces, m))) => (
@@ -654,10 +550,10 @@ fn developables_section() {
 // 4. Scaling
 
 fn scaling_section() {
-    println!("4. SCALING: Hermite data → PH spline → rational RMF → profile surface (line profile), conical helix, 0.1 rad per segment");
+    println!("4. SCALING FROM HERMITE DATA: Hermite data → PH spline → rational RMF → profile surface (line profile), conical helix, 0.1 rad per segment");
     println!("| segments | time | per segment |");
     println!("| --- | --- | --- |");
-    let profile = Profile::Line.curve();
+    let profile = Profile::Line(0.1, 0.4).curve();
     let mut samples = Vec::new();
     for segments in [10, 100, 1_000, 10_000, 100_000] {
         let (points, tangents) = spiral_data(segments, 0.1);
@@ -669,6 +565,14 @@ fn scaling_section() {
         );
         samples.push(((segments as f64).ln(), time.ln()));
     }
+    println!(
+        "Fitted exponent (time ∝ segments^p, least squares on log–log): p = {:.3}",
+        fitted_exponent(&samples)
+    );
+}
+
+/// The slope of a least-squares line through (log n, log time) samples.
+fn fitted_exponent(samples: &[(f64, f64)]) -> f64 {
     let n = samples.len() as f64;
     let (mx, my) = samples
         .iter()
@@ -676,8 +580,5 @@ fn scaling_section() {
     let (sxy, sxx) = samples.iter().fold((0.0, 0.0), |(a, b), (x, y)| {
         (a + (x - mx) * (y - my), b + (x - mx) * (x - mx))
     });
-    println!(
-        "Fitted exponent (time ∝ segments^p, least squares on log–log): p = {:.3}",
-        sxy / sxx
-    );
+    sxy / sxx
 }

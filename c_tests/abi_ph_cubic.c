@@ -691,9 +691,74 @@ static void test_callback_curve(void) {
     rmf_curve_free(analytic);
 }
 
+/* The helix of `helix` with pitch 0.5, counting its calls. */
+static size_t helix_calls = 0;
+static void counted_helix(double t, void *user, RmfVec3 *point, RmfVec3 *tangent) {
+    helix_calls++;
+    helix(t, user, point, tangent);
+}
+
+/* rmf_ph_spline_approximate_with_options: the same spline as rmf_ph_spline_approximate, a
+   report whose evaluations are the callback calls counted here, and caps that end in
+   RMF_ERROR_NOT_CONVERGED without writing anything. */
+static void test_approximate_with_options(void) {
+    double pitch = 0.5, d = -1;
+    RmfCurve *analytic = NULL, *plain = NULL, *capped = NULL, *untouched = (RmfCurve *)&pitch;
+    RmfPhApproximationOptions options;
+    RmfPhApproximationReport report = {sizeof(RmfPhApproximationReport), -1, 0, 0};
+    size_t segments = 0;
+    CHECK_STATUS(rmf_ph_approximation_options_init(&options), RMF_OK, "");
+    CHECK(options.struct_size == sizeof options && options.tolerance == 0 && options.max_segments == 100000 &&
+              options.max_evaluations == SIZE_MAX,
+          "options_init writes the defaults");
+    CHECK_STATUS(rmf_callback_curve_create(counted_helix, &pitch, 0, 2 * PI, &analytic), RMF_OK, "");
+    CHECK_STATUS(rmf_ph_spline_approximate_with_options(analytic, &options, &capped, NULL), RMF_ERROR_INVALID_INPUT,
+                 "tolerance");
+    options.tolerance = 1e-6;
+    helix_calls = 0;
+    CHECK_STATUS(rmf_ph_spline_approximate_with_options(analytic, &options, &capped, &report), RMF_OK, "");
+    CHECK(report.evaluations == helix_calls && helix_calls > 0, "the report counts every callback call");
+    CHECK_STATUS(rmf_curve_segment_count(capped, &segments), RMF_OK, "");
+    CHECK(report.segments == segments, "the report counts the segments");
+    CHECK(report.max_distance > 0 && report.max_distance <= 1e-6, "the report's distance is within the tolerance");
+    CHECK_STATUS(rmf_ph_spline_approximate(NULL, helix, &pitch, 0, 2 * PI, 1e-6, &plain, &d), RMF_OK, "");
+    CHECK(d == report.max_distance, "the same spline as rmf_ph_spline_approximate");
+    printf("rmf_ph_spline_approximate_with_options: helix to 1e-6 with %zu PH cubics, %zu callback calls\n",
+           report.segments, report.evaluations);
+
+    options.max_evaluations = report.evaluations - 1;
+    CHECK_STATUS(rmf_ph_spline_approximate_with_options(analytic, &options, &untouched, &report), RMF_ERROR_NOT_CONVERGED,
+                 "budget");
+    options.max_evaluations = SIZE_MAX;
+    options.max_segments = segments - 1;
+    report.segments = 0;
+    CHECK_STATUS(rmf_ph_spline_approximate_with_options(analytic, &options, &untouched, &report), RMF_ERROR_NOT_CONVERGED,
+                 "max_segments");
+    CHECK(untouched == (RmfCurve *)&pitch && report.segments == 0, "a failing call writes neither out nor report");
+    options.max_segments = 0;
+    CHECK_STATUS(rmf_ph_spline_approximate_with_options(analytic, &options, &untouched, NULL), RMF_ERROR_INVALID_INPUT,
+                 "max_segments");
+    options.max_segments = 100000;
+    report.struct_size = 3;
+    CHECK_STATUS(rmf_ph_spline_approximate_with_options(analytic, &options, &untouched, &report), RMF_ERROR_INVALID_INPUT,
+                 "report->struct_size");
+    options.tolerance = 4e-320;
+    CHECK_STATUS(rmf_ph_spline_approximate_with_options(analytic, &options, &untouched, NULL), RMF_ERROR_INVALID_INPUT,
+                 "below what f64 resolves");
+    CHECK_STATUS(rmf_ph_spline_approximate_with_options(analytic, NULL, &untouched, NULL), RMF_ERROR_NULL_POINTER,
+                 "options");
+    CHECK_STATUS(rmf_ph_spline_approximate_with_options(NULL, &options, &untouched, NULL), RMF_ERROR_NULL_POINTER,
+                 "curve");
+    CHECK(untouched == (RmfCurve *)&pitch, "out untouched on failure");
+    rmf_curve_free(plain);
+    rmf_curve_free(capped);
+    rmf_curve_free(analytic);
+}
+
 int main(void) {
     test_hermite();
     test_callback_curve();
+    test_approximate_with_options();
     test_spline_hermite();
     test_approximation_order();
     test_spline_approximate();

@@ -519,6 +519,58 @@ typedef struct RmfInversion {
 } RmfInversion;
 
 /**
+ * What rmf_ph_spline_approximate_with_options aims at and may spend. Initialise with
+ * rmf_ph_approximation_options_init, then set the tolerance.
+ * \since 0.2
+ */
+typedef struct RmfPhApproximationOptions {
+  /**
+   * sizeof(RmfPhApproximationOptions), written by rmf_ph_approximation_options_init.
+   */
+  size_t struct_size;
+  /**
+   * Largest distance between the spline and the curve, in the curve's units: finite, > 0
+   * and not below the rounding of the curve's coordinates. Default 0, which is refused:
+   * set it.
+   */
+  double tolerance;
+  /**
+   * Most PH segments, 1 … 1,048,576 (2^20). Default 100,000.
+   */
+  size_t max_segments;
+  /**
+   * Most evaluations of the curve (for a callback curve, callback calls), ≥ 1. Default
+   * SIZE_MAX (no cap beyond max_segments). Each trial interval costs 16; at most 9 trials
+   * per segment plus 43 per segment of the curve (about 1.5 per segment on smooth curves).
+   */
+  size_t max_evaluations;
+} RmfPhApproximationOptions;
+
+/**
+ * What rmf_ph_spline_approximate_with_options did. The caller sets struct_size =
+ * sizeof(RmfPhApproximationReport); the library writes the fields that fit, on success only.
+ * \since 0.2
+ */
+typedef struct RmfPhApproximationReport {
+  /**
+   * sizeof(RmfPhApproximationReport), set by the caller.
+   */
+  size_t struct_size;
+  /**
+   * Largest measured distance between the spline and the curve.
+   */
+  double max_distance;
+  /**
+   * PH segments of the spline.
+   */
+  size_t segments;
+  /**
+   * Evaluations of the curve (callback calls for a callback curve).
+   */
+  size_t evaluations;
+} RmfPhApproximationReport;
+
+/**
  * Where a sweep comes closest to being singular (Corollary 7 of Mäurer & Jüttler).
  */
 typedef struct RmfSingularityMargin {
@@ -1801,14 +1853,17 @@ RmfStatus rmf_ph_spline_hermite(const struct RmfVec3 *points,
 
 /**
  * A PH cubic spline within a distance tolerance of a curve (Mäurer & Jüttler §3.2,
- * Theorem 10): Hermite data sampled from the curve, adaptive halving of intervals until the
- * sampled two-sided distance between each PH cubic and the curve is at most tolerance. The
- * approximation order is 4: halving an interval divides its error by about 16. The spline
- * uses the curve's parameter values as breakpoints.
+ * Theorem 10): Hermite data sampled from the curve, one PH cubic of Table 1 per interval,
+ * breaks placed so that every cubic's sampled two-sided distance to the curve is at most
+ * tolerance, with few segments: the distance falls like h⁴ in the interval length h, and
+ * each interval is made about as long as that law allows. The spline uses the curve's
+ * parameter values as breakpoints (and breaks at every joint of a piecewise curve).
+ * rmf_ph_spline_approximate_with_options is the same with caps on the work and a report.
  *
  * Give exactly one of curve and callback.
  *
- * @param[in] curve A G1 curve (e.g. from rmf_nurbs_curve_create), whole domain; or NULL.
+ * @param[in] curve A G1 curve (e.g. from rmf_nurbs_curve_create or
+ *            rmf_callback_curve_create), whole domain; or NULL.
  * @param[in] callback An analytic curve on [t_min, t_max] (see RmfCurveCallback); or NULL.
  *            It must be regular (non-zero derivative) and G1.
  * @param[in] user Passed to callback unchanged.
@@ -1818,12 +1873,15 @@ RmfStatus rmf_ph_spline_hermite(const struct RmfVec3 *points,
  * @param[out] max_distance May be NULL. Receives the largest measured distance.
  * @return RMF_OK on success.
  * @return RMF_ERROR_NULL_POINTER If out is NULL, or both curve and callback are.
- * @return RMF_ERROR_INVALID_INPUT If tolerance is not finite and positive, both curve and
- *         callback are given, t_min/t_max are not finite with t_min < t_max, the curve has a
- *         corner, or the callback gives a non-finite point or a zero tangent.
+ * @return RMF_ERROR_INVALID_INPUT If tolerance is not finite and positive, or below what f64
+ *         resolves at the curve's coordinates (2.2e-16 times the largest coordinate at the
+ *         domain's ends and breaks), both curve and callback are given, t_min/t_max are not
+ *         finite with t_min < t_max, the curve has a corner, or the callback gives a
+ *         non-finite point or a zero tangent.
  * @return RMF_ERROR_NO_SOLUTION If no PH cubic interpolates the curve even on a very short
  *         interval (a cusp, or a straight line meeting a corner).
- * @return RMF_ERROR_NOT_CONVERGED If the tolerance is not reached within 100,000 segments.
+ * @return RMF_ERROR_NOT_CONVERGED If the tolerance is not reached within 100,000 segments,
+ *         or not above the rounding of the coordinates on the shortest intervals.
  */
 RmfStatus rmf_ph_spline_approximate(const struct RmfCurve *curve,
                                     RmfCurveCallback callback,
@@ -1833,6 +1891,52 @@ RmfStatus rmf_ph_spline_approximate(const struct RmfCurve *curve,
                                     double tolerance,
                                     struct RmfCurve **out,
                                     double *max_distance);
+
+/**
+ * Writes the default options (tolerance 0, to be set; 100,000 segments; no cap on
+ * evaluations) and struct_size.
+ *
+ * @param[out] out The options to initialise.
+ * @return RMF_OK, or RMF_ERROR_NULL_POINTER if out is NULL.
+ * \since 0.2
+ */
+RmfStatus rmf_ph_approximation_options_init(struct RmfPhApproximationOptions *out);
+
+/**
+ * rmf_ph_spline_approximate of a curve, with caps on the work and a report of it. The
+ * breaks are placed as there; the work is bounded: each trial interval evaluates the curve
+ * 16 times, there are at most 9 trials per PH segment plus 43 per segment of a piecewise
+ * curve (one for a callback curve), about 1.5 per PH segment on smooth curves (some 25
+ * evaluations per segment), and the call ends with
+ * RMF_ERROR_NOT_CONVERGED as soon as options->max_segments or options->max_evaluations
+ * would be exceeded. Time: about 4 µs per segment plus 35 evaluations of the curve (a cubic
+ * NURBS costs about 30 ns per evaluation) on a 2-core x86-64 machine of 2026.
+ *
+ * @param[in] curve A G1 curve (NURBS data, a computed curve or a callback curve from
+ *            rmf_callback_curve_create), whole domain; a piecewise curve breaks at its
+ *            joints.
+ * @param[in] options Tolerance and caps (initialise with rmf_ph_approximation_options_init).
+ * @param[out] out Receives the spline; free with rmf_curve_free. Untouched on failure.
+ * @param[out] report May be NULL. With struct_size set by the caller, receives the largest
+ *             measured distance, the segments and the evaluations. Untouched on failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If curve, options or out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If options->struct_size or report->struct_size is no size
+ *         of the struct, the tolerance is not finite and positive or below what f64 resolves
+ *         at the curve's coordinates (2.2e-16 times the largest coordinate at the domain's
+ *         ends and joints), max_segments is outside 1 … 2^20, max_evaluations is 0, the
+ *         curve has a corner, or a callback gives a non-finite point or a zero tangent.
+ * @return RMF_ERROR_NO_SOLUTION If no PH cubic interpolates the curve even on a very short
+ *         interval (a cusp, or a straight line meeting a corner).
+ * @return RMF_ERROR_NOT_CONVERGED If the tolerance would need more than max_segments
+ *         segments or more than max_evaluations evaluations, or is not reached above the
+ *         rounding of the coordinates on the shortest intervals.
+ * \since 0.2
+ */
+RmfStatus rmf_ph_spline_approximate_with_options(const struct RmfCurve *curve,
+                                                 const struct RmfPhApproximationOptions *options,
+                                                 struct RmfCurve **out,
+                                                 struct RmfPhApproximationReport *report);
 
 /**
  * The rational approximation of the rotation-minimizing frame of a PH cubic spline

@@ -43,8 +43,7 @@ impl ParametricCurve for PiecewiseCurve {
     }
 
     fn point_derivative(&self, t: f64) -> Result<(DVec3, DVec3)> {
-        let jet = self.eval_jet(t);
-        Ok((jet.point, jet.d1))
+        Ok(self.eval_d1(t))
     }
 }
 

@@ -85,7 +85,10 @@ pub use ph_cubic::accuracy::{angle_errors, AngleErrors};
 pub use ph_cubic::analysis::{
     convex_initial_normal, ConvexStart, ParabolicLines, ProfileSurface, SingularityMargin,
 };
-pub use ph_cubic::approximate::{check_g1, ph_spline_approximate, PhApproximation};
+pub use ph_cubic::approximate::{
+    check_g1, ph_spline_approximate, ph_spline_approximate_with, ApproximationOptions,
+    PhApproximation,
+};
 pub use ph_cubic::cubic::PH_TOLERANCE;
 pub use ph_cubic::exact_rmf::ExactRmf;
 pub use ph_cubic::frenet::ph_frenet_frames;

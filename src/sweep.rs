@@ -44,10 +44,17 @@ pub fn sweep(
     };
     check_frames_fit_spine(spine, frames)?;
     check_sweep_size(spine, frames, profile)?;
-    let mut patches = Vec::with_capacity(profile.segments().len() * spine.segments().len());
+    let factors: Vec<SpineFactors> = spine
+        .segments()
+        .iter()
+        .zip(frames.segments())
+        .map(|(segment, frame)| SpineFactors::new(segment, frame))
+        .collect();
+    let mut patches = Vec::with_capacity(profile.segments().len() * factors.len());
     for piece in profile.segments() {
-        for (segment, frame) in spine.segments().iter().zip(frames.segments()) {
-            patches.push(sweep_patch(segment, frame, piece)?);
+        let profile = ProfileFactors::new(piece);
+        for spine in &factors {
+            patches.push(sweep_patch(spine, &profile)?);
         }
     }
     PiecewiseSurface::new(patches, profile.breaks().to_vec(), spine.breaks().to_vec())
@@ -77,29 +84,55 @@ fn check_sweep_size(
     }
 }
 
+/// The factors in v of every patch along one spine segment (the module equation): X·d,
+/// w·N₂ and w·N₃, homogeneous. They do not depend on the profile piece.
+struct SpineFactors {
+    along_spine: Vec<DVec4>,
+    along_f2: Vec<DVec4>,
+    along_f3: Vec<DVec4>,
+}
+
+impl SpineFactors {
+    fn new(spine: &RationalBezierCurve, frame: &RationalFrameSegment) -> Self {
+        let x = spine.homogeneous();
+        let spine_weight: Vec<f64> = x.iter().map(|h| h.w).collect();
+        let weighted = |numerator: &[DVec3]| {
+            product(&spine_weight, numerator, |w: f64, n: DVec3| {
+                (n * w).extend(0.0)
+            })
+        };
+        Self {
+            along_spine: product(x, frame.denominator(), |h: DVec4, d: f64| h * d),
+            along_f2: weighted(frame.f2_numerator()),
+            along_f3: weighted(frame.f3_numerator()),
+        }
+    }
+}
+
+/// The factors in u of every patch across one profile piece: h, C₂ and C₃.
+struct ProfileFactors {
+    h: Vec<f64>,
+    c2: Vec<f64>,
+    c3: Vec<f64>,
+}
+
+impl ProfileFactors {
+    fn new(profile: &RationalBezierCurve) -> Self {
+        let c = profile.homogeneous();
+        Self {
+            h: c.iter().map(|p| p.w).collect(),
+            c2: c.iter().map(|p| p.x).collect(),
+            c3: c.iter().map(|p| p.y).collect(),
+        }
+    }
+}
+
 /// One patch: profile piece × spine segment (see the module equation).
-fn sweep_patch(
-    spine: &RationalBezierCurve,
-    frame: &RationalFrameSegment,
-    profile: &RationalBezierCurve,
-) -> Result<RationalBezierPatch> {
-    let x = spine.homogeneous();
-    let spine_weight: Vec<f64> = x.iter().map(|h| h.w).collect();
-    let along_spine = product(x, frame.denominator(), |h: DVec4, d: f64| h * d);
-    let along_f2: Vec<DVec4> = product(&spine_weight, frame.f2_numerator(), |w: f64, n: DVec3| {
-        (n * w).extend(0.0)
-    });
-    let along_f3: Vec<DVec4> = product(&spine_weight, frame.f3_numerator(), |w: f64, n: DVec3| {
-        (n * w).extend(0.0)
-    });
-    let c = profile.homogeneous();
-    let h: Vec<f64> = c.iter().map(|p| p.w).collect();
-    let c2: Vec<f64> = c.iter().map(|p| p.x).collect();
-    let c3: Vec<f64> = c.iter().map(|p| p.y).collect();
+fn sweep_patch(spine: &SpineFactors, profile: &ProfileFactors) -> Result<RationalBezierPatch> {
     RationalBezierPatch::from_outer_products(&[
-        (&h, &along_spine),
-        (&c2, &along_f2),
-        (&c3, &along_f3),
+        (&profile.h, &spine.along_spine),
+        (&profile.c2, &spine.along_f2),
+        (&profile.c3, &spine.along_f3),
     ])
 }
 

@@ -178,10 +178,11 @@ pub(crate) unsafe fn buffer<'a, T>(
     Ok(std::slice::from_raw_parts_mut(p, capacity))
 }
 
-/// An options struct of the C API. Its first field is `size_t struct_size`, which the
-/// caller's `rmf_*_options_init` set to the size of the struct *it* was compiled with: a
-/// program built against an older header passes a shorter struct, and the fields it does
-/// not know keep their defaults. Structs only grow at the end.
+/// An options (or report) struct of the C API. Its first field is `size_t struct_size`, which
+/// the caller's `rmf_*_options_init` (or the caller, for a report) set to the size of the
+/// struct *it* was compiled with: a program built against an older header passes a shorter
+/// struct, and the fields it does not know keep their defaults (or are not written). Structs
+/// only grow at the end.
 ///
 /// # Safety
 /// Implementors are `#[repr(C)]` plain data whose first field is a `usize` and for which
@@ -219,6 +220,45 @@ pub(crate) unsafe fn options<T: OptionsStruct>(
         size,
     );
     Ok(value)
+}
+
+/// A caller's struct that the library fills (a report), checked before any work: NULL means
+/// "not wanted"; otherwise its `struct_size`, set by the caller to the size of the struct it
+/// was compiled with, must be a size of the struct. Returns the pointer and that size.
+///
+/// # Safety
+/// `p` must be NULL or point to at least `struct_size` writable bytes.
+pub(crate) unsafe fn sized_out<T: OptionsStruct>(
+    p: *mut T,
+    name: &'static str,
+) -> FfiResult<Option<(*mut T, usize)>> {
+    let Some(p) = optional_out(p, name)? else {
+        return Ok(None);
+    };
+    let size = p.cast::<usize>().read();
+    if size < T::FIRST_SIZE || size > std::mem::size_of::<T>() {
+        return invalid_arg(format!(
+            "{name}->struct_size = {size} is no size of this struct ({} to {} bytes): set it \
+             to sizeof the struct",
+            T::FIRST_SIZE,
+            std::mem::size_of::<T>()
+        ));
+    }
+    Ok(Some((p, size)))
+}
+
+/// Writes the fields of `value` after `struct_size` that fit in the caller's `size` bytes
+/// (a struct of an older header gets the fields it knows).
+///
+/// # Safety
+/// `p` and `size` must come from [`sized_out`].
+pub(crate) unsafe fn write_sized<T: OptionsStruct>((p, size): (*mut T, usize), value: &T) {
+    let skip = std::mem::size_of::<usize>();
+    std::ptr::copy_nonoverlapping(
+        (value as *const T).cast::<u8>().add(skip),
+        p.cast::<u8>().add(skip),
+        size - skip,
+    );
 }
 
 /// `value` as usize from a C `uint32_t` degree or count (always fits on supported targets).

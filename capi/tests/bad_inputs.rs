@@ -126,6 +126,35 @@ impl Drop for Fixtures {
     }
 }
 
+/// rmf_ph_spline_approximate_with_options on the fixtures' curve at 1e-3 with one option
+/// edited, and a report whose struct_size is `report_size` (None: no report).
+fn approximate_with(
+    f: &Fixtures,
+    edit: impl Fn(&mut RmfPhApproximationOptions),
+    report_size: Option<usize>,
+) -> RmfStatus {
+    let mut options = std::mem::MaybeUninit::uninit();
+    unsafe {
+        assert_eq!(
+            rmf_ph_approximation_options_init(options.as_mut_ptr()),
+            RmfStatus::RmfOk
+        );
+    }
+    let mut options = unsafe { options.assume_init() };
+    options.tolerance = 1e-3;
+    edit(&mut options);
+    let mut report = RmfPhApproximationReport::default();
+    let report = match report_size {
+        Some(size) => {
+            report.struct_size = size;
+            &mut report as *mut _
+        }
+        None => null_mut(),
+    };
+    let mut out = null_mut();
+    unsafe { rmf_ph_spline_approximate_with_options(f.curve, &options, &mut out, report) }
+}
+
 /// A Hermite call of the PH, Möbius and RRMF splines on broken helix data.
 fn ph_spline_with(edit: impl Fn(&mut Vec<RmfVec3>, &mut Vec<RmfVec3>)) -> RmfStatus {
     let (mut points, mut tangents) = helix();
@@ -790,6 +819,74 @@ fn rows() -> Vec<Row> {
                     )
                 }
             },
+        },
+        Row {
+            what: "tolerance below the rounding of the coordinates",
+            function: "rmf_ph_spline_approximate",
+            expected: INVALID,
+            names: "tolerance",
+            call: |f| {
+                let mut out = null_mut();
+                unsafe {
+                    rmf_ph_spline_approximate(
+                        f.curve,
+                        None,
+                        null_mut(),
+                        0.,
+                        1.,
+                        4e-320,
+                        &mut out,
+                        null_mut(),
+                    )
+                }
+            },
+        },
+        Row {
+            what: "approximation options NULL",
+            function: "rmf_ph_spline_approximate_with_options",
+            expected: NULL,
+            names: "options",
+            call: |f| {
+                let mut out = null_mut();
+                unsafe {
+                    rmf_ph_spline_approximate_with_options(f.curve, null(), &mut out, null_mut())
+                }
+            },
+        },
+        Row {
+            what: "approximation options not initialised",
+            function: "rmf_ph_spline_approximate_with_options",
+            expected: INVALID,
+            names: "options->struct_size",
+            call: |f| approximate_with(f, |o| o.struct_size = 0, None),
+        },
+        Row {
+            what: "approximation tolerance left at its default 0",
+            function: "rmf_ph_spline_approximate_with_options",
+            expected: INVALID,
+            names: "options: tolerance",
+            call: |f| approximate_with(f, |o| o.tolerance = 0.0, None),
+        },
+        Row {
+            what: "max_segments 0 or above 2²⁰",
+            function: "rmf_ph_spline_approximate_with_options",
+            expected: INVALID,
+            names: "options: max_segments",
+            call: |f| approximate_with(f, |o| o.max_segments = (1 << 20) + 1, None),
+        },
+        Row {
+            what: "max_evaluations 0",
+            function: "rmf_ph_spline_approximate_with_options",
+            expected: INVALID,
+            names: "options: max_evaluations",
+            call: |f| approximate_with(f, |o| o.max_evaluations = 0, None),
+        },
+        Row {
+            what: "report struct_size not set",
+            function: "rmf_ph_spline_approximate_with_options",
+            expected: INVALID,
+            names: "report->struct_size",
+            call: |f| approximate_with(f, |_| {}, Some(0)),
         },
         Row {
             what: "twist NaN",

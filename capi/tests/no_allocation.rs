@@ -4,7 +4,9 @@
 //! (Construction allocates, of course; it happens before counting starts.)
 
 use rmfsurf::glam::DVec3;
-use rmfsurf::{ph_rational_rmf, ph_spline_hermite, sweep, RmfOptions};
+use rmfsurf::{
+    ph_rational_rmf, ph_spline_approximate, ph_spline_hermite, sweep, ParametricCurve, RmfOptions,
+};
 use rmfsurf_capi::curve::{rmf_curve_eval, rmf_curve_free, rmf_nurbs_curve_create};
 use rmfsurf_capi::frames::{rmf_double_reflection_frames, rmf_frames_eval, rmf_frames_free};
 use rmfsurf_capi::mobius::rmf_mobius_rrmf_hermite;
@@ -182,6 +184,8 @@ fn rust_api_evaluation_does_not_allocate() {
     ])
     .unwrap();
     let surface = sweep(&spline, &rmf.frames, &profile).unwrap();
+    // The user's path: a curve sampled as the approximation samples it, and its PH spline.
+    let approximated = ph_spline_approximate(&spline, spline.breaks(), 1e-6).unwrap();
     let mut sink = 0.0;
     let count = allocations_during(|| {
         for i in 0..EVALUATIONS {
@@ -189,6 +193,8 @@ fn rust_api_evaluation_does_not_allocate() {
             sink += rmf.frames.frame(s).f2.x;
             sink += spline.eval_jet(s).d2.y;
             sink += surface.eval_jet(0.3, s).duv.z;
+            sink += ParametricCurve::point_derivative(&spline, s).unwrap().1.x;
+            sink += approximated.spline.eval_jet(s).d1.z;
         }
     });
     assert!(sink.is_finite());

@@ -27,6 +27,7 @@ pub const OPS: &[fn(&mut Session)] = &[
     parabolic_points,
     convex_initial_normal,
     profile_offset,
+    spline_approximate_with_options,
 ];
 
 fn cubic_hermite(s: &mut Session) {
@@ -105,6 +106,55 @@ fn spline_approximate(s: &mut Session) {
         );
     } else {
         assert!(is_poisoned(&distance), "distance written on failure");
+    }
+}
+
+/// The options-struct form: a curve of the pool (NURBS, computed or callback), options with
+/// any tolerance and caps (and now and then a wrong struct_size), and a report that is
+/// written on success only.
+fn spline_approximate_with_options(s: &mut Session) {
+    let curve = s.curve();
+    let mut options = RmfPhApproximationOptions::default();
+    unsafe { rmf_ph_approximation_options_init(&mut options) };
+    options.tolerance = s.input.f64();
+    options.max_segments = s.input.work();
+    options.max_evaluations = if s.input.flag() {
+        s.input.work()
+    } else {
+        usize::MAX
+    };
+    if s.input.byte() == 255 {
+        options.struct_size = s.input.work();
+    }
+    let mut report = poisoned::<RmfPhApproximationReport>();
+    report.struct_size = if s.input.byte() == 255 {
+        s.input.work()
+    } else {
+        std::mem::size_of::<RmfPhApproximationReport>()
+    };
+    if tracing() {
+        eprintln!("approximate with {options:?}");
+    }
+    let mut out = poisoned();
+    let status =
+        unsafe { rmf_ph_spline_approximate_with_options(curve, &options, &mut out, &mut report) };
+    if s.made(
+        "rmf_ph_spline_approximate_with_options",
+        status,
+        Some(out),
+        None,
+    ) {
+        assert!(
+            report.max_distance >= 0.0 && report.max_distance <= options.tolerance,
+            "{report:?}"
+        );
+        assert!(report.segments >= 1 && report.segments <= options.max_segments);
+        assert!(report.evaluations <= options.max_evaluations, "{report:?}");
+    } else {
+        assert!(
+            is_poisoned(&report.max_distance) && is_poisoned(&report.segments),
+            "report written on failure"
+        );
     }
 }
 

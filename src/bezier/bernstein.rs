@@ -40,6 +40,11 @@ fn lerp<C: Coefficient>(a: C, b: C, t: f64) -> C {
     a * (1.0 - t) + b * t
 }
 
+/// Degrees up to which the evaluators work on a short stack array (spines, frames and
+/// sweeps have degree ≤ 9): zeroing the array of [`MAX_DEGREE`] + 1 coefficients took as
+/// long as the evaluation of a cubic.
+pub(crate) const SHORT: usize = 10;
+
 /// p(t) by de Casteljau's algorithm.
 ///
 /// # Panics
@@ -50,7 +55,16 @@ pub fn evaluate<C: Coefficient>(coeffs: &[C], t: f64) -> C {
         (1..=MAX_DEGREE + 1).contains(&n),
         "Bernstein degree out of range"
     );
-    let mut work = [C::default(); MAX_DEGREE + 1];
+    if n <= SHORT {
+        de_casteljau::<C, SHORT>(coeffs, t)
+    } else {
+        de_casteljau::<C, { MAX_DEGREE + 1 }>(coeffs, t)
+    }
+}
+
+fn de_casteljau<C: Coefficient, const N: usize>(coeffs: &[C], t: f64) -> C {
+    let n = coeffs.len();
+    let mut work = [C::default(); N];
     work[..n].copy_from_slice(coeffs);
     for level in (1..n).rev() {
         for i in 0..level {
@@ -68,8 +82,17 @@ pub fn evaluate_jet<C: Coefficient>(coeffs: &[C], t: f64) -> Jet<C> {
         (1..=MAX_DEGREE + 1).contains(&n),
         "Bernstein degree out of range"
     );
+    if n <= SHORT {
+        de_casteljau_jet::<C, SHORT>(coeffs, t)
+    } else {
+        de_casteljau_jet::<C, { MAX_DEGREE + 1 }>(coeffs, t)
+    }
+}
+
+fn de_casteljau_jet<C: Coefficient, const N: usize>(coeffs: &[C], t: f64) -> Jet<C> {
+    let n = coeffs.len();
     let degree = (n - 1) as f64;
-    let mut work = [C::default(); MAX_DEGREE + 1];
+    let mut work = [C::default(); N];
     work[..n].copy_from_slice(coeffs);
     for level in (3..n).rev() {
         for i in 0..level {
@@ -100,6 +123,50 @@ pub fn evaluate_jet<C: Coefficient>(coeffs: &[C], t: f64) -> Jet<C> {
     }
 }
 
+/// p(t) and p'(t) by de Casteljau's algorithm, stopping one level early.
+pub fn evaluate_d1<C: Coefficient>(coeffs: &[C], t: f64) -> (C, C) {
+    let n = coeffs.len();
+    assert!(
+        (1..=MAX_DEGREE + 1).contains(&n),
+        "Bernstein degree out of range"
+    );
+    if n == 4 {
+        cubic_d1(coeffs, t)
+    } else if n <= SHORT {
+        de_casteljau_d1::<C, SHORT>(coeffs, t)
+    } else {
+        de_casteljau_d1::<C, { MAX_DEGREE + 1 }>(coeffs, t)
+    }
+}
+
+/// A cubic and its derivative from the basis directly (the spines' case: a third of de
+/// Casteljau's work). Exact at both ends like de Casteljau's algorithm.
+fn cubic_d1<C: Coefficient>(c: &[C], t: f64) -> (C, C) {
+    let u = 1.0 - t;
+    let (uu, ut, tt) = (u * u, u * t, t * t);
+    let point = c[0] * (uu * u) + c[1] * (3.0 * uu * t) + c[2] * (3.0 * ut * t) + c[3] * (tt * t);
+    let d1 = ((c[1] - c[0]) * uu + (c[2] - c[1]) * (2.0 * ut) + (c[3] - c[2]) * tt) * 3.0;
+    (point, d1)
+}
+
+fn de_casteljau_d1<C: Coefficient, const N: usize>(coeffs: &[C], t: f64) -> (C, C) {
+    let n = coeffs.len();
+    if n == 1 {
+        return (coeffs[0], C::default());
+    }
+    let mut work = [C::default(); N];
+    work[..n].copy_from_slice(coeffs);
+    for level in (2..n).rev() {
+        for i in 0..level {
+            work[i] = lerp(work[i], work[i + 1], t);
+        }
+    }
+    (
+        lerp(work[0], work[1], t),
+        (work[1] - work[0]) * (n - 1) as f64,
+    )
+}
+
 /// The Bernstein basis functions B₀ⁿ(t), …, Bₙⁿ(t), written to `out[0..=n]` by the convex
 /// triangle recursion: one pass serves any number of coefficient sets evaluated at `t`.
 pub fn basis(n: usize, t: f64, out: &mut [f64]) {
@@ -124,9 +191,18 @@ pub fn basis_jet(n: usize, t: f64, out: &mut [[f64; 3]]) {
         n <= MAX_DEGREE && out.len() > n,
         "Bernstein degree out of range"
     );
+    if n < SHORT {
+        basis_jet_rows::<SHORT>(n, t, out)
+    } else {
+        basis_jet_rows::<{ MAX_DEGREE + 1 }>(n, t, out)
+    }
+}
+
+/// [`basis_jet`] with rows of N ≥ n + 1 entries on the stack.
+fn basis_jet_rows<const N: usize>(n: usize, t: f64, out: &mut [[f64; 3]]) {
     // Basis rows of degree n − 2 and n − 1 (all zero when that degree is negative).
-    let mut below = [[0.0; MAX_DEGREE + 2]; 2];
-    let mut row = [0.0; MAX_DEGREE + 2];
+    let mut below = [[0.0; N]; 2];
+    let mut row = [0.0; N];
     row[0] = 1.0;
     for d in 0..=n {
         if d > 0 {
@@ -144,8 +220,7 @@ pub fn basis_jet(n: usize, t: f64, out: &mut [[f64; 3]]) {
         }
     }
     // Index i − k into a row, zero outside it.
-    let shifted =
-        |r: &[f64; MAX_DEGREE + 2], i: usize, k: usize| if i >= k { r[i - k] } else { 0.0 };
+    let shifted = |r: &[f64; N], i: usize, k: usize| if i >= k { r[i - k] } else { 0.0 };
     let nf = n as f64;
     for i in 0..=n {
         let d1 = nf * (shifted(&below[1], i, 1) - below[1][i]);

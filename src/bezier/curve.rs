@@ -110,6 +110,13 @@ impl RationalBezierCurve {
         project(bernstein::evaluate(&self.points, t))
     }
 
+    /// Point and first derivative with respect to the local parameter.
+    pub fn eval_d1(&self, t: f64) -> (DVec3, DVec3) {
+        let (h, h1) = bernstein::evaluate_d1(&self.points, t);
+        let p = project(h);
+        (p, (h1.truncate() - h1.w * p) / h.w)
+    }
+
     /// Point and first two derivatives with respect to the local parameter.
     pub fn eval_jet(&self, t: f64) -> CurveJet {
         let jet = bernstein::evaluate_jet(&self.points, t);

@@ -8,6 +8,7 @@
 //! * [`NurbsCurve`] and [`NurbsSurface`]: the clamped NURBS form CAD systems take.
 
 pub mod bernstein;
+pub(crate) mod closest;
 mod curve;
 pub mod homogeneous;
 mod nurbs;

@@ -227,41 +227,60 @@ fn check_derivative_range(
 /// column of a surface). Returns the distinct breakpoints; afterwards each net holds
 /// `segments * degree + 1` points, segment k using `points[k*degree ..= k*degree + degree]`.
 fn decompose(degree: usize, knots: &[f64], nets: &mut [Vec<DVec4>]) -> Vec<f64> {
-    let p = degree;
-    let mut knots = knots.to_vec();
-    let mut i = p + 1;
-    while i < knots.len() - p - 1 {
-        let u = knots[i];
-        let multiplicity = knots.iter().filter(|&&k| k == u).count();
-        if multiplicity >= p {
-            i += multiplicity;
-            continue;
-        }
-        // Span k with knots[k] <= u < knots[k+1]: the last index holding u.
-        let k = knots
-            .iter()
-            .rposition(|&x| x <= u)
-            .expect("knot inside the domain");
-        for net in nets.iter_mut() {
-            let mut inserted = Vec::with_capacity(net.len() + 1);
-            for j in 0..=net.len() {
-                let q = if j + p <= k {
-                    net[j]
-                } else if j > k {
-                    net[j - 1]
-                } else {
-                    let alpha = fraction(u, knots[j], knots[j + p]);
-                    net[j] * alpha + net[j - 1] * (1.0 - alpha)
-                };
-                inserted.push(q);
-            }
-            *net = inserted;
-        }
-        knots.insert(k + 1, u);
+    for net in nets.iter_mut() {
+        *net = decompose_net(degree, knots, net);
     }
-    let mut breaks = knots[p..knots.len() - p].to_vec();
+    let mut breaks = knots[degree..knots.len() - degree].to_vec();
     breaks.dedup();
     breaks
+}
+
+/// The Bézier points of one net, segment by segment in one pass over the knots (Piegl &
+/// Tiller, *The NURBS Book*, A5.6): at each breakpoint the knot is inserted up to
+/// multiplicity p within the current segment only, so the work is linear in the segments
+/// (inserting into the whole net each time was quadratic: 5 s for 10,000 segments).
+fn decompose_net(p: usize, knots: &[f64], poles: &[DVec4]) -> Vec<DVec4> {
+    let m = knots.len() - 1;
+    let mut out = Vec::with_capacity(poles.len() * p);
+    let mut current: Vec<DVec4> = poles[..=p].to_vec();
+    let mut next = vec![DVec4::ZERO; p + 1];
+    let mut alphas = vec![0.0; p];
+    let (mut a, mut b) = (p, p + 1);
+    while b < m {
+        let start = b;
+        while b < m && knots[b + 1] == knots[b] {
+            b += 1;
+        }
+        let multiplicity = b - start + 1;
+        if multiplicity < p {
+            for j in (multiplicity + 1..=p).rev() {
+                alphas[j - multiplicity - 1] = fraction(knots[b], knots[a], knots[a + j]);
+            }
+            let r = p - multiplicity;
+            for j in 1..=r {
+                let s = multiplicity + j;
+                for k in (s..=p).rev() {
+                    let alpha = alphas[k - s];
+                    current[k] = current[k] * alpha + current[k - 1] * (1.0 - alpha);
+                }
+                if b < m {
+                    // The points the insertion leaves at the start of the next segment.
+                    next[r - j] = current[p];
+                }
+            }
+        }
+        let first = if out.is_empty() { 0 } else { 1 };
+        out.extend_from_slice(&current[first..]);
+        if b < m {
+            for i in p.saturating_sub(multiplicity)..=p {
+                next[i] = poles[b - p + i];
+            }
+            std::mem::swap(&mut current, &mut next);
+            a = b;
+            b += 1;
+        }
+    }
+    out
 }
 
 impl NurbsCurve {
@@ -459,7 +478,13 @@ impl NurbsSurface {
         for a in 0..ku {
             for b in 0..kv {
                 let patch = surface.patch(a, b);
-                let patch = patch.elevated(pu - patch.degree_u(), pv - patch.degree_v());
+                let raised;
+                let patch = if (patch.degree_u(), patch.degree_v()) == (pu, pv) {
+                    patch
+                } else {
+                    raised = patch.elevated(pu - patch.degree_u(), pv - patch.degree_v());
+                    &raised
+                };
                 // Match the corner shared with an already placed neighbour.
                 let corner = net[a * pu * nv + b * pv];
                 let factor = corner.map_or(1.0, |c| c.w / patch.at(0, 0).w);
@@ -574,6 +599,39 @@ mod tests {
         for i in 0..=60 {
             let t = 1.2 * i as f64 / 60.0;
             assert!((pw.eval(t) - de_boor(&c, t)).length() < 1e-13, "t = {t}");
+        }
+    }
+
+    /// Single, double and full interior knots, degrees 1 to 5, uneven spacing: every
+    /// segment's Bézier points (one pass over the knots) against de Boor's algorithm.
+    #[test]
+    fn decomposition_of_every_multiplicity_matches_de_boor() {
+        for degree in 1..=5usize {
+            let mut knots = vec![0.0; degree + 1];
+            let mut t = 0.0;
+            for k in 0..12 {
+                t += 0.2 + 0.13 * (k % 5) as f64;
+                let multiplicity = 1 + k % degree;
+                knots.extend(std::iter::repeat_n(t, multiplicity));
+            }
+            t += 0.5;
+            knots.extend(std::iter::repeat_n(t, degree + 1));
+            let n = knots.len() - degree - 1;
+            let poles = (0..n)
+                .map(|i| {
+                    let x = i as f64;
+                    DVec3::new(x, (0.7 * x).sin() * 3.0, (0.3 * x).cos())
+                })
+                .collect();
+            let weights = (0..n).map(|i| 1.0 + 0.5 * ((i * 7) % 3) as f64).collect();
+            let c = NurbsCurve::new(degree, poles, Some(weights), knots).unwrap();
+            let pw = c.to_piecewise().unwrap();
+            assert_eq!(pw.segments().len(), 12 + 1, "degree {degree}");
+            for i in 0..=600 {
+                let u = t * i as f64 / 600.0;
+                let e = (pw.eval(u) - de_boor(&c, u)).length();
+                assert!(e < 1e-12, "degree {degree}, t = {u}: {e:e}");
+            }
         }
     }
 

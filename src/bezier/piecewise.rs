@@ -143,6 +143,13 @@ impl PiecewiseCurve {
             .sum()
     }
 
+    /// Point and first derivative with respect to the global parameter.
+    pub fn eval_d1(&self, t: f64) -> (DVec3, DVec3) {
+        let (k, s) = self.locate(t);
+        let (point, d1) = self.segments[k].eval_d1(s);
+        (point, d1 * (1.0 / (self.breaks[k + 1] - self.breaks[k])))
+    }
+
     /// Point and derivatives with respect to the global parameter.
     pub fn eval_jet(&self, t: f64) -> CurveJet {
         let (k, s) = self.locate(t);
@@ -224,6 +231,16 @@ impl PiecewiseSurface {
     }
 
     /// Point and partial derivatives with respect to the global parameters.
+    /// Point and first partial derivatives with respect to the global parameters.
+    pub fn eval_d1(&self, u: f64, v: f64) -> [DVec3; 3] {
+        let (a, s) = locate(&self.u_breaks, u);
+        let (b, t) = locate(&self.v_breaks, v);
+        let su = reciprocal_length(self.u_breaks[a], self.u_breaks[a + 1]);
+        let sv = reciprocal_length(self.v_breaks[b], self.v_breaks[b + 1]);
+        let [p, du, dv] = self.patch(a, b).eval_d1(s, t);
+        [p, du * su, dv * sv]
+    }
+
     pub fn eval_jet(&self, u: f64, v: f64) -> SurfaceJet {
         let (a, s) = locate(&self.u_breaks, u);
         let (b, t) = locate(&self.v_breaks, v);

@@ -1,7 +1,7 @@
 //! Tensor-product rational Bézier patches on [0, 1]², homogeneous control points stored
 //! row by row with index `i * (degree_v + 1) + j`, i along u (as in the NURBS views).
 
-use super::bernstein::{self, MAX_DEGREE};
+use super::bernstein::{self, MAX_DEGREE, SHORT};
 use super::homogeneous::{project, rational_partials, HomogeneousPartials};
 use crate::error::{invalid, Result};
 use glam::{DVec3, DVec4};
@@ -95,8 +95,18 @@ impl RationalBezierPatch {
     }
 
     pub fn eval(&self, u: f64, v: f64) -> DVec3 {
+        if self.degree_u < SHORT {
+            self.eval_with::<SHORT>(u, v)
+        } else {
+            self.eval_with::<{ MAX_DEGREE + 1 }>(u, v)
+        }
+    }
+
+    /// [`Self::eval`] with a column of N > degree_u points on the stack (zeroing the longest
+    /// column cost more than evaluating a patch of the sweeps' degrees).
+    fn eval_with<const N: usize>(&self, u: f64, v: f64) -> DVec3 {
         // Evaluate each row in v, then the resulting column in u.
-        let mut column = [DVec4::ZERO; MAX_DEGREE + 1];
+        let mut column = [DVec4::ZERO; N];
         let row_len = self.degree_v + 1;
         for (i, row) in self.points.chunks_exact(row_len).enumerate() {
             column[i] = bernstein::evaluate(row, v);
@@ -106,8 +116,93 @@ impl RationalBezierPatch {
 
     /// Point and partial derivatives up to order two (local parameters).
     pub fn eval_jet(&self, u: f64, v: f64) -> SurfaceJet {
-        let mut bu = [[0.0; 3]; MAX_DEGREE + 1];
-        let mut bv = [[0.0; 3]; MAX_DEGREE + 1];
+        if self.degree_u < SHORT && self.degree_v < SHORT {
+            self.jet_with::<SHORT>(u, v)
+        } else {
+            self.jet_with::<{ MAX_DEGREE + 1 }>(u, v)
+        }
+    }
+
+    /// Point and first partial derivatives (local parameters): the rows' sums of
+    /// [`Self::eval_jet`] without the second derivatives.
+    pub fn eval_d1(&self, u: f64, v: f64) -> [DVec3; 3] {
+        if self.degree_u < SHORT && self.degree_v < SHORT {
+            self.d1_with::<SHORT>(u, v)
+        } else {
+            self.d1_with::<{ MAX_DEGREE + 1 }>(u, v)
+        }
+    }
+
+    fn d1_with<const N: usize>(&self, u: f64, v: f64) -> [DVec3; 3] {
+        let mut bu = [[0.0; 3]; N];
+        let mut bv = [[0.0; 3]; N];
+        bernstein::basis_jet(self.degree_u, u, &mut bu);
+        bernstein::basis_jet(self.degree_v, v, &mut bv);
+        let (mut s, mut su, mut sv) = (DVec4::ZERO, DVec4::ZERO, DVec4::ZERO);
+        for (i, row) in self.points.chunks_exact(self.degree_v + 1).enumerate() {
+            let (mut r0, mut r1) = (DVec4::ZERO, DVec4::ZERO);
+            for (j, &p) in row.iter().enumerate() {
+                r0 += p * bv[j][0];
+                r1 += p * bv[j][1];
+            }
+            let [b, b1, _] = bu[i];
+            s += r0 * b;
+            su += r0 * b1;
+            sv += r1 * b;
+        }
+        let p = project(s);
+        [
+            p,
+            (su.truncate() - su.w * p) / s.w,
+            (sv.truncate() - sv.w * p) / s.w,
+        ]
+    }
+
+    /// The first partials (s_u, s_v) at the (steps + 1)² local parameters (i/steps, j/steps),
+    /// passed to `visit`: the basis at each parameter computed once for the whole row or
+    /// column (grids of samples, e.g. the orthogonality of a sweep's parameter lines).
+    pub fn grid_partials(&self, steps: usize, mut visit: impl FnMut(DVec3, DVec3)) {
+        let (nu, nv) = (self.degree_u + 1, self.degree_v + 1);
+        // The bases at the steps + 1 parameters, one after the other.
+        let bases = |degree: usize| -> Vec<[f64; 3]> {
+            let mut all = vec![[0.0; 3]; (steps + 1) * (degree + 1)];
+            for (k, b) in all.chunks_exact_mut(degree + 1).enumerate() {
+                bernstein::basis_jet(degree, k as f64 / steps as f64, b);
+            }
+            all
+        };
+        let (bu, bv) = (bases(self.degree_u), bases(self.degree_v));
+        // Per v: each row's value and v-derivative (homogeneous).
+        let mut rows = vec![(DVec4::ZERO, DVec4::ZERO); nu];
+        for b in bv.chunks_exact(nv) {
+            for (r, row) in rows.iter_mut().zip(self.points.chunks_exact(nv)) {
+                *r = row
+                    .iter()
+                    .zip(b)
+                    .fold((DVec4::ZERO, DVec4::ZERO), |(r0, r1), (&p, w)| {
+                        (r0 + p * w[0], r1 + p * w[1])
+                    });
+            }
+            for a in bu.chunks_exact(nu) {
+                let (mut s, mut su, mut sv) = (DVec4::ZERO, DVec4::ZERO, DVec4::ZERO);
+                for ((r0, r1), w) in rows.iter().zip(a) {
+                    s += *r0 * w[0];
+                    su += *r0 * w[1];
+                    sv += *r1 * w[0];
+                }
+                let p = project(s);
+                visit(
+                    (su.truncate() - su.w * p) / s.w,
+                    (sv.truncate() - sv.w * p) / s.w,
+                );
+            }
+        }
+    }
+
+    /// [`Self::eval_jet`] with basis rows of N > both degrees on the stack.
+    fn jet_with<const N: usize>(&self, u: f64, v: f64) -> SurfaceJet {
+        let mut bu = [[0.0; 3]; N];
+        let mut bv = [[0.0; 3]; N];
         bernstein::basis_jet(self.degree_u, u, &mut bu);
         bernstein::basis_jet(self.degree_v, v, &mut bv);
         let mut h = HomogeneousPartials::default();
@@ -190,6 +285,37 @@ mod tests {
             points.push(lift(p + DVec3::Z * 2.0, w));
         }
         RationalBezierPatch::from_homogeneous(2, 1, points).unwrap()
+    }
+
+    /// The grid's partials and eval_d1 are those of eval_jet at the same local parameters
+    /// (the grid in the order v outer, u inner; a rational patch of degrees (2, 3) with
+    /// uneven weights).
+    #[test]
+    fn grid_partials_match_the_jets() {
+        let points: Vec<DVec4> = (0..12)
+            .map(|k| {
+                let (i, j) = ((k / 4) as f64, (k % 4) as f64);
+                let w = 1.0 + 0.3 * ((k * 5) % 3) as f64;
+                DVec4::new(i * w, j * w, (i * j).sin() * w, w)
+            })
+            .collect();
+        let patch = RationalBezierPatch::from_homogeneous(2, 3, points).unwrap();
+        let mut seen = Vec::new();
+        patch.grid_partials(4, |du, dv| seen.push((du, dv)));
+        assert_eq!(seen.len(), 25);
+        for (k, (du, dv)) in seen.into_iter().enumerate() {
+            let (u, v) = ((k % 5) as f64 / 4.0, (k / 5) as f64 / 4.0);
+            let jet = patch.eval_jet(u, v);
+            assert!((du - jet.du).length() < 1e-13 * jet.du.length(), "{k}");
+            assert!((dv - jet.dv).length() < 1e-13 * jet.dv.length(), "{k}");
+            let [p, du1, dv1] = patch.eval_d1(u, v);
+            assert!(
+                (p - jet.point).length() < 1e-13 * (1.0 + jet.point.length()),
+                "{k}"
+            );
+            assert!((du1 - jet.du).length() < 1e-13 * jet.du.length(), "{k}");
+            assert!((dv1 - jet.dv).length() < 1e-13 * jet.dv.length(), "{k}");
+        }
     }
 
     #[test]

@@ -57,7 +57,12 @@ pub fn orthonormality_error(f: &Frame) -> f64 {
 
 /// `|cos ∠(s_u, s_v)|`, the orthogonality measure O(u, v) of (43).
 pub fn parameter_line_cosine(jet: &SurfaceJet) -> f64 {
-    jet.du.dot(jet.dv).abs() / (jet.du.length() * jet.dv.length())
+    partials_cosine(jet.du, jet.dv)
+}
+
+/// `|cos ∠(s_u, s_v)|` from the first partials alone.
+pub(crate) fn partials_cosine(du: glam::DVec3, dv: glam::DVec3) -> f64 {
+    du.dot(dv).abs() / (du.length() * dv.length())
 }
 
 /// Gaussian curvature from the first and second fundamental forms.

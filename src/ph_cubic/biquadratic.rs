@@ -231,18 +231,36 @@ impl Family {
             .sum()
     }
 
-    /// The residuals' weighted sums Σ wᵢ eᵢ Jᵢ, Σ wᵢ Jᵢ² and Σ wᵢ eᵢ² (= Î), eᵢ = R(vᵢ) − Ω'(vᵢ),
-    /// Jᵢ = ∂R/∂α for R = 2(g'b − gb')/(b² + g²), the angular velocity of (29).
-    fn gradient_terms(&self, rule: &GaussLegendre, target: &[f64], alpha: f64) -> (f64, f64, f64) {
-        let w = self.member(alpha);
-        let d = Biquadratic {
+    /// g, b, g′, b′ of the members at each node of the rule, as affine functions of α:
+    /// (value at α = 0, coefficient of α), computed once for all Gauss–Newton steps.
+    fn node_parts(&self, rule: &GaussLegendre) -> [[(f64, f64); 4]; QUADRATURE_NODES] {
+        let base = self.member(0.0);
+        let slope = Biquadratic {
             numerator: self.gamma[1],
             denominator: self.beta[1],
         };
+        let mut parts = [[(0.0, 0.0); 4]; QUADRATURE_NODES];
+        for (p, &v) in parts.iter_mut().zip(rule.nodes()) {
+            let (g, b, dg, db) = base.parts(v);
+            let (g_a, b_a, dg_a, db_a) = slope.parts(v);
+            *p = [(g, g_a), (b, b_a), (dg, dg_a), (db, db_a)];
+        }
+        parts
+    }
+
+    /// The residuals' weighted sums Σ wᵢ eᵢ Jᵢ, Σ wᵢ Jᵢ² and Σ wᵢ eᵢ² (= Î), eᵢ = R(vᵢ) − Ω'(vᵢ),
+    /// Jᵢ = ∂R/∂α for R = 2(g'b − gb')/(b² + g²), the angular velocity of (29); `parts` from
+    /// [`Self::node_parts`].
+    fn gradient_terms(
+        parts: &[[(f64, f64); 4]; QUADRATURE_NODES],
+        rule: &GaussLegendre,
+        target: &[f64],
+        alpha: f64,
+    ) -> (f64, f64, f64) {
         let (mut ej, mut jj, mut ee) = (0.0, 0.0, 0.0);
-        for ((&v, &weight), &r) in rule.nodes().iter().zip(rule.weights()).zip(target) {
-            let (g, b, dg, db) = w.parts(v);
-            let (g_a, b_a, dg_a, db_a) = d.parts(v);
+        for ((p, &weight), &r) in parts.iter().zip(rule.weights()).zip(target) {
+            let [g, b, dg, db] = p.map(|(at0, slope)| at0 + alpha * slope);
+            let [g_a, b_a, dg_a, db_a] = p.map(|(_, slope)| slope);
             let (n, den) = (dg * b - g * db, b * b + g * g);
             let n_a = dg_a * b + dg * b_a - g_a * db - g * db_a;
             let den_a = 2.0 * (b * b_a + g * g_a);
@@ -264,10 +282,11 @@ impl Family {
 fn gauss_newton(family: &Family, rule: &GaussLegendre, target: &[f64]) -> Option<(f64, f64)> {
     const STEPS: usize = 12;
     const SETTLED: f64 = 1e-10;
+    let parts = family.node_parts(rule);
     let mut x = 0.0f64;
     for _ in 0..STEPS {
         let alpha = logistic(x);
-        let (ej, jj, objective) = family.gradient_terms(rule, target, alpha);
+        let (ej, jj, objective) = Family::gradient_terms(&parts, rule, target, alpha);
         // dα/dx = α(1 − α).
         let dx = -ej / (jj * alpha * (1.0 - alpha));
         if !dx.is_finite() {

@@ -36,7 +36,7 @@ use crate::error::{invalid, Result};
 use crate::export::step::{
     boundaries, Brep, BrepBound, BrepEdge, BrepFace, BrepSurface, BrepUse, PCurve,
 };
-use crate::frames::metrics::{angle_about_tangent, parameter_line_cosine};
+use crate::frames::metrics::{angle_about_tangent, partials_cosine};
 use crate::frames::Frame;
 use crate::math::GaussLegendre;
 use crate::mesh::grid_parameters;
@@ -512,14 +512,21 @@ fn joint_gap(surfaces: &[Vec<Vec<PiecewiseSurface>>]) -> f64 {
     gap
 }
 
+/// On a grid of COSINE_SAMPLES + 1 local parameters each way on every patch (|cos| does not
+/// depend on the patch's parameter scale).
 fn max_parameter_cosine(s: &PiecewiseSurface) -> f64 {
-    let us = grid_parameters(s.u_breaks(), COSINE_SAMPLES);
-    let vs = grid_parameters(s.v_breaks(), COSINE_SAMPLES);
-    us.iter()
-        .flat_map(|&u| vs.iter().map(move |&v| (u, v)))
-        .map(|(u, v)| parameter_line_cosine(&s.eval_jet(u, v)))
-        .filter(|c| c.is_finite())
-        .fold(0.0, f64::max)
+    let mut worst = 0.0f64;
+    for a in 0..s.u_breaks().len() - 1 {
+        for b in 0..s.v_breaks().len() - 1 {
+            s.patch(a, b).grid_partials(COSINE_SAMPLES, |du, dv| {
+                let c = partials_cosine(du, dv);
+                if c.is_finite() {
+                    worst = worst.max(c);
+                }
+            });
+        }
+    }
+    worst
 }
 
 /// v turned about the unit axis by θ (Rodrigues).
