@@ -293,12 +293,13 @@ fn pcurve_entity(out: &mut Entities, surface: usize, context_2d: usize, pcurve: 
     let geometry = match pcurve {
         PCurve::Line { origin, direction } => {
             let origin = out.point_2d(origin.0, origin.1);
+            let magnitude = direction.0.hypot(direction.1);
             let direction = out.add(format!(
                 "DIRECTION('',({},{}))",
-                real(direction.0),
-                real(direction.1)
+                real(direction.0 / magnitude),
+                real(direction.1 / magnitude)
             ));
-            let vector = out.add(format!("VECTOR('',#{direction},1.)"));
+            let vector = out.add(format!("VECTOR('',#{direction},{})", real(magnitude)));
             out.add(format!("LINE('',#{origin},#{vector})"))
         }
         PCurve::Curve(curve) => curve_entity_2d(out, curve),
@@ -737,17 +738,10 @@ fn curve_range(c: &NurbsCurve) -> (f64, f64) {
     (c.knots[0], c.knots[c.knots.len() - 1])
 }
 
-/// A PCURVE: the line origin + t′·direction of a face's side, written for the parameter t
-/// of the edge's curve on [t0, t1], with the side's own parameter t′ on [s0, s1] running
-/// the same way (`same`) or backwards.
-fn pcurve_line(
-    out: &mut Entities,
-    surface: usize,
-    context_2d: usize,
-    side: &Boundary,
-    edge_range: (f64, f64),
-    same: bool,
-) -> usize {
+/// The parameter line of a face's side for the parameter t of the edge's curve on
+/// [t0, t1], the side's own parameter t′ on [s0, s1] running the same way (`same`) or
+/// backwards.
+fn side_pcurve(side: &Boundary, edge_range: (f64, f64), same: bool) -> PCurve {
     let (t0, t1) = edge_range;
     let (s0, s1) = curve_range(&side.curve);
     let rate = (s1 - s0) / (t1 - t0);
@@ -757,24 +751,13 @@ fn pcurve_line(
     } else {
         (s1 + t0 * rate, -rate)
     };
-    let (ox, oy) = (
-        side.origin.0 + offset * side.direction.0,
-        side.origin.1 + offset * side.direction.1,
-    );
-    let (dx, dy) = (slope * side.direction.0, slope * side.direction.1);
-    let magnitude = dx.hypot(dy);
-    let origin = out.point_2d(ox, oy);
-    let direction = out.add(format!(
-        "DIRECTION('',({},{}))",
-        real(dx / magnitude),
-        real(dy / magnitude)
-    ));
-    let vector = out.add(format!("VECTOR('',#{direction},{})", real(magnitude)));
-    let line = out.add(format!("LINE('',#{origin},#{vector})"));
-    let representation = out.add(format!(
-        "DEFINITIONAL_REPRESENTATION('',(#{line}),#{context_2d})"
-    ));
-    out.add(format!("PCURVE('',#{surface},#{representation})"))
+    PCurve::Line {
+        origin: (
+            side.origin.0 + offset * side.direction.0,
+            side.origin.1 + offset * side.direction.1,
+        ),
+        direction: (slope * side.direction.0, slope * side.direction.1),
+    }
 }
 
 /// A STEP file holding one closed solid (`MANIFOLD_SOLID_BREP` of a `CLOSED_SHELL`)
@@ -838,86 +821,66 @@ pub fn solid_to_step(faces: &[NurbsSurface], name: &str) -> Result<String> {
         partner[i] = Some((j, same));
         partner[j] = Some((i, same));
     }
-    let mut out = Entities { lines: Vec::new() };
-    let (shape, context) = product_and_context(&mut out, name);
-    let origin = out.point(DVec3::ZERO);
-    let z = out.add("DIRECTION('',(0.,0.,1.))");
-    let x = out.add("DIRECTION('',(1.,0.,0.))");
-    let placement = out.add(format!("AXIS2_PLACEMENT_3D('',#{origin},#{z},#{x})"));
-    let context_2d = out.add(
-        "( GEOMETRIC_REPRESENTATION_CONTEXT(2) PARAMETRIC_REPRESENTATION_CONTEXT() \
-         REPRESENTATION_CONTEXT('2D SPACE','') )",
-    );
-    let surface_ids: Vec<usize> = faces.iter().map(|f| surface_entity(&mut out, f)).collect();
-    let mut vertices: Vec<(DVec3, usize)> = Vec::new();
-    let mut vertex = |out: &mut Entities, p: DVec3| {
-        if let Some(&(_, id)) = vertices.iter().find(|(q, _)| q.distance(p) <= tolerance) {
-            return id;
+    let mut vertices: Vec<DVec3> = Vec::new();
+    let mut vertex = |p: DVec3| {
+        if let Some(k) = vertices.iter().position(|q| q.distance(p) <= tolerance) {
+            return k;
         }
-        let point = out.point(p);
-        let id = out.add(format!("VERTEX_POINT('',#{point})"));
-        vertices.push((p, id));
-        id
+        vertices.push(p);
+        vertices.len() - 1
     };
-    // The edge of each side: (edge entity, whether the side runs along the edge's curve).
-    let mut edge_of: Vec<Option<(usize, bool)>> = vec![None; sides.len()];
+    // The edge of each side (one per pair), whether the side runs along the edge's curve,
+    // and the side's parameter line for the edge's parameter.
+    let mut edges = Vec::new();
+    let mut edge_of: Vec<Option<(usize, bool, PCurve)>> = vec![None; sides.len()];
     for i in 0..sides.len() {
         if edge_of[i].is_some() {
             continue;
         }
         let (j, same) = partner[i].expect("every side is paired");
         let (a, b) = (&sides[i], &sides[j]);
-        let side_a = &all[a.face][a.index];
-        let side_b = &all[b.face][b.index];
-        let start = vertex(&mut out, a.start);
-        let end = vertex(&mut out, a.end);
-        let geometry = curve_entity(&mut out, &side_a.curve);
+        let (side_a, side_b) = (&all[a.face][a.index], &all[b.face][b.index]);
         let range = curve_range(&side_a.curve);
-        let pa = pcurve_line(
-            &mut out,
-            surface_ids[a.face],
-            context_2d,
-            side_a,
-            range,
-            true,
-        );
-        let pb = pcurve_line(
-            &mut out,
-            surface_ids[b.face],
-            context_2d,
-            side_b,
-            range,
-            same,
-        );
-        let on_surfaces = out.add(format!(
-            "SURFACE_CURVE('',#{geometry},(#{pa},#{pb}),.PCURVE_S1.)"
-        ));
-        let edge = out.add(format!("EDGE_CURVE('',#{start},#{end},#{on_surfaces},.T.)"));
-        edge_of[i] = Some((edge, true));
-        edge_of[j] = Some((edge, same));
+        edges.push(BrepEdge {
+            curve: side_a.curve.clone(),
+            start: vertex(a.start),
+            end: vertex(a.end),
+        });
+        edge_of[i] = Some((edges.len() - 1, true, side_pcurve(side_a, range, true)));
+        edge_of[j] = Some((edges.len() - 1, same, side_pcurve(side_b, range, same)));
     }
-    let mut face_ids = Vec::new();
-    for (face, &surface) in surface_ids.iter().enumerate() {
-        let mut loop_edges = Vec::new();
-        for (i, side) in sides.iter().enumerate().filter(|(_, s)| s.face == face) {
-            let (edge, along) = edge_of[i].expect("every side has its edge");
-            // The loop runs counter-clockwise in (u, v): sides 0 and 1 forwards.
-            let forward = (side.index < 2) == along;
-            let flag = if forward { ".T." } else { ".F." };
-            loop_edges.push(out.add(format!("ORIENTED_EDGE('',*,*,#{edge},{flag})")));
-        }
-        let edge_loop = out.add(format!("EDGE_LOOP('',{})", refs(&loop_edges)));
-        let bound = out.add(format!("FACE_OUTER_BOUND('',#{edge_loop},.T.)"));
-        face_ids.push(out.add(format!("ADVANCED_FACE('',(#{bound}),#{surface},.T.)")));
-    }
-    let shell = out.add(format!("CLOSED_SHELL('',{})", refs(&face_ids)));
-    let solid = out.add(format!("MANIFOLD_SOLID_BREP('',#{shell})"));
-    let representation = format!(
-        "ADVANCED_BREP_SHAPE_REPRESENTATION('{}',(#{placement},#{solid}),#{context})",
-        string(name)
-    );
-    represent(&mut out, shape, representation);
-    Ok(exchange_structure(&out, name))
+    let faces = faces
+        .iter()
+        .enumerate()
+        .map(|(face, surface)| {
+            let uses = sides
+                .iter()
+                .zip(&edge_of)
+                .filter(|(s, _)| s.face == face)
+                .map(|(side, edge)| {
+                    let (edge, along, pcurve) = edge.clone().expect("every side has its edge");
+                    // The loop runs counter-clockwise in (u, v): sides 0 and 1 forwards.
+                    BrepUse {
+                        edge,
+                        forward: (side.index < 2) == along,
+                        pcurve: Some(pcurve),
+                    }
+                })
+                .collect();
+            BrepFace {
+                surface: BrepSurface::Nurbs(surface.clone()),
+                same_sense: true,
+                bounds: vec![BrepBound { uses, outer: true }],
+            }
+        })
+        .collect();
+    let brep = Brep {
+        vertices,
+        edges,
+        faces,
+        closed: true,
+    };
+    brep_to_step(&brep, name)
 }
 
 /// A STEP file holding a flat pattern as one planar face in z = 0 (`PLANE`, bounded by
