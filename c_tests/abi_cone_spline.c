@@ -93,6 +93,11 @@ static void test_hermite_surface_and_pieces(void) {
         CHECK_STATUS(rmf_cone_spline_surface(spline, t0, t1, &strip), RMF_OK, "");
         rmf_surface_free(strip);
     }
+    /* A box of ±1e308 (its width overflows): finite, ordered bounds (was t_min = +inf). */
+    box.min = vec3(-1e308, -1e308, -1e308);
+    box.max = vec3(1e308, 1e308, 1e308);
+    CHECK_STATUS(rmf_cone_spline_bounds_in_box(spline, &box, &t0, &t1), RMF_OK, "");
+    CHECK(isfinite(t0) && isfinite(t1) && t0 < t1, "finite bounds in a box of 1e308");
     CHECK_STATUS(rmf_cone_spline_bend(spline, 0.5, &bent), RMF_OK, "");
     CHECK_STATUS(rmf_cone_spline_develop(spline, &flat), RMF_OK, "");
     CHECK_STATUS(rmf_cone_spline_offset(spline, 0.1, &offset), RMF_OK, "");

@@ -43,12 +43,21 @@ impl Region {
                 }
                 continue;
             }
-            let (a, b) = ((self.min[k] - p) / d, (self.max[k] - p) / d);
+            // Saturated: the distance to a face of a box near ±f64::MAX may overflow.
+            let (a, b) = (
+                saturate((self.min[k] - p) / d),
+                saturate((self.max[k] - p) / d),
+            );
             lo = lo.max(a.min(b));
             hi = hi.min(a.max(b));
         }
         (lo <= hi).then_some((lo, hi))
     }
+}
+
+/// `x` clamped to the finite range (NaN stays NaN).
+fn saturate(x: f64) -> f64 {
+    x.clamp(-f64::MAX, f64::MAX)
 }
 
 #[cfg(test)]

@@ -18,6 +18,25 @@ use crate::math::minimize_bracketed;
 
 /// Rulings sampled per piece when fitting a strip into a box (then refined by Brent).
 const BOX_SAMPLES: usize = 32;
+/// Relative distance (of the strip's width) within which a vertex counts as on the strip:
+/// its patches would degenerate there.
+const VERTEX_MARGIN: f64 = 1e-9;
+/// The distance, relative to the strip's width, by which [`ConeSpline::bounds_in_box`] keeps
+/// its bounds away from a vertex: well beyond [`VERTEX_MARGIN`], so that the strip it
+/// returns passes [`ConeSpline::surface`]'s check.
+const BOX_VERTEX_MARGIN: f64 = 1e-6;
+
+/// `b − a` for `a ≤ b` without overflow: the width of bounds that may each be near ±f64::MAX
+/// (a region box of ±1e308 gave an infinite width and t_min = +inf with RMF_OK, an
+/// integrator's finding), as half the width doubled when it fits.
+fn width(a: f64, b: f64) -> f64 {
+    let half = 0.5 * b - 0.5 * a;
+    if half <= 0.5 * f64::MAX {
+        2.0 * half
+    } else {
+        f64::MAX
+    }
+}
 
 impl ConeSpline {
     /// The v breakpoints: piece k on [k, k + 1], split evenly into its patches.
@@ -44,7 +63,7 @@ impl ConeSpline {
         for (k, piece) in self.pieces().iter().enumerate() {
             if let Some(v) = piece.vertex() {
                 let tv = piece.start.parameter_of(v);
-                let margin = 1e-9 * (t1 - t0);
+                let margin = VERTEX_MARGIN * width(t0, t1);
                 if tv > t0 - margin && tv < t1 + margin {
                     return invalid!(
                         "the strip t_min = {t0} .. t_max = {t1} contains the vertex of piece {k} (at t = {tv}); \
@@ -96,9 +115,9 @@ impl ConeSpline {
             t0 = t0.max(lo);
             t1 = t1.min(hi);
         }
-        if t0 >= t1 {
+        if t0 >= t1 || !t0.is_finite() || !t1.is_finite() {
             return no_solution!(
-                "no strip of the cone spline lies inside the region box (entry {t0} ≥ exit {t1})"
+                "no strip of the cone spline lies inside the region box (entry {t0:.6e}, exit {t1:.6e})"
             );
         }
         // Vertices inside split the strip: keep the widest part free of them.
@@ -112,16 +131,30 @@ impl ConeSpline {
         let mut ends = vec![t0];
         ends.extend(cuts);
         ends.push(t1);
-        let margin = 1e-6 * (t1 - t0);
+        let margin = BOX_VERTEX_MARGIN * width(t0, t1);
         let (a, b) = ends
             .windows(2)
             .map(|w| (w[0], w[1]))
-            .max_by(|x, y| (x.1 - x.0).total_cmp(&(y.1 - y.0)))
+            .max_by(|x, y| width(x.0, x.1).total_cmp(&width(y.0, y.1)))
             .expect("at least one interval");
         let (a, b) = (
             if a > t0 { a + margin } else { a },
             if b < t1 { b - margin } else { b },
         );
+        if a >= b || a.is_nan() || b.is_nan() {
+            return no_solution!(
+                "the vertices of the cone spline leave no strip inside the region box"
+            );
+        }
+        let representable = self
+            .pieces()
+            .iter()
+            .all(|p| p.start.at(a).is_finite() && p.start.at(b).is_finite());
+        if !representable {
+            return no_solution!(
+                "the region box is so large that its strip reaches points beyond the largest f64"
+            );
+        }
         Ok((a, b))
     }
 }
@@ -242,5 +275,37 @@ mod tests {
         assert!(spline.surface(a, b).is_ok());
         let tiny = Region::new(DVec3::splat(50.0), DVec3::splat(51.0)).unwrap();
         assert!(spline.bounds_in_box(&tiny).is_err());
+    }
+
+    /// Integrator's finding: a region box of ±1e308 gave t_min = +inf > t_max with RMF_OK
+    /// (the strip's width overflowed).
+    #[test]
+    fn bounds_in_a_box_of_1e308_are_finite_and_ordered() {
+        let spline = cubic_spline();
+        for size in [1e300, 1e307, 1e308, f64::MAX] {
+            let region = Region::new(DVec3::splat(-size), DVec3::splat(size)).unwrap();
+            let (t0, t1) = match spline.bounds_in_box(&region) {
+                Err(e) if size == f64::MAX => {
+                    assert!(e.message().contains("largest f64"), "{e}");
+                    continue;
+                }
+                other => other.unwrap(),
+            };
+            assert!(
+                t0.is_finite() && t1.is_finite() && t0 < t1,
+                "{size:e}: {t0:e} {t1:e}"
+            );
+            // The strip lies in the box and is free of vertices.
+            spline.check_bounds(t0, t1).unwrap();
+            for piece in spline.pieces() {
+                for f in [0.0, 0.5, 1.0] {
+                    let el = piece.element_at(f);
+                    for t in [t0, t1] {
+                        let x = el.at(t);
+                        assert!(x.is_finite() && region.contains(x), "{size:e}: {x}");
+                    }
+                }
+            }
+        }
     }
 }
