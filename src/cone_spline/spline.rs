@@ -36,11 +36,17 @@ impl ConeSpline {
                 Some(previous) => {
                     let end = previous.end();
                     let s = &piece.start;
-                    let scale = end.point.abs().max_element().max(1.0);
+                    // Relative to the coordinates at hand (three points of the chain, so
+                    // that a junction near the origin still has the spline's size), and
+                    // scaled before the cross product so that no square overflows.
+                    let scale = [end.point, s.point, previous.start.point]
+                        .iter()
+                        .map(|p| p.abs().max_element())
+                        .fold(f64::MIN_POSITIVE, f64::max);
+                    let off_line = (s.point / scale - end.point / scale).cross(end.ruling);
                     if (s.ruling - end.ruling).length() > CHAIN_TOLERANCE
                         || (s.normal() - end.normal()).length() > CHAIN_TOLERANCE
-                        || (s.point - end.point).cross(end.ruling).length()
-                            > CHAIN_TOLERANCE * scale
+                        || off_line.length() > CHAIN_TOLERANCE
                     {
                         return no_solution!(
                             "piece {k} does not start on the end ruling and tangent plane of piece {}",
@@ -120,6 +126,7 @@ impl ConeSpline {
 
 #[cfg(test)]
 mod tests {
+    use super::super::piece::Motion;
     use super::*;
     use glam::DVec3;
 
@@ -137,5 +144,47 @@ mod tests {
         )
         .unwrap();
         assert!(ConeSpline::new(vec![first, off]).is_err());
+    }
+
+    /// Two cylinder quarters about the z axis, the second one's start moved off the
+    /// junction ruling by `gap`, scaled by `s` and moved by `t` (as the sheet-metal parts map
+    /// their pieces to the caller's coordinates).
+    fn quarters(s: f64, t: DVec3, gap: f64) -> Vec<ConePiece> {
+        let a = Element::new(DVec3::X, DVec3::Z, DVec3::Y, "a").unwrap();
+        let first = ConePiece::cylinder(a, DVec3::Y).unwrap();
+        let end = first.end();
+        let second = end.with_point(end.point + DVec3::Y * gap);
+        let second = ConePiece::cylinder(second, -DVec3::X).unwrap();
+        let map = |p: ConePiece| ConePiece {
+            start: Element::from_frame(p.start.point * s + t, p.start.ruling, p.start.side),
+            motion: match p.motion {
+                Motion::Rotation {
+                    origin,
+                    axis,
+                    angle,
+                } => Motion::Rotation {
+                    origin: origin * s + t,
+                    axis,
+                    angle,
+                },
+                Motion::Translation(v) => Motion::Translation(v * s),
+            },
+        };
+        vec![map(first), map(second)]
+    }
+
+    #[test]
+    fn the_join_check_is_relative_at_every_scale_and_position() {
+        for (s, t) in [
+            (1.0, DVec3::ZERO),
+            (1e-200, DVec3::ZERO),
+            (1e200, DVec3::ZERO),
+            (1e167, DVec3::new(4.2e169, 9.5e169, 0.0)),
+            (1e-3, DVec3::splat(7e-3)),
+        ] {
+            // Squares of 1e167 overflowed, and at 1e-200 an absolute floor accepted any gap.
+            assert!(ConeSpline::new(quarters(s, t, 0.0)).is_ok(), "{s:e}");
+            assert!(ConeSpline::new(quarters(s, t, 1e-4)).is_err(), "{s:e}");
+        }
     }
 }

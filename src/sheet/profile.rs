@@ -20,8 +20,11 @@ const GEOMETRY_TOLERANCE: f64 = 1e-9;
 /// Turning angle (radians) below which two segments join smoothly (no corner).
 const CORNER_ANGLE: f64 = 1e-9;
 /// Largest turning of one smooth feature; longer arcs are split so that the normal angle
-/// along each one is far from wrapping.
-const MAX_ARC_TURN: f64 = PI / 2.0;
+/// along each one is far from wrapping. Not π/2 (nor another angle curves are commonly
+/// made of: 2π/3, π/3, π/4): an arc exactly at the limit would be split or not by rounding,
+/// and with it the walk and the part would change under scaling and translation. Splitting
+/// no more than needed also keeps the walk's events few (each one bounds a strip).
+const MAX_ARC_TURN: f64 = 1.6;
 
 /// The plane of a profile: origin, unit normal and an in-plane orthonormal basis with
 /// x × y = normal.

@@ -810,3 +810,109 @@ fn parts_of_a_tangent_surface_between_two_distances() {
         SheetPart::tangent_surface(&curve, 0.9, 0.3, &rails_options(tolerance, 0.0)).unwrap_err();
     assert!(e.message().contains("v_min"), "{e}");
 }
+
+/// Polygon-to-circle transitions (a circle of four exact quarter arcs, each turning by π/2
+/// up to rounding) are the same part — pieces and flat area — at every scale and at
+/// offsets up to 1e3 times their size (beyond ~1e4 the input's rounding exceeds the
+/// curves' convexity and planarity tolerances of 1e-9).
+#[test]
+fn polygon_to_circle_transitions_are_the_same_part_at_every_scale() {
+    let cases: [(&[f64], [f64; 4]); 3] = [
+        (
+            &[1.4138192855026037, 2.812644272322218, 5.715071603918129],
+            [
+                0.10198870864154413,
+                -0.18403485341710007,
+                1.8152147772691047,
+                0.1430999847997217,
+            ],
+        ),
+        (
+            &[
+                0.6167634768841023,
+                3.204034352659418,
+                3.4166874238882077,
+                3.6077790130348104,
+                4.384088273620114,
+                4.444028350579497,
+                5.396036268084197,
+            ],
+            [
+                0.2828667266147222,
+                -0.2250294404975664,
+                1.7913098033465844,
+                0.21428333497388974,
+            ],
+        ),
+        (
+            &[
+                0.17022799757433765,
+                1.9198502059355156,
+                4.393430130014077,
+                4.968843842836862,
+            ],
+            [
+                0.0779749186053515,
+                0.017324794416909428,
+                0.8610205348846299,
+                0.23291614679063027,
+            ],
+        ),
+    ];
+    for (angles, [cx, cy, height, radius]) in cases {
+        let part = |s: f64, t: DVec3| {
+            let corners: Vec<DVec3> = angles
+                .iter()
+                .map(|a| DVec3::new(a.cos(), a.sin(), 0.0) * s + t)
+                .collect();
+            let top = circle(
+                DVec3::new(cx, cy, height) * s + t,
+                DVec3::X,
+                DVec3::Y,
+                radius * s,
+            );
+            let options = SheetOptions {
+                tolerance: 1e-2 * s,
+                sheet: Sheet::new(0.01 * s, 0.5, Reference::Inner).unwrap(),
+                flat_tolerance: 0.0,
+                max_pieces: 100_000,
+            };
+            SheetPart::transition(&polygon(&corners), &top, &options).unwrap()
+        };
+        let area = |p: &SheetPart, scale: f64| {
+            let outline: Vec<PatternEdge> = p
+                .flat_pattern()
+                .unwrap()
+                .outline
+                .iter()
+                .map(|e| super::part::scaled_edge(e, 1.0 / scale))
+                .collect();
+            crate::FlatPattern {
+                outline,
+                bend_lines: vec![],
+            }
+            .area()
+        };
+        let reference = part(1.0, DVec3::ZERO);
+        let a0 = area(&reference, 1.0);
+        for (s, t) in [
+            (1e-200, DVec3::ZERO),
+            (1e-14, DVec3::new(3.0, -7.0, 1.0) * 1e-14),
+            (1e33, DVec3::new(-412.0, 873.0, 95.0) * 1e33),
+            (1.0, DVec3::new(1e3, 0.0, -1e3)),
+            (1e200, DVec3::ZERO),
+        ] {
+            let p = part(s, t);
+            assert_eq!(
+                p.piece_count(),
+                reference.piece_count(),
+                "scale {s:e}, shift {t}"
+            );
+            let a = area(&p, s);
+            assert!(
+                (a - a0).abs() <= 1e-9 * a0,
+                "scale {s:e}, shift {t}: {a} vs {a0}"
+            );
+        }
+    }
+}

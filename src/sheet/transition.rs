@@ -42,6 +42,10 @@ use std::f64::consts::{FRAC_PI_2, TAU};
 
 /// Normal angles closer than this (radians) are one event of the walk.
 const MERGE_ANGLE: f64 = 1e-10;
+/// Contacts before and after an event closer than this (relative to the curves' size, as
+/// the profiles' geometry tolerance) are one point: the same joint of two smooth features,
+/// computed on either.
+const CONTACT_JUMP: f64 = 1e-9;
 /// Samples of the walk used to bracket the events of the top curve.
 const WALK_SAMPLES: usize = 720;
 /// How often the fit tolerance is halved to bring the edges within the tolerance.
@@ -375,7 +379,8 @@ impl Hull {
                 self.contacts_at(&events[k], false),
                 self.contacts_at(&events[k], true),
             );
-            if before.0.distance(after.0) > 0.0 || before.1.distance(after.1) > 0.0 {
+            let jump = CONTACT_JUMP * self.a.size.max(self.b.size);
+            if before.0.distance(after.0) > jump || before.1.distance(after.1) > jump {
                 walk.push(Segment::Planar {
                     from: before,
                     to: after,
