@@ -23,6 +23,7 @@ use std::ffi::c_void;
 /// plane spanned by `ruling` and `side`. `side` is normal to `ruling` and points to where the
 /// next piece attaches; the normal ruling × side must point to one side of the surface all
 /// along a sequence. Directions need not be unit vectors.
+/// \ingroup rmf_cone_spline
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct RmfConeElement {
@@ -36,6 +37,7 @@ pub struct RmfConeElement {
 }
 
 /// An axis-aligned box min ≤ x ≤ max: the region of interest Ω.
+/// \ingroup rmf_cone_spline
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct RmfBox {
@@ -45,44 +47,61 @@ pub struct RmfBox {
 
 /// rule of a cone pair: locally minimal vertex distance (12), the useful root. For
 /// intersecting or parallel rulings (cone and cylinder cases): the biarc with equal legs.
+/// \ingroup rmf_cone_spline
 pub const RMF_CONE_RULE_MIN_VERTEX_DISTANCE: u32 = 0;
 /// rule of a cone pair: congruent cones, μ1 = μ2 (cone and cylinder cases: equal legs).
+/// \ingroup rmf_cone_spline
 pub const RMF_CONE_RULE_CONGRUENT: u32 = 1;
 /// rule of a cone pair: the first segment a cylinder (10).
+/// \ingroup rmf_cone_spline
 pub const RMF_CONE_RULE_CYLINDER_FIRST: u32 = 2;
 /// rule of a cone pair: the second segment a cylinder.
+/// \ingroup rmf_cone_spline
 pub const RMF_CONE_RULE_CYLINDER_SECOND: u32 = 3;
 /// rule of a cone pair: the given parameter: μ1 (vertex v1 = a1 + μ1 e1 on the first
 /// ruling, a1 where it touches the inscribed sphere or meets the plane π), or λ1 (the first
 /// leg of the biarc) in the cone and cylinder cases.
+/// \ingroup rmf_cone_spline
 pub const RMF_CONE_RULE_GIVEN: u32 = 4;
 
 /// RmfConePiece.kind: a segment of a right circular cone.
+/// \ingroup rmf_cone_spline
 pub const RMF_CONE_PIECE_CONE: u32 = 0;
 /// RmfConePiece.kind: a segment of a cylinder of revolution.
+/// \ingroup rmf_cone_spline
 pub const RMF_CONE_PIECE_CYLINDER: u32 = 1;
 /// RmfConePiece.kind: a plane sector (has a vertex) or a plane strip (parallel rulings).
+/// \ingroup rmf_cone_spline
 pub const RMF_CONE_PIECE_PLANE: u32 = 2;
 
 /// RmfConePiece.pair_case: general case (skew rulings, inscribed sphere).
+/// \ingroup rmf_cone_spline
 pub const RMF_CONE_CASE_GENERAL: u32 = 0;
 /// RmfConePiece.pair_case: the rulings intersect (common vertex).
+/// \ingroup rmf_cone_spline
 pub const RMF_CONE_CASE_CONE: u32 = 1;
 /// RmfConePiece.pair_case: parallel rulings.
+/// \ingroup rmf_cone_spline
 pub const RMF_CONE_CASE_CYLINDER: u32 = 2;
 /// RmfConePiece.pair_case: constant slope, det(p1, p2, n1 − n2) = 0 (13).
+/// \ingroup rmf_cone_spline
 pub const RMF_CONE_CASE_CONSTANT_SLOPE: u32 = 3;
 /// RmfConePiece.pair_case: equal tangent planes (one plane piece).
+/// \ingroup rmf_cone_spline
 pub const RMF_CONE_CASE_PLANE: u32 = 4;
 /// RmfConePiece.pair_case: not made by a cone pair (osculating cone splines).
+/// \ingroup rmf_cone_spline
 pub const RMF_CONE_CASE_NONE: u32 = 5;
 
 /// rmf_cone_spline_fit_parameters: the parameters of the selected rulings.
+/// \ingroup rmf_cone_spline
 pub const RMF_CONE_FIT_ELEMENTS: u32 = 0;
 /// rmf_cone_spline_fit_parameters: the parameters of the inflection generators found.
+/// \ingroup rmf_cone_spline
 pub const RMF_CONE_FIT_INFLECTIONS: u32 = 1;
 
 /// The data of one piece of a cone spline.
+/// \ingroup rmf_cone_spline
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct RmfConePiece {
@@ -133,6 +152,7 @@ struct Fit {
 
 /// A cone spline surface (opaque). Freed with rmf_cone_spline_free. Immutable; may be read
 /// from several threads at once.
+/// \ingroup rmf_cone_spline
 pub struct RmfConeSpline {
     pub(crate) spline: ConeSpline,
     /// The pair case of each piece (RMF_CONE_CASE_*).
@@ -228,6 +248,8 @@ fn region_from(region: &RmfBox) -> FfiResult<Region> {
 ///         opposite sides), the rule is unknown, or an element point is outside the region.
 /// @return RMF_ERROR_NO_SOLUTION If no cone pair of the rule joins two elements
 ///         consistently, or the region contains every possible vertex.
+/// \since 0.1
+/// \ingroup rmf_cone_spline
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_hermite(
     elements: *const RmfConeElement,
@@ -342,6 +364,8 @@ fn check_fit_arguments(tolerance: f64, max_pieces: usize) -> FfiResult {
 ///         unknown rule.
 /// @return RMF_ERROR_NO_SOLUTION If the curve has zero curvature somewhere (no tangent plane).
 /// @return RMF_ERROR_NOT_CONVERGED If the tolerance needs more than max_pieces pieces.
+/// \since 0.1
+/// \ingroup rmf_cone_spline
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn rmf_cone_spline_approximate(
@@ -398,6 +422,8 @@ fn fit_rule(rule: u32) -> FfiResult<Rule> {
 /// @return RMF_ERROR_INVALID_INPUT If the surface is not of degree 1 in u with one span, or
 ///         is not developable (the message gives its max |K|·size²), or for bad numbers.
 /// @return RMF_ERROR_NO_SOLUTION, RMF_ERROR_NOT_CONVERGED As for rmf_cone_spline_approximate.
+/// \since 0.1
+/// \ingroup rmf_cone_spline
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_approximate_ruled(
     surface: *const RmfSurface,
@@ -431,6 +457,7 @@ pub unsafe extern "C" fn rmf_cone_spline_approximate_ruled(
 /// @param[in] planes plane_count control planes, 4 doubles each: u0, u1, u2, u3.
 /// @param[in] plane_count Number of control planes, ≥ degree + 1.
 /// @param[in] knots knot_count clamped knots, knot_count = plane_count + degree + 1.
+/// @param[in] knot_count Number of knots, plane_count + degree + 1.
 /// @param[in] region The region of interest; every ruling must cross it, and it should
 ///            exclude the line of regression.
 /// @param[in] tolerance, rule, max_pieces As for rmf_cone_spline_approximate.
@@ -441,6 +468,8 @@ pub unsafe extern "C" fn rmf_cone_spline_approximate_ruled(
 /// @return RMF_ERROR_INVALID_INPUT For bad counts, knots, non-finite planes or numbers.
 /// @return RMF_ERROR_NO_SOLUTION If a ruling misses the box or U and U' are parallel.
 /// @return RMF_ERROR_NOT_CONVERGED If the tolerance needs more than max_pieces pieces.
+/// \since 0.1
+/// \ingroup rmf_cone_spline
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn rmf_cone_spline_approximate_dual(
@@ -502,6 +531,8 @@ pub unsafe extern "C" fn rmf_cone_spline_approximate_dual(
 /// @return RMF_ERROR_INVALID_INPUT For bad numbers or parameters not increasing.
 /// @return RMF_ERROR_NO_SOLUTION If two consecutive osculating cones cannot be joined
 ///         consistently, or an osculating cone is a cylinder (zero curvature of the curve).
+/// \since 0.1
+/// \ingroup rmf_cone_spline
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn rmf_cone_spline_osculating(
@@ -548,6 +579,10 @@ pub unsafe extern "C" fn rmf_cone_spline_osculating(
 }
 
 /// Frees a cone spline. NULL is a no-op.
+///
+/// @param[in] spline The spline to free, or NULL.
+/// \since 0.1
+/// \ingroup rmf_cone_spline
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_free(spline: *mut RmfConeSpline) {
     free_handle(spline)
@@ -555,7 +590,11 @@ pub unsafe extern "C" fn rmf_cone_spline_free(spline: *mut RmfConeSpline) {
 
 /// The number of pieces of a cone spline.
 ///
+/// @param[in] spline The spline.
+/// @param[out] count Receives the number of pieces.
 /// @return RMF_OK, or RMF_ERROR_NULL_POINTER if spline or count is NULL.
+/// \since 0.1
+/// \ingroup rmf_cone_spline
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_piece_count(
     spline: *const RmfConeSpline,
@@ -615,6 +654,8 @@ fn piece_data(piece: &ConePiece, case: u32, first_patch: usize) -> RmfConePiece 
 /// @param[in] index 0 ≤ index < piece count.
 /// @param[out] piece Receives the data (a copy).
 /// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if index is out of range.
+/// \since 0.1
+/// \ingroup rmf_cone_spline
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_piece(
     spline: *const RmfConeSpline,
@@ -655,6 +696,8 @@ pub unsafe extern "C" fn rmf_cone_spline_piece(
 /// @return RMF_ERROR_NULL_POINTER If spline or out is NULL.
 /// @return RMF_ERROR_INVALID_INPUT If the bounds are not finite, not increasing, or the strip
 ///         contains a vertex (the message names the piece).
+/// \since 0.1
+/// \ingroup rmf_cone_spline
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_surface(
     spline: *const RmfConeSpline,
@@ -682,6 +725,8 @@ pub unsafe extern "C" fn rmf_cone_spline_surface(
 /// @return RMF_ERROR_NULL_POINTER If an argument is NULL.
 /// @return RMF_ERROR_INVALID_INPUT If the box is not finite or min ≥ max somewhere.
 /// @return RMF_ERROR_NO_SOLUTION If some ruling misses the box or no strip fits.
+/// \since 0.1
+/// \ingroup rmf_cone_spline
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_bounds_in_box(
     spline: *const RmfConeSpline,
@@ -704,8 +749,12 @@ pub unsafe extern "C" fn rmf_cone_spline_bounds_in_box(
 /// (the parallel circles; straight lines on plane strips), exact rational quadratics, with
 /// the surface's v parameter.
 ///
+/// @param[in] spline The spline.
+/// @param[in] t Signed distance along the rulings from the reference points (finite).
 /// @param[out] out Receives the curve; free with rmf_curve_free.
 /// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if t is not finite.
+/// \since 0.1
+/// \ingroup rmf_cone_spline
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_boundary(
     spline: *const RmfConeSpline,
@@ -749,6 +798,8 @@ unsafe fn derive(
 /// @param[in] s In [0, 1].
 /// @param[out] out Receives the bent spline; free with rmf_cone_spline_free.
 /// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if s is not in [0, 1].
+/// \since 0.1
+/// \ingroup rmf_cone_spline
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_bend(
     spline: *const RmfConeSpline,
@@ -767,8 +818,11 @@ pub unsafe extern "C" fn rmf_cone_spline_bend(
 /// (rmf_cone_spline_surface with the same bounds) is planar with lines and circular arcs as
 /// boundaries, isometric to the spline's.
 ///
+/// @param[in] spline The spline.
 /// @param[out] out Receives the development; free with rmf_cone_spline_free.
 /// @return RMF_OK, or RMF_ERROR_NULL_POINTER if an argument is NULL.
+/// \since 0.1
+/// \ingroup rmf_cone_spline
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_develop(
     spline: *const RmfConeSpline,
@@ -782,8 +836,12 @@ pub unsafe extern "C" fn rmf_cone_spline_develop(
 /// The offset of a cone spline at signed distance d along the normals ruling × side: again
 /// a cone spline (same axes and half angles, shifted vertices), exact.
 ///
+/// @param[in] spline The spline.
+/// @param[in] d Signed distance along ruling × side (finite).
 /// @param[out] out Receives the offset; free with rmf_cone_spline_free.
 /// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if d is not finite.
+/// \since 0.1
+/// \ingroup rmf_cone_spline
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_offset(
     spline: *const RmfConeSpline,
@@ -798,9 +856,12 @@ pub unsafe extern "C" fn rmf_cone_spline_offset(
 /// The deviation an approximation reached (rmf_cone_spline_approximate*; kept by
 /// bending, development and offsets).
 ///
+/// @param[in] spline A spline made by rmf_cone_spline_approximate*.
 /// @param[out] max_error Receives the largest sampled distance to the input surface.
 /// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if the spline was
 ///         not made by an approximation.
+/// \since 0.1
+/// \ingroup rmf_cone_spline
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_fit_error(
     spline: *const RmfConeSpline,
@@ -823,8 +884,10 @@ pub unsafe extern "C" fn rmf_cone_spline_fit_error(
 ///
 /// Size query: with capacity 0 (values may be NULL) only count is written.
 ///
+/// @param[in] spline A spline made by rmf_cone_spline_approximate*.
 /// @param[in] which RMF_CONE_FIT_ELEMENTS or RMF_CONE_FIT_INFLECTIONS.
 /// @param[out] values Buffer for capacity values.
+/// @param[in] capacity Capacity of values; 0 for a size query.
 /// @param[out] count Receives the number of values.
 /// @return RMF_OK on success or for a size query.
 /// @return RMF_ERROR_NULL_POINTER If spline or count is NULL, or values is NULL with a
@@ -832,6 +895,8 @@ pub unsafe extern "C" fn rmf_cone_spline_fit_error(
 /// @return RMF_ERROR_INVALID_INPUT If which is unknown or the spline was not made by an
 ///         approximation.
 /// @return RMF_ERROR_BUFFER_TOO_SMALL If capacity is non-zero but too small; count is written.
+/// \since 0.1
+/// \ingroup rmf_cone_spline
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_fit_parameters(
     spline: *const RmfConeSpline,

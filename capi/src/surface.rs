@@ -15,6 +15,7 @@ use std::sync::{Arc, OnceLock};
 
 /// A piecewise rational tensor-product surface s(u, v) (opaque). Freed with
 /// rmf_surface_free. Immutable; may be read from several threads at once.
+/// \ingroup rmf_surfaces
 pub struct RmfSurface {
     pub(crate) surface: Arc<PiecewiseSurface>,
     /// The caller's NURBS data when created from it: the NURBS view shows it unchanged.
@@ -81,6 +82,8 @@ impl RmfSurface {
 /// @return RMF_ERROR_NULL_POINTER If poles, knots_u, knots_v or out is NULL.
 /// @return RMF_ERROR_INVALID_INPUT If a count, degree, knot, weight or pole is invalid (the
 ///         message names it).
+/// \since 0.1
+/// \ingroup rmf_surfaces
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn rmf_nurbs_surface_create(
@@ -142,6 +145,10 @@ pub unsafe extern "C" fn rmf_nurbs_surface_create(
 }
 
 /// Frees a surface. NULL is a no-op.
+///
+/// @param[in] surface The surface to free, or NULL.
+/// \since 0.1
+/// \ingroup rmf_surfaces
 #[no_mangle]
 pub unsafe extern "C" fn rmf_surface_free(surface: *mut RmfSurface) {
     free_handle(surface)
@@ -149,7 +156,12 @@ pub unsafe extern "C" fn rmf_surface_free(surface: *mut RmfSurface) {
 
 /// The parameter domain [u_min, u_max] × [v_min, v_max] of a surface.
 ///
+/// @param[in] surface The surface.
+/// @param[out] u_min, u_max Receive the ends of the u domain.
+/// @param[out] v_min, v_max Receive the ends of the v domain.
 /// @return RMF_OK, or RMF_ERROR_NULL_POINTER if any argument is NULL.
+/// \since 0.1
+/// \ingroup rmf_surfaces
 #[no_mangle]
 pub unsafe extern "C" fn rmf_surface_domain(
     surface: *const RmfSurface,
@@ -184,6 +196,8 @@ pub unsafe extern "C" fn rmf_surface_domain(
 /// @return RMF_OK on success.
 /// @return RMF_ERROR_NULL_POINTER If surface or point is NULL.
 /// @return RMF_ERROR_INVALID_INPUT If u or v is not finite or outside the domain.
+/// \since 0.1
+/// \ingroup rmf_surfaces
 #[no_mangle]
 pub unsafe extern "C" fn rmf_surface_eval(
     surface: *const RmfSurface,
@@ -214,11 +228,14 @@ pub unsafe extern "C" fn rmf_surface_eval(
 /// Borrowed NURBS view of a surface: one clamped NURBS with full-multiplicity interior
 /// knots at patch boundaries (for a surface made by rmf_nurbs_surface_create: the data given).
 ///
+/// @param[in] surface The surface.
 /// @param[out] view Receives pointers owned by the surface: do not free them; valid until
 ///             rmf_surface_free(surface).
 /// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if the patches do not
 ///         join into one continuous NURBS (Frenet frame vectors and Frenet sweeps along a G1
 ///         spline jump at the joints); rmf_surface_patch still gives every piece.
+/// \since 0.1
+/// \ingroup rmf_surfaces
 #[no_mangle]
 pub unsafe extern "C" fn rmf_surface_nurbs(
     surface: *const RmfSurface,
@@ -253,15 +270,21 @@ pub unsafe extern "C" fn rmf_surface_nurbs(
 /// Size query: with pole_capacity = knot_capacity_u = knot_capacity_v = 0 (buffers may then
 /// be NULL) only the degrees and counts are written and RMF_OK is returned.
 ///
+/// @param[in] surface The surface.
 /// @param[out] degree_u, degree_v Receive the degrees.
 /// @param[out] poles, weights Buffers for pole_capacity poles and weights (index i * pole_count_v + j).
+/// @param[in] pole_capacity Capacity of poles and weights.
 /// @param[out] knots_u, knots_v Buffers for knot_capacity_u and knot_capacity_v knots.
+/// @param[in] knot_capacity_u Capacity of knots_u.
+/// @param[in] knot_capacity_v Capacity of knots_v.
 /// @param[out] pole_count_u, pole_count_v, knot_count_u, knot_count_v Receive the counts.
 /// @return RMF_OK on success or for a size query.
 /// @return RMF_ERROR_NULL_POINTER If surface, a degree or a count pointer is NULL, or a
 ///         buffer is NULL with a non-zero capacity.
 /// @return RMF_ERROR_BUFFER_TOO_SMALL If a capacity is too small; then only the degrees and
 ///         counts are written.
+/// \since 0.1
+/// \ingroup rmf_surfaces
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn rmf_surface_nurbs_copy(
@@ -332,7 +355,11 @@ pub unsafe extern "C" fn rmf_surface_nurbs_copy(
 
 /// Numbers of Bézier patches of a surface along u and along v.
 ///
+/// @param[in] surface The surface.
+/// @param[out] count_u, count_v Receive the numbers of patches along u and v.
 /// @return RMF_OK, or RMF_ERROR_NULL_POINTER if any argument is NULL.
+/// \since 0.1
+/// \ingroup rmf_surfaces
 #[no_mangle]
 pub unsafe extern "C" fn rmf_surface_patch_count(
     surface: *const RmfSurface,
@@ -350,8 +377,13 @@ pub unsafe extern "C" fn rmf_surface_patch_count(
 
 /// Borrowed view of patch (index_u, index_v) of a surface as a rational Bézier patch.
 ///
+/// @param[in] surface The surface.
+/// @param[in] index_u 0 ≤ index_u < patch count along u.
+/// @param[in] index_v 0 ≤ index_v < patch count along v.
 /// @param[out] view Receives pointers owned by the surface (valid until it is freed).
 /// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if an index is out of range.
+/// \since 0.1
+/// \ingroup rmf_surfaces
 #[no_mangle]
 pub unsafe extern "C" fn rmf_surface_patch(
     surface: *const RmfSurface,
@@ -412,6 +444,8 @@ pub unsafe extern "C" fn rmf_surface_patch(
 ///         50,000,000 points.
 /// @return RMF_ERROR_BUFFER_TOO_SMALL If a capacity is too small; then only the counts are
 ///         written.
+/// \since 0.1
+/// \ingroup rmf_surfaces
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn rmf_surface_tessellate(
@@ -478,6 +512,8 @@ pub unsafe extern "C" fn rmf_surface_tessellate(
 /// @return RMF_ERROR_NULL_POINTER If an argument is NULL.
 /// @return RMF_ERROR_INVALID_INPUT If the frames are not rational or do not belong to the
 ///         spine, or the surface would have more than 2^22 (4,194,304) control points.
+/// \since 0.1
+/// \ingroup rmf_sweeps
 #[no_mangle]
 pub unsafe extern "C" fn rmf_sweep_surface(
     spine: *const RmfCurve,

@@ -20,6 +20,7 @@ pub(crate) fn piece_views<'a>(pieces: impl Iterator<Item = &'a [DVec4]>) -> Piec
 }
 
 /// A point or vector in 3-space.
+/// \ingroup rmf_foundation
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct RmfVec3 {
@@ -45,6 +46,7 @@ impl From<RmfVec3> for DVec3 {
 }
 
 /// A point or vector in a plane (a flat pattern's coordinates).
+/// \ingroup rmf_sheet
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct RmfVec2 {
@@ -70,6 +72,7 @@ impl From<RmfVec2> for rmfsurf::glam::DVec2 {
 ///
 /// The arrays are owned by the curve handle: do not free them; they stay valid until the
 /// handle is freed.
+/// \ingroup rmf_curves
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct RmfNurbsCurve {
@@ -90,6 +93,7 @@ pub struct RmfNurbsCurve {
 
 /// Borrowed view of a NURBS surface. Pole (i, j) is at index `i * pole_count_v + j`, i along
 /// u; the arrays are owned by the surface handle (do not free; valid until it is freed).
+/// \ingroup rmf_surfaces
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct RmfNurbsSurface {
@@ -112,6 +116,7 @@ pub struct RmfNurbsSurface {
 /// Borrowed view of one rational Bézier segment of a curve: degree + 1 poles and weights
 /// for the parameter interval [t_start, t_end] of the curve (the Bernstein basis runs over
 /// that interval). Owned by the curve handle.
+/// \ingroup rmf_curves
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct RmfBezierCurve {
@@ -127,6 +132,7 @@ pub struct RmfBezierCurve {
 /// Borrowed view of one rational tensor-product Bézier patch of a surface:
 /// (degree_u + 1) * (degree_v + 1) poles, index `i * (degree_v + 1) + j`, on
 /// [u_start, u_end] × [v_start, v_end]. Owned by the surface handle.
+/// \ingroup rmf_surfaces
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct RmfBezierPatch {
