@@ -497,6 +497,35 @@ typedef void (*RmfCurveCallback)(double t,
                                  struct RmfVec3 *tangent);
 
 /**
+ * How rmf_cone_spline_approximate_with_options and
+ * rmf_cone_spline_approximate_dual_with_options fit: the tolerance, the rule of the cone
+ * pairs and the most pieces. Initialise with rmf_cone_approximation_options_init, then set
+ * the tolerance; the struct only grows at the end.
+ * \since 0.2
+ * \ingroup rmf_cone_spline
+ */
+typedef struct RmfConeApproximationOptions {
+  /**
+   * sizeof(RmfConeApproximationOptions), written by rmf_cone_approximation_options_init.
+   */
+  size_t struct_size;
+  /**
+   * Largest allowed distance between the surface's region and the cone spline, in the
+   * input's units, > 0. Default 0, which is refused: set it.
+   */
+  double tolerance;
+  /**
+   * One of RMF_CONE_RULE_* except RMF_CONE_RULE_GIVEN (default
+   * RMF_CONE_RULE_MIN_VERTEX_DISTANCE).
+   */
+  uint32_t rule;
+  /**
+   * Most pieces, ≥ 2 (default 100000); more are RMF_ERROR_NOT_CONVERGED.
+   */
+  size_t max_pieces;
+} RmfConeApproximationOptions;
+
+/**
  * The data of one piece of a cone spline.
  * \ingroup rmf_cone_spline
  */
@@ -1022,6 +1051,60 @@ typedef struct RmfFlatEdge {
 typedef uint32_t RmfSheetFormat;
 
 /**
+ * NURBS data of a surface for rmf_nurbs_surface_create_from: the fields of
+ * rmf_nurbs_surface_create in one struct. The caller sets struct_size =
+ * sizeof(RmfNurbsSurfaceData); the struct only grows at the end.
+ * \since 0.2
+ * \ingroup rmf_surfaces
+ */
+typedef struct RmfNurbsSurfaceData {
+  /**
+   * sizeof(RmfNurbsSurfaceData), set by the caller.
+   */
+  size_t struct_size;
+  /**
+   * Degree along u, 1..=64.
+   */
+  uint32_t degree_u;
+  /**
+   * Degree along v, 1..=64.
+   */
+  uint32_t degree_v;
+  /**
+   * Number of poles along u, ≥ degree_u + 1.
+   */
+  size_t pole_count_u;
+  /**
+   * Number of poles along v, ≥ degree_v + 1.
+   */
+  size_t pole_count_v;
+  /**
+   * pole_count_u * pole_count_v Cartesian poles, index i * pole_count_v + j with i along u.
+   */
+  const struct RmfVec3 *poles;
+  /**
+   * Weights in the same order (finite, > 0), or NULL for all 1.
+   */
+  const double *weights;
+  /**
+   * Number of u knots, pole_count_u + degree_u + 1.
+   */
+  size_t knot_count_u;
+  /**
+   * Clamped knot vector in u.
+   */
+  const double *knots_u;
+  /**
+   * Number of v knots, pole_count_v + degree_v + 1.
+   */
+  size_t knot_count_v;
+  /**
+   * Clamped knot vector in v.
+   */
+  const double *knots_v;
+} RmfNurbsSurfaceData;
+
+/**
  * Borrowed view of a NURBS surface. Pole (i, j) is at index `i * pole_count_v + j`, i along
  * u; the arrays are owned by the surface handle (do not free; valid until it is freed).
  * \ingroup rmf_surfaces
@@ -1050,6 +1133,48 @@ typedef struct RmfNurbsSurface {
   size_t knot_count_v;
   const double *knots_v;
 } RmfNurbsSurface;
+
+/**
+ * Caller buffers for rmf_surface_nurbs_copy_into. The caller sets struct_size =
+ * sizeof(RmfNurbsSurfaceBuffers); the struct only grows at the end. A buffer may be NULL
+ * when its capacity is 0.
+ * \since 0.2
+ * \ingroup rmf_surfaces
+ */
+typedef struct RmfNurbsSurfaceBuffers {
+  /**
+   * sizeof(RmfNurbsSurfaceBuffers), set by the caller.
+   */
+  size_t struct_size;
+  /**
+   * Buffer for pole_capacity poles, index i * pole_count_v + j with i along u.
+   */
+  struct RmfVec3 *poles;
+  /**
+   * Buffer for pole_capacity weights, in the order of the poles.
+   */
+  double *weights;
+  /**
+   * Capacity of poles and of weights.
+   */
+  size_t pole_capacity;
+  /**
+   * Buffer for knot_capacity_u knots along u.
+   */
+  double *knots_u;
+  /**
+   * Capacity of knots_u.
+   */
+  size_t knot_capacity_u;
+  /**
+   * Buffer for knot_capacity_v knots along v.
+   */
+  double *knots_v;
+  /**
+   * Capacity of knots_v.
+   */
+  size_t knot_capacity_v;
+} RmfNurbsSurfaceBuffers;
 
 /**
  * Borrowed view of one rational tensor-product Bézier patch of a surface:
@@ -1313,6 +1438,10 @@ RmfStatus rmf_cone_spline_hermite(const struct RmfConeElement *elements,
  * junctions, further rulings are chosen adaptively until the largest distance from the
  * surface's region to the cone spline is ≤ tolerance.
  *
+ * Deprecated: use rmf_cone_spline_approximate_with_options (a callback as a curve from
+ * rmf_callback_curve_create, the tolerance, rule and piece cap in an options struct that
+ * can grow). This function stays, with the same results, for at least one release.
+ *
  * The curve is `curve` (its whole domain), or `callback` on [t_min, t_max]; exactly one of
  * them. It must be regular with non-zero curvature.
  *
@@ -1352,6 +1481,52 @@ RmfStatus rmf_cone_spline_approximate(const struct RmfCurve *curve,
                                       double *max_error);
 
 /**
+ * Writes the default cone approximation options (struct_size set, tolerance 0: set it).
+ *
+ * @param[out] out Receives the defaults.
+ * @return RMF_OK, or RMF_ERROR_NULL_POINTER if out is NULL.
+ * \since 0.2
+ * \ingroup rmf_cone_spline
+ */
+RmfStatus rmf_cone_approximation_options_init(struct RmfConeApproximationOptions *out);
+
+/**
+ * Approximates the tangent surface x(t) + v e(t) of a curve (e = x'/|x'|) over
+ * v ∈ [v_min, v_max] by a cone spline, as rmf_cone_spline_approximate does: inflection
+ * generators (zero torsion) are kept as junctions, further rulings are chosen adaptively
+ * until the largest distance from the surface's region to the cone spline is ≤ the
+ * tolerance. The curve must be regular with non-zero curvature.
+ *
+ * @param[in] curve A curve on its whole domain: NURBS data, a computed curve, or an
+ *            analytic curve from rmf_callback_curve_create.
+ * @param[in] v_min, v_max The region along the rulings, distances from the curve point:
+ *            finite, v_min < v_max, 0 ∉ [v_min, v_max] (the curve is the singular edge).
+ * @param[in] options Tolerance, rule and piece cap (initialise with
+ *            rmf_cone_approximation_options_init, then set the tolerance).
+ * @param[out] out Receives the spline; free with rmf_cone_spline_free. Its reference
+ *             point is x(t_min) + (v_min + v_max)/2 e(t_min), t_min the domain's start.
+ *             Untouched on failure.
+ * @param[out] max_error Receives the largest sampled distance; may be NULL. Untouched on
+ *             failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If curve, options or out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If options->struct_size is no size of the struct, the
+ *         tolerance is not finite and positive, max_pieces < 2, the rule is unknown or
+ *         RMF_CONE_RULE_GIVEN (the message names the field: "options: tolerance = ..."),
+ *         or v_min, v_max are bad.
+ * @return RMF_ERROR_NO_SOLUTION If the curve has zero curvature somewhere (no tangent plane).
+ * @return RMF_ERROR_NOT_CONVERGED If the tolerance needs more than max_pieces pieces.
+ * \since 0.2
+ * \ingroup rmf_cone_spline
+ */
+RmfStatus rmf_cone_spline_approximate_with_options(const struct RmfCurve *curve,
+                                                   double v_min,
+                                                   double v_max,
+                                                   const struct RmfConeApproximationOptions *options,
+                                                   struct RmfConeSpline **out,
+                                                   double *max_error);
+
+/**
  * Approximates a developable ruled surface of degree (1, n) — rulings along u, e.g.
  * spanned between two rails — over its whole domain, as rmf_cone_spline_approximate does
  * for tangent surfaces. Developability is checked first: the surface's own Gaussian
@@ -1381,6 +1556,10 @@ RmfStatus rmf_cone_spline_approximate_ruled(const struct RmfSurface *surface,
  * Approximates a developable surface in the dual form (4) of the paper: a clamped
  * B-spline curve of planes U(t) = Σ Uᵢ Nᵢ(t), u0 + u1 x + u2 y + u3 z = 0, whose rulings
  * are U ∩ U'. The region of interest is a box; each ruling is used where it crosses it.
+ *
+ * Deprecated: use rmf_cone_spline_approximate_dual_with_options (the tolerance, rule and
+ * piece cap in an options struct that can grow). This function stays, with the same
+ * results, for at least one release.
  *
  * @param[in] degree Degree k ≥ 1 of the B-spline.
  * @param[in] planes plane_count control planes, 4 doubles each: u0, u1, u2, u3.
@@ -1413,11 +1592,51 @@ RmfStatus rmf_cone_spline_approximate_dual(uint32_t degree,
                                            double *max_error);
 
 /**
+ * Approximates a developable surface in the dual form (4) of the paper by a cone spline,
+ * as rmf_cone_spline_approximate_dual does, with the tolerance, rule and piece cap in an
+ * options struct.
+ *
+ * @param[in] degree Degree k ≥ 1 of the B-spline of planes.
+ * @param[in] planes plane_count control planes, 4 doubles each: u0, u1, u2, u3.
+ * @param[in] plane_count Number of control planes, ≥ degree + 1.
+ * @param[in] knots knot_count clamped knots.
+ * @param[in] knot_count Number of knots, plane_count + degree + 1.
+ * @param[in] region The region of interest; every ruling must cross it, and it should
+ *            exclude the line of regression.
+ * @param[in] options Tolerance, rule and piece cap (initialise with
+ *            rmf_cone_approximation_options_init, then set the tolerance).
+ * @param[out] out Receives the spline; free with rmf_cone_spline_free. Untouched on failure.
+ * @param[out] max_error Receives the largest sampled distance; may be NULL.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If planes, knots, region, options or out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If options->struct_size is no size of the struct, a field
+ *         of options is refused (the message names it), or for bad counts, knots,
+ *         non-finite planes or numbers.
+ * @return RMF_ERROR_NO_SOLUTION If a ruling misses the box or U and U' are parallel.
+ * @return RMF_ERROR_NOT_CONVERGED If the tolerance needs more than max_pieces pieces.
+ * \since 0.2
+ * \ingroup rmf_cone_spline
+ */
+RmfStatus rmf_cone_spline_approximate_dual_with_options(uint32_t degree,
+                                                        const double *planes,
+                                                        size_t plane_count,
+                                                        const double *knots,
+                                                        size_t knot_count,
+                                                        const struct RmfBox *region,
+                                                        const struct RmfConeApproximationOptions *options,
+                                                        struct RmfConeSpline **out,
+                                                        double *max_error);
+
+/**
  * The osculating cone spline of a tangent surface (Section "Osculating cone splines"):
  * the osculating cones along the rulings at `parameters` (vertex on the curve, axis along
  * the Darboux vector τe + κb), consecutive ones joined by a filling cone found from the
  * quartic (14), keeping the consistent solutions. Consecutive parameters must be close
  * enough for a consistent filling cone to exist.
+ *
+ * Deprecated: use rmf_cone_spline_osculating_curve (a callback as a curve from
+ * rmf_callback_curve_create). This function stays, with the same results, for at least one
+ * release.
  *
  * @param[in] curve, callback, user, t_min, t_max The curve, as for rmf_cone_spline_approximate.
  * @param[in] v_min, v_max The region along the rulings, as for rmf_cone_spline_approximate.
@@ -1442,6 +1661,34 @@ RmfStatus rmf_cone_spline_osculating(const struct RmfCurve *curve,
                                      const double *parameters,
                                      size_t count,
                                      struct RmfConeSpline **out);
+
+/**
+ * The osculating cone spline of the tangent surface of a curve, as
+ * rmf_cone_spline_osculating builds it, with the curve as one handle (an analytic curve
+ * from rmf_callback_curve_create instead of a callback and its interval).
+ *
+ * @param[in] curve A curve on its whole domain (NURBS data, a computed curve or a callback
+ *            curve).
+ * @param[in] v_min, v_max The region along the rulings, as for
+ *            rmf_cone_spline_approximate_with_options.
+ * @param[in] parameters count increasing curve parameters inside the domain.
+ * @param[in] count Number of osculating cones, ≥ 2.
+ * @param[out] out Receives the spline; free with rmf_cone_spline_free. Untouched on failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If curve, parameters or out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT For bad numbers or parameters not increasing or outside
+ *         the domain.
+ * @return RMF_ERROR_NO_SOLUTION If two consecutive osculating cones cannot be joined
+ *         consistently, or an osculating cone is a cylinder (zero curvature of the curve).
+ * \since 0.2
+ * \ingroup rmf_cone_spline
+ */
+RmfStatus rmf_cone_spline_osculating_curve(const struct RmfCurve *curve,
+                                           double v_min,
+                                           double v_max,
+                                           const double *parameters,
+                                           size_t count,
+                                           struct RmfConeSpline **out);
 
 /**
  * Frees a cone spline. NULL is a no-op.
@@ -3048,6 +3295,9 @@ const char *rmf_status_name(uint32_t status);
 /**
  * Creates a surface from NURBS data.
  *
+ * Deprecated: use rmf_nurbs_surface_create_from (the data in one struct that can grow).
+ * This function stays, with the same results, for at least one release.
+ *
  * @param[in] degree_u, degree_v Degrees, each in 1..=64.
  * @param[in] poles pole_count_u * pole_count_v Cartesian poles, index i * pole_count_v + j
  *            with i along u.
@@ -3076,6 +3326,23 @@ RmfStatus rmf_nurbs_surface_create(uint32_t degree_u,
                                    const double *knots_v,
                                    size_t knot_count_v,
                                    struct RmfSurface **out);
+
+/**
+ * Creates a surface from NURBS data given in one struct, as rmf_nurbs_surface_create does.
+ *
+ * @param[in] data The NURBS data, struct_size set to sizeof(RmfNurbsSurfaceData). Degrees
+ *            and counts are checked against each other before any array is read.
+ * @param[out] out Receives the surface; free with rmf_surface_free. Untouched on failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If data, data->poles, data->knots_u, data->knots_v or out
+ *         is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If data->struct_size is no size of the struct, or a count,
+ *         degree, knot, weight or pole is invalid (the message names it: "data: ...").
+ * \since 0.2
+ * \ingroup rmf_surfaces
+ */
+RmfStatus rmf_nurbs_surface_create_from(const struct RmfNurbsSurfaceData *data,
+                                        struct RmfSurface **out);
 
 /**
  * Frees a surface. NULL is a no-op.
@@ -3141,6 +3408,10 @@ RmfStatus rmf_surface_nurbs(const struct RmfSurface *surface, struct RmfNurbsSur
 /**
  * Copies the NURBS data of a surface (as in rmf_surface_nurbs) into caller buffers.
  *
+ * Deprecated: use rmf_surface_nurbs_copy_into (the buffers in one struct that can grow,
+ * the degrees and counts in an RmfNurbsSurface). This function stays, with the same
+ * results, for at least one release.
+ *
  * Size query: with pole_capacity = knot_capacity_u = knot_capacity_v = 0 (buffers may then
  * be NULL) only the degrees and counts are written and RMF_OK is returned.
  *
@@ -3174,6 +3445,31 @@ RmfStatus rmf_surface_nurbs_copy(const struct RmfSurface *surface,
                                  size_t *pole_count_v,
                                  size_t *knot_count_u,
                                  size_t *knot_count_v);
+
+/**
+ * Copies the NURBS data of a surface (as in rmf_surface_nurbs) into the caller's buffers,
+ * as rmf_surface_nurbs_copy does, and describes the copy.
+ *
+ * Size query: with all capacities 0 (the buffers may then be NULL) only the degrees and
+ * counts are written to `copy` (its pointers NULL) and RMF_OK is returned.
+ *
+ * @param[in] surface The surface.
+ * @param[in] buffers The caller's buffers and their capacities, struct_size set.
+ * @param[out] copy Receives the degrees and counts, and pointers to the caller's buffers
+ *             now holding the poles, weights and knots (NULL after a size query).
+ * @return RMF_OK on success or for a size query.
+ * @return RMF_ERROR_NULL_POINTER If surface, buffers or copy is NULL, or a buffer is NULL
+ *         with a non-zero capacity (the message names it: buffers->poles, ...).
+ * @return RMF_ERROR_INVALID_INPUT If buffers->struct_size is no size of the struct, or the
+ *         patches do not join into one continuous NURBS (as for rmf_surface_nurbs).
+ * @return RMF_ERROR_BUFFER_TOO_SMALL If a capacity is non-zero but too small; then the
+ *         degrees and counts are written to `copy`, with NULL pointers.
+ * \since 0.2
+ * \ingroup rmf_surfaces
+ */
+RmfStatus rmf_surface_nurbs_copy_into(const struct RmfSurface *surface,
+                                      const struct RmfNurbsSurfaceBuffers *buffers,
+                                      struct RmfNurbsSurface *copy);
 
 /**
  * Numbers of Bézier patches of a surface along u and along v.

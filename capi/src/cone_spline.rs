@@ -5,7 +5,7 @@
 
 use super::boundary::{
     buffer, free_handle, guard, invalid_arg, optional_out, out_ptr, reference, slice, write,
-    FfiError, FfiResult,
+    FfiError, FfiResult, OptionsStruct,
 };
 use super::curve::RmfCurve;
 use super::input::{curve_or_callback, RmfCurveCallback};
@@ -15,7 +15,7 @@ use super::types::RmfVec3;
 use rmfsurf::glam::DVec4;
 use rmfsurf::{
     approximate_developable, osculating_spline, ConePiece, ConeSpline, DualDevelopable, Element,
-    PairCase, PieceKind, Region, Rule, RuledSurface, TangentSurface,
+    PairCase, ParametricCurve, PieceKind, Region, Rule, RuledSurface, TangentSurface,
 };
 use std::ffi::c_void;
 
@@ -342,6 +342,10 @@ fn check_fit_arguments(tolerance: f64, max_pieces: usize) -> FfiResult {
 /// junctions, further rulings are chosen adaptively until the largest distance from the
 /// surface's region to the cone spline is ≤ tolerance.
 ///
+/// Deprecated: use rmf_cone_spline_approximate_with_options (a callback as a curve from
+/// rmf_callback_curve_create, the tolerance, rule and piece cap in an options struct that
+/// can grow). This function stays, with the same results, for at least one release.
+///
 /// The curve is `curve` (its whole domain), or `callback` on [t_min, t_max]; exactly one of
 /// them. It must be regular with non-zero curvature.
 ///
@@ -388,13 +392,173 @@ pub unsafe extern "C" fn rmf_cone_spline_approximate(
         let input = curve_or_callback(curve, callback, user, t_min, t_max)?;
         check_fit_arguments(tolerance, max_pieces)?;
         let rule = fit_rule(rule)?;
-        let surface = TangentSurface::new(input.as_ref(), v_min, v_max)?;
-        finish_fit(
-            approximate_developable(&surface, tolerance, rule, max_pieces)?,
+        approximate_tangent_surface(
+            input.as_ref(),
+            v_min,
+            v_max,
+            tolerance,
+            rule,
+            max_pieces,
             out,
             max_error,
-        );
+        )
+    })
+}
+
+/// The tangent-surface approximation both C entry points run.
+///
+/// # Safety
+/// `out` and `max_error` (if given) are valid for writes.
+#[allow(clippy::too_many_arguments)]
+unsafe fn approximate_tangent_surface(
+    curve: &dyn ParametricCurve,
+    v_min: f64,
+    v_max: f64,
+    tolerance: f64,
+    rule: Rule,
+    max_pieces: usize,
+    out: *mut *mut RmfConeSpline,
+    max_error: Option<*mut f64>,
+) -> FfiResult {
+    let surface = TangentSurface::new(curve, v_min, v_max)?;
+    finish_fit(
+        approximate_developable(&surface, tolerance, rule, max_pieces)?,
+        out,
+        max_error,
+    );
+    Ok(())
+}
+
+/// How rmf_cone_spline_approximate_with_options and
+/// rmf_cone_spline_approximate_dual_with_options fit: the tolerance, the rule of the cone
+/// pairs and the most pieces. Initialise with rmf_cone_approximation_options_init, then set
+/// the tolerance; the struct only grows at the end.
+/// \since 0.2
+/// \ingroup rmf_cone_spline
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RmfConeApproximationOptions {
+    /// sizeof(RmfConeApproximationOptions), written by rmf_cone_approximation_options_init.
+    pub struct_size: usize,
+    /// Largest allowed distance between the surface's region and the cone spline, in the
+    /// input's units, > 0. Default 0, which is refused: set it.
+    pub tolerance: f64,
+    /// One of RMF_CONE_RULE_* except RMF_CONE_RULE_GIVEN (default
+    /// RMF_CONE_RULE_MIN_VERTEX_DISTANCE).
+    pub rule: u32,
+    /// Most pieces, ≥ 2 (default 100000); more are RMF_ERROR_NOT_CONVERGED.
+    pub max_pieces: usize,
+}
+
+/// The piece cap of RmfConeApproximationOptions, as for sheet-metal parts (RmfSheetOptions).
+const DEFAULT_MAX_PIECES: usize = 100_000;
+
+impl Default for RmfConeApproximationOptions {
+    fn default() -> Self {
+        Self {
+            struct_size: std::mem::size_of::<Self>(),
+            tolerance: 0.0,
+            rule: RMF_CONE_RULE_MIN_VERTEX_DISTANCE,
+            max_pieces: DEFAULT_MAX_PIECES,
+        }
+    }
+}
+
+// SAFETY: repr(C) plain numbers, usize first.
+unsafe impl OptionsStruct for RmfConeApproximationOptions {
+    const FIRST_SIZE: usize = std::mem::size_of::<Self>();
+}
+
+/// Writes the default cone approximation options (struct_size set, tolerance 0: set it).
+///
+/// @param[out] out Receives the defaults.
+/// @return RMF_OK, or RMF_ERROR_NULL_POINTER if out is NULL.
+/// \since 0.2
+/// \ingroup rmf_cone_spline
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_approximation_options_init(
+    out: *mut RmfConeApproximationOptions,
+) -> RmfStatus {
+    guard("rmf_cone_approximation_options_init", || {
+        let out = out_ptr(out, "out")?;
+        write(out, RmfConeApproximationOptions::default());
         Ok(())
+    })
+}
+
+/// The caller's fit options, checked: NULL is refused (the tolerance has no default), and
+/// a refused field is named "options: ...".
+///
+/// # Safety
+/// `options` is NULL or points to at least its `struct_size` readable bytes.
+unsafe fn fit_options(
+    options: *const RmfConeApproximationOptions,
+) -> FfiResult<(f64, Rule, usize)> {
+    if options.is_null() {
+        return Err(FfiError::Null("options"));
+    }
+    let given = super::boundary::options(options, "options")?;
+    let checked = check_fit_arguments(given.tolerance, given.max_pieces)
+        .and_then(|()| fit_rule(given.rule))
+        .map_err(|e| match e {
+            FfiError::Core(e) => FfiError::Core(e.context("options")),
+            other => other,
+        })?;
+    Ok((given.tolerance, checked, given.max_pieces))
+}
+
+/// Approximates the tangent surface x(t) + v e(t) of a curve (e = x'/|x'|) over
+/// v ∈ [v_min, v_max] by a cone spline, as rmf_cone_spline_approximate does: inflection
+/// generators (zero torsion) are kept as junctions, further rulings are chosen adaptively
+/// until the largest distance from the surface's region to the cone spline is ≤ the
+/// tolerance. The curve must be regular with non-zero curvature.
+///
+/// @param[in] curve A curve on its whole domain: NURBS data, a computed curve, or an
+///            analytic curve from rmf_callback_curve_create.
+/// @param[in] v_min, v_max The region along the rulings, distances from the curve point:
+///            finite, v_min < v_max, 0 ∉ [v_min, v_max] (the curve is the singular edge).
+/// @param[in] options Tolerance, rule and piece cap (initialise with
+///            rmf_cone_approximation_options_init, then set the tolerance).
+/// @param[out] out Receives the spline; free with rmf_cone_spline_free. Its reference
+///             point is x(t_min) + (v_min + v_max)/2 e(t_min), t_min the domain's start.
+///             Untouched on failure.
+/// @param[out] max_error Receives the largest sampled distance; may be NULL. Untouched on
+///             failure.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If curve, options or out is NULL.
+/// @return RMF_ERROR_INVALID_INPUT If options->struct_size is no size of the struct, the
+///         tolerance is not finite and positive, max_pieces < 2, the rule is unknown or
+///         RMF_CONE_RULE_GIVEN (the message names the field: "options: tolerance = ..."),
+///         or v_min, v_max are bad.
+/// @return RMF_ERROR_NO_SOLUTION If the curve has zero curvature somewhere (no tangent plane).
+/// @return RMF_ERROR_NOT_CONVERGED If the tolerance needs more than max_pieces pieces.
+/// \since 0.2
+/// \ingroup rmf_cone_spline
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_approximate_with_options(
+    curve: *const RmfCurve,
+    v_min: f64,
+    v_max: f64,
+    options: *const RmfConeApproximationOptions,
+    out: *mut *mut RmfConeSpline,
+    max_error: *mut f64,
+) -> RmfStatus {
+    guard("rmf_cone_spline_approximate_with_options", || {
+        let curve = reference(curve, "curve")?;
+        let (tolerance, rule, max_pieces) = fit_options(options)?;
+        let out = out_ptr(out, "out")?;
+        let max_error = optional_out(max_error, "max_error")?;
+        let input = curve.sampled();
+        approximate_tangent_surface(
+            input.as_ref(),
+            v_min,
+            v_max,
+            tolerance,
+            rule,
+            max_pieces,
+            out,
+            max_error,
+        )
     })
 }
 
@@ -453,6 +617,10 @@ pub unsafe extern "C" fn rmf_cone_spline_approximate_ruled(
 /// B-spline curve of planes U(t) = Σ Uᵢ Nᵢ(t), u0 + u1 x + u2 y + u3 z = 0, whose rulings
 /// are U ∩ U'. The region of interest is a box; each ruling is used where it crosses it.
 ///
+/// Deprecated: use rmf_cone_spline_approximate_dual_with_options (the tolerance, rule and
+/// piece cap in an options struct that can grow). This function stays, with the same
+/// results, for at least one release.
+///
 /// @param[in] degree Degree k ≥ 1 of the B-spline.
 /// @param[in] planes plane_count control planes, 4 doubles each: u0, u1, u2, u3.
 /// @param[in] plane_count Number of control planes, ≥ degree + 1.
@@ -488,23 +656,90 @@ pub unsafe extern "C" fn rmf_cone_spline_approximate_dual(
     guard("rmf_cone_spline_approximate_dual", || {
         let out = out_ptr(out, "out")?;
         let max_error = optional_out(max_error, "max_error")?;
-        if planes.is_null() {
-            return Err(FfiError::Null("planes"));
-        }
-        if knots.is_null() {
-            return Err(FfiError::Null("knots"));
-        }
-        let region = region_from(reference(region, "region")?)?;
-        let Some(values) = plane_count.checked_mul(4) else {
-            return invalid_arg(format!("plane_count = {plane_count} is too large"));
-        };
-        let planes: Vec<DVec4> = slice(planes, values, "planes")?
-            .chunks_exact(4)
-            .map(|u| DVec4::new(u[1], u[2], u[3], u[0]))
-            .collect();
-        let knots = slice(knots, knot_count, "knots")?;
+        let (planes, knots, region) = dual_input(planes, plane_count, knots, knot_count, region)?;
         check_fit_arguments(tolerance, max_pieces)?;
         let rule = fit_rule(rule)?;
+        let dual = DualDevelopable::new(degree as usize, &planes, knots, region)?;
+        finish_fit(
+            approximate_developable(&dual, tolerance, rule, max_pieces)?,
+            out,
+            max_error,
+        );
+        Ok(())
+    })
+}
+
+/// The planes (as DVec4 (u1, u2, u3, u0)), knots and region of a dual-form input, checked.
+///
+/// # Safety
+/// The pointers are NULL or valid for the counts given.
+unsafe fn dual_input<'a>(
+    planes: *const f64,
+    plane_count: usize,
+    knots: *const f64,
+    knot_count: usize,
+    region: *const RmfBox,
+) -> FfiResult<(Vec<DVec4>, &'a [f64], Region)> {
+    if planes.is_null() {
+        return Err(FfiError::Null("planes"));
+    }
+    if knots.is_null() {
+        return Err(FfiError::Null("knots"));
+    }
+    let region = region_from(reference(region, "region")?)?;
+    let Some(values) = plane_count.checked_mul(4) else {
+        return invalid_arg(format!("plane_count = {plane_count} is too large"));
+    };
+    let planes: Vec<DVec4> = slice(planes, values, "planes")?
+        .chunks_exact(4)
+        .map(|u| DVec4::new(u[1], u[2], u[3], u[0]))
+        .collect();
+    let knots = slice(knots, knot_count, "knots")?;
+    Ok((planes, knots, region))
+}
+
+/// Approximates a developable surface in the dual form (4) of the paper by a cone spline,
+/// as rmf_cone_spline_approximate_dual does, with the tolerance, rule and piece cap in an
+/// options struct.
+///
+/// @param[in] degree Degree k ≥ 1 of the B-spline of planes.
+/// @param[in] planes plane_count control planes, 4 doubles each: u0, u1, u2, u3.
+/// @param[in] plane_count Number of control planes, ≥ degree + 1.
+/// @param[in] knots knot_count clamped knots.
+/// @param[in] knot_count Number of knots, plane_count + degree + 1.
+/// @param[in] region The region of interest; every ruling must cross it, and it should
+///            exclude the line of regression.
+/// @param[in] options Tolerance, rule and piece cap (initialise with
+///            rmf_cone_approximation_options_init, then set the tolerance).
+/// @param[out] out Receives the spline; free with rmf_cone_spline_free. Untouched on failure.
+/// @param[out] max_error Receives the largest sampled distance; may be NULL.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If planes, knots, region, options or out is NULL.
+/// @return RMF_ERROR_INVALID_INPUT If options->struct_size is no size of the struct, a field
+///         of options is refused (the message names it), or for bad counts, knots,
+///         non-finite planes or numbers.
+/// @return RMF_ERROR_NO_SOLUTION If a ruling misses the box or U and U' are parallel.
+/// @return RMF_ERROR_NOT_CONVERGED If the tolerance needs more than max_pieces pieces.
+/// \since 0.2
+/// \ingroup rmf_cone_spline
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn rmf_cone_spline_approximate_dual_with_options(
+    degree: u32,
+    planes: *const f64,
+    plane_count: usize,
+    knots: *const f64,
+    knot_count: usize,
+    region: *const RmfBox,
+    options: *const RmfConeApproximationOptions,
+    out: *mut *mut RmfConeSpline,
+    max_error: *mut f64,
+) -> RmfStatus {
+    guard("rmf_cone_spline_approximate_dual_with_options", || {
+        let (planes, knots, region) = dual_input(planes, plane_count, knots, knot_count, region)?;
+        let (tolerance, rule, max_pieces) = fit_options(options)?;
+        let out = out_ptr(out, "out")?;
+        let max_error = optional_out(max_error, "max_error")?;
         let dual = DualDevelopable::new(degree as usize, &planes, knots, region)?;
         finish_fit(
             approximate_developable(&dual, tolerance, rule, max_pieces)?,
@@ -520,6 +755,10 @@ pub unsafe extern "C" fn rmf_cone_spline_approximate_dual(
 /// the Darboux vector τe + κb), consecutive ones joined by a filling cone found from the
 /// quartic (14), keeping the consistent solutions. Consecutive parameters must be close
 /// enough for a consistent filling cone to exist.
+///
+/// Deprecated: use rmf_cone_spline_osculating_curve (a callback as a curve from
+/// rmf_callback_curve_create). This function stays, with the same results, for at least one
+/// release.
 ///
 /// @param[in] curve, callback, user, t_min, t_max The curve, as for rmf_cone_spline_approximate.
 /// @param[in] v_min, v_max The region along the rulings, as for rmf_cone_spline_approximate.
@@ -554,27 +793,81 @@ pub unsafe extern "C" fn rmf_cone_spline_osculating(
         }
         let parameters = slice(parameters, count, "parameters")?;
         let input = curve_or_callback(curve, callback, user, t_min, t_max)?;
-        let (lo, hi) = input.domain();
-        if let Some(i) = parameters.iter().position(|t| !(lo..=hi).contains(t)) {
-            return invalid_arg(format!(
-                "parameters[{i}] = {} is outside the domain [{lo}, {hi}]",
-                parameters[i]
-            ));
+        osculating(input.as_ref(), v_min, v_max, parameters, out)
+    })
+}
+
+/// The osculating cone spline both C entry points build.
+///
+/// # Safety
+/// `out` is valid for writes.
+unsafe fn osculating(
+    curve: &dyn ParametricCurve,
+    v_min: f64,
+    v_max: f64,
+    parameters: &[f64],
+    out: *mut *mut RmfConeSpline,
+) -> FfiResult {
+    let (lo, hi) = curve.domain();
+    if let Some(i) = parameters.iter().position(|t| !(lo..=hi).contains(t)) {
+        return invalid_arg(format!(
+            "parameters[{i}] = {} is outside the domain [{lo}, {hi}]",
+            parameters[i]
+        ));
+    }
+    let surface = TangentSurface::new(curve, v_min, v_max)?;
+    let spline = osculating_spline(&surface, parameters)?;
+    let cases = vec![RMF_CONE_CASE_NONE; spline.pieces().len()];
+    write(
+        out,
+        RmfConeSpline {
+            spline,
+            cases,
+            fit: None,
+            part: None,
         }
-        let surface = TangentSurface::new(input.as_ref(), v_min, v_max)?;
-        let spline = osculating_spline(&surface, parameters)?;
-        let cases = vec![RMF_CONE_CASE_NONE; spline.pieces().len()];
-        write(
-            out,
-            RmfConeSpline {
-                spline,
-                cases,
-                fit: None,
-                part: None,
-            }
-            .into_raw(),
-        );
-        Ok(())
+        .into_raw(),
+    );
+    Ok(())
+}
+
+/// The osculating cone spline of the tangent surface of a curve, as
+/// rmf_cone_spline_osculating builds it, with the curve as one handle (an analytic curve
+/// from rmf_callback_curve_create instead of a callback and its interval).
+///
+/// @param[in] curve A curve on its whole domain (NURBS data, a computed curve or a callback
+///            curve).
+/// @param[in] v_min, v_max The region along the rulings, as for
+///            rmf_cone_spline_approximate_with_options.
+/// @param[in] parameters count increasing curve parameters inside the domain.
+/// @param[in] count Number of osculating cones, ≥ 2.
+/// @param[out] out Receives the spline; free with rmf_cone_spline_free. Untouched on failure.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If curve, parameters or out is NULL.
+/// @return RMF_ERROR_INVALID_INPUT For bad numbers or parameters not increasing or outside
+///         the domain.
+/// @return RMF_ERROR_NO_SOLUTION If two consecutive osculating cones cannot be joined
+///         consistently, or an osculating cone is a cylinder (zero curvature of the curve).
+/// \since 0.2
+/// \ingroup rmf_cone_spline
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_osculating_curve(
+    curve: *const RmfCurve,
+    v_min: f64,
+    v_max: f64,
+    parameters: *const f64,
+    count: usize,
+    out: *mut *mut RmfConeSpline,
+) -> RmfStatus {
+    guard("rmf_cone_spline_osculating_curve", || {
+        let curve = reference(curve, "curve")?;
+        let out = out_ptr(out, "out")?;
+        if parameters.is_null() {
+            return Err(FfiError::Null("parameters"));
+        }
+        let parameters = slice(parameters, count, "parameters")?;
+        let input = curve.sampled();
+        osculating(input.as_ref(), v_min, v_max, parameters, out)
     })
 }
 
