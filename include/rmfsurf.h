@@ -438,8 +438,17 @@ typedef struct RmfSurface RmfSurface;
  * \ingroup rmf_foundation
  */
 typedef struct RmfVec3 {
+  /**
+   * The x coordinate.
+   */
   double x;
+  /**
+   * The y coordinate.
+   */
   double y;
+  /**
+   * The z coordinate.
+   */
   double z;
 } RmfVec3;
 
@@ -471,7 +480,13 @@ typedef struct RmfConeElement {
  * \ingroup rmf_cone_spline
  */
 typedef struct RmfBox {
+  /**
+   * The corner with the smallest coordinates.
+   */
   struct RmfVec3 min;
+  /**
+   * The corner with the largest coordinates.
+   */
   struct RmfVec3 max;
 } RmfBox;
 
@@ -576,14 +591,28 @@ typedef struct RmfConePiece {
    */
   double developed_width;
   /**
-   * The bounding rulings: reference point, unit direction and unit side vector at the
-   * start and at the end of the piece.
+   * The bounding ruling at the start of the piece: its reference point.
    */
   struct RmfVec3 start_point;
+  /**
+   * The start ruling's unit direction.
+   */
   struct RmfVec3 start_ruling;
+  /**
+   * The start ruling's unit side vector (in the tangent plane, normal to the ruling).
+   */
   struct RmfVec3 start_side;
+  /**
+   * The bounding ruling at the end of the piece: its reference point.
+   */
   struct RmfVec3 end_point;
+  /**
+   * The end ruling's unit direction.
+   */
   struct RmfVec3 end_ruling;
+  /**
+   * The end ruling's unit side vector.
+   */
   struct RmfVec3 end_side;
   /**
    * The piece's patches in the surface (rmf_cone_spline_surface): patch indices
@@ -591,6 +620,9 @@ typedef struct RmfConePiece {
    * v ∈ [index, index + 1].
    */
   size_t first_patch;
+  /**
+   * The number of the piece's patches (more than one for segment angles above 120°).
+   */
   size_t patch_count;
 } RmfConePiece;
 
@@ -638,6 +670,9 @@ typedef struct RmfNurbsCurve {
  * \ingroup rmf_curves
  */
 typedef struct RmfBezierCurve {
+  /**
+   * Polynomial degree.
+   */
   uint32_t degree;
   /**
    * degree + 1 Cartesian poles.
@@ -647,7 +682,13 @@ typedef struct RmfBezierCurve {
    * degree + 1 weights, all > 0.
    */
   const double *weights;
+  /**
+   * Start of the segment's interval in the curve's parameter.
+   */
   double t_start;
+  /**
+   * End of the segment's interval.
+   */
   double t_end;
 } RmfBezierCurve;
 
@@ -830,6 +871,9 @@ typedef uint32_t RmfFaceKind;
  * \ingroup rmf_wire
  */
 typedef struct RmfShapeFace {
+  /**
+   * RMF_FACE_SWEPT (a lateral face) or RMF_FACE_PLANE (a cap).
+   */
   RmfFaceKind kind;
   /**
    * RMF_FACE_SWEPT: the face's surface, borrowed: valid until the shape is freed (do not
@@ -837,10 +881,13 @@ typedef struct RmfShapeFace {
    */
   const struct RmfSurface *surface;
   /**
-   * RMF_FACE_PLANE: a point of the cap's plane (the wire's end) and its unit normal,
-   * pointing out of the solid. Zero for lateral faces.
+   * RMF_FACE_PLANE: a point of the cap's plane (the wire's end). Zero for lateral faces.
    */
   struct RmfVec3 plane_origin;
+  /**
+   * RMF_FACE_PLANE: the cap's unit normal, pointing out of the solid. Zero for lateral
+   * faces.
+   */
   struct RmfVec3 plane_normal;
   /**
    * RMF_FACE_PLANE: the number of boundary loops (the first is the outer one; the others
@@ -854,6 +901,9 @@ typedef struct RmfShapeFace {
    * then of holes[0], holes[1], ...). Caps: the wire edge at that end, and 0.
    */
   size_t spine_edge;
+  /**
+   * RMF_FACE_SWEPT: the profile edge the face sweeps (see spine_edge); 0 for caps.
+   */
   size_t profile_edge;
   /**
    * 1 if the face's outward normal is −(s_u × s_v) (its surface runs the other way).
@@ -990,11 +1040,17 @@ typedef struct RmfSheetReport {
    */
   double bend_radius;
   /**
-   * Distances of the inner, neutral and outer layer from the designed surface, along
-   * the normal from the concave to the convex side.
+   * Distance of the inner layer from the designed surface, along the normal from the
+   * concave to the convex side.
    */
   double inner;
+  /**
+   * Distance of the neutral layer from the designed surface, along the same normal.
+   */
   double neutral;
+  /**
+   * Distance of the outer layer from the designed surface, along the same normal.
+   */
   double outer;
 } RmfSheetReport;
 
@@ -1015,7 +1071,13 @@ typedef uint32_t RmfSheetSide;
  * \ingroup rmf_sheet
  */
 typedef struct RmfVec2 {
+  /**
+   * The x coordinate.
+   */
   double x;
+  /**
+   * The y coordinate.
+   */
   double y;
 } RmfVec2;
 
@@ -1034,13 +1096,26 @@ typedef struct RmfFlatEdge {
    * RMF_FLAT_EDGE_LINE or RMF_FLAT_EDGE_ARC.
    */
   uint32_t kind;
+  /**
+   * The start point.
+   */
   struct RmfVec2 from;
+  /**
+   * The end point.
+   */
   struct RmfVec2 to;
   /**
-   * Arcs only (0 for lines).
+   * Arcs only (0 for lines): the centre.
    */
   struct RmfVec2 center;
+  /**
+   * Arcs only (0 for lines): the radius.
+   */
   double radius;
+  /**
+   * Arcs only (0 for lines): the signed angle from `from` to `to` about `center`,
+   * radians, counter-clockwise when positive.
+   */
   double sweep;
 } RmfFlatEdge;
 
@@ -1110,9 +1185,21 @@ typedef struct RmfNurbsSurfaceData {
  * \ingroup rmf_surfaces
  */
 typedef struct RmfNurbsSurface {
+  /**
+   * Degree along u.
+   */
   uint32_t degree_u;
+  /**
+   * Degree along v.
+   */
   uint32_t degree_v;
+  /**
+   * Number of poles along u.
+   */
   size_t pole_count_u;
+  /**
+   * Number of poles along v.
+   */
   size_t pole_count_v;
   /**
    * pole_count_u * pole_count_v Cartesian poles, index i * pole_count_v + j.
@@ -1126,11 +1213,17 @@ typedef struct RmfNurbsSurface {
    * pole_count_u + degree_u + 1.
    */
   size_t knot_count_u;
+  /**
+   * knot_count_u clamped knots along u.
+   */
   const double *knots_u;
   /**
    * pole_count_v + degree_v + 1.
    */
   size_t knot_count_v;
+  /**
+   * knot_count_v clamped knots along v.
+   */
   const double *knots_v;
 } RmfNurbsSurface;
 
@@ -1183,13 +1276,37 @@ typedef struct RmfNurbsSurfaceBuffers {
  * \ingroup rmf_surfaces
  */
 typedef struct RmfBezierPatch {
+  /**
+   * Degree along u.
+   */
   uint32_t degree_u;
+  /**
+   * Degree along v.
+   */
   uint32_t degree_v;
+  /**
+   * (degree_u + 1) * (degree_v + 1) Cartesian poles, index i * (degree_v + 1) + j.
+   */
   const struct RmfVec3 *poles;
+  /**
+   * Weights in the same order, all > 0.
+   */
   const double *weights;
+  /**
+   * Start of the patch's u interval in the surface's parameter.
+   */
   double u_start;
+  /**
+   * End of the u interval.
+   */
   double u_end;
+  /**
+   * Start of the patch's v interval.
+   */
   double v_start;
+  /**
+   * End of the v interval.
+   */
   double v_end;
 } RmfBezierPatch;
 
@@ -1264,8 +1381,18 @@ typedef uint32_t RmfEdgeKind;
  * \ingroup rmf_wire
  */
 typedef struct RmfEdge {
+  /**
+   * RMF_EDGE_LINE, RMF_EDGE_ARC or RMF_EDGE_CURVE.
+   */
   RmfEdgeKind kind;
+  /**
+   * A line's start and end (points[0], points[1]); an arc's start, a point on it and
+   * its end.
+   */
   struct RmfVec3 points[3];
+  /**
+   * RMF_EDGE_CURVE: the curve, on its whole domain; ignored otherwise.
+   */
   const struct RmfCurve *curve;
 } RmfEdge;
 

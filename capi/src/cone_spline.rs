@@ -41,7 +41,9 @@ pub struct RmfConeElement {
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct RmfBox {
+    /// The corner with the smallest coordinates.
     pub min: RmfVec3,
+    /// The corner with the largest coordinates.
     pub max: RmfVec3,
 }
 
@@ -128,18 +130,23 @@ pub struct RmfConePiece {
     pub radius: f64,
     /// Width of the developed piece along its side for cylinders (r φ) and strips; else 0.
     pub developed_width: f64,
-    /// The bounding rulings: reference point, unit direction and unit side vector at the
-    /// start and at the end of the piece.
+    /// The bounding ruling at the start of the piece: its reference point.
     pub start_point: RmfVec3,
+    /// The start ruling's unit direction.
     pub start_ruling: RmfVec3,
+    /// The start ruling's unit side vector (in the tangent plane, normal to the ruling).
     pub start_side: RmfVec3,
+    /// The bounding ruling at the end of the piece: its reference point.
     pub end_point: RmfVec3,
+    /// The end ruling's unit direction.
     pub end_ruling: RmfVec3,
+    /// The end ruling's unit side vector.
     pub end_side: RmfVec3,
     /// The piece's patches in the surface (rmf_cone_spline_surface): patch indices
     /// first_patch .. first_patch + patch_count − 1 along v; the piece spans
     /// v ∈ [index, index + 1].
     pub first_patch: usize,
+    /// The number of the piece's patches (more than one for segment angles above 120°).
     pub patch_count: usize,
 }
 

@@ -68,13 +68,15 @@ impl RmfShape {
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct RmfShapeFace {
+    /// RMF_FACE_SWEPT (a lateral face) or RMF_FACE_PLANE (a cap).
     pub kind: RmfFaceKind,
     /// RMF_FACE_SWEPT: the face's surface, borrowed: valid until the shape is freed (do not
     /// free it). NULL for caps.
     pub surface: *const RmfSurface,
-    /// RMF_FACE_PLANE: a point of the cap's plane (the wire's end) and its unit normal,
-    /// pointing out of the solid. Zero for lateral faces.
+    /// RMF_FACE_PLANE: a point of the cap's plane (the wire's end). Zero for lateral faces.
     pub plane_origin: RmfVec3,
+    /// RMF_FACE_PLANE: the cap's unit normal, pointing out of the solid. Zero for lateral
+    /// faces.
     pub plane_normal: RmfVec3,
     /// RMF_FACE_PLANE: the number of boundary loops (the first is the outer one; the others
     /// are the holes); rmf_shape_face_loop gives them. 0 for lateral faces (their boundary
@@ -84,6 +86,7 @@ pub struct RmfShapeFace {
     /// rmf_wire_sweep) and of the profile edge it sweeps (Bézier segments of the profile,
     /// then of holes[0], holes[1], ...). Caps: the wire edge at that end, and 0.
     pub spine_edge: usize,
+    /// RMF_FACE_SWEPT: the profile edge the face sweeps (see spine_edge); 0 for caps.
     pub profile_edge: usize,
     /// 1 if the face's outward normal is −(s_u × s_v) (its surface runs the other way).
     pub reversed: u32,

@@ -147,11 +147,16 @@ pub struct RmfFlatEdge {
     pub layer: u32,
     /// RMF_FLAT_EDGE_LINE or RMF_FLAT_EDGE_ARC.
     pub kind: u32,
+    /// The start point.
     pub from: RmfVec2,
+    /// The end point.
     pub to: RmfVec2,
-    /// Arcs only (0 for lines).
+    /// Arcs only (0 for lines): the centre.
     pub center: RmfVec2,
+    /// Arcs only (0 for lines): the radius.
     pub radius: f64,
+    /// Arcs only (0 for lines): the signed angle from `from` to `to` about `center`,
+    /// radians, counter-clockwise when positive.
     pub sweep: f64,
 }
 
@@ -170,10 +175,12 @@ pub struct RmfSheetReport {
     pub edge_distance: [f64; 2],
     /// The smallest bend radius of the designed surface (0 at a vertex on an edge).
     pub bend_radius: f64,
-    /// Distances of the inner, neutral and outer layer from the designed surface, along
-    /// the normal from the concave to the convex side.
+    /// Distance of the inner layer from the designed surface, along the normal from the
+    /// concave to the convex side.
     pub inner: f64,
+    /// Distance of the neutral layer from the designed surface, along the same normal.
     pub neutral: f64,
+    /// Distance of the outer layer from the designed surface, along the same normal.
     pub outer: f64,
 }
 

@@ -24,8 +24,11 @@ pub(crate) fn piece_views<'a>(pieces: impl Iterator<Item = &'a [DVec4]>) -> Piec
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct RmfVec3 {
+    /// The x coordinate.
     pub x: f64,
+    /// The y coordinate.
     pub y: f64,
+    /// The z coordinate.
     pub z: f64,
 }
 
@@ -50,7 +53,9 @@ impl From<RmfVec3> for DVec3 {
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct RmfVec2 {
+    /// The x coordinate.
     pub x: f64,
+    /// The y coordinate.
     pub y: f64,
 }
 
@@ -97,9 +102,13 @@ pub struct RmfNurbsCurve {
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct RmfNurbsSurface {
+    /// Degree along u.
     pub degree_u: u32,
+    /// Degree along v.
     pub degree_v: u32,
+    /// Number of poles along u.
     pub pole_count_u: usize,
+    /// Number of poles along v.
     pub pole_count_v: usize,
     /// pole_count_u * pole_count_v Cartesian poles, index i * pole_count_v + j.
     pub poles: *const RmfVec3,
@@ -107,9 +116,11 @@ pub struct RmfNurbsSurface {
     pub weights: *const f64,
     /// pole_count_u + degree_u + 1.
     pub knot_count_u: usize,
+    /// knot_count_u clamped knots along u.
     pub knots_u: *const f64,
     /// pole_count_v + degree_v + 1.
     pub knot_count_v: usize,
+    /// knot_count_v clamped knots along v.
     pub knots_v: *const f64,
 }
 
@@ -120,12 +131,15 @@ pub struct RmfNurbsSurface {
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct RmfBezierCurve {
+    /// Polynomial degree.
     pub degree: u32,
     /// degree + 1 Cartesian poles.
     pub poles: *const RmfVec3,
     /// degree + 1 weights, all > 0.
     pub weights: *const f64,
+    /// Start of the segment's interval in the curve's parameter.
     pub t_start: f64,
+    /// End of the segment's interval.
     pub t_end: f64,
 }
 
@@ -136,12 +150,20 @@ pub struct RmfBezierCurve {
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct RmfBezierPatch {
+    /// Degree along u.
     pub degree_u: u32,
+    /// Degree along v.
     pub degree_v: u32,
+    /// (degree_u + 1) * (degree_v + 1) Cartesian poles, index i * (degree_v + 1) + j.
     pub poles: *const RmfVec3,
+    /// Weights in the same order, all > 0.
     pub weights: *const f64,
+    /// Start of the patch's u interval in the surface's parameter.
     pub u_start: f64,
+    /// End of the u interval.
     pub u_end: f64,
+    /// Start of the patch's v interval.
     pub v_start: f64,
+    /// End of the v interval.
     pub v_end: f64,
 }

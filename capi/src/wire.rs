@@ -34,8 +34,12 @@ pub const RMF_EDGE_CURVE: RmfEdgeKind = 2;
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct RmfEdge {
+    /// RMF_EDGE_LINE, RMF_EDGE_ARC or RMF_EDGE_CURVE.
     pub kind: RmfEdgeKind,
+    /// A line's start and end (points[0], points[1]); an arc's start, a point on it and
+    /// its end.
     pub points: [RmfVec3; 3],
+    /// RMF_EDGE_CURVE: the curve, on its whole domain; ignored otherwise.
     pub curve: *const RmfCurve,
 }
 

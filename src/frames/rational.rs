@@ -45,8 +45,11 @@ pub fn g1_tolerance(curve: &crate::bezier::PiecewiseCurve) -> f64 {
 /// Which frame vector.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum FrameVector {
+    /// The unit tangent t.
     Tangent,
+    /// The first normal-plane vector f₂.
     F2,
+    /// f₃ = t × f₂.
     F3,
 }
 
@@ -386,10 +389,12 @@ impl RationalFrames {
         ))
     }
 
+    /// The rational frame segments, in parameter order.
     pub fn segments(&self) -> &[RationalFrameSegment] {
         &self.segments
     }
 
+    /// The breakpoints, one more than the segments.
     pub fn breaks(&self) -> &[f64] {
         &self.breaks
     }
@@ -400,6 +405,7 @@ impl RationalFrames {
         (k, s, reciprocal_length(self.breaks[k], self.breaks[k + 1]))
     }
 
+    /// The frame at the global parameter `t` (clamped to the domain).
     pub fn frame(&self, t: f64) -> Frame {
         let (k, s, _) = self.locate(t);
         self.segments[k].frame(s)

@@ -69,6 +69,7 @@ pub struct SingularityMargin {
     pub margin: f64,
     /// Where the minimum is attained (profile parameter u, spine parameter v).
     pub u: f64,
+    /// Spine parameter where the minimum is attained.
     pub v: f64,
     /// 1 − κ_max·max‖c‖: positive guarantees regularity (the sufficient condition of §2.3).
     pub bound_margin: f64,
@@ -356,6 +357,7 @@ pub struct ConvexStart {
     /// δ, the turn of the profile's tangent, and ΔΩ, the spread of the RMF against the
     /// Frenet frame.
     pub profile_turn: f64,
+    /// ΔΩ, the spread of the RMF angle against the Frenet frame along the spine (radians).
     pub rmf_spread: f64,
 }
 

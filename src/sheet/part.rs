@@ -21,7 +21,9 @@ use glam::{DVec2, DVec3};
 /// or the second.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Side {
+    /// The first boundary (u = 0).
     First,
+    /// The second boundary (u = 1).
     Second,
 }
 
@@ -221,10 +223,12 @@ impl SheetPart {
         })
     }
 
+    /// What the construction measured and chose.
     pub fn report(&self) -> &PartReport {
         &self.report
     }
 
+    /// The sheet: thickness, K-factor, reference face.
     pub fn sheet(&self) -> &Sheet {
         &self.sheet
     }
@@ -234,6 +238,7 @@ impl SheetPart {
         self.part.closed
     }
 
+    /// Number of cone, cylinder and plane pieces.
     pub fn piece_count(&self) -> usize {
         self.part.pieces().len()
     }
