@@ -257,7 +257,7 @@ pub struct RationalFrames {
 }
 
 impl RationalFrames {
-    /// Frames of unknown turning ([`Turning::Unknown`]; see [`RationalFrames::with_turning`]).
+    /// Frames of unknown turning (`Turning::Unknown`; see [`RationalFrames::with_turning`]).
     pub fn new(segments: Vec<RationalFrameSegment>, breaks: Vec<f64>) -> Result<Self> {
         check_breaks(&breaks, segments.len(), "frame breakpoints")?;
         Ok(Self {
@@ -293,7 +293,7 @@ impl RationalFrames {
     }
 
     /// [`RationalFrames::chained`] with the G1 tolerance of the curve the frames follow
-    /// (see [`g1_tolerance`]).
+    /// (see `g1_tolerance`).
     pub fn chained_within(
         segments: Vec<RationalFrameSegment>,
         breaks: Vec<f64>,

@@ -91,7 +91,7 @@ pub struct ParabolicLines {
 impl<'a> ProfileSurface<'a> {
     /// The sweep of `profile` along `spine` with `frames`. The frames must belong to the
     /// spine as for [`sweep`](crate::sweep::sweep) (its breakpoints or a refinement, and its
-    /// tangent), and be rotation-minimizing ([`Turning::RotationMinimizing`]): the formulas
+    /// tangent), and be rotation-minimizing (`Turning::RotationMinimizing`): the formulas
     /// of the module notes hold for an RMF only — for frames turning about the tangent at a
     /// rate ω the surface's s_v has the part ω(c₂f₃ − c₃f₂) across the spine, and g, K and
     /// (14) are other functions (the choice: refuse, rather than answer a question that was
