@@ -467,6 +467,119 @@ static void test_surface_bad_input(void) {
     rmf_surface_free(NULL);
 }
 
+/* The entry points with a struct instead of 11 and 14 arguments (0.2): rmf_nurbs_surface_create_from
+ * makes the surface of rmf_nurbs_surface_create, rmf_surface_nurbs_copy_into copies what
+ * rmf_surface_nurbs_copy copies; NULL structs and wrong struct sizes are refused with a
+ * message naming the argument, and nothing is written. */
+static void test_surface_structs(void) {
+    static const double ring[9][3] = {{1, 0, 1}, {1, 1, 0}, {0, 1, 1}, {-1, 1, 0}, {-1, 0, 1},
+                                      {-1, -1, 0}, {0, -1, 1}, {1, -1, 0}, {1, 0, 1}};
+    static const double knots_u[12] = {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1};
+    static const double knots_v[4] = {0, 0, 2, 2}, bad_v[4] = {0, 0, 2, 1};
+    static char storage;
+    RmfSurface *const sentinel = (RmfSurface *)(void *)&storage;
+    RmfVec3 poles[18], cp[18], old_cp[18];
+    double weights[18], cw[18], cku[12], ckv[4], old_cw[18], old_cku[12], old_ckv[4];
+    RmfNurbsSurfaceData data;
+    RmfNurbsSurfaceBuffers buffers;
+    RmfNurbsSurface copy, untouched_copy;
+    RmfSurface *s = NULL, *old = NULL, *out = sentinel;
+    size_t n[4], i;
+    uint32_t du = 0, dv = 0;
+    int u, v;
+    for (i = 0; i < 9; i++)
+        for (u = 0; u < 2; u++) {
+            poles[i * 2 + u] = vec3(ring[i][0], ring[i][1], 2.0 * u);
+            weights[i * 2 + u] = ring[i][2] == 1 ? 1.0 : sqrt(0.5);
+        }
+    memset(&data, 0, sizeof data);
+    data.struct_size = sizeof data;
+    data.degree_u = 2;
+    data.degree_v = 1;
+    data.pole_count_u = 9;
+    data.pole_count_v = 2;
+    data.poles = poles;
+    data.weights = weights;
+    data.knot_count_u = 12;
+    data.knots_u = knots_u;
+    data.knot_count_v = 4;
+    data.knots_v = knots_v;
+    CHECK_STATUS(rmf_nurbs_surface_create_from(&data, &s), RMF_OK, "");
+    CHECK_STATUS(rmf_nurbs_surface_create(2, 1, poles, weights, 9, 2, knots_u, 12, knots_v, 4, &old), RMF_OK, "");
+    if (!s || !old) return;
+    for (u = 0; u <= 8; u++)
+        for (v = 0; v <= 4; v++) {
+            RmfVec3 a, b;
+            CHECK_STATUS(rmf_surface_eval(s, u / 8.0, v / 2.0, &a, NULL, NULL), RMF_OK, "");
+            CHECK_STATUS(rmf_surface_eval(old, u / 8.0, v / 2.0, &b, NULL, NULL), RMF_OK, "");
+            CHECK(a.x == b.x && a.y == b.y && a.z == b.z, "the surface of rmf_nurbs_surface_create");
+        }
+
+    /* Size query, too small, then the copy, against rmf_surface_nurbs_copy. */
+    memset(&buffers, 0, sizeof buffers);
+    buffers.struct_size = sizeof buffers;
+    CHECK_STATUS(rmf_surface_nurbs_copy_into(s, &buffers, &copy), RMF_OK, "");
+    CHECK(copy.degree_u == 2 && copy.degree_v == 1 && copy.pole_count_u == 9 && copy.pole_count_v == 2 &&
+              copy.knot_count_u == 12 && copy.knot_count_v == 4 && copy.poles == NULL && copy.knots_v == NULL,
+          "size query: degrees and counts, no pointers");
+    buffers.poles = cp;
+    buffers.weights = cw;
+    buffers.pole_capacity = 18;
+    buffers.knots_u = cku;
+    buffers.knot_capacity_u = 12;
+    buffers.knots_v = ckv;
+    buffers.knot_capacity_v = 3;
+    memset(&copy, 0, sizeof copy);
+    CHECK_STATUS(rmf_surface_nurbs_copy_into(s, &buffers, &copy), RMF_ERROR_BUFFER_TOO_SMALL, "knots");
+    CHECK(copy.knot_count_v == 4 && copy.knots_v == NULL, "too small: the counts say what is needed");
+    buffers.knot_capacity_v = 4;
+    CHECK_STATUS(rmf_surface_nurbs_copy_into(s, &buffers, &copy), RMF_OK, "");
+    CHECK(copy.poles == cp && copy.weights == cw && copy.knots_u == cku && copy.knots_v == ckv,
+          "the copy points at the caller's buffers");
+    CHECK_STATUS(rmf_surface_nurbs_copy(old, &du, &dv, old_cp, old_cw, 18, old_cku, 12, old_ckv, 4, &n[0], &n[1], &n[2],
+                                        &n[3]),
+                 RMF_OK, "");
+    CHECK(du == copy.degree_u && dv == copy.degree_v && n[0] == copy.pole_count_u && n[1] == copy.pole_count_v &&
+              n[2] == copy.knot_count_u && n[3] == copy.knot_count_v,
+          "the degrees and counts of rmf_surface_nurbs_copy");
+    for (i = 0; i < 18; i++)
+        CHECK(cp[i].x == old_cp[i].x && cp[i].y == old_cp[i].y && cp[i].z == old_cp[i].z && cw[i] == old_cw[i],
+              "the poles and weights of rmf_surface_nurbs_copy");
+    for (i = 0; i < 12; i++) CHECK(cku[i] == old_cku[i] && cku[i] == knots_u[i], "the u knots");
+    for (i = 0; i < 4; i++) CHECK(ckv[i] == old_ckv[i] && ckv[i] == knots_v[i], "the v knots");
+
+    /* Bad input. */
+    memset(&untouched_copy, 0x5e, sizeof untouched_copy);
+    copy = untouched_copy;
+    CHECK_STATUS(rmf_nurbs_surface_create_from(NULL, &out), RMF_ERROR_NULL_POINTER, "data");
+    CHECK_STATUS(rmf_nurbs_surface_create_from(&data, NULL), RMF_ERROR_NULL_POINTER, "out");
+    data.struct_size = sizeof data - 8;
+    CHECK_STATUS(rmf_nurbs_surface_create_from(&data, &out), RMF_ERROR_INVALID_INPUT, "data->struct_size");
+    data.struct_size = 0;
+    CHECK_STATUS(rmf_nurbs_surface_create_from(&data, &out), RMF_ERROR_INVALID_INPUT, "data->struct_size");
+    data.struct_size = sizeof data;
+    data.knots_v = NULL;
+    CHECK_STATUS(rmf_nurbs_surface_create_from(&data, &out), RMF_ERROR_NULL_POINTER, "data->knots_v");
+    data.knots_v = bad_v;
+    CHECK_STATUS(rmf_nurbs_surface_create_from(&data, &out), RMF_ERROR_INVALID_INPUT, "data: knots_v");
+    data.knots_v = knots_v;
+    data.knot_count_u = 11;
+    CHECK_STATUS(rmf_nurbs_surface_create_from(&data, &out), RMF_ERROR_INVALID_INPUT, "data: knot_count_u");
+    CHECK(out == sentinel, "out untouched on failure");
+    CHECK_STATUS(rmf_surface_nurbs_copy_into(s, NULL, &copy), RMF_ERROR_NULL_POINTER, "buffers");
+    CHECK_STATUS(rmf_surface_nurbs_copy_into(NULL, &buffers, &copy), RMF_ERROR_NULL_POINTER, "surface");
+    CHECK_STATUS(rmf_surface_nurbs_copy_into(s, &buffers, NULL), RMF_ERROR_NULL_POINTER, "copy");
+    buffers.struct_size = sizeof buffers + 8;
+    CHECK_STATUS(rmf_surface_nurbs_copy_into(s, &buffers, &copy), RMF_ERROR_INVALID_INPUT, "buffers->struct_size");
+    CHECK(strstr(rmf_last_error(), "sizeof(RmfNurbsSurfaceBuffers)") != NULL, "the message says how to set it");
+    buffers.struct_size = sizeof buffers;
+    buffers.knots_u = NULL;
+    CHECK_STATUS(rmf_surface_nurbs_copy_into(s, &buffers, &copy), RMF_ERROR_NULL_POINTER, "buffers->knots_u");
+    CHECK(memcmp(&copy, &untouched_copy, sizeof copy) == 0, "copy untouched on failure");
+    rmf_surface_free(s);
+    rmf_surface_free(old);
+}
+
 int main(void) {
     test_version_and_status_names();
     test_curve_good_input();
@@ -476,5 +589,6 @@ int main(void) {
     test_frames();
     test_surface_good_input();
     test_surface_bad_input();
+    test_surface_structs();
     return rmf_check_exit_code("abi_basics");
 }

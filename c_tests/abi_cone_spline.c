@@ -291,9 +291,143 @@ static void test_approximations(void) {
     CHECK(untouched == sentinel_spline(), "failing calls write nothing");
 }
 
+/* The entry points with an options struct or a curve handle (0.2) give the splines of the
+ * deprecated long calls, with the same fit; NULL options and a wrong struct_size are refused
+ * with a message naming the argument, and nothing is written. */
+static void test_option_struct_entry_points(void) {
+    RmfConeApproximationOptions options;
+    RmfConeSpline *old_spline = NULL, *spline = NULL, *untouched = sentinel_spline();
+    RmfCurve *curve = NULL;
+    double old_err = -1, err = -1, untouched_err = -7, old_params[64], params[64];
+    size_t old_n = 0, n = 0, k;
+
+    CHECK_STATUS(rmf_cone_approximation_options_init(&options), RMF_OK, "");
+    CHECK(options.struct_size == sizeof options && options.tolerance == 0 &&
+              options.rule == RMF_CONE_RULE_MIN_VERTEX_DISTANCE && options.max_pieces == 100000,
+          "the defaults: size set, tolerance to be set, the default rule, 100000 pieces");
+    CHECK_STATUS(rmf_cone_approximation_options_init(NULL), RMF_ERROR_NULL_POINTER, "out");
+    CHECK_STATUS(rmf_callback_curve_create(cubic, NULL, 0.2, 1.2, &curve), RMF_OK, "");
+
+    options.tolerance = 1e-3;
+    CHECK_STATUS(rmf_cone_spline_approximate(NULL, cubic, NULL, 0.2, 1.2, 0.5, 1.0, 1e-3,
+                                             RMF_CONE_RULE_MIN_VERTEX_DISTANCE, 100000, &old_spline, &old_err),
+                 RMF_OK, "");
+    CHECK_STATUS(rmf_cone_spline_approximate_with_options(curve, 0.5, 1.0, &options, &spline, &err), RMF_OK, "");
+    CHECK(err == old_err && err > 0 && err <= 1e-3, "the same fit as rmf_cone_spline_approximate");
+    CHECK_STATUS(rmf_cone_spline_fit_parameters(old_spline, RMF_CONE_FIT_ELEMENTS, old_params, 64, &old_n), RMF_OK, "");
+    CHECK_STATUS(rmf_cone_spline_fit_parameters(spline, RMF_CONE_FIT_ELEMENTS, params, 64, &n), RMF_OK, "");
+    CHECK(n == old_n && n >= 3, "the same number of rulings");
+    for (k = 0; k < n && k < old_n; k++) CHECK(params[k] == old_params[k], "the same rulings");
+    rmf_cone_spline_free(spline);
+    rmf_cone_spline_free(old_spline);
+
+    /* Bad input: each refused with its status and the argument named; nothing written. */
+    CHECK_STATUS(rmf_cone_spline_approximate_with_options(curve, 0.5, 1.0, NULL, &untouched, &untouched_err),
+                 RMF_ERROR_NULL_POINTER, "options");
+    CHECK_STATUS(rmf_cone_spline_approximate_with_options(NULL, 0.5, 1.0, &options, &untouched, &untouched_err),
+                 RMF_ERROR_NULL_POINTER, "curve");
+    CHECK_STATUS(rmf_cone_spline_approximate_with_options(curve, 0.5, 1.0, &options, NULL, &untouched_err),
+                 RMF_ERROR_NULL_POINTER, "out");
+    options.struct_size = sizeof options + 8;
+    CHECK_STATUS(rmf_cone_spline_approximate_with_options(curve, 0.5, 1.0, &options, &untouched, &untouched_err),
+                 RMF_ERROR_INVALID_INPUT, "options->struct_size");
+    options.struct_size = sizeof(size_t);
+    CHECK_STATUS(rmf_cone_spline_approximate_with_options(curve, 0.5, 1.0, &options, &untouched, &untouched_err),
+                 RMF_ERROR_INVALID_INPUT, "options->struct_size");
+    options.struct_size = sizeof options;
+    options.tolerance = 0;
+    CHECK_STATUS(rmf_cone_spline_approximate_with_options(curve, 0.5, 1.0, &options, &untouched, &untouched_err),
+                 RMF_ERROR_INVALID_INPUT, "options: tolerance");
+    options.tolerance = 1e-3;
+    options.rule = RMF_CONE_RULE_GIVEN;
+    CHECK_STATUS(rmf_cone_spline_approximate_with_options(curve, 0.5, 1.0, &options, &untouched, &untouched_err),
+                 RMF_ERROR_INVALID_INPUT, "options: rule");
+    options.rule = 99;
+    CHECK_STATUS(rmf_cone_spline_approximate_with_options(curve, 0.5, 1.0, &options, &untouched, &untouched_err),
+                 RMF_ERROR_INVALID_INPUT, "options: rule");
+    options.rule = RMF_CONE_RULE_MIN_VERTEX_DISTANCE;
+    options.max_pieces = 1;
+    CHECK_STATUS(rmf_cone_spline_approximate_with_options(curve, 0.5, 1.0, &options, &untouched, &untouched_err),
+                 RMF_ERROR_INVALID_INPUT, "options: max_pieces");
+    options.max_pieces = 6;
+    options.tolerance = 1e-9;
+    CHECK_STATUS(rmf_cone_spline_approximate_with_options(curve, 0.5, 1.0, &options, &untouched, &untouched_err),
+                 RMF_ERROR_NOT_CONVERGED, "at most 6 pieces");
+    options.max_pieces = 100000;
+    options.tolerance = 1e-3;
+    CHECK_STATUS(rmf_cone_spline_approximate_with_options(curve, -0.5, 1.0, &options, &untouched, &untouched_err),
+                 RMF_ERROR_INVALID_INPUT, "contains 0");
+    CHECK(untouched == sentinel_spline() && untouched_err == -7, "failing calls write nothing");
+
+    /* The dual form with options: the spline of rmf_cone_spline_approximate_dual. */
+    {
+        const double planes[12] = {0, 1, 0, -0.5, 0, 1, 1, -0.5, 0, 0, 1, -0.5};
+        const double knots[6] = {0, 0, 0, 1, 1, 1};
+        RmfBox box;
+        box.min = vec3(-3, -3, 1);
+        box.max = vec3(3, 3, 2);
+        options.tolerance = 1e-4;
+        CHECK_STATUS(rmf_cone_spline_approximate_dual(2, planes, 3, knots, 6, &box, 1e-4, 0, 100000, &old_spline,
+                                                      &old_err),
+                     RMF_OK, "");
+        CHECK_STATUS(rmf_cone_spline_approximate_dual_with_options(2, planes, 3, knots, 6, &box, &options, &spline,
+                                                                   &err),
+                     RMF_OK, "");
+        CHECK(err == old_err && err <= 1e-4, "the same dual fit");
+        CHECK_STATUS(rmf_cone_spline_piece_count(old_spline, &old_n), RMF_OK, "");
+        CHECK_STATUS(rmf_cone_spline_piece_count(spline, &n), RMF_OK, "");
+        CHECK(n == old_n, "the same pieces");
+        rmf_cone_spline_free(spline);
+        rmf_cone_spline_free(old_spline);
+        CHECK_STATUS(rmf_cone_spline_approximate_dual_with_options(2, planes, 3, knots, 6, &box, NULL, &untouched,
+                                                                   &untouched_err),
+                     RMF_ERROR_NULL_POINTER, "options");
+        options.struct_size = 0;
+        CHECK_STATUS(rmf_cone_spline_approximate_dual_with_options(2, planes, 3, knots, 6, &box, &options, &untouched,
+                                                                   &untouched_err),
+                     RMF_ERROR_INVALID_INPUT, "options->struct_size");
+        options.struct_size = sizeof options;
+        CHECK_STATUS(rmf_cone_spline_approximate_dual_with_options(2, NULL, 3, knots, 6, &box, &options, &untouched,
+                                                                   &untouched_err),
+                     RMF_ERROR_NULL_POINTER, "planes");
+        CHECK_STATUS(rmf_cone_spline_approximate_dual_with_options(2, planes, 3, knots, 5, &box, &options, &untouched,
+                                                                   &untouched_err),
+                     RMF_ERROR_INVALID_INPUT, "knot_count");
+    }
+
+    /* Osculating cones of a curve handle: the spline of rmf_cone_spline_osculating. */
+    {
+        const double good[8] = {0.2, 0.3429, 0.4857, 0.6286, 0.7714, 0.9143, 1.0571, 1.2};
+        const double outside[3] = {0.1, 0.7, 1.2};
+        RmfConePiece a, b;
+        CHECK_STATUS(rmf_cone_spline_osculating(NULL, cubic, NULL, 0.2, 1.2, 0.5, 1.0, good, 8, &old_spline), RMF_OK, "");
+        CHECK_STATUS(rmf_cone_spline_osculating_curve(curve, 0.5, 1.0, good, 8, &spline), RMF_OK, "");
+        CHECK_STATUS(rmf_cone_spline_piece_count(old_spline, &old_n), RMF_OK, "");
+        CHECK_STATUS(rmf_cone_spline_piece_count(spline, &n), RMF_OK, "");
+        CHECK(n == old_n && n >= 15, "the same osculating pieces");
+        for (k = 0; k < n && k < old_n; k++) {
+            CHECK_STATUS(rmf_cone_spline_piece(old_spline, k, &a), RMF_OK, "");
+            CHECK_STATUS(rmf_cone_spline_piece(spline, k, &b), RMF_OK, "");
+            CHECK(a.kind == b.kind && a.half_angle == b.half_angle && a.segment_angle == b.segment_angle,
+                  "the same pieces");
+        }
+        rmf_cone_spline_free(spline);
+        rmf_cone_spline_free(old_spline);
+        CHECK_STATUS(rmf_cone_spline_osculating_curve(NULL, 0.5, 1.0, good, 8, &untouched), RMF_ERROR_NULL_POINTER,
+                     "curve");
+        CHECK_STATUS(rmf_cone_spline_osculating_curve(curve, 0.5, 1.0, NULL, 8, &untouched), RMF_ERROR_NULL_POINTER,
+                     "parameters");
+        CHECK_STATUS(rmf_cone_spline_osculating_curve(curve, 0.5, 1.0, outside, 3, &untouched),
+                     RMF_ERROR_INVALID_INPUT, "parameters[0]");
+    }
+    CHECK(untouched == sentinel_spline() && untouched_err == -7, "failing calls write nothing");
+    rmf_curve_free(curve);
+}
+
 int main(void) {
     test_hermite_surface_and_pieces();
     test_hermite_bad_input();
     test_approximations();
+    test_option_struct_entry_points();
     return rmf_check_exit_code("abi_cone_spline");
 }

@@ -15,6 +15,80 @@
  *    memory owned by the handle: do not free them; they stay valid until the handle is freed.
  */
 
+/* The capabilities, one Doxygen group each (the Topics page of scripts/api-docs). */
+
+/**
+ * \defgroup rmf_foundation Foundation
+ * Status codes, the last error message, the version and the vector type every capability
+ * uses (docs/c-api.md).
+ */
+
+/**
+ * \defgroup rmf_curves Curves
+ * Curves from NURBS data or from a callback; their domains, points, NURBS and Bézier
+ * views.
+ */
+
+/**
+ * \defgroup rmf_surfaces Surfaces
+ * Piecewise rational surfaces: from NURBS data, evaluated, viewed as NURBS or Bézier
+ * patches, tessellated.
+ */
+
+/**
+ * \defgroup rmf_frames Frames
+ * Frames along any curve: the double-reflection RMF (the reference), Frenet frames, and
+ * the exact rational frames of the capabilities below.
+ */
+
+/**
+ * \defgroup rmf_ph_cubic PH cubic splines
+ * PH cubic splines, their exact and rational rotation-minimizing frames (Mäurer & Jüttler;
+ * docs/ph-cubic.md).
+ */
+
+/**
+ * \defgroup rmf_sweeps Sweeps and profile surfaces
+ * Sweeps of a profile along a curve with rational frames, their singularity margin,
+ * curvature, parabolic points and offsets (Mäurer & Jüttler; docs/ph-cubic.md).
+ */
+
+/**
+ * \defgroup rmf_mobius Möbius transformations
+ * Exact images of curves and frames under Möbius transformations, and curves with rational
+ * RMFs made by them (Bartoň, Jüttler & Wang; docs/mobius.md).
+ */
+
+/**
+ * \defgroup rmf_rrmf RRMF quintics
+ * PH quintics with rational rotation-minimizing frames through G1 Hermite data (Farouki,
+ * Giannelli & Sestini; docs/rrmf-quintic.md).
+ */
+
+/**
+ * \defgroup rmf_cone_spline Cone splines
+ * Developable surfaces as G1 splines of cones, cylinders and planes: Hermite
+ * interpolation, approximation, bending, development, offsets (Leopoldseder & Pottmann;
+ * docs/cone-spline.md).
+ */
+
+/**
+ * \defgroup rmf_sheet Sheet metal
+ * Formed sheet-metal parts on cone splines: transitions and parts between rails, their
+ * layers, boundaries and exact flat patterns (docs/sheet-metal.md).
+ */
+
+/**
+ * \defgroup rmf_wire Wire sweeps and solids
+ * A profile swept along a wire of lines, arcs and curves into exact faces and closed
+ * solids (RmfShape; docs/wire-sweeps.md).
+ */
+
+/**
+ * \defgroup rmf_export Export
+ * STEP and flat-pattern files written by the library (docs/cad-integration.md).
+ */
+
 
 #ifndef RMFSURF_H
 #define RMFSURF_H
@@ -25,21 +99,25 @@
 /**
  * rule of a cone pair: locally minimal vertex distance (12), the useful root. For
  * intersecting or parallel rulings (cone and cylinder cases): the biarc with equal legs.
+ * \ingroup rmf_cone_spline
  */
 #define RMF_CONE_RULE_MIN_VERTEX_DISTANCE 0
 
 /**
  * rule of a cone pair: congruent cones, μ1 = μ2 (cone and cylinder cases: equal legs).
+ * \ingroup rmf_cone_spline
  */
 #define RMF_CONE_RULE_CONGRUENT 1
 
 /**
  * rule of a cone pair: the first segment a cylinder (10).
+ * \ingroup rmf_cone_spline
  */
 #define RMF_CONE_RULE_CYLINDER_FIRST 2
 
 /**
  * rule of a cone pair: the second segment a cylinder.
+ * \ingroup rmf_cone_spline
  */
 #define RMF_CONE_RULE_CYLINDER_SECOND 3
 
@@ -47,119 +125,142 @@
  * rule of a cone pair: the given parameter: μ1 (vertex v1 = a1 + μ1 e1 on the first
  * ruling, a1 where it touches the inscribed sphere or meets the plane π), or λ1 (the first
  * leg of the biarc) in the cone and cylinder cases.
+ * \ingroup rmf_cone_spline
  */
 #define RMF_CONE_RULE_GIVEN 4
 
 /**
  * RmfConePiece.kind: a segment of a right circular cone.
+ * \ingroup rmf_cone_spline
  */
 #define RMF_CONE_PIECE_CONE 0
 
 /**
  * RmfConePiece.kind: a segment of a cylinder of revolution.
+ * \ingroup rmf_cone_spline
  */
 #define RMF_CONE_PIECE_CYLINDER 1
 
 /**
  * RmfConePiece.kind: a plane sector (has a vertex) or a plane strip (parallel rulings).
+ * \ingroup rmf_cone_spline
  */
 #define RMF_CONE_PIECE_PLANE 2
 
 /**
  * RmfConePiece.pair_case: general case (skew rulings, inscribed sphere).
+ * \ingroup rmf_cone_spline
  */
 #define RMF_CONE_CASE_GENERAL 0
 
 /**
  * RmfConePiece.pair_case: the rulings intersect (common vertex).
+ * \ingroup rmf_cone_spline
  */
 #define RMF_CONE_CASE_CONE 1
 
 /**
  * RmfConePiece.pair_case: parallel rulings.
+ * \ingroup rmf_cone_spline
  */
 #define RMF_CONE_CASE_CYLINDER 2
 
 /**
  * RmfConePiece.pair_case: constant slope, det(p1, p2, n1 − n2) = 0 (13).
+ * \ingroup rmf_cone_spline
  */
 #define RMF_CONE_CASE_CONSTANT_SLOPE 3
 
 /**
  * RmfConePiece.pair_case: equal tangent planes (one plane piece).
+ * \ingroup rmf_cone_spline
  */
 #define RMF_CONE_CASE_PLANE 4
 
 /**
  * RmfConePiece.pair_case: not made by a cone pair (osculating cone splines).
+ * \ingroup rmf_cone_spline
  */
 #define RMF_CONE_CASE_NONE 5
 
 /**
  * rmf_cone_spline_fit_parameters: the parameters of the selected rulings.
+ * \ingroup rmf_cone_spline
  */
 #define RMF_CONE_FIT_ELEMENTS 0
 
 /**
  * rmf_cone_spline_fit_parameters: the parameters of the inflection generators found.
+ * \ingroup rmf_cone_spline
  */
 #define RMF_CONE_FIT_INFLECTIONS 1
 
 /**
  * rmf_frames_kind: exact piecewise rational frames (usable by rmf_sweep_surface).
+ * \ingroup rmf_frames
  */
 #define RMF_FRAMES_RATIONAL 0
 
 /**
  * rmf_frames_kind: double-reflection samples.
+ * \ingroup rmf_frames
  */
 #define RMF_FRAMES_DOUBLE_REFLECTION 1
 
 /**
  * rmf_frames_kind: Frenet frames evaluated pointwise.
+ * \ingroup rmf_frames
  */
 #define RMF_FRAMES_FRENET 2
 
 /**
  * rmf_frames_vector_curve: the unit tangent t.
+ * \ingroup rmf_frames
  */
 #define RMF_FRAME_TANGENT 0
 
 /**
  * rmf_frames_vector_curve: the first normal-plane vector f2.
+ * \ingroup rmf_frames
  */
 #define RMF_FRAME_F2 1
 
 /**
  * rmf_frames_vector_curve: f3 = t × f2.
+ * \ingroup rmf_frames
  */
 #define RMF_FRAME_F3 2
 
 /**
  * RmfInversion.kind: inversion in the sphere (center, radius).
+ * \ingroup rmf_mobius
  */
 #define RMF_INVERSION_SPHERE 0
 
 /**
  * RmfInversion.kind: reflection in the plane through `center` with normal `normal`.
+ * \ingroup rmf_mobius
  */
 #define RMF_INVERSION_PLANE 1
 
 /**
  * rmf_sweep_parabolic_points: a profile inflection (K = 0 along u = const), or an end of a
  * straight profile piece (K = 0 on the whole piece).
+ * \ingroup rmf_sweeps
  */
 #define RMF_PARABOLIC_PROFILE 1
 
 /**
  * rmf_sweep_parabolic_points: a straight piece of the spine (K = 0 along v = const); the
  * point is given at both ends of the profile.
+ * \ingroup rmf_sweeps
  */
 #define RMF_PARABOLIC_SPINE 2
 
 /**
  * rmf_sweep_parabolic_points: a point of the curves (14), where the surface normal is
  * perpendicular to the spine's principal normal.
+ * \ingroup rmf_sweeps
  */
 #define RMF_PARABOLIC_NORMAL 3
 
@@ -167,67 +268,80 @@
  * Shape measure: RMF energy E_rmf = ∫ κ² ds. Note: E_rmf of a curve scaled by s is
  * E_rmf / s, and the family of interpolants contains arbitrarily large loops, so its
  * minimum can be a huge curve; RMF_RRMF_MEASURE_SCALED_ENERGY_RMF compares shapes.
+ * \ingroup rmf_rrmf
  */
 #define RMF_RRMF_MEASURE_ENERGY_RMF 0
 
 /**
  * Shape measure: Frenet-frame energy E = ∫ (κ² + τ²) ds (same caveat as E_rmf).
+ * \ingroup rmf_rrmf
  */
 #define RMF_RRMF_MEASURE_ENERGY_FRENET 1
 
 /**
  * Shape measure: arc length L.
+ * \ingroup rmf_rrmf
  */
 #define RMF_RRMF_MEASURE_ARC_LENGTH 2
 
 /**
  * Shape measure: L · E_rmf, invariant under scaling; picks fair curves (recommended).
+ * \ingroup rmf_rrmf
  */
 #define RMF_RRMF_MEASURE_SCALED_ENERGY_RMF 3
 
 /**
  * Shape measure: L · E, invariant under scaling.
+ * \ingroup rmf_rrmf
  */
 #define RMF_RRMF_MEASURE_SCALED_ENERGY_FRENET 4
 
 /**
  * RmfFlatEdge.kind: a straight segment.
+ * \ingroup rmf_sheet
  */
 #define RMF_FLAT_EDGE_LINE 0
 
 /**
  * RmfFlatEdge.kind: a circular arc.
+ * \ingroup rmf_sheet
  */
 #define RMF_FLAT_EDGE_ARC 1
 
 /**
  * RmfFlatEdge.layer: the cutting outline.
+ * \ingroup rmf_sheet
  */
 #define RMF_FLAT_CUT 0
 
 /**
  * RmfFlatEdge.layer: a bend line (a ruling where two pieces meet).
+ * \ingroup rmf_sheet
  */
 #define RMF_FLAT_BEND 1
 
 /**
  * Major version of the library; equals the first number of rmf_version().
+ * \ingroup rmf_foundation
  */
 #define RMF_VERSION_MAJOR 0
 
 /**
  * Minor version of the library.
+ * \ingroup rmf_foundation
  */
 #define RMF_VERSION_MINOR 2
 
 /**
  * Patch version of the library.
+ * \ingroup rmf_foundation
  */
 #define RMF_VERSION_PATCH 0
 
 /**
  * The ABI number: the N of the shared library's SONAME librmfsurf.so.N, raised on every
  * ABI break (0.1.0 had no SONAME; 0.2.0 is ABI 1).
+ * \ingroup rmf_foundation
  */
 #define RMF_ABI_VERSION 1
 
@@ -235,6 +349,7 @@
  * Result of every rmf_* function that is not a pure accessor.
  *
  * The values are fixed and never reused; new codes are added at the end.
+ * \ingroup rmf_foundation
  */
 enum RmfStatus
 #if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
@@ -282,6 +397,7 @@ typedef uint32_t RmfStatus;
 /**
  * A cone spline surface (opaque). Freed with rmf_cone_spline_free. Immutable; may be read
  * from several threads at once.
+ * \ingroup rmf_cone_spline
  */
 typedef struct RmfConeSpline RmfConeSpline;
 
@@ -290,6 +406,7 @@ typedef struct RmfConeSpline RmfConeSpline;
  * curve given by a callback. Created by the rmf_* constructors, freed with rmf_curve_free.
  * Immutable; may be read from several threads at once (a callback curve: if its callback
  * may be called from those threads).
+ * \ingroup rmf_curves
  */
 typedef struct RmfCurve RmfCurve;
 
@@ -298,27 +415,40 @@ typedef struct RmfCurve RmfCurve;
  * pointwise Frenet frames. Freed with rmf_frames_free. Immutable; may be read from
  * several threads at once. Keeps its own reference to the curve, so the curve handle may
  * be freed first.
+ * \ingroup rmf_frames
  */
 typedef struct RmfFrames RmfFrames;
 
 /**
  * A closed solid or a sheet of exact faces (opaque). Made by rmf_wire_sweep, freed with
  * rmf_shape_free. Immutable; may be read from several threads at once.
+ * \ingroup rmf_wire
  */
 typedef struct RmfShape RmfShape;
 
 /**
  * A piecewise rational tensor-product surface s(u, v) (opaque). Freed with
  * rmf_surface_free. Immutable; may be read from several threads at once.
+ * \ingroup rmf_surfaces
  */
 typedef struct RmfSurface RmfSurface;
 
 /**
  * A point or vector in 3-space.
+ * \ingroup rmf_foundation
  */
 typedef struct RmfVec3 {
+  /**
+   * The x coordinate.
+   */
   double x;
+  /**
+   * The y coordinate.
+   */
   double y;
+  /**
+   * The z coordinate.
+   */
   double z;
 } RmfVec3;
 
@@ -327,6 +457,7 @@ typedef struct RmfVec3 {
  * plane spanned by `ruling` and `side`. `side` is normal to `ruling` and points to where the
  * next piece attaches; the normal ruling × side must point to one side of the surface all
  * along a sequence. Directions need not be unit vectors.
+ * \ingroup rmf_cone_spline
  */
 typedef struct RmfConeElement {
   /**
@@ -346,9 +477,16 @@ typedef struct RmfConeElement {
 
 /**
  * An axis-aligned box min ≤ x ≤ max: the region of interest Ω.
+ * \ingroup rmf_cone_spline
  */
 typedef struct RmfBox {
+  /**
+   * The corner with the smallest coordinates.
+   */
   struct RmfVec3 min;
+  /**
+   * The corner with the largest coordinates.
+   */
   struct RmfVec3 max;
 } RmfBox;
 
@@ -366,6 +504,7 @@ typedef struct RmfBox {
  * it is. Tangents should be a constant multiple (a varying one is only its direction to
  * algorithms that differentiate it, the cone approximations). Subnormal tangents
  * (components below 2.2e-308) are refused: their direction is not resolved in double.
+ * \ingroup rmf_curves
  */
 typedef void (*RmfCurveCallback)(double t,
                                  void *user,
@@ -373,7 +512,37 @@ typedef void (*RmfCurveCallback)(double t,
                                  struct RmfVec3 *tangent);
 
 /**
+ * How rmf_cone_spline_approximate_with_options and
+ * rmf_cone_spline_approximate_dual_with_options fit: the tolerance, the rule of the cone
+ * pairs and the most pieces. Initialise with rmf_cone_approximation_options_init, then set
+ * the tolerance; the struct only grows at the end.
+ * \since 0.2
+ * \ingroup rmf_cone_spline
+ */
+typedef struct RmfConeApproximationOptions {
+  /**
+   * sizeof(RmfConeApproximationOptions), written by rmf_cone_approximation_options_init.
+   */
+  size_t struct_size;
+  /**
+   * Largest allowed distance between the surface's region and the cone spline, in the
+   * input's units, > 0. Default 0, which is refused: set it.
+   */
+  double tolerance;
+  /**
+   * One of RMF_CONE_RULE_* except RMF_CONE_RULE_GIVEN (default
+   * RMF_CONE_RULE_MIN_VERTEX_DISTANCE).
+   */
+  uint32_t rule;
+  /**
+   * Most pieces, ≥ 2 (default 100000); more are RMF_ERROR_NOT_CONVERGED.
+   */
+  size_t max_pieces;
+} RmfConeApproximationOptions;
+
+/**
  * The data of one piece of a cone spline.
+ * \ingroup rmf_cone_spline
  */
 typedef struct RmfConePiece {
   /**
@@ -422,14 +591,28 @@ typedef struct RmfConePiece {
    */
   double developed_width;
   /**
-   * The bounding rulings: reference point, unit direction and unit side vector at the
-   * start and at the end of the piece.
+   * The bounding ruling at the start of the piece: its reference point.
    */
   struct RmfVec3 start_point;
+  /**
+   * The start ruling's unit direction.
+   */
   struct RmfVec3 start_ruling;
+  /**
+   * The start ruling's unit side vector (in the tangent plane, normal to the ruling).
+   */
   struct RmfVec3 start_side;
+  /**
+   * The bounding ruling at the end of the piece: its reference point.
+   */
   struct RmfVec3 end_point;
+  /**
+   * The end ruling's unit direction.
+   */
   struct RmfVec3 end_ruling;
+  /**
+   * The end ruling's unit side vector.
+   */
   struct RmfVec3 end_side;
   /**
    * The piece's patches in the surface (rmf_cone_spline_surface): patch indices
@@ -437,6 +620,9 @@ typedef struct RmfConePiece {
    * v ∈ [index, index + 1].
    */
   size_t first_patch;
+  /**
+   * The number of the piece's patches (more than one for segment angles above 120°).
+   */
   size_t patch_count;
 } RmfConePiece;
 
@@ -447,6 +633,7 @@ typedef struct RmfConePiece {
  *
  * The arrays are owned by the curve handle: do not free them; they stay valid until the
  * handle is freed.
+ * \ingroup rmf_curves
  */
 typedef struct RmfNurbsCurve {
   /**
@@ -480,8 +667,12 @@ typedef struct RmfNurbsCurve {
  * Borrowed view of one rational Bézier segment of a curve: degree + 1 poles and weights
  * for the parameter interval [t_start, t_end] of the curve (the Bernstein basis runs over
  * that interval). Owned by the curve handle.
+ * \ingroup rmf_curves
  */
 typedef struct RmfBezierCurve {
+  /**
+   * Polynomial degree.
+   */
   uint32_t degree;
   /**
    * degree + 1 Cartesian poles.
@@ -491,13 +682,20 @@ typedef struct RmfBezierCurve {
    * degree + 1 weights, all > 0.
    */
   const double *weights;
+  /**
+   * Start of the segment's interval in the curve's parameter.
+   */
   double t_start;
+  /**
+   * End of the segment's interval.
+   */
   double t_end;
 } RmfBezierCurve;
 
 /**
  * One inversion of a Möbius transformation. A Möbius transformation is given as an array
  * of inversions applied first to last (translations and rotations are two reflections).
+ * \ingroup rmf_mobius
  */
 typedef struct RmfInversion {
   /**
@@ -522,6 +720,7 @@ typedef struct RmfInversion {
  * What rmf_ph_spline_approximate_with_options aims at and may spend. Initialise with
  * rmf_ph_approximation_options_init, then set the tolerance.
  * \since 0.2
+ * \ingroup rmf_ph_cubic
  */
 typedef struct RmfPhApproximationOptions {
   /**
@@ -550,6 +749,7 @@ typedef struct RmfPhApproximationOptions {
  * What rmf_ph_spline_approximate_with_options did. The caller sets struct_size =
  * sizeof(RmfPhApproximationReport); the library writes the fields that fit, on success only.
  * \since 0.2
+ * \ingroup rmf_ph_cubic
  */
 typedef struct RmfPhApproximationReport {
   /**
@@ -572,6 +772,7 @@ typedef struct RmfPhApproximationReport {
 
 /**
  * Where a sweep comes closest to being singular (Corollary 7 of Mäurer & Jüttler).
+ * \ingroup rmf_sweeps
  */
 typedef struct RmfSingularityMargin {
   /**
@@ -596,6 +797,7 @@ typedef struct RmfSingularityMargin {
 
 /**
  * A parabolic point (K = 0) of a profile surface.
+ * \ingroup rmf_sweeps
  */
 typedef struct RmfParabolicPoint {
   /**
@@ -621,6 +823,7 @@ typedef struct RmfParabolicPoint {
  * positive y. w(t) = Σ w_k B_k(t) is the polynomial of the RRMF condition (4); the RMF
  * (9) turns the Euler–Rodrigues frame by the angle of w². Complex numbers are stored as
  * (Re, Im) pairs: `alpha[2k]` = Re α_k, `alpha[2k + 1]` = Im α_k.
+ * \ingroup rmf_rrmf
  */
 typedef struct RmfRrmfQuintic {
   /**
@@ -659,13 +862,18 @@ typedef struct RmfRrmfQuintic {
 
 /**
  * What a face of an RmfShape is (values fixed).
+ * \ingroup rmf_wire
  */
 typedef uint32_t RmfFaceKind;
 
 /**
  * One face of an RmfShape (a copy; the pointers are borrowed from the shape).
+ * \ingroup rmf_wire
  */
 typedef struct RmfShapeFace {
+  /**
+   * RMF_FACE_SWEPT (a lateral face) or RMF_FACE_PLANE (a cap).
+   */
   RmfFaceKind kind;
   /**
    * RMF_FACE_SWEPT: the face's surface, borrowed: valid until the shape is freed (do not
@@ -673,10 +881,13 @@ typedef struct RmfShapeFace {
    */
   const struct RmfSurface *surface;
   /**
-   * RMF_FACE_PLANE: a point of the cap's plane (the wire's end) and its unit normal,
-   * pointing out of the solid. Zero for lateral faces.
+   * RMF_FACE_PLANE: a point of the cap's plane (the wire's end). Zero for lateral faces.
    */
   struct RmfVec3 plane_origin;
+  /**
+   * RMF_FACE_PLANE: the cap's unit normal, pointing out of the solid. Zero for lateral
+   * faces.
+   */
   struct RmfVec3 plane_normal;
   /**
    * RMF_FACE_PLANE: the number of boundary loops (the first is the outer one; the others
@@ -690,6 +901,9 @@ typedef struct RmfShapeFace {
    * then of holes[0], holes[1], ...). Caps: the wire edge at that end, and 0.
    */
   size_t spine_edge;
+  /**
+   * RMF_FACE_SWEPT: the profile edge the face sweeps (see spine_edge); 0 for caps.
+   */
   size_t profile_edge;
   /**
    * 1 if the face's outward normal is −(s_u × s_v) (its surface runs the other way).
@@ -707,6 +921,7 @@ typedef struct RmfShapeFace {
 
 /**
  * How accurate a wire sweep is (all figures measured on the result).
+ * \ingroup rmf_wire
  */
 typedef struct RmfSweepReport {
   /**
@@ -756,12 +971,14 @@ typedef struct RmfSweepReport {
 
 /**
  * Which face of the sheet the designed surface is (RmfSheetOptions.reference).
+ * \ingroup rmf_sheet
  */
 typedef uint32_t RmfSheetReference;
 
 /**
  * How a sheet-metal part is built and cut. Initialise with rmf_sheet_options_init, then
  * change fields; the struct only grows at the end.
+ * \ingroup rmf_sheet
  */
 typedef struct RmfSheetOptions {
   /**
@@ -799,6 +1016,7 @@ typedef struct RmfSheetOptions {
 
 /**
  * What the construction of a part measured and chose (caller's units).
+ * \ingroup rmf_sheet
  */
 typedef struct RmfSheetReport {
   /**
@@ -822,29 +1040,44 @@ typedef struct RmfSheetReport {
    */
   double bend_radius;
   /**
-   * Distances of the inner, neutral and outer layer from the designed surface, along
-   * the normal from the concave to the convex side.
+   * Distance of the inner layer from the designed surface, along the normal from the
+   * concave to the convex side.
    */
   double inner;
+  /**
+   * Distance of the neutral layer from the designed surface, along the same normal.
+   */
   double neutral;
+  /**
+   * Distance of the outer layer from the designed surface, along the same normal.
+   */
   double outer;
 } RmfSheetReport;
 
 /**
  * A surface of the formed sheet.
+ * \ingroup rmf_sheet
  */
 typedef uint32_t RmfSheetLayer;
 
 /**
  * Which boundary of a part.
+ * \ingroup rmf_sheet
  */
 typedef uint32_t RmfSheetSide;
 
 /**
  * A point or vector in a plane (a flat pattern's coordinates).
+ * \ingroup rmf_sheet
  */
 typedef struct RmfVec2 {
+  /**
+   * The x coordinate.
+   */
   double x;
+  /**
+   * The y coordinate.
+   */
   double y;
 } RmfVec2;
 
@@ -852,6 +1085,7 @@ typedef struct RmfVec2 {
  * One edge of a flat pattern: a line from `from` to `to`, or an arc about `center` of
  * `radius` from `from` through the signed angle `sweep` (counter-clockwise when positive)
  * to `to`. Coordinates in the caller's units, in the plane of the flat pattern.
+ * \ingroup rmf_sheet
  */
 typedef struct RmfFlatEdge {
   /**
@@ -862,29 +1096,110 @@ typedef struct RmfFlatEdge {
    * RMF_FLAT_EDGE_LINE or RMF_FLAT_EDGE_ARC.
    */
   uint32_t kind;
+  /**
+   * The start point.
+   */
   struct RmfVec2 from;
+  /**
+   * The end point.
+   */
   struct RmfVec2 to;
   /**
-   * Arcs only (0 for lines).
+   * Arcs only (0 for lines): the centre.
    */
   struct RmfVec2 center;
+  /**
+   * Arcs only (0 for lines): the radius.
+   */
   double radius;
+  /**
+   * Arcs only (0 for lines): the signed angle from `from` to `to` about `center`,
+   * radians, counter-clockwise when positive.
+   */
   double sweep;
 } RmfFlatEdge;
 
 /**
  * What rmf_cone_spline_part_export writes.
+ * \ingroup rmf_export
  */
 typedef uint32_t RmfSheetFormat;
 
 /**
+ * NURBS data of a surface for rmf_nurbs_surface_create_from: the fields of
+ * rmf_nurbs_surface_create in one struct. The caller sets struct_size =
+ * sizeof(RmfNurbsSurfaceData); the struct only grows at the end.
+ * \since 0.2
+ * \ingroup rmf_surfaces
+ */
+typedef struct RmfNurbsSurfaceData {
+  /**
+   * sizeof(RmfNurbsSurfaceData), set by the caller.
+   */
+  size_t struct_size;
+  /**
+   * Degree along u, 1..=64.
+   */
+  uint32_t degree_u;
+  /**
+   * Degree along v, 1..=64.
+   */
+  uint32_t degree_v;
+  /**
+   * Number of poles along u, ≥ degree_u + 1.
+   */
+  size_t pole_count_u;
+  /**
+   * Number of poles along v, ≥ degree_v + 1.
+   */
+  size_t pole_count_v;
+  /**
+   * pole_count_u * pole_count_v Cartesian poles, index i * pole_count_v + j with i along u.
+   */
+  const struct RmfVec3 *poles;
+  /**
+   * Weights in the same order (finite, > 0), or NULL for all 1.
+   */
+  const double *weights;
+  /**
+   * Number of u knots, pole_count_u + degree_u + 1.
+   */
+  size_t knot_count_u;
+  /**
+   * Clamped knot vector in u.
+   */
+  const double *knots_u;
+  /**
+   * Number of v knots, pole_count_v + degree_v + 1.
+   */
+  size_t knot_count_v;
+  /**
+   * Clamped knot vector in v.
+   */
+  const double *knots_v;
+} RmfNurbsSurfaceData;
+
+/**
  * Borrowed view of a NURBS surface. Pole (i, j) is at index `i * pole_count_v + j`, i along
  * u; the arrays are owned by the surface handle (do not free; valid until it is freed).
+ * \ingroup rmf_surfaces
  */
 typedef struct RmfNurbsSurface {
+  /**
+   * Degree along u.
+   */
   uint32_t degree_u;
+  /**
+   * Degree along v.
+   */
   uint32_t degree_v;
+  /**
+   * Number of poles along u.
+   */
   size_t pole_count_u;
+  /**
+   * Number of poles along v.
+   */
   size_t pole_count_v;
   /**
    * pole_count_u * pole_count_v Cartesian poles, index i * pole_count_v + j.
@@ -898,38 +1213,113 @@ typedef struct RmfNurbsSurface {
    * pole_count_u + degree_u + 1.
    */
   size_t knot_count_u;
+  /**
+   * knot_count_u clamped knots along u.
+   */
   const double *knots_u;
   /**
    * pole_count_v + degree_v + 1.
    */
   size_t knot_count_v;
+  /**
+   * knot_count_v clamped knots along v.
+   */
   const double *knots_v;
 } RmfNurbsSurface;
+
+/**
+ * Caller buffers for rmf_surface_nurbs_copy_into. The caller sets struct_size =
+ * sizeof(RmfNurbsSurfaceBuffers); the struct only grows at the end. A buffer may be NULL
+ * when its capacity is 0.
+ * \since 0.2
+ * \ingroup rmf_surfaces
+ */
+typedef struct RmfNurbsSurfaceBuffers {
+  /**
+   * sizeof(RmfNurbsSurfaceBuffers), set by the caller.
+   */
+  size_t struct_size;
+  /**
+   * Buffer for pole_capacity poles, index i * pole_count_v + j with i along u.
+   */
+  struct RmfVec3 *poles;
+  /**
+   * Buffer for pole_capacity weights, in the order of the poles.
+   */
+  double *weights;
+  /**
+   * Capacity of poles and of weights.
+   */
+  size_t pole_capacity;
+  /**
+   * Buffer for knot_capacity_u knots along u.
+   */
+  double *knots_u;
+  /**
+   * Capacity of knots_u.
+   */
+  size_t knot_capacity_u;
+  /**
+   * Buffer for knot_capacity_v knots along v.
+   */
+  double *knots_v;
+  /**
+   * Capacity of knots_v.
+   */
+  size_t knot_capacity_v;
+} RmfNurbsSurfaceBuffers;
 
 /**
  * Borrowed view of one rational tensor-product Bézier patch of a surface:
  * (degree_u + 1) * (degree_v + 1) poles, index `i * (degree_v + 1) + j`, on
  * [u_start, u_end] × [v_start, v_end]. Owned by the surface handle.
+ * \ingroup rmf_surfaces
  */
 typedef struct RmfBezierPatch {
+  /**
+   * Degree along u.
+   */
   uint32_t degree_u;
+  /**
+   * Degree along v.
+   */
   uint32_t degree_v;
+  /**
+   * (degree_u + 1) * (degree_v + 1) Cartesian poles, index i * (degree_v + 1) + j.
+   */
   const struct RmfVec3 *poles;
+  /**
+   * Weights in the same order, all > 0.
+   */
   const double *weights;
+  /**
+   * Start of the patch's u interval in the surface's parameter.
+   */
   double u_start;
+  /**
+   * End of the u interval.
+   */
   double u_end;
+  /**
+   * Start of the patch's v interval.
+   */
   double v_start;
+  /**
+   * End of the v interval.
+   */
   double v_end;
 } RmfBezierPatch;
 
 /**
  * How sharp (G0) joints of a wire are resolved (values fixed, validated).
+ * \ingroup rmf_wire
  */
 typedef uint32_t RmfCorner;
 
 /**
  * Options of rmf_wire_sweep. Initialise with rmf_wire_sweep_options_init, then change
  * fields; the struct only grows at the end.
+ * \ingroup rmf_wire
  */
 typedef struct RmfWireSweepOptions {
   /**
@@ -981,27 +1371,41 @@ typedef struct RmfWireSweepOptions {
 
 /**
  * What an RmfEdge is (values fixed, validated).
+ * \ingroup rmf_wire
  */
 typedef uint32_t RmfEdgeKind;
 
 /**
  * One edge of a wire, in either orientation. Unused points are ignored; `curve` is read
  * only for RMF_EDGE_CURVE (borrowed for the call; the shape keeps nothing of it).
+ * \ingroup rmf_wire
  */
 typedef struct RmfEdge {
+  /**
+   * RMF_EDGE_LINE, RMF_EDGE_ARC or RMF_EDGE_CURVE.
+   */
   RmfEdgeKind kind;
+  /**
+   * A line's start and end (points[0], points[1]); an arc's start, a point on it and
+   * its end.
+   */
   struct RmfVec3 points[3];
+  /**
+   * RMF_EDGE_CURVE: the curve, on its whole domain; ignored otherwise.
+   */
   const struct RmfCurve *curve;
 } RmfEdge;
 
 /**
  * A lateral face: an exact rational RmfSurface (u along the profile edge, v along the
  * wire).
+ * \ingroup rmf_wire
  */
 #define RMF_FACE_SWEPT 0
 
 /**
  * A planar cap at an end of an open wire, bounded by profile loops.
+ * \ingroup rmf_wire
  */
 #define RMF_FACE_PLANE 1
 
@@ -1009,96 +1413,114 @@ typedef struct RmfEdge {
  * The designed surface is the inner face (the concave side of the bends): the sheet lies
  * on the convex side. The default; the only choice for parts with a vertex on an edge
  * (transitions from polygon corners), whose bend radius is 0 there.
+ * \ingroup rmf_sheet
  */
 #define RMF_SHEET_REFERENCE_INNER 0
 
 /**
  * The designed surface is the neutral layer.
+ * \ingroup rmf_sheet
  */
 #define RMF_SHEET_REFERENCE_NEUTRAL 1
 
 /**
  * The designed surface is the outer face: the sheet lies towards the bend centres.
+ * \ingroup rmf_sheet
  */
 #define RMF_SHEET_REFERENCE_OUTER 2
 
 /**
  * The designed surface (through the input's curves).
+ * \ingroup rmf_sheet
  */
 #define RMF_SHEET_LAYER_REFERENCE 0
 
 /**
  * The inner face (concave side).
+ * \ingroup rmf_sheet
  */
 #define RMF_SHEET_LAYER_INNER 1
 
 /**
  * The neutral layer, at k·t from the inner face: the one the flat pattern develops.
+ * \ingroup rmf_sheet
  */
 #define RMF_SHEET_LAYER_NEUTRAL 2
 
 /**
  * The outer face.
+ * \ingroup rmf_sheet
  */
 #define RMF_SHEET_LAYER_OUTER 3
 
 /**
  * The first boundary: a transition's bottom curve (u = 0 of the layer surfaces).
+ * \ingroup rmf_sheet
  */
 #define RMF_SHEET_SIDE_FIRST 0
 
 /**
  * The second boundary: a transition's top curve (u = 1).
+ * \ingroup rmf_sheet
  */
 #define RMF_SHEET_SIDE_SECOND 1
 
 /**
  * STEP AP214: the formed part as a closed solid (MANIFOLD_SOLID_BREP) between its inner
  * and outer face, with normal-cut edges.
+ * \ingroup rmf_export
  */
 #define RMF_SHEET_FORMAT_STEP_SOLID 0
 
 /**
  * STEP AP214: the flat pattern as one planar face bounded by lines and circles.
+ * \ingroup rmf_export
  */
 #define RMF_SHEET_FORMAT_STEP_FLAT 1
 
 /**
  * DXF R12: the flat pattern, LINE and ARC entities, outline on layer CUT, bend lines on
  * layer BEND.
+ * \ingroup rmf_export
  */
 #define RMF_SHEET_FORMAT_DXF 2
 
 /**
  * SVG 1.1: the flat pattern in millimetres, bend lines dashed.
+ * \ingroup rmf_export
  */
 #define RMF_SHEET_FORMAT_SVG 3
 
 /**
  * A straight line from points[0] to points[1].
+ * \ingroup rmf_wire
  */
 #define RMF_EDGE_LINE 0
 
 /**
  * A circular arc from points[0] through points[1] to points[2].
+ * \ingroup rmf_wire
  */
 #define RMF_EDGE_ARC 1
 
 /**
  * A curve (any RmfCurve: NURBS data, PH, Möbius or RRMF curves, callbacks approximated
  * first with rmf_ph_spline_approximate, ...) on its whole domain.
+ * \ingroup rmf_wire
  */
 #define RMF_EDGE_CURVE 2
 
 /**
  * The corner replaced by a circular arc of corner_radius tangent to both edges (the
  * edges must lie in the plane of the corner near it): an exact torus elbow.
+ * \ingroup rmf_wire
  */
 #define RMF_CORNER_ROUND 0
 
 /**
  * Both legs cut by the plane bisecting the corner, the frame reflected in it (the legs
  * must be straight lines).
+ * \ingroup rmf_wire
  */
 #define RMF_CORNER_MITER 1
 
@@ -1127,6 +1549,8 @@ extern "C" {
  *         opposite sides), the rule is unknown, or an element point is outside the region.
  * @return RMF_ERROR_NO_SOLUTION If no cone pair of the rule joins two elements
  *         consistently, or the region contains every possible vertex.
+ * \since 0.1
+ * \ingroup rmf_cone_spline
  */
 RmfStatus rmf_cone_spline_hermite(const struct RmfConeElement *elements,
                                   size_t count,
@@ -1140,6 +1564,10 @@ RmfStatus rmf_cone_spline_hermite(const struct RmfConeElement *elements,
  * v ∈ [v_min, v_max] by a cone spline: inflection generators (zero torsion) are kept as
  * junctions, further rulings are chosen adaptively until the largest distance from the
  * surface's region to the cone spline is ≤ tolerance.
+ *
+ * Deprecated: use rmf_cone_spline_approximate_with_options (a callback as a curve from
+ * rmf_callback_curve_create, the tolerance, rule and piece cap in an options struct that
+ * can grow). This function stays, with the same results, for at least one release.
  *
  * The curve is `curve` (its whole domain), or `callback` on [t_min, t_max]; exactly one of
  * them. It must be regular with non-zero curvature.
@@ -1163,6 +1591,8 @@ RmfStatus rmf_cone_spline_hermite(const struct RmfConeElement *elements,
  *         unknown rule.
  * @return RMF_ERROR_NO_SOLUTION If the curve has zero curvature somewhere (no tangent plane).
  * @return RMF_ERROR_NOT_CONVERGED If the tolerance needs more than max_pieces pieces.
+ * \since 0.1
+ * \ingroup rmf_cone_spline
  */
 RmfStatus rmf_cone_spline_approximate(const struct RmfCurve *curve,
                                       RmfCurveCallback callback,
@@ -1176,6 +1606,52 @@ RmfStatus rmf_cone_spline_approximate(const struct RmfCurve *curve,
                                       size_t max_pieces,
                                       struct RmfConeSpline **out,
                                       double *max_error);
+
+/**
+ * Writes the default cone approximation options (struct_size set, tolerance 0: set it).
+ *
+ * @param[out] out Receives the defaults.
+ * @return RMF_OK, or RMF_ERROR_NULL_POINTER if out is NULL.
+ * \since 0.2
+ * \ingroup rmf_cone_spline
+ */
+RmfStatus rmf_cone_approximation_options_init(struct RmfConeApproximationOptions *out);
+
+/**
+ * Approximates the tangent surface x(t) + v e(t) of a curve (e = x'/|x'|) over
+ * v ∈ [v_min, v_max] by a cone spline, as rmf_cone_spline_approximate does: inflection
+ * generators (zero torsion) are kept as junctions, further rulings are chosen adaptively
+ * until the largest distance from the surface's region to the cone spline is ≤ the
+ * tolerance. The curve must be regular with non-zero curvature.
+ *
+ * @param[in] curve A curve on its whole domain: NURBS data, a computed curve, or an
+ *            analytic curve from rmf_callback_curve_create.
+ * @param[in] v_min, v_max The region along the rulings, distances from the curve point:
+ *            finite, v_min < v_max, 0 ∉ [v_min, v_max] (the curve is the singular edge).
+ * @param[in] options Tolerance, rule and piece cap (initialise with
+ *            rmf_cone_approximation_options_init, then set the tolerance).
+ * @param[out] out Receives the spline; free with rmf_cone_spline_free. Its reference
+ *             point is x(t_min) + (v_min + v_max)/2 e(t_min), t_min the domain's start.
+ *             Untouched on failure.
+ * @param[out] max_error Receives the largest sampled distance; may be NULL. Untouched on
+ *             failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If curve, options or out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If options->struct_size is no size of the struct, the
+ *         tolerance is not finite and positive, max_pieces < 2, the rule is unknown or
+ *         RMF_CONE_RULE_GIVEN (the message names the field: "options: tolerance = ..."),
+ *         or v_min, v_max are bad.
+ * @return RMF_ERROR_NO_SOLUTION If the curve has zero curvature somewhere (no tangent plane).
+ * @return RMF_ERROR_NOT_CONVERGED If the tolerance needs more than max_pieces pieces.
+ * \since 0.2
+ * \ingroup rmf_cone_spline
+ */
+RmfStatus rmf_cone_spline_approximate_with_options(const struct RmfCurve *curve,
+                                                   double v_min,
+                                                   double v_max,
+                                                   const struct RmfConeApproximationOptions *options,
+                                                   struct RmfConeSpline **out,
+                                                   double *max_error);
 
 /**
  * Approximates a developable ruled surface of degree (1, n) — rulings along u, e.g.
@@ -1193,6 +1669,8 @@ RmfStatus rmf_cone_spline_approximate(const struct RmfCurve *curve,
  * @return RMF_ERROR_INVALID_INPUT If the surface is not of degree 1 in u with one span, or
  *         is not developable (the message gives its max |K|·size²), or for bad numbers.
  * @return RMF_ERROR_NO_SOLUTION, RMF_ERROR_NOT_CONVERGED As for rmf_cone_spline_approximate.
+ * \since 0.1
+ * \ingroup rmf_cone_spline
  */
 RmfStatus rmf_cone_spline_approximate_ruled(const struct RmfSurface *surface,
                                             double tolerance,
@@ -1206,10 +1684,15 @@ RmfStatus rmf_cone_spline_approximate_ruled(const struct RmfSurface *surface,
  * B-spline curve of planes U(t) = Σ Uᵢ Nᵢ(t), u0 + u1 x + u2 y + u3 z = 0, whose rulings
  * are U ∩ U'. The region of interest is a box; each ruling is used where it crosses it.
  *
+ * Deprecated: use rmf_cone_spline_approximate_dual_with_options (the tolerance, rule and
+ * piece cap in an options struct that can grow). This function stays, with the same
+ * results, for at least one release.
+ *
  * @param[in] degree Degree k ≥ 1 of the B-spline.
  * @param[in] planes plane_count control planes, 4 doubles each: u0, u1, u2, u3.
  * @param[in] plane_count Number of control planes, ≥ degree + 1.
  * @param[in] knots knot_count clamped knots, knot_count = plane_count + degree + 1.
+ * @param[in] knot_count Number of knots, plane_count + degree + 1.
  * @param[in] region The region of interest; every ruling must cross it, and it should
  *            exclude the line of regression.
  * @param[in] tolerance, rule, max_pieces As for rmf_cone_spline_approximate.
@@ -1220,6 +1703,8 @@ RmfStatus rmf_cone_spline_approximate_ruled(const struct RmfSurface *surface,
  * @return RMF_ERROR_INVALID_INPUT For bad counts, knots, non-finite planes or numbers.
  * @return RMF_ERROR_NO_SOLUTION If a ruling misses the box or U and U' are parallel.
  * @return RMF_ERROR_NOT_CONVERGED If the tolerance needs more than max_pieces pieces.
+ * \since 0.1
+ * \ingroup rmf_cone_spline
  */
 RmfStatus rmf_cone_spline_approximate_dual(uint32_t degree,
                                            const double *planes,
@@ -1234,11 +1719,51 @@ RmfStatus rmf_cone_spline_approximate_dual(uint32_t degree,
                                            double *max_error);
 
 /**
+ * Approximates a developable surface in the dual form (4) of the paper by a cone spline,
+ * as rmf_cone_spline_approximate_dual does, with the tolerance, rule and piece cap in an
+ * options struct.
+ *
+ * @param[in] degree Degree k ≥ 1 of the B-spline of planes.
+ * @param[in] planes plane_count control planes, 4 doubles each: u0, u1, u2, u3.
+ * @param[in] plane_count Number of control planes, ≥ degree + 1.
+ * @param[in] knots knot_count clamped knots.
+ * @param[in] knot_count Number of knots, plane_count + degree + 1.
+ * @param[in] region The region of interest; every ruling must cross it, and it should
+ *            exclude the line of regression.
+ * @param[in] options Tolerance, rule and piece cap (initialise with
+ *            rmf_cone_approximation_options_init, then set the tolerance).
+ * @param[out] out Receives the spline; free with rmf_cone_spline_free. Untouched on failure.
+ * @param[out] max_error Receives the largest sampled distance; may be NULL.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If planes, knots, region, options or out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If options->struct_size is no size of the struct, a field
+ *         of options is refused (the message names it), or for bad counts, knots,
+ *         non-finite planes or numbers.
+ * @return RMF_ERROR_NO_SOLUTION If a ruling misses the box or U and U' are parallel.
+ * @return RMF_ERROR_NOT_CONVERGED If the tolerance needs more than max_pieces pieces.
+ * \since 0.2
+ * \ingroup rmf_cone_spline
+ */
+RmfStatus rmf_cone_spline_approximate_dual_with_options(uint32_t degree,
+                                                        const double *planes,
+                                                        size_t plane_count,
+                                                        const double *knots,
+                                                        size_t knot_count,
+                                                        const struct RmfBox *region,
+                                                        const struct RmfConeApproximationOptions *options,
+                                                        struct RmfConeSpline **out,
+                                                        double *max_error);
+
+/**
  * The osculating cone spline of a tangent surface (Section "Osculating cone splines"):
  * the osculating cones along the rulings at `parameters` (vertex on the curve, axis along
  * the Darboux vector τe + κb), consecutive ones joined by a filling cone found from the
  * quartic (14), keeping the consistent solutions. Consecutive parameters must be close
  * enough for a consistent filling cone to exist.
+ *
+ * Deprecated: use rmf_cone_spline_osculating_curve (a callback as a curve from
+ * rmf_callback_curve_create). This function stays, with the same results, for at least one
+ * release.
  *
  * @param[in] curve, callback, user, t_min, t_max The curve, as for rmf_cone_spline_approximate.
  * @param[in] v_min, v_max The region along the rulings, as for rmf_cone_spline_approximate.
@@ -1250,6 +1775,8 @@ RmfStatus rmf_cone_spline_approximate_dual(uint32_t degree,
  * @return RMF_ERROR_INVALID_INPUT For bad numbers or parameters not increasing.
  * @return RMF_ERROR_NO_SOLUTION If two consecutive osculating cones cannot be joined
  *         consistently, or an osculating cone is a cylinder (zero curvature of the curve).
+ * \since 0.1
+ * \ingroup rmf_cone_spline
  */
 RmfStatus rmf_cone_spline_osculating(const struct RmfCurve *curve,
                                      RmfCurveCallback callback,
@@ -1263,14 +1790,50 @@ RmfStatus rmf_cone_spline_osculating(const struct RmfCurve *curve,
                                      struct RmfConeSpline **out);
 
 /**
+ * The osculating cone spline of the tangent surface of a curve, as
+ * rmf_cone_spline_osculating builds it, with the curve as one handle (an analytic curve
+ * from rmf_callback_curve_create instead of a callback and its interval).
+ *
+ * @param[in] curve A curve on its whole domain (NURBS data, a computed curve or a callback
+ *            curve).
+ * @param[in] v_min, v_max The region along the rulings, as for
+ *            rmf_cone_spline_approximate_with_options.
+ * @param[in] parameters count increasing curve parameters inside the domain.
+ * @param[in] count Number of osculating cones, ≥ 2.
+ * @param[out] out Receives the spline; free with rmf_cone_spline_free. Untouched on failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If curve, parameters or out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT For bad numbers or parameters not increasing or outside
+ *         the domain.
+ * @return RMF_ERROR_NO_SOLUTION If two consecutive osculating cones cannot be joined
+ *         consistently, or an osculating cone is a cylinder (zero curvature of the curve).
+ * \since 0.2
+ * \ingroup rmf_cone_spline
+ */
+RmfStatus rmf_cone_spline_osculating_curve(const struct RmfCurve *curve,
+                                           double v_min,
+                                           double v_max,
+                                           const double *parameters,
+                                           size_t count,
+                                           struct RmfConeSpline **out);
+
+/**
  * Frees a cone spline. NULL is a no-op.
+ *
+ * @param[in] spline The spline to free, or NULL.
+ * \since 0.1
+ * \ingroup rmf_cone_spline
  */
 void rmf_cone_spline_free(struct RmfConeSpline *spline);
 
 /**
  * The number of pieces of a cone spline.
  *
+ * @param[in] spline The spline.
+ * @param[out] count Receives the number of pieces.
  * @return RMF_OK, or RMF_ERROR_NULL_POINTER if spline or count is NULL.
+ * \since 0.1
+ * \ingroup rmf_cone_spline
  */
 RmfStatus rmf_cone_spline_piece_count(const struct RmfConeSpline *spline, size_t *count);
 
@@ -1282,6 +1845,8 @@ RmfStatus rmf_cone_spline_piece_count(const struct RmfConeSpline *spline, size_t
  * @param[in] index 0 ≤ index < piece count.
  * @param[out] piece Receives the data (a copy).
  * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if index is out of range.
+ * \since 0.1
+ * \ingroup rmf_cone_spline
  */
 RmfStatus rmf_cone_spline_piece(const struct RmfConeSpline *spline,
                                 size_t index,
@@ -1303,6 +1868,8 @@ RmfStatus rmf_cone_spline_piece(const struct RmfConeSpline *spline,
  * @return RMF_ERROR_NULL_POINTER If spline or out is NULL.
  * @return RMF_ERROR_INVALID_INPUT If the bounds are not finite, not increasing, or the strip
  *         contains a vertex (the message names the piece).
+ * \since 0.1
+ * \ingroup rmf_cone_spline
  */
 RmfStatus rmf_cone_spline_surface(const struct RmfConeSpline *spline,
                                   double t_min,
@@ -1321,6 +1888,8 @@ RmfStatus rmf_cone_spline_surface(const struct RmfConeSpline *spline,
  * @return RMF_ERROR_NULL_POINTER If an argument is NULL.
  * @return RMF_ERROR_INVALID_INPUT If the box is not finite or min ≥ max somewhere.
  * @return RMF_ERROR_NO_SOLUTION If some ruling misses the box or no strip fits.
+ * \since 0.1
+ * \ingroup rmf_cone_spline
  */
 RmfStatus rmf_cone_spline_bounds_in_box(const struct RmfConeSpline *spline,
                                         const struct RmfBox *region,
@@ -1332,8 +1901,12 @@ RmfStatus rmf_cone_spline_bounds_in_box(const struct RmfConeSpline *spline,
  * (the parallel circles; straight lines on plane strips), exact rational quadratics, with
  * the surface's v parameter.
  *
+ * @param[in] spline The spline.
+ * @param[in] t Signed distance along the rulings from the reference points (finite).
  * @param[out] out Receives the curve; free with rmf_curve_free.
  * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if t is not finite.
+ * \since 0.1
+ * \ingroup rmf_cone_spline
  */
 RmfStatus rmf_cone_spline_boundary(const struct RmfConeSpline *spline,
                                    double t,
@@ -1351,6 +1924,8 @@ RmfStatus rmf_cone_spline_boundary(const struct RmfConeSpline *spline,
  * @param[in] s In [0, 1].
  * @param[out] out Receives the bent spline; free with rmf_cone_spline_free.
  * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if s is not in [0, 1].
+ * \since 0.1
+ * \ingroup rmf_cone_spline
  */
 RmfStatus rmf_cone_spline_bend(const struct RmfConeSpline *spline,
                                double s,
@@ -1364,8 +1939,11 @@ RmfStatus rmf_cone_spline_bend(const struct RmfConeSpline *spline,
  * (rmf_cone_spline_surface with the same bounds) is planar with lines and circular arcs as
  * boundaries, isometric to the spline's.
  *
+ * @param[in] spline The spline.
  * @param[out] out Receives the development; free with rmf_cone_spline_free.
  * @return RMF_OK, or RMF_ERROR_NULL_POINTER if an argument is NULL.
+ * \since 0.1
+ * \ingroup rmf_cone_spline
  */
 RmfStatus rmf_cone_spline_develop(const struct RmfConeSpline *spline, struct RmfConeSpline **out);
 
@@ -1373,8 +1951,12 @@ RmfStatus rmf_cone_spline_develop(const struct RmfConeSpline *spline, struct Rmf
  * The offset of a cone spline at signed distance d along the normals ruling × side: again
  * a cone spline (same axes and half angles, shifted vertices), exact.
  *
+ * @param[in] spline The spline.
+ * @param[in] d Signed distance along ruling × side (finite).
  * @param[out] out Receives the offset; free with rmf_cone_spline_free.
  * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if d is not finite.
+ * \since 0.1
+ * \ingroup rmf_cone_spline
  */
 RmfStatus rmf_cone_spline_offset(const struct RmfConeSpline *spline,
                                  double d,
@@ -1384,9 +1966,12 @@ RmfStatus rmf_cone_spline_offset(const struct RmfConeSpline *spline,
  * The deviation an approximation reached (rmf_cone_spline_approximate*; kept by
  * bending, development and offsets).
  *
+ * @param[in] spline A spline made by rmf_cone_spline_approximate*.
  * @param[out] max_error Receives the largest sampled distance to the input surface.
  * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if the spline was
  *         not made by an approximation.
+ * \since 0.1
+ * \ingroup rmf_cone_spline
  */
 RmfStatus rmf_cone_spline_fit_error(const struct RmfConeSpline *spline, double *max_error);
 
@@ -1397,8 +1982,10 @@ RmfStatus rmf_cone_spline_fit_error(const struct RmfConeSpline *spline, double *
  *
  * Size query: with capacity 0 (values may be NULL) only count is written.
  *
+ * @param[in] spline A spline made by rmf_cone_spline_approximate*.
  * @param[in] which RMF_CONE_FIT_ELEMENTS or RMF_CONE_FIT_INFLECTIONS.
  * @param[out] values Buffer for capacity values.
+ * @param[in] capacity Capacity of values; 0 for a size query.
  * @param[out] count Receives the number of values.
  * @return RMF_OK on success or for a size query.
  * @return RMF_ERROR_NULL_POINTER If spline or count is NULL, or values is NULL with a
@@ -1406,6 +1993,8 @@ RmfStatus rmf_cone_spline_fit_error(const struct RmfConeSpline *spline, double *
  * @return RMF_ERROR_INVALID_INPUT If which is unknown or the spline was not made by an
  *         approximation.
  * @return RMF_ERROR_BUFFER_TOO_SMALL If capacity is non-zero but too small; count is written.
+ * \since 0.1
+ * \ingroup rmf_cone_spline
  */
 RmfStatus rmf_cone_spline_fit_parameters(const struct RmfConeSpline *spline,
                                          uint32_t which,
@@ -1433,6 +2022,8 @@ RmfStatus rmf_cone_spline_fit_parameters(const struct RmfConeSpline *spline,
  * @return RMF_ERROR_INVALID_INPUT If a count, degree, knot, weight or pole is invalid (the
  *         message names it).
  * @return RMF_ERROR_INTERNAL On an internal error.
+ * \since 0.1
+ * \ingroup rmf_curves
  */
 RmfStatus rmf_nurbs_curve_create(uint32_t degree,
                                  const struct RmfVec3 *poles,
@@ -1459,6 +2050,7 @@ RmfStatus rmf_nurbs_curve_create(uint32_t degree,
  * @return RMF_ERROR_NULL_POINTER If callback or out is NULL.
  * @return RMF_ERROR_INVALID_INPUT If the domain is invalid.
  * \since 0.2
+ * \ingroup rmf_curves
  */
 RmfStatus rmf_callback_curve_create(RmfCurveCallback callback,
                                     void *user,
@@ -1469,6 +2061,10 @@ RmfStatus rmf_callback_curve_create(RmfCurveCallback callback,
 /**
  * Frees a curve. NULL is a no-op. Views obtained from the curve become invalid; frames and
  * surfaces built from it stay valid (they keep their own reference).
+ *
+ * @param[in] curve The curve to free, or NULL.
+ * \since 0.1
+ * \ingroup rmf_curves
  */
 void rmf_curve_free(struct RmfCurve *curve);
 
@@ -1478,6 +2074,8 @@ void rmf_curve_free(struct RmfCurve *curve);
  * @param[in] curve The curve.
  * @param[out] t_min, t_max Receive the domain ends.
  * @return RMF_OK, or RMF_ERROR_NULL_POINTER if any argument is NULL.
+ * \since 0.1
+ * \ingroup rmf_curves
  */
 RmfStatus rmf_curve_domain(const struct RmfCurve *curve, double *t_min, double *t_max);
 
@@ -1493,6 +2091,8 @@ RmfStatus rmf_curve_domain(const struct RmfCurve *curve, double *t_min, double *
  * @return RMF_ERROR_NULL_POINTER If curve or point is NULL.
  * @return RMF_ERROR_INVALID_INPUT If t is not finite or outside the domain, or a callback
  *         gives a non-finite value.
+ * \since 0.1
+ * \ingroup rmf_curves
  */
 RmfStatus rmf_curve_eval(const struct RmfCurve *curve,
                          double t,
@@ -1509,6 +2109,8 @@ RmfStatus rmf_curve_eval(const struct RmfCurve *curve,
  * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if the segments do not
  *         join into one continuous NURBS (Frenet frame vectors and Frenet sweeps along a G1
  *         spline jump at the joints); rmf_curve_segment still gives every piece.
+ * \since 0.1
+ * \ingroup rmf_curves
  */
 RmfStatus rmf_curve_nurbs(const struct RmfCurve *curve, struct RmfNurbsCurve *view);
 
@@ -1532,6 +2134,8 @@ RmfStatus rmf_curve_nurbs(const struct RmfCurve *curve, struct RmfNurbsCurve *vi
  *         buffer is NULL with a non-zero capacity.
  * @return RMF_ERROR_BUFFER_TOO_SMALL If a capacity is non-zero but too small; then only
  *         degree, pole_count and knot_count are written.
+ * \since 0.1
+ * \ingroup rmf_curves
  */
 RmfStatus rmf_curve_nurbs_copy(const struct RmfCurve *curve,
                                uint32_t *degree,
@@ -1546,7 +2150,11 @@ RmfStatus rmf_curve_nurbs_copy(const struct RmfCurve *curve,
 /**
  * Number of rational Bézier segments of a curve.
  *
+ * @param[in] curve The curve.
+ * @param[out] count Receives the number of segments.
  * @return RMF_OK, or RMF_ERROR_NULL_POINTER if curve or count is NULL.
+ * \since 0.1
+ * \ingroup rmf_curves
  */
 RmfStatus rmf_curve_segment_count(const struct RmfCurve *curve, size_t *count);
 
@@ -1557,6 +2165,8 @@ RmfStatus rmf_curve_segment_count(const struct RmfCurve *curve, size_t *count);
  * @param[in] index 0 ≤ index < segment count.
  * @param[out] view Receives pointers owned by the curve (valid until it is freed).
  * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if index is out of range.
+ * \since 0.1
+ * \ingroup rmf_curves
  */
 RmfStatus rmf_curve_segment(const struct RmfCurve *curve,
                             size_t index,
@@ -1564,13 +2174,21 @@ RmfStatus rmf_curve_segment(const struct RmfCurve *curve,
 
 /**
  * Frees frames. NULL is a no-op.
+ *
+ * @param[in] frames The frames to free, or NULL.
+ * \since 0.1
+ * \ingroup rmf_frames
  */
 void rmf_frames_free(struct RmfFrames *frames);
 
 /**
  * The parameter domain of the frames (that of their curve).
  *
+ * @param[in] frames The frames.
+ * @param[out] t_min, t_max Receive the domain ends.
  * @return RMF_OK, or RMF_ERROR_NULL_POINTER if any argument is NULL.
+ * \since 0.1
+ * \ingroup rmf_frames
  */
 RmfStatus rmf_frames_domain(const struct RmfFrames *frames, double *t_min, double *t_max);
 
@@ -1586,6 +2204,8 @@ RmfStatus rmf_frames_domain(const struct RmfFrames *frames, double *t_min, doubl
  * @return RMF_ERROR_NULL_POINTER If any argument is NULL.
  * @return RMF_ERROR_INVALID_INPUT If t is not finite or outside the domain, or the frame is
  *         undefined there (Frenet frames where the curvature vanishes; a singular curve).
+ * \since 0.1
+ * \ingroup rmf_frames
  */
 RmfStatus rmf_frames_eval(const struct RmfFrames *frames,
                           double t,
@@ -1608,6 +2228,8 @@ RmfStatus rmf_frames_eval(const struct RmfFrames *frames,
  * @return RMF_ERROR_NULL_POINTER If curve or out is NULL.
  * @return RMF_ERROR_INVALID_INPUT If sample_count < 2 or > 2^24, initial_normal is not finite, zero or
  *         tangent to the curve, or the curve is singular at a sample.
+ * \since 0.1
+ * \ingroup rmf_frames
  */
 RmfStatus rmf_double_reflection_frames(const struct RmfCurve *curve,
                                        struct RmfVec3 initial_normal,
@@ -1623,15 +2245,20 @@ RmfStatus rmf_double_reflection_frames(const struct RmfCurve *curve,
  * @param[in] curve The curve.
  * @param[out] out Receives the frames; free with rmf_frames_free.
  * @return RMF_OK, or RMF_ERROR_NULL_POINTER if curve or out is NULL.
+ * \since 0.1
+ * \ingroup rmf_frames
  */
 RmfStatus rmf_frenet_frames(const struct RmfCurve *curve, struct RmfFrames **out);
 
 /**
  * How frames are represented.
  *
+ * @param[in] frames The frames.
  * @param[out] kind Receives RMF_FRAMES_RATIONAL, RMF_FRAMES_DOUBLE_REFLECTION or
  *             RMF_FRAMES_FRENET.
  * @return RMF_OK, or RMF_ERROR_NULL_POINTER if frames or kind is NULL.
+ * \since 0.1
+ * \ingroup rmf_frames
  */
 RmfStatus rmf_frames_kind(const struct RmfFrames *frames, uint32_t *kind);
 
@@ -1647,26 +2274,30 @@ RmfStatus rmf_frames_kind(const struct RmfFrames *frames, uint32_t *kind);
  * @return RMF_ERROR_NULL_POINTER If frames or out is NULL.
  * @return RMF_ERROR_INVALID_INPUT If which is not one of the three values or the frames are
  *         not rational (double-reflection and pointwise Frenet frames are sampled).
+ * \since 0.1
+ * \ingroup rmf_frames
  */
 RmfStatus rmf_frames_vector_curve(const struct RmfFrames *frames,
                                   uint32_t which,
                                   struct RmfCurve **out);
 
 /**
- * The image μ(point) of a point under a Möbius transformation.
+ * The image μ(point) of a point under a Möbius transformation. Computed without squares
+ * of distances: (1e200, 0, 0) in the unit sphere goes to (1e-200, 0, 0), and images beyond
+ * the range of double are refused, never infinite.
  *
  * @param[in] maps count inversions, applied first to last.
+ * @param[in] count Number of inversions, ≥ 1.
  * @param[in] point A finite point.
  * @param[out] image Receives μ(point). Untouched on failure.
  * @return RMF_OK on success.
  * @return RMF_ERROR_NULL_POINTER If maps or image is NULL.
- * Computed without squares of distances: (1e200, 0, 0) in the unit sphere goes to
- * (1e-200, 0, 0), and images beyond the range of double are refused, never infinite.
- *
  * @return RMF_ERROR_INVALID_INPUT If count = 0, an inversion is invalid (radius ≤ 0, zero
  *         normal, non-finite), or the image is not finite: the point is sent to infinity (a
  *         sphere centre) or beyond ±1.8e308 (e.g. a radius of 1e300 and a point at
  *         distance 1 from the centre).
+ * \since 0.1
+ * \ingroup rmf_mobius
  */
 RmfStatus rmf_mobius_point(const struct RmfInversion *maps,
                            size_t count,
@@ -1679,9 +2310,15 @@ RmfStatus rmf_mobius_point(const struct RmfInversion *maps,
  * rotation-minimizing vector field along a curve it gives one along the image curve
  * (Theorem 1).
  *
+ * @param[in] maps count inversions, applied first to last.
+ * @param[in] count Number of inversions, ≥ 1.
+ * @param[in] point The finite point where the differential is taken.
+ * @param[in] vector A finite vector at point.
  * @param[out] image Receives d*μ_point(vector). Untouched on failure.
  * @return RMF_OK, RMF_ERROR_NULL_POINTER (maps, image), or RMF_ERROR_INVALID_INPUT as for
  *         rmf_mobius_point, or for a non-finite vector.
+ * \since 0.1
+ * \ingroup rmf_mobius
  */
 RmfStatus rmf_mobius_vector(const struct RmfInversion *maps,
                             size_t count,
@@ -1702,6 +2339,8 @@ RmfStatus rmf_mobius_vector(const struct RmfInversion *maps,
  * @return RMF_ERROR_INVALID_INPUT If the map is invalid, the curve passes through (or too
  *         near) an inversion centre, or the image would have degree above 64 (each sphere
  *         inversion doubles the degree).
+ * \since 0.1
+ * \ingroup rmf_mobius
  */
 RmfStatus rmf_mobius_curve(const struct RmfCurve *curve,
                            const struct RmfInversion *maps,
@@ -1725,6 +2364,8 @@ RmfStatus rmf_mobius_curve(const struct RmfCurve *curve,
  *         curve passes through an inversion centre, or the image or its frames would have
  *         degree above 64 (a sphere inversion takes degree n to 2n, frames of degree m to
  *         m + 2n).
+ * \since 0.1
+ * \ingroup rmf_mobius
  */
 RmfStatus rmf_mobius_frames(const struct RmfFrames *frames,
                             const struct RmfInversion *maps,
@@ -1757,6 +2398,8 @@ RmfStatus rmf_mobius_frames(const struct RmfFrames *frames,
  *         along the first tangent.
  * @return RMF_ERROR_NO_SOLUTION If a segment has no PH cubic interpolant in its plane (e.g.
  *         a segment turning by more than half a turn); the message names the segment.
+ * \since 0.1
+ * \ingroup rmf_mobius
  */
 RmfStatus rmf_mobius_rrmf_hermite(const struct RmfVec3 *points,
                                   const struct RmfVec3 *tangents,
@@ -1789,6 +2432,8 @@ RmfStatus rmf_mobius_rrmf_hermite(const struct RmfVec3 *points,
  *         the callback gives a non-finite point or a zero tangent, or initial_normal is
  *         invalid.
  * @return RMF_ERROR_NO_SOLUTION If a segment has no interpolant (too few segments).
+ * \since 0.1
+ * \ingroup rmf_mobius
  */
 RmfStatus rmf_mobius_rrmf_approximate(const struct RmfCurve *curve,
                                       RmfCurveCallback callback,
@@ -1821,6 +2466,8 @@ RmfStatus rmf_mobius_rrmf_approximate(const struct RmfCurve *curve,
  * @return RMF_ERROR_NO_SOLUTION If no PH cubic interpolates the data: (*) has no real root,
  *         every root reverses a tangent or has a numerical cusp, or the tangents are
  *         parallel with the chord off their line. Nothing is written then.
+ * \since 0.1
+ * \ingroup rmf_ph_cubic
  */
 RmfStatus rmf_ph_cubic_hermite(struct RmfVec3 p0,
                                struct RmfVec3 t0,
@@ -1845,6 +2492,8 @@ RmfStatus rmf_ph_cubic_hermite(struct RmfVec3 p0,
  *         is zero or consecutive points coincide (the message names the index).
  * @return RMF_ERROR_NO_SOLUTION If some segment admits no PH cubic (the message names it);
  *         more points in between help.
+ * \since 0.1
+ * \ingroup rmf_ph_cubic
  */
 RmfStatus rmf_ph_spline_hermite(const struct RmfVec3 *points,
                                 const struct RmfVec3 *tangents,
@@ -1882,6 +2531,8 @@ RmfStatus rmf_ph_spline_hermite(const struct RmfVec3 *points,
  *         interval (a cusp, or a straight line meeting a corner).
  * @return RMF_ERROR_NOT_CONVERGED If the tolerance is not reached within 100,000 segments,
  *         or not above the rounding of the coordinates on the shortest intervals.
+ * \since 0.1
+ * \ingroup rmf_ph_cubic
  */
 RmfStatus rmf_ph_spline_approximate(const struct RmfCurve *curve,
                                     RmfCurveCallback callback,
@@ -1899,6 +2550,7 @@ RmfStatus rmf_ph_spline_approximate(const struct RmfCurve *curve,
  * @param[out] out The options to initialise.
  * @return RMF_OK, or RMF_ERROR_NULL_POINTER if out is NULL.
  * \since 0.2
+ * \ingroup rmf_ph_cubic
  */
 RmfStatus rmf_ph_approximation_options_init(struct RmfPhApproximationOptions *out);
 
@@ -1932,6 +2584,7 @@ RmfStatus rmf_ph_approximation_options_init(struct RmfPhApproximationOptions *ou
  *         segments or more than max_evaluations evaluations, or is not reached above the
  *         rounding of the coordinates on the shortest intervals.
  * \since 0.2
+ * \ingroup rmf_ph_cubic
  */
 RmfStatus rmf_ph_spline_approximate_with_options(const struct RmfCurve *curve,
                                                  const struct RmfPhApproximationOptions *options,
@@ -1959,6 +2612,8 @@ RmfStatus rmf_ph_spline_approximate_with_options(const struct RmfCurve *curve,
  * @return RMF_ERROR_NULL_POINTER If ph_spline or out is NULL.
  * @return RMF_ERROR_INVALID_INPUT If a segment is not a PH cubic, the spline is not G1, or
  *         initial_normal is not finite, zero or tangent to the spline.
+ * \since 0.1
+ * \ingroup rmf_ph_cubic
  */
 RmfStatus rmf_ph_rational_rmf(const struct RmfCurve *ph_spline,
                               struct RmfVec3 initial_normal,
@@ -1985,6 +2640,8 @@ RmfStatus rmf_ph_rational_rmf(const struct RmfCurve *ph_spline,
  *         or so large that a segment would need more than 4096 rational pieces,
  *         or closure_symmetry > 0 for a spline that does not end where it starts with the
  *         same tangent.
+ * \since 0.1
+ * \ingroup rmf_ph_cubic
  */
 RmfStatus rmf_ph_rational_rmf_twisted(const struct RmfCurve *ph_spline,
                                       struct RmfVec3 initial_normal,
@@ -2004,6 +2661,8 @@ RmfStatus rmf_ph_rational_rmf_twisted(const struct RmfCurve *ph_spline,
  * @return RMF_ERROR_NULL_POINTER If ph_spline or out is NULL.
  * @return RMF_ERROR_INVALID_INPUT If a segment is not a PH cubic or is (nearly) straight,
  *         sin θ ≤ 1e-4 (no Frenet frame, or none computable to 1e-7).
+ * \since 0.1
+ * \ingroup rmf_ph_cubic
  */
 RmfStatus rmf_ph_frenet_frames(const struct RmfCurve *ph_spline, struct RmfFrames **out);
 
@@ -2025,6 +2684,8 @@ RmfStatus rmf_ph_frenet_frames(const struct RmfCurve *ph_spline, struct RmfFrame
  * @return RMF_ERROR_NULL_POINTER If ph_spline is NULL, or t or f2 is NULL with count > 0.
  * @return RMF_ERROR_INVALID_INPUT If a segment is not a PH cubic, the spline is not G1,
  *         initial_normal is not usable, or a parameter is not finite or outside the domain.
+ * \since 0.1
+ * \ingroup rmf_ph_cubic
  */
 RmfStatus rmf_ph_exact_rmf_eval(const struct RmfCurve *ph_spline,
                                 struct RmfVec3 initial_normal,
@@ -2056,6 +2717,8 @@ RmfStatus rmf_ph_exact_rmf_eval(const struct RmfCurve *ph_spline,
  *         G1 PH cubic spline.
  * @return RMF_ERROR_BUFFER_TOO_SMALL If 0 < capacity < the segment count; then only
  *         segment_count is written.
+ * \since 0.1
+ * \ingroup rmf_ph_cubic
  */
 RmfStatus rmf_ph_rmf_angle_error(const struct RmfFrames *frames,
                                  double *per_segment,
@@ -2080,6 +2743,8 @@ RmfStatus rmf_ph_rmf_angle_error(const struct RmfFrames *frames,
  *         RMF_ERROR_INVALID_INPUT if the frames are not rational frames of the spine (their
  *         breakpoints or their tangent differ), are not rotation-minimizing, or frame
  *         pieces × profile segments exceed 2^15 (a bound on the work of one call).
+ * \since 0.1
+ * \ingroup rmf_sweeps
  */
 RmfStatus rmf_sweep_singularity_margin(const struct RmfCurve *spine,
                                        const struct RmfFrames *frames,
@@ -2100,6 +2765,8 @@ RmfStatus rmf_sweep_singularity_margin(const struct RmfCurve *spine,
  *         RMF_ERROR_INVALID_INPUT if u or v is outside its domain, the frames are not
  *         rotation-minimizing rational frames of the spine, or frame pieces × profile
  *         segments exceed 2^15.
+ * \since 0.1
+ * \ingroup rmf_sweeps
  */
 RmfStatus rmf_sweep_gaussian_curvature(const struct RmfCurve *spine,
                                        const struct RmfFrames *frames,
@@ -2130,6 +2797,8 @@ RmfStatus rmf_sweep_gaussian_curvature(const struct RmfCurve *spine,
  *         the frames are not rotation-minimizing rational frames of the spine, or frame
  *         pieces × profile segments exceed 2^15.
  * @return RMF_ERROR_BUFFER_TOO_SMALL If 0 < capacity < count; then only count is written.
+ * \since 0.1
+ * \ingroup rmf_sweeps
  */
 RmfStatus rmf_sweep_parabolic_points(const struct RmfCurve *spine,
                                      const struct RmfFrames *frames,
@@ -2155,6 +2824,8 @@ RmfStatus rmf_sweep_parabolic_points(const struct RmfCurve *spine,
  * @return RMF_ERROR_INVALID_INPUT If a segment is not a PH cubic or the spline is not G1.
  * @return RMF_ERROR_NO_SOLUTION If the profile is not convex, δ + ΔΩ ≥ π, or a spine segment
  *         is straight (the message says which).
+ * \since 0.1
+ * \ingroup rmf_ph_cubic
  */
 RmfStatus rmf_ph_convex_initial_normal(const struct RmfCurve *ph_spline,
                                        const struct RmfCurve *profile,
@@ -2179,6 +2850,8 @@ RmfStatus rmf_ph_convex_initial_normal(const struct RmfCurve *ph_spline,
  *         point.
  * @return RMF_ERROR_NO_SOLUTION If a profile segment has no rational offset (the message
  *         names it).
+ * \since 0.1
+ * \ingroup rmf_sweeps
  */
 RmfStatus rmf_profile_offset(const struct RmfCurve *profile,
                              double distance,
@@ -2217,6 +2890,8 @@ RmfStatus rmf_profile_offset(const struct RmfCurve *profile,
  *         π), or eta is not finite.
  * @return RMF_ERROR_BUFFER_TOO_SMALL If capacity < *count; then only *count is written.
  * @return RMF_ERROR_INTERNAL On an internal error.
+ * \since 0.1
+ * \ingroup rmf_rrmf
  */
 RmfStatus rmf_rrmf_quintic_solutions(struct RmfVec3 p0,
                                      struct RmfVec3 t0,
@@ -2242,6 +2917,8 @@ RmfStatus rmf_rrmf_quintic_solutions(struct RmfVec3 p0,
  * @return RMF_ERROR_NULL_POINTER If theta_i, theta_f or phi is NULL.
  * @return RMF_ERROR_INVALID_INPUT If the data are invalid, planar or degenerate (as for
  *         rmf_rrmf_quintic_solutions).
+ * \since 0.1
+ * \ingroup rmf_rrmf
  */
 RmfStatus rmf_rrmf_quintic_angles(struct RmfVec3 p0,
                                   struct RmfVec3 t0,
@@ -2278,6 +2955,8 @@ RmfStatus rmf_rrmf_quintic_angles(struct RmfVec3 p0,
  * @return RMF_ERROR_NO_SOLUTION If the frame cannot be given positive weights (a singular
  *         curve; not seen for solutions returned by this library).
  * @return RMF_ERROR_INTERNAL On an internal error.
+ * \since 0.1
+ * \ingroup rmf_rrmf
  */
 RmfStatus rmf_rrmf_quintic_curve(struct RmfVec3 p0,
                                  struct RmfVec3 t0,
@@ -2306,6 +2985,8 @@ RmfStatus rmf_rrmf_quintic_curve(struct RmfVec3 p0,
  *         eta_samples is 0 or too large.
  * @return RMF_ERROR_NO_SOLUTION If no sampled η admits an interpolant.
  * @return RMF_ERROR_INTERNAL On an internal error.
+ * \since 0.1
+ * \ingroup rmf_rrmf
  */
 RmfStatus rmf_rrmf_quintic_best(struct RmfVec3 p0,
                                 struct RmfVec3 t0,
@@ -2345,6 +3026,8 @@ RmfStatus rmf_rrmf_quintic_best(struct RmfVec3 p0,
  * @return RMF_ERROR_NO_SOLUTION If no sampled η admits an interpolant for some segment (the
  *         message names it).
  * @return RMF_ERROR_INTERNAL On an internal error.
+ * \since 0.1
+ * \ingroup rmf_rrmf
  */
 RmfStatus rmf_rrmf_spline_hermite(const struct RmfVec3 *points,
                                   const struct RmfVec3 *tangents,
@@ -2357,19 +3040,28 @@ RmfStatus rmf_rrmf_spline_hermite(const struct RmfVec3 *points,
 
 /**
  * Frees a shape; its face surfaces and loop curves become invalid. NULL is a no-op.
+ *
+ * @param[in] shape The shape to free, or NULL.
  * \since 0.2
+ * \ingroup rmf_wire
  */
 void rmf_shape_free(struct RmfShape *shape);
 
 /**
  * The number of faces of a shape (lateral faces first, then the caps); 0 for NULL.
+ *
+ * @param[in] shape The shape, or NULL.
  * \since 0.2
+ * \ingroup rmf_wire
  */
 size_t rmf_shape_face_count(const struct RmfShape *shape);
 
 /**
  * Whether a shape is a closed, consistently oriented solid (1) or a sheet (0); 0 for NULL.
+ *
+ * @param[in] shape The shape, or NULL.
  * \since 0.2
+ * \ingroup rmf_wire
  */
 uint32_t rmf_shape_is_solid(const struct RmfShape *shape);
 
@@ -2381,6 +3073,7 @@ uint32_t rmf_shape_is_solid(const struct RmfShape *shape);
  * @param[out] out Receives the face; its surface pointer is borrowed from the shape.
  * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if index is out of range.
  * \since 0.2
+ * \ingroup rmf_wire
  */
 RmfStatus rmf_shape_face(const struct RmfShape *shape, size_t index, struct RmfShapeFace *out);
 
@@ -2395,6 +3088,7 @@ RmfStatus rmf_shape_face(const struct RmfShape *shape, size_t index, struct RmfS
  * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if face or loop is out
  *         of range (lateral faces have no loops).
  * \since 0.2
+ * \ingroup rmf_wire
  */
 RmfStatus rmf_shape_face_loop(const struct RmfShape *shape,
                               size_t face,
@@ -2404,8 +3098,11 @@ RmfStatus rmf_shape_face_loop(const struct RmfShape *shape,
 /**
  * The accuracy figures of a wire sweep (see RmfSweepReport).
  *
+ * @param[in] shape A shape made by rmf_wire_sweep.
+ * @param[out] out Receives the report.
  * @return RMF_OK, or RMF_ERROR_NULL_POINTER if shape or out is NULL.
  * \since 0.2
+ * \ingroup rmf_wire
  */
 RmfStatus rmf_shape_report(const struct RmfShape *shape, struct RmfSweepReport *out);
 
@@ -2422,6 +3119,7 @@ RmfStatus rmf_shape_report(const struct RmfShape *shape, struct RmfSweepReport *
  * @return RMF_ERROR_NULL_POINTER If shape or path is NULL.
  * @return RMF_ERROR_INVALID_INPUT If the file cannot be written (the message says why).
  * \since 0.2
+ * \ingroup rmf_export
  */
 RmfStatus rmf_shape_write_step(const struct RmfShape *shape, const char *path);
 
@@ -2432,6 +3130,7 @@ RmfStatus rmf_shape_write_step(const struct RmfShape *shape, const char *path);
  *             reference inner, flat_tolerance 0 = the tolerance, max_pieces 100000).
  * @return RMF_OK, or RMF_ERROR_NULL_POINTER if options is NULL.
  * \since 0.2
+ * \ingroup rmf_sheet
  */
 RmfStatus rmf_sheet_options_init(struct RmfSheetOptions *options);
 
@@ -2467,6 +3166,7 @@ RmfStatus rmf_sheet_options_init(struct RmfSheetOptions *options);
  * @return RMF_ERROR_NO_SOLUTION If the hull has a degenerate ruling.
  * @return RMF_ERROR_NOT_CONVERGED If the tolerance needs more than max_pieces pieces.
  * \since 0.2
+ * \ingroup rmf_sheet
  */
 RmfStatus rmf_cone_spline_transition(const struct RmfCurve *bottom,
                                      const struct RmfCurve *top,
@@ -2498,6 +3198,7 @@ RmfStatus rmf_cone_spline_transition(const struct RmfCurve *bottom,
  * @return RMF_ERROR_NOT_CONVERGED If the tolerance needs more than max_pieces pieces, or
  *         the cone fit keeps a vertex on the part.
  * \since 0.2
+ * \ingroup rmf_sheet
  */
 RmfStatus rmf_cone_spline_part(const struct RmfSurface *surface,
                                const struct RmfSheetOptions *options,
@@ -2521,6 +3222,7 @@ RmfStatus rmf_cone_spline_part(const struct RmfSurface *surface,
  * @return RMF_ERROR_NO_SOLUTION If the curve is not regular.
  * @return RMF_ERROR_NOT_CONVERGED As for rmf_cone_spline_part.
  * \since 0.2
+ * \ingroup rmf_sheet
  */
 RmfStatus rmf_cone_spline_tangent_part(const struct RmfCurve *curve,
                                        double v_min,
@@ -2532,9 +3234,11 @@ RmfStatus rmf_cone_spline_tangent_part(const struct RmfCurve *curve,
  * What a part's construction measured: pieces, closure, distances of the surface and of
  * the edges from the input, the smallest bend radius, the layers' distances.
  *
+ * @param[in] part A part (rmf_cone_spline_transition, _part or _tangent_part).
  * @param[out] report Receives the report.
  * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if part is not a part.
  * \since 0.2
+ * \ingroup rmf_sheet
  */
 RmfStatus rmf_cone_spline_part_report(const struct RmfConeSpline *part,
                                       struct RmfSheetReport *report);
@@ -2544,11 +3248,13 @@ RmfStatus rmf_cone_spline_part_report(const struct RmfConeSpline *part,
  * first to the second boundary, v ∈ [k, k + 1] on piece k, G1 across the rulings (except
  * at creases); exact rational (degree 1 in u).
  *
+ * @param[in] part A part (rmf_cone_spline_transition, _part or _tangent_part).
  * @param[in] layer RMF_SHEET_LAYER_*.
  * @param[out] out Receives the surface; free with rmf_surface_free.
  * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT for an unknown layer
  *         or a handle that is not a part.
  * \since 0.2
+ * \ingroup rmf_sheet
  */
 RmfStatus rmf_cone_spline_part_surface(const struct RmfConeSpline *part,
                                        RmfSheetLayer layer,
@@ -2559,11 +3265,13 @@ RmfStatus rmf_cone_spline_part_surface(const struct RmfConeSpline *part,
  * surface's v parameter: on the designed surface within the tolerance of the input's
  * curve (exactly in its plane for transitions).
  *
+ * @param[in] part A part (rmf_cone_spline_transition, _part or _tangent_part).
  * @param[in] layer RMF_SHEET_LAYER_*.
  * @param[in] side RMF_SHEET_SIDE_FIRST or RMF_SHEET_SIDE_SECOND.
  * @param[out] out Receives the curve; free with rmf_curve_free.
  * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT for unknown codes.
  * \since 0.2
+ * \ingroup rmf_sheet
  */
 RmfStatus rmf_cone_spline_part_boundary(const struct RmfConeSpline *part,
                                         RmfSheetLayer layer,
@@ -2580,7 +3288,9 @@ RmfStatus rmf_cone_spline_part_boundary(const struct RmfConeSpline *part,
  *
  * Size query: with capacity 0 (edges may be NULL) only count is written.
  *
+ * @param[in] part A part (rmf_cone_spline_transition, _part or _tangent_part).
  * @param[out] edges Buffer for capacity edges: the outline first, then the bend lines.
+ * @param[in] capacity Capacity of edges; 0 for a size query.
  * @param[out] count Receives the number of edges.
  * @return RMF_OK on success or for a size query.
  * @return RMF_ERROR_NULL_POINTER If part or count is NULL, or edges is NULL with a
@@ -2588,6 +3298,7 @@ RmfStatus rmf_cone_spline_part_boundary(const struct RmfConeSpline *part,
  * @return RMF_ERROR_BUFFER_TOO_SMALL If capacity is non-zero but too small; count is written.
  * @return RMF_ERROR_INVALID_INPUT If the handle is not a part.
  * \since 0.2
+ * \ingroup rmf_sheet
  */
 RmfStatus rmf_cone_spline_flat_pattern(const struct RmfConeSpline *part,
                                        struct RmfFlatEdge *edges,
@@ -2603,7 +3314,9 @@ RmfStatus rmf_cone_spline_flat_pattern(const struct RmfConeSpline *part,
  * NURBS parameters), and optionally the unit normal there (from the inner to the outer
  * face).
  *
+ * @param[in] part A part (rmf_cone_spline_transition, _part or _tangent_part).
  * @param[in] flat count points of the flat pattern.
+ * @param[in] count Number of points (0: nothing to do).
  * @param[in] layer RMF_SHEET_LAYER_*.
  * @param[out] points count points on the layer.
  * @param[out] normals count unit normals, or NULL.
@@ -2613,6 +3326,7 @@ RmfStatus rmf_cone_spline_flat_pattern(const struct RmfConeSpline *part,
  *         pattern (the message names it: flat[i]), for an unknown layer, or if the handle
  *         is not a part.
  * \since 0.2
+ * \ingroup rmf_sheet
  */
 RmfStatus rmf_cone_spline_flat_to_surface(const struct RmfConeSpline *part,
                                           const struct RmfVec2 *flat,
@@ -2626,7 +3340,9 @@ RmfStatus rmf_cone_spline_flat_to_surface(const struct RmfConeSpline *part,
  * max_distance of it) to the flat pattern's point of the neutral layer straight across
  * the sheet, by the exact isometry of the development.
  *
+ * @param[in] part A part (rmf_cone_spline_transition, _part or _tangent_part).
  * @param[in] points count points on the layer.
+ * @param[in] count Number of points (0: nothing to do).
  * @param[in] layer RMF_SHEET_LAYER_*.
  * @param[in] max_distance Largest accepted distance of a point from the layer's part, ≥ 0.
  * @param[out] flat count points of the flat pattern.
@@ -2637,6 +3353,7 @@ RmfStatus rmf_cone_spline_flat_to_surface(const struct RmfConeSpline *part,
  *         max_distance is negative or not finite, the layer is unknown, or the handle is
  *         not a part.
  * \since 0.2
+ * \ingroup rmf_sheet
  */
 RmfStatus rmf_cone_spline_surface_to_flat(const struct RmfConeSpline *part,
                                           const struct RmfVec3 *points,
@@ -2652,8 +3369,10 @@ RmfStatus rmf_cone_spline_surface_to_flat(const struct RmfConeSpline *part,
  * Size query: with capacity 0 (buffer may be NULL) only length is written. Otherwise the
  * text and a terminating NUL are written if capacity ≥ length + 1.
  *
+ * @param[in] part A part (rmf_cone_spline_transition, _part or _tangent_part).
  * @param[in] format RMF_SHEET_FORMAT_*.
  * @param[out] buffer capacity bytes for the text and its NUL.
+ * @param[in] capacity Size of buffer in bytes; 0 for a size query.
  * @param[out] length Receives the length of the text (without the NUL).
  * @return RMF_OK on success or for a size query.
  * @return RMF_ERROR_NULL_POINTER If part or length is NULL, or buffer is NULL with a
@@ -2661,10 +3380,11 @@ RmfStatus rmf_cone_spline_surface_to_flat(const struct RmfConeSpline *part,
  * @return RMF_ERROR_BUFFER_TOO_SMALL If 0 < capacity ≤ length; length is written.
  * @return RMF_ERROR_INVALID_INPUT For an unknown format or a handle that is not a part.
  * \since 0.2
+ * \ingroup rmf_export
  */
 RmfStatus rmf_cone_spline_part_export(const struct RmfConeSpline *part,
                                       RmfSheetFormat format,
-                                      char *buffer_,
+                                      char *buffer,
                                       size_t capacity,
                                       size_t *length);
 
@@ -2674,6 +3394,8 @@ RmfStatus rmf_cone_spline_part_export(const struct RmfConeSpline *part,
  * @return A NUL-terminated UTF-8 string, never NULL ("" if nothing has failed yet on this
  *         thread). Owned by the library: do not free it; it stays valid until the next
  *         failing rmf_* call on the same thread.
+ * \since 0.1
+ * \ingroup rmf_foundation
  */
 const char *rmf_last_error(void);
 
@@ -2682,6 +3404,8 @@ const char *rmf_last_error(void);
  * of the header the program was compiled with when the library matches it.
  *
  * @return A static NUL-terminated string, never NULL; do not free it.
+ * \since 0.1
+ * \ingroup rmf_foundation
  */
 const char *rmf_version(void);
 
@@ -2690,11 +3414,16 @@ const char *rmf_version(void);
  *
  * @param[in] status Any integer; values that are no RmfStatus give "RMF_UNKNOWN_STATUS".
  * @return A static NUL-terminated string, never NULL; do not free it.
+ * \since 0.1
+ * \ingroup rmf_foundation
  */
 const char *rmf_status_name(uint32_t status);
 
 /**
  * Creates a surface from NURBS data.
+ *
+ * Deprecated: use rmf_nurbs_surface_create_from (the data in one struct that can grow).
+ * This function stays, with the same results, for at least one release.
  *
  * @param[in] degree_u, degree_v Degrees, each in 1..=64.
  * @param[in] poles pole_count_u * pole_count_v Cartesian poles, index i * pole_count_v + j
@@ -2710,6 +3439,8 @@ const char *rmf_status_name(uint32_t status);
  * @return RMF_ERROR_NULL_POINTER If poles, knots_u, knots_v or out is NULL.
  * @return RMF_ERROR_INVALID_INPUT If a count, degree, knot, weight or pole is invalid (the
  *         message names it).
+ * \since 0.1
+ * \ingroup rmf_surfaces
  */
 RmfStatus rmf_nurbs_surface_create(uint32_t degree_u,
                                    uint32_t degree_v,
@@ -2724,14 +3455,40 @@ RmfStatus rmf_nurbs_surface_create(uint32_t degree_u,
                                    struct RmfSurface **out);
 
 /**
+ * Creates a surface from NURBS data given in one struct, as rmf_nurbs_surface_create does.
+ *
+ * @param[in] data The NURBS data, struct_size set to sizeof(RmfNurbsSurfaceData). Degrees
+ *            and counts are checked against each other before any array is read.
+ * @param[out] out Receives the surface; free with rmf_surface_free. Untouched on failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If data, data->poles, data->knots_u, data->knots_v or out
+ *         is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If data->struct_size is no size of the struct, or a count,
+ *         degree, knot, weight or pole is invalid (the message names it: "data: ...").
+ * \since 0.2
+ * \ingroup rmf_surfaces
+ */
+RmfStatus rmf_nurbs_surface_create_from(const struct RmfNurbsSurfaceData *data,
+                                        struct RmfSurface **out);
+
+/**
  * Frees a surface. NULL is a no-op.
+ *
+ * @param[in] surface The surface to free, or NULL.
+ * \since 0.1
+ * \ingroup rmf_surfaces
  */
 void rmf_surface_free(struct RmfSurface *surface);
 
 /**
  * The parameter domain [u_min, u_max] × [v_min, v_max] of a surface.
  *
+ * @param[in] surface The surface.
+ * @param[out] u_min, u_max Receive the ends of the u domain.
+ * @param[out] v_min, v_max Receive the ends of the v domain.
  * @return RMF_OK, or RMF_ERROR_NULL_POINTER if any argument is NULL.
+ * \since 0.1
+ * \ingroup rmf_surfaces
  */
 RmfStatus rmf_surface_domain(const struct RmfSurface *surface,
                              double *u_min,
@@ -2750,6 +3507,8 @@ RmfStatus rmf_surface_domain(const struct RmfSurface *surface,
  * @return RMF_OK on success.
  * @return RMF_ERROR_NULL_POINTER If surface or point is NULL.
  * @return RMF_ERROR_INVALID_INPUT If u or v is not finite or outside the domain.
+ * \since 0.1
+ * \ingroup rmf_surfaces
  */
 RmfStatus rmf_surface_eval(const struct RmfSurface *surface,
                            double u,
@@ -2762,29 +3521,42 @@ RmfStatus rmf_surface_eval(const struct RmfSurface *surface,
  * Borrowed NURBS view of a surface: one clamped NURBS with full-multiplicity interior
  * knots at patch boundaries (for a surface made by rmf_nurbs_surface_create: the data given).
  *
+ * @param[in] surface The surface.
  * @param[out] view Receives pointers owned by the surface: do not free them; valid until
  *             rmf_surface_free(surface).
  * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if the patches do not
  *         join into one continuous NURBS (Frenet frame vectors and Frenet sweeps along a G1
  *         spline jump at the joints); rmf_surface_patch still gives every piece.
+ * \since 0.1
+ * \ingroup rmf_surfaces
  */
 RmfStatus rmf_surface_nurbs(const struct RmfSurface *surface, struct RmfNurbsSurface *view);
 
 /**
  * Copies the NURBS data of a surface (as in rmf_surface_nurbs) into caller buffers.
  *
+ * Deprecated: use rmf_surface_nurbs_copy_into (the buffers in one struct that can grow,
+ * the degrees and counts in an RmfNurbsSurface). This function stays, with the same
+ * results, for at least one release.
+ *
  * Size query: with pole_capacity = knot_capacity_u = knot_capacity_v = 0 (buffers may then
  * be NULL) only the degrees and counts are written and RMF_OK is returned.
  *
+ * @param[in] surface The surface.
  * @param[out] degree_u, degree_v Receive the degrees.
  * @param[out] poles, weights Buffers for pole_capacity poles and weights (index i * pole_count_v + j).
+ * @param[in] pole_capacity Capacity of poles and weights.
  * @param[out] knots_u, knots_v Buffers for knot_capacity_u and knot_capacity_v knots.
+ * @param[in] knot_capacity_u Capacity of knots_u.
+ * @param[in] knot_capacity_v Capacity of knots_v.
  * @param[out] pole_count_u, pole_count_v, knot_count_u, knot_count_v Receive the counts.
  * @return RMF_OK on success or for a size query.
  * @return RMF_ERROR_NULL_POINTER If surface, a degree or a count pointer is NULL, or a
  *         buffer is NULL with a non-zero capacity.
  * @return RMF_ERROR_BUFFER_TOO_SMALL If a capacity is too small; then only the degrees and
  *         counts are written.
+ * \since 0.1
+ * \ingroup rmf_surfaces
  */
 RmfStatus rmf_surface_nurbs_copy(const struct RmfSurface *surface,
                                  uint32_t *degree_u,
@@ -2802,9 +3574,38 @@ RmfStatus rmf_surface_nurbs_copy(const struct RmfSurface *surface,
                                  size_t *knot_count_v);
 
 /**
+ * Copies the NURBS data of a surface (as in rmf_surface_nurbs) into the caller's buffers,
+ * as rmf_surface_nurbs_copy does, and describes the copy.
+ *
+ * Size query: with all capacities 0 (the buffers may then be NULL) only the degrees and
+ * counts are written to `copy` (its pointers NULL) and RMF_OK is returned.
+ *
+ * @param[in] surface The surface.
+ * @param[in] buffers The caller's buffers and their capacities, struct_size set.
+ * @param[out] copy Receives the degrees and counts, and pointers to the caller's buffers
+ *             now holding the poles, weights and knots (NULL after a size query).
+ * @return RMF_OK on success or for a size query.
+ * @return RMF_ERROR_NULL_POINTER If surface, buffers or copy is NULL, or a buffer is NULL
+ *         with a non-zero capacity (the message names it: buffers->poles, ...).
+ * @return RMF_ERROR_INVALID_INPUT If buffers->struct_size is no size of the struct, or the
+ *         patches do not join into one continuous NURBS (as for rmf_surface_nurbs).
+ * @return RMF_ERROR_BUFFER_TOO_SMALL If a capacity is non-zero but too small; then the
+ *         degrees and counts are written to `copy`, with NULL pointers.
+ * \since 0.2
+ * \ingroup rmf_surfaces
+ */
+RmfStatus rmf_surface_nurbs_copy_into(const struct RmfSurface *surface,
+                                      const struct RmfNurbsSurfaceBuffers *buffers,
+                                      struct RmfNurbsSurface *copy);
+
+/**
  * Numbers of Bézier patches of a surface along u and along v.
  *
+ * @param[in] surface The surface.
+ * @param[out] count_u, count_v Receive the numbers of patches along u and v.
  * @return RMF_OK, or RMF_ERROR_NULL_POINTER if any argument is NULL.
+ * \since 0.1
+ * \ingroup rmf_surfaces
  */
 RmfStatus rmf_surface_patch_count(const struct RmfSurface *surface,
                                   size_t *count_u,
@@ -2813,8 +3614,13 @@ RmfStatus rmf_surface_patch_count(const struct RmfSurface *surface,
 /**
  * Borrowed view of patch (index_u, index_v) of a surface as a rational Bézier patch.
  *
+ * @param[in] surface The surface.
+ * @param[in] index_u 0 ≤ index_u < patch count along u.
+ * @param[in] index_v 0 ≤ index_v < patch count along v.
  * @param[out] view Receives pointers owned by the surface (valid until it is freed).
  * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if an index is out of range.
+ * \since 0.1
+ * \ingroup rmf_surfaces
  */
 RmfStatus rmf_surface_patch(const struct RmfSurface *surface,
                             size_t index_u,
@@ -2846,6 +3652,8 @@ RmfStatus rmf_surface_patch(const struct RmfSurface *surface,
  *         50,000,000 points.
  * @return RMF_ERROR_BUFFER_TOO_SMALL If a capacity is too small; then only the counts are
  *         written.
+ * \since 0.1
+ * \ingroup rmf_surfaces
  */
 RmfStatus rmf_surface_tessellate(const struct RmfSurface *surface,
                                  uint32_t u_steps,
@@ -2875,6 +3683,8 @@ RmfStatus rmf_surface_tessellate(const struct RmfSurface *surface,
  * @return RMF_ERROR_NULL_POINTER If an argument is NULL.
  * @return RMF_ERROR_INVALID_INPUT If the frames are not rational or do not belong to the
  *         spine, or the surface would have more than 2^22 (4,194,304) control points.
+ * \since 0.1
+ * \ingroup rmf_sweeps
  */
 RmfStatus rmf_sweep_surface(const struct RmfCurve *spine,
                             const struct RmfFrames *frames,
@@ -2887,6 +3697,7 @@ RmfStatus rmf_sweep_surface(const struct RmfCurve *spine,
  * @param[out] options Receives the defaults (see RmfWireSweepOptions).
  * @return RMF_OK, or RMF_ERROR_NULL_POINTER if options is NULL.
  * \since 0.2
+ * \ingroup rmf_wire
  */
 RmfStatus rmf_wire_sweep_options_init(struct RmfWireSweepOptions *options);
 
@@ -2931,6 +3742,7 @@ RmfStatus rmf_wire_sweep_options_init(struct RmfWireSweepOptions *options);
  * @return RMF_ERROR_NO_SOLUTION / RMF_ERROR_NOT_CONVERGED If a curve edge admits no PH
  *         cubic spline within the tolerance (e.g. a cusp).
  * \since 0.2
+ * \ingroup rmf_wire
  */
 RmfStatus rmf_wire_sweep(const struct RmfEdge *edges,
                          size_t edge_count,

@@ -22,9 +22,13 @@ pub const MAX_COORDINATE: f64 = 1e300;
 /// One segment's G1 Hermite data: end points and unit end tangents.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct HermiteSegment {
+    /// The start point.
     pub p0: DVec3,
+    /// The unit tangent at the start.
     pub t0: DVec3,
+    /// The end point.
     pub p1: DVec3,
+    /// The unit tangent at the end.
     pub t1: DVec3,
 }
 

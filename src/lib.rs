@@ -41,6 +41,9 @@
 //! The geometry lives in safe Rust and knows nothing of C; the C ABI (`librmfsurf`,
 //! `include/rmfsurf.h`) is the crate `rmfsurf-capi`, built on this crate's public API.
 
+// Every public item says what it is: the facade is the book a newcomer reads.
+#![warn(missing_docs)]
+
 mod bezier;
 mod cone_spline;
 mod curve;

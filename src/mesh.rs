@@ -16,10 +16,13 @@ pub const MAX_MESH_POINTS: usize = 50_000_000;
 /// at index `i * columns + j`, i along u.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TriangleMesh {
+    /// rows · columns points, point (i, j) at `i * columns + j`.
     pub points: Vec<DVec3>,
     /// Counter-clockwise seen from the side s_u × s_v points to.
     pub triangles: Vec<[u32; 3]>,
+    /// Number of grid rows (along u).
     pub rows: usize,
+    /// Number of grid columns (along v).
     pub columns: usize,
 }
 

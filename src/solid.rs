@@ -26,7 +26,9 @@ const CLOSURE_TOLERANCE: f64 = 1e-9;
 /// A closed polygon mesh; every face counter-clockwise seen from outside.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ClosedMesh {
+    /// The vertices.
     pub points: Vec<DVec3>,
+    /// The faces as vertex indices, counter-clockwise from outside.
     pub faces: Vec<Vec<u32>>,
 }
 

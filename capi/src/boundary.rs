@@ -190,6 +190,8 @@ pub(crate) unsafe fn buffer<'a, T>(
 pub(crate) unsafe trait OptionsStruct: Copy + Default {
     /// The size of the first published version of the struct.
     const FIRST_SIZE: usize;
+    /// How a caller sets `struct_size` right (the end of the message refusing it).
+    const SIZE_HINT: &'static str = "initialise it with its rmf_*_options_init function";
 }
 
 /// The caller's options, or the defaults where `options` is NULL.
@@ -208,10 +210,10 @@ pub(crate) unsafe fn options<T: OptionsStruct>(
     let size = options.cast::<usize>().read();
     if size < T::FIRST_SIZE || size > std::mem::size_of::<T>() {
         return invalid_arg(format!(
-            "{name}->struct_size = {size} is no size of this struct ({} to {} bytes): \
-             initialise it with its rmf_*_options_init function",
+            "{name}->struct_size = {size} is no size of this struct ({} to {} bytes): {}",
             T::FIRST_SIZE,
-            std::mem::size_of::<T>()
+            std::mem::size_of::<T>(),
+            T::SIZE_HINT
         ));
     }
     std::ptr::copy_nonoverlapping(

@@ -5,7 +5,7 @@
 
 use super::boundary::{
     buffer, free_handle, guard, invalid_arg, optional_out, out_ptr, reference, slice, write,
-    FfiError, FfiResult,
+    FfiError, FfiResult, OptionsStruct,
 };
 use super::curve::RmfCurve;
 use super::input::{curve_or_callback, RmfCurveCallback};
@@ -15,7 +15,7 @@ use super::types::RmfVec3;
 use rmfsurf::glam::DVec4;
 use rmfsurf::{
     approximate_developable, osculating_spline, ConePiece, ConeSpline, DualDevelopable, Element,
-    PairCase, PieceKind, Region, Rule, RuledSurface, TangentSurface,
+    PairCase, ParametricCurve, PieceKind, Region, Rule, RuledSurface, TangentSurface,
 };
 use std::ffi::c_void;
 
@@ -23,6 +23,7 @@ use std::ffi::c_void;
 /// plane spanned by `ruling` and `side`. `side` is normal to `ruling` and points to where the
 /// next piece attaches; the normal ruling × side must point to one side of the surface all
 /// along a sequence. Directions need not be unit vectors.
+/// \ingroup rmf_cone_spline
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct RmfConeElement {
@@ -36,53 +37,73 @@ pub struct RmfConeElement {
 }
 
 /// An axis-aligned box min ≤ x ≤ max: the region of interest Ω.
+/// \ingroup rmf_cone_spline
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct RmfBox {
+    /// The corner with the smallest coordinates.
     pub min: RmfVec3,
+    /// The corner with the largest coordinates.
     pub max: RmfVec3,
 }
 
 /// rule of a cone pair: locally minimal vertex distance (12), the useful root. For
 /// intersecting or parallel rulings (cone and cylinder cases): the biarc with equal legs.
+/// \ingroup rmf_cone_spline
 pub const RMF_CONE_RULE_MIN_VERTEX_DISTANCE: u32 = 0;
 /// rule of a cone pair: congruent cones, μ1 = μ2 (cone and cylinder cases: equal legs).
+/// \ingroup rmf_cone_spline
 pub const RMF_CONE_RULE_CONGRUENT: u32 = 1;
 /// rule of a cone pair: the first segment a cylinder (10).
+/// \ingroup rmf_cone_spline
 pub const RMF_CONE_RULE_CYLINDER_FIRST: u32 = 2;
 /// rule of a cone pair: the second segment a cylinder.
+/// \ingroup rmf_cone_spline
 pub const RMF_CONE_RULE_CYLINDER_SECOND: u32 = 3;
 /// rule of a cone pair: the given parameter: μ1 (vertex v1 = a1 + μ1 e1 on the first
 /// ruling, a1 where it touches the inscribed sphere or meets the plane π), or λ1 (the first
 /// leg of the biarc) in the cone and cylinder cases.
+/// \ingroup rmf_cone_spline
 pub const RMF_CONE_RULE_GIVEN: u32 = 4;
 
 /// RmfConePiece.kind: a segment of a right circular cone.
+/// \ingroup rmf_cone_spline
 pub const RMF_CONE_PIECE_CONE: u32 = 0;
 /// RmfConePiece.kind: a segment of a cylinder of revolution.
+/// \ingroup rmf_cone_spline
 pub const RMF_CONE_PIECE_CYLINDER: u32 = 1;
 /// RmfConePiece.kind: a plane sector (has a vertex) or a plane strip (parallel rulings).
+/// \ingroup rmf_cone_spline
 pub const RMF_CONE_PIECE_PLANE: u32 = 2;
 
 /// RmfConePiece.pair_case: general case (skew rulings, inscribed sphere).
+/// \ingroup rmf_cone_spline
 pub const RMF_CONE_CASE_GENERAL: u32 = 0;
 /// RmfConePiece.pair_case: the rulings intersect (common vertex).
+/// \ingroup rmf_cone_spline
 pub const RMF_CONE_CASE_CONE: u32 = 1;
 /// RmfConePiece.pair_case: parallel rulings.
+/// \ingroup rmf_cone_spline
 pub const RMF_CONE_CASE_CYLINDER: u32 = 2;
 /// RmfConePiece.pair_case: constant slope, det(p1, p2, n1 − n2) = 0 (13).
+/// \ingroup rmf_cone_spline
 pub const RMF_CONE_CASE_CONSTANT_SLOPE: u32 = 3;
 /// RmfConePiece.pair_case: equal tangent planes (one plane piece).
+/// \ingroup rmf_cone_spline
 pub const RMF_CONE_CASE_PLANE: u32 = 4;
 /// RmfConePiece.pair_case: not made by a cone pair (osculating cone splines).
+/// \ingroup rmf_cone_spline
 pub const RMF_CONE_CASE_NONE: u32 = 5;
 
 /// rmf_cone_spline_fit_parameters: the parameters of the selected rulings.
+/// \ingroup rmf_cone_spline
 pub const RMF_CONE_FIT_ELEMENTS: u32 = 0;
 /// rmf_cone_spline_fit_parameters: the parameters of the inflection generators found.
+/// \ingroup rmf_cone_spline
 pub const RMF_CONE_FIT_INFLECTIONS: u32 = 1;
 
 /// The data of one piece of a cone spline.
+/// \ingroup rmf_cone_spline
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct RmfConePiece {
@@ -109,18 +130,23 @@ pub struct RmfConePiece {
     pub radius: f64,
     /// Width of the developed piece along its side for cylinders (r φ) and strips; else 0.
     pub developed_width: f64,
-    /// The bounding rulings: reference point, unit direction and unit side vector at the
-    /// start and at the end of the piece.
+    /// The bounding ruling at the start of the piece: its reference point.
     pub start_point: RmfVec3,
+    /// The start ruling's unit direction.
     pub start_ruling: RmfVec3,
+    /// The start ruling's unit side vector (in the tangent plane, normal to the ruling).
     pub start_side: RmfVec3,
+    /// The bounding ruling at the end of the piece: its reference point.
     pub end_point: RmfVec3,
+    /// The end ruling's unit direction.
     pub end_ruling: RmfVec3,
+    /// The end ruling's unit side vector.
     pub end_side: RmfVec3,
     /// The piece's patches in the surface (rmf_cone_spline_surface): patch indices
     /// first_patch .. first_patch + patch_count − 1 along v; the piece spans
     /// v ∈ [index, index + 1].
     pub first_patch: usize,
+    /// The number of the piece's patches (more than one for segment angles above 120°).
     pub patch_count: usize,
 }
 
@@ -133,6 +159,7 @@ struct Fit {
 
 /// A cone spline surface (opaque). Freed with rmf_cone_spline_free. Immutable; may be read
 /// from several threads at once.
+/// \ingroup rmf_cone_spline
 pub struct RmfConeSpline {
     pub(crate) spline: ConeSpline,
     /// The pair case of each piece (RMF_CONE_CASE_*).
@@ -228,6 +255,8 @@ fn region_from(region: &RmfBox) -> FfiResult<Region> {
 ///         opposite sides), the rule is unknown, or an element point is outside the region.
 /// @return RMF_ERROR_NO_SOLUTION If no cone pair of the rule joins two elements
 ///         consistently, or the region contains every possible vertex.
+/// \since 0.1
+/// \ingroup rmf_cone_spline
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_hermite(
     elements: *const RmfConeElement,
@@ -320,6 +349,10 @@ fn check_fit_arguments(tolerance: f64, max_pieces: usize) -> FfiResult {
 /// junctions, further rulings are chosen adaptively until the largest distance from the
 /// surface's region to the cone spline is ≤ tolerance.
 ///
+/// Deprecated: use rmf_cone_spline_approximate_with_options (a callback as a curve from
+/// rmf_callback_curve_create, the tolerance, rule and piece cap in an options struct that
+/// can grow). This function stays, with the same results, for at least one release.
+///
 /// The curve is `curve` (its whole domain), or `callback` on [t_min, t_max]; exactly one of
 /// them. It must be regular with non-zero curvature.
 ///
@@ -342,6 +375,8 @@ fn check_fit_arguments(tolerance: f64, max_pieces: usize) -> FfiResult {
 ///         unknown rule.
 /// @return RMF_ERROR_NO_SOLUTION If the curve has zero curvature somewhere (no tangent plane).
 /// @return RMF_ERROR_NOT_CONVERGED If the tolerance needs more than max_pieces pieces.
+/// \since 0.1
+/// \ingroup rmf_cone_spline
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn rmf_cone_spline_approximate(
@@ -364,13 +399,173 @@ pub unsafe extern "C" fn rmf_cone_spline_approximate(
         let input = curve_or_callback(curve, callback, user, t_min, t_max)?;
         check_fit_arguments(tolerance, max_pieces)?;
         let rule = fit_rule(rule)?;
-        let surface = TangentSurface::new(input.as_ref(), v_min, v_max)?;
-        finish_fit(
-            approximate_developable(&surface, tolerance, rule, max_pieces)?,
+        approximate_tangent_surface(
+            input.as_ref(),
+            v_min,
+            v_max,
+            tolerance,
+            rule,
+            max_pieces,
             out,
             max_error,
-        );
+        )
+    })
+}
+
+/// The tangent-surface approximation both C entry points run.
+///
+/// # Safety
+/// `out` and `max_error` (if given) are valid for writes.
+#[allow(clippy::too_many_arguments)]
+unsafe fn approximate_tangent_surface(
+    curve: &dyn ParametricCurve,
+    v_min: f64,
+    v_max: f64,
+    tolerance: f64,
+    rule: Rule,
+    max_pieces: usize,
+    out: *mut *mut RmfConeSpline,
+    max_error: Option<*mut f64>,
+) -> FfiResult {
+    let surface = TangentSurface::new(curve, v_min, v_max)?;
+    finish_fit(
+        approximate_developable(&surface, tolerance, rule, max_pieces)?,
+        out,
+        max_error,
+    );
+    Ok(())
+}
+
+/// How rmf_cone_spline_approximate_with_options and
+/// rmf_cone_spline_approximate_dual_with_options fit: the tolerance, the rule of the cone
+/// pairs and the most pieces. Initialise with rmf_cone_approximation_options_init, then set
+/// the tolerance; the struct only grows at the end.
+/// \since 0.2
+/// \ingroup rmf_cone_spline
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RmfConeApproximationOptions {
+    /// sizeof(RmfConeApproximationOptions), written by rmf_cone_approximation_options_init.
+    pub struct_size: usize,
+    /// Largest allowed distance between the surface's region and the cone spline, in the
+    /// input's units, > 0. Default 0, which is refused: set it.
+    pub tolerance: f64,
+    /// One of RMF_CONE_RULE_* except RMF_CONE_RULE_GIVEN (default
+    /// RMF_CONE_RULE_MIN_VERTEX_DISTANCE).
+    pub rule: u32,
+    /// Most pieces, ≥ 2 (default 100000); more are RMF_ERROR_NOT_CONVERGED.
+    pub max_pieces: usize,
+}
+
+/// The piece cap of RmfConeApproximationOptions, as for sheet-metal parts (RmfSheetOptions).
+const DEFAULT_MAX_PIECES: usize = 100_000;
+
+impl Default for RmfConeApproximationOptions {
+    fn default() -> Self {
+        Self {
+            struct_size: std::mem::size_of::<Self>(),
+            tolerance: 0.0,
+            rule: RMF_CONE_RULE_MIN_VERTEX_DISTANCE,
+            max_pieces: DEFAULT_MAX_PIECES,
+        }
+    }
+}
+
+// SAFETY: repr(C) plain numbers, usize first.
+unsafe impl OptionsStruct for RmfConeApproximationOptions {
+    const FIRST_SIZE: usize = std::mem::size_of::<Self>();
+}
+
+/// Writes the default cone approximation options (struct_size set, tolerance 0: set it).
+///
+/// @param[out] out Receives the defaults.
+/// @return RMF_OK, or RMF_ERROR_NULL_POINTER if out is NULL.
+/// \since 0.2
+/// \ingroup rmf_cone_spline
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_approximation_options_init(
+    out: *mut RmfConeApproximationOptions,
+) -> RmfStatus {
+    guard("rmf_cone_approximation_options_init", || {
+        let out = out_ptr(out, "out")?;
+        write(out, RmfConeApproximationOptions::default());
         Ok(())
+    })
+}
+
+/// The caller's fit options, checked: NULL is refused (the tolerance has no default), and
+/// a refused field is named "options: ...".
+///
+/// # Safety
+/// `options` is NULL or points to at least its `struct_size` readable bytes.
+unsafe fn fit_options(
+    options: *const RmfConeApproximationOptions,
+) -> FfiResult<(f64, Rule, usize)> {
+    if options.is_null() {
+        return Err(FfiError::Null("options"));
+    }
+    let given = super::boundary::options(options, "options")?;
+    let checked = check_fit_arguments(given.tolerance, given.max_pieces)
+        .and_then(|()| fit_rule(given.rule))
+        .map_err(|e| match e {
+            FfiError::Core(e) => FfiError::Core(e.context("options")),
+            other => other,
+        })?;
+    Ok((given.tolerance, checked, given.max_pieces))
+}
+
+/// Approximates the tangent surface x(t) + v e(t) of a curve (e = x'/|x'|) over
+/// v ∈ [v_min, v_max] by a cone spline, as rmf_cone_spline_approximate does: inflection
+/// generators (zero torsion) are kept as junctions, further rulings are chosen adaptively
+/// until the largest distance from the surface's region to the cone spline is ≤ the
+/// tolerance. The curve must be regular with non-zero curvature.
+///
+/// @param[in] curve A curve on its whole domain: NURBS data, a computed curve, or an
+///            analytic curve from rmf_callback_curve_create.
+/// @param[in] v_min, v_max The region along the rulings, distances from the curve point:
+///            finite, v_min < v_max, 0 ∉ [v_min, v_max] (the curve is the singular edge).
+/// @param[in] options Tolerance, rule and piece cap (initialise with
+///            rmf_cone_approximation_options_init, then set the tolerance).
+/// @param[out] out Receives the spline; free with rmf_cone_spline_free. Its reference
+///             point is x(t_min) + (v_min + v_max)/2 e(t_min), t_min the domain's start.
+///             Untouched on failure.
+/// @param[out] max_error Receives the largest sampled distance; may be NULL. Untouched on
+///             failure.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If curve, options or out is NULL.
+/// @return RMF_ERROR_INVALID_INPUT If options->struct_size is no size of the struct, the
+///         tolerance is not finite and positive, max_pieces < 2, the rule is unknown or
+///         RMF_CONE_RULE_GIVEN (the message names the field: "options: tolerance = ..."),
+///         or v_min, v_max are bad.
+/// @return RMF_ERROR_NO_SOLUTION If the curve has zero curvature somewhere (no tangent plane).
+/// @return RMF_ERROR_NOT_CONVERGED If the tolerance needs more than max_pieces pieces.
+/// \since 0.2
+/// \ingroup rmf_cone_spline
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_approximate_with_options(
+    curve: *const RmfCurve,
+    v_min: f64,
+    v_max: f64,
+    options: *const RmfConeApproximationOptions,
+    out: *mut *mut RmfConeSpline,
+    max_error: *mut f64,
+) -> RmfStatus {
+    guard("rmf_cone_spline_approximate_with_options", || {
+        let curve = reference(curve, "curve")?;
+        let (tolerance, rule, max_pieces) = fit_options(options)?;
+        let out = out_ptr(out, "out")?;
+        let max_error = optional_out(max_error, "max_error")?;
+        let input = curve.sampled();
+        approximate_tangent_surface(
+            input.as_ref(),
+            v_min,
+            v_max,
+            tolerance,
+            rule,
+            max_pieces,
+            out,
+            max_error,
+        )
     })
 }
 
@@ -398,6 +593,8 @@ fn fit_rule(rule: u32) -> FfiResult<Rule> {
 /// @return RMF_ERROR_INVALID_INPUT If the surface is not of degree 1 in u with one span, or
 ///         is not developable (the message gives its max |K|·size²), or for bad numbers.
 /// @return RMF_ERROR_NO_SOLUTION, RMF_ERROR_NOT_CONVERGED As for rmf_cone_spline_approximate.
+/// \since 0.1
+/// \ingroup rmf_cone_spline
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_approximate_ruled(
     surface: *const RmfSurface,
@@ -427,10 +624,15 @@ pub unsafe extern "C" fn rmf_cone_spline_approximate_ruled(
 /// B-spline curve of planes U(t) = Σ Uᵢ Nᵢ(t), u0 + u1 x + u2 y + u3 z = 0, whose rulings
 /// are U ∩ U'. The region of interest is a box; each ruling is used where it crosses it.
 ///
+/// Deprecated: use rmf_cone_spline_approximate_dual_with_options (the tolerance, rule and
+/// piece cap in an options struct that can grow). This function stays, with the same
+/// results, for at least one release.
+///
 /// @param[in] degree Degree k ≥ 1 of the B-spline.
 /// @param[in] planes plane_count control planes, 4 doubles each: u0, u1, u2, u3.
 /// @param[in] plane_count Number of control planes, ≥ degree + 1.
 /// @param[in] knots knot_count clamped knots, knot_count = plane_count + degree + 1.
+/// @param[in] knot_count Number of knots, plane_count + degree + 1.
 /// @param[in] region The region of interest; every ruling must cross it, and it should
 ///            exclude the line of regression.
 /// @param[in] tolerance, rule, max_pieces As for rmf_cone_spline_approximate.
@@ -441,6 +643,8 @@ pub unsafe extern "C" fn rmf_cone_spline_approximate_ruled(
 /// @return RMF_ERROR_INVALID_INPUT For bad counts, knots, non-finite planes or numbers.
 /// @return RMF_ERROR_NO_SOLUTION If a ruling misses the box or U and U' are parallel.
 /// @return RMF_ERROR_NOT_CONVERGED If the tolerance needs more than max_pieces pieces.
+/// \since 0.1
+/// \ingroup rmf_cone_spline
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn rmf_cone_spline_approximate_dual(
@@ -459,23 +663,90 @@ pub unsafe extern "C" fn rmf_cone_spline_approximate_dual(
     guard("rmf_cone_spline_approximate_dual", || {
         let out = out_ptr(out, "out")?;
         let max_error = optional_out(max_error, "max_error")?;
-        if planes.is_null() {
-            return Err(FfiError::Null("planes"));
-        }
-        if knots.is_null() {
-            return Err(FfiError::Null("knots"));
-        }
-        let region = region_from(reference(region, "region")?)?;
-        let Some(values) = plane_count.checked_mul(4) else {
-            return invalid_arg(format!("plane_count = {plane_count} is too large"));
-        };
-        let planes: Vec<DVec4> = slice(planes, values, "planes")?
-            .chunks_exact(4)
-            .map(|u| DVec4::new(u[1], u[2], u[3], u[0]))
-            .collect();
-        let knots = slice(knots, knot_count, "knots")?;
+        let (planes, knots, region) = dual_input(planes, plane_count, knots, knot_count, region)?;
         check_fit_arguments(tolerance, max_pieces)?;
         let rule = fit_rule(rule)?;
+        let dual = DualDevelopable::new(degree as usize, &planes, knots, region)?;
+        finish_fit(
+            approximate_developable(&dual, tolerance, rule, max_pieces)?,
+            out,
+            max_error,
+        );
+        Ok(())
+    })
+}
+
+/// The planes (as DVec4 (u1, u2, u3, u0)), knots and region of a dual-form input, checked.
+///
+/// # Safety
+/// The pointers are NULL or valid for the counts given.
+unsafe fn dual_input<'a>(
+    planes: *const f64,
+    plane_count: usize,
+    knots: *const f64,
+    knot_count: usize,
+    region: *const RmfBox,
+) -> FfiResult<(Vec<DVec4>, &'a [f64], Region)> {
+    if planes.is_null() {
+        return Err(FfiError::Null("planes"));
+    }
+    if knots.is_null() {
+        return Err(FfiError::Null("knots"));
+    }
+    let region = region_from(reference(region, "region")?)?;
+    let Some(values) = plane_count.checked_mul(4) else {
+        return invalid_arg(format!("plane_count = {plane_count} is too large"));
+    };
+    let planes: Vec<DVec4> = slice(planes, values, "planes")?
+        .chunks_exact(4)
+        .map(|u| DVec4::new(u[1], u[2], u[3], u[0]))
+        .collect();
+    let knots = slice(knots, knot_count, "knots")?;
+    Ok((planes, knots, region))
+}
+
+/// Approximates a developable surface in the dual form (4) of the paper by a cone spline,
+/// as rmf_cone_spline_approximate_dual does, with the tolerance, rule and piece cap in an
+/// options struct.
+///
+/// @param[in] degree Degree k ≥ 1 of the B-spline of planes.
+/// @param[in] planes plane_count control planes, 4 doubles each: u0, u1, u2, u3.
+/// @param[in] plane_count Number of control planes, ≥ degree + 1.
+/// @param[in] knots knot_count clamped knots.
+/// @param[in] knot_count Number of knots, plane_count + degree + 1.
+/// @param[in] region The region of interest; every ruling must cross it, and it should
+///            exclude the line of regression.
+/// @param[in] options Tolerance, rule and piece cap (initialise with
+///            rmf_cone_approximation_options_init, then set the tolerance).
+/// @param[out] out Receives the spline; free with rmf_cone_spline_free. Untouched on failure.
+/// @param[out] max_error Receives the largest sampled distance; may be NULL.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If planes, knots, region, options or out is NULL.
+/// @return RMF_ERROR_INVALID_INPUT If options->struct_size is no size of the struct, a field
+///         of options is refused (the message names it), or for bad counts, knots,
+///         non-finite planes or numbers.
+/// @return RMF_ERROR_NO_SOLUTION If a ruling misses the box or U and U' are parallel.
+/// @return RMF_ERROR_NOT_CONVERGED If the tolerance needs more than max_pieces pieces.
+/// \since 0.2
+/// \ingroup rmf_cone_spline
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn rmf_cone_spline_approximate_dual_with_options(
+    degree: u32,
+    planes: *const f64,
+    plane_count: usize,
+    knots: *const f64,
+    knot_count: usize,
+    region: *const RmfBox,
+    options: *const RmfConeApproximationOptions,
+    out: *mut *mut RmfConeSpline,
+    max_error: *mut f64,
+) -> RmfStatus {
+    guard("rmf_cone_spline_approximate_dual_with_options", || {
+        let (planes, knots, region) = dual_input(planes, plane_count, knots, knot_count, region)?;
+        let (tolerance, rule, max_pieces) = fit_options(options)?;
+        let out = out_ptr(out, "out")?;
+        let max_error = optional_out(max_error, "max_error")?;
         let dual = DualDevelopable::new(degree as usize, &planes, knots, region)?;
         finish_fit(
             approximate_developable(&dual, tolerance, rule, max_pieces)?,
@@ -492,6 +763,10 @@ pub unsafe extern "C" fn rmf_cone_spline_approximate_dual(
 /// quartic (14), keeping the consistent solutions. Consecutive parameters must be close
 /// enough for a consistent filling cone to exist.
 ///
+/// Deprecated: use rmf_cone_spline_osculating_curve (a callback as a curve from
+/// rmf_callback_curve_create). This function stays, with the same results, for at least one
+/// release.
+///
 /// @param[in] curve, callback, user, t_min, t_max The curve, as for rmf_cone_spline_approximate.
 /// @param[in] v_min, v_max The region along the rulings, as for rmf_cone_spline_approximate.
 /// @param[in] parameters count increasing curve parameters inside the domain.
@@ -502,6 +777,8 @@ pub unsafe extern "C" fn rmf_cone_spline_approximate_dual(
 /// @return RMF_ERROR_INVALID_INPUT For bad numbers or parameters not increasing.
 /// @return RMF_ERROR_NO_SOLUTION If two consecutive osculating cones cannot be joined
 ///         consistently, or an osculating cone is a cylinder (zero curvature of the curve).
+/// \since 0.1
+/// \ingroup rmf_cone_spline
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn rmf_cone_spline_osculating(
@@ -523,31 +800,89 @@ pub unsafe extern "C" fn rmf_cone_spline_osculating(
         }
         let parameters = slice(parameters, count, "parameters")?;
         let input = curve_or_callback(curve, callback, user, t_min, t_max)?;
-        let (lo, hi) = input.domain();
-        if let Some(i) = parameters.iter().position(|t| !(lo..=hi).contains(t)) {
-            return invalid_arg(format!(
-                "parameters[{i}] = {} is outside the domain [{lo}, {hi}]",
-                parameters[i]
-            ));
+        osculating(input.as_ref(), v_min, v_max, parameters, out)
+    })
+}
+
+/// The osculating cone spline both C entry points build.
+///
+/// # Safety
+/// `out` is valid for writes.
+unsafe fn osculating(
+    curve: &dyn ParametricCurve,
+    v_min: f64,
+    v_max: f64,
+    parameters: &[f64],
+    out: *mut *mut RmfConeSpline,
+) -> FfiResult {
+    let (lo, hi) = curve.domain();
+    if let Some(i) = parameters.iter().position(|t| !(lo..=hi).contains(t)) {
+        return invalid_arg(format!(
+            "parameters[{i}] = {} is outside the domain [{lo}, {hi}]",
+            parameters[i]
+        ));
+    }
+    let surface = TangentSurface::new(curve, v_min, v_max)?;
+    let spline = osculating_spline(&surface, parameters)?;
+    let cases = vec![RMF_CONE_CASE_NONE; spline.pieces().len()];
+    write(
+        out,
+        RmfConeSpline {
+            spline,
+            cases,
+            fit: None,
+            part: None,
         }
-        let surface = TangentSurface::new(input.as_ref(), v_min, v_max)?;
-        let spline = osculating_spline(&surface, parameters)?;
-        let cases = vec![RMF_CONE_CASE_NONE; spline.pieces().len()];
-        write(
-            out,
-            RmfConeSpline {
-                spline,
-                cases,
-                fit: None,
-                part: None,
-            }
-            .into_raw(),
-        );
-        Ok(())
+        .into_raw(),
+    );
+    Ok(())
+}
+
+/// The osculating cone spline of the tangent surface of a curve, as
+/// rmf_cone_spline_osculating builds it, with the curve as one handle (an analytic curve
+/// from rmf_callback_curve_create instead of a callback and its interval).
+///
+/// @param[in] curve A curve on its whole domain (NURBS data, a computed curve or a callback
+///            curve).
+/// @param[in] v_min, v_max The region along the rulings, as for
+///            rmf_cone_spline_approximate_with_options.
+/// @param[in] parameters count increasing curve parameters inside the domain.
+/// @param[in] count Number of osculating cones, ≥ 2.
+/// @param[out] out Receives the spline; free with rmf_cone_spline_free. Untouched on failure.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If curve, parameters or out is NULL.
+/// @return RMF_ERROR_INVALID_INPUT For bad numbers or parameters not increasing or outside
+///         the domain.
+/// @return RMF_ERROR_NO_SOLUTION If two consecutive osculating cones cannot be joined
+///         consistently, or an osculating cone is a cylinder (zero curvature of the curve).
+/// \since 0.2
+/// \ingroup rmf_cone_spline
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_osculating_curve(
+    curve: *const RmfCurve,
+    v_min: f64,
+    v_max: f64,
+    parameters: *const f64,
+    count: usize,
+    out: *mut *mut RmfConeSpline,
+) -> RmfStatus {
+    guard("rmf_cone_spline_osculating_curve", || {
+        let curve = reference(curve, "curve")?;
+        let out = out_ptr(out, "out")?;
+        if parameters.is_null() {
+            return Err(FfiError::Null("parameters"));
+        }
+        let parameters = slice(parameters, count, "parameters")?;
+        let input = curve.sampled();
+        osculating(input.as_ref(), v_min, v_max, parameters, out)
     })
 }
 
 /// Frees a cone spline. NULL is a no-op.
+///
+/// @param[in] spline The spline to free, or NULL.
+/// \since 0.1
+/// \ingroup rmf_cone_spline
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_free(spline: *mut RmfConeSpline) {
     free_handle(spline)
@@ -555,7 +890,11 @@ pub unsafe extern "C" fn rmf_cone_spline_free(spline: *mut RmfConeSpline) {
 
 /// The number of pieces of a cone spline.
 ///
+/// @param[in] spline The spline.
+/// @param[out] count Receives the number of pieces.
 /// @return RMF_OK, or RMF_ERROR_NULL_POINTER if spline or count is NULL.
+/// \since 0.1
+/// \ingroup rmf_cone_spline
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_piece_count(
     spline: *const RmfConeSpline,
@@ -615,6 +954,8 @@ fn piece_data(piece: &ConePiece, case: u32, first_patch: usize) -> RmfConePiece 
 /// @param[in] index 0 ≤ index < piece count.
 /// @param[out] piece Receives the data (a copy).
 /// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if index is out of range.
+/// \since 0.1
+/// \ingroup rmf_cone_spline
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_piece(
     spline: *const RmfConeSpline,
@@ -655,6 +996,8 @@ pub unsafe extern "C" fn rmf_cone_spline_piece(
 /// @return RMF_ERROR_NULL_POINTER If spline or out is NULL.
 /// @return RMF_ERROR_INVALID_INPUT If the bounds are not finite, not increasing, or the strip
 ///         contains a vertex (the message names the piece).
+/// \since 0.1
+/// \ingroup rmf_cone_spline
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_surface(
     spline: *const RmfConeSpline,
@@ -682,6 +1025,8 @@ pub unsafe extern "C" fn rmf_cone_spline_surface(
 /// @return RMF_ERROR_NULL_POINTER If an argument is NULL.
 /// @return RMF_ERROR_INVALID_INPUT If the box is not finite or min ≥ max somewhere.
 /// @return RMF_ERROR_NO_SOLUTION If some ruling misses the box or no strip fits.
+/// \since 0.1
+/// \ingroup rmf_cone_spline
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_bounds_in_box(
     spline: *const RmfConeSpline,
@@ -704,8 +1049,12 @@ pub unsafe extern "C" fn rmf_cone_spline_bounds_in_box(
 /// (the parallel circles; straight lines on plane strips), exact rational quadratics, with
 /// the surface's v parameter.
 ///
+/// @param[in] spline The spline.
+/// @param[in] t Signed distance along the rulings from the reference points (finite).
 /// @param[out] out Receives the curve; free with rmf_curve_free.
 /// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if t is not finite.
+/// \since 0.1
+/// \ingroup rmf_cone_spline
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_boundary(
     spline: *const RmfConeSpline,
@@ -749,6 +1098,8 @@ unsafe fn derive(
 /// @param[in] s In [0, 1].
 /// @param[out] out Receives the bent spline; free with rmf_cone_spline_free.
 /// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if s is not in [0, 1].
+/// \since 0.1
+/// \ingroup rmf_cone_spline
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_bend(
     spline: *const RmfConeSpline,
@@ -767,8 +1118,11 @@ pub unsafe extern "C" fn rmf_cone_spline_bend(
 /// (rmf_cone_spline_surface with the same bounds) is planar with lines and circular arcs as
 /// boundaries, isometric to the spline's.
 ///
+/// @param[in] spline The spline.
 /// @param[out] out Receives the development; free with rmf_cone_spline_free.
 /// @return RMF_OK, or RMF_ERROR_NULL_POINTER if an argument is NULL.
+/// \since 0.1
+/// \ingroup rmf_cone_spline
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_develop(
     spline: *const RmfConeSpline,
@@ -782,8 +1136,12 @@ pub unsafe extern "C" fn rmf_cone_spline_develop(
 /// The offset of a cone spline at signed distance d along the normals ruling × side: again
 /// a cone spline (same axes and half angles, shifted vertices), exact.
 ///
+/// @param[in] spline The spline.
+/// @param[in] d Signed distance along ruling × side (finite).
 /// @param[out] out Receives the offset; free with rmf_cone_spline_free.
 /// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if d is not finite.
+/// \since 0.1
+/// \ingroup rmf_cone_spline
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_offset(
     spline: *const RmfConeSpline,
@@ -798,9 +1156,12 @@ pub unsafe extern "C" fn rmf_cone_spline_offset(
 /// The deviation an approximation reached (rmf_cone_spline_approximate*; kept by
 /// bending, development and offsets).
 ///
+/// @param[in] spline A spline made by rmf_cone_spline_approximate*.
 /// @param[out] max_error Receives the largest sampled distance to the input surface.
 /// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if the spline was
 ///         not made by an approximation.
+/// \since 0.1
+/// \ingroup rmf_cone_spline
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_fit_error(
     spline: *const RmfConeSpline,
@@ -823,8 +1184,10 @@ pub unsafe extern "C" fn rmf_cone_spline_fit_error(
 ///
 /// Size query: with capacity 0 (values may be NULL) only count is written.
 ///
+/// @param[in] spline A spline made by rmf_cone_spline_approximate*.
 /// @param[in] which RMF_CONE_FIT_ELEMENTS or RMF_CONE_FIT_INFLECTIONS.
 /// @param[out] values Buffer for capacity values.
+/// @param[in] capacity Capacity of values; 0 for a size query.
 /// @param[out] count Receives the number of values.
 /// @return RMF_OK on success or for a size query.
 /// @return RMF_ERROR_NULL_POINTER If spline or count is NULL, or values is NULL with a
@@ -832,6 +1195,8 @@ pub unsafe extern "C" fn rmf_cone_spline_fit_error(
 /// @return RMF_ERROR_INVALID_INPUT If which is unknown or the spline was not made by an
 ///         approximation.
 /// @return RMF_ERROR_BUFFER_TOO_SMALL If capacity is non-zero but too small; count is written.
+/// \since 0.1
+/// \ingroup rmf_cone_spline
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_fit_parameters(
     spline: *const RmfConeSpline,

@@ -19,6 +19,7 @@ use std::sync::{Arc, OnceLock};
 /// curve given by a callback. Created by the rmf_* constructors, freed with rmf_curve_free.
 /// Immutable; may be read from several threads at once (a callback curve: if its callback
 /// may be called from those threads).
+/// \ingroup rmf_curves
 pub struct RmfCurve {
     geometry: Geometry,
 }
@@ -151,6 +152,8 @@ impl RmfCurve {
 /// @return RMF_ERROR_INVALID_INPUT If a count, degree, knot, weight or pole is invalid (the
 ///         message names it).
 /// @return RMF_ERROR_INTERNAL On an internal error.
+/// \since 0.1
+/// \ingroup rmf_curves
 #[no_mangle]
 pub unsafe extern "C" fn rmf_nurbs_curve_create(
     degree: u32,
@@ -203,6 +206,7 @@ pub unsafe extern "C" fn rmf_nurbs_curve_create(
 /// @return RMF_ERROR_NULL_POINTER If callback or out is NULL.
 /// @return RMF_ERROR_INVALID_INPUT If the domain is invalid.
 /// \since 0.2
+/// \ingroup rmf_curves
 #[no_mangle]
 pub unsafe extern "C" fn rmf_callback_curve_create(
     callback: RmfCurveCallback,
@@ -226,6 +230,10 @@ pub unsafe extern "C" fn rmf_callback_curve_create(
 
 /// Frees a curve. NULL is a no-op. Views obtained from the curve become invalid; frames and
 /// surfaces built from it stay valid (they keep their own reference).
+///
+/// @param[in] curve The curve to free, or NULL.
+/// \since 0.1
+/// \ingroup rmf_curves
 #[no_mangle]
 pub unsafe extern "C" fn rmf_curve_free(curve: *mut RmfCurve) {
     free_handle(curve)
@@ -236,6 +244,8 @@ pub unsafe extern "C" fn rmf_curve_free(curve: *mut RmfCurve) {
 /// @param[in] curve The curve.
 /// @param[out] t_min, t_max Receive the domain ends.
 /// @return RMF_OK, or RMF_ERROR_NULL_POINTER if any argument is NULL.
+/// \since 0.1
+/// \ingroup rmf_curves
 #[no_mangle]
 pub unsafe extern "C" fn rmf_curve_domain(
     curve: *const RmfCurve,
@@ -263,6 +273,8 @@ pub unsafe extern "C" fn rmf_curve_domain(
 /// @return RMF_ERROR_NULL_POINTER If curve or point is NULL.
 /// @return RMF_ERROR_INVALID_INPUT If t is not finite or outside the domain, or a callback
 ///         gives a non-finite value.
+/// \since 0.1
+/// \ingroup rmf_curves
 #[no_mangle]
 pub unsafe extern "C" fn rmf_curve_eval(
     curve: *const RmfCurve,
@@ -293,6 +305,8 @@ pub unsafe extern "C" fn rmf_curve_eval(
 /// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if the segments do not
 ///         join into one continuous NURBS (Frenet frame vectors and Frenet sweeps along a G1
 ///         spline jump at the joints); rmf_curve_segment still gives every piece.
+/// \since 0.1
+/// \ingroup rmf_curves
 #[no_mangle]
 pub unsafe extern "C" fn rmf_curve_nurbs(
     curve: *const RmfCurve,
@@ -336,6 +350,8 @@ pub unsafe extern "C" fn rmf_curve_nurbs(
 ///         buffer is NULL with a non-zero capacity.
 /// @return RMF_ERROR_BUFFER_TOO_SMALL If a capacity is non-zero but too small; then only
 ///         degree, pole_count and knot_count are written.
+/// \since 0.1
+/// \ingroup rmf_curves
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn rmf_curve_nurbs_copy(
@@ -382,7 +398,11 @@ pub unsafe extern "C" fn rmf_curve_nurbs_copy(
 
 /// Number of rational Bézier segments of a curve.
 ///
+/// @param[in] curve The curve.
+/// @param[out] count Receives the number of segments.
 /// @return RMF_OK, or RMF_ERROR_NULL_POINTER if curve or count is NULL.
+/// \since 0.1
+/// \ingroup rmf_curves
 #[no_mangle]
 pub unsafe extern "C" fn rmf_curve_segment_count(
     curve: *const RmfCurve,
@@ -402,6 +422,8 @@ pub unsafe extern "C" fn rmf_curve_segment_count(
 /// @param[in] index 0 ≤ index < segment count.
 /// @param[out] view Receives pointers owned by the curve (valid until it is freed).
 /// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if index is out of range.
+/// \since 0.1
+/// \ingroup rmf_curves
 #[no_mangle]
 pub unsafe extern "C" fn rmf_curve_segment(
     curve: *const RmfCurve,

@@ -14,6 +14,7 @@ use rmfsurf::{
 /// pointwise Frenet frames. Freed with rmf_frames_free. Immutable; may be read from
 /// several threads at once. Keeps its own reference to the curve, so the curve handle may
 /// be freed first.
+/// \ingroup rmf_frames
 pub struct RmfFrames {
     pub(crate) field: FrameField,
 }
@@ -26,6 +27,10 @@ impl RmfFrames {
 }
 
 /// Frees frames. NULL is a no-op.
+///
+/// @param[in] frames The frames to free, or NULL.
+/// \since 0.1
+/// \ingroup rmf_frames
 #[no_mangle]
 pub unsafe extern "C" fn rmf_frames_free(frames: *mut RmfFrames) {
     free_handle(frames)
@@ -33,7 +38,11 @@ pub unsafe extern "C" fn rmf_frames_free(frames: *mut RmfFrames) {
 
 /// The parameter domain of the frames (that of their curve).
 ///
+/// @param[in] frames The frames.
+/// @param[out] t_min, t_max Receive the domain ends.
 /// @return RMF_OK, or RMF_ERROR_NULL_POINTER if any argument is NULL.
+/// \since 0.1
+/// \ingroup rmf_frames
 #[no_mangle]
 pub unsafe extern "C" fn rmf_frames_domain(
     frames: *const RmfFrames,
@@ -61,6 +70,8 @@ pub unsafe extern "C" fn rmf_frames_domain(
 /// @return RMF_ERROR_NULL_POINTER If any argument is NULL.
 /// @return RMF_ERROR_INVALID_INPUT If t is not finite or outside the domain, or the frame is
 ///         undefined there (Frenet frames where the curvature vanishes; a singular curve).
+/// \since 0.1
+/// \ingroup rmf_frames
 #[no_mangle]
 pub unsafe extern "C" fn rmf_frames_eval(
     frames: *const RmfFrames,
@@ -99,6 +110,8 @@ pub unsafe extern "C" fn rmf_frames_eval(
 /// @return RMF_ERROR_NULL_POINTER If curve or out is NULL.
 /// @return RMF_ERROR_INVALID_INPUT If sample_count < 2 or > 2^24, initial_normal is not finite, zero or
 ///         tangent to the curve, or the curve is singular at a sample.
+/// \since 0.1
+/// \ingroup rmf_frames
 #[no_mangle]
 pub unsafe extern "C" fn rmf_double_reflection_frames(
     curve: *const RmfCurve,
@@ -127,6 +140,8 @@ pub unsafe extern "C" fn rmf_double_reflection_frames(
 /// @param[in] curve The curve.
 /// @param[out] out Receives the frames; free with rmf_frames_free.
 /// @return RMF_OK, or RMF_ERROR_NULL_POINTER if curve or out is NULL.
+/// \since 0.1
+/// \ingroup rmf_frames
 #[no_mangle]
 pub unsafe extern "C" fn rmf_frenet_frames(
     curve: *const RmfCurve,
@@ -142,24 +157,33 @@ pub unsafe extern "C" fn rmf_frenet_frames(
 }
 
 /// rmf_frames_kind: exact piecewise rational frames (usable by rmf_sweep_surface).
+/// \ingroup rmf_frames
 pub const RMF_FRAMES_RATIONAL: u32 = 0;
 /// rmf_frames_kind: double-reflection samples.
+/// \ingroup rmf_frames
 pub const RMF_FRAMES_DOUBLE_REFLECTION: u32 = 1;
 /// rmf_frames_kind: Frenet frames evaluated pointwise.
+/// \ingroup rmf_frames
 pub const RMF_FRAMES_FRENET: u32 = 2;
 
 /// rmf_frames_vector_curve: the unit tangent t.
+/// \ingroup rmf_frames
 pub const RMF_FRAME_TANGENT: u32 = 0;
 /// rmf_frames_vector_curve: the first normal-plane vector f2.
+/// \ingroup rmf_frames
 pub const RMF_FRAME_F2: u32 = 1;
 /// rmf_frames_vector_curve: f3 = t × f2.
+/// \ingroup rmf_frames
 pub const RMF_FRAME_F3: u32 = 2;
 
 /// How frames are represented.
 ///
+/// @param[in] frames The frames.
 /// @param[out] kind Receives RMF_FRAMES_RATIONAL, RMF_FRAMES_DOUBLE_REFLECTION or
 ///             RMF_FRAMES_FRENET.
 /// @return RMF_OK, or RMF_ERROR_NULL_POINTER if frames or kind is NULL.
+/// \since 0.1
+/// \ingroup rmf_frames
 #[no_mangle]
 pub unsafe extern "C" fn rmf_frames_kind(frames: *const RmfFrames, kind: *mut u32) -> RmfStatus {
     guard("rmf_frames_kind", || {
@@ -186,6 +210,8 @@ pub unsafe extern "C" fn rmf_frames_kind(frames: *const RmfFrames, kind: *mut u3
 /// @return RMF_ERROR_NULL_POINTER If frames or out is NULL.
 /// @return RMF_ERROR_INVALID_INPUT If which is not one of the three values or the frames are
 ///         not rational (double-reflection and pointwise Frenet frames are sampled).
+/// \since 0.1
+/// \ingroup rmf_frames
 #[no_mangle]
 pub unsafe extern "C" fn rmf_frames_vector_curve(
     frames: *const RmfFrames,

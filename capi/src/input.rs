@@ -22,6 +22,7 @@ use rmfsurf::{hermite_sequence, Error, HermiteSegment, Num, ParametricCurve, Res
 /// it is. Tangents should be a constant multiple (a varying one is only its direction to
 /// algorithms that differentiate it, the cone approximations). Subnormal tangents
 /// (components below 2.2e-308) are refused: their direction is not resolved in double.
+/// \ingroup rmf_curves
 pub type RmfCurveCallback = Option<
     unsafe extern "C" fn(t: f64, user: *mut c_void, point: *mut RmfVec3, tangent: *mut RmfVec3),
 >;

@@ -14,6 +14,8 @@
 // in its doc comment (and the header): each pointer is NULL or valid for the access
 // described, handles come from this library and are not used after being freed.
 #![allow(clippy::missing_safety_doc)]
+// Every public item is documented; its doc comment is also the header's (cbindgen).
+#![warn(missing_docs)]
 
 mod boundary;
 pub mod cone_spline;

@@ -16,12 +16,15 @@ use rmfsurf::{
 use std::sync::Arc;
 
 /// RmfInversion.kind: inversion in the sphere (center, radius).
+/// \ingroup rmf_mobius
 pub const RMF_INVERSION_SPHERE: u32 = 0;
 /// RmfInversion.kind: reflection in the plane through `center` with normal `normal`.
+/// \ingroup rmf_mobius
 pub const RMF_INVERSION_PLANE: u32 = 1;
 
 /// One inversion of a Möbius transformation. A Möbius transformation is given as an array
 /// of inversions applied first to last (translations and rotations are two reflections).
+/// \ingroup rmf_mobius
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct RmfInversion {
@@ -74,20 +77,22 @@ fn finite(v: RmfVec3, name: &str) -> FfiResult<DVec3> {
     Ok(rmfsurf::validate::check_finite(v.into(), name)?)
 }
 
-/// The image μ(point) of a point under a Möbius transformation.
+/// The image μ(point) of a point under a Möbius transformation. Computed without squares
+/// of distances: (1e200, 0, 0) in the unit sphere goes to (1e-200, 0, 0), and images beyond
+/// the range of double are refused, never infinite.
 ///
 /// @param[in] maps count inversions, applied first to last.
+/// @param[in] count Number of inversions, ≥ 1.
 /// @param[in] point A finite point.
 /// @param[out] image Receives μ(point). Untouched on failure.
 /// @return RMF_OK on success.
 /// @return RMF_ERROR_NULL_POINTER If maps or image is NULL.
-/// Computed without squares of distances: (1e200, 0, 0) in the unit sphere goes to
-/// (1e-200, 0, 0), and images beyond the range of double are refused, never infinite.
-///
 /// @return RMF_ERROR_INVALID_INPUT If count = 0, an inversion is invalid (radius ≤ 0, zero
 ///         normal, non-finite), or the image is not finite: the point is sent to infinity (a
 ///         sphere centre) or beyond ±1.8e308 (e.g. a radius of 1e300 and a point at
 ///         distance 1 from the centre).
+/// \since 0.1
+/// \ingroup rmf_mobius
 #[no_mangle]
 pub unsafe extern "C" fn rmf_mobius_point(
     maps: *const RmfInversion,
@@ -115,9 +120,15 @@ pub unsafe extern "C" fn rmf_mobius_point(
 /// rotation-minimizing vector field along a curve it gives one along the image curve
 /// (Theorem 1).
 ///
+/// @param[in] maps count inversions, applied first to last.
+/// @param[in] count Number of inversions, ≥ 1.
+/// @param[in] point The finite point where the differential is taken.
+/// @param[in] vector A finite vector at point.
 /// @param[out] image Receives d*μ_point(vector). Untouched on failure.
 /// @return RMF_OK, RMF_ERROR_NULL_POINTER (maps, image), or RMF_ERROR_INVALID_INPUT as for
 ///         rmf_mobius_point, or for a non-finite vector.
+/// \since 0.1
+/// \ingroup rmf_mobius
 #[no_mangle]
 pub unsafe extern "C" fn rmf_mobius_vector(
     maps: *const RmfInversion,
@@ -150,6 +161,8 @@ pub unsafe extern "C" fn rmf_mobius_vector(
 /// @return RMF_ERROR_INVALID_INPUT If the map is invalid, the curve passes through (or too
 ///         near) an inversion centre, or the image would have degree above 64 (each sphere
 ///         inversion doubles the degree).
+/// \since 0.1
+/// \ingroup rmf_mobius
 #[no_mangle]
 pub unsafe extern "C" fn rmf_mobius_curve(
     curve: *const RmfCurve,
@@ -183,6 +196,8 @@ pub unsafe extern "C" fn rmf_mobius_curve(
 ///         curve passes through an inversion centre, or the image or its frames would have
 ///         degree above 64 (a sphere inversion takes degree n to 2n, frames of degree m to
 ///         m + 2n).
+/// \since 0.1
+/// \ingroup rmf_mobius
 #[no_mangle]
 pub unsafe extern "C" fn rmf_mobius_frames(
     frames: *const RmfFrames,
@@ -245,6 +260,8 @@ unsafe fn write_rational_rmf_curve(
 ///         along the first tangent.
 /// @return RMF_ERROR_NO_SOLUTION If a segment has no PH cubic interpolant in its plane (e.g.
 ///         a segment turning by more than half a turn); the message names the segment.
+/// \since 0.1
+/// \ingroup rmf_mobius
 #[no_mangle]
 pub unsafe extern "C" fn rmf_mobius_rrmf_hermite(
     points: *const RmfVec3,
@@ -286,6 +303,8 @@ pub unsafe extern "C" fn rmf_mobius_rrmf_hermite(
 ///         the callback gives a non-finite point or a zero tangent, or initial_normal is
 ///         invalid.
 /// @return RMF_ERROR_NO_SOLUTION If a segment has no interpolant (too few segments).
+/// \since 0.1
+/// \ingroup rmf_mobius
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn rmf_mobius_rrmf_approximate(

@@ -40,6 +40,8 @@ use std::ffi::c_void;
 /// @return RMF_ERROR_NO_SOLUTION If no PH cubic interpolates the data: (*) has no real root,
 ///         every root reverses a tangent or has a numerical cusp, or the tangents are
 ///         parallel with the chord off their line. Nothing is written then.
+/// \since 0.1
+/// \ingroup rmf_ph_cubic
 #[no_mangle]
 pub unsafe extern "C" fn rmf_ph_cubic_hermite(
     p0: RmfVec3,
@@ -84,6 +86,8 @@ pub unsafe extern "C" fn rmf_ph_cubic_hermite(
 ///         is zero or consecutive points coincide (the message names the index).
 /// @return RMF_ERROR_NO_SOLUTION If some segment admits no PH cubic (the message names it);
 ///         more points in between help.
+/// \since 0.1
+/// \ingroup rmf_ph_cubic
 #[no_mangle]
 pub unsafe extern "C" fn rmf_ph_spline_hermite(
     points: *const RmfVec3,
@@ -129,6 +133,8 @@ pub unsafe extern "C" fn rmf_ph_spline_hermite(
 ///         interval (a cusp, or a straight line meeting a corner).
 /// @return RMF_ERROR_NOT_CONVERGED If the tolerance is not reached within 100,000 segments,
 ///         or not above the rounding of the coordinates on the shortest intervals.
+/// \since 0.1
+/// \ingroup rmf_ph_cubic
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn rmf_ph_spline_approximate(
@@ -182,6 +188,7 @@ fn initial_breaks(curve: Option<&RmfCurve>, source: &dyn ParametricCurve) -> Ffi
 /// What rmf_ph_spline_approximate_with_options aims at and may spend. Initialise with
 /// rmf_ph_approximation_options_init, then set the tolerance.
 /// \since 0.2
+/// \ingroup rmf_ph_cubic
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RmfPhApproximationOptions {
@@ -219,6 +226,7 @@ unsafe impl OptionsStruct for RmfPhApproximationOptions {
 /// What rmf_ph_spline_approximate_with_options did. The caller sets struct_size =
 /// sizeof(RmfPhApproximationReport); the library writes the fields that fit, on success only.
 /// \since 0.2
+/// \ingroup rmf_ph_cubic
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct RmfPhApproximationReport {
@@ -243,6 +251,7 @@ unsafe impl OptionsStruct for RmfPhApproximationReport {
 /// @param[out] out The options to initialise.
 /// @return RMF_OK, or RMF_ERROR_NULL_POINTER if out is NULL.
 /// \since 0.2
+/// \ingroup rmf_ph_cubic
 #[no_mangle]
 pub unsafe extern "C" fn rmf_ph_approximation_options_init(
     out: *mut RmfPhApproximationOptions,
@@ -283,6 +292,7 @@ pub unsafe extern "C" fn rmf_ph_approximation_options_init(
 ///         segments or more than max_evaluations evaluations, or is not reached above the
 ///         rounding of the coordinates on the shortest intervals.
 /// \since 0.2
+/// \ingroup rmf_ph_cubic
 #[no_mangle]
 pub unsafe extern "C" fn rmf_ph_spline_approximate_with_options(
     curve: *const RmfCurve,
@@ -341,6 +351,8 @@ pub unsafe extern "C" fn rmf_ph_spline_approximate_with_options(
 /// @return RMF_ERROR_NULL_POINTER If ph_spline or out is NULL.
 /// @return RMF_ERROR_INVALID_INPUT If a segment is not a PH cubic, the spline is not G1, or
 ///         initial_normal is not finite, zero or tangent to the spline.
+/// \since 0.1
+/// \ingroup rmf_ph_cubic
 #[no_mangle]
 pub unsafe extern "C" fn rmf_ph_rational_rmf(
     ph_spline: *const RmfCurve,
@@ -372,6 +384,8 @@ pub unsafe extern "C" fn rmf_ph_rational_rmf(
 ///         or so large that a segment would need more than 4096 rational pieces,
 ///         or closure_symmetry > 0 for a spline that does not end where it starts with the
 ///         same tangent.
+/// \since 0.1
+/// \ingroup rmf_ph_cubic
 #[no_mangle]
 pub unsafe extern "C" fn rmf_ph_rational_rmf_twisted(
     ph_spline: *const RmfCurve,
@@ -426,6 +440,8 @@ unsafe fn write_frames(
 /// @return RMF_ERROR_NULL_POINTER If ph_spline or out is NULL.
 /// @return RMF_ERROR_INVALID_INPUT If a segment is not a PH cubic or is (nearly) straight,
 ///         sin θ ≤ 1e-4 (no Frenet frame, or none computable to 1e-7).
+/// \since 0.1
+/// \ingroup rmf_ph_cubic
 #[no_mangle]
 pub unsafe extern "C" fn rmf_ph_frenet_frames(
     ph_spline: *const RmfCurve,
@@ -459,6 +475,8 @@ pub unsafe extern "C" fn rmf_ph_frenet_frames(
 /// @return RMF_ERROR_NULL_POINTER If ph_spline is NULL, or t or f2 is NULL with count > 0.
 /// @return RMF_ERROR_INVALID_INPUT If a segment is not a PH cubic, the spline is not G1,
 ///         initial_normal is not usable, or a parameter is not finite or outside the domain.
+/// \since 0.1
+/// \ingroup rmf_ph_cubic
 #[no_mangle]
 pub unsafe extern "C" fn rmf_ph_exact_rmf_eval(
     ph_spline: *const RmfCurve,
@@ -517,6 +535,8 @@ pub unsafe extern "C" fn rmf_ph_exact_rmf_eval(
 ///         G1 PH cubic spline.
 /// @return RMF_ERROR_BUFFER_TOO_SMALL If 0 < capacity < the segment count; then only
 ///         segment_count is written.
+/// \since 0.1
+/// \ingroup rmf_ph_cubic
 #[no_mangle]
 pub unsafe extern "C" fn rmf_ph_rmf_angle_error(
     frames: *const RmfFrames,
@@ -547,6 +567,7 @@ pub unsafe extern "C" fn rmf_ph_rmf_angle_error(
 }
 
 /// Where a sweep comes closest to being singular (Corollary 7 of Mäurer & Jüttler).
+/// \ingroup rmf_sweeps
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct RmfSingularityMargin {
@@ -578,6 +599,8 @@ pub struct RmfSingularityMargin {
 ///         RMF_ERROR_INVALID_INPUT if the frames are not rational frames of the spine (their
 ///         breakpoints or their tangent differ), are not rotation-minimizing, or frame
 ///         pieces × profile segments exceed 2^15 (a bound on the work of one call).
+/// \since 0.1
+/// \ingroup rmf_sweeps
 #[no_mangle]
 pub unsafe extern "C" fn rmf_sweep_singularity_margin(
     spine: *const RmfCurve,
@@ -615,6 +638,8 @@ pub unsafe extern "C" fn rmf_sweep_singularity_margin(
 ///         RMF_ERROR_INVALID_INPUT if u or v is outside its domain, the frames are not
 ///         rotation-minimizing rational frames of the spine, or frame pieces × profile
 ///         segments exceed 2^15.
+/// \since 0.1
+/// \ingroup rmf_sweeps
 #[no_mangle]
 pub unsafe extern "C" fn rmf_sweep_gaussian_curvature(
     spine: *const RmfCurve,
@@ -639,15 +664,19 @@ pub unsafe extern "C" fn rmf_sweep_gaussian_curvature(
 
 /// rmf_sweep_parabolic_points: a profile inflection (K = 0 along u = const), or an end of a
 /// straight profile piece (K = 0 on the whole piece).
+/// \ingroup rmf_sweeps
 pub const RMF_PARABOLIC_PROFILE: u32 = 1;
 /// rmf_sweep_parabolic_points: a straight piece of the spine (K = 0 along v = const); the
 /// point is given at both ends of the profile.
+/// \ingroup rmf_sweeps
 pub const RMF_PARABOLIC_SPINE: u32 = 2;
 /// rmf_sweep_parabolic_points: a point of the curves (14), where the surface normal is
 /// perpendicular to the spine's principal normal.
+/// \ingroup rmf_sweeps
 pub const RMF_PARABOLIC_NORMAL: u32 = 3;
 
 /// A parabolic point (K = 0) of a profile surface.
+/// \ingroup rmf_sweeps
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct RmfParabolicPoint {
@@ -680,6 +709,8 @@ pub struct RmfParabolicPoint {
 ///         the frames are not rotation-minimizing rational frames of the spine, or frame
 ///         pieces × profile segments exceed 2^15.
 /// @return RMF_ERROR_BUFFER_TOO_SMALL If 0 < capacity < count; then only count is written.
+/// \since 0.1
+/// \ingroup rmf_sweeps
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn rmf_sweep_parabolic_points(
@@ -772,6 +803,8 @@ fn parabolic_points(
 /// @return RMF_ERROR_INVALID_INPUT If a segment is not a PH cubic or the spline is not G1.
 /// @return RMF_ERROR_NO_SOLUTION If the profile is not convex, δ + ΔΩ ≥ π, or a spine segment
 ///         is straight (the message says which).
+/// \since 0.1
+/// \ingroup rmf_ph_cubic
 #[no_mangle]
 pub unsafe extern "C" fn rmf_ph_convex_initial_normal(
     ph_spline: *const RmfCurve,
@@ -814,6 +847,8 @@ pub unsafe extern "C" fn rmf_ph_convex_initial_normal(
 ///         point.
 /// @return RMF_ERROR_NO_SOLUTION If a profile segment has no rational offset (the message
 ///         names it).
+/// \since 0.1
+/// \ingroup rmf_sweeps
 #[no_mangle]
 pub unsafe extern "C" fn rmf_profile_offset(
     profile: *const RmfCurve,

@@ -24,6 +24,7 @@ use rmfsurf::{
 /// positive y. w(t) = Σ w_k B_k(t) is the polynomial of the RRMF condition (4); the RMF
 /// (9) turns the Euler–Rodrigues frame by the angle of w². Complex numbers are stored as
 /// (Re, Im) pairs: `alpha[2k]` = Re α_k, `alpha[2k + 1]` = Im α_k.
+/// \ingroup rmf_rrmf
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct RmfRrmfQuintic {
@@ -67,14 +68,19 @@ impl From<&RrmfQuintic> for RmfRrmfQuintic {
 /// Shape measure: RMF energy E_rmf = ∫ κ² ds. Note: E_rmf of a curve scaled by s is
 /// E_rmf / s, and the family of interpolants contains arbitrarily large loops, so its
 /// minimum can be a huge curve; RMF_RRMF_MEASURE_SCALED_ENERGY_RMF compares shapes.
+/// \ingroup rmf_rrmf
 pub const RMF_RRMF_MEASURE_ENERGY_RMF: u32 = 0;
 /// Shape measure: Frenet-frame energy E = ∫ (κ² + τ²) ds (same caveat as E_rmf).
+/// \ingroup rmf_rrmf
 pub const RMF_RRMF_MEASURE_ENERGY_FRENET: u32 = 1;
 /// Shape measure: arc length L.
+/// \ingroup rmf_rrmf
 pub const RMF_RRMF_MEASURE_ARC_LENGTH: u32 = 2;
 /// Shape measure: L · E_rmf, invariant under scaling; picks fair curves (recommended).
+/// \ingroup rmf_rrmf
 pub const RMF_RRMF_MEASURE_SCALED_ENERGY_RMF: u32 = 3;
 /// Shape measure: L · E, invariant under scaling.
+/// \ingroup rmf_rrmf
 pub const RMF_RRMF_MEASURE_SCALED_ENERGY_FRENET: u32 = 4;
 
 fn shape_measure(measure: u32) -> FfiResult<ShapeMeasure> {
@@ -153,6 +159,8 @@ unsafe fn write_curve_and_frames(
 ///         π), or eta is not finite.
 /// @return RMF_ERROR_BUFFER_TOO_SMALL If capacity < *count; then only *count is written.
 /// @return RMF_ERROR_INTERNAL On an internal error.
+/// \since 0.1
+/// \ingroup rmf_rrmf
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn rmf_rrmf_quintic_solutions(
@@ -197,6 +205,8 @@ pub unsafe extern "C" fn rmf_rrmf_quintic_solutions(
 /// @return RMF_ERROR_NULL_POINTER If theta_i, theta_f or phi is NULL.
 /// @return RMF_ERROR_INVALID_INPUT If the data are invalid, planar or degenerate (as for
 ///         rmf_rrmf_quintic_solutions).
+/// \since 0.1
+/// \ingroup rmf_rrmf
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn rmf_rrmf_quintic_angles(
@@ -284,6 +294,8 @@ fn recompute(data: &HermiteSegment, solution: &RmfRrmfQuintic) -> FfiResult<Rrmf
 /// @return RMF_ERROR_NO_SOLUTION If the frame cannot be given positive weights (a singular
 ///         curve; not seen for solutions returned by this library).
 /// @return RMF_ERROR_INTERNAL On an internal error.
+/// \since 0.1
+/// \ingroup rmf_rrmf
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn rmf_rrmf_quintic_curve(
@@ -322,6 +334,8 @@ pub unsafe extern "C" fn rmf_rrmf_quintic_curve(
 ///         eta_samples is 0 or too large.
 /// @return RMF_ERROR_NO_SOLUTION If no sampled η admits an interpolant.
 /// @return RMF_ERROR_INTERNAL On an internal error.
+/// \since 0.1
+/// \ingroup rmf_rrmf
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn rmf_rrmf_quintic_best(
@@ -375,6 +389,8 @@ pub unsafe extern "C" fn rmf_rrmf_quintic_best(
 /// @return RMF_ERROR_NO_SOLUTION If no sampled η admits an interpolant for some segment (the
 ///         message names it).
 /// @return RMF_ERROR_INTERNAL On an internal error.
+/// \since 0.1
+/// \ingroup rmf_rrmf
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn rmf_rrmf_spline_hermite(

@@ -13,15 +13,19 @@ use std::ffi::CStr;
 use std::io::Write;
 
 /// What a face of an RmfShape is (values fixed).
+/// \ingroup rmf_wire
 pub type RmfFaceKind = u32;
 /// A lateral face: an exact rational RmfSurface (u along the profile edge, v along the
 /// wire).
+/// \ingroup rmf_wire
 pub const RMF_FACE_SWEPT: RmfFaceKind = 0;
 /// A planar cap at an end of an open wire, bounded by profile loops.
+/// \ingroup rmf_wire
 pub const RMF_FACE_PLANE: RmfFaceKind = 1;
 
 /// A closed solid or a sheet of exact faces (opaque). Made by rmf_wire_sweep, freed with
 /// rmf_shape_free. Immutable; may be read from several threads at once.
+/// \ingroup rmf_wire
 pub struct RmfShape {
     shape: Shape,
     /// The lateral faces' surfaces (None for caps), the views of rmf_shape_face.
@@ -60,16 +64,19 @@ impl RmfShape {
 }
 
 /// One face of an RmfShape (a copy; the pointers are borrowed from the shape).
+/// \ingroup rmf_wire
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct RmfShapeFace {
+    /// RMF_FACE_SWEPT (a lateral face) or RMF_FACE_PLANE (a cap).
     pub kind: RmfFaceKind,
     /// RMF_FACE_SWEPT: the face's surface, borrowed: valid until the shape is freed (do not
     /// free it). NULL for caps.
     pub surface: *const RmfSurface,
-    /// RMF_FACE_PLANE: a point of the cap's plane (the wire's end) and its unit normal,
-    /// pointing out of the solid. Zero for lateral faces.
+    /// RMF_FACE_PLANE: a point of the cap's plane (the wire's end). Zero for lateral faces.
     pub plane_origin: RmfVec3,
+    /// RMF_FACE_PLANE: the cap's unit normal, pointing out of the solid. Zero for lateral
+    /// faces.
     pub plane_normal: RmfVec3,
     /// RMF_FACE_PLANE: the number of boundary loops (the first is the outer one; the others
     /// are the holes); rmf_shape_face_loop gives them. 0 for lateral faces (their boundary
@@ -79,6 +86,7 @@ pub struct RmfShapeFace {
     /// rmf_wire_sweep) and of the profile edge it sweeps (Bézier segments of the profile,
     /// then of holes[0], holes[1], ...). Caps: the wire edge at that end, and 0.
     pub spine_edge: usize,
+    /// RMF_FACE_SWEPT: the profile edge the face sweeps (see spine_edge); 0 for caps.
     pub profile_edge: usize,
     /// 1 if the face's outward normal is −(s_u × s_v) (its surface runs the other way).
     pub reversed: u32,
@@ -89,6 +97,7 @@ pub struct RmfShapeFace {
 }
 
 /// How accurate a wire sweep is (all figures measured on the result).
+/// \ingroup rmf_wire
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct RmfSweepReport {
@@ -122,14 +131,20 @@ pub struct RmfSweepReport {
 }
 
 /// Frees a shape; its face surfaces and loop curves become invalid. NULL is a no-op.
+///
+/// @param[in] shape The shape to free, or NULL.
 /// \since 0.2
+/// \ingroup rmf_wire
 #[no_mangle]
 pub unsafe extern "C" fn rmf_shape_free(shape: *mut RmfShape) {
     free_handle(shape)
 }
 
 /// The number of faces of a shape (lateral faces first, then the caps); 0 for NULL.
+///
+/// @param[in] shape The shape, or NULL.
 /// \since 0.2
+/// \ingroup rmf_wire
 #[no_mangle]
 pub unsafe extern "C" fn rmf_shape_face_count(shape: *const RmfShape) -> usize {
     if shape.is_null() {
@@ -139,7 +154,10 @@ pub unsafe extern "C" fn rmf_shape_face_count(shape: *const RmfShape) -> usize {
 }
 
 /// Whether a shape is a closed, consistently oriented solid (1) or a sheet (0); 0 for NULL.
+///
+/// @param[in] shape The shape, or NULL.
 /// \since 0.2
+/// \ingroup rmf_wire
 #[no_mangle]
 pub unsafe extern "C" fn rmf_shape_is_solid(shape: *const RmfShape) -> u32 {
     if shape.is_null() {
@@ -155,6 +173,7 @@ pub unsafe extern "C" fn rmf_shape_is_solid(shape: *const RmfShape) -> u32 {
 /// @param[out] out Receives the face; its surface pointer is borrowed from the shape.
 /// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if index is out of range.
 /// \since 0.2
+/// \ingroup rmf_wire
 #[no_mangle]
 pub unsafe extern "C" fn rmf_shape_face(
     shape: *const RmfShape,
@@ -206,6 +225,7 @@ pub unsafe extern "C" fn rmf_shape_face(
 /// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if face or loop is out
 ///         of range (lateral faces have no loops).
 /// \since 0.2
+/// \ingroup rmf_wire
 #[no_mangle]
 pub unsafe extern "C" fn rmf_shape_face_loop(
     shape: *const RmfShape,
@@ -236,8 +256,11 @@ pub unsafe extern "C" fn rmf_shape_face_loop(
 
 /// The accuracy figures of a wire sweep (see RmfSweepReport).
 ///
+/// @param[in] shape A shape made by rmf_wire_sweep.
+/// @param[out] out Receives the report.
 /// @return RMF_OK, or RMF_ERROR_NULL_POINTER if shape or out is NULL.
 /// \since 0.2
+/// \ingroup rmf_wire
 #[no_mangle]
 pub unsafe extern "C" fn rmf_shape_report(
     shape: *const RmfShape,
@@ -276,6 +299,7 @@ pub unsafe extern "C" fn rmf_shape_report(
 /// @return RMF_ERROR_NULL_POINTER If shape or path is NULL.
 /// @return RMF_ERROR_INVALID_INPUT If the file cannot be written (the message says why).
 /// \since 0.2
+/// \ingroup rmf_export
 #[no_mangle]
 pub unsafe extern "C" fn rmf_shape_write_step(
     shape: *const RmfShape,

@@ -21,58 +21,80 @@ use rmfsurf::{Layer, Reference, Sheet, SheetOptions, SheetPart, Side};
 use std::ffi::c_char;
 
 /// Which face of the sheet the designed surface is (RmfSheetOptions.reference).
+/// \ingroup rmf_sheet
 pub type RmfSheetReference = u32;
 /// The designed surface is the inner face (the concave side of the bends): the sheet lies
 /// on the convex side. The default; the only choice for parts with a vertex on an edge
 /// (transitions from polygon corners), whose bend radius is 0 there.
+/// \ingroup rmf_sheet
 pub const RMF_SHEET_REFERENCE_INNER: RmfSheetReference = 0;
 /// The designed surface is the neutral layer.
+/// \ingroup rmf_sheet
 pub const RMF_SHEET_REFERENCE_NEUTRAL: RmfSheetReference = 1;
 /// The designed surface is the outer face: the sheet lies towards the bend centres.
+/// \ingroup rmf_sheet
 pub const RMF_SHEET_REFERENCE_OUTER: RmfSheetReference = 2;
 
 /// A surface of the formed sheet.
+/// \ingroup rmf_sheet
 pub type RmfSheetLayer = u32;
 /// The designed surface (through the input's curves).
+/// \ingroup rmf_sheet
 pub const RMF_SHEET_LAYER_REFERENCE: RmfSheetLayer = 0;
 /// The inner face (concave side).
+/// \ingroup rmf_sheet
 pub const RMF_SHEET_LAYER_INNER: RmfSheetLayer = 1;
 /// The neutral layer, at k·t from the inner face: the one the flat pattern develops.
+/// \ingroup rmf_sheet
 pub const RMF_SHEET_LAYER_NEUTRAL: RmfSheetLayer = 2;
 /// The outer face.
+/// \ingroup rmf_sheet
 pub const RMF_SHEET_LAYER_OUTER: RmfSheetLayer = 3;
 
 /// Which boundary of a part.
+/// \ingroup rmf_sheet
 pub type RmfSheetSide = u32;
 /// The first boundary: a transition's bottom curve (u = 0 of the layer surfaces).
+/// \ingroup rmf_sheet
 pub const RMF_SHEET_SIDE_FIRST: RmfSheetSide = 0;
 /// The second boundary: a transition's top curve (u = 1).
+/// \ingroup rmf_sheet
 pub const RMF_SHEET_SIDE_SECOND: RmfSheetSide = 1;
 
 /// What rmf_cone_spline_part_export writes.
+/// \ingroup rmf_export
 pub type RmfSheetFormat = u32;
 /// STEP AP214: the formed part as a closed solid (MANIFOLD_SOLID_BREP) between its inner
 /// and outer face, with normal-cut edges.
+/// \ingroup rmf_export
 pub const RMF_SHEET_FORMAT_STEP_SOLID: RmfSheetFormat = 0;
 /// STEP AP214: the flat pattern as one planar face bounded by lines and circles.
+/// \ingroup rmf_export
 pub const RMF_SHEET_FORMAT_STEP_FLAT: RmfSheetFormat = 1;
 /// DXF R12: the flat pattern, LINE and ARC entities, outline on layer CUT, bend lines on
 /// layer BEND.
+/// \ingroup rmf_export
 pub const RMF_SHEET_FORMAT_DXF: RmfSheetFormat = 2;
 /// SVG 1.1: the flat pattern in millimetres, bend lines dashed.
+/// \ingroup rmf_export
 pub const RMF_SHEET_FORMAT_SVG: RmfSheetFormat = 3;
 
 /// RmfFlatEdge.kind: a straight segment.
+/// \ingroup rmf_sheet
 pub const RMF_FLAT_EDGE_LINE: u32 = 0;
 /// RmfFlatEdge.kind: a circular arc.
+/// \ingroup rmf_sheet
 pub const RMF_FLAT_EDGE_ARC: u32 = 1;
 /// RmfFlatEdge.layer: the cutting outline.
+/// \ingroup rmf_sheet
 pub const RMF_FLAT_CUT: u32 = 0;
 /// RmfFlatEdge.layer: a bend line (a ruling where two pieces meet).
+/// \ingroup rmf_sheet
 pub const RMF_FLAT_BEND: u32 = 1;
 
 /// How a sheet-metal part is built and cut. Initialise with rmf_sheet_options_init, then
 /// change fields; the struct only grows at the end.
+/// \ingroup rmf_sheet
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct RmfSheetOptions {
@@ -117,6 +139,7 @@ unsafe impl OptionsStruct for RmfSheetOptions {
 /// One edge of a flat pattern: a line from `from` to `to`, or an arc about `center` of
 /// `radius` from `from` through the signed angle `sweep` (counter-clockwise when positive)
 /// to `to`. Coordinates in the caller's units, in the plane of the flat pattern.
+/// \ingroup rmf_sheet
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct RmfFlatEdge {
@@ -124,15 +147,21 @@ pub struct RmfFlatEdge {
     pub layer: u32,
     /// RMF_FLAT_EDGE_LINE or RMF_FLAT_EDGE_ARC.
     pub kind: u32,
+    /// The start point.
     pub from: RmfVec2,
+    /// The end point.
     pub to: RmfVec2,
-    /// Arcs only (0 for lines).
+    /// Arcs only (0 for lines): the centre.
     pub center: RmfVec2,
+    /// Arcs only (0 for lines): the radius.
     pub radius: f64,
+    /// Arcs only (0 for lines): the signed angle from `from` to `to` about `center`,
+    /// radians, counter-clockwise when positive.
     pub sweep: f64,
 }
 
 /// What the construction of a part measured and chose (caller's units).
+/// \ingroup rmf_sheet
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct RmfSheetReport {
@@ -146,10 +175,12 @@ pub struct RmfSheetReport {
     pub edge_distance: [f64; 2],
     /// The smallest bend radius of the designed surface (0 at a vertex on an edge).
     pub bend_radius: f64,
-    /// Distances of the inner, neutral and outer layer from the designed surface, along
-    /// the normal from the concave to the convex side.
+    /// Distance of the inner layer from the designed surface, along the normal from the
+    /// concave to the convex side.
     pub inner: f64,
+    /// Distance of the neutral layer from the designed surface, along the same normal.
     pub neutral: f64,
+    /// Distance of the outer layer from the designed surface, along the same normal.
     pub outer: f64,
 }
 
@@ -230,6 +261,7 @@ fn part_of<'a>(spline: &'a RmfConeSpline, name: &str) -> FfiResult<&'a SheetPart
 ///             reference inner, flat_tolerance 0 = the tolerance, max_pieces 100000).
 /// @return RMF_OK, or RMF_ERROR_NULL_POINTER if options is NULL.
 /// \since 0.2
+/// \ingroup rmf_sheet
 #[no_mangle]
 pub unsafe extern "C" fn rmf_sheet_options_init(options: *mut RmfSheetOptions) -> RmfStatus {
     guard("rmf_sheet_options_init", || {
@@ -270,6 +302,7 @@ pub unsafe extern "C" fn rmf_sheet_options_init(options: *mut RmfSheetOptions) -
 /// @return RMF_ERROR_NO_SOLUTION If the hull has a degenerate ruling.
 /// @return RMF_ERROR_NOT_CONVERGED If the tolerance needs more than max_pieces pieces.
 /// \since 0.2
+/// \ingroup rmf_sheet
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_transition(
     bottom: *const RmfCurve,
@@ -313,6 +346,7 @@ pub unsafe extern "C" fn rmf_cone_spline_transition(
 /// @return RMF_ERROR_NOT_CONVERGED If the tolerance needs more than max_pieces pieces, or
 ///         the cone fit keeps a vertex on the part.
 /// \since 0.2
+/// \ingroup rmf_sheet
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_part(
     surface: *const RmfSurface,
@@ -347,6 +381,7 @@ pub unsafe extern "C" fn rmf_cone_spline_part(
 /// @return RMF_ERROR_NO_SOLUTION If the curve is not regular.
 /// @return RMF_ERROR_NOT_CONVERGED As for rmf_cone_spline_part.
 /// \since 0.2
+/// \ingroup rmf_sheet
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_tangent_part(
     curve: *const RmfCurve,
@@ -368,9 +403,11 @@ pub unsafe extern "C" fn rmf_cone_spline_tangent_part(
 /// What a part's construction measured: pieces, closure, distances of the surface and of
 /// the edges from the input, the smallest bend radius, the layers' distances.
 ///
+/// @param[in] part A part (rmf_cone_spline_transition, _part or _tangent_part).
 /// @param[out] report Receives the report.
 /// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if part is not a part.
 /// \since 0.2
+/// \ingroup rmf_sheet
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_part_report(
     part: *const RmfConeSpline,
@@ -401,11 +438,13 @@ pub unsafe extern "C" fn rmf_cone_spline_part_report(
 /// first to the second boundary, v ∈ [k, k + 1] on piece k, G1 across the rulings (except
 /// at creases); exact rational (degree 1 in u).
 ///
+/// @param[in] part A part (rmf_cone_spline_transition, _part or _tangent_part).
 /// @param[in] layer RMF_SHEET_LAYER_*.
 /// @param[out] out Receives the surface; free with rmf_surface_free.
 /// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT for an unknown layer
 ///         or a handle that is not a part.
 /// \since 0.2
+/// \ingroup rmf_sheet
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_part_surface(
     part: *const RmfConeSpline,
@@ -425,11 +464,13 @@ pub unsafe extern "C" fn rmf_cone_spline_part_surface(
 /// surface's v parameter: on the designed surface within the tolerance of the input's
 /// curve (exactly in its plane for transitions).
 ///
+/// @param[in] part A part (rmf_cone_spline_transition, _part or _tangent_part).
 /// @param[in] layer RMF_SHEET_LAYER_*.
 /// @param[in] side RMF_SHEET_SIDE_FIRST or RMF_SHEET_SIDE_SECOND.
 /// @param[out] out Receives the curve; free with rmf_curve_free.
 /// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT for unknown codes.
 /// \since 0.2
+/// \ingroup rmf_sheet
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_part_boundary(
     part: *const RmfConeSpline,
@@ -491,7 +532,9 @@ fn flat_edge(edge: &PatternEdge, layer: u32) -> RmfFlatEdge {
 ///
 /// Size query: with capacity 0 (edges may be NULL) only count is written.
 ///
+/// @param[in] part A part (rmf_cone_spline_transition, _part or _tangent_part).
 /// @param[out] edges Buffer for capacity edges: the outline first, then the bend lines.
+/// @param[in] capacity Capacity of edges; 0 for a size query.
 /// @param[out] count Receives the number of edges.
 /// @return RMF_OK on success or for a size query.
 /// @return RMF_ERROR_NULL_POINTER If part or count is NULL, or edges is NULL with a
@@ -499,6 +542,7 @@ fn flat_edge(edge: &PatternEdge, layer: u32) -> RmfFlatEdge {
 /// @return RMF_ERROR_BUFFER_TOO_SMALL If capacity is non-zero but too small; count is written.
 /// @return RMF_ERROR_INVALID_INPUT If the handle is not a part.
 /// \since 0.2
+/// \ingroup rmf_sheet
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_flat_pattern(
     part: *const RmfConeSpline,
@@ -538,7 +582,9 @@ pub unsafe extern "C" fn rmf_cone_spline_flat_pattern(
 /// NURBS parameters), and optionally the unit normal there (from the inner to the outer
 /// face).
 ///
+/// @param[in] part A part (rmf_cone_spline_transition, _part or _tangent_part).
 /// @param[in] flat count points of the flat pattern.
+/// @param[in] count Number of points (0: nothing to do).
 /// @param[in] layer RMF_SHEET_LAYER_*.
 /// @param[out] points count points on the layer.
 /// @param[out] normals count unit normals, or NULL.
@@ -548,6 +594,7 @@ pub unsafe extern "C" fn rmf_cone_spline_flat_pattern(
 ///         pattern (the message names it: flat[i]), for an unknown layer, or if the handle
 ///         is not a part.
 /// \since 0.2
+/// \ingroup rmf_sheet
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_flat_to_surface(
     part: *const RmfConeSpline,
@@ -585,7 +632,9 @@ pub unsafe extern "C" fn rmf_cone_spline_flat_to_surface(
 /// max_distance of it) to the flat pattern's point of the neutral layer straight across
 /// the sheet, by the exact isometry of the development.
 ///
+/// @param[in] part A part (rmf_cone_spline_transition, _part or _tangent_part).
 /// @param[in] points count points on the layer.
+/// @param[in] count Number of points (0: nothing to do).
 /// @param[in] layer RMF_SHEET_LAYER_*.
 /// @param[in] max_distance Largest accepted distance of a point from the layer's part, ≥ 0.
 /// @param[out] flat count points of the flat pattern.
@@ -596,6 +645,7 @@ pub unsafe extern "C" fn rmf_cone_spline_flat_to_surface(
 ///         max_distance is negative or not finite, the layer is unknown, or the handle is
 ///         not a part.
 /// \since 0.2
+/// \ingroup rmf_sheet
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_surface_to_flat(
     part: *const RmfConeSpline,
@@ -635,8 +685,10 @@ pub unsafe extern "C" fn rmf_cone_spline_surface_to_flat(
 /// Size query: with capacity 0 (buffer may be NULL) only length is written. Otherwise the
 /// text and a terminating NUL are written if capacity ≥ length + 1.
 ///
+/// @param[in] part A part (rmf_cone_spline_transition, _part or _tangent_part).
 /// @param[in] format RMF_SHEET_FORMAT_*.
 /// @param[out] buffer capacity bytes for the text and its NUL.
+/// @param[in] capacity Size of buffer in bytes; 0 for a size query.
 /// @param[out] length Receives the length of the text (without the NUL).
 /// @return RMF_OK on success or for a size query.
 /// @return RMF_ERROR_NULL_POINTER If part or length is NULL, or buffer is NULL with a
@@ -644,18 +696,20 @@ pub unsafe extern "C" fn rmf_cone_spline_surface_to_flat(
 /// @return RMF_ERROR_BUFFER_TOO_SMALL If 0 < capacity ≤ length; length is written.
 /// @return RMF_ERROR_INVALID_INPUT For an unknown format or a handle that is not a part.
 /// \since 0.2
+/// \ingroup rmf_export
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_part_export(
     part: *const RmfConeSpline,
     format: RmfSheetFormat,
-    buffer_: *mut c_char,
+    buffer: *mut c_char,
     capacity: usize,
     length: *mut usize,
 ) -> RmfStatus {
     guard("rmf_cone_spline_part_export", || {
         let p = part_of(reference(part, "part")?, "part")?;
         let length = out_ptr(length, "length")?;
-        let out = buffer(buffer_.cast::<u8>(), capacity, "buffer")?;
+        // The parameter keeps its C name and shadows the helper, hence the path.
+        let out = crate::boundary::buffer(buffer.cast::<u8>(), capacity, "buffer")?;
         let text = match format {
             RMF_SHEET_FORMAT_STEP_SOLID => step::solid_to_step(&p.solid_faces()?, "rmfsurf part")?,
             RMF_SHEET_FORMAT_STEP_FLAT => {

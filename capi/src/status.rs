@@ -8,6 +8,7 @@ use std::ffi::CString;
 /// Result of every rmf_* function that is not a pure accessor.
 ///
 /// The values are fixed and never reused; new codes are added at the end.
+/// \ingroup rmf_foundation
 #[repr(u32)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[allow(clippy::enum_variant_names)]
@@ -56,13 +57,17 @@ impl From<&Error> for RmfStatus {
 }
 
 /// Major version of the library; equals the first number of rmf_version().
+/// \ingroup rmf_foundation
 pub const RMF_VERSION_MAJOR: u32 = 0;
 /// Minor version of the library.
+/// \ingroup rmf_foundation
 pub const RMF_VERSION_MINOR: u32 = 2;
 /// Patch version of the library.
+/// \ingroup rmf_foundation
 pub const RMF_VERSION_PATCH: u32 = 0;
 /// The ABI number: the N of the shared library's SONAME librmfsurf.so.N, raised on every
 /// ABI break (0.1.0 had no SONAME; 0.2.0 is ABI 1).
+/// \ingroup rmf_foundation
 pub const RMF_ABI_VERSION: u32 = 1;
 
 thread_local! {
@@ -80,6 +85,8 @@ pub(crate) fn set_last_error(message: &str) {
 /// @return A NUL-terminated UTF-8 string, never NULL ("" if nothing has failed yet on this
 ///         thread). Owned by the library: do not free it; it stays valid until the next
 ///         failing rmf_* call on the same thread.
+/// \since 0.1
+/// \ingroup rmf_foundation
 #[no_mangle]
 pub extern "C" fn rmf_last_error() -> *const c_char {
     LAST_ERROR.with(|cell| cell.borrow().as_ptr())
@@ -89,6 +96,8 @@ pub extern "C" fn rmf_last_error() -> *const c_char {
 /// of the header the program was compiled with when the library matches it.
 ///
 /// @return A static NUL-terminated string, never NULL; do not free it.
+/// \since 0.1
+/// \ingroup rmf_foundation
 #[no_mangle]
 pub extern "C" fn rmf_version() -> *const c_char {
     concat!(env!("CARGO_PKG_VERSION"), "\0").as_ptr().cast()
@@ -98,6 +107,8 @@ pub extern "C" fn rmf_version() -> *const c_char {
 ///
 /// @param[in] status Any integer; values that are no RmfStatus give "RMF_UNKNOWN_STATUS".
 /// @return A static NUL-terminated string, never NULL; do not free it.
+/// \since 0.1
+/// \ingroup rmf_foundation
 #[no_mangle]
 pub extern "C" fn rmf_status_name(status: u32) -> *const c_char {
     let name = STATUS_NAMES

@@ -2,8 +2,8 @@
 //! with its NURBS and per-patch views and a tessellator.
 
 use super::boundary::{
-    buffer, free_handle, guard, invalid_arg, optional_out, out_ptr, reference, slice, to_usize,
-    write, FfiError, FfiResult,
+    buffer, free_handle, guard, invalid_arg, optional_out, options, out_ptr, reference, slice,
+    to_usize, write, FfiError, FfiResult, OptionsStruct,
 };
 use super::curve::RmfCurve;
 use super::frames::{rational_frames, RmfFrames};
@@ -15,6 +15,7 @@ use std::sync::{Arc, OnceLock};
 
 /// A piecewise rational tensor-product surface s(u, v) (opaque). Freed with
 /// rmf_surface_free. Immutable; may be read from several threads at once.
+/// \ingroup rmf_surfaces
 pub struct RmfSurface {
     pub(crate) surface: Arc<PiecewiseSurface>,
     /// The caller's NURBS data when created from it: the NURBS view shows it unchanged.
@@ -67,6 +68,9 @@ impl RmfSurface {
 
 /// Creates a surface from NURBS data.
 ///
+/// Deprecated: use rmf_nurbs_surface_create_from (the data in one struct that can grow).
+/// This function stays, with the same results, for at least one release.
+///
 /// @param[in] degree_u, degree_v Degrees, each in 1..=64.
 /// @param[in] poles pole_count_u * pole_count_v Cartesian poles, index i * pole_count_v + j
 ///            with i along u.
@@ -81,6 +85,8 @@ impl RmfSurface {
 /// @return RMF_ERROR_NULL_POINTER If poles, knots_u, knots_v or out is NULL.
 /// @return RMF_ERROR_INVALID_INPUT If a count, degree, knot, weight or pole is invalid (the
 ///         message names it).
+/// \since 0.1
+/// \ingroup rmf_surfaces
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn rmf_nurbs_surface_create(
@@ -98,50 +104,189 @@ pub unsafe extern "C" fn rmf_nurbs_surface_create(
 ) -> RmfStatus {
     guard("rmf_nurbs_surface_create", || {
         let out = out_ptr(out, "out")?;
-        for (p, name) in [
-            (poles.cast::<u8>(), "poles"),
-            (knots_u.cast(), "knots_u"),
-            (knots_v.cast(), "knots_v"),
-        ] {
-            if p.is_null() {
-                return Err(FfiError::Null(name));
-            }
-        }
-        check_nurbs_counts(to_usize(degree_u), pole_count_u, knot_count_u, "_u")?;
-        check_nurbs_counts(to_usize(degree_v), pole_count_v, knot_count_v, "_v")?;
-        let Some(count) = pole_count_u.checked_mul(pole_count_v) else {
-            return invalid_arg(format!(
-                "pole_count_u × pole_count_v = {pole_count_u} × {pole_count_v} overflows"
-            ));
-        };
-        let poles = slice(poles, count, "poles")?
-            .iter()
-            .map(|&p| p.into())
-            .collect();
-        let weights = if weights.is_null() {
-            None
-        } else {
-            Some(slice(weights, count, "weights")?.to_vec())
-        };
-        let knots_u = slice(knots_u, knot_count_u, "knots_u")?.to_vec();
-        let knots_v = slice(knots_v, knot_count_v, "knots_v")?.to_vec();
-        let nurbs = NurbsSurface::new(
-            to_usize(degree_u),
-            to_usize(degree_v),
-            pole_count_u,
-            pole_count_v,
+        let surface = surface_from_nurbs(
+            degree_u,
+            degree_v,
             poles,
             weights,
+            pole_count_u,
+            pole_count_v,
             knots_u,
+            knot_count_u,
             knots_v,
+            knot_count_v,
         )?;
-        let surface = RmfSurface::new(nurbs.to_piecewise()?, Some(nurbs));
+        write(out, surface.into_raw());
+        Ok(())
+    })
+}
+
+/// A surface handle from caller NURBS data, checked (both C constructors).
+///
+/// # Safety
+/// The pointers are NULL or valid for the counts given.
+#[allow(clippy::too_many_arguments)]
+unsafe fn surface_from_nurbs(
+    degree_u: u32,
+    degree_v: u32,
+    poles: *const RmfVec3,
+    weights: *const f64,
+    pole_count_u: usize,
+    pole_count_v: usize,
+    knots_u: *const f64,
+    knot_count_u: usize,
+    knots_v: *const f64,
+    knot_count_v: usize,
+) -> FfiResult<RmfSurface> {
+    for (p, name) in [
+        (poles.cast::<u8>(), "poles"),
+        (knots_u.cast(), "knots_u"),
+        (knots_v.cast(), "knots_v"),
+    ] {
+        if p.is_null() {
+            return Err(FfiError::Null(name));
+        }
+    }
+    check_nurbs_counts(to_usize(degree_u), pole_count_u, knot_count_u, "_u")?;
+    check_nurbs_counts(to_usize(degree_v), pole_count_v, knot_count_v, "_v")?;
+    let Some(count) = pole_count_u.checked_mul(pole_count_v) else {
+        return invalid_arg(format!(
+            "pole_count_u × pole_count_v = {pole_count_u} × {pole_count_v} overflows"
+        ));
+    };
+    let poles = slice(poles, count, "poles")?
+        .iter()
+        .map(|&p| p.into())
+        .collect();
+    let weights = if weights.is_null() {
+        None
+    } else {
+        Some(slice(weights, count, "weights")?.to_vec())
+    };
+    let knots_u = slice(knots_u, knot_count_u, "knots_u")?.to_vec();
+    let knots_v = slice(knots_v, knot_count_v, "knots_v")?.to_vec();
+    let nurbs = NurbsSurface::new(
+        to_usize(degree_u),
+        to_usize(degree_v),
+        pole_count_u,
+        pole_count_v,
+        poles,
+        weights,
+        knots_u,
+        knots_v,
+    )?;
+    Ok(RmfSurface::new(nurbs.to_piecewise()?, Some(nurbs)))
+}
+
+/// NURBS data of a surface for rmf_nurbs_surface_create_from: the fields of
+/// rmf_nurbs_surface_create in one struct. The caller sets struct_size =
+/// sizeof(RmfNurbsSurfaceData); the struct only grows at the end.
+/// \since 0.2
+/// \ingroup rmf_surfaces
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct RmfNurbsSurfaceData {
+    /// sizeof(RmfNurbsSurfaceData), set by the caller.
+    pub struct_size: usize,
+    /// Degree along u, 1..=64.
+    pub degree_u: u32,
+    /// Degree along v, 1..=64.
+    pub degree_v: u32,
+    /// Number of poles along u, ≥ degree_u + 1.
+    pub pole_count_u: usize,
+    /// Number of poles along v, ≥ degree_v + 1.
+    pub pole_count_v: usize,
+    /// pole_count_u * pole_count_v Cartesian poles, index i * pole_count_v + j with i along u.
+    pub poles: *const RmfVec3,
+    /// Weights in the same order (finite, > 0), or NULL for all 1.
+    pub weights: *const f64,
+    /// Number of u knots, pole_count_u + degree_u + 1.
+    pub knot_count_u: usize,
+    /// Clamped knot vector in u.
+    pub knots_u: *const f64,
+    /// Number of v knots, pole_count_v + degree_v + 1.
+    pub knot_count_v: usize,
+    /// Clamped knot vector in v.
+    pub knots_v: *const f64,
+}
+
+impl Default for RmfNurbsSurfaceData {
+    fn default() -> Self {
+        Self {
+            struct_size: std::mem::size_of::<Self>(),
+            degree_u: 0,
+            degree_v: 0,
+            pole_count_u: 0,
+            pole_count_v: 0,
+            poles: std::ptr::null(),
+            weights: std::ptr::null(),
+            knot_count_u: 0,
+            knots_u: std::ptr::null(),
+            knot_count_v: 0,
+            knots_v: std::ptr::null(),
+        }
+    }
+}
+
+// SAFETY: repr(C), usize first; numbers and raw pointers (any bit pattern is a value; the
+// pointers are checked like arguments before use).
+unsafe impl OptionsStruct for RmfNurbsSurfaceData {
+    const FIRST_SIZE: usize = std::mem::size_of::<Self>();
+    const SIZE_HINT: &'static str = "set it to sizeof(RmfNurbsSurfaceData)";
+}
+
+/// Creates a surface from NURBS data given in one struct, as rmf_nurbs_surface_create does.
+///
+/// @param[in] data The NURBS data, struct_size set to sizeof(RmfNurbsSurfaceData). Degrees
+///            and counts are checked against each other before any array is read.
+/// @param[out] out Receives the surface; free with rmf_surface_free. Untouched on failure.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If data, data->poles, data->knots_u, data->knots_v or out
+///         is NULL.
+/// @return RMF_ERROR_INVALID_INPUT If data->struct_size is no size of the struct, or a count,
+///         degree, knot, weight or pole is invalid (the message names it: "data: ...").
+/// \since 0.2
+/// \ingroup rmf_surfaces
+#[no_mangle]
+pub unsafe extern "C" fn rmf_nurbs_surface_create_from(
+    data: *const RmfNurbsSurfaceData,
+    out: *mut *mut RmfSurface,
+) -> RmfStatus {
+    guard("rmf_nurbs_surface_create_from", || {
+        if data.is_null() {
+            return Err(FfiError::Null("data"));
+        }
+        let d = options(data, "data")?;
+        let out = out_ptr(out, "out")?;
+        let surface = surface_from_nurbs(
+            d.degree_u,
+            d.degree_v,
+            d.poles,
+            d.weights,
+            d.pole_count_u,
+            d.pole_count_v,
+            d.knots_u,
+            d.knot_count_u,
+            d.knots_v,
+            d.knot_count_v,
+        )
+        .map_err(|e| match e {
+            FfiError::Null("poles") => FfiError::Null("data->poles"),
+            FfiError::Null("knots_u") => FfiError::Null("data->knots_u"),
+            FfiError::Null("knots_v") => FfiError::Null("data->knots_v"),
+            FfiError::Core(e) => FfiError::Core(e.context("data")),
+            other => other,
+        })?;
         write(out, surface.into_raw());
         Ok(())
     })
 }
 
 /// Frees a surface. NULL is a no-op.
+///
+/// @param[in] surface The surface to free, or NULL.
+/// \since 0.1
+/// \ingroup rmf_surfaces
 #[no_mangle]
 pub unsafe extern "C" fn rmf_surface_free(surface: *mut RmfSurface) {
     free_handle(surface)
@@ -149,7 +294,12 @@ pub unsafe extern "C" fn rmf_surface_free(surface: *mut RmfSurface) {
 
 /// The parameter domain [u_min, u_max] × [v_min, v_max] of a surface.
 ///
+/// @param[in] surface The surface.
+/// @param[out] u_min, u_max Receive the ends of the u domain.
+/// @param[out] v_min, v_max Receive the ends of the v domain.
 /// @return RMF_OK, or RMF_ERROR_NULL_POINTER if any argument is NULL.
+/// \since 0.1
+/// \ingroup rmf_surfaces
 #[no_mangle]
 pub unsafe extern "C" fn rmf_surface_domain(
     surface: *const RmfSurface,
@@ -184,6 +334,8 @@ pub unsafe extern "C" fn rmf_surface_domain(
 /// @return RMF_OK on success.
 /// @return RMF_ERROR_NULL_POINTER If surface or point is NULL.
 /// @return RMF_ERROR_INVALID_INPUT If u or v is not finite or outside the domain.
+/// \since 0.1
+/// \ingroup rmf_surfaces
 #[no_mangle]
 pub unsafe extern "C" fn rmf_surface_eval(
     surface: *const RmfSurface,
@@ -214,11 +366,14 @@ pub unsafe extern "C" fn rmf_surface_eval(
 /// Borrowed NURBS view of a surface: one clamped NURBS with full-multiplicity interior
 /// knots at patch boundaries (for a surface made by rmf_nurbs_surface_create: the data given).
 ///
+/// @param[in] surface The surface.
 /// @param[out] view Receives pointers owned by the surface: do not free them; valid until
 ///             rmf_surface_free(surface).
 /// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if the patches do not
 ///         join into one continuous NURBS (Frenet frame vectors and Frenet sweeps along a G1
 ///         spline jump at the joints); rmf_surface_patch still gives every piece.
+/// \since 0.1
+/// \ingroup rmf_surfaces
 #[no_mangle]
 pub unsafe extern "C" fn rmf_surface_nurbs(
     surface: *const RmfSurface,
@@ -250,18 +405,28 @@ pub unsafe extern "C" fn rmf_surface_nurbs(
 
 /// Copies the NURBS data of a surface (as in rmf_surface_nurbs) into caller buffers.
 ///
+/// Deprecated: use rmf_surface_nurbs_copy_into (the buffers in one struct that can grow,
+/// the degrees and counts in an RmfNurbsSurface). This function stays, with the same
+/// results, for at least one release.
+///
 /// Size query: with pole_capacity = knot_capacity_u = knot_capacity_v = 0 (buffers may then
 /// be NULL) only the degrees and counts are written and RMF_OK is returned.
 ///
+/// @param[in] surface The surface.
 /// @param[out] degree_u, degree_v Receive the degrees.
 /// @param[out] poles, weights Buffers for pole_capacity poles and weights (index i * pole_count_v + j).
+/// @param[in] pole_capacity Capacity of poles and weights.
 /// @param[out] knots_u, knots_v Buffers for knot_capacity_u and knot_capacity_v knots.
+/// @param[in] knot_capacity_u Capacity of knots_u.
+/// @param[in] knot_capacity_v Capacity of knots_v.
 /// @param[out] pole_count_u, pole_count_v, knot_count_u, knot_count_v Receive the counts.
 /// @return RMF_OK on success or for a size query.
 /// @return RMF_ERROR_NULL_POINTER If surface, a degree or a count pointer is NULL, or a
 ///         buffer is NULL with a non-zero capacity.
 /// @return RMF_ERROR_BUFFER_TOO_SMALL If a capacity is too small; then only the degrees and
 ///         counts are written.
+/// \since 0.1
+/// \ingroup rmf_surfaces
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn rmf_surface_nurbs_copy(
@@ -311,28 +476,161 @@ pub unsafe extern "C" fn rmf_surface_nurbs_copy(
         if pole_capacity == 0 && knot_capacity_u == 0 && knot_capacity_v == 0 {
             return Ok(());
         }
-        if pole_capacity < v.poles.len()
-            || knot_capacity_u < n.knots_u.len()
-            || knot_capacity_v < n.knots_v.len()
-        {
-            return Err(FfiError::BufferTooSmall(format!(
-                "need {} poles, {} u knots and {} v knots",
-                v.poles.len(),
-                n.knots_u.len(),
-                n.knots_v.len()
-            )));
+        copy_nurbs(v, poles, weights, knots_u, knots_v)
+    })
+}
+
+/// Copies a NURBS view into caller buffers, or says how large they must be.
+fn copy_nurbs(
+    v: &NurbsView,
+    poles: &mut [RmfVec3],
+    weights: &mut [f64],
+    knots_u: &mut [f64],
+    knots_v: &mut [f64],
+) -> FfiResult {
+    let n = &v.nurbs;
+    if poles.len() < v.poles.len()
+        || weights.len() < v.poles.len()
+        || knots_u.len() < n.knots_u.len()
+        || knots_v.len() < n.knots_v.len()
+    {
+        return Err(FfiError::BufferTooSmall(format!(
+            "need {} poles, {} u knots and {} v knots",
+            v.poles.len(),
+            n.knots_u.len(),
+            n.knots_v.len()
+        )));
+    }
+    poles[..v.poles.len()].copy_from_slice(&v.poles);
+    weights[..v.poles.len()].copy_from_slice(&n.weights);
+    knots_u[..n.knots_u.len()].copy_from_slice(&n.knots_u);
+    knots_v[..n.knots_v.len()].copy_from_slice(&n.knots_v);
+    Ok(())
+}
+
+/// Caller buffers for rmf_surface_nurbs_copy_into. The caller sets struct_size =
+/// sizeof(RmfNurbsSurfaceBuffers); the struct only grows at the end. A buffer may be NULL
+/// when its capacity is 0.
+/// \since 0.2
+/// \ingroup rmf_surfaces
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct RmfNurbsSurfaceBuffers {
+    /// sizeof(RmfNurbsSurfaceBuffers), set by the caller.
+    pub struct_size: usize,
+    /// Buffer for pole_capacity poles, index i * pole_count_v + j with i along u.
+    pub poles: *mut RmfVec3,
+    /// Buffer for pole_capacity weights, in the order of the poles.
+    pub weights: *mut f64,
+    /// Capacity of poles and of weights.
+    pub pole_capacity: usize,
+    /// Buffer for knot_capacity_u knots along u.
+    pub knots_u: *mut f64,
+    /// Capacity of knots_u.
+    pub knot_capacity_u: usize,
+    /// Buffer for knot_capacity_v knots along v.
+    pub knots_v: *mut f64,
+    /// Capacity of knots_v.
+    pub knot_capacity_v: usize,
+}
+
+impl Default for RmfNurbsSurfaceBuffers {
+    fn default() -> Self {
+        Self {
+            struct_size: std::mem::size_of::<Self>(),
+            poles: std::ptr::null_mut(),
+            weights: std::ptr::null_mut(),
+            pole_capacity: 0,
+            knots_u: std::ptr::null_mut(),
+            knot_capacity_u: 0,
+            knots_v: std::ptr::null_mut(),
+            knot_capacity_v: 0,
         }
-        poles[..v.poles.len()].copy_from_slice(&v.poles);
-        weights[..v.poles.len()].copy_from_slice(&n.weights);
-        knots_u[..n.knots_u.len()].copy_from_slice(&n.knots_u);
-        knots_v[..n.knots_v.len()].copy_from_slice(&n.knots_v);
+    }
+}
+
+// SAFETY: repr(C), usize first; numbers and raw pointers (any bit pattern is a value; the
+// pointers are checked like arguments before use).
+unsafe impl OptionsStruct for RmfNurbsSurfaceBuffers {
+    const FIRST_SIZE: usize = std::mem::size_of::<Self>();
+    const SIZE_HINT: &'static str = "set it to sizeof(RmfNurbsSurfaceBuffers)";
+}
+
+/// Copies the NURBS data of a surface (as in rmf_surface_nurbs) into the caller's buffers,
+/// as rmf_surface_nurbs_copy does, and describes the copy.
+///
+/// Size query: with all capacities 0 (the buffers may then be NULL) only the degrees and
+/// counts are written to `copy` (its pointers NULL) and RMF_OK is returned.
+///
+/// @param[in] surface The surface.
+/// @param[in] buffers The caller's buffers and their capacities, struct_size set.
+/// @param[out] copy Receives the degrees and counts, and pointers to the caller's buffers
+///             now holding the poles, weights and knots (NULL after a size query).
+/// @return RMF_OK on success or for a size query.
+/// @return RMF_ERROR_NULL_POINTER If surface, buffers or copy is NULL, or a buffer is NULL
+///         with a non-zero capacity (the message names it: buffers->poles, ...).
+/// @return RMF_ERROR_INVALID_INPUT If buffers->struct_size is no size of the struct, or the
+///         patches do not join into one continuous NURBS (as for rmf_surface_nurbs).
+/// @return RMF_ERROR_BUFFER_TOO_SMALL If a capacity is non-zero but too small; then the
+///         degrees and counts are written to `copy`, with NULL pointers.
+/// \since 0.2
+/// \ingroup rmf_surfaces
+#[no_mangle]
+pub unsafe extern "C" fn rmf_surface_nurbs_copy_into(
+    surface: *const RmfSurface,
+    buffers: *const RmfNurbsSurfaceBuffers,
+    copy: *mut RmfNurbsSurface,
+) -> RmfStatus {
+    guard("rmf_surface_nurbs_copy_into", || {
+        let surface = reference(surface, "surface")?;
+        if buffers.is_null() {
+            return Err(FfiError::Null("buffers"));
+        }
+        let b = options(buffers, "buffers")?;
+        let copy = out_ptr(copy, "copy")?;
+        let poles = buffer(b.poles, b.pole_capacity, "buffers->poles")?;
+        let weights = buffer(b.weights, b.pole_capacity, "buffers->weights")?;
+        let knots_u = buffer(b.knots_u, b.knot_capacity_u, "buffers->knots_u")?;
+        let knots_v = buffer(b.knots_v, b.knot_capacity_v, "buffers->knots_v")?;
+        let v = surface.nurbs_view()?;
+        let n = &v.nurbs;
+        let mut described = RmfNurbsSurface {
+            degree_u: n.degree_u as u32,
+            degree_v: n.degree_v as u32,
+            pole_count_u: n.pole_count_u,
+            pole_count_v: n.pole_count_v,
+            poles: std::ptr::null(),
+            weights: std::ptr::null(),
+            knot_count_u: n.knots_u.len(),
+            knots_u: std::ptr::null(),
+            knot_count_v: n.knots_v.len(),
+            knots_v: std::ptr::null(),
+        };
+        if b.pole_capacity == 0 && b.knot_capacity_u == 0 && b.knot_capacity_v == 0 {
+            write(copy, described);
+            return Ok(());
+        }
+        if let Err(e) = copy_nurbs(v, poles, weights, knots_u, knots_v) {
+            // As for rmf_surface_nurbs_copy: the counts say how large the buffers must be.
+            write(copy, described);
+            return Err(e);
+        }
+        described.poles = b.poles;
+        described.weights = b.weights;
+        described.knots_u = b.knots_u;
+        described.knots_v = b.knots_v;
+        write(copy, described);
         Ok(())
     })
 }
 
 /// Numbers of Bézier patches of a surface along u and along v.
 ///
+/// @param[in] surface The surface.
+/// @param[out] count_u, count_v Receive the numbers of patches along u and v.
 /// @return RMF_OK, or RMF_ERROR_NULL_POINTER if any argument is NULL.
+/// \since 0.1
+/// \ingroup rmf_surfaces
 #[no_mangle]
 pub unsafe extern "C" fn rmf_surface_patch_count(
     surface: *const RmfSurface,
@@ -350,8 +648,13 @@ pub unsafe extern "C" fn rmf_surface_patch_count(
 
 /// Borrowed view of patch (index_u, index_v) of a surface as a rational Bézier patch.
 ///
+/// @param[in] surface The surface.
+/// @param[in] index_u 0 ≤ index_u < patch count along u.
+/// @param[in] index_v 0 ≤ index_v < patch count along v.
 /// @param[out] view Receives pointers owned by the surface (valid until it is freed).
 /// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if an index is out of range.
+/// \since 0.1
+/// \ingroup rmf_surfaces
 #[no_mangle]
 pub unsafe extern "C" fn rmf_surface_patch(
     surface: *const RmfSurface,
@@ -412,6 +715,8 @@ pub unsafe extern "C" fn rmf_surface_patch(
 ///         50,000,000 points.
 /// @return RMF_ERROR_BUFFER_TOO_SMALL If a capacity is too small; then only the counts are
 ///         written.
+/// \since 0.1
+/// \ingroup rmf_surfaces
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn rmf_surface_tessellate(
@@ -478,6 +783,8 @@ pub unsafe extern "C" fn rmf_surface_tessellate(
 /// @return RMF_ERROR_NULL_POINTER If an argument is NULL.
 /// @return RMF_ERROR_INVALID_INPUT If the frames are not rational or do not belong to the
 ///         spine, or the surface would have more than 2^22 (4,194,304) control points.
+/// \since 0.1
+/// \ingroup rmf_sweeps
 #[no_mangle]
 pub unsafe extern "C" fn rmf_sweep_surface(
     spine: *const RmfCurve,

@@ -20,11 +20,15 @@ pub(crate) fn piece_views<'a>(pieces: impl Iterator<Item = &'a [DVec4]>) -> Piec
 }
 
 /// A point or vector in 3-space.
+/// \ingroup rmf_foundation
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct RmfVec3 {
+    /// The x coordinate.
     pub x: f64,
+    /// The y coordinate.
     pub y: f64,
+    /// The z coordinate.
     pub z: f64,
 }
 
@@ -45,10 +49,13 @@ impl From<RmfVec3> for DVec3 {
 }
 
 /// A point or vector in a plane (a flat pattern's coordinates).
+/// \ingroup rmf_sheet
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct RmfVec2 {
+    /// The x coordinate.
     pub x: f64,
+    /// The y coordinate.
     pub y: f64,
 }
 
@@ -70,6 +77,7 @@ impl From<RmfVec2> for rmfsurf::glam::DVec2 {
 ///
 /// The arrays are owned by the curve handle: do not free them; they stay valid until the
 /// handle is freed.
+/// \ingroup rmf_curves
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct RmfNurbsCurve {
@@ -90,12 +98,17 @@ pub struct RmfNurbsCurve {
 
 /// Borrowed view of a NURBS surface. Pole (i, j) is at index `i * pole_count_v + j`, i along
 /// u; the arrays are owned by the surface handle (do not free; valid until it is freed).
+/// \ingroup rmf_surfaces
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct RmfNurbsSurface {
+    /// Degree along u.
     pub degree_u: u32,
+    /// Degree along v.
     pub degree_v: u32,
+    /// Number of poles along u.
     pub pole_count_u: usize,
+    /// Number of poles along v.
     pub pole_count_v: usize,
     /// pole_count_u * pole_count_v Cartesian poles, index i * pole_count_v + j.
     pub poles: *const RmfVec3,
@@ -103,39 +116,54 @@ pub struct RmfNurbsSurface {
     pub weights: *const f64,
     /// pole_count_u + degree_u + 1.
     pub knot_count_u: usize,
+    /// knot_count_u clamped knots along u.
     pub knots_u: *const f64,
     /// pole_count_v + degree_v + 1.
     pub knot_count_v: usize,
+    /// knot_count_v clamped knots along v.
     pub knots_v: *const f64,
 }
 
 /// Borrowed view of one rational Bézier segment of a curve: degree + 1 poles and weights
 /// for the parameter interval [t_start, t_end] of the curve (the Bernstein basis runs over
 /// that interval). Owned by the curve handle.
+/// \ingroup rmf_curves
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct RmfBezierCurve {
+    /// Polynomial degree.
     pub degree: u32,
     /// degree + 1 Cartesian poles.
     pub poles: *const RmfVec3,
     /// degree + 1 weights, all > 0.
     pub weights: *const f64,
+    /// Start of the segment's interval in the curve's parameter.
     pub t_start: f64,
+    /// End of the segment's interval.
     pub t_end: f64,
 }
 
 /// Borrowed view of one rational tensor-product Bézier patch of a surface:
 /// (degree_u + 1) * (degree_v + 1) poles, index `i * (degree_v + 1) + j`, on
 /// [u_start, u_end] × [v_start, v_end]. Owned by the surface handle.
+/// \ingroup rmf_surfaces
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct RmfBezierPatch {
+    /// Degree along u.
     pub degree_u: u32,
+    /// Degree along v.
     pub degree_v: u32,
+    /// (degree_u + 1) * (degree_v + 1) Cartesian poles, index i * (degree_v + 1) + j.
     pub poles: *const RmfVec3,
+    /// Weights in the same order, all > 0.
     pub weights: *const f64,
+    /// Start of the patch's u interval in the surface's parameter.
     pub u_start: f64,
+    /// End of the u interval.
     pub u_end: f64,
+    /// Start of the patch's v interval.
     pub v_start: f64,
+    /// End of the v interval.
     pub v_end: f64,
 }

@@ -15,36 +15,49 @@ use rmfsurf::PiecewiseCurve;
 use rmfsurf::{sweep_wire, Corner, Edge, WireSweep};
 
 /// What an RmfEdge is (values fixed, validated).
+/// \ingroup rmf_wire
 pub type RmfEdgeKind = u32;
 /// A straight line from points[0] to points[1].
+/// \ingroup rmf_wire
 pub const RMF_EDGE_LINE: RmfEdgeKind = 0;
 /// A circular arc from points[0] through points[1] to points[2].
+/// \ingroup rmf_wire
 pub const RMF_EDGE_ARC: RmfEdgeKind = 1;
 /// A curve (any RmfCurve: NURBS data, PH, Möbius or RRMF curves, callbacks approximated
 /// first with rmf_ph_spline_approximate, ...) on its whole domain.
+/// \ingroup rmf_wire
 pub const RMF_EDGE_CURVE: RmfEdgeKind = 2;
 
 /// One edge of a wire, in either orientation. Unused points are ignored; `curve` is read
 /// only for RMF_EDGE_CURVE (borrowed for the call; the shape keeps nothing of it).
+/// \ingroup rmf_wire
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct RmfEdge {
+    /// RMF_EDGE_LINE, RMF_EDGE_ARC or RMF_EDGE_CURVE.
     pub kind: RmfEdgeKind,
+    /// A line's start and end (points[0], points[1]); an arc's start, a point on it and
+    /// its end.
     pub points: [RmfVec3; 3],
+    /// RMF_EDGE_CURVE: the curve, on its whole domain; ignored otherwise.
     pub curve: *const RmfCurve,
 }
 
 /// How sharp (G0) joints of a wire are resolved (values fixed, validated).
+/// \ingroup rmf_wire
 pub type RmfCorner = u32;
 /// The corner replaced by a circular arc of corner_radius tangent to both edges (the
 /// edges must lie in the plane of the corner near it): an exact torus elbow.
+/// \ingroup rmf_wire
 pub const RMF_CORNER_ROUND: RmfCorner = 0;
 /// Both legs cut by the plane bisecting the corner, the frame reflected in it (the legs
 /// must be straight lines).
+/// \ingroup rmf_wire
 pub const RMF_CORNER_MITER: RmfCorner = 1;
 
 /// Options of rmf_wire_sweep. Initialise with rmf_wire_sweep_options_init, then change
 /// fields; the struct only grows at the end.
+/// \ingroup rmf_wire
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct RmfWireSweepOptions {
@@ -105,6 +118,7 @@ unsafe impl OptionsStruct for RmfWireSweepOptions {
 /// @param[out] options Receives the defaults (see RmfWireSweepOptions).
 /// @return RMF_OK, or RMF_ERROR_NULL_POINTER if options is NULL.
 /// \since 0.2
+/// \ingroup rmf_wire
 #[no_mangle]
 pub unsafe extern "C" fn rmf_wire_sweep_options_init(
     options: *mut RmfWireSweepOptions,
@@ -240,6 +254,7 @@ unsafe fn wire_edges(edges: &[RmfEdge]) -> Result<Vec<Edge>, FfiError> {
 /// @return RMF_ERROR_NO_SOLUTION / RMF_ERROR_NOT_CONVERGED If a curve edge admits no PH
 ///         cubic spline within the tolerance (e.g. a cusp).
 /// \since 0.2
+/// \ingroup rmf_wire
 #[no_mangle]
 pub unsafe extern "C" fn rmf_wire_sweep(
     edges: *const RmfEdge,

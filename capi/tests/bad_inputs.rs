@@ -100,6 +100,76 @@ impl Fixtures {
     }
 }
 
+/// rmf_cone_spline_approximate_with_options on the fixtures' curve with default options at
+/// tolerance 1e-3, changed by `edit`; `null_options` passes NULL instead.
+fn cone_with(
+    f: &Fixtures,
+    edit: impl Fn(&mut RmfConeApproximationOptions),
+    null_options: bool,
+) -> RmfStatus {
+    let mut options = std::mem::MaybeUninit::uninit();
+    unsafe {
+        assert_eq!(
+            rmf_cone_approximation_options_init(options.as_mut_ptr()),
+            RmfStatus::RmfOk
+        );
+    }
+    let mut options = unsafe { options.assume_init() };
+    options.tolerance = 1e-3;
+    edit(&mut options);
+    let options: *const RmfConeApproximationOptions = if null_options { null() } else { &options };
+    let mut out = null_mut();
+    unsafe {
+        rmf_cone_spline_approximate_with_options(f.curve, 0.5, 1.0, options, &mut out, null_mut())
+    }
+}
+
+/// rmf_nurbs_surface_create_from on a valid bilinear patch changed by `edit`.
+fn surface_from(edit: impl Fn(&mut RmfNurbsSurfaceData)) -> RmfStatus {
+    let poles = [v(0., 0., 0.), v(0., 1., 0.), v(1., 0., 0.), v(1., 1., 1.)];
+    let knots = [0., 0., 1., 1.];
+    let mut data = RmfNurbsSurfaceData {
+        struct_size: std::mem::size_of::<RmfNurbsSurfaceData>(),
+        degree_u: 1,
+        degree_v: 1,
+        pole_count_u: 2,
+        pole_count_v: 2,
+        poles: poles.as_ptr(),
+        weights: null(),
+        knot_count_u: 4,
+        knots_u: knots.as_ptr(),
+        knot_count_v: 4,
+        knots_v: knots.as_ptr(),
+    };
+    edit(&mut data);
+    let mut out = null_mut();
+    let status = unsafe { rmf_nurbs_surface_create_from(&data, &mut out) };
+    unsafe { rmf_surface_free(out) };
+    status
+}
+
+/// rmf_surface_nurbs_copy_into of the saddle as a size query, its buffers changed by
+/// `edit`; `null_buffers` passes NULL instead.
+fn copy_into(edit: impl Fn(&mut RmfNurbsSurfaceBuffers), null_buffers: bool) -> RmfStatus {
+    let surface = saddle_surface();
+    let mut buffers = RmfNurbsSurfaceBuffers {
+        struct_size: std::mem::size_of::<RmfNurbsSurfaceBuffers>(),
+        poles: null_mut(),
+        weights: null_mut(),
+        pole_capacity: 0,
+        knots_u: null_mut(),
+        knot_capacity_u: 0,
+        knots_v: null_mut(),
+        knot_capacity_v: 0,
+    };
+    edit(&mut buffers);
+    let buffers: *const RmfNurbsSurfaceBuffers = if null_buffers { null() } else { &buffers };
+    let mut copy = std::mem::MaybeUninit::uninit();
+    let status = unsafe { rmf_surface_nurbs_copy_into(surface, buffers, copy.as_mut_ptr()) };
+    unsafe { rmf_surface_free(surface) };
+    status
+}
+
 /// The size query of `rmf_sweep_parabolic_points` for the fixtures' sweep of `profile`.
 fn parabolic_points_count(f: &Fixtures, profile: *mut RmfCurve, v_samples: u32) -> RmfStatus {
     let mut count = 0;
@@ -1569,6 +1639,92 @@ fn rows() -> Vec<Row> {
                     status
                 }
             },
+        },
+        Row {
+            what: "cone approximation options NULL",
+            function: "rmf_cone_spline_approximate_with_options",
+            expected: NULL,
+            names: "options",
+            call: |f| cone_with(f, |_| {}, true),
+        },
+        Row {
+            what: "cone approximation options not initialised",
+            function: "rmf_cone_spline_approximate_with_options",
+            expected: INVALID,
+            names: "options->struct_size",
+            call: |f| cone_with(f, |o| o.struct_size = 0, false),
+        },
+        Row {
+            what: "cone approximation tolerance left at its default 0",
+            function: "rmf_cone_spline_approximate_with_options",
+            expected: INVALID,
+            names: "options: tolerance",
+            call: |f| cone_with(f, |o| o.tolerance = 0.0, false),
+        },
+        Row {
+            what: "cone approximation rule RMF_CONE_RULE_GIVEN",
+            function: "rmf_cone_spline_approximate_with_options",
+            expected: INVALID,
+            names: "options: rule",
+            call: |f| cone_with(f, |o| o.rule = RMF_CONE_RULE_GIVEN, false),
+        },
+        Row {
+            what: "osculating cones of no curve",
+            function: "rmf_cone_spline_osculating_curve",
+            expected: NULL,
+            names: "curve",
+            call: |_| {
+                let parameters = [0.2, 0.5];
+                let mut out = null_mut();
+                unsafe {
+                    rmf_cone_spline_osculating_curve(
+                        null(),
+                        0.5,
+                        1.0,
+                        parameters.as_ptr(),
+                        2,
+                        &mut out,
+                    )
+                }
+            },
+        },
+        Row {
+            what: "surface data NULL",
+            function: "rmf_nurbs_surface_create_from",
+            expected: NULL,
+            names: "data",
+            call: |_| {
+                let mut out = null_mut();
+                unsafe { rmf_nurbs_surface_create_from(null(), &mut out) }
+            },
+        },
+        Row {
+            what: "surface data struct_size not set",
+            function: "rmf_nurbs_surface_create_from",
+            expected: INVALID,
+            names: "data->struct_size",
+            call: |_| surface_from(|d| d.struct_size = 0),
+        },
+        Row {
+            what: "surface data knot count off",
+            function: "rmf_nurbs_surface_create_from",
+            expected: INVALID,
+            names: "data: knot_count_v",
+            call: |_| surface_from(|d| d.knot_count_v = 3),
+        },
+        Row {
+            what: "surface copy buffers NULL",
+            function: "rmf_surface_nurbs_copy_into",
+            expected: NULL,
+            names: "buffers",
+            call: |_| copy_into(|_| {}, true),
+        },
+        Row {
+            what: "surface copy buffers struct_size not set",
+            function: "rmf_surface_nurbs_copy_into",
+            expected: INVALID,
+            names: "buffers->struct_size",
+            call: |_| copy_into(|b| b.struct_size = 0, false),
         },
     ]
 }

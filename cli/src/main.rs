@@ -11,6 +11,8 @@
 //! | [`summary`] | the accuracy figures |
 //! | [`output`] | formats by extension; all-or-nothing writing |
 
+#![warn(missing_docs)]
+
 mod args;
 mod construct;
 mod job;

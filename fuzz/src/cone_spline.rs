@@ -81,7 +81,51 @@ fn approximate(s: &mut Session) {
             &mut out, &mut e,
         )
     };
+    // Checked first: the call below overwrites the last error.
     fit_made(s, "rmf_cone_spline_approximate", status, out, e);
+    if callback.is_none() {
+        // The curve handle through the options struct: the same status and fit.
+        let options = fit_options(tolerance, rule, max_pieces);
+        let (mut out2, mut e2) = (poisoned(), poisoned::<f64>());
+        let status2 = unsafe {
+            rmf_cone_spline_approximate_with_options(
+                curve, v_min, v_max, &options, &mut out2, &mut e2,
+            )
+        };
+        same_fit(
+            "rmf_cone_spline_approximate_with_options",
+            (status, e),
+            (status2, out2, e2),
+        );
+    }
+}
+
+/// The options struct of the 0.2 entry points holding the arguments of a 0.1 call.
+fn fit_options(tolerance: f64, rule: u32, max_pieces: usize) -> RmfConeApproximationOptions {
+    RmfConeApproximationOptions {
+        struct_size: std::mem::size_of::<RmfConeApproximationOptions>(),
+        tolerance,
+        rule,
+        max_pieces,
+    }
+}
+
+/// A 0.2 entry point (`function`) gave what the deprecated call it replaces gave: the same
+/// status, the same max_error on success (bit for bit: the same code ran), and nothing
+/// written on failure. Its spline is freed here.
+fn same_fit(
+    function: &str,
+    (status, e): (RmfStatus, f64),
+    (status2, out2, e2): (RmfStatus, *mut RmfConeSpline, f64),
+) {
+    assert_eq!(
+        status2, status,
+        "{function} differs from the call it replaces"
+    );
+    if checked(function, status2, &[is_poisoned(&out2), is_poisoned(&e2)]) {
+        assert_eq!(e2.to_bits(), e.to_bits(), "{function}: max_error");
+        unsafe { rmf_cone_spline_free(out2) };
+    }
 }
 
 fn approximate_ruled(s: &mut Session) {
@@ -102,14 +146,16 @@ fn approximate_dual(s: &mut Session) {
     let region = region(s);
     let (tolerance, rule, max_pieces) = (s.input.f64(), s.input.code(), s.input.work());
     let (mut out, mut e) = (poisoned(), poisoned::<f64>());
+    let planes = or_null(&mut s.input, &planes);
+    let region = region.as_ref().map_or(null(), |r| r as *const RmfBox);
     let status = unsafe {
         rmf_cone_spline_approximate_dual(
             degree,
-            or_null(&mut s.input, &planes),
+            planes,
             n,
             knots.as_ptr(),
             knots.len(),
-            region.as_ref().map_or(null(), |r| r as *const RmfBox),
+            region,
             tolerance,
             rule,
             max_pieces,
@@ -117,7 +163,28 @@ fn approximate_dual(s: &mut Session) {
             &mut e,
         )
     };
+    // Checked first: the call below overwrites the last error.
     fit_made(s, "rmf_cone_spline_approximate_dual", status, out, e);
+    let options = fit_options(tolerance, rule, max_pieces);
+    let (mut out2, mut e2) = (poisoned(), poisoned::<f64>());
+    let status2 = unsafe {
+        rmf_cone_spline_approximate_dual_with_options(
+            degree,
+            planes,
+            n,
+            knots.as_ptr(),
+            knots.len(),
+            region,
+            &options,
+            &mut out2,
+            &mut e2,
+        )
+    };
+    same_fit(
+        "rmf_cone_spline_approximate_dual_with_options",
+        (status, e),
+        (status2, out2, e2),
+    );
 }
 
 fn osculating(s: &mut Session) {
@@ -128,21 +195,29 @@ fn osculating(s: &mut Session) {
     let n = s.input.len(8);
     let parameters = s.input.increasing(n);
     let mut out = poisoned();
+    let parameters = or_null(&mut s.input, &parameters);
     let status = unsafe {
         rmf_cone_spline_osculating(
-            curve,
-            callback,
-            user,
-            t_min,
-            t_max,
-            v_min,
-            v_max,
-            or_null(&mut s.input, &parameters),
-            n,
-            &mut out,
+            curve, callback, user, t_min, t_max, v_min, v_max, parameters, n, &mut out,
         )
     };
+    // Checked first: the call below overwrites the last error.
     s.made_spline("rmf_cone_spline_osculating", status, out);
+    if callback.is_none() {
+        // The curve handle alone: the same status, nothing written on failure.
+        let mut out2 = poisoned();
+        let status2 = unsafe {
+            rmf_cone_spline_osculating_curve(curve, v_min, v_max, parameters, n, &mut out2)
+        };
+        assert_eq!(status2, status, "rmf_cone_spline_osculating_curve differs");
+        if checked(
+            "rmf_cone_spline_osculating_curve",
+            status2,
+            &[is_poisoned(&out2)],
+        ) {
+            unsafe { rmf_cone_spline_free(out2) };
+        }
+    }
 }
 
 fn pieces(s: &mut Session) {

@@ -212,12 +212,14 @@ fn nurbs_surface(s: &mut Session) {
     let weights = weights(&mut s.input, nu * nv);
     let (ku, kv) = (knots(&mut s.input, du, nu), knots(&mut s.input, dv, nv));
     let mut out = poisoned();
+    let poles = or_null(&mut s.input, &poles);
+    let weights = weights.as_ref().map_or(null(), |w| w.as_ptr());
     let status = unsafe {
         rmf_nurbs_surface_create(
             du,
             dv,
-            or_null(&mut s.input, &poles),
-            weights.as_ref().map_or(null(), |w| w.as_ptr()),
+            poles,
+            weights,
             nu,
             nv,
             ku.as_ptr(),
@@ -227,7 +229,36 @@ fn nurbs_surface(s: &mut Session) {
             &mut out,
         )
     };
+    // Checked first: the call below overwrites the last error.
     s.made_surface("rmf_nurbs_surface_create", status, out);
+    // The same data in one struct (no input drawn: the corpus keeps its meaning) must give
+    // the same status, and write nothing on failure.
+    let data = RmfNurbsSurfaceData {
+        struct_size: std::mem::size_of::<RmfNurbsSurfaceData>(),
+        degree_u: du,
+        degree_v: dv,
+        pole_count_u: nu,
+        pole_count_v: nv,
+        poles,
+        weights,
+        knot_count_u: ku.len(),
+        knots_u: ku.as_ptr(),
+        knot_count_v: kv.len(),
+        knots_v: kv.as_ptr(),
+    };
+    let mut from = poisoned();
+    let from_status = unsafe { rmf_nurbs_surface_create_from(&data, &mut from) };
+    assert_eq!(
+        from_status, status,
+        "rmf_nurbs_surface_create_from differs from rmf_nurbs_surface_create"
+    );
+    if checked(
+        "rmf_nurbs_surface_create_from",
+        from_status,
+        &[is_poisoned(&from)],
+    ) {
+        unsafe { rmf_surface_free(from) };
+    }
 }
 
 fn surface_queries(s: &mut Session) {
@@ -310,7 +341,7 @@ fn surface_copy(s: &mut Session) {
         )
     };
     let too_small = status == rmfsurf_capi::RmfStatus::RmfErrorBufferTooSmall;
-    checked(
+    let copied = checked(
         "rmf_surface_nurbs_copy",
         status,
         &[
@@ -319,6 +350,64 @@ fn surface_copy(s: &mut Session) {
             ku.iter().all(is_poisoned) && kv.iter().all(is_poisoned),
         ],
     );
+    // The same capacities through rmf_surface_nurbs_copy_into (no input drawn): the same
+    // status, and on success the same degrees, counts and data.
+    let mut poles2 = poisoned_buffer::<RmfVec3>(pc);
+    let mut weights2 = poisoned_buffer::<f64>(pc);
+    let (mut ku2, mut kv2) = (poisoned_buffer::<f64>(kcu), poisoned_buffer::<f64>(kcv));
+    let buffers = RmfNurbsSurfaceBuffers {
+        struct_size: std::mem::size_of::<RmfNurbsSurfaceBuffers>(),
+        poles: poles2.as_mut_ptr(),
+        weights: weights2.as_mut_ptr(),
+        pole_capacity: pc,
+        knots_u: ku2.as_mut_ptr(),
+        knot_capacity_u: kcu,
+        knots_v: kv2.as_mut_ptr(),
+        knot_capacity_v: kcv,
+    };
+    let mut copy = poisoned::<RmfNurbsSurface>();
+    let into = unsafe { rmf_surface_nurbs_copy_into(surface, &buffers, &mut copy) };
+    assert_eq!(
+        into, status,
+        "rmf_surface_nurbs_copy_into differs from rmf_surface_nurbs_copy"
+    );
+    checked(
+        "rmf_surface_nurbs_copy_into",
+        into,
+        &[
+            is_poisoned(&copy) || too_small,
+            poles2.iter().all(is_poisoned) && weights2.iter().all(is_poisoned),
+            ku2.iter().all(is_poisoned) && kv2.iter().all(is_poisoned),
+        ],
+    );
+    if copied || too_small {
+        assert_eq!(
+            (copy.degree_u, copy.degree_v),
+            (du, dv),
+            "rmf_surface_nurbs_copy_into: degrees"
+        );
+        assert_eq!(
+            [
+                copy.pole_count_u,
+                copy.pole_count_v,
+                copy.knot_count_u,
+                copy.knot_count_v
+            ],
+            counts,
+            "rmf_surface_nurbs_copy_into: counts"
+        );
+    }
+    if copied {
+        let same = |a: &[f64], b: &[f64]| a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits());
+        let p = |v: &[RmfVec3]| v.iter().flat_map(|p| [p.x, p.y, p.z]).collect::<Vec<f64>>();
+        assert!(
+            same(&p(&poles), &p(&poles2))
+                && same(&weights, &weights2)
+                && same(&ku, &ku2)
+                && same(&kv, &kv2),
+            "rmf_surface_nurbs_copy_into copied other data than rmf_surface_nurbs_copy"
+        );
+    }
 }
 
 fn tessellate(s: &mut Session) {

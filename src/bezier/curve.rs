@@ -10,8 +10,11 @@ use glam::{DVec3, DVec4};
 /// Point, first and second derivative of a curve at one parameter.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct CurveJet {
+    /// x(t).
     pub point: DVec3,
+    /// x'(t).
     pub d1: DVec3,
+    /// x''(t).
     pub d2: DVec3,
 }
 
@@ -81,6 +84,7 @@ impl RationalBezierCurve {
         )
     }
 
+    /// The polynomial degree.
     pub fn degree(&self) -> usize {
         self.points.len() - 1
     }
@@ -106,6 +110,7 @@ impl RationalBezierCurve {
         self.points.iter().all(|h| (h.w - w0).abs() <= 1e-15 * w0)
     }
 
+    /// The point at the local parameter t in [0, 1].
     pub fn eval(&self, t: f64) -> DVec3 {
         project(bernstein::evaluate(&self.points, t))
     }

@@ -35,22 +35,34 @@ pub const MAX_VALUE: f64 = 1e300;
 /// A NURBS curve with Cartesian poles, positive weights and a clamped knot vector.
 #[derive(Clone, Debug, PartialEq)]
 pub struct NurbsCurve {
+    /// Polynomial degree p ≥ 1.
     pub degree: usize,
+    /// Cartesian poles, at least p + 1.
     pub poles: Vec<DVec3>,
+    /// One weight per pole, all > 0.
     pub weights: Vec<f64>,
+    /// Clamped, non-decreasing knot vector of poles.len() + p + 1 knots.
     pub knots: Vec<f64>,
 }
 
 /// A NURBS surface; pole (i, j) is stored at `i * pole_count_v + j`, i along u.
 #[derive(Clone, Debug, PartialEq)]
 pub struct NurbsSurface {
+    /// Degree along u.
     pub degree_u: usize,
+    /// Degree along v.
     pub degree_v: usize,
+    /// Number of poles along u.
     pub pole_count_u: usize,
+    /// Number of poles along v.
     pub pole_count_v: usize,
+    /// pole_count_u · pole_count_v Cartesian poles, pole (i, j) at `i * pole_count_v + j`.
     pub poles: Vec<DVec3>,
+    /// Weights in the order of the poles, all > 0.
     pub weights: Vec<f64>,
+    /// Clamped knot vector in u, pole_count_u + degree_u + 1 knots.
     pub knots_u: Vec<f64>,
+    /// Clamped knot vector in v, pole_count_v + degree_v + 1 knots.
     pub knots_v: Vec<f64>,
 }
 

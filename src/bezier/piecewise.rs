@@ -64,6 +64,7 @@ pub struct PiecewiseCurve {
 }
 
 impl PiecewiseCurve {
+    /// The curve of `segments`, segment k on `[breaks[k], breaks[k+1]]`; the breaks must increase strictly, one more than the segments.
     pub fn new(segments: Vec<RationalBezierCurve>, breaks: Vec<f64>) -> Result<Self> {
         check_breaks(&breaks, segments.len(), "breakpoints")?;
         Ok(Self { segments, breaks })
@@ -111,14 +112,17 @@ impl PiecewiseCurve {
         })
     }
 
+    /// The rational Bézier segments, in parameter order.
     pub fn segments(&self) -> &[RationalBezierCurve] {
         &self.segments
     }
 
+    /// The breakpoints, one more than the segments.
     pub fn breaks(&self) -> &[f64] {
         &self.breaks
     }
 
+    /// The parameter domain `(first break, last break)`.
     pub fn domain(&self) -> (f64, f64) {
         (self.breaks[0], self.breaks[self.breaks.len() - 1])
     }
@@ -128,6 +132,7 @@ impl PiecewiseCurve {
         locate(&self.breaks, t)
     }
 
+    /// The point at the global parameter `t` (clamped to the domain).
     pub fn eval(&self, t: f64) -> DVec3 {
         let (k, s) = self.locate(t);
         self.segments[k].eval(s)
@@ -174,6 +179,7 @@ pub struct PiecewiseSurface {
 }
 
 impl PiecewiseSurface {
+    /// The surface of a grid of `patches` (index `a * (v_breaks.len() - 1) + b`); the breaks must increase strictly.
     pub fn new(
         patches: Vec<RationalBezierPatch>,
         u_breaks: Vec<f64>,
@@ -199,6 +205,7 @@ impl PiecewiseSurface {
         })
     }
 
+    /// The patches, index `a * (number of v intervals) + b`.
     pub fn patches(&self) -> &[RationalBezierPatch] {
         &self.patches
     }
@@ -208,29 +215,33 @@ impl PiecewiseSurface {
         &self.patches[a * (self.v_breaks.len() - 1) + b]
     }
 
+    /// The breakpoints in u.
     pub fn u_breaks(&self) -> &[f64] {
         &self.u_breaks
     }
 
+    /// The breakpoints in v.
     pub fn v_breaks(&self) -> &[f64] {
         &self.v_breaks
     }
 
+    /// The parameter domain in u.
     pub fn domain_u(&self) -> (f64, f64) {
         (self.u_breaks[0], self.u_breaks[self.u_breaks.len() - 1])
     }
 
+    /// The parameter domain in v.
     pub fn domain_v(&self) -> (f64, f64) {
         (self.v_breaks[0], self.v_breaks[self.v_breaks.len() - 1])
     }
 
+    /// The point at global parameters (u, v) (clamped to the domain).
     pub fn eval(&self, u: f64, v: f64) -> DVec3 {
         let (a, s) = locate(&self.u_breaks, u);
         let (b, t) = locate(&self.v_breaks, v);
         self.patch(a, b).eval(s, t)
     }
 
-    /// Point and partial derivatives with respect to the global parameters.
     /// Point and first partial derivatives with respect to the global parameters.
     pub fn eval_d1(&self, u: f64, v: f64) -> [DVec3; 3] {
         let (a, s) = locate(&self.u_breaks, u);
@@ -241,6 +252,7 @@ impl PiecewiseSurface {
         [p, du * su, dv * sv]
     }
 
+    /// Point and partial derivatives up to second order with respect to the global parameters.
     pub fn eval_jet(&self, u: f64, v: f64) -> SurfaceJet {
         let (a, s) = locate(&self.u_breaks, u);
         let (b, t) = locate(&self.v_breaks, v);

@@ -9,11 +9,17 @@ use glam::{DVec3, DVec4};
 /// Point and partial derivatives up to second order.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct SurfaceJet {
+    /// s(u, v).
     pub point: DVec3,
+    /// ∂s/∂u.
     pub du: DVec3,
+    /// ∂s/∂v.
     pub dv: DVec3,
+    /// ∂²s/∂u².
     pub duu: DVec3,
+    /// ∂²s/∂u∂v.
     pub duv: DVec3,
+    /// ∂²s/∂v².
     pub dvv: DVec3,
 }
 
@@ -76,10 +82,12 @@ impl RationalBezierPatch {
         Self::from_homogeneous(nu - 1, nv - 1, points)
     }
 
+    /// Degree in u.
     pub fn degree_u(&self) -> usize {
         self.degree_u
     }
 
+    /// Degree in v.
     pub fn degree_v(&self) -> usize {
         self.degree_v
     }
@@ -94,6 +102,7 @@ impl RationalBezierPatch {
         self.points[i * (self.degree_v + 1) + j]
     }
 
+    /// The point at local parameters (u, v) in [0, 1]².
     pub fn eval(&self, u: f64, v: f64) -> DVec3 {
         if self.degree_u < SHORT {
             self.eval_with::<SHORT>(u, v)

@@ -24,6 +24,7 @@ const INFLECTION_SAMPLES: usize = 400;
 /// The result of [`approximate`].
 #[derive(Clone, Debug)]
 pub struct Approximation {
+    /// The cone spline.
     pub spline: ConeSpline,
     /// The parameters of the selected rulings (the elements), increasing.
     pub parameters: Vec<f64>,

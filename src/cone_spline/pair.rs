@@ -52,16 +52,22 @@ pub enum Rule {
 /// Which case of the paper a pair falls into.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum PairCase {
+    /// Skew rulings: the cones touch an inscribed sphere.
     General,
+    /// The rulings intersect: the cones share a vertex.
     Cone,
+    /// Parallel rulings: cylinders.
     Cylinder,
+    /// Constant slope, det(p₁, p₂, n₁ − n₂) = 0 (13).
     ConstantSlope,
+    /// Equal tangent planes: one plane piece.
     Plane,
 }
 
 /// A G1 cone pair (or a single plane piece) from one element to the next.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ConePair {
+    /// Which case of the paper the pair fell into.
     pub case: PairCase,
     /// Two pieces (one for the plane case, or where one segment of the family does not
     /// move); the first starts at the first element.

@@ -22,25 +22,37 @@ const PLANAR_TOLERANCE: f64 = 1e-9;
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum PatternEdge {
     /// The straight segment from `from` to `to`.
-    Line { from: DVec2, to: DVec2 },
+    Line {
+        /// The start point.
+        from: DVec2,
+        /// The end point.
+        to: DVec2,
+    },
     /// The circular arc about `center` from `from` through the signed angle `sweep`
     /// (counter-clockwise for positive sweep); `to` is its end point.
     Arc {
+        /// The arc's centre.
         center: DVec2,
+        /// Its radius.
         radius: f64,
+        /// The start point.
         from: DVec2,
+        /// The end point.
         to: DVec2,
+        /// The signed angle from `from` to `to` about `center` (radians, counter-clockwise positive).
         sweep: f64,
     },
 }
 
 impl PatternEdge {
+    /// The point the edge starts at.
     pub fn start(&self) -> DVec2 {
         match *self {
             PatternEdge::Line { from, .. } | PatternEdge::Arc { from, .. } => from,
         }
     }
 
+    /// The point the edge ends at.
     pub fn end(&self) -> DVec2 {
         match *self {
             PatternEdge::Line { to, .. } | PatternEdge::Arc { to, .. } => to,

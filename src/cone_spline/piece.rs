@@ -35,8 +35,11 @@ const MAX_PATCH_ANGLE: f64 = 2.0 * PI / 3.0;
 pub enum Motion {
     /// Rotation by the signed `angle` about the line through `origin` with unit `axis`.
     Rotation {
+        /// A point of the axis.
         origin: DVec3,
+        /// The unit axis direction.
         axis: DVec3,
+        /// The signed rotation angle (radians).
         angle: f64,
     },
     /// Translation by a vector normal to the rulings (a plane strip).
@@ -89,7 +92,9 @@ pub enum PieceKind {
 /// point) and the motion that sweeps it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ConePiece {
+    /// The first ruling, its tangent plane and reference point.
     pub start: Element,
+    /// The motion sweeping the first ruling over the piece.
     pub motion: Motion,
 }
 
@@ -206,6 +211,8 @@ impl ConePiece {
         self.motion.element(&self.start, f)
     }
 
+    /// Cone, cylinder or plane: a translation is a plane strip; a rotation is a cylinder when
+    /// the ruling is parallel to the axis, a plane sector when normal to it, else a cone.
     pub fn kind(&self) -> PieceKind {
         match self.motion {
             Motion::Translation(_) => PieceKind::Plane,

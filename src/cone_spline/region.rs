@@ -9,7 +9,9 @@ use glam::DVec3;
 /// An axis-aligned box `min ≤ x ≤ max`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Region {
+    /// The corner with the smallest coordinates.
     pub min: DVec3,
+    /// The corner with the largest coordinates.
     pub max: DVec3,
 }
 

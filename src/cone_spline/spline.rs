@@ -106,6 +106,7 @@ impl ConeSpline {
         Ok((spline, pairs))
     }
 
+    /// The pieces, each starting on the ruling where the one before ends.
     pub fn pieces(&self) -> &[ConePiece] {
         &self.pieces
     }

@@ -473,8 +473,11 @@ pub fn surfaces_to_step(surfaces: &[&NurbsSurface], name: &str) -> Result<String
 /// between shared vertices.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Brep {
+    /// The vertices the edges start and end at.
     pub vertices: Vec<DVec3>,
+    /// The edges, each shared by the faces whose loops use it.
     pub edges: Vec<BrepEdge>,
+    /// The faces.
     pub faces: Vec<BrepFace>,
     /// The faces bound a solid (a closed shell); otherwise a sheet (an open shell).
     pub closed: bool,
@@ -483,8 +486,11 @@ pub struct Brep {
 /// An edge: its 3-D curve from the vertex `start` (at the curve's first parameter) to `end`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct BrepEdge {
+    /// The 3-D curve, on its own parameter.
     pub curve: NurbsCurve,
+    /// Index of the vertex at the curve's first parameter.
     pub start: usize,
+    /// Index of the vertex at the curve's last parameter.
     pub end: usize,
 }
 
@@ -493,7 +499,9 @@ pub struct BrepEdge {
 pub enum PCurve {
     /// origin + t · direction.
     Line {
+        /// A point of the line in the face's parameter plane.
         origin: (f64, f64),
+        /// Its direction, per unit of the edge curve's parameter.
         direction: (f64, f64),
     },
     /// A 2-D curve (the x, y of its poles).
@@ -503,8 +511,12 @@ pub enum PCurve {
 /// An edge used by a face's loop, along its curve (`forward`) or against it.
 #[derive(Clone, Debug, PartialEq)]
 pub struct BrepUse {
+    /// Index of the edge in [`Brep::edges`].
     pub edge: usize,
+    /// Whether the loop runs along the edge curve (true) or against it.
     pub forward: bool,
+    /// The edge's curve in the face's parameter plane, if known (written as a PCURVE; None:
+    /// the 3-D curve alone).
     pub pcurve: Option<PCurve>,
 }
 
@@ -512,18 +524,25 @@ pub struct BrepUse {
 /// for the outer bound, clockwise for holes.
 #[derive(Clone, Debug, PartialEq)]
 pub struct BrepBound {
+    /// The edge uses in the loop's order, each starting where the one before ends.
     pub uses: Vec<BrepUse>,
+    /// Whether this is the face's outer bound (else a hole).
     pub outer: bool,
 }
 
+/// The surface a face lies on.
 #[derive(Clone, Debug, PartialEq)]
 pub enum BrepSurface {
+    /// A NURBS surface, on its own parameters.
     Nurbs(NurbsSurface),
     /// The plane through `origin` with unit `normal`; parameters along `x_axis` and
     /// `normal × x_axis`.
     Plane {
+        /// A point of the plane.
         origin: DVec3,
+        /// Its unit normal.
         normal: DVec3,
+        /// The unit direction of the first parameter, in the plane.
         x_axis: DVec3,
     },
 }
@@ -532,8 +551,11 @@ pub enum BrepSurface {
 /// loops.
 #[derive(Clone, Debug, PartialEq)]
 pub struct BrepFace {
+    /// The surface the face lies on.
     pub surface: BrepSurface,
+    /// Whether the face's normal is the surface's normal (else its opposite).
     pub same_sense: bool,
+    /// The loops: the outer bound and the holes.
     pub bounds: Vec<BrepBound>,
 }
 

@@ -28,7 +28,9 @@ pub struct FrameErrors {
 
 /// The reference: a curve and its RMF vector r(v) (the vector compared with f₂).
 pub trait ReferenceRmf {
+    /// The curve the reference RMF lives on.
     fn curve(&self) -> &dyn ParametricCurve;
+    /// The reference RMF vector r(v) at curve parameter v (the vector compared with f₂).
     fn rmf(&self, v: f64) -> Result<DVec3>;
 }
 

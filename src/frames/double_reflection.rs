@@ -91,10 +91,12 @@ impl DoubleReflectionRmf {
         })
     }
 
+    /// The parameters of the samples, increasing.
     pub fn params(&self) -> &[f64] {
         &self.params
     }
 
+    /// The frames at the samples.
     pub fn frames(&self) -> &[Frame] {
         &self.frames
     }

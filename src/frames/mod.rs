@@ -91,14 +91,17 @@ impl FrameField {
         Ok(Self { curve, kind })
     }
 
+    /// The curve the frames are taken along.
     pub fn curve(&self) -> &Arc<PiecewiseCurve> {
         &self.curve
     }
 
+    /// How the frames are made.
     pub fn kind(&self) -> &FrameKind {
         &self.kind
     }
 
+    /// The parameter domain (that of the curve).
     pub fn domain(&self) -> (f64, f64) {
         self.curve.domain()
     }

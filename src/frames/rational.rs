@@ -45,8 +45,11 @@ pub fn g1_tolerance(curve: &crate::bezier::PiecewiseCurve) -> f64 {
 /// Which frame vector.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum FrameVector {
+    /// The unit tangent t.
     Tangent,
+    /// The first normal-plane vector f₂.
     F2,
+    /// f₃ = t × f₂.
     F3,
 }
 
@@ -254,7 +257,7 @@ pub struct RationalFrames {
 }
 
 impl RationalFrames {
-    /// Frames of unknown turning ([`Turning::Unknown`]; see [`RationalFrames::with_turning`]).
+    /// Frames of unknown turning (`Turning::Unknown`; see [`RationalFrames::with_turning`]).
     pub fn new(segments: Vec<RationalFrameSegment>, breaks: Vec<f64>) -> Result<Self> {
         check_breaks(&breaks, segments.len(), "frame breakpoints")?;
         Ok(Self {
@@ -290,7 +293,7 @@ impl RationalFrames {
     }
 
     /// [`RationalFrames::chained`] with the G1 tolerance of the curve the frames follow
-    /// (see [`g1_tolerance`]).
+    /// (see `g1_tolerance`).
     pub fn chained_within(
         segments: Vec<RationalFrameSegment>,
         breaks: Vec<f64>,
@@ -386,10 +389,12 @@ impl RationalFrames {
         ))
     }
 
+    /// The rational frame segments, in parameter order.
     pub fn segments(&self) -> &[RationalFrameSegment] {
         &self.segments
     }
 
+    /// The breakpoints, one more than the segments.
     pub fn breaks(&self) -> &[f64] {
         &self.breaks
     }
@@ -400,6 +405,7 @@ impl RationalFrames {
         (k, s, reciprocal_length(self.breaks[k], self.breaks[k + 1]))
     }
 
+    /// The frame at the global parameter `t` (clamped to the domain).
     pub fn frame(&self, t: f64) -> Frame {
         let (k, s, _) = self.locate(t);
         self.segments[k].frame(s)

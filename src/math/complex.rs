@@ -8,15 +8,21 @@ use std::ops::{Add, AddAssign, Div, Mul, Neg, Sub};
 /// A complex number `re + i·im`.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Complex {
+    /// The real part.
     pub re: f64,
+    /// The imaginary part.
     pub im: f64,
 }
 
 impl Complex {
+    /// 0.
     pub const ZERO: Complex = Complex::new(0.0, 0.0);
+    /// 1.
     pub const ONE: Complex = Complex::new(1.0, 0.0);
+    /// The imaginary unit i.
     pub const I: Complex = Complex::new(0.0, 1.0);
 
+    /// re + i·im.
     pub const fn new(re: f64, im: f64) -> Self {
         Self { re, im }
     }
@@ -57,6 +63,7 @@ impl Complex {
         }
     }
 
+    /// Whether both parts are finite.
     pub fn is_finite(self) -> bool {
         self.re.is_finite() && self.im.is_finite()
     }

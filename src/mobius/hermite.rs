@@ -35,7 +35,9 @@ use glam::DVec3;
 /// A curve with an exact rational RMF, sharing one segmentation.
 #[derive(Clone, Debug)]
 pub struct RationalRmfCurve {
+    /// The curve.
     pub curve: PiecewiseCurve,
+    /// Its exact rational RMF, on the curve's segmentation.
     pub frames: RationalFrames,
     /// The largest angle (radians) by which the shared joint frames and the pinned end
     /// tangents moved a segment's own ends (see [`mobius_hermite`]): the rounding of the

@@ -30,16 +30,29 @@ use glam::DVec3;
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Inversion {
     /// y ↦ c + r² (y − c) / |y − c|², eq. (6); c ↔ ∞.
-    Sphere { center: DVec3, radius: f64 },
+    Sphere {
+        /// The centre c.
+        center: DVec3,
+        /// The radius r > 0.
+        radius: f64,
+    },
     /// Reflection in the plane through `point` with unit `normal`.
-    Plane { point: DVec3, normal: DVec3 },
+    Plane {
+        /// A point of the plane.
+        point: DVec3,
+        /// Its unit normal.
+        normal: DVec3,
+    },
     /// The inversion in the sphere through `point` with unit `normal` there and signed
     /// `curvature` κ, i.e. centred at point − normal/κ with radius 1/|κ| (the module notes);
     /// κ = 0 is the reflection in the plane through `point` normal to `normal`. (n̂, κ) and
     /// (−n̂, −κ) are the same map.
     Through {
+        /// A point of the sphere (or plane).
         point: DVec3,
+        /// The unit normal there.
         normal: DVec3,
+        /// The signed curvature κ of the sphere (0: the plane).
         curvature: f64,
     },
 }
@@ -163,10 +176,12 @@ pub struct MobiusMap {
 }
 
 impl MobiusMap {
+    /// The map applying `inversions` first to last.
     pub fn new(inversions: Vec<Inversion>) -> Self {
         Self { inversions }
     }
 
+    /// The inversions, applied first to last.
     pub fn inversions(&self) -> &[Inversion] {
         &self.inversions
     }

@@ -27,7 +27,7 @@ pub struct AngleErrors {
     pub per_segment: Vec<f64>,
     /// The largest of them.
     pub max: f64,
-    /// φ: the twist the frames were built with ([`Turning::Twisted`], 0 for other frames),
+    /// φ: the twist the frames were built with (`Turning::Twisted`, 0 for other frames),
     /// taken off linearly in arc length.
     pub twist: f64,
 }

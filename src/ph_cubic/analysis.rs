@@ -69,6 +69,7 @@ pub struct SingularityMargin {
     pub margin: f64,
     /// Where the minimum is attained (profile parameter u, spine parameter v).
     pub u: f64,
+    /// Spine parameter where the minimum is attained.
     pub v: f64,
     /// 1 − κ_max·max‖c‖: positive guarantees regularity (the sufficient condition of §2.3).
     pub bound_margin: f64,
@@ -90,7 +91,7 @@ pub struct ParabolicLines {
 impl<'a> ProfileSurface<'a> {
     /// The sweep of `profile` along `spine` with `frames`. The frames must belong to the
     /// spine as for [`sweep`](crate::sweep::sweep) (its breakpoints or a refinement, and its
-    /// tangent), and be rotation-minimizing ([`Turning::RotationMinimizing`]): the formulas
+    /// tangent), and be rotation-minimizing (`Turning::RotationMinimizing`): the formulas
     /// of the module notes hold for an RMF only — for frames turning about the tangent at a
     /// rate ω the surface's s_v has the part ω(c₂f₃ − c₃f₂) across the spine, and g, K and
     /// (14) are other functions (the choice: refuse, rather than answer a question that was
@@ -356,6 +357,7 @@ pub struct ConvexStart {
     /// δ, the turn of the profile's tangent, and ΔΩ, the spread of the RMF against the
     /// Frenet frame.
     pub profile_turn: f64,
+    /// ΔΩ, the spread of the RMF angle against the Frenet frame along the spine (radians).
     pub rmf_spread: f64,
 }
 

@@ -77,6 +77,7 @@ impl PhCubic {
         Self { points }
     }
 
+    /// The four Bézier control points.
     pub fn control_points(&self) -> [DVec3; 4] {
         self.points
     }
@@ -126,6 +127,7 @@ impl PhCubic {
         [0.0, l1, l1 + m, l1 + m + l3]
     }
 
+    /// The arc length, exact (PH curves have polynomial speed).
     pub fn arc_length(&self) -> f64 {
         self.arc_length_polynomial()[3]
     }

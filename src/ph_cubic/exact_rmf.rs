@@ -95,6 +95,7 @@ impl ExactRmf {
         s.arc_before + s.arc_within(v)
     }
 
+    /// The arc length of the whole spline.
     pub fn total_length(&self) -> f64 {
         let last = self.segments.last().expect("a spline has segments");
         last.arc_before + last.cubic.arc_length()
@@ -116,6 +117,7 @@ impl ExactRmf {
         }
     }
 
+    /// Number of PH cubic segments.
     pub fn segment_count(&self) -> usize {
         self.segments.len()
     }

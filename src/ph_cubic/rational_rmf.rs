@@ -90,7 +90,9 @@ pub struct PieceFit {
 /// Rational frames along a PH cubic spline with how they were made.
 #[derive(Clone, Debug)]
 pub struct RationalRmf {
+    /// The rational frames.
     pub frames: RationalFrames,
+    /// How each segment's rational approximation was fitted.
     pub pieces: Vec<PieceFit>,
     /// The turn φ added to the RMF from start to end (twist and closure), radians.
     pub total_twist: f64,

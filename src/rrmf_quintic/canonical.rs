@@ -41,6 +41,7 @@ impl Placement {
 /// Hermite data in canonical form, with the angles and half-angle values of (11)–(13).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CanonicalHermite {
+    /// The similarity from canonical to original coordinates.
     pub placement: Placement,
     /// X = |p_f − p_i| > 0.
     pub x: f64,
@@ -52,9 +53,11 @@ pub struct CanonicalHermite {
     pub phi: f64,
     /// (cos ½θ_i, sin ½θ_i), both positive.
     pub ci: f64,
+    /// sin ½θ_i.
     pub si: f64,
     /// (cos ½θ_f, sin ½θ_f), both positive.
     pub cf: f64,
+    /// sin ½θ_f.
     pub sf: f64,
 }
 

@@ -24,6 +24,7 @@ const ETA_TOLERANCE: f64 = 1e-9;
 /// The chosen interpolant and how many sampled η admit one.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BestQuintic {
+    /// The interpolant of the best sampled η, refined.
     pub quintic: RrmfQuintic,
     /// Number of the N_η sampled values of η with at least one solution.
     pub admissible: usize,

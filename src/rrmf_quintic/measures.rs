@@ -25,8 +25,11 @@ const PIECES: usize = 24;
 /// L, E and E_rmf of one curve.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct ShapeMeasures {
+    /// Arc length L.
     pub arc_length: f64,
+    /// Frenet-frame energy E = ∫ (κ² + τ²) ds.
     pub energy_frenet: f64,
+    /// RMF energy E_rmf = ∫ κ² ds.
     pub energy_rmf: f64,
 }
 

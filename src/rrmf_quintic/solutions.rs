@@ -54,6 +54,7 @@ pub struct RrmfQuintic {
     pub hopf: HopfQuadratics,
     /// w₀ = 1, w₁, w₂ of the RRMF condition (4).
     pub w: [Complex; 3],
+    /// Its arc length and energies.
     pub measures: ShapeMeasures,
     /// From canonical to original coordinates.
     pub placement: Placement,

@@ -17,6 +17,7 @@ use glam::DVec3;
 /// A spline of RRMF quintics, segment k on [k, k + 1], with its rational RMF.
 #[derive(Clone, Debug)]
 pub struct RrmfSpline {
+    /// The curve, segment k on [k, k + 1].
     pub curve: PiecewiseCurve,
     /// The RMF; its breakpoints refine the curve's where a segment was split for positive
     /// weights.

@@ -21,7 +21,9 @@ use glam::{DVec2, DVec3};
 /// or the second.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Side {
+    /// The first boundary (u = 0).
     First,
+    /// The second boundary (u = 1).
     Second,
 }
 
@@ -99,7 +101,7 @@ pub struct SheetPart {
 
 impl SheetPart {
     /// The transition piece between two closed convex planar curves (see
-    /// [`transition`](super::transition)): `bottom` is the first boundary.
+    /// `src/sheet/transition.rs`): `bottom` is the first boundary.
     pub fn transition(
         bottom: &PiecewiseCurve,
         top: &PiecewiseCurve,
@@ -123,7 +125,7 @@ impl SheetPart {
 
     /// The part of a developable ruled surface of degree (1, n) — rulings along u — between
     /// its two rails (its boundaries u = u₀ and u = u₁), over its whole v domain: see
-    /// [`rails`](super::rails).
+    /// `src/sheet/rails.rs`.
     pub fn between_rails(surface: &PiecewiseSurface, options: &SheetOptions) -> Result<Self> {
         options.check()?;
         let frame = Similarity::fitting(
@@ -159,7 +161,7 @@ impl SheetPart {
 
     /// The part of the tangent surface x(t) + v·x′(t)/|x′(t)| of a regular curve over its
     /// whole domain and v ∈ [v_min, v_max] (0 ∉ [v_min, v_max]), between the rails v = v_min
-    /// and v = v_max: see [`rails`](super::rails).
+    /// and v = v_max: see `src/sheet/rails.rs`.
     pub fn tangent_surface(
         curve: &PiecewiseCurve,
         v_min: f64,
@@ -221,10 +223,12 @@ impl SheetPart {
         })
     }
 
+    /// What the construction measured and chose.
     pub fn report(&self) -> &PartReport {
         &self.report
     }
 
+    /// The sheet: thickness, K-factor, reference face.
     pub fn sheet(&self) -> &Sheet {
         &self.sheet
     }
@@ -234,6 +238,7 @@ impl SheetPart {
         self.part.closed
     }
 
+    /// Number of cone, cylinder and plane pieces.
     pub fn piece_count(&self) -> usize {
         self.part.pieces().len()
     }

@@ -33,16 +33,22 @@ pub enum Reference {
 pub enum Layer {
     /// The designed surface itself.
     Reference,
+    /// The inner face (the concave side of the bends).
     Inner,
+    /// The neutral layer, at k·t from the inner face: the one the flat pattern develops.
     Neutral,
+    /// The outer face.
     Outer,
 }
 
 /// The sheet: thickness t, K-factor k and where the designed surface lies in it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Sheet {
+    /// Thickness t, > 0.
     pub thickness: f64,
+    /// K-factor k, 0 ≤ k ≤ 1: the neutral layer lies at k·t from the inner face.
     pub k_factor: f64,
+    /// Which face of the sheet the designed surface is.
     pub reference: Reference,
 }
 

@@ -61,6 +61,7 @@ pub enum FaceKind {
 /// One face of a [`Shape`].
 #[derive(Clone, Debug)]
 pub struct Face {
+    /// Lateral (swept) face or planar cap.
     pub kind: FaceKind,
     /// [`FaceKind::Swept`]: the exact rational surface (u along the profile edge, v along
     /// the spine).
@@ -99,6 +100,7 @@ pub struct SweepReport {
     /// The least singularity margin g = 1 − κ c·n over the sweep (Cor. 7; 1 where the spine
     /// is straight), and for miter legs 1 − (length of the cuts)/(length of the leg); > 0.
     pub singularity_margin: f64,
+    /// Number of faces.
     pub face_count: usize,
     /// Largest turn of the frame about the tangent across a corner, against the minimal
     /// rotation of the tangent there (round corners: across the elbow; miters: across the
@@ -124,6 +126,7 @@ pub struct Shape {
 }
 
 impl Shape {
+    /// The faces: the lateral faces first, then the caps.
     pub fn faces(&self) -> &[Face] {
         &self.faces
     }
@@ -133,6 +136,7 @@ impl Shape {
         self.solid
     }
 
+    /// The accuracy figures of the sweep.
     pub fn report(&self) -> &SweepReport {
         &self.report
     }

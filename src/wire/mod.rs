@@ -38,11 +38,19 @@ pub const MAX_FACES: usize = 1 << 16;
 #[derive(Clone, Debug, PartialEq)]
 pub enum Edge {
     /// The straight line from `from` to `to`.
-    Line { from: DVec3, to: DVec3 },
+    Line {
+        /// The start point.
+        from: DVec3,
+        /// The end point.
+        to: DVec3,
+    },
     /// The circular arc from `start` through `through` to `end`.
     Arc {
+        /// The start point.
         start: DVec3,
+        /// A point of the arc between start and end.
         through: DVec3,
+        /// The end point.
         end: DVec3,
     },
     /// Any curve on its whole domain (NURBS data, PH, Möbius or RRMF curves, ...). Its
@@ -69,6 +77,7 @@ pub struct WireSweep {
     /// bounding-box diagonal); default 1e-7. Also the gap within which a profile loop is
     /// closed, relative to the profile's size.
     pub join_tolerance: f64,
+    /// How sharp (G0) joints are resolved (default round).
     pub corner: Corner,
     /// f₂ at the wire's start, projected onto the normal plane. `None`: the normal of the
     /// plane through the start tangent and the wire's point farthest from the tangent line
