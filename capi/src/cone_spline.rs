@@ -171,6 +171,17 @@ pub struct RmfConeSpline {
 }
 
 impl RmfConeSpline {
+    /// The handle of a constructed spline (no fit report, no part), with the pair case of
+    /// each piece.
+    fn of_spline(spline: ConeSpline, cases: Vec<u32>) -> Self {
+        Self {
+            spline,
+            cases,
+            fit: None,
+            part: None,
+        }
+    }
+
     /// The handle of a sheet-metal part: its designed surface's cone spline and the part.
     pub(crate) fn of_part(part: rmfsurf::SheetPart) -> rmfsurf::Result<Self> {
         let spline = part.cone_spline()?;
@@ -294,16 +305,7 @@ pub unsafe extern "C" fn rmf_cone_spline_hermite(
             .iter()
             .flat_map(|p| p.pieces.iter().map(move |_| case_code(p.case)))
             .collect();
-        write(
-            out,
-            RmfConeSpline {
-                spline,
-                cases,
-                fit: None,
-                part: None,
-            }
-            .into_raw(),
-        );
+        write(out, RmfConeSpline::of_spline(spline, cases).into_raw());
         Ok(())
     })
 }
@@ -825,16 +827,7 @@ unsafe fn osculating(
     let surface = TangentSurface::new(curve, v_min, v_max)?;
     let spline = osculating_spline(&surface, parameters)?;
     let cases = vec![RMF_CONE_CASE_NONE; spline.pieces().len()];
-    write(
-        out,
-        RmfConeSpline {
-            spline,
-            cases,
-            fit: None,
-            part: None,
-        }
-        .into_raw(),
-    );
+    write(out, RmfConeSpline::of_spline(spline, cases).into_raw());
     Ok(())
 }
 

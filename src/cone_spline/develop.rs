@@ -79,8 +79,14 @@ impl ConePiece {
 
     /// The piece moved by the rigid motion x ↦ R x + shift.
     fn transformed(&self, rotation: DMat3, shift: DVec3) -> Self {
+        self.similar(rotation, 1.0, shift)
+    }
+
+    /// The piece mapped by the similarity x ↦ scale · R x + shift (R a rotation,
+    /// scale > 0): directions and angles are kept, points and translations scaled.
+    pub(crate) fn similar(&self, rotation: DMat3, scale: f64, shift: DVec3) -> Self {
         let start = Element::from_frame(
-            rotation * self.start.point + shift,
+            scale * (rotation * self.start.point) + shift,
             rotation * self.start.ruling,
             rotation * self.start.side,
         );
@@ -90,11 +96,11 @@ impl ConePiece {
                 axis,
                 angle,
             } => Motion::Rotation {
-                origin: rotation * origin + shift,
+                origin: scale * (rotation * origin) + shift,
                 axis: rotation * axis,
                 angle,
             },
-            Motion::Translation(v) => Motion::Translation(rotation * v),
+            Motion::Translation(v) => Motion::Translation(scale * (rotation * v)),
         };
         Self { start, motion }
     }

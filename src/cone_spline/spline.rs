@@ -127,7 +127,6 @@ impl ConeSpline {
 
 #[cfg(test)]
 mod tests {
-    use super::super::piece::Motion;
     use super::*;
     use glam::DVec3;
 
@@ -156,21 +155,7 @@ mod tests {
         let end = first.end();
         let second = end.with_point(end.point + DVec3::Y * gap);
         let second = ConePiece::cylinder(second, -DVec3::X).unwrap();
-        let map = |p: ConePiece| ConePiece {
-            start: Element::from_frame(p.start.point * s + t, p.start.ruling, p.start.side),
-            motion: match p.motion {
-                Motion::Rotation {
-                    origin,
-                    axis,
-                    angle,
-                } => Motion::Rotation {
-                    origin: origin * s + t,
-                    axis,
-                    angle,
-                },
-                Motion::Translation(v) => Motion::Translation(v * s),
-            },
-        };
+        let map = |p: ConePiece| p.similar(glam::DMat3::IDENTITY, s, t);
         vec![map(first), map(second)]
     }
 

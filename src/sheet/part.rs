@@ -13,7 +13,7 @@ use crate::bezier::{
     NurbsSurface, PiecewiseCurve, PiecewiseSurface, RationalBezierCurve, RationalBezierPatch,
 };
 use crate::cone_spline::developable::{RuledSurface, TangentSurface};
-use crate::cone_spline::{ConePiece, ConeSpline, Element, FlatPattern, Motion, PatternEdge};
+use crate::cone_spline::{ConePiece, ConeSpline, FlatPattern, PatternEdge};
 use crate::error::{invalid, Result};
 use glam::{DVec2, DVec3};
 
@@ -525,18 +525,5 @@ pub(crate) fn internal_curve(curve: &PiecewiseCurve, frame: &Similarity) -> Resu
 
 /// A piece in the caller's coordinates.
 fn user_piece(p: &ConePiece, frame: &Similarity) -> ConePiece {
-    let start = Element::from_frame(frame.to_user(p.start.point), p.start.ruling, p.start.side);
-    let motion = match p.motion {
-        Motion::Rotation {
-            origin,
-            axis,
-            angle,
-        } => Motion::Rotation {
-            origin: frame.to_user(origin),
-            axis,
-            angle,
-        },
-        Motion::Translation(v) => Motion::Translation(v * frame.scale),
-    };
-    ConePiece { start, motion }
+    p.similar(glam::DMat3::IDENTITY, frame.scale, frame.origin)
 }

@@ -267,26 +267,28 @@ fn pieces_per_tolerance_on_the_hopper() {
     assert!(counts.windows(2).all(|w| w[0] < w[1]));
 }
 
+/// The area of a part's flat pattern scaled down by `scale` (at 1e-200 the area itself
+/// underflows).
+fn flat_area(part: &SheetPart, scale: f64) -> f64 {
+    let outline: Vec<PatternEdge> = part
+        .flat_pattern()
+        .unwrap()
+        .outline
+        .iter()
+        .map(|e| super::part::scaled_edge(e, 1.0 / scale))
+        .collect();
+    crate::FlatPattern {
+        outline,
+        bend_lines: vec![],
+    }
+    .area()
+}
+
 #[test]
 fn scaled_and_moved_hoppers_are_similar() {
     let (bottom, top) = hopper_curves();
     let reference = SheetPart::transition(&bottom, &top, &hopper_options(1e-3)).unwrap();
-    // The area in the pattern's own size (at 1e-200 the area itself underflows).
-    let area = |p: &SheetPart, scale: f64| {
-        let outline: Vec<PatternEdge> = p
-            .flat_pattern()
-            .unwrap()
-            .outline
-            .iter()
-            .map(|e| super::part::scaled_edge(e, 1.0 / scale))
-            .collect();
-        crate::FlatPattern {
-            outline,
-            bend_lines: vec![],
-        }
-        .area()
-    };
-    let a0 = area(&reference, 1.0);
+    let a0 = flat_area(&reference, 1.0);
     for (scale, shift) in [
         (1e-200, DVec3::ZERO),
         (1e200, DVec3::ZERO),
@@ -311,7 +313,7 @@ fn scaled_and_moved_hoppers_are_similar() {
             reference.piece_count(),
             "scale {scale:e}"
         );
-        let a = area(&part, scale);
+        let a = flat_area(&part, scale);
         println!("hopper scaled by {scale:e}, moved by {shift}: {} pieces, flat area (scaled back) {a:.12} (relative {:.1e})", part.piece_count(), (a - a0).abs() / a0);
         assert!((a - a0).abs() <= 1e-10 * a0);
         let edge = part.report().edge_distance[1] / scale;
@@ -879,22 +881,8 @@ fn polygon_to_circle_transitions_are_the_same_part_at_every_scale() {
             };
             SheetPart::transition(&polygon(&corners), &top, &options).unwrap()
         };
-        let area = |p: &SheetPart, scale: f64| {
-            let outline: Vec<PatternEdge> = p
-                .flat_pattern()
-                .unwrap()
-                .outline
-                .iter()
-                .map(|e| super::part::scaled_edge(e, 1.0 / scale))
-                .collect();
-            crate::FlatPattern {
-                outline,
-                bend_lines: vec![],
-            }
-            .area()
-        };
         let reference = part(1.0, DVec3::ZERO);
-        let a0 = area(&reference, 1.0);
+        let a0 = flat_area(&reference, 1.0);
         for (s, t) in [
             (1e-200, DVec3::ZERO),
             (1e-14, DVec3::new(3.0, -7.0, 1.0) * 1e-14),
@@ -908,7 +896,7 @@ fn polygon_to_circle_transitions_are_the_same_part_at_every_scale() {
                 reference.piece_count(),
                 "scale {s:e}, shift {t}"
             );
-            let a = area(&p, s);
+            let a = flat_area(&p, s);
             assert!(
                 (a - a0).abs() <= 1e-9 * a0,
                 "scale {s:e}, shift {t}: {a} vs {a0}"
