@@ -4,12 +4,14 @@
 //!   verification and the shape measures of every solution), and the choice of η;
 //! * a 1,000-segment spline along a helix: η per segment, then the exact rational RMF of the
 //!   whole spline, with the double-reflection RMF (the library's reference method) of the
-//!   same curve beside it — its time, and its distance from the exact frame.
+//!   same curve beside it — its time, and its distance from the exact frame;
+//! * the work of choosing η: solves (sextics for one η) per segment and time per solve,
+//!   the figures the header documents for eta_samples and max_evaluations.
 
 use rmfsurf::glam::DVec3;
 use rmfsurf::{
-    best_quintic, hermite_sequence, quintic_curve, quintic_rmf, rrmf_quintics, rrmf_spline,
-    uniform_parameters, DoubleReflectionRmf, HermiteSegment, ShapeMeasure,
+    best_quintic, best_quintic_within, hermite_sequence, quintic_curve, quintic_rmf, rrmf_quintics,
+    rrmf_spline, uniform_parameters, DoubleReflectionRmf, HermiteSegment, RrmfBudget, ShapeMeasure,
 };
 use std::f64::consts::{PI, TAU};
 use std::hint::black_box;
@@ -160,6 +162,41 @@ fn spline_of_1000_segments() {
     );
 }
 
+/// Solves and time per segment for growing N_η, on Example 1 and on one helix segment.
+fn work_per_segment() {
+    let example_1 = HermiteSegment::new(
+        DVec3::ZERO,
+        DVec3::new(1.0, 0.0, 1.0),
+        DVec3::ONE,
+        DVec3::new(0.0, 1.0, 1.0),
+    )
+    .unwrap();
+    let (points, tangents) = helix(2, PI / 2.0);
+    let helix_segment = hermite_sequence(&points, &tangents).unwrap()[0];
+    for (name, data) in [
+        ("Example 1", example_1),
+        ("helix, quarter turn", helix_segment),
+    ] {
+        for samples in [16, 1_000, 100_000] {
+            let mut budget = RrmfBudget::unlimited();
+            let start = Instant::now();
+            black_box(
+                best_quintic_within(&data, ShapeMeasure::ScaledEnergyRmf, samples, &mut budget)
+                    .unwrap(),
+            );
+            let time = start.elapsed().as_secs_f64();
+            println!(
+                "work, {name}, N_η = {samples}: {} solves ({} refining), {:.3} ms per segment, \
+                 {:.1} µs per solve",
+                budget.spent,
+                budget.spent - samples,
+                time * 1e3,
+                time * 1e6 / budget.spent as f64
+            );
+        }
+    }
+}
+
 fn main() {
     // `cargo bench` passes --bench; `cargo test --benches` runs this once as a smoke test.
     let smoke = std::env::args().all(|a| a != "--bench");
@@ -173,6 +210,7 @@ fn main() {
         assert_eq!(rrmf_quintics(&d.unwrap(), 5.2).unwrap().len(), 2);
         return;
     }
+    work_per_segment();
     single_problems();
     spline_of_1000_segments();
 }

@@ -4,7 +4,8 @@
  * library — the RRMF conditions (7)-(8) and w from the reported α, β with <complex.h>, the
  * curve and its frames from their NURBS views with the suite's own evaluator — the choice
  * of η, Example 3 (helix spline), and bad input: each failure returns its status with a
- * message naming the argument and leaves out-pointers untouched. Runs under valgrind and
+ * message naming the argument and leaves out-pointers untouched; the work budget of
+ * rmf_rrmf_spline_hermite_with_options. Runs under valgrind and
  * the sanitizers like every abi_*.c.
  */
 #include <complex.h>
@@ -491,6 +492,115 @@ static void test_bad_input(void) {
                  "curve");
 }
 
+/* ---- the work budget of rmf_rrmf_spline_hermite_with_options ---- */
+
+/* Poles and weights of two curves' NURBS views are identical. */
+static int same_curve(const RmfCurve *a, const RmfCurve *b) {
+    RmfNurbsCurve x, y;
+    if (rmf_curve_nurbs(a, &x) != RMF_OK || rmf_curve_nurbs(b, &y) != RMF_OK) return 0;
+    return x.pole_count == y.pole_count && memcmp(x.poles, y.poles, x.pole_count * sizeof *x.poles) == 0 &&
+           memcmp(x.weights, y.weights, x.pole_count * sizeof *x.weights) == 0;
+}
+
+/* The same spline as rmf_rrmf_spline_hermite, a report of the solves, a budget of exactly
+   those solves giving the same spline, one solve less RMF_ERROR_NOT_CONVERGED with nothing
+   written, and every bad option refused with a message naming its field. */
+static void test_work_budget(void) {
+    static char storage[2];
+    RmfCurve *const curve_sentinel = (RmfCurve *)(void *)&storage[0];
+    RmfFrames *const frames_sentinel = (RmfFrames *)(void *)&storage[1];
+    RmfVec3 points[10], tangents[10];
+    RmfCurve *plain = NULL, *curve = NULL, *again = NULL, *untouched = curve_sentinel;
+    RmfFrames *plain_frames = NULL, *frames = NULL, *again_frames = NULL, *untouched_frames = frames_sentinel;
+    RmfRrmfSplineOptions options, bad;
+    RmfRrmfSplineReport report = {sizeof(RmfRrmfSplineReport), 0, 0}, second = {sizeof(RmfRrmfSplineReport), 0, 0};
+    size_t spent;
+    int k;
+    for (k = 0; k < 10; k++) {
+        double t = k * PI / 2;
+        points[k] = vec3(sin(t), cos(t), t);
+        tangents[k] = vec3(cos(t), -sin(t), 1);
+    }
+    CHECK_STATUS(rmf_rrmf_spline_options_init(&options), RMF_OK, "");
+    CHECK(options.struct_size == sizeof options && options.measure == RMF_RRMF_MEASURE_SCALED_ENERGY_RMF &&
+              options.eta_samples == 64 && options.max_evaluations == SIZE_MAX && options.initial_normal.x == 0 &&
+              options.initial_normal.y == 0 && options.initial_normal.z == 0,
+          "options_init writes the defaults");
+    CHECK_STATUS(rmf_rrmf_spline_hermite_with_options(points, tangents, 10, &options, &untouched, &untouched_frames, NULL),
+                 RMF_ERROR_INVALID_INPUT, "options->initial_normal");
+    options.initial_normal = vec3(-1, 0, 0);
+    options.eta_samples = 16;
+    CHECK_STATUS(rmf_rrmf_spline_hermite_with_options(points, tangents, 10, &options, &curve, &frames, &report), RMF_OK,
+                 "");
+    CHECK_STATUS(rmf_rrmf_spline_hermite(points, tangents, 10, vec3(-1, 0, 0), RMF_RRMF_MEASURE_SCALED_ENERGY_RMF, 16,
+                                         &plain, &plain_frames),
+                 RMF_OK, "");
+    CHECK(curve && plain && same_curve(curve, plain), "the same spline as rmf_rrmf_spline_hermite");
+    CHECK(report.segments == 9, "the report counts the segments");
+    CHECK(report.evaluations >= 9 * 16 && report.evaluations <= 9 * (16 + 502),
+          "eta_samples + at most 502 solves per segment");
+    printf("rmf_rrmf_spline_hermite_with_options: Example 3 helix, 9 segments, N_eta = 16: %zu solves (%.1f per "
+           "segment)\n",
+           report.evaluations, report.evaluations / 9.0);
+    spent = report.evaluations;
+    options.max_evaluations = spent;
+    CHECK_STATUS(rmf_rrmf_spline_hermite_with_options(points, tangents, 10, &options, &again, &again_frames, &second),
+                 RMF_OK, "");
+    CHECK(again && same_curve(again, curve) && second.evaluations == spent,
+          "a budget of exactly the solves spent gives the same spline");
+    options.max_evaluations = spent - 1;
+    report.evaluations = 0;
+    CHECK_STATUS(rmf_rrmf_spline_hermite_with_options(points, tangents, 10, &options, &untouched, &untouched_frames,
+                                                      &report),
+                 RMF_ERROR_NOT_CONVERGED, "budget");
+    CHECK(strstr(rmf_last_error(), "segment 8") != NULL, "the message names the segment where the budget ran out");
+    CHECK(untouched == curve_sentinel && untouched_frames == frames_sentinel && report.evaluations == 0,
+          "a failing call writes neither the outputs nor the report");
+    options.max_evaluations = 1;
+    CHECK_STATUS(rmf_rrmf_spline_hermite_with_options(points, tangents, 10, &options, &untouched, &untouched_frames, NULL),
+                 RMF_ERROR_NOT_CONVERGED, "segment 0");
+    options.max_evaluations = SIZE_MAX;
+
+#define BAD_OPTION(edit, expected, mention)                                                                        \
+    do {                                                                                                          \
+        bad = options;                                                                                            \
+        edit;                                                                                                     \
+        untouched = curve_sentinel;                                                                               \
+        untouched_frames = frames_sentinel;                                                                       \
+        CHECK_STATUS(rmf_rrmf_spline_hermite_with_options(points, tangents, 10, &bad, &untouched, &untouched_frames, \
+                                                          NULL),                                                  \
+                     expected, mention);                                                                          \
+        CHECK(untouched == curve_sentinel && untouched_frames == frames_sentinel, "outputs untouched on failure"); \
+    } while (0)
+    BAD_OPTION(bad.struct_size = 0, RMF_ERROR_INVALID_INPUT, "options->struct_size");
+    BAD_OPTION(bad.struct_size = sizeof bad + 8, RMF_ERROR_INVALID_INPUT, "options->struct_size");
+    BAD_OPTION(bad.measure = 5, RMF_ERROR_INVALID_INPUT, "options->measure");
+    BAD_OPTION(bad.eta_samples = 0, RMF_ERROR_INVALID_INPUT, "options->eta_samples");
+    BAD_OPTION(bad.eta_samples = 1000001, RMF_ERROR_INVALID_INPUT, "options->eta_samples");
+    BAD_OPTION(bad.max_evaluations = 0, RMF_ERROR_INVALID_INPUT, "options->max_evaluations");
+    BAD_OPTION(bad.initial_normal = vec3(0, 0, 0), RMF_ERROR_INVALID_INPUT, "options->initial_normal");
+    BAD_OPTION(bad.initial_normal = vec3(nan_value(), 0, 1), RMF_ERROR_INVALID_INPUT, "options->initial_normal");
+    BAD_OPTION(bad.initial_normal = ne_scale(tangents[0], 3), RMF_ERROR_INVALID_INPUT, "options->initial_normal");
+    report.struct_size = 0;
+    CHECK_STATUS(rmf_rrmf_spline_hermite_with_options(points, tangents, 10, &options, &untouched, &untouched_frames,
+                                                      &report),
+                 RMF_ERROR_INVALID_INPUT, "report->struct_size");
+    CHECK_STATUS(rmf_rrmf_spline_hermite_with_options(points, tangents, 10, NULL, &untouched, &untouched_frames, NULL),
+                 RMF_ERROR_NULL_POINTER, "options");
+    CHECK_STATUS(rmf_rrmf_spline_hermite_with_options(points, tangents, 10, &options, NULL, &untouched_frames, NULL),
+                 RMF_ERROR_NULL_POINTER, "curve");
+    CHECK_STATUS(rmf_rrmf_spline_hermite_with_options(NULL, tangents, 10, &options, &untouched, &untouched_frames, NULL),
+                 RMF_ERROR_NULL_POINTER, "points");
+    CHECK(untouched == curve_sentinel && untouched_frames == frames_sentinel, "outputs untouched on failure");
+    CHECK_STATUS(rmf_rrmf_spline_options_init(NULL), RMF_ERROR_NULL_POINTER, "out");
+    rmf_frames_free(again_frames);
+    rmf_curve_free(again);
+    rmf_frames_free(plain_frames);
+    rmf_curve_free(plain);
+    rmf_frames_free(frames);
+    rmf_curve_free(curve);
+}
+
 int main(void) {
     test_example_1();
     test_many_solutions();
@@ -498,5 +608,6 @@ int main(void) {
     test_helix_spline();
     test_special_case();
     test_bad_input();
+    test_work_budget();
     return rmf_check_exit_code("abi_rrmf_quintic");
 }

@@ -861,6 +861,58 @@ typedef struct RmfRrmfQuintic {
 } RmfRrmfQuintic;
 
 /**
+ * What rmf_rrmf_spline_hermite_with_options aims at and may spend. Initialise with
+ * rmf_rrmf_spline_options_init, then set initial_normal.
+ * \since 0.2
+ */
+typedef struct RmfRrmfSplineOptions {
+  /**
+   * sizeof(RmfRrmfSplineOptions), written by rmf_rrmf_spline_options_init.
+   */
+  size_t struct_size;
+  /**
+   * Shape measure per segment (RMF_RRMF_MEASURE_*). Default
+   * RMF_RRMF_MEASURE_SCALED_ENERGY_RMF.
+   */
+  uint32_t measure;
+  /**
+   * Number N_η of sampled η per segment, 1 to 1,000,000. Default 64.
+   */
+  size_t eta_samples;
+  /**
+   * Projected onto the normal plane at points[0] and normalized to give f2 there: finite,
+   * not zero, not along tangents[0]. Default (0, 0, 0), which is refused: set it.
+   */
+  struct RmfVec3 initial_normal;
+  /**
+   * Most solves (the sextic (35) for one η) over the whole spline, ≥ 1: each segment
+   * costs eta_samples plus at most 502 (16 to 34 measured) for the refinement, 12 to 70 µs
+   * each. Default SIZE_MAX (no cap).
+   */
+  size_t max_evaluations;
+} RmfRrmfSplineOptions;
+
+/**
+ * What rmf_rrmf_spline_hermite_with_options did. The caller sets struct_size =
+ * sizeof(RmfRrmfSplineReport); the library writes the fields that fit, on success only.
+ * \since 0.2
+ */
+typedef struct RmfRrmfSplineReport {
+  /**
+   * sizeof(RmfRrmfSplineReport), set by the caller.
+   */
+  size_t struct_size;
+  /**
+   * Solves spent (sextics for one η, scan and refinement, all segments).
+   */
+  size_t evaluations;
+  /**
+   * Quintic segments of the spline (count − 1).
+   */
+  size_t segments;
+} RmfRrmfSplineReport;
+
+/**
  * What a face of an RmfShape is (values fixed).
  * \ingroup rmf_wire
  */
@@ -2972,6 +3024,13 @@ RmfStatus rmf_rrmf_quintic_curve(struct RmfVec3 p0,
  * eta_samples values η = 2πk / eta_samples is compared, then the best is refined by
  * Brent's method between its neighbouring samples.
  *
+ * Work: one solve (the sextic (35) for one η, its roots, each solution verified and
+ * measured) per sample plus those of the refinement — at most 502, measured 16 to 34 — so
+ * eta_samples + 502 solves at most. A solve took 12 to 70 µs on a shared 2-core x86-64
+ * machine of 2026 (`cargo bench --bench rrmf_quintic`): 0.6 to 0.9 ms at eta_samples = 16,
+ * 4 to 7 s at 100,000, about 26 s at 1,000,000. rmf_rrmf_spline_hermite_with_options
+ * caps the solves.
+ *
  * @param[in] p0, t0, p1, t1 Hermite data (as for rmf_rrmf_quintic_solutions).
  * @param[in] measure RMF_RRMF_MEASURE_ENERGY_RMF, _ENERGY_FRENET, _ARC_LENGTH,
  *            _SCALED_ENERGY_RMF (recommended: L · E_rmf) or _SCALED_ENERGY_FRENET.
@@ -3003,6 +3062,11 @@ RmfStatus rmf_rrmf_quintic_best(struct RmfVec3 p0,
  * Example 3). Segment k joins points[k] and points[k + 1] on the parameter interval
  * [k, k + 1]; its η is chosen as by rmf_rrmf_quintic_best. Each segment's RMF (9) is
  * turned about the tangent by a constant angle so that the frames agree at the joints.
+ *
+ * Work: as rmf_rrmf_quintic_best per segment, eta_samples + 502 solves at most (eta_samples
+ * + 16 to 34 measured; 12 to 70 µs each), with no bound on the total but the count of
+ * segments: (count − 1) · (eta_samples + 502) solves. rmf_rrmf_spline_hermite_with_options
+ * is the same with a cap on the total and a report of the work.
  *
  * @param[in] points count points (finite; consecutive points distinct).
  * @param[in] tangents count tangents (finite, non-zero; normalized here).
@@ -3037,6 +3101,61 @@ RmfStatus rmf_rrmf_spline_hermite(const struct RmfVec3 *points,
                                   size_t eta_samples,
                                   struct RmfCurve **curve,
                                   struct RmfFrames **frames);
+
+/**
+ * Writes the default options (RMF_RRMF_MEASURE_SCALED_ENERGY_RMF, 64 sampled η, no cap on
+ * the solves, initial_normal zero — to be set) and struct_size.
+ *
+ * @param[out] out The options to initialise.
+ * @return RMF_OK, or RMF_ERROR_NULL_POINTER if out is NULL.
+ * \since 0.2
+ */
+RmfStatus rmf_rrmf_spline_options_init(struct RmfRrmfSplineOptions *out);
+
+/**
+ * rmf_rrmf_spline_hermite with its parameters in an options struct, a cap on the work and a
+ * report of it. The spline is the same as rmf_rrmf_spline_hermite's for the same measure,
+ * eta_samples and initial_normal. The work is counted in solves (the sextic (35) for one
+ * η, its roots, every solution verified and measured): eta_samples per segment for the
+ * scan plus at most 502 (measured 16 to 34) for the refinement, each 12 to 70 µs on a
+ * shared 2-core x86-64 machine of 2026 (0.6 to 0.9 ms per segment at eta_samples = 16,
+ * 4 to 7 s at 100,000, about 26 s at 1,000,000). The call ends with
+ * RMF_ERROR_NOT_CONVERGED as soon as options->max_evaluations solves are spent before the
+ * last segment's η is chosen; it never spends more, and a budget of report->evaluations
+ * of an uncapped call gives the same spline.
+ *
+ * @param[in] points count points (finite; consecutive points distinct).
+ * @param[in] tangents count tangents (finite, non-zero; normalized here).
+ * @param[in] count Number of points, ≥ 2.
+ * @param[in] options Measure, eta_samples, initial_normal and the cap (initialise with
+ *            rmf_rrmf_spline_options_init, then set initial_normal).
+ * @param[out] curve Receives the spline (degree 5, count − 1 segments); free with
+ *             rmf_curve_free. Untouched on failure.
+ * @param[out] frames Receives the rational RMF (RMF_FRAMES_RATIONAL), as for
+ *             rmf_rrmf_spline_hermite; free with rmf_frames_free. Untouched on failure.
+ * @param[out] report May be NULL. With struct_size set by the caller, receives the solves
+ *             spent and the segments. Untouched on failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If points, tangents, options, curve or frames is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If options->struct_size or report->struct_size is no size
+ *         of the struct, options->measure is unknown, options->eta_samples is 0 or above
+ *         1,000,000, options->max_evaluations is 0, options->initial_normal is not finite,
+ *         zero or along tangents[0] (the message names the field), or the points and
+ *         tangents are invalid as for rmf_rrmf_spline_hermite.
+ * @return RMF_ERROR_NO_SOLUTION If no sampled η admits an interpolant for some segment (the
+ *         message names it).
+ * @return RMF_ERROR_NOT_CONVERGED If options->max_evaluations solves are spent before every
+ *         segment's η is chosen (the message names the segment).
+ * @return RMF_ERROR_INTERNAL On an internal error.
+ * \since 0.2
+ */
+RmfStatus rmf_rrmf_spline_hermite_with_options(const struct RmfVec3 *points,
+                                               const struct RmfVec3 *tangents,
+                                               size_t count,
+                                               const struct RmfRrmfSplineOptions *options,
+                                               struct RmfCurve **curve,
+                                               struct RmfFrames **frames,
+                                               struct RmfRrmfSplineReport *report);
 
 /**
  * Frees a shape; its face surfaces and loop curves become invalid. NULL is a no-op.

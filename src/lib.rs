@@ -111,8 +111,9 @@ pub use math::Complex;
 pub use rrmf_quintic::canonical::CanonicalHermite;
 pub use rrmf_quintic::frames::{quintic_curve, quintic_rmf};
 pub use rrmf_quintic::{
-    best_quintic, rrmf_quintics, rrmf_spline, BestQuintic, RrmfQuintic, RrmfSpline, ShapeMeasure,
-    ShapeMeasures,
+    best_quintic, best_quintic_within, rrmf_quintics, rrmf_spline, rrmf_spline_within, BestQuintic,
+    Budget as RrmfBudget, RrmfQuintic, RrmfSpline, ShapeMeasure, ShapeMeasures,
+    MAX_ETA_SAMPLES as RRMF_MAX_ETA_SAMPLES, MAX_REFINEMENT_SOLVES as RRMF_MAX_REFINEMENT_SOLVES,
 };
 
 // Cone spline surfaces: developables, development, bending [LP].
@@ -155,7 +156,7 @@ pub mod metrics {
 pub mod validate {
     pub use crate::bezier::{check_in_domain, check_nurbs_counts};
     pub use crate::curve::check_sample_count;
-    pub use crate::math::check_finite;
+    pub use crate::math::{check_finite, normal_plane_unit};
 }
 
 /// Overflow-free arithmetic the C layer shares with the geometry: points of a parameter

@@ -225,6 +225,48 @@ fn approximate_with(
     unsafe { rmf_ph_spline_approximate_with_options(f.curve, &options, &mut out, report) }
 }
 
+/// rmf_rrmf_spline_hermite_with_options on the helix data with one option edited (the
+/// normal set first), and a report whose struct_size is `report_size` (None: no report).
+fn rrmf_spline_with(
+    edit: impl Fn(&mut RmfRrmfSplineOptions),
+    report_size: Option<usize>,
+) -> RmfStatus {
+    let (points, tangents) = helix();
+    let mut options = std::mem::MaybeUninit::uninit();
+    unsafe {
+        assert_eq!(
+            rmf_rrmf_spline_options_init(options.as_mut_ptr()),
+            RmfStatus::RmfOk
+        );
+    }
+    let mut options = unsafe { options.assume_init() };
+    options.eta_samples = 8;
+    options.initial_normal = v(0.0, 0.0, 1.0);
+    edit(&mut options);
+    let mut report = RmfRrmfSplineReport::default();
+    let report = match report_size {
+        Some(size) => {
+            report.struct_size = size;
+            &mut report as *mut _
+        }
+        None => null_mut(),
+    };
+    let (mut curve, mut frames) = (null_mut(), null_mut());
+    let status = unsafe {
+        rmf_rrmf_spline_hermite_with_options(
+            points.as_ptr(),
+            tangents.as_ptr(),
+            points.len(),
+            &options,
+            &mut curve,
+            &mut frames,
+            report,
+        )
+    };
+    assert!(curve.is_null() && frames.is_null(), "outputs untouched");
+    status
+}
+
 /// A Hermite call of the PH, Möbius and RRMF splines on broken helix data.
 fn ph_spline_with(edit: impl Fn(&mut Vec<RmfVec3>, &mut Vec<RmfVec3>)) -> RmfStatus {
     let (mut points, mut tangents) = helix();
@@ -1164,6 +1206,83 @@ fn rows() -> Vec<Row> {
                     )
                 }
             },
+        },
+        Row {
+            what: "RRMF spline options NULL",
+            function: "rmf_rrmf_spline_hermite_with_options",
+            expected: NULL,
+            names: "options",
+            call: |_| {
+                let (points, tangents) = helix();
+                let (mut curve, mut frames) = (null_mut(), null_mut());
+                unsafe {
+                    rmf_rrmf_spline_hermite_with_options(
+                        points.as_ptr(),
+                        tangents.as_ptr(),
+                        points.len(),
+                        null(),
+                        &mut curve,
+                        &mut frames,
+                        null_mut(),
+                    )
+                }
+            },
+        },
+        Row {
+            what: "RRMF spline options not initialised",
+            function: "rmf_rrmf_spline_hermite_with_options",
+            expected: INVALID,
+            names: "options->struct_size",
+            call: |_| rrmf_spline_with(|o| o.struct_size = 8, None),
+        },
+        Row {
+            what: "RRMF spline options: unknown measure",
+            function: "rmf_rrmf_spline_hermite_with_options",
+            expected: INVALID,
+            names: "options->measure",
+            call: |_| rrmf_spline_with(|o| o.measure = 5, None),
+        },
+        Row {
+            what: "RRMF spline options: η samples 0",
+            function: "rmf_rrmf_spline_hermite_with_options",
+            expected: INVALID,
+            names: "options->eta_samples",
+            call: |_| rrmf_spline_with(|o| o.eta_samples = 0, None),
+        },
+        Row {
+            what: "RRMF spline options: initial normal left zero",
+            function: "rmf_rrmf_spline_hermite_with_options",
+            expected: INVALID,
+            names: "options->initial_normal",
+            call: |_| rrmf_spline_with(|o| o.initial_normal = v(0.0, 0.0, 0.0), None),
+        },
+        Row {
+            what: "RRMF spline options: initial normal along the tangent",
+            function: "rmf_rrmf_spline_hermite_with_options",
+            expected: INVALID,
+            names: "options->initial_normal",
+            call: |_| rrmf_spline_with(|o| o.initial_normal = v(0.0, 2.0, 0.8), None),
+        },
+        Row {
+            what: "RRMF spline options: max_evaluations 0",
+            function: "rmf_rrmf_spline_hermite_with_options",
+            expected: INVALID,
+            names: "options->max_evaluations",
+            call: |_| rrmf_spline_with(|o| o.max_evaluations = 0, None),
+        },
+        Row {
+            what: "RRMF spline work budget spent",
+            function: "rmf_rrmf_spline_hermite_with_options",
+            expected: RmfStatus::RmfErrorNotConverged,
+            names: "budget",
+            call: |_| rrmf_spline_with(|o| o.max_evaluations = 20, None),
+        },
+        Row {
+            what: "RRMF spline report struct_size not set",
+            function: "rmf_rrmf_spline_hermite_with_options",
+            expected: INVALID,
+            names: "report->struct_size",
+            call: |_| rrmf_spline_with(|_| {}, Some(0)),
         },
         Row {
             what: "a solution of other data",

@@ -277,7 +277,8 @@ fn consistent_join(
         three_pieces(d1, d2, generators(x), sign).map(|p| p[2].end().tangent_plane_angle(target))
     };
     let polished = if polish {
-        secant_refine(residual, x0, 1e-9 * x0.abs().max(1.0), 12)
+        let rough = secant_refine(&residual, x0, 1e-9 * x0.abs().max(1.0), 12);
+        nearest_best(&residual, rough)
     } else {
         x0
     };
@@ -294,6 +295,20 @@ fn consistent_join(
         .iter()
         .all(|p| p.segment_angle() < FRAC_PI_2)
         .then_some(pieces)
+}
+
+/// The parameter of least |residual| among `x` and its neighbours within 64 steps of 2⁻⁴⁷
+/// relative: the chart parameter is ill-conditioned for neighbouring osculating cones (the
+/// residual's slope turns the rounding of one such step into 1e-11 rad, and the rounding
+/// of the three pieces makes it noisy at that level), so where the secant stops the best
+/// of the nearby floats is taken rather than the first one it lands on.
+fn nearest_best(residual: &dyn Fn(f64) -> Option<f64>, x: f64) -> f64 {
+    let step = x.abs().max(f64::MIN_POSITIVE) * 2f64.powi(-47);
+    (-64..=64)
+        .map(|k| x + f64::from(k) * step)
+        .filter_map(|y| residual(y).map(|r| (y, r.abs())))
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+        .map_or(x, |(y, _)| y)
 }
 
 /// Relative distance below which two osculating cones count as sharing their vertex.

@@ -22,6 +22,7 @@
 use super::biarc::{biarc, equal_lambda, lambda_through, partner_lambda, Biarc};
 use super::element::{check_consecutive, Element};
 use super::piece::ConePiece;
+use super::piece::Motion;
 use super::region::Region;
 use crate::error::no_solution;
 use crate::error::{invalid, Error, Result};
@@ -90,6 +91,11 @@ enum Apex {
 
 /// The cone pair from `a` to `b` chosen by `rule`, free of vertices in `region`.
 /// `names` are the caller's names of the two elements, for messages.
+///
+/// The pair is solved in coordinates centred on the first element's point and scaled by a
+/// power of two near the elements' distance ([`Frame`]), so that it does not depend on
+/// where the data lie or on their size: the tolerances below are relative to that
+/// distance, and a scaling by a power of two changes no rounding at all.
 pub fn cone_pair(
     a: &Element,
     b: &Element,
@@ -103,6 +109,129 @@ pub fn cone_pair(
             return invalid!("the given parameter mu1 = {x} is not finite");
         }
     }
+    let frame = Frame::of(a, b);
+    let rule = match rule {
+        Rule::Given(x) => Rule::Given(x / frame.scale),
+        other => other,
+    };
+    let omega = region.map(|&region| Omega { region, frame });
+    let pair = local_pair(
+        &frame.element_in(a),
+        &frame.element_in(b),
+        rule,
+        omega.as_ref(),
+    )?;
+    Ok(frame.pair_out(pair))
+}
+
+/// Coordinates x_local = (x − centre) / scale of one pair, `scale` a power of two.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Frame {
+    centre: DVec3,
+    scale: f64,
+}
+
+impl Frame {
+    /// Centred on `a`'s point, scaled by the power of two at or below |b − a| (1 when the
+    /// points coincide; 2^−1022 for a subnormal distance, whose power of two is not a
+    /// normal number).
+    fn of(a: &Element, b: &Element) -> Self {
+        let distance = crate::math::robust_length(b.point - a.point);
+        let scale = if distance.is_finite() && distance > 0.0 {
+            f64::from_bits(distance.to_bits() & 0x7ff0_0000_0000_0000).max(f64::MIN_POSITIVE)
+        } else {
+            1.0
+        };
+        Self {
+            centre: a.point,
+            scale,
+        }
+    }
+
+    fn point_in(&self, x: DVec3) -> DVec3 {
+        (x - self.centre) / self.scale
+    }
+
+    fn point_out(&self, x: DVec3) -> DVec3 {
+        x * self.scale + self.centre
+    }
+
+    fn element_in(&self, e: &Element) -> Element {
+        Element::from_frame(self.point_in(e.point), e.ruling, e.side)
+    }
+
+    fn element_out(&self, e: &Element) -> Element {
+        Element::from_frame(self.point_out(e.point), e.ruling, e.side)
+    }
+
+    fn piece_out(&self, p: &ConePiece) -> ConePiece {
+        let motion = match p.motion {
+            Motion::Rotation {
+                origin,
+                axis,
+                angle,
+            } => Motion::Rotation {
+                origin: self.point_out(origin),
+                axis,
+                angle,
+            },
+            Motion::Translation(v) => Motion::Translation(v * self.scale),
+        };
+        ConePiece {
+            start: self.element_out(&p.start),
+            motion,
+        }
+    }
+
+    fn pair_out(&self, pair: ConePair) -> ConePair {
+        let s = self.scale;
+        let length = |x: Option<f64>| x.map(|x| x * s);
+        ConePair {
+            case: pair.case,
+            pieces: pair.pieces.iter().map(|p| self.piece_out(p)).collect(),
+            sphere: pair.sphere.map(|(m, r)| (self.point_out(m), r * s)),
+            biarc: pair.biarc.map(|b| Biarc {
+                a1: self.point_out(b.a1),
+                b1: self.point_out(b.b1),
+                c: self.point_out(b.c),
+                b2: self.point_out(b.b2),
+                a2: self.point_out(b.a2),
+                lambda1: b.lambda1 * s,
+                lambda2: b.lambda2 * s,
+                ..b
+            }),
+            mu: pair.mu.map(|(m1, m2)| (length(m1), length(m2))),
+        }
+    }
+}
+
+/// The caller's region of interest seen from the local coordinates of a [`Frame`].
+struct Omega {
+    region: Region,
+    frame: Frame,
+}
+
+impl Omega {
+    fn contains(&self, x: DVec3) -> bool {
+        self.region.contains(self.frame.point_out(x))
+    }
+
+    /// [`Region::clip_line`] of a local line, in local distances.
+    fn clip_line(&self, point: DVec3, direction: DVec3) -> Option<(f64, f64)> {
+        self.region
+            .clip_line(self.frame.point_out(point), direction)
+            .map(|(lo, hi)| (lo / self.frame.scale, hi / self.frame.scale))
+    }
+
+    /// How far outside the box a vertex is placed: 1e-6 of its diagonal, local.
+    fn margin(&self) -> f64 {
+        let r = &self.region;
+        1e-6 * crate::math::robust_length(r.max - r.min) / self.frame.scale
+    }
+}
+
+/// [`cone_pair`] of checked elements in local coordinates.
+fn local_pair(a: &Element, b: &Element, rule: Rule, region: Option<&Omega>) -> Result<ConePair> {
     let (e1, e2) = (a.ruling, b.ruling);
     let w = e1.cross(e2);
     let d = b.point - a.point;
@@ -169,20 +298,24 @@ pub(crate) fn joins(end: &Element, b: &Element, scale: f64) -> Result<()> {
 /// Both segments from their vertices: the junction ruling joins v₁ and v₂ (or is parallel
 /// to the ruling of a segment whose vertex is at infinity), with the orientation `sign`.
 /// By construction the second segment ends on the ruling of `b` with its direction; only
-/// its tangent plane there remains to be checked.
+/// its tangent plane there remains to be checked. For two finite vertices `junction` is
+/// v₂ − v₁ computed without cancellation ([`VertexFamily::junction`]), and v₂ = v₁ +
+/// `junction`.
 fn pair_from_apexes(
     a: &Element,
     b: &Element,
     v1: Apex,
     v2: Apex,
+    junction: Option<DVec3>,
     sign: f64,
     scale: f64,
 ) -> Result<[ConePiece; 2]> {
-    let (through, direction) = match (v1, v2) {
-        (Apex::Finite(p), Apex::Finite(q)) => (p, q - p),
-        (Apex::Infinite, Apex::Finite(q)) => (q, a.ruling),
-        (Apex::Finite(p), Apex::Infinite) => (p, b.ruling),
-        (Apex::Infinite, Apex::Infinite) => {
+    let (through, direction) = match (v1, v2, junction) {
+        (Apex::Finite(p), Apex::Finite(_), Some(j)) => (p, j),
+        (Apex::Finite(p), Apex::Finite(q), None) => (p, q - p),
+        (Apex::Infinite, Apex::Finite(q), _) => (q, a.ruling),
+        (Apex::Finite(p), Apex::Infinite, _) => (p, b.ruling),
+        (Apex::Infinite, Apex::Infinite, _) => {
             return Err(Error::no_solution("both vertices at infinity"))
         }
     };
@@ -193,9 +326,10 @@ fn pair_from_apexes(
         Apex::Finite(p) => ConePiece::cone(p, *a, sign * direction),
         Apex::Infinite => ConePiece::cylinder(*a, through),
     }?;
-    let second = match v2 {
-        Apex::Finite(q) => ConePiece::cone(q, first.end(), b.ruling),
-        Apex::Infinite => ConePiece::cylinder(first.end(), b.point),
+    let second = match (v1, v2) {
+        (Apex::Finite(p), Apex::Finite(_)) => ConePiece::cone(p + direction, first.end(), b.ruling),
+        (_, Apex::Finite(q)) => ConePiece::cone(q, first.end(), b.ruling),
+        (_, Apex::Infinite) => ConePiece::cylinder(first.end(), b.point),
     }?;
     Ok([first, second])
 }
@@ -206,9 +340,13 @@ fn plane_residual(pieces: &[ConePiece; 2], b: &Element) -> f64 {
 }
 
 /// The pair of a family member, G1 at `b` to round-off: the vertex family (9) is
-/// ill-conditioned where the inscribed sphere is huge (nearly constant slope), so the
-/// finite vertex parameter μ₂ (or μ₁) is polished by secant steps on the tangent-plane
-/// residual at `b` before the G1 check.
+/// ill-conditioned where the inscribed sphere is huge (nearly constant slope) and where the
+/// rulings approach (the two vertices tend to the vertex of the osculating cone, far from
+/// the elements compared with their distance |v₂ − v₁|), so one parameter is polished by
+/// secant steps on the tangent-plane residual at `b` before the G1 check: for two finite
+/// vertices the vertex distance σ = μ₁ + μ₂ with μ₁ fixed — the junction ruling
+/// d − σe₂ + μ₁(e₂ − e₁) is then accurate to rounding of the data, however close the
+/// rulings —, else the finite one of μ₂, μ₁.
 fn family_member(
     a: &Element,
     b: &Element,
@@ -216,34 +354,48 @@ fn family_member(
     mu: VertexParameters,
     sign: f64,
     scale: f64,
-) -> Result<Vec<ConePiece>> {
-    let build = |mu: VertexParameters| {
-        let (v1, v2) = family.apexes(mu);
-        pair_from_apexes(a, b, v1, v2, sign, scale)
-    };
-    let with = |x: f64| {
-        if mu.1.is_some() {
-            (mu.0, Some(x))
-        } else {
-            (Some(x), None)
+) -> Result<(Vec<ConePiece>, VertexParameters)> {
+    let (pieces, mu) = match mu {
+        (Some(mu1), Some(mu2)) => {
+            let build = |sigma: f64| {
+                let (v1, v2) = family.apexes((Some(mu1), Some(sigma - mu1)));
+                let junction = family.junction(mu1, sigma);
+                pair_from_apexes(a, b, v1, v2, Some(junction), sign, scale)
+            };
+            let residual = |x: f64| build(x).ok().map(|p| plane_residual(&p, b));
+            let sigma0 = mu1 + mu2;
+            let sigma = secant_refine(residual, sigma0, 1e-7 * sigma0.abs().max(scale), 8);
+            (build(sigma)?, (Some(mu1), Some(sigma - mu1)))
         }
-    };
-    let pieces = match mu.1.or(mu.0) {
-        Some(x0) => {
-            let residual = |x: f64| build(with(x)).ok().map(|p| plane_residual(&p, b));
-            build(with(secant_refine(
-                residual,
-                x0,
-                1e-7 * x0.abs().max(scale),
-                8,
-            )))?
+        _ => {
+            let build = |mu: VertexParameters| {
+                let (v1, v2) = family.apexes(mu);
+                pair_from_apexes(a, b, v1, v2, None, sign, scale)
+            };
+            let with = |x: f64| {
+                if mu.1.is_some() {
+                    (mu.0, Some(x))
+                } else {
+                    (Some(x), None)
+                }
+            };
+            match mu.1.or(mu.0) {
+                Some(x0) => {
+                    let residual = |x: f64| build(with(x)).ok().map(|p| plane_residual(&p, b));
+                    let x = secant_refine(residual, x0, 1e-7 * x0.abs().max(scale), 8);
+                    (build(with(x))?, with(x))
+                }
+                None => (build(mu)?, mu),
+            }
         }
-        None => build(mu)?,
     };
     joins(&pieces[1].end(), b, scale)?;
     // A segment that does not move (the family member where one cone alone joins the
     // elements) is left out rather than kept as an empty patch.
-    Ok(pieces.into_iter().filter(|p| !is_empty(p, scale)).collect())
+    Ok((
+        pieces.into_iter().filter(|p| !is_empty(p, scale)).collect(),
+        mu,
+    ))
 }
 
 /// Whether a piece does not move its ruling at all (to round-off).
@@ -258,7 +410,7 @@ fn total_angle(pieces: &[ConePiece]) -> f64 {
     pieces.iter().map(ConePiece::segment_angle).sum()
 }
 
-fn has_vertex_in(pieces: &[ConePiece], region: Option<&Region>) -> bool {
+fn has_vertex_in(pieces: &[ConePiece], region: Option<&Omega>) -> bool {
     region.is_some_and(|r| {
         pieces
             .iter()
@@ -271,21 +423,29 @@ fn has_vertex_in(pieces: &[ConePiece], region: Option<&Region>) -> bool {
 pub type VertexParameters = (Option<f64>, Option<f64>);
 
 /// The vertex family of (9): v₁ = a₁ + μ₁e₁, v₂ = a₂ − μ₂e₂, μ₂ = (Aμ₁ + B)/(Cμ₁ + D) (11).
+///
+/// As the rulings approach, C and A + D vanish quadratically in their angle while A and
+/// D do not; they are computed from e₁ − e₂ (C = 2(e₁·e₂ − 1) = −|e₁ − e₂|² for unit
+/// vectors, A + D = 2 d·(e₁ − e₂)), which keeps their relative accuracy, instead of from
+/// the cancelling differences of nearly equal numbers.
 struct VertexFamily {
     a1: DVec3,
     a2: DVec3,
     e1: DVec3,
     e2: DVec3,
     coefficients: [f64; 4],
+    /// A + D.
+    a_plus_d: f64,
 }
 
 impl VertexFamily {
     fn new(a1: DVec3, e1: DVec3, a2: DVec3, e2: DVec3) -> Self {
         let d = a2 - a1;
+        let de = e1 - e2;
         let coefficients = [
             2.0 * d.dot(e1),
             -d.length_squared(),
-            2.0 * (e1.dot(e2) - 1.0),
+            -de.length_squared(),
             -2.0 * d.dot(e2),
         ];
         Self {
@@ -294,6 +454,7 @@ impl VertexFamily {
             e1,
             e2,
             coefficients,
+            a_plus_d: 2.0 * d.dot(de),
         }
     }
 
@@ -316,9 +477,9 @@ impl VertexFamily {
         let [a, b, c, d] = self.coefficients;
         let with_partner = |mu1: f64| (Some(mu1), self.mu2(mu1));
         match rule {
-            // (12): C²μ₁² + 2CDμ₁ + AD + D² − BC = 0.
+            // (12): C²μ₁² + 2CDμ₁ + AD + D² − BC = 0, with AD + D² = D(A + D).
             Rule::MinimalVertexDistance => {
-                quadratic_roots(c * c, 2.0 * c * d, a * d + d * d - b * c)
+                quadratic_roots(c * c, 2.0 * c * d, d * self.a_plus_d - b * c)
                     .into_iter()
                     .map(with_partner)
                     .collect()
@@ -337,8 +498,8 @@ impl VertexFamily {
 
     /// Vertices just outside the region on either ruling, for when the rule's own choice
     /// puts a vertex inside it.
-    fn boundary_candidates(&self, region: &Region) -> Vec<VertexParameters> {
-        let margin = 1e-6 * (region.max - region.min).length();
+    fn boundary_candidates(&self, region: &Omega) -> Vec<VertexParameters> {
+        let margin = region.margin();
         let mut out = self.candidates(Rule::CylinderFirst);
         out.extend(self.candidates(Rule::CylinderSecond));
         if let Some((lo, hi)) = region.clip_line(self.a1, self.e1) {
@@ -352,6 +513,13 @@ impl VertexFamily {
             }
         }
         out
+    }
+
+    /// v₂ − v₁ = d − μ₂e₂ − μ₁e₁ for μ₂ = σ − μ₁, as d − σe₂ + μ₁(e₂ − e₁): every term is of
+    /// the size of the result when the rulings are close (μ₁ ≈ −μ₂ large, e₂ − e₁ small),
+    /// where the difference of the vertices would cancel.
+    fn junction(&self, mu1: f64, sigma: f64) -> DVec3 {
+        (self.a2 - self.a1) - sigma * self.e2 + mu1 * (self.e2 - self.e1)
     }
 
     fn apexes(&self, (mu1, mu2): VertexParameters) -> (Apex, Apex) {
@@ -368,14 +536,14 @@ fn best_pair(
     b: &Element,
     family: &VertexFamily,
     candidates: Vec<VertexParameters>,
-    region: Option<&Region>,
+    region: Option<&Omega>,
     scale: f64,
 ) -> Option<(Vec<ConePiece>, VertexParameters)> {
     candidates
         .into_iter()
         .flat_map(|mu| [1.0, -1.0].map(|sign| (mu, sign)))
         .filter_map(|(mu, sign)| {
-            let pieces = family_member(a, b, family, mu, sign, scale).ok()?;
+            let (pieces, mu) = family_member(a, b, family, mu, sign, scale).ok()?;
             (!has_vertex_in(&pieces, region)).then_some((pieces, mu))
         })
         .min_by(|x, y| total_angle(&x.0).total_cmp(&total_angle(&y.0)))
@@ -388,7 +556,7 @@ fn family_pair(
     b: &Element,
     family: &VertexFamily,
     rule: Rule,
-    region: Option<&Region>,
+    region: Option<&Omega>,
     scale: f64,
 ) -> Result<(Vec<ConePiece>, VertexParameters)> {
     if let Some(found) = best_pair(a, b, family, family.candidates(rule), region, scale) {
@@ -424,7 +592,7 @@ fn general_case(
     a: &Element,
     b: &Element,
     rule: Rule,
-    region: Option<&Region>,
+    region: Option<&Omega>,
     scale: f64,
 ) -> Result<ConePair> {
     let (n1, n2) = (a.normal(), b.normal());
@@ -461,7 +629,7 @@ fn constant_slope_case(
     a: &Element,
     b: &Element,
     rule: Rule,
-    region: Option<&Region>,
+    region: Option<&Omega>,
     scale: f64,
 ) -> Result<ConePair> {
     let (p1, p2) = (a.side, b.side);
@@ -516,7 +684,7 @@ fn cone_case(
     b: &Element,
     v: DVec3,
     rule: Rule,
-    region: Option<&Region>,
+    region: Option<&Omega>,
     scale: f64,
 ) -> Result<ConePair> {
     if matches!(rule, Rule::CylinderFirst | Rule::CylinderSecond) {
@@ -526,7 +694,8 @@ fn cone_case(
     }
     if region.is_some_and(|r| r.contains(v)) {
         return no_solution!(
-            "the region of interest contains every possible vertex: the rulings meet at {v}"
+            "the region of interest contains every possible vertex: the rulings meet at {}",
+            region.map_or(v, |r| r.frame.point_out(v))
         );
     }
     let (s1, s2) = (a.parameter_of(v), b.parameter_of(v));
@@ -578,6 +747,7 @@ mod tests {
     use super::super::piece::PieceKind;
     use super::super::test_support::{tangent_surface, twisted_cubic, Helix};
     use super::*;
+    use crate::curve::ParametricCurve;
     use glam::DVec4;
     use std::f64::consts::PI;
 
@@ -799,5 +969,140 @@ mod tests {
             Some(&region),
         );
         assert!(given.unwrap_err().message().contains("outside the region"));
+    }
+
+    /// The tangent surface of the helix (cos t, sin t, t/2), distances 1 to 2 from the curve:
+    /// a constant-slope surface whose osculating cone at t has its vertex at the curve point.
+    fn helix_surface() -> (Helix, f64, f64) {
+        (
+            Helix {
+                radius: 1.0,
+                pitch: 0.5,
+                domain: (-1.0, 40.0),
+            },
+            1.0,
+            2.0,
+        )
+    }
+
+    /// Issue 13 item 6: rulings 0.001 apart (3,544 of 5,000 such pairs were NO_SOLUTION):
+    /// every pair joins, G1 at the second element to the tolerance of the check, its
+    /// vertices near the osculating cone's (the curve point, their limit as the rulings
+    /// approach) and the pair within the Hermite error O(dt³) of the surface.
+    #[test]
+    fn close_rulings_of_a_helix_tangent_surface_join() {
+        let (helix, v0, v1) = helix_surface();
+        let surface = tangent_surface(&helix, v0, v1);
+        let dt = 1e-3;
+        let (mut join, mut vertex, mut deviation) = (0.0f64, 0.0f64, 0.0f64);
+        for k in 0..5000 {
+            let t = 0.004 + 0.006 * k as f64;
+            let (a, b) = (
+                surface.element(t).unwrap(),
+                surface.element(t + dt).unwrap(),
+            );
+            let pair = solve(&a, &b, Rule::MinimalVertexDistance, None)
+                .unwrap_or_else(|e| panic!("t = {t}: {e}"));
+            assert_eq!(pair.case, PairCase::ConstantSlope, "t = {t}");
+            let end = pair.pieces.last().unwrap().end();
+            join = join
+                .max((end.ruling - b.ruling).length())
+                .max((end.normal() - b.normal()).length())
+                .max((b.point - end.point).cross(end.ruling).length());
+            let apex = helix.point_derivative(t + dt / 2.0).unwrap().0;
+            for piece in &pair.pieces {
+                vertex = vertex.max((piece.vertex().unwrap() - apex).length());
+            }
+            deviation = deviation.max(
+                super::super::approximate::deviation(&surface, &pair.pieces, t, t + dt, 4).unwrap(),
+            );
+        }
+        println!(
+            "5,000 helix pairs at dt = 1e-3: G1 at the second element {join:.1e}, vertices \
+             {vertex:.1e} from the curve point, deviation from the surface {deviation:.1e}"
+        );
+        assert!(join <= JOIN_TOLERANCE);
+        assert!(vertex <= 10.0 * dt, "vertex {vertex:e}");
+        assert!(deviation <= 10.0 * dt.powi(3), "deviation {deviation:e}");
+    }
+
+    /// The pair of `a`, `b` moved by x ↦ s·x + o against the pair itself moved so: the
+    /// largest difference of vertices, end points, end rulings, end normals and segment
+    /// angles (lengths relative to s), and that of the half angles.
+    fn moved_pair_gap(a: &Element, b: &Element, s: f64, o: DVec3) -> Result<(f64, f64)> {
+        let moved = |e: &Element| Element::from_frame(e.point * s + o, e.ruling, e.side);
+        let reference = solve(a, b, Rule::MinimalVertexDistance, None)?;
+        let pair = solve(&moved(a), &moved(b), Rule::MinimalVertexDistance, None)?;
+        assert_eq!(pair.case, reference.case);
+        assert_eq!(pair.pieces.len(), reference.pieces.len());
+        // Compared relative to the scale before subtracting (no overflow at 1e200).
+        let distance = |x: DVec3, y: DVec3| (x / s - (y * s + o) / s).length();
+        let (mut gap, mut half) = (0.0f64, 0.0f64);
+        for (p, q) in pair.pieces.iter().zip(&reference.pieces) {
+            if let (Some(v), Some(w)) = (p.vertex(), q.vertex()) {
+                gap = gap.max(distance(v, w));
+            }
+            let (e, f) = (p.end(), q.end());
+            gap = gap
+                .max(distance(e.point, f.point))
+                .max((e.ruling - f.ruling).length())
+                .max((e.normal() - f.normal()).length())
+                .max((p.segment_angle() - q.segment_angle()).abs());
+            half = half.max((p.half_angle() - q.half_angle()).abs());
+        }
+        Ok((gap, half))
+    }
+
+    /// Issue 13 item 6: a pair at t ≈ 28.69 failed and succeeded once moved by −8.607 in z.
+    /// The pair is the same up to the translation, and up to scaling from 1e-200 to 1e200
+    /// with offsets of 1e6 times the data's size.
+    #[test]
+    fn pairs_are_invariant_under_translation_and_scaling() {
+        let (helix, v0, v1) = helix_surface();
+        let surface = tangent_surface(&helix, v0, v1);
+        let (a, b) = (
+            surface.element(28.69).unwrap(),
+            surface.element(28.691).unwrap(),
+        );
+        let (shifted, _) = moved_pair_gap(&a, &b, 1.0, DVec3::new(0.0, 0.0, -8.607)).unwrap();
+        println!("t = 28.69 pair moved by -8.607 in z: {shifted:.1e}");
+        assert!(shifted <= 1e-9, "{shifted:e}");
+        let (mut worst, mut worst_half) = (0.0f64, 0.0f64);
+        // Close rulings of the issue, and a wide pair.
+        for (t, dt) in [(0.004, 1e-3), (28.69, 1e-3), (3.0, 0.3)] {
+            let (a, b) = (
+                surface.element(t).unwrap(),
+                surface.element(t + dt).unwrap(),
+            );
+            for exponent in [-200, -100, -15, 0, 14, 15, 100, 200] {
+                let s = 1.7 * 10f64.powi(exponent);
+                for ratio in [0.0, 1e6] {
+                    let o = DVec3::new(1.0, -2.0, 3.0).normalize() * (ratio * s * 30.0);
+                    let (gap, half) = moved_pair_gap(&a, &b, s, o)
+                        .unwrap_or_else(|e| panic!("t = {t}, scale {s:e}, offset {ratio:e}: {e}"));
+                    // The data are rounded to ε·(30 + |o|/s); relative to the distance of
+                    // the element points that rounding is ρ, and close rulings amplify ρ by
+                    // 1/dt (the vertices lie 1/dt times that distance away).
+                    let distance = (b.point - a.point).length();
+                    let rho = f64::EPSILON * 30.0 * (1.0 + ratio) / distance;
+                    let bound = 1e2 * rho / dt;
+                    assert!(
+                        gap <= bound,
+                        "t = {t}, scale {s:e}, offset {ratio:e}: {gap:e}"
+                    );
+                    assert!(
+                        half <= bound,
+                        "t = {t}, scale {s:e}, offset {ratio:e}: half angle {half:e}"
+                    );
+                    if ratio == 0.0 {
+                        worst = worst.max(gap);
+                        worst_half = worst_half.max(half);
+                    }
+                }
+            }
+        }
+        println!(
+            "pairs scaled by 1.7e-200 … 1.7e200: largest gap {worst:.1e}, half angles {worst_half:.1e}"
+        );
     }
 }

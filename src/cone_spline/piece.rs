@@ -127,11 +127,14 @@ impl ConePiece {
     pub fn cone(vertex: DVec3, start: Element, end_ruling: DVec3) -> Result<Self> {
         let (e, n) = (start.ruling, start.normal());
         let e_end = end_ruling.normalize();
-        let (ce, cn) = (e.dot(e_end), n.dot(e_end));
-        if 1.0 - ce <= 1e-14 || ce.is_nan() {
+        // 1 − e·e_end = |e − e_end|² / 2 for unit vectors: accurate to rounding for close
+        // rulings, where 1 − e·e_end cancels (relative error ε / angle², which the half
+        // angle of a cone between rulings 10⁻³ apart would carry as 2e-10).
+        let (one_minus_ce, cn) = ((e - e_end).length_squared() / 2.0, n.dot(e_end));
+        if one_minus_ce <= 1e-14 || one_minus_ce.is_nan() {
             return invalid!("a cone piece needs two different rulings through its vertex");
         }
-        let beta = (1.0 - ce).atan2(cn);
+        let beta = one_minus_ce.atan2(cn);
         let axis = (beta.cos() * e + beta.sin() * n).normalize();
         let rho = start.parameter_of(vertex);
         let scale = start

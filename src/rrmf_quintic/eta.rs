@@ -5,12 +5,19 @@
 //! solution of least E_rmf, E or L (the caller's choice) is refined by Brent's method on
 //! the bracket of its two neighbouring samples, minimizing over η the least measure of all
 //! solutions at η (an η without solutions counts as +∞).
+//!
+//! The unit of work is one *solve*: the sextic (35) (or the quartic of the special case)
+//! for one η, its positive roots, and the verification and measures of each solution. A
+//! segment costs N_η solves for the scan plus those of the refinement — at most
+//! [`MAX_REFINEMENT_SOLVES`], about 40 in practice — and a [`Budget`] caps the solves of a
+//! whole computation, ending it with [`ErrorKind::NotConverged`](crate::ErrorKind) when
+//! it is spent.
 
 use super::canonical::CanonicalHermite;
 use super::measures::ShapeMeasure;
 use super::solutions::{solve, RrmfQuintic};
 use crate::error::no_solution;
-use crate::error::{invalid, Result};
+use crate::error::{invalid, Error, Result};
 use crate::hermite::HermiteSegment;
 use crate::math::minimize_bracketed;
 use std::f64::consts::TAU;
@@ -20,6 +27,51 @@ pub const MAX_ETA_SAMPLES: usize = 1_000_000;
 
 /// Tolerance in η of the refinement.
 const ETA_TOLERANCE: f64 = 1e-9;
+
+/// Most solves of one refinement: Brent's method stops after 500 steps (one solve each),
+/// plus its first point and the final solve at the minimum.
+pub const MAX_REFINEMENT_SOLVES: usize = 502;
+
+/// A cap on the solves (sextics for one η) of a computation, and how many were spent.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Budget {
+    /// Most solves allowed; `usize::MAX` for no cap.
+    pub max_solves: usize,
+    /// Solves spent so far.
+    pub spent: usize,
+}
+
+impl Budget {
+    /// A budget of `max_solves` solves, none spent.
+    pub fn new(max_solves: usize) -> Self {
+        Self {
+            max_solves,
+            spent: 0,
+        }
+    }
+
+    /// No cap.
+    pub fn unlimited() -> Self {
+        Self::new(usize::MAX)
+    }
+
+    /// Takes one solve from the budget; false (nothing taken) when it is spent.
+    fn take(&mut self) -> bool {
+        let left = self.spent < self.max_solves;
+        if left {
+            self.spent += 1;
+        }
+        left
+    }
+
+    /// The error of a spent budget.
+    fn spent_error(&self) -> Error {
+        Error::not_converged(format!(
+            "the work budget of {} solves (sextics for one η) is spent before the best η is found: raise it, or lower eta_samples",
+            self.max_solves
+        ))
+    }
+}
 
 /// The chosen interpolant and how many sampled η admit one.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -37,12 +89,32 @@ pub fn best_quintic(
     measure: ShapeMeasure,
     eta_samples: usize,
 ) -> Result<BestQuintic> {
+    best_quintic_within(data, measure, eta_samples, &mut Budget::unlimited())
+}
+
+/// Checks N_η.
+pub(crate) fn check_eta_samples(eta_samples: usize) -> Result<()> {
     if !(1..=MAX_ETA_SAMPLES).contains(&eta_samples) {
         return invalid!("eta_samples = {eta_samples} must be between 1 and {MAX_ETA_SAMPLES}");
     }
+    Ok(())
+}
+
+/// [`best_quintic`] spending at most what is left of `budget` (and recording what it
+/// spends); [`ErrorKind::NotConverged`](crate::ErrorKind) when the budget runs out first.
+pub fn best_quintic_within(
+    data: &HermiteSegment,
+    measure: ShapeMeasure,
+    eta_samples: usize,
+    budget: &mut Budget,
+) -> Result<BestQuintic> {
+    check_eta_samples(eta_samples)?;
     let c = CanonicalHermite::new(data)?;
     let (mut best, mut admissible) = (None::<RrmfQuintic>, 0);
     for k in 0..eta_samples {
+        if !budget.take() {
+            return Err(budget.spent_error());
+        }
         let found = least(&solve(&c, TAU * k as f64 / eta_samples as f64), measure);
         if let Some(q) = found {
             admissible += 1;
@@ -56,7 +128,7 @@ pub fn best_quintic(
             "none of the eta_samples = {eta_samples} sampled values of η admits an RRMF quintic interpolant"
         );
     };
-    let quintic = refine(&c, sampled, measure, TAU / eta_samples as f64);
+    let quintic = refine(&c, sampled, measure, TAU / eta_samples as f64, budget)?;
     Ok(BestQuintic {
         quintic,
         admissible,
@@ -83,24 +155,37 @@ fn least(solutions: &[RrmfQuintic], measure: ShapeMeasure) -> Option<RrmfQuintic
 }
 
 /// Brent's method on [η − step, η + step] around the sampled best; keeps the sample if the
-/// refinement does not improve on it.
+/// refinement does not improve on it. A budget spent during the refinement is an error
+/// (not the sample): the answer must not depend on where the budget ran out.
 fn refine(
     c: &CanonicalHermite,
     sampled: RrmfQuintic,
     measure: ShapeMeasure,
     step: f64,
-) -> RrmfQuintic {
-    let at = |eta: f64| least(&solve(c, eta.rem_euclid(TAU)), measure);
+    budget: &mut Budget,
+) -> Result<RrmfQuintic> {
+    let mut spent = false;
+    let mut at = |eta: f64| {
+        if !budget.take() {
+            spent = true;
+            return None;
+        }
+        least(&solve(c, eta.rem_euclid(TAU)), measure)
+    };
     let minimum = minimize_bracketed(
         |eta| at(eta).map_or(f64::NAN, |q| q.measures.get(measure)),
         sampled.eta - step,
         sampled.eta + step,
         ETA_TOLERANCE,
     );
-    match at(minimum.x) {
+    let found = at(minimum.x);
+    if spent {
+        return Err(budget.spent_error());
+    }
+    Ok(match found {
         Some(q) if clearly_less(q.measures.get(measure), sampled.measures.get(measure)) => q,
         _ => sampled,
-    }
+    })
 }
 #[cfg(test)]
 mod tests {

@@ -32,7 +32,9 @@ pub mod solutions;
 mod special;
 pub mod spline;
 
-pub use eta::{best_quintic, BestQuintic};
+pub use eta::{
+    best_quintic, best_quintic_within, BestQuintic, Budget, MAX_ETA_SAMPLES, MAX_REFINEMENT_SOLVES,
+};
 pub use measures::{ShapeMeasure, ShapeMeasures};
 pub use solutions::{rrmf_quintics, RrmfQuintic};
-pub use spline::{rrmf_spline, RrmfSpline};
+pub use spline::{rrmf_spline, rrmf_spline_within, RrmfSpline};

@@ -4,7 +4,7 @@
 //! angle about the tangent so that frames agree at the joints (a constant rotation of an
 //! RMF is again an RMF).
 
-use super::eta::best_quintic;
+use super::eta::{best_quintic_within, check_eta_samples, Budget};
 use super::frames::{quintic_curve, quintic_rmf};
 use super::measures::ShapeMeasure;
 use super::solutions::RrmfQuintic;
@@ -12,6 +12,7 @@ use crate::bezier::PiecewiseCurve;
 use crate::error::{Error, Result};
 use crate::frames::rational::RationalFrames;
 use crate::hermite::HermiteSegment;
+use crate::math::normal_plane_unit;
 use glam::DVec3;
 
 /// A spline of RRMF quintics, segment k on [k, k + 1], with its rational RMF.
@@ -35,11 +36,35 @@ pub fn rrmf_spline(
     eta_samples: usize,
     initial_normal: DVec3,
 ) -> Result<RrmfSpline> {
+    rrmf_spline_within(
+        segments,
+        measure,
+        eta_samples,
+        initial_normal,
+        &mut Budget::unlimited(),
+    )
+}
+
+/// [`rrmf_spline`] spending at most `budget` solves over all segments (N_η plus the
+/// refinement's, about 40, per segment); [`ErrorKind::NotConverged`](crate::ErrorKind),
+/// naming the segment, when it is spent. `budget.spent` tells what was used.
+pub fn rrmf_spline_within(
+    segments: &[HermiteSegment],
+    measure: ShapeMeasure,
+    eta_samples: usize,
+    initial_normal: DVec3,
+    budget: &mut Budget,
+) -> Result<RrmfSpline> {
+    check_eta_samples(eta_samples)?;
+    // A bad normal is refused before any work is spent.
+    if let Some(first) = segments.first() {
+        normal_plane_unit(initial_normal, first.t0, "initial_normal")?;
+    }
     let quintics = segments
         .iter()
         .enumerate()
         .map(|(k, data)| {
-            best_quintic(data, measure, eta_samples)
+            best_quintic_within(data, measure, eta_samples, budget)
                 .map(|best| best.quintic)
                 .map_err(|e| in_segment(k, e))
         })
@@ -135,6 +160,44 @@ pub(crate) mod tests {
         assert!(jump <= 1e-12 && against_dr < 1e-8);
         let start_normal = (normal - normal.dot(tangents[0]) * tangents[0]).normalize();
         assert!((field.frame(0.0).unwrap().f2 - start_normal).length() < 1e-15);
+    }
+
+    /// The budget caps the solves of the whole spline: with exactly what an uncapped run
+    /// spends the result is the same, one solve less is NotConverged naming the segment
+    /// where it ran out.
+    #[test]
+    fn the_budget_caps_the_work_of_the_whole_spline() {
+        let (points, tangents) = helix_data();
+        let segments = hermite_sequence(&points, &tangents).unwrap();
+        let normal = DVec3::new(-1.0, 0.0, 0.0);
+        let measure = ShapeMeasure::ScaledEnergyRmf;
+        let mut free = Budget::unlimited();
+        let spline = rrmf_spline_within(&segments, measure, 16, normal, &mut free).unwrap();
+        let per_segment = free.spent as f64 / segments.len() as f64;
+        println!(
+            "{} solves for {} segments at N_η = 16 ({per_segment:.1} per segment)",
+            free.spent,
+            segments.len()
+        );
+        assert!(free.spent >= 16 * segments.len());
+        assert!(free.spent <= (16 + crate::rrmf_quintic::eta::MAX_REFINEMENT_SOLVES) * 9);
+        let mut exact = Budget::new(free.spent);
+        let same = rrmf_spline_within(&segments, measure, 16, normal, &mut exact).unwrap();
+        assert_eq!(same.quintics, spline.quintics);
+        assert_eq!(exact.spent, free.spent);
+        for max in [free.spent - 1, 100, 1, 0] {
+            let mut short = Budget::new(max);
+            let e = rrmf_spline_within(&segments, measure, 16, normal, &mut short).unwrap_err();
+            assert!(e.is(crate::ErrorKind::NotConverged), "{e}");
+            assert!(
+                e.message().contains("budget") && e.message().contains("segment"),
+                "{e}"
+            );
+            assert!(short.spent <= max);
+        }
+        let mut short = Budget::new(free.spent - 1);
+        let e = rrmf_spline_within(&segments, measure, 16, normal, &mut short).unwrap_err();
+        assert!(e.message().contains("segment 8"), "{e}");
     }
 
     #[test]
