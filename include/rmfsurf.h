@@ -864,6 +864,7 @@ typedef struct RmfRrmfQuintic {
  * What rmf_rrmf_spline_hermite_with_options aims at and may spend. Initialise with
  * rmf_rrmf_spline_options_init, then set initial_normal.
  * \since 0.2
+ * \ingroup rmf_rrmf
  */
 typedef struct RmfRrmfSplineOptions {
   /**
@@ -896,6 +897,7 @@ typedef struct RmfRrmfSplineOptions {
  * What rmf_rrmf_spline_hermite_with_options did. The caller sets struct_size =
  * sizeof(RmfRrmfSplineReport); the library writes the fields that fit, on success only.
  * \since 0.2
+ * \ingroup rmf_rrmf
  */
 typedef struct RmfRrmfSplineReport {
   /**
@@ -3063,8 +3065,8 @@ RmfStatus rmf_rrmf_quintic_best(struct RmfVec3 p0,
  * [k, k + 1]; its η is chosen as by rmf_rrmf_quintic_best. Each segment's RMF (9) is
  * turned about the tangent by a constant angle so that the frames agree at the joints.
  *
- * Work: as rmf_rrmf_quintic_best per segment, eta_samples + 502 solves at most (eta_samples
- * + 16 to 34 measured; 12 to 70 µs each), with no bound on the total but the count of
+ * Work: as rmf_rrmf_quintic_best per segment, at most eta_samples + 502 solves (measured:
+ * eta_samples + 16 to 34; 12 to 70 µs each), with no bound on the total but the count of
  * segments: (count − 1) · (eta_samples + 502) solves. rmf_rrmf_spline_hermite_with_options
  * is the same with a cap on the total and a report of the work.
  *
@@ -3109,6 +3111,7 @@ RmfStatus rmf_rrmf_spline_hermite(const struct RmfVec3 *points,
  * @param[out] out The options to initialise.
  * @return RMF_OK, or RMF_ERROR_NULL_POINTER if out is NULL.
  * \since 0.2
+ * \ingroup rmf_rrmf
  */
 RmfStatus rmf_rrmf_spline_options_init(struct RmfRrmfSplineOptions *out);
 
@@ -3148,6 +3151,7 @@ RmfStatus rmf_rrmf_spline_options_init(struct RmfRrmfSplineOptions *out);
  *         segment's η is chosen (the message names the segment).
  * @return RMF_ERROR_INTERNAL On an internal error.
  * \since 0.2
+ * \ingroup rmf_rrmf
  */
 RmfStatus rmf_rrmf_spline_hermite_with_options(const struct RmfVec3 *points,
                                                const struct RmfVec3 *tangents,

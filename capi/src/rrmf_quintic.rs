@@ -430,6 +430,7 @@ pub unsafe extern "C" fn rmf_rrmf_spline_hermite(
 /// What rmf_rrmf_spline_hermite_with_options aims at and may spend. Initialise with
 /// rmf_rrmf_spline_options_init, then set initial_normal.
 /// \since 0.2
+/// \ingroup rmf_rrmf
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RmfRrmfSplineOptions {
@@ -472,6 +473,7 @@ unsafe impl OptionsStruct for RmfRrmfSplineOptions {
 /// What rmf_rrmf_spline_hermite_with_options did. The caller sets struct_size =
 /// sizeof(RmfRrmfSplineReport); the library writes the fields that fit, on success only.
 /// \since 0.2
+/// \ingroup rmf_rrmf
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct RmfRrmfSplineReport {
@@ -494,6 +496,7 @@ unsafe impl OptionsStruct for RmfRrmfSplineReport {
 /// @param[out] out The options to initialise.
 /// @return RMF_OK, or RMF_ERROR_NULL_POINTER if out is NULL.
 /// \since 0.2
+/// \ingroup rmf_rrmf
 #[no_mangle]
 pub unsafe extern "C" fn rmf_rrmf_spline_options_init(out: *mut RmfRrmfSplineOptions) -> RmfStatus {
     guard("rmf_rrmf_spline_options_init", || {
@@ -568,6 +571,7 @@ fn check_options(given: &RmfRrmfSplineOptions) -> FfiResult<(ShapeMeasure, DVec3
 ///         segment's η is chosen (the message names the segment).
 /// @return RMF_ERROR_INTERNAL On an internal error.
 /// \since 0.2
+/// \ingroup rmf_rrmf
 #[no_mangle]
 pub unsafe extern "C" fn rmf_rrmf_spline_hermite_with_options(
     points: *const RmfVec3,
