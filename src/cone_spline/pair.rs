@@ -252,8 +252,12 @@ fn local_pair(a: &Element, b: &Element, rule: Rule, region: Option<&Omega>) -> R
         };
     }
     let gap = d.dot(w) / w.length();
-    if gap.abs() <= 1e-12 * scale {
-        let v = a.at(d.cross(e2).dot(w) / w.length_squared());
+    // The rulings meet where their gap is below rounding: rounding of the unit directions
+    // moves the lines by ε times the distance to their meeting point, which for close
+    // rulings through one vertex (a corner cone) is far larger than the elements' distance.
+    let meet = d.cross(e2).dot(w) / w.length_squared();
+    if gap.abs() <= 1e-12 * scale.max(meet.abs()) {
+        let v = a.at(meet);
         return if equal_planes {
             single_plane(ConePiece::cone(v, *a, e2), b, scale)
         } else {
@@ -753,6 +757,35 @@ mod tests {
 
     fn solve(a: &Element, b: &Element, rule: Rule, region: Option<&Region>) -> Result<ConePair> {
         cone_pair(a, b, rule, region, ("a", "b"))
+    }
+
+    /// Elements of the oblique cone from the vertex `p` over the circle of radius 0.1 about
+    /// (0, 0.15, 0.25) at angles `phi`: the ruling p → q(φ) with its tangent plane, the point
+    /// at the ruling's middle (as a transition's corner strip has them).
+    fn corner_cone_element(p: DVec3, phi: f64) -> Element {
+        let q = DVec3::new(0.1 * phi.cos(), 0.15 + 0.1 * phi.sin(), 0.25);
+        let dq = DVec3::new(-phi.sin(), phi.cos(), 0.0);
+        let e = (q - p).normalize();
+        let n = e.cross(dq).normalize();
+        Element::from_frame(0.5 * (p + q), e, n.cross(e))
+    }
+
+    #[test]
+    fn close_rulings_through_one_vertex_are_a_cone_pair() {
+        let p = DVec3::new(-0.5, 0.3, -0.13);
+        for dphi in [1e-3, 1e-4] {
+            for phi in [0.3, 1.5707963, 2.9] {
+                let (a, b) = (
+                    corner_cone_element(p, phi),
+                    corner_cone_element(p, phi + dphi),
+                );
+                let pair = solve(&a, &b, Rule::MinimalVertexDistance, None)
+                    .unwrap_or_else(|e| panic!("dφ = {dphi:e} at {phi}: {e}"));
+                assert_eq!(pair.case, PairCase::Cone, "dφ = {dphi:e} at {phi}");
+                let v = pair.pieces[0].vertex().unwrap();
+                assert!(v.distance(p) <= 1e-9, "dφ = {dphi:e}: vertex {v} for {p}");
+            }
+        }
     }
 
     fn on_plane(plane: DVec4, x: DVec3) -> f64 {
