@@ -774,7 +774,7 @@ mod tests {
     fn close_rulings_through_one_vertex_are_a_cone_pair() {
         let p = DVec3::new(-0.5, 0.3, -0.13);
         for dphi in [1e-3, 1e-4] {
-            for phi in [0.3, 1.5707963, 2.9] {
+            for phi in [0.3, 1.57, 2.9] {
                 let (a, b) = (
                     corner_cone_element(p, phi),
                     corner_cone_element(p, phi + dphi),
