@@ -8,6 +8,7 @@
 
 use super::canonical::CanonicalHermite;
 use super::measures::ShapeMeasure;
+use super::planar::{is_planar, planar_quintic};
 use super::solutions::{solve, RrmfQuintic};
 use crate::error::no_solution;
 use crate::error::{invalid, Result};
@@ -26,12 +27,15 @@ const ETA_TOLERANCE: f64 = 1e-9;
 pub struct BestQuintic {
     /// The interpolant of the best sampled η, refined.
     pub quintic: RrmfQuintic,
-    /// Number of the N_η sampled values of η with at least one solution.
+    /// Number of the N_η sampled values of η with at least one solution; 0 for the planar
+    /// quintic of planar data (no η is sampled).
     pub admissible: usize,
 }
 
 /// The RRMF quintic interpolant of least `measure`: scan `eta_samples` values of η, then
-/// refine the best one.
+/// refine the best one. Planar data (`planar`) have no η family (Section 4 does not apply
+/// to them, footnote 4); they get the planar PH quintic of least `measure`, which keeps a
+/// flat stretch flat, with `admissible` = 0.
 pub fn best_quintic(
     data: &HermiteSegment,
     measure: ShapeMeasure,
@@ -40,10 +44,24 @@ pub fn best_quintic(
     if !(1..=MAX_ETA_SAMPLES).contains(&eta_samples) {
         return invalid!("eta_samples = {eta_samples} must be between 1 and {MAX_ETA_SAMPLES}");
     }
-    let c = CanonicalHermite::new(data)?;
+    if is_planar(data)? {
+        return Ok(BestQuintic {
+            quintic: planar_quintic(data, measure)?,
+            admissible: 0,
+        });
+    }
+    best_of_family(&CanonicalHermite::new(data)?, measure, eta_samples)
+}
+
+/// [`best_quintic`] on data in canonical form.
+fn best_of_family(
+    c: &CanonicalHermite,
+    measure: ShapeMeasure,
+    eta_samples: usize,
+) -> Result<BestQuintic> {
     let (mut best, mut admissible) = (None::<RrmfQuintic>, 0);
     for k in 0..eta_samples {
-        let found = least(&solve(&c, TAU * k as f64 / eta_samples as f64), measure);
+        let found = least(&solve(c, TAU * k as f64 / eta_samples as f64), measure);
         if let Some(q) = found {
             admissible += 1;
             if best.is_none_or(|b| clearly_less(q.measures.get(measure), b.measures.get(measure))) {
@@ -56,7 +74,7 @@ pub fn best_quintic(
             "none of the eta_samples = {eta_samples} sampled values of η admits an RRMF quintic interpolant"
         );
     };
-    let quintic = refine(&c, sampled, measure, TAU / eta_samples as f64);
+    let quintic = refine(c, sampled, measure, TAU / eta_samples as f64);
     Ok(BestQuintic {
         quintic,
         admissible,
