@@ -340,6 +340,133 @@ static void test_helix_spline(void) {
     rmf_curve_free(curve);
 }
 
+/* ---- planar data: flat stretches and straight segments ---- */
+
+/* The helix (cos t, sin t, 0.3 t) moved rigidly so that it starts at p with unit tangent t
+ * (rotation about t0 x t taking the helix's start tangent t0 to t): points and tangents at
+ * t = step, 2 step, ..., n step. */
+static void helix_from(RmfVec3 p, RmfVec3 t, int n, double step, RmfVec3 *points, RmfVec3 *tangents) {
+    RmfVec3 t0 = ne_unit(vec3(0, 1, 0.3)), axis = ne_cross(t0, t);
+    double s = ne_norm(axis), c = ne_dot(t0, t);
+    int k;
+    if (s > 0) axis = ne_scale(axis, 1 / s);
+    for (k = 1; k <= n; k++) {
+        double u = k * step;
+        RmfVec3 v[2] = {vec3(cos(u) - 1, sin(u), 0.3 * u), ne_unit(vec3(-sin(u), cos(u), 0.3))};
+        int j;
+        for (j = 0; j < 2; j++) { /* Rodrigues' rotation by atan2(s, c) about axis */
+            RmfVec3 w = v[j];
+            v[j] = ne_add(ne_add(ne_scale(w, c), ne_scale(ne_cross(axis, w), s)),
+                          ne_scale(axis, ne_dot(axis, w) * (1 - c)));
+        }
+        points[k - 1] = ne_add(p, v[0]);
+        tangents[k - 1] = v[1];
+    }
+}
+
+static void test_flat_stretch(void) {
+    /* helix (2 segments), a planar circular arc (2), helix (2), a straight segment, helix (2),
+     * an S-shaped planar segment (parallel tangents), helix (1): 12 points. */
+    RmfVec3 points[12], tangents[12], a, ta, n, chord;
+    RmfCurve *curve = NULL;
+    RmfFrames *frames = NULL, *dr = NULL;
+    RmfNurbsCurve view;
+    SolutionErrors e = {0};
+    RmfRrmfQuintic best;
+    size_t admissible = 77;
+    double worst_tangent = 0, worst_point = 0, against_dr = 0, flat = 0, size = 0;
+    int k, m = 0;
+    points[0] = vec3(1, 0, 0);
+    tangents[0] = ne_unit(vec3(0, 1, 0.3));
+    helix_from(points[0], tangents[0], 2, PI / 2, points + 1, tangents + 1);
+    m = 3;
+    a = points[m - 1];
+    ta = tangents[m - 1];
+    n = ne_unit(ne_sub(vec3(0.3, -0.2, 1), ne_scale(ta, ne_dot(vec3(0.3, -0.2, 1), ta))));
+    for (k = 1; k <= 2; k++) { /* radius 1.2, s = 0.8, 1.6 rad */
+        double s = 0.8 * k;
+        points[m] = ne_add(a, ne_scale(ne_add(ne_scale(n, 1 - cos(s)), ne_scale(ta, sin(s))), 1.2));
+        tangents[m++] = ne_add(ne_scale(ta, cos(s)), ne_scale(n, sin(s)));
+    }
+    helix_from(points[m - 1], tangents[m - 1], 2, PI / 2, points + m, tangents + m);
+    m += 2;
+    points[m] = ne_add(points[m - 1], ne_scale(tangents[m - 1], 2));
+    tangents[m] = tangents[m - 1];
+    m++;
+    helix_from(points[m - 1], tangents[m - 1], 2, PI / 2, points + m, tangents + m);
+    m += 2;
+    ta = tangents[m - 1];
+    n = ne_unit(ne_sub(vec3(0.3, -0.2, 1), ne_scale(ta, ne_dot(vec3(0.3, -0.2, 1), ta))));
+    chord = ne_scale(ne_add(ne_scale(ta, cos(0.5)), ne_scale(n, sin(0.5))), 1.5);
+    points[m] = ne_add(points[m - 1], chord);
+    tangents[m] = ta;
+    m++;
+    helix_from(points[m - 1], tangents[m - 1], 1, PI / 2, points + m, tangents + m);
+    m++;
+    CHECK(m == 12, "12 points");
+    for (k = 0; k < m; k++) size = fmax(size, ne_norm(points[k]));
+
+    CHECK_STATUS(rmf_rrmf_spline_hermite(points, tangents, 12, vec3(0, 0, 1), RMF_RRMF_MEASURE_SCALED_ENERGY_RMF, 64,
+                                         &curve, &frames),
+                 RMF_OK, "planar segments");
+    if (!curve || !frames) return;
+    CHECK_STATUS(rmf_curve_nurbs(curve, &view), RMF_OK, "");
+    for (k = 0; k < 12; k++) {
+        RmfVec3 d[3];
+        ne_curve_derivatives(&view, k, d);
+        worst_point = fmax(worst_point, ne_dist(d[0], points[k]));
+        worst_tangent = fmax(worst_tangent, angle(d[1], tangents[k]));
+    }
+    /* The arc's two segments (poles 10..20) stay in the plane of ta, n through points[2]. */
+    {
+        RmfVec3 normal = ne_unit(ne_cross(tangents[2], ne_sub(points[3], points[2])));
+        for (k = 10; k <= 20; k++) {
+            flat = fmax(flat, fabs(ne_dot(ne_sub(view.poles[k], points[2]), normal)));
+        }
+    }
+    check_frames(curve, frames, 1100, &e);
+    CHECK_STATUS(rmf_double_reflection_frames(curve, vec3(0, 0, 1), 22001, &dr), RMF_OK, "");
+    for (k = 0; k <= 1100 && dr; k++) {
+        RmfVec3 ta2, a2, a3, tb, b2, b3;
+        rmf_frames_eval(frames, 11.0 * k / 1100, &ta2, &a2, &a3);
+        rmf_frames_eval(dr, 11.0 * k / 1100, &tb, &b2, &b3);
+        against_dr = fmax(against_dr, ne_dist(a2, b2));
+    }
+    printf("Flat stretches (helix, arc, helix, straight, helix, S, helix; 11 segments): points %.1e, tangents "
+           "%.1e rad, arc off its plane %.1e; RMF defect %.1e (per length %.1e), orthonormality %.1e, "
+           "|f2 - f2(double reflection)| %.1e\n",
+           worst_point, worst_tangent, flat, e.defect, e.defect_per_length, e.orthonormality, against_dr);
+    CHECK(worst_point <= 1e-12 * size, "the spline interpolates the points");
+    CHECK(worst_tangent <= 1e-12, "and the tangents (G1 joints)");
+    CHECK(flat <= 1e-12 * size, "the flat stretch is flat");
+    CHECK(e.defect <= 1e-9 && e.defect_per_length <= 1e-9, "one exact RMF along the spline");
+    CHECK(e.orthonormality <= 1e-12, "orthonormal");
+    CHECK(against_dr <= 1e-8, "it is the RMF double reflection approximates");
+    rmf_frames_free(dr);
+    rmf_frames_free(frames);
+    rmf_curve_free(curve);
+    curve = NULL;
+    frames = NULL;
+
+    /* One planar segment: the planar quintic, recognized by rmf_rrmf_quintic_curve. */
+    CHECK_STATUS(rmf_rrmf_quintic_best(P0, vec3(0, 1, 0), vec3(1, 0, 0), vec3(1, 2, 0), RMF_RRMF_MEASURE_ARC_LENGTH,
+                                       10, &best, &admissible),
+                 RMF_OK, "planar data");
+    CHECK(admissible == 0 && best.eta == 0 && best.rho == 1, "the planar quintic: no eta sampled");
+    CHECK(best.w[0] == 1 && best.w[1] == 0 && best.w[2] == 1 && best.w[5] == 0, "w = 1");
+    CHECK(best.alpha[1] == 0 && best.alpha[3] == 0 && best.beta[5] == 0, "real alpha, beta");
+    CHECK_STATUS(rmf_rrmf_quintic_curve(P0, vec3(0, 1, 0), vec3(1, 0, 0), vec3(1, 2, 0), &best, vec3(0, 0, 1), &curve,
+                                        &frames),
+                 RMF_OK, "the planar quintic's curve");
+    if (curve && frames) {
+        SolutionErrors f = {0};
+        check_frames(curve, frames, 200, &f);
+        CHECK(f.defect <= 1e-12 && f.orthonormality <= 1e-12, "its exact RMF");
+    }
+    rmf_frames_free(frames);
+    rmf_curve_free(curve);
+}
+
 /* ---- the special case alpha_1 = 0 ---- */
 
 static void test_special_case(void) {
@@ -458,7 +585,6 @@ static void test_bad_input(void) {
     BEST(P0, T0, P1, T1, RMF_RRMF_MEASURE_ARC_LENGTH, (size_t)-1, RMF_ERROR_INVALID_INPUT, "eta_samples");
     BEST(P0, T0, P1, T1, 5, 10, RMF_ERROR_INVALID_INPUT, "measure");
     BEST(P0, T0, P1, T1, 0xffffffffu, 10, RMF_ERROR_INVALID_INPUT, "measure");
-    BEST(P0, Y, X, vec3(1, 2, 0), RMF_RRMF_MEASURE_ARC_LENGTH, 10, RMF_ERROR_INVALID_INPUT, "planar");
     BEST(P0, vec3(cos(2.0), sin(2.0), 0), X, vec3(cos(3.1), sin(3.1) * cos(1.5), sin(3.1) * sin(1.5)),
          RMF_RRMF_MEASURE_ARC_LENGTH, 360, RMF_ERROR_NO_SOLUTION, "eta_samples = 360");
     CHECK_STATUS(rmf_rrmf_quintic_best(P0, T0, P1, T1, 0, 10, NULL, &admissible), RMF_ERROR_NULL_POINTER, "best");
@@ -483,11 +609,16 @@ static void test_bad_input(void) {
     tangents[2] = vec3(-1, 0, 1);
     points[2] = points[1];
     SPLINE(points, tangents, 3, Y, 3, 16, RMF_ERROR_INVALID_INPUT, "points[1] and points[2]");
-    /* Segment 1 planar: its end tangent in the plane of its start tangent and chord. */
-    points[2] = vec3(0, -1, PI);
-    tangents[2] = ne_sub(points[2], points[1]);
-    tangents[2] = vec3(tangents[2].x + 0, tangents[2].y - 1, tangents[2].z + 1);
-    SPLINE(points, tangents, 3, Y, 3, 16, RMF_ERROR_INVALID_INPUT, "segment 1");
+    /* Segment 1 without an RRMF interpolant: theta_i = 2, theta_f = 3.1, phi = 1.5 about its
+     * chord (planar data, refused before 0.2, are interpolated: test_flat_stretch). */
+    {
+        RmfVec3 t = ne_unit(tangents[1]), ex = ne_add(ne_scale(t, cos(2.0)), ne_scale(X, sin(2.0)));
+        RmfVec3 ey = ne_unit(ne_sub(t, ne_scale(ex, ne_dot(t, ex)))), ez = ne_cross(ex, ey);
+        points[2] = ne_add(points[1], ex);
+        tangents[2] = ne_add(ne_scale(ex, cos(3.1)),
+                             ne_scale(ne_add(ne_scale(ey, cos(1.5)), ne_scale(ez, sin(1.5))), sin(3.1)));
+    }
+    SPLINE(points, tangents, 3, Y, 3, 360, RMF_ERROR_NO_SOLUTION, "segment 1");
     CHECK_STATUS(rmf_rrmf_spline_hermite(points, tangents, 3, Y, 3, 16, NULL, &frames), RMF_ERROR_NULL_POINTER,
                  "curve");
 }
@@ -606,6 +737,7 @@ int main(void) {
     test_many_solutions();
     test_best();
     test_helix_spline();
+    test_flat_stretch();
     test_special_case();
     test_bad_input();
     test_work_budget();

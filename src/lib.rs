@@ -110,6 +110,10 @@ pub use mobius::{
 pub use math::Complex;
 pub use rrmf_quintic::canonical::CanonicalHermite;
 pub use rrmf_quintic::frames::{quintic_curve, quintic_rmf};
+pub use rrmf_quintic::planar::{
+    planar_deviation as rrmf_planar_deviation, planar_quintic,
+    PLANAR_TOLERANCE as RRMF_PLANAR_TOLERANCE,
+};
 pub use rrmf_quintic::{
     best_quintic, best_quintic_within, rrmf_quintics, rrmf_spline, rrmf_spline_within, BestQuintic,
     Budget as RrmfBudget, RrmfQuintic, RrmfSpline, ShapeMeasure, ShapeMeasures,

@@ -13,10 +13,10 @@ use super::status::RmfStatus;
 use super::types::RmfVec3;
 use rmfsurf::glam::DVec3;
 use rmfsurf::{
-    best_quintic, quintic_curve, quintic_rmf, rrmf_quintics, rrmf_spline, rrmf_spline_within,
-    CanonicalHermite, Complex, FrameField, FrameKind, HermiteSegment, PiecewiseCurve,
-    RationalFrames, RrmfBudget, RrmfQuintic, ShapeMeasure, RRMF_MAX_ETA_SAMPLES,
-    RRMF_MAX_REFINEMENT_SOLVES,
+    best_quintic, planar_quintic, quintic_curve, quintic_rmf, rrmf_planar_deviation, rrmf_quintics,
+    rrmf_spline, rrmf_spline_within, CanonicalHermite, Complex, FrameField, FrameKind,
+    HermiteSegment, PiecewiseCurve, RationalFrames, RrmfBudget, RrmfQuintic, ShapeMeasure,
+    RRMF_MAX_ETA_SAMPLES, RRMF_MAX_REFINEMENT_SOLVES, RRMF_PLANAR_TOLERANCE,
 };
 
 /// One RRMF quintic Hermite interpolant (Farouki, Giannelli & Sestini, Section 4).
@@ -257,7 +257,21 @@ fn recompute(data: &HermiteSegment, solution: &RmfRrmfQuintic) -> FfiResult<Rrmf
             .chain(c.beta.iter().zip(&solution.beta).map(|(a, b)| a - b));
         differences.map(f64::abs).fold(0.0, f64::max) / scale
     };
-    let nearest = rrmf_quintics(data, solution.eta)?
+    // Planar data have one interpolant per measure, not an η family: the solution is
+    // recognized among the planar quintics of every measure.
+    let candidates = if rrmf_planar_deviation(data)? <= RRMF_PLANAR_TOLERANCE {
+        [
+            ShapeMeasure::EnergyRmf,
+            ShapeMeasure::ArcLength,
+            ShapeMeasure::ScaledEnergyRmf,
+        ]
+        .into_iter()
+        .map(|m| planar_quintic(data, m))
+        .collect::<Result<Vec<_>, _>>()?
+    } else {
+        rrmf_quintics(data, solution.eta)?
+    };
+    let nearest = candidates
         .into_iter()
         .map(|q| (distance(&q), q))
         .min_by(|a, b| a.0.total_cmp(&b.0));
@@ -331,6 +345,13 @@ pub unsafe extern "C" fn rmf_rrmf_quintic_curve(
 /// 4 to 7 s at 100,000, about 26 s at 1,000,000. rmf_rrmf_spline_hermite_with_options
 /// caps the solves.
 ///
+/// Planar data (chord and tangents coplanar to a sine of 1e-10, scale-free: also a tangent
+/// along p1 − p0, or a straight segment), where Section 4 does not apply, get the planar PH
+/// quintic (in the plane of the data, real alpha and beta, end speeds |p1 − p0|) of least
+/// measure, whose exact RMF is its Euler–Rodrigues frame: then best->eta = 0, best->rho = 1,
+/// best->w = (1, 0, 1, 0, 1, 0), the imaginary parts of alpha and beta are 0, and
+/// *admissible = 0. A tangent within that tolerance of the plane is projected onto it.
+///
 /// @param[in] p0, t0, p1, t1 Hermite data (as for rmf_rrmf_quintic_solutions).
 /// @param[in] measure RMF_RRMF_MEASURE_ENERGY_RMF, _ENERGY_FRENET, _ARC_LENGTH,
 ///            _SCALED_ENERGY_RMF (recommended: L · E_rmf) or _SCALED_ENERGY_FRENET.
@@ -376,6 +397,9 @@ pub unsafe extern "C" fn rmf_rrmf_quintic_best(
 /// Example 3). Segment k joins points[k] and points[k + 1] on the parameter interval
 /// [k, k + 1]; its η is chosen as by rmf_rrmf_quintic_best. Each segment's RMF (9) is
 /// turned about the tangent by a constant angle so that the frames agree at the joints.
+/// Segments with planar data (flat stretches, straight segments) are planar PH quintics in
+/// the plane of their data, with their exact RMF, as in rmf_rrmf_quintic_best; on a straight
+/// segment the frame is the constant one carried from the segment before.
 ///
 /// Work: as rmf_rrmf_quintic_best per segment, at most eta_samples + 502 solves (measured:
 /// eta_samples + 16 to 34; 12 to 70 µs each), with no bound on the total but the count of
@@ -398,8 +422,7 @@ pub unsafe extern "C" fn rmf_rrmf_quintic_best(
 /// @return RMF_OK on success.
 /// @return RMF_ERROR_NULL_POINTER If points, tangents, curve or frames is NULL.
 /// @return RMF_ERROR_INVALID_INPUT If count < 2, a point or tangent is invalid, consecutive
-///         points coincide, a segment's data are planar or degenerate (the message names the
-///         segment), measure is unknown, eta_samples is 0 or too large, or initial_normal is
+///         points coincide, measure is unknown, eta_samples is 0 or too large, or initial_normal is
 ///         not finite, zero or along tangents[0].
 /// @return RMF_ERROR_NO_SOLUTION If no sampled η admits an interpolant for some segment (the
 ///         message names it).

@@ -14,7 +14,9 @@ use crate::math::orthogonalized;
 use glam::{DMat3, DVec3};
 
 /// |sin| below which θ_i, θ_f or φ count as a multiple of π: the data are planar or
-/// degenerate and the construction of Section 4 does not apply (its footnote 4).
+/// degenerate and the construction of Section 4 does not apply (its footnote 4). Such data
+/// are planar to `planar::PLANAR_TOLERANCE` (their deviation is at most this |sin|), and
+/// `best_quintic` and splines interpolate them with a planar PH quintic.
 const DEGENERATE_SINE: f64 = 1e-10;
 
 /// The rigid motion from canonical to original coordinates.
@@ -66,15 +68,7 @@ impl CanonicalHermite {
     /// a multiple of π: a tangent along the chord, or both tangents in one plane with it)
     /// are refused with a message naming the arguments.
     pub fn new(data: &HermiteSegment) -> Result<Self> {
-        // |p1 − p0| scaled by its largest component first: it may overflow (or underflow)
-        // even though p0 and p1 are finite.
-        let chord = data.p1 - data.p0;
-        let largest = chord.abs().max_element();
-        if !largest.is_finite() {
-            return invalid!("p1 − p0 overflows: p0 and p1 are too far apart to be represented");
-        }
-        let ex = (chord / largest).normalize();
-        let x = largest * (chord / largest).length();
+        let (ex, x) = chord_axis(data)?;
         let (theta_i, ey) = polar_angle(data.t0, ex);
         if theta_i.sin() <= DEGENERATE_SINE {
             return invalid!(
@@ -125,6 +119,21 @@ impl CanonicalHermite {
         let (sp, cp) = self.phi.sin_cos();
         (DVec3::new(ci, si, 0.0), DVec3::new(cf, sf * cp, sf * sp))
     }
+}
+
+/// The unit chord direction (p1 − p0)/|p1 − p0| and X = |p1 − p0|, the chord scaled by
+/// its largest component first: |p1 − p0| may overflow (or underflow) even though p0 and
+/// p1 are finite.
+pub(crate) fn chord_axis(data: &HermiteSegment) -> Result<(DVec3, f64)> {
+    let chord = data.p1 - data.p0;
+    let largest = chord.abs().max_element();
+    if !largest.is_finite() {
+        return invalid!("p1 − p0 overflows: p0 and p1 are too far apart to be represented");
+    }
+    Ok((
+        (chord / largest).normalize(),
+        largest * (chord / largest).length(),
+    ))
 }
 
 /// The angle θ of the unit vector `t` from the unit axis `ex`, and the unit vector of the

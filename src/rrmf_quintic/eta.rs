@@ -15,6 +15,7 @@
 
 use super::canonical::CanonicalHermite;
 use super::measures::ShapeMeasure;
+use super::planar::{is_planar, planar_quintic};
 use super::solutions::{solve, RrmfQuintic};
 use crate::error::no_solution;
 use crate::error::{invalid, Error, Result};
@@ -78,12 +79,15 @@ impl Budget {
 pub struct BestQuintic {
     /// The interpolant of the best sampled η, refined.
     pub quintic: RrmfQuintic,
-    /// Number of the N_η sampled values of η with at least one solution.
+    /// Number of the N_η sampled values of η with at least one solution; 0 for the planar
+    /// quintic of planar data (no η is sampled).
     pub admissible: usize,
 }
 
 /// The RRMF quintic interpolant of least `measure`: scan `eta_samples` values of η, then
-/// refine the best one.
+/// refine the best one. Planar data (`planar`) have no η family (Section 4 does not apply
+/// to them, footnote 4); they get the planar PH quintic of least `measure`, which keeps a
+/// flat stretch flat, with `admissible` = 0.
 pub fn best_quintic(
     data: &HermiteSegment,
     measure: ShapeMeasure,
@@ -109,6 +113,12 @@ pub fn best_quintic_within(
     budget: &mut Budget,
 ) -> Result<BestQuintic> {
     check_eta_samples(eta_samples)?;
+    if is_planar(data)? {
+        return Ok(BestQuintic {
+            quintic: planar_quintic(data, measure)?,
+            admissible: 0,
+        });
+    }
     let c = CanonicalHermite::new(data)?;
     let (mut best, mut admissible) = (None::<RrmfQuintic>, 0);
     for k in 0..eta_samples {

@@ -18,6 +18,7 @@
 //! | [`solutions`] | f₂, γ, α_k, β_k, verification: the Algorithm of Section 4 | (36)–(40) |
 //! | [`measures`] | arc length L, energies E and E_rmf | footnote 6 |
 //! | [`frames`] | the RMF (9) as exact rational frames with positive weights | (9) |
+//! | [`planar`] | planar data: the planar PH quintic and its RMF (ERF = RMF) | (2)–(5), footnote 4 |
 //! | [`eta`] | the η of least E_rmf, E or L: scan, then Brent refinement | Section 5 |
 //! | [`spline`] | G1 RRMF quintic splines with one continuous rational RMF | Example 3 |
 
@@ -26,6 +27,7 @@ pub mod eta;
 pub mod frames;
 pub mod hopf;
 pub mod measures;
+pub mod planar;
 mod polynomial;
 mod sextic;
 pub mod solutions;

@@ -58,10 +58,14 @@ pub struct RrmfQuintic {
     pub measures: ShapeMeasures,
     /// From canonical to original coordinates.
     pub placement: Placement,
+    /// Whether this is the planar PH quintic of planar data (`planar`): then α, β are real,
+    /// the curve lies in the canonical (x, y)-plane, `eta` is 0 and `w` is 1, and the RMF is
+    /// the Euler–Rodrigues frame itself — the in-plane normal and the plane's normal.
+    pub planar: bool,
     /// The same quintic for the chord (1, 0, 0): α/√X, β/√X.
-    unit_chord: HopfQuadratics,
+    pub(super) unit_chord: HopfQuadratics,
     /// X = |p_f − p_i|.
-    chord: f64,
+    pub(super) chord: f64,
 }
 
 impl RrmfQuintic {
@@ -79,8 +83,15 @@ impl RrmfQuintic {
     /// The rational RMF (9) on [s0, s1] (reparameterized to [0, 1]) in original coordinates;
     /// at t = 0 its f₂ is e₂ of the ERF (5).
     pub fn rmf_on(&self, s0: f64, s1: f64) -> RmfNumerators {
-        // The frame does not depend on the scale of α, β.
-        let canonical = self.unit_chord.rmf_numerators_on(s0, s1);
+        // The frame does not depend on the scale of α, β. A planar curve's ERF is its RMF
+        // (the plane's normal e₃ is constant), so w = 1 there.
+        let canonical = if self.planar {
+            self.unit_chord
+                .restricted(s0, s1)
+                .rotated_erf(&[Complex::ONE; 3])
+        } else {
+            self.unit_chord.rmf_numerators_on(s0, s1)
+        };
         let rotate = |v: &[DVec3]| v.iter().map(|&x| self.placement.vector(x)).collect();
         RmfNumerators {
             f2: rotate(&canonical.f2),
@@ -134,6 +145,7 @@ fn complete(c: &CanonicalHermite, eta: f64, candidate: Candidate) -> Option<Rrmf
         w: unit_chord.w(),
         measures: shape_measures(&unit_chord).scaled(c.x),
         placement: c.placement,
+        planar: false,
         unit_chord,
         chord: c.x,
     })
@@ -156,7 +168,7 @@ fn satisfies_conditions(c: &CanonicalHermite, unit_chord: &HopfQuadratics) -> bo
 }
 
 /// Whether the speed stays above `REGULARITY` times its maximum on [0, 1].
-fn is_regular(unit_chord: &HopfQuadratics) -> bool {
+pub(super) fn is_regular(unit_chord: &HopfQuadratics) -> bool {
     let (slowest, fastest) = speed_range(unit_chord);
     slowest >= REGULARITY * fastest
 }

@@ -202,11 +202,13 @@ pub(crate) mod tests {
 
     #[test]
     fn names_the_segment_that_fails() {
+        // Segment 1: θ_i = 2, θ_f = 3.1, φ = 1.5, data without an RRMF quintic interpolant.
         let points = [DVec3::ZERO, DVec3::X, DVec3::new(2.0, 0.0, 0.0)];
+        let (s, c) = 3.1f64.sin_cos();
         let tangents = [
-            DVec3::new(1.0, 1.0, 0.0),
-            DVec3::new(1.0, 0.0, 1.0),
-            DVec3::X,
+            DVec3::new(1.0, 1.0, 0.5),
+            DVec3::new(2f64.cos(), 2f64.sin(), 0.0),
+            DVec3::new(c, s * 1.5f64.cos(), s * 1.5f64.sin()),
         ];
         let segments = hermite_sequence(&points, &tangents).unwrap();
         let e = rrmf_spline(&segments, ShapeMeasure::ArcLength, 32, DVec3::Z).unwrap_err();
@@ -214,5 +216,209 @@ pub(crate) mod tests {
             e.message().contains("segment 1") && e.message().contains("points[2]"),
             "{e}"
         );
+    }
+
+    /// The helix (cos t, sin t, 0.3 t) from `start` with start tangent `tangent`, rigidly
+    /// moved: points and unit tangents at t = 0, step, …, (n − 1)·step.
+    fn helix_piece(start: DVec3, tangent: DVec3, n: usize, step: f64) -> Vec<(DVec3, DVec3)> {
+        let h = |t: f64| DVec3::new(t.cos(), t.sin(), 0.3 * t);
+        let dh = |t: f64| DVec3::new(-t.sin(), t.cos(), 0.3).normalize();
+        let turn = glam::DQuat::from_rotation_arc(dh(0.0), tangent);
+        (0..n)
+            .map(|k| {
+                let t = k as f64 * step;
+                (start + turn * (h(t) - h(0.0)), turn * dh(t))
+            })
+            .collect()
+    }
+
+    /// A unit vector across `t` (not along it).
+    fn across(t: DVec3) -> DVec3 {
+        crate::math::orthogonalized(DVec3::new(0.3, -0.2, 1.0), t).normalize()
+    }
+
+    /// Hermite data with flat stretches between helices: helix, a planar circular arc of
+    /// two segments, helix, a straight segment, helix, an S-shaped planar segment (parallel
+    /// tangents: φ = 0, where Section 4 finds no quintic even slightly off planar), helix.
+    /// Returns the data and which segments are planar.
+    pub fn flat_stretch_data() -> (Vec<DVec3>, Vec<DVec3>, Vec<bool>) {
+        let mut data = helix_piece(
+            DVec3::ZERO,
+            DVec3::new(0.0, 1.0, 0.3).normalize(),
+            3,
+            0.5 * PI,
+        );
+        let mut planar = vec![false; 2];
+        let (a, ta) = data[data.len() - 1];
+        // A circular arc of radius 1.2 in the plane of ta and n, through s = 0.8 and 1.6 rad.
+        let n = across(ta);
+        let arc = |s: f64| {
+            (
+                a + (n * (1.0 - s.cos()) + ta * s.sin()) * 1.2,
+                ta * s.cos() + n * s.sin(),
+            )
+        };
+        data.extend([arc(0.8), arc(1.6)]);
+        planar.extend([true, true]);
+        let (b, tb) = data[data.len() - 1];
+        data.extend(helix_piece(b, tb, 3, 0.5 * PI).into_iter().skip(1));
+        planar.extend([false, false]);
+        let (c, tc) = data[data.len() - 1];
+        data.push((c + tc * 2.0, tc));
+        planar.push(true);
+        let (d, td) = data[data.len() - 1];
+        data.extend(helix_piece(d, td, 3, 0.5 * PI).into_iter().skip(1));
+        planar.extend([false, false]);
+        let (e, te) = data[data.len() - 1];
+        let chord = (te * 0.5f64.cos() + across(te) * 0.5f64.sin()) * 1.5;
+        data.push((e + chord, te));
+        planar.push(true);
+        let (f, tf) = data[data.len() - 1];
+        data.extend(helix_piece(f, tf, 2, 0.5 * PI).into_iter().skip(1));
+        planar.push(false);
+        let (points, tangents) = data.into_iter().unzip();
+        (points, tangents, planar)
+    }
+
+    /// Interpolation of the points (to 1e-12 of the data's size) and of the tangents from
+    /// both sides of every joint: the max tangent error in radians.
+    fn check_interpolation(spline: &RrmfSpline, points: &[DVec3], tangents: &[DVec3]) -> f64 {
+        let scale = points
+            .iter()
+            .map(|p| p.abs().max_element())
+            .fold(0.0, f64::max);
+        let mut tangent_error = 0.0f64;
+        for (k, segment) in spline.curve.segments().iter().enumerate() {
+            let poles: Vec<DVec3> = segment.poles().collect();
+            assert!(
+                crate::math::robust_length(poles[0] - points[k]) <= 1e-12 * scale,
+                "segment {k} start"
+            );
+            assert!(
+                crate::math::robust_length(poles[5] - points[k + 1]) <= 1e-12 * scale,
+                "segment {k} end"
+            );
+            // Scaled to unit size before the cross product, which would overflow at 1e200.
+            let unit = |v: DVec3| v / v.abs().max_element();
+            let start = unit(segment.eval_jet(0.0).d1);
+            let end = unit(segment.eval_jet(1.0).d1);
+            tangent_error = tangent_error
+                .max(crate::math::angle_between(start, tangents[k]))
+                .max(crate::math::angle_between(end, tangents[k + 1]));
+        }
+        assert!(
+            tangent_error <= 1e-10,
+            "tangents off by {tangent_error:e} rad"
+        );
+        tangent_error
+    }
+
+    /// Interpolation, G1 joints from both sides, and the RMF: |f₂'·f₃| (the frame's angular
+    /// velocity about the tangent), orthonormality, agreement with a dense double-reflection
+    /// RMF from the same start, and frame continuity at every joint and breakpoint.
+    /// Returns (max tangent error at the data, max RMF defect, max |f₂ − f₂(DR)|).
+    pub fn check_spline(
+        spline: &RrmfSpline,
+        points: &[DVec3],
+        tangents: &[DVec3],
+    ) -> (f64, f64, f64) {
+        let tangent_error = check_interpolation(spline, points, tangents);
+        let field = FrameField::new(
+            Arc::new(spline.curve.clone()),
+            FrameKind::Rational(spline.frames.clone()),
+        )
+        .unwrap();
+        let (defect, ortho, frame_tangent) = frame_errors(&field);
+        let mut jump = 0.0f64;
+        for pair in spline.frames.segments().windows(2) {
+            let (a, b) = (pair[0].frame(1.0), pair[1].frame(0.0));
+            jump = jump.max((a.f2 - b.f2).length()).max((a.f3 - b.f3).length());
+        }
+        let against_dr = distance_from_double_reflection(&field, 20001);
+        assert!(defect <= 1e-9, "RMF defect {defect:e}");
+        assert!(
+            ortho <= 1e-12 && frame_tangent <= 1e-9,
+            "{ortho:e} {frame_tangent:e}"
+        );
+        assert!(jump <= 1e-12, "frames jump by {jump:e} at a joint");
+        assert!(
+            against_dr < 1e-8,
+            "|f₂ − f₂(double reflection)| = {against_dr:e}"
+        );
+        (tangent_error, defect, against_dr)
+    }
+
+    #[test]
+    fn flat_stretches_and_straight_segments_keep_one_continuous_rmf() {
+        let (points, tangents, planar) = flat_stretch_data();
+        let segments = hermite_sequence(&points, &tangents).unwrap();
+        let spline = rrmf_spline(&segments, ShapeMeasure::ScaledEnergyRmf, 64, DVec3::Z).unwrap();
+        for ((q, data), &flat) in spline.quintics.iter().zip(&segments).zip(&planar) {
+            assert_eq!(crate::rrmf_quintic::planar::is_planar(data).unwrap(), flat);
+            // A flat stretch stays flat: every pole in the plane of the data (the straight
+            // segment: on its line).
+            let chord = (data.p1 - data.p0).normalize();
+            let (a, b) = (chord.cross(data.t0), chord.cross(data.t1));
+            let across = if a.length() >= b.length() { a } else { b };
+            for p in q.bezier().unwrap().poles() {
+                let off = if across.length() > 1e-14 {
+                    (p - data.p0).dot(across.normalize()).abs()
+                } else {
+                    (p - data.p0).cross(chord).length()
+                };
+                assert!(!flat || off <= 1e-13 * data.chord_length(), "{off:e}");
+            }
+            if !q.planar {
+                check_solution(data, q);
+            }
+        }
+        let (tangent, defect, dr) = check_spline(&spline, &points, &tangents);
+        println!(
+            "helix, planar arc (2 segments), helix, straight, helix, S-shaped planar, helix: \
+             tangents {tangent:.1e} rad, RMF defect {defect:.1e}, |f₂ − f₂(DR)| {dr:.1e}"
+        );
+        // The straight segment's frame is constant: the one carried from the helix before.
+        let straight = planar.iter().enumerate().filter(|p| *p.1).nth(2).unwrap().0;
+        let field = FrameField::new(
+            Arc::new(spline.curve.clone()),
+            FrameKind::Rational(spline.frames.clone()),
+        )
+        .unwrap();
+        let f = |t: f64| field.frame(t).unwrap().f2;
+        let k = straight as f64;
+        assert!((f(k) - f(k + 0.5)).length() < 1e-14 && (f(k) - f(k + 1.0)).length() < 1e-14);
+    }
+
+    /// The same data scaled by 1e-200 … 1e200 give the same spline, scaled, and the same
+    /// frames.
+    #[test]
+    fn flat_stretches_at_every_scale() {
+        let (points, tangents, _) = flat_stretch_data();
+        let spline_at = |scale: f64| {
+            let scaled: Vec<DVec3> = points.iter().map(|&p| p * scale).collect();
+            let segments = hermite_sequence(&scaled, &tangents).unwrap();
+            let spline =
+                rrmf_spline(&segments, ShapeMeasure::ScaledEnergyRmf, 64, DVec3::Z).unwrap();
+            check_interpolation(&spline, &scaled, &tangents);
+            spline
+        };
+        let unit = spline_at(1.0);
+        check_spline(&unit, &points, &tangents);
+        let size = points.iter().map(|p| p.length()).fold(0.0, f64::max);
+        for scale in [1e-200, 1e-100, 1e-10, 1e10, 1e100, 1e200] {
+            let s = spline_at(scale);
+            let (mut points_off, mut frames_off) = (0.0f64, 0.0f64);
+            for i in 0..=2000 {
+                let t = i as f64 * (points.len() - 1) as f64 / 2000.0;
+                points_off =
+                    points_off.max((s.curve.eval(t) / scale - unit.curve.eval(t)).length() / size);
+                frames_off =
+                    frames_off.max((s.frames.frame(t).f2 - unit.frames.frame(t).f2).length());
+            }
+            assert!(
+                points_off < 1e-12 && frames_off < 1e-10,
+                "scale {scale:e}: {points_off:e} {frames_off:e}"
+            );
+        }
     }
 }
