@@ -43,6 +43,11 @@ pub fn ph_cubics(curve: &PiecewiseCurve) -> Result<Vec<PhCubic>> {
         .collect()
 }
 
+/// Relative extent (to the largest coordinate) at or below which a segment's control points
+/// are rounding of one point: 64 ulps, where its direction is noise (a frame along it was
+/// NaN). Segments a little longer keep a direction to the accuracy their rounding allows.
+const ROUNDING_EXTENT: f64 = 64.0 * f64::EPSILON;
+
 fn as_ph_cubic(segment: &RationalBezierCurve) -> Result<PhCubic> {
     if segment.degree() > 3 || !segment.is_polynomial() {
         return invalid!(
@@ -56,6 +61,24 @@ fn as_ph_cubic(segment: &RationalBezierCurve) -> Result<PhCubic> {
         );
     }
     let poles: Vec<DVec3> = segment.elevated(3 - segment.degree()).poles().collect();
+    // The largest coordinate range (no squares: they underflow for tiny segments).
+    let extent = poles
+        .iter()
+        .map(|p| (*p - poles[0]).abs().max_element())
+        .fold(0.0, f64::max);
+    let magnitude = poles
+        .iter()
+        .map(|p| p.abs().max_element())
+        .fold(0.0, f64::max);
+    if !(extent > ROUNDING_EXTENT * magnitude) {
+        return invalid!(
+            "is degenerate: its control points span {}, within the rounding of their \
+             coordinates (up to {}); a segment must span more than {} of them",
+            crate::error::Num(extent),
+            crate::error::Num(magnitude),
+            crate::error::Num(ROUNDING_EXTENT)
+        );
+    }
     PhCubic::from_control_points([poles[0], poles[1], poles[2], poles[3]])
 }
 
@@ -68,6 +91,23 @@ mod tests {
             DVec3::new(t.cos(), t.sin(), 0.4 * t),
             DVec3::new(-t.sin(), t.cos(), 0.4),
         )
+    }
+
+    #[test]
+    fn segments_within_the_rounding_of_their_coordinates_are_refused() {
+        // A line 3.6e-15 long at distance 6.8 (a fuzz input): its direction is rounding, and
+        // the exact RMF along it was NaN with RMF_OK.
+        let line = RationalBezierCurve::polynomial(&[
+            DVec3::new(4.25e-144, -6.8, 0.0),
+            DVec3::new(1.87e-143, -6.799999999999996, 0.0),
+        ])
+        .unwrap();
+        let spline = PiecewiseCurve::with_unit_intervals(vec![line]).unwrap();
+        let e = ph_cubics(&spline).unwrap_err();
+        assert!(e.message().contains("is degenerate"), "{e}");
+        let short =
+            RationalBezierCurve::polynomial(&[DVec3::ZERO, DVec3::new(1e-300, 0.0, 0.0)]).unwrap();
+        assert!(ph_cubics(&PiecewiseCurve::with_unit_intervals(vec![short]).unwrap()).is_ok());
     }
 
     #[test]
