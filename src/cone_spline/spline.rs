@@ -37,10 +37,12 @@ impl ConeSpline {
                     let end = previous.end();
                     let s = &piece.start;
                     let scale = end.point.abs().max_element().max(1.0);
+                    // robust_length: the offset of splines of size 1e200 squares to ∞.
+                    let off_line =
+                        crate::math::robust_length((s.point - end.point).cross(end.ruling));
                     if (s.ruling - end.ruling).length() > CHAIN_TOLERANCE
                         || (s.normal() - end.normal()).length() > CHAIN_TOLERANCE
-                        || (s.point - end.point).cross(end.ruling).length()
-                            > CHAIN_TOLERANCE * scale
+                        || off_line > CHAIN_TOLERANCE * scale
                     {
                         return no_solution!(
                             "piece {k} does not start on the end ruling and tangent plane of piece {}",
