@@ -422,6 +422,48 @@ static void test_option_struct_entry_points(void) {
     }
     CHECK(untouched == sentinel_spline() && untouched_err == -7, "failing calls write nothing");
     rmf_curve_free(curve);
+/* Issue 13 item 6: helix-tangent-surface rulings 0.001 apart (radius 1, pitch 0.5,
+   distance 1.5 from the curve) were NO_SOLUTION for most t, and rmf_cone_spline_hermite
+   failed from scale 1e15. Every pair of 500 joins, at scales 1e-200, 1, 1e15 and 1e200, and
+   the end ruling of the last piece is the last element's. */
+static RmfConeElement helix_element(double t, double scale) {
+    RmfVec3 e = ne_unit(vec3(-sin(t), cos(t), 0.5));
+    RmfConeElement el;
+    el.point = ne_scale(ne_add(vec3(cos(t), sin(t), 0.5 * t), ne_scale(e, 1.5)), scale);
+    el.ruling = e;
+    el.side = vec3(-cos(t), -sin(t), 0); /* the rulings move towards the principal normal */
+    return el;
+}
+
+static void test_close_rulings(void) {
+    static const double scales[4] = {1e-200, 1.0, 1e15, 1e200};
+    int k, s, joined = 0, tried = 0;
+    double worst = 0;
+    for (s = 0; s < 4; s++)
+        for (k = 0; k < 500; k++) {
+            double t = 0.004 + 0.06 * k;
+            RmfConeElement els[2];
+            RmfConeSpline *spline = NULL;
+            size_t n = 0;
+            els[0] = helix_element(t, scales[s]);
+            els[1] = helix_element(t + 0.001, scales[s]);
+            tried++;
+            if (rmf_cone_spline_hermite(els, 2, RMF_CONE_RULE_MIN_VERTEX_DISTANCE, 0, NULL, &spline) != RMF_OK) {
+                if (joined + 1 == tried) fprintf(stderr, "t = %g, scale %g: %s\n", t, scales[s], rmf_last_error());
+                continue;
+            }
+            joined++;
+            if (rmf_cone_spline_piece_count(spline, &n) == RMF_OK && n > 0) {
+                RmfConePiece last;
+                if (rmf_cone_spline_piece(spline, n - 1, &last) == RMF_OK)
+                    worst = fmax(worst, ne_dist(last.end_ruling, els[1].ruling));
+            }
+            rmf_cone_spline_free(spline);
+        }
+    printf("helix rulings 0.001 apart: %d of %d pairs join (scales 1e-200 ... 1e200), end rulings within %.1e\n",
+           joined, tried, worst);
+    CHECK(joined == tried, "every pair of close rulings joins at every scale");
+    CHECK(worst <= 1e-10, "the last piece ends on the last element's ruling");
 }
 
 int main(void) {
@@ -429,5 +471,6 @@ int main(void) {
     test_hermite_bad_input();
     test_approximations();
     test_option_struct_entry_points();
+    test_close_rulings();
     return rmf_check_exit_code("abi_cone_spline");
 }

@@ -248,7 +248,11 @@ fn region_from(region: &RmfBox) -> FfiResult<Region> {
 
 /// Creates the cone spline through G1 Hermite elements: one cone pair (or one plane piece)
 /// between consecutive elements, every case of the paper (general, cone, cylinder,
-/// constant slope, plane), chosen by `rule`, with no vertex inside `region`.
+/// constant slope, plane), chosen by `rule`, with no vertex inside `region`. Each pair is
+/// solved in coordinates centred and scaled on its two elements: the spline is the same,
+/// mapped, for elements scaled by 1e-200 … 1e200 or moved far away (up to the rounding of
+/// the moved data, amplified by the inverse of the rulings' angle for close rulings), and
+/// rulings 0.001 apart join like any others.
 ///
 /// @param[in] elements count elements (finite; side normal to ruling).
 /// @param[in] count Number of elements, ≥ 2.
@@ -356,7 +360,10 @@ fn check_fit_arguments(tolerance: f64, max_pieces: usize) -> FfiResult {
 /// can grow). This function stays, with the same results, for at least one release.
 ///
 /// The curve is `curve` (its whole domain), or `callback` on [t_min, t_max]; exactly one of
-/// them. It must be regular with non-zero curvature.
+/// them. It must be regular with non-zero curvature. The fit runs in coordinates centred
+/// and scaled on the surface: the same pieces, mapped, for the curve scaled by 1e-200 …
+/// 1e200 or moved by 1e6 of its size. A 1,000-turn helix (radius 1, pitch 0.4, v 0.5 to 2)
+/// to 1e-2 takes 16,384 pieces and 1.2 to 1.7 s (test build, shared 2-core machine).
 ///
 /// @param[in] curve A curve (e.g. from rmf_nurbs_curve_create), or NULL.
 /// @param[in] callback Point and derivative of an analytic curve, or NULL; called on this

@@ -387,3 +387,221 @@ fn callback_tangents_may_be_any_constant_multiple() {
         }
     }
 }
+
+/// A cone spline's pieces: vertex (or zeros), end point, end ruling and segment angle.
+fn cone_pieces(spline: *const RmfConeSpline) -> Vec<(Option<DVec3>, DVec3, DVec3, f64)> {
+    let mut count = 0;
+    assert_eq!(
+        unsafe { rmf_cone_spline_piece_count(spline, &mut count) },
+        RmfStatus::RmfOk
+    );
+    (0..count)
+        .map(|i| {
+            let mut p = std::mem::MaybeUninit::<RmfConePiece>::uninit();
+            assert_eq!(
+                unsafe { rmf_cone_spline_piece(spline, i, p.as_mut_ptr()) },
+                RmfStatus::RmfOk
+            );
+            let p = unsafe { p.assume_init() };
+            (
+                (p.has_vertex == 1).then(|| dvec(p.vertex)),
+                dvec(p.end_point),
+                dvec(p.end_ruling),
+                p.segment_angle,
+            )
+        })
+        .collect()
+}
+
+/// The largest difference of two cone splines' pieces, `made` against `reference` mapped by
+/// x ↦ scale·x + offset (points relative to the scale); None if the piece counts differ.
+fn cone_gap(
+    made: *const RmfConeSpline,
+    reference: *const RmfConeSpline,
+    scale: f64,
+    offset: DVec3,
+) -> Option<f64> {
+    let (a, b) = (cone_pieces(made), cone_pieces(reference));
+    if a.len() != b.len() {
+        return None;
+    }
+    let distance = |x: DVec3, y: DVec3| (x / scale - (y * scale + offset) / scale).length();
+    let mut gap = 0.0f64;
+    for (p, q) in a.iter().zip(&b) {
+        match (p.0, q.0) {
+            (Some(v), Some(w)) => gap = gap.max(distance(v, w) / (1.0 + (w - q.1).length())),
+            (None, None) => {}
+            _ => return None,
+        }
+        gap = gap
+            .max(distance(p.1, q.1))
+            .max((p.2 - q.2).length())
+            .max((p.3 - q.3).abs());
+    }
+    Some(gap)
+}
+
+/// G1 Hermite elements of the tangent surface of the helix (cos t, sin t, 0.4 t), at
+/// distance 1 from the curve, `count` rulings `step` apart from t = `start`, mapped by
+/// x ↦ scale·x + offset.
+fn helix_elements(
+    count: usize,
+    start: f64,
+    step: f64,
+    scale: f64,
+    offset: DVec3,
+) -> Vec<RmfConeElement> {
+    (0..count)
+        .map(|i| {
+            let t = start + step * i as f64;
+            let tangent = DVec3::new(-t.sin(), t.cos(), 0.4).normalize();
+            let point = DVec3::new(t.cos(), t.sin(), 0.4 * t) + tangent;
+            // The rulings move towards the principal normal (−cos t, −sin t, 0).
+            let side = DVec3::new(-t.cos(), -t.sin(), 0.0);
+            RmfConeElement {
+                point: vec3(point * scale + offset),
+                ruling: vec3(tangent),
+                side: vec3(side),
+            }
+        })
+        .collect()
+}
+
+fn cone_hermite(elements: &[RmfConeElement]) -> Result<*mut RmfConeSpline, String> {
+    let mut out = null_mut();
+    let status = unsafe {
+        rmf_cone_spline_hermite(
+            elements.as_ptr(),
+            elements.len(),
+            RMF_CONE_RULE_MIN_VERTEX_DISTANCE,
+            0.0,
+            null(),
+            &mut out,
+        )
+    };
+    if status != RmfStatus::RmfOk {
+        return Err(format!("{status:?}: {}", last_error()));
+    }
+    Ok(out)
+}
+
+/// Issue 13 item 6: rmf_cone_spline_hermite failed from scale 1e15 (and pairs of close
+/// rulings, 0.001 apart, failed at any scale). The spline through helix elements 0.5 and
+/// 0.001 apart, scaled from 1e-200 to 1e200 and moved by up to 1e6 sizes of the data, is
+/// the same spline mapped so. Elements 0.001 apart are moved by at most 1e3 sizes: an
+/// offset of 1e6 rounds their points to 2e-7 of their distance, other Hermite data (for
+/// which a consistent pair need not exist).
+#[test]
+fn cone_spline_hermite_is_invariant_under_scaling_and_translation() {
+    for (step, start, largest_offset) in [(0.5, 0.0, 1e6), (1e-3, 0.004, 1e3), (1e-3, 28.69, 1e3)] {
+        let reference = cone_hermite(&helix_elements(9, start, step, 1.0, DVec3::ZERO)).unwrap();
+        let mut worst = 0.0f64;
+        for exponent in [-200, -100, -15, 0, 14, 15, 16, 100, 200] {
+            let scale = 1.3 * 10f64.powi(exponent);
+            for offset_ratio in [0.0, 1.0, largest_offset] {
+                let offset = DVec3::new(1.0, -2.0, 3.0).normalize() * (offset_ratio * scale);
+                let made = cone_hermite(&helix_elements(9, start, step, scale, offset))
+                    .unwrap_or_else(|e| {
+                        panic!("step {step}, scale {scale:e}, offset {offset_ratio:e}: {e}")
+                    });
+                let gap = cone_gap(made, reference, scale, offset)
+                    .unwrap_or_else(|| panic!("step {step}, scale {scale:e}: other pieces"));
+                unsafe { rmf_cone_spline_free(made) };
+                // Rounding of the data, ε (1 + |o|/s) relative to their size, relative to
+                // the elements' distance, amplified by 1/step for close rulings.
+                let rounding = f64::EPSILON * (2.0 + offset_ratio) / step;
+                let bound = 1e-12 + 1e2 * rounding / step;
+                assert!(
+                    gap <= bound,
+                    "step {step}, scale {scale:e}, offset {offset_ratio:e}: gap {gap:e} > {bound:e}"
+                );
+                if offset_ratio == 0.0 {
+                    worst = worst.max(gap);
+                }
+            }
+        }
+        println!("rmf_cone_spline_hermite, helix elements {step} apart, scales 1.3e-200 … 1.3e200: largest gap {worst:.1e}");
+        unsafe { rmf_cone_spline_free(reference) };
+    }
+}
+
+/// The helix (cos t, sin t, 0.4 t) mapped by x ↦ scale·x + offset, `user` = [scale, ox, oy, oz].
+unsafe extern "C" fn helix_mapped(
+    t: f64,
+    user: *mut c_void,
+    point: *mut RmfVec3,
+    tangent: *mut RmfVec3,
+) {
+    let m = &*(user as *const [f64; 4]);
+    let p = DVec3::new(t.cos(), t.sin(), 0.4 * t);
+    *point = vec3(p * m[0] + DVec3::new(m[1], m[2], m[3]));
+    *tangent = vec3(DVec3::new(-t.sin(), t.cos(), 0.4) * m[0]);
+}
+
+fn cone_fit(
+    scale: f64,
+    offset: DVec3,
+    turns: f64,
+    tolerance: f64,
+    max_pieces: usize,
+) -> Result<(*mut RmfConeSpline, f64), String> {
+    let mut user = [scale, offset.x, offset.y, offset.z];
+    let (mut out, mut error) = (null_mut(), 0.0);
+    let status = unsafe {
+        rmf_cone_spline_approximate(
+            null(),
+            Some(helix_mapped),
+            (&mut user as *mut [f64; 4]).cast(),
+            0.0,
+            std::f64::consts::TAU * turns,
+            0.5 * scale,
+            2.0 * scale,
+            tolerance * scale,
+            RMF_CONE_RULE_MIN_VERTEX_DISTANCE,
+            max_pieces,
+            &mut out,
+            &mut error,
+        )
+    };
+    if status != RmfStatus::RmfOk {
+        return Err(format!("{status:?}: {}", last_error()));
+    }
+    Ok((out, error))
+}
+
+/// Issue 13 item 6: the cone fit failed from scale 1e14. The fit of the helix's tangent
+/// surface to 1e-3, scaled from 1e-200 to 1e200 and moved by 1 and 1e6 sizes, has the same
+/// pieces mapped so and the same error relative to the scale.
+#[test]
+fn cone_spline_fit_is_invariant_under_scaling_and_translation() {
+    let (reference, error) = cone_fit(1.0, DVec3::ZERO, 2.0, 1e-3, 10_000).unwrap();
+    let pieces = cone_pieces(reference).len();
+    let mut worst = 0.0f64;
+    for exponent in [-200, -100, -15, 0, 14, 15, 100, 200] {
+        let scale = 1.3 * 10f64.powi(exponent);
+        for offset_ratio in [0.0, 1.0, 1e6] {
+            let offset = DVec3::new(1.0, -2.0, 3.0).normalize() * (offset_ratio * scale);
+            let (made, e) = cone_fit(scale, offset, 2.0, 1e-3, 10_000)
+                .unwrap_or_else(|m| panic!("scale {scale:e}, offset {offset_ratio:e}: {m}"));
+            let gap = cone_gap(made, reference, scale, offset);
+            unsafe { rmf_cone_spline_free(made) };
+            let gap = gap.unwrap_or_else(|| {
+                panic!("scale {scale:e}, offset {offset_ratio:e}: not {pieces} pieces")
+            });
+            let bound = 1e-9 + 1e3 * f64::EPSILON * offset_ratio * 10.0;
+            assert!(
+                gap <= bound,
+                "scale {scale:e}, offset {offset_ratio:e}: gap {gap:e}"
+            );
+            assert!(
+                (e / scale - error).abs() <= 1e-3 * error,
+                "scale {scale:e}: error {e:e}"
+            );
+            if offset_ratio == 0.0 {
+                worst = worst.max(gap);
+            }
+        }
+    }
+    println!("rmf_cone_spline_approximate, helix of 2 turns to 1e-3 ({pieces} pieces), scales 1.3e-200 … 1.3e200: largest gap {worst:.1e}");
+    unsafe { rmf_cone_spline_free(reference) };
+}

@@ -7,9 +7,14 @@
 //! The deviation of a pair is the largest distance from the surface's points over the
 //! region (rulings sampled across the interval, points along each ruling) to the pair's
 //! pieces extended along their rulings.
+//!
+//! The fit runs in coordinates centred on the first ruling and scaled by a power of two
+//! near the surface's size (tolerance and distances with them), so that it gives the same
+//! pieces, mapped, for the surface scaled from 1e-200 to 1e200 or moved far away.
 
-use super::developable::{inflection_generators, Developable};
-use super::pair::{cone_pair, ConePair, Rule};
+use super::developable::{inflection_generators, Developable, Ruling};
+use super::element::Element;
+use super::pair::{cone_pair, ConePair, Frame, Rule};
 use super::piece::ConePiece;
 use super::spline::ConeSpline;
 use crate::error::{invalid, Error, Result};
@@ -70,6 +75,83 @@ pub fn approximate(
     if !(tolerance.is_finite() && tolerance > 0.0) {
         return invalid!("tolerance = {tolerance} must be finite and positive");
     }
+    let (lo, hi) = surface.domain();
+    let local = Local::of(surface)?;
+    let scale = local.frame.scale();
+    let fit = approximate_local(&local, tolerance / scale, rule, max_pieces)?;
+    let spline = ConeSpline::new(
+        fit.spline
+            .pieces()
+            .iter()
+            .map(|p| local.frame.piece_out(p))
+            .collect(),
+    )?;
+    debug_assert_eq!(fit.parameters.first(), Some(&lo));
+    debug_assert_eq!(fit.parameters.last(), Some(&hi));
+    Ok(Approximation {
+        spline,
+        max_error: fit.max_error * scale,
+        ..fit
+    })
+}
+
+/// A developable seen in coordinates centred on its first ruling's point and scaled by a
+/// power of two near its size (rulings at the ends and the middle of the domain, and the
+/// region along them), so that the fit — its tolerance, the pairs, the distances — does
+/// not depend on where the surface lies or on its size.
+struct Local<'a> {
+    surface: &'a dyn Developable,
+    frame: Frame,
+}
+
+impl<'a> Local<'a> {
+    fn of(surface: &'a dyn Developable) -> Result<Self> {
+        let (lo, hi) = surface.domain();
+        let rulings = [lo, 0.5 * (lo + hi), hi].map(|t| surface.ruling(t));
+        let first = rulings[0].as_ref().map_err(Clone::clone)?.point;
+        let size = rulings
+            .iter()
+            .flatten()
+            .map(|r| {
+                crate::math::robust_length(r.point - first)
+                    .max(r.range.1.abs())
+                    .max(r.range.0.abs())
+            })
+            .fold(0.0, f64::max);
+        Ok(Self {
+            surface,
+            frame: Frame::around(first, size),
+        })
+    }
+}
+
+impl Developable for Local<'_> {
+    fn domain(&self) -> (f64, f64) {
+        self.surface.domain()
+    }
+
+    fn ruling(&self, t: f64) -> Result<Ruling> {
+        let r = self.surface.ruling(t)?;
+        let s = self.frame.scale();
+        Ok(Ruling {
+            point: self.frame.point_in(r.point),
+            range: (r.range.0 / s, r.range.1 / s),
+            ..r
+        })
+    }
+
+    fn element(&self, t: f64) -> Result<Element> {
+        Ok(self.frame.element_in(&self.surface.element(t)?))
+    }
+}
+
+/// [`approximate`] of a surface in local coordinates.
+fn approximate_local(
+    surface: &dyn Developable,
+    tolerance: f64,
+    rule: Rule,
+    max_pieces: usize,
+) -> Result<Approximation> {
     let (lo, hi) = surface.domain();
     let inflections = inflection_generators(surface, INFLECTION_SAMPLES)?;
     let mut junctions = vec![lo];
@@ -350,5 +432,36 @@ mod tests {
         }
         let err = approximate(&surface, 1e-9, Rule::MinimalVertexDistance, 8).unwrap_err();
         assert!(err.is(crate::ErrorKind::NotConverged), "{err}");
+    }
+
+    /// Issue 13 item 6: the tangent surface of a 1,000-turn helix to 1e-2 ended
+    /// NOT_CONVERGED ("no cone pair joins the rulings at t = 2.1764… and 2.1764…": the
+    /// pairs of close rulings failed, and the halving went on to the narrowest interval).
+    #[test]
+    fn a_thousand_turn_helix_converges() {
+        let helix = Helix {
+            radius: 1.0,
+            pitch: 0.4,
+            domain: (0.0, std::f64::consts::TAU * 1000.0),
+        };
+        let surface = tangent_surface(&helix, 0.5, 2.0);
+        let start = std::time::Instant::now();
+        let fit = approximate(&surface, 1e-2, Rule::MinimalVertexDistance, 1_000_000).unwrap();
+        println!(
+            "1,000-turn helix to 1e-2: {} pieces, max deviation {:.3e}, {:.2} s",
+            fit.spline.pieces().len(),
+            fit.max_error,
+            start.elapsed().as_secs_f64()
+        );
+        assert!(fit.max_error <= 1e-2);
+        // Densely over the first and the last turn (every point against every piece).
+        let (lo, hi) = surface.domain();
+        for (a, b) in [
+            (lo, lo + std::f64::consts::TAU),
+            (hi - std::f64::consts::TAU, hi),
+        ] {
+            let dense = deviation(&surface, fit.spline.pieces(), a, b, 100).unwrap();
+            assert!(dense <= 1e-2, "dense deviation {dense:e} on [{a}, {b}]");
+        }
     }
 }

@@ -150,12 +150,32 @@ impl<'a> TangentSurface<'a> {
 
     /// x, x' and x'' at t: x'' as the derivative of the quartic through the exact x' at
     /// five equidistant parameters around t, kept inside the domain (fourth order, error
-    /// ~1e-12 relative, also at the ends of the domain).
+    /// ~1e-12 relative, also at the ends of the domain). The spacing is 1e-3 of the domain,
+    /// divided by 4 until the tangent turns by at most 0.05 rad across the five: a step
+    /// relative to the domain alone is a whole turn of a 1,000-turn helix (whose x' is then
+    /// the same at all five, x'' zero). The turning is measured from the first node to the
+    /// last and to an incommensurable one (a golden-section fraction of the way), so that no
+    /// periodic curve hides it.
     pub fn derivatives(&self, t: f64) -> Result<[DVec3; 3]> {
+        const GOLDEN: f64 = 0.381_966_011_250_105_1;
         let (lo, hi) = self.curve.domain();
-        let h = 1e-3 * (hi - lo);
-        let centre = t.clamp(lo + 2.0 * h, hi - 2.0 * h);
+        let mut h = 1e-3 * (hi - lo);
         let (x, d1) = self.curve.point_derivative(t)?;
+        let turning = |h: f64| -> Result<f64> {
+            let first = t.clamp(lo + 2.0 * h, hi - 2.0 * h) - 2.0 * h;
+            // Unit tangents: the angle of derivatives of size 1e200 would overflow.
+            let tangent = |s: f64| -> Result<DVec3> {
+                let d = self.curve.point_derivative(first + s * 4.0 * h)?.1;
+                Ok(crate::math::robust_normalize(d).unwrap_or(DVec3::ZERO))
+            };
+            let (a, m, b) = (tangent(0.0)?, tangent(GOLDEN)?, tangent(1.0)?);
+            let angle = crate::math::angle_between;
+            Ok(angle(a, m).max(angle(a, b)))
+        };
+        while h > 1e-9 * (hi - lo) && turning(h)? > 0.05 {
+            h *= 0.25;
+        }
+        let centre = t.clamp(lo + 2.0 * h, hi - 2.0 * h);
         let nodes = [-2.0, -1.0, 0.0, 1.0, 2.0];
         let at = (t - centre) / h;
         let mut d2 = DVec3::ZERO;
@@ -190,13 +210,16 @@ impl Developable for TangentSurface<'_> {
 
     fn ruling(&self, t: f64) -> Result<Ruling> {
         let [x, d1, d2] = self.derivatives(t)?;
-        let binormal = d1.cross(d2);
-        if binormal.length() <= 1e-10 * d1.length() * d2.length() || binormal.is_nan() {
+        // Directions first: |x'| |x''| under- or overflows for curves of size 1e-200 or
+        // 1e200 (d1 and d2 scale with the curve).
+        let unit = |v: DVec3| crate::math::robust_normalize(v).unwrap_or(DVec3::ZERO);
+        let (e, e2) = (unit(d1), unit(d2));
+        let binormal = e.cross(e2);
+        if binormal.length() <= 1e-10 || binormal.is_nan() {
             return no_solution!(
                 "the curve has zero curvature at t = {t}: its tangent surface has no tangent plane there"
             );
         }
-        let e = d1.normalize();
         let (v0, v1) = self.distances;
         let mid = 0.5 * (v0 + v1);
         Ok(Ruling {

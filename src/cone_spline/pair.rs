@@ -18,6 +18,16 @@
 //! region Ω, no vertex at a reference point); of the admissible ones the *useful* one is
 //! the one with the least total segment angle, which discards the solution that winds
 //! round the cone (the wrong root of (12) is not always the larger distance).
+//!
+//! Conditioning. Each pair is solved in coordinates centred on the first element's point
+//! and scaled by a power of two near the elements' distance, so that its tolerances are
+//! relative to the data and a pair does not depend on where the data lie or on their size.
+//! As the rulings approach, both vertices of (9) tend to the vertex of the osculating cone,
+//! 1/dt times the elements' distance away, while C = 2(e₁·e₂ − 1) and A + D of (11)–(12)
+//! vanish like dt²: these are formed from e₁ − e₂ (C = −|e₁ − e₂|²), the junction ruling
+//! v₂ − v₁ as d − σe₂ + μ₁(e₂ − e₁) with σ = μ₁ + μ₂ the polished unknown, and 1 − cos of a
+//! cone's rulings as |e − e'|²/2, so that nothing cancels; 5,000 pairs of helix-tangent-
+//! surface rulings 0.001 apart all join (330 did before).
 
 use super::biarc::{biarc, equal_lambda, lambda_through, partner_lambda, Biarc};
 use super::element::{check_consecutive, Element};
@@ -136,19 +146,26 @@ impl Frame {
     /// points coincide; 2^−1022 for a subnormal distance, whose power of two is not a
     /// normal number).
     fn of(a: &Element, b: &Element) -> Self {
-        let distance = crate::math::robust_length(b.point - a.point);
-        let scale = if distance.is_finite() && distance > 0.0 {
-            f64::from_bits(distance.to_bits() & 0x7ff0_0000_0000_0000).max(f64::MIN_POSITIVE)
+        Self::around(a.point, crate::math::robust_length(b.point - a.point))
+    }
+
+    /// Centred on `centre`, scaled by the power of two at or below `size` (1 for a zero or
+    /// non-finite size).
+    pub(crate) fn around(centre: DVec3, size: f64) -> Self {
+        let scale = if size.is_finite() && size > 0.0 {
+            f64::from_bits(size.to_bits() & 0x7ff0_0000_0000_0000).max(f64::MIN_POSITIVE)
         } else {
             1.0
         };
-        Self {
-            centre: a.point,
-            scale,
-        }
+        Self { centre, scale }
     }
 
-    fn point_in(&self, x: DVec3) -> DVec3 {
+    /// The scale: local lengths are world lengths divided by it.
+    pub(crate) fn scale(&self) -> f64 {
+        self.scale
+    }
+
+    pub(crate) fn point_in(&self, x: DVec3) -> DVec3 {
         (x - self.centre) / self.scale
     }
 
@@ -156,7 +173,7 @@ impl Frame {
         x * self.scale + self.centre
     }
 
-    fn element_in(&self, e: &Element) -> Element {
+    pub(crate) fn element_in(&self, e: &Element) -> Element {
         Element::from_frame(self.point_in(e.point), e.ruling, e.side)
     }
 
@@ -164,7 +181,7 @@ impl Frame {
         Element::from_frame(self.point_out(e.point), e.ruling, e.side)
     }
 
-    fn piece_out(&self, p: &ConePiece) -> ConePiece {
+    pub(crate) fn piece_out(&self, p: &ConePiece) -> ConePiece {
         let motion = match p.motion {
             Motion::Rotation {
                 origin,
