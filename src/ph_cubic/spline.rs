@@ -70,7 +70,7 @@ fn as_ph_cubic(segment: &RationalBezierCurve) -> Result<PhCubic> {
         .iter()
         .map(|p| p.abs().max_element())
         .fold(0.0, f64::max);
-    if !(extent > ROUNDING_EXTENT * magnitude) {
+    if extent <= ROUNDING_EXTENT * magnitude || extent.is_nan() {
         return invalid!(
             "is degenerate: its control points span {}, within the rounding of their \
              coordinates (up to {}); a segment must span more than {} of them",
