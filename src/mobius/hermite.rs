@@ -514,3 +514,36 @@ mod tests {
         assert!(worst_tangent < 1e-14, "{worst_tangent:e}");
     }
 }
+
+#[cfg(test)]
+mod nearly_planar_tests {
+    use super::*;
+
+    /// Fuzz finding: data planar but for a tangent component of 2e-308, with the tangents
+    /// across the chord (Y = 0, the sphere's normal ∝ ℓ s e below the square's underflow):
+    /// frames 0.8 long with RMF_OK. Frames are orthonormal for every tilt out of the plane.
+    #[test]
+    fn data_out_of_plane_by_a_tiny_tilt_have_orthonormal_frames() {
+        let p = [DVec3::new(-9.2, 0.0, 0.0), DVec3::new(114.08, 0.0, 0.0)];
+        for z in [1e-320, 2.2250738585072014e-308, 1e-300, 1e-200, 1e-20, 0.0] {
+            let t = [DVec3::Y, DVec3::new(0.0, -9.5, z)];
+            let r = mobius_hermite_points(&p, &t, DVec3::new(-0.5, 1.0, 1.0)).unwrap();
+            for k in 0..=16 {
+                let f = r.frames.frame(k as f64 / 16.0);
+                let d1 = r.curve.eval_jet(k as f64 / 16.0).d1.normalize();
+                for (name, error) in [
+                    ("|t|", f.tangent.length() - 1.0),
+                    ("|f2|", f.f2.length() - 1.0),
+                    ("|f3|", f.f3.length() - 1.0),
+                    ("f2·f3", f.f2.dot(f.f3)),
+                    ("t − x'/|x'|", (f.tangent - d1).length()),
+                ] {
+                    assert!(
+                        error.abs() <= 1e-12,
+                        "tilt {z:e}, s = {k}/16: {name} off by {error:e}"
+                    );
+                }
+            }
+        }
+    }
+}

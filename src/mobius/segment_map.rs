@@ -111,9 +111,11 @@ impl PencilSphere {
         }
     }
 
-    /// Exactly planar data (the sphere is a plane, or the data a line).
+    /// Planar data (the sphere is a plane, or the data a line): s = 0, or subnormal, where
+    /// it keeps too few bits to place a sphere (a tangent out of the plane by 1e-320 gave
+    /// frames 4e-6 from unit length).
     fn is_planar(&self) -> bool {
-        self.s == 0.0
+        self.s.abs() < f64::MIN_POSITIVE
     }
 
     /// Centre and radius, when representable.
@@ -129,8 +131,12 @@ impl PencilSphere {
 
     /// The unit normal of the sphere at p₀ (either orientation), continuous into the plane.
     fn normal_at_start(&self) -> DVec3 {
-        let n = -self.half * self.s * self.chord - self.y;
-        if n.length() > 0.0 {
+        // Both terms divided by the larger first: for data planar to 1e-300 they are far
+        // below 1e-154, where the squares of a plain length underflow to 0.
+        let ls = self.half * self.s;
+        let k = ls.abs().max(self.y.abs().max_element());
+        let n = -(ls / k) * self.chord - self.y / k;
+        if k > 0.0 && n.length() > 0.0 {
             n.normalize()
         } else {
             orthonormal_to(self.chord)
