@@ -422,6 +422,8 @@ static void test_option_struct_entry_points(void) {
     }
     CHECK(untouched == sentinel_spline() && untouched_err == -7, "failing calls write nothing");
     rmf_curve_free(curve);
+}
+
 /* Issue 13 item 6: helix-tangent-surface rulings 0.001 apart (radius 1, pitch 0.5,
    distance 1.5 from the curve) were NO_SOLUTION for most t, and rmf_cone_spline_hermite
    failed from scale 1e15. Every pair of 500 joins, at scales 1e-200, 1, 1e15 and 1e200, and

@@ -398,7 +398,10 @@ impl March<'_> {
                     rejections += 1;
                     any_cubic |= outcome.is_some();
                     step = length * shrink(outcome.map(|o| o.1), tolerance, rejections);
-                    if step < self.min_interval {
+                    // No float between a and b: a shorter trial would round to the same b
+                    // (a step of half an ulp rounds up), and the loop would never end.
+                    let mid = a.t + 0.5 * length;
+                    if step < self.min_interval || !(mid > a.t && mid < b.t) {
                         return Err(self.give_up(a, b.t, outcome.map(|o| o.1), any_cubic));
                     }
                 }
@@ -551,3 +554,41 @@ fn fit_interval(sampler: &Sampler, a: &Sample, b: &Sample) -> Result<Option<(PhC
 
 #[cfg(test)]
 mod tests;
+
+#[cfg(test)]
+mod tiny_domain_tests {
+    use super::*;
+
+    /// A cubic through the origin's neighbourhood, as a C callback gives it.
+    struct Cubic([DVec3; 4], (f64, f64));
+
+    impl ParametricCurve for Cubic {
+        fn domain(&self) -> (f64, f64) {
+            self.1
+        }
+        fn point_derivative(&self, t: f64) -> Result<(DVec3, DVec3)> {
+            let c = &self.0;
+            let point = ((c[3] * t + c[2]) * t + c[1]) * t + c[0];
+            Ok((point, (3.0 * c[3] * t + 2.0 * c[2]) * t + c[1]))
+        }
+    }
+
+    /// Fuzz finding (a 30 s timeout): on a domain of 640 ulps where no PH cubic fits, the
+    /// trials shrank to half an ulp, which rounds up to the same one-ulp interval, forever.
+    #[test]
+    fn trials_stop_at_one_ulp() {
+        let c = Cubic(
+            [
+                DVec3::new(1.6874999999998936, 1.5937500000000435, 2.3125000000001905),
+                DVec3::new(9.0625e-14, 0.7071067811865882, 0.7071067811866588),
+                DVec3::new(1.5, 1.5000000000001499, 1.5000000000001503),
+                DVec3::new(1.5000000000000406, 1.5000000000001905, 1.500000000000191),
+            ],
+            (7.141778489984131e-1, 7.141778489984844e-1),
+        );
+        let (lo, hi) = c.1;
+        // A refusal naming the place, not a hang.
+        let e = ph_spline_approximate(&c, &[lo, hi], 7.141778489985557e-1).unwrap_err();
+        assert!(e.message().contains("near"), "{e}");
+    }
+}

@@ -60,21 +60,53 @@ pub(crate) fn resolve(
     }
     match mode {
         CornerMode::Miter => miter(near_tangent(chain, profile_radius)),
-        CornerMode::Round(radius) => match round(&chain, radius)? {
-            Ok(rounded) => Ok(rounded),
-            Err(joint) => {
-                let largest = largest_radius(&chain, radius);
-                let j = &chain.joints[joint];
-                invalid!(
-                    "{}: the corner radius {} does not fit the edges beside it (an edge is too \
+        CornerMode::Round(radius) => {
+            check_radius_resolved(&chain, radius, unit)?;
+            round_or_largest(chain, radius, unit)
+        }
+    }
+}
+
+/// Relative size (to the wire's coordinates) at or below which a corner arc is rounding:
+/// its centre and tangent points are not resolved (as coincident Hermite points).
+const SMALLEST_RADIUS: f64 = 1e-10;
+
+/// Refuses a corner radius below what the wire's coordinates resolve (a default radius of
+/// a tiny profile, 6e-34 at coordinates of 1, gave an arc of NaN control points).
+fn check_radius_resolved(chain: &Chain, radius: f64, unit: f64) -> Result<()> {
+    let magnitude = chain
+        .joints
+        .iter()
+        .map(|j| j.point.abs().max_element())
+        .fold(1.0, f64::max);
+    if radius <= SMALLEST_RADIUS * magnitude {
+        return invalid!(
+            "the corner radius {} is below {} of the wire's coordinates (up to {}): a round \
+             corner that small is rounding; give a larger corner_radius, or miter corners",
+            crate::error::Num(radius * unit),
+            crate::error::Num(SMALLEST_RADIUS),
+            crate::error::Num(magnitude * unit)
+        );
+    }
+    Ok(())
+}
+
+/// The chain with round corners of `radius`, or the error naming the corner it does not fit.
+fn round_or_largest(chain: Chain, radius: f64, unit: f64) -> Result<Chain> {
+    match round(&chain, radius)? {
+        Ok(rounded) => Ok(rounded),
+        Err(joint) => {
+            let largest = largest_radius(&chain, radius);
+            let j = &chain.joints[joint];
+            invalid!(
+                "{}: the corner radius {} does not fit the edges beside it (an edge is too \
                      short for the round corners at its ends); the largest radius that fits \
                      every corner is {}",
-                    j.name,
-                    radius * unit,
-                    rounded_down(largest * unit)
-                )
-            }
-        },
+                j.name,
+                radius * unit,
+                rounded_down(largest * unit)
+            )
+        }
     }
 }
 

@@ -419,6 +419,17 @@ fn bad_wires_and_profiles_are_refused_naming_the_edge_or_joint() {
             && m.contains("smallest radius allowed is 0.7071067"),
         "{m}"
     );
+    // The default radius of a profile of 1e-34 at corners of size 1: rounding (fuzz finding:
+    // the corner arc had NaN control points).
+    let default = WireSweep {
+        corner: Corner::Round(None),
+        ..d
+    };
+    let m = message(&staircase(), &circle(1e-34), &[], &default);
+    assert!(
+        m.contains("corner radius") && m.contains("is rounding"),
+        "{m}"
+    );
     // An arc of radius 5 and a profile reaching 6 towards its centre.
     let m = message(&pipe_route(), &circle(6.0), &[], &d);
     assert!(m.contains("edge 1") && m.contains("at most 4.99999"), "{m}");
