@@ -6,7 +6,7 @@ use super::boundary::{
     buffer, free_handle, guard, invalid_arg, optional_out, out_ptr, reference, slice, to_usize,
     write, FfiError, FfiResult,
 };
-use super::input::{callback_curve, CallbackCurve, RmfCurveCallback};
+use super::input::{callback_curve, poles_and_weights, CallbackCurve, RmfCurveCallback};
 use super::status::RmfStatus;
 use super::types::{piece_views, PieceViews, RmfBezierCurve, RmfNurbsCurve, RmfVec3};
 use libc::c_void;
@@ -173,15 +173,7 @@ pub unsafe extern "C" fn rmf_nurbs_curve_create(
             return Err(FfiError::Null("knots"));
         }
         check_nurbs_counts(to_usize(degree), pole_count, knot_count, "")?;
-        let poles = slice(poles, pole_count, "poles")?
-            .iter()
-            .map(|&p| p.into())
-            .collect();
-        let weights = if weights.is_null() {
-            None
-        } else {
-            Some(slice(weights, pole_count, "weights")?.to_vec())
-        };
+        let (poles, weights) = poles_and_weights(poles, weights, pole_count)?;
         let knots = slice(knots, knot_count, "knots")?.to_vec();
         let nurbs = NurbsCurve::new(to_usize(degree), poles, weights, knots)?;
         let curve = RmfCurve::new(nurbs.to_piecewise()?, Some(nurbs));

@@ -27,6 +27,28 @@ pub type RmfCurveCallback = Option<
     unsafe extern "C" fn(t: f64, user: *mut c_void, point: *mut RmfVec3, tangent: *mut RmfVec3),
 >;
 
+/// NURBS poles (`count` of them) and their optional weights (NULL: all 1), read from C
+/// arrays; the shared input of curves and surfaces.
+///
+/// # Safety
+/// `poles` and, unless NULL, `weights` point to `count` readable values.
+pub(crate) unsafe fn poles_and_weights(
+    poles: *const RmfVec3,
+    weights: *const f64,
+    count: usize,
+) -> FfiResult<(Vec<DVec3>, Option<Vec<f64>>)> {
+    let poles = slice(poles, count, "poles")?
+        .iter()
+        .map(|&p| p.into())
+        .collect();
+    let weights = if weights.is_null() {
+        None
+    } else {
+        Some(slice(weights, count, "weights")?.to_vec())
+    };
+    Ok((poles, weights))
+}
+
 /// The Hermite segments of `count` points and tangents from C arrays.
 ///
 /// # Safety

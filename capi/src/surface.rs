@@ -7,6 +7,7 @@ use super::boundary::{
 };
 use super::curve::RmfCurve;
 use super::frames::{rational_frames, RmfFrames};
+use super::input::poles_and_weights;
 use super::status::RmfStatus;
 use super::types::{piece_views, PieceViews, RmfBezierPatch, RmfNurbsSurface, RmfVec3};
 use rmfsurf::validate::{check_in_domain, check_nurbs_counts};
@@ -154,15 +155,7 @@ unsafe fn surface_from_nurbs(
             "pole_count_u × pole_count_v = {pole_count_u} × {pole_count_v} overflows"
         ));
     };
-    let poles = slice(poles, count, "poles")?
-        .iter()
-        .map(|&p| p.into())
-        .collect();
-    let weights = if weights.is_null() {
-        None
-    } else {
-        Some(slice(weights, count, "weights")?.to_vec())
-    };
+    let (poles, weights) = poles_and_weights(poles, weights, count)?;
     let knots_u = slice(knots_u, knot_count_u, "knots_u")?.to_vec();
     let knots_v = slice(knots_v, knot_count_v, "knots_v")?.to_vec();
     let nurbs = NurbsSurface::new(
