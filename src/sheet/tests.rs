@@ -728,19 +728,7 @@ fn parts_between_rails_are_similar_under_scaling_and_translation() {
         let mut options = rails_options(1e-4 * scale, 1e-9 * scale);
         options.sheet = Sheet::new(0.02 * scale, 0.5, Reference::Inner).unwrap();
         let part = SheetPart::between_rails(&surface, &options).unwrap();
-        // The area in the pattern's own size (at 1e-200 the area itself underflows).
-        let outline: Vec<PatternEdge> = part
-            .flat_pattern()
-            .unwrap()
-            .outline
-            .iter()
-            .map(|e| super::part::scaled_edge(e, 1.0 / scale))
-            .collect();
-        let area = crate::FlatPattern {
-            outline,
-            bend_lines: vec![],
-        }
-        .area();
+        let area = flat_area(&part, scale);
         let edges = part.report().edge_distance.map(|d| d / scale);
         let start = part
             .boundary(Layer::Reference, Side::First)
