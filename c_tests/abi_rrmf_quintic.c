@@ -644,7 +644,7 @@ static void test_work_budget(void) {
     RmfCurve *plain = NULL, *curve = NULL, *again = NULL, *untouched = curve_sentinel;
     RmfFrames *plain_frames = NULL, *frames = NULL, *again_frames = NULL, *untouched_frames = frames_sentinel;
     RmfRrmfSplineOptions options, bad;
-    RmfRrmfSplineReport report = {sizeof(RmfRrmfSplineReport), 0, 0}, second = {sizeof(RmfRrmfSplineReport), 0, 0};
+    RmfRrmfSplineReport report = {sizeof(RmfRrmfSplineReport), 0, 0, 0}, second = {sizeof(RmfRrmfSplineReport), 0, 0, 0};
     size_t spent;
     int k;
     for (k = 0; k < 10; k++) {
@@ -668,6 +668,7 @@ static void test_work_budget(void) {
                  RMF_OK, "");
     CHECK(curve && plain && same_curve(curve, plain), "the same spline as rmf_rrmf_spline_hermite");
     CHECK(report.segments == 9, "the report counts the segments");
+    CHECK(report.irregular_roots == 0, "the helix has no near-cusps");
     CHECK(report.evaluations >= 9 * 16 && report.evaluations <= 9 * (16 + 502),
           "eta_samples + at most 502 solves per segment");
     printf("rmf_rrmf_spline_hermite_with_options: Example 3 helix, 9 segments, N_eta = 16: %zu solves (%.1f per "
@@ -732,6 +733,44 @@ static void test_work_budget(void) {
     rmf_curve_free(curve);
 }
 
+/* Data with a start tangent 1e-3 rad off the chord: at every η one solution and one root
+ * whose quintic nearly stops at the end (a near-cusp, speed ratio ~1e-12), which is not a
+ * solution but is listed by rmf_rrmf_quintic_irregular_roots; the spline's report counts
+ * such roots. */
+static void test_irregular_roots(void) {
+    const RmfVec3 p0 = {0, 0, 0}, t0 = {1, 1e-3, 0}, p1 = {1, 0, 0}, t1 = {0, 1, 1};
+    RmfRrmfQuintic s[8];
+    double rho[4] = {-1, -1, -1, -1}, ratio[4] = {-1, -1, -1, -1};
+    size_t n = 0, m = 99, k, j;
+    for (k = 0; k < 8; k++) {
+        const double eta = 0.5 * k;
+        CHECK_STATUS(rmf_rrmf_quintic_irregular_roots(p0, t0, p1, t1, eta, NULL, NULL, 0, &m), RMF_ERROR_BUFFER_TOO_SMALL, "");
+        CHECK(m == 1, "one near-cusp at each eta");
+        CHECK_STATUS(rmf_rrmf_quintic_irregular_roots(p0, t0, p1, t1, eta, rho, ratio, 4, &m), RMF_OK, "");
+        CHECK(m == 1 && rho[0] > 0 && ratio[0] > 0 && ratio[0] < 1e-6 && rho[1] == -1,
+              "the near-cusp's rho and speed ratio");
+        CHECK_STATUS(rmf_rrmf_quintic_solutions(p0, t0, p1, t1, eta, s, 8, &n), RMF_OK, "");
+        for (j = 0; j < n; j++) {
+            CHECK(s[j].rho != rho[0], "the near-cusp is not among the solutions");
+        }
+    }
+    {
+        const RmfVec3 points[2] = {p0, p1}, tangents[2] = {t0, t1};
+        RmfRrmfSplineOptions options;
+        RmfRrmfSplineReport report = {sizeof(RmfRrmfSplineReport), 0, 0, 0};
+        RmfCurve *curve = NULL;
+        RmfFrames *frames = NULL;
+        CHECK_STATUS(rmf_rrmf_spline_options_init(&options), RMF_OK, "");
+        options.eta_samples = 16;
+        options.initial_normal = vec3(0, 0, 1);
+        CHECK_STATUS(rmf_rrmf_spline_hermite_with_options(points, tangents, 2, &options, &curve, &frames, &report),
+                     RMF_OK, "");
+        CHECK(report.irregular_roots >= 16, "the report counts the near-cusps of every sampled eta");
+        rmf_frames_free(frames);
+        rmf_curve_free(curve);
+    }
+}
+
 int main(void) {
     test_example_1();
     test_many_solutions();
@@ -741,5 +780,6 @@ int main(void) {
     test_special_case();
     test_bad_input();
     test_work_budget();
+    test_irregular_roots();
     return rmf_check_exit_code("abi_rrmf_quintic");
 }

@@ -912,6 +912,10 @@ typedef struct RmfRrmfSplineReport {
    * Quintic segments of the spline (count − 1).
    */
   size_t segments;
+  /**
+   * Roots left out as near-cusps over all solves (see rmf_rrmf_quintic_irregular_roots).
+   */
+  size_t irregular_roots;
 } RmfRrmfSplineReport;
 
 /**
@@ -2926,8 +2930,10 @@ RmfStatus rmf_profile_offset(const struct RmfCurve *profile,
  * (to 1e-10 relative) and the interpolation conditions (end point to 1e-12 of
  * max(|p1 − p0|, L), end tangents to 1e-12 rad). A root whose curve is numerically
  * singular — its speed dipping below 1e-6 of its maximum on [0, 1], where its tangent is
- * determined by rounding errors — is not returned; this happens only for nearly
- * degenerate data (a tangent almost along p1 − p0).
+ * determined by rounding errors — is not returned but listed by
+ * rmf_rrmf_quintic_irregular_roots; this happens only for nearly degenerate data (a tangent
+ * almost along p1 − p0). Where |δ0| = |δ1| (the exceptional case after (32)), (35) has a
+ * double root, taken from the quadratic |δ0|² = |δ1|² to full precision.
  *
  * ρ far from 1 means one end derivative is much shorter than the other: the first or last
  * leg of the Bézier control polygon is then short, and a tangent computed from the poles
@@ -2962,6 +2968,43 @@ RmfStatus rmf_rrmf_quintic_solutions(struct RmfVec3 p0,
                                      struct RmfRrmfQuintic *solutions,
                                      size_t capacity,
                                      size_t *count);
+
+/**
+ * The roots of the sextic (35) for one η whose quintics interpolate the Hermite data with
+ * an RRMF but whose speed dips below 1e-6 of its maximum (near-cusps), which
+ * rmf_rrmf_quintic_solutions leaves out: their unit tangent is known to no better than
+ * 1e-10 rad there, too little for the exact frames. Empty for data in general position.
+ *
+ * Capacity: as for rmf_rrmf_quintic_solutions (capacity 0 with NULL arrays queries the
+ * count).
+ *
+ * @param[in] p0, p1 End points (as for rmf_rrmf_quintic_solutions).
+ * @param[in] t0, t1 End tangents (as for rmf_rrmf_quintic_solutions).
+ * @param[in] eta The angular parameter η (finite, radians).
+ * @param[out] rho Buffer for capacity values of ρ (eq. (20)), increasing; may be NULL if
+ *             capacity is 0.
+ * @param[out] speed_ratio Buffer for capacity ratios of least to greatest speed on [0, 1],
+ *             one per ρ; may be NULL if capacity is 0.
+ * @param[in] capacity Capacity of rho and speed_ratio.
+ * @param[out] count Receives the number of such roots for this η (usually 0).
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If count is NULL, or rho or speed_ratio is NULL with
+ *         capacity > 0.
+ * @return RMF_ERROR_INVALID_INPUT As for rmf_rrmf_quintic_solutions.
+ * @return RMF_ERROR_BUFFER_TOO_SMALL If capacity < *count; then only *count is written.
+ * @return RMF_ERROR_INTERNAL On an internal error.
+ * \since 0.2
+ * \ingroup rmf_rrmf
+ */
+RmfStatus rmf_rrmf_quintic_irregular_roots(struct RmfVec3 p0,
+                                           struct RmfVec3 t0,
+                                           struct RmfVec3 p1,
+                                           struct RmfVec3 t1,
+                                           double eta,
+                                           double *rho,
+                                           double *speed_ratio,
+                                           size_t capacity,
+                                           size_t *count);
 
 /**
  * The angles of G1 Hermite data in the canonical form of Farouki, Giannelli & Sestini

@@ -115,8 +115,9 @@ pub use rrmf_quintic::planar::{
     PLANAR_TOLERANCE as RRMF_PLANAR_TOLERANCE,
 };
 pub use rrmf_quintic::{
-    best_quintic, best_quintic_within, rrmf_quintics, rrmf_spline, rrmf_spline_within, BestQuintic,
-    Budget as RrmfBudget, RrmfQuintic, RrmfSpline, ShapeMeasure, ShapeMeasures,
+    best_quintic, best_quintic_within, rrmf_quintics, rrmf_quintics_reporting, rrmf_spline,
+    rrmf_spline_within, BestQuintic, Budget as RrmfBudget, IrregularRoot, RrmfQuintic,
+    RrmfSolutions, RrmfSpline, ShapeMeasure, ShapeMeasures,
     MAX_ETA_SAMPLES as RRMF_MAX_ETA_SAMPLES, MAX_REFINEMENT_SOLVES as RRMF_MAX_REFINEMENT_SOLVES,
 };
 

@@ -14,9 +14,9 @@ use super::types::RmfVec3;
 use rmfsurf::glam::DVec3;
 use rmfsurf::{
     best_quintic, planar_quintic, quintic_curve, quintic_rmf, rrmf_planar_deviation, rrmf_quintics,
-    rrmf_spline, rrmf_spline_within, CanonicalHermite, Complex, FrameField, FrameKind,
-    HermiteSegment, PiecewiseCurve, RationalFrames, RrmfBudget, RrmfQuintic, ShapeMeasure,
-    RRMF_MAX_ETA_SAMPLES, RRMF_MAX_REFINEMENT_SOLVES, RRMF_PLANAR_TOLERANCE,
+    rrmf_quintics_reporting, rrmf_spline, rrmf_spline_within, CanonicalHermite, Complex,
+    FrameField, FrameKind, HermiteSegment, PiecewiseCurve, RationalFrames, RrmfBudget, RrmfQuintic,
+    ShapeMeasure, RRMF_MAX_ETA_SAMPLES, RRMF_MAX_REFINEMENT_SOLVES, RRMF_PLANAR_TOLERANCE,
 };
 
 /// One RRMF quintic Hermite interpolant (Farouki, Giannelli & Sestini, Section 4).
@@ -137,8 +137,10 @@ unsafe fn write_curve_and_frames(
 /// (to 1e-10 relative) and the interpolation conditions (end point to 1e-12 of
 /// max(|p1 − p0|, L), end tangents to 1e-12 rad). A root whose curve is numerically
 /// singular — its speed dipping below 1e-6 of its maximum on [0, 1], where its tangent is
-/// determined by rounding errors — is not returned; this happens only for nearly
-/// degenerate data (a tangent almost along p1 − p0).
+/// determined by rounding errors — is not returned but listed by
+/// rmf_rrmf_quintic_irregular_roots; this happens only for nearly degenerate data (a tangent
+/// almost along p1 − p0). Where |δ0| = |δ1| (the exceptional case after (32)), (35) has a
+/// double root, taken from the quadratic |δ0|² = |δ1|² to full precision.
 ///
 /// ρ far from 1 means one end derivative is much shorter than the other: the first or last
 /// leg of the Bézier control polygon is then short, and a tangent computed from the poles
@@ -189,6 +191,64 @@ pub unsafe extern "C" fn rmf_rrmf_quintic_solutions(
         }
         for (slot, q) in solutions.iter_mut().zip(&found) {
             *slot = q.into();
+        }
+        Ok(())
+    })
+}
+
+/// The roots of the sextic (35) for one η whose quintics interpolate the Hermite data with
+/// an RRMF but whose speed dips below 1e-6 of its maximum (near-cusps), which
+/// rmf_rrmf_quintic_solutions leaves out: their unit tangent is known to no better than
+/// 1e-10 rad there, too little for the exact frames. Empty for data in general position.
+///
+/// Capacity: as for rmf_rrmf_quintic_solutions (capacity 0 with NULL arrays queries the
+/// count).
+///
+/// @param[in] p0, p1 End points (as for rmf_rrmf_quintic_solutions).
+/// @param[in] t0, t1 End tangents (as for rmf_rrmf_quintic_solutions).
+/// @param[in] eta The angular parameter η (finite, radians).
+/// @param[out] rho Buffer for capacity values of ρ (eq. (20)), increasing; may be NULL if
+///             capacity is 0.
+/// @param[out] speed_ratio Buffer for capacity ratios of least to greatest speed on [0, 1],
+///             one per ρ; may be NULL if capacity is 0.
+/// @param[in] capacity Capacity of rho and speed_ratio.
+/// @param[out] count Receives the number of such roots for this η (usually 0).
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If count is NULL, or rho or speed_ratio is NULL with
+///         capacity > 0.
+/// @return RMF_ERROR_INVALID_INPUT As for rmf_rrmf_quintic_solutions.
+/// @return RMF_ERROR_BUFFER_TOO_SMALL If capacity < *count; then only *count is written.
+/// @return RMF_ERROR_INTERNAL On an internal error.
+/// \since 0.2
+/// \ingroup rmf_rrmf
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn rmf_rrmf_quintic_irregular_roots(
+    p0: RmfVec3,
+    t0: RmfVec3,
+    p1: RmfVec3,
+    t1: RmfVec3,
+    eta: f64,
+    rho: *mut f64,
+    speed_ratio: *mut f64,
+    capacity: usize,
+    count: *mut usize,
+) -> RmfStatus {
+    guard("rmf_rrmf_quintic_irregular_roots", || {
+        let count = out_ptr(count, "count")?;
+        let rho = buffer(rho, capacity, "rho")?;
+        let speed_ratio = buffer(speed_ratio, capacity, "speed_ratio")?;
+        let mut found = rrmf_quintics_reporting(&hermite(p0, t0, p1, t1)?, eta)?.irregular;
+        found.sort_by(|a, b| a.rho.total_cmp(&b.rho));
+        write(count, found.len());
+        if found.len() > capacity {
+            return Err(FfiError::BufferTooSmall(format!(
+                "{} irregular roots exist for eta = {eta}, capacity is {capacity}",
+                found.len()
+            )));
+        }
+        for ((r, s), root) in rho.iter_mut().zip(speed_ratio.iter_mut()).zip(&found) {
+            (*r, *s) = (root.rho, root.speed_ratio);
         }
         Ok(())
     })
@@ -506,6 +566,8 @@ pub struct RmfRrmfSplineReport {
     pub evaluations: usize,
     /// Quintic segments of the spline (count − 1).
     pub segments: usize,
+    /// Roots left out as near-cusps over all solves (see rmf_rrmf_quintic_irregular_roots).
+    pub irregular_roots: usize,
 }
 
 // SAFETY: repr(C) plain numbers, usize first.
@@ -622,6 +684,7 @@ pub unsafe extern "C" fn rmf_rrmf_spline_hermite_with_options(
             struct_size: std::mem::size_of::<RmfRrmfSplineReport>(),
             evaluations: budget.spent,
             segments: segments.len(),
+            irregular_roots: spline.irregular_roots,
         };
         write_curve_and_frames(spline.curve, spline.frames, curve, frames)?;
         if let Some(report) = report {

@@ -1166,6 +1166,51 @@ fn rows() -> Vec<Row> {
             },
         },
         Row {
+            what: "irregular-root buffers NULL with a capacity",
+            function: "rmf_rrmf_quintic_irregular_roots",
+            expected: NULL,
+            names: "rho",
+            call: |_| {
+                let mut count = 0;
+                unsafe {
+                    rmf_rrmf_quintic_irregular_roots(
+                        v(0., 0., 0.),
+                        v(1., 1e-3, 0.),
+                        v(1., 0., 0.),
+                        v(0., 1., 1.),
+                        1.0,
+                        null_mut(),
+                        null_mut(),
+                        2,
+                        &mut count,
+                    )
+                }
+            },
+        },
+        Row {
+            what: "irregular-root buffers too small",
+            function: "rmf_rrmf_quintic_irregular_roots",
+            expected: TOO_SMALL,
+            names: "capacity",
+            call: |_| {
+                let mut count = 0;
+                let (mut rho, mut ratio) = ([0.0; 1], [0.0; 1]);
+                unsafe {
+                    rmf_rrmf_quintic_irregular_roots(
+                        v(0., 0., 0.),
+                        v(1., 1e-3, 0.),
+                        v(1., 0., 0.),
+                        v(0., 1., 1.),
+                        1.0,
+                        rho.as_mut_ptr(),
+                        ratio.as_mut_ptr(),
+                        0,
+                        &mut count,
+                    )
+                }
+            },
+        },
+        Row {
             what: "η samples 0 or above 10⁶",
             function: "rmf_rrmf_quintic_best",
             expected: INVALID,

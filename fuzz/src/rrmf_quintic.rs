@@ -9,7 +9,13 @@ use super::ph_cubic::hermite_data;
 use super::session::{checked, is_poisoned, poisoned, poisoned_buffer, Session};
 
 /// The operations of this module.
-pub const OPS: &[fn(&mut Session)] = &[solutions_and_curve, angles, best, spline_hermite];
+pub const OPS: &[fn(&mut Session)] = &[
+    solutions_and_curve,
+    irregular_roots,
+    angles,
+    best,
+    spline_hermite,
+];
 
 /// Two points with tangents.
 fn segment(s: &mut Session) -> [RmfVec3; 4] {
@@ -76,6 +82,45 @@ fn solutions_and_curve(s: &mut Session) {
         )
     };
     s.made("rmf_rrmf_quintic_curve", status, Some(c), Some(f));
+}
+
+/// The near-cusps of one η: positive ρ, speed ratios in (0, 1e-6), nothing written on failure.
+fn irregular_roots(s: &mut Session) {
+    let [p0, t0, p1, t1] = segment(s);
+    let eta = s.input.f64();
+    let capacity = s.input.work().min(8);
+    let (mut rho, mut ratio) = (
+        poisoned_buffer::<f64>(capacity),
+        poisoned_buffer::<f64>(capacity),
+    );
+    let mut count = poisoned::<usize>();
+    let status = unsafe {
+        rmf_rrmf_quintic_irregular_roots(
+            p0,
+            t0,
+            p1,
+            t1,
+            eta,
+            rho.as_mut_ptr(),
+            ratio.as_mut_ptr(),
+            capacity,
+            &mut count,
+        )
+    };
+    let too_small = status == RmfStatus::RmfErrorBufferTooSmall;
+    let untouched = rho.iter().chain(&ratio).all(is_poisoned);
+    if checked(
+        "rmf_rrmf_quintic_irregular_roots",
+        status,
+        &[untouched, is_poisoned(&count) || too_small],
+    ) {
+        for (&r, &q) in rho.iter().zip(&ratio).take(count) {
+            assert!(
+                r > 0.0 && r.is_finite() && (0.0..1e-6).contains(&q),
+                "rho {r}, ratio {q}"
+            );
+        }
+    }
 }
 
 fn angles(s: &mut Session) {

@@ -16,7 +16,7 @@
 use super::canonical::CanonicalHermite;
 use super::measures::ShapeMeasure;
 use super::planar::{is_planar, planar_quintic};
-use super::solutions::{solve, RrmfQuintic};
+use super::solutions::{solve_reporting, RrmfQuintic};
 use crate::error::no_solution;
 use crate::error::{invalid, Error, Result};
 use crate::hermite::HermiteSegment;
@@ -82,6 +82,10 @@ pub struct BestQuintic {
     /// Number of the N_η sampled values of η with at least one solution; 0 for the planar
     /// quintic of planar data (no η is sampled).
     pub admissible: usize,
+    /// Roots left out over all solves (scan and refinement) for a speed dipping below
+    /// [`REGULARITY`](super::solutions::REGULARITY) of its maximum: interpolants with an
+    /// RRMF, but near-cusps.
+    pub irregular_roots: usize,
 }
 
 /// The RRMF quintic interpolant of least `measure`: scan `eta_samples` values of η, then
@@ -117,15 +121,17 @@ pub fn best_quintic_within(
         return Ok(BestQuintic {
             quintic: planar_quintic(data, measure)?,
             admissible: 0,
+            irregular_roots: 0,
         });
     }
     let c = CanonicalHermite::new(data)?;
-    let (mut best, mut admissible) = (None::<RrmfQuintic>, 0);
+    let (mut best, mut admissible, mut irregular_roots) = (None::<RrmfQuintic>, 0, 0);
     for k in 0..eta_samples {
         if !budget.take() {
             return Err(budget.spent_error());
         }
-        let found = least(&solve(&c, TAU * k as f64 / eta_samples as f64), measure);
+        let eta = TAU * k as f64 / eta_samples as f64;
+        let found = least_counting(&c, eta, measure, &mut irregular_roots);
         if let Some(q) = found {
             admissible += 1;
             if best.is_none_or(|b| clearly_less(q.measures.get(measure), b.measures.get(measure))) {
@@ -138,11 +144,25 @@ pub fn best_quintic_within(
             "none of the eta_samples = {eta_samples} sampled values of η admits an RRMF quintic interpolant"
         );
     };
-    let quintic = refine(&c, sampled, measure, TAU / eta_samples as f64, budget)?;
+    let step = TAU / eta_samples as f64;
+    let quintic = refine(&c, sampled, measure, step, budget, &mut irregular_roots)?;
     Ok(BestQuintic {
         quintic,
         admissible,
+        irregular_roots,
     })
+}
+
+/// The solution of least `measure` for `eta`, adding the irregular roots to `irregular`.
+fn least_counting(
+    c: &CanonicalHermite,
+    eta: f64,
+    measure: ShapeMeasure,
+    irregular: &mut usize,
+) -> Option<RrmfQuintic> {
+    let solved = solve_reporting(c, eta);
+    *irregular += solved.irregular.len();
+    least(&solved.quintics, measure)
 }
 
 /// Relative difference of two measures below which they count as equal: symmetric data
@@ -173,6 +193,7 @@ fn refine(
     measure: ShapeMeasure,
     step: f64,
     budget: &mut Budget,
+    irregular: &mut usize,
 ) -> Result<RrmfQuintic> {
     let mut spent = false;
     let mut at = |eta: f64| {
@@ -180,7 +201,7 @@ fn refine(
             spent = true;
             return None;
         }
-        least(&solve(c, eta.rem_euclid(TAU)), measure)
+        least_counting(c, eta.rem_euclid(TAU), measure, irregular)
     };
     let minimum = minimize_bracketed(
         |eta| at(eta).map_or(f64::NAN, |q| q.measures.get(measure)),
@@ -200,6 +221,7 @@ fn refine(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::rrmf_quintic::solutions::solve;
     use crate::rrmf_quintic::solutions::tests::{check_solution, example_1};
     use glam::DVec3;
 

@@ -100,7 +100,7 @@ pub(crate) mod tests {
     use crate::rrmf_quintic::measures::speed_range;
     use crate::rrmf_quintic::solutions::rrmf_quintics;
     use crate::rrmf_quintic::solutions::tests::{
-        example_1, near_degenerate_data, random_data, random_vectors,
+        check_solution, example_1, near_degenerate_data, random_data, random_vectors,
     };
     use std::sync::Arc;
 
@@ -221,6 +221,81 @@ pub(crate) mod tests {
             .zip(dr.frames())
             .map(|(&t, g)| (field.frame(t).unwrap().f2 - g.f2).length())
             .fold(0.0, f64::max)
+    }
+
+    /// The values of η in [−π, π] at which pseudo-random data reach the exceptional case
+    /// |δ₀| = |δ₁| of (30) with (35) satisfied, each with its ρ: sign changes of the phase
+    /// condition along η (2,000 steps), refined by bisection.
+    fn exceptional_cases(data: &HermiteSegment) -> Vec<(f64, f64)> {
+        use crate::math::bisect_root;
+        use crate::rrmf_quintic::canonical::CanonicalHermite;
+        use crate::rrmf_quintic::sextic::exceptional_phases;
+        let c = CanonicalHermite::new(data).unwrap();
+        let phase = |eta: f64, k: usize| exceptional_phases(&c, eta).get(k).copied();
+        let etas = uniform_parameters((-std::f64::consts::PI, std::f64::consts::PI), 2001);
+        let mut found = Vec::new();
+        for pair in etas.windows(2) {
+            for k in 0..2 {
+                let (Some((r0, g0)), Some((r1, g1))) = (phase(pair[0], k), phase(pair[1], k))
+                else {
+                    continue;
+                };
+                // The same root on both sides (not a swap of roots) changing sign.
+                if (g0 < 0.0) != (g1 < 0.0) && (r1 - r0).abs() < 0.1 * r0 {
+                    let g = |eta: f64| phase(eta, k).map_or(f64::NAN, |p| p.1);
+                    if let Some(eta) = bisect_root(g, pair[0], pair[1], 1e-15) {
+                        if let Some((rho, _)) = phase(eta, k).filter(|p| p.1.abs() < 1e-12) {
+                            found.push((eta, rho));
+                        }
+                    }
+                }
+            }
+        }
+        found
+    }
+
+    /// Hermite data that reach the exceptional case |δ₀| = |δ₁| of (30) (after (32)): there
+    /// (35) has a double root ρ*, and the solutions at ρ* exist for that η alone (none within
+    /// 1e-3 of ρ* at η ± 1e-7). Every one returned is a true interpolant with an exact RMF
+    /// that agrees with double reflection, none is returned twice, and most cases have one.
+    #[test]
+    fn data_reaching_equal_deltas_get_their_solutions() {
+        let (mut cases, mut solved, mut solutions, mut worst) = (0, 0, 0, 0.0f64);
+        for d in random_data(40) {
+            for (eta, rho) in exceptional_cases(&d) {
+                let near = |eta: f64| {
+                    rrmf_quintics(&d, eta)
+                        .unwrap()
+                        .into_iter()
+                        .filter(|q| (q.rho - rho).abs() < 1e-3 * rho)
+                        .collect::<Vec<_>>()
+                };
+                let at = near(eta);
+                assert!(near(eta - 1e-7).is_empty() && near(eta + 1e-7).is_empty());
+                for (k, q) in at.iter().enumerate() {
+                    check_solution(&d, q);
+                    let alone = field(&[*q], DVec3::Z);
+                    worst = worst.max(distance_from_double_reflection(&alone, 2000));
+                    for other in &at[..k] {
+                        let apart = (q.hopf.alpha[1] - other.hopf.alpha[1]).abs();
+                        assert!(apart > 1e-6 * q.hopf.alpha[1].abs(), "a solution twice");
+                    }
+                }
+                cases += 1;
+                solved += usize::from(!at.is_empty());
+                solutions += at.len();
+            }
+        }
+        println!(
+            "equal deltas: {solved} of {cases} cases solved, {solutions} solutions; \
+             |f₂ − double reflection| ≤ {worst:.1e}"
+        );
+        assert!(cases >= 40, "only {cases} exceptional cases reached");
+        assert!(
+            solved >= 20,
+            "only {solved} of {cases} exceptional cases solved"
+        );
+        assert!(worst < 1e-9, "{worst:e}");
     }
 
     #[test]

@@ -38,5 +38,7 @@ pub use eta::{
     best_quintic, best_quintic_within, BestQuintic, Budget, MAX_ETA_SAMPLES, MAX_REFINEMENT_SOLVES,
 };
 pub use measures::{ShapeMeasure, ShapeMeasures};
-pub use solutions::{rrmf_quintics, RrmfQuintic};
+pub use solutions::{
+    rrmf_quintics, rrmf_quintics_reporting, IrregularRoot, RrmfQuintic, Solutions as RrmfSolutions,
+};
 pub use spline::{rrmf_spline, rrmf_spline_within, RrmfSpline};

@@ -19,7 +19,7 @@ use super::hopf::HopfQuadratics;
 use super::polynomial::{
     combine, conjugate, evaluate, multiply, newton_polish, norm_squared, times_rho,
 };
-use crate::math::{real_roots_power, Complex};
+use crate::math::{quadratic_roots, real_roots_power, Complex};
 
 /// Relative size of |δ₀|² − |δ₁|² below which (30) is treated as the single real
 /// condition of the exceptional case rather than divided by.
@@ -68,6 +68,17 @@ struct Deltas {
     d2: [Complex; 3],
 }
 
+impl Deltas {
+    /// δ₀, δ₁, δ₂ at ρ.
+    fn at(&self, rho: f64) -> (Complex, Complex, Complex) {
+        (
+            evaluate(&self.d0, rho),
+            evaluate(&self.d1, rho),
+            evaluate(&self.d2, rho),
+        )
+    }
+}
+
 fn deltas(c: &CanonicalHermite, t: &EtaTerms) -> Deltas {
     let h = t.half_phi.conj(); // e^{−iφ/2}
     let (ci, si, cf, sf) = (c.ci, c.si, c.cf, c.sf);
@@ -99,35 +110,72 @@ fn sextic(d: &Deltas, f1: f64) -> Vec<f64> {
     combine(&norm_squared(&numerator(d)), &times_rho(&e, f1), -1.0)
 }
 
-/// All candidates of the general case for this η, one or two per positive root of (35).
+/// All candidates of the general case for this η, one or two per positive root of (35),
+/// and those of the exceptional case (after (32)) at the positive roots of
+/// |δ₀|² − |δ₁|², first. There both terms of (35) vanish to second order, so (35) has a
+/// double root, which a root finder reports to only half the digits, or as a complex pair
+/// and not at all; the quadratic gives it to full precision. A candidate found both ways
+/// is one solution twice; the verification keeps one.
 pub fn candidates(c: &CanonicalHermite, eta: f64) -> Vec<Candidate> {
     let terms = eta_terms(c, eta);
     let d = deltas(c, &terms);
-    let mut found = Vec::new();
     let p = sextic(&d, terms.f1);
-    for rho in real_roots_power(&p) {
-        if rho > 0.0 {
-            let rho = polish(&d, terms.f1, &p, rho);
-            for a1 in alpha1_values(&d, terms.f1, rho) {
-                found.push(Candidate {
-                    rho,
-                    normalized: coefficients(c, &terms, rho, a1),
-                });
-            }
-        }
-    }
-    found
+    let general = real_roots_power(&p)
+        .into_iter()
+        .filter(|&rho| rho > 0.0)
+        .map(|rho| polish(&d, terms.f1, &p, rho))
+        .map(|rho| (rho, alpha1_values(&d, terms.f1, rho)));
+    let exceptional = equal_delta_roots(&d)
+        .into_iter()
+        .map(|rho| (rho, exceptional_alpha1_values(&d, terms.f1, rho)));
+    let terms = &terms;
+    exceptional
+        .chain(general)
+        .flat_map(|(rho, values)| {
+            values.into_iter().map(move |a1| Candidate {
+                rho,
+                normalized: coefficients(c, terms, rho, a1),
+            })
+        })
+        .collect()
+}
+
+/// The positive roots of |δ₀|² − |δ₁|², a quadratic in ρ.
+fn equal_delta_roots(d: &Deltas) -> Vec<f64> {
+    let e = combine(&norm_squared(&d.d0), &norm_squared(&d.d1), -1.0);
+    quadratic_roots(e[2], e[1], e[0])
+        .into_iter()
+        .filter(|&rho| rho > 0.0)
+        .collect()
+}
+
+/// For tests that look for data reaching the exceptional case: each positive root ρ of
+/// |δ₀|² − |δ₁|² with the sine of the phase of δ₂ against the line of (30), zero exactly
+/// when (35) vanishes there.
+#[cfg(test)]
+pub(super) fn exceptional_phases(c: &CanonicalHermite, eta: f64) -> Vec<(f64, f64)> {
+    let d = deltas(c, &eta_terms(c, eta));
+    equal_delta_roots(&d)
+        .into_iter()
+        .map(|rho| {
+            let (d0, d1, d2) = d.at(rho);
+            let z = d2 * Complex::cis(-0.5 * (d0.arg() + d1.arg()));
+            (rho, z.im / z.abs())
+        })
+        .collect()
+}
+
+/// The solutions of (29)–(30) at a root ρ of |δ₀|² − |δ₁|².
+fn exceptional_alpha1_values(d: &Deltas, f1: f64, rho: f64) -> Vec<Complex> {
+    let (d0, d1, d2) = d.at(rho);
+    line_circle(d0, d1, d2, rho * f1)
 }
 
 /// ρ polished by Newton steps on (33) evaluated from the δ's themselves: the expanded
 /// coefficients (34) lose the digits that the factors keep.
 fn polish(d: &Deltas, f1: f64, sextic: &[f64], rho: f64) -> f64 {
     newton_polish(sextic, rho, |rho| {
-        let (d0, d1, d2) = (
-            evaluate(&d.d0, rho),
-            evaluate(&d.d1, rho),
-            evaluate(&d.d2, rho),
-        );
+        let (d0, d1, d2) = d.at(rho);
         let difference = d0.norm_sqr() - d1.norm_sqr();
         (d0.conj() * d2 - d1 * d2.conj()).norm_sqr() - rho * f1 * difference * difference
     })
@@ -135,17 +183,13 @@ fn polish(d: &Deltas, f1: f64, sextic: &[f64], rho: f64) -> f64 {
 
 /// The solutions a₁ = α₁/γ of (30), δ₀ a₁ + δ₁ ā₁ = δ₂, at a root ρ.
 fn alpha1_values(d: &Deltas, f1: f64, rho: f64) -> Vec<Complex> {
-    let (d0, d1, d2) = (
-        evaluate(&d.d0, rho),
-        evaluate(&d.d1, rho),
-        evaluate(&d.d2, rho),
-    );
+    let (d0, d1, d2) = d.at(rho);
     let difference = d0.norm_sqr() - d1.norm_sqr();
     if difference.abs() > EQUAL_DELTAS * (d0.norm_sqr() + d1.norm_sqr()) {
         // The general case: a₁ = (δ̄₀δ₂ − δ₁δ̄₂) / (|δ₀|² − |δ₁|²) (after (32)).
         return vec![(d0.conj() * d2 - d1 * d2.conj()) / difference];
     }
-    line_circle(d0, d1, d2, rho * f1)
+    exceptional_alpha1_values(d, f1, rho)
 }
 
 /// The exceptional case |δ₀| = |δ₁| = r: with δ₀ = r e^{iA}, δ₁ = r e^{iB} and
@@ -230,11 +274,7 @@ mod tests {
             }
             let p = sextic(&d, t.f1);
             for rho in [0.2, 1.0, 3.0] {
-                let (a, b, e) = (
-                    evaluate(&d.d0, rho),
-                    evaluate(&d.d1, rho),
-                    evaluate(&d.d2, rho),
-                );
+                let (a, b, e) = d.at(rho);
                 let direct = (a.conj() * e - b * e.conj()).norm_sqr()
                     - rho * t.f1 * (a.norm_sqr() - b.norm_sqr()).powi(2);
                 let value: f64 = p.iter().rev().fold(0.0, |acc, &x| acc * rho + x);

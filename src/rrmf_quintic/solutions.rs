@@ -104,41 +104,110 @@ impl RrmfQuintic {
 /// All RRMF quintics interpolating `data` for the angular parameter `eta`, in increasing
 /// ρ. Empty when this η admits none (no positive root of (35), or f₂ ≤ 0 for every root).
 pub fn rrmf_quintics(data: &HermiteSegment, eta: f64) -> Result<Vec<RrmfQuintic>> {
+    rrmf_quintics_reporting(data, eta).map(|s| s.quintics)
+}
+
+/// [`rrmf_quintics`] with the roots it left out for being irregular.
+pub fn rrmf_quintics_reporting(data: &HermiteSegment, eta: f64) -> Result<Solutions> {
     if !eta.is_finite() {
         return invalid!("eta = {eta} is not finite");
     }
-    Ok(solve(&CanonicalHermite::new(data)?, eta))
+    Ok(solve_reporting(&CanonicalHermite::new(data)?, eta))
+}
+
+/// The RRMF quintics of one η, and the roots that satisfy every condition but regularity.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Solutions {
+    /// The solutions, in increasing ρ.
+    pub quintics: Vec<RrmfQuintic>,
+    /// Roots whose quintic interpolates the data with an RRMF but whose speed dips below
+    /// [`REGULARITY`] times its maximum (a near-cusp): not returned as solutions, since
+    /// their tangent is not known to the accuracy the frames need there.
+    pub irregular: Vec<IrregularRoot>,
+}
+
+/// A root of (35) left out of the solutions for its speed ([`REGULARITY`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct IrregularRoot {
+    /// Its end-derivative ratio ρ (20).
+    pub rho: f64,
+    /// Least over greatest speed on [0, 1], below [`REGULARITY`].
+    pub speed_ratio: f64,
 }
 
 /// [`rrmf_quintics`] on data already in canonical form.
+#[cfg(test)]
 pub fn solve(c: &CanonicalHermite, eta: f64) -> Vec<RrmfQuintic> {
+    solve_reporting(c, eta).quintics
+}
+
+/// [`solve`] with the irregular roots.
+pub fn solve_reporting(c: &CanonicalHermite, eta: f64) -> Solutions {
     let candidates = if special::is_special(c, eta) {
         special::candidates(c)
     } else {
         sextic::candidates(c, eta)
     };
-    let mut solutions: Vec<RrmfQuintic> = candidates
-        .into_iter()
-        .filter_map(|candidate| complete(c, eta, candidate))
-        .collect();
-    solutions.sort_by(|a, b| a.rho.total_cmp(&b.rho));
-    solutions
+    let mut found = Solutions::default();
+    for candidate in candidates {
+        match complete(c, eta, candidate) {
+            Outcome::Solution(q) if !found.quintics.iter().any(|s| same(s, &q)) => {
+                found.quintics.push(*q)
+            }
+            Outcome::Irregular(root) => found.irregular.push(root),
+            _ => {}
+        }
+    }
+    found.quintics.sort_by(|a, b| a.rho.total_cmp(&b.rho));
+    found
+}
+
+/// Relative difference of the coefficients of two solutions below which they are one: a
+/// root of (35) found both by the exceptional case and as a double root, which a root
+/// finder resolves to about √ε only (the first found, the exceptional one, is kept).
+const SAME_SOLUTION: f64 = 1e-6;
+
+/// Whether two solutions are one, to [`SAME_SOLUTION`].
+fn same(a: &RrmfQuintic, b: &RrmfQuintic) -> bool {
+    let coefficients = |q: &RrmfQuintic| {
+        let h = &q.unit_chord;
+        [h.alpha, h.beta].concat()
+    };
+    let (x, y) = (coefficients(a), coefficients(b));
+    let size = x.iter().chain(&y).map(|z| z.abs()).fold(0.0, f64::max);
+    x.iter()
+        .zip(&y)
+        .all(|(&p, &q)| (p - q).abs() <= SAME_SOLUTION * size)
+}
+
+/// What a candidate turns out to be.
+enum Outcome {
+    Solution(Box<RrmfQuintic>),
+    Irregular(IrregularRoot),
+    NotASolution,
 }
 
 /// Steps (f)–(h) and the verification: the solution of a candidate, if it is one.
-fn complete(c: &CanonicalHermite, eta: f64, candidate: Candidate) -> Option<RrmfQuintic> {
+fn complete(c: &CanonicalHermite, eta: f64, candidate: Candidate) -> Outcome {
     // f₂ (40) is the x-displacement of the normalized quintic times 5. (NaN, from a
     // degenerate candidate, is refused too.)
     let f2 = 5.0 * candidate.normalized.displacement().x;
     if f2.is_nan() || f2 <= 0.0 {
-        return None;
+        return Outcome::NotASolution;
     }
     // γ of (39) for X = 1.
     let unit_chord = candidate.normalized.scaled((5.0 / f2).sqrt());
     if !satisfies_conditions(c, &unit_chord) {
-        return None;
+        return Outcome::NotASolution;
     }
-    Some(RrmfQuintic {
+    let speed_ratio = speed_ratio(&unit_chord);
+    if !regular(speed_ratio) {
+        return Outcome::Irregular(IrregularRoot {
+            rho: candidate.rho,
+            speed_ratio,
+        });
+    }
+    Outcome::Solution(Box::new(RrmfQuintic {
         eta,
         rho: candidate.rho,
         hopf: unit_chord.scaled(c.x.sqrt()),
@@ -148,11 +217,10 @@ fn complete(c: &CanonicalHermite, eta: f64, candidate: Candidate) -> Option<Rrmf
         planar: false,
         unit_chord,
         chord: c.x,
-    })
+    }))
 }
 
-/// Verification by substitution, for the chord (1, 0, 0): (7)–(8), (14)–(15), (16)–(17),
-/// and regularity.
+/// Verification by substitution, for the chord (1, 0, 0): (7)–(8), (14)–(15), (16)–(17).
 fn satisfies_conditions(c: &CanonicalHermite, unit_chord: &HopfQuadratics) -> bool {
     let (r7, r8) = unit_chord.rrmf_residuals();
     let size = arc_length(unit_chord).max(1.0);
@@ -164,13 +232,22 @@ fn satisfies_conditions(c: &CanonicalHermite, unit_chord: &HopfQuadratics) -> bo
         && r8 <= RRMF_TOLERANCE
         && end_error <= INTERPOLATION_TOLERANCE
         && tangent_error <= INTERPOLATION_TOLERANCE
-        && is_regular(unit_chord)
+}
+
+/// Least over greatest speed σ on [0, 1].
+fn speed_ratio(unit_chord: &HopfQuadratics) -> f64 {
+    let (slowest, fastest) = speed_range(unit_chord);
+    slowest / fastest
+}
+
+/// Whether a speed ratio is at least `REGULARITY` (NaN is not).
+fn regular(speed_ratio: f64) -> bool {
+    speed_ratio >= REGULARITY
 }
 
 /// Whether the speed stays above `REGULARITY` times its maximum on [0, 1].
 pub(super) fn is_regular(unit_chord: &HopfQuadratics) -> bool {
-    let (slowest, fastest) = speed_range(unit_chord);
-    slowest >= REGULARITY * fastest
+    regular(speed_ratio(unit_chord))
 }
 
 #[cfg(test)]
@@ -336,6 +413,33 @@ pub(crate) mod tests {
         let ratio = hodograph[4].length() / hodograph[0].length();
         assert!((ratio - s.rho * s.rho).abs() <= 1e-12 * ratio);
         (r7.max(r8), end, tangent, legs)
+    }
+
+    /// Nearly degenerate data have roots whose quintic interpolates with an RRMF but dips
+    /// below `REGULARITY` in speed: they are reported, not returned, and data in general
+    /// position have none.
+    #[test]
+    fn near_cusps_are_reported_not_returned() {
+        let count = |data: &[HermiteSegment]| {
+            let (mut irregular, mut solutions) = (0, 0);
+            for d in data {
+                for k in 0..36 {
+                    let found = rrmf_quintics_reporting(d, 0.1745 * k as f64).unwrap();
+                    for root in &found.irregular {
+                        assert!(root.rho > 0.0 && root.speed_ratio < REGULARITY, "{root:?}");
+                        assert!(found.quintics.iter().all(|q| q.rho != root.rho));
+                    }
+                    irregular += found.irregular.len();
+                    solutions += found.quintics.len();
+                }
+            }
+            (irregular, solutions)
+        };
+        let (near, near_solutions) = count(&near_degenerate_data(60));
+        let (general, general_solutions) = count(&random_data(60));
+        println!("near-degenerate: {near} irregular roots, {near_solutions} solutions; general: {general}, {general_solutions}");
+        assert!(near > 0, "no near-cusp reported");
+        assert_eq!(general, 0, "near-cusps of data in general position");
     }
 
     #[test]

@@ -25,6 +25,8 @@ pub struct RrmfSpline {
     pub frames: RationalFrames,
     /// The quintic chosen for each segment.
     pub quintics: Vec<RrmfQuintic>,
+    /// Roots left out as near-cusps over all segments ([`BestQuintic::irregular_roots`](super::eta::BestQuintic::irregular_roots)).
+    pub irregular_roots: usize,
 }
 
 /// The RRMF quintic spline through validated Hermite `segments`, choosing each segment's η
@@ -60,19 +62,19 @@ pub fn rrmf_spline_within(
     if let Some(first) = segments.first() {
         normal_plane_unit(initial_normal, first.t0, "initial_normal")?;
     }
-    let quintics = segments
+    let best = segments
         .iter()
         .enumerate()
         .map(|(k, data)| {
-            best_quintic_within(data, measure, eta_samples, budget)
-                .map(|best| best.quintic)
-                .map_err(|e| in_segment(k, e))
+            best_quintic_within(data, measure, eta_samples, budget).map_err(|e| in_segment(k, e))
         })
         .collect::<Result<Vec<_>>>()?;
+    let quintics: Vec<RrmfQuintic> = best.iter().map(|b| b.quintic).collect();
     Ok(RrmfSpline {
         curve: quintic_curve(&quintics)?,
         frames: quintic_rmf(&quintics, initial_normal)?,
         quintics,
+        irregular_roots: best.iter().map(|b| b.irregular_roots).sum(),
     })
 }
 
