@@ -3,7 +3,7 @@
 //! whose "points" are directions); a polynomial curve has all weights 1.
 
 use super::bernstein::{self, MAX_DEGREE};
-use super::homogeneous::{lift, project, rational_jet};
+use super::homogeneous::{lift, project, rational_jet, rational_jet3};
 use crate::error::{invalid, Result};
 use glam::{DVec3, DVec4};
 
@@ -127,6 +127,40 @@ impl RationalBezierCurve {
         let jet = bernstein::evaluate_jet(&self.points, t);
         let [point, d1, d2] = rational_jet(jet.value, jet.d1, jet.d2);
         CurveJet { point, d1, d2 }
+    }
+
+    /// Point and first three derivatives with respect to the local parameter (x''' from
+    /// the jet of the hodograph).
+    pub fn eval_jet3(&self, t: f64) -> [DVec3; 4] {
+        let h = bernstein::evaluate(&self.points, t);
+        let hodograph = bernstein::derivative(&self.points);
+        let d = bernstein::evaluate_jet(&hodograph, t);
+        rational_jet3(h, d.value, d.d1, d.d2)
+    }
+
+    /// Bernstein coefficients on [0, 1] of det(X, X', X'', X''') for the homogeneous curve
+    /// X = (w x, w): w⁴ det(x', x'', x'''), the numerator of the torsion (a
+    /// polynomial of degree 4n − 6 also for rational curves). Computed as the reciprocal
+    /// product of the Plücker coordinates of the lines X ∧ X' and X'' ∧ X''', so that only
+    /// Bernstein products appear.
+    pub fn torsion_numerator(&self) -> Vec<f64> {
+        let d1 = bernstein::derivative(&self.points);
+        let d2 = bernstein::derivative(&d1);
+        let d3 = bernstein::derivative(&d2);
+        let moment = |a: &[DVec4], b: &[DVec4]| {
+            bernstein::product(a, b, |x: DVec4, y: DVec4| x.truncate().cross(y.truncate()))
+        };
+        let direction = |a: &[DVec4], b: &[DVec4]| {
+            bernstein::product(a, b, |x: DVec4, y: DVec4| {
+                x.w * y.truncate() - y.w * x.truncate()
+            })
+        };
+        let (m1, l1) = (moment(&self.points, &d1), direction(&self.points, &d1));
+        let (m2, l2) = (moment(&d2, &d3), direction(&d2, &d3));
+        let dot = |x: DVec3, y: DVec3| x.dot(y);
+        let mut det = bernstein::product(&m1, &l2, dot);
+        bernstein::add_product(&m2, &l1, dot, &mut det);
+        det
     }
 
     /// The same curve in degree `degree + r`.

@@ -24,6 +24,14 @@ pub fn rational_jet(h: DVec4, h1: DVec4, h2: DVec4) -> [DVec3; 3] {
     [p, d1, d2]
 }
 
+/// Cartesian point and first three derivatives of a rational curve from the homogeneous
+/// derivatives h, h', h'', h''' (Leibniz' rule on h = w x, solved for x⁽ᵏ⁾).
+pub fn rational_jet3(h: DVec4, h1: DVec4, h2: DVec4, h3: DVec4) -> [DVec3; 4] {
+    let [p, d1, d2] = rational_jet(h, h1, h2);
+    let d3 = (h3.truncate() - 3.0 * h1.w * d2 - 3.0 * h2.w * d1 - h3.w * p) / h.w;
+    [p, d1, d2, d3]
+}
+
 /// Homogeneous partial derivatives of a surface at one point, indexed by their orders.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct HomogeneousPartials {

@@ -166,6 +166,19 @@ impl PiecewiseCurve {
             d2: jet.d2 * (scale * scale),
         }
     }
+
+    /// Point and first three derivatives with respect to the global parameter.
+    pub fn eval_jet3(&self, t: f64) -> [DVec3; 4] {
+        let (k, s) = self.locate(t);
+        let scale = reciprocal_length(self.breaks[k], self.breaks[k + 1]);
+        let [point, d1, d2, d3] = self.segments[k].eval_jet3(s);
+        [
+            point,
+            d1 * scale,
+            d2 * (scale * scale),
+            d3 * (scale * scale * scale),
+        ]
+    }
 }
 
 /// A surface made of a grid of rational Bézier patches; patch (a, b) lives on

@@ -12,7 +12,7 @@
 //! near the surface's size (tolerance and distances with them), so that it gives the same
 //! pieces, mapped, for the surface scaled from 1e-200 to 1e200 or moved far away.
 
-use super::developable::{inflection_generators, Developable, Ruling};
+use super::developable::{Developable, Ruling};
 use super::element::Element;
 use super::pair::{cone_pair, ConePair, Frame, Rule};
 use super::piece::ConePiece;
@@ -23,8 +23,6 @@ use crate::math::interior_midpoint;
 /// Rulings sampled per interval (plus one) and points per ruling for the deviation.
 const RULING_SAMPLES: usize = 12;
 const POINT_SAMPLES: usize = 5;
-/// Uniform rulings scanned for inflection generators.
-const INFLECTION_SAMPLES: usize = 400;
 
 /// The result of [`approximate`].
 #[derive(Clone, Debug)]
@@ -143,6 +141,11 @@ impl Developable for Local<'_> {
     fn element(&self, t: f64) -> Result<Element> {
         Ok(self.frame.element_in(&self.surface.element(t)?))
     }
+
+    /// Parameters, the same in local coordinates: the surface's own method.
+    fn inflection_generators(&self) -> Result<Vec<f64>> {
+        self.surface.inflection_generators()
+    }
 }
 
 /// [`approximate`] of a surface in local coordinates.
@@ -153,7 +156,7 @@ fn approximate_local(
     max_pieces: usize,
 ) -> Result<Approximation> {
     let (lo, hi) = surface.domain();
-    let inflections = inflection_generators(surface, INFLECTION_SAMPLES)?;
+    let inflections = surface.inflection_generators()?;
     let mut junctions = vec![lo];
     junctions.extend(&inflections);
     junctions.push(hi);

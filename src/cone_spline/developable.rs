@@ -11,17 +11,34 @@
 //!   a box Ω.
 //!
 //! From the rulings alone, [`Developable::element`] derives G1 Hermite elements with a side
-//! vector pointing towards increasing parameters, and the generic code below finds the
-//! inflection generators (where the osculating cone is a plane: the normal stops turning,
-//! ṅ · p changes sign; zero torsion of the line of regression for tangent surfaces).
+//! vector pointing towards increasing parameters.
+//!
+//! Inflection generators (where the osculating cone is a plane, Section "Fundamentals"):
+//!
+//! * tangent surfaces: the zeros of the torsion numerator det(x', x'', x''') of the line of
+//!   regression. For a NURBS curve these are the real roots of the polynomial
+//!   det(X, X', X'', X''') = w⁴ det(x', x'', x''') of each Bézier segment (homogeneous X,
+//!   so also for rational curves), all of them, double roots included (two roots between
+//!   which the determinant stays within its rounding are one double root); for a callback
+//!   curve the roots of the
+//!   sampled determinant of the differenced jet ([`crate::curve::differenced_jet`]) by
+//!   [`crate::math::sampled_roots`];
+//! * ruled and dual-form surfaces: the zeros of ṅ · p (the normal stops turning), sampled
+//!   on the rulings and found by [`crate::math::sampled_roots`].
+//!
+//! A root within [`END_FRACTION`] of the domain's length of an end is the end ruling itself,
+//! which every algorithm uses anyway: it is not reported as an interior inflection
+//! generator. Roots nearer the ends than any sample spacing are kept.
 
 use super::element::Element;
 use super::region::Region;
+use crate::bezier::bernstein;
 use crate::bezier::{NurbsCurve, PiecewiseCurve, PiecewiseSurface};
 use crate::curve::{uniform_parameters, ParametricCurve};
 use crate::error::no_solution;
 use crate::error::{invalid, Error, Result};
 use crate::frames::metrics::gaussian_curvature;
+use crate::math::{real_roots_in, sampled_roots};
 use glam::{DVec3, DVec4};
 
 /// One ruling of a developable over the region of interest.
@@ -76,11 +93,71 @@ pub trait Developable {
         let r = self.ruling(t)?;
         Ok(r.point + v * r.direction)
     }
+
+    /// x, x', x'', x''' of the line of regression at t, for a tangent surface (whose
+    /// osculating cones then follow from the Darboux vector (3) without differencing);
+    /// `None` for other developables.
+    fn regression_jet(&self, _t: f64) -> Option<Result<[DVec3; 4]>> {
+        None
+    }
+
+    /// The parameters of the inflection generators inside the domain, increasing (see the
+    /// module documentation for the method of each kind of surface). The default samples
+    /// the turning ṅ · p of the tangent plane.
+    fn inflection_generators(&self) -> Result<Vec<f64>> {
+        turning_zeros(self)
+    }
 }
 
-/// Parameters of the inflection generators inside the domain: sign changes of ṅ · p on
-/// `samples` uniform rulings, refined by bisection.
-pub fn inflection_generators(surface: &dyn Developable, samples: usize) -> Result<Vec<f64>> {
+/// Samples of a turning function for inflection generators (plus the searches between
+/// them that [`sampled_roots`] makes).
+pub const INFLECTION_SAMPLES: usize = 400;
+
+/// Roots within this fraction of the domain's length of an end are the end ruling (and
+/// sampled roots closer than it to each other one double root).
+pub const END_FRACTION: f64 = 1e-9;
+
+/// A root counts as a touching (double) root where |f| is at most this fraction of the
+/// largest sampled |f|: above the differencing noise of the sampled functions (1e-7
+/// relative for the differenced x''', less for ṅ · p).
+const TOUCH_FRACTION: f64 = 1e-6;
+
+/// The interior roots of the sampled function `f` on the domain `(lo, hi)`.
+fn interior_sampled_roots(
+    f: &dyn Fn(f64) -> Result<f64>,
+    (lo, hi): (f64, f64),
+) -> Result<Vec<f64>> {
+    let ts = uniform_parameters((lo, hi), INFLECTION_SAMPLES);
+    let largest = ts
+        .iter()
+        .map(|&t| f(t).map(f64::abs))
+        .collect::<Result<Vec<_>>>()?
+        .into_iter()
+        .fold(0.0, f64::max);
+    let tol = 1e-14 * (hi - lo);
+    let mut roots = sampled_roots(f, &ts, TOUCH_FRACTION * largest, tol)?;
+    // A double root whose minimum dips below zero by the noise is bracketed twice.
+    roots.dedup_by(|x, y| {
+        let close = (*x - *y).abs() <= END_FRACTION * (hi - lo);
+        if close {
+            *y = 0.5 * (*x + *y);
+        }
+        close
+    });
+    Ok(interior((lo, hi), roots))
+}
+
+/// The roots that are not an end of the domain ([`END_FRACTION`]).
+fn interior((lo, hi): (f64, f64), roots: Vec<f64>) -> Vec<f64> {
+    let margin = END_FRACTION * (hi - lo);
+    roots
+        .into_iter()
+        .filter(|&t| t - lo > margin && hi - t > margin)
+        .collect()
+}
+
+/// Zeros of ṅ · p (the normal's turning towards the side vector) inside the domain.
+fn turning_zeros<S: Developable + ?Sized>(surface: &S) -> Result<Vec<f64>> {
     let (lo, hi) = surface.domain();
     let h = 1e-5 * (hi - lo);
     let turning = |t: f64| -> Result<f64> {
@@ -88,28 +165,7 @@ pub fn inflection_generators(surface: &dyn Developable, samples: usize) -> Resul
         let (a, b) = ((t - h).max(lo), (t + h).min(hi));
         Ok((surface.element(b)?.normal() - surface.element(a)?.normal()).dot(el.side))
     };
-    let ts = uniform_parameters((lo, hi), samples.max(3));
-    let values = ts.iter().map(|&t| turning(t)).collect::<Result<Vec<_>>>()?;
-    let mut roots = Vec::new();
-    for k in 0..ts.len() - 1 {
-        let (mut a, mut b, fa) = (ts[k], ts[k + 1], values[k]);
-        if fa == 0.0 || (fa < 0.0) == (values[k + 1] < 0.0) || values[k + 1] == 0.0 {
-            continue;
-        }
-        for _ in 0..60 {
-            let m = 0.5 * (a + b);
-            if (turning(m)? < 0.0) == (fa < 0.0) {
-                a = m;
-            } else {
-                b = m;
-            }
-        }
-        let t = 0.5 * (a + b);
-        if t - lo > 1e-3 * (hi - lo) && hi - t > 1e-3 * (hi - lo) {
-            roots.push(t);
-        }
-    }
-    Ok(roots)
+    interior_sampled_roots(&turning, (lo, hi))
 }
 
 /// Every algorithm steps through a developable in fractions of its domain's length, which
@@ -147,60 +203,6 @@ impl<'a> TangentSurface<'a> {
             distances: (v_min, v_max),
         })
     }
-
-    /// x, x' and x'' at t: x'' as the derivative of the quartic through the exact x' at
-    /// five equidistant parameters around t, kept inside the domain (fourth order, error
-    /// ~1e-12 relative, also at the ends of the domain). The spacing is 1e-3 of the domain,
-    /// divided by 4 until the tangent turns by at most 0.05 rad across the five: a step
-    /// relative to the domain alone is a whole turn of a 1,000-turn helix (whose x' is then
-    /// the same at all five, x'' zero). The turning is measured from the first node to the
-    /// last and to an incommensurable one (a golden-section fraction of the way), so that no
-    /// periodic curve hides it.
-    pub fn derivatives(&self, t: f64) -> Result<[DVec3; 3]> {
-        const GOLDEN: f64 = 0.381_966_011_250_105_1;
-        let (lo, hi) = self.curve.domain();
-        let mut h = 1e-3 * (hi - lo);
-        let (x, d1) = self.curve.point_derivative(t)?;
-        let turning = |h: f64| -> Result<f64> {
-            let first = t.clamp(lo + 2.0 * h, hi - 2.0 * h) - 2.0 * h;
-            // Unit tangents: the angle of derivatives of size 1e200 would overflow.
-            let tangent = |s: f64| -> Result<DVec3> {
-                let d = self.curve.point_derivative(first + s * 4.0 * h)?.1;
-                Ok(crate::math::robust_normalize(d).unwrap_or(DVec3::ZERO))
-            };
-            let (a, m, b) = (tangent(0.0)?, tangent(GOLDEN)?, tangent(1.0)?);
-            let angle = crate::math::angle_between;
-            Ok(angle(a, m).max(angle(a, b)))
-        };
-        while h > 1e-9 * (hi - lo) && turning(h)? > 0.05 {
-            h *= 0.25;
-        }
-        let centre = t.clamp(lo + 2.0 * h, hi - 2.0 * h);
-        let nodes = [-2.0, -1.0, 0.0, 1.0, 2.0];
-        let at = (t - centre) / h;
-        let mut d2 = DVec3::ZERO;
-        for (j, &xj) in nodes.iter().enumerate() {
-            // Derivative of the Lagrange basis polynomial of node j at `at`.
-            let others = || {
-                nodes
-                    .iter()
-                    .enumerate()
-                    .filter(move |&(k, _)| k != j)
-                    .map(|(_, &xk)| xk)
-            };
-            let denominator: f64 = others().map(|xk| xj - xk).product();
-            let derivative: f64 = others()
-                .map(|skip| {
-                    others()
-                        .filter(|&xk| xk != skip)
-                        .map(|xk| at - xk)
-                        .product::<f64>()
-                })
-                .sum();
-            d2 += self.curve.point_derivative(centre + xj * h)?.1 * (derivative / denominator);
-        }
-        Ok([x, d1, d2 / h])
-    }
 }
 
 impl Developable for TangentSurface<'_> {
@@ -209,7 +211,7 @@ impl Developable for TangentSurface<'_> {
     }
 
     fn ruling(&self, t: f64) -> Result<Ruling> {
-        let [x, d1, d2] = self.derivatives(t)?;
+        let [x, d1, d2, _] = self.curve.jet(t)?;
         // Directions first: |x'| |x''| under- or overflows for curves of size 1e-200 or
         // 1e200 (d1 and d2 scale with the curve).
         let unit = |v: DVec3| crate::math::robust_normalize(v).unwrap_or(DVec3::ZERO);
@@ -229,6 +231,85 @@ impl Developable for TangentSurface<'_> {
             range: (v0 - mid, v1 - mid),
         })
     }
+
+    fn regression_jet(&self, t: f64) -> Option<Result<[DVec3; 4]>> {
+        Some(self.curve.jet(t))
+    }
+
+    fn inflection_generators(&self) -> Result<Vec<f64>> {
+        let domain = self.curve.domain();
+        let roots = match self.curve.as_piecewise() {
+            Some(curve) => torsion_roots(curve),
+            None => {
+                let torsion = |t: f64| -> Result<f64> {
+                    let [_, d1, d2, d3] = self.curve.jet(t)?;
+                    // Scaled by |x'|⁶: the same zeros, a value free of the curve's size.
+                    let s = crate::math::robust_length(d1);
+                    Ok((d1 / s).dot((d2 / s).cross(d3 / s)) / (s * s * s))
+                };
+                return interior_sampled_roots(&torsion, domain);
+            }
+        };
+        Ok(interior(domain, roots))
+    }
+}
+
+/// All real roots of the torsion numerator of a piecewise rational curve: per segment the
+/// roots in [0, 1] of its polynomial det(X, X', X'', X'''), mapped to the global parameter;
+/// a root at a break counts once. A segment whose determinant vanishes identically (a
+/// planar segment) has no isolated roots and contributes none.
+fn torsion_roots(curve: &PiecewiseCurve) -> Vec<f64> {
+    let breaks = curve.breaks();
+    let mut roots: Vec<f64> = Vec::new();
+    for (k, segment) in curve.segments().iter().enumerate() {
+        let numerator = segment.torsion_numerator();
+        let power = bernstein::to_power(&numerator);
+        let (a, b) = (breaks[k], breaks[k + 1]);
+        roots.extend(
+            touching_pairs_merged(&numerator, real_roots_in(&power, 0.0, 1.0))
+                .into_iter()
+                .map(|s| polished(&numerator, s))
+                .map(|s| crate::math::lerp(a, b, s)),
+        );
+    }
+    let (lo, hi) = curve.domain();
+    roots.dedup_by(|x, y| (*x - *y).abs() <= 1e-14 * (hi - lo));
+    roots
+}
+
+/// A simple root from the power form (ill-conditioned for the degree 4n − 6) polished on
+/// the Bernstein form (stable de Casteljau evaluation), by Illinois steps in a bracket of
+/// ±1e-6 around it; a root without a sign change there (a double root) stays.
+fn polished(b: &[f64], s: f64) -> f64 {
+    let f = |x: f64| bernstein::evaluate(b, x);
+    let (lo, hi) = ((s - 1e-6).max(0.0), (s + 1e-6).min(1.0));
+    crate::math::illinois_root(f, (lo, f(lo)), (hi, f(hi)), 1e-16).unwrap_or(s)
+}
+
+/// |det| relative to its largest Bernstein coefficient below which it is rounding: the
+/// products of the determinant round its coefficients, and a double root comes out as two
+/// simple roots about 1e-6 apart (or none).
+const TORSION_ROUNDING: f64 = 1e-12;
+
+/// Consecutive roots between which the polynomial (Bernstein coefficients `b`) stays within
+/// its rounding are one double root (their midpoint): a touching zero split by rounding.
+fn touching_pairs_merged(b: &[f64], roots: Vec<f64>) -> Vec<f64> {
+    let rounding = TORSION_ROUNDING * b.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+    let mut out: Vec<f64> = Vec::with_capacity(roots.len());
+    let mut merged_last = false;
+    for r in roots {
+        if let Some(&previous) = out.last() {
+            let mid = 0.5 * (previous + r);
+            if !merged_last && bernstein::evaluate(b, mid).abs() <= rounding {
+                *out.last_mut().expect("checked") = mid;
+                merged_last = true;
+                continue;
+            }
+        }
+        out.push(r);
+        merged_last = false;
+    }
+    out
 }
 
 /// A ruled NURBS surface of degree (1, n) with rulings along u, checked to be developable.
@@ -367,7 +448,85 @@ impl Developable for DualDevelopable {
 
 #[cfg(test)]
 mod tests {
+    use super::super::test_support::{torsion_zeros_curve, OnlyTangents};
     use super::*;
+
+    /// Torsion zeros 0.4 (double), 0.7 and 1 − 5e-5 (inside the old 1e-3 margin): all
+    /// found, exactly from the NURBS polynomial and from the sampled differenced jet.
+    #[test]
+    fn inflection_generators_are_the_torsion_zeros() {
+        let near_end = 1.0 - 5e-5;
+        let exact = [0.4, 0.7, near_end];
+        let curve = torsion_zeros_curve(&[0.4, 0.4, 0.7, near_end], 0.0, 1.0);
+        let nurbs = TangentSurface::new(&curve, 0.5, 1.0).unwrap();
+        let found = nurbs.inflection_generators().unwrap();
+        println!("NURBS: {found:?}");
+        assert_eq!(found.len(), 3, "{found:?}");
+        for (r, x) in found.iter().zip(exact) {
+            assert!((r - x).abs() < 1e-7, "{r} vs {x}");
+        }
+        assert!((found[1] - 0.7).abs() < 1e-8 && (found[2] - near_end).abs() < 1e-8);
+        let callback = OnlyTangents(curve.clone());
+        let sampled = TangentSurface::new(&callback, 0.5, 1.0).unwrap();
+        let found = sampled.inflection_generators().unwrap();
+        println!("callback: {found:?}");
+        assert_eq!(found.len(), 3, "{found:?}");
+        for (r, x) in found.iter().zip(exact) {
+            assert!((r - x).abs() < 1e-5, "{r} vs {x}");
+        }
+        // A zero at an end is the end ruling, not an interior inflection generator; one
+        // 1e-6 inside is kept.
+        let curve = torsion_zeros_curve(&[0.0, 0.5, 1.0 - 1e-6], 0.0, 1.0);
+        let found = TangentSurface::new(&curve, 0.5, 1.0)
+            .unwrap()
+            .inflection_generators()
+            .unwrap();
+        assert_eq!(found.len(), 2, "{found:?}");
+        assert!((found[0] - 0.5).abs() < 1e-8 && (found[1] - (1.0 - 1e-6)).abs() < 1e-8);
+    }
+
+    /// A pair of torsion zeros closer than the sample spacing (1/399) is found by the
+    /// search at the local minimum of |det| (a sign scan sees no change).
+    #[test]
+    fn close_pairs_of_torsion_zeros_are_found_from_samples() {
+        let (a, b) = (0.3001, 0.3008);
+        let curve = torsion_zeros_curve(&[a, b], 0.0, 1.0);
+        let callback = OnlyTangents(curve);
+        let found = TangentSurface::new(&callback, 0.5, 1.0)
+            .unwrap()
+            .inflection_generators()
+            .unwrap();
+        assert_eq!(found.len(), 2, "{found:?}");
+        assert!(
+            (found[0] - a).abs() < 1e-7 && (found[1] - b).abs() < 1e-7,
+            "{found:?}"
+        );
+    }
+
+    /// The torsion numerator of a rational segment (Plücker product of homogeneous
+    /// derivatives) against w⁴ det(x', x'', x''') from the Cartesian jet (quotient rule).
+    #[test]
+    fn rational_torsion_numerator_matches_the_jet() {
+        let points = vec![
+            DVec4::new(0.0, 0.0, 0.0, 1.0),
+            DVec4::new(2.0, 0.0, 1.0, 2.0),
+            DVec4::new(1.0, 3.0, 0.0, 0.5),
+            DVec4::new(0.0, 1.0, 2.0, 1.0),
+            DVec4::new(1.5, 1.0, 0.5, 1.5),
+        ];
+        let segment = crate::bezier::RationalBezierCurve::from_homogeneous(points.clone()).unwrap();
+        let numerator = segment.torsion_numerator();
+        for s in [0.0, 0.2, 0.5, 0.9, 1.0] {
+            let [_, d1, d2, d3] = segment.eval_jet3(s);
+            let w = bernstein::evaluate(&points, s).w;
+            let cartesian = w.powi(4) * d1.dot(d2.cross(d3));
+            let homogeneous = bernstein::evaluate(&numerator, s);
+            assert!(
+                (cartesian - homogeneous).abs() <= 1e-12 * cartesian.abs().max(1.0),
+                "{s}: {cartesian} vs {homogeneous}"
+            );
+        }
+    }
 
     /// A line on a domain whose length overflows.
     struct WideLine;

@@ -184,7 +184,9 @@ fn piece_box_bounds(piece: &ConePiece, region: &Region) -> Option<(f64, f64)> {
     };
     let lo = refine(&|c: (f64, f64)| c.0)?;
     let hi = -refine(&|c: (f64, f64)| -c.1)?;
-    Some((lo, hi))
+    // Four ulps inside: a point at the exact clip distance can round one ulp out of the box.
+    let slack = 4.0 * f64::EPSILON * lo.abs().max(hi.abs());
+    Some((lo + slack, hi - slack))
 }
 
 #[cfg(test)]

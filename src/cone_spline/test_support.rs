@@ -37,6 +37,60 @@ impl ParametricCurve for Helix {
             DVec3::new(-self.radius * s, self.radius * c, self.pitch),
         ))
     }
+
+    /// The exact jet (a caller who knows the higher derivatives gives them).
+    fn jet(&self, t: f64) -> Result<[DVec3; 4]> {
+        let (s, c) = t.sin_cos();
+        let r = self.radius;
+        let (x, d1) = self.point_derivative(t)?;
+        Ok([
+            x,
+            d1,
+            DVec3::new(-r * c, -r * s, 0.0),
+            DVec3::new(r * s, -r * c, 0.0),
+        ])
+    }
+}
+
+/// A curve seen only through its points and first derivatives, as a C callback gives it:
+/// the jet is differenced.
+pub struct OnlyTangents<C>(pub C);
+
+impl<C: ParametricCurve> ParametricCurve for OnlyTangents<C> {
+    fn domain(&self) -> (f64, f64) {
+        self.0.domain()
+    }
+
+    fn point_derivative(&self, t: f64) -> Result<(DVec3, DVec3)> {
+        self.0.point_derivative(t)
+    }
+}
+
+/// The polynomial curve (t, t², z(t)) on [t0, t1] whose z''' has the given roots (with
+/// multiplicity): its torsion numerator det(x', x'', x''') = 2 z''' has exactly these zeros.
+pub fn torsion_zeros_curve(roots: &[f64], t0: f64, t1: f64) -> PiecewiseCurve {
+    let mut z3 = vec![1.0];
+    for &r in roots {
+        let mut next = vec![0.0; z3.len() + 1];
+        for (i, &c) in z3.iter().enumerate() {
+            next[i + 1] += c;
+            next[i] -= r * c;
+        }
+        z3 = next;
+    }
+    // z = ∭ z''': tⁱ ↦ tⁱ⁺³ i! / (i + 3)!.
+    let mut power = vec![DVec3::ZERO; z3.len() + 3];
+    power[1].x = 1.0;
+    power[2].y = 1.0;
+    for (i, &c) in z3.iter().enumerate() {
+        let f = (i + 1) as f64 * (i + 2) as f64 * (i + 3) as f64;
+        power[i + 3].z = c / f;
+    }
+    let full = bernstein::from_power(&power);
+    let seg = RationalBezierCurve::polynomial(&full)
+        .unwrap()
+        .restricted(t0, t1);
+    PiecewiseCurve::new(vec![seg], vec![t0, t1]).unwrap()
 }
 
 /// The tangent surface of `curve` over distances [v0, v1] from the curve.

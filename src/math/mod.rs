@@ -23,7 +23,8 @@ pub use linear::solve_refined;
 pub use minimize::minimize_bracketed;
 pub use quadrature::GaussLegendre;
 pub use roots::{
-    bisect_root, illinois_root, interior_midpoint, quadratic_roots, real_roots_in, real_roots_power,
+    bisect_root, illinois_root, interior_midpoint, quadratic_roots, real_roots_in,
+    real_roots_power, sampled_roots,
 };
 pub use secant::secant_refine;
 pub use vector::{

@@ -6,6 +6,13 @@
 //! touches zero without a sign change) are caught at the critical points by comparing
 //! |p| with the rounding-error bound of its evaluation. This finds *all* real roots in an
 //! interval, which the RRMF sextic (35) and the cone-joining quartic (14) need.
+//!
+//! `sampled_roots` is the counterpart for a function known only by its values (e.g. the
+//! torsion of a curve given by a callback): every sign change between samples is bracketed,
+//! and every local minimum of |f| among the samples is searched for a touching (double)
+//! root or a pair of roots between two samples.
+
+use super::minimize::minimize_bracketed;
 
 /// Roots of `a x² + b x + c`, ascending, computed without cancellation (the larger root by
 /// the usual formula, the smaller from Vieta). Degrades to the linear case when `a == 0`.
@@ -259,6 +266,76 @@ pub fn illinois_root(
         }
     }
     Some(if fa.abs() < fb.abs() { a } else { b })
+}
+
+/// The roots of `f` on [ts₀, tsₙ] seen from its values at the increasing samples `ts`:
+///
+/// * a sample where f is exactly 0;
+/// * one root (Illinois) in every interval between samples where f changes sign;
+/// * at every sample where |f| has a local minimum among its neighbours without a sign
+///   change (the end samples included, against their one neighbour), the minimum of |f| on
+///   the neighbouring intervals (Brent): a root where the minimum is at most `touch` (a
+///   double root, or a pair closer than the rounding), and two roots where f changes sign
+///   at the minimum (a pair of roots between two samples).
+///
+/// Roots closer than `tol` are merged. Errors of `f` are passed on.
+pub fn sampled_roots<E>(
+    mut f: impl FnMut(f64) -> Result<f64, E>,
+    ts: &[f64],
+    touch: f64,
+    tol: f64,
+) -> Result<Vec<f64>, E> {
+    let values = ts.iter().map(|&t| f(t)).collect::<Result<Vec<_>, E>>()?;
+    let mut failure = None;
+    let mut g = |t: f64| match f(t) {
+        Ok(v) => v,
+        Err(e) => {
+            failure.get_or_insert(e);
+            f64::NAN
+        }
+    };
+    let n = values.len();
+    let mut roots: Vec<f64> = (0..n)
+        .filter(|&k| values[k] == 0.0)
+        .map(|k| ts[k])
+        .collect();
+    let changes = |a: f64, b: f64| a != 0.0 && b != 0.0 && (a < 0.0) != (b < 0.0);
+    for k in 0..n.saturating_sub(1) {
+        if changes(values[k], values[k + 1]) {
+            roots.extend(illinois_root(
+                &mut g,
+                (ts[k], values[k]),
+                (ts[k + 1], values[k + 1]),
+                tol,
+            ));
+        }
+    }
+    for k in 0..n {
+        let (left, right) = (k.saturating_sub(1), (k + 1).min(n - 1));
+        let local_minimum = (left..=right)
+            .all(|j| values[j] != 0.0 && !changes(values[j], values[k]))
+            && values[left].abs() >= values[k].abs()
+            && values[right].abs() >= values[k].abs()
+            && left < right;
+        if !local_minimum {
+            continue;
+        }
+        let m = minimize_bracketed(|t| g(t).abs(), ts[left], ts[right], tol);
+        let at = g(m.x);
+        if changes(at, values[k]) {
+            let (a, b) = (ts[left], ts[right]);
+            roots.extend(illinois_root(&mut g, (a, values[left]), (m.x, at), tol));
+            roots.extend(illinois_root(&mut g, (m.x, at), (b, values[right]), tol));
+        } else if at.abs() <= touch {
+            roots.push(m.x);
+        }
+    }
+    if let Some(e) = failure {
+        return Err(e);
+    }
+    roots.sort_by(f64::total_cmp);
+    roots.dedup_by(|x, y| (*x - *y).abs() <= tol);
+    Ok(roots)
 }
 
 #[cfg(test)]
