@@ -30,10 +30,11 @@
 //! surface rulings 0.001 apart all join (330 did before).
 
 use super::biarc::{biarc, equal_lambda, lambda_through, partner_lambda, Biarc};
+use super::developable::Ruling;
 use super::element::{check_consecutive, Element};
 use super::piece::ConePiece;
 use super::piece::Motion;
-use super::region::Region;
+use super::region::{Region, SweptBand};
 use crate::error::no_solution;
 use crate::error::{invalid, Error, Result};
 use crate::math::{quadratic_roots, secant_refine, solve_refined};
@@ -113,6 +114,31 @@ pub fn cone_pair(
     region: Option<&Region>,
     names: (&str, &str),
 ) -> Result<ConePair> {
+    solve_pair(a, b, rule, region.map(|&r| KeepOut::Box(r)), names)
+}
+
+/// [`cone_pair`] with no vertex inside the region swept by the rulings `band` of the
+/// surface at `a` and `b` (instead of a box): the approximation's pairs. As for a box, the
+/// rule's most useful admissible solution is taken, and for the default rule, where both
+/// roots of (12) put a vertex inside, one with a vertex just outside the band on either
+/// ruling.
+pub fn cone_pair_in_band(
+    a: &Element,
+    b: &Element,
+    rule: Rule,
+    band: &SweptBand,
+    names: (&str, &str),
+) -> Result<ConePair> {
+    solve_pair(a, b, rule, Some(KeepOut::Band(band)), names)
+}
+
+fn solve_pair(
+    a: &Element,
+    b: &Element,
+    rule: Rule,
+    keep_out: Option<KeepOut<'_>>,
+    names: (&str, &str),
+) -> Result<ConePair> {
     check_consecutive(a, b, names.0, names.1)?;
     if let Rule::Given(x) = rule {
         if !x.is_finite() {
@@ -124,7 +150,7 @@ pub fn cone_pair(
         Rule::Given(x) => Rule::Given(x / frame.scale),
         other => other,
     };
-    let omega = region.map(|&region| Omega { region, frame });
+    let omega = keep_out.map(|keep_out| Omega::new(keep_out, frame));
     let pair = local_pair(
         &frame.element_in(a),
         &frame.element_in(b),
@@ -171,6 +197,15 @@ impl Frame {
 
     fn point_out(&self, x: DVec3) -> DVec3 {
         x * self.scale + self.centre
+    }
+
+    /// A ruling of a developable in these coordinates (its band scaled with them).
+    pub(crate) fn ruling_in(&self, r: &Ruling) -> Ruling {
+        Ruling {
+            point: self.point_in(r.point),
+            range: (r.range.0 / self.scale, r.range.1 / self.scale),
+            ..*r
+        }
     }
 
     pub(crate) fn element_in(&self, e: &Element) -> Element {
@@ -222,28 +257,63 @@ impl Frame {
     }
 }
 
+/// Where the vertices of a pair must not lie, in the caller's coordinates.
+#[derive(Clone, Copy, Debug)]
+enum KeepOut<'a> {
+    /// A box (Hermite interpolation).
+    Box(Region),
+    /// The region swept by the surface's rulings between the two elements (approximation).
+    Band(&'a SweptBand),
+}
+
+/// Where the vertices must not lie, seen from the local coordinates of a [`Frame`]: a box
+/// in the caller's coordinates, a band carried into the local ones.
+enum LocalKeepOut {
+    Box(Region),
+    Band(SweptBand),
+}
+
 /// The caller's region of interest seen from the local coordinates of a [`Frame`].
 struct Omega {
-    region: Region,
+    keep_out: LocalKeepOut,
     frame: Frame,
 }
 
 impl Omega {
-    fn contains(&self, x: DVec3) -> bool {
-        self.region.contains(self.frame.point_out(x))
+    fn new(keep_out: KeepOut<'_>, frame: Frame) -> Self {
+        let keep_out = match keep_out {
+            KeepOut::Band(band) => LocalKeepOut::Band(band.map(|r| frame.ruling_in(r))),
+            KeepOut::Box(region) => LocalKeepOut::Box(region),
+        };
+        Self { keep_out, frame }
     }
 
-    /// [`Region::clip_line`] of a local line, in local distances.
-    fn clip_line(&self, point: DVec3, direction: DVec3) -> Option<(f64, f64)> {
-        self.region
-            .clip_line(self.frame.point_out(point), direction)
-            .map(|(lo, hi)| (lo / self.frame.scale, hi / self.frame.scale))
+    /// Whether no vertex of the local pieces lies inside the region.
+    fn admits(&self, pieces: &[ConePiece]) -> bool {
+        match &self.keep_out {
+            LocalKeepOut::Box(region) => !pieces
+                .iter()
+                .filter_map(ConePiece::vertex)
+                .any(|v| region.contains(self.frame.point_out(v))),
+            LocalKeepOut::Band(band) => band.admits(pieces),
+        }
     }
 
-    /// How far outside the box a vertex is placed: 1e-6 of its diagonal, local.
-    fn margin(&self) -> f64 {
-        let r = &self.region;
-        1e-6 * crate::math::robust_length(r.max - r.min) / self.frame.scale
+    /// The region on the pair's first (`end` false) or last ruling, along the local line
+    /// `point + s·direction` on it, in local distances, with the distance by which a vertex
+    /// is placed outside it: for a box its clip ([`Region::clip_line`]) and 1e-6 of its
+    /// diagonal.
+    fn on_ruling(&self, end: bool, point: DVec3, direction: DVec3) -> Option<((f64, f64), f64)> {
+        match &self.keep_out {
+            LocalKeepOut::Box(region) => {
+                let s = self.frame.scale;
+                let margin = 1e-6 * crate::math::robust_length(region.max - region.min) / s;
+                region
+                    .clip_line(self.frame.point_out(point), direction)
+                    .map(|(lo, hi)| ((lo / s, hi / s), margin))
+            }
+            LocalKeepOut::Band(band) => Some(band.on_ruling(end, point, direction)),
+        }
     }
 }
 
@@ -432,12 +502,7 @@ fn total_angle(pieces: &[ConePiece]) -> f64 {
 }
 
 fn has_vertex_in(pieces: &[ConePiece], region: Option<&Omega>) -> bool {
-    region.is_some_and(|r| {
-        pieces
-            .iter()
-            .filter_map(ConePiece::vertex)
-            .any(|v| r.contains(v))
-    })
+    region.is_some_and(|r| !r.admits(pieces))
 }
 
 /// Vertex parameters (μ₁, μ₂); `None` is a vertex at infinity.
@@ -520,15 +585,14 @@ impl VertexFamily {
     /// Vertices just outside the region on either ruling, for when the rule's own choice
     /// puts a vertex inside it.
     fn boundary_candidates(&self, region: &Omega) -> Vec<VertexParameters> {
-        let margin = region.margin();
         let mut out = self.candidates(Rule::CylinderFirst);
         out.extend(self.candidates(Rule::CylinderSecond));
-        if let Some((lo, hi)) = region.clip_line(self.a1, self.e1) {
+        if let Some(((lo, hi), margin)) = region.on_ruling(false, self.a1, self.e1) {
             for mu1 in [lo - margin, hi + margin] {
                 out.push((Some(mu1), self.mu2(mu1)));
             }
         }
-        if let Some((lo, hi)) = region.clip_line(self.a2, -self.e2) {
+        if let Some(((lo, hi), margin)) = region.on_ruling(true, self.a2, -self.e2) {
             for mu2 in [lo - margin, hi + margin] {
                 out.push((self.mu1(mu2), Some(mu2)));
             }
@@ -713,12 +777,6 @@ fn cone_case(
             "the rulings intersect: every cone pair has their common vertex, none is a cylinder",
         ));
     }
-    if region.is_some_and(|r| r.contains(v)) {
-        return no_solution!(
-            "the region of interest contains every possible vertex: the rulings meet at {}",
-            region.map_or(v, |r| r.frame.point_out(v))
-        );
-    }
     let (s1, s2) = (a.parameter_of(v), b.parameter_of(v));
     if s1 == 0.0 || s2 == 0.0 || (s1 < 0.0) != (s2 < 0.0) {
         return Err(Error::no_solution(
@@ -734,6 +792,12 @@ fn cone_case(
     let junction = sigma * (arcs.c - v);
     let first = ConePiece::cone(v, *a, junction)?;
     let second = ConePiece::cone(v, first.end(), b.ruling)?;
+    if has_vertex_in(&[first, second], region) {
+        return no_solution!(
+            "the region of interest contains every possible vertex: the rulings meet at {}",
+            region.map_or(v, |r| r.frame.point_out(v))
+        );
+    }
     joins(&second.end(), b, scale)?;
     Ok(ConePair {
         case: PairCase::Cone,
