@@ -627,4 +627,85 @@ mod tests {
         }
         println!("12 random tangent surfaces: smallest vertex clearance {worst:.3e}");
     }
+
+    /// Figs. 11–12: the vertex polygon of the fit approximates the line of regression,
+    /// which the fit never uses. For the tangent surfaces of the twisted cubic (general
+    /// case) and of a helix (constant slope) at decreasing tolerances: the largest distance
+    /// from a vertex to the curve and from the curve (between the first and the last
+    /// vertex's nearest parameters) to the polygon, against the largest ruling spacing h.
+    #[test]
+    fn the_vertex_polygon_approaches_the_line_of_regression() {
+        let helix = Helix {
+            radius: 1.0,
+            pitch: 0.5,
+            domain: (0.0, 4.0),
+        };
+        let cubic = twisted_cubic(-0.5, 1.0);
+        let curves: [(&str, &dyn crate::curve::ParametricCurve); 2] =
+            [("twisted cubic", &cubic), ("helix", &helix)];
+        for (name, curve) in curves {
+            let surface = tangent_surface(curve, 0.5, 1.5);
+            let (lo, hi) = curve.domain();
+            let dense: Vec<(f64, DVec3)> = (0..=20_000)
+                .map(|k| {
+                    let t = lo + (hi - lo) * k as f64 / 20_000.0;
+                    (t, curve.point_derivative(t).unwrap().0)
+                })
+                .collect();
+            let nearest = |v: DVec3| {
+                dense
+                    .iter()
+                    .map(|&(t, x)| ((x - v).length(), t))
+                    .min_by(|a, b| a.0.total_cmp(&b.0))
+                    .unwrap()
+            };
+            let mut rows = Vec::new();
+            for tol in [1e-2, 1e-3, 1e-4, 1e-5] {
+                let fit = approximate(&surface, tol, Rule::MinimalVertexDistance, 100_000).unwrap();
+                let vertices: Vec<DVec3> = fit
+                    .spline
+                    .pieces()
+                    .iter()
+                    .filter_map(|p| p.vertex())
+                    .collect();
+                assert!(vertices.len() >= 4, "{name}: {} vertices", vertices.len());
+                let to_curve = vertices.iter().map(|&v| nearest(v).0).fold(0.0, f64::max);
+                let (t0, t1) = (nearest(vertices[0]).1, nearest(*vertices.last().unwrap()).1);
+                let to_polygon = dense
+                    .iter()
+                    .filter(|(t, _)| (t0..=t1).contains(t))
+                    .map(|&(_, x)| {
+                        vertices
+                            .windows(2)
+                            .map(|w| {
+                                let d = w[1] - w[0];
+                                let s = ((x - w[0]).dot(d) / d.length_squared()).clamp(0.0, 1.0);
+                                (x - w[0] - s * d).length()
+                            })
+                            .fold(f64::INFINITY, f64::min)
+                    })
+                    .fold(0.0, f64::max);
+                let h = fit
+                    .parameters
+                    .windows(2)
+                    .map(|w| w[1] - w[0])
+                    .fold(0.0, f64::max);
+                println!(
+                    "{name}, tolerance {tol:.0e}: {} vertices, spacing {h:.3e}, vertices to the curve {to_curve:.3e}, \
+                     curve to the polygon {to_polygon:.3e}",
+                    vertices.len()
+                );
+                rows.push((h, to_curve.max(to_polygon)));
+            }
+            let (first, last) = (rows[0], rows[rows.len() - 1]);
+            let rate = (first.1 / last.1).ln() / (first.0 / last.0).ln();
+            println!("{name}: Hausdorff distance ~ h^{rate:.2}");
+            assert!(rate > 1.5, "{name}: rate {rate}");
+            assert!(
+                rows.windows(2).all(|w| w[1].1 <= w[0].1 * (1.0 + 1e-9)),
+                "{name}: {rows:?}"
+            );
+            assert!(last.1 < 1e-2, "{name}: {last:?}");
+        }
+    }
 }

@@ -1219,4 +1219,129 @@ mod tests {
             "pairs scaled by 1.7e-200 … 1.7e200: largest gap {worst:.1e}, half angles {worst_half:.1e}"
         );
     }
+
+    /// The closest points of the lines p + s·d and q + u·e.
+    fn closest_points(p: DVec3, d: DVec3, q: DVec3, e: DVec3) -> (DVec3, DVec3) {
+        let w = p - q;
+        let (a, b, c, dd, ee) = (d.dot(d), d.dot(e), e.dot(e), d.dot(w), e.dot(w));
+        let den = a * c - b * b;
+        let (s, u) = ((b * ee - c * dd) / den, (a * ee - b * dd) / den);
+        (p + s * d, q + u * e)
+    }
+
+    /// Theorem 1, checked on random G1 elements in general position with the library's
+    /// pairs of the one-parameter family (Rule::Given μ₁) and geometry computed here: the
+    /// cones of every member touch one sphere Σ (centre: where the two axes meet, the same
+    /// for all members); the junction rulings touch Σ at points of one circle; they are
+    /// rulings of one hyperboloid of revolution Φ about the line through m normal to that
+    /// circle (equal distance R from the axis and equal q = ((p − m) × e)·N / (e·N)), and
+    /// e₁, e₂ are rulings of the other regulus (distance R, −q); the junction tangent
+    /// planes are the tangent planes of Σ at the touching points.
+    #[test]
+    fn theorem_1_sphere_hyperboloid_and_junction_circle() {
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        let mut uniform = |lo: f64, hi: f64| {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            lo + (hi - lo) * (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let (mut cases, mut worst) = (0, [0.0f64; 6]);
+        while cases < 20 {
+            let mut unit = || {
+                DVec3::new(uniform(-1.0, 1.0), uniform(-1.0, 1.0), uniform(-1.0, 1.0)).normalize()
+            };
+            let (e1, e2, q1, q2) = (unit(), unit(), unit(), unit());
+            let p1 = (q1 - q1.dot(e1) * e1).normalize();
+            let p2 = (q2 - q2.dot(e2) * e2).normalize();
+            let x2 = DVec3::new(uniform(-1.0, 1.0), uniform(-1.0, 1.0), uniform(-1.0, 1.0));
+            let (Ok(a), Ok(b)) = (
+                Element::new(DVec3::ZERO, e1, p1, "a"),
+                Element::new(x2, e2, p2, "b"),
+            ) else {
+                continue;
+            };
+            let Ok(best) = solve(&a, &b, Rule::MinimalVertexDistance, None) else {
+                continue;
+            };
+            if best.case != PairCase::General {
+                continue;
+            }
+            let mu = best.mu.unwrap().0.unwrap();
+            let members: Vec<ConePair> = [0.5, 0.8, 1.0, 1.3, 2.0, -0.7, 3.0]
+                .iter()
+                .filter_map(|&f| solve(&a, &b, Rule::Given(mu * f), None).ok())
+                .filter(|p| p.pieces.len() == 2 && p.pieces.iter().all(|q| q.vertex().is_some()))
+                .collect();
+            if members.len() < 5 {
+                continue;
+            }
+            cases += 1;
+            let size = x2.length().max(1.0);
+            // Σ: where the axes of the two cones meet, and its radius from the first plane.
+            let centre = |pair: &ConePair| {
+                let [c1, c2] = [pair.pieces[0], pair.pieces[1]];
+                let (x, y) = closest_points(
+                    c1.vertex().unwrap(),
+                    c1.axis(),
+                    c2.vertex().unwrap(),
+                    c2.axis(),
+                );
+                ((x - y).length(), 0.5 * (x + y))
+            };
+            let (_, m) = centre(&members[0]);
+            let r = (m - a.point).dot(a.normal()).abs();
+            let mut touching = Vec::new();
+            for pair in &members {
+                let (gap, mi) = centre(pair);
+                worst[0] = worst[0].max(gap / size).max((mi - m).length() / size);
+                let j = pair.pieces[0].end();
+                for plane in [a, b, j] {
+                    worst[0] = worst[0]
+                        .max(((m - plane.point).dot(plane.normal()).abs() - r).abs() / size);
+                }
+                // The junction ruling touches Σ at c, with the tangent plane of Σ there.
+                let c = j.at(j.parameter_of(m));
+                worst[1] = worst[1].max(((c - m).length() - r).abs() / size);
+                worst[2] = worst[2].max((c - m).normalize().cross(j.normal()).length());
+                touching.push((c, j));
+            }
+            // The circle: the plane of three touching points, the others in it.
+            let (c0, c1, c2) = (touching[0].0, touching[1].0, touching[2].0);
+            let n = (c1 - c0).cross(c2 - c0).normalize();
+            for (c, _) in &touching {
+                worst[3] = worst[3].max((*c - c0).dot(n).abs() / size);
+            }
+            // Φ about the line through m along n.
+            let invariant = |point: DVec3, e: DVec3| {
+                let (x, y) = closest_points(m, n, point, e);
+                ((x - y).length(), (point - m).cross(e).dot(n) / e.dot(n))
+            };
+            let (radius, q) = invariant(touching[0].1.point, touching[0].1.ruling);
+            for (_, j) in &touching {
+                let (d, qj) = invariant(j.point, j.ruling);
+                worst[4] = worst[4]
+                    .max((d - radius).abs() / size)
+                    .max((qj - q).abs() / size);
+            }
+            for el in [a, b] {
+                let (d, qe) = invariant(el.point, el.ruling);
+                worst[5] = worst[5]
+                    .max((d - radius).abs() / size)
+                    .max((qe + q).abs() / size);
+            }
+            // A line that is not a junction ruling is not a ruling of Φ: the test can fail.
+            let j = touching[0].1;
+            let tilted = DMat3::from_axis_angle(j.ruling.cross(n).normalize(), 1e-3) * j.ruling;
+            let (d, qt) = invariant(j.point, tilted);
+            assert!((d - radius).abs().max((qt - q).abs()) > 1e-6 * size);
+        }
+        println!(
+            "Theorem 1 on {cases} random element pairs: common sphere {:.1e}, junctions touching Σ {:.1e}, \
+             junction planes tangent to Σ {:.1e}, touching points coplanar {:.1e}, junctions on Φ {:.1e}, \
+             e1, e2 on the other regulus {:.1e}",
+            worst[0], worst[1], worst[2], worst[3], worst[4], worst[5]
+        );
+        assert!(worst.iter().all(|&w| w < 1e-7), "{worst:?}");
+    }
 }
