@@ -124,13 +124,13 @@ pub use rrmf_quintic::{
 // Cone spline surfaces: developables, development, bending [LP].
 pub use cone_spline::approximate::approximate as approximate_developable;
 pub use cone_spline::developable::{
-    max_scaled_curvature, Developable, DualDevelopable, RuledSurface, TangentSurface,
+    max_scaled_curvature, Developable, DualDevelopable, RuledSurface, Ruling, TangentSurface,
     DEVELOPABILITY_TOLERANCE,
 };
 pub use cone_spline::osculating::osculating_spline;
 pub use cone_spline::{
     cone_pair, Approximation, ConePair, ConePiece, ConeSpline, Element, FlatPattern, Motion,
-    PairCase, PatternEdge, PieceKind, Region, Rule,
+    PairCase, PatternEdge, PieceKind, Region, Rule, SweptBand,
 };
 
 // Sweeps along wires (lines, arcs, curves, corners) into closed solids of exact faces.

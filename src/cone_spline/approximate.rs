@@ -4,6 +4,11 @@
 //! and join consecutive ones by cone pairs. The remaining rulings are chosen adaptively: an
 //! interval whose pair deviates from the surface by more than the tolerance is halved.
 //!
+//! The region of interest Ω is the band of each ruling ([`Ruling::range`]); no vertex of the
+//! spline lies inside it (Figs. 5–6). Each pair is the rule's most useful solution whose
+//! vertices keep out of the band swept by the rulings of its interval ([`SweptBand`]), or
+//! one with a vertex just outside it; where none is, the interval is halved too.
+//!
 //! The deviation of a pair is the largest distance from the surface's points over the
 //! region (rulings sampled across the interval, points along each ruling) to the pair's
 //! pieces extended along their rulings.
@@ -14,8 +19,9 @@
 
 use super::developable::{Developable, Ruling};
 use super::element::Element;
-use super::pair::{cone_pair, ConePair, Frame, Rule};
+use super::pair::{cone_pair_in_band, ConePair, Frame, Rule};
 use super::piece::ConePiece;
+use super::region::SweptBand;
 use super::spline::ConeSpline;
 use crate::error::{invalid, Error, Result};
 use crate::math::interior_midpoint;
@@ -35,9 +41,14 @@ pub struct Approximation {
     pub inflections: Vec<f64>,
     /// The largest sampled distance from the surface to the cone spline.
     pub max_error: f64,
+    /// The smallest relative clearance of a vertex from the region of interest
+    /// ([`SweptBand::clearance`]: 0 on a ruling's end, positive outside the band, in units
+    /// of the band's width); +∞ when no piece has a vertex.
+    pub vertex_clearance: f64,
 }
 
 /// Largest distance from sampled region points of `surface` on [a, b] to the pieces.
+#[cfg(test)]
 pub fn deviation(
     surface: &dyn Developable,
     pieces: &[ConePiece],
@@ -45,10 +56,23 @@ pub fn deviation(
     b: f64,
     rulings: usize,
 ) -> Result<f64> {
+    Ok(deviation_of(
+        &sampled_rulings(surface, a, b, rulings)?,
+        pieces,
+    ))
+}
+
+/// The rulings of `surface` at `count + 1` equidistant parameters from a to b.
+fn sampled_rulings(surface: &dyn Developable, a: f64, b: f64, count: usize) -> Result<Vec<Ruling>> {
+    (0..=count)
+        .map(|k| surface.ruling(a + (b - a) * k as f64 / count as f64))
+        .collect()
+}
+
+/// Largest distance from points of the rulings' regions to the pieces.
+fn deviation_of(rulings: &[Ruling], pieces: &[ConePiece]) -> f64 {
     let mut worst = 0.0f64;
-    for k in 0..=rulings {
-        let t = a + (b - a) * k as f64 / rulings as f64;
-        let r = surface.ruling(t)?;
+    for r in rulings {
         for j in 0..POINT_SAMPLES {
             let v = r.range.0 + (r.range.1 - r.range.0) * j as f64 / (POINT_SAMPLES - 1) as f64;
             let y = r.point + v * r.direction;
@@ -59,7 +83,7 @@ pub fn deviation(
             worst = worst.max(d);
         }
     }
-    Ok(worst)
+    worst
 }
 
 /// Fits a cone spline to `surface` within `tolerance` (max distance over the region),
@@ -129,13 +153,7 @@ impl Developable for Local<'_> {
     }
 
     fn ruling(&self, t: f64) -> Result<Ruling> {
-        let r = self.surface.ruling(t)?;
-        let s = self.frame.scale();
-        Ok(Ruling {
-            point: self.frame.point_in(r.point),
-            range: (r.range.0 / s, r.range.1 / s),
-            ..r
-        })
+        Ok(self.frame.ruling_in(&self.surface.ruling(t)?))
     }
 
     fn element(&self, t: f64) -> Result<Element> {
@@ -160,7 +178,7 @@ fn approximate_local(
     let mut junctions = vec![lo];
     junctions.extend(&inflections);
     junctions.push(hi);
-    let mut accepted: Vec<(f64, ConePair, f64)> = Vec::new();
+    let mut accepted: Vec<Accepted> = Vec::new();
     for w in junctions.windows(2) {
         fit_interval(
             surface,
@@ -173,24 +191,56 @@ fn approximate_local(
         )?;
     }
     let mut parameters = vec![lo];
-    parameters.extend(accepted.iter().map(|(b, _, _)| *b));
-    let max_error = accepted.iter().map(|(_, _, e)| *e).fold(0.0, f64::max);
-    let spline = ConeSpline::new(
-        accepted
-            .into_iter()
-            .flat_map(|(_, p, _)| p.pieces)
-            .collect(),
-    )?;
+    parameters.extend(accepted.iter().map(|x| x.end));
+    let max_error = accepted.iter().map(|x| x.error).fold(0.0, f64::max);
+    let vertex_clearance = accepted
+        .iter()
+        .map(|x| x.clearance)
+        .fold(f64::INFINITY, f64::min);
+    let spline = ConeSpline::new(accepted.into_iter().flat_map(|x| x.pair.pieces).collect())?;
     Ok(Approximation {
         spline,
         parameters,
         inflections,
         max_error,
+        vertex_clearance,
     })
 }
 
+/// An accepted interval: its end parameter, its pair, the pair's deviation and the
+/// clearance of its vertices from the region.
+struct Accepted {
+    end: f64,
+    pair: ConePair,
+    error: f64,
+    clearance: f64,
+}
+
+/// The pair of the interval [a, b] by `rule` with no vertex in the region swept by the
+/// rulings, and its deviation.
+fn interval_pair(
+    surface: &dyn Developable,
+    a: f64,
+    b: f64,
+    rule: Rule,
+) -> Result<(ConePair, f64, f64)> {
+    let (ea, eb) = (surface.element(a)?, surface.element(b)?);
+    let band = SweptBand::new(sampled_rulings(surface, a, b, RULING_SAMPLES)?);
+    let pair = cone_pair_in_band(
+        &ea,
+        &eb,
+        rule,
+        &band,
+        ("the ruling at t_a", "the ruling at t_b"),
+    )?;
+    let error = deviation_of(band.rulings(), &pair.pieces);
+    let clearance = band.clearance(&pair.pieces);
+    Ok((pair, error, clearance))
+}
+
 /// Accepts [a, b] with its pair if it is within the tolerance, else halves it (depth
-/// first, so `out` stays ordered by parameter).
+/// first, so `out` stays ordered by parameter). An interval whose rulings no admissible
+/// pair joins is halved as well.
 fn fit_interval(
     surface: &dyn Developable,
     a: f64,
@@ -198,39 +248,32 @@ fn fit_interval(
     tolerance: f64,
     rule: Rule,
     max_pieces: usize,
-    out: &mut Vec<(f64, ConePair, f64)>,
+    out: &mut Vec<Accepted>,
 ) -> Result<()> {
-    let (ea, eb) = (surface.element(a)?, surface.element(b)?);
-    let attempt = cone_pair(
-        &ea,
-        &eb,
-        rule,
-        None,
-        ("the ruling at t_a", "the ruling at t_b"),
-    )
-    .and_then(|pair| {
-        Ok((
-            deviation(surface, &pair.pieces, a, b, RULING_SAMPLES)?,
-            pair,
-        ))
-    });
-    if let Ok((error, pair)) = &attempt {
+    let attempt = interval_pair(surface, a, b, rule);
+    if let Ok((pair, error, clearance)) = &attempt {
         if *error <= tolerance {
-            out.push((b, pair.clone(), *error));
+            out.push(Accepted {
+                end: b,
+                pair: pair.clone(),
+                error: *error,
+                clearance: *clearance,
+            });
             return Ok(());
         }
     }
-    let pieces_so_far: usize = out.iter().map(|(_, p, _)| p.pieces.len()).sum();
+    let pieces_so_far: usize = out.iter().map(|x| x.pair.pieces.len()).sum();
     let (lo, hi) = surface.domain();
     let too_fine = pieces_so_far + 4 > max_pieces || b - a < 1e-9 * (hi - lo);
     let Some(m) = interior_midpoint(a, b).filter(|_| !too_fine) else {
         return Err(Error::not_converged(match attempt {
-            Ok((error, _)) => format!(
+            Ok((_, error, _)) => format!(
                 "tolerance {tolerance:.3e} not reached with at most {max_pieces} pieces \
                  (deviation {error:.3e} on [{a}, {b}])"
             ),
             Err(e) => format!(
-                "no cone pair joins the rulings at t = {a} and t = {b}: {}",
+                "no cone pair joins the rulings at t = {a} and t = {b} with its vertices \
+                 outside the region of interest (within at most {max_pieces} pieces): {}",
                 e.message()
             ),
         }));
@@ -465,6 +508,207 @@ mod tests {
         ] {
             let dense = deviation(&surface, fit.spline.pieces(), a, b, 100).unwrap();
             assert!(dense <= 1e-2, "dense deviation {dense:e} on [{a}, {b}]");
+        }
+    }
+
+    /// The fit as it was before the region was taken into account: the default pair of each
+    /// interval whatever its vertices, halved for the tolerance alone. Returns the accepted
+    /// intervals with their pairs.
+    fn fit_ignoring_the_region(
+        surface: &dyn Developable,
+        a: f64,
+        b: f64,
+        tolerance: f64,
+        out: &mut Vec<(f64, f64, ConePair)>,
+    ) {
+        let (ea, eb) = (surface.element(a).unwrap(), surface.element(b).unwrap());
+        let pair =
+            super::super::pair::cone_pair(&ea, &eb, Rule::MinimalVertexDistance, None, ("a", "b"));
+        if let Ok(pair) = pair {
+            if deviation(surface, &pair.pieces, a, b, RULING_SAMPLES).unwrap() <= tolerance {
+                out.push((a, b, pair));
+                return;
+            }
+        }
+        let m = 0.5 * (a + b);
+        fit_ignoring_the_region(surface, a, m, tolerance, out);
+        fit_ignoring_the_region(surface, m, b, tolerance, out);
+    }
+
+    fn clearance_ignoring_the_region(surface: &dyn Developable, tolerance: f64) -> f64 {
+        let (lo, hi) = surface.domain();
+        let mut out = Vec::new();
+        fit_ignoring_the_region(surface, lo, hi, tolerance, &mut out);
+        out.iter()
+            .map(|(a, b, pair)| {
+                let band =
+                    SweptBand::new(sampled_rulings(surface, *a, *b, RULING_SAMPLES).unwrap());
+                band.clearance(&pair.pieces)
+            })
+            .fold(f64::INFINITY, f64::min)
+    }
+
+    /// Issue 12 item 1: the fit ignored the region. On the tangent surface of the twisted
+    /// cubic, v ∈ [0.01, 1] (a wide band close to the curve), the default pairs of the old
+    /// halving put vertices well inside the band; the fit now keeps every vertex out of it
+    /// and reports the smallest clearance.
+    #[test]
+    fn vertices_keep_out_of_the_region() {
+        let curve = twisted_cubic(0.2, 1.2);
+        let surface = tangent_surface(&curve, 0.01, 1.0);
+        for tol in [1e-2, 1e-3] {
+            let old = clearance_ignoring_the_region(&surface, tol);
+            let fit = approximate(&surface, tol, Rule::MinimalVertexDistance, 10_000).unwrap();
+            println!(
+                "v in [0.01, 1], tolerance {tol:e}: smallest vertex clearance {old:.3e} before, {:.3e} now ({} pieces)",
+                fit.vertex_clearance,
+                fit.spline.pieces().len()
+            );
+            assert!(old < -0.01, "the old fit had a vertex inside: {old:e}");
+            assert!(fit.vertex_clearance >= 0.0, "{}", fit.vertex_clearance);
+            assert!(fit.max_error <= tol);
+            // Independently of the fit's own report: every vertex against the band of the
+            // surface's ruling at the end of its piece that is a selected ruling.
+            let mut k = 0;
+            for w in fit.parameters.windows(2) {
+                let rulings = [surface.ruling(w[0]).unwrap(), surface.ruling(w[1]).unwrap()];
+                let band = SweptBand::new(rulings.to_vec());
+                let mut pieces = Vec::new();
+                while k < fit.spline.pieces().len() {
+                    let p = fit.spline.pieces()[k];
+                    pieces.push(p);
+                    k += 1;
+                    if p.end().ruling.dot(rulings[1].direction) > 1.0 - 1e-12 {
+                        break;
+                    }
+                }
+                let first = pieces[0];
+                if let Some(v) = first.vertex() {
+                    let s = (v - rulings[0].point).dot(rulings[0].direction);
+                    let (lo, hi) = rulings[0].range;
+                    assert!(
+                        s <= lo + 1e-9 * (hi - lo) || s >= hi - 1e-9 * (hi - lo),
+                        "vertex at {s} in [{lo}, {hi}]"
+                    );
+                }
+                assert!(band.clearance(&pieces) >= 0.0);
+            }
+        }
+    }
+
+    /// Property-style: random twisted cubics scaled and sheared, random bands on either
+    /// side of the curve; every fit has every vertex outside the region.
+    #[test]
+    fn random_tangent_surfaces_have_no_vertex_in_the_region() {
+        let mut state = 0x2545_f491_4f6c_dd1du64;
+        let mut uniform = |lo: f64, hi: f64| {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            lo + (hi - lo) * (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut worst = f64::INFINITY;
+        for _ in 0..12 {
+            let t0 = uniform(-1.0, 0.5);
+            let curve = twisted_cubic(t0, t0 + uniform(0.3, 1.2));
+            let near = uniform(0.002, 0.2);
+            let (v0, v1) = if uniform(0.0, 1.0) < 0.5 {
+                (near, near + uniform(0.3, 2.0))
+            } else {
+                (-near - uniform(0.3, 2.0), -near)
+            };
+            let surface = tangent_surface(&curve, v0, v1);
+            let tol = 10f64.powf(uniform(-3.5, -1.5));
+            let fit = approximate(&surface, tol, Rule::MinimalVertexDistance, 100_000)
+                .unwrap_or_else(|e| panic!("t0 {t0}, v [{v0}, {v1}], tol {tol:e}: {e}"));
+            assert!(
+                fit.vertex_clearance >= -super::super::region::BOUNDARY_MARGIN,
+                "v [{v0}, {v1}]: {}",
+                fit.vertex_clearance
+            );
+            worst = worst.min(fit.vertex_clearance);
+        }
+        println!("12 random tangent surfaces: smallest vertex clearance {worst:.3e}");
+    }
+
+    /// Figs. 11–12: the vertex polygon of the fit approximates the line of regression,
+    /// which the fit never uses. For the tangent surfaces of the twisted cubic (general
+    /// case) and of a helix (constant slope) at decreasing tolerances: the largest distance
+    /// from a vertex to the curve and from the curve (between the first and the last
+    /// vertex's nearest parameters) to the polygon, against the largest ruling spacing h.
+    #[test]
+    fn the_vertex_polygon_approaches_the_line_of_regression() {
+        let helix = Helix {
+            radius: 1.0,
+            pitch: 0.5,
+            domain: (0.0, 4.0),
+        };
+        let cubic = twisted_cubic(-0.5, 1.0);
+        let curves: [(&str, &dyn crate::curve::ParametricCurve); 2] =
+            [("twisted cubic", &cubic), ("helix", &helix)];
+        for (name, curve) in curves {
+            let surface = tangent_surface(curve, 0.5, 1.5);
+            let (lo, hi) = curve.domain();
+            let dense: Vec<(f64, DVec3)> = (0..=20_000)
+                .map(|k| {
+                    let t = lo + (hi - lo) * k as f64 / 20_000.0;
+                    (t, curve.point_derivative(t).unwrap().0)
+                })
+                .collect();
+            let nearest = |v: DVec3| {
+                dense
+                    .iter()
+                    .map(|&(t, x)| ((x - v).length(), t))
+                    .min_by(|a, b| a.0.total_cmp(&b.0))
+                    .unwrap()
+            };
+            let mut rows = Vec::new();
+            for tol in [1e-2, 1e-3, 1e-4, 1e-5] {
+                let fit = approximate(&surface, tol, Rule::MinimalVertexDistance, 100_000).unwrap();
+                let vertices: Vec<DVec3> = fit
+                    .spline
+                    .pieces()
+                    .iter()
+                    .filter_map(|p| p.vertex())
+                    .collect();
+                assert!(vertices.len() >= 4, "{name}: {} vertices", vertices.len());
+                let to_curve = vertices.iter().map(|&v| nearest(v).0).fold(0.0, f64::max);
+                let (t0, t1) = (nearest(vertices[0]).1, nearest(*vertices.last().unwrap()).1);
+                let to_polygon = dense
+                    .iter()
+                    .filter(|(t, _)| (t0..=t1).contains(t))
+                    .map(|&(_, x)| {
+                        vertices
+                            .windows(2)
+                            .map(|w| {
+                                let d = w[1] - w[0];
+                                let s = ((x - w[0]).dot(d) / d.length_squared()).clamp(0.0, 1.0);
+                                (x - w[0] - s * d).length()
+                            })
+                            .fold(f64::INFINITY, f64::min)
+                    })
+                    .fold(0.0, f64::max);
+                let h = fit
+                    .parameters
+                    .windows(2)
+                    .map(|w| w[1] - w[0])
+                    .fold(0.0, f64::max);
+                println!(
+                    "{name}, tolerance {tol:.0e}: {} vertices, spacing {h:.3e}, vertices to the curve {to_curve:.3e}, \
+                     curve to the polygon {to_polygon:.3e}",
+                    vertices.len()
+                );
+                rows.push((h, to_curve.max(to_polygon)));
+            }
+            let (first, last) = (rows[0], rows[rows.len() - 1]);
+            let rate = (first.1 / last.1).ln() / (first.0 / last.0).ln();
+            println!("{name}: Hausdorff distance ~ h^{rate:.2}");
+            assert!(rate > 1.5, "{name}: rate {rate}");
+            assert!(
+                rows.windows(2).all(|w| w[1].1 <= w[0].1 * (1.0 + 1e-9)),
+                "{name}: {rows:?}"
+            );
+            assert!(last.1 < 1e-2, "{name}: {last:?}");
         }
     }
 }

@@ -30,10 +30,11 @@
 //! surface rulings 0.001 apart all join (330 did before).
 
 use super::biarc::{biarc, equal_lambda, lambda_through, partner_lambda, Biarc};
+use super::developable::Ruling;
 use super::element::{check_consecutive, Element};
 use super::piece::ConePiece;
 use super::piece::Motion;
-use super::region::Region;
+use super::region::{Region, SweptBand};
 use crate::error::no_solution;
 use crate::error::{invalid, Error, Result};
 use crate::math::{quadratic_roots, secant_refine, solve_refined};
@@ -113,6 +114,31 @@ pub fn cone_pair(
     region: Option<&Region>,
     names: (&str, &str),
 ) -> Result<ConePair> {
+    solve_pair(a, b, rule, region.map(|&r| KeepOut::Box(r)), names)
+}
+
+/// [`cone_pair`] with no vertex inside the region swept by the rulings `band` of the
+/// surface at `a` and `b` (instead of a box): the approximation's pairs. As for a box, the
+/// rule's most useful admissible solution is taken, and for the default rule, where both
+/// roots of (12) put a vertex inside, one with a vertex just outside the band on either
+/// ruling.
+pub fn cone_pair_in_band(
+    a: &Element,
+    b: &Element,
+    rule: Rule,
+    band: &SweptBand,
+    names: (&str, &str),
+) -> Result<ConePair> {
+    solve_pair(a, b, rule, Some(KeepOut::Band(band)), names)
+}
+
+fn solve_pair(
+    a: &Element,
+    b: &Element,
+    rule: Rule,
+    keep_out: Option<KeepOut<'_>>,
+    names: (&str, &str),
+) -> Result<ConePair> {
     check_consecutive(a, b, names.0, names.1)?;
     if let Rule::Given(x) = rule {
         if !x.is_finite() {
@@ -124,7 +150,7 @@ pub fn cone_pair(
         Rule::Given(x) => Rule::Given(x / frame.scale),
         other => other,
     };
-    let omega = region.map(|&region| Omega { region, frame });
+    let omega = keep_out.map(|keep_out| Omega::new(keep_out, frame));
     let pair = local_pair(
         &frame.element_in(a),
         &frame.element_in(b),
@@ -171,6 +197,15 @@ impl Frame {
 
     fn point_out(&self, x: DVec3) -> DVec3 {
         x * self.scale + self.centre
+    }
+
+    /// A ruling of a developable in these coordinates (its band scaled with them).
+    pub(crate) fn ruling_in(&self, r: &Ruling) -> Ruling {
+        Ruling {
+            point: self.point_in(r.point),
+            range: (r.range.0 / self.scale, r.range.1 / self.scale),
+            ..*r
+        }
     }
 
     pub(crate) fn element_in(&self, e: &Element) -> Element {
@@ -222,28 +257,63 @@ impl Frame {
     }
 }
 
+/// Where the vertices of a pair must not lie, in the caller's coordinates.
+#[derive(Clone, Copy, Debug)]
+enum KeepOut<'a> {
+    /// A box (Hermite interpolation).
+    Box(Region),
+    /// The region swept by the surface's rulings between the two elements (approximation).
+    Band(&'a SweptBand),
+}
+
+/// Where the vertices must not lie, seen from the local coordinates of a [`Frame`]: a box
+/// in the caller's coordinates, a band carried into the local ones.
+enum LocalKeepOut {
+    Box(Region),
+    Band(SweptBand),
+}
+
 /// The caller's region of interest seen from the local coordinates of a [`Frame`].
 struct Omega {
-    region: Region,
+    keep_out: LocalKeepOut,
     frame: Frame,
 }
 
 impl Omega {
-    fn contains(&self, x: DVec3) -> bool {
-        self.region.contains(self.frame.point_out(x))
+    fn new(keep_out: KeepOut<'_>, frame: Frame) -> Self {
+        let keep_out = match keep_out {
+            KeepOut::Band(band) => LocalKeepOut::Band(band.map(|r| frame.ruling_in(r))),
+            KeepOut::Box(region) => LocalKeepOut::Box(region),
+        };
+        Self { keep_out, frame }
     }
 
-    /// [`Region::clip_line`] of a local line, in local distances.
-    fn clip_line(&self, point: DVec3, direction: DVec3) -> Option<(f64, f64)> {
-        self.region
-            .clip_line(self.frame.point_out(point), direction)
-            .map(|(lo, hi)| (lo / self.frame.scale, hi / self.frame.scale))
+    /// Whether no vertex of the local pieces lies inside the region.
+    fn admits(&self, pieces: &[ConePiece]) -> bool {
+        match &self.keep_out {
+            LocalKeepOut::Box(region) => !pieces
+                .iter()
+                .filter_map(ConePiece::vertex)
+                .any(|v| region.contains(self.frame.point_out(v))),
+            LocalKeepOut::Band(band) => band.admits(pieces),
+        }
     }
 
-    /// How far outside the box a vertex is placed: 1e-6 of its diagonal, local.
-    fn margin(&self) -> f64 {
-        let r = &self.region;
-        1e-6 * crate::math::robust_length(r.max - r.min) / self.frame.scale
+    /// The region on the pair's first (`end` false) or last ruling, along the local line
+    /// `point + s·direction` on it, in local distances, with the distance by which a vertex
+    /// is placed outside it: for a box its clip ([`Region::clip_line`]) and 1e-6 of its
+    /// diagonal.
+    fn on_ruling(&self, end: bool, point: DVec3, direction: DVec3) -> Option<((f64, f64), f64)> {
+        match &self.keep_out {
+            LocalKeepOut::Box(region) => {
+                let s = self.frame.scale;
+                let margin = 1e-6 * crate::math::robust_length(region.max - region.min) / s;
+                region
+                    .clip_line(self.frame.point_out(point), direction)
+                    .map(|(lo, hi)| ((lo / s, hi / s), margin))
+            }
+            LocalKeepOut::Band(band) => Some(band.on_ruling(end, point, direction)),
+        }
     }
 }
 
@@ -432,12 +502,7 @@ fn total_angle(pieces: &[ConePiece]) -> f64 {
 }
 
 fn has_vertex_in(pieces: &[ConePiece], region: Option<&Omega>) -> bool {
-    region.is_some_and(|r| {
-        pieces
-            .iter()
-            .filter_map(ConePiece::vertex)
-            .any(|v| r.contains(v))
-    })
+    region.is_some_and(|r| !r.admits(pieces))
 }
 
 /// Vertex parameters (μ₁, μ₂); `None` is a vertex at infinity.
@@ -520,15 +585,14 @@ impl VertexFamily {
     /// Vertices just outside the region on either ruling, for when the rule's own choice
     /// puts a vertex inside it.
     fn boundary_candidates(&self, region: &Omega) -> Vec<VertexParameters> {
-        let margin = region.margin();
         let mut out = self.candidates(Rule::CylinderFirst);
         out.extend(self.candidates(Rule::CylinderSecond));
-        if let Some((lo, hi)) = region.clip_line(self.a1, self.e1) {
+        if let Some(((lo, hi), margin)) = region.on_ruling(false, self.a1, self.e1) {
             for mu1 in [lo - margin, hi + margin] {
                 out.push((Some(mu1), self.mu2(mu1)));
             }
         }
-        if let Some((lo, hi)) = region.clip_line(self.a2, -self.e2) {
+        if let Some(((lo, hi), margin)) = region.on_ruling(true, self.a2, -self.e2) {
             for mu2 in [lo - margin, hi + margin] {
                 out.push((self.mu1(mu2), Some(mu2)));
             }
@@ -713,12 +777,6 @@ fn cone_case(
             "the rulings intersect: every cone pair has their common vertex, none is a cylinder",
         ));
     }
-    if region.is_some_and(|r| r.contains(v)) {
-        return no_solution!(
-            "the region of interest contains every possible vertex: the rulings meet at {}",
-            region.map_or(v, |r| r.frame.point_out(v))
-        );
-    }
     let (s1, s2) = (a.parameter_of(v), b.parameter_of(v));
     if s1 == 0.0 || s2 == 0.0 || (s1 < 0.0) != (s2 < 0.0) {
         return Err(Error::no_solution(
@@ -734,6 +792,12 @@ fn cone_case(
     let junction = sigma * (arcs.c - v);
     let first = ConePiece::cone(v, *a, junction)?;
     let second = ConePiece::cone(v, first.end(), b.ruling)?;
+    if has_vertex_in(&[first, second], region) {
+        return no_solution!(
+            "the region of interest contains every possible vertex: the rulings meet at {}",
+            region.map_or(v, |r| r.frame.point_out(v))
+        );
+    }
     joins(&second.end(), b, scale)?;
     Ok(ConePair {
         case: PairCase::Cone,
@@ -1154,5 +1218,130 @@ mod tests {
         println!(
             "pairs scaled by 1.7e-200 … 1.7e200: largest gap {worst:.1e}, half angles {worst_half:.1e}"
         );
+    }
+
+    /// The closest points of the lines p + s·d and q + u·e.
+    fn closest_points(p: DVec3, d: DVec3, q: DVec3, e: DVec3) -> (DVec3, DVec3) {
+        let w = p - q;
+        let (a, b, c, dd, ee) = (d.dot(d), d.dot(e), e.dot(e), d.dot(w), e.dot(w));
+        let den = a * c - b * b;
+        let (s, u) = ((b * ee - c * dd) / den, (a * ee - b * dd) / den);
+        (p + s * d, q + u * e)
+    }
+
+    /// Theorem 1, checked on random G1 elements in general position with the library's
+    /// pairs of the one-parameter family (Rule::Given μ₁) and geometry computed here: the
+    /// cones of every member touch one sphere Σ (centre: where the two axes meet, the same
+    /// for all members); the junction rulings touch Σ at points of one circle; they are
+    /// rulings of one hyperboloid of revolution Φ about the line through m normal to that
+    /// circle (equal distance R from the axis and equal q = ((p − m) × e)·N / (e·N)), and
+    /// e₁, e₂ are rulings of the other regulus (distance R, −q); the junction tangent
+    /// planes are the tangent planes of Σ at the touching points.
+    #[test]
+    fn theorem_1_sphere_hyperboloid_and_junction_circle() {
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        let mut uniform = |lo: f64, hi: f64| {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            lo + (hi - lo) * (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let (mut cases, mut worst) = (0, [0.0f64; 6]);
+        while cases < 20 {
+            let mut unit = || {
+                DVec3::new(uniform(-1.0, 1.0), uniform(-1.0, 1.0), uniform(-1.0, 1.0)).normalize()
+            };
+            let (e1, e2, q1, q2) = (unit(), unit(), unit(), unit());
+            let p1 = (q1 - q1.dot(e1) * e1).normalize();
+            let p2 = (q2 - q2.dot(e2) * e2).normalize();
+            let x2 = DVec3::new(uniform(-1.0, 1.0), uniform(-1.0, 1.0), uniform(-1.0, 1.0));
+            let (Ok(a), Ok(b)) = (
+                Element::new(DVec3::ZERO, e1, p1, "a"),
+                Element::new(x2, e2, p2, "b"),
+            ) else {
+                continue;
+            };
+            let Ok(best) = solve(&a, &b, Rule::MinimalVertexDistance, None) else {
+                continue;
+            };
+            if best.case != PairCase::General {
+                continue;
+            }
+            let mu = best.mu.unwrap().0.unwrap();
+            let members: Vec<ConePair> = [0.5, 0.8, 1.0, 1.3, 2.0, -0.7, 3.0]
+                .iter()
+                .filter_map(|&f| solve(&a, &b, Rule::Given(mu * f), None).ok())
+                .filter(|p| p.pieces.len() == 2 && p.pieces.iter().all(|q| q.vertex().is_some()))
+                .collect();
+            if members.len() < 5 {
+                continue;
+            }
+            cases += 1;
+            let size = x2.length().max(1.0);
+            // Σ: where the axes of the two cones meet, and its radius from the first plane.
+            let centre = |pair: &ConePair| {
+                let [c1, c2] = [pair.pieces[0], pair.pieces[1]];
+                let (x, y) = closest_points(
+                    c1.vertex().unwrap(),
+                    c1.axis(),
+                    c2.vertex().unwrap(),
+                    c2.axis(),
+                );
+                ((x - y).length(), 0.5 * (x + y))
+            };
+            let (_, m) = centre(&members[0]);
+            let r = (m - a.point).dot(a.normal()).abs();
+            let mut touching = Vec::new();
+            for pair in &members {
+                let (gap, mi) = centre(pair);
+                worst[0] = worst[0].max(gap / size).max((mi - m).length() / size);
+                let j = pair.pieces[0].end();
+                for plane in [a, b, j] {
+                    worst[0] = worst[0]
+                        .max(((m - plane.point).dot(plane.normal()).abs() - r).abs() / size);
+                }
+                // The junction ruling touches Σ at c, with the tangent plane of Σ there.
+                let c = j.at(j.parameter_of(m));
+                worst[1] = worst[1].max(((c - m).length() - r).abs() / size);
+                worst[2] = worst[2].max((c - m).normalize().cross(j.normal()).length());
+                touching.push((c, j));
+            }
+            // The circle: the plane of three touching points, the others in it.
+            let (c0, c1, c2) = (touching[0].0, touching[1].0, touching[2].0);
+            let n = (c1 - c0).cross(c2 - c0).normalize();
+            for (c, _) in &touching {
+                worst[3] = worst[3].max((*c - c0).dot(n).abs() / size);
+            }
+            // Φ about the line through m along n.
+            let invariant = |point: DVec3, e: DVec3| {
+                let (x, y) = closest_points(m, n, point, e);
+                ((x - y).length(), (point - m).cross(e).dot(n) / e.dot(n))
+            };
+            let (radius, q) = invariant(touching[0].1.point, touching[0].1.ruling);
+            for (_, j) in &touching {
+                let (d, qj) = invariant(j.point, j.ruling);
+                worst[4] = worst[4]
+                    .max((d - radius).abs() / size)
+                    .max((qj - q).abs() / size);
+            }
+            for el in [a, b] {
+                let (d, qe) = invariant(el.point, el.ruling);
+                worst[5] = worst[5]
+                    .max((d - radius).abs() / size)
+                    .max((qe + q).abs() / size);
+            }
+            // A line that is not a junction ruling is not a ruling of Φ: the test can fail.
+            let j = touching[0].1;
+            let tilted = DMat3::from_axis_angle(j.ruling.cross(n).normalize(), 1e-3) * j.ruling;
+            let (d, qt) = invariant(j.point, tilted);
+            assert!((d - radius).abs().max((qt - q).abs()) > 1e-6 * size);
+        }
+        println!(
+            "Theorem 1 on {cases} random element pairs: common sphere {:.1e}, junctions touching Σ {:.1e}, \
+             junction planes tangent to Σ {:.1e}, touching points coplanar {:.1e}, junctions on Φ {:.1e}, \
+             e1, e2 on the other regulus {:.1e}",
+            worst[0], worst[1], worst[2], worst[3], worst[4], worst[5]
+        );
+        assert!(worst.iter().all(|&w| w < 1e-7), "{worst:?}");
     }
 }

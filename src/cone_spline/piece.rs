@@ -10,6 +10,11 @@
 //! circular arc, and the development and bending of Section "Bending sequences" only change
 //! the half angle α and the segment angle φ with φ sin α fixed.
 //!
+//! The dual form of a piece (Fig. 1) is its tangent planes as a rational quadratic curve of
+//! planes: the tangent planes U₀, U₂ at the bounding rulings in normalized plane
+//! coordinates, and the Bézier plane U₁ through both bounding rulings with the weight
+//! w₁ = |(u₁₁, u₁₂, u₁₃)| = cos α / cos β, α and β the angles of the axis with U₀ and U₁.
+//!
 //! The rotation sense is chosen so that the piece leaves its start ruling towards the side
 //! vector p at the reference point. On the far nappe of a cone (reference point and inscribed
 //! sphere on different sides of the vertex) this is the complementary arc of Figs. 5–6.
@@ -322,6 +327,42 @@ impl ConePiece {
             .collect()
     }
 
+    /// The dual form (Fig. 1): per patch (as [`patches`](Self::patches) splits the piece),
+    /// the Bézier planes U₀, w₁U₁, U₂ as plane coordinates (u₁, u₂, u₃, u₀) in glam's
+    /// (x, y, z, w) order, a point X on a plane iff `plane.dot(X) = 0`. U₀ and U₂ are the
+    /// tangent planes at the patch's bounding rulings with unit normals; U₁ contains both
+    /// bounding rulings and carries the weight w₁ = cos α / cos β as the length of its
+    /// normal part, so that (1 − s)²U₀ + 2s(1 − s)w₁U₁ + s²U₂ are the tangent planes of the
+    /// patch (a plane piece gives its plane three times).
+    ///
+    /// The tangent-plane normals n(θ) of a rotation about k turn on a circle about k: as a
+    /// rational quadratic arc of half angle φ/2 the middle normal is the one at θ = φ/2
+    /// with its component normal to k divided by cos(φ/2), at weight cos(φ/2) — weighted,
+    /// its axial part times cos(φ/2) and its radial part unchanged. That plane contains
+    /// the start ruling, so it passes through the start point.
+    pub fn bezier_planes(&self) -> Vec<[DVec4; 3]> {
+        let m = self.patch_count();
+        let part = self.part(1.0 / m as f64);
+        let plane = |n: DVec3, x: DVec3| n.extend(-n.dot(x));
+        (0..m)
+            .map(|j| {
+                let start = self.element_at(j as f64 / m as f64);
+                let end = part.element(&start, 1.0);
+                let u0 = plane(start.normal(), start.point);
+                let u2 = plane(end.normal(), end.point);
+                let u1 = match part {
+                    Motion::Rotation { axis, angle, .. } => {
+                        let middle = DMat3::from_axis_angle(axis, 0.5 * angle) * start.normal();
+                        let axial = middle.dot(axis) * axis;
+                        plane(middle - axial + (0.5 * angle).cos() * axial, start.point)
+                    }
+                    Motion::Translation(_) => u0,
+                };
+                [u0, u1, u2]
+            })
+            .collect()
+    }
+
     /// The motion restricted to its first fraction `f` (for the sub-patches).
     fn part(&self, f: f64) -> Motion {
         match self.motion {
@@ -459,5 +500,89 @@ mod tests {
         let strip = ConePiece::cylinder(start, DVec3::new(1.0, 2.0, 0.0)).unwrap();
         assert_eq!(strip.kind(), PieceKind::Plane);
         assert!(ConePiece::cylinder(start, DVec3::new(1.0, -2.0, 0.0)).is_err());
+    }
+
+    /// The largest departure of the curve of planes (1 − s)²U₀ + 2s(1 − s)U₁ + s²U₂ of
+    /// one patch (fractions f0 … f1 of the piece) from the piece's tangent planes: at each
+    /// s, the plane's unit normal against the normal of the piece's ruling at the same
+    /// angle about the axis, and the distance of that ruling's points from the plane.
+    fn tangency_residual(piece: &ConePiece, planes: [DVec4; 3], f0: f64, f1: f64) -> f64 {
+        let Motion::Rotation { axis, angle, .. } = piece.motion else {
+            return 0.0;
+        };
+        let n0 = radial(piece.element_at(f0).normal(), axis);
+        let mut worst = 0.0f64;
+        for k in 0..=16 {
+            let s = k as f64 / 16.0;
+            let [u0, u1, u2] = planes;
+            let u = (1.0 - s) * (1.0 - s) * u0 + 2.0 * s * (1.0 - s) * u1 + s * s * u2;
+            let (n, offset) = (u.truncate().normalize(), u.w / u.truncate().length());
+            let theta = signed_angle(n0, radial(n, axis), axis);
+            let f = f0 + theta / angle;
+            assert!(
+                (f0 - 1e-9..=f1 + 1e-9).contains(&f),
+                "s = {s}: f = {f} not in [{f0}, {f1}]"
+            );
+            let el = piece.element_at(f);
+            worst = worst
+                .max((n - el.normal()).length())
+                .max((n.dot(el.at(-1.0)) + offset).abs())
+                .max((n.dot(el.at(2.0)) + offset).abs());
+        }
+        worst
+    }
+
+    /// Fig. 1: the dual form of cone and cylinder pieces. The weighted Bézier planes give
+    /// the tangent planes of the piece, U₁ contains both bounding rulings, and its weight
+    /// is cos α / cos β with α, β the angles of the axis with U₀ and with the plane through
+    /// the two rulings (computed here from the rulings, not from the planes).
+    #[test]
+    fn bezier_planes_are_the_tangent_planes_with_weight_cos_alpha_over_cos_beta() {
+        let mut pieces = super::super::test_support::cubic_hermite(&[0.3, 0.5, 0.7, 0.9])
+            .pieces()
+            .to_vec();
+        let s = std::f64::consts::FRAC_1_SQRT_2;
+        let start = element(DVec3::new(1.0, 0.0, 1.0), DVec3::new(s, 0.0, s), DVec3::Y);
+        let cone = |start: Element| ConePiece::cone(DVec3::ZERO, start, DVec3::new(0.0, s, s));
+        pieces.push(cone(start).unwrap());
+        // 3π/2 on the far nappe: two patches.
+        pieces.push(cone(start.with_point(-start.point)).unwrap());
+        let axial = element(DVec3::new(1.0, 0.0, 0.0), DVec3::Z, DVec3::Y);
+        pieces.push(ConePiece::cylinder(axial, DVec3::new(-1.0, 0.0, 5.0)).unwrap());
+        let (mut weight, mut tangency, mut rulings) = (0.0f64, 0.0f64, 0.0f64);
+        for piece in &pieces {
+            let planes = piece.bezier_planes();
+            let m = piece.patch_count();
+            assert_eq!(planes.len(), m);
+            for (j, &[u0, u1, u2]) in planes.iter().enumerate() {
+                let (f0, f1) = (j as f64 / m as f64, (j + 1) as f64 / m as f64);
+                let (a, b) = (piece.element_at(f0), piece.element_at(f1));
+                assert!((u0.truncate().length() - 1.0).abs() < 1e-15);
+                assert!((u2.truncate().length() - 1.0).abs() < 1e-15);
+                let w = u1.truncate().length();
+                for x in [a.at(-1.0), a.at(2.0), b.at(-1.0), b.at(2.0)] {
+                    rulings = rulings.max(u1.dot(x.extend(1.0)).abs() / w);
+                }
+                let k = piece.axis();
+                let through = match piece.kind() {
+                    PieceKind::Cone => a.ruling.cross(b.ruling),
+                    _ => a.ruling.cross(b.point - a.point),
+                }
+                .normalize();
+                let alpha = k.dot(a.normal()).abs().asin();
+                let beta = k.dot(through).abs().asin();
+                weight = weight.max((w - alpha.cos() / beta.cos()).abs());
+                tangency = tangency.max(tangency_residual(piece, [u0, u1, u2], f0, f1));
+                // A weight off by 1% is not the tangent planes.
+                let off = tangency_residual(piece, [u0, 1.01 * u1, u2], f0, f1);
+                assert!(off > 1e-7, "a perturbed weight passes: {off:e}");
+            }
+        }
+        println!(
+            "Bézier planes of {} pieces: weight − cos α / cos β {weight:.1e}, tangency {tangency:.1e}, \
+             U1 off the rulings {rulings:.1e}",
+            pieces.len()
+        );
+        assert!(weight < 1e-12 && tangency < 1e-12 && rulings < 1e-12);
     }
 }
