@@ -1823,8 +1823,10 @@ RmfStatus rmf_cone_spline_approximate_dual_with_options(uint32_t degree,
  * The osculating cone spline of a tangent surface (Section "Osculating cone splines"):
  * the osculating cones along the rulings at `parameters` (vertex on the curve, axis along
  * the Darboux vector τe + κb), consecutive ones joined by a filling cone found from the
- * quartic (14), keeping the consistent solutions. Consecutive parameters must be close
- * enough for a consistent filling cone to exist.
+ * quartic (14), keeping the consistent solutions. Translated cones (constant slope: a
+ * screw flight) are joined by translated cones; osculating cylinders and planes by a
+ * segment of each and a Hermite cone pair between them (G1, four pieces per interval).
+ * An interval without a consistent filling cone is halved, up to 6 times.
  *
  * Deprecated: use rmf_cone_spline_osculating_curve (a callback as a curve from
  * rmf_callback_curve_create). This function stays, with the same results, for at least one
@@ -1838,8 +1840,10 @@ RmfStatus rmf_cone_spline_approximate_dual_with_options(uint32_t degree,
  * @return RMF_OK on success.
  * @return RMF_ERROR_NULL_POINTER If parameters or out is NULL, or both curve and callback are.
  * @return RMF_ERROR_INVALID_INPUT For bad numbers or parameters not increasing.
- * @return RMF_ERROR_NO_SOLUTION If two consecutive osculating cones cannot be joined
- *         consistently, or an osculating cone is a cylinder (zero curvature of the curve).
+ * @return RMF_ERROR_NO_SOLUTION If the curve has zero curvature at a parameter (no
+ *         osculating cone).
+ * @return RMF_ERROR_NOT_CONVERGED If two consecutive osculating cones cannot be joined
+ *         consistently even after 6 halvings of their interval.
  * \since 0.1
  * \ingroup rmf_cone_spline
  */
@@ -1870,8 +1874,10 @@ RmfStatus rmf_cone_spline_osculating(const struct RmfCurve *curve,
  * @return RMF_ERROR_NULL_POINTER If curve, parameters or out is NULL.
  * @return RMF_ERROR_INVALID_INPUT For bad numbers or parameters not increasing or outside
  *         the domain.
- * @return RMF_ERROR_NO_SOLUTION If two consecutive osculating cones cannot be joined
- *         consistently, or an osculating cone is a cylinder (zero curvature of the curve).
+ * @return RMF_ERROR_NO_SOLUTION If the curve has zero curvature at a parameter (no
+ *         osculating cone).
+ * @return RMF_ERROR_NOT_CONVERGED If two consecutive osculating cones cannot be joined
+ *         consistently even after 6 halvings of their interval.
  * \since 0.2
  * \ingroup rmf_cone_spline
  */
