@@ -243,9 +243,10 @@ impl Developable for TangentSurface<'_> {
             None => {
                 let torsion = |t: f64| -> Result<f64> {
                     let [_, d1, d2, d3] = self.curve.jet(t)?;
-                    // Scaled by |x'|⁶: the same zeros, a value free of the curve's size.
+                    // Each derivative divided by |x'|: the same zeros and a value free of
+                    // the curve's size (the plain determinant underflows at 1e-200).
                     let s = crate::math::robust_length(d1);
-                    Ok((d1 / s).dot((d2 / s).cross(d3 / s)) / (s * s * s))
+                    Ok((d1 / s).dot((d2 / s).cross(d3 / s)))
                 };
                 return interior_sampled_roots(&torsion, domain);
             }
