@@ -238,8 +238,7 @@ pub unsafe extern "C" fn rmf_rrmf_quintic_irregular_roots(
         let count = out_ptr(count, "count")?;
         let rho = buffer(rho, capacity, "rho")?;
         let speed_ratio = buffer(speed_ratio, capacity, "speed_ratio")?;
-        let mut found = rrmf_quintics_reporting(&hermite(p0, t0, p1, t1)?, eta)?.irregular;
-        found.sort_by(|a, b| a.rho.total_cmp(&b.rho));
+        let found = rrmf_quintics_reporting(&hermite(p0, t0, p1, t1)?, eta)?.irregular;
         write(count, found.len());
         if found.len() > capacity {
             return Err(FfiError::BufferTooSmall(format!(

@@ -189,7 +189,7 @@ fn alpha1_values(d: &Deltas, f1: f64, rho: f64) -> Vec<Complex> {
         // The general case: a₁ = (δ̄₀δ₂ − δ₁δ̄₂) / (|δ₀|² − |δ₁|²) (after (32)).
         return vec![(d0.conj() * d2 - d1 * d2.conj()) / difference];
     }
-    exceptional_alpha1_values(d, f1, rho)
+    line_circle(d0, d1, d2, rho * f1)
 }
 
 /// The exceptional case |δ₀| = |δ₁| = r: with δ₀ = r e^{iA}, δ₁ = r e^{iB} and

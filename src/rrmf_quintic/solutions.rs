@@ -120,7 +120,7 @@ pub fn rrmf_quintics_reporting(data: &HermiteSegment, eta: f64) -> Result<Soluti
 pub struct Solutions {
     /// The solutions, in increasing ρ.
     pub quintics: Vec<RrmfQuintic>,
-    /// Roots whose quintic interpolates the data with an RRMF but whose speed dips below
+    /// In increasing ρ, roots whose quintic interpolates the data with an RRMF but whose speed dips below
     /// [`REGULARITY`] times its maximum (a near-cusp): not returned as solutions, since
     /// their tangent is not known to the accuracy the frames need there.
     pub irregular: Vec<IrregularRoot>,
@@ -159,6 +159,7 @@ pub fn solve_reporting(c: &CanonicalHermite, eta: f64) -> Solutions {
         }
     }
     found.quintics.sort_by(|a, b| a.rho.total_cmp(&b.rho));
+    found.irregular.sort_by(|a, b| a.rho.total_cmp(&b.rho));
     found
 }
 
