@@ -604,6 +604,57 @@ static void test_profile_surface_analysis(void) {
     CHECK_STATUS(rmf_sweep_parabolic_points(spine, rmf, NULL, 9, points, 256, &count), RMF_ERROR_NULL_POINTER,
                  "profile");
 
+    /* The parabolic lines (14) traced as curves: checked on the exported surface and spine
+       with this suite's own evaluator, where the surface normal is perpendicular to the
+       spine's principal normal. */
+    if (surface) {
+        RmfNurbsSurface view;
+        RmfNurbsCurve spine_view;
+        RmfParabolicCurvePoint *line = NULL;
+        size_t n = 0, i, curves = 0;
+        double worst = 0;
+        CHECK_STATUS(rmf_sweep_parabolic_curves(spine, rmf, small, 1e-7, NULL, 0, &n), RMF_OK, "");
+        CHECK(n > 2 && n < 100000, "parabolic line vertices counted");
+        line = (RmfParabolicCurvePoint *)calloc(n, sizeof *line);
+        CHECK_STATUS(rmf_surface_nurbs(surface, &view), RMF_OK, "");
+        CHECK_STATUS(rmf_curve_nurbs(spine, &spine_view), RMF_OK, "");
+        if (line && n > 1) {
+            size_t short_count = 0;
+            CHECK_STATUS(rmf_sweep_parabolic_curves(spine, rmf, small, 1e-7, line, n - 1, &short_count),
+                         RMF_ERROR_BUFFER_TOO_SMALL, "capacity");
+            CHECK(short_count == n, "a buffer too small still gets the count");
+            CHECK_STATUS(rmf_sweep_parabolic_curves(spine, rmf, small, 1e-7, line, n, &n), RMF_OK, "");
+            for (i = 0; i < n; i++) {
+                RmfVec3 d[3][3], c[3], t, principal;
+                size_t knot;
+                int at_joint = 0;
+                /* At a joint of the C1 spine the principal normal jumps, and so does the line:
+                   a vertex there is one side's. */
+                for (knot = 0; knot < spine_view.knot_count; knot++)
+                    at_joint |= fabs(spine_view.knots[knot] - line[i].v) < 1e-12;
+                ne_surface_derivatives(&view, line[i].u, line[i].v, d);
+                ne_curve_derivatives(&spine_view, line[i].v, c);
+                t = ne_unit(c[1]);
+                principal = ne_unit(ne_sub(c[2], ne_scale(t, ne_dot(t, c[2]))));
+                if (!at_joint) worst = fmax(worst, fabs(ne_dot(ne_unit(ne_cross(d[1][0], d[0][1])), principal)));
+                CHECK(ne_dist(d[0][0], line[i].point) < 1e-12, "the vertex's point is the surface's");
+                CHECK(i == 0 || line[i].curve == line[i - 1].curve || line[i].curve == line[i - 1].curve + 1,
+                      "the vertices of a curve are consecutive");
+                curves = line[i].curve + 1;
+            }
+            printf("parabolic lines (14) traced: %zu curves, %zu vertices, |n . principal normal| <= %.1e\n", curves,
+                   n, worst);
+            CHECK(worst < 1e-10, "the traced lines satisfy (14) on the exported surface");
+        }
+        free(line);
+        CHECK_STATUS(rmf_sweep_parabolic_curves(spine, rmf, small, 0.0, NULL, 0, &n), RMF_ERROR_INVALID_INPUT,
+                     "tolerance");
+        CHECK_STATUS(rmf_sweep_parabolic_curves(spine, rmf, small, nan_value(), NULL, 0, &n),
+                     RMF_ERROR_INVALID_INPUT, "tolerance");
+        CHECK_STATUS(rmf_sweep_parabolic_curves(spine, NULL, small, 1e-7, NULL, 0, &n), RMF_ERROR_NULL_POINTER,
+                     "frames");
+    }
+
     CHECK_STATUS(rmf_ph_convex_initial_normal(spine, small, 1, &start, &margin), RMF_OK, "");
     CHECK(margin > 0 && fabs(ne_norm(start) - 1) < 1e-12, "Corollary 9 start for an elliptic patch");
     {

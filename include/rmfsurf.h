@@ -815,6 +815,30 @@ typedef struct RmfParabolicPoint {
 } RmfParabolicPoint;
 
 /**
+ * A vertex of a parabolic line traced by rmf_sweep_parabolic_curves.
+ * \ingroup rmf_sweeps
+ */
+typedef struct RmfParabolicCurvePoint {
+  /**
+   * Profile parameter.
+   */
+  double u;
+  /**
+   * Spine parameter.
+   */
+  double v;
+  /**
+   * The surface point s(u, v).
+   */
+  struct RmfVec3 point;
+  /**
+   * Which curve the vertex belongs to: 0, 1, …; the vertices of one curve are consecutive
+   * and in order along it.
+   */
+  uint32_t curve;
+} RmfParabolicCurvePoint;
+
+/**
  * One RRMF quintic Hermite interpolant (Farouki, Giannelli & Sestini, Section 4).
  *
  * The quintic's hodograph is r'(t) = (|α|² − |β|², 2 Re(α β̄), 2 Im(α β̄)) with the complex
@@ -2876,6 +2900,50 @@ RmfStatus rmf_sweep_parabolic_points(const struct RmfCurve *spine,
                                      const struct RmfCurve *profile,
                                      uint32_t v_samples,
                                      struct RmfParabolicPoint *points,
+                                     size_t capacity,
+                                     size_t *count);
+
+/**
+ * The parabolic lines (14) of a profile surface (§2.3 of Mäurer & Jüttler, case 3: where the
+ * surface normal is perpendicular to the spine's principal normal) traced as curves along
+ * the spine, as polylines in the parameter plane: the roots of (14) continued from one
+ * spine parameter to the next, split where the profile inflects or its tangent is parallel
+ * to an axis so that each piece is a graph u(v), and joined again where the pieces meet.
+ * The polyline mapped onto the surface through its parameters stays within tolerance of the
+ * line (half the tolerance is met at the middle of every polyline segment). Where the spine
+ * inflects (k = 0) the whole line v = const satisfies (14) and is a curve of its own. The
+ * lines break at a joint of the spine where its curvature jumps (a C¹ spline), and the
+ * profile inflections (case 1) and straight pieces (cases 1, 2) are
+ * rmf_sweep_parabolic_points's. The frames must be rotation-minimizing: (13) and (14) hold
+ * for an RMF; for rational frames that approximate it (rmf_ph_rational_rmf) the lines are
+ * the zeros of (14) of the exported surface to the rounding, and K of that surface is small
+ * but not 0 on them.
+ *
+ * Size query: with points = NULL and capacity = 0 only count is written.
+ *
+ * @param[in] spine, frames, profile As for rmf_sweep_singularity_margin (rotation-minimizing
+ *            frames of the spine).
+ * @param[in] tolerance Finite positive length on the surface.
+ * @param[out] points Buffer for capacity vertices.
+ * @param[in] capacity Capacity of points.
+ * @param[out] count Receives the number of vertices.
+ * @return RMF_OK on success or for a size query.
+ * @return RMF_ERROR_NULL_POINTER If spine, frames, profile or count is NULL, or points is
+ *         NULL with capacity > 0.
+ * @return RMF_ERROR_INVALID_INPUT If tolerance is not finite and positive, the frames are not
+ *         rotation-minimizing rational frames of the spine, or frame pieces × profile
+ *         segments exceed 2^15.
+ * @return RMF_ERROR_NOT_CONVERGED If the lines need more than 2^20 vertices at this
+ *         tolerance, or the spine's curvature direction turns too fast to be followed.
+ * @return RMF_ERROR_BUFFER_TOO_SMALL If 0 < capacity < count; then only count is written.
+ * \since 0.2
+ * \ingroup rmf_sweeps
+ */
+RmfStatus rmf_sweep_parabolic_curves(const struct RmfCurve *spine,
+                                     const struct RmfFrames *frames,
+                                     const struct RmfCurve *profile,
+                                     double tolerance,
+                                     struct RmfParabolicCurvePoint *points,
                                      size_t capacity,
                                      size_t *count);
 

@@ -96,6 +96,7 @@ pub use ph_cubic::cubic::PH_TOLERANCE;
 pub use ph_cubic::exact_rmf::ExactRmf;
 pub use ph_cubic::frenet::ph_frenet_frames;
 pub use ph_cubic::offset::offset_profile;
+pub use ph_cubic::parabolic::{ParabolicCurve, MAX_PARABOLIC_POINTS};
 pub use ph_cubic::rational_rmf::{ph_rational_rmf, RationalRmf, RmfOptions};
 pub use ph_cubic::spline::ph_spline_from_segments;
 pub use ph_cubic::{ph_cubic_hermite, ph_cubics, ph_spline_hermite, PhCubic, PhHermiteSolutions};

@@ -178,6 +178,34 @@ pub(crate) unsafe fn buffer<'a, T>(
     Ok(std::slice::from_raw_parts_mut(p, capacity))
 }
 
+/// Hands a list to the caller the way every list call of the C API does: `count` receives
+/// its length; with `capacity` 0 (`out` empty) that is all (a size query); a smaller
+/// non-zero capacity is refused with BUFFER_TOO_SMALL, naming `name`; otherwise the list is
+/// copied to the front of `out`.
+///
+/// # Safety
+/// `count` must be writable.
+pub(crate) unsafe fn hand_over<T: Copy>(
+    list: &[T],
+    out: &mut [T],
+    count: *mut usize,
+    name: &str,
+) -> FfiResult {
+    write(count, list.len());
+    if out.is_empty() {
+        return Ok(());
+    }
+    if out.len() < list.len() {
+        return Err(FfiError::BufferTooSmall(format!(
+            "{name} needs {} entries, capacity is {}",
+            list.len(),
+            out.len()
+        )));
+    }
+    out[..list.len()].copy_from_slice(list);
+    Ok(())
+}
+
 /// An options (or report) struct of the C API. Its first field is `size_t struct_size`, which
 /// the caller's `rmf_*_options_init` (or the caller, for a report) set to the size of the
 /// struct *it* was compiled with: a program built against an older header passes a shorter

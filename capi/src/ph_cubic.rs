@@ -3,8 +3,8 @@
 //! itself is made by the generic rmf_sweep_surface.
 
 use super::boundary::{
-    buffer, guard, invalid_arg, optional_out, out_ptr, reference, sized_out, slice, write,
-    write_sized, FfiError, FfiResult, OptionsStruct,
+    buffer, guard, hand_over, invalid_arg, optional_out, out_ptr, reference, sized_out, slice,
+    write, write_sized, FfiError, FfiResult, OptionsStruct,
 };
 use super::curve::RmfCurve;
 use super::frames::{rational_frames, RmfFrames};
@@ -733,18 +733,86 @@ pub unsafe extern "C" fn rmf_sweep_parabolic_points(
         let lines =
             ProfileSurface::new(spine, frames, profile)?.parabolic_lines(v_samples as usize);
         let found = parabolic_points(&lines, spine.domain(), profile.domain(), v_samples as usize);
-        write(count, found.len());
-        if capacity == 0 {
-            return Ok(());
+        hand_over(&found, points, count, "points")
+    })
+}
+
+/// A vertex of a parabolic line traced by rmf_sweep_parabolic_curves.
+/// \ingroup rmf_sweeps
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default)]
+pub struct RmfParabolicCurvePoint {
+    /// Profile parameter.
+    pub u: f64,
+    /// Spine parameter.
+    pub v: f64,
+    /// The surface point s(u, v).
+    pub point: RmfVec3,
+    /// Which curve the vertex belongs to: 0, 1, …; the vertices of one curve are consecutive
+    /// and in order along it.
+    pub curve: u32,
+}
+
+/// The parabolic lines (14) of a profile surface (§2.3 of Mäurer & Jüttler, case 3: where the
+/// surface normal is perpendicular to the spine's principal normal) traced as curves along
+/// the spine, as polylines in the parameter plane: the roots of (14) continued from one
+/// spine parameter to the next, split where the profile inflects or its tangent is parallel
+/// to an axis so that each piece is a graph u(v), and joined again where the pieces meet.
+/// The polyline mapped onto the surface through its parameters stays within tolerance of the
+/// line (half the tolerance is met at the middle of every polyline segment). Where the spine
+/// inflects (k = 0) the whole line v = const satisfies (14) and is a curve of its own. The
+/// lines break at a joint of the spine where its curvature jumps (a C¹ spline), and the
+/// profile inflections (case 1) and straight pieces (cases 1, 2) are
+/// rmf_sweep_parabolic_points's. The frames must be rotation-minimizing: (13) and (14) hold
+/// for an RMF; for rational frames that approximate it (rmf_ph_rational_rmf) the lines are
+/// the zeros of (14) of the exported surface to the rounding, and K of that surface is small
+/// but not 0 on them.
+///
+/// Size query: with points = NULL and capacity = 0 only count is written.
+///
+/// @param[in] spine, frames, profile As for rmf_sweep_singularity_margin (rotation-minimizing
+///            frames of the spine).
+/// @param[in] tolerance Finite positive length on the surface.
+/// @param[out] points Buffer for capacity vertices.
+/// @param[in] capacity Capacity of points.
+/// @param[out] count Receives the number of vertices.
+/// @return RMF_OK on success or for a size query.
+/// @return RMF_ERROR_NULL_POINTER If spine, frames, profile or count is NULL, or points is
+///         NULL with capacity > 0.
+/// @return RMF_ERROR_INVALID_INPUT If tolerance is not finite and positive, the frames are not
+///         rotation-minimizing rational frames of the spine, or frame pieces × profile
+///         segments exceed 2^15.
+/// @return RMF_ERROR_NOT_CONVERGED If the lines need more than 2^20 vertices at this
+///         tolerance, or the spine's curvature direction turns too fast to be followed.
+/// @return RMF_ERROR_BUFFER_TOO_SMALL If 0 < capacity < count; then only count is written.
+/// \since 0.2
+/// \ingroup rmf_sweeps
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn rmf_sweep_parabolic_curves(
+    spine: *const RmfCurve,
+    frames: *const RmfFrames,
+    profile: *const RmfCurve,
+    tolerance: f64,
+    points: *mut RmfParabolicCurvePoint,
+    capacity: usize,
+    count: *mut usize,
+) -> RmfStatus {
+    guard("rmf_sweep_parabolic_curves", || {
+        let (spine, frames, profile) = sweep_inputs(spine, frames, profile)?;
+        let points = buffer(points, capacity, "points")?;
+        let count = out_ptr(count, "count")?;
+        let surface = ProfileSurface::new(spine, frames, profile)?;
+        let mut found = Vec::new();
+        for (curve, line) in surface.parabolic_curves(tolerance)?.iter().enumerate() {
+            found.extend(line.points.iter().map(|&(u, v)| RmfParabolicCurvePoint {
+                u,
+                v,
+                point: surface.point(u, v).into(),
+                curve: curve as u32,
+            }));
         }
-        if capacity < found.len() {
-            return Err(FfiError::BufferTooSmall(format!(
-                "points needs {} entries, capacity is {capacity}",
-                found.len()
-            )));
-        }
-        points[..found.len()].copy_from_slice(&found);
-        Ok(())
+        hand_over(&found, points, count, "points")
     })
 }
 

@@ -170,6 +170,22 @@ fn copy_into(edit: impl Fn(&mut RmfNurbsSurfaceBuffers), null_buffers: bool) -> 
     status
 }
 
+/// The size query of `rmf_sweep_parabolic_curves` for the fixtures' sweep of their curve.
+fn parabolic_curves_count(f: &Fixtures, tolerance: f64) -> RmfStatus {
+    let mut count = 0;
+    unsafe {
+        rmf_sweep_parabolic_curves(
+            f.ph_spline,
+            f.rmf,
+            f.curve,
+            tolerance,
+            null_mut(),
+            0,
+            &mut count,
+        )
+    }
+}
+
 /// The size query of `rmf_sweep_parabolic_points` for the fixtures' sweep of `profile`.
 fn parabolic_points_count(f: &Fixtures, profile: *mut RmfCurve, v_samples: u32) -> RmfStatus {
     let mut count = 0;
@@ -432,7 +448,8 @@ struct Row {
 
 use RmfStatus::{
     RmfErrorBufferTooSmall as TOO_SMALL, RmfErrorInvalidInput as INVALID,
-    RmfErrorNoSolution as NO_SOLUTION, RmfErrorNullPointer as NULL,
+    RmfErrorNoSolution as NO_SOLUTION, RmfErrorNotConverged as NOT_CONVERGED,
+    RmfErrorNullPointer as NULL,
 };
 
 /// `rmf_cone_spline_approximate` on the tangent surface of the twisted cubic (1e-3, t in
@@ -1033,6 +1050,27 @@ fn rows() -> Vec<Row> {
             expected: INVALID,
             names: "v_samples × profile segments",
             call: |f| parabolic_points_count(f, f.ph_spline, 1 << 24),
+        },
+        Row {
+            what: "parabolic line tolerance 0",
+            function: "rmf_sweep_parabolic_curves",
+            expected: INVALID,
+            names: "tolerance",
+            call: |f| parabolic_curves_count(f, 0.0),
+        },
+        Row {
+            what: "parabolic line tolerance NaN",
+            function: "rmf_sweep_parabolic_curves",
+            expected: INVALID,
+            names: "tolerance",
+            call: |f| parabolic_curves_count(f, NAN),
+        },
+        Row {
+            what: "parabolic line tolerance 1e-300",
+            function: "rmf_sweep_parabolic_curves",
+            expected: NOT_CONVERGED,
+            names: "tolerance",
+            call: |f| parabolic_curves_count(f, 1e-300),
         },
         Row {
             what: "Möbius segments above 2²⁴",

@@ -25,6 +25,7 @@ pub const OPS: &[fn(&mut Session)] = &[
     singularity_margin,
     gaussian_curvature,
     parabolic_points,
+    parabolic_curves,
     convex_initial_normal,
     profile_offset,
     spline_approximate_with_options,
@@ -273,6 +274,35 @@ fn parabolic_points(s: &mut Session) {
     let too_small = status == RmfStatus::RmfErrorBufferTooSmall;
     checked(
         "rmf_sweep_parabolic_points",
+        status,
+        &[
+            points.iter().all(is_poisoned),
+            is_poisoned(&count) || too_small,
+        ],
+    );
+}
+
+/// The traced parabolic lines at any tolerance (tiny ones run into the vertex bound).
+fn parabolic_curves(s: &mut Session) {
+    let (spine, frames, profile) = (s.curve(), s.frames(), s.curve());
+    let tolerance = s.input.f64();
+    let capacity = s.input.work().min(256);
+    let mut points = poisoned_buffer::<RmfParabolicCurvePoint>(capacity);
+    let mut count = poisoned::<usize>();
+    let status = unsafe {
+        rmf_sweep_parabolic_curves(
+            spine,
+            frames,
+            profile,
+            tolerance,
+            points.as_mut_ptr(),
+            capacity,
+            &mut count,
+        )
+    };
+    let too_small = status == RmfStatus::RmfErrorBufferTooSmall;
+    checked(
+        "rmf_sweep_parabolic_curves",
         status,
         &[
             points.iter().all(is_poisoned),

@@ -27,6 +27,7 @@
 use super::base_frame::BaseFrame;
 use super::exact_rmf::ExactRmf;
 use super::frenet::frenet_numerators;
+use super::parabolic::ParabolicCurve;
 use super::profile::{critical_points, interior_roots, profile_segments, vanishes, ProfileSegment};
 use super::spline::ph_cubics;
 use crate::bezier::{locate, PiecewiseCurve};
@@ -272,13 +273,11 @@ impl<'a> ProfileSurface<'a> {
         };
         let ub = self.profile.breaks();
         for (i, segment) in self.segments.iter().enumerate() {
-            let numerator = segment.curvature_numerator();
-            let scale = numerator.iter().fold(0.0f64, |m, c| m.max(c.abs()));
-            if scale == 0.0 || vanishes(&numerator, segment_scale(segment)) {
+            if self.is_straight_profile_segment(i) {
                 lines.straight_profile.push((ub[i], ub[i + 1]));
             } else {
                 lines.profile_inflections.extend(
-                    interior_roots(&numerator)
+                    interior_roots(&segment.normalized().curvature_numerator())
                         .into_iter()
                         .map(|s| global(ub, i, s)),
                 );
@@ -314,8 +313,81 @@ impl<'a> ProfileSurface<'a> {
     }
 }
 
+impl<'a> ProfileSurface<'a> {
+    /// The parabolic lines of §2.3, case 3, traced as curves: polylines (u, v) on the zero set
+    /// of (14), continued along the spine, whose lift to the surface through their parameters
+    /// stays within `tolerance` (a length) of the lines; besides, the lines v = const where
+    /// the spine inflects (k = 0 satisfies (14) for every u). Fails with `NotConverged` when
+    /// the lines would need more than [`MAX_PARABOLIC_POINTS`](super::parabolic::MAX_PARABOLIC_POINTS)
+    /// points.
+    pub fn parabolic_curves(&self, tolerance: f64) -> Result<Vec<ParabolicCurve>> {
+        super::parabolic::trace(self, tolerance)
+    }
+
+    /// The surface point s(u, v) = x(v) + c₂(u)f₂(v) + c₃(u)f₃(v).
+    pub fn point(&self, u: f64, v: f64) -> DVec3 {
+        let (segment, s) = self.profile_at(u);
+        let c = segment.jet(s).point;
+        let f = self.frames.frame(v);
+        self.spine.eval(v) + c.x * f.f2 + c.y * f.f3
+    }
+
+    pub(super) fn spine(&self) -> &PiecewiseCurve {
+        self.spine
+    }
+
+    pub(super) fn frames(&self) -> &RationalFrames {
+        self.frames
+    }
+
+    pub(super) fn profile(&self) -> &PiecewiseCurve {
+        self.profile
+    }
+
+    pub(super) fn profile_segments(&self) -> &[ProfileSegment] {
+        &self.segments
+    }
+
+    /// (A, B) = h²ċ of every profile segment.
+    pub(super) fn tangents(&self) -> &[(Vec<f64>, Vec<f64>)] {
+        &self.tangents
+    }
+
+    /// Whether profile segment i is straight (its curvature numerator vanishes).
+    pub(super) fn is_straight_profile_segment(&self, i: usize) -> bool {
+        let segment = self.segments[i].normalized();
+        let numerator = segment.curvature_numerator();
+        numerator.iter().all(|&c| c == 0.0) || vanishes(&numerator, segment_scale(&segment))
+    }
+
+    /// The spine segment under frame piece j.
+    fn spine_segment_of_piece(&self, j: usize) -> usize {
+        let fb = self.frames.breaks();
+        self.spine.locate(0.5 * (fb[j] + fb[j + 1])).0
+    }
+
+    /// Whether the spine is straight under frame piece j (k = 0 there: case 2).
+    pub(super) fn frame_piece_is_straight(&self, j: usize) -> bool {
+        let k = self.spine_segment_of_piece(j);
+        is_straight(&self.spine.segments()[k].poles().collect::<Vec<_>>())
+    }
+
+    /// k(v)·|x′|² on frame piece j, from that piece's frame and spine segment also at the
+    /// piece's ends (k jumps at a joint of a C¹ spine): the direction of k without the
+    /// division by |x′|², which under- or overflows at extreme scales.
+    pub(super) fn piece_curvature_direction(&self, j: usize, v: f64) -> DVec2 {
+        let (fb, sb) = (self.frames.breaks(), self.spine.breaks());
+        let k = self.spine_segment_of_piece(j);
+        let local = ((v - sb[k]) / (sb[k + 1] - sb[k])).clamp(0.0, 1.0);
+        let d2 = self.spine.segments()[k].eval_jet(local).d2;
+        let f =
+            self.frames.segments()[j].frame(((v - fb[j]) / (fb[j + 1] - fb[j])).clamp(0.0, 1.0));
+        DVec2::new(f.f2.dot(d2), f.f3.dot(d2))
+    }
+}
+
 /// Global parameter of the local parameter s on interval i of `breaks`.
-fn global(breaks: &[f64], i: usize, s: f64) -> f64 {
+pub(super) fn global(breaks: &[f64], i: usize, s: f64) -> f64 {
     breaks[i] + s * (breaks[i + 1] - breaks[i])
 }
 
@@ -334,16 +406,21 @@ fn segment_scale(segment: &ProfileSegment) -> f64 {
     (size * h).powi(2) * h
 }
 
-/// Control points on one line (relative tolerance 1e-12).
-fn is_straight(points: &[DVec3]) -> bool {
-    let (first, last) = (points[0], points[points.len() - 1]);
-    let axis = last - first;
+/// Control points on one line (relative tolerance 1e-12), in coordinates scaled to the
+/// points' extent, so that the test does not underflow at extreme scales.
+pub(super) fn is_straight(points: &[DVec3]) -> bool {
+    let first = points[0];
     let size = points
         .iter()
-        .fold(0.0f64, |m, p| m.max((*p - first).length()));
-    points
+        .fold(0.0f64, |m, p| m.max((*p - first).abs().max_element()));
+    if size == 0.0 {
+        return true;
+    }
+    let scaled: Vec<DVec3> = points.iter().map(|p| (*p - first) / size).collect();
+    let axis = scaled[scaled.len() - 1];
+    scaled
         .iter()
-        .all(|p| (*p - first).cross(axis).length() <= 1e-12 * size * axis.length())
+        .all(|p| p.cross(axis).length() <= 1e-12 * axis.length())
 }
 
 /// How to start the frame of a PH spline so that a convex profile sweeps a surface with

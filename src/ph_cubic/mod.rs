@@ -18,6 +18,7 @@
 //! | [`rational_rmf`] | rational RMFs of splines, with twist and closure of closed spines | (29), (42) |
 //! | [`accuracy`] | angle between rational frames and the exact RMF | §3.4 |
 //! | [`analysis`] | singularities, parabolic lines, curvature sign, convexity of profile surfaces | (9), (13), (14), Cor. 7, 9 |
+//! | [`parabolic`] | the parabolic lines (14) traced as curves along the spine | (14), §2.3 |
 //! | [`profile`] | the planar profile c(u): tangent and curvature polynomials | (1), (11) |
 //! | [`offset`] | offsets of profile surfaces as profile surfaces of offset profiles | Proposition 4 |
 
@@ -34,6 +35,7 @@ pub mod exact_rmf;
 pub mod frenet;
 pub mod hermite;
 pub mod offset;
+pub mod parabolic;
 pub mod preimage;
 pub mod profile;
 

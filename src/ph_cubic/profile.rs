@@ -79,6 +79,26 @@ impl ProfileSegment {
             .fold(0.0, f64::max)
     }
 
+    /// The segment scaled by a power of two that brings its largest coordinate near 1
+    /// (exact): polynomials of degree two in the coordinates, as the curvature numerator,
+    /// under- or overflow at extreme scales.
+    pub fn normalized(&self) -> Self {
+        let size = self
+            .x
+            .iter()
+            .chain(&self.y)
+            .fold(0.0f64, |m, c| m.max(c.abs()));
+        if size == 0.0 || !size.is_finite() {
+            return self.clone();
+        }
+        let factor = 2f64.powi(-size.log2().round() as i32);
+        Self {
+            x: self.x.iter().map(|c| c * factor).collect(),
+            y: self.y.iter().map(|c| c * factor).collect(),
+            h: self.h.clone(),
+        }
+    }
+
     /// h³(x'y'' − x''y') = det[[h, X, Y], [h', X', Y'], [h'', X'', Y'']]: the numerator of the
     /// profile curvature (11).
     pub fn curvature_numerator(&self) -> Vec<f64> {
