@@ -561,6 +561,13 @@ static RmfCurve *arc_profile(double r) {
     return c;
 }
 
+/* The offset at distance d of the ellipse (2 cos t, sin t) along (y', -x')/|c'|. */
+static RmfVec3 ellipse_offset(double t, double d) {
+    double n = sqrt(cos(t) * cos(t) + 4 * sin(t) * sin(t));
+    RmfVec3 p = {2 * cos(t) + d * cos(t) / n, sin(t) + d * 2 * sin(t) / n, 0};
+    return p;
+}
+
 static void test_profile_surface_analysis(void) {
     double pitch = 0.4, k = 0, margin = -1;
     RmfCurve *spine = spline_through(helix, &pitch, 0, 2.4, 4), *small = arc_profile(0.3), *big = arc_profile(2.0);
@@ -687,9 +694,53 @@ static void test_profile_surface_analysis(void) {
         const double weights[3] = {1, sqrt(0.5), 1}, knots[6] = {0, 0, 0, 1, 1, 1};
         CHECK_STATUS(rmf_nurbs_curve_create(2, poles, weights, 3, knots, 6, &ellipse), RMF_OK, "");
     }
+    if (ellipse) {
+        /* The ellipse (2 cos t, sin t) has no rational offset: the exact offset of arcs within
+           1e-5 of it, checked against the true offset (2 cos t, sin t) + d (cos t, 2 sin t)/|.|
+           with this suite's evaluator and a dense closest-point scan. */
+        RmfCurve *by_arcs = NULL, *arcs = NULL;
+        double deviation = -1, worst = 0, d = 0.1;
+        CHECK_STATUS(rmf_profile_offset_by_arcs(ellipse, d, 1e-5, &by_arcs, &arcs, &deviation), RMF_OK, "");
+        if (by_arcs && arcs) {
+            RmfNurbsCurve view, arc_view;
+            int i, j;
+            CHECK_STATUS(rmf_curve_nurbs(by_arcs, &view), RMF_OK, "");
+            CHECK_STATUS(rmf_curve_nurbs(arcs, &arc_view), RMF_OK, "");
+            CHECK(view.degree == 2 && arc_view.degree == 2, "arcs and their offset are rational quadratics");
+            for (i = 0; i <= 200; i++) {
+                RmfVec3 q[3];
+                double best = INFINITY, t_best = 0, lo, hi;
+                ne_curve_derivatives(&view, i / 200.0, q);
+                for (j = 0; j <= 2000; j++) {
+                    double t = PI / 2 * j / 2000.0;
+                    if (ne_dist(ellipse_offset(t, d), q[0]) < best) best = ne_dist(ellipse_offset(t, d), q[0]), t_best = t;
+                }
+                /* Ternary search about the best sample (the distance is unimodal there). */
+                lo = fmax(0, t_best - PI / 4000), hi = fmin(PI / 2, t_best + PI / 4000);
+                for (j = 0; j < 200; j++) {
+                    double a = lo + (hi - lo) / 3, b = hi - (hi - lo) / 3;
+                    if (ne_dist(ellipse_offset(a, d), q[0]) < ne_dist(ellipse_offset(b, d), q[0]))
+                        hi = b;
+                    else
+                        lo = a;
+                }
+                worst = fmax(worst, fmin(best, ne_dist(ellipse_offset(0.5 * (lo + hi), d), q[0])));
+            }
+            printf("offset of an ellipse through %zu arcs: measured %.1e, from the true offset %.1e (tolerance 1e-5)\n",
+                   (arc_view.pole_count - 1) / 2, deviation, worst);
+            CHECK(deviation > 0 && deviation <= 1e-5, "the measured deviation is within the tolerance");
+            CHECK(worst <= 1e-5, "the offset of the arcs is within the tolerance of the true offset");
+        }
+        rmf_curve_free(by_arcs);
+        rmf_curve_free(arcs);
+    }
     {
         RmfCurve *c = untouched;
         CHECK_STATUS(rmf_profile_offset(ellipse, 0.1, &c), RMF_ERROR_NO_SOLUTION, "not rational");
+        CHECK_STATUS(rmf_profile_offset_by_arcs(ellipse, 0.1, 0.0, &c, NULL, NULL), RMF_ERROR_INVALID_INPUT,
+                     "tolerance");
+        CHECK_STATUS(rmf_profile_offset_by_arcs(ellipse, 0.1, 1e-5, NULL, NULL, NULL), RMF_ERROR_NULL_POINTER,
+                     "offset");
         CHECK_STATUS(rmf_profile_offset(small, nan_value(), &c), RMF_ERROR_INVALID_INPUT, "distance");
         CHECK_STATUS(rmf_profile_offset(NULL, 0.1, &c), RMF_ERROR_NULL_POINTER, "profile");
         CHECK(c == untouched, "a failing call leaves the out-pointer alone");

@@ -2988,13 +2988,50 @@ RmfStatus rmf_ph_convex_initial_normal(const struct RmfCurve *ph_spline,
  * @return RMF_ERROR_INVALID_INPUT If distance is not finite or the profile has a singular
  *         point.
  * @return RMF_ERROR_NO_SOLUTION If a profile segment has no rational offset (the message
- *         names it).
+ *         names it): rmf_profile_offset_by_arcs gives the exact offset of arcs within a
+ *         tolerance of it.
  * \since 0.1
  * \ingroup rmf_sweeps
  */
 RmfStatus rmf_profile_offset(const struct RmfCurve *profile,
                              double distance,
                              struct RmfCurve **out);
+
+/**
+ * The offset of any planar profile, exactly, through arcs: the profile is replaced by a G1
+ * chain of circular arcs (biarcs, two rational quadratic arcs per interval) within tolerance,
+ * refined until the profile's true offset is within tolerance of the arcs' offset too, and
+ * the arcs are offset exactly (concentric arcs). For profiles that rmf_profile_offset
+ * refuses: the offset of a general rational curve is not rational (its unit normal divides
+ * by |c'| = √(x'² + y'²), a polynomial only for PH curves), so no NURBS is its exact offset;
+ * this is the exact offset of a NURBS within tolerance of the profile. Sweep the result with
+ * the same spine and frames for the offset surface (Proposition 4 of Mäurer & Jüttler).
+ *
+ * @param[in] profile The profile (x, y; z ignored, 0 in the results), without singular
+ *            points.
+ * @param[in] distance Finite signed distance along (y', −x')/|c'|.
+ * @param[in] tolerance Finite positive length: the largest distance of the arcs from the
+ *            profile and of their offset from the profile's offset (measured on each
+ *            interval at 17 points and at the largest one's maximum).
+ * @param[out] offset Receives the offset of the arcs; free with rmf_curve_free.
+ * @param[out] arcs May be NULL. Receives the arcs, on the profile's domain; free with
+ *             rmf_curve_free.
+ * @param[out] deviation May be NULL. Receives the largest distance measured (profile to
+ *             arcs, or true offset to offset).
+ * @return RMF_OK on success; out-pointers are untouched on failure.
+ * @return RMF_ERROR_NULL_POINTER If profile or offset is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If distance or tolerance is not finite (tolerance not
+ *         positive), or the profile has a singular point.
+ * @return RMF_ERROR_NOT_CONVERGED If an interval halved 30 times still misses the tolerance.
+ * \since 0.2
+ * \ingroup rmf_sweeps
+ */
+RmfStatus rmf_profile_offset_by_arcs(const struct RmfCurve *profile,
+                                     double distance,
+                                     double tolerance,
+                                     struct RmfCurve **offset,
+                                     struct RmfCurve **arcs,
+                                     double *deviation);
 
 /**
  * All RRMF quintics interpolating G1 Hermite data for one value of the angular parameter

@@ -92,6 +92,7 @@ pub use ph_cubic::approximate::{
     check_g1, ph_spline_approximate, ph_spline_approximate_with, ApproximationOptions,
     PhApproximation,
 };
+pub use ph_cubic::arc_offset::{offset_profile_by_arcs, ArcOffset};
 pub use ph_cubic::cubic::PH_TOLERANCE;
 pub use ph_cubic::exact_rmf::ExactRmf;
 pub use ph_cubic::frenet::ph_frenet_frames;

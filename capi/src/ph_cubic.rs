@@ -13,10 +13,10 @@ use super::status::RmfStatus;
 use super::types::RmfVec3;
 use rmfsurf::validate::{check_in_domain, check_sample_count};
 use rmfsurf::{
-    angle_errors, check_g1, convex_initial_normal, offset_profile, ph_cubic_hermite,
-    ph_frenet_frames, ph_rational_rmf, ph_spline_approximate_with, ph_spline_from_segments,
-    ApproximationOptions, ExactRmf, FrameField, FrameKind, HermiteSegment, ParametricCurve,
-    PhCubic, PiecewiseCurve, ProfileSurface, RationalFrames, RmfOptions,
+    angle_errors, check_g1, convex_initial_normal, offset_profile, offset_profile_by_arcs,
+    ph_cubic_hermite, ph_frenet_frames, ph_rational_rmf, ph_spline_approximate_with,
+    ph_spline_from_segments, ApproximationOptions, ExactRmf, FrameField, FrameKind, HermiteSegment,
+    ParametricCurve, PhCubic, PiecewiseCurve, ProfileSurface, RationalFrames, RmfOptions,
 };
 use std::ffi::c_void;
 
@@ -914,7 +914,8 @@ pub unsafe extern "C" fn rmf_ph_convex_initial_normal(
 /// @return RMF_ERROR_INVALID_INPUT If distance is not finite or the profile has a singular
 ///         point.
 /// @return RMF_ERROR_NO_SOLUTION If a profile segment has no rational offset (the message
-///         names it).
+///         names it): rmf_profile_offset_by_arcs gives the exact offset of arcs within a
+///         tolerance of it.
 /// \since 0.1
 /// \ingroup rmf_sweeps
 #[no_mangle]
@@ -928,6 +929,62 @@ pub unsafe extern "C" fn rmf_profile_offset(
         let out = out_ptr(out, "out")?;
         let offset = offset_profile(profile.rational("profile")?, distance)?;
         write(out, RmfCurve::new(offset, None).into_raw());
+        Ok(())
+    })
+}
+
+/// The offset of any planar profile, exactly, through arcs: the profile is replaced by a G1
+/// chain of circular arcs (biarcs, two rational quadratic arcs per interval) within tolerance,
+/// refined until the profile's true offset is within tolerance of the arcs' offset too, and
+/// the arcs are offset exactly (concentric arcs). For profiles that rmf_profile_offset
+/// refuses: the offset of a general rational curve is not rational (its unit normal divides
+/// by |c'| = √(x'² + y'²), a polynomial only for PH curves), so no NURBS is its exact offset;
+/// this is the exact offset of a NURBS within tolerance of the profile. Sweep the result with
+/// the same spine and frames for the offset surface (Proposition 4 of Mäurer & Jüttler).
+///
+/// @param[in] profile The profile (x, y; z ignored, 0 in the results), without singular
+///            points.
+/// @param[in] distance Finite signed distance along (y', −x')/|c'|.
+/// @param[in] tolerance Finite positive length: the largest distance of the arcs from the
+///            profile and of their offset from the profile's offset (measured on each
+///            interval at 17 points and at the largest one's maximum).
+/// @param[out] offset Receives the offset of the arcs; free with rmf_curve_free.
+/// @param[out] arcs May be NULL. Receives the arcs, on the profile's domain; free with
+///             rmf_curve_free.
+/// @param[out] deviation May be NULL. Receives the largest distance measured (profile to
+///             arcs, or true offset to offset).
+/// @return RMF_OK on success; out-pointers are untouched on failure.
+/// @return RMF_ERROR_NULL_POINTER If profile or offset is NULL.
+/// @return RMF_ERROR_INVALID_INPUT If distance or tolerance is not finite (tolerance not
+///         positive), or the profile has a singular point.
+/// @return RMF_ERROR_NOT_CONVERGED If an interval halved 30 times still misses the tolerance.
+/// \since 0.2
+/// \ingroup rmf_sweeps
+#[no_mangle]
+pub unsafe extern "C" fn rmf_profile_offset_by_arcs(
+    profile: *const RmfCurve,
+    distance: f64,
+    tolerance: f64,
+    offset: *mut *mut RmfCurve,
+    arcs: *mut *mut RmfCurve,
+    deviation: *mut f64,
+) -> RmfStatus {
+    guard("rmf_profile_offset_by_arcs", || {
+        let profile = reference(profile, "profile")?;
+        let offset = out_ptr(offset, "offset")?;
+        let arcs = optional_out(arcs, "arcs")?;
+        let deviation = optional_out(deviation, "deviation")?;
+        let result = offset_profile_by_arcs(profile.rational("profile")?, distance, tolerance)?;
+        write(offset, RmfCurve::new(result.offset, None).into_raw());
+        if let Some(arcs) = arcs {
+            write(arcs, RmfCurve::new(result.arcs, None).into_raw());
+        }
+        if let Some(deviation) = deviation {
+            write(
+                deviation,
+                result.profile_deviation.max(result.offset_deviation),
+            );
+        }
         Ok(())
     })
 }

@@ -1052,6 +1052,37 @@ fn rows() -> Vec<Row> {
             call: |f| parabolic_points_count(f, f.ph_spline, 1 << 24),
         },
         Row {
+            what: "arc offset tolerance NaN",
+            function: "rmf_profile_offset_by_arcs",
+            expected: INVALID,
+            names: "tolerance",
+            call: |f| {
+                let mut out = null_mut();
+                unsafe {
+                    rmf_profile_offset_by_arcs(f.curve, 0.1, NAN, &mut out, null_mut(), null_mut())
+                }
+            },
+        },
+        Row {
+            what: "arc offset distance ∞",
+            function: "rmf_profile_offset_by_arcs",
+            expected: INVALID,
+            names: "distance",
+            call: |f| {
+                let mut out = null_mut();
+                unsafe {
+                    rmf_profile_offset_by_arcs(
+                        f.curve,
+                        f64::INFINITY,
+                        1e-3,
+                        &mut out,
+                        null_mut(),
+                        null_mut(),
+                    )
+                }
+            },
+        },
+        Row {
             what: "parabolic line tolerance 0",
             function: "rmf_sweep_parabolic_curves",
             expected: INVALID,

@@ -3,7 +3,7 @@
 //! RMFs, angle errors, and the profile-surface analysis.
 
 use rmfsurf_capi::ph_cubic::*;
-use rmfsurf_capi::{RmfStatus, RmfVec3};
+use rmfsurf_capi::{RmfCurve, RmfStatus, RmfVec3};
 use std::ptr::null_mut;
 
 use super::callback::CallbackCurve;
@@ -28,6 +28,7 @@ pub const OPS: &[fn(&mut Session)] = &[
     parabolic_curves,
     convex_initial_normal,
     profile_offset,
+    profile_offset_by_arcs,
     spline_approximate_with_options,
 ];
 
@@ -326,6 +327,35 @@ fn convex_initial_normal(s: &mut Session) {
         status,
         &[is_poisoned(&normal), is_poisoned(&margin)],
     );
+}
+
+fn profile_offset_by_arcs(s: &mut Session) {
+    let (profile, distance, tolerance) = (s.curve(), s.input.f64(), s.input.f64());
+    let (mut out, mut arcs, mut deviation) = (poisoned(), poisoned(), poisoned::<f64>());
+    let arcs_ptr: *mut *mut RmfCurve = if s.input.flag() {
+        &mut arcs
+    } else {
+        null_mut()
+    };
+    let status = unsafe {
+        rmf_profile_offset_by_arcs(
+            profile,
+            distance,
+            tolerance,
+            &mut out,
+            arcs_ptr,
+            &mut deviation,
+        )
+    };
+    if s.made("rmf_profile_offset_by_arcs", status, Some(out), None) {
+        assert!(
+            deviation <= tolerance,
+            "deviation {deviation} above tolerance {tolerance}"
+        );
+    }
+    if !arcs_ptr.is_null() {
+        s.made("rmf_profile_offset_by_arcs", status, Some(arcs), None);
+    }
 }
 
 fn profile_offset(s: &mut Session) {

@@ -84,6 +84,36 @@ impl RationalBezierCurve {
         )
     }
 
+    /// (centre, radius) when the curve is a circular arc, a rational quadratic with equal
+    /// legs (within `tol`) whose inner weight, in standard form, is the cosine of the angle
+    /// between leg and chord.
+    pub fn circular_arc(&self, tol: f64) -> Option<(DVec3, f64)> {
+        if self.degree() != 2 {
+            return None;
+        }
+        let h = &self.points;
+        let (p0, p1, p2) = (
+            h[0].truncate() / h[0].w,
+            h[1].truncate() / h[1].w,
+            h[2].truncate() / h[2].w,
+        );
+        let w = h[1].w / (h[0].w * h[2].w).sqrt();
+        let (l0, l1) = ((p1 - p0).length(), (p2 - p1).length());
+        let chord = p2 - p0;
+        let cos = (p1 - p0).dot(chord) / (l0 * chord.length());
+        if (l0 - l1).abs() > tol || (w - cos).abs() > 1e-12 || w <= 0.0 {
+            return None;
+        }
+        let bend = (p1 - p0).cross(chord);
+        if bend.length() <= 1e-14 * l0 * chord.length() {
+            return None; // a straight piece
+        }
+        // The centre lies on the normal of the leg at p0, equidistant from p0 and p2.
+        let normal = bend.cross(p1 - p0).normalize();
+        let s = chord.length_squared() / (2.0 * chord.dot(normal));
+        Some((p0 + s * normal, s.abs()))
+    }
+
     /// The polynomial degree.
     pub fn degree(&self) -> usize {
         self.points.len() - 1

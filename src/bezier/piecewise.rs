@@ -148,6 +148,19 @@ impl PiecewiseCurve {
             .sum()
     }
 
+    /// The same curve scaled by `scale` about the origin, then moved by `offset` (segment by
+    /// segment, [`RationalBezierCurve::similar`]).
+    pub fn similar(&self, scale: f64, offset: DVec3) -> Self {
+        Self {
+            segments: self
+                .segments
+                .iter()
+                .map(|s| s.similar(scale, offset))
+                .collect(),
+            breaks: self.breaks.clone(),
+        }
+    }
+
     /// Point and first derivative with respect to the global parameter.
     pub fn eval_d1(&self, t: f64) -> (DVec3, DVec3) {
         let (k, s) = self.locate(t);

@@ -20,6 +20,7 @@
 //! | [`analysis`] | singularities, parabolic lines, curvature sign, convexity of profile surfaces | (9), (13), (14), Cor. 7, 9 |
 //! | [`parabolic`] | the parabolic lines (14) traced as curves along the spine | (14), §2.3 |
 //! | [`profile`] | the planar profile c(u): tangent and curvature polynomials | (1), (11) |
+//! | [`arc_offset`] | offsets of other profiles: exact offsets of a biarc approximation | (7)–(8) of Fuhs & Stachel |
 //! | [`offset`] | offsets of profile surfaces as profile surfaces of offset profiles | Proposition 4 |
 
 //!
@@ -28,6 +29,7 @@
 pub mod accuracy;
 pub mod analysis;
 pub mod approximate;
+pub mod arc_offset;
 pub mod base_frame;
 pub mod biquadratic;
 pub mod cubic;

@@ -13,7 +13,7 @@ use crate::bezier::bernstein::{self, from_power, product, restrict, to_power};
 use crate::bezier::{PiecewiseCurve, RationalBezierCurve};
 use crate::error::ResultExt;
 use crate::error::{invalid, Error, Result};
-use glam::DVec4;
+use glam::{DVec3, DVec4};
 
 /// Relative size of power-basis coefficients taken as zero when finding the degree of A² + B².
 const TRIM: f64 = 1e-11;
@@ -30,8 +30,17 @@ pub fn offset_profile(profile: &PiecewiseCurve, distance: f64) -> Result<Piecewi
     }
     let mut segments = Vec::new();
     let mut breaks = vec![profile.breaks()[0]];
-    for (k, segment) in profile_segments(profile).iter().enumerate() {
+    for (k, (segment, original)) in profile_segments(profile)
+        .iter()
+        .zip(profile.segments())
+        .enumerate()
+    {
         let (a, b) = (profile.breaks()[k], profile.breaks()[k + 1]);
+        if let Some(offset) = elementary_offset(original, distance) {
+            segments.push(offset);
+            breaks.push(b);
+            continue;
+        }
         let homogeneous =
             offset_segment(segment, distance).with_context(|| format!("profile segment {k}"))?;
         let weights: Vec<f64> = homogeneous.iter().map(|h| h.w).collect();
@@ -50,6 +59,42 @@ pub fn offset_profile(profile: &PiecewiseCurve, distance: f64) -> Result<Piecewi
     PiecewiseCurve::new(segments, breaks)
 }
 
+/// The offset of a circular arc (the concentric arc: control points scaled about the centre,
+/// weights kept) or of a straight piece (moved along its normal), directly. The general
+/// construction below covers both in principle, but its perfect-square test fails for arcs of
+/// small angle and unevenly parametrized lines, whose leading power coefficients drop to the
+/// rounding.
+fn elementary_offset(segment: &RationalBezierCurve, d: f64) -> Option<RationalBezierCurve> {
+    let flat: Vec<DVec4> = segment
+        .homogeneous()
+        .iter()
+        .map(|h| DVec4::new(h.x, h.y, 0.0, h.w))
+        .collect();
+    let curve = RationalBezierCurve::from_homogeneous(flat.clone()).ok()?;
+    let poles: Vec<DVec3> = curve.poles().collect();
+    let (first, last) = (poles[0], poles[poles.len() - 1]);
+    let size = poles
+        .iter()
+        .fold(0.0f64, |m, p| m.max((*p - first).abs().max_element()));
+    if let Some((centre, radius)) = curve.circular_arc(1e-12 * size) {
+        // N = (ẏ, −ẋ)/|ċ| points away from the centre when the arc turns left.
+        let left = (poles[1] - first).cross(last - poles[1]).z > 0.0;
+        let factor = (radius + if left { d } else { -d }) / radius;
+        let moved = flat
+            .iter()
+            .map(|h| ((h.truncate() - centre * h.w) * factor + centre * h.w).extend(h.w))
+            .collect();
+        return RationalBezierCurve::from_homogeneous(moved).ok();
+    }
+    let direction = (last - first).normalize_or_zero();
+    let straight = direction != DVec3::ZERO
+        && poles.windows(2).all(|w| {
+            let step = w[1] - w[0];
+            step.dot(direction) >= 0.0 && step.cross(direction).length() <= 1e-12 * size
+        });
+    straight.then(|| curve.similar(1.0, d * DVec3::new(direction.y, -direction.x, 0.0)))
+}
+
 /// Homogeneous control points (XS + dhB, YS − dhA, 0, hS) of one offset segment, in the
 /// lowest degree: when h divides S (circular arcs, where S ∝ h) the common factor h is
 /// cancelled, c_d = (Xq + dB, Yq − dA)/(hq) with S = qh; then degrees that the products
@@ -61,7 +106,8 @@ fn offset_segment(segment: &ProfileSegment, d: f64) -> Result<Vec<DVec4>> {
     let Some(s) = polynomial_sqrt(&speed_squared) else {
         return Err(Error::no_solution(
             "|c'| is not rational (A² + B² is no perfect square): the offset is not a rational \
-             curve; only lines, circular arcs and planar PH curves have rational offsets",
+             curve; only lines, circular arcs and planar PH curves have rational offsets (for \
+             others, offset_profile_by_arcs gives the exact offset of arcs within a tolerance)",
         ));
     };
     let (factor, shift) = match exact_quotient(&s, &segment.h) {
@@ -224,6 +270,38 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn small_arcs_and_unevenly_parametrized_lines_are_offset_exactly() {
+        for angle in [1e-2f64, 1e-4, 1e-7] {
+            let half = 0.5 * angle;
+            let (r, w) = (3.0, half.cos());
+            let at = |a: f64, s: f64| DVec3::new(a.cos(), a.sin(), 0.0) * s;
+            let arc = RationalBezierCurve::from_weighted(
+                &[at(-half, r), at(0.0, r / w), at(half, r)],
+                &[1.0, w, 1.0],
+            )
+            .unwrap();
+            // Counterclockwise: N = (ẏ, −ẋ) points outwards.
+            let offset = offset_profile(&single(arc), 0.2).unwrap();
+            for i in 0..=10 {
+                let p = offset.eval(i as f64 / 10.0);
+                assert!(
+                    (p.length() - 3.2).abs() < 1e-14,
+                    "angle {angle}: {}",
+                    p.length()
+                );
+            }
+        }
+        let uneven = RationalBezierCurve::polynomial(&[
+            DVec3::ZERO,
+            DVec3::new(0.1 + 1e-9, 0.0, 0.0),
+            DVec3::new(0.2, 0.0, 0.0),
+        ])
+        .unwrap();
+        let offset = offset_profile(&single(uneven), 0.5).unwrap();
+        assert!((offset.eval(0.3) - DVec3::new(offset.eval(0.3).x, -0.5, 0.0)).length() < 1e-15);
     }
 
     #[test]

@@ -120,31 +120,6 @@ fn is_straight(c: &RationalBezierCurve, tol: f64) -> bool {
     poles.iter().all(|&p| (p - a).cross(u).length() <= tol)
 }
 
-/// (centre, radius) when a rational quadratic is a circular arc: equal legs and the inner
-/// weight, in standard form, the cosine of the angle between leg and chord.
-fn circular_arc(c: &RationalBezierCurve, tol: f64) -> Option<(DVec3, f64)> {
-    if c.degree() != 2 {
-        return None;
-    }
-    let h = c.homogeneous();
-    let (p0, p1, p2) = (
-        h[0].truncate() / h[0].w,
-        h[1].truncate() / h[1].w,
-        h[2].truncate() / h[2].w,
-    );
-    let w = h[1].w / (h[0].w * h[2].w).sqrt();
-    let (l0, l1) = ((p1 - p0).length(), (p2 - p1).length());
-    let chord = p2 - p0;
-    let cos = (p1 - p0).dot(chord) / (l0 * chord.length());
-    if (l0 - l1).abs() > tol || (w - cos).abs() > 1e-12 || w <= 0.0 {
-        return None;
-    }
-    // The centre lies on the normal of the leg at p0, equidistant from p0 and p2.
-    let normal = (p1 - p0).cross(chord).cross(p1 - p0).normalize();
-    let s = chord.length_squared() / (2.0 * chord.dot(normal));
-    Some((p0 + s * normal, s.abs()))
-}
-
 impl ConvexProfile {
     /// The Gauss-map description of a closed, planar, convex curve; `name` is how the
     /// caller calls it (`bottom`, `top`). Refuses open, non-planar, degenerate and
@@ -450,7 +425,7 @@ fn gauss_map(
             features.push(Feature {
                 kind: FeatureKind::Arc {
                     curve: c.clone(),
-                    circle: circular_arc(c, tol),
+                    circle: c.circular_arc(tol),
                 },
                 from: theta,
                 to: theta + turn,

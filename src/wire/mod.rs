@@ -163,13 +163,13 @@ pub fn sweep_wire(
                 through,
                 end,
             } => RawEdge::Arc(unit(*start), unit(*through), unit(*end)),
-            Edge::Curve(c) => RawEdge::Curve(normalized(c, 1.0 / scale, -center / scale)),
+            Edge::Curve(c) => RawEdge::Curve(c.similar(1.0 / scale, -center / scale)),
         })
         .collect();
-    let outer = normalized(profile, 1.0 / scale, DVec3::ZERO);
+    let outer = profile.similar(1.0 / scale, DVec3::ZERO);
     let holes: Vec<PiecewiseCurve> = holes
         .iter()
-        .map(|h| normalized(h, 1.0 / scale, DVec3::ZERO))
+        .map(|h| h.similar(1.0 / scale, DVec3::ZERO))
         .collect();
     for (name, curve) in std::iter::once(("profile".to_string(), &outer)).chain(
         holes
@@ -274,16 +274,6 @@ fn edge_points(edge: &Edge) -> Vec<DVec3> {
         } => vec![*start, *through, *end],
         Edge::Curve(c) => c.segments().iter().flat_map(|s| s.poles()).collect(),
     }
-}
-
-/// The curve scaled by `scale` and moved by `offset`.
-fn normalized(curve: &PiecewiseCurve, scale: f64, offset: DVec3) -> PiecewiseCurve {
-    let segments = curve
-        .segments()
-        .iter()
-        .map(|s| s.similar(scale, offset))
-        .collect();
-    PiecewiseCurve::new(segments, curve.breaks().to_vec()).expect("the same breaks")
 }
 
 #[cfg(test)]

@@ -464,7 +464,7 @@ fn results_do_not_depend_on_scale_or_position() {
                 _ => unreachable!(),
             })
             .collect();
-        let profile = super::normalized(&square(0.5), scale, DVec3::ZERO);
+        let profile = square(0.5).similar(scale, DVec3::ZERO);
         let o = WireSweep {
             corner: Corner::Round(Some(scale)),
             ..options
@@ -683,7 +683,7 @@ fn a_ph_spline_edge_is_used_as_it_is() {
 /// Sizes outside [1e-290, 1e290] are refused.
 #[test]
 fn wires_of_subnormal_or_huge_size_are_refused() {
-    let tiny = super::normalized(&circle(1.0), 6.25e-313, DVec3::ZERO);
+    let tiny = circle(1.0).similar(6.25e-313, DVec3::ZERO);
     let e = sweep_wire(
         &[Edge::Curve(tiny)],
         &circle(1e-313),
