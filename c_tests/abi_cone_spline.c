@@ -294,6 +294,108 @@ static void test_approximations(void) {
     CHECK(untouched == sentinel_spline(), "failing calls write nothing");
 }
 
+/* The smallest relative clearance of the vertices of a tangent-surface fit of the twisted
+ * cubic over v in [v_min, v_max], from the exported data only: the selected rulings
+ * x(t) + v e(t) (RMF_CONE_FIT_ELEMENTS) and the pieces. A vertex lies on every ruling of
+ * its piece; it is measured on each bounding ruling of its piece that is a selected
+ * ruling of the surface (the junction rulings inside a cone pair are not), as the distance
+ * s along e(t) beyond the band, max(v_min - s, s - v_max) / (v_max - v_min). `matched`
+ * receives how many (vertex, ruling) pairs were measured. */
+static double cubic_fit_clearance(const RmfConeSpline *spline, double v_min, double v_max, size_t *matched) {
+    double params[256], worst = INFINITY;
+    size_t n = 0, count = 0, i, k;
+    *matched = 0;
+    if (rmf_cone_spline_fit_parameters(spline, RMF_CONE_FIT_ELEMENTS, params, 256, &n) != RMF_OK ||
+        rmf_cone_spline_piece_count(spline, &count) != RMF_OK)
+        return nan("");
+    for (i = 0; i < count; i++) {
+        RmfConePiece piece;
+        if (rmf_cone_spline_piece(spline, i, &piece) != RMF_OK) return nan("");
+        if (!piece.has_vertex) continue;
+        for (k = 0; k < n; k++) {
+            const RmfVec3 points[2] = {piece.start_point, piece.end_point};
+            const RmfVec3 rulings[2] = {piece.start_ruling, piece.end_ruling};
+            RmfVec3 x, d, e;
+            int end;
+            cubic(params[k], NULL, &x, &d);
+            e = ne_unit(d);
+            for (end = 0; end < 2; end++) {
+                double s;
+                if (ne_norm(ne_cross(rulings[end], e)) > 1e-9 ||
+                    ne_norm(ne_cross(ne_sub(points[end], x), e)) > 1e-9)
+                    continue; /* not this selected ruling */
+                s = ne_dot(ne_sub(piece.vertex, x), e);
+                worst = fmin(worst, fmax(v_min - s, s - v_max) / (v_max - v_min));
+                ++*matched;
+            }
+        }
+    }
+    return worst;
+}
+
+/* rmf_cone_spline_fit_clearance: positive for fits and equal to the clearance computed
+ * above from the exported data (within 1e-9 relative: both measure the same vertices on
+ * the same rulings; the library does so in coordinates scaled to the surface); kept by the
+ * development; refused for splines that are not fits, with nothing written. */
+static void test_fit_clearance(void) {
+    RmfConeSpline *spline = NULL, *flat = NULL, *hermite = NULL;
+    double clearance = -1, flat_clearance = -1, untouched = -7, mine;
+    size_t matched = 0;
+    RmfConeElement els[2];
+    CHECK_STATUS(rmf_cone_spline_approximate(NULL, cubic, NULL, 0.2, 1.2, 0.5, 1.0, 1e-3,
+                                             RMF_CONE_RULE_MIN_VERTEX_DISTANCE, 1000, &spline, NULL),
+                 RMF_OK, "");
+    CHECK_STATUS(rmf_cone_spline_fit_clearance(spline, &clearance), RMF_OK, "");
+    mine = cubic_fit_clearance(spline, 0.5, 1.0, &matched);
+    printf("twisted cubic, v in [0.5, 1], 1e-3: vertex clearance %.6e (library), %.6e (from the pieces, %zu "
+           "vertex-ruling pairs), difference %.1e\n",
+           clearance, mine, matched, fabs(clearance - mine));
+    CHECK(clearance > 0 && isfinite(clearance), "the vertices keep out of the region");
+    CHECK(matched >= 2, "vertices measured on the selected rulings");
+    CHECK(fabs(clearance - mine) <= 1e-9 * fmax(1.0, fabs(mine)), "the clearance measured from the exported data");
+    CHECK_STATUS(rmf_cone_spline_develop(spline, &flat), RMF_OK, "");
+    CHECK_STATUS(rmf_cone_spline_fit_clearance(flat, &flat_clearance), RMF_OK, "");
+    CHECK(flat_clearance == clearance, "the development keeps the fit's clearance");
+    rmf_cone_spline_free(flat);
+
+    /* The dual form (a cone, box region): positive too. */
+    {
+        const double planes[12] = {0, 1, 0, -0.5, 0, 1, 1, -0.5, 0, 0, 1, -0.5};
+        const double knots[6] = {0, 0, 0, 1, 1, 1};
+        RmfConeSpline *dual = NULL;
+        RmfBox box;
+        double dual_clearance = -1;
+        box.min = vec3(-3, -3, 1);
+        box.max = vec3(3, 3, 2);
+        CHECK_STATUS(rmf_cone_spline_approximate_dual(2, planes, 3, knots, 6, &box, 1e-4, 0, 1000, &dual, NULL),
+                     RMF_OK, "");
+        CHECK_STATUS(rmf_cone_spline_fit_clearance(dual, &dual_clearance), RMF_OK, "");
+        printf("dual cone in a box, 1e-4: vertex clearance %.6e\n", dual_clearance);
+        CHECK(dual_clearance > 0, "the dual fit's vertices keep out of the box's rulings");
+        rmf_cone_spline_free(dual);
+    }
+
+    /* Not a fit: Hermite cone pairs and osculating cone splines have no fitted region. */
+    els[0] = cubic_element(0.4, 2.5);
+    els[1] = cubic_element(0.6, 2.5);
+    CHECK_STATUS(rmf_cone_spline_hermite(els, 2, RMF_CONE_RULE_MIN_VERTEX_DISTANCE, 0, NULL, &hermite), RMF_OK, "");
+    CHECK_STATUS(rmf_cone_spline_fit_clearance(hermite, &untouched), RMF_ERROR_INVALID_INPUT,
+                 "not made by an approximation");
+    rmf_cone_spline_free(hermite);
+    {
+        const double ts[3] = {0.2, 0.7, 1.2};
+        RmfConeSpline *osculating = NULL;
+        CHECK_STATUS(rmf_cone_spline_osculating(NULL, cubic, NULL, 0.2, 1.2, 0.5, 1.0, ts, 3, &osculating), RMF_OK, "");
+        CHECK_STATUS(rmf_cone_spline_fit_clearance(osculating, &untouched), RMF_ERROR_INVALID_INPUT,
+                     "no region of interest");
+        rmf_cone_spline_free(osculating);
+    }
+    CHECK_STATUS(rmf_cone_spline_fit_clearance(NULL, &untouched), RMF_ERROR_NULL_POINTER, "spline");
+    CHECK_STATUS(rmf_cone_spline_fit_clearance(spline, NULL), RMF_ERROR_NULL_POINTER, "clearance");
+    CHECK(untouched == -7, "failing calls write nothing");
+    rmf_cone_spline_free(spline);
+}
+
 /* The entry points with an options struct or a curve handle (0.2) give the splines of the
  * deprecated long calls, with the same fit; NULL options and a wrong struct_size are refused
  * with a message naming the argument, and nothing is written. */
@@ -475,6 +577,7 @@ int main(void) {
     test_hermite_surface_and_pieces();
     test_hermite_bad_input();
     test_approximations();
+    test_fit_clearance();
     test_option_struct_entry_points();
     test_close_rulings();
     return rmf_check_exit_code("abi_cone_spline");

@@ -2071,6 +2071,37 @@ RmfStatus rmf_cone_spline_offset(const struct RmfConeSpline *spline,
 RmfStatus rmf_cone_spline_fit_error(const struct RmfConeSpline *spline, double *max_error);
 
 /**
+ * How far the vertices of a fitted spline keep out of the region of interest Ω, the part
+ * of the input surface the approximation was asked for: on each ruling the band of
+ * distances v_min … v_max from the curve (rmf_cone_spline_approximate*), the ruling
+ * between the rails (rmf_cone_spline_approximate_ruled), or the ruling's segment in the
+ * box (rmf_cone_spline_approximate_dual*). The fit keeps every vertex outside Ω.
+ *
+ * The value is relative and has no unit: for each piece with a vertex, measured on the
+ * selected ruling (RMF_CONE_FIT_ELEMENTS) on which the vertex lies — the first piece of
+ * each cone pair on the pair's first ruling, the last on its last —, the distance of the
+ * vertex beyond the nearer end of that ruling's band, divided by the band's length
+ * (for a tangent surface v_max − v_min): max(lo − s, s − hi) / (hi − lo) for a vertex at
+ * signed distance s along the ruling where the band is [lo, hi]. The smallest over the
+ * spline is reported. 0 is a vertex at a band's end (admissible), positive outside the
+ * band; it is never below −1e-9 (the rounding margin at the band's ends). +∞ (INFINITY)
+ * when no piece has a vertex (only cylinders and plane strips). Kept, like the fit error,
+ * by bending, development and offsets (distances along the rulings do not change under
+ * bending and development; for an offset it remains the fit's figure).
+ *
+ * @param[in] spline A spline made by rmf_cone_spline_approximate*.
+ * @param[out] clearance Receives the smallest relative clearance. Untouched on failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If spline or clearance is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If the spline was not made by an approximation
+ *         (rmf_cone_spline_hermite, the osculating cone splines and sheet-metal parts have
+ *         no fitted region to measure against).
+ * \since 0.2
+ * \ingroup rmf_cone_spline
+ */
+RmfStatus rmf_cone_spline_fit_clearance(const struct RmfConeSpline *spline, double *clearance);
+
+/**
  * Copies the parameters an approximation selected (RMF_CONE_FIT_ELEMENTS: the rulings
  * joined by cone pairs, increasing) or found (RMF_CONE_FIT_INFLECTIONS: the inflection
  * generators, which are among the elements).

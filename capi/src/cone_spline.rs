@@ -155,6 +155,9 @@ struct Fit {
     max_error: f64,
     parameters: Vec<f64>,
     inflections: Vec<f64>,
+    /// `Approximation::vertex_clearance`: the smallest relative clearance of a vertex from
+    /// the region of interest.
+    vertex_clearance: f64,
 }
 
 /// A cone spline surface (opaque). Freed with rmf_cone_spline_free. Immutable; may be read
@@ -208,6 +211,7 @@ impl RmfConeSpline {
                 max_error: f.max_error,
                 parameters: f.parameters.clone(),
                 inflections: f.inflections.clone(),
+                vertex_clearance: f.vertex_clearance,
             }),
         }
     }
@@ -332,6 +336,7 @@ unsafe fn finish_fit(
             max_error: fit.max_error,
             parameters: fit.parameters,
             inflections: fit.inflections,
+            vertex_clearance: fit.vertex_clearance,
         }),
     };
     write(out, handle.into_raw());
@@ -1180,6 +1185,53 @@ pub unsafe extern "C" fn rmf_cone_spline_fit_error(
             return invalid_arg("the spline was not made by an approximation".into());
         };
         write(max_error, fit.max_error);
+        Ok(())
+    })
+}
+
+/// How far the vertices of a fitted spline keep out of the region of interest Ω, the part
+/// of the input surface the approximation was asked for: on each ruling the band of
+/// distances v_min … v_max from the curve (rmf_cone_spline_approximate*), the ruling
+/// between the rails (rmf_cone_spline_approximate_ruled), or the ruling's segment in the
+/// box (rmf_cone_spline_approximate_dual*). The fit keeps every vertex outside Ω.
+///
+/// The value is relative and has no unit: for each piece with a vertex, measured on the
+/// selected ruling (RMF_CONE_FIT_ELEMENTS) on which the vertex lies — the first piece of
+/// each cone pair on the pair's first ruling, the last on its last —, the distance of the
+/// vertex beyond the nearer end of that ruling's band, divided by the band's length
+/// (for a tangent surface v_max − v_min): max(lo − s, s − hi) / (hi − lo) for a vertex at
+/// signed distance s along the ruling where the band is [lo, hi]. The smallest over the
+/// spline is reported. 0 is a vertex at a band's end (admissible), positive outside the
+/// band; it is never below −1e-9 (the rounding margin at the band's ends). +∞ (INFINITY)
+/// when no piece has a vertex (only cylinders and plane strips). Kept, like the fit error,
+/// by bending, development and offsets (distances along the rulings do not change under
+/// bending and development; for an offset it remains the fit's figure).
+///
+/// @param[in] spline A spline made by rmf_cone_spline_approximate*.
+/// @param[out] clearance Receives the smallest relative clearance. Untouched on failure.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If spline or clearance is NULL.
+/// @return RMF_ERROR_INVALID_INPUT If the spline was not made by an approximation
+///         (rmf_cone_spline_hermite, the osculating cone splines and sheet-metal parts have
+///         no fitted region to measure against).
+/// \since 0.2
+/// \ingroup rmf_cone_spline
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_fit_clearance(
+    spline: *const RmfConeSpline,
+    clearance: *mut f64,
+) -> RmfStatus {
+    guard("rmf_cone_spline_fit_clearance", || {
+        let spline = reference(spline, "spline")?;
+        let clearance = out_ptr(clearance, "clearance")?;
+        let Some(fit) = &spline.fit else {
+            return invalid_arg(
+                "the spline was not made by an approximation (rmf_cone_spline_approximate*): \
+                 it has no region of interest to measure its vertices against"
+                    .into(),
+            );
+        };
+        write(clearance, fit.vertex_clearance);
         Ok(())
     })
 }

@@ -1874,6 +1874,65 @@ fn rows() -> Vec<Row> {
             },
         },
         Row {
+            what: "fit clearance of no spline",
+            function: "rmf_cone_spline_fit_clearance",
+            expected: NULL,
+            names: "spline",
+            call: |_| {
+                let mut clearance = 0.0;
+                unsafe { rmf_cone_spline_fit_clearance(null(), &mut clearance) }
+            },
+        },
+        Row {
+            what: "fit clearance without an out-pointer",
+            function: "rmf_cone_spline_fit_clearance",
+            expected: NULL,
+            names: "clearance",
+            call: |_| {
+                let mut spline = null_mut();
+                unsafe {
+                    twisted_cubic_cones(0, 1000, &mut spline);
+                    let status = rmf_cone_spline_fit_clearance(spline, null_mut());
+                    rmf_cone_spline_free(spline);
+                    status
+                }
+            },
+        },
+        Row {
+            what: "fit clearance of a spline that is not a fit",
+            function: "rmf_cone_spline_fit_clearance",
+            expected: INVALID,
+            names: "not made by an approximation",
+            call: |_| {
+                // Rulings through the origin: a cone pair with their common vertex.
+                let e = RmfConeElement {
+                    point: v(1., 0., 1.),
+                    ruling: v(1., 0., 1.),
+                    side: v(0., 1., 0.),
+                };
+                let second = RmfConeElement {
+                    point: v(0., 1., 1.),
+                    ruling: v(0., 1., 1.),
+                    side: v(-1., 0., 0.),
+                };
+                let (mut spline, mut clearance) = (null_mut(), 0.0);
+                unsafe {
+                    let made = rmf_cone_spline_hermite(
+                        [e, second].as_ptr(),
+                        2,
+                        RMF_CONE_RULE_MIN_VERTEX_DISTANCE,
+                        0.0,
+                        null(),
+                        &mut spline,
+                    );
+                    assert_eq!(made, RmfStatus::RmfOk, "{}", last_error());
+                    let status = rmf_cone_spline_fit_clearance(spline, &mut clearance);
+                    rmf_cone_spline_free(spline);
+                    status
+                }
+            },
+        },
+        Row {
             what: "cone approximation options NULL",
             function: "rmf_cone_spline_approximate_with_options",
             expected: NULL,

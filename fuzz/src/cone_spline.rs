@@ -293,6 +293,15 @@ fn fit_report(s: &mut Session) {
     let mut e = poisoned::<f64>();
     let status = unsafe { rmf_cone_spline_fit_error(spline, &mut e) };
     checked("rmf_cone_spline_fit_error", status, &[is_poisoned(&e)]);
+    let mut c = poisoned::<f64>();
+    let status = unsafe { rmf_cone_spline_fit_clearance(spline, &mut c) };
+    if checked("rmf_cone_spline_fit_clearance", status, &[is_poisoned(&c)]) {
+        // The fit keeps every vertex outside the region, up to the rounding margin.
+        assert!(
+            c >= -1e-9,
+            "rmf_cone_spline_fit_clearance: a vertex inside the region: {c}"
+        );
+    }
     let (which, capacity) = (s.input.code(), s.input.work().min(64));
     let mut values = poisoned_buffer::<f64>(capacity);
     let mut count = poisoned::<usize>();
