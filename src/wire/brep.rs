@@ -559,10 +559,13 @@ fn section_point(p: &RationalBezierPatch, u: f64, end: bool) -> DVec3 {
     for (c, row) in column.iter_mut().zip(p.homogeneous().chunks_exact(nv)) {
         *c = row[j];
     }
-    crate::bezier::homogeneous::project(crate::bezier::bernstein::evaluate(
-        &column[..=p.degree_u()],
-        u,
-    ))
+    // de Casteljau in place, as `bernstein::evaluate` does.
+    for level in (1..=p.degree_u()).rev() {
+        for i in 0..level {
+            column[i] = column[i] * (1.0 - u) + column[i + 1] * u;
+        }
+    }
+    crate::bezier::homogeneous::project(column[0])
 }
 
 /// Largest |cos| between the parameter lines of a face, patch by patch (|cos| does not
@@ -698,8 +701,8 @@ fn line_cosine_bound<const NV: usize>(s: &[DVec4; NV], su: &[DVec4; NV]) -> f64 
     let mut uu = [0.0; BOUND_LEN];
     let mut vv = [0.0; BOUND_LEN];
     convolve(u, v, &mut dot[..4 * n], DVec3::dot);
-    convolve(u, u, &mut uu[..4 * n + 1], DVec3::dot);
-    convolve(v, v, &mut vv[..4 * n - 1], DVec3::dot);
+    square(u, &mut uu[..4 * n + 1]);
+    square(v, &mut vv[..4 * n - 1]);
     // Back to Bernstein coefficients.
     let unscaled = |c: &mut [f64]| {
         let d = c.len() - 1;
@@ -755,6 +758,19 @@ const BINOMIAL: [[f64; BOUND_LEN]; BOUND_LEN] = {
     }
     t
 };
+
+/// [`convolve`] of a vector polynomial with itself under the dot product (each pair i < j
+/// once, doubled).
+fn square(a: &[DVec3], out: &mut [f64]) {
+    debug_assert_eq!(out.len(), 2 * a.len() - 1);
+    out.fill(0.0);
+    for (i, x) in a.iter().enumerate() {
+        out[2 * i] += x.dot(*x);
+        for (j, y) in a.iter().enumerate().skip(i + 1) {
+            out[i + j] += 2.0 * x.dot(*y);
+        }
+    }
+}
 
 /// out_k = Σ_{i+j=k} a_i × b_j under the bilinear `times` (the product of two polynomials
 /// in scaled Bernstein form, C(m, i)·a_i: C(m+n, k)·c_k of the product's coefficients).
