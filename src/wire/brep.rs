@@ -660,8 +660,8 @@ fn patch_cosine_bound<const NV: usize>(
 /// Why it is a bound: with S = (X, W) the homogeneous point, s_u and s_v are positive
 /// multiples (1/W²) of U = X_u W − X W_u and V = X_v W − X W_v, so |cos| = |U·V| / (|U| |V|).
 /// U, V, U·V, |U|² and |V|² are polynomials in v (degrees 2n, 2n − 1, 4n − 1, 4n, 4n − 2),
-/// computed exactly here as Bernstein products; a polynomial on [0, 1] lies between its
-/// least and largest Bernstein coefficient (convex hull property), so
+/// computed here as Bernstein products (exact but for rounding); a polynomial on [0, 1]
+/// lies between its least and largest Bernstein coefficient (convex hull property), so
 /// |cos| ≤ max |(U·V)ₖ| / √(min (|U|²)ₖ · min (|V|²)ₖ) for every v, when both minima are
 /// positive. On a line or arc swept with its RMF the exact |cos| is 0 and U·V is the
 /// round-off of the poles, so the bound is of that order. When a minimum is not positive
