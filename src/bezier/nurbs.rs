@@ -479,13 +479,28 @@ impl NurbsSurface {
             .max()
             .unwrap_or(1)
             .max(1);
+        let (nu, nv) = (ku * pu + 1, kv * pv + 1);
+        let first = surface.patch(0, 0);
+        if ku == 1 && kv == 1 && (first.degree_u(), first.degree_v()) == (pu, pv) {
+            // One patch: its control net is the NURBS net (no neighbours to join).
+            let net = first.homogeneous();
+            return Ok(Self {
+                degree_u: pu,
+                degree_v: pv,
+                pole_count_u: nu,
+                pole_count_v: nv,
+                poles: net.iter().map(|&h| project(h)).collect(),
+                weights: net.iter().map(|h| h.w).collect(),
+                knots_u: clamped_knots(surface.u_breaks(), pu),
+                knots_v: clamped_knots(surface.v_breaks(), pv),
+            });
+        }
         let scale = coordinate_scale(
             surface
                 .patches()
                 .iter()
                 .flat_map(|p| p.homogeneous().iter().map(|&h| project(h))),
         );
-        let (nu, nv) = (ku * pu + 1, kv * pv + 1);
         let mut net: Vec<Option<DVec4>> = vec![None; nu * nv];
         for a in 0..ku {
             for b in 0..kv {

@@ -171,9 +171,31 @@ pub(crate) struct Boundary {
 /// The boundaries v = v₀, u = u₁, v = v₁, u = u₀ (counter-clockwise in the parameter plane:
 /// the face's loop traverses the first two forwards, the last two backwards).
 pub(crate) fn boundaries(s: &NurbsSurface) -> [Boundary; 4] {
-    let (nu, nv) = (s.pole_count_u, s.pole_count_v);
+    [0, 1, 2, 3].map(|side| {
+        let (origin, direction) = boundary_line(s, side);
+        Boundary {
+            curve: boundary_curve(s, side),
+            origin,
+            direction,
+        }
+    })
+}
+
+/// Side `side` of [`boundaries`] in the parameter plane alone: (origin, direction).
+pub(crate) fn boundary_line(s: &NurbsSurface, side: usize) -> ((f64, f64), (f64, f64)) {
     let (u0, u1) = (s.knots_u[0], s.knots_u[s.knots_u.len() - 1]);
     let (v0, v1) = (s.knots_v[0], s.knots_v[s.knots_v.len() - 1]);
+    match side {
+        0 => ((0.0, v0), (1.0, 0.0)),
+        1 => ((u1, 0.0), (0.0, 1.0)),
+        2 => ((0.0, v1), (1.0, 0.0)),
+        _ => ((u0, 0.0), (0.0, 1.0)),
+    }
+}
+
+/// The curve of side `side` of [`boundaries`] alone.
+pub(crate) fn boundary_curve(s: &NurbsSurface, side: usize) -> NurbsCurve {
+    let (nu, nv) = (s.pole_count_u, s.pole_count_v);
     let column = |j: usize| NurbsCurve {
         degree: s.degree_u,
         poles: (0..nu).map(|i| s.poles[i * nv + j]).collect(),
@@ -186,28 +208,12 @@ pub(crate) fn boundaries(s: &NurbsSurface) -> [Boundary; 4] {
         weights: s.weights[i * nv..(i + 1) * nv].to_vec(),
         knots: s.knots_v.clone(),
     };
-    [
-        Boundary {
-            curve: column(0),
-            origin: (0.0, v0),
-            direction: (1.0, 0.0),
-        },
-        Boundary {
-            curve: row(nu - 1),
-            origin: (u1, 0.0),
-            direction: (0.0, 1.0),
-        },
-        Boundary {
-            curve: column(nv - 1),
-            origin: (0.0, v1),
-            direction: (1.0, 0.0),
-        },
-        Boundary {
-            curve: row(0),
-            origin: (u0, 0.0),
-            direction: (0.0, 1.0),
-        },
-    ]
+    match side {
+        0 => column(0),
+        1 => row(nu - 1),
+        2 => column(nv - 1),
+        _ => row(0),
+    }
 }
 
 /// Whether two boundary curves are the same curve (same parameterization; homogeneous

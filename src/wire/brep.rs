@@ -15,6 +15,12 @@
 //!
 //! An open wire gets a planar cap at each end, bounded by the profile's loops there.
 //!
+//! The report's max |cos| between parameter lines is taken on the lines u = i/8 of every
+//! patch: along the lines and arcs (degree ≤ 2 in v) as a bound over the whole line from
+//! the Bernstein coefficients of polynomials in v (see `line_cosine_bound`), which costs
+//! less than sampling and misses nothing between samples; along PH pieces (degree 9) by 9
+//! samples per line.
+//!
 //! Topology. Stations k = 0 … M separate the M pieces (a closed wire's station M is station
 //! 0, its profile edges turned onto one another by the closing turn). Section edges lie at
 //! the stations (one per profile edge), spine edges along the pieces (one per profile
@@ -34,7 +40,8 @@ use crate::bezier::{
 };
 use crate::error::{invalid, Result};
 use crate::export::step::{
-    boundaries, Brep, BrepBound, BrepEdge, BrepFace, BrepSurface, BrepUse, PCurve,
+    boundary_curve, boundary_line, Brep, BrepBound, BrepEdge, BrepFace, BrepSurface, BrepUse,
+    PCurve,
 };
 use crate::frames::metrics::{angle_about_tangent, partials_cosine};
 use crate::frames::Frame;
@@ -94,8 +101,11 @@ pub struct SweepReport {
     /// and closure turn, linear in arc length); 0 on untwisted lines and arcs.
     pub rmf_angle_error: f64,
     /// Largest |cos| of the angle between the parameter lines of the lateral faces (0 on an
-    /// exact RMF sweep, Mäurer & Jüttler (43)), sampled on every patch; miter legs, ruled
-    /// between oblique sections, are not orthogonal.
+    /// exact RMF sweep, Mäurer & Jüttler (43)), measured on every patch on its 9 parameter
+    /// lines u = i/8 along the spine: on patches of degree ≤ 2 along the spine (lines and
+    /// arcs) a bound over each whole line (Bernstein coefficients of the polynomials of
+    /// s_u·s_v, |s_u|², |s_v|²), on the others the largest of 9 samples on each line; miter
+    /// legs, ruled between oblique sections, are not orthogonal.
     pub max_parameter_cosine: f64,
     /// The least singularity margin g = 1 − κ c·n over the sweep (Cor. 7; 1 where the spine
     /// is straight), and for miter legs 1 − (length of the cuts)/(length of the leg); > 0.
@@ -339,11 +349,12 @@ pub(crate) fn build(
     let images = closure_images(transport, profile)?;
     let seam_gap = seam_gap(&normalized, profile, images.as_ref()) * placement.scale;
     let joint_gap = joint_gap(&normalized) * placement.scale;
+    let mut bases = CosineBases::new();
     let max_cosine = normalized
         .iter()
         .flatten()
         .flatten()
-        .map(max_parameter_cosine)
+        .map(|s| max_parameter_cosine(s, &mut bases))
         .fold(0.0, f64::max);
     // In the caller's coordinates.
     let surfaces: Vec<Vec<Vec<PiecewiseSurface>>> = normalized
@@ -367,15 +378,20 @@ pub(crate) fn build(
     let mut topology = Topology::new(transport, profile, &nurbs, images.as_ref());
     let mut faces = Vec::new();
     let mut brep_faces = Vec::new();
-    for (j, framed) in transport.pieces.iter().enumerate() {
+    // The surfaces and their NURBS move into the faces.
+    for (j, ((framed, nurbs), surfaces)) in
+        transport.pieces.iter().zip(nurbs).zip(surfaces).enumerate()
+    {
         let mut global_edge = 0;
-        for (l, lp) in profile.loops.iter().enumerate() {
-            for e in 0..lp.edges.len() {
+        for (l, ((lp, nurbs), surfaces)) in
+            profile.loops.iter().zip(nurbs).zip(surfaces).enumerate()
+        {
+            for (e, (n, surface)) in nurbs.into_iter().zip(surfaces).enumerate() {
                 let reversed = lp.closed && ((lp.area > 0.0) != (l == 0));
-                brep_faces.push(topology.lateral_face(j, l, e, &nurbs[j][l][e], !reversed));
+                brep_faces.push(topology.lateral_face(j, l, e, n, !reversed));
                 faces.push(Face {
                     kind: FaceKind::Swept,
-                    surface: Some(surfaces[j][l][e].clone()),
+                    surface: Some(surface),
                     plane: None,
                     loops: Vec::new(),
                     spine_edge: framed.piece.edge,
@@ -502,35 +518,275 @@ fn seam_gap(
 }
 
 /// Largest distance between the end section of each piece and the start section of the
-/// next (the same profile edge, the same parameter).
+/// next (the same profile edge, the same parameter), at COSINE_SAMPLES + 1 local
+/// parameters of every profile segment.
 fn joint_gap(surfaces: &[Vec<Vec<PiecewiseSurface>>]) -> f64 {
     let mut gap = 0.0f64;
     for pair in surfaces.windows(2) {
         for (before, after) in pair[0].iter().flatten().zip(pair[1].iter().flatten()) {
             let (v1, v0) = (before.domain_v().1, after.domain_v().0);
-            for u in grid_parameters(before.u_breaks(), COSINE_SAMPLES) {
-                gap = gap.max(before.eval(u, v1).distance(after.eval(u, v0)));
+            if before.u_breaks() != after.u_breaks() {
+                for u in grid_parameters(before.u_breaks(), COSINE_SAMPLES) {
+                    gap = gap.max(before.eval(u, v1).distance(after.eval(u, v0)));
+                }
+                continue;
+            }
+            let (last, segments) = (before.v_breaks().len() - 2, before.u_breaks().len() - 1);
+            for a in 0..segments {
+                let (end, start) = (before.patch(a, last), after.patch(a, 0));
+                // The last segment's end too (the next segment's start elsewhere).
+                let steps = COSINE_SAMPLES + usize::from(a + 1 == segments);
+                for k in 0..steps {
+                    let u = k as f64 / COSINE_SAMPLES as f64;
+                    gap = gap
+                        .max(section_point(end, u, true).distance(section_point(start, u, false)));
+                }
             }
         }
     }
     gap
 }
 
-/// On a grid of COSINE_SAMPLES + 1 local parameters each way on every patch (|cos| does not
-/// depend on the patch's parameter scale).
-fn max_parameter_cosine(s: &PiecewiseSurface) -> f64 {
+/// The point at local u of a patch's boundary v = 0 or (`end`) v = 1: its first or last
+/// column of control points as a rational curve (what the patch is there).
+fn section_point(p: &RationalBezierPatch, u: f64, end: bool) -> DVec3 {
+    let nv = p.degree_v() + 1;
+    let mut column = [DVec4::ZERO; MAX_BOUNDED_DEGREE_U + 1];
+    if p.degree_u() > MAX_BOUNDED_DEGREE_U {
+        return p.eval(u, if end { 1.0 } else { 0.0 });
+    }
+    let j = if end { nv - 1 } else { 0 };
+    for (c, row) in column.iter_mut().zip(p.homogeneous().chunks_exact(nv)) {
+        *c = row[j];
+    }
+    // de Casteljau in place, as `bernstein::evaluate` does.
+    for level in (1..=p.degree_u()).rev() {
+        for i in 0..level {
+            column[i] = column[i] * (1.0 - u) + column[i + 1] * u;
+        }
+    }
+    crate::bezier::homogeneous::project(column[0])
+}
+
+/// Largest |cos| between the parameter lines of a face, patch by patch (|cos| does not
+/// depend on the patch's parameter scale): on the lines u = i/COSINE_SAMPLES (local) of
+/// every patch, a bound over the whole line v ∈ [0, 1] for patches of degree ≤
+/// [`BOUNDED_DEGREE_V`] along the spine (the lines and arcs, see [`line_cosine_bound`]),
+/// the largest of COSINE_SAMPLES + 1 samples on it otherwise.
+fn max_parameter_cosine(s: &PiecewiseSurface, bases: &mut CosineBases) -> f64 {
     let mut worst = 0.0f64;
-    for a in 0..s.u_breaks().len() - 1 {
-        for b in 0..s.v_breaks().len() - 1 {
-            s.patch(a, b).grid_partials(COSINE_SAMPLES, |du, dv| {
-                let c = partials_cosine(du, dv);
-                if c.is_finite() {
-                    worst = worst.max(c);
-                }
-            });
+    for p in s.patches() {
+        let c = match (p.degree_v(), p.degree_u() <= MAX_BOUNDED_DEGREE_U) {
+            (1, true) => patch_cosine_bound::<2>(p, bases.of(p.degree_u())),
+            (2, true) => patch_cosine_bound::<3>(p, bases.of(p.degree_u())),
+            _ => {
+                let mut worst = 0.0f64;
+                p.grid_partials(COSINE_SAMPLES, |du, dv| {
+                    let c = partials_cosine(du, dv);
+                    if c.is_finite() {
+                        worst = worst.max(c);
+                    }
+                });
+                worst
+            }
+        };
+        worst = worst.max(c);
+    }
+    worst
+}
+
+/// The Bernstein basis with its derivatives at u = k/COSINE_SAMPLES, of the last degree
+/// asked for (the profile edges of a sweep mostly share one degree).
+struct CosineBases {
+    degree: usize,
+    table: [[[f64; 3]; MAX_BOUNDED_DEGREE_U + 1]; COSINE_SAMPLES + 1],
+}
+
+impl CosineBases {
+    fn new() -> Self {
+        Self {
+            degree: usize::MAX,
+            table: [[[0.0; 3]; MAX_BOUNDED_DEGREE_U + 1]; COSINE_SAMPLES + 1],
+        }
+    }
+
+    fn of(&mut self, degree: usize) -> &[[[f64; 3]; MAX_BOUNDED_DEGREE_U + 1]; COSINE_SAMPLES + 1] {
+        if degree != self.degree {
+            for (k, b) in self.table.iter_mut().enumerate() {
+                crate::bezier::bernstein::basis_jet(degree, k as f64 / COSINE_SAMPLES as f64, b);
+            }
+            self.degree = degree;
+        }
+        &self.table
+    }
+}
+
+/// Degrees along the spine up to which the parameter lines are bounded, not sampled: 1
+/// (the ruled patches of lines) and 2 (the torus patches of arcs).
+const BOUNDED_DEGREE_V: usize = 2;
+
+/// Profile degrees of the bound (the rows' sums live on the stack).
+const MAX_BOUNDED_DEGREE_U: usize = 8;
+
+/// Coefficients of the polynomials of [`line_cosine_bound`]: degree ≤ 4·BOUNDED_DEGREE_V.
+const BOUND_LEN: usize = 4 * BOUNDED_DEGREE_V + 1;
+
+/// [`line_cosine_bound`] on the lines u = i/COSINE_SAMPLES of one patch of NV control
+/// points along v (a constant, so that the small loops unroll).
+fn patch_cosine_bound<const NV: usize>(
+    p: &RationalBezierPatch,
+    bases: &[[[f64; 3]; MAX_BOUNDED_DEGREE_U + 1]; COSINE_SAMPLES + 1],
+) -> f64 {
+    let nu = p.degree_u() + 1;
+    let mut worst = 0.0f64;
+    for basis in bases {
+        // The line u = const and its u-derivative: homogeneous Bézier curves in v.
+        let (mut s, mut su) = ([DVec4::ZERO; NV], [DVec4::ZERO; NV]);
+        for (row, b) in p.homogeneous().chunks_exact(NV).zip(&basis[..nu]) {
+            for j in 0..NV {
+                s[j] += row[j] * b[0];
+                su[j] += row[j] * b[1];
+            }
+        }
+        worst = worst.max(line_cosine_bound::<NV>(&s, &su));
+    }
+    worst
+}
+
+/// sup |cos ∠(s_u, s_v)| over v ∈ [0, 1] on one line u = const of a rational patch, given
+/// the line's homogeneous Bézier points S_j (degree n ≤ [`BOUNDED_DEGREE_V`] in v) and
+/// those of its u-derivative S_u,j.
+///
+/// Why it is a bound: with S = (X, W) the homogeneous point, s_u and s_v are positive
+/// multiples (1/W²) of U = X_u W − X W_u and V = X_v W − X W_v, so |cos| = |U·V| / (|U| |V|).
+/// U, V, U·V, |U|² and |V|² are polynomials in v (degrees 2n, 2n − 1, 4n − 1, 4n, 4n − 2),
+/// computed here as Bernstein products (exact but for rounding); a polynomial on [0, 1]
+/// lies between its least and largest Bernstein coefficient (convex hull property), so
+/// |cos| ≤ max |(U·V)ₖ| / √(min (|U|²)ₖ · min (|V|²)ₖ) for every v, when both minima are
+/// positive. On a line or arc swept with its RMF the exact |cos| is 0 and U·V is the
+/// round-off of the poles, so the bound is of that order. When a minimum is not positive
+/// (a degenerate line, or one the bound cannot separate from 0), the line is sampled at
+/// COSINE_SAMPLES + 1 points instead. Computed in floating point like the samples: the
+/// bound holds up to the rounding of its own sums (≈ 1e-16 relative to |U|·|V|).
+fn line_cosine_bound<const NV: usize>(s: &[DVec4; NV], su: &[DVec4; NV]) -> f64 {
+    let n = NV - 1;
+    // Scaled Bernstein coefficients C(n, j)·a_j, in which a product is the convolution.
+    let scaled = |a: &[DVec4], out: &mut [DVec4]| {
+        for (j, (o, &x)) in out.iter_mut().zip(a).enumerate() {
+            *o = x * BINOMIAL[a.len() - 1][j];
+        }
+    };
+    let (mut s_, mut su_, mut sv_) = (
+        [DVec4::ZERO; BOUNDED_DEGREE_V + 1],
+        [DVec4::ZERO; BOUNDED_DEGREE_V + 1],
+        [DVec4::ZERO; BOUNDED_DEGREE_V],
+    );
+    scaled(s, &mut s_);
+    scaled(su, &mut su_);
+    // S_v: the hodograph, degree n − 1.
+    let mut hodograph = [DVec4::ZERO; BOUNDED_DEGREE_V];
+    for j in 0..n {
+        hodograph[j] = (s[j + 1] - s[j]) * n as f64;
+    }
+    scaled(&hodograph[..n], &mut sv_);
+    let (s_, su_, sv_) = (&s_[..=n], &su_[..=n], &sv_[..n]);
+    // U = X_u W − X W_u (degree 2n) and V = X_v W − X W_v (degree 2n − 1), scaled.
+    let mut u = [DVec3::ZERO; BOUND_LEN];
+    let mut v = [DVec3::ZERO; BOUND_LEN];
+    let minor = |a: DVec4, b: DVec4| a.truncate() * b.w - b.truncate() * a.w;
+    convolve(su_, s_, &mut u[..2 * n + 1], minor);
+    convolve(sv_, s_, &mut v[..2 * n], minor);
+    let (u, v) = (&u[..2 * n + 1], &v[..2 * n]);
+    let mut dot = [0.0; BOUND_LEN];
+    let mut uu = [0.0; BOUND_LEN];
+    let mut vv = [0.0; BOUND_LEN];
+    convolve(u, v, &mut dot[..4 * n], DVec3::dot);
+    square(u, &mut uu[..4 * n + 1]);
+    square(v, &mut vv[..4 * n - 1]);
+    // Back to Bernstein coefficients.
+    let unscaled = |c: &mut [f64]| {
+        let d = c.len() - 1;
+        for (k, x) in c.iter_mut().enumerate() {
+            *x /= BINOMIAL[d][k];
+        }
+    };
+    unscaled(&mut dot[..4 * n]);
+    unscaled(&mut uu[..4 * n + 1]);
+    unscaled(&mut vv[..4 * n - 1]);
+    let largest = dot[..4 * n].iter().fold(0.0f64, |m, c| m.max(c.abs()));
+    let least = |c: &[f64]| c.iter().copied().fold(f64::INFINITY, f64::min);
+    let (lu, lv) = (least(&uu[..4 * n + 1]), least(&vv[..4 * n - 1]));
+    let bound = largest / (lu * lv).sqrt();
+    if lu > 0.0 && lv > 0.0 && bound.is_finite() {
+        return bound.min(1.0);
+    }
+    // Sampled: s_u and s_v are positive multiples of U and V (scaled coefficients back).
+    let mut u_ = [DVec3::ZERO; BOUND_LEN];
+    let mut v_ = [DVec3::ZERO; BOUND_LEN];
+    for (k, x) in u.iter().enumerate() {
+        u_[k] = *x / BINOMIAL[2 * n][k];
+    }
+    for (k, x) in v.iter().enumerate() {
+        v_[k] = *x / BINOMIAL[2 * n - 1][k];
+    }
+    let mut worst = 0.0f64;
+    for i in 0..=COSINE_SAMPLES {
+        let t = i as f64 / COSINE_SAMPLES as f64;
+        let c = partials_cosine(
+            crate::bezier::bernstein::evaluate(&u_[..2 * n + 1], t),
+            crate::bezier::bernstein::evaluate(&v_[..2 * n], t),
+        );
+        if c.is_finite() {
+            worst = worst.max(c);
         }
     }
     worst
+}
+
+/// Binomial coefficients C(n, k) for n < BOUND_LEN (exact in f64).
+const BINOMIAL: [[f64; BOUND_LEN]; BOUND_LEN] = {
+    let mut t = [[0.0; BOUND_LEN]; BOUND_LEN];
+    let mut n = 0;
+    while n < BOUND_LEN {
+        t[n][0] = 1.0;
+        let mut k = 1;
+        while k <= n {
+            t[n][k] = t[n - 1][k - 1] + t[n - 1][k];
+            k += 1;
+        }
+        n += 1;
+    }
+    t
+};
+
+/// [`convolve`] of a vector polynomial with itself under the dot product (each pair i < j
+/// once, doubled).
+fn square(a: &[DVec3], out: &mut [f64]) {
+    debug_assert_eq!(out.len(), 2 * a.len() - 1);
+    out.fill(0.0);
+    for (i, x) in a.iter().enumerate() {
+        out[2 * i] += x.dot(*x);
+        for (j, y) in a.iter().enumerate().skip(i + 1) {
+            out[i + j] += 2.0 * x.dot(*y);
+        }
+    }
+}
+
+/// out_k = Σ_{i+j=k} a_i × b_j under the bilinear `times` (the product of two polynomials
+/// in scaled Bernstein form, C(m, i)·a_i: C(m+n, k)·c_k of the product's coefficients).
+fn convolve<A: Copy, B: Copy, C: crate::bezier::bernstein::Coefficient>(
+    a: &[A],
+    b: &[B],
+    out: &mut [C],
+    times: impl Fn(A, B) -> C,
+) {
+    debug_assert_eq!(out.len(), a.len() + b.len() - 1);
+    out.fill(C::default());
+    for (i, &x) in a.iter().enumerate() {
+        for (j, &y) in b.iter().enumerate() {
+            out[i + j] = out[i + j] + times(x, y);
+        }
+    }
 }
 
 /// v turned about the unit axis by θ (Rodrigues).
@@ -662,7 +918,7 @@ impl<'a> Topology<'a> {
                         } else {
                             (&nurbs[m - 1][l][e], 2)
                         };
-                        let curve = boundaries(s)[side].curve.clone();
+                        let curve = boundary_curve(s, side);
                         let next = if lp.closed { (e + 1) % n } else { e + 1 };
                         t.edges.push(BrepEdge {
                             curve,
@@ -690,7 +946,7 @@ impl<'a> Topology<'a> {
                             (&faces[l][n - 1], 1)
                         };
                         t.edges.push(BrepEdge {
-                            curve: boundaries(s)[side].curve.clone(),
+                            curve: boundary_curve(s, side),
                             start: vertex_at(j, l, v),
                             end: vertex_at(j + 1, l, v),
                         });
@@ -710,21 +966,21 @@ impl<'a> Topology<'a> {
         j: usize,
         l: usize,
         e: usize,
-        s: &NurbsSurface,
+        s: NurbsSurface,
         same_sense: bool,
     ) -> BrepFace {
         let lp = &self.profile.loops[l];
         let n = lp.edges.len();
         let next = if lp.closed { (e + 1) % n } else { e + 1 };
-        let sides = boundaries(s);
+        let sides = [0, 1, 2, 3].map(|k| boundary_line(&s, k));
         let line = |k: usize| {
-            let (u, v) = sides[k].origin;
+            let (u, v) = sides[k].0;
             if k % 2 == 1 {
                 spine_pcurve(u, &s.knots_v)
             } else {
                 PCurve::Line {
                     origin: (u, v),
-                    direction: sides[k].direction,
+                    direction: sides[k].1,
                 }
             }
         };
@@ -740,8 +996,8 @@ impl<'a> Topology<'a> {
             }
         };
         let top = PCurve::Line {
-            origin: (sides[2].origin.0 - shift, sides[2].origin.1),
-            direction: sides[2].direction,
+            origin: (sides[2].0 .0 - shift, sides[2].0 .1),
+            direction: sides[2].1,
         };
         let uses = vec![
             BrepUse {
@@ -766,7 +1022,7 @@ impl<'a> Topology<'a> {
             },
         ];
         BrepFace {
-            surface: BrepSurface::Nurbs(s.clone()),
+            surface: BrepSurface::Nurbs(s),
             same_sense,
             bounds: vec![BrepBound { uses, outer: true }],
         }
@@ -901,4 +1157,68 @@ fn loop_curve(uses: &[BrepUse], edges: &[BrepEdge]) -> Result<PiecewiseCurve> {
         breaks.extend(piece.breaks()[1..].iter().map(|b| b + offset));
     }
     PiecewiseCurve::new(segments, breaks)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The largest sampled |cos| on a fine grid of a patch.
+    fn sampled(p: &RationalBezierPatch, steps: usize) -> f64 {
+        let mut worst = 0.0f64;
+        p.grid_partials(steps, |du, dv| worst = worst.max(partials_cosine(du, dv)));
+        worst
+    }
+
+    #[test]
+    fn the_cosine_bound_is_above_every_sample_and_close_to_them() {
+        // Deterministic pseudo-random patches of degrees (1..=3, 1..=2), positive weights.
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for trial in 0..200 {
+            let (du, dv) = (1 + trial % 3, 1 + (trial / 3) % 2);
+            let points = (0..=du)
+                .flat_map(|i| (0..=dv).map(move |j| (i, j)))
+                .map(|(i, j)| {
+                    let w = 0.5 + next();
+                    let p = DVec3::new(i as f64, j as f64, 0.0)
+                        + 0.3 * DVec3::new(next(), next(), next());
+                    (p * w).extend(w)
+                })
+                .collect();
+            let patch = RationalBezierPatch::from_homogeneous(du, dv, points).unwrap();
+            let mut bases = CosineBases::new();
+            let bases = bases.of(du);
+            let bound = if dv == 1 {
+                patch_cosine_bound::<2>(&patch, bases)
+            } else {
+                patch_cosine_bound::<3>(&patch, bases)
+            };
+            // Finer than the bound's lines along u would miss nothing on them: compare on
+            // those lines, densely along v.
+            let mut on_lines = 0.0f64;
+            for k in 0..=COSINE_SAMPLES {
+                let u = k as f64 / COSINE_SAMPLES as f64;
+                for i in 0..=200 {
+                    let j = patch.eval_jet(u, i as f64 / 200.0);
+                    on_lines = on_lines.max(partials_cosine(j.du, j.dv));
+                }
+            }
+            assert!(
+                bound >= on_lines * (1.0 - 1e-12),
+                "trial {trial}: bound {bound} below a sample {on_lines}"
+            );
+            assert!(bound <= 1.0);
+            // Of the samples' order (the convex hull bound is not far from the maximum).
+            assert!(
+                bound <= (20.0 * on_lines).max(sampled(&patch, 8)) + 1e-12,
+                "trial {trial}: bound {bound} far above {on_lines}"
+            );
+        }
+    }
 }

@@ -28,7 +28,7 @@
 //! than the profile's cuts at its ends.
 
 use super::edge::{Arc, Chain, Geometry, Joint, JointKind, Piece};
-use super::profile::Profile;
+use super::profile::{Profile, SupportTable};
 use crate::bezier::{PiecewiseCurve, RationalBezierCurve};
 use crate::error::{invalid, Result, ResultExt};
 use crate::frames::metrics::angle_about_tangent;
@@ -535,15 +535,17 @@ pub(crate) fn singularity_margin(
     unit: f64,
 ) -> Result<f64> {
     let mut least = 1.0f64;
+    // The support function in every arc's and miter's direction, from one preparation.
+    let table = profile.support_table();
     for framed in &transport.pieces {
         let piece = &framed.piece;
         let margin = match (&piece.geometry, &framed.frame) {
             (Geometry::Line { .. }, PieceFrame::Constant { f2, f3 }) => {
-                miter_margin(framed, *f2, *f3, profile, unit)?
+                miter_margin(framed, *f2, *f3, &table, unit)?
             }
             (Geometry::Line { .. }, _) => 1.0,
             (Geometry::Arc(arc), PieceFrame::Circular { a, b }) => {
-                let reach = profile.support(DVec2::new(*a, -*b));
+                let reach = table.support(DVec2::new(*a, -*b));
                 let margin = 1.0 - reach / arc.radius;
                 if margin <= 0.0 {
                     return Err(fold_at_arc(piece, arc.radius, reach, unit));
@@ -611,7 +613,7 @@ fn miter_margin(
     framed: &Framed,
     f2: DVec3,
     f3: DVec3,
-    profile: &Profile,
+    table: &SupportTable,
     unit: f64,
 ) -> Result<f64> {
     let t = framed.start.tangent;
@@ -625,7 +627,7 @@ fn miter_margin(
     if g == DVec2::ZERO {
         return Ok(1.0);
     }
-    let shortening = profile.support(-g);
+    let shortening = table.support(-g);
     let margin = 1.0 - shortening / framed.length;
     if margin <= 0.0 {
         return invalid!(

@@ -99,17 +99,22 @@ impl Profile {
     }
 
     /// h(d) = max over the profile of c·d.
+    #[cfg(test)]
     pub fn support(&self, d: DVec2) -> f64 {
-        self.segments()
-            .map(|segment| {
-                let (a, b) = segment.scaled_tangent();
-                let along: Vec<f64> = a.iter().zip(&b).map(|(a, b)| a * d.x + b * d.y).collect();
-                critical_points(&along)
-                    .into_iter()
-                    .map(|s| segment.jet(s).point.dot(d))
-                    .fold(f64::NEG_INFINITY, f64::max)
-            })
-            .fold(f64::NEG_INFINITY, f64::max)
+        self.support_table().support(d)
+    }
+
+    /// The segments prepared for [`SupportTable::support`] in many directions.
+    pub fn support_table(&self) -> SupportTable {
+        SupportTable {
+            segments: self
+                .segments()
+                .map(|segment| {
+                    let (a, b) = segment.scaled_tangent();
+                    (segment, a, b)
+                })
+                .collect(),
+        }
     }
 
     /// max ‖c‖: the profile's largest distance from the spine.
@@ -350,6 +355,28 @@ fn polygons_cross(a: &[DVec2], b: &[DVec2]) -> bool {
             d1 * d2 <= 0.0 && d3 * d4 <= 0.0
         })
     })
+}
+
+/// The profile's segments with their scaled tangents (A, B) = h²ċ, for its support
+/// function in many directions.
+pub(crate) struct SupportTable {
+    segments: Vec<(ProfileSegment, Vec<f64>, Vec<f64>)>,
+}
+
+impl SupportTable {
+    /// h(d) = max over the profile of c·d: at a segment's ends or where ċ·d = 0.
+    pub fn support(&self, d: DVec2) -> f64 {
+        self.segments
+            .iter()
+            .map(|(segment, a, b)| {
+                let along: Vec<f64> = a.iter().zip(b).map(|(a, b)| a * d.x + b * d.y).collect();
+                critical_points(&along)
+                    .into_iter()
+                    .map(|s| segment.jet(s).point.dot(d))
+                    .fold(f64::NEG_INFINITY, f64::max)
+            })
+            .fold(f64::NEG_INFINITY, f64::max)
+    }
 }
 
 #[cfg(test)]
