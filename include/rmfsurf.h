@@ -1017,9 +1017,11 @@ typedef struct RmfSweepReport {
    */
   double rmf_angle_error;
   /**
-   * Largest |cos| of the angle between the parameter lines of the lateral faces, sampled
-   * on every patch (0 for an exact RMF sweep; a twist or a closure turn tilts them, and
-   * miter legs are ruled between oblique sections).
+   * Largest |cos| of the angle between the parameter lines of the lateral faces: on the
+   * patches of lines and arcs a bound over 9 parameter lines of each (from the Bernstein
+   * coefficients along the spine), on the others sampled (0 for an exact RMF sweep; a
+   * twist or a closure turn tilts them, and miter legs are ruled between oblique
+   * sections).
    */
   double max_parameter_cosine;
   /**

@@ -107,9 +107,11 @@ pub struct RmfSweepReport {
     /// Largest angle (radians) between the frames used and the exact RMF plus the twist and
     /// closure turn (linear in arc length); 0 on untwisted lines and arcs.
     pub rmf_angle_error: f64,
-    /// Largest |cos| of the angle between the parameter lines of the lateral faces, sampled
-    /// on every patch (0 for an exact RMF sweep; a twist or a closure turn tilts them, and
-    /// miter legs are ruled between oblique sections).
+    /// Largest |cos| of the angle between the parameter lines of the lateral faces: on the
+    /// patches of lines and arcs a bound over 9 parameter lines of each (from the Bernstein
+    /// coefficients along the spine), on the others sampled (0 for an exact RMF sweep; a
+    /// twist or a closure turn tilts them, and miter legs are ruled between oblique
+    /// sections).
     pub max_parameter_cosine: f64,
     /// The least singularity margin g = 1 − κ c·n over the sweep (Mäurer & Jüttler Cor. 7;
     /// 1 where the wire is straight), and 1 − cuts/length for miter legs; > 0.
