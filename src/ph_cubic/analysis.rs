@@ -550,7 +550,7 @@ mod tests {
     use crate::bezier::RationalBezierCurve;
     use crate::frames::metrics::gaussian_curvature;
     use crate::ph_cubic::rational_rmf::{ph_rational_rmf, RmfOptions};
-    use crate::ph_cubic::test_curves::helix_spline;
+    use crate::ph_cubic::test_curves::{helix_spline, s_profile};
     use crate::sweep::sweep;
 
     fn arc_profile(radius: f64, center: DVec3) -> PiecewiseCurve {
@@ -645,14 +645,7 @@ mod tests {
         let spine = helix_spline(4, 0.6);
         let rmf = ph_rational_rmf(&spine, &RmfOptions::rmf(DVec3::Z)).unwrap();
         // An S-shaped cubic profile: one inflection at u = 1/2, curves (14) besides.
-        let cubic = RationalBezierCurve::polynomial(&[
-            DVec3::new(-0.3, 0.0, 0.0),
-            DVec3::new(-0.1, 0.4, 0.0),
-            DVec3::new(0.1, -0.4, 0.0),
-            DVec3::new(0.3, 0.0, 0.0),
-        ])
-        .unwrap();
-        let profile = PiecewiseCurve::new(vec![cubic], vec![0.0, 1.0]).unwrap();
+        let profile = s_profile();
         let analysis = ProfileSurface::new(&spine, &rmf.frames, &profile).unwrap();
         let lines = analysis.parabolic_lines(9);
         assert_eq!(lines.profile_inflections.len(), 1);

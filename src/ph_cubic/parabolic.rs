@@ -550,7 +550,7 @@ mod tests {
     use crate::frames::metrics::gaussian_curvature;
     use crate::frames::rational::{RationalFrameSegment, RationalFrames, Turning};
     use crate::ph_cubic::rational_rmf::{ph_rational_rmf, RmfOptions};
-    use crate::ph_cubic::test_curves::helix_spline;
+    use crate::ph_cubic::test_curves::{helix_spline, s_profile};
     use crate::sweep::sweep;
     use glam::DVec3;
     use std::f64::consts::FRAC_PI_2;
@@ -728,14 +728,7 @@ mod tests {
     fn parabolic_lines_of_an_s_shaped_profile_fold_at_its_inflection() {
         let spine = helix_spline(12, 0.35);
         let rmf = ph_rational_rmf(&spine, &RmfOptions::rmf(DVec3::Z)).unwrap();
-        let cubic = RationalBezierCurve::polynomial(&[
-            DVec3::new(-0.3, 0.0, 0.0),
-            DVec3::new(-0.1, 0.4, 0.0),
-            DVec3::new(0.1, -0.4, 0.0),
-            DVec3::new(0.3, 0.0, 0.0),
-        ])
-        .unwrap();
-        let profile = PiecewiseCurve::new(vec![cubic], vec![0.0, 1.0]).unwrap();
+        let profile = s_profile();
         let analysis = ProfileSurface::new(&spine, &rmf.frames, &profile).unwrap();
         let curves = analysis.parabolic_curves(1e-7).unwrap();
         let surface = sweep(&spine, &rmf.frames, &profile).unwrap();

@@ -3,7 +3,7 @@
 
 use super::cubic::PhCubic;
 use super::spline::ph_spline_hermite;
-use crate::bezier::PiecewiseCurve;
+use crate::bezier::{PiecewiseCurve, RationalBezierCurve};
 use crate::testing::helix;
 use glam::DVec3;
 
@@ -30,4 +30,16 @@ pub fn helix_spline(segments: usize, step: f64) -> PiecewiseCurve {
     let (points, tangents): (Vec<DVec3>, Vec<DVec3>) =
         (0..=segments).map(|i| helix(step * i as f64, 0.4)).unzip();
     ph_spline_hermite(&points, &tangents).unwrap()
+}
+
+/// An S-shaped cubic profile on [0, 1] with one inflection, at u = 1/2.
+pub fn s_profile() -> PiecewiseCurve {
+    let cubic = RationalBezierCurve::polynomial(&[
+        DVec3::new(-0.3, 0.0, 0.0),
+        DVec3::new(-0.1, 0.4, 0.0),
+        DVec3::new(0.1, -0.4, 0.0),
+        DVec3::new(0.3, 0.0, 0.0),
+    ])
+    .unwrap();
+    PiecewiseCurve::new(vec![cubic], vec![0.0, 1.0]).unwrap()
 }
