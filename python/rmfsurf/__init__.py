@@ -32,15 +32,15 @@ from .cone_splines import (ConeElement, ConePiece, ConeSpline, FlatPattern,
 from .curves import (BezierSegment, Curve, Inversion, NurbsCurve, RrmfQuintic, distinct_knots,
                      flat_knots, join_nurbs, mobius_curve, mobius_point, mobius_rrmf_approximate,
                      mobius_rrmf_hermite, ph_cubic_hermite, ph_spline_approximate,
-                     ph_spline_hermite, profile_offset, rrmf_quintic_best, rrmf_quintic_curve,
-                     rrmf_quintic_solutions, rrmf_spline_hermite)
+                     ph_spline_hermite, profile_offset, profile_offset_by_arcs, rrmf_quintic_best,
+                     rrmf_quintic_curve, rrmf_quintic_solutions, rrmf_spline_hermite)
 from .frames import (Frames, double_reflection_frames, frenet_frames, mobius_frames,
                      ph_exact_rmf, ph_frenet_frames, ph_rational_rmf, ph_rmf_angle_error)
 from .shapes import Arc, CurveEdge, Line, Shape, ShapeFace, SweepReport, wire_sweep
 from .sheets import FlatEdge, SheetPart, SheetReport, part_between_rails, tangent_part, transition
 from .surfaces import (BezierPatch, NurbsSurface, SingularityMargin, Surface,
-                       convex_initial_normal, gaussian_curvature, parabolic_points,
-                       singularity_margin, sweep_surface)
+                       convex_initial_normal, gaussian_curvature, parabolic_curves,
+                       parabolic_points, singularity_margin, sweep_surface)
 
 
 def rmf_version() -> str:

@@ -286,6 +286,20 @@ def profile_offset(profile: Curve, distance: float) -> Curve:
     return Curve._owned(out)
 
 
+def profile_offset_by_arcs(profile: Curve, distance: float, tolerance: float
+                           ) -> Tuple[Curve, Curve, float]:
+    """The offset of any planar profile (x, y) at signed `distance`, exactly, through arcs:
+    the profile replaced by a G1 chain of circular arcs within `tolerance` of it (and of its
+    offset), and the arcs offset exactly. For profiles `profile_offset` refuses: a general
+    curve's offset is not rational. Returns (offset, arcs, largest distance measured)."""
+    out, arcs = _core.out_pointer("RmfCurve"), _core.out_pointer("RmfCurve")
+    deviation = ffi.new("double *")
+    call("rmf_profile_offset_by_arcs", as_curve(profile, "profile")._ptr,
+         _core.number(distance, "distance"), _core.number(tolerance, "tolerance"), out, arcs,
+         deviation)
+    return Curve._owned(out), Curve._owned(arcs), float(deviation[0])
+
+
 # ---------------------------------------------------------------------------------------
 # Curves with exact rational RMFs: Möbius maps (Bartoň, Jüttler & Wang), RRMF quintics
 # (Farouki, Giannelli & Sestini).

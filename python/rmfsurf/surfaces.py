@@ -2,7 +2,7 @@
 evaluation, tessellation, and the sweep of a profile along a spine with exact rational
 frames — a profile surface when the frames are rotation-minimizing (Mäurer & Jüttler,
 eqs. (1), (42)) — with its analyses (singularity margin, Corollary 7; Gaussian curvature
-(13); parabolic points §2.3; convex initial normal, Corollary 9).
+(13); parabolic points and traced parabolic lines §2.3; convex initial normal, Corollary 9).
 """
 
 from __future__ import annotations
@@ -243,6 +243,27 @@ def parabolic_points(spine: Curve, frames: Frames, profile: Curve, v_samples: in
     call("rmf_sweep_parabolic_points", *args, buffer, count[0], count)
     return [(buffer[i].u, buffer[i].v, PARABOLIC_KINDS.get(buffer[i].kind, "unknown"))
             for i in range(count[0])]
+
+
+def parabolic_curves(spine: Curve, frames: Frames, profile: Curve, tolerance: float
+                     ) -> List[np.ndarray]:
+    """The parabolic lines (14) of §2.3 of Mäurer & Jüttler (case 3) traced along the spine:
+    one (n, 5) array per curve, rows (u, v, x, y, z) — the parameters and the surface point —
+    in order along it; the polyline in (u, v) lifted to the surface is within `tolerance`
+    of the line."""
+    args = (as_curve(spine, "spine")._ptr, as_frames(frames, "frames")._ptr,
+            as_curve(profile, "profile")._ptr, _core.number(tolerance, "tolerance"))
+    count = ffi.new("size_t *")
+    call("rmf_sweep_parabolic_curves", *args, ffi.NULL, 0, count)
+    buffer = ffi.new("RmfParabolicCurvePoint[]", max(count[0], 1))
+    call("rmf_sweep_parabolic_curves", *args, buffer, count[0], count)
+    rows: List[List[List[float]]] = []
+    for i in range(count[0]):
+        b = buffer[i]
+        if b.curve >= len(rows):
+            rows.append([])
+        rows[-1].append([b.u, b.v, b.point.x, b.point.y, b.point.z])
+    return [np.array(r) for r in rows]
 
 
 def convex_initial_normal(ph_spline: Curve, profile: Curve, elliptic: bool = True

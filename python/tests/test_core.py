@@ -124,6 +124,73 @@ def test_sweep_surface_exported_nurbs_is_the_profile_around_the_spine():
     assert abs(margin.margin - (1 - RADIUS * kappa.max())) <= 1e-5
 
 
+def test_parabolic_curves_are_where_the_normal_is_across_the_principal_normal():
+    spline = rmfsurf.ph_spline_hermite(*helix_data())
+    frames = rmfsurf.ph_rational_rmf(spline, (0, 0, 1))
+    profile = circle()
+    curves = rmfsurf.parabolic_curves(spline, frames, profile, 1e-7)
+    assert len(curves) >= 2
+    surface = rmfsurf.sweep_surface(spline, frames, profile).nurbs()
+    spine = spline.nurbs()
+    joints = set(spine.distinct_knots()[0])
+    worst, h = 0.0, 1e-4
+    args = (surface.degree_u, surface.degree_v, surface.poles, surface.weights,
+            surface.knots_u, surface.knots_v)
+    for curve in curves:
+        assert curve.shape[1] == 5
+        for u, v, *point in curve:
+            assert np.linalg.norm(surface_point(*args, u, v) - point) <= 1e-12
+            # The line jumps with the spine's curvature at a joint; central differences need
+            # room inside the domain.
+            if any(abs(v - j) < 2 * h for j in joints) or not (2 * h < u < 4 - 2 * h):
+                continue
+            su = surface_point(*args, u + h, v) - surface_point(*args, u - h, v)
+            sv = surface_point(*args, u, v + h) - surface_point(*args, u, v - h)
+            c = [curve_point(spine.degree, spine.poles, spine.weights, spine.knots, t)
+                 for t in (v - h, v, v + h)]
+            tangent, second = c[2] - c[0], c[2] - 2 * c[1] + c[0]
+            tangent /= np.linalg.norm(tangent)
+            principal = second - tangent * np.dot(tangent, second)
+            normal = np.cross(su, sv)
+            worst = max(worst, abs(np.dot(normal / np.linalg.norm(normal),
+                                          principal / np.linalg.norm(principal))))
+    # Central differences (step 1e-4) of the exported NURBS: (14) holds to their error
+    # (about 1e-8).
+    assert worst <= 1e-6, worst
+
+
+def test_an_ellipse_is_offset_exactly_through_arcs():
+    w = S
+    ellipse = rmfsurf.Curve.from_nurbs(2, [[2, 0, 0], [2, 1, 0], [0, 1, 0]], [0, 0, 0, 1, 1, 1],
+                                       [1, w, 1])
+    with pytest.raises(rmfsurf.NoSolutionError):
+        rmfsurf.profile_offset(ellipse, 0.1)
+    offset, arcs, deviation = rmfsurf.profile_offset_by_arcs(ellipse, 0.1, 1e-5)
+    assert 0 < deviation <= 1e-5
+    data = offset.nurbs()
+    assert data.degree == 2
+    def true_offset(t):
+        n = math.hypot(math.cos(t), 2 * math.sin(t))
+        return np.array([2 * math.cos(t) + 0.1 * math.cos(t) / n,
+                         math.sin(t) + 0.2 * math.sin(t) / n, 0.0])
+
+    worst = 0.0
+    for t in np.linspace(data.knots[0], data.knots[-1], 101):
+        q = curve_point(data.degree, data.poles, data.weights, data.knots, t)
+        # The closest point of the true offset: a scan, then a ternary search about the best.
+        grid = np.linspace(0, math.pi / 2, 2001)
+        best = min(grid, key=lambda a: np.linalg.norm(true_offset(a) - q))
+        lo, hi = max(0.0, best - math.pi / 4000), min(math.pi / 2, best + math.pi / 4000)
+        for _ in range(100):
+            a, b = lo + (hi - lo) / 3, hi - (hi - lo) / 3
+            if np.linalg.norm(true_offset(a) - q) < np.linalg.norm(true_offset(b) - q):
+                hi = b
+            else:
+                lo = a
+        worst = max(worst, np.linalg.norm(true_offset(0.5 * (lo + hi)) - q))
+    assert worst <= 1e-5, worst
+
+
 def test_mobius_and_rrmf_frames_are_rotation_minimizing():
     points, tangents = helix_data(5)
     for name, (curve, frames) in [
