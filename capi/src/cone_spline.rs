@@ -4,8 +4,8 @@
 //! sequence, development and offsets.
 
 use super::boundary::{
-    buffer, free_handle, guard, invalid_arg, optional_out, out_ptr, reference, slice, write,
-    FfiError, FfiResult, OptionsStruct,
+    buffer, free_handle, guard, hand_over, invalid_arg, optional_out, out_ptr, reference, slice,
+    write, FfiError, FfiResult, OptionsStruct,
 };
 use super::curve::RmfCurve;
 use super::input::{curve_or_callback, RmfCurveCallback};
@@ -1275,17 +1275,6 @@ pub unsafe extern "C" fn rmf_cone_spline_fit_parameters(
             RMF_CONE_FIT_INFLECTIONS => &fit.inflections,
             other => return invalid_arg(format!("which = {other} is not an RMF_CONE_FIT_* value")),
         };
-        write(count, data.len());
-        if capacity == 0 {
-            return Ok(());
-        }
-        if capacity < data.len() {
-            return Err(FfiError::BufferTooSmall(format!(
-                "need {} values, capacity is {capacity}",
-                data.len()
-            )));
-        }
-        values[..data.len()].copy_from_slice(data);
-        Ok(())
+        hand_over(data, values, count, "values")
     })
 }
