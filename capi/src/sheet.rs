@@ -6,8 +6,8 @@
 //! development, offsets) work on its designed surface; the functions here need a part.
 
 use super::boundary::{
-    buffer, guard, invalid_arg, optional_out, out_ptr, reference, slice, write, FfiError,
-    FfiResult, OptionsStruct,
+    buffer, guard, hand_over, invalid_arg, optional_out, out_ptr, reference, slice, write,
+    FfiError, FfiResult, OptionsStruct,
 };
 use super::cone_spline::RmfConeSpline;
 use super::curve::RmfCurve;
@@ -561,16 +561,7 @@ pub unsafe extern "C" fn rmf_cone_spline_flat_pattern(
             .map(|e| flat_edge(e, RMF_FLAT_CUT))
             .chain(flat.bend_lines.iter().map(|e| flat_edge(e, RMF_FLAT_BEND)))
             .collect();
-        if capacity != 0 && capacity < all.len() {
-            write(count, all.len());
-            return Err(FfiError::BufferTooSmall(format!(
-                "need {} edges, capacity is {capacity}",
-                all.len()
-            )));
-        }
-        edges[..all.len().min(capacity)].copy_from_slice(&all[..all.len().min(capacity)]);
-        write(count, all.len());
-        Ok(())
+        hand_over(&all, edges, count, "edges")
     })
 }
 
