@@ -346,7 +346,14 @@ fn local_pair(a: &Element, b: &Element, rule: Rule, region: Option<&Omega>) -> R
     if gap.abs() <= 1e-12 * scale.max(meet.abs()) {
         let v = a.at(meet);
         return if equal_planes {
-            single_plane(ConePiece::cone(v, *a, e2), b, scale)
+            let piece = ConePiece::cone(v, *a, e2)?;
+            if has_vertex_in(std::slice::from_ref(&piece), region) {
+                return no_solution!(
+                    "the rulings meet at {} in the region of interest, in one tangent plane",
+                    region.map_or(v, |r| r.frame.point_out(v))
+                );
+            }
+            single_plane(Ok(piece), b, scale)
         } else {
             cone_case(a, b, v, rule, region, scale)
         };
