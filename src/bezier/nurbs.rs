@@ -501,7 +501,9 @@ impl NurbsSurface {
                 .iter()
                 .flat_map(|p| p.homogeneous().iter().map(|&h| project(h))),
         );
-        let mut net: Vec<Option<DVec4>> = vec![None; nu * nv];
+        // The net and which of its poles a patch has set already.
+        let mut net = vec![DVec4::ZERO; nu * nv];
+        let mut set = vec![false; nu * nv];
         for a in 0..ku {
             for b in 0..kv {
                 let patch = surface.patch(a, b);
@@ -513,29 +515,29 @@ impl NurbsSurface {
                     &raised
                 };
                 // Match the corner shared with an already placed neighbour.
-                let corner = net[a * pu * nv + b * pv];
-                let factor = corner.map_or(1.0, |c| c.w / patch.at(0, 0).w);
+                let corner = a * pu * nv + b * pv;
+                let factor = if set[corner] {
+                    net[corner].w / patch.at(0, 0).w
+                } else {
+                    1.0
+                };
                 for i in 0..=pu {
                     for j in 0..=pv {
                         let h = patch.at(i, j) * factor;
-                        let slot = &mut net[(a * pu + i) * nv + b * pv + j];
-                        match slot {
-                            Some(existing) if !homogeneous_close(*existing, h, scale) => {
-                                return invalid!(
-                                    "patch ({a}, {b}) does not join its neighbours in homogeneous coordinates"
-                                );
-                            }
-                            Some(_) => {}
-                            None => *slot = Some(h),
+                        let k = (a * pu + i) * nv + b * pv + j;
+                        if !set[k] {
+                            net[k] = h;
+                            set[k] = true;
+                        } else if !homogeneous_close(net[k], h, scale) {
+                            return invalid!(
+                                "patch ({a}, {b}) does not join its neighbours in homogeneous coordinates"
+                            );
                         }
                     }
                 }
             }
         }
-        let net: Vec<DVec4> = net
-            .into_iter()
-            .map(|h| h.expect("every pole is set"))
-            .collect();
+        assert!(set.iter().all(|&s| s), "every pole is set");
         Ok(Self {
             degree_u: pu,
             degree_v: pv,
@@ -552,20 +554,16 @@ impl NurbsSurface {
 /// The clamped knot vector with full-multiplicity interior knots at `breaks`.
 fn clamped_knots(breaks: &[f64], degree: usize) -> Vec<f64> {
     let last = breaks.len() - 1;
-    breaks
-        .iter()
-        .enumerate()
-        .flat_map(|(k, &b)| {
-            std::iter::repeat_n(
-                b,
-                if k == 0 || k == last {
-                    degree + 1
-                } else {
-                    degree
-                },
-            )
-        })
-        .collect()
+    let mut knots = Vec::with_capacity(breaks.len() * degree + 2);
+    for (k, &b) in breaks.iter().enumerate() {
+        let multiplicity = if k == 0 || k == last {
+            degree + 1
+        } else {
+            degree
+        };
+        knots.extend(std::iter::repeat_n(b, multiplicity));
+    }
+    knots
 }
 
 /// A length scale of a point set, for relative tolerances (at least 1).
