@@ -501,9 +501,10 @@ impl NurbsSurface {
                 .iter()
                 .flat_map(|p| p.homogeneous().iter().map(|&h| project(h))),
         );
-        // The net and which of its poles a patch has set already.
+        // Patches are placed a-major: a pole of patch (a, b) is already set by an earlier
+        // one exactly on its first row (a > 0: by the patches of row a − 1) or its first
+        // column (b > 0: by patch (a, b − 1)).
         let mut net = vec![DVec4::ZERO; nu * nv];
-        let mut set = vec![false; nu * nv];
         for a in 0..ku {
             for b in 0..kv {
                 let patch = surface.patch(a, b);
@@ -515,9 +516,8 @@ impl NurbsSurface {
                     &raised
                 };
                 // Match the corner shared with an already placed neighbour.
-                let corner = a * pu * nv + b * pv;
-                let factor = if set[corner] {
-                    net[corner].w / patch.at(0, 0).w
+                let factor = if a > 0 || b > 0 {
+                    net[a * pu * nv + b * pv].w / patch.at(0, 0).w
                 } else {
                     1.0
                 };
@@ -525,9 +525,8 @@ impl NurbsSurface {
                     for j in 0..=pv {
                         let h = patch.at(i, j) * factor;
                         let k = (a * pu + i) * nv + b * pv + j;
-                        if !set[k] {
+                        if !((i == 0 && a > 0) || (j == 0 && b > 0)) {
                             net[k] = h;
-                            set[k] = true;
                         } else if !homogeneous_close(net[k], h, scale) {
                             return invalid!(
                                 "patch ({a}, {b}) does not join its neighbours in homogeneous coordinates"
@@ -537,7 +536,6 @@ impl NurbsSurface {
                 }
             }
         }
-        assert!(set.iter().all(|&s| s), "every pole is set");
         Ok(Self {
             degree_u: pu,
             degree_v: pv,
