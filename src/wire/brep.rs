@@ -529,6 +529,10 @@ fn joint_gap(surfaces: &[Vec<Vec<PiecewiseSurface>>]) -> f64 {
                     Section::of(before.patch(a, last), true),
                     Section::of(after.patch(a, 0), false),
                 );
+                // Equal columns give equal points (up to the sign of zeros): distance 0.
+                if end.column.is_some() && end.column == start.column {
+                    continue;
+                }
                 // The last segment's end too (the next segment's start elsewhere).
                 let steps = COSINE_SAMPLES + usize::from(a + 1 == segments);
                 for k in 0..steps {
