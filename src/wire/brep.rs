@@ -571,17 +571,36 @@ impl<'a> Section<'a> {
 
     /// The point at local u.
     fn point(&self, u: f64) -> DVec3 {
-        let Some(mut column) = self.column else {
+        let Some(column) = &self.column else {
             return self.patch.eval(u, if self.end { 1.0 } else { 0.0 });
         };
-        // de Casteljau in place, as `bernstein::evaluate` does.
-        for level in (1..=self.patch.degree_u()).rev() {
-            for i in 0..level {
-                column[i] = column[i] * (1.0 - u) + column[i + 1] * u;
-            }
-        }
-        crate::bezier::homogeneous::project(column[0])
+        // Copy only the poles of the profile's usual degrees.
+        let degree = self.patch.degree_u();
+        let h = match degree {
+            1 => casteljau::<2>(column, degree, u),
+            2 => casteljau::<3>(column, degree, u),
+            3 => casteljau::<4>(column, degree, u),
+            _ => casteljau::<{ MAX_BOUNDED_DEGREE_U + 1 }>(column, degree, u),
+        };
+        crate::bezier::homogeneous::project(h)
     }
+}
+
+/// de Casteljau in place on a copy of the first N points (N > `degree`; the points past
+/// the degree are not used), as `bernstein::evaluate` does.
+fn casteljau<const N: usize>(
+    points: &[DVec4; MAX_BOUNDED_DEGREE_U + 1],
+    degree: usize,
+    u: f64,
+) -> DVec4 {
+    let mut c = [DVec4::ZERO; N];
+    c.copy_from_slice(&points[..N]);
+    for level in (1..=degree).rev() {
+        for i in 0..level {
+            c[i] = c[i] * (1.0 - u) + c[i + 1] * u;
+        }
+    }
+    c[0]
 }
 
 /// Largest |cos| between the parameter lines of a face, patch by patch (|cos| does not
