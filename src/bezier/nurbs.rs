@@ -501,7 +501,10 @@ impl NurbsSurface {
                 .iter()
                 .flat_map(|p| p.homogeneous().iter().map(|&h| project(h))),
         );
-        let mut net: Vec<Option<DVec4>> = vec![None; nu * nv];
+        // Patches are placed a-major: a pole of patch (a, b) is already set by an earlier
+        // one exactly on its first row (a > 0: by the patches of row a − 1) or its first
+        // column (b > 0: by patch (a, b − 1)).
+        let mut net = vec![DVec4::ZERO; nu * nv];
         for a in 0..ku {
             for b in 0..kv {
                 let patch = surface.patch(a, b);
@@ -513,29 +516,26 @@ impl NurbsSurface {
                     &raised
                 };
                 // Match the corner shared with an already placed neighbour.
-                let corner = net[a * pu * nv + b * pv];
-                let factor = corner.map_or(1.0, |c| c.w / patch.at(0, 0).w);
+                let factor = if a > 0 || b > 0 {
+                    net[a * pu * nv + b * pv].w / patch.at(0, 0).w
+                } else {
+                    1.0
+                };
                 for i in 0..=pu {
                     for j in 0..=pv {
                         let h = patch.at(i, j) * factor;
-                        let slot = &mut net[(a * pu + i) * nv + b * pv + j];
-                        match slot {
-                            Some(existing) if !homogeneous_close(*existing, h, scale) => {
-                                return invalid!(
-                                    "patch ({a}, {b}) does not join its neighbours in homogeneous coordinates"
-                                );
-                            }
-                            Some(_) => {}
-                            None => *slot = Some(h),
+                        let k = (a * pu + i) * nv + b * pv + j;
+                        if !((i == 0 && a > 0) || (j == 0 && b > 0)) {
+                            net[k] = h;
+                        } else if !homogeneous_close(net[k], h, scale) {
+                            return invalid!(
+                                "patch ({a}, {b}) does not join its neighbours in homogeneous coordinates"
+                            );
                         }
                     }
                 }
             }
         }
-        let net: Vec<DVec4> = net
-            .into_iter()
-            .map(|h| h.expect("every pole is set"))
-            .collect();
         Ok(Self {
             degree_u: pu,
             degree_v: pv,
@@ -552,20 +552,16 @@ impl NurbsSurface {
 /// The clamped knot vector with full-multiplicity interior knots at `breaks`.
 fn clamped_knots(breaks: &[f64], degree: usize) -> Vec<f64> {
     let last = breaks.len() - 1;
-    breaks
-        .iter()
-        .enumerate()
-        .flat_map(|(k, &b)| {
-            std::iter::repeat_n(
-                b,
-                if k == 0 || k == last {
-                    degree + 1
-                } else {
-                    degree
-                },
-            )
-        })
-        .collect()
+    let mut knots = Vec::with_capacity(breaks.len() * degree + 2);
+    for (k, &b) in breaks.iter().enumerate() {
+        let multiplicity = if k == 0 || k == last {
+            degree + 1
+        } else {
+            degree
+        };
+        knots.extend(std::iter::repeat_n(b, multiplicity));
+    }
+    knots
 }
 
 /// A length scale of a point set, for relative tolerances (at least 1).

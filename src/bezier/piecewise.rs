@@ -231,6 +231,11 @@ impl PiecewiseSurface {
         })
     }
 
+    /// The patches, mutable (their grid and breaks stay).
+    pub(crate) fn patches_mut(&mut self) -> &mut [RationalBezierPatch] {
+        &mut self.patches
+    }
+
     /// The patches, index `a * (number of v intervals) + b`.
     pub fn patches(&self) -> &[RationalBezierPatch] {
         &self.patches

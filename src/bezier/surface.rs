@@ -60,6 +60,20 @@ impl RationalBezierPatch {
         })
     }
 
+    /// Maps every homogeneous control point through `f` in place, with the checks of
+    /// [`Self::from_homogeneous`] on the results (no new control net is allocated).
+    pub(crate) fn map_homogeneous(&mut self, f: impl Fn(DVec4) -> DVec4) -> Result<()> {
+        for (k, p) in self.points.iter_mut().enumerate() {
+            *p = f(*p);
+            if !p.is_finite() || p.w <= 0.0 {
+                return invalid!(
+                    "control point {k} is not finite or has a non-positive weight ({p})"
+                );
+            }
+        }
+        Ok(())
+    }
+
     /// The patch `Σ_k a_k(u) ⊗ b_k(v)`: a sum of products of a scalar Bernstein polynomial
     /// in u and a homogeneous one in v, all `a_k` of one degree and all `b_k` of one degree.
     /// This is the shape of every sweep, `x(v) + c₂(u) f₂(v) + c₃(u) f₃(v)`, in homogeneous form.

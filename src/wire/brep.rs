@@ -242,20 +242,12 @@ impl Placement {
         PiecewiseCurve::new(segments, c.breaks().to_vec()).expect("the same breaks")
     }
 
-    fn surface(&self, s: &PiecewiseSurface) -> Result<PiecewiseSurface> {
-        let patches = s
-            .patches()
-            .iter()
-            .map(|p| {
-                let points = p
-                    .homogeneous()
-                    .iter()
-                    .map(|&h| self.homogeneous(h))
-                    .collect();
-                RationalBezierPatch::from_homogeneous(p.degree_u(), p.degree_v(), points)
-            })
-            .collect::<Result<Vec<_>>>()?;
-        PiecewiseSurface::new(patches, s.u_breaks().to_vec(), s.v_breaks().to_vec())
+    /// The surface mapped back in place (the normalized one is not needed after).
+    fn surface(&self, mut s: PiecewiseSurface) -> Result<PiecewiseSurface> {
+        for p in s.patches_mut() {
+            p.map_homogeneous(|h| self.homogeneous(h))?;
+        }
+        Ok(s)
     }
 }
 
@@ -276,16 +268,11 @@ fn lateral(framed: &super::frame::Framed, edge: &PiecewiseCurve) -> Result<Piece
                 .segments()
                 .iter()
                 .map(|seg| {
-                    let points = seg
-                        .homogeneous()
-                        .iter()
-                        .flat_map(|&h| {
-                            [
-                                section(*a, framed.miters[0], h),
-                                section(*b, framed.miters[1], h),
-                            ]
-                        })
-                        .collect();
+                    let mut points = Vec::with_capacity(2 * seg.homogeneous().len());
+                    for &h in seg.homogeneous() {
+                        points.push(section(*a, framed.miters[0], h));
+                        points.push(section(*b, framed.miters[1], h));
+                    }
                     RationalBezierPatch::from_homogeneous(seg.degree(), 1, points)
                 })
                 .collect::<Result<Vec<_>>>()?;
@@ -293,21 +280,25 @@ fn lateral(framed: &super::frame::Framed, edge: &PiecewiseCurve) -> Result<Piece
         }
         (Geometry::Arc(arc), PieceFrame::Circular { a, b }) => {
             let spine = &framed.spine;
-            let mut patches = Vec::new();
+            let mut patches = Vec::with_capacity(edge.segments().len() * spine.segments().len());
+            // The frame of each spine segment, the same for every profile segment.
+            let frames: Vec<_> = spine
+                .segments()
+                .iter()
+                .map(|along| arc_numerators(arc, along, *a, *b))
+                .collect();
             for seg in edge.segments() {
-                for along in spine.segments() {
-                    let frame = &arc_numerators(arc, along, *a, *b);
+                for (along, frame) in spine.segments().iter().zip(&frames) {
                     let x = along.homogeneous();
-                    let points = seg
-                        .homogeneous()
-                        .iter()
-                        .flat_map(|&h| {
-                            (0..x.len()).map(move |l| {
-                                (x[l].truncate() * h.w + frame.e2[l] * h.x + frame.e3[l] * h.y)
-                                    .extend(h.w * x[l].w)
-                            })
-                        })
-                        .collect();
+                    let mut points = Vec::with_capacity(seg.homogeneous().len() * x.len());
+                    for &h in seg.homogeneous() {
+                        for (l, xl) in x.iter().enumerate() {
+                            points.push(
+                                (xl.truncate() * h.w + frame.e2[l] * h.x + frame.e3[l] * h.y)
+                                    .extend(h.w * xl.w),
+                            );
+                        }
+                    }
                     patches.push(RationalBezierPatch::from_homogeneous(
                         seg.degree(),
                         2,
@@ -358,11 +349,11 @@ pub(crate) fn build(
         .fold(0.0, f64::max);
     // In the caller's coordinates.
     let surfaces: Vec<Vec<Vec<PiecewiseSurface>>> = normalized
-        .iter()
+        .into_iter()
         .map(|loops| {
             loops
-                .iter()
-                .map(|faces| faces.iter().map(|s| placement.surface(s)).collect())
+                .into_iter()
+                .map(|faces| faces.into_iter().map(|s| placement.surface(s)).collect())
                 .collect::<Result<_>>()
         })
         .collect::<Result<_>>()?;
@@ -376,8 +367,9 @@ pub(crate) fn build(
         })
         .collect::<Result<_>>()?;
     let mut topology = Topology::new(transport, profile, &nurbs, images.as_ref());
-    let mut faces = Vec::new();
-    let mut brep_faces = Vec::new();
+    let face_count = m * profile.edge_count() + 2;
+    let mut faces = Vec::with_capacity(face_count);
+    let mut brep_faces = Vec::with_capacity(face_count);
     // The surfaces and their NURBS move into the faces.
     for (j, ((framed, nurbs), surfaces)) in
         transport.pieces.iter().zip(nurbs).zip(surfaces).enumerate()
@@ -533,13 +525,19 @@ fn joint_gap(surfaces: &[Vec<Vec<PiecewiseSurface>>]) -> f64 {
             }
             let (last, segments) = (before.v_breaks().len() - 2, before.u_breaks().len() - 1);
             for a in 0..segments {
-                let (end, start) = (before.patch(a, last), after.patch(a, 0));
+                let (end, start) = (
+                    Section::of(before.patch(a, last), true),
+                    Section::of(after.patch(a, 0), false),
+                );
+                // Equal columns give equal points (up to the sign of zeros): distance 0.
+                if end.column.is_some() && end.column == start.column {
+                    continue;
+                }
                 // The last segment's end too (the next segment's start elsewhere).
                 let steps = COSINE_SAMPLES + usize::from(a + 1 == segments);
                 for k in 0..steps {
                     let u = k as f64 / COSINE_SAMPLES as f64;
-                    gap = gap
-                        .max(section_point(end, u, true).distance(section_point(start, u, false)));
+                    gap = gap.max(end.point(u).distance(start.point(u)));
                 }
             }
         }
@@ -547,25 +545,62 @@ fn joint_gap(surfaces: &[Vec<Vec<PiecewiseSurface>>]) -> f64 {
     gap
 }
 
-/// The point at local u of a patch's boundary v = 0 or (`end`) v = 1: its first or last
-/// column of control points as a rational curve (what the patch is there).
-fn section_point(p: &RationalBezierPatch, u: f64, end: bool) -> DVec3 {
-    let nv = p.degree_v() + 1;
-    let mut column = [DVec4::ZERO; MAX_BOUNDED_DEGREE_U + 1];
-    if p.degree_u() > MAX_BOUNDED_DEGREE_U {
-        return p.eval(u, if end { 1.0 } else { 0.0 });
+/// A patch's boundary v = 0 or (`end`) v = 1: its first or last column of control points
+/// as a rational curve in u (what the patch is there), taken once for all its points.
+struct Section<'a> {
+    patch: &'a RationalBezierPatch,
+    end: bool,
+    /// The column, for degrees in u up to MAX_BOUNDED_DEGREE_U (the patch is evaluated
+    /// above).
+    column: Option<[DVec4; MAX_BOUNDED_DEGREE_U + 1]>,
+}
+
+impl<'a> Section<'a> {
+    fn of(patch: &'a RationalBezierPatch, end: bool) -> Self {
+        let column = (patch.degree_u() <= MAX_BOUNDED_DEGREE_U).then(|| {
+            let nv = patch.degree_v() + 1;
+            let j = if end { nv - 1 } else { 0 };
+            let mut column = [DVec4::ZERO; MAX_BOUNDED_DEGREE_U + 1];
+            for (c, row) in column.iter_mut().zip(patch.homogeneous().chunks_exact(nv)) {
+                *c = row[j];
+            }
+            column
+        });
+        Self { patch, end, column }
     }
-    let j = if end { nv - 1 } else { 0 };
-    for (c, row) in column.iter_mut().zip(p.homogeneous().chunks_exact(nv)) {
-        *c = row[j];
+
+    /// The point at local u.
+    fn point(&self, u: f64) -> DVec3 {
+        let Some(column) = &self.column else {
+            return self.patch.eval(u, if self.end { 1.0 } else { 0.0 });
+        };
+        // Copy only the poles of the profile's usual degrees.
+        let degree = self.patch.degree_u();
+        let h = match degree {
+            1 => casteljau::<2>(column, degree, u),
+            2 => casteljau::<3>(column, degree, u),
+            3 => casteljau::<4>(column, degree, u),
+            _ => casteljau::<{ MAX_BOUNDED_DEGREE_U + 1 }>(column, degree, u),
+        };
+        crate::bezier::homogeneous::project(h)
     }
-    // de Casteljau in place, as `bernstein::evaluate` does.
-    for level in (1..=p.degree_u()).rev() {
+}
+
+/// de Casteljau in place on a copy of the first N points (N > `degree`; the points past
+/// the degree are not used), as `bernstein::evaluate` does.
+fn casteljau<const N: usize>(
+    points: &[DVec4; MAX_BOUNDED_DEGREE_U + 1],
+    degree: usize,
+    u: f64,
+) -> DVec4 {
+    let mut c = [DVec4::ZERO; N];
+    c.copy_from_slice(&points[..N]);
+    for level in (1..=degree).rev() {
         for i in 0..level {
-            column[i] = column[i] * (1.0 - u) + column[i + 1] * u;
+            c[i] = c[i] * (1.0 - u) + c[i + 1] * u;
         }
     }
-    crate::bezier::homogeneous::project(column[0])
+    c[0]
 }
 
 /// Largest |cos| between the parameter lines of a face, patch by patch (|cos| does not
@@ -854,11 +889,17 @@ impl<'a> Topology<'a> {
     ) -> Self {
         let m = transport.pieces.len();
         let stations = if transport.closed { m } else { m + 1 };
+        // Vertices and spine edges per station: the profile's vertices.
+        let per_station: usize = profile
+            .loops
+            .iter()
+            .map(|lp| lp.edges.len() + usize::from(!lp.closed))
+            .sum();
         let mut t = Topology {
-            vertices: Vec::new(),
-            edges: Vec::new(),
-            sections: Vec::new(),
-            spines: Vec::new(),
+            vertices: Vec::with_capacity(stations * per_station),
+            edges: Vec::with_capacity(stations * profile.edge_count() + m * per_station),
+            sections: Vec::with_capacity(stations),
+            spines: Vec::with_capacity(m),
             images,
             profile,
             stations,
@@ -866,7 +907,7 @@ impl<'a> Topology<'a> {
         // Vertices [station][loop][vertex].
         let mut vertex: Vec<Vec<Vec<usize>>> = Vec::with_capacity(stations);
         for k in 0..stations {
-            let mut loops = Vec::new();
+            let mut loops = Vec::with_capacity(profile.loops.len());
             for (l, lp) in profile.loops.iter().enumerate() {
                 let count = lp.edges.len() + usize::from(!lp.closed);
                 let ids = (0..count)
@@ -908,7 +949,7 @@ impl<'a> Topology<'a> {
         };
         // Section edges.
         for k in 0..stations {
-            let mut loops = Vec::new();
+            let mut loops = Vec::with_capacity(profile.loops.len());
             for (l, lp) in profile.loops.iter().enumerate() {
                 let n = lp.edges.len();
                 let ids = (0..n)
@@ -934,7 +975,7 @@ impl<'a> Topology<'a> {
         }
         // Spine edges.
         for (j, faces) in nurbs.iter().enumerate().take(m) {
-            let mut loops = Vec::new();
+            let mut loops = Vec::with_capacity(profile.loops.len());
             for (l, lp) in profile.loops.iter().enumerate() {
                 let n = lp.edges.len();
                 let count = n + usize::from(!lp.closed);
@@ -1104,14 +1145,15 @@ impl<'a> Topology<'a> {
 /// along the spine the same line as a degree-1 B-spline with knots at the spans, so that
 /// OpenCascade's adaptive integration (BRepGProp with a tolerance) splits there.
 fn spine_pcurve(u: f64, knots_v: &[f64]) -> PCurve {
-    let mut breaks = knots_v.to_vec();
-    breaks.dedup();
-    if breaks.len() == 2 {
+    // One span (the clamped ends only): a line, without building the breaks.
+    if knots_v.windows(2).filter(|w| w[0] != w[1]).count() == 1 {
         return PCurve::Line {
             origin: (u, 0.0),
             direction: (0.0, 1.0),
         };
     }
+    let mut breaks = knots_v.to_vec();
+    breaks.dedup();
     let mut knots = vec![breaks[0]];
     knots.extend_from_slice(&breaks);
     knots.push(breaks[breaks.len() - 1]);

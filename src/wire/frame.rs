@@ -526,6 +526,9 @@ fn fit_parts(
     Ok(())
 }
 
+/// Directions of arcs whose support function [`singularity_margin`] keeps.
+const REACH_CACHE: usize = 8;
+
 /// The least singularity margin of the sweep (Cor. 7; see the module notes), or the
 /// refusal naming the edge or joint where the profile reaches past the centre of
 /// curvature. `unit` converts lengths to the caller's units for messages.
@@ -537,6 +540,9 @@ pub(crate) fn singularity_margin(
     let mut least = 1.0f64;
     // The support function in every arc's and miter's direction, from one preparation.
     let table = profile.support_table();
+    // Arcs of a wire often share their direction (axis-aligned routes): the support
+    // function of the last few directions met, by their exact bits.
+    let mut reaches: Vec<([u64; 2], f64)> = Vec::with_capacity(REACH_CACHE);
     for framed in &transport.pieces {
         let piece = &framed.piece;
         let margin = match (&piece.geometry, &framed.frame) {
@@ -545,7 +551,19 @@ pub(crate) fn singularity_margin(
             }
             (Geometry::Line { .. }, _) => 1.0,
             (Geometry::Arc(arc), PieceFrame::Circular { a, b }) => {
-                let reach = table.support(DVec2::new(*a, -*b));
+                let d = DVec2::new(*a, -*b);
+                let key = [d.x.to_bits(), d.y.to_bits()];
+                let reach = match reaches.iter().find(|(k, _)| *k == key) {
+                    Some(&(_, reach)) => reach,
+                    None => {
+                        let reach = table.support(d);
+                        if reaches.len() == REACH_CACHE {
+                            reaches.remove(0);
+                        }
+                        reaches.push((key, reach));
+                        reach
+                    }
+                };
                 let margin = 1.0 - reach / arc.radius;
                 if margin <= 0.0 {
                     return Err(fold_at_arc(piece, arc.radius, reach, unit));

@@ -196,12 +196,14 @@ pub fn sweep_wire(
     };
     let chain = edge::chain(&raw, options.join_tolerance * size_n, size_n, units)?;
     let profile = Profile::new(&outer, &holes, options.solid, options.join_tolerance, scale)?;
+    // Its largest distance from the spine takes a root search per profile segment: once.
+    let radius = profile.radius();
     let mode = match options.corner {
         Corner::Miter => CornerMode::Miter,
         Corner::Round(Some(r)) => CornerMode::Round(r / scale),
-        Corner::Round(None) => CornerMode::Round(DEFAULT_RADIUS_FACTOR * profile.radius()),
+        Corner::Round(None) => CornerMode::Round(DEFAULT_RADIUS_FACTOR * radius),
     };
-    let chain = edge::split_arcs(corner::resolve(chain, mode, scale, profile.radius())?);
+    let chain = edge::split_arcs(corner::resolve(chain, mode, scale, radius)?);
     let faces = chain.pieces.len().saturating_mul(profile.edge_count());
     if faces > MAX_FACES {
         return invalid!(
