@@ -483,17 +483,12 @@ impl NurbsSurface {
         let first = surface.patch(0, 0);
         if ku == 1 && kv == 1 && (first.degree_u(), first.degree_v()) == (pu, pv) {
             // One patch: its control net is the NURBS net (no neighbours to join).
-            let net = first.homogeneous();
-            return Ok(Self {
-                degree_u: pu,
-                degree_v: pv,
-                pole_count_u: nu,
-                pole_count_v: nv,
-                poles: net.iter().map(|&h| project(h)).collect(),
-                weights: net.iter().map(|h| h.w).collect(),
-                knots_u: clamped_knots(surface.u_breaks(), pu),
-                knots_v: clamped_knots(surface.v_breaks(), pv),
-            });
+            return Ok(Self::of_net(
+                surface,
+                (pu, pv),
+                (nu, nv),
+                first.homogeneous(),
+            ));
         }
         let scale = coordinate_scale(
             surface
@@ -536,7 +531,18 @@ impl NurbsSurface {
                 }
             }
         }
-        Ok(Self {
+        Ok(Self::of_net(surface, (pu, pv), (nu, nv), &net))
+    }
+
+    /// The NURBS of a joined homogeneous control net of `surface` (u-major, nu × nv), with
+    /// the knots of its breaks.
+    fn of_net(
+        surface: &PiecewiseSurface,
+        (pu, pv): (usize, usize),
+        (nu, nv): (usize, usize),
+        net: &[DVec4],
+    ) -> Self {
+        Self {
             degree_u: pu,
             degree_v: pv,
             pole_count_u: nu,
@@ -545,7 +551,7 @@ impl NurbsSurface {
             weights: net.iter().map(|h| h.w).collect(),
             knots_u: clamped_knots(surface.u_breaks(), pu),
             knots_v: clamped_knots(surface.v_breaks(), pv),
-        })
+        }
     }
 }
 
