@@ -332,6 +332,16 @@ impl<'a> ProfileSurface<'a> {
         self.spine.eval(v) + c.x * f.f2 + c.y * f.f3
     }
 
+    /// |s(u₁, v) − s(u₂, v)| for any v: |c(u₁) − c(u₂)|, the frames being orthonormal (so
+    /// neither the spine nor the frame is evaluated, nor rounded into the difference).
+    pub(super) fn separation(&self, u1: f64, u2: f64) -> f64 {
+        let point = |u: f64| {
+            let (segment, s) = self.profile_at(u);
+            segment.jet(s).point
+        };
+        crate::math::robust_length((point(u1) - point(u2)).extend(0.0))
+    }
+
     pub(super) fn spine(&self) -> &PiecewiseCurve {
         self.spine
     }

@@ -23,7 +23,8 @@ use super::profile::interior_roots;
 use crate::bezier::bernstein;
 use crate::error::{invalid, Error, Num, Result};
 use crate::math::{
-    illinois_root, interior_midpoint, minimize_bracketed, robust_length, sampled_roots,
+    illinois_root, interior_midpoint, minimize_bracketed, robust_length, robust_normalize,
+    sampled_roots,
 };
 use glam::DVec2;
 use std::convert::Infallible;
@@ -401,9 +402,9 @@ impl Tracer<'_, '_> {
     ) -> Result<()> {
         if let Some(v) = interior_midpoint(left.1, right.1) {
             let middle = (self.root(j, direction, piece, v), v);
-            let chord = self.surface.point(0.5 * (left.0 + right.0), v);
+            let off = self.surface.separation(middle.0, 0.5 * (left.0 + right.0));
             // Half the tolerance at the middle keeps the whole segment within it.
-            if robust_length(self.surface.point(middle.0, v) - chord) > 0.5 * self.tolerance {
+            if off > 0.5 * self.tolerance {
                 if depth >= 60 {
                     return Err(Error::not_converged(format!(
                         "the parabolic line near (u, v) = ({}, {}) does not meet the tolerance",
@@ -437,16 +438,11 @@ impl Tracer<'_, '_> {
 /// |k| without under- or overflow (the curvature numerators scale with the square of the
 /// spine's size).
 fn norm(k: DVec2) -> f64 {
-    let m = k.abs().max_element();
-    if m == 0.0 || !m.is_finite() {
-        return m;
-    }
-    m * (k / m).length()
+    robust_length(k.extend(0.0))
 }
 
 fn unit(k: DVec2) -> Option<DVec2> {
-    let m = k.abs().max_element();
-    (m > 0.0 && m.is_finite()).then(|| (k / m).normalize())
+    robust_normalize(k.extend(0.0)).map(|d| d.truncate())
 }
 
 /// The graphs joined where their ends meet: at the same v, at the same u (a hand-over
