@@ -29,6 +29,9 @@ const SAMPLES: usize = 16;
 /// Halvings of a profile segment's parameter interval before giving up.
 const MAX_HALVINGS: usize = 30;
 
+/// How unequal the legs of a biarc's arc may be, at the unit size the fit works at.
+const ARC_TOLERANCE: f64 = 1e-12;
+
 /// Most arcs one call makes (the error of a biarc falls with the cube of its length, so this
 /// allows tolerances far below any drawing's at the size of the profile).
 pub const MAX_ARCS: usize = 1 << 16;
@@ -194,15 +197,17 @@ impl Fit<'_> {
         if !(b.w1 > 0.0 && b.w2 > 0.0) {
             return Ok(None);
         }
-        let first = Arc::new(b.a1, p1, b.c);
-        let second = Arc::new(b.c, (b.b2 - b.c).normalize_or_zero(), b.a2);
-        let offset = |arc: &Arc, tangent: DVec3, end_tangent: DVec3| {
-            arc.offset(self.distance, tangent, end_tangent)
+        let arc = |a: DVec3, m: DVec3, c: DVec3, w: f64| {
+            RationalBezierCurve::from_weighted(&[a, m, c], &[1.0, w, 1.0])
+        };
+        let arcs = [arc(b.a1, b.b1, b.c, b.w1)?, arc(b.c, b.b2, b.a2, b.w2)?];
+        let (Some(first), Some(second)) = (Arc::of(&arcs[0]), Arc::of(&arcs[1])) else {
+            return Ok(None);
         };
         let joint_tangent = (b.b2 - b.c).normalize_or_zero();
         let offsets = [
-            offset(&first, p1, joint_tangent),
-            offset(&second, joint_tangent, p2),
+            first.offset(self.distance, p1, joint_tangent),
+            second.offset(self.distance, joint_tangent, p2),
         ];
         let near = |s: f64| {
             let (point, _) = self.at(s)?;
@@ -217,11 +222,8 @@ impl Fit<'_> {
         if near > self.tolerance || far > self.tolerance {
             return Ok(None);
         }
-        let arc = |a: DVec3, m: DVec3, c: DVec3, w: f64| {
-            RationalBezierCurve::from_weighted(&[a, m, c], &[1.0, w, 1.0])
-        };
         Ok(Some(Piece {
-            arcs: [arc(b.a1, b.b1, b.c, b.w1)?, arc(b.c, b.b2, b.a2, b.w2)?],
+            arcs,
             deviations: (near, far),
         }))
     }
@@ -246,17 +248,26 @@ fn largest(f: impl Fn(f64) -> Result<f64>, s0: f64, s1: f64) -> Result<f64> {
 }
 
 impl Arc {
-    /// The arc from `start` with unit tangent `tangent` to `end`.
-    fn new(start: DVec3, tangent: DVec3, end: DVec3) -> Self {
-        let chord = end - start;
-        // The centre is on the normal at the start, equidistant from both ends.
-        let normal = DVec3::new(-tangent.y, tangent.x, 0.0);
-        let along = chord.dot(normal);
-        let centre = (along.abs() > 1e-14 * chord.length()).then(|| {
-            let radius = chord.length_squared() / (2.0 * along);
-            (start + radius * normal, radius.abs())
-        });
-        Self { start, end, centre }
+    /// One arc of a biarc (a rational quadratic at unit size) by its circle
+    /// ([`RationalBezierCurve::circular_arc`]), or a straight piece; `None` when it is
+    /// neither (rounding broke its equal legs).
+    fn of(curve: &RationalBezierCurve) -> Option<Self> {
+        let poles: Vec<DVec3> = curve.poles().collect();
+        let (start, inner, end) = (poles[0], poles[1], poles[2]);
+        if let Some(centre) = curve.circular_arc(ARC_TOLERANCE) {
+            return Some(Self {
+                start,
+                end,
+                centre: Some(centre),
+            });
+        }
+        let (leg, chord) = (inner - start, end - start);
+        let straight = leg.cross(chord).length() <= 1e-14 * leg.length() * chord.length();
+        straight.then_some(Self {
+            start,
+            end,
+            centre: None,
+        })
     }
 
     /// The arc's offset at `distance` along (t_y, −t_x): concentric, or the moved segment.
