@@ -36,6 +36,7 @@ use crate::error::Num;
 use crate::error::{invalid, Error, Result};
 use crate::frames::metrics::angle_about_tangent;
 use crate::frames::rational::{RationalFrames, Turning};
+use crate::frames::Frame;
 use crate::math::minimize_bracketed;
 use crate::mesh::grid_parameters;
 use crate::sweep::check_frames_belong_to;
@@ -166,8 +167,14 @@ impl<'a> ProfileSurface<'a> {
     /// k(v): the spine's curvature vector in frame coordinates.
     fn curvature_vector(&self, v: f64) -> DVec2 {
         let jet = self.spine.eval_jet(v);
-        let f = self.frames.frame(v);
-        DVec2::new(f.f2.dot(jet.d2), f.f3.dot(jet.d2)) / jet.d1.length_squared()
+        in_frame(&self.frames.frame(v), jet.d2) / jet.d1.length_squared()
+    }
+
+    /// The unit direction of k(v), or `None` where k = 0: from k|x′|², without the division
+    /// by |x′|², which under- or overflows at extreme scales.
+    fn curvature_direction(&self, v: f64) -> Option<DVec2> {
+        let k = in_frame(&self.frames.frame(v), self.spine.eval_jet(v).d2);
+        crate::math::robust_normalize(k.extend(0.0)).map(|d| d.truncate())
     }
 
     /// The profile segment and local parameter of u.
@@ -292,13 +299,15 @@ impl<'a> ProfileSurface<'a> {
         let (lo, hi) = self.spine.domain();
         for j in 0..v_samples.max(2) {
             let v = lo + (hi - lo) * j as f64 / (v_samples.max(2) - 1) as f64;
-            let k = self.curvature_vector(v);
-            if k == DVec2::ZERO || lines.straight_spine.iter().any(|&(a, b)| v >= a && v <= b) {
+            let Some(k) = self.curvature_direction(v) else {
+                continue;
+            };
+            if lines.straight_spine.iter().any(|&(a, b)| v >= a && v <= b) {
                 continue;
             }
             for (i, (a, b)) in self.tangents.iter().enumerate() {
                 let condition: Vec<f64> = a.iter().zip(b).map(|(a, b)| b * k.x - a * k.y).collect();
-                let size = a.iter().chain(b).fold(0.0f64, |m, c| m.max(c.abs())) * k.length();
+                let size = a.iter().chain(b).fold(0.0f64, |m, c| m.max(c.abs()));
                 if vanishes(&condition, size) {
                     continue;
                 }
@@ -392,8 +401,13 @@ impl<'a> ProfileSurface<'a> {
         let d2 = self.spine.segments()[k].eval_jet(local).d2;
         let f =
             self.frames.segments()[j].frame(((v - fb[j]) / (fb[j + 1] - fb[j])).clamp(0.0, 1.0));
-        DVec2::new(f.f2.dot(d2), f.f3.dot(d2))
+        in_frame(&f, d2)
     }
+}
+
+/// A vector of the normal plane in the coordinates (f₂, f₃) of a frame.
+fn in_frame(f: &Frame, d: DVec3) -> DVec2 {
+    DVec2::new(f.f2.dot(d), f.f3.dot(d))
 }
 
 /// Global parameter of the local parameter s on interval i of `breaks`.
@@ -648,6 +662,40 @@ mod tests {
             "{} vs {scan}",
             m.margin
         );
+    }
+
+    #[test]
+    fn sampled_parabolic_lines_are_invariant_under_scaling() {
+        let spine = helix_spline(4, 0.6);
+        let profile = s_profile();
+        let lines = |scale: f64| {
+            let spine = spine.similar(scale, DVec3::ZERO);
+            let rmf = ph_rational_rmf(&spine, &RmfOptions::rmf(DVec3::Z)).unwrap();
+            let profile = profile.similar(scale, DVec3::ZERO);
+            ProfileSurface::new(&spine, &rmf.frames, &profile)
+                .unwrap()
+                .parabolic_lines(9)
+        };
+        let reference = lines(1.0);
+        assert!(!reference.normal_condition.is_empty());
+        for scale in [1e-200, 1e200] {
+            let scaled = lines(scale);
+            assert_eq!(
+                scaled.normal_condition.len(),
+                reference.normal_condition.len()
+            );
+            for (a, b) in scaled
+                .normal_condition
+                .iter()
+                .zip(&reference.normal_condition)
+            {
+                assert!(
+                    (a.0 - b.0).abs() < 1e-9 && a.1 == b.1,
+                    "scale {scale:e}: {a:?} vs {b:?}"
+                );
+            }
+            assert_eq!(scaled.profile_inflections.len(), 1);
+        }
     }
 
     #[test]
