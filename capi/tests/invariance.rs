@@ -605,3 +605,128 @@ fn cone_spline_fit_is_invariant_under_scaling_and_translation() {
     println!("rmf_cone_spline_approximate, helix of 2 turns to 1e-3 ({pieces} pieces), scales 1.3e-200 … 1.3e200: largest gap {worst:.1e}");
     unsafe { rmf_cone_spline_free(reference) };
 }
+
+/// The vertices (u, v) of `rmf_sweep_parabolic_curves` of a circular-arc profile of radius
+/// 0.3·scale swept along the PH spline through `points`, at tolerance 1e-7·scale.
+fn parabolic_vertices(
+    points: &[RmfVec3],
+    tangents: &[RmfVec3],
+    scale: f64,
+) -> Vec<(f64, f64, u32)> {
+    use rmfsurf_capi::curve::rmf_nurbs_curve_create;
+    use rmfsurf_capi::ph_cubic::{rmf_sweep_parabolic_curves, RmfParabolicCurvePoint};
+    let r = 0.3 * scale;
+    let arc = [
+        vec3(DVec3::new(r, 0.0, 0.0)),
+        vec3(DVec3::new(r, r, 0.0)),
+        vec3(DVec3::new(0.0, r, 0.0)),
+    ];
+    let (weights, knots) = (
+        [1.0, std::f64::consts::FRAC_1_SQRT_2, 1.0],
+        [0.0, 0.0, 0.0, 1.0, 1.0, 1.0],
+    );
+    let (mut spline, mut frames, mut profile) = (null_mut(), null_mut(), null_mut());
+    unsafe {
+        assert_eq!(
+            rmf_ph_spline_hermite(
+                points.as_ptr(),
+                tangents.as_ptr(),
+                points.len(),
+                &mut spline
+            ),
+            RmfStatus::RmfOk
+        );
+        assert_eq!(
+            rmf_ph_rational_rmf(spline, vec3(DVec3::Z), &mut frames),
+            RmfStatus::RmfOk
+        );
+        assert_eq!(
+            rmf_nurbs_curve_create(
+                2,
+                arc.as_ptr(),
+                weights.as_ptr(),
+                3,
+                knots.as_ptr(),
+                6,
+                &mut profile
+            ),
+            RmfStatus::RmfOk
+        );
+        let mut count = 0;
+        let status = rmf_sweep_parabolic_curves(
+            spline,
+            frames,
+            profile,
+            1e-7 * scale,
+            null_mut(),
+            0,
+            &mut count,
+        );
+        assert_eq!(status, RmfStatus::RmfOk, "{}", last_error());
+        let mut out = vec![RmfParabolicCurvePoint::default(); count];
+        assert_eq!(
+            rmf_sweep_parabolic_curves(
+                spline,
+                frames,
+                profile,
+                1e-7 * scale,
+                out.as_mut_ptr(),
+                count,
+                &mut count
+            ),
+            RmfStatus::RmfOk
+        );
+        rmf_frames_free(frames);
+        rmf_curve_free(spline);
+        rmf_curve_free(profile);
+        out.iter().map(|p| (p.u, p.v, p.curve)).collect()
+    }
+}
+
+#[test]
+fn parabolic_curves_are_invariant_under_scaling_and_translation() {
+    let (points, tangents) = helix_data(9, 0.5, 1.0, DVec3::ZERO);
+    let reference = parabolic_vertices(&points, &tangents, 1.0);
+    assert!(!reference.is_empty());
+    for scale in [1e-200, 1e200, 1.0] {
+        for offset_ratio in [0.0, 1e3] {
+            let offset = DVec3::new(1.0, -2.0, 3.0).normalize() * (offset_ratio * scale);
+            let (points, tangents) = helix_data(9, 0.5, scale, offset);
+            let got = parabolic_vertices(&points, &tangents, scale);
+            let curves = |v: &[(f64, f64, u32)]| v.last().map_or(0, |p| p.2 + 1);
+            assert_eq!(
+                curves(&got),
+                curves(&reference),
+                "×{scale:e} + {offset_ratio:e}"
+            );
+            // The same lines: every vertex of the reference lies on the polyline at its v.
+            let mut worst: f64 = 0.0;
+            for &(u, v, c) in &reference {
+                let line: Vec<&(f64, f64, u32)> = got.iter().filter(|p| p.2 == c).collect();
+                let at = line.windows(2).find(|w| (w[0].1 - v) * (w[1].1 - v) <= 0.0);
+                let Some(w) = at else {
+                    // Past an end of the line (where it leaves the profile): the ends move
+                    // with the rounding of the data, a few ulps of the offset.
+                    let end = [line[0], line[line.len() - 1]]
+                        .into_iter()
+                        .min_by(|a, b| (a.1 - v).abs().total_cmp(&(b.1 - v).abs()))
+                        .unwrap();
+                    assert!(
+                        (end.1 - v).abs() < 1e-8,
+                        "×{scale:e}: curve {c} misses v = {v}"
+                    );
+                    worst = worst.max((end.0 - u).abs());
+                    continue;
+                };
+                let s = if w[1].1 == w[0].1 {
+                    0.0
+                } else {
+                    (v - w[0].1) / (w[1].1 - w[0].1)
+                };
+                worst = worst.max((w[0].0 + s * (w[1].0 - w[0].0) - u).abs());
+            }
+            println!("parabolic curves ×{scale:e} + {offset_ratio:e}·size: u within {worst:.1e}");
+            assert!(worst < 1e-9, "×{scale:e} + {offset_ratio:e}: {worst}");
+        }
+    }
+}
