@@ -153,7 +153,7 @@ pub mod metrics {
     pub use crate::frames::compare::{frame_errors, nearest_parameter, FrameErrors, ReferenceRmf};
     pub use crate::frames::metrics::{
         angle_about_tangent, gaussian_curvature, orthonormality_error, parameter_line_cosine,
-        rmf_defect,
+        rmf_defect, scaled_gaussian_curvature,
     };
     pub use crate::math::angle_between;
 }

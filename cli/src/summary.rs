@@ -198,7 +198,7 @@ fn wire_figures(edges: usize, shape: &rmfsurf::Shape) -> Vec<Figure> {
         figure("seam_gap", "closed wire: seam gap", r.seam_gap),
         figure("joint_gap", "largest gap between sections at joints", r.joint_gap),
     ];
-    if let Some(v) = shape.volume() {
+    if let Ok(v) = shape.volume() {
         figures.push(figure(
             "volume",
             "volume (divergence theorem, Gauss–Legendre)",
@@ -271,7 +271,11 @@ fn cone_figures(o: &ConeOutcome) -> rmfsurf::Result<Vec<Figure>> {
     figures.push(figure(
         "pattern_size",
         "flat pattern: width × height",
-        format!("{:.6} × {:.6}", hi.x - lo.x, hi.y - lo.y),
+        format!(
+            "{} × {}",
+            length_text(hi.x - lo.x),
+            length_text(hi.y - lo.y)
+        ),
     ));
     Ok(figures)
 }
@@ -369,7 +373,9 @@ fn sheet_figures(o: &SheetOutcome) -> rmfsurf::Result<Vec<Figure>> {
             "sheet",
             format!(
                 "thickness {}, K-factor {}, designed surface = {:?} face",
-                sheet.thickness, sheet.k_factor, sheet.reference
+                number_text(sheet.thickness),
+                sheet.k_factor,
+                sheet.reference
             ),
         ),
         figure(
@@ -383,8 +389,6 @@ fn sheet_figures(o: &SheetOutcome) -> rmfsurf::Result<Vec<Figure>> {
             part.bend_radius(),
         ),
     ];
-    let formed = part.area(Layer::Neutral)?;
-    let flat = o.flat.area();
     let arcs = o
         .flat
         .outline
@@ -405,15 +409,23 @@ fn sheet_figures(o: &SheetOutcome) -> rmfsurf::Result<Vec<Figure>> {
     figures.push(figure(
         "pattern_size",
         "flat pattern: width × height",
-        format!("{:.6} × {:.6}", hi.x - lo.x, hi.y - lo.y),
+        format!(
+            "{} × {}",
+            length_text(hi.x - lo.x),
+            length_text(hi.y - lo.y)
+        ),
     ));
-    figures.push(figure("flat_area", "flat pattern: area", flat));
-    figures.push(figure("formed_area", "formed neutral layer: area", formed));
-    figures.push(figure(
-        "area_error",
-        "flat against formed area, relative",
-        (flat - formed).abs() / formed,
-    ));
+    // Areas of parts beyond about 1e154 across (or below 1e-154) are outside the range of
+    // f64: those figures are left out, the lengths above still say what was made.
+    if let (Ok(flat), Ok(formed)) = (o.flat.area(), part.area(Layer::Neutral)) {
+        figures.push(figure("flat_area", "flat pattern: area", flat));
+        figures.push(figure("formed_area", "formed neutral layer: area", formed));
+        figures.push(figure(
+            "area_error",
+            "flat against formed area, relative",
+            (flat - formed).abs() / formed,
+        ));
+    }
     let lengths = part.flat_boundary_lengths()?;
     let mut worst = 0.0f64;
     for (k, side) in [Side::First, Side::Second].iter().enumerate() {
@@ -426,6 +438,25 @@ fn sheet_figures(o: &SheetOutcome) -> rmfsurf::Result<Vec<Figure>> {
         worst,
     ));
     Ok(figures)
+}
+
+/// A length with six decimals, or in exponent notation where that would show nothing or
+/// hundreds of digits.
+fn length_text(x: f64) -> String {
+    if (1e-3..1e9).contains(&x.abs()) || x == 0.0 {
+        format!("{x:.6}")
+    } else {
+        format!("{x:.6e}")
+    }
+}
+
+/// A number as given, or in exponent notation when it is very large or small.
+fn number_text(x: f64) -> String {
+    if (1e-6..1e9).contains(&x.abs()) || x == 0.0 {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
+    }
 }
 
 /// The summary as JSON text, for `-o summary.json`.

@@ -23,7 +23,7 @@ use super::homogeneous::{lift, project};
 use super::piecewise::{PiecewiseCurve, PiecewiseSurface};
 use super::surface::RationalBezierPatch;
 use crate::error::{invalid, Num, Result};
-use crate::math::{fraction, largest_coordinate, reciprocal_length};
+use crate::math::{fraction, largest_coordinate, reciprocal_length, robust_length};
 use glam::{DVec3, DVec4};
 
 /// Relative tolerance for poles that must coincide where segments meet.
@@ -570,14 +570,15 @@ fn clamped_knots(breaks: &[f64], degree: usize) -> Vec<f64> {
     knots
 }
 
-/// A length scale of a point set, for relative tolerances (at least 1).
+/// A length scale of a point set, for relative tolerances: its largest coordinate, so that
+/// a join is judged alike at every scale.
 fn coordinate_scale(points: impl Iterator<Item = DVec3>) -> f64 {
-    largest_coordinate(points).max(1.0)
+    largest_coordinate(points).max(f64::MIN_POSITIVE)
 }
 
 fn homogeneous_close(a: DVec4, b: DVec4, scale: f64) -> bool {
     let weight_ok = (a.w - b.w).abs() <= JOINT_TOLERANCE * a.w.abs().max(b.w.abs());
-    weight_ok && (project(a) - project(b)).length() <= JOINT_TOLERANCE * scale
+    weight_ok && robust_length(project(a) - project(b)) <= JOINT_TOLERANCE * scale
 }
 
 #[cfg(test)]

@@ -6,7 +6,7 @@ use super::curve::{CurveJet, RationalBezierCurve};
 use super::surface::{RationalBezierPatch, SurfaceJet};
 use crate::error::Num;
 use crate::error::{invalid, Result};
-use crate::math::{fraction, reciprocal_length, GaussLegendre};
+use crate::math::{fraction, reciprocal_length, robust_length, GaussLegendre};
 use glam::DVec3;
 
 /// Relative tolerance for parameters that fall just outside a domain by round-off: a
@@ -144,7 +144,7 @@ impl PiecewiseCurve {
         let rule = GaussLegendre::new(24);
         self.breaks
             .windows(2)
-            .map(|w| rule.integrate(w[0], w[1], |t| self.eval_jet(t).d1.length()))
+            .map(|w| rule.integrate(w[0], w[1], |t| robust_length(self.eval_jet(t).d1)))
             .sum()
     }
 

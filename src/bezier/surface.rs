@@ -279,6 +279,38 @@ impl RationalBezierPatch {
         }
     }
 
+    /// The patch split at `t` in u (`along_u`) or in v: the parts on [0, t] and [t, 1],
+    /// each reparameterized to [0, 1] (de Casteljau on the homogeneous rows or columns).
+    pub fn split(&self, along_u: bool, t: f64) -> (Self, Self) {
+        let (nu, nv) = (self.degree_u + 1, self.degree_v + 1);
+        let mut left = self.points.clone();
+        let mut right = self.points.clone();
+        let (lines, length) = if along_u { (nv, nu) } else { (nu, nv) };
+        let index = |line: usize, k: usize| {
+            if along_u {
+                k * nv + line
+            } else {
+                line * nv + k
+            }
+        };
+        let mut coefficients = Vec::with_capacity(length);
+        for line in 0..lines {
+            coefficients.clear();
+            coefficients.extend((0..length).map(|k| self.points[index(line, k)]));
+            let (a, b) = bernstein::split(&coefficients, t);
+            for k in 0..length {
+                left[index(line, k)] = a[k];
+                right[index(line, k)] = b[k];
+            }
+        }
+        let part = |points| Self {
+            degree_u: self.degree_u,
+            degree_v: self.degree_v,
+            points,
+        };
+        (part(left), part(right))
+    }
+
     /// The same patch with every homogeneous point multiplied by `factor > 0`.
     pub fn scaled_weights(&self, factor: f64) -> Self {
         Self {

@@ -15,6 +15,7 @@ use super::element::Element;
 use super::piece::{ConePiece, Motion, PieceKind};
 use super::spline::ConeSpline;
 use crate::error::{invalid, Result};
+use crate::math::power_of_two_scale;
 use glam::{DMat3, DVec3};
 use std::f64::consts::FRAC_PI_2;
 
@@ -128,6 +129,39 @@ impl ConeSpline {
     /// z = 0 with the first reference point at the origin, e₁ along +x and p₁ along +y (so
     /// n₁ = +z: the development is seen from the side the normals point to).
     pub fn developed(&self) -> Result<Self> {
+        let (unit, scale) = self.unit_size()?;
+        let flat = unit.developed_unit()?;
+        Self::new(
+            flat.pieces()
+                .iter()
+                .map(|p| p.similar(DMat3::IDENTITY, scale, DVec3::ZERO))
+                .collect(),
+        )
+    }
+
+    /// The spline moved to the origin and scaled by a power of two to unit size, with that
+    /// scale: the development is the same up to the scale (it starts at the origin), and
+    /// computed there none of its products overflow or underflow.
+    pub(crate) fn unit_size(&self) -> Result<(Self, f64)> {
+        let points = self.pieces().iter().flat_map(|p| {
+            let end = p.end().point;
+            [p.start.point, end]
+        });
+        let (lo, hi) = points.fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), p| {
+            (lo.min(p), hi.max(p))
+        });
+        let centre = 0.5 * lo + 0.5 * hi;
+        let scale = 1.0 / power_of_two_scale(0.5 * hi - 0.5 * lo);
+        let pieces = self
+            .pieces()
+            .iter()
+            .map(|p| p.similar(DMat3::IDENTITY, 1.0 / scale, -centre / scale))
+            .collect();
+        Ok((Self::new(pieces)?, scale))
+    }
+
+    /// [`Self::developed`] of a unit-size spline.
+    fn developed_unit(&self) -> Result<Self> {
         let flat = self.bent(1.0)?;
         let first = flat.first();
         let rotation = DMat3::from_cols(first.ruling, first.side, first.normal()).transpose();

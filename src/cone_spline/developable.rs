@@ -37,8 +37,8 @@ use crate::bezier::{NurbsCurve, PiecewiseCurve, PiecewiseSurface};
 use crate::curve::{uniform_parameters, ParametricCurve};
 use crate::error::no_solution;
 use crate::error::{invalid, Error, Result};
-use crate::frames::metrics::gaussian_curvature;
-use crate::math::{real_roots_in, sampled_roots};
+use crate::frames::metrics::scaled_gaussian_curvature;
+use crate::math::{bounding_diagonal, real_roots_in, sampled_roots};
 use glam::{DVec3, DVec4};
 
 /// One ruling of a developable over the region of interest.
@@ -352,16 +352,14 @@ pub fn max_scaled_curvature(surface: &PiecewiseSurface) -> f64 {
         .windows(2)
         .flat_map(|w| (0..8).map(move |j| w[0] + (w[1] - w[0]) * (j as f64 + 0.5) / 8.0))
         .collect();
-    let (mut lo, mut hi, mut k) = (DVec3::INFINITY, DVec3::NEG_INFINITY, 0.0f64);
-    for &u in &us {
-        for &v in &vs {
-            let jet = surface.eval_jet(u, v);
-            lo = lo.min(jet.point);
-            hi = hi.max(jet.point);
-            k = k.max(gaussian_curvature(&jet).abs());
-        }
-    }
-    k * (hi - lo).length_squared()
+    let jets: Vec<_> = us
+        .iter()
+        .flat_map(|&u| vs.iter().map(move |&v| surface.eval_jet(u, v)))
+        .collect();
+    let size = bounding_diagonal(jets.iter().map(|j| j.point));
+    jets.iter()
+        .map(|jet| scaled_gaussian_curvature(jet, size).abs())
+        .fold(0.0, f64::max)
 }
 
 impl Developable for RuledSurface {

@@ -13,6 +13,7 @@
 use super::piece::Motion;
 use super::spline::ConeSpline;
 use crate::error::{invalid, Result};
+use crate::math::{in_caller_units, robust_length};
 use glam::{DVec2, DVec3};
 
 /// |normal · z| below 1 − this is not a rotation in the plane (not a development).
@@ -79,10 +80,33 @@ impl PatternEdge {
         }
     }
 
+    /// The edge scaled by `scale` about the origin.
+    pub fn scaled(&self, scale: f64) -> Self {
+        match *self {
+            PatternEdge::Line { from, to } => PatternEdge::Line {
+                from: from * scale,
+                to: to * scale,
+            },
+            PatternEdge::Arc {
+                center,
+                radius,
+                from,
+                to,
+                sweep,
+            } => PatternEdge::Arc {
+                center: center * scale,
+                radius: radius * scale,
+                from: from * scale,
+                to: to * scale,
+                sweep,
+            },
+        }
+    }
+
     /// Arc length.
     pub fn length(&self) -> f64 {
         match *self {
-            PatternEdge::Line { from, to } => from.distance(to),
+            PatternEdge::Line { from, to } => robust_length((to - from).extend(0.0)),
             PatternEdge::Arc { radius, sweep, .. } => radius * sweep.abs(),
         }
     }
@@ -99,21 +123,33 @@ pub struct FlatPattern {
 
 impl FlatPattern {
     /// The area enclosed by the outline, positive when it runs counter-clockwise (Green's
-    /// theorem: the chords of its edges, plus the circular segments of its arcs).
-    pub fn area(&self) -> f64 {
-        0.5 * self
-            .outline
-            .iter()
-            .map(|e| {
-                let chord = e.start().perp_dot(e.end());
-                match *e {
-                    PatternEdge::Line { .. } => chord,
-                    PatternEdge::Arc { radius, sweep, .. } => {
-                        chord + radius * radius * (sweep - sweep.sin())
+    /// theorem: the chords of its edges, plus the circular segments of its arcs). Summed in
+    /// coordinates scaled to the pattern's size (a power of two), so that no product
+    /// overflows or underflows; refused when the area itself is outside the range of f64.
+    pub fn area(&self) -> Result<f64> {
+        let (lo, hi) = self.bounds();
+        let size = hi.abs().max(lo.abs()).max_element();
+        let scale = if size > 0.0 && size.is_finite() {
+            2f64.powi(size.log2().round() as i32)
+        } else {
+            1.0
+        };
+        let unit = 0.5
+            * self
+                .outline
+                .iter()
+                .map(|e| {
+                    let chord = (e.start() / scale).perp_dot(e.end() / scale);
+                    match *e {
+                        PatternEdge::Line { .. } => chord,
+                        PatternEdge::Arc { radius, sweep, .. } => {
+                            let r = radius / scale;
+                            chord + r * r * (sweep - sweep.sin())
+                        }
                     }
-                }
-            })
-            .sum::<f64>()
+                })
+                .sum::<f64>();
+        in_caller_units(unit, scale, 2, "flat area")
     }
 
     /// Lower-left and upper-right corners of the box around the outline (arcs included).
@@ -160,6 +196,19 @@ impl ConeSpline {
     /// z = 0) and each piece's boundaries become lines and arcs.
     pub fn flat_pattern(&self, t0: f64, t1: f64) -> Result<FlatPattern> {
         self.check_bounds(t0, t1)?;
+        // Developed at unit size and scaled back: the lengths of a pattern 1e200 across
+        // (or 1e-200) would overflow (or underflow) in the squares of the construction.
+        let (unit, scale) = self.unit_size()?;
+        let unit = unit.flat_pattern_unit(t0 / scale, t1 / scale)?;
+        let scaled = |edges: &[PatternEdge]| edges.iter().map(|e| e.scaled(scale)).collect();
+        Ok(FlatPattern {
+            outline: scaled(&unit.outline),
+            bend_lines: scaled(&unit.bend_lines),
+        })
+    }
+
+    /// [`Self::flat_pattern`] of a unit-size spline.
+    fn flat_pattern_unit(&self, t0: f64, t1: f64) -> Result<FlatPattern> {
         let flat = self.developed()?;
         let mut lower = Vec::with_capacity(flat.pieces().len());
         let mut upper = Vec::with_capacity(flat.pieces().len());

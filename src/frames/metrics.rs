@@ -12,7 +12,8 @@
 use super::{Frame, FrameField, FrameKind};
 use crate::bezier::SurfaceJet;
 use crate::error::Result;
-use crate::math::signed_angle;
+use crate::math::{power_of_two_scale, robust_length, signed_angle, unit_scaled};
+use glam::DVec3;
 
 /// The RMF defect at `t`: `(df₂/dt · f₃) / |x'(t)|` (radians per unit length).
 ///
@@ -20,7 +21,7 @@ use crate::math::signed_angle;
 /// pointwise frames the derivative is a central difference, which is only as accurate as
 /// the step allows (≈1e-7 relative).
 pub fn rmf_defect(field: &FrameField, t: f64) -> Result<f64> {
-    let speed = field.curve().eval_jet(t).d1.length();
+    let speed = robust_length(field.curve().eval_jet(t).d1);
     let rate = match field.kind() {
         FrameKind::Rational(r) => {
             let (_, d) = r.f2_with_derivative(t);
@@ -61,17 +62,33 @@ pub fn parameter_line_cosine(jet: &SurfaceJet) -> f64 {
 }
 
 /// `|cos ∠(s_u, s_v)|` from the first partials alone.
-pub(crate) fn partials_cosine(du: glam::DVec3, dv: glam::DVec3) -> f64 {
+pub(crate) fn partials_cosine(du: DVec3, dv: DVec3) -> f64 {
+    let (du, dv) = (unit_scaled(du), unit_scaled(dv));
     du.dot(dv).abs() / (du.length() * dv.length())
 }
 
 /// Gaussian curvature from the first and second fundamental forms.
 pub fn gaussian_curvature(jet: &SurfaceJet) -> f64 {
-    let normal = jet.du.cross(jet.dv);
+    scaled_gaussian_curvature(jet, 1.0)
+}
+
+/// K·length², the Gaussian curvature in units of `length` (a size of the surface): the
+/// jet is scaled by a power of two first, so that neither the fundamental forms nor K
+/// overflow or underflow where K·length² is a moderate number (surfaces of size 1e-200 or
+/// 1e200, whose K is 1e400 or 1e-400).
+pub fn scaled_gaussian_curvature(jet: &SurfaceJet, length: f64) -> f64 {
+    let c = power_of_two_scale(jet.du.abs().max(jet.dv.abs()));
+    let (du, dv) = (jet.du * c, jet.dv * c);
+    let normal = du.cross(dv);
     let area2 = normal.length_squared();
     let n = normal / area2.sqrt();
-    let (l, m, nn) = (jet.duu.dot(n), jet.duv.dot(n), jet.dvv.dot(n));
-    (l * nn - m * m) / area2
+    let (l, m, nn) = (
+        (jet.duu * c).dot(n),
+        (jet.duv * c).dot(n),
+        (jet.dvv * c).dot(n),
+    );
+    let scaled_length = length * c;
+    (l * nn - m * m) / area2 * scaled_length * scaled_length
 }
 
 #[cfg(test)]

@@ -13,6 +13,7 @@ mod minimize;
 mod quadrature;
 mod roots;
 mod secant;
+mod units;
 mod vector;
 
 pub use binomial::{binomial, binomial_row, reciprocal_binomial_row};
@@ -27,8 +28,9 @@ pub use roots::{
     real_roots_power, sampled_roots,
 };
 pub use secant::secant_refine;
+pub use units::in_caller_units;
 pub use vector::{
     angle_between, bounding_diagonal, check_finite, check_point, check_unit_direction,
-    largest_coordinate, normal_plane_unit, orthogonalized, orthonormal_to, robust_length,
-    robust_normalize, signed_angle,
+    largest_coordinate, normal_plane_unit, orthogonalized, orthonormal_to, power_of_two_scale,
+    robust_length, robust_normalize, signed_angle, unit_scaled,
 };

@@ -21,7 +21,8 @@ pub fn bounding_diagonal(points: impl IntoIterator<Item = DVec3>) -> f64 {
     if lo.x > hi.x {
         0.0
     } else {
-        (hi - lo).length()
+        // Halved first: hi − lo and its squares stay finite for any finite points.
+        2.0 * robust_length(0.5 * hi - 0.5 * lo)
     }
 }
 
@@ -121,12 +122,32 @@ pub fn orthogonalized(v: DVec3, axis: DVec3) -> DVec3 {
 /// The angle between two non-zero vectors, atan2(|a × b|, a·b): accurate for tiny angles,
 /// where acos(a·b / |a||b|) cannot resolve anything below ~1.5e-8.
 pub fn angle_between(a: DVec3, b: DVec3) -> f64 {
+    let (a, b) = (unit_scaled(a), unit_scaled(b));
     a.cross(b).length().atan2(a.dot(b))
+}
+
+/// `v` scaled by a power of two to components near 1 (zero and non-finite vectors as they
+/// are): the same direction, exactly, with products that neither overflow nor underflow,
+/// for formulas that do not depend on the length.
+pub fn unit_scaled(v: DVec3) -> DVec3 {
+    v * power_of_two_scale(v)
+}
+
+/// 2⁻ᵏ with 2ᵏ nearest the largest component of `v` (1 for zero or non-finite vectors):
+/// multiplying by it is exact and brings the components near 1.
+pub fn power_of_two_scale(v: DVec3) -> f64 {
+    let largest = v.abs().max_element();
+    if largest > 0.0 && largest.is_finite() {
+        2f64.powi(-(largest.log2().round() as i32))
+    } else {
+        1.0
+    }
 }
 
 /// The signed angle about the unit `axis` that turns `a` into `b` (both normal to the
 /// axis), in (−π, π]: atan2(axis·(a × b), a·b).
 pub fn signed_angle(a: DVec3, b: DVec3, axis: DVec3) -> f64 {
+    let (a, b) = (unit_scaled(a), unit_scaled(b));
     axis.dot(a.cross(b)).atan2(a.dot(b))
 }
 

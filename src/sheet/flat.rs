@@ -260,7 +260,7 @@ impl FlatLayout {
             outline: close_loop(outline, 1.0),
             bend_lines: self.bend_lines.clone(),
         };
-        if pattern.area() < 0.0 {
+        if pattern.area().is_ok_and(|a| a < 0.0) {
             pattern.outline = pattern
                 .outline
                 .iter()

@@ -15,6 +15,7 @@ use crate::bezier::{
 use crate::cone_spline::developable::{RuledSurface, TangentSurface};
 use crate::cone_spline::{ConePiece, ConeSpline, FlatPattern, PatternEdge};
 use crate::error::{invalid, Result};
+use crate::math::in_caller_units;
 use glam::{DVec2, DVec3};
 
 /// Which boundary curve of a part: the first (u = 0: a transition's bottom, the first rail)
@@ -310,11 +311,13 @@ impl SheetPart {
     }
 
     /// The area of a layer (caller's units²), by 16-point Gauss–Legendre quadrature on
-    /// every patch.
+    /// every patch of the part's unit-size surface; refused when it is outside the range of
+    /// f64.
     pub fn area(&self, layer: Layer) -> Result<f64> {
         let g = crate::math::GaussLegendre::new(16);
-        Ok(self
-            .surface(layer)?
+        let unit: f64 = self
+            .part
+            .layer(self.layers.offset(layer))?
             .patches()
             .iter()
             .map(|p| {
@@ -325,19 +328,18 @@ impl SheetPart {
                     })
                 })
             })
-            .sum())
+            .sum();
+        in_caller_units(unit, self.frame.scale, 2, "area")
     }
 
     /// The length of a boundary curve of a layer, by 24-point Gauss–Legendre quadrature on
-    /// every segment.
+    /// every segment of the part's unit-size curve.
     pub fn boundary_length(&self, layer: Layer, side: Side) -> Result<f64> {
-        let g = crate::math::GaussLegendre::new(24);
-        Ok(self
-            .boundary(layer, side)?
-            .segments()
-            .iter()
-            .map(|s| g.integrate(0.0, 1.0, |t| s.eval_jet(t).d1.length()))
-            .sum())
+        let unit = self
+            .part
+            .boundary(side.index(), self.layers.offset(layer))?
+            .arc_length();
+        in_caller_units(unit, self.frame.scale, 1, "boundary length")
     }
 
     fn user_patch(&self, p: &RationalBezierPatch) -> RationalBezierPatch {
@@ -403,7 +405,7 @@ impl SheetPart {
     /// lines and arcs, counter-clockwise, and the bend lines.
     pub fn flat_pattern(&self) -> Result<FlatPattern> {
         let flat = self.flat_layout()?.pattern();
-        let scale = |e: &PatternEdge| scaled_edge(e, self.frame.scale);
+        let scale = |e: &PatternEdge| e.scaled(self.frame.scale);
         Ok(FlatPattern {
             outline: flat.outline.iter().map(scale).collect(),
             bend_lines: flat.bend_lines.iter().map(scale).collect(),
@@ -489,28 +491,6 @@ fn flip_u(patch: RationalBezierPatch, flip: bool) -> RationalBezierPatch {
     let h = patch.homogeneous();
     RationalBezierPatch::from_homogeneous(1, patch.degree_v(), [&h[n..], &h[..n]].concat())
         .expect("the same points")
-}
-
-pub(crate) fn scaled_edge(edge: &PatternEdge, s: f64) -> PatternEdge {
-    match *edge {
-        PatternEdge::Line { from, to } => PatternEdge::Line {
-            from: from * s,
-            to: to * s,
-        },
-        PatternEdge::Arc {
-            center,
-            radius,
-            from,
-            to,
-            sweep,
-        } => PatternEdge::Arc {
-            center: center * s,
-            radius: radius * s,
-            from: from * s,
-            to: to * s,
-            sweep,
-        },
-    }
 }
 
 /// A curve of the caller's in internal coordinates.

@@ -81,7 +81,7 @@ fn square_to_round_hopper_figures() {
             "gap after edge {k}"
         );
     }
-    let area = flat.area();
+    let area = flat.area().unwrap();
     let formed = surface_area(&part, Layer::Neutral);
     let arcs = flat
         .outline
@@ -275,13 +275,14 @@ fn flat_area(part: &SheetPart, scale: f64) -> f64 {
         .unwrap()
         .outline
         .iter()
-        .map(|e| super::part::scaled_edge(e, 1.0 / scale))
+        .map(|e| e.scaled(1.0 / scale))
         .collect();
     crate::FlatPattern {
         outline,
         bend_lines: vec![],
     }
     .area()
+    .unwrap()
 }
 
 #[test]
@@ -384,7 +385,7 @@ fn check_transition(
     let surface = part.surface(Layer::Reference).unwrap();
     let k = interior_curvature(&surface);
     let flat = part.flat_pattern().unwrap();
-    let area = flat.area();
+    let area = flat.area().unwrap();
     let formed = surface_area(&part, Layer::Neutral);
     let creases = part
         .cone_spline()
@@ -639,7 +640,7 @@ fn flat_against_formed(part: &SheetPart) -> (f64, f64) {
     for k in 0..n {
         assert_eq!(flat.outline[k].end(), flat.outline[(k + 1) % n].start());
     }
-    let (formed, area) = (surface_area(part, Layer::Neutral), flat.area());
+    let (formed, area) = (surface_area(part, Layer::Neutral), flat.area().unwrap());
     assert!(area > 0.0, "counter-clockwise");
     let lengths = part.flat_boundary_lengths().unwrap();
     let formed_lengths =
@@ -716,7 +717,7 @@ fn parts_between_rails_are_similar_under_scaling_and_translation() {
         &rails_options(1e-4, 1e-9),
     )
     .unwrap();
-    let area0 = reference.flat_pattern().unwrap().area();
+    let area0 = reference.flat_pattern().unwrap().area().unwrap();
     let edge0 = reference.report().edge_distance;
     for (scale, shift) in [
         (1e-200, DVec3::ZERO),

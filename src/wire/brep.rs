@@ -31,14 +31,15 @@
 //! the face is marked reversed). Caps are bounded counter-clockwise about their outward
 //! normal (holes clockwise), so every edge is used once in each direction.
 
+use super::clearance::{self_contact, Contact};
 use super::edge::Geometry;
-use super::frame::{arc_numerators, PieceFrame, Transport};
+use super::frame::{arc_numerators, PieceFrame, Transport, CLOSURE_ROUND_OFF};
 use super::profile::{EdgeImage, Profile};
 use crate::bezier::{
     NurbsCurve, NurbsSurface, PiecewiseCurve, PiecewiseSurface, RationalBezierCurve,
     RationalBezierPatch,
 };
-use crate::error::{invalid, Result};
+use crate::error::{invalid, Error, Result};
 use crate::export::step::{
     boundary_curve, boundary_line, Brep, BrepBound, BrepEdge, BrepFace, BrepSurface, BrepUse,
     PCurve,
@@ -133,6 +134,8 @@ pub struct Shape {
     solid: bool,
     report: SweepReport,
     spine: Vec<PiecewiseCurve>,
+    /// The map from the coordinates the sweep was built in to the caller's.
+    placement: Placement,
 }
 
 impl Shape {
@@ -157,12 +160,17 @@ impl Shape {
         &self.spine
     }
 
-    /// The enclosed volume of a solid (`None` for a sheet): ⅓ ∮ x·n dA by 24-point
-    /// Gauss–Legendre quadrature on every patch and cap loop segment.
-    pub fn volume(&self) -> Option<f64> {
+    /// The enclosed volume of a solid: ⅓ ∮ x·n dA by 24-point Gauss–Legendre quadrature on
+    /// every patch and cap loop segment. The flux is taken about the wire's centre in units
+    /// of its size (a power of two), so that it loses nothing to the wire's position and no
+    /// square overflows; refused for a sheet, and for a volume outside the range of f64 (a
+    /// wire 1e-200 long encloses about 1e-600).
+    pub fn volume(&self) -> Result<f64> {
         if !self.solid {
-            return None;
+            return invalid!("the shape is a sheet, not a solid: it encloses no volume");
         }
+        let Placement { scale, offset } = self.placement;
+        let local = |p: DVec3| (p - offset) / scale;
         let rule = GaussLegendre::new(VOLUME_NODES);
         let flux: f64 = self
             .faces
@@ -177,7 +185,7 @@ impl Shape {
                             rule.integrate(0.0, 1.0, |u| {
                                 rule.integrate(0.0, 1.0, |v| {
                                     let j = p.eval_jet(u, v);
-                                    j.point.dot(j.du.cross(j.dv))
+                                    local(j.point).dot((j.du / scale).cross(j.dv / scale))
                                 })
                             })
                         })
@@ -192,16 +200,24 @@ impl Shape {
                         .map(|seg| {
                             rule.integrate(0.0, 1.0, |t| {
                                 let j = seg.eval_jet(t);
-                                0.5 * (j.point - o).cross(j.d1).dot(n)
+                                0.5 * ((j.point - o) / scale).cross(j.d1 / scale).dot(n)
                             })
                         })
                         .sum();
-                    o.dot(n) * area
+                    local(o).dot(n) * area
                 }
                 _ => 0.0,
             })
             .sum();
-        Some(flux / 3.0)
+        let unit = flux / 3.0;
+        let volume = unit * scale * scale * scale;
+        if !volume.is_normal() && unit != 0.0 {
+            return invalid!(
+                "the volume {unit:.6e} × {scale:e}³ is outside the range of f64 (the solid is \
+                 {scale:e} across)"
+            );
+        }
+        Ok(volume)
     }
 
     /// The shape as a STEP AP214 file: a `MANIFOLD_SOLID_BREP` for a solid, an open shell
@@ -320,6 +336,7 @@ pub(crate) fn build(
     solid: bool,
     placement: Placement,
     margin: f64,
+    gap: f64,
 ) -> Result<Shape> {
     let m = transport.pieces.len();
     // Lateral surfaces, normalized, [piece][loop][edge].
@@ -336,6 +353,9 @@ pub(crate) fn build(
             loops.push(faces);
         }
         normalized.push(loops);
+    }
+    if let Some(contact) = self_contact(&normalized, transport.closed, gap) {
+        return Err(self_intersection(&contact, transport, placement, gap));
     }
     let images = closure_images(transport, profile)?;
     let seam_gap = seam_gap(&normalized, profile, images.as_ref()) * placement.scale;
@@ -439,7 +459,53 @@ pub(crate) fn build(
             .iter()
             .map(|p| placement.curve(&p.spine))
             .collect(),
+        placement,
     })
+}
+
+/// The refusal of a sweep that touches itself, in the caller's units.
+fn self_intersection(
+    contact: &Contact,
+    transport: &Transport,
+    placement: Placement,
+    gap: f64,
+) -> Error {
+    let name = |piece: usize| {
+        let p = &transport.pieces[piece].piece;
+        match &p.corner {
+            Some(joint) => format!("the round corner at the {joint}"),
+            None => format!("edge {}", p.edge),
+        }
+    };
+    let (a, b) = contact.pieces;
+    let (near, distance) = (
+        placement.point(contact.points.0),
+        contact.distance * placement.scale,
+    );
+    let gap = gap * placement.scale;
+    let message = if contact.decided {
+        format!(
+            "the sweep intersects itself: the faces along {} and along {} come within \
+             {distance:.3e} of each other near {near} (the join tolerance is {gap:.3e}), so \
+             the solid would not be valid; keep the wire's parts farther apart than the \
+             profile reaches, or use a smaller profile",
+            name(a),
+            name(b)
+        )
+    } else {
+        format!(
+            "the sweep may intersect itself: the faces along {} and along {} come within \
+             {distance:.3e} of each other near {near}, and could not be shown to stay \
+             farther apart than the join tolerance {gap:.3e}",
+            name(a),
+            name(b)
+        )
+    };
+    if contact.decided {
+        Error::invalid_input(message)
+    } else {
+        Error::not_converged(message)
+    }
 }
 
 /// A closed wire's closing turn as a map of the profile's edges onto themselves (the
@@ -449,7 +515,7 @@ fn closure_images(transport: &Transport, profile: &Profile) -> Result<Option<Vec
         return Ok(None);
     }
     let turn = transport.closing_turn;
-    let identity = turn.abs() <= 1e-9;
+    let identity = turn.abs() <= CLOSURE_ROUND_OFF;
     let images = if identity {
         Some(
             profile

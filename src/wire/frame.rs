@@ -63,6 +63,12 @@ pub(crate) struct FrameOptions {
     pub tolerance: f64,
 }
 
+/// A closing turn (radians) at most this is rounding: the frame closes as it is, and the
+/// seam's sections differ by at most this angle times the profile's reach (the report's
+/// seam gap). A polygon's discrete RMF comes back with no turn at all for many wires (a
+/// symmetric one, say), computed as a few ulps.
+pub(crate) const CLOSURE_ROUND_OFF: f64 = 1e-9;
+
 /// The frame along one piece.
 #[derive(Clone, Debug)]
 pub(crate) enum PieceFrame {
@@ -279,16 +285,17 @@ pub(crate) fn transport(chain: &Chain, options: &FrameOptions) -> Result<Transpo
         .filter(|(_, &t)| t)
         .map(|(l, _)| l)
         .sum();
-    let rate = if total_twist == 0.0 {
-        0.0
-    } else if turnable > 0.0 {
-        total_twist / turnable
-    } else {
-        return invalid!(
-            "the frame must turn by {total_twist:.6} rad (twist and closure) but every edge is a \
+    let rate =
+        if total_twist == 0.0 || (options.twist == 0.0 && total_twist.abs() <= CLOSURE_ROUND_OFF) {
+            0.0
+        } else if turnable > 0.0 {
+            total_twist / turnable
+        } else {
+            return invalid!(
+            "the frame must turn by {total_twist:.3e} rad (twist and closure) but every edge is a \
              miter leg, whose frame cannot turn; use round corners"
         );
-    };
+        };
     // Pass 2: the frames.
     let mut pieces = Vec::with_capacity(m);
     let mut f2 = f2_start;
@@ -499,6 +506,22 @@ fn fit_parts(
     out: &mut Vec<(f64, f64, Biquadratic)>,
 ) -> Result<()> {
     let (g0, g1) = (angle(a), angle(b));
+    let turns_too_much = (g1 - g0).abs() > FRAC_PI_2;
+    // W = tan of a quarter of the turn: past a turn of 2π its ends change sign and the data
+    // are no longer monotone, so a long turn is halved before any fit.
+    if turns_too_much {
+        if depth == MAX_HALVINGS {
+            return invalid!(
+                "twist: the frame would turn by {:.3e} rad on 2^-{MAX_HALVINGS} of one edge; \
+                 at most {:.3e} rad per edge can be carried",
+                g1 - g0,
+                FRAC_PI_2 * (1u64 << MAX_HALVINGS) as f64
+            );
+        }
+        let m = 0.5 * (a + b);
+        fit_parts(angle, rate, a, m, depth + 1, out)?;
+        return fit_parts(angle, rate, m, b, depth + 1, out);
+    }
     let mid = 0.5 * (g0 + g1);
     let length = b - a;
     let local = |u: f64| rate(a + u * length) * length;
@@ -516,8 +539,7 @@ fn fit_parts(
         .map(|i| i as f64 / ERROR_SAMPLES as f64)
         .map(|u| (2.0 * w.eval(u).atan() + mid - angle(a + u * length)).abs())
         .fold(0.0, f64::max);
-    let turns_too_much = (g1 - g0).abs() > FRAC_PI_2;
-    if (turns_too_much || miss > TWIST_ACCURACY) && depth < MAX_HALVINGS {
+    if miss > TWIST_ACCURACY && depth < MAX_HALVINGS {
         let m = 0.5 * (a + b);
         fit_parts(angle, rate, a, m, depth + 1, out)?;
         return fit_parts(angle, rate, m, b, depth + 1, out);

@@ -15,6 +15,7 @@
 //! (1e-200 … 1e200), and mapped back exactly at the end.
 
 mod brep;
+mod clearance;
 mod corner;
 mod edge;
 mod frame;
@@ -230,6 +231,7 @@ pub fn sweep_wire(
             offset: center,
         },
         margin,
+        options.join_tolerance * size_n,
     )
 }
 
@@ -278,5 +280,7 @@ fn edge_points(edge: &Edge) -> Vec<DVec3> {
     }
 }
 
+#[cfg(test)]
+mod robustness_tests;
 #[cfg(test)]
 pub(crate) mod tests;
