@@ -5,8 +5,9 @@
 //! | module | does |
 //! | --- | --- |
 //! | [`args`] | the command line |
-//! | [`json`] | reading JSON with errors that name the field |
-//! | [`job`] | the input schema, read into typed values |
+//! | [`json`] | reading JSON, bounded, with errors that name the field |
+//! | [`schema`] | the input as serde reads it |
+//! | [`job`] | the input checked and in the constructions' types |
 //! | [`construct`] | the geometry: spines, frames, sweeps, cone splines, developments |
 //! | [`summary`] | the accuracy figures |
 //! | [`output`] | the files, by extension, rendered to memory |
@@ -23,14 +24,14 @@ mod construct;
 mod job;
 mod json;
 mod output;
+mod schema;
 mod summary;
 mod write;
 
 use args::{Command, Input, Run};
 use construct::{run_cone_spline, run_sheet, run_sweep, run_wire, Outcome};
 use job::{Construction, Job};
-use json::Document;
-use std::io::{self, Read, Write};
+use std::io::{self, Write};
 use std::process::ExitCode;
 use summary::Summary;
 
@@ -75,31 +76,24 @@ fn print(text: &str) -> Result<(), (u8, String)> {
         .map_err(|e| (FAILED, format!("cannot write to standard output: {e}")))
 }
 
-fn read_input(input: &Input) -> Result<String, String> {
+/// Reads the job, from standard input or a file.
+fn read_job(input: &Input) -> Result<Job, String> {
     match input {
-        Input::Stdin => {
-            let mut text = String::new();
-            io::stdin()
-                .read_to_string(&mut text)
-                .map_err(|e| format!("cannot read standard input: {e}"))?;
-            Ok(text)
+        Input::Stdin => Job::read(io::stdin().lock(), "(stdin)"),
+        Input::File(path) => {
+            let file = std::fs::File::open(path)
+                .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+            Job::read(file, &path.display().to_string())
         }
-        Input::File(path) => std::fs::read_to_string(path)
-            .map_err(|e| format!("cannot read {}: {e}", path.display())),
     }
+    .map_err(|e| e.to_string())
 }
 
 /// Checks the destinations, reads, builds, measures, writes.
 fn execute(run: &Run) -> Result<(), (u8, String)> {
     let failed = |message: String| (FAILED, message);
     let targets = write::check(run.destinations()).map_err(failed)?;
-    let source = match &run.input {
-        Input::Stdin => "(stdin)".into(),
-        Input::File(path) => path.display().to_string(),
-    };
-    let text = read_input(&run.input).map_err(failed)?;
-    let document = Document::parse(&text, &source).map_err(|e| failed(e.to_string()))?;
-    let job = Job::read(&document.root()).map_err(|e| failed(e.to_string()))?;
+    let job = read_job(&run.input).map_err(failed)?;
     let outcome = build(run, &job).map_err(failed)?;
     let summary =
         Summary::of(&job, &outcome).map_err(|e| failed(format!("measuring the result: {e}")))?;

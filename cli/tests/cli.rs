@@ -889,6 +889,7 @@ fn no_input_makes_the_tool_panic() {
         &["-", "-"],
         &[".", "-o", "a.step"],
         &["/dev/null", "-o", "a.step"],
+        &["/dev/zero", "-o", "a.step"],
         &["sub.step"],
         &[input, "-o", "a.dxf"],
         &[input, "-o", "a.flat.step"],
@@ -924,6 +925,10 @@ fn no_input_makes_the_tool_panic() {
             Stdio::from(std::fs::File::open(&dir).unwrap()),
         ),
         ("empty", Stdio::null()),
+        (
+            "endless",
+            Stdio::from(std::fs::File::open("/dev/zero").unwrap()),
+        ),
         (
             "a binary file",
             Stdio::from(std::fs::File::open(TOOL).unwrap()),
@@ -974,4 +979,71 @@ fn no_input_makes_the_tool_panic() {
         check(&json.chars().take(300).collect::<String>(), &out);
     }
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The input is read through a counter that stops at 64 MiB, and lists stop at their bound:
+/// neither an oversized input nor an overlong list is held in memory before it is refused.
+#[test]
+fn oversized_inputs_and_lists_are_refused_while_reading() {
+    let mut json = String::from("{\"sweep\": ");
+    json.push_str(&" ".repeat(64 << 20));
+    json.push('}');
+    fails_with(
+        "oversized",
+        &json,
+        &["(stdin): the input is larger than 67108864 bytes (64 MiB), the limit of the tool"],
+    );
+    let edge = r#"{"line": {"from": [0, 0, 0], "to": [1, 0, 0]}}"#;
+    let sweep = |spine: &str, profile: &str| {
+        format!(r#"{{"sweep": {{"spine": {spine}, "profile": {profile}}}}}"#)
+    };
+    wire_fails_with(
+        "too_many_edges",
+        &sweep(
+            &format!(r#"{{"wire": [{}]}}"#, vec![edge; 65_537].join(", ")),
+            r#"{"circle": {"radius": 0.1}}"#,
+        ),
+        &[
+            "sweep.spine.wire: has more than 65536 edges: a wire sweep has at most \
+             rmfsurf::MAX_FACES lateral faces, one or more per edge",
+        ],
+    );
+    wire_fails_with(
+        "too_many_holes",
+        &sweep(
+            &format!(r#"{{"wire": [{edge}]}}"#),
+            &format!(
+                r#"{{"circle": {{"radius": 1}}, "holes": [{}]}}"#,
+                vec![r#"{"circle": {"radius": 0.1}}"#; 65_537].join(", ")
+            ),
+        ),
+        &[
+            "sweep.profile.holes: has more than 65536 holes",
+            "rmfsurf::MAX_FACES",
+        ],
+    );
+    fails_with(
+        "too_many_rows",
+        r#"{"cone_spline": {"developable": {"ruled": {"nurbs": {"degree_u": 1, "degree_v": 1,
+            "poles": [[[0,0,0],[1,0,0]], [[0,1,0],[1,1,0]], [[0,2,0],[1,2,0]]]}}},
+            "strip": {"t_min": 0, "t_max": 1}}}"#,
+        &["cone_spline.developable.ruled.nurbs.poles: has more than 2 rows: a developable ruled surface"],
+    );
+    // At the bound the list is read, and the library refuses the sweep by its face count.
+    let chain: Vec<String> = (0..65_536)
+        .map(|i| {
+            format!(
+                r#"{{"line": {{"from": [{i}, 0, 0], "to": [{}, 0, 0]}}}}"#,
+                i + 1
+            )
+        })
+        .collect();
+    wire_fails_with(
+        "edges_at_the_bound",
+        &sweep(
+            &format!(r#"{{"wire": [{}]}}"#, chain.join(", ")),
+            r#"{"circle": {"radius": 0.1}}"#,
+        ),
+        &["lateral faces", "more than 65536"],
+    );
 }
