@@ -1,10 +1,14 @@
-//! What the input JSON asks for, read into typed values. Every value is checked here, and
-//! every error names its field (see `--help` for the schema).
+//! What the input JSON asks for, in the types the constructions take: the input read by
+//! serde into the `schema` types (which check every value and bound every list), then the
+//! checks that need several fields or the library (one choice of a tagged union, matching
+//! counts, valid NURBS), each error naming its field (see `--help` for the schema).
 
-use crate::json::{Field, InputResult};
+use crate::json::{self, InputError, InputResult, Point2, Vec3};
+use crate::schema;
 use rmfsurf::glam::DVec3;
 use rmfsurf::{Element, NurbsCurve, NurbsSurface, Reference, Sheet, SheetOptions};
 use std::f64::consts::FRAC_1_SQRT_2;
+use std::io::Read;
 
 /// How the frames along the spine are made.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -19,7 +23,7 @@ pub enum Method {
     Rrmf,
 }
 
-pub const METHODS: [(&str, Method); 4] = [
+pub static METHODS: [(&str, Method); 4] = [
     ("ph-rmf", Method::PhRmf),
     ("frenet", Method::Frenet),
     ("mobius", Method::Mobius),
@@ -147,325 +151,325 @@ pub struct Job {
     pub mesh: MeshOptions,
 }
 
-/// Largest tessellation steps per patch accepted from the input.
-const MAX_STEPS: usize = 1000;
-
 impl Job {
-    pub fn read(root: &Field) -> InputResult<Self> {
-        root.only(&["sweep", "cone_spline", "sheet", "mesh"])?;
-        let (kind, body) = root.variant_of(&["sweep", "cone_spline", "sheet"], &["mesh"])?;
-        let construction = match kind {
-            "sweep" if is_wire(&body)? => Construction::Wire(read_wire(&body)?),
-            "sweep" => Construction::Sweep(read_sweep(&body)?),
-            "sheet" => Construction::Sheet(read_sheet(&body)?),
-            _ => Construction::ConeSpline(read_cone(&body)?),
-        };
-        Ok(Self {
-            construction,
-            mesh: read_mesh(root)?,
-        })
+    /// Reads the job from the JSON text of `reader`, named `source` in messages.
+    pub fn read(reader: impl Read, source: &str) -> InputResult<Self> {
+        Self::from_input(json::read::<schema::Input>(reader, source)?)
     }
-}
 
-fn read_mesh(root: &Field) -> InputResult<MeshOptions> {
-    let mut options = MeshOptions {
-        u_steps: 8,
-        v_steps: 8,
-        thickness: None,
-    };
-    if let Some(mesh) = root.optional("mesh")? {
-        mesh.only(&["u_steps", "v_steps", "thickness"])?;
-        if let Some(f) = mesh.optional("u_steps")? {
-            options.u_steps = f.count(1, MAX_STEPS)?;
-        }
-        if let Some(f) = mesh.optional("v_steps")? {
-            options.v_steps = f.count(1, MAX_STEPS)?;
-        }
-        options.thickness = mesh
-            .optional("thickness")?
-            .map(|f| f.positive())
-            .transpose()?;
-    }
-    Ok(options)
-}
-
-fn read_sweep(sweep: &Field) -> InputResult<SweepJob> {
-    sweep.only(&["spine", "method", "tolerance", "initial_normal", "profile"])?;
-    let method = match sweep.optional("method")? {
-        None => Method::PhRmf,
-        Some(f) => {
-            let name = f.string()?;
-            match METHODS.iter().find(|(n, _)| *n == name) {
-                Some(&(_, m)) => m,
-                None => {
-                    let names: Vec<&str> = METHODS.iter().map(|(n, _)| *n).collect();
-                    return f.error(format!(
-                        "unknown method \"{name}\"; expected one of {}",
-                        names.join(", ")
-                    ));
-                }
+    fn from_input(input: schema::Input) -> InputResult<Self> {
+        let mesh = mesh_options(input.mesh);
+        let construction = match (input.sweep, input.cone_spline, input.sheet) {
+            (Some(sweep), None, None) if sweep.spine.wire.is_some() => {
+                Construction::Wire(wire_job(sweep)?)
             }
-        }
+            (Some(sweep), None, None) => Construction::Sweep(sweep_job(sweep)?),
+            (None, Some(cone), None) => Construction::ConeSpline(cone_job(cone)?),
+            (None, None, Some(sheet)) => Construction::Sheet(sheet_job(sheet)?),
+            (a, b, c) => {
+                return Err(choice(
+                    "(top level)",
+                    &["sweep", "cone_spline", "sheet"],
+                    &[a.is_some(), b.is_some(), c.is_some()],
+                ))
+            }
+        };
+        Ok(Self { construction, mesh })
+    }
+}
+
+/// The error of a tagged union (`{"circle": ...}`) at `path` with the choices `names`
+/// of which those marked `given` were given: none, or more than one.
+fn choice(path: &str, names: &[&str], given: &[bool]) -> InputError {
+    let how = if given.contains(&true) {
+        "give only one of"
+    } else {
+        "needs one of"
     };
-    let (profile, profile_is_line) = read_profile(&sweep.required("profile")?)?;
+    InputError::at(path, format!("{how} {}", names.join(", ")))
+}
+
+/// The error of a construction from the input at `path`.
+fn at(path: &str) -> impl Fn(rmfsurf::Error) -> InputError + '_ {
+    move |e| InputError::at(path, e.message())
+}
+
+fn mesh_options(mesh: Option<schema::Mesh>) -> MeshOptions {
+    let mesh = mesh.unwrap_or(schema::Mesh {
+        u_steps: None,
+        v_steps: None,
+        thickness: None,
+    });
+    MeshOptions {
+        u_steps: mesh.u_steps.map_or(8, |n| n.0),
+        v_steps: mesh.v_steps.map_or(8, |n| n.0),
+        thickness: mesh.thickness.map(|t| t.0),
+    }
+}
+
+const ONLY_WIRE: &str = "only for a sweep along a wire (\"spine\": {\"wire\": [...]})";
+
+fn sweep_job(sweep: schema::Sweep) -> InputResult<SweepJob> {
+    if let Some(name) = sweep.wire_fields().first() {
+        return Err(InputError::at(format!("sweep.{name}"), ONLY_WIRE));
+    }
+    if sweep.profile.holes.is_some() {
+        return Err(InputError::at("sweep.profile.holes", ONLY_WIRE));
+    }
+    let (profile, profile_is_line) = profile_curve(sweep.profile, "sweep.profile")?;
     Ok(SweepJob {
-        spine: read_spine(&sweep.required("spine")?)?,
-        method,
-        tolerance: read_tolerance(sweep)?,
-        initial_normal: match sweep.optional("initial_normal")? {
-            Some(f) => f.vec3()?,
-            None => DVec3::Z,
-        },
+        spine: curve_spine(sweep.spine)?,
+        method: sweep.method.unwrap_or(Method::PhRmf),
+        tolerance: sweep.tolerance.map_or(DEFAULT_TOLERANCE, |t| t.0),
+        initial_normal: sweep.initial_normal.map_or(DVec3::Z, |n| n.0),
         profile,
         profile_is_line,
     })
 }
 
-/// Whether a sweep's spine is a wire (`{"wire": [...]}`).
-fn is_wire(sweep: &Field) -> InputResult<bool> {
-    match sweep.optional("spine")? {
-        Some(spine) => Ok(spine.optional("wire").ok().flatten().is_some()),
-        None => Ok(false),
+const DEFAULT_TOLERANCE: f64 = 1e-4;
+
+/// A spine that is not a wire: `{"nurbs"}` or `{"points", "tangents"}`.
+fn curve_spine(spine: schema::Spine) -> InputResult<Spine> {
+    let path = "sweep.spine";
+    match (spine.nurbs, spine.points) {
+        (Some(nurbs), None) => {
+            if spine.tangents.is_some() {
+                return Err(InputError::at(
+                    "sweep.spine.tangents",
+                    "goes with points, not with nurbs",
+                ));
+            }
+            Ok(Spine::Nurbs(nurbs_curve(nurbs, "sweep.spine.nurbs")?))
+        }
+        (None, Some(points)) => {
+            let tangents = spine
+                .tangents
+                .ok_or_else(|| InputError::at("sweep.spine.tangents", "is missing"))?;
+            let (points, tangents) = (vectors(points.into_vec()), vectors(tangents.into_vec()));
+            if tangents.len() != points.len() {
+                return Err(InputError::at(
+                    "sweep.spine.tangents",
+                    format!("{} tangents for {} points", tangents.len(), points.len()),
+                ));
+            }
+            Ok(Spine::Hermite { points, tangents })
+        }
+        (nurbs, points) => Err(choice(
+            path,
+            &["nurbs", "points", "wire"],
+            &[nurbs.is_some(), points.is_some()],
+        )),
     }
 }
 
-fn read_wire(sweep: &Field) -> InputResult<WireJob> {
-    sweep.only(&[
-        "spine",
-        "corner",
-        "tolerance",
-        "join_tolerance",
-        "initial_normal",
-        "twist",
-        "closure_symmetry",
-        "profile",
-        "solid",
-    ])?;
-    let spine = sweep.required("spine")?;
-    spine.only(&["wire"])?;
-    let edges = spine
-        .required("wire")?
-        .array()?
-        .iter()
-        .map(read_wire_edge)
-        .collect::<InputResult<Vec<_>>>()?;
-    if edges.is_empty() {
-        return spine.required("wire")?.error("needs at least one edge");
+fn vectors<P: Into<DVec3>>(points: Vec<P>) -> Vec<DVec3> {
+    points.into_iter().map(Into::into).collect()
+}
+
+fn wire_job(sweep: schema::Sweep) -> InputResult<WireJob> {
+    if sweep.method.is_some() {
+        return Err(InputError::at(
+            "sweep.method",
+            "only for a sweep along a curve (spine nurbs or points); a wire's frames are \
+             rotation-minimizing",
+        ));
     }
-    let profile_field = sweep.required("profile")?;
-    let (kind, body) =
-        profile_field.variant_of(&["circle", "line", "polygon", "nurbs"], &["holes"])?;
-    let (profile, _) = profile_curve(kind, &body)?;
-    let holes = match profile_field.optional("holes")? {
-        Some(list) => list
-            .array()?
-            .iter()
-            .map(|hole| {
-                let (kind, body) = hole.variant(&["circle", "polygon", "nurbs"])?;
-                profile_curve(kind, &body).map(|(c, _)| c)
-            })
-            .collect::<InputResult<Vec<_>>>()?,
-        None => Vec::new(),
-    };
+    let spine = sweep.spine;
+    if let Some((name, _)) = [
+        ("nurbs", spine.nurbs.is_some()),
+        ("points", spine.points.is_some()),
+        ("tangents", spine.tangents.is_some()),
+    ]
+    .into_iter()
+    .find(|(_, given)| *given)
+    {
+        return Err(InputError::at(
+            format!("sweep.spine.{name}"),
+            "does not go with wire: give one spine",
+        ));
+    }
+    let edges = spine.wire.map(|w| w.into_vec()).unwrap_or_default();
+    if edges.is_empty() {
+        return Err(InputError::at(
+            "sweep.spine.wire",
+            "needs at least one edge",
+        ));
+    }
+    let edges = edges
+        .into_iter()
+        .enumerate()
+        .map(|(k, e)| wire_edge(e, &format!("sweep.spine.wire[{k}]")))
+        .collect::<InputResult<Vec<_>>>()?;
+    let mut profile = sweep.profile;
+    let holes = profile
+        .holes
+        .take()
+        .map(|h| h.into_vec())
+        .unwrap_or_default();
+    let (profile, _) = profile_curve(profile, "sweep.profile")?;
+    let holes = holes
+        .into_iter()
+        .enumerate()
+        .map(|(k, h)| hole_curve(h, &format!("sweep.profile.holes[{k}]")))
+        .collect::<InputResult<Vec<_>>>()?;
     let defaults = rmfsurf::WireSweep::default();
     Ok(WireJob {
         edges,
-        corner: match sweep.optional("corner")? {
-            Some(f) => read_corner(&f)?,
-            None => defaults.corner,
-        },
-        tolerance: read_tolerance(sweep)?,
+        corner: sweep.corner.map_or(defaults.corner, |c| c.0),
+        tolerance: sweep.tolerance.map_or(DEFAULT_TOLERANCE, |t| t.0),
         join_tolerance: sweep
-            .optional("join_tolerance")?
-            .map_or(Ok(defaults.join_tolerance), |f| f.positive())?,
-        initial_normal: sweep
-            .optional("initial_normal")?
-            .map(|f| f.vec3())
-            .transpose()?,
-        twist: sweep.optional("twist")?.map_or(Ok(0.0), |f| f.number())?,
+            .join_tolerance
+            .map_or(defaults.join_tolerance, |t| t.0),
+        initial_normal: sweep.initial_normal.map(|n| n.0),
+        twist: sweep.twist.map_or(0.0, |t| t.0),
         closure_symmetry: sweep
-            .optional("closure_symmetry")?
-            .map_or(Ok(0), |f| f.count(0, 1 << 16).map(|k| k as u32))?,
+            .closure_symmetry
+            .map_or(0, |k| u32::try_from(k.0).unwrap_or(u32::MAX)),
         profile,
         holes,
-        solid: match sweep.optional("solid")? {
-            Some(f) => f.boolean()?,
-            None => defaults.solid,
-        },
+        solid: sweep.solid.map_or(defaults.solid, |s| s.0),
     })
 }
 
 /// `{"line": {"from", "to"}}`, `{"arc": {"start", "through", "end"}}` or `{"nurbs": {...}}`.
-fn read_wire_edge(edge: &Field) -> InputResult<WireEdge> {
-    let (kind, body) = edge.variant(&["line", "arc", "nurbs"])?;
-    let point = |key: &str| body.required(key)?.vec3();
-    Ok(match kind {
-        "line" => {
-            body.only(&["from", "to"])?;
-            WireEdge::Line {
-                from: point("from")?,
-                to: point("to")?,
-            }
+fn wire_edge(edge: schema::Edge, path: &str) -> InputResult<WireEdge> {
+    Ok(match (edge.line, edge.arc, edge.nurbs) {
+        (Some(line), None, None) => WireEdge::Line {
+            from: line.from.0,
+            to: line.to.0,
+        },
+        (None, Some(arc), None) => WireEdge::Arc {
+            start: arc.start.0,
+            through: arc.through.0,
+            end: arc.end.0,
+        },
+        (None, None, Some(nurbs)) => WireEdge::Nurbs(nurbs_curve(nurbs, &format!("{path}.nurbs"))?),
+        (a, b, c) => {
+            return Err(choice(
+                path,
+                &["line", "arc", "nurbs"],
+                &[a.is_some(), b.is_some(), c.is_some()],
+            ))
         }
-        "arc" => {
-            body.only(&["start", "through", "end"])?;
-            WireEdge::Arc {
-                start: point("start")?,
-                through: point("through")?,
-                end: point("end")?,
-            }
-        }
-        _ => WireEdge::Nurbs(read_nurbs_curve(&body, false)?),
     })
 }
 
-/// `{"round": {"radius": r}}` (or `{"round": {}}`, `"round"`: the default radius) or `"miter"`.
-fn read_corner(corner: &Field) -> InputResult<rmfsurf::Corner> {
-    use rmfsurf::Corner;
-    if let Ok(name) = corner.string() {
-        return match name {
-            "round" => Ok(Corner::Round(None)),
-            "miter" => Ok(Corner::Miter),
-            other => corner.error(format!(
-                "unknown corner \"{other}\"; expected round or miter"
-            )),
-        };
-    }
-    let (_, body) = corner.variant(&["round"])?;
-    body.only(&["radius"])?;
-    Ok(Corner::Round(
-        body.optional("radius")?.map(|f| f.positive()).transpose()?,
-    ))
+/// The NURBS curve of `{"degree", "poles", "weights" (optional), "knots"}` at `path`.
+fn nurbs_curve<P: Into<DVec3>>(nurbs: schema::Nurbs<P>, path: &str) -> InputResult<NurbsCurve> {
+    NurbsCurve::new(
+        nurbs.degree.0,
+        vectors(nurbs.poles.into_vec()),
+        nurbs.weights.map(numbers),
+        numbers(nurbs.knots),
+    )
+    .map_err(at(path))
 }
 
-fn read_tolerance(parent: &Field) -> InputResult<f64> {
-    parent
-        .optional("tolerance")?
-        .map_or(Ok(1e-4), |f| f.positive())
-}
-
-fn read_spine(spine: &Field) -> InputResult<Spine> {
-    let (kind, body) = spine.variant_of(&["nurbs", "points"], &["tangents"])?;
-    if kind == "nurbs" {
-        return Ok(Spine::Nurbs(read_nurbs_curve(&body, false)?));
-    }
-    let points = vectors(&body)?;
-    let tangents_field = spine.required("tangents")?;
-    let tangents = vectors(&tangents_field)?;
-    if tangents.len() != points.len() {
-        return tangents_field.error(format!(
-            "{} tangents for {} points",
-            tangents.len(),
-            points.len()
-        ));
-    }
-    Ok(Spine::Hermite { points, tangents })
-}
-
-fn vectors(field: &Field) -> InputResult<Vec<DVec3>> {
-    field.array()?.iter().map(Field::vec3).collect()
-}
-
-/// `{"degree", "poles", "weights" (optional), "knots"}`; `planar`: poles may be [x, y].
-fn read_nurbs_curve(nurbs: &Field, planar: bool) -> InputResult<NurbsCurve> {
-    nurbs.only(&["degree", "poles", "weights", "knots"])?;
-    let degree = nurbs.required("degree")?.count(1, rmfsurf::MAX_DEGREE)?;
-    let poles = nurbs
-        .required("poles")?
-        .array()?
-        .iter()
-        .map(|f| if planar { f.point_2d() } else { f.vec3() })
-        .collect::<InputResult<Vec<_>>>()?;
-    let weights = nurbs
-        .optional("weights")?
-        .map(|f| f.numbers())
-        .transpose()?;
-    let knots = nurbs.required("knots")?.numbers()?;
-    NurbsCurve::new(degree, poles, weights, knots).or_else(|e| nurbs.error(e.message()))
+fn numbers<L>(list: json::Bounded<json::Number, L>) -> Vec<f64> {
+    list.into_vec().into_iter().map(|x| x.0).collect()
 }
 
 /// `{"degree_u", "degree_v", "poles": rows (one per u index) of [x, y, z], "weights" (rows,
-/// optional), "knots_u", "knots_v"}`.
-fn read_nurbs_surface(nurbs: &Field) -> InputResult<NurbsSurface> {
-    nurbs.only(&[
-        "degree_u", "degree_v", "poles", "weights", "knots_u", "knots_v",
-    ])?;
-    let degree = |key: &str| nurbs.required(key)?.count(1, rmfsurf::MAX_DEGREE);
-    let rows_field = nurbs.required("poles")?;
-    let rows: Vec<Vec<DVec3>> = rows_field
-        .array()?
-        .iter()
-        .map(vectors)
-        .collect::<InputResult<_>>()?;
+/// optional), "knots_u", "knots_v"}` at `path`.
+fn nurbs_surface(nurbs: schema::Surface, path: &str) -> InputResult<NurbsSurface> {
+    let rows: Vec<Vec<DVec3>> = nurbs
+        .poles
+        .into_vec()
+        .into_iter()
+        .map(|row| vectors(row.into_vec()))
+        .collect();
     let columns = rows.first().map_or(0, Vec::len);
     if rows.iter().any(|r| r.len() != columns) {
-        return rows_field.error("every row of poles must have the same length");
+        return Err(InputError::at(
+            format!("{path}.poles"),
+            "every row of poles must have the same length",
+        ));
     }
-    let weights = match nurbs.optional("weights")? {
-        Some(f) => Some(
-            f.array()?
-                .iter()
-                .map(Field::numbers)
-                .collect::<InputResult<Vec<_>>>()?
-                .concat(),
-        ),
-        None => None,
-    };
+    let weights = nurbs
+        .weights
+        .map(|rows| rows.into_vec().into_iter().flat_map(numbers).collect());
     NurbsSurface::new(
-        degree("degree_u")?,
-        degree("degree_v")?,
+        nurbs.degree_u.0,
+        nurbs.degree_v.0,
         rows.len(),
         columns,
         rows.concat(),
         weights,
-        nurbs.required("knots_u")?.numbers()?,
-        nurbs.required("knots_v")?.numbers()?,
+        numbers(nurbs.knots_u),
+        numbers(nurbs.knots_v),
     )
-    .or_else(|e| nurbs.error(e.message()))
+    .map_err(at(path))
 }
 
-/// The profile and whether it is one straight segment.
-fn read_profile(profile: &Field) -> InputResult<(NurbsCurve, bool)> {
-    let (kind, body) = profile.variant(&["circle", "line", "polygon", "nurbs"])?;
-    profile_curve(kind, &body)
+/// The profile curve of `{"circle" | "line" | "polygon" | "nurbs": body}` at `path` and
+/// whether it is one straight segment.
+fn profile_curve(profile: schema::Profile, path: &str) -> InputResult<(NurbsCurve, bool)> {
+    match (profile.circle, profile.line, profile.polygon, profile.nurbs) {
+        (Some(c), None, None, None) => Ok((profile_circle(c, &format!("{path}.circle"))?, false)),
+        (None, Some(line), None, None) => {
+            let path = format!("{path}.line");
+            Ok((
+                polyline(&[line.from.0, line.to.0]).map_err(at(&path))?,
+                true,
+            ))
+        }
+        (None, None, Some(corners), None) => Ok((
+            polygon(corners.into_vec(), &format!("{path}.polygon"))?,
+            false,
+        )),
+        (None, None, None, Some(nurbs)) => {
+            Ok((nurbs_curve(nurbs, &format!("{path}.nurbs"))?, false))
+        }
+        (a, b, c, d) => Err(choice(
+            path,
+            &["circle", "line", "polygon", "nurbs"],
+            &[a.is_some(), b.is_some(), c.is_some(), d.is_some()],
+        )),
+    }
 }
 
-/// The profile curve of a `{"circle" | "line" | "polygon" | "nurbs": body}` and whether it
-/// is one straight segment.
-fn profile_curve(kind: &str, body: &Field) -> InputResult<(NurbsCurve, bool)> {
-    let curve = match kind {
-        "circle" => {
-            body.only(&["radius", "center"])?;
-            let radius = body.required("radius")?.positive()?;
-            let center = body
-                .optional("center")?
-                .map_or(Ok(DVec3::ZERO), |f| f.point_2d())?;
-            circle(center, radius)
-        }
-        "line" => {
-            body.only(&["from", "to"])?;
-            let ends = [
-                body.required("from")?.point_2d()?,
-                body.required("to")?.point_2d()?,
-            ];
-            polyline(&ends)
-        }
-        "polygon" => {
-            let mut corners = body
-                .array()?
-                .iter()
-                .map(Field::point_2d)
-                .collect::<InputResult<Vec<_>>>()?;
-            if corners.len() < 3 {
-                return body.error(format!("needs at least 3 corners, got {}", corners.len()));
-            }
-            corners.push(corners[0]);
-            polyline(&corners)
-        }
-        _ => return Ok((read_nurbs_curve(body, true)?, false)),
-    };
-    let curve = curve.or_else(|e| body.error(e.message()))?;
-    Ok((curve, kind == "line"))
+/// A hole of a wire sweep's profile: `{"circle" | "polygon" | "nurbs": body}` at `path`.
+fn hole_curve(hole: schema::Hole, path: &str) -> InputResult<NurbsCurve> {
+    match (hole.circle, hole.polygon, hole.nurbs) {
+        (Some(c), None, None) => profile_circle(c, &format!("{path}.circle")),
+        (None, Some(corners), None) => polygon(corners.into_vec(), &format!("{path}.polygon")),
+        (None, None, Some(nurbs)) => nurbs_curve(nurbs, &format!("{path}.nurbs")),
+        (a, b, c) => Err(choice(
+            path,
+            &["circle", "polygon", "nurbs"],
+            &[a.is_some(), b.is_some(), c.is_some()],
+        )),
+    }
+}
+
+fn profile_circle(c: schema::Circle, path: &str) -> InputResult<NurbsCurve> {
+    circle(c.center.map_or(DVec3::ZERO, |p| p.0), c.radius.0).map_err(at(path))
+}
+
+/// The closed polygon through `corners` (at least three) at `path`.
+fn polygon<P: Into<DVec3>>(corners: Vec<P>, path: &str) -> InputResult<NurbsCurve> {
+    let mut corners = vectors(corners);
+    if corners.len() < 3 {
+        return Err(InputError::at(
+            path,
+            format!("needs at least 3 corners, got {}", corners.len()),
+        ));
+    }
+    corners.push(corners[0]);
+    polyline(&corners).map_err(at(path))
+}
+
+impl From<Vec3> for DVec3 {
+    fn from(v: Vec3) -> DVec3 {
+        v.0
+    }
+}
+
+impl From<Point2> for DVec3 {
+    fn from(p: Point2) -> DVec3 {
+        p.0
+    }
 }
 
 /// The full circle as a degree-2 NURBS of four quarters (weights 1, 1/√2, 1).
@@ -501,179 +505,146 @@ fn polyline(points: &[DVec3]) -> rmfsurf::Result<NurbsCurve> {
     NurbsCurve::new(1, points.to_vec(), None, knots)
 }
 
-fn read_cone(cone: &Field) -> InputResult<ConeJob> {
-    cone.only(&["developable", "tolerance", "max_pieces", "strip"])?;
-    let developable = cone.required("developable")?;
-    let (kind, body) = developable.variant(&["tangent_surface", "ruled", "elements"])?;
-    let developable = match kind {
-        "tangent_surface" => {
-            body.only(&["curve", "v_min", "v_max"])?;
-            let curve = body.required("curve")?;
-            let (_, nurbs) = curve.variant(&["nurbs"])?;
-            Developable::TangentSurface {
-                curve: read_nurbs_curve(&nurbs, false)?,
-                v_min: body.required("v_min")?.number()?,
-                v_max: body.required("v_max")?.number()?,
-            }
+fn cone_job(cone: schema::Cone) -> InputResult<ConeJob> {
+    let d = cone.developable;
+    let path = "cone_spline.developable";
+    let developable = match (d.tangent_surface, d.ruled, d.elements) {
+        (Some(t), None, None) => Developable::TangentSurface {
+            curve: nurbs_curve(
+                t.curve.nurbs,
+                &format!("{path}.tangent_surface.curve.nurbs"),
+            )?,
+            v_min: t.v_min.0,
+            v_max: t.v_max.0,
+        },
+        (None, Some(r), None) => {
+            Developable::Ruled(nurbs_surface(r.nurbs, &format!("{path}.ruled.nurbs"))?)
         }
-        "ruled" => {
-            let (_, nurbs) = body.variant(&["nurbs"])?;
-            Developable::Ruled(read_nurbs_surface(&nurbs)?)
-        }
-        _ => Developable::Elements(
-            body.array()?
-                .iter()
-                .map(read_element)
+        (None, None, Some(elements)) => Developable::Elements(
+            elements
+                .into_vec()
+                .into_iter()
+                .enumerate()
+                .map(|(k, e)| element(e, &format!("{path}.elements[{k}]")))
                 .collect::<InputResult<_>>()?,
         ),
+        (a, b, c) => {
+            return Err(choice(
+                path,
+                &["tangent_surface", "ruled", "elements"],
+                &[a.is_some(), b.is_some(), c.is_some()],
+            ))
+        }
     };
-    let strip = cone.required("strip")?;
-    strip.only(&["t_min", "t_max"])?;
-    let (t_min, t_max) = (
-        strip.required("t_min")?.number()?,
-        strip.required("t_max")?.number()?,
-    );
+    let (t_min, t_max) = (cone.strip.t_min.0, cone.strip.t_max.0);
     if t_min >= t_max {
-        return strip.error(format!("t_min = {t_min} must be less than t_max = {t_max}"));
+        return Err(InputError::at(
+            "cone_spline.strip",
+            format!("t_min = {t_min} must be less than t_max = {t_max}"),
+        ));
     }
     Ok(ConeJob {
         developable,
-        tolerance: read_tolerance(cone)?,
-        max_pieces: cone
-            .optional("max_pieces")?
-            .map_or(Ok(10_000), |f| f.count(2, 1_000_000))?,
+        tolerance: cone.tolerance.map_or(DEFAULT_TOLERANCE, |t| t.0),
+        max_pieces: cone.max_pieces.map_or(10_000, |n| n.0),
         t_min,
         t_max,
     })
 }
 
-fn read_element(field: &Field) -> InputResult<Element> {
-    field.only(&["point", "ruling", "side"])?;
-    let v = |key: &str| field.required(key)?.vec3();
-    Element::new(v("point")?, v("ruling")?, v("side")?, field.path())
-        .or_else(|e| field.error(e.message()))
+fn element(e: schema::Element, path: &str) -> InputResult<Element> {
+    Element::new(e.point.0, e.ruling.0, e.side.0, path).map_err(at(path))
 }
 
 /// `{"sheet": {"transition": {"bottom": curve, "top": curve} | "ruled": {"nurbs": ...} |
 /// "tangent_surface": {...}, "thickness", "k_factor", "tolerance", "reference",
 /// "flat_tolerance", "max_pieces"}}`.
-fn read_sheet(sheet: &Field) -> InputResult<SheetJob> {
-    let choices = ["transition", "ruled", "tangent_surface"];
-    let others = [
-        "thickness",
-        "k_factor",
-        "tolerance",
-        "reference",
-        "flat_tolerance",
-        "max_pieces",
-    ];
-    let (kind, body) = sheet.variant_of(&choices, &others)?;
-    let input = match kind {
-        "transition" => {
-            body.only(&["bottom", "top"])?;
-            SheetInput::Transition {
-                bottom: read_closed_curve(&body.required("bottom")?)?,
-                top: read_closed_curve(&body.required("top")?)?,
-            }
-        }
-        "ruled" => {
-            let (_, nurbs) = body.variant(&["nurbs"])?;
-            SheetInput::Ruled(read_nurbs_surface(&nurbs)?)
-        }
-        _ => {
-            body.only(&["curve", "v_min", "v_max"])?;
-            let (_, nurbs) = body.required("curve")?.variant(&["nurbs"])?;
-            SheetInput::TangentSurface {
-                curve: read_nurbs_curve(&nurbs, false)?,
-                v_min: body.required("v_min")?.number()?,
-                v_max: body.required("v_max")?.number()?,
-            }
-        }
-    };
-    let thickness = sheet
-        .optional("thickness")?
-        .map_or(Ok(1.0), |f| f.positive())?;
-    let k_factor = match sheet.optional("k_factor")? {
-        None => 0.5,
-        Some(f) => {
-            let k = f.number()?;
-            if !(0.0..=1.0).contains(&k) {
-                return f.error(format!(
-                    "must lie in [0, 1] (the neutral layer lies within the sheet), got {k}"
-                ));
-            }
-            k
-        }
-    };
-    let reference = match sheet.optional("reference")? {
-        None => Reference::Inner,
-        Some(f) => match f.string()? {
-            "inner" => Reference::Inner,
-            "neutral" => Reference::Neutral,
-            "outer" => Reference::Outer,
-            other => {
-                return f.error(format!(
-                    "unknown reference \"{other}\"; expected one of inner, neutral, outer"
-                ))
-            }
+fn sheet_job(sheet: schema::Sheet) -> InputResult<SheetJob> {
+    let input = match (sheet.transition, sheet.ruled, sheet.tangent_surface) {
+        (Some(t), None, None) => SheetInput::Transition {
+            bottom: closed_curve(t.bottom, "sheet.transition.bottom")?,
+            top: closed_curve(t.top, "sheet.transition.top")?,
         },
+        (None, Some(r), None) => SheetInput::Ruled(nurbs_surface(r.nurbs, "sheet.ruled.nurbs")?),
+        (None, None, Some(t)) => SheetInput::TangentSurface {
+            curve: nurbs_curve(t.curve.nurbs, "sheet.tangent_surface.curve.nurbs")?,
+            v_min: t.v_min.0,
+            v_max: t.v_max.0,
+        },
+        (a, b, c) => {
+            return Err(choice(
+                "sheet",
+                &["transition", "ruled", "tangent_surface"],
+                &[a.is_some(), b.is_some(), c.is_some()],
+            ))
+        }
     };
-    let sheet_values =
-        Sheet::new(thickness, k_factor, reference).or_else(|e| sheet.error(e.message()))?;
+    let k_factor = sheet.k_factor.map_or(0.5, |k| k.0);
+    if !(0.0..=1.0).contains(&k_factor) {
+        return Err(InputError::at(
+            "sheet.k_factor",
+            format!("must lie in [0, 1] (the neutral layer lies within the sheet), got {k_factor}"),
+        ));
+    }
+    let sheet_values = Sheet::new(
+        sheet.thickness.map_or(1.0, |t| t.0),
+        k_factor,
+        sheet.reference.map_or(Reference::Inner, |r| r.0),
+    )
+    .map_err(at("sheet"))?;
     Ok(SheetJob {
         input,
         options: SheetOptions {
-            tolerance: read_tolerance(sheet)?,
+            tolerance: sheet.tolerance.map_or(DEFAULT_TOLERANCE, |t| t.0),
             sheet: sheet_values,
-            flat_tolerance: match sheet.optional("flat_tolerance")? {
-                None => 0.0,
-                Some(f) => f.positive()?,
-            },
-            max_pieces: sheet
-                .optional("max_pieces")?
-                .map_or(Ok(100_000), |f| f.count(2, 1_000_000))?,
+            flat_tolerance: sheet.flat_tolerance.map_or(0.0, |t| t.0),
+            max_pieces: sheet.max_pieces.map_or(100_000, |n| n.0),
         },
     })
 }
 
-/// A closed planar curve in space: `{"polygon": [[x, y, z], ...]}`, `{"circle": {"center",
-/// "normal", "radius"}}`, `{"obround": {"center", "normal", "direction", "length",
-/// "radius"}}` or `{"nurbs": {...}}`.
-fn read_closed_curve(field: &Field) -> InputResult<NurbsCurve> {
-    let (kind, body) = field.variant(&["polygon", "circle", "obround", "nurbs"])?;
-    let curve = match kind {
-        "polygon" => {
-            let mut corners = vectors(&body)?;
-            if corners.len() < 3 {
-                return body.error(format!("needs at least 3 corners, got {}", corners.len()));
-            }
-            corners.push(corners[0]);
-            polyline(&corners)
+/// A closed planar curve in space at `path`: `{"polygon": [[x, y, z], ...]}`,
+/// `{"circle": {"center", "normal", "radius"}}`, `{"obround": {"center", "normal",
+/// "direction", "length", "radius"}}` or `{"nurbs": {...}}`.
+fn closed_curve(curve: schema::ClosedCurve, path: &str) -> InputResult<NurbsCurve> {
+    match (curve.polygon, curve.circle, curve.obround, curve.nurbs) {
+        (Some(corners), None, None, None) => {
+            polygon(corners.into_vec(), &format!("{path}.polygon"))
         }
-        "circle" => {
-            body.only(&["center", "normal", "radius"])?;
-            let (center, normal) = (body.required("center")?.vec3()?, plane_normal(&body)?);
-            let radius = body.required("radius")?.positive()?;
+        (None, Some(c), None, None) => {
+            let path = format!("{path}.circle");
+            let normal = plane_normal(c.normal.0, &path)?;
             let x = orthonormal_to(normal);
-            space_circle(center, x, normal.cross(x), radius)
+            space_circle(c.center.0, x, normal.cross(x), c.radius.0).map_err(at(&path))
         }
-        "obround" => {
-            body.only(&["center", "normal", "direction", "length", "radius"])?;
-            let (center, normal) = (body.required("center")?.vec3()?, plane_normal(&body)?);
-            let direction_field = body.required("direction")?;
-            let d = direction_field.vec3()?;
+        (None, None, Some(o), None) => {
+            let path = format!("{path}.obround");
+            let normal = plane_normal(o.normal.0, &path)?;
+            let d = o.direction.0;
             let x = d - d.dot(normal) * normal;
             if x.length().is_nan() || x.length() <= 1e-12 * d.length() {
-                return direction_field.error("must not be parallel to the normal");
+                return Err(InputError::at(
+                    format!("{path}.direction"),
+                    "must not be parallel to the normal",
+                ));
             }
             let x = x.normalize();
-            let length = body.required("length")?.positive()?;
-            let radius = body.required("radius")?.positive()?;
-            obround(center, x, normal.cross(x), length, radius)
+            obround(o.center.0, x, normal.cross(x), o.length.0, o.radius.0).map_err(at(&path))
         }
-        _ => return read_nurbs_curve(&body, false),
-    };
-    curve.or_else(|e| body.error(e.message()))
+        (None, None, None, Some(nurbs)) => nurbs_curve(nurbs, &format!("{path}.nurbs")),
+        (a, b, c, d) => Err(choice(
+            path,
+            &["polygon", "circle", "obround", "nurbs"],
+            &[a.is_some(), b.is_some(), c.is_some(), d.is_some()],
+        )),
+    }
+}
+
+fn plane_normal(n: DVec3, path: &str) -> InputResult<DVec3> {
+    if n.length().is_nan() || n.length() <= 0.0 {
+        return Err(InputError::at(format!("{path}.normal"), "must not be zero"));
+    }
+    Ok(n.normalize())
 }
 
 /// A unit vector normal to the unit vector `n` (crossed with the axis least along it).
@@ -687,15 +658,6 @@ fn orthonormal_to(n: DVec3) -> DVec3 {
         DVec3::Z
     };
     n.cross(axis).normalize()
-}
-
-fn plane_normal(body: &Field) -> InputResult<DVec3> {
-    let field = body.required("normal")?;
-    let n = field.vec3()?;
-    if n.length().is_nan() || n.length() <= 0.0 {
-        return field.error("must not be zero");
-    }
-    Ok(n.normalize())
 }
 
 /// The circle about `center` in the plane spanned by the orthonormal `x`, `y`: four

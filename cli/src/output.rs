@@ -1,6 +1,5 @@
-//! The files the tool writes, chosen by extension, and writing them all-or-nothing: every
-//! file is first written beside its destination under a temporary name, and renamed only
-//! when all of them were written, so a failure leaves no partial output behind.
+//! The files the tool writes, chosen by extension, each rendered to memory (the module
+//! `write` puts them on disk).
 
 use crate::construct::{Outcome, SheetOutcome};
 use crate::job::MeshOptions;
@@ -10,8 +9,7 @@ use rmfsurf::{
     closed_mesh, grid_normals, grid_parameters, tessellate, Layer, NurbsCurve, NurbsSurface,
     PiecewiseSurface, Side,
 };
-use std::fs;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 /// What a file holds, by its extension.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -34,8 +32,7 @@ impl Format {
         let extension = path.extension()?.to_str()?.to_ascii_lowercase();
         let flat = path
             .file_stem()
-            .and_then(|s| s.to_str())
-            .is_some_and(|s| s.to_ascii_lowercase().ends_with(".flat"));
+            .is_some_and(|s| s.to_string_lossy().to_ascii_lowercase().ends_with(".flat"));
         Some(match extension.as_str() {
             "step" | "stp" if flat => Format::StepFlat,
             "step" | "stp" => Format::Step,
@@ -55,12 +52,14 @@ impl Format {
     }
 }
 
-/// The product name written into files: the output's file stem.
+/// The product name written into files: the output's file stem, with control characters
+/// (which would end an OBJ or OpenSCAD comment line) replaced.
 fn title(path: &Path) -> String {
     path.file_stem()
-        .and_then(|s| s.to_str())
-        .unwrap_or("rmfsurf")
-        .to_string()
+        .map_or("rmfsurf".into(), |s| s.to_string_lossy())
+        .chars()
+        .map(|c| if c.is_control() { '_' } else { c })
+        .collect()
 }
 
 fn surface_of(outcome: &Outcome) -> &PiecewiseSurface {
@@ -205,39 +204,4 @@ pub fn render_curves(path: &Path, outcome: &Outcome) -> rmfsurf::Result<String> 
             .collect::<rmfsurf::Result<Vec<_>>>()?,
     };
     step::curves_to_step(&curves.iter().collect::<Vec<_>>(), &title(path))
-}
-
-/// `dir/.name.rmfsurf-<pid>.tmp` beside `path`.
-fn temporary(path: &Path) -> PathBuf {
-    let name = path
-        .file_name()
-        .and_then(|n| n.to_str())
-        .unwrap_or("output");
-    path.with_file_name(format!(".{name}.rmfsurf-{}.tmp", std::process::id()))
-}
-
-/// Writes every file or none (see the module notes); the error names the file.
-pub fn write_all(files: &[(PathBuf, String)]) -> Result<(), String> {
-    let mut written: Vec<(PathBuf, &Path)> = Vec::with_capacity(files.len());
-    let clean = |written: &[(PathBuf, &Path)]| {
-        for (temp, _) in written {
-            let _ = fs::remove_file(temp);
-        }
-    };
-    for (path, text) in files {
-        let temp = temporary(path);
-        if let Err(e) = fs::write(&temp, text) {
-            let _ = fs::remove_file(&temp);
-            clean(&written);
-            return Err(format!("cannot write {}: {e}", path.display()));
-        }
-        written.push((temp, path));
-    }
-    for (k, (temp, path)) in written.iter().enumerate() {
-        if let Err(e) = fs::rename(temp, path) {
-            clean(&written[k..]);
-            return Err(format!("cannot write {}: {e}", path.display()));
-        }
-    }
-    Ok(())
 }

@@ -599,6 +599,388 @@ fn sheet_metal_part_between_the_rails_of_a_ruled_developable() {
     );
 }
 
+/// Runs the tool with arguments that need not be UTF-8, `stdin` as its input and `stdout`
+/// as its standard output (standard error is captured).
+fn tool_os(
+    dir: &Path,
+    args: &[std::ffi::OsString],
+    stdin: Stdio,
+    stdout: Stdio,
+    stderr: Stdio,
+) -> Output {
+    Command::new(TOOL)
+        .args(args)
+        .current_dir(dir)
+        .stdin(stdin)
+        .stdout(stdout)
+        .stderr(stderr)
+        .output()
+        .expect("the tool runs")
+}
+
+fn os(args: &[&str]) -> Vec<std::ffi::OsString> {
+    args.iter().map(Into::into).collect()
+}
+
+/// GOOD_SWEEP as a file in `dir`, for runs whose standard input is not a pipe.
+fn good_sweep_in(dir: &Path) -> PathBuf {
+    let path = dir.join("sweep.input");
+    std::fs::write(&path, GOOD_SWEEP).unwrap();
+    path
+}
+
+fn dev_full() -> Stdio {
+    Stdio::from(
+        std::fs::OpenOptions::new()
+            .write(true)
+            .open("/dev/full")
+            .unwrap(),
+    )
+}
+
+#[test]
+fn a_directory_among_the_outputs_writes_nothing() {
+    let dir = scratch("output_directory");
+    std::fs::create_dir(dir.join("dir.step")).unwrap();
+    for (args, message) in [
+        (
+            vec!["-", "-o", "good.step", "-o", "dir.step", "-o", "good.json"],
+            "cannot write dir.step: it is a directory",
+        ),
+        (
+            vec!["-", "-o", "good.step", "--curves", "dir.step"],
+            "cannot write dir.step: it is a directory",
+        ),
+        (
+            vec!["-", "-o", "good.step", "-o", "new.step/"],
+            "cannot write new.step/: the name is a directory's",
+        ),
+        (
+            vec!["-", "-o", "good.step", "-o", "good.json/x.step"],
+            "cannot write good.json/x.step: No such file or directory",
+        ),
+    ] {
+        let out = tool(&dir, &args, Some(GOOD_SWEEP));
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{args:?}: {stderr}");
+        assert!(stderr.contains(message), "{args:?}: {stderr}");
+        assert_eq!(files_in(&dir), ["dir.step"], "{args:?}");
+    }
+    assert!(files_in(&dir.join("dir.step")).is_empty());
+}
+
+#[test]
+fn duplicate_outputs_are_refused_before_anything_is_written() {
+    let dir = scratch("output_duplicates");
+    std::fs::create_dir(dir.join("sub")).unwrap();
+    std::fs::write(dir.join("old.step"), "old").unwrap();
+    for args in [
+        vec!["-", "-o", "same.step", "-o", "same.step"],
+        vec!["-", "-o", "a.step", "-o", "b.json", "-o", "./a.step"],
+        vec!["-", "-o", "c.step", "--curves", "c.step"],
+        vec!["-", "-o", "sub/../d.step", "-o", "d.step"],
+        vec!["-", "-o", "old.step", "-o", "sub/../old.step"],
+    ] {
+        let out = tool(&dir, &args, Some(GOOD_SWEEP));
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{args:?}: {stderr}");
+        assert!(
+            stderr.contains("are the same file: give each output once"),
+            "{args:?}: {stderr}"
+        );
+        assert_eq!(files_in(&dir), ["old.step", "sub"], "{args:?}");
+    }
+    assert_eq!(
+        std::fs::read_to_string(dir.join("old.step")).unwrap(),
+        "old"
+    );
+}
+
+#[test]
+fn file_names_need_not_be_utf8() {
+    use std::os::unix::ffi::OsStringExt;
+    let dir = scratch("non_utf8");
+    let input = good_sweep_in(&dir);
+    let name = std::ffi::OsString::from_vec(b"caf\xe9.step".to_vec());
+    let curves = std::ffi::OsString::from_vec(b"\xff\xfe.stp".to_vec());
+    let args = vec![
+        input.clone().into_os_string(),
+        "-o".into(),
+        name.clone(),
+        "--curves".into(),
+        curves.clone(),
+    ];
+    let out = tool_os(&dir, &args, Stdio::null(), Stdio::piped(), Stdio::piped());
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    let step = std::fs::read_to_string(dir.join(&name)).unwrap();
+    assert!(step.contains("B_SPLINE_SURFACE"));
+    assert!(dir.join(&curves).exists());
+    let missing = std::ffi::OsString::from_vec(b"no\xff.json".to_vec());
+    let out = tool_os(
+        &dir,
+        &[missing, "-o".into(), "x.step".into()],
+        Stdio::null(),
+        Stdio::piped(),
+        Stdio::piped(),
+    );
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("cannot read no\u{fffd}.json"));
+    let out = tool_os(
+        &dir,
+        &[
+            input.into_os_string(),
+            "-o".into(),
+            std::ffi::OsString::from_vec(b"x.\xff".to_vec()),
+        ],
+        Stdio::null(),
+        Stdio::piped(),
+        Stdio::piped(),
+    );
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("unknown format"));
+}
+
+/// A full disk or a closed pipe on standard output is reported, and the files of the run
+/// are taken back (an existing one restored): the summary is one of the outputs.
+#[test]
+fn a_full_or_closed_standard_output_is_an_error() {
+    let dir = scratch("stdout_full");
+    let input = good_sweep_in(&dir);
+    std::fs::write(dir.join("old.step"), "old").unwrap();
+    let args = os(&[input.to_str().unwrap(), "-o", "new.step", "-o", "old.step"]);
+    let out = tool_os(&dir, &args, Stdio::null(), dev_full(), Stdio::piped());
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains("cannot write to standard output: No space left on device")
+            && stderr.contains("no file was written"),
+        "{stderr}"
+    );
+    assert_eq!(files_in(&dir), ["old.step", "sweep.input"]);
+    assert_eq!(
+        std::fs::read_to_string(dir.join("old.step")).unwrap(),
+        "old"
+    );
+    // A pipe whose reader has gone: `true` exits without reading.
+    let mut reader = Command::new("true").stdin(Stdio::piped()).spawn().unwrap();
+    let closed = Stdio::from(reader.stdin.take().unwrap());
+    reader.wait().unwrap();
+    let out = tool_os(&dir, &args, Stdio::null(), closed, Stdio::piped());
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("Broken pipe"), "{stderr}");
+    assert_eq!(files_in(&dir), ["old.step", "sweep.input"]);
+    // With -q nothing goes to standard output.
+    let mut quiet = args.clone();
+    quiet.push("-q".into());
+    let out = tool_os(&dir, &quiet, Stdio::null(), dev_full(), Stdio::piped());
+    assert_eq!(out.status.code(), Some(0));
+    assert_eq!(files_in(&dir), ["new.step", "old.step", "sweep.input"]);
+    // --help, --version; and a full standard error with an error to report.
+    for args in [os(&["--help"]), os(&["-V"])] {
+        let out = tool_os(&dir, &args, Stdio::null(), dev_full(), Stdio::piped());
+        assert_eq!(out.status.code(), Some(1), "{args:?}");
+        assert!(String::from_utf8_lossy(&out.stderr).contains("cannot write to standard output"));
+    }
+    let out = tool_os(
+        &dir,
+        &os(&["missing.json"]),
+        Stdio::null(),
+        Stdio::piped(),
+        dev_full(),
+    );
+    assert_eq!(out.status.code(), Some(1));
+}
+
+/// Every input example with one value or key changed per variant: each leaf in turn
+/// replaced by a value of another kind or an extreme one, and objects given an unknown key
+/// or missing one.
+fn mutations(json: &str) -> Vec<String> {
+    use serde_json::{json, Value};
+    const LEAVES: [&str; 12] = [
+        "null",
+        "\"x\"",
+        "-1",
+        "0",
+        "1e300",
+        "-1e-320",
+        "18446744073709551616",
+        "true",
+        "[]",
+        "{}",
+        "[1, 2, 3, 4]",
+        "[[[[[[[[1]]]]]]]]",
+    ];
+    fn walk(value: &mut Value, visit: &mut dyn FnMut(&mut Value)) {
+        visit(value);
+        match value {
+            Value::Array(items) => items.iter_mut().for_each(|v| walk(v, visit)),
+            Value::Object(map) => map.values_mut().for_each(|v| walk(v, visit)),
+            _ => {}
+        }
+    }
+    let root: Value = serde_json::from_str(json).unwrap();
+    let mut count = 0;
+    walk(&mut root.clone(), &mut |_| count += 1);
+    let mut variants = Vec::new();
+    for target in 0..count {
+        let mut doc = root.clone();
+        let mut k = 0;
+        walk(&mut doc, &mut |v| {
+            if k == target {
+                *v = match v {
+                    Value::Object(map) if target % 2 == 0 => {
+                        map.insert("unknown".into(), json!(1));
+                        v.clone()
+                    }
+                    Value::Object(map) => {
+                        let first = map.keys().next().cloned();
+                        if let Some(key) = first {
+                            map.remove(&key);
+                        }
+                        v.clone()
+                    }
+                    _ => serde_json::from_str(LEAVES[target % LEAVES.len()]).unwrap(),
+                };
+            }
+            k += 1;
+        });
+        variants.push(doc.to_string());
+    }
+    variants
+}
+
+/// Bad command lines, inputs and outputs of every kind: the tool reports them (exit status
+/// 1 or 2) or succeeds, and never panics (exit status 101, or 3 for a caught panic).
+#[test]
+fn no_input_makes_the_tool_panic() {
+    use std::os::unix::ffi::OsStringExt;
+    let dir = scratch("no_panic");
+    std::fs::create_dir(dir.join("sub.step")).unwrap();
+    let input = good_sweep_in(&dir);
+    let input = input.to_str().unwrap();
+    let long = format!("{}.step", "n".repeat(300));
+    let bytes = |b: &[u8]| std::ffi::OsString::from_vec(b.to_vec());
+    let mut command_lines: Vec<Vec<std::ffi::OsString>> = [
+        &[][..],
+        &["-"],
+        &["--"],
+        &["-o"],
+        &["--curves"],
+        &["-", "-o", ""],
+        &["-", "-o", "/"],
+        &["-", "-o", "."],
+        &["-", "-o", ".."],
+        &["-", "-o", ".step"],
+        &["-", "-o", "a.step/"],
+        &["-", "-o", "a.step/."],
+        &["-", "-o", "sub.step"],
+        &["-", "-o", "sub.step/a.step/b.step"],
+        &["-", "-o", "/dev/null"],
+        &["-", "-o", "/proc/x.step"],
+        &["-", "-o", &long],
+        &["-", "-o", "a.step", "-o", "a.step"],
+        &["-", "--curves", "a.step", "--curves", "b.step"],
+        &["-", "--curves", "a.obj"],
+        &["-", "-q", "-q"],
+        &["-h", "junk"],
+        &["a.json", "b.json"],
+        &["-", "-"],
+        &[".", "-o", "a.step"],
+        &["/dev/null", "-o", "a.step"],
+        &["/dev/zero", "-o", "a.step"],
+        &["sub.step"],
+        &[input, "-o", "a.dxf"],
+        &[input, "-o", "a.flat.step"],
+        &[
+            input, "-o", "a.step", "-o", "a.vtp", "-o", "a.obj", "-o", "a.scad", "-o", "a.json",
+        ],
+    ]
+    .iter()
+    .map(|args| os(args))
+    .collect();
+    command_lines.push(vec![bytes(b"\xff")]);
+    command_lines.push(vec![bytes(b"-\xff")]);
+    command_lines.push(vec![input.into(), "-o".into(), bytes(b"\xff.step")]);
+    command_lines.push(vec![input.into(), "-o".into(), bytes(b"\xff/a.step")]);
+    let check = |what: &dyn std::fmt::Debug, out: &Output| {
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            matches!(out.status.code(), Some(0..=2)) && !stderr.contains("panicked"),
+            "{what:?}: {:?} {stderr}",
+            out.status
+        );
+    };
+    for args in &command_lines {
+        let out = tool_os(&dir, args, Stdio::null(), Stdio::piped(), Stdio::piped());
+        check(args, &out);
+        let out = tool_os(&dir, args, Stdio::null(), dev_full(), dev_full());
+        check(args, &out);
+    }
+    // Standard input that is a directory, empty, or not JSON.
+    for (what, stdin) in [
+        (
+            "a directory",
+            Stdio::from(std::fs::File::open(&dir).unwrap()),
+        ),
+        ("empty", Stdio::null()),
+        (
+            "endless",
+            Stdio::from(std::fs::File::open("/dev/zero").unwrap()),
+        ),
+        (
+            "a binary file",
+            Stdio::from(std::fs::File::open(TOOL).unwrap()),
+        ),
+    ] {
+        let args = os(&["-", "-o", "a.step"]);
+        let out = tool_os(&dir, &args, stdin, Stdio::piped(), Stdio::piped());
+        check(&what, &out);
+        assert_eq!(out.status.code(), Some(1), "{what}");
+    }
+    // Bad JSON of every kind.
+    let mut documents: Vec<String> = [
+        "",
+        " ",
+        "null",
+        "[]",
+        "{}",
+        "\u{feff}{}",
+        "{\"sweep\": null}",
+        "{\"sweep\": {}}",
+        "{\"sweep\": 1e999}",
+        "\"\\ud800\"",
+        "{\"a\": 1, \"a\": 2}",
+        "{\"sweep\": {\"spine\": {\"wire\": []}}}",
+    ]
+    .iter()
+    .map(|s| s.to_string())
+    .collect();
+    documents.push(format!("{}1{}", "[".repeat(100_000), "]".repeat(100_000)));
+    documents.push(format!(
+        "{}{}",
+        "{\"sweep\": ".repeat(10_000),
+        "}".repeat(10_000)
+    ));
+    for name in [
+        "pipe.json",
+        "cone_spline.json",
+        "hopper.json",
+        "ruled_part.json",
+    ] {
+        documents.extend(mutations(
+            &std::fs::read_to_string(examples().join(name)).unwrap(),
+        ));
+    }
+    documents.extend(mutations(GOOD_SWEEP));
+    for json in &documents {
+        let out = tool(&dir, &["-", "-o", "m.step", "-o", "m.json"], Some(json));
+        check(&json.chars().take(300).collect::<String>(), &out);
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// The input is read through a counter that stops at 64 MiB, and lists stop at their bound:
 /// neither an oversized input nor an overlong list is held in memory before it is refused.
 #[test]
@@ -648,10 +1030,18 @@ fn oversized_inputs_and_lists_are_refused_while_reading() {
         &["cone_spline.developable.ruled.nurbs.poles: has more than 2 rows: a developable ruled surface"],
     );
     // At the bound the list is read, and the library refuses the sweep by its face count.
+    let chain: Vec<String> = (0..65_536)
+        .map(|i| {
+            format!(
+                r#"{{"line": {{"from": [{i}, 0, 0], "to": [{}, 0, 0]}}}}"#,
+                i + 1
+            )
+        })
+        .collect();
     wire_fails_with(
         "edges_at_the_bound",
         &sweep(
-            &format!(r#"{{"wire": [{}]}}"#, vec![edge; 65_536].join(", ")),
+            &format!(r#"{{"wire": [{}]}}"#, chain.join(", ")),
             r#"{"circle": {"radius": 0.1}}"#,
         ),
         &["lateral faces", "more than 65536"],
