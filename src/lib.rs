@@ -169,7 +169,7 @@ pub mod validate {
 /// Overflow-free arithmetic the C layer shares with the geometry: points of a parameter
 /// interval of any width, lengths of vectors of any size.
 pub mod numeric {
-    pub use crate::math::{lerp, robust_length};
+    pub use crate::math::{lerp, robust_length, robust_normalize};
 }
 
 /// What most programs need: `use rmfsurf::prelude::*;`.

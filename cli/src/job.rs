@@ -620,9 +620,9 @@ fn closed_curve(curve: schema::ClosedCurve, path: &str) -> InputResult<NurbsCurv
         (None, None, Some(o), None) => {
             let path = format!("{path}.obround");
             let normal = plane_normal(o.normal.0, &path)?;
-            let d = o.direction.0;
+            let d = rmfsurf::numeric::robust_normalize(o.direction.0).unwrap_or(normal);
             let x = d - d.dot(normal) * normal;
-            if x.length().is_nan() || x.length() <= 1e-12 * d.length() {
+            if x.length().is_nan() || x.length() <= 1e-12 {
                 return Err(InputError::at(
                     format!("{path}.direction"),
                     "must not be parallel to the normal",
@@ -641,10 +641,9 @@ fn closed_curve(curve: schema::ClosedCurve, path: &str) -> InputResult<NurbsCurv
 }
 
 fn plane_normal(n: DVec3, path: &str) -> InputResult<DVec3> {
-    if n.length().is_nan() || n.length() <= 0.0 {
-        return Err(InputError::at(format!("{path}.normal"), "must not be zero"));
-    }
-    Ok(n.normalize())
+    // Any length: a normal is a direction.
+    rmfsurf::numeric::robust_normalize(n)
+        .ok_or_else(|| InputError::at(format!("{path}.normal"), "must not be zero"))
 }
 
 /// A unit vector normal to the unit vector `n` (crossed with the axis least along it).
