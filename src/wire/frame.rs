@@ -27,7 +27,7 @@
 //! pieces the margin of [`crate::ph_cubic::analysis`] — and each miter leg must be longer
 //! than the profile's cuts at its ends.
 
-use super::edge::{Arc, Chain, Geometry, Joint, JointKind, Piece};
+use super::edge::{Arc, Chain, Geometry, Joint, JointKind, Piece, Units};
 use super::profile::{Profile, SupportTable};
 use crate::bezier::{PiecewiseCurve, RationalBezierCurve};
 use crate::error::{invalid, Result, ResultExt};
@@ -61,6 +61,8 @@ pub(crate) struct FrameOptions {
     pub closure_symmetry: u32,
     /// PH approximation of curves.
     pub tolerance: f64,
+    /// How normalized coordinates map to the caller's.
+    pub units: Units,
 }
 
 /// A closing turn (radians) at most this is rounding: the frame closes as it is, and the
@@ -108,8 +110,10 @@ pub(crate) struct Transport {
     pub closing_turn: f64,
 }
 
-/// The spine curves and PH approximation distances of the pieces.
-fn spines(chain: &Chain, tolerance: f64) -> Result<Vec<(PiecewiseCurve, f64)>> {
+/// The spine curves and PH approximation distances of the pieces. Curves are approximated
+/// in the caller's coordinates, so that what the approximation reports (a tolerance below
+/// the rounding, say) is in the caller's units; the splines are then normalized.
+fn spines(chain: &Chain, tolerance: f64, units: Units) -> Result<Vec<(PiecewiseCurve, f64)>> {
     chain
         .pieces
         .iter()
@@ -121,9 +125,14 @@ fn spines(chain: &Chain, tolerance: f64) -> Result<Vec<(PiecewiseCurve, f64)>> {
                     if is_ph_spline(c) {
                         (c.clone(), 0.0)
                     } else {
-                        let fit = ph_spline_approximate(c, c.breaks(), tolerance)
-                            .with_context(|| format!("edge {}", piece.edge))?;
-                        (fit.spline, fit.max_distance)
+                        let caller = c.similar(units.scale, units.offset);
+                        let fit =
+                            ph_spline_approximate(&caller, c.breaks(), units.length(tolerance))
+                                .with_context(|| format!("edge {}", piece.edge))?;
+                        let spline = fit
+                            .spline
+                            .similar(1.0 / units.scale, -units.offset / units.scale);
+                        (spline, fit.max_distance / units.scale)
                     }
                 }
             })
@@ -241,7 +250,7 @@ fn miters(chain: &Chain) -> Vec<[Option<(DVec3, DVec3)>; 2]> {
 
 /// The frame along the chain (module notes).
 pub(crate) fn transport(chain: &Chain, options: &FrameOptions) -> Result<Transport> {
-    let spines = spines(chain, options.tolerance)?;
+    let spines = spines(chain, options.tolerance, options.units)?;
     let m = chain.pieces.len();
     let first = &chain.pieces[0].geometry;
     let t0 = first.start_tangent();

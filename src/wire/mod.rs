@@ -219,6 +219,7 @@ pub fn sweep_wire(
             twist: options.twist,
             closure_symmetry: options.closure_symmetry.max(1),
             tolerance: options.tolerance / scale,
+            units,
         },
     )?;
     let margin = frame::singularity_margin(&transport, &profile, scale)?;

@@ -457,3 +457,40 @@ proptest! {
         }
     }
 }
+
+/// A tolerance below the rounding of a curve edge's coordinates is refused in the caller's
+/// own numbers: the tolerance given and the coordinates as given (up to 25 in the pipe), at
+/// any scale.
+#[test]
+fn messages_quote_the_callers_tolerance_and_coordinates() {
+    for s in [1e-3, 1.0, 1e5] {
+        let edges: Vec<Edge> = example_pipe()
+            .iter()
+            .map(|e| match e {
+                Edge::Line { from, to } => line(*from * s, *to * s),
+                Edge::Arc {
+                    start,
+                    through,
+                    end,
+                } => Edge::Arc {
+                    start: *start * s,
+                    through: *through * s,
+                    end: *end * s,
+                },
+                Edge::Curve(c) => Edge::Curve(c.similar(s, DVec3::ZERO)),
+            })
+            .collect();
+        let options = WireSweep {
+            tolerance: 1e-300,
+            corner: Corner::Round(Some(2.0 * s)),
+            ..WireSweep::default()
+        };
+        let e = sweep_wire(&edges, &circle(s), &[], &options).unwrap_err();
+        let m = e.message();
+        let up_to = format!("up to {:.3e}", 25.0 * s);
+        assert!(
+            m.contains("edge 3") && m.contains("tolerance = 1.000e-300") && m.contains(&up_to),
+            "scale {s:e}: {m}"
+        );
+    }
+}
