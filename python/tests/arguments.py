@@ -1,6 +1,7 @@
-"""The checks of bad arguments of test_arguments.py: the values of each class, the check that
-an exception names the argument, and the list of the public API's arguments by class, from
-the annotations, so that a function without cases fails its coverage test.
+"""The checks of bad arguments shared by test_arguments.py (the package and rmfsurf.ocp) and
+freecad_arguments.py (rmfsurf.freecad, in FreeCAD's Python): the values of each class, the
+check that an exception names the argument, and the list of the public API's arguments by
+class, from the annotations, so that a function without cases fails its coverage test.
 
 A case is keyed "function(argument)", e.g. "wire_sweep(closure_symmetry)" or
 "Curve.from_nurbs(degree)"; the argument's name is what the message must name."""

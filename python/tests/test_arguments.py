@@ -1,14 +1,18 @@
-"""Bad arguments of every public function of the package (issue 25): paths, integers for C,
-numbers, sequences of objects, pairs, boxes and arrays. Each class is checked on every
-function that takes it, with the exception docs/python.md promises and a message naming
-the argument; a path is never cut at a NUL and nothing is written for a refused one.
-test_every_argument_of_the_api_has_its_cases lists the API's arguments by their
-annotations, so that a new function without cases fails. Run by capi/tests/python.rs."""
+"""Bad arguments of every public function of the package and of rmfsurf.ocp (issue 25):
+paths, integers for C, numbers, sequences of objects, pairs, boxes and arrays. Each class is
+checked on every function that takes it, with the exception docs/python.md promises and a
+message naming the argument; a path is never cut at a NUL and nothing is written for a
+refused one. test_every_argument_of_the_api_has_its_cases lists the API's arguments by
+their annotations, so that a new function without cases fails. rmfsurf.freecad runs the
+same checks in FreeCAD's Python (freecad_arguments.py, test_the_freecad_adapter_...).
+Run by capi/tests/python.rs."""
 
 import functools
 import math
 import os
 import pathlib
+import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -93,6 +97,26 @@ class Inputs:
     def solution(self):
         return rmfsurf.rrmf_quintic_best(*self.hermite)
 
+    @functools.cached_property
+    def ocp(self):
+        return pytest.importorskip("rmfsurf.ocp")
+
+    @functools.cached_property
+    def bd(self):
+        return pytest.importorskip("build123d")
+
+    @functools.cached_property
+    def route(self):
+        return self.bd.Polyline((0, 0, 0), (20, 0, 0), (20, 20, 0))
+
+    @functools.cached_property
+    def ring(self):
+        bd = self.bd
+        return bd.Plane(origin=(0, 0, 0), z_dir=(1, 0, 0)) * bd.Circle(1.0)
+
+    @functools.cached_property
+    def solid(self):
+        return self.ocp.shape(self.shape)
 
 
 IN = Inputs()
@@ -222,6 +246,13 @@ for _function, _call in [
 NUMBERS += [
     ("tangent_part(v_min)", lambda v: rmfsurf.tangent_part(twisted_cubic(), v, 0.9)),
     ("tangent_part(v_max)", lambda v: rmfsurf.tangent_part(twisted_cubic(), 0.3, v)),
+    ("ocp.face(tolerance)", lambda v: IN.ocp.face(IN.surface, v)),
+    ("ocp.shape(tolerance)", lambda v: IN.ocp.shape(IN.shape, v)),
+    ("ocp.volume(relative_error)", lambda v: IN.ocp.volume(IN.solid, v)),
+    ("ocp.sweep(tolerance)", lambda v: IN.ocp.sweep(IN.route, IN.ring, tolerance=v)),
+    ("ocp.sweep(corner_radius)", lambda v: IN.ocp.sweep(IN.route, IN.ring, corner_radius=v)),
+    ("ocp.profile_curves(tolerance)",
+     lambda v: IN.ocp.profile_curves(IN.ring, (0, 0, 0), (1, 0, 0), v)),
 ]
 
 
@@ -231,7 +262,8 @@ def test_a_number_beyond_a_double_is_invalid_input_naming_the_argument(case, val
 
 
 #: The arguments where None means "the library's default".
-OPTIONAL = {"wire_sweep(join_tolerance)", "wire_sweep(corner_radius)", "join_nurbs(tolerance)"}
+OPTIONAL = {"wire_sweep(join_tolerance)", "wire_sweep(corner_radius)", "join_nurbs(tolerance)",
+            "ocp.sweep(corner_radius)"}
 
 
 @pytest.mark.parametrize("case, value", parametrize(
@@ -529,6 +561,10 @@ ARRAYS = [
      lambda v: rmfsurf.cone_spline_osculating(twisted_cubic(), (0.5, 6.0), v)),
     ("SheetPart.flat_to_surface(points)", "flat points", lambda v: IN.part.flat_to_surface(v)),
     ("SheetPart.surface_to_flat(points)", "points", lambda v: IN.part.surface_to_flat(v)),
+    ("ocp.profile_curves(origin)", "vector",
+     lambda v: IN.ocp.profile_curves(IN.ring, v, (1, 0, 0))),
+    ("ocp.profile_curves(tangent)", "vector",
+     lambda v: IN.ocp.profile_curves(IN.ring, (0, 0, 0), v)),
 ]
 HERMITE = {
     "ph_cubic_hermite": lambda **h: rmfsurf.ph_cubic_hermite(**h),
@@ -572,6 +608,15 @@ def test_an_array_with_nan_or_infinity_is_invalid_input_naming_the_argument(case
             rmfsurf.InvalidInputError, argument(key))
 
 
+def test_ocp_non_finite_placements_are_invalid_input():
+    for value in ((0, math.nan, 0), (math.inf, 0, 0)):
+        refused(lambda v: IN.ocp.profile_curves(IN.ring, v, (1, 0, 0)), value,
+                rmfsurf.InvalidInputError, "origin")
+    for value in ((0, 0, 0), (math.nan, 0, 0)):
+        refused(lambda v: IN.ocp.profile_curves(IN.ring, (0, 0, 0), v), value,
+                rmfsurf.InvalidInputError, "tangent")
+
+
 # ---------------------------------------------------------------------------------------
 # Coverage: every argument of these classes in the API has its cases.
 
@@ -588,7 +633,9 @@ CASES = {
 
 def test_every_argument_of_the_api_has_its_cases():
     required = api_arguments(rmfsurf)
-    assert len(required) >= 90, required
+    ocp = pytest.importorskip("rmfsurf.ocp")
+    required.update(api_arguments(ocp, "ocp.", "rmfsurf.ocp"))
+    assert len(required) >= 100, required
     # Cases of an argument the annotations do not name (an option struct's field, ...).
     required = {k: c for k, c in required.items() if not k.startswith("rmfsurf.")}
     assert missing_cases(required, CASES) == []
@@ -601,3 +648,26 @@ def test_the_message_check_can_fail():
     assert names("curve(0.5)[0]: (nan, 0, 0) has a non-finite component", "curve")
     assert not names("rmf_x: t_min = NaN", "t")
     assert not names("rmf_x: the tolerance of it", "tol")
+
+
+# ---------------------------------------------------------------------------------------
+# rmfsurf.freecad in FreeCAD's Python (Debian's FreeCAD module directory, the interpreter of
+# this environment): a separate process, since FreeCAD's OpenCascade and OCP's must not
+# share one.
+
+FREECAD_LIB = "/usr/lib/freecad-python3/lib"
+
+
+@pytest.mark.skipif(not os.path.exists(os.path.join(FREECAD_LIB, "FreeCAD.so")),
+                    reason="FreeCAD (Debian package freecad) is not installed")
+def test_the_freecad_adapter_refuses_bad_arguments_in_freecads_python():
+    here = os.path.dirname(os.path.abspath(__file__))
+    run = subprocess.run(
+        [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider",
+         os.path.join(here, "freecad_arguments.py")],
+        cwd=here, capture_output=True, text=True, timeout=1800,
+        env=dict(os.environ, RMFSURF_FREECAD_LIB=FREECAD_LIB))
+    tail = run.stdout[-3000:] + run.stderr[-3000:]
+    print("\nrmfsurf.freecad bad arguments:", run.stdout.strip().splitlines()[-1:])
+    assert run.returncode == 0, tail
+    assert " passed" in run.stdout and " skipped" not in run.stdout, tail
