@@ -7,6 +7,7 @@ their annotations, so that a new function without cases fails. rmfsurf.freecad r
 same checks in FreeCAD's Python (freecad_arguments.py, test_the_freecad_adapter_...).
 Run by capi/tests/python.rs."""
 
+import builtins
 import functools
 import math
 import os
@@ -648,6 +649,50 @@ def test_the_message_check_can_fail():
     assert names("curve(0.5)[0]: (nan, 0, 0) has a non-finite component", "curve")
     assert not names("rmf_x: t_min = NaN", "t")
     assert not names("rmf_x: the tolerance of it", "tol")
+
+
+# ---------------------------------------------------------------------------------------
+# The table of docs/hardening.md, "The Python package": every row run as written.
+
+REPOSITORY = os.environ.get("RMFSURF_REPOSITORY",
+                            os.path.join(os.path.dirname(__file__), "..", ".."))
+
+
+def hardening_rows():
+    with open(os.path.join(REPOSITORY, "docs", "hardening.md"), encoding="utf-8") as f:
+        text = f.read()
+    section = text.split("\n## The Python package\n", 1)[1].split("\n## ", 1)[0]
+    rows = []
+    for line in section.splitlines():
+        cells = [c.strip() for c in line.strip().strip("|").split(" | ")]
+        if len(cells) == 4 and cells[1].startswith("`"):
+            rows.append(pytest.param(cells[1].strip("`"), cells[2], cells[3], id=cells[0]))
+    return rows
+
+
+def test_the_python_table_of_docs_hardening_md_has_rows():
+    assert len(hardening_rows()) >= 15
+
+
+@pytest.mark.parametrize("call, exception, message", hardening_rows())
+def test_the_python_rows_of_docs_hardening_md_are_what_the_package_raises(
+        call, exception, message, tmp_path, monkeypatch):
+    if "rmfsurf.ocp" in call:
+        pytest.importorskip("rmfsurf.ocp")
+    monkeypatch.chdir(tmp_path)
+    namespace = dict(rmfsurf=rmfsurf, np=np, math=math, nan=math.nan, shape=IN.shape,
+                     spline=IN.spline, curve=IN.profile, cubic=twisted_cubic(), helix=helix,
+                     edges=IN.edges, profile=circle(1.0))
+    expected = getattr(rmfsurf, exception, None) or getattr(builtins, exception)
+    with pytest.raises(expected) as caught:
+        eval(call, namespace)
+    assert type(caught.value) is expected
+    text = str(caught.value)
+    if "…" in message:
+        assert text.startswith(message.split("…")[0]), (text, message)
+    else:
+        assert text == message
+    assert os.listdir(tmp_path) == []
 
 
 # ---------------------------------------------------------------------------------------
