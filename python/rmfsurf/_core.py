@@ -9,8 +9,13 @@ loaded from the package directory (no environment variable, no linker path).
 
 from __future__ import annotations
 
+import math
+import numbers
+import operator
+import os
 import threading
-from typing import Any, Callable, Dict, Optional, Tuple, Type
+from collections.abc import Iterable
+from typing import Any, Callable, Dict, List, Optional, Tuple, Type
 
 import numpy as np
 
@@ -152,20 +157,168 @@ def out_pointer(ctype: str) -> Any:
 
 
 # ---------------------------------------------------------------------------------------
-# Arguments: NumPy in, NumPy out; errors name the argument.
+# Arguments: every public function converts its arguments here, before the library is
+# called. The rules (docs/python.md, "Errors"): a value of the wrong type is a TypeError, a
+# value of the right type the library cannot take (out of its C type's range, a path with a
+# NUL, a number beyond a double) an InvalidInputError, an array of the wrong shape a
+# ValueError; each message starts with the argument's name ("holes[1]: ...").
+
+
+def _shown(value: Any) -> str:
+    """`value` for a message, a huge integer by its size (its digits say nothing)."""
+    if isinstance(value, int) and abs(value) >= 10 ** 30:
+        return "an integer of %d digits" % len(str(abs(value)))
+    return repr(value)
+
+
+def _refused(name: str, message: str) -> InvalidInputError:
+    return InvalidInputError("%s: %s" % (name, message), InvalidInputError.status)
+
+
+#: The largest value of each C integer type the package passes.
+C_INTEGER_MAX: Dict[str, int] = {
+    ctype: 2 ** (8 * ffi.sizeof(ctype)) - 1 for ctype in ("uint32_t", "size_t")
+}
+
+
+def integer(value: Any, name: str, ctype: str, minimum: int = 0,
+            maximum: Optional[int] = None) -> int:
+    """`value` as a Python int for a C `ctype` ("uint32_t" or "size_t"), in
+    [minimum, maximum] (maximum: the type's largest value unless given).
+
+    TypeError for what is not an integer (a bool, a float even if whole, a string): C would
+    truncate or misread it. InvalidInputError outside the range: cffi would raise a bare
+    OverflowError, or a negative count would wrap around to a huge one."""
+    if isinstance(value, (bool, np.bool_)):
+        raise TypeError("%s: expected an integer, got bool" % name)
+    try:
+        number = operator.index(value)
+    except TypeError:
+        raise TypeError("%s: expected an integer, got %s" % (name, type(value).__name__)) from None
+    top = C_INTEGER_MAX[ctype] if maximum is None else min(maximum, C_INTEGER_MAX[ctype])
+    if not minimum <= number <= top:
+        raise _refused(name, "expected an integer from %d to %d (%s), got %s"
+                       % (minimum, top, ctype, _shown(number)))
+    return number
+
+
+def number(value: Any, name: str) -> float:
+    """`value` as a Python float (a C double). TypeError for what is not a real number;
+    InvalidInputError for a finite value beyond the range of a double (10**400), which
+    float() would refuse with a bare OverflowError or round to infinity. NaN and ±inf pass:
+    the library refuses them where they make no sense, naming the argument."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+        raise TypeError("%s: expected a number, got %s" % (name, type(value).__name__))
+    try:
+        result = float(value)
+    except OverflowError:
+        result = math.inf
+    if math.isinf(result) and value != result:
+        raise _refused(name, "%s is beyond the range of a double (about ±1.8e308)"
+                       % _shown(value))
+    return result
+
+
+def finite(value: Any, name: str, positive: bool = False, nonnegative: bool = False) -> float:
+    """A number the package uses itself (CAD kernel tolerances, ...) rather than passing to
+    the library, which would check it: finite, and > 0 if `positive`, >= 0 if
+    `nonnegative`."""
+    result = number(value, name)
+    if not math.isfinite(result) or (positive and not result > 0) or (nonnegative and result < 0):
+        raise _refused(name, "%r must be finite%s" % (
+            result, " and positive" if positive else " and >= 0" if nonnegative else ""))
+    return result
+
+
+def pair(value: Any, name: str) -> Tuple[float, float]:
+    """Two finite numbers, e.g. a parameter interval (t_min, t_max): refused here, as the
+    library would name them by its own names (t_min, v_min)."""
+    if isinstance(value, (str, bytes)) or not isinstance(value, Iterable):
+        raise TypeError("%s: expected a pair of numbers, got %s" % (name, type(value).__name__))
+    items = list(value)
+    if len(items) != 2:
+        raise ValueError("%s: expected a pair of numbers, got %d values" % (name, len(items)))
+    return finite(items[0], name + "[0]"), finite(items[1], name + "[1]")
+
+
+def objects(value: Any, name: str, cls: Any, what: str) -> List[Any]:
+    """A sequence of `cls` objects as a list; one `cls` object is a sequence of one. TypeError
+    naming the argument for what is not a sequence, and its index for an item of another
+    type ("holes[1]: expected an rmfsurf.Curve, got int")."""
+    if isinstance(value, cls):
+        return [value]
+    if isinstance(value, (str, bytes)) or not isinstance(value, Iterable):
+        raise TypeError("%s: expected %s or a sequence of them, got %s"
+                        % (name, what, type(value).__name__))
+    items = list(value)
+    for i, item in enumerate(items):
+        instance(item, "%s[%d]" % (name, i), cls, what)
+    return items
+
+
+def path(value: Any, name: str) -> bytes:
+    """A file name for the library (a C string): str, bytes or os.PathLike, as the bytes the
+    operating system gets (os.fsencode: file names that are not UTF-8 survive). Refused with
+    InvalidInputError: empty, or with a NUL, which would end the C string early and have
+    the file written under a shorter name."""
+    try:
+        raw = os.fspath(value)
+    except TypeError:
+        raise TypeError("%s: expected a path (str, bytes or os.PathLike), got %s"
+                        % (name, type(value).__name__)) from None
+    try:
+        encoded = os.fsencode(raw)
+    except UnicodeError as e:
+        raise _refused(name, "%r cannot be encoded as a file name (%s)" % (raw, e)) from None
+    if not encoded:
+        raise _refused(name, "the path is empty")
+    if b"\0" in encoded:
+        raise _refused(name, "%r contains a NUL character, which no file name can hold" % (raw,))
+    return encoded
+
+
+def float_array(value: Any, name: str, what: str, contiguous: bool = True) -> np.ndarray:
+    """`value` as a float64 array of any shape (the caller checks it); `what` says what was
+    expected."""
+    try:
+        if contiguous:
+            return np.ascontiguousarray(value, dtype=np.float64)
+        return np.asarray(value, dtype=np.float64)
+    except OverflowError:
+        raise _refused(name, "expected %s, got a value beyond the range of a double"
+                       % what) from None
+    except (TypeError, ValueError) as e:
+        # NumPy's ValueError is a string that is no number (a type) or nested sequences of
+        # unequal lengths (a shape).
+        wrong_type = isinstance(e, TypeError) or "could not convert" in str(e)
+        raise (TypeError if wrong_type else ValueError)(
+            "%s: expected %s, got %s (%s)" % (name, what, type(value).__name__, e)) from None
+
+
+def _finite_items(array: np.ndarray, name: str) -> np.ndarray:
+    """`array` if every number in it is finite, else InvalidInputError naming the first
+    item that is not ("points[2]: [nan, 0.0] is not finite")."""
+    bad = ~np.isfinite(array)
+    if bad.any():
+        i = int(np.argwhere(bad)[0][0])
+        raise _refused("%s[%d]" % (name, i), "%s is not finite" % (array[i].tolist(),))
+    return array
+
+
+def rows(value: Any, name: str, width: int, what: str, finite_only: bool = False) -> np.ndarray:
+    """`value` as a C-contiguous float64 array of shape (n, width); with `finite_only` (rows
+    the library would name by another name, or does not see) NaN and ±inf are refused."""
+    array = float_array(value, name, what)
+    if array.ndim != 2 or array.shape[1] != width:
+        raise ValueError("%s: expected an array of shape (n, %d), got shape %s"
+                         % (name, width, array.shape))
+    return _finite_items(array, name) if finite_only else array
 
 
 def points(value: Any, name: str, count: Optional[int] = None, min_count: int = 0) -> np.ndarray:
     """`value` as a C-contiguous float64 array of shape (n, 3); TypeError/ValueError name
     the argument."""
-    try:
-        array = np.ascontiguousarray(value, dtype=np.float64)
-    except (TypeError, ValueError) as e:
-        raise TypeError("%s: expected an array of 3-D points (shape (n, 3)), got %s (%s)"
-                        % (name, type(value).__name__, e)) from None
-    if array.ndim != 2 or array.shape[1] != 3:
-        raise ValueError("%s: expected an array of shape (n, 3), got shape %s"
-                         % (name, array.shape))
+    array = rows(value, name, 3, "an array of 3-D points (shape (n, 3))")
     if count is not None and array.shape[0] != count:
         raise ValueError("%s: expected %d points, got %d" % (name, count, array.shape[0]))
     if array.shape[0] < min_count:
@@ -174,53 +327,68 @@ def points(value: Any, name: str, count: Optional[int] = None, min_count: int = 
     return array
 
 
-def vector(value: Any, name: str) -> np.ndarray:
-    """`value` as a float64 array of shape (3,)."""
-    try:
-        array = np.asarray(value, dtype=np.float64)
-    except (TypeError, ValueError) as e:
-        raise TypeError("%s: expected a 3-D vector, got %s (%s)"
-                        % (name, type(value).__name__, e)) from None
+def vector(value: Any, name: str, finite_only: bool = False) -> np.ndarray:
+    """`value` as a float64 array of shape (3,); with `finite_only` (a vector the package uses
+    itself) NaN and ±inf are refused."""
+    array = float_array(value, name, "a 3-D vector", contiguous=False)
     if array.shape != (3,):
         raise ValueError("%s: expected a 3-D vector (shape (3,)), got shape %s"
                          % (name, array.shape))
+    if finite_only and not np.isfinite(array).all():
+        raise _refused(name, "%s has a non-finite component" % (array.tolist(),))
     return array
 
 
-def doubles(value: Any, name: str, count: Optional[int] = None) -> np.ndarray:
-    """`value` as a C-contiguous 1-D float64 array."""
-    try:
-        array = np.ascontiguousarray(value, dtype=np.float64)
-    except (TypeError, ValueError) as e:
-        raise TypeError("%s: expected a sequence of numbers, got %s (%s)"
-                        % (name, type(value).__name__, e)) from None
+def direction(value: Any, name: str) -> np.ndarray:
+    """A finite non-zero 3-vector, normalized (for a direction the package uses itself)."""
+    v = vector(value, name, finite_only=True)
+    length = float(np.linalg.norm(v))
+    if not length > 0:
+        raise _refused(name, "a zero vector has no direction")
+    return v / length
+
+
+def doubles(value: Any, name: str, count: Optional[int] = None,
+            finite_only: bool = False) -> np.ndarray:
+    """`value` as a C-contiguous 1-D float64 array (finite numbers only with
+    `finite_only`)."""
+    array = float_array(value, name, "a sequence of numbers")
     if array.ndim != 1:
         raise ValueError("%s: expected a 1-D sequence, got shape %s" % (name, array.shape))
     if count is not None and array.shape[0] != count:
         raise ValueError("%s: expected %d values, got %d" % (name, count, array.shape[0]))
-    return array
+    return _finite_items(array, name) if finite_only else array
 
 
-def integer(value: Any, name: str, minimum: int = 0) -> int:
-    """`value` as a Python int ≥ minimum (bool refused)."""
-    if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
-        raise TypeError("%s: expected an integer, got %s" % (name, type(value).__name__))
-    if value < minimum:
-        raise ValueError("%s: expected an integer >= %d, got %d" % (name, minimum, value))
-    return int(value)
-
-
-def number(value: Any, name: str) -> float:
-    """`value` as a Python float (finiteness is the library's to check)."""
-    if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
-        raise TypeError("%s: expected a number, got %s" % (name, type(value).__name__))
-    return float(value)
+def integers(value: Any, name: str, minimum: int = 0) -> np.ndarray:
+    """`value` as a 1-D int64 array of integers >= minimum (floats refused, not truncated)."""
+    array = np.asarray(value)
+    if array.ndim != 1:
+        raise ValueError("%s: expected a 1-D sequence of integers, got shape %s"
+                         % (name, array.shape))
+    if array.size and array.dtype.kind not in "iu":
+        raise TypeError("%s: expected integers, got %s" % (name, array.dtype))
+    for i, v in enumerate(array):
+        if v < minimum or v > np.iinfo(np.int64).max:
+            raise _refused("%s[%d]" % (name, i), "expected an integer >= %d, got %d"
+                           % (minimum, v))
+    return array.astype(np.int64)
 
 
 def vec3(value: Any, name: str) -> Any:
     """A ``RmfVec3`` struct (by value) from a 3-vector."""
     v = vector(value, name)
     return ffi.new("RmfVec3 *", (float(v[0]), float(v[1]), float(v[2])))[0]
+
+
+def box(value: Any, name: str) -> Any:
+    """An ``RmfBox *`` from (min corner, max corner)."""
+    try:
+        lo, hi = value
+    except (TypeError, ValueError):
+        raise TypeError("%s: expected (min corner, max corner), got %s"
+                        % (name, type(value).__name__)) from None
+    return ffi.new("RmfBox *", (vec3(lo, name + "[0]"), vec3(hi, name + "[1]")))
 
 
 def vec3_array(array: np.ndarray) -> Any:
@@ -261,12 +429,9 @@ def copy_doubles(pointer: Any, count: int) -> np.ndarray:
 def parameters(value: Any, name: str) -> Tuple[np.ndarray, bool]:
     """Parameters for vectorized evaluation: a flat float64 array and whether `value` was
     a scalar (then the caller returns one result instead of an array of them)."""
-    scalar = np.ndim(value) == 0
-    try:
-        array = np.atleast_1d(np.asarray(value, dtype=np.float64))
-    except (TypeError, ValueError) as e:
-        raise TypeError("%s: expected a number or an array of numbers, got %s (%s)"
-                        % (name, type(value).__name__, e)) from None
+    array = float_array(value, name, "a number or an array of numbers", contiguous=False)
+    scalar = array.ndim == 0
+    array = np.atleast_1d(array)
     if array.ndim != 1:
         raise ValueError("%s: expected a number or a 1-D array, got shape %s"
                          % (name, array.shape))

@@ -7,7 +7,7 @@ their exact surfaces, isometric bending, offsets, and the exact development into
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Dict, List, Optional, Sequence, Tuple
+from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -65,14 +65,6 @@ class ConePiece:
     end_side: np.ndarray
     first_patch: int
     patch_count: int
-
-
-def _box(box: Tuple[ArrayLike, ArrayLike], name: str) -> Any:
-    try:
-        lo, hi = box
-    except (TypeError, ValueError):
-        raise TypeError("%s: expected (min corner, max corner)" % name) from None
-    return ffi.new("RmfBox *", (_core.vec3(lo, name + " min"), _core.vec3(hi, name + " max")))
 
 
 @dataclass(frozen=True)
@@ -136,7 +128,7 @@ class ConeSpline:
     def bounds_in_box(self, box: Tuple[ArrayLike, ArrayLike]) -> Tuple[float, float]:
         """The widest (t_min, t_max) whose ruling segments lie in the box (min, max)."""
         lo, hi = ffi.new("double *"), ffi.new("double *")
-        call("rmf_cone_spline_bounds_in_box", self._ptr, _box(box, "box"), lo, hi)
+        call("rmf_cone_spline_bounds_in_box", self._ptr, _core.box(box, "box"), lo, hi)
         return lo[0], hi[0]
 
     def boundary(self, t: float) -> Curve:
@@ -181,6 +173,7 @@ class ConeSpline:
 
     def flat_pattern(self, t_min: float, t_max: float) -> FlatPattern:
         """The flat pattern of the strip t_min ≤ t ≤ t_max (see :class:`FlatPattern`)."""
+        t_min, t_max = _core.finite(t_min, "t_min"), _core.finite(t_max, "t_max")
         developed = self.develop()
         low, high = developed.boundary(t_min), developed.boundary(t_max)
         a, b = low.domain
@@ -191,22 +184,22 @@ class ConeSpline:
         return "<rmfsurf.ConeSpline %d pieces>" % self.piece_count
 
 
-def cone_spline_hermite(elements: Sequence[ConeElement], rule: str = "min_vertex_distance",
+def cone_spline_hermite(elements: Union[ConeElement, Sequence[ConeElement]],
+                        rule: str = "min_vertex_distance",
                         parameter: float = 0.0,
                         region: Optional[Tuple[ArrayLike, ArrayLike]] = None) -> ConeSpline:
     """The cone spline through G1 Hermite elements, one cone pair per gap, chosen by
     `rule`, with no vertex inside the box `region` (min, max)."""
-    elements = list(elements)
+    elements = _core.objects(elements, "elements", ConeElement, "an rmfsurf.ConeElement")
     array = ffi.new("RmfConeElement[]", max(len(elements), 1))
     for i, e in enumerate(elements):
-        _core.instance(e, "elements[%d]" % i, ConeElement, "an rmfsurf.ConeElement")
         array[i].point = _core.vec3(e.point, "elements[%d].point" % i)
         array[i].ruling = _core.vec3(e.ruling, "elements[%d].ruling" % i)
         array[i].side = _core.vec3(e.side, "elements[%d].side" % i)
     out = _core.out_pointer("RmfConeSpline")
     call("rmf_cone_spline_hermite", array, len(elements), _core.choice(rule, "rule", RULES),
          _core.number(parameter, "parameter"),
-         ffi.NULL if region is None else _box(region, "region"), out)
+         ffi.NULL if region is None else _core.box(region, "region"), out)
     return ConeSpline._owned(out)
 
 
@@ -218,11 +211,11 @@ def cone_spline_approximate(curve: CurveSource, v_range: Tuple[float, float],
     :class:`Curve`, or a function t -> (point, tangent) on `domain`) approximated by a cone
     spline within `tolerance`."""
     ptr, cb, lo, hi, callback = _source(curve, domain, "curve")
-    v0, v1 = (_core.number(x, "v_range") for x in v_range)
+    v0, v1 = _core.pair(v_range, "v_range")
     out = _core.out_pointer("RmfConeSpline")
     _with_callback(callback, "rmf_cone_spline_approximate", ptr, cb, ffi.NULL, lo, hi, v0, v1,
                    _core.number(tolerance, "tolerance"), _core.choice(rule, "rule", RULES),
-                   _core.integer(max_pieces, "max_pieces", 2), out, ffi.NULL)
+                   _core.integer(max_pieces, "max_pieces", "size_t", 2), out, ffi.NULL)
     return ConeSpline._owned(out)
 
 
@@ -234,7 +227,7 @@ def cone_spline_approximate_ruled(surface: Surface, tolerance: float, *,
     out = _core.out_pointer("RmfConeSpline")
     call("rmf_cone_spline_approximate_ruled", as_surface(surface, "surface")._ptr,
          _core.number(tolerance, "tolerance"), _core.choice(rule, "rule", RULES),
-         _core.integer(max_pieces, "max_pieces", 2), out, ffi.NULL)
+         _core.integer(max_pieces, "max_pieces", "size_t", 2), out, ffi.NULL)
     return ConeSpline._owned(out)
 
 
@@ -244,19 +237,14 @@ def cone_spline_approximate_dual(degree: int, planes: ArrayLike, knots: ArrayLik
                                  max_pieces: int = 10000) -> ConeSpline:
     """A developable in dual form — a B-spline curve of planes (n, 4): u0 + u1 x + u2 y +
     u3 z = 0 — approximated by a cone spline within `tolerance` inside the box `region`."""
-    try:
-        p = np.ascontiguousarray(planes, dtype=np.float64)
-    except (TypeError, ValueError) as e:
-        raise TypeError("planes: expected an array of shape (n, 4) (%s)" % e) from None
-    if p.ndim != 2 or p.shape[1] != 4:
-        raise ValueError("planes: expected an array of shape (n, 4), got shape %s" % (p.shape,))
+    p = _core.rows(planes, "planes", 4, "an array of planes (shape (n, 4))")
     k = _core.doubles(knots, "knots")
     out = _core.out_pointer("RmfConeSpline")
-    call("rmf_cone_spline_approximate_dual", _core.integer(degree, "degree", 1),
+    call("rmf_cone_spline_approximate_dual", _core.integer(degree, "degree", "uint32_t", 1),
          _core.double_array(p.reshape(-1)), p.shape[0], _core.double_array(k), k.shape[0],
-         _box(region, "region"), _core.number(tolerance, "tolerance"),
-         _core.choice(rule, "rule", RULES), _core.integer(max_pieces, "max_pieces", 2), out,
-         ffi.NULL)
+         _core.box(region, "region"), _core.number(tolerance, "tolerance"),
+         _core.choice(rule, "rule", RULES),
+         _core.integer(max_pieces, "max_pieces", "size_t", 2), out, ffi.NULL)
     return ConeSpline._owned(out)
 
 
@@ -266,7 +254,7 @@ def cone_spline_osculating(curve: CurveSource, v_range: Tuple[float, float],
     """The osculating cone spline of a tangent surface: the osculating cones at the curve
     `parameters`, joined by filling cones."""
     ptr, cb, lo, hi, callback = _source(curve, domain, "curve")
-    v0, v1 = (_core.number(x, "v_range") for x in v_range)
+    v0, v1 = _core.pair(v_range, "v_range")
     ts = _core.doubles(parameters, "parameters")
     out = _core.out_pointer("RmfConeSpline")
     _with_callback(callback, "rmf_cone_spline_osculating", ptr, cb, ffi.NULL, lo, hi, v0, v1,

@@ -46,13 +46,19 @@ class NurbsCurve:
 
 def distinct_knots(knots: ArrayLike) -> Tuple[np.ndarray, np.ndarray]:
     """A flat knot vector as (distinct values, multiplicities)."""
-    values, counts = np.unique(np.asarray(knots, dtype=np.float64), return_counts=True)
+    values, counts = np.unique(_core.doubles(knots, "knots", finite_only=True),
+                               return_counts=True)
     return values, counts.astype(np.int64)
 
 
 def flat_knots(values: ArrayLike, multiplicities: ArrayLike) -> np.ndarray:
     """Distinct knots with multiplicities as one flat knot vector."""
-    return np.repeat(np.asarray(values, dtype=np.float64), np.asarray(multiplicities, dtype=int))
+    v = _core.doubles(values, "values", finite_only=True)
+    m = _core.integers(multiplicities, "multiplicities")
+    if m.shape != v.shape:
+        raise ValueError("multiplicities: expected %d values (one per knot value), got %d"
+                         % (v.shape[0], m.shape[0]))
+    return np.repeat(v, m)
 
 
 @dataclass(frozen=True)
@@ -100,7 +106,7 @@ class Curve:
                 :func:`flat_knots` for distinct values with multiplicities.
             weights: n weights > 0, or None for a polynomial curve.
         """
-        degree = _core.integer(degree, "degree", 1)
+        degree = _core.integer(degree, "degree", "uint32_t", 1)
         p = _core.points(poles, "poles")
         k = _core.doubles(knots, "knots")
         w = None if weights is None else _core.doubles(weights, "weights", p.shape[0])
@@ -180,13 +186,16 @@ def as_curve(value: Any, name: str) -> Curve:
 
 class _Callback:
     """A Python function f(t) -> (point, tangent) as an RmfCurveCallback. An exception in
-    f is kept and re-raised after the call; the library is given NaN, which it refuses."""
+    f, or a value of f that is no pair of finite 3-vectors (refused here, naming the
+    argument and t, as the library would call it "the callback"), is kept and re-raised
+    after the call; the library is given NaN, which it refuses."""
 
     def __init__(self, function: CurveFunction, name: str) -> None:
         if not callable(function):
             raise TypeError("%s: expected an rmfsurf.Curve or a function t -> (point, "
                             "tangent), got %s" % (name, type(function).__name__))
         self.function = function
+        self.name = name
         self.error: Optional[BaseException] = None
         self.c = ffi.callback("RmfCurveCallback", self._call)
 
@@ -194,9 +203,14 @@ class _Callback:
         try:
             if self.error is not None:
                 raise self.error
-            p, d = self.function(t)
-            point.x, point.y, point.z = (float(x) for x in p)
-            tangent.x, tangent.y, tangent.z = (float(x) for x in d)
+            value = self.function(t)
+            try:
+                p, d = value
+            except (TypeError, ValueError):
+                raise TypeError("%s(%r): expected (point, tangent), got %s"
+                                % (self.name, t, type(value).__name__)) from None
+            point.x, point.y, point.z = _core.vector(p, "%s(%r)[0]" % (self.name, t), True)
+            tangent.x, tangent.y, tangent.z = _core.vector(d, "%s(%r)[1]" % (self.name, t), True)
         except BaseException as e:  # never unwind into the library
             if self.error is None:
                 self.error = e
@@ -224,7 +238,7 @@ def _source(curve: CurveSource, domain: Optional[Tuple[float, float]], name: str
     if domain is None:
         raise ValueError("domain: a function %s needs its parameter interval (t_min, t_max)"
                          % name)
-    lo, hi = (_core.number(x, "domain") for x in domain)
+    lo, hi = _core.pair(domain, "domain")
     return ffi.NULL, callback.c, lo, hi, callback
 
 
@@ -331,7 +345,7 @@ def mobius_rrmf_approximate(curve: CurveSource, segments: int,
     ptr, cb, lo, hi, callback = _source(curve, domain, "curve")
     c, f = _core.out_pointer("RmfCurve"), _core.out_pointer("RmfFrames")
     _with_callback(callback, "rmf_mobius_rrmf_approximate", ptr, cb, ffi.NULL, lo, hi,
-                   _core.integer(segments, "segments", 1),
+                   _core.integer(segments, "segments", "size_t", 1),
                    _core.vec3(initial_normal, "initial_normal"), c, f)
     return _curve_and_frames(c, f)
 
@@ -358,7 +372,7 @@ def rrmf_spline_hermite(points: ArrayLike, tangents: ArrayLike,
     call("rmf_rrmf_spline_hermite", _core.vec3_array(p), _core.vec3_array(d), p.shape[0],
          _core.vec3(initial_normal, "initial_normal"),
          _core.choice(measure, "measure", RRMF_MEASURES),
-         _core.integer(eta_samples, "eta_samples", 1), c, f)
+         _core.integer(eta_samples, "eta_samples", "size_t", 1), c, f)
     return _curve_and_frames(c, f)
 
 
@@ -409,7 +423,7 @@ def rrmf_quintic_best(p0: ArrayLike, t0: ArrayLike, p1: ArrayLike, t1: ArrayLike
     call("rmf_rrmf_quintic_best", _core.vec3(p0, "p0"), _core.vec3(t0, "t0"),
          _core.vec3(p1, "p1"), _core.vec3(t1, "t1"),
          _core.choice(measure, "measure", RRMF_MEASURES),
-         _core.integer(eta_samples, "eta_samples", 1), best, admissible)
+         _core.integer(eta_samples, "eta_samples", "size_t", 1), best, admissible)
     return RrmfQuintic._from_c(best[0])
 
 
@@ -446,15 +460,15 @@ class Inversion:
         item.normal = _core.vec3(self.normal if plane else (0, 0, 1), "maps[%d].normal" % i)
 
 
-def _maps(maps: Sequence[Inversion]) -> Tuple[Any, int]:
-    maps = list(maps)
-    array = ffi.new("RmfInversion[]", max(len(maps), 1))
-    for i, m in enumerate(maps):
-        _core.instance(m, "maps[%d]" % i, Inversion, "an rmfsurf.Inversion")._fill(array[i], i)
-    return array, len(maps)
+def _maps(maps: Union[Inversion, Sequence[Inversion]]) -> Tuple[Any, int]:
+    items = _core.objects(maps, "maps", Inversion, "an rmfsurf.Inversion")
+    array = ffi.new("RmfInversion[]", max(len(items), 1))
+    for i, m in enumerate(items):
+        m._fill(array[i], i)
+    return array, len(items)
 
 
-def mobius_point(maps: Sequence[Inversion], point: ArrayLike) -> np.ndarray:
+def mobius_point(maps: Union[Inversion, Sequence[Inversion]], point: ArrayLike) -> np.ndarray:
     """The image of a point under the Möbius transformation `maps` (applied in order)."""
     array, n = _maps(maps)
     image = ffi.new("RmfVec3 *")
@@ -462,7 +476,7 @@ def mobius_point(maps: Sequence[Inversion], point: ArrayLike) -> np.ndarray:
     return _core.from_vec3(image)
 
 
-def mobius_curve(curve: Curve, maps: Sequence[Inversion]) -> Curve:
+def mobius_curve(curve: Curve, maps: Union[Inversion, Sequence[Inversion]]) -> Curve:
     """The exact image of a rational curve under a Möbius transformation."""
     array, n = _maps(maps)
     out = _core.out_pointer("RmfCurve")
@@ -474,7 +488,7 @@ def mobius_curve(curve: Curve, maps: Sequence[Inversion]) -> Curve:
 # Joining the edges of a CAD wire into one curve
 
 
-def join_nurbs(pieces: Sequence[NurbsCurve], name: str = "curves",
+def join_nurbs(pieces: Union[NurbsCurve, Sequence[NurbsCurve]], name: str = "pieces",
                tolerance: Optional[float] = None) -> NurbsCurve:
     """NURBS pieces of one degree, each ending where the next starts, as one NURBS: piece k
     on the parameters [k, k + 1], joined by knots of multiplicity p (C0: every piece stays
@@ -483,7 +497,9 @@ def join_nurbs(pieces: Sequence[NurbsCurve], name: str = "curves",
     Consecutive pieces may be `tolerance` apart (default 1e-9 of the coordinates' size);
     the joint is then where the earlier piece ends. CAD adapters raise the pieces to a
     common degree with their kernel first."""
-    pieces = list(pieces)
+    pieces = _core.objects(pieces, name, NurbsCurve, "an rmfsurf.NurbsCurve")
+    if tolerance is not None:
+        tolerance = _core.finite(tolerance, "tolerance", nonnegative=True)
     if not pieces:
         raise ValueError("%s: nothing to join" % name)
     p = pieces[0].degree

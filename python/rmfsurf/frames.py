@@ -5,7 +5,7 @@ rational RMFs that come with Möbius and RRMF curves (see :mod:`rmfsurf.curves`)
 
 from __future__ import annotations
 
-from typing import Any, Dict, Sequence, Tuple
+from typing import Any, Dict, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -91,12 +91,13 @@ def ph_rational_rmf(ph_spline: Curve, initial_normal: ArrayLike = (0.0, 0.0, 1.0
     spine modulo 2π/k (k = the profile's symmetry order)."""
     spline = as_curve(ph_spline, "ph_spline")
     normal = _core.vec3(initial_normal, "initial_normal")
+    turn = _core.number(twist, "twist")
+    symmetry = _core.integer(closure_symmetry, "closure_symmetry", "uint32_t")
     out = _core.out_pointer("RmfFrames")
-    if twist == 0.0 and closure_symmetry == 0:
+    if turn == 0.0 and symmetry == 0:
         call("rmf_ph_rational_rmf", spline._ptr, normal, out)
     else:
-        call("rmf_ph_rational_rmf_twisted", spline._ptr, normal, _core.number(twist, "twist"),
-             _core.integer(closure_symmetry, "closure_symmetry"), out)
+        call("rmf_ph_rational_rmf_twisted", spline._ptr, normal, turn, symmetry, out)
     return Frames._owned(out)
 
 
@@ -114,7 +115,8 @@ def double_reflection_frames(curve: Curve, initial_normal: ArrayLike = (0.0, 0.0
     uniform samples: the library's reference RMF."""
     out = _core.out_pointer("RmfFrames")
     call("rmf_double_reflection_frames", as_curve(curve, "curve")._ptr,
-         _core.vec3(initial_normal, "initial_normal"), _core.integer(samples, "samples", 2), out)
+         _core.vec3(initial_normal, "initial_normal"),
+         _core.integer(samples, "samples", "size_t", 2), out)
     return Frames._owned(out)
 
 
@@ -125,7 +127,8 @@ def frenet_frames(curve: Curve) -> Frames:
     return Frames._owned(out)
 
 
-def mobius_frames(frames: Frames, maps: Sequence[Inversion]) -> Tuple[Curve, Frames]:
+def mobius_frames(frames: Frames, maps: Union[Inversion, Sequence[Inversion]]
+                  ) -> Tuple[Curve, Frames]:
     """The images of rational frames and their curve under a Möbius transformation: an RMF
     goes to an RMF (Bartoň, Jüttler & Wang, Theorem 1)."""
     array, n = _maps(maps)

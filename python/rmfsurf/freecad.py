@@ -28,7 +28,7 @@ import Part
 
 from . import _core
 from .cone_splines import ConeSpline, cone_spline_approximate_ruled
-from .curves import (Curve, NurbsCurve, distinct_knots, flat_knots, join_nurbs,
+from .curves import (ArrayLike, Curve, NurbsCurve, distinct_knots, flat_knots, join_nurbs,
                      mobius_rrmf_approximate, ph_spline_approximate, rrmf_spline_hermite)
 from .frames import Frames, ph_frenet_frames, ph_rational_rmf
 from .shapes import Arc, CurveEdge, Edge, Line, Shape, SweepReport, wire_sweep
@@ -40,9 +40,10 @@ RmfError = _core.RmfError
 V = FreeCAD.Vector
 
 
-def vector(p: Any) -> Any:
+def vector(p: ArrayLike) -> Any:
     """A FreeCAD.Vector from a 3-sequence (e.g. a NumPy point)."""
-    return V(float(p[0]), float(p[1]), float(p[2]))
+    x, y, z = _core.vector(p, "p")
+    return V(float(x), float(y), float(z))
 
 
 # ---------------------------------------------------------------------------------------
@@ -194,19 +195,24 @@ def spine_with_frames(spine: Curve, method: str = "ph-rmf", tolerance: float = 1
     `tolerance`, its rational RMF), "frenet" (the same spline's rational Frenet frame),
     "mobius" (exact rational RMF, `segments` Hermite segments, default 16) or "rrmf" (RRMF
     quintics through `segments` + 1 samples)."""
+    spine = _core.instance(spine, "spine", Curve, "an rmfsurf.Curve")
+    _core.choice(method, "method", {m: i for i, m in enumerate(METHODS)})
+    tolerance = _core.number(tolerance, "tolerance")
+    # The library's bound on sample and segment counts (2**24); the "rrmf" samples are
+    # allocated here first.
+    segments = 16 if segments is None else _core.integer(segments, "segments", "size_t", 1,
+                                                         2 ** 24)
     if method in ("ph-rmf", "frenet"):
         ph, _ = ph_spline_approximate(spine, tolerance)
         if method == "ph-rmf":
             return ph, ph_rational_rmf(ph, initial_normal)
         return ph, ph_frenet_frames(ph)
-    segments = segments or 16
     if method == "mobius":
         return mobius_rrmf_approximate(spine, segments, initial_normal)
     if method == "rrmf":
         ts = np.linspace(*spine.domain, segments + 1)
         points, tangents = spine.eval(ts, derivative=True)
-        return rrmf_spline_hermite(points, tangents, initial_normal)
-    raise ValueError("method: expected one of %s, got %r" % (", ".join(METHODS), method))
+    return rrmf_spline_hermite(points, tangents, initial_normal)
 
 
 def sweep_sketch_along_edge(sketch: Any, edge: Any, method: str = "ph-rmf",
@@ -254,7 +260,11 @@ def path_edges(path: Any) -> List[Edge]:
     """The wire-sweep edges of a Part.Wire/Part.Edge/sketch, in order: lines as
     :class:`rmfsurf.Line`, circular arcs as :class:`rmfsurf.Arc`, other edges exactly as
     NURBS."""
-    wire = _wire_of(path, "wire", "a Part.Wire, a Part.Edge or a sketch with one wire")
+    return _path_edges(path, "path")
+
+
+def _path_edges(path: Any, name: str) -> List[Edge]:
+    wire = _wire_of(path, name, "a Part.Wire, a Part.Edge or a sketch with one wire")
     result: List[Edge] = []
     for e in wire.OrderedEdges:
         reverse = e.Orientation == "Reversed"
@@ -317,19 +327,19 @@ def _plane_x_axis(plane: Any) -> Any:
     return axis if axis is not None else plane.Rotation.multVec(V(1, 0, 0))
 
 
-def profile_curves(profile: Any, origin: Any, tangent: Any, tolerance: float = 1e-4
+def profile_curves(profile: Any, origin: ArrayLike, tangent: ArrayLike, tolerance: float = 1e-4
                    ) -> Tuple[Curve, List[Curve], np.ndarray]:
     """A planar profile (Part.Face with holes, closed Part.Wire, closed wires nested as
     outer loop and holes, or a sketch of them) in the plane
     normal to `tangent` through `origin`, as the 2-D outer curve, holes and initial normal
     f2 (the x direction of the profile's placement, e.g. the sketch's x axis) of
     :func:`rmfsurf.wire_sweep`."""
+    o = _core.vector(origin, "origin", finite_only=True)
+    t = _core.direction(tangent, "tangent")
+    tolerance = _core.finite(tolerance, "tolerance", positive=True)
     face = _profile_face(_shape_of(profile, "profile"))
     if not isinstance(face.Surface, Part.Plane):
         raise ValueError("profile: not planar")
-    o = np.asarray(origin, dtype=float)
-    t = np.asarray(tangent, dtype=float)
-    t /= np.linalg.norm(t)
     normal = np.array(tuple(face.Surface.Axis))
     tilt = np.linalg.norm(np.cross(normal, t))
     if tilt > 1e-6:
@@ -356,6 +366,7 @@ def part_shape(value: Shape, tolerance: float = 1e-6) -> Any:
     into a Part.Solid when the shape is a solid, else the lateral faces sewn into a
     Part.Shell (a Part.Compound of shells when the profile has holes: the outer and inner
     walls do not meet)."""
+    tolerance = _core.finite(tolerance, "tolerance", positive=True)
     faces = []
     for f in _core.instance(value, "shape", Shape, "an rmfsurf.Shape").faces():
         if f.kind == "swept":
@@ -414,7 +425,8 @@ def sweep_with_report(wire: Any, profile: Any, *, solid: bool = True, corner: st
     `closure_symmetry` (closed wires: the frame closes modulo 2π/k), returning the
     Part.Shape and the library's :class:`rmfsurf.SweepReport` (spine distance, RMF angle
     error, parameter-line orthogonality, singularity margin, face count)."""
-    edges = path_edges(wire)
+    tolerance = _core.finite(tolerance, "tolerance", positive=True)
+    edges = _path_edges(wire, "wire")
     origin, tangent = _start_frame(wire)
     outer, holes, f2 = profile_curves(profile, origin, tangent, tolerance)
     result = wire_sweep(edges, outer, holes, solid=solid, corner=corner,
@@ -432,6 +444,7 @@ def cone_spline_from_face(face: Any, tolerance: float = 1e-4, max_pieces: int = 
     """A developable face (its NURBS form of degree 1 in one direction: the rulings)
     approximated by a cone spline. Returns (spline, t_min, t_max, max_error): the strip
     spans the first ruling's length about its middle."""
+    _core.instance(face, "face", Part.Face, "a Part.Face")
     nurbs = face.toNurbs().Faces[0].Surface
     if nurbs.UDegree != 1 and nurbs.VDegree != 1:
         raise ValueError("face: not ruled: its NURBS form has degree (%d, %d), and a "
@@ -447,6 +460,8 @@ def cone_spline_from_face(face: Any, tolerance: float = 1e-4, max_pieces: int = 
 def flat_pattern_edges(developed: ConeSpline, t_min: float, t_max: float) -> List[Any]:
     """The cutting outline of a developed cone spline strip as Part edges: circular arcs
     (or lines) along both boundaries, one per boundary segment, and the two end rulings."""
+    _core.instance(developed, "developed", ConeSpline, "an rmfsurf.ConeSpline")
+    t_min, t_max = _core.finite(t_min, "t_min"), _core.finite(t_max, "t_max")
     edges = []
     for t in (t_min, t_max):
         boundary = developed.boundary(t)
@@ -501,6 +516,7 @@ def transition(bottom: Any, top: Any, thickness: float = 1.0, k_factor: float = 
 
 def part_solid(part: SheetPart) -> Any:
     """The formed part as a ``Part.Solid``: its STEP solid, read by FreeCAD."""
+    _core.instance(part, "part", SheetPart, "an rmfsurf.SheetPart")
     import os
     import tempfile
     with tempfile.TemporaryDirectory(prefix="rmfsurf") as directory:
@@ -515,6 +531,7 @@ def part_solid(part: SheetPart) -> Any:
 def flat_pattern(part: SheetPart) -> Tuple[Any, Any]:
     """(the flat pattern of the neutral layer as a face in z = 0 bounded by Part lines and
     arcs, the bend lines as a compound of segments)."""
+    _core.instance(part, "part", SheetPart, "an rmfsurf.SheetPart")
     outline, bends = [], []
     for e in part.flat_edges():
         a, b = V(e.start[0], e.start[1], 0), V(e.end[0], e.end[1], 0)
@@ -547,6 +564,7 @@ def sweep_selection(selection: Any, document: Any, method: str = "ph-rmf",
                     tolerance: float = 1e-4) -> Any:
     """Sweeps the selected sketch, in its own xy coordinates, along the selected edge with
     frames by `method` (one face per sketch edge, :func:`sweep_sketch_along_edge`)."""
+    tolerance = _core.finite(tolerance, "tolerance", positive=True)
     sketch = _selected(selection, lambda o, n, s: o if o.TypeId == "Sketcher::SketchObject" else None)
     edge = _selected(selection, lambda o, n, s: s if n.startswith("Edge") and o is not sketch else None)
     if sketch is None or edge is None:
@@ -560,6 +578,7 @@ def sweep_selection(selection: Any, document: Any, method: str = "ph-rmf",
 def cone_spline_selection(selection: Any, document: Any, tolerance: float = 1e-4) -> List[Any]:
     """The selected developable face as a cone spline surface, its development (a flat
     face in the xy-plane) and its cutting outline."""
+    tolerance = _core.finite(tolerance, "tolerance", positive=True)
     face = _selected(selection, lambda o, n, s: s if n.startswith("Face") else None)
     if face is None:
         raise ValueError("select one developable face")
@@ -585,6 +604,9 @@ def transition_selection(selection: Any, document: Any, thickness: float = 1.0,
     wires (or objects whose shape is one): the formed solid, the flat pattern of the
     neutral layer (a face in the xy-plane; export it as DXF for the cutter) and its bend
     lines."""
+    thickness = _core.finite(thickness, "thickness", positive=True)
+    k_factor = _core.finite(k_factor, "k_factor")
+    tolerance = _core.finite(tolerance, "tolerance", positive=True)
     shapes = []
     for item in selection:
         subs = [s for s in (item.SubObjects or []) if s is not None]

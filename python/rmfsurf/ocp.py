@@ -32,7 +32,7 @@ from typing import Any, List, Optional, Tuple
 import numpy as np
 
 from . import _core
-from .curves import Curve, NurbsCurve, join_nurbs
+from .curves import ArrayLike, Curve, NurbsCurve, join_nurbs
 from .shapes import Arc, CurveEdge, Edge, Line, Shape, wire_sweep
 from .surfaces import Surface
 
@@ -212,6 +212,7 @@ def bspline_surface(value: Surface) -> Geom_BSplineSurface:
 
 def face(value: Surface, tolerance: float = 1e-7) -> Any:
     """An :class:`rmfsurf.Surface` as a ``TopoDS_Face`` bounded by its parameter domain."""
+    tolerance = _core.finite(tolerance, "tolerance", positive=True)
     return BRepBuilderAPI_MakeFace(bspline_surface(value), tolerance).Face()
 
 
@@ -326,14 +327,14 @@ def _wire_curve(wire: Any, origin: np.ndarray, f2: np.ndarray, f3: np.ndarray,
     return Curve.from_nurbs(joined.degree, joined.poles, joined.knots, joined.weights)
 
 
-def profile_curves(profile: Any, origin: Any, tangent: Any, tolerance: float = 1e-4
+def profile_curves(profile: Any, origin: ArrayLike, tangent: ArrayLike, tolerance: float = 1e-4
                    ) -> Tuple[Curve, List[Curve], np.ndarray]:
     """A planar profile placed in space (normal to `tangent` through `origin`) as the
     2-D outer curve, hole curves and initial normal f2 of :func:`rmfsurf.wire_sweep`.
     f2 is the x direction of the profile's plane."""
-    origin = np.asarray(origin, dtype=float)
-    t = np.asarray(tangent, dtype=float)
-    t = t / np.linalg.norm(t)
+    origin = _core.vector(origin, "origin", finite_only=True)
+    t = _core.direction(tangent, "tangent")
+    tolerance = _core.finite(tolerance, "tolerance", positive=True)
     outer, inner, plane = _profile_plane(profile, tolerance)
     axis = plane.Position()
     normal = np.array(axis.Direction().Coord())
@@ -369,7 +370,7 @@ def shape(value: Shape, tolerance: float = 1e-6) -> Any:
     """An :class:`rmfsurf.Shape` as OCP: its swept faces (``Geom_BSplineSurface``) and
     planar caps sewn together, closed into a ``TopoDS_Solid`` when the shape is a solid
     (else the sewn shell)."""
-    sewing = BRepBuilderAPI_Sewing(tolerance)
+    sewing = BRepBuilderAPI_Sewing(_core.finite(tolerance, "tolerance", positive=True))
     for f in _core.instance(value, "shape", Shape, "an rmfsurf.Shape").faces():
         if f.kind == "swept":
             sewing.Add(face(f.surface))
@@ -402,6 +403,7 @@ def closed_solid(sewn: Any) -> Any:
 def volume(value: Any, relative_error: float = 1e-9) -> float:
     """The volume of an OCP solid (BRepGProp's adaptive integration to `relative_error`;
     the fixed-order default is off by 1e-4 on the library's degree-(2, 9) faces)."""
+    relative_error = _core.finite(relative_error, "relative_error", positive=True)
     props = GProp_GProps()
     BRepGProp.VolumeProperties_s(_unwrap(value), props, relative_error)
     return props.Mass()
@@ -444,6 +446,7 @@ def sweep(path: Any, profile: Any, *, solid: bool = True, corner: str = "round",
         A ``TopoDS_Solid`` (or shell) — a build123d ``Solid`` / CadQuery ``Shape`` when
         `path` was a build123d / CadQuery object — to fuse, cut and export.
     """
+    tolerance = _core.finite(tolerance, "tolerance", positive=True)
     edges = path_edges(path)
     origin, tangent = _start_frame(path)
     outer, holes, f2 = profile_curves(profile, origin, tangent, tolerance)

@@ -11,6 +11,7 @@ coordinates.
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass
 from typing import Any, List, Optional, Sequence, Tuple, Union
 
@@ -66,13 +67,8 @@ def corners() -> dict:
 
 def _edges(edges: Sequence[Edge]) -> Tuple[Any, int, List[Any]]:
     """An RmfEdge array, its length, and what must stay alive during the call."""
-    if isinstance(edges, (Line, Arc, CurveEdge)):
-        edges = [edges]
-    try:
-        edges = list(edges)
-    except TypeError:
-        raise TypeError("edges: expected a sequence of rmfsurf.Line, Arc or CurveEdge, got %s"
-                        % type(edges).__name__) from None
+    edges = _core.objects(edges, "edges", (Line, Arc, CurveEdge),
+                          "an rmfsurf.Line, Arc or CurveEdge")
     array = ffi.new("RmfEdge[]", max(len(edges), 1))
     keep: List[Any] = []
     for i, e in enumerate(edges):
@@ -91,9 +87,6 @@ def _edges(edges: Sequence[Edge]) -> Tuple[Any, int, List[Any]]:
             item.kind = lib.RMF_EDGE_CURVE
             item.curve = as_curve(e.curve, name + ".curve")._ptr
             keep.append(e.curve)
-        else:
-            raise TypeError("%s: expected an rmfsurf.Line, Arc or CurveEdge, got %s"
-                            % (name, type(e).__name__))
     return array, len(edges), keep
 
 
@@ -172,15 +165,17 @@ class Shape:
         return SweepReport(r.spine_distance, r.rmf_angle_error, r.max_parameter_cosine,
                            r.singularity_margin, int(r.face_count))
 
-    def write_step(self, path: str) -> None:
-        """Writes the shape as a STEP file (exact faces, a closed shell for a solid)."""
-        call("rmf_shape_write_step", self._ptr, str(path).encode())
+    def write_step(self, path: Union[str, bytes, "os.PathLike[Any]"]) -> None:
+        """Writes the shape as a STEP file (exact faces, a closed shell for a solid) at
+        `path` (str, bytes or os.PathLike; InvalidInputError for a name with a NUL)."""
+        call("rmf_shape_write_step", self._ptr, _core.path(path, "path"))
 
     def __repr__(self) -> str:
         return "<rmfsurf.Shape %d faces%s>" % (self.face_count, ", solid" if self.is_solid else "")
 
 
-def wire_sweep(edges: Sequence[Edge], profile: Curve, holes: Sequence[Curve] = (), *,
+def wire_sweep(edges: Union[Edge, Sequence[Edge]], profile: Curve,
+               holes: Union[Curve, Sequence[Curve]] = (), *,
                solid: bool = True, corner: str = "round",
                corner_radius: Optional[float] = None, tolerance: float = 1e-4,
                join_tolerance: Optional[float] = None,
@@ -189,9 +184,10 @@ def wire_sweep(edges: Sequence[Edge], profile: Curve, holes: Sequence[Curve] = (
     """Sweeps a closed profile (with `holes`) along a connected wire of `edges`.
 
     Args:
-        edges: :class:`Line`, :class:`Arc` and :class:`CurveEdge` items, end to end.
+        edges: :class:`Line`, :class:`Arc` and :class:`CurveEdge` items, end to end (or
+            one of them).
         profile: closed curve in the start normal plane, x along f2, y along f3.
-        holes: closed curves inside the profile, same coordinates.
+        holes: closed curves inside the profile, same coordinates (or one curve).
         solid: close the shape with planar caps (needs a closed profile).
         corner: "round" (the profile swept around the corner) or "miter".
         corner_radius: the rounding radius of "round" corners (None: the library's).
@@ -205,7 +201,7 @@ def wire_sweep(edges: Sequence[Edge], profile: Curve, holes: Sequence[Curve] = (
     _require_wire_sweep()
     array, count, keep = _edges(edges)
     prof = as_curve(profile, "profile")
-    hole_list = [as_curve(h, "holes[%d]" % i) for i, h in enumerate(holes)]
+    hole_list = _core.objects(holes, "holes", Curve, "an rmfsurf.Curve")
     hole_array = ffi.new("RmfCurve *[]", [h._ptr for h in hole_list] or [ffi.NULL])
     options = ffi.new("RmfWireSweepOptions *")
     call("rmf_wire_sweep_options_init", options)
@@ -218,7 +214,7 @@ def wire_sweep(edges: Sequence[Edge], profile: Curve, holes: Sequence[Curve] = (
     if initial_normal is not None:
         options.initial_normal = _core.vec3(initial_normal, "initial_normal")
     options.twist = _core.number(twist, "twist")
-    options.closure_symmetry = _core.integer(closure_symmetry, "closure_symmetry")
+    options.closure_symmetry = _core.integer(closure_symmetry, "closure_symmetry", "uint32_t")
     options.solid = 1 if solid else 0
     out = ffi.new("RmfShape **")
     call("rmf_wire_sweep", array, count, prof._ptr, hole_array, len(hole_list), options, out)

@@ -155,13 +155,8 @@ class SheetPart(ConeSpline):
 
 
 def _flat_points(value: ArrayLike, name: str) -> np.ndarray:
-    try:
-        array = np.ascontiguousarray(value, dtype=np.float64)
-    except (TypeError, ValueError) as e:
-        raise TypeError("%s: expected an array of flat points (shape (n, 2)) (%s)" % (name, e)) from None
-    if array.ndim != 2 or array.shape[1] != 2:
-        raise ValueError("%s: expected an array of shape (n, 2), got shape %s" % (name, array.shape))
-    return array
+    # Finite here: the library calls them "flat".
+    return _core.rows(value, name, 2, "an array of flat points (shape (n, 2))", finite_only=True)
 
 
 def _options(thickness: float, k_factor: float, tolerance: float, reference: str,
@@ -174,7 +169,7 @@ def _options(thickness: float, k_factor: float, tolerance: float, reference: str
     options.tolerance = _core.number(tolerance, "tolerance")
     options.reference = _core.choice(reference, "reference", REFERENCES)
     options.flat_tolerance = _core.number(flat_tolerance, "flat_tolerance")
-    options.max_pieces = _core.integer(max_pieces, "max_pieces", 2)
+    options.max_pieces = _core.integer(max_pieces, "max_pieces", "size_t", 2)
     return options
 
 

@@ -72,12 +72,9 @@ class Surface:
                    knots_v: ArrayLike, weights: Optional[ArrayLike] = None) -> "Surface":
         """A surface from NURBS data: poles (nu, nv, 3), i along u; weights (nu, nv) or None;
         clamped knot vectors of nu + degree_u + 1 and nv + degree_v + 1 knots."""
-        du = _core.integer(degree_u, "degree_u", 1)
-        dv = _core.integer(degree_v, "degree_v", 1)
-        try:
-            grid = np.ascontiguousarray(poles, dtype=np.float64)
-        except (TypeError, ValueError) as e:
-            raise TypeError("poles: expected an array of shape (nu, nv, 3) (%s)" % e) from None
+        du = _core.integer(degree_u, "degree_u", "uint32_t", 1)
+        dv = _core.integer(degree_v, "degree_v", "uint32_t", 1)
+        grid = _core.float_array(poles, "poles", "an array of shape (nu, nv, 3)")
         if grid.ndim != 3 or grid.shape[2] != 3:
             raise ValueError("poles: expected an array of shape (nu, nv, 3), got shape %s"
                              % (grid.shape,))
@@ -85,7 +82,7 @@ class Surface:
         flat = grid.reshape(nu * nv, 3)
         w = None
         if weights is not None:
-            w = np.ascontiguousarray(weights, dtype=np.float64)
+            w = _core.float_array(weights, "weights", "an array of shape (nu, nv)")
             if w.shape != (nu, nv):
                 raise ValueError("weights: expected shape %s, got %s" % ((nu, nv), w.shape))
             w = w.reshape(nu * nv)
@@ -107,8 +104,13 @@ class Surface:
     def eval(self, u: ArrayLike, v: ArrayLike, derivatives: bool = False) -> Any:
         """s(u, v), broadcasting u and v against each other: shape (3,) for scalars,
         (..., 3) otherwise; with ``derivatives=True`` also ∂s/∂u and ∂s/∂v."""
-        uu, vv = np.broadcast_arrays(np.asarray(u, dtype=np.float64),
-                                     np.asarray(v, dtype=np.float64))
+        u = _core.float_array(u, "u", "a number or an array of numbers", contiguous=False)
+        v = _core.float_array(v, "v", "a number or an array of numbers", contiguous=False)
+        try:
+            uu, vv = np.broadcast_arrays(u, v)
+        except ValueError:
+            raise ValueError("u, v: shapes %s and %s do not broadcast against each other"
+                             % (u.shape, v.shape)) from None
         shape = uu.shape
         uf, vf = uu.reshape(-1), vv.reshape(-1)
         out = np.empty((3, uf.shape[0], 3))
@@ -167,8 +169,8 @@ class Surface:
         """A triangle mesh: every patch sampled on (u_steps + 1) × (v_steps + 1) points.
         Returns points (n, 3) and triangles (m, 3) of point indices (uint32),
         counter-clockwise seen from the side ∂s/∂u × ∂s/∂v points to."""
-        us = _core.integer(u_steps, "u_steps", 1)
-        vs = _core.integer(v_steps, "v_steps", 1)
+        us = _core.integer(u_steps, "u_steps", "uint32_t", 1)
+        vs = _core.integer(v_steps, "v_steps", "uint32_t", 1)
         n_points, n_triangles = ffi.new("size_t *"), ffi.new("size_t *")
         call("rmf_surface_tessellate", self._ptr, us, vs, ffi.NULL, 0, ffi.NULL, 0, n_points,
              n_triangles)
@@ -236,7 +238,8 @@ def parabolic_points(spine: Curve, frames: Frames, profile: Curve, v_samples: in
     """The parabolic points (K = 0) on `v_samples` spine parameters as (u, v, kind), kind
     "profile", "spine" or "normal" (cases 1–3 of §2.3 of Mäurer & Jüttler)."""
     args = (as_curve(spine, "spine")._ptr, as_frames(frames, "frames")._ptr,
-            as_curve(profile, "profile")._ptr, _core.integer(v_samples, "v_samples", 2))
+            as_curve(profile, "profile")._ptr,
+            _core.integer(v_samples, "v_samples", "uint32_t", 2))
     count = ffi.new("size_t *")
     call("rmf_sweep_parabolic_points", *args, ffi.NULL, 0, count)
     buffer = ffi.new("RmfParabolicPoint[]", max(count[0], 1))

@@ -1,0 +1,211 @@
+"""Bad arguments of rmfsurf.freecad (issue 25), run by test_arguments.py in a separate pytest
+process with FreeCAD's module directory on sys.path (RMFSURF_FREECAD_LIB): the same classes
+and checks as test_arguments.py, and the coverage of the adapter's arguments by their
+annotations."""
+
+import functools
+import math
+import os
+import sys
+
+import numpy as np
+import pytest
+
+sys.path.append(os.environ.get("RMFSURF_FREECAD_LIB", "/usr/lib/freecad-python3/lib"))
+FreeCAD = pytest.importorskip("FreeCAD")
+Part = pytest.importorskip("Part")
+
+import rmfsurf  # noqa: E402
+import rmfsurf.freecad as rfc  # noqa: E402
+from arguments import (BEYOND_DOUBLE, MAXIMUM, NON_FINITE, NOT_INTEGERS, NOT_NUMBERS,  # noqa: E402
+                       api_arguments, argument, missing_cases, out_of_range, parametrize,
+                       refused)
+from test_core import helix_data, twisted_cubic  # noqa: E402
+
+V = FreeCAD.Vector
+
+
+class Inputs:
+    """Valid FreeCAD inputs, built when a case first needs them."""
+
+    @functools.cached_property
+    def spline(self):
+        return rmfsurf.ph_spline_hermite(*helix_data())
+
+    @functools.cached_property
+    def line(self):
+        return Part.makeLine(V(0, 0, 0), V(10, 0, 0))
+
+    @functools.cached_property
+    def wire(self):
+        return Part.Wire([Part.makeLine(V(0, 0, 0), V(20, 0, 0)),
+                          Part.makeLine(V(20, 0, 0), V(20, 20, 0))])
+
+    @functools.cached_property
+    def ring(self):
+        return Part.Face(Part.Wire(Part.makeCircle(1.0, V(0, 0, 0), V(1, 0, 0))))
+
+    @functools.cached_property
+    def shape(self):
+        return rmfsurf.wire_sweep([rmfsurf.Line((0, 0, 0), (10, 0, 0))], rfc.curve(
+            Part.makeCircle(1.0, V(0, 0, 0), V(0, 0, 1))))
+
+    @functools.cached_property
+    def plane(self):
+        return Part.makePlane(10, 4)
+
+    @functools.cached_property
+    def developed(self):
+        return rmfsurf.cone_spline_approximate(twisted_cubic(), (0.5, 6.0), 1e-3).develop()
+
+    @functools.cached_property
+    def square(self):
+        return Part.makePolygon([V(-100, -100, 0), V(100, -100, 0), V(100, 100, 0),
+                                 V(-100, 100, 0), V(-100, -100, 0)])
+
+    @functools.cached_property
+    def top(self):
+        return Part.makeCircle(60.0, V(20, 0, 150), V(0, 0, 1))
+
+
+IN = Inputs()
+
+
+INTEGERS = [
+    ("freecad.spine_with_frames(segments)", 1, 2 ** 24,
+     lambda v: rfc.spine_with_frames(IN.spline, "rrmf", segments=v)),
+    ("freecad.sweep_with_report(closure_symmetry)", 0, MAXIMUM["uint32_t"],
+     lambda v: rfc.sweep_with_report(IN.wire, IN.ring, closure_symmetry=v)),
+    ("freecad.cone_spline_from_face(max_pieces)", 2, MAXIMUM["size_t"],
+     lambda v: rfc.cone_spline_from_face(IN.plane, max_pieces=v)),
+]
+
+
+@pytest.mark.parametrize("case, value", parametrize(INTEGERS, lambda c: out_of_range(c[1], c[2])))
+def test_an_integer_out_of_range_is_invalid_input_naming_the_argument_and_range(case, value):
+    key, minimum, maximum, call = case
+    message = refused(call, value, rmfsurf.InvalidInputError, argument(key))
+    assert "%d to %d" % (minimum, maximum) in message, message
+
+
+@pytest.mark.parametrize("case, value", parametrize(  # segments=None: the default, 16
+    INTEGERS, lambda c: [v for v in NOT_INTEGERS if v is not None or "segments" not in c[0]]))
+def test_a_non_integer_is_a_type_error_naming_the_argument(case, value):
+    refused(case[3], value, TypeError, argument(case[0]))
+
+
+NUMBERS = [
+    ("freecad.spine_with_frames(tolerance)", lambda v: rfc.spine_with_frames(IN.spline,
+                                                                             tolerance=v)),
+    ("freecad.sweep_sketch_along_edge(tolerance)",
+     lambda v: rfc.sweep_sketch_along_edge(None, IN.line, tolerance=v)),
+    ("freecad.profile_curves(tolerance)",
+     lambda v: rfc.profile_curves(IN.ring, (0, 0, 0), (1, 0, 0), v)),
+    ("freecad.part_shape(tolerance)", lambda v: rfc.part_shape(IN.shape, v)),
+    ("freecad.sweep(tolerance)", lambda v: rfc.sweep(IN.wire, IN.ring, tolerance=v)),
+    ("freecad.sweep(corner_radius)", lambda v: rfc.sweep(IN.wire, IN.ring, corner_radius=v)),
+    ("freecad.sweep_with_report(tolerance)",
+     lambda v: rfc.sweep_with_report(IN.wire, IN.ring, tolerance=v)),
+    ("freecad.sweep_with_report(corner_radius)",
+     lambda v: rfc.sweep_with_report(IN.wire, IN.ring, corner_radius=v)),
+    ("freecad.sweep_with_report(twist)",
+     lambda v: rfc.sweep_with_report(IN.wire, IN.ring, twist=v)),
+    ("freecad.cone_spline_from_face(tolerance)",
+     lambda v: rfc.cone_spline_from_face(IN.plane, v)),
+    ("freecad.flat_pattern_edges(t_min)",
+     lambda v: rfc.flat_pattern_edges(IN.developed, v, 0.1)),
+    ("freecad.flat_pattern_edges(t_max)",
+     lambda v: rfc.flat_pattern_edges(IN.developed, -0.1, v)),
+    ("freecad.transition(thickness)", lambda v: rfc.transition(IN.square, IN.top, v)),
+    ("freecad.transition(k_factor)", lambda v: rfc.transition(IN.square, IN.top, k_factor=v)),
+    ("freecad.transition(tolerance)", lambda v: rfc.transition(IN.square, IN.top, tolerance=v)),
+    ("freecad.sweep_selection(tolerance)", lambda v: rfc.sweep_selection([], None, tolerance=v)),
+    ("freecad.cone_spline_selection(tolerance)",
+     lambda v: rfc.cone_spline_selection([], None, tolerance=v)),
+    ("freecad.transition_selection(thickness)",
+     lambda v: rfc.transition_selection([], None, thickness=v)),
+    ("freecad.transition_selection(k_factor)",
+     lambda v: rfc.transition_selection([], None, k_factor=v)),
+    ("freecad.transition_selection(tolerance)",
+     lambda v: rfc.transition_selection([], None, tolerance=v)),
+]
+
+
+@pytest.mark.parametrize("case, value", parametrize(NUMBERS, lambda c: BEYOND_DOUBLE))
+def test_a_number_beyond_a_double_is_invalid_input_naming_the_argument(case, value):
+    refused(case[1], value, rmfsurf.InvalidInputError, argument(case[0]))
+
+
+#: The arguments where None means "the library's default".
+OPTIONAL = {"freecad.sweep(corner_radius)", "freecad.sweep_with_report(corner_radius)"}
+
+
+@pytest.mark.parametrize("case, value", parametrize(
+    NUMBERS, lambda c: [v for v in NOT_NUMBERS if v is not None or c[0] not in OPTIONAL]))
+def test_a_non_number_is_a_type_error_naming_the_argument(case, value):
+    refused(case[1], value, TypeError, argument(case[0]))
+
+
+@pytest.mark.parametrize("case, value", parametrize(NUMBERS, lambda c: NON_FINITE))
+def test_nan_and_infinity_are_invalid_input_naming_the_argument(case, value):
+    refused(case[1], value, rmfsurf.InvalidInputError, argument(case[0]))
+
+
+BAD_VECTORS = [((0.0, 1.0), ValueError), ([[0, 0, 1]], ValueError), (("a", 0, 1), TypeError),
+               ((0, 0, 10 ** 400), rmfsurf.InvalidInputError)]
+ARRAYS = [
+    ("freecad.vector(p)", lambda v: rfc.vector(v)),
+    ("freecad.spine_with_frames(initial_normal)",
+     lambda v: rfc.spine_with_frames(IN.spline, initial_normal=v)),
+    ("freecad.sweep_sketch_along_edge(initial_normal)",
+     lambda v: rfc.sweep_sketch_along_edge(None, IN.line, initial_normal=v)),
+    ("freecad.profile_curves(origin)", lambda v: rfc.profile_curves(IN.ring, v, (1, 0, 0))),
+    ("freecad.profile_curves(tangent)", lambda v: rfc.profile_curves(IN.ring, (0, 0, 0), v)),
+]
+
+
+@pytest.mark.parametrize("case, bad", parametrize(ARRAYS, lambda c: BAD_VECTORS))
+def test_a_bad_vector_names_the_argument(case, bad):
+    value, exception = bad
+    refused(case[1], value, exception, argument(case[0]))
+
+
+def test_non_finite_placements_are_invalid_input():
+    for value in ((0, math.nan, 0), (math.inf, 0, 0)):
+        refused(lambda v: rfc.profile_curves(IN.ring, v, (1, 0, 0)), value,
+                rmfsurf.InvalidInputError, "origin")
+    for value in ((0, 0, 0), (math.nan, 0, 0)):
+        refused(lambda v: rfc.profile_curves(IN.ring, (0, 0, 0), v), value,
+                rmfsurf.InvalidInputError, "tangent")
+
+
+def test_wrong_objects_name_the_argument():
+    refused(lambda v: rfc.spine_with_frames(v), IN.line, TypeError, "spine")
+    refused(lambda v: rfc.spine_with_frames(IN.spline, v), "ph_rmf", ValueError, "method")
+    refused(lambda v: rfc.path_edges(v), 3, TypeError, "path")
+    refused(lambda v: rfc.sweep(v, IN.ring), 3, TypeError, "wire")
+    refused(lambda v: rfc.cone_spline_from_face(v), IN.line, TypeError, "face")
+    refused(lambda v: rfc.flat_pattern_edges(v, -0.1, 0.1), IN.spline, TypeError, "developed")
+    refused(lambda v: rfc.part_solid(v), IN.developed, TypeError, "part")
+    refused(lambda v: rfc.flat_pattern(v), IN.developed, TypeError, "part")
+
+
+def test_a_segment_count_of_zero_is_refused_not_replaced_by_the_default():
+    refused(lambda v: rfc.spine_with_frames(IN.spline, "mobius", segments=v), 0,
+            rmfsurf.InvalidInputError, "segments")
+    curve, _ = rfc.spine_with_frames(IN.spline, "mobius", segments=np.int32(3))
+    assert curve.segment_count == rmfsurf.mobius_rrmf_approximate(IN.spline, 3)[0].segment_count
+    assert curve.segment_count != rmfsurf.mobius_rrmf_approximate(IN.spline, 16)[0].segment_count
+
+
+CASES = {
+    "integer": {c[0] for c in INTEGERS},
+    "number": {c[0] for c in NUMBERS},
+    "array": {c[0] for c in ARRAYS},
+}
+
+
+def test_every_argument_of_the_adapter_has_its_cases():
+    required = api_arguments(rfc, "freecad.", "rmfsurf.freecad")
+    assert len(required) >= 25, required
+    assert missing_cases(required, CASES) == []
