@@ -11,6 +11,7 @@ use libc::c_char;
 use rmfsurf::{FaceKind, Shape};
 use std::ffi::CStr;
 use std::io::Write;
+use std::sync::atomic::{AtomicU64, Ordering};
 
 /// What a face of an RmfShape is (values fixed).
 /// \ingroup rmf_wire
@@ -325,12 +326,32 @@ pub unsafe extern "C" fn rmf_shape_write_step(
     })
 }
 
-/// Writes `bytes` beside `path` under a temporary name, then renames it to `path`.
+/// Writes `bytes` beside `path` under a temporary name, then renames it to `path`. The
+/// temporary name is the process's and a call's own (a counter), created exclusively: threads
+/// and processes writing the same path at once each finish their file, and the last rename
+/// wins with a whole file.
 fn write_atomically(path: &std::path::Path, bytes: &[u8]) -> std::io::Result<()> {
+    static CALLS: AtomicU64 = AtomicU64::new(0);
     let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("shape");
-    let temp = path.with_file_name(format!(".{name}.rmfsurf-{}.tmp", std::process::id()));
-    let result = std::fs::File::create(&temp)
-        .and_then(|mut f| f.write_all(bytes).and_then(|()| f.sync_all()))
+    // A name left by an earlier process of the same id is skipped, never overwritten.
+    let (temp, file) = loop {
+        let call = CALLS.fetch_add(1, Ordering::Relaxed);
+        let temp =
+            path.with_file_name(format!(".{name}.rmfsurf-{}-{call}.tmp", std::process::id()));
+        match std::fs::OpenOptions::new()
+            .write(true)
+            .create_new(true)
+            .open(&temp)
+        {
+            Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
+            Err(e) => return Err(e),
+            Ok(file) => break (temp, file),
+        }
+    };
+    let mut file = file;
+    let result = file
+        .write_all(bytes)
+        .and_then(|()| file.sync_all())
         .and_then(|()| std::fs::rename(&temp, path));
     if result.is_err() {
         let _ = std::fs::remove_file(&temp);
