@@ -12,7 +12,7 @@ use super::status::RmfStatus;
 use super::types::RmfVec3;
 use rmfsurf::glam::DVec3;
 use rmfsurf::PiecewiseCurve;
-use rmfsurf::{sweep_wire, Corner, Edge, WireSweep};
+use rmfsurf::{sweep_wire, Corner, Edge, WireSweep, MAX_FACES};
 
 /// What an RmfEdge is (values fixed, validated).
 /// \ingroup rmf_wire
@@ -269,6 +269,16 @@ pub unsafe extern "C" fn rmf_wire_sweep(
         let out = out_ptr(out, "out")?;
         if edge_count == 0 {
             return invalid_arg("edge_count = 0: a wire needs at least one edge".into());
+        }
+        // Each edge and each hole gives at least one lateral face: counts beyond the face
+        // bound are refused before any edge is read.
+        for (name, count) in [("edge_count", edge_count), ("hole_count", hole_count)] {
+            if count > MAX_FACES {
+                return invalid_arg(format!(
+                    "{name} = {count}: a wire sweep has at most {MAX_FACES} lateral faces, one \
+                     or more per edge and per profile segment"
+                ));
+            }
         }
         let edges = wire_edges(slice(edges, edge_count, "edges")?)?;
         let profile = reference(profile, "profile")?;

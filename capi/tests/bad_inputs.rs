@@ -1626,6 +1626,42 @@ fn rows() -> Vec<Row> {
             call: |_| wire_sweep(&pipe_route(), circle(1.0), &[], |o| o.struct_size = 0),
         },
         Row {
+            what: "wire of more edges than faces allowed",
+            function: "rmf_wire_sweep",
+            expected: INVALID,
+            names: "edge_count = 65537: a wire sweep has at most 65536 lateral faces",
+            call: |_| {
+                let points: Vec<RmfVec3> = (0..=65_537).map(|k| v(k as f64, 0., 0.)).collect();
+                wire_sweep(&polyline(&points), circle(0.1), &[], |_| {})
+            },
+        },
+        Row {
+            what: "wire crossing itself within the profile",
+            function: "rmf_wire_sweep",
+            expected: INVALID,
+            names: "the sweep intersects itself: the faces along edge 0 and along edge 3",
+            call: |_| {
+                let e = polyline(&[
+                    v(0., 0., 0.),
+                    v(10., 0., 0.),
+                    v(10., 10., 0.),
+                    v(5., 10., 1.),
+                    v(5., -5., 1.),
+                ]);
+                wire_sweep(&e, circle(1.0), &[], |_| {})
+            },
+        },
+        Row {
+            what: "twist beyond what an edge carries",
+            function: "rmf_wire_sweep",
+            expected: INVALID,
+            names: "twist: the frame would turn by",
+            call: |_| {
+                let e = polyline(&[v(0., 0., 0.), v(10., 0., 0.)]);
+                wire_sweep(&e, circle(1.0), &[], |o| o.twist = 1e6)
+            },
+        },
+        Row {
             what: "face index out of range",
             function: "rmf_shape_face",
             expected: INVALID,

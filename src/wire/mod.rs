@@ -123,6 +123,7 @@ pub fn sweep_wire(
     options: &WireSweep,
 ) -> Result<Shape> {
     check_options(options)?;
+    check_counts(edges.len(), profile, holes)?;
     let points: Vec<DVec3> = edges.iter().flat_map(edge_points).collect();
     if let Some((k, p)) = edges.iter().enumerate().find_map(|(k, e)| {
         edge_points(e)
@@ -234,6 +235,29 @@ pub fn sweep_wire(
         margin,
         options.join_tolerance * size_n,
     )
+}
+
+/// Every edge gives at least one lateral face per profile segment: a wire or profile beyond
+/// [`MAX_FACES`] is refused from the counts alone, before anything is built.
+fn check_counts(edges: usize, profile: &PiecewiseCurve, holes: &[PiecewiseCurve]) -> Result<()> {
+    if holes.len() > MAX_FACES {
+        return invalid!(
+            "holes: {} holes, more than a sweep's {MAX_FACES} lateral faces",
+            holes.len()
+        );
+    }
+    let segments = std::iter::once(profile)
+        .chain(holes)
+        .map(|c| c.segments().len())
+        .fold(0usize, usize::saturating_add);
+    let faces = edges.saturating_mul(segments);
+    if faces > MAX_FACES {
+        return invalid!(
+            "the sweep would have at least {faces} lateral faces ({edges} edges × {segments} \
+             profile segments), more than {MAX_FACES}"
+        );
+    }
+    Ok(())
 }
 
 fn check_options(options: &WireSweep) -> Result<()> {
