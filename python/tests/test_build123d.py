@@ -110,3 +110,35 @@ def test_wrong_profile_placement_is_refused():
     tilted = bd.Plane(origin=path @ 0, z_dir=(0, 1, 1)) * bd.Circle(R)
     with pytest.raises(ValueError, match="profile: its plane must be normal to the path"):
         rocp.sweep(path, tilted)
+
+
+def self_intersects(shape):
+    """OpenCascade's own verdict: BOPAlgo_ArgumentAnalyzer with its self-interference
+    check on."""
+    from OCP.BOPAlgo import BOPAlgo_ArgumentAnalyzer
+    analyzer = BOPAlgo_ArgumentAnalyzer()
+    analyzer.SetShape1(shape.wrapped)
+    analyzer.SelfInterMode = True
+    analyzer.Perform()
+    return analyzer.HasFaulty()
+
+
+def crossing_route(height):
+    """Along x, up y, then back across the first leg `height` above it."""
+    return bd.Polyline((0, 0, 0), (60, 0, 0), (60, 60, 0), (30, 60, height),
+                       (30, -30, height))
+
+
+@needs_wire_sweep
+def test_a_route_crossing_itself_within_the_profile_is_refused():
+    path = crossing_route(4.0)
+    # The tubes of radius 3 overlap: OpenCascade's analyzer sees it in build123d's own sweep
+    # (the check can fail), and rmfsurf refuses to make the solid.
+    assert self_intersects(bd.sweep(ring(path, hole=False), path, transition=bd.Transition.ROUND))
+    with pytest.raises(rmfsurf.InvalidInputError, match="intersects itself"):
+        rocp.sweep(path, ring(path, hole=False))
+    # 0.5 above the reach of the profile: a valid solid OpenCascade finds no fault in.
+    path = crossing_route(6.5)
+    pipe = rocp.sweep(path, ring(path, hole=False))
+    assert rocp.is_valid(pipe)
+    assert not self_intersects(pipe)
