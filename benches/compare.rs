@@ -136,14 +136,14 @@ fn ph_case(segments: usize) -> FrameCase {
     let (build, (curve, frames)) = timed(|| {
         let spline = ph_spline_hermite(&points, &tangents).unwrap();
         let rmf = ph_rational_rmf(&spline, &RmfOptions::rmf(NORMAL)).unwrap();
-        (spline, rmf.frames)
+        (spline, rmf.framed.into_parts().1)
     });
     let exact = ExactRmf::new(&curve, NORMAL, 0.0).unwrap();
     FrameCase {
         name: "PH cubic, rational RMF (W)",
         segments,
         build,
-        curve,
+        curve: curve.into_curve(),
         frames,
         reference: Reference::Exact(Box::new(exact)),
     }
@@ -156,8 +156,8 @@ fn mobius_case(segments: usize) -> FrameCase {
         name: "Möbius image, exact RMF",
         segments,
         build,
-        curve: result.curve,
-        frames: result.frames,
+        curve: result.curve().clone(),
+        frames: result.frames().clone(),
         reference: Reference::DoubleReflection,
     }
 }
@@ -171,8 +171,8 @@ fn rrmf_case(segments: usize) -> FrameCase {
         name: "RRMF quintic (N_η 16), exact RMF",
         segments,
         build,
-        curve: spline.curve,
-        frames: spline.frames,
+        curve: spline.framed.curve().clone(),
+        frames: spline.framed.frames().clone(),
         reference: Reference::DoubleReflection,
     }
 }
@@ -384,7 +384,7 @@ impl Profile {
 fn our_sweep(points: &[DVec3], tangents: &[DVec3], profile: &PiecewiseCurve) -> PiecewiseSurface {
     let spline = ph_spline_hermite(points, tangents).unwrap();
     let rmf = ph_rational_rmf(&spline, &RmfOptions::rmf(NORMAL)).unwrap();
-    sweep(&spline, &rmf.frames, profile).unwrap()
+    sweep(&rmf.framed, profile).unwrap()
 }
 
 fn sweeps_section(program: Option<&occ::Program>) {
@@ -424,7 +424,7 @@ fn sweep_row(
         let rmf = ph_rational_rmf(&spine, &RmfOptions::rmf(NORMAL)).unwrap();
         let request = occ::Request {
             spine: occ::Spine::Edges(&spine),
-            profile: profile.occ_input(spine.eval(0.0), &rmf.frames.frame(0.0)),
+            profile: profile.occ_input(spine.eval(0.0), &rmf.framed.frames().frame(0.0)),
             mode: occ::Mode::CorrectedFrenet,
             tolerance: 0.0,
             repeats: REPEATS,

@@ -58,16 +58,16 @@ fn main() {
     }
     let spline = mobius_approximate(&Helix, 1000, seed).unwrap();
     let samples = 100_000;
-    let params = uniform_parameters(spline.curve.domain(), samples);
-    let start = spline.frames.frame(0.0).f2;
+    let params = uniform_parameters(spline.curve().domain(), samples);
+    let start = spline.frames().frame(0.0).f2;
     let (eval, _) = fastest_of(5, || {
         params
             .iter()
-            .map(|&t| spline.frames.frame(t).f2.x)
+            .map(|&t| spline.frames().frame(t).f2.x)
             .sum::<f64>()
     });
     let (reflect, _) = fastest_of(5, || {
-        DoubleReflectionRmf::along(&spline.curve, params.clone(), start).unwrap()
+        DoubleReflectionRmf::along(&spline.curve(), params.clone(), start).unwrap()
     });
     println!(
         "{samples} frames on the 1000-segment spline: exact rational RMF {:.2} ms ({:.0} ns/frame); \
@@ -81,13 +81,13 @@ fn main() {
     // Accuracy on the same curve: double reflection at equal and at 10× the sample count
     // against the exact rational RMF (100× would add ~1e-8 of rounding over 10⁷ steps).
     for factor in [1, 10] {
-        let dr_params = uniform_parameters(spline.curve.domain(), factor * samples);
-        let dr = DoubleReflectionRmf::along(&spline.curve, dr_params.clone(), start).unwrap();
+        let dr_params = uniform_parameters(spline.curve().domain(), factor * samples);
+        let dr = DoubleReflectionRmf::along(&spline.curve(), dr_params.clone(), start).unwrap();
         let err = dr_params
             .iter()
             .zip(dr.frames())
             .step_by(97)
-            .map(|(&t, f)| angle_between(spline.frames.frame(t).f2, f.f2))
+            .map(|(&t, f)| angle_between(spline.frames().frame(t).f2, f.f2))
             .fold(0.0, f64::max);
         println!(
             "double reflection with {} samples vs the exact rational RMF: max angle {err:.2e} rad",

@@ -54,13 +54,13 @@ fn main() {
     ])
     .unwrap()])
     .unwrap();
-    let (t_surface, surface) = timed(|| sweep(&spline, &rmf.frames, &profile).unwrap());
+    let (t_surface, surface) = timed(|| sweep(&rmf.framed, &profile).unwrap());
 
     let params = uniform_parameters(spline.domain(), FRAMES);
     let (t_eval, rational) = timed(|| {
         params
             .iter()
-            .map(|&t| rmf.frames.frame(t))
+            .map(|&t| rmf.framed.frames().frame(t))
             .collect::<Vec<_>>()
     });
     let (t_reflection, reflected) =
@@ -76,8 +76,8 @@ fn main() {
     println!(
         "  rational RMF (W, λ by (40))    {:9.3} ms  ({} frame pieces, degree {})",
         ms(t_rmf),
-        rmf.frames.segments().len(),
-        rmf.frames.segments()[0].degree()
+        rmf.framed.frames().segments().len(),
+        rmf.framed.frames().segments()[0].degree()
     );
     println!(
         "  profile surface (42)           {:9.3} ms  ({} patches of degree ({}, {}))",

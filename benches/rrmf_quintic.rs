@@ -102,7 +102,7 @@ fn spline_of_1000_segments() {
             "rrmf_spline, 1,000 segments, N_η = {samples}: {:.3} s ({:.2} ms per segment, {} frame pieces)",
             total.as_secs_f64(),
             total.as_secs_f64(), // seconds per 1,000 segments = ms per segment
-            spline.frames.segments().len()
+            spline.framed.frames().segments().len()
         );
         black_box(spline);
     }

@@ -857,6 +857,65 @@ static void test_approximate_with_options(void) {
     rmf_curve_free(analytic);
 }
 
+/* rmf_framed_spine: for every method, a spine within the tolerance of a NURBS cubic (measured
+ * here with the suite's evaluator: 20 points per spine segment against the cubic, refined by
+ * Newton), frames adapted to the spine; unknown methods, a zero tolerance and NULL
+ * out-pointers refused with nothing written. */
+static void test_framed_spine(void) {
+    const RmfVec3 poles[4] = {{0, 0, 0}, {1, 1, 0}, {2, -1, 1}, {3, 0, 2}};
+    const double knots[8] = {0, 0, 0, 0, 1, 1, 1, 1};
+    const double tolerance = 1e-4;
+    RmfCurve *cubic = NULL, *untouched_curve = (RmfCurve *)&knots;
+    RmfFrames *untouched_frames = (RmfFrames *)&knots;
+    RmfNurbsCurve input;
+    uint32_t method;
+    CHECK_STATUS(rmf_nurbs_curve_create(3, poles, NULL, 4, knots, 8, &cubic), RMF_OK, "");
+    CHECK_STATUS(rmf_curve_nurbs(cubic, &input), RMF_OK, "");
+    for (method = RMF_SPINE_PH_RMF; method <= RMF_SPINE_RRMF; method++) {
+        RmfCurve *spine = NULL;
+        RmfFrames *frames = NULL;
+        RmfNurbsCurve view;
+        double distance = -1, worst = 0, tangent_gap = 0, lo, hi;
+        size_t k, segments = 0;
+        CHECK_STATUS(rmf_framed_spine(cubic, method, tolerance, vec3(0, 0, 1), &spine, &frames,
+                                      &distance),
+                     RMF_OK, "");
+        CHECK_STATUS(rmf_curve_nurbs(spine, &view), RMF_OK, "");
+        CHECK_STATUS(rmf_curve_domain(spine, &lo, &hi), RMF_OK, "");
+        CHECK_STATUS(rmf_curve_segment_count(spine, &segments), RMF_OK, "");
+        for (k = 0; k <= 20 * segments; k++) {
+            double t = lo + (hi - lo) * (double)k / (20.0 * (double)segments);
+            RmfVec3 d[3], tangent, f2, f3;
+            double e;
+            ne_curve_derivatives(&view, t, d);
+            e = distance_to(&input, d[0], 0, 1);
+            if (e > worst) worst = e;
+            CHECK_STATUS(rmf_frames_eval(frames, t, &tangent, &f2, &f3), RMF_OK, "");
+            if (ne_dist(tangent, ne_unit(d[1])) > tangent_gap) tangent_gap = ne_dist(tangent, ne_unit(d[1]));
+        }
+        printf("framed spine, method %u: %zu segments, distance %.2e (library %.2e), frame "
+               "tangent within %.1e\n",
+               method, segments, worst, distance, tangent_gap);
+        CHECK(distance >= 0 && distance <= tolerance, "the reported distance is within the tolerance");
+        CHECK(worst <= 1.01 * tolerance, "the spine is within the tolerance of the curve");
+        CHECK(tangent_gap < 1e-8, "the frames are adapted to the spine");
+        rmf_frames_free(frames);
+        rmf_curve_free(spine);
+    }
+    CHECK_STATUS(rmf_framed_spine(cubic, 9, tolerance, vec3(0, 0, 1), &untouched_curve,
+                                  &untouched_frames, NULL),
+                 RMF_ERROR_INVALID_INPUT, "method");
+    CHECK_STATUS(rmf_framed_spine(cubic, RMF_SPINE_MOBIUS, 0, vec3(0, 0, 1), &untouched_curve,
+                                  &untouched_frames, NULL),
+                 RMF_ERROR_INVALID_INPUT, "tolerance");
+    CHECK_STATUS(rmf_framed_spine(cubic, RMF_SPINE_PH_RMF, tolerance, vec3(0, 0, 1), NULL,
+                                  &untouched_frames, NULL),
+                 RMF_ERROR_NULL_POINTER, "spine_out");
+    CHECK(untouched_curve == (RmfCurve *)&knots && untouched_frames == (RmfFrames *)&knots,
+          "out-pointers untouched on failure");
+    rmf_curve_free(cubic);
+}
+
 int main(void) {
     test_hermite();
     test_callback_curve();
@@ -867,5 +926,6 @@ int main(void) {
     test_rational_rmf();
     test_closed_spine();
     test_profile_surface_analysis();
+    test_framed_spine();
     return rmf_check_exit_code("abi_ph_cubic");
 }

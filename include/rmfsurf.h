@@ -196,6 +196,34 @@
 #define RMF_CONE_FIT_INFLECTIONS 1
 
 /**
+ * rmf_framed_spine: a PH cubic spline within the tolerance with a rational approximation of
+ * its RMF (Mäurer & Jüttler).
+ * \ingroup rmf_frames
+ */
+#define RMF_SPINE_PH_RMF 0
+
+/**
+ * rmf_framed_spine: the same PH cubic spline with its exact rational Frenet frame (not an
+ * RMF).
+ * \ingroup rmf_frames
+ */
+#define RMF_SPINE_FRENET 1
+
+/**
+ * rmf_framed_spine: Möbius images of planar PH cubics through samples of the curve, exact
+ * rational RMFs (Bartoň, Jüttler & Wang).
+ * \ingroup rmf_frames
+ */
+#define RMF_SPINE_MOBIUS 2
+
+/**
+ * rmf_framed_spine: RRMF quintics through samples of the curve, exact rational RMFs
+ * (Farouki, Giannelli & Sestini).
+ * \ingroup rmf_frames
+ */
+#define RMF_SPINE_RRMF 3
+
+/**
  * rmf_frames_kind: exact piecewise rational frames (usable by rmf_sweep_surface).
  * \ingroup rmf_frames
  */
@@ -2377,6 +2405,40 @@ RmfStatus rmf_double_reflection_frames(const struct RmfCurve *curve,
  * \ingroup rmf_frames
  */
 RmfStatus rmf_frenet_frames(const struct RmfCurve *curve, struct RmfFrames **out);
+
+/**
+ * A spine within `tolerance` of a G1 curve with rational frames by `method` — the one call
+ * behind every "sweep along this curve by this method": RMF_SPINE_PH_RMF (default of the
+ * tools), RMF_SPINE_FRENET, RMF_SPINE_MOBIUS or RMF_SPINE_RRMF. The two sampled methods
+ * interpolate the curve at equally spaced parameters, doubling their number (up to 4096
+ * segments) until the sampled distance is within the tolerance.
+ *
+ * @param[in] curve A rational curve (e.g. from rmf_nurbs_curve_create), G1.
+ * @param[in] method One of the RMF_SPINE_* values.
+ * @param[in] tolerance Largest distance of the spine from the curve (the curve's units).
+ * @param[in] initial_normal f2 at the start, projected onto the normal plane (ignored by
+ *            RMF_SPINE_FRENET).
+ * @param[out] spine_out Receives the spine; free with rmf_curve_free.
+ * @param[out] frames_out Receives its frames (RMF_FRAMES_RATIONAL); free with
+ *             rmf_frames_free.
+ * @param[out] distance Receives the largest distance measured between spine and curve;
+ *             may be NULL.
+ * @return RMF_OK on success; nothing is written on failure.
+ * @return RMF_ERROR_NULL_POINTER If curve, spine_out or frames_out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If method is unknown, tolerance is not finite and
+ *         positive or below the rounding of the curve's coordinates, the curve has a corner,
+ *         or initial_normal is zero, not finite or along the start tangent.
+ * @return RMF_ERROR_NO_SOLUTION If the tolerance is not reached (4096 segments).
+ * \since 0.2
+ * \ingroup rmf_frames
+ */
+RmfStatus rmf_framed_spine(const struct RmfCurve *curve,
+                           uint32_t method,
+                           double tolerance,
+                           struct RmfVec3 initial_normal,
+                           struct RmfCurve **spine_out,
+                           struct RmfFrames **frames_out,
+                           double *distance);
 
 /**
  * How frames are represented.

@@ -81,6 +81,24 @@ impl ParametricCurve for PiecewiseCurve {
     }
 }
 
+impl ParametricCurve for crate::ph_cubic::spline::PhSpline {
+    fn domain(&self) -> (f64, f64) {
+        self.curve().domain()
+    }
+
+    fn point_derivative(&self, t: f64) -> Result<(DVec3, DVec3)> {
+        self.curve().point_derivative(t)
+    }
+
+    fn jet(&self, t: f64) -> Result<[DVec3; 4]> {
+        self.curve().jet(t)
+    }
+
+    fn as_piecewise(&self) -> Option<&PiecewiseCurve> {
+        Some(self.curve())
+    }
+}
+
 /// x, x', x'', x''' at t for a curve that gives only x': x'' and x''' are the first and
 /// second derivatives of the quartic through the exact x' at five equidistant parameters
 /// around t, kept inside the domain. The spacing h is 1e-3 of the domain, divided by 4

@@ -34,7 +34,7 @@
 //!     .unzip();
 //! let spine = ph_spline_hermite(&points, &tangents)?;
 //! let rmf = ph_rational_rmf(&spine, &RmfOptions::rmf(DVec3::Z))?;
-//! assert!(angle_errors(&spine, &rmf.frames)?.max < 1e-5);
+//! assert!(angle_errors(&spine, rmf.framed.frames())?.max < 1e-5);
 //! # Ok::<(), rmfsurf::Error>(())
 //! ```
 //!
@@ -54,10 +54,12 @@ mod hermite;
 mod math;
 mod mesh;
 mod mobius;
+mod model;
 mod ph_cubic;
 mod rrmf_quintic;
 mod sheet;
 mod solid;
+mod spine;
 mod sweep;
 #[cfg(test)]
 mod testing;
@@ -81,6 +83,8 @@ pub use hermite::{hermite_sequence, HermiteSegment};
 pub use frames::double_reflection::DoubleReflectionRmf;
 pub use frames::rational::{FrameVector, RationalFrames};
 pub use frames::{Frame, FrameField, FrameKind};
+pub use model::FramedCurve;
+pub use spine::{framed_spine, framed_spine_through, FramedSpine, SpineMethod, MAX_SPINE_SEGMENTS};
 pub use sweep::{sweep, MAX_SWEEP_POLES};
 
 // PH cubic splines, their RMFs and profile surfaces [MJ].
@@ -99,13 +103,13 @@ pub use ph_cubic::frenet::ph_frenet_frames;
 pub use ph_cubic::offset::offset_profile;
 pub use ph_cubic::parabolic::{ParabolicCurve, MAX_PARABOLIC_POINTS};
 pub use ph_cubic::rational_rmf::{ph_rational_rmf, RationalRmf, RmfOptions};
-pub use ph_cubic::spline::ph_spline_from_segments;
+pub use ph_cubic::spline::{ph_spline_from_segments, PhSpline};
 pub use ph_cubic::{ph_cubic_hermite, ph_cubics, ph_spline_hermite, PhCubic, PhHermiteSolutions};
 
 // Curves with exact rational RMFs by Möbius transformations [BJW].
 pub use mobius::{
     map_curve, map_framed_curve, mobius_approximate, mobius_hermite, mobius_hermite_points,
-    Inversion, MobiusMap, RationalRmfCurve,
+    Inversion, MobiusMap,
 };
 
 // Quintics with exact rational RMFs [FGS].

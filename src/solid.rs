@@ -224,6 +224,7 @@ pub(crate) mod tests {
     use crate::bezier::{PiecewiseCurve, RationalBezierCurve};
     use crate::frames::rational::{RationalFrameSegment, RationalFrames};
     use crate::mesh::grid_parameters;
+    use crate::model::FramedCurve;
     use crate::sweep::sweep;
     use std::collections::HashMap;
 
@@ -243,7 +244,7 @@ pub(crate) mod tests {
     }
 
     /// A straight spine along z of length 2 with the constant frame (x, y).
-    fn straight() -> (PiecewiseCurve, RationalFrames) {
+    fn straight() -> FramedCurve {
         let line = RationalBezierCurve::polynomial(&[DVec3::ZERO, DVec3::Z * 2.0]).unwrap();
         let frame = RationalFrameSegment::new(
             vec![DVec3::X, DVec3::X],
@@ -251,10 +252,11 @@ pub(crate) mod tests {
             vec![1.0, 1.0],
         )
         .unwrap();
-        (
+        FramedCurve::new(
             PiecewiseCurve::new(vec![line], vec![0.0, 1.0]).unwrap(),
             RationalFrames::new(vec![frame], vec![0.0, 1.0]).unwrap(),
         )
+        .unwrap()
     }
 
     /// The unit circle (four rational quadratic quarters) or, `open`, three of them.
@@ -291,9 +293,9 @@ pub(crate) mod tests {
 
     #[test]
     fn a_closed_profile_gives_a_capped_tube() {
-        let (spine, frames) = straight();
+        let framed = straight();
         let profile = circle(false);
-        let surface = sweep(&spine, &frames, &profile).unwrap();
+        let surface = sweep(&framed, &profile).unwrap();
         let solid = closed_mesh(&surface, 16, 1, None).unwrap();
         assert_closed_manifold(&solid.faces);
         let expected = 2.0 * unit_polygon_area(&profile, 16);
@@ -310,9 +312,9 @@ pub(crate) mod tests {
 
     #[test]
     fn an_open_profile_needs_a_thickness() {
-        let (spine, frames) = straight();
+        let framed = straight();
         let profile = circle(true);
-        let surface = sweep(&spine, &frames, &profile).unwrap();
+        let surface = sweep(&framed, &profile).unwrap();
         let e = closed_mesh(&surface, 8, 2, None).unwrap_err();
         assert!(e.message().contains("thickness"), "{e}");
         assert!(closed_mesh(&surface, 8, 2, Some(-1.0)).is_err());

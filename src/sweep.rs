@@ -16,33 +16,28 @@ use crate::bezier::bernstein::product;
 use crate::bezier::{PiecewiseCurve, PiecewiseSurface, RationalBezierCurve, RationalBezierPatch};
 use crate::error::{invalid, Result};
 use crate::frames::rational::{RationalFrameSegment, RationalFrames};
-use crate::math::robust_normalize;
+use crate::model::{on_frame_segments, FramedCurve};
 use glam::{DVec3, DVec4};
-
-/// Relative tolerance for the frames' tangent against the spine's.
-const TANGENT_TOLERANCE: f64 = 1e-8;
 
 /// Most control points of one sweep surface (2²², 128 MiB of homogeneous points): far above
 /// any CAD surface, and a bound on the work and memory a single call can ask for (a fuzz
 /// finding: a profile and spine of many segments made a call run for minutes in 4 GiB).
 pub const MAX_SWEEP_POLES: usize = 1 << 22;
 
-/// The sweep of `profile` (its x → f₂, y → f₃; z ignored) along `spine` with `frames`.
-/// The frames must belong to the spine: the spine's breakpoints or a refinement of them
-/// (the spine is then split to match), and frame tangent = spine tangent.
-pub fn sweep(
+/// The sweep of `profile` (its x → f₂, y → f₃; z ignored) along a curve with its frames:
+/// one patch per profile segment and frame segment.
+pub fn sweep(framed: &FramedCurve, profile: &PiecewiseCurve) -> Result<PiecewiseSurface> {
+    sweep_along(framed.curve(), framed.frames(), profile)
+}
+
+/// [`sweep`] of a spine and frames made together (a construction's own pair, not checked
+/// again).
+pub(crate) fn sweep_along(
     spine: &PiecewiseCurve,
     frames: &RationalFrames,
     profile: &PiecewiseCurve,
 ) -> Result<PiecewiseSurface> {
-    let refined;
-    let spine = if spine.breaks() == frames.breaks() {
-        spine
-    } else {
-        refined = refined_to_frames(spine, frames)?;
-        &refined
-    };
-    check_frames_fit_spine(spine, frames)?;
+    let spine = &*on_frame_segments(spine, frames);
     check_sweep_size(spine, frames, profile)?;
     let factors: Vec<SpineFactors> = spine
         .segments()
@@ -136,52 +131,16 @@ fn sweep_patch(spine: &SpineFactors, profile: &ProfileFactors) -> Result<Rationa
     ])
 }
 
-/// The spine split at the frames' breakpoints (which must refine its own).
-fn refined_to_frames(spine: &PiecewiseCurve, frames: &RationalFrames) -> Result<PiecewiseCurve> {
-    spine.refined(frames.breaks()).map_err(|_| {
-        crate::Error::invalid_input(
-            "frames do not belong to the spine: their parameter breakpoints differ",
-        )
-    })
-}
-
-/// Refuses frames that do not belong to `spine` as [`sweep`] does: breakpoints that do not
-/// refine the spine's, or a tangent f₂ × f₃ other than the spine's (frames built on another
-/// spine with the same breakpoints).
-pub fn check_frames_belong_to(spine: &PiecewiseCurve, frames: &RationalFrames) -> Result<()> {
-    if spine.breaks() == frames.breaks() {
-        check_frames_fit_spine(spine, frames)
-    } else {
-        check_frames_fit_spine(&refined_to_frames(spine, frames)?, frames)
-    }
-}
-
-/// The frames must share the spine's breakpoints and be adapted to it (f₂ × f₃ = the
-/// spine's unit tangent), checked at both ends and the middle of every segment.
-fn check_frames_fit_spine(spine: &PiecewiseCurve, frames: &RationalFrames) -> Result<()> {
-    if spine.breaks() != frames.breaks() {
-        return invalid!("frames do not belong to the spine: their parameter breakpoints differ");
-    }
-    for (k, (segment, frame)) in spine.segments().iter().zip(frames.segments()).enumerate() {
-        for s in [0.0, 0.5, 1.0] {
-            let d = robust_normalize(segment.eval_jet(s).d1);
-            let tangent = frame.frame(s).tangent;
-            if d.is_none_or(|d| (d - tangent).length() > TANGENT_TOLERANCE) {
-                return invalid!(
-                    "frames do not belong to the spine: their tangent differs on segment {k}"
-                );
-            }
-        }
-    }
-    Ok(())
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::bezier::bernstein::restrict;
     use crate::frames::metrics::{gaussian_curvature, parameter_line_cosine};
     use glam::DVec3;
+
+    fn framed(spine: &PiecewiseCurve, frames: &RationalFrames) -> Result<FramedCurve> {
+        FramedCurve::new(spine.clone(), frames.clone())
+    }
 
     /// A quarter circle of radius 2 in the xy-plane with its (rational, rotation-minimizing)
     /// frame f₂ = −radial direction, f₃ = +z.
@@ -229,7 +188,7 @@ mod tests {
         )
         .unwrap();
         let profile = PiecewiseCurve::new(vec![circle], vec![0.0, 1.0]).unwrap();
-        let torus = sweep(&spine, &frames, &profile).unwrap();
+        let torus = sweep(&framed(&spine, &frames).unwrap(), &profile).unwrap();
         assert_eq!(
             (torus.patches()[0].degree_u(), torus.patches()[0].degree_v()),
             (2, 4)
@@ -255,15 +214,15 @@ mod tests {
         let pieces = MAX_SWEEP_POLES / 2 / 3 + 1; // poles per spine segment: 2 × (2 + 1)
         let line = line_profile().segments()[0].clone();
         let long = PiecewiseCurve::with_unit_intervals(vec![line; pieces]).unwrap();
-        let e = sweep(&spine, &frames, &long).unwrap_err();
+        let e = sweep(&framed(&spine, &frames).unwrap(), &long).unwrap_err();
         assert!(e.message().contains("control points"), "{e}");
-        assert!(sweep(&spine, &frames, &line_profile()).is_ok());
+        assert!(sweep(&framed(&spine, &frames).unwrap(), &line_profile()).is_ok());
     }
 
     #[test]
     fn sweeping_a_line_gives_a_developable_surface() {
         let (spine, frames) = arc_with_frames();
-        let strip = sweep(&spine, &frames, &line_profile()).unwrap();
+        let strip = sweep(&framed(&spine, &frames).unwrap(), &line_profile()).unwrap();
         for i in 0..=6 {
             let jet = strip.eval_jet(i as f64 / 6.0, 0.37);
             assert!(gaussian_curvature(&jet).abs() < 1e-13);
@@ -287,8 +246,8 @@ mod tests {
             })
             .collect();
         let finer = RationalFrames::new(halves, vec![0.0, 0.5, 1.0]).unwrap();
-        let coarse = sweep(&spine, &frames, &line_profile()).unwrap();
-        let fine = sweep(&spine, &finer, &line_profile()).unwrap();
+        let coarse = sweep(&framed(&spine, &frames).unwrap(), &line_profile()).unwrap();
+        let fine = sweep(&framed(&spine, &finer).unwrap(), &line_profile()).unwrap();
         assert_eq!(fine.v_breaks(), &[0.0, 0.5, 1.0]);
         for i in 0..=10 {
             let (u, v) = (0.3, i as f64 / 10.0);
@@ -300,10 +259,10 @@ mod tests {
     fn rejects_frames_of_another_curve() {
         let (spine, frames) = arc_with_frames();
         let other = PiecewiseCurve::new(spine.segments().to_vec(), vec![0.0, 2.0]).unwrap();
-        assert!(sweep(&other, &frames, &line_profile()).is_err());
+        assert!(framed(&other, &frames).is_err());
         let line = RationalBezierCurve::polynomial(&[DVec3::ZERO, DVec3::X]).unwrap();
         let straight = PiecewiseCurve::new(vec![line], vec![0.0, 1.0]).unwrap();
-        let e = sweep(&straight, &frames, &line_profile()).unwrap_err();
+        let e = framed(&straight, &frames).unwrap_err();
         assert!(e.message().contains("tangent"));
     }
 }

@@ -9,6 +9,7 @@ use crate::frames::rational::{RationalFrameSegment, RationalFrames};
 use crate::frames::Frame;
 use crate::hermite::HermiteSegment;
 use crate::mobius::hermite::planar_frame;
+use crate::model::FramedCurve;
 use crate::ph_cubic::PhCubic;
 use crate::Result;
 use glam::DVec3;
@@ -72,7 +73,7 @@ pub fn tschirnhausen(turn: f64, q: f64) -> PhCubic {
 /// A Tschirnhausen cubic in the xy-plane (legs 1, 2, 4 turning by 30°, moved off the origin)
 /// with its rational RMF: f₂ = +z (a constant vector is rotation-minimizing along a planar
 /// curve), f₃ = t × z.
-pub fn planar_ph_cubic() -> (PiecewiseCurve, RationalFrames) {
+pub fn planar_ph_cubic() -> FramedCurve {
     let shift = DVec3::new(0.2, -0.4, 0.0);
     let cubic = PhCubic::from_control_points(
         tschirnhausen(30f64.to_radians(), 2.0)
@@ -82,10 +83,11 @@ pub fn planar_ph_cubic() -> (PiecewiseCurve, RationalFrames) {
     .expect("a PH cubic");
     let raw = planar_frame(&cubic, DVec3::Z);
     let frame = RationalFrameSegment::new(raw.f2, raw.f3, raw.denominator).expect("positive speed");
-    (
+    FramedCurve::new(
         PiecewiseCurve::new(vec![cubic.to_bezier()], vec![0.0, 1.0]).expect("one segment"),
         RationalFrames::new(vec![frame], vec![0.0, 1.0]).expect("one segment"),
     )
+    .expect("the cubic's own frames")
 }
 
 /// One spatial G1 Hermite segment (non-planar, no symmetry): the Möbius tests' data.

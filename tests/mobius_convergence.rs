@@ -12,10 +12,9 @@
 use rmfsurf::glam::DVec3;
 use rmfsurf::metrics::{frame_errors, FrameErrors, ReferenceRmf};
 use rmfsurf::{
-    mobius_approximate, uniform_parameters, DoubleReflectionRmf, ExactRmf, FrameField, FrameKind,
-    ParametricCurve, PiecewiseCurve, RationalBezierCurve, Result,
+    mobius_approximate, uniform_parameters, DoubleReflectionRmf, ExactRmf, FrameField,
+    ParametricCurve, PhSpline, PiecewiseCurve, RationalBezierCurve, Result,
 };
-use std::sync::Arc;
 
 const SEGMENTS: [usize; 7] = [1, 2, 4, 8, 16, 32, 64];
 const INITIAL_NORMAL: DVec3 = DVec3::new(0.0, 0.0, 1.0);
@@ -125,8 +124,7 @@ fn study(
                 continue;
             }
         };
-        let field =
-            FrameField::new(Arc::new(approx.curve), FrameKind::Rational(approx.frames)).unwrap();
+        let field = FrameField::from(approx);
         let errors = frame_errors(&field, reference, 2.0 * (hi - lo) / k as f64).unwrap();
         let order = |a: f64, b: f64| (a / b).log2();
         match rows.last() {
@@ -174,7 +172,7 @@ fn assert_orders(
 #[test]
 fn example_2_ph_cubic_against_its_exact_rmf() {
     let curve = example_2();
-    let rmf = ExactRmf::new(&curve, INITIAL_NORMAL, 0.0).unwrap();
+    let rmf = ExactRmf::new(&PhSpline::new(curve.clone()).unwrap(), INITIAL_NORMAL, 0.0).unwrap();
     let reference = PhReference {
         curve: curve.clone(),
         rmf,

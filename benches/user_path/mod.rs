@@ -205,7 +205,7 @@ fn our_path(
     let rmf = ph_rational_rmf(&fit.spline, &RmfOptions::rmf(NORMAL)).unwrap();
     step(2, t);
     let t = Instant::now();
-    let surface = sweep(&fit.spline, &rmf.frames, profile).unwrap();
+    let surface = sweep(&rmf.framed, profile).unwrap();
     step(3, t);
     let t = Instant::now();
     let out = NurbsSurface::from_piecewise(&surface).unwrap();
@@ -213,7 +213,7 @@ fn our_path(
     let built = Built {
         segments: fit.spline.segments().len(),
         max_distance: fit.max_distance,
-        start_frame: rmf.frames.frame(fit.spline.domain().0),
+        start_frame: rmf.framed.frames().frame(fit.spline.domain().0),
         start: fit.spline.eval(fit.spline.domain().0),
         surfaces: vec![surface],
         nurbs: vec![black_box(out)],

@@ -12,6 +12,7 @@ use super::types::{piece_views, PieceViews, RmfBezierCurve, RmfNurbsCurve, RmfVe
 use libc::c_void;
 use rmfsurf::glam::DVec3;
 use rmfsurf::validate::{check_in_domain, check_nurbs_counts};
+use rmfsurf::PhSpline;
 use rmfsurf::{NurbsCurve, ParametricCurve, PiecewiseCurve, Result};
 use std::sync::{Arc, OnceLock};
 
@@ -69,6 +70,12 @@ impl RmfCurve {
     /// callback curve is refused, naming the argument `name`.
     pub(crate) fn rational(&self, name: &str) -> FfiResult<&Arc<PiecewiseCurve>> {
         self.rational_parts(name).map(|r| &r.curve)
+    }
+
+    /// The curve as a PH cubic spline, refused (naming `name` and the segment) when it is
+    /// not one.
+    pub(crate) fn ph_spline(&self, name: &str) -> FfiResult<PhSpline> {
+        Ok(PhSpline::new((**self.rational(name)?).clone())?)
     }
 
     fn rational_parts(&self, name: &str) -> FfiResult<&Rational> {

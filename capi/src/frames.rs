@@ -1,13 +1,15 @@
 //! `RmfFrames`: an adapted frame (t, f₂, f₃) along a curve, sharing its parameter.
 
-use super::boundary::{free_handle, guard, invalid_arg, out_ptr, reference, write, FfiResult};
+use super::boundary::{
+    free_handle, guard, invalid_arg, optional_out, out_ptr, reference, write, FfiResult,
+};
 use super::curve::RmfCurve;
 use super::status::RmfStatus;
 use super::types::RmfVec3;
 use rmfsurf::validate::{check_in_domain, check_sample_count};
 use rmfsurf::{
-    uniform_parameters, DoubleReflectionRmf, FrameField, FrameKind, FrameVector, PiecewiseCurve,
-    RationalFrames, Result,
+    framed_spine, uniform_parameters, DoubleReflectionRmf, FrameField, FrameKind, FrameVector,
+    FramedCurve, PiecewiseCurve, RationalFrames, Result, ResultExt, SpineMethod,
 };
 
 /// Frames along a curve (opaque): exact rational frames, double-reflection samples, or
@@ -156,6 +158,82 @@ pub unsafe extern "C" fn rmf_frenet_frames(
     })
 }
 
+/// rmf_framed_spine: a PH cubic spline within the tolerance with a rational approximation of
+/// its RMF (Mäurer & Jüttler).
+/// \ingroup rmf_frames
+pub const RMF_SPINE_PH_RMF: u32 = 0;
+/// rmf_framed_spine: the same PH cubic spline with its exact rational Frenet frame (not an
+/// RMF).
+/// \ingroup rmf_frames
+pub const RMF_SPINE_FRENET: u32 = 1;
+/// rmf_framed_spine: Möbius images of planar PH cubics through samples of the curve, exact
+/// rational RMFs (Bartoň, Jüttler & Wang).
+/// \ingroup rmf_frames
+pub const RMF_SPINE_MOBIUS: u32 = 2;
+/// rmf_framed_spine: RRMF quintics through samples of the curve, exact rational RMFs
+/// (Farouki, Giannelli & Sestini).
+/// \ingroup rmf_frames
+pub const RMF_SPINE_RRMF: u32 = 3;
+
+/// A spine within `tolerance` of a G1 curve with rational frames by `method` — the one call
+/// behind every "sweep along this curve by this method": RMF_SPINE_PH_RMF (default of the
+/// tools), RMF_SPINE_FRENET, RMF_SPINE_MOBIUS or RMF_SPINE_RRMF. The two sampled methods
+/// interpolate the curve at equally spaced parameters, doubling their number (up to 4096
+/// segments) until the sampled distance is within the tolerance.
+///
+/// @param[in] curve A rational curve (e.g. from rmf_nurbs_curve_create), G1.
+/// @param[in] method One of the RMF_SPINE_* values.
+/// @param[in] tolerance Largest distance of the spine from the curve (the curve's units).
+/// @param[in] initial_normal f2 at the start, projected onto the normal plane (ignored by
+///            RMF_SPINE_FRENET).
+/// @param[out] spine_out Receives the spine; free with rmf_curve_free.
+/// @param[out] frames_out Receives its frames (RMF_FRAMES_RATIONAL); free with
+///             rmf_frames_free.
+/// @param[out] distance Receives the largest distance measured between spine and curve;
+///             may be NULL.
+/// @return RMF_OK on success; nothing is written on failure.
+/// @return RMF_ERROR_NULL_POINTER If curve, spine_out or frames_out is NULL.
+/// @return RMF_ERROR_INVALID_INPUT If method is unknown, tolerance is not finite and
+///         positive or below the rounding of the curve's coordinates, the curve has a corner,
+///         or initial_normal is zero, not finite or along the start tangent.
+/// @return RMF_ERROR_NO_SOLUTION If the tolerance is not reached (4096 segments).
+/// \since 0.2
+/// \ingroup rmf_frames
+#[no_mangle]
+pub unsafe extern "C" fn rmf_framed_spine(
+    curve: *const RmfCurve,
+    method: u32,
+    tolerance: f64,
+    initial_normal: RmfVec3,
+    spine_out: *mut *mut RmfCurve,
+    frames_out: *mut *mut RmfFrames,
+    distance: *mut f64,
+) -> RmfStatus {
+    guard("rmf_framed_spine", || {
+        let curve = reference(curve, "curve")?;
+        let (spine_out, frames_out) = (
+            out_ptr(spine_out, "spine_out")?,
+            out_ptr(frames_out, "frames_out")?,
+        );
+        let distance = optional_out(distance, "distance")?;
+        let Some(&method) = SpineMethod::ALL.get(method as usize) else {
+            return invalid_arg(format!(
+                "method = {method} is not one of the RMF_SPINE_* values (0 to 3)"
+            ));
+        };
+        let spine = framed_spine(
+            curve.rational("curve")?,
+            method,
+            tolerance,
+            initial_normal.into(),
+        )?;
+        if let Some(d) = distance {
+            write(d, spine.distance);
+        }
+        write_framed(spine.framed, spine_out, frames_out)
+    })
+}
+
 /// rmf_frames_kind: exact piecewise rational frames (usable by rmf_sweep_surface).
 /// \ingroup rmf_frames
 pub const RMF_FRAMES_RATIONAL: u32 = 0;
@@ -244,6 +322,37 @@ pub unsafe extern "C" fn rmf_frames_vector_curve(
 }
 
 /// The exact rational frames behind a handle, or an error naming why there are none.
+/// Writes a curve and its frames to two out-pointers (both checked already): two handles
+/// sharing the curve.
+///
+/// # Safety
+/// Both out-pointers must be valid for writes.
+pub(crate) unsafe fn write_framed(
+    framed: FramedCurve,
+    curve_out: *mut *mut RmfCurve,
+    frames_out: *mut *mut RmfFrames,
+) -> FfiResult {
+    let (curve, frames) = framed.into_parts();
+    let curve = std::sync::Arc::new(curve);
+    let field = FrameField::new(curve.clone(), FrameKind::Rational(frames))?;
+    write(curve_out, RmfCurve::new(curve, None).into_raw());
+    write(frames_out, RmfFrames::into_raw(field));
+    Ok(())
+}
+
+/// The curve and rational frames of a frames handle.
+pub(crate) fn framed_of(frames: &RmfFrames) -> FfiResult<FramedCurve> {
+    let curve = (**frames.field.curve()).clone();
+    Ok(FramedCurve::new(curve, rational_frames(frames)?.clone())?)
+}
+
+/// The spine with its rational frames, checked to belong together (copies of both: the
+/// handles stay the caller's).
+pub(crate) fn framed_curve(spine: &RmfCurve, frames: &RmfFrames) -> FfiResult<FramedCurve> {
+    let curve = (**spine.rational("spine")?).clone();
+    Ok(FramedCurve::new(curve, rational_frames(frames)?.clone()).context("spine")?)
+}
+
 pub(crate) fn rational_frames(frames: &RmfFrames) -> FfiResult<&RationalFrames> {
     match frames.field.kind() {
         FrameKind::Rational(r) => Ok(r),

@@ -3,17 +3,15 @@
 
 use super::boundary::{guard, invalid_arg, out_ptr, reference, slice, write, FfiError, FfiResult};
 use super::curve::RmfCurve;
-use super::frames::{rational_frames, RmfFrames};
+use super::frames::{framed_of, write_framed, RmfFrames};
 use super::input::{curve_or_callback, hermite_arrays, RmfCurveCallback};
 use super::status::RmfStatus;
 use super::types::RmfVec3;
 use libc::c_void;
 use rmfsurf::glam::DVec3;
 use rmfsurf::{
-    map_curve, map_framed_curve, mobius_approximate, mobius_hermite, FrameField, FrameKind,
-    Inversion, MobiusMap, RationalRmfCurve,
+    map_curve, map_framed_curve, mobius_approximate, mobius_hermite, Inversion, MobiusMap,
 };
-use std::sync::Arc;
 
 /// RmfInversion.kind: inversion in the sphere (center, radius).
 /// \ingroup rmf_mobius
@@ -213,27 +211,9 @@ pub unsafe extern "C" fn rmf_mobius_frames(
             out_ptr(frames_out, "frames_out")?,
         );
         let map = mobius_map(maps, count)?;
-        let (image, image_frames) =
-            map_framed_curve(&map, frames.field.curve(), rational_frames(frames)?)?;
-        let image = Arc::new(image);
-        let field = FrameField::new(image.clone(), FrameKind::Rational(image_frames))?;
-        write(curve_out, RmfCurve::new(image, None).into_raw());
-        write(frames_out, RmfFrames::into_raw(field));
-        Ok(())
+        let image = map_framed_curve(&map, &framed_of(frames)?)?;
+        write_framed(image, curve_out, frames_out)
     })
-}
-
-/// Writes a rational-RMF curve and its frames to two out-pointers (both checked already).
-unsafe fn write_rational_rmf_curve(
-    result: RationalRmfCurve,
-    curve_out: *mut *mut RmfCurve,
-    frames_out: *mut *mut RmfFrames,
-) -> FfiResult {
-    let curve = Arc::new(result.curve);
-    let field = FrameField::new(curve.clone(), FrameKind::Rational(result.frames))?;
-    write(curve_out, RmfCurve::new(curve, None).into_raw());
-    write(frames_out, RmfFrames::into_raw(field));
-    Ok(())
 }
 
 /// G1 Hermite interpolation by rational curves with exact rational rotation-minimizing
@@ -276,7 +256,7 @@ pub unsafe extern "C" fn rmf_mobius_rrmf_hermite(
         let segments = hermite_arrays(points, tangents, count)?;
         let params: Vec<f64> = (0..count).map(|i| i as f64).collect();
         let result = mobius_hermite(&segments, &params, initial_normal.into())?;
-        write_rational_rmf_curve(result, curve, frames)
+        write_framed(result, curve, frames)
     })
 }
 
@@ -325,6 +305,6 @@ pub unsafe extern "C" fn rmf_mobius_rrmf_approximate(
         );
         let source = curve_or_callback(curve, callback, user, t_min, t_max)?;
         let result = mobius_approximate(source.as_ref(), segments, initial_normal.into())?;
-        write_rational_rmf_curve(result, curve_out, frames_out)
+        write_framed(result, curve_out, frames_out)
     })
 }

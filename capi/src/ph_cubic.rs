@@ -7,7 +7,7 @@ use super::boundary::{
     write, write_sized, FfiError, FfiResult, OptionsStruct,
 };
 use super::curve::RmfCurve;
-use super::frames::{rational_frames, RmfFrames};
+use super::frames::{framed_curve, rational_frames, RmfFrames};
 use super::input::{curve_or_callback, hermite_arrays, RmfCurveCallback};
 use super::status::RmfStatus;
 use super::types::RmfVec3;
@@ -15,8 +15,9 @@ use rmfsurf::validate::{check_in_domain, check_sample_count};
 use rmfsurf::{
     angle_errors, check_g1, convex_initial_normal, offset_profile, offset_profile_by_arcs,
     ph_cubic_hermite, ph_frenet_frames, ph_rational_rmf, ph_spline_approximate_with,
-    ph_spline_from_segments, ApproximationOptions, ExactRmf, FrameField, FrameKind, HermiteSegment,
-    ParametricCurve, PhCubic, PiecewiseCurve, ProfileSurface, RationalFrames, RmfOptions,
+    ph_spline_from_segments, ApproximationOptions, ExactRmf, FrameField, FrameKind, FramedCurve,
+    HermiteSegment, ParametricCurve, PhCubic, PhSpline, PiecewiseCurve, ProfileSurface,
+    RationalFrames, ResultExt, RmfOptions,
 };
 use std::ffi::c_void;
 
@@ -98,7 +99,7 @@ pub unsafe extern "C" fn rmf_ph_spline_hermite(
     guard("rmf_ph_spline_hermite", || {
         let out = out_ptr(out, "out")?;
         let spline = ph_spline_from_segments(&hermite_arrays(points, tangents, count)?)?;
-        write(out, RmfCurve::new(spline, None).into_raw());
+        write(out, RmfCurve::new(spline.into_curve(), None).into_raw());
         Ok(())
     })
 }
@@ -162,7 +163,10 @@ pub unsafe extern "C" fn rmf_ph_spline_approximate(
             &breaks,
             &ApproximationOptions::new(tolerance),
         )?;
-        write(out, RmfCurve::new(result.spline, None).into_raw());
+        write(
+            out,
+            RmfCurve::new(result.spline.into_curve(), None).into_raw(),
+        );
         if let Some(d) = max_distance {
             write(d, result.max_distance);
         }
@@ -323,7 +327,10 @@ pub unsafe extern "C" fn rmf_ph_spline_approximate_with_options(
             segments: result.spline.segments().len(),
             evaluations: result.evaluations,
         };
-        write(out, RmfCurve::new(result.spline, None).into_raw());
+        write(
+            out,
+            RmfCurve::new(result.spline.into_curve(), None).into_raw(),
+        );
         if let Some(report) = report {
             write_sized(report, &done);
         }
@@ -411,8 +418,8 @@ unsafe fn rational_rmf_into(
 ) -> FfiResult {
     let spline = reference(ph_spline, "ph_spline")?;
     let out = out_ptr(out, "out")?;
-    let rmf = ph_rational_rmf(spline.rational("ph_spline")?, &options)?;
-    write_frames(spline, rmf.frames, out)
+    let rmf = ph_rational_rmf(&spline.ph_spline("ph_spline")?, &options)?;
+    write_frames(spline, rmf.framed.into_parts().1, out)
 }
 
 /// Writes rational frames along `spline` to `out` as a new handle.
@@ -452,7 +459,9 @@ pub unsafe extern "C" fn rmf_ph_frenet_frames(
         let out = out_ptr(out, "out")?;
         write_frames(
             spline,
-            ph_frenet_frames(spline.rational("ph_spline")?)?,
+            ph_frenet_frames(&spline.ph_spline("ph_spline")?)?
+                .into_parts()
+                .1,
             out,
         )
     })
@@ -495,7 +504,7 @@ pub unsafe extern "C" fn rmf_ph_exact_rmf_eval(
         } else {
             Some(buffer(f3, count, "f3")?)
         };
-        let rmf = ExactRmf::new(spline.rational("ph_spline")?, initial_normal.into(), 0.0)?;
+        let rmf = ExactRmf::new(&spline.ph_spline("ph_spline")?, initial_normal.into(), 0.0)?;
         let domain = spline.rational("ph_spline")?.domain();
         let frames = params
             .iter()
@@ -551,7 +560,8 @@ pub unsafe extern "C" fn rmf_ph_rmf_angle_error(
         let segment_count = out_ptr(segment_count, "segment_count")?;
         let max_angle = out_ptr(max_angle, "max_angle")?;
         let rational = rational_frames(frames)?;
-        let errors = angle_errors(frames.field.curve(), rational)?;
+        let spline = PhSpline::new((**frames.field.curve()).clone()).context("frames")?;
+        let errors = angle_errors(&spline, rational)?;
         let n = errors.per_segment.len();
         if capacity > 0 && capacity < n {
             write(segment_count, n);
@@ -609,9 +619,9 @@ pub unsafe extern "C" fn rmf_sweep_singularity_margin(
     out: *mut RmfSingularityMargin,
 ) -> RmfStatus {
     guard("rmf_sweep_singularity_margin", || {
-        let (spine, frames, profile) = sweep_inputs(spine, frames, profile)?;
+        let (framed, profile) = sweep_inputs(spine, frames, profile)?;
         let out = out_ptr(out, "out")?;
-        let m = ProfileSurface::new(spine, frames, profile)?.singularity_margin();
+        let m = ProfileSurface::new(&framed, profile)?.singularity_margin();
         write(
             out,
             RmfSingularityMargin {
@@ -650,13 +660,13 @@ pub unsafe extern "C" fn rmf_sweep_gaussian_curvature(
     k: *mut f64,
 ) -> RmfStatus {
     guard("rmf_sweep_gaussian_curvature", || {
-        let (spine, frames, profile) = sweep_inputs(spine, frames, profile)?;
+        let (framed, profile) = sweep_inputs(spine, frames, profile)?;
         let k = out_ptr(k, "k")?;
         let u = check_in_domain(u, profile.domain(), "u")?;
-        let v = check_in_domain(v, spine.domain(), "v")?;
+        let v = check_in_domain(v, framed.domain(), "v")?;
         write(
             k,
-            ProfileSurface::new(spine, frames, profile)?.gaussian_curvature(u, v),
+            ProfileSurface::new(&framed, profile)?.gaussian_curvature(u, v),
         );
         Ok(())
     })
@@ -723,16 +733,20 @@ pub unsafe extern "C" fn rmf_sweep_parabolic_points(
     count: *mut usize,
 ) -> RmfStatus {
     guard("rmf_sweep_parabolic_points", || {
-        let (spine, frames, profile) = sweep_inputs(spine, frames, profile)?;
+        let (framed, profile) = sweep_inputs(spine, frames, profile)?;
         let points = buffer(points, capacity, "points")?;
         let count = out_ptr(count, "count")?;
         check_sample_count(v_samples as usize, 2, "v_samples")?;
         // Each spine sample looks at every profile segment.
         let work = (v_samples as usize).saturating_mul(profile.segments().len());
         check_sample_count(work, 2, "v_samples × profile segments")?;
-        let lines =
-            ProfileSurface::new(spine, frames, profile)?.parabolic_lines(v_samples as usize);
-        let found = parabolic_points(&lines, spine.domain(), profile.domain(), v_samples as usize);
+        let lines = ProfileSurface::new(&framed, profile)?.parabolic_lines(v_samples as usize);
+        let found = parabolic_points(
+            &lines,
+            framed.domain(),
+            profile.domain(),
+            v_samples as usize,
+        );
         hand_over(&found, points, count, "points")
     })
 }
@@ -799,10 +813,10 @@ pub unsafe extern "C" fn rmf_sweep_parabolic_curves(
     count: *mut usize,
 ) -> RmfStatus {
     guard("rmf_sweep_parabolic_curves", || {
-        let (spine, frames, profile) = sweep_inputs(spine, frames, profile)?;
+        let (framed, profile) = sweep_inputs(spine, frames, profile)?;
         let points = buffer(points, capacity, "points")?;
         let count = out_ptr(count, "count")?;
-        let surface = ProfileSurface::new(spine, frames, profile)?;
+        let surface = ProfileSurface::new(&framed, profile)?;
         let mut found = Vec::new();
         for (curve, line) in surface.parabolic_curves(tolerance)?.iter().enumerate() {
             found.extend(line.points.iter().map(|&(u, v)| RmfParabolicCurvePoint {
@@ -887,7 +901,7 @@ pub unsafe extern "C" fn rmf_ph_convex_initial_normal(
         let initial_normal = out_ptr(initial_normal, "initial_normal")?;
         let margin = optional_out(margin, "margin")?;
         let start = convex_initial_normal(
-            spline.rational("ph_spline")?,
+            &spline.ph_spline("ph_spline")?,
             profile.rational("profile")?,
             elliptic != 0,
         )?;
@@ -994,13 +1008,9 @@ unsafe fn sweep_inputs<'a>(
     spine: *const RmfCurve,
     frames: *const RmfFrames,
     profile: *const RmfCurve,
-) -> FfiResult<(&'a PiecewiseCurve, &'a RationalFrames, &'a PiecewiseCurve)> {
+) -> FfiResult<(FramedCurve, &'a PiecewiseCurve)> {
     let spine = reference(spine, "spine")?;
     let frames = reference(frames, "frames")?;
     let profile = reference(profile, "profile")?;
-    Ok((
-        spine.rational("spine")?,
-        rational_frames(frames)?,
-        profile.rational("profile")?,
-    ))
+    Ok((framed_curve(spine, frames)?, profile.rational("profile")?))
 }

@@ -7,7 +7,7 @@ use super::boundary::{
     FfiError, FfiResult, OptionsStruct,
 };
 use super::curve::RmfCurve;
-use super::frames::RmfFrames;
+use super::frames::{write_framed, RmfFrames};
 use super::input::hermite_arrays;
 use super::status::RmfStatus;
 use super::types::RmfVec3;
@@ -15,8 +15,8 @@ use rmfsurf::glam::DVec3;
 use rmfsurf::{
     best_quintic, planar_quintic, quintic_curve, quintic_rmf, rrmf_planar_deviation, rrmf_quintics,
     rrmf_quintics_reporting, rrmf_spline, rrmf_spline_within, CanonicalHermite, Complex,
-    FrameField, FrameKind, HermiteSegment, PiecewiseCurve, RationalFrames, RrmfBudget, RrmfQuintic,
-    ShapeMeasure, RRMF_MAX_ETA_SAMPLES, RRMF_MAX_REFINEMENT_SOLVES, RRMF_PLANAR_TOLERANCE,
+    FramedCurve, HermiteSegment, RrmfBudget, RrmfQuintic, ShapeMeasure, RRMF_MAX_ETA_SAMPLES,
+    RRMF_MAX_REFINEMENT_SOLVES, RRMF_PLANAR_TOLERANCE,
 };
 
 /// One RRMF quintic Hermite interpolant (Farouki, Giannelli & Sestini, Section 4).
@@ -108,26 +108,6 @@ fn hermite(p0: RmfVec3, t0: RmfVec3, p1: RmfVec3, t1: RmfVec3) -> FfiResult<Herm
         p1.into(),
         t1.into(),
     )?)
-}
-
-/// Writes a curve and its rational frames as two new handles.
-///
-/// # Safety
-/// Both out-pointers must have passed `out_ptr`.
-unsafe fn write_curve_and_frames(
-    curve: PiecewiseCurve,
-    frames: RationalFrames,
-    curve_out: *mut *mut RmfCurve,
-    frames_out: *mut *mut RmfFrames,
-) -> FfiResult {
-    let handle = RmfCurve::new(curve, None);
-    let field = FrameField::new(
-        handle.rational("curve")?.clone(),
-        FrameKind::Rational(frames),
-    )?;
-    write(curve_out, handle.into_raw());
-    write(frames_out, RmfFrames::into_raw(field));
-    Ok(())
 }
 
 /// All RRMF quintics interpolating G1 Hermite data for one value of the angular parameter
@@ -389,7 +369,7 @@ pub unsafe extern "C" fn rmf_rrmf_quintic_curve(
         let (curve, frames) = (out_ptr(curve, "curve")?, out_ptr(frames, "frames")?);
         let q = recompute(&hermite(p0, t0, p1, t1)?, solution)?;
         let rmf = quintic_rmf(&[q], initial_normal.into())?;
-        write_curve_and_frames(quintic_curve(&[q])?, rmf, curve, frames)
+        write_framed(FramedCurve::new(quintic_curve(&[q])?, rmf)?, curve, frames)
     })
 }
 
@@ -505,7 +485,7 @@ pub unsafe extern "C" fn rmf_rrmf_spline_hermite(
         let segments = hermite_arrays(points, tangents, count)?;
         let measure = shape_measure(measure)?;
         let spline = rrmf_spline(&segments, measure, eta_samples, initial_normal.into())?;
-        write_curve_and_frames(spline.curve, spline.frames, curve, frames)
+        write_framed(spline.framed, curve, frames)
     })
 }
 
@@ -685,7 +665,7 @@ pub unsafe extern "C" fn rmf_rrmf_spline_hermite_with_options(
             segments: segments.len(),
             irregular_roots: spline.irregular_roots,
         };
-        write_curve_and_frames(spline.curve, spline.frames, curve, frames)?;
+        write_framed(spline.framed, curve, frames)?;
         if let Some(report) = report {
             write_sized(report, &done);
         }

@@ -6,7 +6,7 @@ use super::boundary::{
     to_usize, write, FfiError, FfiResult, OptionsStruct,
 };
 use super::curve::RmfCurve;
-use super::frames::{rational_frames, RmfFrames};
+use super::frames::{framed_curve, RmfFrames};
 use super::input::poles_and_weights;
 use super::status::RmfStatus;
 use super::types::{piece_views, PieceViews, RmfBezierPatch, RmfNurbsSurface, RmfVec3};
@@ -790,11 +790,7 @@ pub unsafe extern "C" fn rmf_sweep_surface(
         let frames = reference(frames, "frames")?;
         let profile = reference(profile, "profile")?;
         let out = out_ptr(out, "out")?;
-        let surface = sweep(
-            spine.rational("spine")?,
-            rational_frames(frames)?,
-            profile.rational("profile")?,
-        )?;
+        let surface = sweep(&framed_curve(spine, frames)?, profile.rational("profile")?)?;
         write(out, RmfSurface::new(surface, None).into_raw());
         Ok(())
     })

@@ -183,14 +183,14 @@ fn rust_api_evaluation_does_not_allocate() {
         rmfsurf::RationalBezierCurve::polynomial(&[DVec3::X * 0.1, DVec3::Y * 0.2]).unwrap(),
     ])
     .unwrap();
-    let surface = sweep(&spline, &rmf.frames, &profile).unwrap();
+    let surface = sweep(&rmf.framed, &profile).unwrap();
     // The user's path: a curve sampled as the approximation samples it, and its PH spline.
     let approximated = ph_spline_approximate(&spline, spline.breaks(), 1e-6).unwrap();
     let mut sink = 0.0;
     let count = allocations_during(|| {
         for i in 0..EVALUATIONS {
             let s = parameter(i);
-            sink += rmf.frames.frame(s).f2.x;
+            sink += rmf.framed.frames().frame(s).f2.x;
             sink += spline.eval_jet(s).d2.y;
             sink += surface.eval_jet(0.3, s).duv.z;
             sink += ParametricCurve::point_derivative(&spline, s).unwrap().1.x;

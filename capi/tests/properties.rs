@@ -124,7 +124,7 @@ proptest! {
         // at r = 1.9e-4, from the carried frame).
         let r = ph_cubics(&spline).unwrap().iter().map(|c| c.speed_ratio()).fold(1.0, f64::min);
         for t in parameters(&spline) {
-            let frame = rmf.frames.frame(t);
+            let frame = rmf.framed.frames().frame(t);
             // Orthonormal to rounding at every bend: the base frames come from the quaternion
             // preimage (a finding of this test: (19) taken literally was 5e-9 from
             // orthonormal at sin θ = 2e-3, its conditioning ε/sin²θ).

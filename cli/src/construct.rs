@@ -3,31 +3,19 @@
 //! development. Failures of the geometry are reported at the input field they come from.
 
 use crate::job::{
-    ConeJob, Developable as Input, Method, SheetInput, SheetJob, Spine, SweepJob, WireEdge, WireJob,
+    ConeJob, Developable as Input, SheetInput, SheetJob, Spine, SweepJob, WireEdge, WireJob,
 };
 use crate::json::InputError;
 use rmfsurf::glam::DVec3;
-use rmfsurf::metrics::nearest_parameter;
 use rmfsurf::{
-    approximate_developable, check_g1, grid_parameters, hermite_sequence, mobius_approximate,
-    mobius_hermite_points, ph_frenet_frames, ph_rational_rmf, ph_spline_approximate,
-    ph_spline_hermite, rrmf_spline, sweep, sweep_wire, uniform_parameters, ConeSpline, Developable,
-    Edge, FlatPattern, ParametricCurve, PiecewiseCurve, PiecewiseSurface, RationalFrames,
-    RmfOptions, Rule, RuledSurface, Shape, ShapeMeasure, SheetPart, TangentSurface, WireSweep,
+    approximate_developable, check_g1, framed_spine, framed_spine_through, sweep, sweep_wire,
+    ConeSpline, Developable, Edge, FlatPattern, FramedCurve, PiecewiseCurve, PiecewiseSurface,
+    Rule, RuledSurface, Shape, SheetPart, TangentSurface, WireSweep,
 };
-
-/// Most segments the Möbius and RRMF methods use to reach the tolerance on a NURBS spine
-/// (doubled from the NURBS's own segment count).
-const MAX_SEGMENTS: usize = 4096;
-/// η samples per RRMF segment (then refined by Brent's method).
-const ETA_SAMPLES: usize = 64;
-/// Points per segment at which the distance of a spine to its input is measured.
-const DISTANCE_SAMPLES: usize = 16;
 
 /// A swept surface with its spine and frames.
 pub struct SweepOutcome {
-    pub spine: PiecewiseCurve,
-    pub frames: RationalFrames,
+    pub framed: FramedCurve,
     pub surface: PiecewiseSurface,
     /// For a NURBS spine: the largest measured distance of the spine from it.
     pub spine_distance: Option<f64>,
@@ -67,25 +55,24 @@ fn at(path: &str) -> impl Fn(rmfsurf::Error) -> InputError + '_ {
 }
 
 pub fn run_sweep(job: &SweepJob) -> Result<SweepOutcome, InputError> {
-    let (spine, frames, spine_distance) = match job.method {
-        Method::PhRmf | Method::Frenet => {
-            let (spine, distance) = ph_spine(&job.spine, job.tolerance)?;
-            let frames = if job.method == Method::PhRmf {
-                ph_rational_rmf(&spine, &RmfOptions::rmf(job.initial_normal))
-                    .map(|r| r.frames)
-                    .map_err(at(blame_normal(job.initial_normal, &spine)))?
-            } else {
-                ph_frenet_frames(&spine).map_err(at("sweep.method"))?
-            };
-            (spine, frames, distance)
+    let (framed, spine_distance) = match &job.spine {
+        Spine::Hermite { points, tangents } => (
+            framed_spine_through(points, tangents, job.method, job.initial_normal)
+                .map_err(at(blame_hermite(job, points, tangents)))?,
+            None,
+        ),
+        Spine::Nurbs(nurbs) => {
+            let curve = nurbs.to_piecewise().map_err(at("sweep.spine.nurbs"))?;
+            check_g1(&curve).map_err(at("sweep.spine.nurbs"))?;
+            let spine = framed_spine(&curve, job.method, job.tolerance, job.initial_normal)
+                .map_err(at(blame_curve(job, &curve)))?;
+            (spine.framed, Some(spine.distance))
         }
-        Method::Mobius | Method::Rrmf => exact_rmf_spine(job)?,
     };
     let profile = job.profile.to_piecewise().map_err(at("sweep.profile"))?;
-    let surface = sweep(&spine, &frames, &profile).map_err(at("sweep"))?;
+    let surface = sweep(&framed, &profile).map_err(at("sweep"))?;
     Ok(SweepOutcome {
-        spine,
-        frames,
+        framed,
         surface,
         spine_distance,
     })
@@ -179,98 +166,30 @@ fn wire_blame(message: &str) -> String {
     "sweep".into()
 }
 
-/// Frames fail on the initial normal when it is tangent to the spine at the start.
-fn blame_normal(normal: DVec3, spine: &PiecewiseCurve) -> &'static str {
-    let tangent = spine.eval_jet(spine.domain().0).d1.normalize_or_zero();
-    if normal.cross(tangent).length() <= 1e-9 * normal.length() {
+/// Which field a failed spine through Hermite data is about: the initial normal when it
+/// is along the start tangent, the data otherwise.
+fn blame_hermite(job: &SweepJob, points: &[DVec3], tangents: &[DVec3]) -> &'static str {
+    match (points.first(), tangents.first()) {
+        (Some(_), Some(&t)) if along(job.initial_normal, t) => "sweep.initial_normal",
+        _ => "sweep.spine",
+    }
+}
+
+/// Which field a failed spine within the tolerance of a curve is about: the initial normal
+/// when it is along the start tangent, the tolerance otherwise.
+fn blame_curve(job: &SweepJob, curve: &PiecewiseCurve) -> &'static str {
+    let tangent = curve.eval_jet(curve.domain().0).d1;
+    if along(job.initial_normal, tangent) {
         "sweep.initial_normal"
     } else {
-        "sweep.spine"
+        "sweep.tolerance"
     }
 }
 
-/// The PH cubic spline through the Hermite data, or within `tolerance` of the NURBS.
-fn ph_spine(spine: &Spine, tolerance: f64) -> Result<(PiecewiseCurve, Option<f64>), InputError> {
-    match spine {
-        Spine::Hermite { points, tangents } => Ok((
-            ph_spline_hermite(points, tangents).map_err(at("sweep.spine"))?,
-            None,
-        )),
-        Spine::Nurbs(nurbs) => {
-            let curve = nurbs.to_piecewise().map_err(at("sweep.spine.nurbs"))?;
-            check_g1(&curve).map_err(at("sweep.spine.nurbs"))?;
-            let fit = ph_spline_approximate(&curve, curve.breaks(), tolerance)
-                .map_err(at("sweep.tolerance"))?;
-            Ok((fit.spline, Some(fit.max_distance)))
-        }
-    }
-}
-
-/// A curve with an exact rational RMF (Möbius or RRMF) through the Hermite data, or through
-/// samples of the NURBS, doubling the segments until the tolerance is met.
-fn exact_rmf_spine(
-    job: &SweepJob,
-) -> Result<(PiecewiseCurve, RationalFrames, Option<f64>), InputError> {
-    let n = job.initial_normal;
-    let through = |points: &[DVec3], tangents: &[DVec3]| match job.method {
-        Method::Mobius => mobius_hermite_points(points, tangents, n).map(|r| (r.curve, r.frames)),
-        _ => hermite_sequence(points, tangents)
-            .and_then(|s| rrmf_spline(&s, ShapeMeasure::ScaledEnergyRmf, ETA_SAMPLES, n))
-            .map(|r| (r.curve, r.frames)),
-    };
-    let nurbs = match &job.spine {
-        Spine::Hermite { points, tangents } => {
-            let (curve, frames) = through(points, tangents).map_err(at("sweep.spine"))?;
-            return Ok((curve, frames, None));
-        }
-        Spine::Nurbs(nurbs) => nurbs.to_piecewise().map_err(at("sweep.spine.nurbs"))?,
-    };
-    check_g1(&nurbs).map_err(at("sweep.spine.nurbs"))?;
-    let mut segments = nurbs.segments().len().max(2);
-    loop {
-        let params = uniform_parameters(nurbs.domain(), segments + 1);
-        let (curve, frames) = if job.method == Method::Mobius {
-            mobius_approximate(&nurbs, segments, n).map(|r| (r.curve, r.frames))
-        } else {
-            samples(&nurbs, &params).and_then(|(p, t)| through(&p, &t))
-        }
-        .map_err(at("sweep.spine"))?;
-        let distance = distance(&curve, &nurbs, &params);
-        if distance <= job.tolerance {
-            return Ok((curve, frames, Some(distance)));
-        }
-        if 2 * segments > MAX_SEGMENTS {
-            return Err(InputError {
-                path: "sweep.tolerance".into(),
-                message: format!(
-                    "not reached with {segments} segments (distance {distance:.3e}); give a larger tolerance"
-                ),
-            });
-        }
-        segments *= 2;
-    }
-}
-
-fn samples(curve: &PiecewiseCurve, params: &[f64]) -> rmfsurf::Result<(Vec<DVec3>, Vec<DVec3>)> {
-    let pairs = params
-        .iter()
-        .map(|&t| curve.point_unit_tangent(t))
-        .collect::<rmfsurf::Result<Vec<_>>>()?;
-    Ok(pairs.into_iter().unzip())
-}
-
-/// Largest distance from points of `approx` to `reference`; segment k of `approx` is
-/// compared with the part of `reference` between `params[k]` and `params[k + 1]`.
-fn distance(approx: &PiecewiseCurve, reference: &PiecewiseCurve, params: &[f64]) -> f64 {
-    let ts = grid_parameters(approx.breaks(), DISTANCE_SAMPLES);
-    ts.iter()
-        .map(|&t| {
-            let (k, _) = approx.locate(t);
-            let p = approx.eval(t);
-            let v = nearest_parameter(reference, p, params[k], params[k + 1]);
-            reference.eval(v).distance(p)
-        })
-        .fold(0.0, f64::max)
+/// Whether `normal` is along the tangent (no component in the normal plane).
+fn along(normal: DVec3, tangent: DVec3) -> bool {
+    let tangent = tangent.normalize_or_zero();
+    normal.cross(tangent).length() <= 1e-9 * normal.length()
 }
 
 /// The cone spline within the job's tolerance of a developable, and the deviation reached.

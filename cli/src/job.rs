@@ -6,29 +6,9 @@
 use crate::json::{self, InputError, InputResult, Point2, Vec3};
 use crate::schema;
 use rmfsurf::glam::DVec3;
-use rmfsurf::{Element, NurbsCurve, NurbsSurface, Reference, Sheet, SheetOptions};
+use rmfsurf::{Element, NurbsCurve, NurbsSurface, Reference, Sheet, SheetOptions, SpineMethod};
 use std::f64::consts::FRAC_1_SQRT_2;
 use std::io::Read;
-
-/// How the frames along the spine are made.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Method {
-    /// PH cubic spline, rational approximation of its RMF (Mäurer & Jüttler).
-    PhRmf,
-    /// PH cubic spline, its rational Frenet frame (for comparison: not rotation-minimizing).
-    Frenet,
-    /// Degree-6 curves with exact rational RMFs by Möbius maps (Bartoň, Jüttler & Wang).
-    Mobius,
-    /// RRMF quintics with exact rational RMFs (Farouki, Giannelli & Sestini).
-    Rrmf,
-}
-
-pub static METHODS: [(&str, Method); 4] = [
-    ("ph-rmf", Method::PhRmf),
-    ("frenet", Method::Frenet),
-    ("mobius", Method::Mobius),
-    ("rrmf", Method::Rrmf),
-];
 
 /// The spine as given.
 #[derive(Clone, Debug)]
@@ -45,7 +25,7 @@ pub enum Spine {
 #[derive(Clone, Debug)]
 pub struct SweepJob {
     pub spine: Spine,
-    pub method: Method,
+    pub method: SpineMethod,
     pub tolerance: f64,
     pub initial_normal: DVec3,
     /// In the normal plane: x along f₂, y along f₃.
@@ -219,7 +199,7 @@ fn sweep_job(sweep: schema::Sweep) -> InputResult<SweepJob> {
     let (profile, profile_is_line) = profile_curve(sweep.profile, "sweep.profile")?;
     Ok(SweepJob {
         spine: curve_spine(sweep.spine)?,
-        method: sweep.method.unwrap_or(Method::PhRmf),
+        method: sweep.method.map_or(SpineMethod::PhRmf, |m| m.0),
         tolerance: sweep.tolerance.map_or(DEFAULT_TOLERANCE, |t| t.0),
         initial_normal: sweep.initial_normal.map_or(DVec3::Z, |n| n.0),
         profile,

@@ -341,13 +341,13 @@ impl<'de> Deserialize<'de> for Bool {
 }
 
 /// One of a fixed set of names, as a string.
-pub struct NameVisitor<T: 'static> {
+pub struct NameVisitor<'n, T> {
     /// What the name is of, for messages ("method").
     pub what: &'static str,
-    pub names: &'static [(&'static str, T)],
+    pub names: &'n [(&'static str, T)],
 }
 
-impl<'de, T: Copy + 'static> Visitor<'de> for NameVisitor<T> {
+impl<'de, T: Copy> Visitor<'de> for NameVisitor<'_, T> {
     type Value = T;
 
     fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {

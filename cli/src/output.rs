@@ -163,7 +163,7 @@ pub fn render(
                 Outcome::Sweep(o) => Some(
                     grid_parameters(o.surface.v_breaks(), v)
                         .into_iter()
-                        .map(|t| (o.spine.eval(t), o.frames.frame(t)))
+                        .map(|t| (o.framed.curve().eval(t), o.framed.frames().frame(t)))
                         .collect::<Vec<_>>(),
                 ),
                 Outcome::ConeSpline(_) | Outcome::Wire(_) | Outcome::Sheet(_) => None,
@@ -188,7 +188,7 @@ pub fn render(
 /// spline strip.
 pub fn render_curves(path: &Path, outcome: &Outcome) -> rmfsurf::Result<String> {
     let curves = match outcome {
-        Outcome::Sweep(o) => vec![NurbsCurve::from_piecewise(&o.spine)?],
+        Outcome::Sweep(o) => vec![NurbsCurve::from_piecewise(o.framed.curve())?],
         Outcome::Wire(shape) => shape
             .spine()
             .iter()

@@ -4,9 +4,8 @@
 //! checks what depends on several fields. Lists have the bounds below, derived from the
 //! library's, so that reading stops at the first item too many.
 
-use crate::job::{Method, METHODS};
 use crate::json::{Bool, Bound, Bounded, Count, NameVisitor, Number, Point2, Positive, Vec3};
-use rmfsurf::{Corner, Reference, MAX_DEGREE, MAX_FACES, MAX_SWEEP_POLES};
+use rmfsurf::{Corner, Reference, SpineMethod, MAX_DEGREE, MAX_FACES, MAX_SWEEP_POLES};
 use serde::de::{self, Deserializer, MapAccess, Visitor};
 use serde::Deserialize;
 use std::fmt;
@@ -128,7 +127,7 @@ pub struct Mesh {
 #[serde(deny_unknown_fields, expecting = "an object")]
 pub struct Sweep {
     pub spine: Spine,
-    pub method: Option<Method>,
+    pub method: Option<MethodName>,
     pub tolerance: Option<Positive>,
     pub initial_normal: Option<Vec3>,
     pub profile: Profile,
@@ -350,12 +349,17 @@ pub struct Obround {
     pub radius: Positive,
 }
 
-impl<'de> Deserialize<'de> for Method {
+/// A spine method by its name (`"ph-rmf"`, `"frenet"`, `"mobius"`, `"rrmf"`).
+#[derive(Clone, Copy, Debug)]
+pub struct MethodName(pub SpineMethod);
+
+impl<'de> Deserialize<'de> for MethodName {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         d.deserialize_any(NameVisitor {
             what: "method",
-            names: &METHODS,
+            names: &SpineMethod::ALL.map(|m| (m.name(), m)),
         })
+        .map(MethodName)
     }
 }
 

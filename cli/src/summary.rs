@@ -6,11 +6,11 @@
 //! lengths, ruling–boundary angles, flatness).
 
 use crate::construct::{ConeOutcome, Outcome, SheetOutcome, SweepOutcome};
-use crate::job::{Construction, Job, Method};
+use crate::job::{Construction, Job};
 use rmfsurf::metrics::{angle_between, orthonormality_error, parameter_line_cosine, rmf_defect};
 use rmfsurf::{
     angle_errors, grid_parameters, max_scaled_curvature, FrameField, FrameKind, Layer,
-    NurbsSurface, PatternEdge, PieceKind, PiecewiseSurface, Side,
+    NurbsSurface, PatternEdge, PhSpline, PieceKind, PiecewiseSurface, Side, SpineMethod,
 };
 use serde_json::{json, Map, Value};
 use std::sync::Arc;
@@ -84,12 +84,12 @@ impl Summary {
     }
 }
 
-fn method_name(method: Method) -> &'static str {
+fn method_name(method: SpineMethod) -> &'static str {
     match method {
-        Method::PhRmf => "PH cubic spline, rational RMF (Mäurer & Jüttler)",
-        Method::Frenet => "PH cubic spline, rational Frenet frame (not rotation-minimizing)",
-        Method::Mobius => "exact rational RMF by Möbius maps (Bartoň, Jüttler & Wang)",
-        Method::Rrmf => "RRMF quintics, exact rational RMF (Farouki, Giannelli & Sestini)",
+        SpineMethod::PhRmf => "PH cubic spline, rational RMF (Mäurer & Jüttler)",
+        SpineMethod::Frenet => "PH cubic spline, rational Frenet frame (not rotation-minimizing)",
+        SpineMethod::Mobius => "exact rational RMF by Möbius maps (Bartoň, Jüttler & Wang)",
+        SpineMethod::Rrmf => "RRMF quintics, exact rational RMF (Farouki, Giannelli & Sestini)",
     }
 }
 
@@ -109,10 +109,18 @@ fn surface_shape(surface: &PiecewiseSurface) -> String {
     }
 }
 
-fn sweep_figures(method: Method, line: bool, o: &SweepOutcome) -> rmfsurf::Result<Vec<Figure>> {
+fn sweep_figures(
+    method: SpineMethod,
+    line: bool,
+    o: &SweepOutcome,
+) -> rmfsurf::Result<Vec<Figure>> {
     let mut figures = vec![
         figure("method", "method", method_name(method)),
-        figure("spine_segments", "spine segments", o.spine.segments().len()),
+        figure(
+            "spine_segments",
+            "spine segments",
+            o.framed.curve().segments().len(),
+        ),
     ];
     if let Some(d) = o.spine_distance {
         figures.push(figure(
@@ -122,18 +130,18 @@ fn sweep_figures(method: Method, line: bool, o: &SweepOutcome) -> rmfsurf::Resul
         ));
     }
     let field = FrameField::new(
-        Arc::new(o.spine.clone()),
-        FrameKind::Rational(o.frames.clone()),
+        Arc::new(o.framed.curve().clone()),
+        FrameKind::Rational(o.framed.frames().clone()),
     )?;
     let (mut defect, mut orthonormality) = (0.0f64, 0.0f64);
-    for t in grid_parameters(o.frames.breaks(), SAMPLES) {
+    for t in grid_parameters(o.framed.frames().breaks(), SAMPLES) {
         defect = defect.max(rmf_defect(&field, t)?.abs());
         orthonormality = orthonormality.max(orthonormality_error(&field.frame(t)?));
     }
     figures.push(figure(
         "frame_pieces",
         "frame pieces (rational)",
-        o.frames.segments().len(),
+        o.framed.frames().segments().len(),
     ));
     figures.push(figure(
         "rmf_defect",
@@ -145,8 +153,9 @@ fn sweep_figures(method: Method, line: bool, o: &SweepOutcome) -> rmfsurf::Resul
         "frames: max orthonormality error",
         orthonormality,
     ));
-    if method == Method::PhRmf {
-        let angle = angle_errors(&o.spine, &o.frames)?.max;
+    if method == SpineMethod::PhRmf {
+        let spline = PhSpline::new(o.framed.curve().clone())?;
+        let angle = angle_errors(&spline, o.framed.frames())?.max;
         figures.push(figure(
             "rmf_angle_error",
             "frames: max angle to the exact RMF (rad)",

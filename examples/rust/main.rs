@@ -11,7 +11,7 @@ fn main() -> rmfsurf::Result<()> {
         .unzip();
     let spine = ph_spline_hermite(&points, &tangents)?; // 16 PH cubics, G1 at the joints
     let rmf = ph_rational_rmf(&spine, &RmfOptions::rmf(DVec3::Z))?; // rational, degree 6
-    let errors = angle_errors(&spine, &rmf.frames)?; // against the closed-form RMF
+    let errors = angle_errors(&spine, rmf.framed.frames())?; // against the closed-form RMF
 
     // The profile in the normal plane (x -> f2, y -> f3): a quarter circle of radius 0.2.
     let pole = |x, y| DVec3::new(x, y, 0.0);
@@ -21,7 +21,7 @@ fn main() -> rmfsurf::Result<()> {
         Some(vec![1.0, std::f64::consts::FRAC_1_SQRT_2, 1.0]),
         vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0],
     )?;
-    let surface = sweep(&spine, &rmf.frames, &arc.to_piecewise()?)?;
+    let surface = sweep(&rmf.framed, &arc.to_piecewise()?)?;
     let nurbs = NurbsSurface::from_piecewise(&surface)?; // one NURBS, as CAD kernels take it
     println!(
         "RMF within {:.1e} rad of the exact one; NURBS of degree ({}, {}) with {} x {} poles",

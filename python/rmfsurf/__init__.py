@@ -34,8 +34,9 @@ from .curves import (BezierSegment, Curve, Inversion, NurbsCurve, RrmfQuintic, d
                      mobius_rrmf_hermite, ph_cubic_hermite, ph_spline_approximate,
                      ph_spline_hermite, profile_offset, profile_offset_by_arcs, rrmf_quintic_best,
                      rrmf_quintic_curve, rrmf_quintic_solutions, rrmf_spline_hermite)
-from .frames import (Frames, double_reflection_frames, frenet_frames, mobius_frames,
-                     ph_exact_rmf, ph_frenet_frames, ph_rational_rmf, ph_rmf_angle_error)
+from .frames import (SPINE_METHODS, Frames, double_reflection_frames, framed_spine,
+                     frenet_frames, mobius_frames, ph_exact_rmf, ph_frenet_frames,
+                     ph_rational_rmf, ph_rmf_angle_error)
 from .shapes import Arc, CurveEdge, Line, Shape, ShapeFace, SweepReport, wire_sweep
 from .sheets import FlatEdge, SheetPart, SheetReport, part_between_rails, tangent_part, transition
 from .surfaces import (BezierPatch, NurbsSurface, SingularityMargin, Surface,

@@ -18,6 +18,13 @@ KINDS: Dict[int, str] = {
     lib.RMF_FRAMES_DOUBLE_REFLECTION: "double_reflection",
     lib.RMF_FRAMES_FRENET: "frenet",
 }
+#: The methods of :func:`framed_spine`, by the names the tools use.
+SPINE_METHODS: Dict[str, int] = {
+    "ph-rmf": lib.RMF_SPINE_PH_RMF,
+    "frenet": lib.RMF_SPINE_FRENET,
+    "mobius": lib.RMF_SPINE_MOBIUS,
+    "rrmf": lib.RMF_SPINE_RRMF,
+}
 VECTORS: Dict[str, int] = {
     "tangent": lib.RMF_FRAME_TANGENT,
     "f2": lib.RMF_FRAME_F2,
@@ -99,6 +106,22 @@ def ph_rational_rmf(ph_spline: Curve, initial_normal: ArrayLike = (0.0, 0.0, 1.0
     else:
         call("rmf_ph_rational_rmf_twisted", spline._ptr, normal, turn, symmetry, out)
     return Frames._owned(out)
+
+
+def framed_spine(curve: Curve, method: str = "ph-rmf", tolerance: float = 1e-4,
+                 initial_normal: ArrayLike = (0.0, 0.0, 1.0)) -> Tuple[Curve, Frames, float]:
+    """A spine within `tolerance` of a G1 rational `curve` with rational frames by `method`
+    (rmf_framed_spine): "ph-rmf" (PH cubic spline, rational RMF), "frenet" (its exact
+    rational Frenet frame), "mobius" or "rrmf" (exact rational RMFs through samples of the
+    curve, doubled until within the tolerance). Returns (spine, frames, distance), distance
+    the largest one measured between spine and curve."""
+    source = as_curve(curve, "curve")
+    code = _core.choice(method, "method", SPINE_METHODS)
+    spine, frames = _core.out_pointer("RmfCurve"), _core.out_pointer("RmfFrames")
+    distance = ffi.new("double *")
+    call("rmf_framed_spine", source._ptr, code, _core.number(tolerance, "tolerance"),
+         _core.vec3(initial_normal, "initial_normal"), spine, frames, distance)
+    return Curve._owned(spine), Frames._owned(frames), float(distance[0])
 
 
 def ph_frenet_frames(ph_spline: Curve) -> Frames:

@@ -28,9 +28,8 @@ import Part
 
 from . import _core
 from .cone_splines import ConeSpline, cone_spline_approximate_ruled
-from .curves import (ArrayLike, Curve, NurbsCurve, distinct_knots, flat_knots, join_nurbs,
-                     mobius_rrmf_approximate, ph_spline_approximate, rrmf_spline_hermite)
-from .frames import Frames, ph_frenet_frames, ph_rational_rmf
+from .curves import ArrayLike, Curve, NurbsCurve, distinct_knots, flat_knots, join_nurbs
+from .frames import SPINE_METHODS, Frames, framed_spine
 from .shapes import Arc, CurveEdge, Edge, Line, Shape, SweepReport, wire_sweep
 from .sheets import SheetPart
 from .sheets import transition as _transition
@@ -185,34 +184,16 @@ def part_face(value: Surface) -> Any:
 # Sweeping a sketch along an edge with a chosen frame
 
 
-METHODS = ("ph-rmf", "mobius", "rrmf", "frenet")
+METHODS = tuple(SPINE_METHODS)
 
 
 def spine_with_frames(spine: Curve, method: str = "ph-rmf", tolerance: float = 1e-4,
-                      initial_normal: Sequence[float] = (0, 0, 1),
-                      segments: Optional[int] = None) -> Tuple[Curve, Frames]:
-    """A spine with rational frames by `method`: "ph-rmf" (PH cubic spline within
-    `tolerance`, its rational RMF), "frenet" (the same spline's rational Frenet frame),
-    "mobius" (exact rational RMF, `segments` Hermite segments, default 16) or "rrmf" (RRMF
-    quintics through `segments` + 1 samples)."""
+                      initial_normal: Sequence[float] = (0, 0, 1)) -> Tuple[Curve, Frames]:
+    """A spine within `tolerance` of `spine` with rational frames by `method` (one of
+    :data:`METHODS`), as :func:`rmfsurf.framed_spine` makes it."""
     spine = _core.instance(spine, "spine", Curve, "an rmfsurf.Curve")
-    _core.choice(method, "method", {m: i for i, m in enumerate(METHODS)})
-    tolerance = _core.number(tolerance, "tolerance")
-    # The library's bound on sample and segment counts (2**24); the "rrmf" samples are
-    # allocated here first.
-    segments = 16 if segments is None else _core.integer(segments, "segments", "size_t", 1,
-                                                         2 ** 24)
-    if method in ("ph-rmf", "frenet"):
-        ph, _ = ph_spline_approximate(spine, tolerance)
-        if method == "ph-rmf":
-            return ph, ph_rational_rmf(ph, initial_normal)
-        return ph, ph_frenet_frames(ph)
-    if method == "mobius":
-        return mobius_rrmf_approximate(spine, segments, initial_normal)
-    if method == "rrmf":
-        ts = np.linspace(*spine.domain, segments + 1)
-        points, tangents = spine.eval(ts, derivative=True)
-    return rrmf_spline_hermite(points, tangents, initial_normal)
+    made, frames, _ = framed_spine(spine, method, tolerance, initial_normal)
+    return made, frames
 
 
 def sweep_sketch_along_edge(sketch: Any, edge: Any, method: str = "ph-rmf",

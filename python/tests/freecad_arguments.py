@@ -72,8 +72,6 @@ IN = Inputs()
 
 
 INTEGERS = [
-    ("freecad.spine_with_frames(segments)", 1, 2 ** 24,
-     lambda v: rfc.spine_with_frames(IN.spline, "rrmf", segments=v)),
     ("freecad.sweep_with_report(closure_symmetry)", 0, MAXIMUM["uint32_t"],
      lambda v: rfc.sweep_with_report(IN.wire, IN.ring, closure_symmetry=v)),
     ("freecad.cone_spline_from_face(max_pieces)", 2, MAXIMUM["size_t"],
@@ -88,8 +86,7 @@ def test_an_integer_out_of_range_is_invalid_input_naming_the_argument_and_range(
     assert "%d to %d" % (minimum, maximum) in message, message
 
 
-@pytest.mark.parametrize("case, value", parametrize(  # segments=None: the default, 16
-    INTEGERS, lambda c: [v for v in NOT_INTEGERS if v is not None or "segments" not in c[0]]))
+@pytest.mark.parametrize("case, value", parametrize(INTEGERS, lambda c: NOT_INTEGERS))
 def test_a_non_integer_is_a_type_error_naming_the_argument(case, value):
     refused(case[3], value, TypeError, argument(case[0]))
 
@@ -190,12 +187,13 @@ def test_wrong_objects_name_the_argument():
     refused(lambda v: rfc.flat_pattern(v), IN.developed, TypeError, "part")
 
 
-def test_a_segment_count_of_zero_is_refused_not_replaced_by_the_default():
-    refused(lambda v: rfc.spine_with_frames(IN.spline, "mobius", segments=v), 0,
-            rmfsurf.InvalidInputError, "segments")
-    curve, _ = rfc.spine_with_frames(IN.spline, "mobius", segments=np.int32(3))
-    assert curve.segment_count == rmfsurf.mobius_rrmf_approximate(IN.spline, 3)[0].segment_count
-    assert curve.segment_count != rmfsurf.mobius_rrmf_approximate(IN.spline, 16)[0].segment_count
+def test_spine_with_frames_is_the_librarys_framed_spine():
+    for method in rfc.METHODS:
+        curve, frames = rfc.spine_with_frames(IN.spline, method, 1e-5)
+        same, _, distance = rmfsurf.framed_spine(IN.spline, method, 1e-5)
+        assert curve.segment_count == same.segment_count, method
+        assert distance <= 1e-5, (method, distance)
+        assert frames.domain == curve.domain
 
 
 CASES = {

@@ -28,22 +28,10 @@ use crate::curve::{check_sample_count, uniform_parameters, ParametricCurve};
 use crate::error::{invalid, Error, Result};
 use crate::frames::rational::{RationalFrameSegment, RationalFrames, Turning};
 use crate::hermite::{hermite_sequence, HermiteSegment};
+use crate::model::FramedCurve;
 use crate::ph_cubic::hermite::ph_cubic_hermite;
 use crate::ph_cubic::PhCubic;
 use glam::DVec3;
-
-/// A curve with an exact rational RMF, sharing one segmentation.
-#[derive(Clone, Debug)]
-pub struct RationalRmfCurve {
-    /// The curve.
-    pub curve: PiecewiseCurve,
-    /// Its exact rational RMF, on the curve's segmentation.
-    pub frames: RationalFrames,
-    /// The largest angle (radians) by which the shared joint frames and the pinned end
-    /// tangents moved a segment's own ends (see [`mobius_hermite`]): the rounding of the
-    /// construction, reported for its tests.
-    pub joint_correction: f64,
-}
 
 /// The planar cubic's RMF over its speed σ: f₂ = n σ/σ, f₃ = (x' × n)/σ, with the hodograph
 /// x' = 3(h₀, h₁, h₂) in Bernstein form (Mäurer & Jüttler (18)).
@@ -158,7 +146,17 @@ pub fn mobius_hermite(
     segments: &[HermiteSegment],
     params: &[f64],
     initial_normal: DVec3,
-) -> Result<RationalRmfCurve> {
+) -> Result<FramedCurve> {
+    Ok(mobius_hermite_corrected(segments, params, initial_normal)?.0)
+}
+
+/// [`mobius_hermite`] with the largest angle (radians) by which the shared joint frames and
+/// the pinned end tangents moved a segment's own ends: the rounding of the construction.
+pub(crate) fn mobius_hermite_corrected(
+    segments: &[HermiteSegment],
+    params: &[f64],
+    initial_normal: DVec3,
+) -> Result<(FramedCurve, f64)> {
     if params.len() != segments.len() + 1 {
         return invalid!(
             "{} segments need {} parameters",
@@ -182,11 +180,11 @@ pub fn mobius_hermite(
         &pieces.tangents,
         initial_normal,
     )?;
-    Ok(RationalRmfCurve {
-        curve: PiecewiseCurve::new(pieces.curves, pieces.breaks)?,
-        frames: frames.with_turning(Turning::RotationMinimizing),
-        joint_correction: pieces.correction.max(frame_correction),
-    })
+    let curve = PiecewiseCurve::new(pieces.curves, pieces.breaks)?;
+    Ok((
+        FramedCurve::of_construction(curve, frames.with_turning(Turning::RotationMinimizing)),
+        pieces.correction.max(frame_correction),
+    ))
 }
 
 /// The interpolant through points with unit tangents, segment i on [i, i + 1].
@@ -194,7 +192,7 @@ pub fn mobius_hermite_points(
     points: &[DVec3],
     tangents: &[DVec3],
     initial_normal: DVec3,
-) -> Result<RationalRmfCurve> {
+) -> Result<FramedCurve> {
     let segments = hermite_sequence(points, tangents)?;
     let params: Vec<f64> = (0..points.len()).map(|i| i as f64).collect();
     mobius_hermite(&segments, &params, initial_normal)
@@ -206,7 +204,7 @@ pub fn mobius_approximate(
     curve: &dyn ParametricCurve,
     segment_count: usize,
     initial_normal: DVec3,
-) -> Result<RationalRmfCurve> {
+) -> Result<FramedCurve> {
     check_sample_count(segment_count, 1, "segments")?;
     let params = uniform_parameters(curve.domain(), segment_count + 1);
     let samples = params
@@ -233,21 +231,21 @@ mod tests {
     };
     use std::sync::Arc;
 
-    fn check_rational_rmf(result: &RationalRmfCurve) -> [f64; 3] {
+    fn check_rational_rmf(result: &FramedCurve) -> [f64; 3] {
         let field = FrameField::new(
-            Arc::new(result.curve.clone()),
-            FrameKind::Rational(result.frames.clone()),
+            Arc::new(result.curve().clone()),
+            FrameKind::Rational(result.frames().clone()),
         )
         .unwrap();
-        let (lo, hi) = result.curve.domain();
+        let (lo, hi) = result.curve().domain();
         let mut worst = [0.0f64; 3];
         for i in 0..=1000 {
             let t = lo + (hi - lo) * i as f64 / 1000.0;
-            let frame = result.frames.frame(t);
+            let frame = result.frames().frame(t);
             worst[0] = worst[0].max(rmf_defect(&field, t).unwrap().abs());
             worst[1] = worst[1].max(orthonormality_error(&frame));
             worst[2] =
-                worst[2].max((frame.tangent - result.curve.eval_jet(t).d1.normalize()).length());
+                worst[2].max((frame.tangent - result.curve().eval_jet(t).d1.normalize()).length());
         }
         worst
     }
@@ -292,18 +290,18 @@ mod tests {
     fn one_segment_is_a_sextic_on_the_sphere_with_an_exact_rmf() {
         let data = spatial_hermite_segment();
         let result = mobius_hermite(&[data], &[0.0, 1.0], DVec3::Z).unwrap();
-        assert!(result.curve.segments().iter().all(|s| s.degree() == 6));
+        assert!(result.curve().segments().iter().all(|s| s.degree() == 6));
         let (center, radius) = chosen_segment_map(&data).sphere.unwrap();
-        let (lo, hi) = result.curve.domain();
-        assert!((result.curve.eval(lo) - data.p0).length() < 1e-14);
-        assert!((result.curve.eval(hi) - data.p1).length() < 1e-14);
-        assert!((result.curve.eval_jet(lo).d1.normalize() - data.t0).length() < 1e-13);
-        assert!((result.curve.eval_jet(hi).d1.normalize() - data.t1).length() < 1e-13);
+        let (lo, hi) = result.curve().domain();
+        assert!((result.curve().eval(lo) - data.p0).length() < 1e-14);
+        assert!((result.curve().eval(hi) - data.p1).length() < 1e-14);
+        assert!((result.curve().eval_jet(lo).d1.normalize() - data.t0).length() < 1e-13);
+        assert!((result.curve().eval_jet(hi).d1.normalize() - data.t1).length() < 1e-13);
         // On the sphere, with f₂ at a constant angle to the sphere's normal (the mapped
         // plane normal, turned by the constant that starts f₂ at the initial normal).
         let angle_to_normal = |t: f64| {
-            let frame = result.frames.frame(t);
-            let p = result.curve.eval(t);
+            let frame = result.frames().frame(t);
+            let p = result.curve().eval(t);
             angle_about_tangent(
                 &frame,
                 &Frame::from_tangent_normal(frame.tangent, (p - center) / radius),
@@ -313,7 +311,7 @@ mod tests {
         for i in 0..=20 {
             let t = i as f64 / 20.0;
             assert!(
-                ((result.curve.eval(t) - center).length() - radius).abs() < 1e-13 * radius,
+                ((result.curve().eval(t) - center).length() - radius).abs() < 1e-13 * radius,
                 "on the sphere"
             );
             assert!(
@@ -340,15 +338,15 @@ mod tests {
             defect < 1e-10 && ortho < 1e-13 && tangent < 1e-11,
             "{defect} {ortho} {tangent}"
         );
-        for w in result.frames.segments().windows(2) {
+        for w in result.frames().segments().windows(2) {
             assert!(
                 (w[0].frame(1.0).f2 - w[1].frame(0.0).f2).length() < 1e-13,
                 "continuous at joints"
             );
         }
-        let start = result.frames.frame(0.0).f2;
+        let start = result.frames().frame(0.0).f2;
         let drift =
-            gap_to_double_reflection(&result.curve, start, 20_001, |t| result.frames.frame(t));
+            gap_to_double_reflection(result.curve(), start, 20_001, |t| result.frames().frame(t));
         assert!(
             drift < 1e-9,
             "exact rational RMF vs double reflection along the Möbius spline: {drift}"
@@ -360,12 +358,12 @@ mod tests {
         let (points, tangents) = planar_hermite_data();
         let result = mobius_hermite_points(&points, &tangents, DVec3::Z).unwrap();
         assert!(result
-            .curve
+            .curve()
             .segments()
             .iter()
             .all(|s| s.degree() == 3 && s.is_polynomial()));
         for i in 0..=10 {
-            assert!((result.frames.frame(i as f64 / 5.0).f2 - DVec3::Z).length() < 1e-14);
+            assert!((result.frames().frame(i as f64 / 5.0).f2 - DVec3::Z).length() < 1e-14);
         }
     }
 
@@ -407,9 +405,15 @@ mod tests {
 
     /// The frames of consecutive pieces at their common breakpoint, and the curve's unit
     /// tangent against the data tangents at the joints: the largest differences.
-    fn joint_gaps(result: &RationalRmfCurve, tangents: &[DVec3]) -> (f64, f64) {
+    /// The interpolant through points with tangents with its joint correction.
+    fn corrected(points: &[DVec3], tangents: &[DVec3]) -> Result<(FramedCurve, f64)> {
+        let params: Vec<f64> = (0..points.len()).map(|i| i as f64).collect();
+        mobius_hermite_corrected(&hermite_sequence(points, tangents)?, &params, DVec3::Z)
+    }
+
+    fn joint_gaps(result: &FramedCurve, tangents: &[DVec3]) -> (f64, f64) {
         let mut frames = 0.0f64;
-        for w in result.frames.segments().windows(2) {
+        for w in result.frames().segments().windows(2) {
             let (a, b) = (w[0].frame(1.0), w[1].frame(0.0));
             frames = frames
                 .max((a.f2 - b.f2).length())
@@ -419,7 +423,7 @@ mod tests {
         let curve = tangents
             .iter()
             .enumerate()
-            .map(|(i, t)| angle_between(result.curve.eval_jet(i as f64).d1, *t))
+            .map(|(i, t)| angle_between(result.curve().eval_jet(i as f64).d1, *t))
             .fold(0.0, f64::max);
         (frames, curve)
     }
@@ -433,19 +437,19 @@ mod tests {
     fn densely_sampled_helices_are_g1_by_construction() {
         for (count, step) in [(3, 0.005), (801, 0.01), (2001, 1e-3)] {
             let (points, tangents) = helix_samples(count, step);
-            let result = mobius_hermite_points(&points, &tangents, DVec3::Z)
+            let (result, correction) = corrected(&points, &tangents)
                 .unwrap_or_else(|e| panic!("{count} samples {step} apart: {e}"));
             let (frames, curve) = joint_gaps(&result, &tangents);
             println!(
                 "{count} helix samples {step} apart: frame jump at joints {frames:.1e}, curve \
                  tangent vs data {curve:.1e}, joint correction {:.1e}",
-                result.joint_correction
+                correction
             );
             assert!(frames < 1e-15, "{frames:e}");
             // The end legs lie along the data tangents up to the rounding of the poles,
             // ε |P| / |leg| (the legs are 1/6 of a chord).
             assert!(curve < 32.0 * f64::EPSILON / (step / 6.0), "{curve:e}");
-            assert!(result.joint_correction <= 32.0 * f64::EPSILON / (step / 6.0));
+            assert!(correction <= 32.0 * f64::EPSILON / (step / 6.0));
             let [defect, ortho, tangent] = check_rational_rmf(&result);
             assert!(
                 defect < 1e-9 && ortho < 1e-13 && tangent < 1e-10,
@@ -459,16 +463,16 @@ mod tests {
     #[test]
     fn a_hundred_thousand_helix_points_make_one_spline() {
         let (points, tangents) = helix_samples(100_000, 1e-4);
-        let result = mobius_hermite_points(&points, &tangents, DVec3::Z).unwrap();
+        let (result, correction) = corrected(&points, &tangents).unwrap();
         let (frames, curve) = joint_gaps(&result, &tangents);
         println!(
             "10⁵ helix points: {} pieces, frame jump {frames:.1e}, curve tangent vs data \
              {curve:.1e}, joint correction {:.1e}",
-            result.frames.segments().len(),
-            result.joint_correction
+            result.frames().segments().len(),
+            correction
         );
         assert!(frames < 1e-15 && curve < 32.0 * f64::EPSILON / (1e-4 / 6.0));
-        assert!(result.joint_correction <= 32.0 * f64::EPSILON / (1e-4 / 6.0));
+        assert!(correction <= 32.0 * f64::EPSILON / (1e-4 / 6.0));
     }
 
     /// Issue finding (paper gaps): data within 1e-8 of planar were treated as planar with
@@ -490,16 +494,17 @@ mod tests {
             let t1 = DVec3::new(1.0, -1.0, tilt).normalize();
             let points = [DVec3::ZERO, DVec3::new(2.0, 0.3, 0.0)];
             let result = mobius_hermite_points(&points, &[t0, t1], DVec3::Z).unwrap();
-            let (lo, hi) = result.curve.domain();
+            let (lo, hi) = result.curve().domain();
             for (t, data) in [(lo, t0), (hi, t1)] {
-                worst_tangent = worst_tangent.max(angle_between(result.curve.eval_jet(t).d1, data));
+                worst_tangent =
+                    worst_tangent.max(angle_between(result.curve().eval_jet(t).d1, data));
             }
             let [defect, ortho, _] = check_rational_rmf(&result);
             assert!(
                 defect < 1e-10 && ortho < 1e-13,
                 "tilt {tilt:e}: {defect:e} {ortho:e}"
             );
-            let (mid, f2) = (result.curve.eval(0.5), result.frames.frame(0.5).f2);
+            let (mid, f2) = (result.curve().eval(0.5), result.frames().frame(0.5).f2);
             if let Some((before, mid_before, f2_before)) = previous {
                 // Lipschitz in the tilt (the curve bends out of plane by about the tilt).
                 let moved = (mid - mid_before).length().max((f2 - f2_before).length());
@@ -529,8 +534,8 @@ mod nearly_planar_tests {
             let t = [DVec3::Y, DVec3::new(0.0, -9.5, z)];
             let r = mobius_hermite_points(&p, &t, DVec3::new(-0.5, 1.0, 1.0)).unwrap();
             for k in 0..=16 {
-                let f = r.frames.frame(k as f64 / 16.0);
-                let d1 = r.curve.eval_jet(k as f64 / 16.0).d1.normalize();
+                let f = r.frames().frame(k as f64 / 16.0);
+                let d1 = r.curve().eval_jet(k as f64 / 16.0).d1.normalize();
                 for (name, error) in [
                     ("|t|", f.tangent.length() - 1.0),
                     ("|f2|", f.f2.length() - 1.0),

@@ -24,6 +24,7 @@ use crate::bezier::{PiecewiseCurve, RationalBezierCurve};
 use crate::error::{invalid, Result};
 use crate::frames::rational::{RationalFrameSegment, RationalFrames, Turning};
 use crate::math::largest_coordinate;
+use crate::model::FramedCurve;
 use glam::{DVec3, DVec4};
 
 /// Halvings allowed per segment when making weights positive (2⁻³⁰ of a segment is far
@@ -244,14 +245,13 @@ pub fn map_curve(map: &MobiusMap, curve: &PiecewiseCurve) -> Result<PiecewiseCur
 
 /// The images of a curve and of exact rational frames along it (Corollary 1). The frames
 /// may refine the curve's segments; the result shares one segmentation.
-pub fn map_framed_curve(
-    map: &MobiusMap,
-    curve: &PiecewiseCurve,
-    frames: &RationalFrames,
-) -> Result<(PiecewiseCurve, RationalFrames)> {
-    let curve = curve.refined(frames.breaks())?;
-    let (image, frames) = map_pieces(map, &curve, Some(frames))?;
-    Ok((image, frames.expect("frames were given")))
+pub fn map_framed_curve(map: &MobiusMap, framed: &FramedCurve) -> Result<FramedCurve> {
+    let curve = framed.curve_on_frame_segments();
+    let (image, frames) = map_pieces(map, &curve, Some(framed.frames()))?;
+    Ok(FramedCurve::of_construction(
+        image,
+        frames.expect("frames were given"),
+    ))
 }
 
 /// The degrees of the image of a segment of degree `n` (and of frames of degree `m`) stay
@@ -392,31 +392,33 @@ mod tests {
     /// products past their tables (a panic). Images beyond the degree bound are refused.
     #[test]
     fn images_beyond_the_degree_bound_are_refused() {
-        let (curve, frames) = planar_ph_cubic();
+        let framed = planar_ph_cubic();
+        let curve = framed.curve();
         let sphere = Inversion::sphere(DVec3::new(1.0, -2.0, -1.0), 3.0).unwrap();
         // A cubic: 3 → 6 → 12 → 24 → 48; its frames grow faster (m → m + 2n).
         let four = MobiusMap::new(vec![sphere; 4]);
-        let e = map_framed_curve(&four, &curve, &frames).unwrap_err();
+        let e = map_framed_curve(&four, &framed).unwrap_err();
         assert!(e.message().contains("above 64"), "{e}");
         assert!(
-            map_curve(&four, &curve).is_ok(),
+            map_curve(&four, curve).is_ok(),
             "the curve alone has degree 48"
         );
         let five = MobiusMap::new(vec![sphere; 5]);
-        assert!(map_curve(&five, &curve).is_err());
+        assert!(map_curve(&five, curve).is_err());
     }
 
     /// Corollary 1, exactly: the rational image of a rational RMF is a rational RMF of the
     /// rational image curve. Mapped twice, so the second map acts on a non-planar curve.
     #[test]
     fn exact_images_of_rational_rmfs_are_rational_rmfs() {
-        let (curve, frames) = planar_ph_cubic();
+        let framed = planar_ph_cubic();
+        let curve = framed.curve();
         let map = composite();
-        let (once, once_frames) = map_framed_curve(&map, &curve, &frames).unwrap();
+        let once = map_framed_curve(&map, &framed).unwrap();
         let second = MobiusMap::new(vec![
             Inversion::sphere(DVec3::new(1.0, -2.0, -1.0), 3.0).unwrap()
         ]);
-        let (twice, twice_frames) = map_framed_curve(&second, &once, &once_frames).unwrap();
+        let (twice, twice_frames) = map_framed_curve(&second, &once).unwrap().into_parts();
         let degree = twice.segments().iter().map(|s| s.degree()).max().unwrap();
         assert_eq!(
             degree, 24,
@@ -455,7 +457,8 @@ mod tests {
 
     #[test]
     fn a_curve_through_an_inversion_centre_is_refused() {
-        let (curve, _) = planar_ph_cubic();
+        let framed = planar_ph_cubic();
+        let curve = framed.curve().clone();
         let through = MobiusMap::new(vec![Inversion::sphere(curve.eval(0.5), 1.0).unwrap()]);
         let e = map_curve(&through, &curve).unwrap_err();
         assert!(e.message().contains("inversion centre"), "{e}");

@@ -11,6 +11,6 @@ pub mod image;
 pub mod segment_map;
 pub mod transform;
 
-pub use hermite::{mobius_approximate, mobius_hermite, mobius_hermite_points, RationalRmfCurve};
+pub use hermite::{mobius_approximate, mobius_hermite, mobius_hermite_points};
 pub use image::{map_curve, map_framed_curve};
 pub use transform::{Inversion, MobiusMap};

@@ -9,7 +9,7 @@
 //! for every frame hid it).
 
 use super::exact_rmf::ExactRmf;
-use crate::bezier::PiecewiseCurve;
+use super::spline::PhSpline;
 use crate::error::{invalid, Result};
 use crate::frames::metrics::angle_about_tangent;
 use crate::frames::rational::{RationalFrames, Turning};
@@ -34,7 +34,7 @@ pub struct AngleErrors {
 
 /// The angle errors of `frames` (rational frames along `spline`, e.g. from
 /// `ph_rational_rmf`) against the exact RMF of the PH cubic spline.
-pub fn angle_errors(spline: &PiecewiseCurve, frames: &RationalFrames) -> Result<AngleErrors> {
+pub fn angle_errors(spline: &PhSpline, frames: &RationalFrames) -> Result<AngleErrors> {
     let (lo, hi) = spline.domain();
     let fb = frames.breaks();
     if fb[0] != lo || fb[fb.len() - 1] != hi || spline.breaks().iter().any(|b| !fb.contains(b)) {
@@ -109,7 +109,7 @@ mod tests {
     fn reports_the_error_of_the_rational_rmf_per_segment() {
         let spline = helix_spline(6, 0.8);
         let rmf = ph_rational_rmf(&spline, &RmfOptions::rmf(DVec3::Y)).unwrap();
-        let errors = angle_errors(&spline, &rmf.frames).unwrap();
+        let errors = angle_errors(&spline, rmf.framed.frames()).unwrap();
         assert_eq!(errors.per_segment.len(), 6);
         assert!(errors.twist.abs() < 1e-12);
         // The helix is uniform: every segment has the same error, found to 1e-3 relative.
@@ -120,10 +120,10 @@ mod tests {
             .iter()
             .all(|e| (e - e0).abs() < 1e-3 * e0));
         // A dense independent scan finds nothing larger.
-        let exact = ExactRmf::new(&spline, rmf.frames.frame(0.0).f2, 0.0).unwrap();
+        let exact = ExactRmf::new(&spline, rmf.framed.frames().frame(0.0).f2, 0.0).unwrap();
         let scan = (0..=60000)
             .map(|i| 6.0 * i as f64 / 60000.0)
-            .map(|t| angle_about_tangent(&exact.frame(t), &rmf.frames.frame(t)).abs())
+            .map(|t| angle_about_tangent(&exact.frame(t), &rmf.framed.frames().frame(t)).abs())
             .fold(0.0, f64::max);
         assert!(scan <= errors.max * (1.0 + 1e-6), "{scan} > {}", errors.max);
         assert!(scan > errors.max * 0.999);
@@ -137,14 +137,14 @@ mod tests {
             ..RmfOptions::rmf(DVec3::Y)
         };
         let twisted = ph_rational_rmf(&spline, &options).unwrap();
-        let errors = angle_errors(&spline, &twisted.frames).unwrap();
+        let errors = angle_errors(&spline, twisted.framed.frames()).unwrap();
         assert!((errors.twist - 1.0).abs() < 1e-12);
         // The twist ω·s(v) is not of the arctan form W follows best: 3e-5 rad on this coarse
         // spline (8 segments per turn of the helix), against 5e-6 without twist.
         assert!(errors.max < 1e-4, "{errors:?}");
         // The Frenet frame of a helix turns against its RMF by −∫τ ds: no twist of its own is
         // taken off, so the whole turn is its error.
-        let frenet = angle_errors(&spline, &ph_frenet_frames(&spline).unwrap()).unwrap();
+        let frenet = angle_errors(&spline, ph_frenet_frames(&spline).unwrap().frames()).unwrap();
         assert_eq!(frenet.twist, 0.0);
         assert!(frenet.max > 1.0, "{frenet:?}");
     }
@@ -152,7 +152,7 @@ mod tests {
     #[test]
     fn rejects_frames_of_another_curve() {
         let rmf = ph_rational_rmf(&helix_spline(3, 0.8), &RmfOptions::rmf(DVec3::Y)).unwrap();
-        assert!(angle_errors(&helix_spline(4, 0.8), &rmf.frames).is_err());
+        assert!(angle_errors(&helix_spline(4, 0.8), rmf.framed.frames()).is_err());
     }
 
     /// Issue finding (paper gaps): the end turn was taken off as a twist for every frame, so
@@ -165,7 +165,11 @@ mod tests {
             twist: 0.5,
             ..RmfOptions::rmf(DVec3::Y)
         };
-        let twisted = ph_rational_rmf(&spline, &options).unwrap().frames;
+        let twisted = ph_rational_rmf(&spline, &options)
+            .unwrap()
+            .framed
+            .into_parts()
+            .1;
         let known = angle_errors(&spline, &twisted).unwrap();
         assert!(known.max < 1e-4, "{known:?}");
         let drifting = twisted.with_turning(Turning::Unknown);

@@ -29,7 +29,7 @@ use super::exact_rmf::ExactRmf;
 use super::frenet::frenet_numerators;
 use super::parabolic::ParabolicCurve;
 use super::profile::{critical_points, interior_roots, profile_segments, vanishes, ProfileSegment};
-use super::spline::ph_cubics;
+use super::spline::PhSpline;
 use crate::bezier::{locate, PiecewiseCurve};
 use crate::error::no_solution;
 use crate::error::Num;
@@ -39,7 +39,7 @@ use crate::frames::rational::{RationalFrames, Turning};
 use crate::frames::Frame;
 use crate::math::minimize_bracketed;
 use crate::mesh::grid_parameters;
-use crate::sweep::check_frames_belong_to;
+use crate::model::FramedCurve;
 use glam::{DVec2, DVec3};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
@@ -98,12 +98,8 @@ impl<'a> ProfileSurface<'a> {
     /// rate ω the surface's s_v has the part ω(c₂f₃ − c₃f₂) across the spine, and g, K and
     /// (14) are other functions (the choice: refuse, rather than answer a question that was
     /// not asked).
-    pub fn new(
-        spine: &'a PiecewiseCurve,
-        frames: &'a RationalFrames,
-        profile: &'a PiecewiseCurve,
-    ) -> Result<Self> {
-        check_frames_belong_to(spine, frames)?;
+    pub fn new(framed: &'a FramedCurve, profile: &'a PiecewiseCurve) -> Result<Self> {
+        let (spine, frames) = (framed.curve(), framed.frames());
         match frames.turning() {
             Turning::RotationMinimizing => {}
             Turning::Twisted { total } => {
@@ -134,7 +130,7 @@ impl<'a> ProfileSurface<'a> {
         frames: &'a RationalFrames,
         profile: &'a PiecewiseCurve,
     ) -> Result<Self> {
-        check_frames_belong_to(spine, frames)?;
+        FramedCurve::check(spine, frames)?;
         Self::of_checked_frames(spine, frames, profile)
     }
 
@@ -468,12 +464,12 @@ pub struct ConvexStart {
 /// with `NoSolution` when the profile is not convex, δ + ΔΩ ≥ π, or a spine segment is
 /// (nearly) straight (K = 0 there).
 pub fn convex_initial_normal(
-    spline: &PiecewiseCurve,
+    spline: &PhSpline,
     profile: &PiecewiseCurve,
     elliptic: bool,
 ) -> Result<ConvexStart> {
     let (turn, a_start, a_end) = profile_turn(profile)?;
-    let cubics = ph_cubics(spline)?;
+    let cubics = spline.cubics();
     let start = frenet_numerators(&cubics[0]).frame(0.0);
     let rmf = ExactRmf::new(spline, start.f2, 0.0)?;
     let mut arcs = Vec::with_capacity(cubics.len());
@@ -595,16 +591,14 @@ mod tests {
     fn analyses_beyond_the_pair_bound_are_refused() {
         let spine = helix_spline(2, 0.15);
         let rmf = ph_rational_rmf(&spine, &RmfOptions::rmf(DVec3::Z)).unwrap();
-        let pieces = rmf.frames.segments().len();
+        let pieces = rmf.framed.frames().segments().len();
         let profile = arc_profile(0.3, DVec3::ZERO);
         let arc = profile.segments()[0].clone();
         let many = MAX_ANALYSIS_PAIRS / pieces + 1;
         let long = PiecewiseCurve::with_unit_intervals(vec![arc; many]).unwrap();
-        let e = ProfileSurface::new(&spine, &rmf.frames, &long)
-            .err()
-            .unwrap();
+        let e = ProfileSurface::new(&rmf.framed, &long).err().unwrap();
         assert!(e.message().contains("pairs to analyse"), "{e}");
-        assert!(ProfileSurface::new(&spine, &rmf.frames, &profile).is_ok());
+        assert!(ProfileSurface::new(&rmf.framed, &profile).is_ok());
     }
 
     #[test]
@@ -612,8 +606,8 @@ mod tests {
         let spine = helix_spline(16, 0.15);
         let rmf = ph_rational_rmf(&spine, &RmfOptions::rmf(DVec3::Z)).unwrap();
         let profile = arc_profile(0.3, DVec3::new(0.1, -0.2, 0.0));
-        let analysis = ProfileSurface::new(&spine, &rmf.frames, &profile).unwrap();
-        let surface = sweep(&spine, &rmf.frames, &profile).unwrap();
+        let analysis = ProfileSurface::new(&rmf.framed, &profile).unwrap();
+        let surface = sweep(&rmf.framed, &profile).unwrap();
         for &(u, v) in &[(0.2, 0.3), (0.5, 1.7), (0.9, 3.6), (0.4, 11.1)] {
             let jet = surface.eval_jet(u, v);
             let k = gaussian_curvature(&jet);
@@ -637,7 +631,7 @@ mod tests {
         let spine = helix_spline(4, 0.6);
         let rmf = ph_rational_rmf(&spine, &RmfOptions::rmf(DVec3::Z)).unwrap();
         let small_profile = arc_profile(0.3, DVec3::ZERO);
-        let small = ProfileSurface::new(&spine, &rmf.frames, &small_profile).unwrap();
+        let small = ProfileSurface::new(&rmf.framed, &small_profile).unwrap();
 
         let m = small.singularity_margin();
         assert!(
@@ -645,11 +639,11 @@ mod tests {
             "{m:?}"
         );
         let big_profile = arc_profile(2.0, DVec3::ZERO);
-        let big = ProfileSurface::new(&spine, &rmf.frames, &big_profile).unwrap();
+        let big = ProfileSurface::new(&rmf.framed, &big_profile).unwrap();
         let m = big.singularity_margin();
         assert!(m.margin < 0.0 && m.bound_margin < 0.0, "{m:?}");
         // The reported point is where the sweep's s_v has the smallest tangential part.
-        let surface = sweep(&spine, &rmf.frames, &big_profile).unwrap();
+        let surface = sweep(&rmf.framed, &big_profile).unwrap();
         let scan = (0..=40)
             .flat_map(|i| (0..=40).map(move |j| (i as f64 / 40.0, 4.0 * j as f64 / 40.0)))
             .map(|(u, v)| {
@@ -669,10 +663,10 @@ mod tests {
         let spine = helix_spline(4, 0.6);
         let profile = s_profile();
         let lines = |scale: f64| {
-            let spine = spine.similar(scale, DVec3::ZERO);
+            let spine = spine.similar(scale, DVec3::ZERO).unwrap();
             let rmf = ph_rational_rmf(&spine, &RmfOptions::rmf(DVec3::Z)).unwrap();
             let profile = profile.similar(scale, DVec3::ZERO);
-            ProfileSurface::new(&spine, &rmf.frames, &profile)
+            ProfileSurface::new(&rmf.framed, &profile)
                 .unwrap()
                 .parabolic_lines(9)
         };
@@ -704,7 +698,7 @@ mod tests {
         let rmf = ph_rational_rmf(&spine, &RmfOptions::rmf(DVec3::Z)).unwrap();
         // An S-shaped cubic profile: one inflection at u = 1/2, curves (14) besides.
         let profile = s_profile();
-        let analysis = ProfileSurface::new(&spine, &rmf.frames, &profile).unwrap();
+        let analysis = ProfileSurface::new(&rmf.framed, &profile).unwrap();
         let lines = analysis.parabolic_lines(9);
         assert_eq!(lines.profile_inflections.len(), 1);
         assert!((lines.profile_inflections[0] - 0.5).abs() < 1e-12);
@@ -735,7 +729,7 @@ mod tests {
             assert!((start.profile_turn - FRAC_PI_2).abs() < 1e-12);
             assert!(start.margin > 0.0);
             let rmf = ph_rational_rmf(&spine, &RmfOptions::rmf(start.initial_normal)).unwrap();
-            let surface = sweep(&spine, &rmf.frames, &profile).unwrap();
+            let surface = sweep(&rmf.framed, &profile).unwrap();
             for i in 0..=20 {
                 for j in 0..=20 {
                     let k = gaussian_curvature(
@@ -779,11 +773,13 @@ mod tests {
         assert_eq!(spine.breaks(), other.breaks());
         let rmf = ph_rational_rmf(&other, &RmfOptions::rmf(DVec3::Z)).unwrap();
         let profile = arc_profile(0.3, DVec3::ZERO);
-        let e = ProfileSurface::new(&spine, &rmf.frames, &profile)
+        let e = FramedCurve::new(spine.curve().clone(), rmf.framed.frames().clone()).unwrap_err();
+        assert!(e.message().contains("tangent differs"), "{e}");
+        // The analysis of a spine with frames held apart checks them too.
+        let e = ProfileSurface::with_adapted_frames(&spine, rmf.framed.frames(), &profile)
             .err()
             .unwrap();
         assert!(e.message().contains("tangent differs"), "{e}");
-        assert!(sweep(&spine, &rmf.frames, &profile).is_err());
     }
 
     /// Issue finding (paper gaps): the analyses assume an RMF but answered for Frenet and
@@ -793,9 +789,7 @@ mod tests {
         let spine = helix_spline(4, 0.6);
         let profile = arc_profile(0.3, DVec3::ZERO);
         let frenet = crate::ph_cubic::frenet::ph_frenet_frames(&spine).unwrap();
-        let e = ProfileSurface::new(&spine, &frenet, &profile)
-            .err()
-            .unwrap();
+        let e = ProfileSurface::new(&frenet, &profile).err().unwrap();
         assert!(
             e.message().contains("not known to be rotation-minimizing"),
             "{e}"
@@ -805,7 +799,7 @@ mod tests {
             ..RmfOptions::rmf(DVec3::Z)
         };
         let twisted = ph_rational_rmf(&spine, &options).unwrap();
-        let e = ProfileSurface::new(&spine, &twisted.frames, &profile)
+        let e = ProfileSurface::new(&twisted.framed, &profile)
             .err()
             .unwrap();
         assert!(
@@ -814,6 +808,6 @@ mod tests {
         );
         // The RMF of the same spine is analysed; the Frenet sweep's curvature is not (13).
         let rmf = ph_rational_rmf(&spine, &RmfOptions::rmf(DVec3::Z)).unwrap();
-        assert!(ProfileSurface::new(&spine, &rmf.frames, &profile).is_ok());
+        assert!(ProfileSurface::new(&rmf.framed, &profile).is_ok());
     }
 }

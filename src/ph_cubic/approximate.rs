@@ -37,6 +37,7 @@ mod distance;
 
 use super::cubic::PhCubic;
 use super::hermite::ph_cubic_hermite;
+use super::spline::PhSpline;
 use crate::bezier::PiecewiseCurve;
 #[cfg(test)]
 use crate::curve::uniform_parameters;
@@ -155,7 +156,7 @@ impl ApproximationOptions {
 #[derive(Clone, Debug)]
 pub struct PhApproximation {
     /// Segment i interpolates the curve's points and tangents at its breakpoints.
-    pub spline: PiecewiseCurve,
+    pub spline: PhSpline,
     /// Largest measured distance between the spline and the curve.
     pub max_distance: f64,
     /// The measured distance of each segment.
@@ -277,9 +278,9 @@ pub fn ph_spline_approximate_with(
     breaks.push(starts[starts.len() - 1].t);
     let segment_distances: Vec<f64> = march.kept.iter().map(|k| k.distance).collect();
     let max_distance = segment_distances.iter().fold(0.0f64, |m, &d| m.max(d));
-    let segments = march.kept.iter().map(|k| k.cubic.to_bezier()).collect();
+    let cubics = march.kept.iter().map(|k| k.cubic).collect();
     Ok(PhApproximation {
-        spline: PiecewiseCurve::new(segments, breaks)?,
+        spline: PhSpline::from_cubics_on(cubics, breaks)?,
         max_distance,
         segment_distances,
         evaluations: sampler.evaluations.get(),
@@ -496,7 +497,7 @@ pub fn ph_spline_uniform(curve: &dyn ParametricCurve, segments: usize) -> Result
     for w in samples.windows(2) {
         match fit_interval(&sampler, &w[0], &w[1])? {
             Some((cubic, distance)) => {
-                cubics.push(cubic.to_bezier());
+                cubics.push(cubic);
                 segment_distances.push(distance);
             }
             None => {
@@ -509,7 +510,7 @@ pub fn ph_spline_uniform(curve: &dyn ParametricCurve, segments: usize) -> Result
         }
     }
     Ok(PhApproximation {
-        spline: PiecewiseCurve::new(cubics, samples.iter().map(|s| s.t).collect())?,
+        spline: PhSpline::from_cubics_on(cubics, samples.iter().map(|s| s.t).collect())?,
         max_distance: segment_distances.iter().fold(0.0f64, |m, &d| m.max(d)),
         segment_distances,
         evaluations: sampler.evaluations.get(),

@@ -9,9 +9,9 @@
 
 use super::base_frame::BaseFrame;
 use super::cubic::PhCubic;
-use super::spline::ph_cubics;
+use super::spline::PhSpline;
 use crate::bezier::bernstein;
-use crate::bezier::{locate, PiecewiseCurve};
+use crate::bezier::locate;
 use crate::error::Result;
 use crate::error::ResultExt;
 use crate::frames::metrics::angle_about_tangent;
@@ -40,11 +40,11 @@ pub struct ExactRmf {
 impl ExactRmf {
     /// The RMF of `spline` with f₂ at the start = `initial_normal` projected onto the normal
     /// plane, turned in addition by `twist_rate` radians per unit arc length.
-    pub fn new(spline: &PiecewiseCurve, initial_normal: DVec3, twist_rate: f64) -> Result<Self> {
+    pub fn new(spline: &PhSpline, initial_normal: DVec3, twist_rate: f64) -> Result<Self> {
         let mut segments: Vec<Segment> = Vec::with_capacity(spline.segments().len());
         let mut arc_before = 0.0;
         let tolerance = g1_tolerance(spline);
-        for (k, cubic) in ph_cubics(spline)?.into_iter().enumerate() {
+        for (k, &cubic) in spline.cubics().iter().enumerate() {
             let base = BaseFrame::of(&cubic).with_context(|| format!("ph_spline segment {k}"))?;
             let previous_end = segments.last().map(|p| p.frame(1.0, twist_rate));
             let start_angle = joining_turn(
@@ -73,8 +73,7 @@ impl ExactRmf {
     /// The RMF of a single PH cubic on [0, 1] (e.g. the cubic of Example 2 of the Möbius
     /// paper, as a reference for convergence tables).
     pub fn for_cubic(cubic: &PhCubic, initial_normal: DVec3) -> Result<Self> {
-        let spline = PiecewiseCurve::new(vec![cubic.to_bezier()], vec![0.0, 1.0])?;
-        Self::new(&spline, initial_normal, 0.0)
+        Self::new(&PhSpline::from_cubics(vec![*cubic])?, initial_normal, 0.0)
     }
 
     /// The frame at the spline parameter t.
@@ -195,6 +194,7 @@ impl SegmentTarget<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::bezier::PiecewiseCurve;
     use crate::ph_cubic::test_curves::helix_spline;
     use crate::testing::gap_to_double_reflection;
 
@@ -212,7 +212,7 @@ mod tests {
         let cubic = crate::ph_cubic::hermite::ph_cubic_hermite(&data)
             .unwrap()
             .shape_matching;
-        let spline = PiecewiseCurve::new(vec![cubic.to_bezier()], vec![0.0, 1.0]).unwrap();
+        let spline = PhSpline::from_cubics(vec![cubic]).unwrap();
         let normal = DVec3::new(1.89e307, 1.27e307, 1.27e307);
         let exact = ExactRmf::new(&spline, normal, 0.0).unwrap();
         for t in [0.0, 0.5, 1.0] {
@@ -288,7 +288,9 @@ mod tests {
         ])
         .unwrap();
         let kinked = PiecewiseCurve::with_unit_intervals(vec![a, b]).unwrap();
-        let e = ExactRmf::new(&kinked, DVec3::Z, 0.0).unwrap_err();
+        let e = PhSpline::new(kinked)
+            .and_then(|s| ExactRmf::new(&s, DVec3::Z, 0.0))
+            .unwrap_err();
         assert!(e.message().contains("not G1"), "{e}");
     }
 }

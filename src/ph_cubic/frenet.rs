@@ -6,11 +6,10 @@
 use super::base_frame::{FrameNumerators, FramePieces};
 use super::cubic::PhCubic;
 use super::preimage::Preimage;
-use super::spline::ph_cubics;
-use crate::bezier::PiecewiseCurve;
+use super::spline::PhSpline;
 use crate::error::ResultExt;
 use crate::error::{invalid, Result};
-use crate::frames::rational::RationalFrames;
+use crate::model::FramedCurve;
 use glam::DVec3;
 
 /// sin θ below which a cubic counts as straight and gets no Frenet frame. Orthonormal at any
@@ -48,9 +47,9 @@ pub fn frenet_numerators(cubic: &PhCubic) -> FrameNumerators {
 /// The Frenet frames (f₂ = n, f₃ = b) of a PH cubic spline as exact rational functions of
 /// degree 2, segments split where σ has a negative Bernstein coefficient (θ > 90°) so that
 /// all weights are positive. Fails on straight segments, where the frame is undefined.
-pub fn ph_frenet_frames(spline: &PiecewiseCurve) -> Result<RationalFrames> {
+pub fn ph_frenet_frames(spline: &PhSpline) -> Result<FramedCurve> {
     let mut pieces = FramePieces::new(spline.breaks());
-    for (k, cubic) in ph_cubics(spline)?.iter().enumerate() {
+    for (k, cubic) in spline.cubics().iter().enumerate() {
         // The frame does not change under translation and scaling; on the exactly PH cubic
         // of the same data the formulas of (19) hold to round-off (see `exactly_ph`).
         let cubic = &cubic
@@ -66,12 +65,22 @@ pub fn ph_frenet_frames(spline: &PiecewiseCurve) -> Result<RationalFrames> {
         }
         pieces.push_all(k, 0.0, 1.0, frenet_numerators(cubic).positive_pieces()?);
     }
-    pieces.into_frames()
+    Ok(FramedCurve::of_construction(
+        spline.curve().clone(),
+        pieces.into_frames()?,
+    ))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::bezier::PiecewiseCurve;
+    use crate::frames::rational::RationalFrames;
+
+    /// The Frenet frames of a piecewise curve taken for a PH spline.
+    fn frenet(curve: &PiecewiseCurve) -> Result<FramedCurve> {
+        ph_frenet_frames(&PhSpline::new(curve.clone())?)
+    }
     use crate::frames::frenet::frenet_frame;
     use crate::ph_cubic::test_curves::helix_spline;
 
@@ -83,7 +92,7 @@ mod tests {
             let t = 6.0 * i as f64 / 60.0;
             let jet = spline.eval_jet(t);
             let expected = frenet_frame(jet.d1, jet.d2).unwrap();
-            let f = frames.frame(t);
+            let f = frames.frames().frame(t);
             assert!((f.f2 - expected.f2).length() < 1e-13, "t = {t}");
             assert!((f.tangent - expected.tangent).length() < 1e-13, "t = {t}");
         }
@@ -123,7 +132,7 @@ mod tests {
             let spline = PiecewiseCurve::with_unit_intervals(vec![segment]).unwrap();
             // Both polygons bend by about 1e-3 rad, where (19) taken literally is conditioned
             // like ε/θ²; from the quaternion preimage the frames are orthonormal to rounding.
-            assert_orthonormal(&ph_frenet_frames(&spline).unwrap(), 1e-14);
+            assert_orthonormal(frenet(&spline).unwrap().frames(), 1e-14);
         }
     }
 
@@ -149,9 +158,9 @@ mod tests {
         )
         .unwrap();
         let spline = PiecewiseCurve::with_unit_intervals(vec![line]).unwrap();
-        match ph_frenet_frames(&spline) {
+        match frenet(&spline) {
             Err(e) => assert!(e.message().contains("no PH cubic interpolates"), "{e}"),
-            Ok(frames) => assert_orthonormal(&frames, 1e-14),
+            Ok(frames) => assert_orthonormal(frames.frames(), 1e-14),
         }
     }
 
@@ -169,7 +178,7 @@ mod tests {
             .unwrap()
             .shape_matching;
         let spline = PiecewiseCurve::with_unit_intervals(vec![cubic.to_bezier()]).unwrap();
-        let e = ph_frenet_frames(&spline).unwrap_err();
+        let e = frenet(&spline).unwrap_err();
         assert!(e.message().contains("(nearly) straight"), "{e}");
     }
 
@@ -183,7 +192,7 @@ mod tests {
         ])
         .unwrap();
         let spline = PiecewiseCurve::with_unit_intervals(vec![line]).unwrap();
-        let e = ph_frenet_frames(&spline).unwrap_err();
+        let e = frenet(&spline).unwrap_err();
         assert!(
             e.message().contains("segment 0 is (nearly) straight"),
             "{e}"

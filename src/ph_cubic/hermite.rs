@@ -367,8 +367,7 @@ mod tests {
                     for c in [Some(s.shape_matching), s.other].into_iter().flatten() {
                         assert_interpolates(&c, data);
                         let spline =
-                            crate::bezier::PiecewiseCurve::new(vec![c.to_bezier()], vec![0.0, 1.0])
-                                .unwrap();
+                            crate::ph_cubic::spline::PhSpline::from_cubics(vec![c]).unwrap();
                         let normal = crate::math::orthonormal_to(data.t0);
                         let rmf = ph_rational_rmf(&spline, &RmfOptions::rmf(normal)).unwrap();
                         // Frames are unit to rounding of the quaternion preimage relative
@@ -382,7 +381,7 @@ mod tests {
                             / speeds.iter().fold(0.0f64, |m, &x| m.max(x));
                         let bound = 1e-14 / r;
                         for v in [0.0, 0.3, 0.7, 1.0] {
-                            let e = orthonormality_error(&rmf.frames.frame(v));
+                            let e = orthonormality_error(&rmf.framed.frames().frame(v));
                             assert!(e < bound, "{e:e} > {bound:e}");
                         }
                         worst_dip = worst_dip.min(r);

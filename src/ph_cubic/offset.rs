@@ -328,8 +328,8 @@ mod tests {
         let rmf = ph_rational_rmf(&spine, &RmfOptions::rmf(DVec3::Z)).unwrap();
         let profile = circle_arc();
         let d = 0.07;
-        let surface = sweep(&spine, &rmf.frames, &profile).unwrap();
-        let offset = sweep(&spine, &rmf.frames, &offset_profile(&profile, d).unwrap()).unwrap();
+        let surface = sweep(&rmf.framed, &profile).unwrap();
+        let offset = sweep(&rmf.framed, &offset_profile(&profile, d).unwrap()).unwrap();
         for i in 0..=10 {
             for j in 0..=10 {
                 let (u, v) = (i as f64 / 10.0, 4.0 * j as f64 / 10.0);

@@ -545,7 +545,9 @@ mod tests {
     use crate::bezier::{PiecewiseCurve, RationalBezierCurve};
     use crate::frames::metrics::gaussian_curvature;
     use crate::frames::rational::{RationalFrameSegment, RationalFrames, Turning};
+    use crate::model::FramedCurve;
     use crate::ph_cubic::rational_rmf::{ph_rational_rmf, RmfOptions};
+    use crate::ph_cubic::spline::PhSpline;
     use crate::ph_cubic::test_curves::{helix_spline, s_profile};
     use crate::sweep::sweep;
     use glam::DVec3;
@@ -665,11 +667,11 @@ mod tests {
         let spine = helix_spline(8, 0.6);
         let rmf = ph_rational_rmf(&spine, &RmfOptions::rmf(DVec3::Z)).unwrap();
         let profile = circle(0.2, DVec3::new(0.05, -0.03, 0.0), 0.3);
-        let analysis = ProfileSurface::new(&spine, &rmf.frames, &profile).unwrap();
+        let analysis = ProfileSurface::new(&rmf.framed, &profile).unwrap();
         let tolerance = 1e-8;
         let curves = analysis.parabolic_curves(tolerance).unwrap();
         let points: usize = curves.iter().map(|c| c.points.len()).sum();
-        let surface = sweep(&spine, &rmf.frames, &profile).unwrap();
+        let surface = sweep(&rmf.framed, &profile).unwrap();
         let (normal, worst) = check_vertices(&curves, &surface, profile.domain(), &spine);
         println!(
             "{} curves, {points} points; at the vertices |n·p| ≤ {normal:.1e}, |K| ≤ {worst:.1e} \
@@ -725,9 +727,9 @@ mod tests {
         let spine = helix_spline(12, 0.35);
         let rmf = ph_rational_rmf(&spine, &RmfOptions::rmf(DVec3::Z)).unwrap();
         let profile = s_profile();
-        let analysis = ProfileSurface::new(&spine, &rmf.frames, &profile).unwrap();
+        let analysis = ProfileSurface::new(&rmf.framed, &profile).unwrap();
         let curves = analysis.parabolic_curves(1e-7).unwrap();
-        let surface = sweep(&spine, &rmf.frames, &profile).unwrap();
+        let surface = sweep(&rmf.framed, &profile).unwrap();
         let (normal, worst) = check_vertices(&curves, &surface, profile.domain(), &spine);
         assert!(normal < 1e-10 && worst < 1e-4, "{normal}, {worst}");
         // Every sampled root lies on a traced line.
@@ -746,7 +748,7 @@ mod tests {
 
     /// The planar PH quintic with hodograph (a² − b², 2ab) for quadratics a, b, its
     /// rotation-minimizing frames (the normal of the plane, f₃ = z) and its inflections.
-    fn planar_quintic(a: [f64; 3], b: [f64; 3]) -> (PiecewiseCurve, RationalFrames) {
+    fn planar_quintic(a: [f64; 3], b: [f64; 3]) -> FramedCurve {
         let mul = |p: f64, q: f64| p * q;
         let (aa, bb, ab) = (
             product(&a, &a, mul),
@@ -772,18 +774,19 @@ mod tests {
         let frames = RationalFrames::new(vec![segment], vec![0.0, 1.0])
             .unwrap()
             .with_turning(Turning::RotationMinimizing);
-        (spine, frames)
+        FramedCurve::new(spine, frames).unwrap()
     }
 
     #[test]
     fn a_planar_spine_gives_lines_of_constant_u_and_its_inflection_a_line_of_constant_v() {
         // a = 1 − 2t + ..., b: a·b' − a'·b has one root in (0, 1): one inflection.
-        let (spine, frames) = planar_quintic([1.0, 0.4, 0.8], [-0.5, 0.3, 0.6]);
+        let framed = planar_quintic([1.0, 0.4, 0.8], [-0.5, 0.3, 0.6]);
+        let spine = framed.curve();
         let profile = circle(0.05, DVec3::ZERO, 0.25);
-        let analysis = ProfileSurface::new(&spine, &frames, &profile).unwrap();
+        let analysis = ProfileSurface::new(&framed, &profile).unwrap();
         let curves = analysis.parabolic_curves(1e-8).unwrap();
-        let surface = sweep(&spine, &frames, &profile).unwrap();
-        let (normal, worst) = check_vertices(&curves, &surface, profile.domain(), &spine);
+        let surface = sweep(&framed, &profile).unwrap();
+        let (normal, worst) = check_vertices(&curves, &surface, profile.domain(), spine);
         // The exact RMF of a planar curve: K vanishes on the lines to the rounding.
         assert!(normal < 1e-10 && worst < 1e-9, "{normal}, {worst}");
         // k ∥ f₂ in the plane: (14) is ċ ∥ f₂, at the profile's points at angles π/2 and 3π/2
@@ -826,7 +829,7 @@ mod tests {
         let spine = helix_spline(4, 0.6);
         let rmf = ph_rational_rmf(&spine, &RmfOptions::rmf(DVec3::Z)).unwrap();
         let profile = circle(0.2, DVec3::ZERO, 0.3);
-        let reference = ProfileSurface::new(&spine, &rmf.frames, &profile)
+        let reference = ProfileSurface::new(&rmf.framed, &profile)
             .unwrap()
             .parabolic_curves(1e-7)
             .unwrap();
@@ -850,8 +853,9 @@ mod tests {
                 PiecewiseCurve::new(segments, c.breaks().to_vec()).unwrap()
             };
             let (spine, profile) = (map(&spine, shift), map(&profile, DVec3::ZERO));
+            let spine = PhSpline::new(spine).unwrap();
             let rmf = ph_rational_rmf(&spine, &RmfOptions::rmf(DVec3::Z)).unwrap();
-            let curves = ProfileSurface::new(&spine, &rmf.frames, &profile)
+            let curves = ProfileSurface::new(&rmf.framed, &profile)
                 .unwrap()
                 .parabolic_curves(1e-7 * scale)
                 .unwrap();
@@ -873,7 +877,7 @@ mod tests {
         let spine = helix_spline(2, 0.6);
         let rmf = ph_rational_rmf(&spine, &RmfOptions::rmf(DVec3::Z)).unwrap();
         let profile = circle(0.2, DVec3::ZERO, 0.0);
-        let analysis = ProfileSurface::new(&spine, &rmf.frames, &profile).unwrap();
+        let analysis = ProfileSurface::new(&rmf.framed, &profile).unwrap();
         for t in [0.0, -1.0, f64::NAN, f64::INFINITY] {
             let e = analysis.parabolic_curves(t).unwrap_err();
             assert!(e.to_string().contains("tolerance"), "{e}");

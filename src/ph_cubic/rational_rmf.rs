@@ -28,11 +28,13 @@ use super::biquadratic::{fit, AngleHermite, BiquadraticFit};
 #[cfg(test)]
 use super::cubic::PhCubic;
 use super::exact_rmf::{ExactRmf, SegmentTarget};
+use super::spline::PhSpline;
 use crate::bezier::PiecewiseCurve;
 use crate::error::ResultExt;
 use crate::error::{invalid, Result};
-use crate::frames::rational::{g1_tolerance, RationalFrames, Turning};
+use crate::frames::rational::{g1_tolerance, Turning};
 use crate::math::{check_finite, largest_coordinate};
+use crate::model::FramedCurve;
 use glam::DVec3;
 use std::f64::consts::{FRAC_PI_2, PI};
 
@@ -90,8 +92,8 @@ pub struct PieceFit {
 /// Rational frames along a PH cubic spline with how they were made.
 #[derive(Clone, Debug)]
 pub struct RationalRmf {
-    /// The rational frames.
-    pub frames: RationalFrames,
+    /// The spline with its rational frames.
+    pub framed: FramedCurve,
     /// How each segment's rational approximation was fitted.
     pub pieces: Vec<PieceFit>,
     /// The turn φ added to the RMF from start to end (twist and closure), radians.
@@ -100,7 +102,7 @@ pub struct RationalRmf {
 
 /// The rational (approximate) RMF of a PH cubic spline (every segment a PH cubic, G1
 /// joints), with the twist and closure of `options`.
-pub fn ph_rational_rmf(spline: &PiecewiseCurve, options: &RmfOptions) -> Result<RationalRmf> {
+pub fn ph_rational_rmf(spline: &PhSpline, options: &RmfOptions) -> Result<RationalRmf> {
     let initial_normal = check_finite(options.initial_normal, "initial_normal")?;
     let rmf = ExactRmf::new(spline, initial_normal, 0.0)?;
     let total_twist = added_turn(spline, &rmf, options)?;
@@ -131,10 +133,11 @@ pub fn ph_rational_rmf(spline: &PiecewiseCurve, options: &RmfOptions) -> Result<
     } else {
         Turning::Twisted { total: total_twist }
     };
+    let frames = pieces
+        .into_chained_frames(initial_normal, g1_tolerance(spline))?
+        .with_turning(turning);
     Ok(RationalRmf {
-        frames: pieces
-            .into_chained_frames(initial_normal, g1_tolerance(spline))?
-            .with_turning(turning),
+        framed: FramedCurve::of_construction(spline.curve().clone(), frames),
         pieces: fits,
         total_twist,
     })
@@ -292,7 +295,7 @@ mod tests {
         let (lo, hi) = spline.domain();
         (0..=2000)
             .map(|i| lo + (hi - lo) * i as f64 / 2000.0)
-            .map(|t| angle_about_tangent(&exact.frame(t), &rmf.frames.frame(t)).abs())
+            .map(|t| angle_about_tangent(&exact.frame(t), &rmf.framed.frames().frame(t)).abs())
             .fold(0.0, f64::max)
     }
 
@@ -334,12 +337,13 @@ mod tests {
                 let spline = ph_spline_hermite(&points, &tangents).unwrap();
                 let rmf = ph_rational_rmf(&spline, &RmfOptions::rmf(DVec3::Z)).unwrap();
                 for t in [0.0, 0.5, 3.3, 8.0] {
-                    let error = orthonormality_error(&rmf.frames.frame(t));
+                    let error = orthonormality_error(&rmf.framed.frames().frame(t));
                     assert!(error < 1e-14, "radius {radius}, pitch {pitch}: {error:e}");
                 }
                 // Frenet side: ε/sin θ; carried side: θ³ (`frenet::NEARLY_STRAIGHT`).
-                let gap =
-                    gap_to_double_reflection(&spline, DVec3::Z, 8001, |t| rmf.frames.frame(t));
+                let gap = gap_to_double_reflection(&spline, DVec3::Z, 8001, |t| {
+                    rmf.framed.frames().frame(t)
+                });
                 assert!(gap < 1e-10, "radius {radius}, pitch {pitch}: {gap:e}");
             }
         }
@@ -350,14 +354,19 @@ mod tests {
         let spline = helix_spline(8, 0.6);
         let rmf = ph_rational_rmf(&spline, &RmfOptions::rmf(DVec3::Z)).unwrap();
         let exact = ExactRmf::new(&spline, DVec3::Z, 0.0).unwrap();
-        assert!(rmf.frames.segments().iter().all(|s| s.degree() == 6));
+        assert!(rmf
+            .framed
+            .frames()
+            .segments()
+            .iter()
+            .all(|s| s.degree() == 6));
         for t in [0.0, 0.5, 3.0, 7.9] {
-            assert!(orthonormality_error(&rmf.frames.frame(t)) < 1e-14);
+            assert!(orthonormality_error(&rmf.framed.frames().frame(t)) < 1e-14);
         }
         // Exact at every joint.
         for k in 0..=8 {
             let t = k as f64;
-            let a = angle_about_tangent(&exact.frame(t), &rmf.frames.frame(t));
+            let a = angle_about_tangent(&exact.frame(t), &rmf.framed.frames().frame(t));
             assert!(a.abs() < 1e-13, "joint {k}: {a}");
         }
     }
@@ -373,12 +382,12 @@ mod tests {
         // |f₃'|, which the curvature keeps from 0 (|f₂'| alone vanishes where f₂ is the
         // binormal, as at the start of this helix with the initial normal on its axis).
         let turn = |piece: usize, s: f64| {
-            let p = &rmf.frames.segments()[piece];
+            let p = &rmf.framed.frames().segments()[piece];
             let (_, d2) = p.f2_with_derivative(s);
             let (_, d3) = p.rotated(std::f64::consts::FRAC_PI_2).f2_with_derivative(s);
             d2.dot(p.frame(s).f3).abs() / d2.length().max(d3.length())
         };
-        let pieces = rmf.frames.segments().len();
+        let pieces = rmf.framed.frames().segments().len();
         for piece in 0..pieces {
             assert!(
                 turn(piece, 0.0) < 1e-12 && turn(piece, 1.0) < 1e-12,
@@ -402,7 +411,8 @@ mod tests {
         let spline = ph_spline_hermite(&points, &tangents).unwrap();
         let rmf = ph_rational_rmf(&spline, &RmfOptions::rmf(DVec3::X)).unwrap();
         assert!(rmf
-            .frames
+            .framed
+            .frames()
             .segments()
             .iter()
             .all(|s| s.denominator().iter().all(|&d| d > 0.0)));
@@ -425,12 +435,13 @@ mod tests {
             (0..=12).map(|i| curve(0.25 * i as f64)).unzip();
         let spline = ph_spline_hermite(&points, &tangents).unwrap();
         let rmf = ph_rational_rmf(&spline, &RmfOptions::rmf(DVec3::Y)).unwrap();
-        let worst = gap_to_double_reflection(&spline, DVec3::Y, 20001, |t| rmf.frames.frame(t));
+        let worst =
+            gap_to_double_reflection(&spline, DVec3::Y, 20001, |t| rmf.framed.frames().frame(t));
         assert!(worst < 1e-8, "{worst}");
         // On the straight part (spline parameters [0, 4]) the frame does not move at all.
         for t in [0.5, 2.0, 3.9] {
             assert!(
-                (rmf.frames.frame(t).f2 - DVec3::Y).length() < 1e-15,
+                (rmf.framed.frames().frame(t).f2 - DVec3::Y).length() < 1e-15,
                 "t = {t}"
             );
         }
@@ -458,7 +469,8 @@ mod tests {
             .iter()
             .all(|c| c.bend() > 0.0 && c.bend() < super::super::frenet::NEARLY_STRAIGHT));
         let rmf = ph_rational_rmf(&spline, &RmfOptions::rmf(DVec3::X)).unwrap();
-        let worst = gap_to_double_reflection(&spline, DVec3::X, 4001, |t| rmf.frames.frame(t));
+        let worst =
+            gap_to_double_reflection(&spline, DVec3::X, 4001, |t| rmf.framed.frames().frame(t));
         assert!(worst < 1e-12, "{worst}");
     }
 
@@ -485,7 +497,7 @@ mod tests {
             let rmf = ph_rational_rmf(&spline, &RmfOptions::rmf(DVec3::Z)).unwrap();
             for i in 0..=60 {
                 let t = 0.1 * i as f64;
-                let (a, b) = (unit.frames.frame(t), rmf.frames.frame(t));
+                let (a, b) = (unit.framed.frames().frame(t), rmf.framed.frames().frame(t));
                 assert!(
                     (a.f2 - b.f2).length() < tolerance,
                     "scale {scale:e}, t = {t}: {:e}",
@@ -502,7 +514,7 @@ mod tests {
         let rmf = ph_rational_rmf(&spline, &RmfOptions::rmf(DVec3::Z)).unwrap();
         assert!(rmf.pieces.iter().all(|p| p.lambda.is_none()));
         for i in 0..=20 {
-            let f = rmf.frames.frame(0.1 * i as f64);
+            let f = rmf.framed.frames().frame(0.1 * i as f64);
             assert!((f.f2 - DVec3::Z).length() < 1e-14 || (f.f2 + DVec3::Z).length() < 1e-14);
         }
     }
@@ -544,7 +556,10 @@ mod tests {
                 ..RmfOptions::rmf(DVec3::Z)
             };
             let rmf = ph_rational_rmf(&spline, &options).unwrap();
-            let (start, end) = (rmf.frames.frame(0.0), rmf.frames.frame(n as f64));
+            let (start, end) = (
+                rmf.framed.frames().frame(0.0),
+                rmf.framed.frames().frame(n as f64),
+            );
             let gap = angle_about_tangent(&start, &end);
             let period = 2.0 * PI / k as f64;
             let off = gap - period * (gap / period).round();
@@ -651,7 +666,10 @@ mod tests {
         let reference = ph_rational_rmf(&near, &RmfOptions::rmf(DVec3::Z)).unwrap();
         for i in 0..=80 {
             let t = 0.1 * i as f64;
-            let (a, b) = (rmf.frames.frame(t), reference.frames.frame(t));
+            let (a, b) = (
+                rmf.framed.frames().frame(t),
+                reference.framed.frames().frame(t),
+            );
             assert!(
                 (a.f2 - b.f2).length() < 1e-8,
                 "t = {t}: {:e}",

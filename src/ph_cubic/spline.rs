@@ -10,26 +10,86 @@ use crate::error::{invalid, Result};
 use crate::hermite::{hermite_sequence, HermiteSegment};
 use glam::DVec3;
 
+/// A PH cubic spline: a piecewise curve whose every segment is a polynomial cubic (or of
+/// lower degree, raised) satisfying the PH condition (17), checked when it is made. Read
+/// as a curve through `Deref`; its cubics are kept for the constructions on it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PhSpline {
+    curve: PiecewiseCurve,
+    cubics: Vec<PhCubic>,
+}
+
+impl PhSpline {
+    /// The PH spline of a piecewise curve, refused (naming the segment) when a segment is not
+    /// a polynomial PH cubic.
+    pub fn new(curve: PiecewiseCurve) -> Result<Self> {
+        let cubics = ph_cubics(&curve)?;
+        Ok(Self { curve, cubics })
+    }
+
+    /// Consecutive PH cubics on [i, i + 1].
+    pub(crate) fn from_cubics(cubics: Vec<PhCubic>) -> Result<Self> {
+        let curve =
+            PiecewiseCurve::with_unit_intervals(cubics.iter().map(PhCubic::to_bezier).collect())?;
+        Ok(Self { curve, cubics })
+    }
+
+    /// Consecutive PH cubics on the intervals between `breaks`.
+    pub(crate) fn from_cubics_on(cubics: Vec<PhCubic>, breaks: Vec<f64>) -> Result<Self> {
+        let curve = PiecewiseCurve::new(cubics.iter().map(PhCubic::to_bezier).collect(), breaks)?;
+        Ok(Self { curve, cubics })
+    }
+
+    /// The spline as a piecewise curve.
+    pub fn curve(&self) -> &PiecewiseCurve {
+        &self.curve
+    }
+
+    /// Its PH cubics, segment by segment.
+    pub fn cubics(&self) -> &[PhCubic] {
+        &self.cubics
+    }
+
+    /// The piecewise curve.
+    pub fn into_curve(self) -> PiecewiseCurve {
+        self.curve
+    }
+
+    /// The spline scaled by `scale` about the origin, then moved by `offset` (a PH curve
+    /// under a similarity is a PH curve).
+    pub fn similar(&self, scale: f64, offset: DVec3) -> Result<Self> {
+        Self::new(self.curve.similar(scale, offset))
+    }
+}
+
+impl std::ops::Deref for PhSpline {
+    type Target = PiecewiseCurve;
+
+    fn deref(&self) -> &PiecewiseCurve {
+        &self.curve
+    }
+}
+
 /// The PH cubic spline through `points` with unit `tangents` (any non-zero length is
 /// normalized): segment i interpolates `points[i]`, `points[i + 1]` on the parameter interval
 /// [i, i + 1].
-pub fn ph_spline_hermite(points: &[DVec3], tangents: &[DVec3]) -> Result<PiecewiseCurve> {
+pub fn ph_spline_hermite(points: &[DVec3], tangents: &[DVec3]) -> Result<PhSpline> {
     ph_spline_from_segments(&hermite_sequence(points, tangents)?)
 }
 
 /// The PH cubic spline through validated consecutive Hermite segments (see
 /// [`ph_spline_hermite`]); errors name the segment and its points.
-pub fn ph_spline_from_segments(segments: &[HermiteSegment]) -> Result<PiecewiseCurve> {
+pub fn ph_spline_from_segments(segments: &[HermiteSegment]) -> Result<PhSpline> {
     let cubics = segments
         .iter()
         .enumerate()
         .map(|(i, s)| {
             ph_cubic_hermite(s)
-                .map(|solutions| solutions.shape_matching.to_bezier())
+                .map(|solutions| solutions.shape_matching)
                 .with_context(|| format!("segment {i} (points[{i}] to points[{}])", i + 1))
         })
-        .collect::<Result<Vec<RationalBezierCurve>>>()?;
-    PiecewiseCurve::with_unit_intervals(cubics)
+        .collect::<Result<Vec<PhCubic>>>()?;
+    PhSpline::from_cubics(cubics)
 }
 
 /// The PH cubics of a piecewise curve whose segments are polynomial of degree ≤ 3 (given

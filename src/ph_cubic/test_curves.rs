@@ -2,7 +2,7 @@
 //! `crate::testing`).
 
 use super::cubic::PhCubic;
-use super::spline::ph_spline_hermite;
+use super::spline::{ph_spline_hermite, PhSpline};
 use crate::bezier::{PiecewiseCurve, RationalBezierCurve};
 use crate::testing::helix;
 use glam::DVec3;
@@ -26,7 +26,7 @@ pub fn mirrored(c: &PhCubic) -> PhCubic {
 }
 
 /// The PH spline through `segments` + 1 samples of the helix with pitch 0.4, spaced by `step`.
-pub fn helix_spline(segments: usize, step: f64) -> PiecewiseCurve {
+pub fn helix_spline(segments: usize, step: f64) -> PhSpline {
     let (points, tangents): (Vec<DVec3>, Vec<DVec3>) =
         (0..=segments).map(|i| helix(step * i as f64, 0.4)).unzip();
     ph_spline_hermite(&points, &tangents).unwrap()

@@ -8,21 +8,18 @@ use super::eta::{best_quintic_within, check_eta_samples, Budget};
 use super::frames::{quintic_curve, quintic_rmf};
 use super::measures::ShapeMeasure;
 use super::solutions::RrmfQuintic;
-use crate::bezier::PiecewiseCurve;
 use crate::error::{Error, Result};
-use crate::frames::rational::RationalFrames;
 use crate::hermite::HermiteSegment;
 use crate::math::normal_plane_unit;
+use crate::model::FramedCurve;
 use glam::DVec3;
 
 /// A spline of RRMF quintics, segment k on [k, k + 1], with its rational RMF.
 #[derive(Clone, Debug)]
 pub struct RrmfSpline {
-    /// The curve, segment k on [k, k + 1].
-    pub curve: PiecewiseCurve,
-    /// The RMF; its breakpoints refine the curve's where a segment was split for positive
-    /// weights.
-    pub frames: RationalFrames,
+    /// The curve, segment k on [k, k + 1], with its RMF (whose breakpoints refine the
+    /// curve's where a segment was split for positive weights).
+    pub framed: FramedCurve,
     /// The quintic chosen for each segment.
     pub quintics: Vec<RrmfQuintic>,
     /// Roots left out as near-cusps over all segments ([`BestQuintic::irregular_roots`](super::eta::BestQuintic::irregular_roots)).
@@ -71,8 +68,10 @@ pub fn rrmf_spline_within(
         .collect::<Result<Vec<_>>>()?;
     let quintics: Vec<RrmfQuintic> = best.iter().map(|b| b.quintic).collect();
     Ok(RrmfSpline {
-        curve: quintic_curve(&quintics)?,
-        frames: quintic_rmf(&quintics, initial_normal)?,
+        framed: FramedCurve::of_construction(
+            quintic_curve(&quintics)?,
+            quintic_rmf(&quintics, initial_normal)?,
+        ),
         quintics,
         irregular_roots: best.iter().map(|b| b.irregular_roots).sum(),
     })
@@ -119,7 +118,7 @@ pub(crate) mod tests {
         let segments = hermite_sequence(&points, &tangents).unwrap();
         let normal = DVec3::new(-1.0, 0.0, 0.0);
         let spline = rrmf_spline(&segments, ShapeMeasure::ScaledEnergyRmf, 64, normal).unwrap();
-        assert_eq!(spline.curve.segments().len(), 9);
+        assert_eq!(spline.framed.curve().segments().len(), 9);
         for (k, q) in spline.quintics.iter().enumerate() {
             check_solution(&segments[k], q);
             println!(
@@ -133,19 +132,19 @@ pub(crate) mod tests {
         }
         // Interpolation and G1 joints in the spline's own parameter.
         for (k, (&p, &t)) in points.iter().zip(&tangents).enumerate() {
-            let jet = spline.curve.eval_jet(k as f64);
+            let jet = spline.framed.curve().eval_jet(k as f64);
             assert!((jet.point - p).length() < 1e-12 * 9.0 * PI);
             assert!(jet.d1.normalize().cross(t).length() < 1e-12);
         }
         // The frames: exact RMF, orthonormal, continuous at every joint and breakpoint.
         let field = FrameField::new(
-            Arc::new(spline.curve.clone()),
-            FrameKind::Rational(spline.frames.clone()),
+            Arc::new(spline.framed.curve().clone()),
+            FrameKind::Rational(spline.framed.frames().clone()),
         )
         .unwrap();
         let (defect, ortho, tangent) = frame_errors(&field);
         let mut jump = 0.0f64;
-        for pair in spline.frames.segments().windows(2) {
+        for pair in spline.framed.frames().segments().windows(2) {
             let (a, b) = (pair[0].frame(1.0), pair[1].frame(0.0));
             jump = jump.max((a.f2 - b.f2).length()).max((a.f3 - b.f3).length());
         }
@@ -156,7 +155,7 @@ pub(crate) mod tests {
              orthonormality {ortho:.1e}, frame jump at joints {jump:.1e}, \
              |f₂ − f₂(double reflection)| {against_dr:.1e}",
             9.0 * PI / 2.0 * 2f64.sqrt(),
-            spline.frames.segments().len()
+            spline.framed.frames().segments().len()
         );
         assert!(defect <= 1e-9 && ortho <= 1e-12 && tangent <= 1e-12);
         assert!(jump <= 1e-12 && against_dr < 1e-8);
@@ -290,7 +289,7 @@ pub(crate) mod tests {
             .map(|p| p.abs().max_element())
             .fold(0.0, f64::max);
         let mut tangent_error = 0.0f64;
-        for (k, segment) in spline.curve.segments().iter().enumerate() {
+        for (k, segment) in spline.framed.curve().segments().iter().enumerate() {
             let poles: Vec<DVec3> = segment.poles().collect();
             assert!(
                 crate::math::robust_length(poles[0] - points[k]) <= 1e-12 * scale,
@@ -326,13 +325,13 @@ pub(crate) mod tests {
     ) -> (f64, f64, f64) {
         let tangent_error = check_interpolation(spline, points, tangents);
         let field = FrameField::new(
-            Arc::new(spline.curve.clone()),
-            FrameKind::Rational(spline.frames.clone()),
+            Arc::new(spline.framed.curve().clone()),
+            FrameKind::Rational(spline.framed.frames().clone()),
         )
         .unwrap();
         let (defect, ortho, frame_tangent) = frame_errors(&field);
         let mut jump = 0.0f64;
-        for pair in spline.frames.segments().windows(2) {
+        for pair in spline.framed.frames().segments().windows(2) {
             let (a, b) = (pair[0].frame(1.0), pair[1].frame(0.0));
             jump = jump.max((a.f2 - b.f2).length()).max((a.f3 - b.f3).length());
         }
@@ -382,8 +381,8 @@ pub(crate) mod tests {
         // The straight segment's frame is constant: the one carried from the helix before.
         let straight = planar.iter().enumerate().filter(|p| *p.1).nth(2).unwrap().0;
         let field = FrameField::new(
-            Arc::new(spline.curve.clone()),
-            FrameKind::Rational(spline.frames.clone()),
+            Arc::new(spline.framed.curve().clone()),
+            FrameKind::Rational(spline.framed.frames().clone()),
         )
         .unwrap();
         let f = |t: f64| field.frame(t).unwrap().f2;
@@ -412,10 +411,13 @@ pub(crate) mod tests {
             let (mut points_off, mut frames_off) = (0.0f64, 0.0f64);
             for i in 0..=2000 {
                 let t = i as f64 * (points.len() - 1) as f64 / 2000.0;
-                points_off =
-                    points_off.max((s.curve.eval(t) / scale - unit.curve.eval(t)).length() / size);
-                frames_off =
-                    frames_off.max((s.frames.frame(t).f2 - unit.frames.frame(t).f2).length());
+                points_off = points_off.max(
+                    (s.framed.curve().eval(t) / scale - unit.framed.curve().eval(t)).length()
+                        / size,
+                );
+                frames_off = frames_off.max(
+                    (s.framed.frames().frame(t).f2 - unit.framed.frames().frame(t).f2).length(),
+                );
             }
             assert!(
                 points_off < 1e-12 && frames_off < 1e-10,

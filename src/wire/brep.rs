@@ -48,7 +48,7 @@ use crate::frames::metrics::{angle_about_tangent, partials_cosine};
 use crate::frames::Frame;
 use crate::math::GaussLegendre;
 use crate::mesh::grid_parameters;
-use crate::sweep::sweep;
+use crate::sweep::sweep_along;
 use glam::{DVec3, DVec4};
 
 /// Samples per patch and direction for the parameter-line measure of the report.
@@ -324,7 +324,7 @@ fn lateral(framed: &super::frame::Framed, edge: &PiecewiseCurve) -> Result<Piece
             }
             PiecewiseSurface::new(patches, edge.breaks().to_vec(), spine.breaks().to_vec())
         }
-        (_, PieceFrame::Rational(frames)) => sweep(&framed.spine, frames, edge),
+        (_, PieceFrame::Rational(frames)) => sweep_along(&framed.spine, frames, edge),
         _ => invalid!("internal: a frame that does not fit its piece"),
     }
 }

@@ -41,8 +41,8 @@ use crate::ph_cubic::approximate::ph_spline_approximate;
 use crate::ph_cubic::base_frame::{FrameNumerators, FramePieces};
 use crate::ph_cubic::biquadratic::{fit, AngleHermite, Biquadratic};
 use crate::ph_cubic::exact_rmf::ExactRmf;
-use crate::ph_cubic::ph_cubics;
 use crate::ph_cubic::rational_rmf::{ph_rational_rmf, RmfOptions};
+use crate::ph_cubic::spline::PhSpline;
 use glam::{DVec2, DVec3};
 use std::f64::consts::{FRAC_PI_2, PI};
 
@@ -110,29 +110,59 @@ pub(crate) struct Transport {
     pub closing_turn: f64,
 }
 
-/// The spine curves and PH approximation distances of the pieces. Curves are approximated
-/// in the caller's coordinates, so that what the approximation reports (a tolerance below
-/// the rounding, say) is in the caller's units; the splines are then normalized.
-fn spines(chain: &Chain, tolerance: f64, units: Units) -> Result<Vec<(PiecewiseCurve, f64)>> {
+/// The curve a piece is swept along: the line or the arc, or the PH spline of a curve
+/// with its distance from the curve.
+#[derive(Clone, Debug)]
+struct Spine {
+    curve: PiecewiseCurve,
+    ph: Option<PhSpline>,
+    distance: f64,
+}
+
+/// The spines of the pieces. Curves are approximated about the wire's centre in the
+/// caller's units (the normalized coordinates scaled back by a power of two, exactly: the
+/// same decisions at every scale and position), so that what the approximation reports (a
+/// tolerance below the rounding, say) is in the caller's units.
+fn spines(chain: &Chain, tolerance: f64, units: Units) -> Result<Vec<Spine>> {
     chain
         .pieces
         .iter()
         .map(|piece| {
+            let exact = |curve| Spine {
+                curve,
+                ph: None,
+                distance: 0.0,
+            };
             Ok(match &piece.geometry {
-                Geometry::Line { a, b } => (line_curve(*a, *b), 0.0),
-                Geometry::Arc(arc) => (arc.curve(), 0.0),
+                Geometry::Line { a, b } => exact(line_curve(*a, *b)),
+                Geometry::Arc(arc) => exact(arc.curve()),
                 Geometry::Curve(c) => {
-                    if is_ph_spline(c) {
-                        (c.clone(), 0.0)
-                    } else {
-                        let caller = c.similar(units.scale, units.offset);
-                        let fit =
-                            ph_spline_approximate(&caller, c.breaks(), units.length(tolerance))
-                                .with_context(|| format!("edge {}", piece.edge))?;
-                        let spline = fit
-                            .spline
-                            .similar(1.0 / units.scale, -units.offset / units.scale);
-                        (spline, fit.max_distance / units.scale)
+                    let (ph, distance) = match given_ph_spline(c) {
+                        Some(ph) => (ph, 0.0),
+                        None => {
+                            let centred = c.similar(units.scale, DVec3::ZERO);
+                            let fit = ph_spline_approximate(
+                                &centred,
+                                c.breaks(),
+                                units.length(tolerance),
+                            )
+                            .with_context(|| {
+                                format!(
+                                    "edge {} (its coordinates taken about the wire's centre {})",
+                                    piece.edge, units.offset
+                                )
+                            })?;
+                            let scale = 1.0 / units.scale;
+                            (
+                                fit.spline.similar(scale, DVec3::ZERO)?,
+                                fit.max_distance * scale,
+                            )
+                        }
+                    };
+                    Spine {
+                        curve: ph.curve().clone(),
+                        ph: Some(ph),
+                        distance,
                     }
                 }
             })
@@ -141,12 +171,12 @@ fn spines(chain: &Chain, tolerance: f64, units: Units) -> Result<Vec<(PiecewiseC
 }
 
 /// A curve that is already a PH cubic spline (cubic polynomial segments satisfying (17)).
-fn is_ph_spline(curve: &PiecewiseCurve) -> bool {
-    curve
-        .segments()
-        .iter()
-        .all(|s| s.degree() == 3 && s.is_polynomial())
-        && ph_cubics(curve).is_ok()
+fn given_ph_spline(curve: &PiecewiseCurve) -> Option<PhSpline> {
+    let cubic = |s: &RationalBezierCurve| s.degree() == 3 && s.is_polynomial();
+    if !curve.segments().iter().all(cubic) {
+        return None;
+    }
+    PhSpline::new(curve.clone()).ok()
 }
 
 pub(crate) fn line_curve(a: DVec3, b: DVec3) -> PiecewiseCurve {
@@ -172,18 +202,18 @@ fn arc_coefficients(arc: &Arc, f2: DVec3) -> (f64, f64) {
 }
 
 /// f₂ at the end of a piece without twist.
-fn carry(piece: &Piece, spine: &PiecewiseCurve, f2: DVec3) -> Result<DVec3> {
-    Ok(match &piece.geometry {
-        Geometry::Line { .. } => f2,
-        Geometry::Arc(arc) => {
+fn carry(piece: &Piece, spine: &Spine, f2: DVec3) -> Result<DVec3> {
+    Ok(match (&piece.geometry, &spine.ph) {
+        (Geometry::Arc(arc), _) => {
             let (a, b) = arc_coefficients(arc, f2);
             a * arc.principal_normal(arc.angle) + b * arc.normal
         }
-        Geometry::Curve(_) => {
+        (_, Some(ph)) => {
             let exact =
-                ExactRmf::new(spine, f2, 0.0).with_context(|| format!("edge {}", piece.edge))?;
-            exact.frame(spine.domain().1).f2
+                ExactRmf::new(ph, f2, 0.0).with_context(|| format!("edge {}", piece.edge))?;
+            exact.frame(ph.domain().1).f2
         }
+        _ => f2,
     })
 }
 
@@ -262,12 +292,10 @@ pub(crate) fn transport(chain: &Chain, options: &FrameOptions) -> Result<Transpo
         .pieces
         .iter()
         .zip(&spines)
-        .map(|(p, (spine, _))| match &p.geometry {
+        .map(|(p, spine)| match &spine.ph {
             // The arc length of a PH spline is a polynomial: exact.
-            Geometry::Curve(_) => ph_cubics(spine)
-                .map(|cubics| cubics.iter().map(|c| c.arc_length()).sum())
-                .unwrap_or_else(|_| spine.arc_length()),
-            g => g.length(),
+            Some(ph) => ph.cubics().iter().map(|c| c.arc_length()).sum(),
+            None => p.geometry.length(),
         })
         .collect();
     let miters = miters(chain);
@@ -280,7 +308,7 @@ pub(crate) fn transport(chain: &Chain, options: &FrameOptions) -> Result<Transpo
     if chain.closed {
         let mut f2 = f2_start;
         for ((piece, spine), joint) in chain.pieces.iter().zip(&spines).zip(&chain.joints).take(m) {
-            f2 = carry(piece, &spine.0, f2)?;
+            f2 = carry(piece, spine, f2)?;
             f2 = across(joint, f2);
         }
         let holonomy = signed_angle(f2_start, f2, t0);
@@ -310,9 +338,8 @@ pub(crate) fn transport(chain: &Chain, options: &FrameOptions) -> Result<Transpo
     let mut f2 = f2_start;
     for i in 0..m {
         let piece = &chain.pieces[i];
-        let (spine, distance) = spines[i].clone();
         let turn = if twistable[i] { rate * lengths[i] } else { 0.0 };
-        let framed = frame_piece(piece, spine, distance, lengths[i], f2, turn, miters[i])
+        let framed = frame_piece(piece, spines[i].clone(), lengths[i], f2, turn, miters[i])
             .with_context(|| format!("edge {}", piece.edge))?;
         f2 = framed.end.f2;
         if let Some(joint) = chain.joints.get(i) {
@@ -336,8 +363,7 @@ pub(crate) fn transport(chain: &Chain, options: &FrameOptions) -> Result<Transpo
 /// length).
 fn frame_piece(
     piece: &Piece,
-    spine: PiecewiseCurve,
-    distance: f64,
+    spine: Spine,
     length: f64,
     f2: DVec3,
     turn: f64,
@@ -357,7 +383,10 @@ fn frame_piece(
                 e3: vec![start.f3; 2],
                 d: vec![1.0; 2],
             };
-            let frames = turned_frames(spine.breaks(), &[base], &|_, v| turn * v, &|_, _| turn)?;
+            let frames =
+                turned_frames(spine.curve.breaks(), &[base], &|_, v| turn * v, &|_, _| {
+                    turn
+                })?;
             let error = max_error(&frames, |v| start.rotated(turn * v));
             let end = frames.frame(1.0);
             (PieceFrame::Rational(frames), end, error)
@@ -371,22 +400,28 @@ fn frame_piece(
             if turn == 0.0 {
                 (PieceFrame::Circular { a, b }, exact(arc.angle), 0.0)
             } else {
-                let (frames, error) = twisted_arc(arc, &spine, a, b, turn)?;
+                let (frames, error) = twisted_arc(arc, &spine.curve, a, b, turn)?;
                 let end = frames.frame(1.0);
                 (PieceFrame::Rational(frames), end, error)
             }
         }
         Geometry::Curve(_) => {
+            let ph = spine.ph.as_ref().expect("a curve piece has a PH spline");
             let options = RmfOptions {
                 twist: turn,
                 ..RmfOptions::rmf(f2)
             };
-            let rmf = ph_rational_rmf(&spine, &options)?;
-            let error = angle_errors(&spine, &rmf.frames)?.max;
-            let end = rmf.frames.frame(spine.domain().1);
-            (PieceFrame::Rational(rmf.frames), end, error)
+            let frames = ph_rational_rmf(ph, &options)?.framed.into_parts().1;
+            let error = angle_errors(ph, &frames)?.max;
+            let end = frames.frame(ph.domain().1);
+            (PieceFrame::Rational(frames), end, error)
         }
     };
+    let Spine {
+        curve: spine,
+        distance,
+        ..
+    } = spine;
     Ok(Framed {
         piece: piece.clone(),
         spine,

@@ -249,7 +249,11 @@ fn coil(pitch: f64, turns: f64) -> Edge {
             )
         })
         .unzip();
-    Edge::Curve(crate::ph_cubic::ph_spline_hermite(&points, &tangents).unwrap())
+    Edge::Curve(
+        crate::ph_cubic::ph_spline_hermite(&points, &tangents)
+            .unwrap()
+            .into_curve(),
+    )
 }
 
 #[test]
@@ -459,8 +463,8 @@ proptest! {
 }
 
 /// A tolerance below the rounding of a curve edge's coordinates is refused in the caller's
-/// own numbers: the tolerance given and the coordinates as given (up to 25 in the pipe), at
-/// any scale.
+/// own numbers: the tolerance given, and the coordinates about the wire's centre
+/// (12.5, 12.5, 2.5) in the caller's units (up to 12.5 in the pipe), at any scale.
 #[test]
 fn messages_quote_the_callers_tolerance_and_coordinates() {
     for s in [1e-3, 1.0, 1e5] {
@@ -487,7 +491,7 @@ fn messages_quote_the_callers_tolerance_and_coordinates() {
         };
         let e = sweep_wire(&edges, &circle(s), &[], &options).unwrap_err();
         let m = e.message();
-        let up_to = format!("up to {:.3e}", 25.0 * s);
+        let up_to = format!("up to {:.3e}", 12.5 * s);
         assert!(
             m.contains("edge 3") && m.contains("tolerance = 1.000e-300") && m.contains(&up_to),
             "scale {s:e}: {m}"

@@ -665,7 +665,9 @@ fn a_ph_spline_edge_is_used_as_it_is() {
             )
         })
         .unzip();
-    let spline = crate::ph_cubic::ph_spline_hermite(&points, &tangents).unwrap();
+    let spline = crate::ph_cubic::ph_spline_hermite(&points, &tangents)
+        .unwrap()
+        .into_curve();
     let shape = sweep_wire(
         &[Edge::Curve(spline.clone())],
         &circle(0.2),
