@@ -83,7 +83,7 @@ pub use hermite::{hermite_sequence, HermiteSegment};
 pub use frames::double_reflection::DoubleReflectionRmf;
 pub use frames::rational::{FrameVector, RationalFrames};
 pub use frames::{Frame, FrameField, FrameKind};
-pub use model::FramedCurve;
+pub use model::{Brep, BrepBound, BrepEdge, BrepFace, BrepSurface, BrepUse, FramedCurve, PCurve};
 pub use spine::{framed_spine, framed_spine_through, FramedSpine, SpineMethod, MAX_SPINE_SEGMENTS};
 pub use sweep::{sweep, MAX_SWEEP_POLES};
 

@@ -534,6 +534,46 @@ impl NurbsSurface {
         Ok(Self::of_net(surface, (pu, pv), (nu, nv), &net))
     }
 
+    /// Boundary `side` of the surface in its parameter plane: v = v₀, u = u₁, v = v₁, u = u₀
+    /// for sides 0 to 3 (counter-clockwise: a face's loop traverses the first two forwards,
+    /// the last two backwards), as (origin, direction) of the line the boundary curve's
+    /// parameter maps to.
+    pub(crate) fn boundary_line(&self, side: usize) -> ((f64, f64), (f64, f64)) {
+        let s = self;
+        let (u0, u1) = (s.knots_u[0], s.knots_u[s.knots_u.len() - 1]);
+        let (v0, v1) = (s.knots_v[0], s.knots_v[s.knots_v.len() - 1]);
+        match side {
+            0 => ((0.0, v0), (1.0, 0.0)),
+            1 => ((u1, 0.0), (0.0, 1.0)),
+            2 => ((0.0, v1), (1.0, 0.0)),
+            _ => ((u0, 0.0), (0.0, 1.0)),
+        }
+    }
+
+    /// The NURBS curve of boundary `side` (see [`Self::boundary_line`]).
+    pub(crate) fn boundary_curve(&self, side: usize) -> NurbsCurve {
+        let s = self;
+        let (nu, nv) = (s.pole_count_u, s.pole_count_v);
+        let column = |j: usize| NurbsCurve {
+            degree: s.degree_u,
+            poles: (0..nu).map(|i| s.poles[i * nv + j]).collect(),
+            weights: (0..nu).map(|i| s.weights[i * nv + j]).collect(),
+            knots: s.knots_u.clone(),
+        };
+        let row = |i: usize| NurbsCurve {
+            degree: s.degree_v,
+            poles: s.poles[i * nv..(i + 1) * nv].to_vec(),
+            weights: s.weights[i * nv..(i + 1) * nv].to_vec(),
+            knots: s.knots_v.clone(),
+        };
+        match side {
+            0 => column(0),
+            1 => row(nu - 1),
+            2 => column(nv - 1),
+            _ => row(0),
+        }
+    }
+
     /// The NURBS of a joined homogeneous control net of `surface` (u-major, nu × nv), with
     /// the knots of its breaks.
     fn of_net(

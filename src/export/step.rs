@@ -30,6 +30,7 @@ use crate::bezier::{NurbsCurve, NurbsSurface};
 use crate::cone_spline::{FlatPattern, PatternEdge};
 use crate::error::{invalid, Result};
 use crate::math::bounding_diagonal;
+use crate::model::{Brep, BrepBound, BrepEdge, BrepFace, BrepSurface, BrepUse, PCurve};
 use glam::DVec3;
 use std::fmt::Write;
 
@@ -172,48 +173,13 @@ pub(crate) struct Boundary {
 /// the face's loop traverses the first two forwards, the last two backwards).
 pub(crate) fn boundaries(s: &NurbsSurface) -> [Boundary; 4] {
     [0, 1, 2, 3].map(|side| {
-        let (origin, direction) = boundary_line(s, side);
+        let (origin, direction) = s.boundary_line(side);
         Boundary {
-            curve: boundary_curve(s, side),
+            curve: s.boundary_curve(side),
             origin,
             direction,
         }
     })
-}
-
-/// Side `side` of [`boundaries`] in the parameter plane alone: (origin, direction).
-pub(crate) fn boundary_line(s: &NurbsSurface, side: usize) -> ((f64, f64), (f64, f64)) {
-    let (u0, u1) = (s.knots_u[0], s.knots_u[s.knots_u.len() - 1]);
-    let (v0, v1) = (s.knots_v[0], s.knots_v[s.knots_v.len() - 1]);
-    match side {
-        0 => ((0.0, v0), (1.0, 0.0)),
-        1 => ((u1, 0.0), (0.0, 1.0)),
-        2 => ((0.0, v1), (1.0, 0.0)),
-        _ => ((u0, 0.0), (0.0, 1.0)),
-    }
-}
-
-/// The curve of side `side` of [`boundaries`] alone.
-pub(crate) fn boundary_curve(s: &NurbsSurface, side: usize) -> NurbsCurve {
-    let (nu, nv) = (s.pole_count_u, s.pole_count_v);
-    let column = |j: usize| NurbsCurve {
-        degree: s.degree_u,
-        poles: (0..nu).map(|i| s.poles[i * nv + j]).collect(),
-        weights: (0..nu).map(|i| s.weights[i * nv + j]).collect(),
-        knots: s.knots_u.clone(),
-    };
-    let row = |i: usize| NurbsCurve {
-        degree: s.degree_v,
-        poles: s.poles[i * nv..(i + 1) * nv].to_vec(),
-        weights: s.weights[i * nv..(i + 1) * nv].to_vec(),
-        knots: s.knots_v.clone(),
-    };
-    match side {
-        0 => column(0),
-        1 => row(nu - 1),
-        2 => column(nv - 1),
-        _ => row(0),
-    }
 }
 
 /// Whether two boundary curves are the same curve (same parameterization; homogeneous
@@ -473,96 +439,6 @@ pub fn surfaces_to_step(surfaces: &[&NurbsSurface], name: &str) -> Result<String
     );
     represent(&mut out, shape, representation);
     Ok(exchange_structure(&out, name))
-}
-
-/// A boundary representation to write: faces on surfaces, bounded by loops of shared edges
-/// between shared vertices.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Brep {
-    /// The vertices the edges start and end at.
-    pub vertices: Vec<DVec3>,
-    /// The edges, each shared by the faces whose loops use it.
-    pub edges: Vec<BrepEdge>,
-    /// The faces.
-    pub faces: Vec<BrepFace>,
-    /// The faces bound a solid (a closed shell); otherwise a sheet (an open shell).
-    pub closed: bool,
-}
-
-/// An edge: its 3-D curve from the vertex `start` (at the curve's first parameter) to `end`.
-#[derive(Clone, Debug, PartialEq)]
-pub struct BrepEdge {
-    /// The 3-D curve, on its own parameter.
-    pub curve: NurbsCurve,
-    /// Index of the vertex at the curve's first parameter.
-    pub start: usize,
-    /// Index of the vertex at the curve's last parameter.
-    pub end: usize,
-}
-
-/// An edge's curve in a face's parameter plane, on the edge curve's parameter.
-#[derive(Clone, Debug, PartialEq)]
-pub enum PCurve {
-    /// origin + t · direction.
-    Line {
-        /// A point of the line in the face's parameter plane.
-        origin: (f64, f64),
-        /// Its direction, per unit of the edge curve's parameter.
-        direction: (f64, f64),
-    },
-    /// A 2-D curve (the x, y of its poles).
-    Curve(NurbsCurve),
-}
-
-/// An edge used by a face's loop, along its curve (`forward`) or against it.
-#[derive(Clone, Debug, PartialEq)]
-pub struct BrepUse {
-    /// Index of the edge in [`Brep::edges`].
-    pub edge: usize,
-    /// Whether the loop runs along the edge curve (true) or against it.
-    pub forward: bool,
-    /// The edge's curve in the face's parameter plane, if known (written as a PCURVE; None:
-    /// the 3-D curve alone).
-    pub pcurve: Option<PCurve>,
-}
-
-/// A loop of a face: counter-clockwise in the face's parameter plane (about its normal)
-/// for the outer bound, clockwise for holes.
-#[derive(Clone, Debug, PartialEq)]
-pub struct BrepBound {
-    /// The edge uses in the loop's order, each starting where the one before ends.
-    pub uses: Vec<BrepUse>,
-    /// Whether this is the face's outer bound (else a hole).
-    pub outer: bool,
-}
-
-/// The surface a face lies on.
-#[derive(Clone, Debug, PartialEq)]
-pub enum BrepSurface {
-    /// A NURBS surface, on its own parameters.
-    Nurbs(NurbsSurface),
-    /// The plane through `origin` with unit `normal`; parameters along `x_axis` and
-    /// `normal × x_axis`.
-    Plane {
-        /// A point of the plane.
-        origin: DVec3,
-        /// Its unit normal.
-        normal: DVec3,
-        /// The unit direction of the first parameter, in the plane.
-        x_axis: DVec3,
-    },
-}
-
-/// A face: its surface, whether the face's normal is the surface's (`same_sense`), its
-/// loops.
-#[derive(Clone, Debug, PartialEq)]
-pub struct BrepFace {
-    /// The surface the face lies on.
-    pub surface: BrepSurface,
-    /// Whether the face's normal is the surface's normal (else its opposite).
-    pub same_sense: bool,
-    /// The loops: the outer bound and the holes.
-    pub bounds: Vec<BrepBound>,
 }
 
 fn direction(out: &mut Entities, d: DVec3) -> usize {

@@ -4,8 +4,11 @@
 //! | module | holds |
 //! | --- | --- |
 //! | `framed` | [`FramedCurve`]: a curve with rational frames adapted to it, what every frame method returns and sweeps and analyses take |
+//! | `topology` | [`Brep`]: vertices, edges shared by faces, loops with pcurves, faces with sense |
 
 mod framed;
+mod topology;
 
 pub(crate) use framed::on_frame_segments;
 pub use framed::FramedCurve;
+pub use topology::{Brep, BrepBound, BrepEdge, BrepFace, BrepSurface, BrepUse, PCurve};

@@ -40,14 +40,11 @@ use crate::bezier::{
     RationalBezierPatch,
 };
 use crate::error::{invalid, Error, Result};
-use crate::export::step::{
-    boundary_curve, boundary_line, Brep, BrepBound, BrepEdge, BrepFace, BrepSurface, BrepUse,
-    PCurve,
-};
 use crate::frames::metrics::{angle_about_tangent, partials_cosine};
 use crate::frames::Frame;
 use crate::math::GaussLegendre;
 use crate::mesh::grid_parameters;
+use crate::model::{Brep, BrepBound, BrepEdge, BrepFace, BrepSurface, BrepUse, PCurve};
 use crate::sweep::sweep_along;
 use glam::{DVec3, DVec4};
 
@@ -1025,7 +1022,7 @@ impl<'a> Topology<'a> {
                         } else {
                             (&nurbs[m - 1][l][e], 2)
                         };
-                        let curve = boundary_curve(s, side);
+                        let curve = s.boundary_curve(side);
                         let next = if lp.closed { (e + 1) % n } else { e + 1 };
                         t.edges.push(BrepEdge {
                             curve,
@@ -1053,7 +1050,7 @@ impl<'a> Topology<'a> {
                             (&faces[l][n - 1], 1)
                         };
                         t.edges.push(BrepEdge {
-                            curve: boundary_curve(s, side),
+                            curve: s.boundary_curve(side),
                             start: vertex_at(j, l, v),
                             end: vertex_at(j + 1, l, v),
                         });
@@ -1079,7 +1076,7 @@ impl<'a> Topology<'a> {
         let lp = &self.profile.loops[l];
         let n = lp.edges.len();
         let next = if lp.closed { (e + 1) % n } else { e + 1 };
-        let sides = [0, 1, 2, 3].map(|k| boundary_line(&s, k));
+        let sides = [0, 1, 2, 3].map(|k| s.boundary_line(k));
         let line = |k: usize| {
             let (u, v) = sides[k].0;
             if k % 2 == 1 {

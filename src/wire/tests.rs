@@ -5,7 +5,7 @@
 
 use super::*;
 use crate::bezier::{NurbsCurve, RationalBezierCurve};
-use crate::export::step::Brep;
+use crate::model::Brep;
 use std::collections::HashMap;
 use std::f64::consts::{FRAC_1_SQRT_2, PI};
 
