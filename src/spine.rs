@@ -19,6 +19,7 @@ use crate::curve::{uniform_parameters, ParametricCurve};
 use crate::error::{invalid, Error, Result};
 use crate::frames::compare::nearest_parameter;
 use crate::hermite::hermite_sequence;
+use crate::math::check_finite;
 use crate::mesh::grid_parameters;
 use crate::mobius::{mobius_approximate, mobius_hermite_points};
 use crate::model::FramedCurve;
@@ -85,7 +86,8 @@ pub struct FramedSpine {
 }
 
 /// The spine within `tolerance` of `curve` (G1) with frames by `method`, f₂ at the start
-/// the projection of `initial_normal` onto the normal plane (Frenet frames ignore it).
+/// the projection of `initial_normal` onto the normal plane (Frenet frames ignore its
+/// direction, but it must be finite for every method).
 pub fn framed_spine(
     curve: &PiecewiseCurve,
     method: SpineMethod,
@@ -95,6 +97,7 @@ pub fn framed_spine(
     if !(tolerance.is_finite() && tolerance > 0.0) {
         return invalid!("tolerance = {tolerance} must be finite and positive");
     }
+    let initial_normal = check_finite(initial_normal, "initial_normal")?;
     check_g1(curve)?;
     match method {
         SpineMethod::PhRmf | SpineMethod::Frenet => {
@@ -118,6 +121,7 @@ pub fn framed_spine_through(
     method: SpineMethod,
     initial_normal: DVec3,
 ) -> Result<FramedCurve> {
+    let initial_normal = check_finite(initial_normal, "initial_normal")?;
     match method {
         SpineMethod::PhRmf | SpineMethod::Frenet => framed_ph(
             &ph_spline_hermite(points, tangents)?,
@@ -210,6 +214,22 @@ mod tests {
         ])
         .unwrap()])
         .unwrap()
+    }
+
+    #[test]
+    fn a_non_finite_initial_normal_is_refused_by_every_method() {
+        let (p, d) = ([DVec3::ZERO, DVec3::X], [DVec3::X, DVec3::Y]);
+        for method in SpineMethod::ALL {
+            for n in [
+                DVec3::new(f64::NAN, 0.0, 1.0),
+                DVec3::new(0.0, f64::INFINITY, 0.0),
+            ] {
+                let e = framed_spine(&cubic(), method, 1e-4, n).unwrap_err();
+                assert!(e.message().contains("initial_normal"), "{method:?}: {e}");
+                let e = framed_spine_through(&p, &d, method, n).unwrap_err();
+                assert!(e.message().contains("initial_normal"), "{method:?}: {e}");
+            }
+        }
     }
 
     #[test]

@@ -198,6 +198,7 @@ def test_numpy_integers_are_integers():
 
 NUMBERS = [
     ("ph_spline_approximate(tolerance)", lambda v: rmfsurf.ph_spline_approximate(IN.spline, v)),
+    ("framed_spine(tolerance)", lambda v: rmfsurf.framed_spine(IN.spline, "ph-rmf", v)),
     ("profile_offset(distance)", lambda v: rmfsurf.profile_offset(IN.profile, v)),
     ("profile_offset_by_arcs(distance)",
      lambda v: rmfsurf.profile_offset_by_arcs(IN.profile, v, 1e-4)),
@@ -556,6 +557,8 @@ ARRAYS = [
     ("ph_exact_rmf(t)", "parameters", lambda v: rmfsurf.ph_exact_rmf(IN.spline, (0, 0, 1), v)),
     ("wire_sweep(initial_normal)", "vector",
      lambda v: rmfsurf.wire_sweep(IN.edges, circle(1.0), initial_normal=v)),
+    ("framed_spine(initial_normal)", "vector",
+     lambda v: rmfsurf.framed_spine(IN.spline, "frenet", initial_normal=v)),
     ("cone_spline_approximate_dual(planes)", "planes", lambda v: dual(planes=v)),
     ("cone_spline_approximate_dual(knots)", "numbers", lambda v: dual(knots=v)),
     ("cone_spline_osculating(parameters)", "numbers",
