@@ -2,14 +2,14 @@
 //! `scripts/install-freecad-addon` as docs/freecad.md says — with the wheel of the Python
 //! package, into a fresh user directory ($HOME a scratch directory) — then
 //!
-//!  - `integration/tests/workbench/headless.py` in `freecadcmd`: RmfSweep, RmfTransition and
-//!    RmfUnfold made with make_sweep/make_transition/make_unfold from sketches and wires,
+//!  - `integration/tests/workbench/headless.py` in `freecadcmd`: RmfSweep, RmfTransition
+//!    and RmfUnfold made with make_sweep/make_transition/make_unfold from sketches and wires,
 //!    volumes and areas against closed forms, a sketch constraint changed and recomputed,
 //!    the library's refusals as Invalid features, the DXF export read back, the document
 //!    saved, reopened and recomputed to the same shapes, the macros;
-//!  - `integration/tests/workbench/gui.py` in `freecad` under Xvfb: the workbench activated, each
-//!    command run on a selection, the shaded result, a screenshot (target/.../screenshot.png;
-//!    the one in docs/images/ is such a screenshot).
+//!  - `integration/tests/workbench/gui.py` in `freecad` under Xvfb: the workbench
+//!    activated, each command run on a selection, the shaded result, a screenshot
+//!    (target/.../screenshot.png; the one in docs/images/ is such a screenshot).
 //!
 //! and the install script's refusals. `cargo test -p rmfsurf-integration --test workbench
 //! -- --nocapture` shows every figure.
