@@ -1,7 +1,8 @@
 //! Sets the shared library's SONAME to librmfsurf.so.N, N = RMF_ABI_VERSION of
 //! src/status.rs (the one place it is written), and passes the target and host triples to
-//! the C test harness (tests/c_suite.rs), which uses the `cc` crate outside a build script
-//! to find the C and C++ compilers.
+//! the C test harness (tests/c_suite.rs with tests/support), which uses the `cc` crate
+//! outside a build script to find the C and C++ compilers. (integration/build.rs passes
+//! them to the integration crate's tests, which use the same harness.)
 fn main() {
     println!("cargo:rerun-if-changed=build.rs");
     println!("cargo:rerun-if-changed=src/status.rs");
@@ -15,7 +16,6 @@ fn main() {
     if target.contains("linux") || target.contains("bsd") {
         println!("cargo:rustc-cdylib-link-arg=-Wl,-soname,librmfsurf.so.{abi}");
     }
-    println!("cargo:rustc-env=RMFSURF_ABI_VERSION={abi}");
     for var in ["TARGET", "HOST"] {
         println!(
             "cargo:rustc-env=RMFSURF_{var}={}",

@@ -1,160 +1,52 @@
-//! Builds and runs the C/C++ test suite in `c_tests/` against the shared library, with the
-//! compilers the `cc` crate finds:
+//! Builds and runs the C test suite in `c_tests/` against the shared library, with the
+//! compilers the `cc` crate finds — all that needs only Rust and a C compiler:
 //!
 //! * the header compiles on its own as C99 and as C++ with -Wall -Wextra -Wpedantic -Werror;
-//! * every `c_tests/abi_*.c` (C99) exercises entry points, under valgrind (no leaks, no
-//!   errors) and again built with AddressSanitizer + UndefinedBehaviorSanitizer;
-//! * every `c_tests/geometry_*.cpp` checks surfaces independently with the suite's own NURBS
-//!   evaluator, OpenMesh and VTK (Debian packages libopenmesh-dev and libvtk9-dev);
-//! * the demo and the README's C example build and run.
+//! * every `c_tests/abi_*.c` (C99) exercises entry points, run as it is;
+//! * the README's C example and the C programs of docs/ build and run.
 //!
-//! A capability adds its tests as new `abi_<name>.c` / `geometry_<name>.cpp` files; this
-//! harness picks them up.
+//! The same `abi_*.c` under valgrind and under AddressSanitizer + UndefinedBehaviorSanitizer,
+//! the `c_tests/geometry_*.cpp` checks with OpenMesh and VTK, and the demo are the
+//! integration crate's (integration/tests/c_suite.rs). A capability adds its tests as new
+//! `abi_<name>.c` / `geometry_<name>.cpp` files; both harnesses pick them up.
 //!
-//! The programs print their figures; run `cargo test --test c_suite -- --nocapture` to see
-//! them. Missing system packages make the tests fail with a message naming the setup
-//! command (README), never skip.
+//! The programs print their figures; run `cargo test -p rmfsurf-capi --test c_suite --
+//! --nocapture` to see them.
 
 mod support;
 
-use std::path::Path;
 use std::process::Command;
-use support::{build, fresh_dir, root, run, toolchain, vtk_flags, SETUP_HINT, STRICT};
+use support::{build, fresh_dir, root, run, run_abi_suites, toolchain, STRICT};
 
 #[test]
 fn header_compiles_alone_as_c99_and_cpp() {
     let mut c_flags = vec!["-std=c99"];
     c_flags.extend(STRICT);
-    run(
-        &build(
-            "header_c99",
-            false,
-            &["c_tests/header_only.c"],
-            &c_flags,
-            &[],
-        ),
+    run(&build(
+        "header_c99",
         false,
-    );
+        &["c_tests/header_only.c"],
+        &c_flags,
+        &[],
+    ));
     for std in ["-std=c++11", "-std=c++17"] {
         let mut cpp_flags = vec!["-x", "c++", std];
         cpp_flags.extend(STRICT);
-        run(
-            &build(
-                &format!("header_cpp{}", &std[8..]),
-                true,
-                &["c_tests/header_only.c"],
-                &cpp_flags,
-                &[],
-            ),
-            false,
-        );
-    }
-}
-
-/// The files in c_tests/ whose names start with `prefix` and end with `suffix`, sorted.
-fn suites(prefix: &str, suffix: &str) -> Vec<String> {
-    let mut names: Vec<String> = std::fs::read_dir(root().join("c_tests"))
-        .expect("c_tests/")
-        .filter_map(|e| e.ok()?.file_name().into_string().ok())
-        .filter(|n| n.starts_with(prefix) && n.ends_with(suffix))
-        .collect();
-    names.sort();
-    assert!(!names.is_empty(), "no c_tests/{prefix}*{suffix}");
-    names
-}
-
-/// Builds every `c_tests/abi_*.c` (C99, with -pthread) with `extra` flags under a name
-/// suffix, and runs it under valgrind or not.
-fn run_abi_suites(suffix: &str, extra: &[&str], valgrind: bool) {
-    let mut flags = vec!["-std=c99", "-pthread"];
-    flags.extend(STRICT);
-    flags.extend(extra);
-    for name in suites("abi_", ".c") {
-        let source = format!("c_tests/{name}");
-        let exe_name = format!("{}{suffix}", name.trim_end_matches(".c"));
-        let exe = build(
-            &exe_name,
-            false,
-            &[source.as_str(), "c_tests/nurbs_eval.c"],
-            &flags,
-            &[],
-        );
-        run(&exe, valgrind);
-    }
-}
-
-/// Every `c_tests/abi_*.c`: C99 ABI tests, under valgrind (no leaks, no invalid accesses).
-#[test]
-fn abi_suites_under_valgrind() {
-    run_abi_suites("", &[], true);
-}
-
-/// Every `c_tests/abi_*.c` again, built with AddressSanitizer (with its leak checker) and
-/// UndefinedBehaviorSanitizer; any report fails the run.
-#[test]
-fn abi_suites_under_address_and_undefined_behavior_sanitizers() {
-    let sanitize = [
-        "-fsanitize=address,undefined",
-        "-fno-sanitize-recover=all",
-        "-fno-omit-frame-pointer",
-    ];
-    run_abi_suites("_asan_ubsan", &sanitize, false);
-}
-
-/// Every `c_tests/geometry_*.cpp`: independent checks with OpenMesh and VTK.
-#[test]
-fn geometry_suites_with_openmesh_and_vtk() {
-    assert!(
-        Path::new("/usr/include/OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh").exists(),
-        "OpenMesh headers (libopenmesh-dev) not found: {SETUP_HINT}"
-    );
-    let (vtk_include, mut libs) = vtk_flags(&[
-        "CommonCore",
-        "CommonDataModel",
-        "CommonExecutionModel",
-        "FiltersGeneral",
-    ]);
-    let mut flags = vec!["-std=c++17", vtk_include.as_str()];
-    flags.extend(STRICT);
-    libs.push("-lOpenMeshCore".into());
-    for name in suites("geometry_", ".cpp") {
-        let source = format!("c_tests/{name}");
-        let exe = build(
-            name.trim_end_matches(".cpp"),
+        run(&build(
+            &format!("header_cpp{}", &std[8..]),
             true,
-            &[source.as_str(), "c_tests/nurbs_eval.c"],
-            &flags,
-            &libs,
-        );
-        run(&exe, false);
+            &["c_tests/header_only.c"],
+            &cpp_flags,
+            &[],
+        ));
     }
 }
 
+/// Every `c_tests/abi_*.c`: C99 ABI tests, built against the library and run as they are
+/// (under valgrind and the sanitizers too by the integration crate's c_suite).
 #[test]
-fn demo_builds_and_writes_its_files() {
-    let mut flags = vec!["-std=c99"];
-    flags.extend(STRICT);
-    let exe = build("demo", false, &["examples/c/demo.c"], &flags, &[]);
-    let dir = toolchain().out_dir.join("demo_output");
-    let _ = std::fs::remove_dir_all(&dir);
-    let out = Command::new(&exe).arg(&dir).output().expect("demo runs");
-    assert!(
-        out.status.success(),
-        "demo failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let listing: Vec<_> = std::fs::read_dir(&dir)
-        .expect("demo output directory")
-        .filter_map(Result::ok)
-        .collect();
-    assert!(listing.len() >= 3, "demo wrote {} files", listing.len());
-    for entry in listing {
-        assert!(
-            entry.metadata().unwrap().len() > 100,
-            "{} is (nearly) empty",
-            entry.path().display()
-        );
-    }
+fn abi_suites() {
+    run_abi_suites("", &[], run);
 }
 
 #[test]
@@ -167,10 +59,13 @@ fn readme_c_example_compiles_and_runs() {
     let mut flags = vec!["-std=c99"];
     flags.extend(STRICT);
     let source = source.to_str().expect("UTF-8 path").to_string();
-    run(
-        &build("readme_example", false, &[source.as_str()], &flags, &[]),
+    run(&build(
+        "readme_example",
         false,
-    );
+        &[source.as_str()],
+        &flags,
+        &[],
+    ));
 }
 
 /// Every complete C program of the pages in docs/ (a block with `int main`) compiles and

@@ -1,7 +1,7 @@
 /*
  * A program that uses an installed rmfsurf, as a C or C++ project outside this repository
  * would: built by examples/consumers/make (pkg-config) and examples/consumers/cmake
- * (find_package), and run by the test command (capi/tests/install.rs).
+ * (find_package), and run by the test command (integration/tests/install.rs).
  *
  * It checks that the library it loaded is the one its header describes, sweeps a circle of
  * radius 0.25 along a PH cubic spline through a helix with the rational rotation-minimizing

@@ -1,7 +1,7 @@
 """Checks rmfsurf inside FreeCAD, headless: run with `freecadcmd check_in_freecad.py`.
 
-Started by the test command (capi/tests/freecad.rs), which installs the Python package
-rmfsurf (the wheel, carrying the library) where FreeCAD finds it, runs the rmfsurf
+Started by the test command (integration/tests/freecad.rs), which installs the Python
+package rmfsurf (the wheel, carrying the library) where FreeCAD finds it, runs the rmfsurf
 command-line tool on examples/cli/*.json and passes, in the environment:
   RMFSURF_EXAMPLES  examples/cli (the JSON inputs)
   RMFSURF_FILES     the tool's outputs: <example>.step, _curves.step, .obj, cone_spline.dxf/.svg
@@ -19,7 +19,7 @@ What is checked, each figure printed with its limit:
   E. FreeCAD's mesh reader reads the tool's OBJ as the library's tessellation;
   F. rmfsurf.freecad's selection entry points (sweep_selection, cone_spline_selection),
      with a selection as the GUI would give it (the macros are wrappers of the RmfSurf
-     workbench now, checked by capi/tests/workbench.rs);
+     workbench now, checked by integration/tests/workbench.rs);
   G. rmfsurf.freecad.sweep of a wire into a solid;
   H. sheet metal (examples/cli/hopper.json, a square-to-round hopper): the tool's STEP solid
      is a valid closed solid of the expected volume, its DXF flat pattern (read by FreeCAD)

@@ -7,7 +7,7 @@
 // measured by the same code. rmfsurf's figures are checked (the program fails on any);
 // OpenCascade's are reported.
 //
-// Built and run by the test command (capi/tests/opencascade.rs): C++17 against
+// Built and run by the test command (integration/tests/opencascade.rs): C++17 against
 // include/rmfsurf.h and librmfsurf, with OpenCascade's TKSTEP, TKXSBase, TKOffset (the
 // sweep), TKTopAlgo, TKBRep and the foundation toolkits.
 #include <BRepAdaptor_Curve.hxx>

@@ -5,7 +5,7 @@ message naming the argument; a path is never cut at a NUL and nothing is written
 refused one. test_every_argument_of_the_api_has_its_cases lists the API's arguments by
 their annotations, so that a new function without cases fails. rmfsurf.freecad runs the
 same checks in FreeCAD's Python (freecad_arguments.py, test_the_freecad_adapter_...).
-Run by capi/tests/python.rs."""
+Run by integration/tests/python.rs."""
 
 import builtins
 import functools

@@ -1,6 +1,6 @@
 """The Python API over the C library: every figure is checked with the tests' own
 arithmetic (tests/nurbs.py evaluates the exported NURBS), not with the library's
-evaluators alone. Run by capi/tests/python.rs (pytest, in the environment of
+evaluators alone. Run by integration/tests/python.rs (pytest, in the environment of
 scripts/python-env, against the installed wheel)."""
 
 import gc

@@ -1,5 +1,5 @@
 """The Python examples of docs/install.md and docs/python.md, run as written (in a scratch
-directory). The FreeCAD ones run in freecadcmd (capi/tests/freecad.rs)."""
+directory). The FreeCAD ones run in freecadcmd (integration/tests/freecad.rs)."""
 
 import os
 import re

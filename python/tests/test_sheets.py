@@ -1,7 +1,7 @@
 """Sheet-metal parts through the Python API (rmfsurf.transition, SheetPart), checked with the
 tests' own arithmetic: the exported edge NURBS evaluated by tests/nurbs.py against the input
 circle, the flat outline's closure and area by Green's theorem, marks both ways, the files'
-texts, and errors naming the argument. Run by capi/tests/python.rs."""
+texts, and errors naming the argument. Run by integration/tests/python.rs."""
 
 import math
 

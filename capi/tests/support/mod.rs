@@ -1,17 +1,19 @@
-//! What the tests that drive external programs share: building the shared library (and
-//! the command-line tool), finding the C/C++ compilers with the `cc` crate, compiling test
-//! programs against librmfsurf, running them with their output echoed.
+//! What the tests that build C and C++ programs against librmfsurf share: building the
+//! shared library, finding the C/C++ compilers with the `cc` crate, compiling test programs
+//! against it, running them with their output echoed.
 //!
-//! Each test binary (`c_suite`, `freecad`, `openscad`, `opencascade`, `vtk_reader`)
-//! includes this module and uses a part of it.
+//! Needs only Rust and a C compiler: capi's `c_suite` uses it, and the integration crate's
+//! support module (integration/tests/support), which adds what drives the external
+//! programs, includes this file — one copy of these functions for both crates.
 #![allow(dead_code)]
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
-use std::sync::{Mutex, MutexGuard, OnceLock};
+use std::sync::OnceLock;
 
-pub const SETUP_HINT: &str =
-    "run the README's test command (scripts/test), which installs the Debian packages";
+/// What a test that misses a program or a library says: the command that installs them.
+pub const SETUP_HINT: &str = "install the Debian packages the tests use with \
+     `scripts/setup-debian test` (the README's test command, scripts/test, runs it)";
 
 pub struct Toolchain {
     pub cc: PathBuf,
@@ -79,7 +81,7 @@ pub fn toolchain() -> &'static Toolchain {
 fn stage_library(profile_dir: &Path) -> PathBuf {
     let lib_dir = profile_dir.join("lib");
     std::fs::create_dir_all(&lib_dir).expect("staging directory");
-    let soname = format!("librmfsurf.so.{}", env!("RMFSURF_ABI_VERSION"));
+    let soname = format!("librmfsurf.so.{}", rmfsurf_capi::status::RMF_ABI_VERSION);
     for (link, target) in [
         (soname.as_str(), "../librmfsurf_capi.so"),
         ("librmfsurf.so", soname.as_str()),
@@ -93,90 +95,12 @@ fn stage_library(profile_dir: &Path) -> PathBuf {
     lib_dir
 }
 
-/// The VTK include directory (/usr/include/vtk-X.Y) and its version suffix.
-pub fn vtk() -> (PathBuf, String) {
-    let dir = std::fs::read_dir("/usr/include")
-        .ok()
-        .and_then(|entries| {
-            entries
-                .filter_map(Result::ok)
-                .map(|e| e.path())
-                .filter(|p| p.join("vtkCurvatures.h").exists())
-                .max()
-        })
-        .unwrap_or_else(|| panic!("VTK headers (libvtk9-dev) not found: {SETUP_HINT}"));
-    let version = dir
-        .file_name()
-        .and_then(|n| n.to_str())
-        .and_then(|n| n.strip_prefix("vtk-"))
-        .expect("vtk-X.Y")
-        .to_string();
-    (dir, version)
-}
-
-/// The `-isystem` flag for VTK's headers (they are not -Wpedantic clean: system headers)
-/// and the `-l` flags of the VTK `modules` (e.g. "CommonCore").
-pub fn vtk_flags(modules: &[&str]) -> (String, Vec<String>) {
-    let (dir, version) = vtk();
-    let libs = modules
-        .iter()
-        .map(|m| format!("-lvtk{m}-{version}"))
-        .collect();
-    (format!("-isystem{}", dir.display()), libs)
-}
-
-/// The command-line tool `rmfsurf`, built once (debug profile, beside the library).
-pub fn cli() -> PathBuf {
-    static CLI: OnceLock<PathBuf> = OnceLock::new();
-    CLI.get_or_init(|| {
-        let profile_dir = toolchain().lib_dir.parent().expect("target/<profile>");
-        let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
-        let status = Command::new(cargo)
-            .args(["build", "--quiet", "-p", "rmfsurf-cli", "--bin", "rmfsurf"])
-            .current_dir(root())
-            .status()
-            .expect("cargo runs");
-        assert!(status.success(), "cargo build -p rmfsurf-cli failed");
-        let exe = profile_dir.join("rmfsurf");
-        assert!(exe.exists(), "{} not built", exe.display());
-        exe
-    })
-    .clone()
-}
-
 /// An empty directory `name` under the test output directory.
 pub fn fresh_dir(name: &str) -> PathBuf {
     let dir = toolchain().out_dir.join(name);
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).expect("output directory");
     dir
-}
-
-/// The example inputs of the command-line tool, examples/cli/<name>.json.
-pub const EXAMPLES: [&str; 4] = [
-    "cone_spline",
-    "helix_pipe_mobius",
-    "helix_strip_rrmf",
-    "nurbs_moulding_ph",
-];
-
-/// Runs the tool on examples/cli/<example>.json with the extra arguments `args` (relative
-/// paths are in `dir`); asserts success.
-pub fn run_cli(dir: &Path, example: &str, args: &[&str]) {
-    let input = root().join("examples/cli").join(format!("{example}.json"));
-    let out = Command::new(cli())
-        .arg(&input)
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("the tool runs");
-    print!("{example}:\n{}", String::from_utf8_lossy(&out.stdout));
-    assert!(
-        out.status.success(),
-        "rmfsurf {} failed: {}",
-        input.display(),
-        String::from_utf8_lossy(&out.stderr)
-    );
 }
 
 pub const STRICT: &[&str] = &["-Wall", "-Wextra", "-Wpedantic", "-Werror"];
@@ -211,25 +135,17 @@ pub fn build(name: &str, cpp: bool, sources: &[&str], flags: &[&str], libs: &[St
     exe
 }
 
-/// Runs a test program (optionally under valgrind), echoes its output and asserts success.
-pub fn run(exe: &Path, valgrind: bool) {
-    let mut cmd = if valgrind {
-        let mut c = Command::new("valgrind");
-        c.args([
-            "--quiet",
-            "--error-exitcode=99",
-            "--leak-check=full",
-            "--errors-for-leak-kinds=definite,indirect",
-            "--show-leak-kinds=definite,indirect",
-        ]);
-        c.arg(exe);
-        c
-    } else {
-        Command::new(exe)
-    };
+/// Runs a test program, echoes its output and asserts success.
+pub fn run(exe: &Path) {
+    run_command(Command::new(exe), exe);
+}
+
+/// Runs `cmd`, which runs the test program `exe` (itself, or under a checker), echoes its
+/// output and asserts success.
+pub fn run_command(mut cmd: Command, exe: &Path) {
     let out = cmd
         .output()
-        .unwrap_or_else(|e| panic!("cannot run {} ({e}): {SETUP_HINT}", exe.display()));
+        .unwrap_or_else(|e| panic!("cannot run {cmd:?} ({e}): {SETUP_HINT}"));
     print!("{}", String::from_utf8_lossy(&out.stdout));
     eprint!("{}", String::from_utf8_lossy(&out.stderr));
     assert!(
@@ -240,67 +156,34 @@ pub fn run(exe: &Path, valgrind: bool) {
     );
 }
 
-/// The Python test environment of scripts/python-env (Debian's Python 3.11 with build123d,
-/// OCP and pytest from PyPI, kept in target/venv between runs); once.
-pub fn python_env() -> PathBuf {
-    static VENV: OnceLock<PathBuf> = OnceLock::new();
-    VENV.get_or_init(|| {
-        let out = Command::new(root().join("scripts/python-env"))
-            .output()
-            .unwrap_or_else(|e| panic!("cannot run scripts/python-env ({e}): {SETUP_HINT}"));
-        eprint!("{}", String::from_utf8_lossy(&out.stderr));
-        assert!(out.status.success(), "scripts/python-env failed");
-        PathBuf::from(String::from_utf8_lossy(&out.stdout).trim())
-    })
-    .clone()
+/// The files in c_tests/ whose names start with `prefix` and end with `suffix`, sorted.
+pub fn suites(prefix: &str, suffix: &str) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(root().join("c_tests"))
+        .expect("c_tests/")
+        .filter_map(|e| e.ok()?.file_name().into_string().ok())
+        .filter(|n| n.starts_with(prefix) && n.ends_with(suffix))
+        .collect();
+    names.sort();
+    assert!(!names.is_empty(), "no c_tests/{prefix}*{suffix}");
+    names
 }
 
-/// Held while maturin builds the package: every maturin build stages the library in the same
-/// target/maturin directory, so two at once remove each other's files.
-pub fn maturin_lock() -> MutexGuard<'static, ()> {
-    static LOCK: Mutex<()> = Mutex::new(());
-    LOCK.lock().unwrap_or_else(|poisoned| poisoned.into_inner())
-}
-
-/// The wheel of the Python package (`pip wheel ./python`, maturin), carrying the library,
-/// built once into target/python-wheel; its path.
-pub fn python_wheel() -> PathBuf {
-    static WHEEL: OnceLock<PathBuf> = OnceLock::new();
-    WHEEL
-        .get_or_init(|| {
-            let dir = root().join("target/python-wheel");
-            let _ = std::fs::remove_dir_all(&dir);
-            let _maturin = maturin_lock();
-            let start = std::time::Instant::now();
-            let out = Command::new(python_env().join("bin/pip"))
-                .args([
-                    "wheel",
-                    "--quiet",
-                    "--no-deps",
-                    "--disable-pip-version-check",
-                ])
-                .arg(root().join("python"))
-                .arg("-w")
-                .arg(&dir)
-                .output()
-                .expect("pip runs");
-            assert!(
-                out.status.success(),
-                "pip wheel ./python failed:\n{}",
-                String::from_utf8_lossy(&out.stderr)
-            );
-            let wheel = std::fs::read_dir(&dir)
-                .expect("the wheel directory")
-                .filter_map(Result::ok)
-                .map(|e| e.path())
-                .find(|p| p.extension().is_some_and(|x| x == "whl"))
-                .expect("pip wheel wrote a wheel");
-            println!(
-                "pip wheel ./python: {} in {:.0} s",
-                wheel.file_name().unwrap().to_string_lossy(),
-                start.elapsed().as_secs_f64()
-            );
-            wheel
-        })
-        .clone()
+/// Builds every `c_tests/abi_*.c` (C99, with -pthread) with `extra` flags under a name
+/// suffix, and runs it with `run` (plainly, or under a checker).
+pub fn run_abi_suites(suffix: &str, extra: &[&str], run: fn(&Path)) {
+    let mut flags = vec!["-std=c99", "-pthread"];
+    flags.extend(STRICT);
+    flags.extend(extra);
+    for name in suites("abi_", ".c") {
+        let source = format!("c_tests/{name}");
+        let exe_name = format!("{}{suffix}", name.trim_end_matches(".c"));
+        let exe = build(
+            &exe_name,
+            false,
+            &[source.as_str(), "c_tests/nurbs_eval.c"],
+            &flags,
+            &[],
+        );
+        run(&exe);
+    }
 }

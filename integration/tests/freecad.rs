@@ -11,7 +11,7 @@
 //! with its limit. The FreeCAD examples of the docs run too. (The macros and the
 //! workbench: workbench.rs.)
 //!
-//! `cargo test --test freecad -- --nocapture` shows them.
+//! `cargo test -p rmfsurf-integration --test freecad -- --nocapture` shows them.
 
 mod support;
 

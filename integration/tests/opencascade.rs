@@ -10,7 +10,7 @@
 //!
 //! The examples print their figures and fail on any of rmfsurf's.
 //!
-//! `cargo test --test opencascade -- --nocapture` shows them.
+//! `cargo test -p rmfsurf-integration --test opencascade -- --nocapture` shows them.
 
 mod support;
 
@@ -61,7 +61,7 @@ fn opencascade_reads_the_wire_sweeps_as_valid_solids() {
         &flags,
         &libs,
     );
-    run(&exe, false);
+    run(&exe);
 }
 
 #[test]
@@ -83,7 +83,7 @@ fn opencascade_kernel_example_builds_and_checks_the_surfaces() {
         &flags,
         &libs,
     );
-    run(&exe, false);
+    run(&exe);
 }
 
 /// OpenCascade's STEP reader (TKSTEP, libocct-data-exchange-dev) on the formed hopper of
@@ -127,7 +127,7 @@ fn opencascade_reads_the_formed_hopper_as_a_valid_closed_solid() {
     let exe = build(
         "occ_read_solid",
         true,
-        &["capi/tests/programs/occ_read_solid.cpp"],
+        &["integration/tests/programs/occ_read_solid.cpp"],
         &flags,
         &libs,
     );

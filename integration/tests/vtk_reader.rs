@@ -2,7 +2,7 @@
 //! files the command-line tool writes for every example: the same points (bit for bit),
 //! the same triangles as the tool's `.obj` of the same mesh, and unit normals.
 //!
-//! `cargo test --test vtk_reader -- --nocapture` prints the figures.
+//! `cargo test -p rmfsurf-integration --test vtk_reader -- --nocapture` prints the figures.
 
 mod support;
 
@@ -34,7 +34,7 @@ fn vtk_reads_the_tools_vtp_files() {
     let reader = build(
         "vtk_read_vtp",
         true,
-        &["capi/tests/programs/vtk_read_vtp.cpp"],
+        &["integration/tests/programs/vtk_read_vtp.cpp"],
         &flags,
         &libs,
     );

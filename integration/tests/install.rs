@@ -6,7 +6,7 @@
 //! symlinks, pkg-config's version and static flags, and the CMake version file (0.2 found;
 //! 1.0, 0.3 and 0.1 refused).
 //!
-//! `cargo test -p rmfsurf-capi --test install -- --nocapture` shows the steps.
+//! `cargo test -p rmfsurf-integration --test install -- --nocapture` shows the steps.
 
 mod support;
 
@@ -16,7 +16,7 @@ use std::sync::OnceLock;
 use support::{root, SETUP_HINT};
 
 const VERSION: &str = env!("CARGO_PKG_VERSION");
-const ABI: &str = env!("RMFSURF_ABI_VERSION");
+const ABI: u32 = rmfsurf_capi::status::RMF_ABI_VERSION;
 
 /// A fresh directory under target/ (outside the source tree, and outside the prefix).
 fn scratch(name: &str) -> PathBuf {

@@ -9,7 +9,11 @@
 //!    toolchain on the PATH, and pytest runs python/tests there: the API against the tests'
 //!    own NURBS evaluator, errors, freed handles, and the OCP adapter with build123d.
 //!
-//! `cargo test -p rmfsurf-capi --test python -- --nocapture` shows pytest's report.
+//! pytest runs with RMFSURF_REQUIRE_ALL=1: python/tests/conftest.py then turns every skip
+//! (a module `pytest.importorskip` does not find, a `skipif` whose condition holds) into a
+//! failure, so a missing build123d, OCP or FreeCAD fails the test instead of passing by.
+//!
+//! `cargo test -p rmfsurf-integration --test python -- --nocapture` shows pytest's report.
 
 mod support;
 
@@ -58,6 +62,7 @@ fn wheel_installs_without_rust_and_passes_the_python_tests() {
         .current_dir(root().join("python/tests"))
         .env("PATH", &path)
         .env("RMFSURF_REPOSITORY", root())
+        .env("RMFSURF_REQUIRE_ALL", "1")
         .output()
         .unwrap_or_else(|e| panic!("cannot run pytest ({e}): {SETUP_HINT}"));
     print!("{}", String::from_utf8_lossy(&out.stdout));

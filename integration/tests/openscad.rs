@@ -6,7 +6,7 @@
 //! exactly two triangles, once in each direction (consistent orientation), with positive
 //! volume (outward normals) equal to the polyhedron's in the `.scad` file.
 //!
-//! `cargo test --test openscad -- --nocapture` prints the figures.
+//! `cargo test -p rmfsurf-integration --test openscad -- --nocapture` prints the figures.
 
 mod support;
 

@@ -1,7 +1,7 @@
 """The RmfSurf workbench in headless FreeCAD: run with `freecadcmd headless.py`.
 
-Started by capi/tests/workbench.rs after scripts/install-freecad-addon installed the addon
-into a fresh user directory ($HOME a scratch directory). In the environment:
+Started by integration/tests/workbench.rs after scripts/install-freecad-addon installed the
+addon into a fresh user directory ($HOME a scratch directory). In the environment:
   RMFSURF_WORK      a scratch directory (documents, DXF files)
   RMFSURF_VERSION   the library's version (capi/Cargo.toml)
   RMFSURF_MACROS    examples/freecad (the two macros)

@@ -2,17 +2,17 @@
 //! `scripts/install-freecad-addon` as docs/freecad.md says — with the wheel of the Python
 //! package, into a fresh user directory ($HOME a scratch directory) — then
 //!
-//!  - `capi/tests/workbench/headless.py` in `freecadcmd`: RmfSweep, RmfTransition and
-//!    RmfUnfold made with make_sweep/make_transition/make_unfold from sketches and wires,
+//!  - `integration/tests/workbench/headless.py` in `freecadcmd`: RmfSweep, RmfTransition
+//!    and RmfUnfold made with make_sweep/make_transition/make_unfold from sketches and wires,
 //!    volumes and areas against closed forms, a sketch constraint changed and recomputed,
 //!    the library's refusals as Invalid features, the DXF export read back, the document
 //!    saved, reopened and recomputed to the same shapes, the macros;
-//!  - `capi/tests/workbench/gui.py` in `freecad` under Xvfb: the workbench activated, each
-//!    command run on a selection, the shaded result, a screenshot (target/.../screenshot.png;
-//!    the one in docs/images/ is such a screenshot).
+//!  - `integration/tests/workbench/gui.py` in `freecad` under Xvfb: the workbench
+//!    activated, each command run on a selection, the shaded result, a screenshot
+//!    (target/.../screenshot.png; the one in docs/images/ is such a screenshot).
 //!
-//! and the install script's refusals. `cargo test -p rmfsurf-capi --test workbench --
-//! --nocapture` shows every figure.
+//! and the install script's refusals. `cargo test -p rmfsurf-integration --test workbench
+//! -- --nocapture` shows every figure.
 
 mod support;
 
@@ -80,7 +80,7 @@ fn workbench_features_in_freecadcmd() {
     std::fs::create_dir_all(&work).unwrap();
     let start = std::time::Instant::now();
     let out = Command::new("freecadcmd")
-        .arg(root().join("capi/tests/workbench/headless.py"))
+        .arg(root().join("integration/tests/workbench/headless.py"))
         .env("HOME", &home)
         .env("RMFSURF_WORK", &work)
         .env("RMFSURF_VERSION", env!("CARGO_PKG_VERSION"))
@@ -121,7 +121,7 @@ fn workbench_commands_in_the_gui_under_xvfb() {
             "-screen 0 1440x900x24",
             "freecad",
         ])
-        .arg(root().join("capi/tests/workbench/gui.py"))
+        .arg(root().join("integration/tests/workbench/gui.py"))
         .env("HOME", &home)
         // FreeCAD's start page is a Chromium view, which refuses to run as root with its
         // sandbox (the test command may run as root).
@@ -131,6 +131,12 @@ fn workbench_commands_in_the_gui_under_xvfb() {
         .env("RMFSURF_RESULT", &result)
         .output()
         .unwrap_or_else(|e| panic!("cannot run xvfb-run freecad ({e}): {SETUP_HINT}"));
+    // timeout's status when it cannot run xvfb-run, or xvfb-run when it cannot run freecad.
+    assert!(
+        out.status.code() != Some(127),
+        "xvfb-run or freecad not found ({}): {SETUP_HINT}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let lines = std::fs::read_to_string(&result).unwrap_or_default();
     print!("{lines}");
     println!(

@@ -1,5 +1,5 @@
 """The RmfSurf workbench in FreeCAD's GUI: a smoke test, run as `freecad gui.py` under Xvfb
-by capi/tests/workbench.rs (the addon installed into a fresh user directory first).
+by integration/tests/workbench.rs (the addon installed into a fresh user directory first).
 
 The workbench is activated, and each of its commands runs on a selection made as a user
 would (profile sketch, then the spine's edges; a cone's face; two closed curves; the
