@@ -28,6 +28,14 @@ def run(code, tmp_path, monkeypatch):
     exec(compile(code, "<docs example>", "exec"), {"__name__": "__main__"})
 
 
+def test_readme_python_example(tmp_path, monkeypatch):
+    with open(os.path.join(DOCS, "..", "README.md")) as f:
+        text = f.read().split("<!-- python-example -->")[1].split("\n## ")[0]
+    (code,) = re.findall(r"```python\n(.*?)```", text, re.S)
+    run(code, tmp_path, monkeypatch)
+    assert (tmp_path / "pipe.step").stat().st_size > 0
+
+
 def test_install_python_example(tmp_path, monkeypatch):
     (code,) = blocks("install.md", "## Python")
     run(code, tmp_path, monkeypatch)
