@@ -37,7 +37,7 @@ pub trait ParametricCurve {
     fn point_unit_tangent(&self, t: f64) -> Result<(DVec3, DVec3)> {
         let (p, d) = self.point_derivative(t)?;
         // Scaled before squaring: a derivative of 3e-162 has a subnormal square, and d/|d|
-        // was 0.994 long (a property-test finding).
+        // from it is 0.994 long.
         match robust_normalize(d) {
             Some(tangent) => Ok((p, tangent)),
             None => invalid!("the curve is singular (zero or non-finite derivative) at t = {t}"),
@@ -246,8 +246,8 @@ mod tests {
         }
     }
 
-    /// Property-test finding: a segment of length 3e-162, whose derivative has a subnormal
-    /// square, gave a "unit" tangent of length 0.994.
+    /// A segment of length 3e-162, whose derivative has a subnormal square, has a unit
+    /// tangent (d/|d| unscaled is 0.994 long); a subnormal derivative is singular.
     #[test]
     fn tiny_derivatives_give_unit_tangents() {
         let tiny = DVec3::new(0.0, 3.125e-162, 0.0);
@@ -261,8 +261,8 @@ mod tests {
         assert!(line.point_unit_tangent(0.5).is_err());
     }
 
-    /// Fuzz finding: a sample count of 2³¹ or more was attempted (an allocation of 16 GiB
-    /// or a capacity-overflow panic) instead of refused.
+    /// Sample counts are bounded by [`MAX_SAMPLES`]: 2³¹ or more would be an allocation of
+    /// 16 GiB or a capacity-overflow panic.
     #[test]
     fn sample_counts_are_bounded() {
         assert!(check_sample_count(2, 2, "n").is_ok());

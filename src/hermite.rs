@@ -9,8 +9,8 @@ use std::fmt::Display;
 
 /// Relative distance below which consecutive points count as coincident. A curve between
 /// points closer than this against their coordinates spans fewer than about 10⁶ ulps: its
-/// tangent is decided by rounding (a fuzz finding: a Möbius segment of 3e-14 at distance 1.7
-/// had a "tangent" opposite to its derivative). CAD tolerances are far above it (OpenCascade's
+/// tangent is decided by rounding (a Möbius segment of 3e-14 at distance 1.7 can get a
+/// "tangent" opposite to its derivative). CAD tolerances are far above it (OpenCascade's
 /// Precision::Confusion is 1e-7).
 const COINCIDENT: f64 = 1e-10;
 
@@ -116,8 +116,8 @@ pub fn hermite_sequence(points: &[DVec3], tangents: &[DVec3]) -> Result<Vec<Herm
 mod tests {
     use super::*;
 
-    /// Fuzz finding: points near ±f64::MAX passed validation, and the PH cubic built on
-    /// them had infinite control points (a panic behind RMF_ERROR_INTERNAL).
+    /// Points near ±f64::MAX are refused: the PH cubic built on them would have infinite
+    /// control points. Coordinates up to [`MAX_COORDINATE`] are accepted.
     #[test]
     fn refuses_coordinates_whose_constructions_would_overflow() {
         let huge = DVec3::new(-6.25e307, 1.0, 0.0);

@@ -20,8 +20,9 @@ use crate::model::{on_frame_segments, FramedCurve};
 use glam::{DVec3, DVec4};
 
 /// Most control points of one sweep surface (2²², 128 MiB of homogeneous points): far above
-/// any CAD surface, and a bound on the work and memory a single call can ask for (a fuzz
-/// finding: a profile and spine of many segments made a call run for minutes in 4 GiB).
+/// any CAD surface, and a bound on the work and memory a single call can ask for (a
+/// profile and a spine of 2,048 segments each would ask for 134 million control points,
+/// minutes of work in 4 GiB).
 pub const MAX_SWEEP_POLES: usize = 1 << 22;
 
 /// The sweep of `profile` (its x → f₂, y → f₃; z ignored) along a curve with its frames:
@@ -206,8 +207,8 @@ mod tests {
         }
     }
 
-    /// Fuzz finding: 2,048 profile × 2,048 spine segments (134 million control points) ran
-    /// for minutes in 4 GiB; sweeps are bounded by their control point count.
+    /// Sweeps are bounded by their control point count, checked before any is made:
+    /// 2,048 profile × 2,048 spine segments would be 134 million, minutes of work in 4 GiB.
     #[test]
     fn sweeps_beyond_the_control_point_bound_are_refused() {
         let (spine, frames) = arc_with_frames();

@@ -279,7 +279,8 @@ mod tests {
         let (p, t) = curve.point_unit_tangent(1.0).unwrap();
         assert!((p - DVec3::new(1f64.cos(), 1f64.sin(), 0.5)).length() < 1e-15);
         assert!((t.length() - 1.0).abs() < 1e-15);
-        // Property-test finding: a domain whose length overflows reached the cone splines.
+        // A domain whose length overflows is refused here, before it reaches the cone
+        // splines (which step in fractions of its length).
         let wide = unsafe { curve_or_callback(std::ptr::null(), Some(helix), user, -1e308, 1e308) };
         assert!(wide.is_err());
         // A callback that writes nothing is refused when its multiple is sought.

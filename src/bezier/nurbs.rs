@@ -123,8 +123,9 @@ fn check_knots(degree: usize, knots: &[f64], suffix: &str) -> Result<()> {
             knots[n - 1]
         );
     }
-    // Ends of multiplicity above degree + 1 leave a basis function that is zero everywhere
-    // (a property-test finding: a run of 5 for degree 3 overran the Bézier decomposition).
+    // Ends of multiplicity above degree + 1 leave a basis function that is zero everywhere,
+    // and the Bézier decomposition, which expects at most degree + 1, would read past its
+    // arrays (a run of 5 for degree 3).
     if knots[p + 1] == knots[0] || knots[n - p - 2] == knots[n - 1] {
         return invalid!(
             "knots{suffix}: an end knot has multiplicity above degree + 1 = {}",
@@ -752,7 +753,7 @@ mod tests {
         )
         .unwrap_err();
         assert!(e.message().contains("multiplicity"));
-        // Property-test finding: end runs longer than degree + 1 (an index out of range).
+        // End runs longer than degree + 1 (the decomposition would index out of range).
         let six = [c.poles.clone(), vec![DVec3::ONE]].concat();
         for knots in [
             vec![0.0, 0.0, 0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0, 1.0, 1.0],

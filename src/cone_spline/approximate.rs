@@ -348,9 +348,10 @@ mod tests {
         assert!((2.5..4.5).contains(&order), "order {order}");
     }
 
-    /// Property-test finding: on a domain of width 1e-7 at t = 1 no cone pair joined the
-    /// rulings (cylinder-first rule), the halving reached an interval of adjacent floats,
-    /// [1.0001, 1.0001000000000002], and went on returning it until the stack overflowed.
+    /// On a domain of width 1e-7 at t = 1 no cone pair joins the rulings (cylinder-first
+    /// rule) and the halving reaches an interval of adjacent floats, [1.0001,
+    /// 1.0001000000000002], whose midpoint is one of its ends: the fit ends there with an
+    /// error instead of halving it until the stack overflows.
     #[test]
     fn intervals_too_narrow_to_halve_are_an_error() {
         let helix = Helix {

@@ -169,8 +169,8 @@ fn turning_zeros<S: Developable + ?Sized>(surface: &S) -> Result<Vec<f64>> {
 }
 
 /// Every algorithm steps through a developable in fractions of its domain's length, which
-/// must therefore be a finite f64 (a property-test finding: a domain of length beyond
-/// f64::MAX made the derivative stencil infinite and panicked).
+/// must therefore be a finite f64 (a domain of length beyond f64::MAX makes the derivative
+/// stencil infinite, and `clamp` panics on it).
 fn check_domain_length((lo, hi): (f64, f64)) -> Result<()> {
     if (hi - lo).is_finite() {
         Ok(())

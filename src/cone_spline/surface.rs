@@ -27,8 +27,8 @@ const VERTEX_MARGIN: f64 = 1e-9;
 const BOX_VERTEX_MARGIN: f64 = 1e-6;
 
 /// `b − a` for `a ≤ b` without overflow: the width of bounds that may each be near ±f64::MAX
-/// (a region box of ±1e308 gave an infinite width and t_min = +inf with RMF_OK, an
-/// integrator's finding), as half the width doubled when it fits.
+/// (b − a of a region box of ±1e308 is infinite, and t_min with it), as half the width
+/// doubled when it fits.
 fn width(a: f64, b: f64) -> f64 {
     let half = 0.5 * b - 0.5 * a;
     if half <= 0.5 * f64::MAX {
@@ -279,8 +279,9 @@ mod tests {
         assert!(spline.bounds_in_box(&tiny).is_err());
     }
 
-    /// Integrator's finding: a region box of ±1e308 gave t_min = +inf > t_max with RMF_OK
-    /// (the strip's width overflowed).
+    /// Bounds in a region box of ±1e308 are finite and ordered: the strip's width, which
+    /// overflows as b − a (t_min = +inf > t_max), is half the width doubled; a box of
+    /// ±f64::MAX is refused.
     #[test]
     fn bounds_in_a_box_of_1e308_are_finite_and_ordered() {
         let spline = cubic_spline();

@@ -115,9 +115,10 @@ mod tests {
     use crate::curve::uniform_parameters;
     use crate::testing::Helix;
 
-    /// Fuzz finding: across a cusp (a polyline going back on itself) the first reflection
-    /// reverses the tangent onto t₁ up to round-off, and reflecting in that round-off left
-    /// f₂ 5e-6 out of the normal plane.
+    /// Across a cusp (a polyline going back on itself) the first reflection reverses the
+    /// tangent onto t₁ up to round-off; reflecting in that round-off would leave f₂ 5e-6
+    /// out of the normal plane, so the second reflection is replaced by a projection onto
+    /// it and the frame stays orthonormal.
     #[test]
     fn a_reversed_tangent_keeps_the_frame_orthonormal() {
         for d in [

@@ -23,7 +23,7 @@ pub fn frenet_frame(d1: DVec3, d2: DVec3) -> Option<Frame> {
     }
     let t = d1.normalize();
     // Rounding leaves x' × x'' off the normal plane by about ε / sin∠(x', x''): 4e-6 at
-    // sin∠ = 1e-10, a property-test finding. Projected back, the frame is orthonormal to
+    // sin∠ = 1e-10. Projected back, the frame is orthonormal to
     // rounding at every angle the tolerance accepts (its direction stays as well
     // conditioned as the data make it).
     let b = orthogonalized(b / b_len, t).normalize();
@@ -56,8 +56,9 @@ mod tests {
         assert!(frenet_frame(DVec3::X, DVec3::X * 3.0).is_none());
     }
 
-    /// Fuzz finding: the Frenet frames of a NURBS curve evaluated where x' was subnormal
-    /// came back as RMF_OK with a zero tangent and NaN normals.
+    /// Derivatives from subnormal to 1e308 give the frame of their directions or none: they
+    /// are scaled to unit size before the cross products (unscaled, a subnormal x' gives a
+    /// zero tangent and NaN normals).
     #[test]
     fn tiny_and_huge_derivatives_give_the_same_frame_or_none() {
         let (d1, d2) = (DVec3::new(0.3, -1.0, 0.2), DVec3::new(1.0, 0.5, -0.7));

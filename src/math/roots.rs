@@ -161,8 +161,8 @@ fn solve_bracketed(p: &[f64], mut a: f64, mut b: f64, fa: f64) -> f64 {
 
 /// The midpoint of `[a, b]` (a < b) when it lies strictly inside; `None` for an interval of
 /// adjacent floats (or one whose midpoint overflows), which halving would return unchanged:
-/// adaptive subdivision stops there instead of recursing forever (a property-test finding:
-/// a cone spline fit overflowed the stack on [1.0001, 1.0001000000000002]).
+/// adaptive subdivision stops there instead of recursing forever (a cone spline fit halving
+/// [1.0001, 1.0001000000000002] would overflow the stack).
 pub fn interior_midpoint(a: f64, b: f64) -> Option<f64> {
     let m = 0.5 * (a + b);
     (m > a && m < b).then_some(m)

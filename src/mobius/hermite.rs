@@ -54,8 +54,8 @@ fn planar_cubic(data: &HermiteSegment, plane: &SegmentMap, index: usize) -> Resu
     // The mapped tangents lie in the plane up to round-off; put them there exactly so the
     // cubic is planar and n is normal to it.
     let into_plane = |p: DVec3, t: DVec3| -> Result<DVec3> {
-        // None only where rounding puts an end point (numerically) at the inversion centre
-        // (a fuzz finding: this was a panic).
+        // None only where rounding puts an end point (numerically) at the inversion centre:
+        // data can reach it, so it is an error to report, not an invariant to assume.
         let v = plane.map.normalized_differential(p, t).ok_or_else(|| {
             Error::no_solution(format!(
                 "segment {index}: the Möbius map degenerates at an end point (numerically at \
@@ -92,9 +92,9 @@ fn interpolate_segment(
     // Built with the chord's midpoint at the origin and a unit chord, then scaled and moved
     // back (the construction commutes with similarities): a segment short against its
     // distance from the origin keeps its own precision in the spheres and inversions, and a
-    // huge one does not overflow in their squares (fuzz findings: a chord of 3e-14 at
-    // distance 1.7 had frames 4e-2 from orthonormal; a chord of 4e153 met the inversion
-    // centre in round-off).
+    // huge one does not overflow in their squares (in absolute coordinates a chord of 3e-14
+    // at distance 1.7 gets frames 4e-2 from orthonormal, and a chord of 4e153 meets the
+    // inversion centre in round-off).
     let origin = 0.5 * (data.p0 + data.p1);
     let scale = data.chord_length();
     let local = HermiteSegment {
@@ -250,10 +250,11 @@ mod tests {
         worst
     }
 
-    /// Fuzz finding: a chord of 3e-14 at distance 1.7 from the origin got frames 4e-2 from
-    /// orthonormal (its spheres and inversions were built in absolute coordinates); such
-    /// points now count as coincident, and a short chord far from the origin that is
-    /// accepted keeps orthonormal frames along the right tangent.
+    /// A chord of 3e-14 at distance 1.7 from the origin: its points count as coincident (its
+    /// tangent is decided by rounding), and a short chord far from the origin that is
+    /// accepted keeps orthonormal frames along the right tangent, because each segment is
+    /// built on a unit chord and moved back (spheres and inversions built in absolute
+    /// coordinates put the frames 4e-2 from orthonormal).
     #[test]
     fn a_short_segment_far_from_the_origin_has_orthonormal_frames() {
         let p0 = DVec3::new(1.00001, 1.0000200001000001, 1.0000300001000002);
@@ -272,8 +273,9 @@ mod tests {
         assert!(orthonormality < 1e-12, "{orthonormality:e}");
     }
 
-    /// Fuzz finding: nearly planar data with t₀ ≈ −t₁ got the plane normal t₀ × t₁, at 0.06
-    /// to the chord, and frames 2e-6 from orthonormal.
+    /// Nearly planar data with t₀ ≈ −t₁: the plane's normal is taken across the chord, not
+    /// as t₀ × t₁ (at 0.06 to the chord, which leaves the frames 2e-6 from orthonormal), and
+    /// the frames are orthonormal.
     #[test]
     fn nearly_planar_data_with_opposite_tangents_have_orthonormal_frames() {
         let points = [DVec3::X, DVec3::new(3.21875, 0.1875, 0.0)];
@@ -373,7 +375,8 @@ mod tests {
             radius: 1.0,
             pitch: 0.4,
         };
-        // 0, and (a fuzz finding) counts that were attempted instead of refused.
+        // 0, and counts beyond the bound of 2²⁴ segments (2³¹ + 1 would be an allocation of
+        // 16 GiB, usize::MAX a capacity overflow), are refused.
         for bad in [0, (1 << 31) + 1, usize::MAX] {
             assert!(mobius_approximate(&helix, bad, DVec3::Z)
                 .unwrap_err()
@@ -524,9 +527,10 @@ mod tests {
 mod nearly_planar_tests {
     use super::*;
 
-    /// Fuzz finding: data planar but for a tangent component of 2e-308, with the tangents
-    /// across the chord (Y = 0, the sphere's normal ∝ ℓ s e below the square's underflow):
-    /// frames 0.8 long with RMF_OK. Frames are orthonormal for every tilt out of the plane.
+    /// Data planar but for a tangent component of 2e-308, with the tangents across the chord
+    /// (Y = 0, the sphere's normal ∝ ℓ s e below the square's underflow, where an unscaled
+    /// length gives frames 0.8 long): frames are orthonormal for every tilt out of the
+    /// plane, subnormal ones included.
     #[test]
     fn data_out_of_plane_by_a_tiny_tilt_have_orthonormal_frames() {
         let p = [DVec3::new(-9.2, 0.0, 0.0), DVec3::new(114.08, 0.0, 0.0)];

@@ -256,7 +256,8 @@ pub fn map_framed_curve(map: &MobiusMap, framed: &FramedCurve) -> Result<FramedC
 
 /// The degrees of the image of a segment of degree `n` (and of frames of degree `m`) stay
 /// within [`MAX_DEGREE`]: a sphere inversion takes n to 2n and m to m + 2n (module notes), so
-/// a few inversions of a cubic already exceed it (a fuzz finding: frames of degree 188).
+/// a few inversions of a cubic already exceed it (frames of degree 188, past the Bernstein
+/// tables).
 fn check_image_degrees(map: &MobiusMap, n: usize, m: Option<usize>) -> Result<()> {
     let (mut curve, mut frame) = (n, m);
     for inversion in map.inversions() {
@@ -388,8 +389,9 @@ mod tests {
         );
     }
 
-    /// Fuzz finding: repeated sphere inversions took frames to degree 188 and the Bernstein
-    /// products past their tables (a panic). Images beyond the degree bound are refused.
+    /// Repeated sphere inversions raise the frames' degree fast (to 188 in a few), past the
+    /// tables of the Bernstein products: images beyond the degree bound are refused before
+    /// any product.
     #[test]
     fn images_beyond_the_degree_bound_are_refused() {
         let framed = planar_ph_cubic();

@@ -112,8 +112,8 @@ impl PencilSphere {
     }
 
     /// Planar data (the sphere is a plane, or the data a line): s = 0, or subnormal, where
-    /// it keeps too few bits to place a sphere (a tangent out of the plane by 1e-320 gave
-    /// frames 4e-6 from unit length).
+    /// it keeps too few bits to place a sphere (a tangent out of the plane by 1e-320 would
+    /// give frames 4e-6 from unit length).
     fn is_planar(&self) -> bool {
         self.s.abs() < f64::MIN_POSITIVE
     }
@@ -354,8 +354,8 @@ fn planar_map(h: &HermiteSegment) -> SegmentMap {
     let chord = (h.p1 - h.p0).normalize();
     // The end points must lie in the plane (only the tangents are projected into it), so its
     // normal is taken across the chord, from the tangent farther from it; t₀ × t₁ only when
-    // both run along the chord. (A fuzz finding: nearly planar data with t₀ ≈ −t₁ took
-    // t₀ × t₁, at 0.06 to the chord, and the frames were 2e-6 from orthonormal.)
+    // both run along the chord. (For nearly planar data with t₀ ≈ −t₁, t₀ × t₁ lies at 0.06
+    // to the chord, and frames built on that plane are 2e-6 from orthonormal.)
     let across = [h.t0.cross(chord), h.t1.cross(chord)]
         .into_iter()
         .max_by(|a, b| a.length().total_cmp(&b.length()))

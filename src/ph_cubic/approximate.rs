@@ -574,8 +574,9 @@ mod tiny_domain_tests {
         }
     }
 
-    /// Fuzz finding (a 30 s timeout): on a domain of 640 ulps where no PH cubic fits, the
-    /// trials shrank to half an ulp, which rounds up to the same one-ulp interval, forever.
+    /// On a domain of 640 ulps where no PH cubic fits, a trial of half an ulp rounds up to
+    /// the same one-ulp interval: the trials stop at one ulp, with an error naming the
+    /// place, instead of repeating it forever.
     #[test]
     fn trials_stop_at_one_ulp() {
         let c = Cubic(

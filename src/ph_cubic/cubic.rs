@@ -54,8 +54,8 @@ impl PhCubic {
         }
         let cubic = Self { points };
         let [h0, _, h2] = cubic.legs();
-        // An end leg below the rounding of the points has no direction (a property-test
-        // finding: a leg of 0.02 beside coordinates of 1e164 gave NaN frames with RMF_OK).
+        // An end leg below the rounding of the points has no direction (a leg of 0.02
+        // beside coordinates of 1e164: its frames would be NaN).
         let rounding = f64::EPSILON * largest_coordinate(points);
         if robust_length(h0) <= rounding || robust_length(h2) <= rounding {
             return invalid!(
@@ -236,7 +236,7 @@ impl PhCubic {
     /// curvature ratios do not change, and the products that compute them neither underflow
     /// nor overflow for curves of any size.
     pub fn normalized(&self) -> Self {
-        // Robustly: legs beyond 1e154 would overflow in |h|² (a fuzz finding: NaN frames).
+        // Robustly: legs beyond 1e154 would overflow in |h|² (and the frames be NaN).
         let longest = self
             .legs()
             .iter()
@@ -252,15 +252,15 @@ impl PhCubic {
     /// otherwise.
     ///
     /// The frames (19), (29) and the angle (30) assume the PH identity |x'| = σ exactly.
-    /// Taken literally, (19) turned a residual r into an orthonormality error of about
-    /// r / sin²θ (2e-5 for r = 1e-9 at θ = 2e-3, a fuzz finding); computed from the quaternion
+    /// Taken literally, (19) turns a residual r into an orthonormality error of about
+    /// r / sin²θ (2e-5 for r = 1e-9 at θ = 2e-3); computed from the quaternion
     /// preimage (x' = A i A*) the frames are orthonormal anyway, but adapted to the PH
     /// cubic nearest the polygon, whose hodograph differs from it by about r. So a polygon accepted
     /// within [`PH_TOLERANCE`] (data read from files, or rounded far from the origin) gets its
     /// frames from the exact PH cubic of its own Hermite data, which it matches at both ends
     /// and within r inside. When no PH cubic interpolates those data (a segment so short
-    /// against its distance from the origin that rounding reverses a leg: another fuzz
-    /// finding, frames of length 0.5) no frame fits the polygon, and it is refused.
+    /// against its distance from the origin that rounding reverses a leg, where the literal
+    /// frames have vectors of length 0.5) no frame fits the polygon, and it is refused.
     pub fn exactly_ph(&self) -> Result<Self> {
         let residual = self.hodograph_residual();
         if residual <= ROUND_OFF_RESIDUAL {
@@ -315,8 +315,8 @@ mod tests {
         assert!(c.hodograph_residual() < 1e-15);
     }
 
-    /// Property-test finding: a quadratic NURBS with a pole at 1e164 taken as a PH spline;
-    /// its last leg, 0.02, is below the rounding of the points and its frames were NaN.
+    /// A quadratic NURBS with a pole at 1e164 taken as a PH spline: its last leg, 0.02, is
+    /// below the rounding of the points, so the end is singular (its frames would be NaN).
     #[test]
     fn end_legs_below_the_rounding_of_the_points_are_singular() {
         let far = DVec3::new(1.0, 0.0, 1.1517219314030583e164);

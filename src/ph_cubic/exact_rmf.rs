@@ -198,8 +198,8 @@ mod tests {
     use crate::ph_cubic::test_curves::helix_spline;
     use crate::testing::gap_to_double_reflection;
 
-    /// Fuzz finding: the exact RMF of a cubic with a chord of 4e153 came back as NaN frames
-    /// with RMF_OK.
+    /// A cubic with a chord of 4e153 has finite unit exact RMF frames: it is normalized
+    /// without squaring its legs, which overflow beyond 1e154 (NaN frames).
     #[test]
     fn huge_cubics_have_finite_unit_frames() {
         let data = crate::hermite::HermiteSegment::new(

@@ -16,8 +16,8 @@ use glam::DVec3;
 /// bend (see [`frenet_numerators`]), the frame is still only as well defined as its
 /// binormal h₀ × h₁ and the twist ρ of (30), both conditioned like ε/sin θ: the RMF built on
 /// it is 2e-11 rad from the double-reflection reference at sin θ = 1.6e-4, 3.5e-9 at 1.6e-6;
-/// on a line it is undefined (a fuzz finding: at sin θ = 1e-11 the literal (19) had vectors
-/// of length 1.3). Below it the RMF is built on the carried frame, whose error grows like
+/// on a line it is undefined (at sin θ = 1e-11 the literal (19) gives vectors of length
+/// 1.3). Below it the RMF is built on the carried frame, whose error grows like
 /// θ³ (8e-12 rad at 7.9e-5, 8e-9 at 7.9e-4): 1e-4 balances the two.
 pub const NEARLY_STRAIGHT: f64 = 1e-4;
 
@@ -107,10 +107,11 @@ mod tests {
         }
     }
 
-    /// Fuzz finding: a segment of 4e-13 at distance 1 from the origin (its polygon PH only
-    /// to 1e-3, within the tolerance its rounding allows) had Frenet frames 1e-3 from
-    /// orthonormal; a PH cubic perturbed by 1e-10 near a straight line, 2e-5 (then 1e-7
-    /// from the exactly PH cubic of its data, now 7e-16 from its quaternion preimage).
+    /// A segment of 4e-13 at distance 1 from the origin (its polygon PH only to 1e-3, within
+    /// the tolerance its rounding allows) and a PH cubic perturbed by 1e-10 near a straight
+    /// line: (19) taken literally puts their Frenet frames 1e-3 and 2e-5 from orthonormal,
+    /// and 1e-7 on the exactly PH cubic of their data; from that cubic's quaternion
+    /// preimage they are orthonormal to rounding (7e-16).
     #[test]
     fn frames_are_orthonormal_for_polygons_that_are_ph_only_within_tolerance() {
         let tiny = crate::bezier::RationalBezierCurve::polynomial(&[
@@ -136,9 +137,10 @@ mod tests {
         }
     }
 
-    /// Fuzz finding: a line of 1.1e-13 at distance 1 from the origin, elevated to a cubic,
-    /// bends by 3e-3 through rounding alone and has no PH interpolant of its end data; its
-    /// "Frenet frames" had vectors of length 0.5. Refused now, or else orthonormal.
+    /// A line of 1.1e-13 at distance 1 from the origin, elevated to a cubic, bends by 3e-3
+    /// through rounding alone and has no PH interpolant of its end data, so no frame fits
+    /// it (its literal "Frenet frames" have vectors of length 0.5): it is refused, or else
+    /// its frames are orthonormal.
     #[test]
     fn polygons_without_a_ph_interpolant_of_their_end_data_are_refused() {
         let line = crate::bezier::RationalBezierCurve::from_weighted(
@@ -164,7 +166,8 @@ mod tests {
         }
     }
 
-    /// Fuzz finding: a cubic bending by 1e-11 got a "Frenet frame" with vectors of length 1.3.
+    /// A cubic bending by 1e-11 (below [`NEARLY_STRAIGHT`]) has no Frenet frame: (19) taken
+    /// literally gives vectors of length 1.3 there.
     #[test]
     fn nearly_straight_segments_are_refused() {
         let data = crate::hermite::HermiteSegment::new(

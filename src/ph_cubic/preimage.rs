@@ -10,8 +10,8 @@
 //! Euler–Rodrigues frame turned by a constant angle (its twist rate τσ and the frame's,
 //! 2(A₀*A₁)ᵢ/σ, are both a constant over σ; a test checks it). Written literally, (19) divides
 //! σx'' − σ'x' and x' × x'' by Kσ with σ from the leg lengths, which holds only to the PH
-//! residual r of the rounded polygon over sin²θ: 5e-9 from orthonormal at sin θ = 2e-3 (a
-//! property-test finding), against 1e-15 here.
+//! residual r of the rounded polygon over sin²θ: 5e-9 from orthonormal at sin θ = 2e-3,
+//! against 1e-15 here.
 
 use super::cubic::PhCubic;
 use glam::{DQuat, DVec3};

@@ -155,8 +155,8 @@ mod tests {
 
     #[test]
     fn segments_within_the_rounding_of_their_coordinates_are_refused() {
-        // A line 3.6e-15 long at distance 6.8 (a fuzz input): its direction is rounding, and
-        // the exact RMF along it was NaN with RMF_OK.
+        // A line 3.6e-15 long at distance 6.8: its direction is rounding, and the exact RMF
+        // along it would be NaN.
         let line = RationalBezierCurve::polynomial(&[
             DVec3::new(4.25e-144, -6.8, 0.0),
             DVec3::new(1.87e-143, -6.799999999999996, 0.0),

@@ -72,7 +72,7 @@ pub(crate) fn resolve(
 const SMALLEST_RADIUS: f64 = 1e-10;
 
 /// Refuses a corner radius below what the wire's coordinates resolve (a default radius of
-/// a tiny profile, 6e-34 at coordinates of 1, gave an arc of NaN control points).
+/// a tiny profile, 6e-34 at coordinates of 1, gives an arc of NaN control points).
 fn check_radius_resolved(chain: &Chain, radius: f64, unit: f64) -> Result<()> {
     let magnitude = chain
         .joints

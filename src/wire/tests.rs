@@ -419,8 +419,8 @@ fn bad_wires_and_profiles_are_refused_naming_the_edge_or_joint() {
             && m.contains("smallest radius allowed is 0.7071067"),
         "{m}"
     );
-    // The default radius of a profile of 1e-34 at corners of size 1: rounding (fuzz finding:
-    // the corner arc had NaN control points).
+    // The default radius of a profile of 1e-34 at corners of size 1: rounding (an arc of
+    // that radius has NaN control points).
     let default = WireSweep {
         corner: Corner::Round(None),
         ..d
@@ -604,9 +604,9 @@ fn a_ph_spline_edge_is_used_as_it_is() {
     assert!(shape.report().max_parameter_cosine < 1e-5);
 }
 
-/// Fuzz finding: a circle of subnormal radius (6e-313) as the only edge made the wire's
-/// size subnormal, its scale 2⁻¹⁰³⁶ and 1/scale infinite: NaN control points and a panic.
-/// Sizes outside [1e-290, 1e290] are refused.
+/// A circle of subnormal radius (6e-313) as the only edge makes the wire's size subnormal,
+/// its scale 2⁻¹⁰³⁶ and 1/scale infinite (NaN control points): sizes outside
+/// [1e-290, 1e290] are refused.
 #[test]
 fn wires_of_subnormal_or_huge_size_are_refused() {
     let tiny = circle(1.0).similar(6.25e-313, DVec3::ZERO);

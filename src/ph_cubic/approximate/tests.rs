@@ -288,9 +288,9 @@ fn budgets_end_in_not_converged() {
     }
 }
 
-/// Reliability finding: an unreachable tolerance (4e-320) was "no PH cubic … (a corner, cusp
-/// or inflection?)", NoSolution. Below the rounding of the coordinates it is refused as
-/// invalid; above it, but beyond what the PH fits can resolve there, it is NotConverged.
+/// An unreachable tolerance is not a corner, cusp or inflection (NoSolution): below the
+/// rounding of the coordinates (4e-320, 1e-300, 5e-16) it is refused as invalid; above it,
+/// but beyond what the PH fits can resolve there, it is NotConverged.
 #[test]
 fn unreachable_tolerances_are_not_mistaken_for_inflections() {
     let domain = [0.0, 2.0 * std::f64::consts::PI];
