@@ -580,6 +580,84 @@ static void test_surface_structs(void) {
     rmf_surface_free(old);
 }
 
+/* The primitive curves, evaluated by the suite's own NURBS evaluator: a circle at its
+ * radius in its plane, an arc through its three points, a polygon through its corners, an
+ * obround at its radius from its segment; bad arguments refused naming them, out untouched. */
+static double worst_on_curve(RmfCurve *c, double (*off)(RmfVec3), int samples) {
+    RmfNurbsCurve view;
+    double worst = 0.0, lo, hi;
+    int k;
+    CHECK_STATUS(rmf_curve_nurbs(c, &view), RMF_OK, "");
+    lo = view.knots[0];
+    hi = view.knots[view.knot_count - 1];
+    for (k = 0; k <= samples; k++) {
+        RmfVec3 d[3];
+        ne_curve_derivatives(&view, lo + (hi - lo) * k / samples, d);
+        worst = fmax(worst, fabs(off(d[0])));
+    }
+    return worst;
+}
+
+/* Circle: centre (1, 2, 3), radius 2.5, in the plane x = 1 (axes y and z). */
+static double off_circle(RmfVec3 p) {
+    return fabs(ne_norm(ne_sub(p, vec3(1, 2, 3))) - 2.5) + fabs(p.x - 1.0);
+}
+
+/* Arc through (10, 0, 0), (0, 10, 0), (-6, -8, 0): the circle of radius 10 about 0 in z = 0. */
+static double off_arc(RmfVec3 p) { return fabs(ne_norm(p) - 10.0) + fabs(p.z); }
+
+/* Obround: radius 1.5 from the segment (±3, 0, 5). */
+static double off_obround(RmfVec3 p) {
+    double x = fmin(3.0, fmax(-3.0, p.x));
+    return fabs(ne_norm(ne_sub(p, vec3(x, 0, 5))) - 1.5) + fabs(p.z - 5.0);
+}
+
+static void test_primitive_curves(void) {
+    static char storage;
+    RmfCurve *const sentinel = (RmfCurve *)(void *)&storage;
+    RmfCurve *c = NULL, *out = sentinel;
+    RmfNurbsCurve view;
+    RmfVec3 corners[4] = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}}, d[3];
+
+    CHECK_STATUS(rmf_curve_circle(vec3(1, 2, 3), vec3(0, 1, 0), vec3(0, 0, 1), 2.5, &c), RMF_OK, "");
+    CHECK(worst_on_curve(c, off_circle, 400) < 1e-13, "the circle is at its radius in its plane");
+    rmf_curve_free(c);
+    CHECK_STATUS(rmf_curve_arc(vec3(10, 0, 0), vec3(0, 10, 0), vec3(-6, -8, 0), &c), RMF_OK, "");
+    CHECK(worst_on_curve(c, off_arc, 400) < 1e-13, "the arc is on its circle");
+    CHECK_STATUS(rmf_curve_nurbs(c, &view), RMF_OK, "");
+    ne_curve_derivatives(&view, view.knots[view.knot_count - 1], d);
+    CHECK(ne_dist(d[0], vec3(-6, -8, 0)) < 1e-14, "the arc ends at its end point");
+    rmf_curve_free(c);
+    CHECK_STATUS(rmf_curve_polygon(corners, 4, &c), RMF_OK, "");
+    CHECK_STATUS(rmf_curve_nurbs(c, &view), RMF_OK, "");
+    CHECK(view.degree == 1 && view.pole_count == 5, "a polygon of 4 corners has 5 poles");
+    ne_curve_derivatives(&view, 2.5, d);
+    CHECK(ne_dist(d[0], vec3(1, 1, 0)) < 1e-15, "the polygon's third side");
+    rmf_curve_free(c);
+    CHECK_STATUS(rmf_curve_polyline(corners, 2, &c), RMF_OK, "");
+    rmf_curve_free(c);
+    CHECK_STATUS(rmf_curve_obround(vec3(0, 0, 5), vec3(2, 0, 0), vec3(0, 1, 0), 6.0, 1.5, &c), RMF_OK, "");
+    CHECK(worst_on_curve(c, off_obround, 600) < 1e-13, "the obround is at its radius from its segment");
+    rmf_curve_free(c);
+
+    CHECK_STATUS(rmf_curve_circle(vec3(nan_value(), 0, 0), vec3(1, 0, 0), vec3(0, 1, 0), 1, &out),
+                 RMF_ERROR_INVALID_INPUT, "centre");
+    CHECK_STATUS(rmf_curve_circle(vec3(0, 0, 0), vec3(1, 0, 0), vec3(2, 0, 0), 1, &out),
+                 RMF_ERROR_INVALID_INPUT, "y_axis");
+    CHECK_STATUS(rmf_curve_circle(vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0), -1, &out),
+                 RMF_ERROR_INVALID_INPUT, "radius");
+    CHECK_STATUS(rmf_curve_circle(vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0), 1, NULL),
+                 RMF_ERROR_NULL_POINTER, "out");
+    CHECK_STATUS(rmf_curve_arc(vec3(0, 0, 0), vec3(1, 0, 0), vec3(2, 0, 0), &out),
+                 RMF_ERROR_INVALID_INPUT, "collinear");
+    CHECK_STATUS(rmf_curve_polyline(NULL, 3, &out), RMF_ERROR_NULL_POINTER, "points");
+    CHECK_STATUS(rmf_curve_polyline(corners, 1, &out), RMF_ERROR_INVALID_INPUT, "points");
+    CHECK_STATUS(rmf_curve_polygon(corners, 2, &out), RMF_ERROR_INVALID_INPUT, "corners");
+    CHECK_STATUS(rmf_curve_obround(vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0), -1, 1, &out),
+                 RMF_ERROR_INVALID_INPUT, "length");
+    CHECK(out == sentinel, "failing calls leave out untouched");
+}
+
 int main(void) {
     test_version_and_status_names();
     test_curve_good_input();
@@ -590,5 +668,6 @@ int main(void) {
     test_surface_good_input();
     test_surface_bad_input();
     test_surface_structs();
+    test_primitive_curves();
     return rmf_check_exit_code("abi_basics");
 }

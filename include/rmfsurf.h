@@ -3129,6 +3129,106 @@ RmfStatus rmf_profile_offset_by_arcs(const struct RmfCurve *profile,
                                      double *deviation);
 
 /**
+ * The full circle of `radius` about `centre` in the plane of `x_axis` and `y_axis`: four
+ * rational quadratic quarter arcs on the parameter intervals [0, 1] … [3, 4], starting at
+ * centre + radius · x_axis / |x_axis| and turning counter-clockwise about x × y.
+ *
+ * @param[in] centre The centre (finite).
+ * @param[in] x_axis Direction to the start point (finite, non-zero).
+ * @param[in] y_axis Any vector of the plane not parallel to x_axis (made orthogonal to it).
+ * @param[in] radius Finite and > 0.
+ * @param[out] out Receives the circle; free with rmf_curve_free. Untouched on failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If an argument is not finite, radius ≤ 0, x_axis is zero
+ *         or y_axis is zero or parallel to x_axis (the message names the argument).
+ * \since 0.2
+ * \ingroup rmf_curves
+ */
+RmfStatus rmf_curve_circle(struct RmfVec3 centre,
+                           struct RmfVec3 x_axis,
+                           struct RmfVec3 y_axis,
+                           double radius,
+                           struct RmfCurve **out);
+
+/**
+ * The circular arc from `start` through `through` to `end` (less than a full turn), as
+ * rational quadratic pieces of at most a quarter turn on the parameter interval [0, 1];
+ * its ends are `start` and `end` exactly.
+ *
+ * @param[in] start, through, end Three finite points, not collinear.
+ * @param[out] out Receives the arc; free with rmf_curve_free. Untouched on failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If a point is not finite, or the points are collinear or
+ *         coincide.
+ * \since 0.2
+ * \ingroup rmf_curves
+ */
+RmfStatus rmf_curve_arc(struct RmfVec3 start,
+                        struct RmfVec3 through,
+                        struct RmfVec3 end,
+                        struct RmfCurve **out);
+
+/**
+ * Straight segments through `count` points, segment i on the parameter interval
+ * [i, i + 1].
+ *
+ * @param[in] points count finite points, consecutive points distinct.
+ * @param[in] count Number of points, ≥ 2.
+ * @param[out] out Receives the polyline; free with rmf_curve_free. Untouched on failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If points or out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If count < 2, a point is not finite or two consecutive
+ *         points coincide (the message names their indices).
+ * \since 0.2
+ * \ingroup rmf_curves
+ */
+RmfStatus rmf_curve_polyline(const struct RmfVec3 *points, size_t count, struct RmfCurve **out);
+
+/**
+ * The closed polygon through `count` corners (the last joined to the first, which is not
+ * repeated), segment i on the parameter interval [i, i + 1].
+ *
+ * @param[in] corners count finite points, consecutive corners distinct.
+ * @param[in] count Number of corners, ≥ 3.
+ * @param[out] out Receives the polygon; free with rmf_curve_free. Untouched on failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If corners or out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If count < 3, a corner is not finite or two consecutive
+ *         corners coincide (the message names their indices).
+ * \since 0.2
+ * \ingroup rmf_curves
+ */
+RmfStatus rmf_curve_polygon(const struct RmfVec3 *corners, size_t count, struct RmfCurve **out);
+
+/**
+ * The obround (slot): the points at `radius` from the segment of `length` centred on
+ * `centre` along `x_axis`, in the plane of `x_axis` and `y_axis`. From the bottom of the
+ * end at +x, counter-clockwise about x × y: a half circle (two quarter arcs), a line, a
+ * half circle, a line — six pieces on [0, 1] … [5, 6]. A length of 0 gives the circle.
+ *
+ * @param[in] centre The middle of the segment (finite).
+ * @param[in] x_axis The segment's direction (finite, non-zero).
+ * @param[in] y_axis Any vector of the plane not parallel to x_axis.
+ * @param[in] length The distance between the two half circles' centres, finite and ≥ 0.
+ * @param[in] radius Finite and > 0 (half the slot's width).
+ * @param[out] out Receives the obround; free with rmf_curve_free. Untouched on failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If an argument is not finite, length < 0, radius ≤ 0,
+ *         x_axis is zero or y_axis is zero or parallel to x_axis.
+ * \since 0.2
+ * \ingroup rmf_curves
+ */
+RmfStatus rmf_curve_obround(struct RmfVec3 centre,
+                            struct RmfVec3 x_axis,
+                            struct RmfVec3 y_axis,
+                            double length,
+                            double radius,
+                            struct RmfCurve **out);
+
+/**
  * All RRMF quintics interpolating G1 Hermite data for one value of the angular parameter
  * η (the Algorithm of Section 4 of Farouki, Giannelli & Sestini): ρ is every positive root
  * of the sextic (35) (or, when s_f = s_i and η = φ/2, of the quartic of the special case

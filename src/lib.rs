@@ -151,6 +151,12 @@ pub use sheet::{Layer, PartReport, Reference, Sheet, SheetOptions, SheetPart, Si
 pub use mesh::{grid_normals, grid_parameters, mesh_size, tessellate, TriangleMesh};
 pub use solid::{closed_mesh, ClosedMesh};
 
+/// The curves users draw, as exact rational Bézier pieces: circles, circular arcs,
+/// polylines, polygons and obrounds (slots).
+pub mod primitives {
+    pub use crate::model::{arc_through, circle, obround, polygon, polyline};
+}
+
 /// Measures of frames and surfaces: how far frames are from rotation-minimizing, from each
 /// other and from orthonormal, the angle between parameter lines, Gaussian curvature.
 pub mod metrics {

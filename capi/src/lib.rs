@@ -2,7 +2,7 @@
 //! and counts, convert to core types, call the geometry inside the panic boundary
 //! (`boundary::guard`), map `Result` to `RmfStatus`, and write out-pointers last.
 //!
-//! One module per C type: [`curve`] (`RmfCurve`), [`frames`] (`RmfFrames`), [`surface`]
+//! One module per C type: [`curve`] (`RmfCurve`; the primitive curves in [`primitives`]), [`frames`] (`RmfFrames`), [`surface`]
 //! (`RmfSurface`), [`shape`] (`RmfShape`, made by the wire sweeps of [`wire`]), [`sheet`]
 //! (`RmfSheetOptions`, sheet-metal parts); [`status`] holds the status codes, last error and
 //! version; [`types`]
@@ -24,6 +24,7 @@ pub mod frames;
 pub mod input;
 pub mod mobius;
 pub mod ph_cubic;
+pub mod primitives;
 pub mod rrmf_quintic;
 pub mod shape;
 pub mod sheet;

@@ -6,8 +6,8 @@
 use crate::json::{self, InputError, InputResult, Point2, Vec3};
 use crate::schema;
 use rmfsurf::glam::DVec3;
+use rmfsurf::primitives;
 use rmfsurf::{Element, NurbsCurve, NurbsSurface, Reference, Sheet, SheetOptions, SpineMethod};
-use std::f64::consts::FRAC_1_SQRT_2;
 use std::io::Read;
 
 /// The spine as given.
@@ -390,7 +390,7 @@ fn profile_curve(profile: schema::Profile, path: &str) -> InputResult<(NurbsCurv
         (None, Some(line), None, None) => {
             let path = format!("{path}.line");
             Ok((
-                polyline(&[line.from.0, line.to.0]).map_err(at(&path))?,
+                nurbs(primitives::polyline(&[line.from.0, line.to.0])).map_err(at(&path))?,
                 true,
             ))
         }
@@ -423,8 +423,14 @@ fn hole_curve(hole: schema::Hole, path: &str) -> InputResult<NurbsCurve> {
     }
 }
 
+/// A primitive as one NURBS curve.
+fn nurbs(curve: rmfsurf::Result<rmfsurf::PiecewiseCurve>) -> rmfsurf::Result<NurbsCurve> {
+    NurbsCurve::from_piecewise(&curve?)
+}
+
 fn profile_circle(c: schema::Circle, path: &str) -> InputResult<NurbsCurve> {
-    circle(c.center.map_or(DVec3::ZERO, |p| p.0), c.radius.0).map_err(at(path))
+    let centre = c.center.map_or(DVec3::ZERO, |p| p.0);
+    nurbs(primitives::circle(centre, DVec3::X, DVec3::Y, c.radius.0)).map_err(at(path))
 }
 
 /// The closed polygon through `corners` (at least three) at `path`.
@@ -437,7 +443,7 @@ fn polygon<P: Into<DVec3>>(corners: Vec<P>, path: &str) -> InputResult<NurbsCurv
         ));
     }
     corners.push(corners[0]);
-    polyline(&corners).map_err(at(path))
+    nurbs(primitives::polyline(&corners)).map_err(at(path))
 }
 
 impl From<Vec3> for DVec3 {
@@ -450,39 +456,6 @@ impl From<Point2> for DVec3 {
     fn from(p: Point2) -> DVec3 {
         p.0
     }
-}
-
-/// The full circle as a degree-2 NURBS of four quarters (weights 1, 1/√2, 1).
-fn circle(center: DVec3, radius: f64) -> rmfsurf::Result<NurbsCurve> {
-    let corners = [
-        (1.0, 0.0),
-        (1.0, 1.0),
-        (0.0, 1.0),
-        (-1.0, 1.0),
-        (-1.0, 0.0),
-        (-1.0, -1.0),
-        (0.0, -1.0),
-        (1.0, -1.0),
-        (1.0, 0.0),
-    ];
-    let poles = corners
-        .iter()
-        .map(|&(x, y)| center + radius * DVec3::new(x, y, 0.0))
-        .collect();
-    let weights = (0..9)
-        .map(|k| if k % 2 == 1 { FRAC_1_SQRT_2 } else { 1.0 })
-        .collect();
-    let knots = vec![0.0, 0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 3.0, 3.0, 4.0, 4.0, 4.0];
-    NurbsCurve::new(2, poles, Some(weights), knots)
-}
-
-/// Straight segments through `points`, one knot interval each.
-fn polyline(points: &[DVec3]) -> rmfsurf::Result<NurbsCurve> {
-    let n = points.len();
-    let mut knots = vec![0.0];
-    knots.extend((0..n).map(|k| k as f64));
-    knots.push((n - 1) as f64);
-    NurbsCurve::new(1, points.to_vec(), None, knots)
 }
 
 fn cone_job(cone: schema::Cone) -> InputResult<ConeJob> {
@@ -595,7 +568,13 @@ fn closed_curve(curve: schema::ClosedCurve, path: &str) -> InputResult<NurbsCurv
             let path = format!("{path}.circle");
             let normal = plane_normal(c.normal.0, &path)?;
             let x = orthonormal_to(normal);
-            space_circle(c.center.0, x, normal.cross(x), c.radius.0).map_err(at(&path))
+            nurbs(primitives::circle(
+                c.center.0,
+                x,
+                normal.cross(x),
+                c.radius.0,
+            ))
+            .map_err(at(&path))
         }
         (None, None, Some(o), None) => {
             let path = format!("{path}.obround");
@@ -609,7 +588,14 @@ fn closed_curve(curve: schema::ClosedCurve, path: &str) -> InputResult<NurbsCurv
                 ));
             }
             let x = x.normalize();
-            obround(o.center.0, x, normal.cross(x), o.length.0, o.radius.0).map_err(at(&path))
+            nurbs(primitives::obround(
+                o.center.0,
+                x,
+                normal.cross(x),
+                o.length.0,
+                o.radius.0,
+            ))
+            .map_err(at(&path))
         }
         (None, None, None, Some(nurbs)) => nurbs_curve(nurbs, &format!("{path}.nurbs")),
         (a, b, c, d) => Err(choice(
@@ -637,88 +623,4 @@ fn orthonormal_to(n: DVec3) -> DVec3 {
         DVec3::Z
     };
     n.cross(axis).normalize()
-}
-
-/// The circle about `center` in the plane spanned by the orthonormal `x`, `y`: four
-/// rational quadratic quarters.
-fn space_circle(center: DVec3, x: DVec3, y: DVec3, radius: f64) -> rmfsurf::Result<NurbsCurve> {
-    let corners = [
-        (1.0, 0.0),
-        (1.0, 1.0),
-        (0.0, 1.0),
-        (-1.0, 1.0),
-        (-1.0, 0.0),
-        (-1.0, -1.0),
-        (0.0, -1.0),
-        (1.0, -1.0),
-        (1.0, 0.0),
-    ];
-    let poles = corners
-        .iter()
-        .map(|&(a, b)| center + radius * (a * x + b * y))
-        .collect();
-    let weights = (0..9)
-        .map(|k| if k % 2 == 1 { FRAC_1_SQRT_2 } else { 1.0 })
-        .collect();
-    let knots = vec![0.0, 0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 3.0, 3.0, 4.0, 4.0, 4.0];
-    NurbsCurve::new(2, poles, Some(weights), knots)
-}
-
-/// Two half circles of `radius` about centres `length` apart along `x`, joined by lines:
-/// degree 2, the lines elevated.
-fn obround(
-    center: DVec3,
-    x: DVec3,
-    y: DVec3,
-    length: f64,
-    radius: f64,
-) -> rmfsurf::Result<NurbsCurve> {
-    let a = 0.5 * length;
-    let p = |u: f64, v: f64| center + u * x + v * y;
-    let s = FRAC_1_SQRT_2;
-    // (pole, weight) of each Bézier segment of degree 2, end points shared.
-    let segments = [
-        [
-            (p(-a, -radius), 1.0),
-            (p(0.0, -radius), 1.0),
-            (p(a, -radius), 1.0),
-        ],
-        [
-            (p(a, -radius), 1.0),
-            (p(a + radius, -radius), s),
-            (p(a + radius, 0.0), 1.0),
-        ],
-        [
-            (p(a + radius, 0.0), 1.0),
-            (p(a + radius, radius), s),
-            (p(a, radius), 1.0),
-        ],
-        [
-            (p(a, radius), 1.0),
-            (p(0.0, radius), 1.0),
-            (p(-a, radius), 1.0),
-        ],
-        [
-            (p(-a, radius), 1.0),
-            (p(-a - radius, radius), s),
-            (p(-a - radius, 0.0), 1.0),
-        ],
-        [
-            (p(-a - radius, 0.0), 1.0),
-            (p(-a - radius, -radius), s),
-            (p(-a, -radius), 1.0),
-        ],
-    ];
-    let mut poles = vec![segments[0][0].0];
-    let mut weights = vec![1.0];
-    let mut knots = vec![0.0, 0.0, 0.0];
-    for (k, seg) in segments.iter().enumerate() {
-        for &(q, w) in &seg[1..] {
-            poles.push(q);
-            weights.push(w);
-        }
-        knots.extend([(k + 1) as f64; 2]);
-    }
-    knots.push(segments.len() as f64);
-    NurbsCurve::new(2, poles, Some(weights), knots)
 }

@@ -253,6 +253,59 @@ def _with_callback(callback: Optional[_Callback], function: str, *arguments: Any
 
 
 # ---------------------------------------------------------------------------------------
+# Primitive curves: circles, arcs, polylines, polygons, obrounds (exact rational pieces)
+
+
+def circle(radius: float, centre: ArrayLike = (0.0, 0.0, 0.0),
+           x_axis: ArrayLike = (1.0, 0.0, 0.0), y_axis: ArrayLike = (0.0, 1.0, 0.0)) -> Curve:
+    """The full circle of `radius` about `centre` in the plane of `x_axis` and `y_axis`
+    (rmf_curve_circle): four rational quadratic quarter arcs on [0, 4], starting at
+    centre + radius x_axis / |x_axis|, counter-clockwise about x × y."""
+    out = _core.out_pointer("RmfCurve")
+    call("rmf_curve_circle", _core.vec3(centre, "centre"), _core.vec3(x_axis, "x_axis"),
+         _core.vec3(y_axis, "y_axis"), _core.number(radius, "radius"), out)
+    return Curve._owned(out)
+
+
+def arc(start: ArrayLike, through: ArrayLike, end: ArrayLike) -> Curve:
+    """The circular arc from `start` through `through` to `end` (rmf_curve_arc): rational
+    quadratic pieces of at most a quarter turn on [0, 1], its ends exactly `start`, `end`."""
+    out = _core.out_pointer("RmfCurve")
+    call("rmf_curve_arc", _core.vec3(start, "start"), _core.vec3(through, "through"),
+         _core.vec3(end, "end"), out)
+    return Curve._owned(out)
+
+
+def polyline(points: ArrayLike) -> Curve:
+    """Straight segments through `points` (rmf_curve_polyline), segment i on [i, i + 1]."""
+    p = _core.points(points, "points", min_count=2)
+    out = _core.out_pointer("RmfCurve")
+    call("rmf_curve_polyline", _core.vec3_array(p), p.shape[0], out)
+    return Curve._owned(out)
+
+
+def polygon(corners: ArrayLike) -> Curve:
+    """The closed polygon through `corners` (rmf_curve_polygon; the first is not repeated
+    at the end), segment i on [i, i + 1]."""
+    p = _core.points(corners, "corners", min_count=3)
+    out = _core.out_pointer("RmfCurve")
+    call("rmf_curve_polygon", _core.vec3_array(p), p.shape[0], out)
+    return Curve._owned(out)
+
+
+def obround(length: float, radius: float, centre: ArrayLike = (0.0, 0.0, 0.0),
+            x_axis: ArrayLike = (1.0, 0.0, 0.0), y_axis: ArrayLike = (0.0, 1.0, 0.0)) -> Curve:
+    """The obround (slot) of the points at `radius` from the segment of `length` centred on
+    `centre` along `x_axis` (rmf_curve_obround): from the bottom of the end at -x a line,
+    a half circle, a line, a half circle on [0, 6]; a length of 0 gives the circle."""
+    out = _core.out_pointer("RmfCurve")
+    call("rmf_curve_obround", _core.vec3(centre, "centre"), _core.vec3(x_axis, "x_axis"),
+         _core.vec3(y_axis, "y_axis"), _core.number(length, "length"),
+         _core.number(radius, "radius"), out)
+    return Curve._owned(out)
+
+
+# ---------------------------------------------------------------------------------------
 # PH cubics (Mäurer & Jüttler)
 
 

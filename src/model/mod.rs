@@ -7,8 +7,11 @@
 //! | `topology` | [`Brep`]: vertices, edges shared by faces, loops with pcurves, faces with sense |
 
 mod framed;
+mod primitives;
 mod topology;
 
 pub(crate) use framed::on_frame_segments;
 pub use framed::FramedCurve;
+pub(crate) use primitives::Arc;
+pub use primitives::{arc_through, circle, obround, polygon, polyline};
 pub use topology::{Brep, BrepBound, BrepEdge, BrepFace, BrepSurface, BrepUse, PCurve};

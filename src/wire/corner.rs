@@ -27,8 +27,9 @@
 //! extent towards the corner's centre; miter legs longer than the profile's cut) is decided
 //! with the frame, in `frame`.
 
-use super::edge::{turn_about, Arc, Chain, Geometry, Joint, JointKind, Piece};
+use super::edge::{turn_about, Chain, Geometry, Joint, JointKind, Piece};
 use crate::error::{invalid, Error, Result};
+use crate::model::Arc;
 use glam::DVec3;
 
 /// Newton steps for a round corner on curves.

@@ -19,8 +19,9 @@
 use crate::bezier::{CurveJet, PiecewiseCurve, RationalBezierCurve};
 use crate::error::{invalid, Result};
 use crate::math::{angle_between, robust_normalize, signed_angle};
+use crate::model::Arc;
 use glam::{DVec3, DVec4};
-use std::f64::consts::{FRAC_PI_2, PI, TAU};
+use std::f64::consts::{PI, TAU};
 
 /// Largest angle between the tangents at a joint that still counts as smooth (G1),
 /// radians. Sections on either side then differ by this angle times the profile's size.
@@ -33,172 +34,6 @@ pub(crate) const REVERSAL_ANGLE: f64 = 1e-6;
 /// or a circular arc: the rounding of data converted from a CAD system, far below any
 /// modelling tolerance.
 const EXACT: f64 = 1e-10;
-
-/// A circular arc: from `start`, counter-clockwise about `normal` by `angle` ∈ (0, 2π),
-/// to `end`, on the circle of `radius` about `center` (`e1` points to the start, `e2 =
-/// normal × e1`).
-#[derive(Clone, Debug, PartialEq)]
-pub(crate) struct Arc {
-    pub center: DVec3,
-    pub radius: f64,
-    pub normal: DVec3,
-    pub e1: DVec3,
-    pub e2: DVec3,
-    pub angle: f64,
-    pub start: DVec3,
-    pub end: DVec3,
-}
-
-impl Arc {
-    /// The arc from `a` through `b` to `c`.
-    pub fn through(a: DVec3, b: DVec3, c: DVec3) -> Result<Self> {
-        let (u, v) = (b - a, c - a);
-        let n = u.cross(v);
-        let scale = u.length() * v.length();
-        if n.length().is_nan() || n.length() <= 1e-12 * scale || (c - b).length() == 0.0 {
-            return invalid!(
-                "an arc whose three points ({a}, {b}, {c}) are collinear or coincide: they define \
-                 no circle"
-            );
-        }
-        let center = a
-            + (u.length_squared() * v - v.length_squared() * u).cross(n)
-                / (2.0 * n.length_squared());
-        let normal = n.normalize();
-        let radius = (a - center).length();
-        let e1 = (a - center) / radius;
-        let e2 = normal.cross(e1);
-        let to_c = c - center;
-        let angle = to_c.dot(e2).atan2(to_c.dot(e1)).rem_euclid(TAU);
-        if !(angle > 0.0 && radius.is_finite()) {
-            return invalid!("an arc whose start and end coincide: give a full circle as two arcs");
-        }
-        Ok(Self {
-            center,
-            radius,
-            normal,
-            e1,
-            e2,
-            angle,
-            start: a,
-            end: c,
-        })
-    }
-
-    /// The arc about `center` from `start` to `end` (both at `radius`), counter-clockwise
-    /// about `normal` by `angle`.
-    pub fn about(
-        center: DVec3,
-        radius: f64,
-        normal: DVec3,
-        start: DVec3,
-        end: DVec3,
-        angle: f64,
-    ) -> Self {
-        let e1 = (start - center).normalize();
-        Self {
-            center,
-            radius,
-            normal,
-            e1,
-            e2: normal.cross(e1),
-            angle,
-            start,
-            end,
-        }
-    }
-
-    /// The point at the angle φ from the start (the ends exactly).
-    pub fn point(&self, phi: f64) -> DVec3 {
-        if phi == 0.0 {
-            return self.start;
-        }
-        if phi == self.angle {
-            return self.end;
-        }
-        self.center + self.radius * (phi.cos() * self.e1 + phi.sin() * self.e2)
-    }
-
-    /// The unit tangent at φ.
-    pub fn tangent(&self, phi: f64) -> DVec3 {
-        -phi.sin() * self.e1 + phi.cos() * self.e2
-    }
-
-    /// The principal normal at φ (towards the centre).
-    pub fn principal_normal(&self, phi: f64) -> DVec3 {
-        -(phi.cos() * self.e1 + phi.sin() * self.e2)
-    }
-
-    pub fn length(&self) -> f64 {
-        self.radius * self.angle
-    }
-
-    /// Point and derivatives with respect to φ.
-    pub fn jet(&self, phi: f64) -> CurveJet {
-        let radial = phi.cos() * self.e1 + phi.sin() * self.e2;
-        CurveJet {
-            point: self.point(phi),
-            d1: self.radius * self.tangent(phi),
-            d2: -self.radius * radial,
-        }
-    }
-
-    /// Rational quadratic segments of at most a quarter turn each (weights ≥ cos 45°).
-    pub fn segment_count(&self) -> usize {
-        ((self.angle / FRAC_PI_2 - 1e-9).ceil() as usize).max(1)
-    }
-
-    /// The arc as rational quadratic Bézier segments on the breakpoints k/n, ends exact.
-    pub fn curve(&self) -> PiecewiseCurve {
-        let n = self.segment_count();
-        let half = 0.5 * self.angle / n as f64;
-        let weight = half.cos();
-        let segments = (0..n)
-            .map(|k| {
-                let (a, b) = (2.0 * half * k as f64, 2.0 * half * (k + 1) as f64);
-                let (p0, p2) = (
-                    self.point(if k == 0 { 0.0 } else { a }),
-                    self.point(if k + 1 == n { self.angle } else { b }),
-                );
-                let m = a + half;
-                let p1 =
-                    self.center + (self.radius / weight) * (m.cos() * self.e1 + m.sin() * self.e2);
-                RationalBezierCurve::from_homogeneous(vec![
-                    p0.extend(1.0),
-                    (p1 * weight).extend(weight),
-                    p2.extend(1.0),
-                ])
-                .expect("finite arc data")
-            })
-            .collect();
-        let breaks = (0..=n).map(|k| k as f64 / n as f64).collect();
-        PiecewiseCurve::new(segments, breaks).expect("increasing breaks")
-    }
-
-    /// The part from φ₀ to φ₁, with the given end points (which lie on the circle).
-    pub fn trimmed(&self, phi0: f64, phi1: f64, start: DVec3, end: DVec3) -> Self {
-        let mut arc = Self::about(
-            self.center,
-            self.radius,
-            self.normal,
-            start,
-            end,
-            phi1 - phi0,
-        );
-        if phi0 == 0.0 {
-            arc.e1 = self.e1;
-            arc.e2 = self.e2;
-        }
-        arc
-    }
-
-    /// Whether two arcs lie on one circle, turning the same way.
-    fn same_circle(&self, other: &Arc, tolerance: f64) -> bool {
-        self.center.distance(other.center) <= tolerance
-            && (self.radius - other.radius).abs() <= tolerance
-            && self.normal.dot(other.normal) > 1.0 - 1e-12
-    }
-}
 
 /// What a piece of the spine is.
 #[derive(Clone, Debug, PartialEq)]
@@ -907,6 +742,7 @@ pub(crate) fn turn_about(a: DVec3, b: DVec3, axis: DVec3) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use std::f64::consts::FRAC_PI_2;
 
     const UNIT: Units = Units {
         scale: 1.0,

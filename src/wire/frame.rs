@@ -27,7 +27,7 @@
 //! pieces the margin of [`crate::ph_cubic::analysis`] — and each miter leg must be longer
 //! than the profile's cuts at its ends.
 
-use super::edge::{Arc, Chain, Geometry, Joint, JointKind, Piece, Units};
+use super::edge::{Chain, Geometry, Joint, JointKind, Piece, Units};
 use super::profile::{Profile, SupportTable};
 use crate::bezier::{PiecewiseCurve, RationalBezierCurve};
 use crate::error::{invalid, Result, ResultExt};
@@ -35,6 +35,7 @@ use crate::frames::metrics::angle_about_tangent;
 use crate::frames::rational::RationalFrames;
 use crate::frames::Frame;
 use crate::math::{normal_plane_unit, orthogonalized, orthonormal_to, signed_angle};
+use crate::model::Arc;
 use crate::ph_cubic::accuracy::angle_errors;
 use crate::ph_cubic::analysis::ProfileSurface;
 use crate::ph_cubic::approximate::ph_spline_approximate;
