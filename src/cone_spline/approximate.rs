@@ -17,14 +17,15 @@
 //! near the surface's size (tolerance and distances with them), so that it gives the same
 //! pieces, mapped, for the surface scaled from 1e-200 to 1e200 or moved far away.
 
-use super::developable::{Developable, Ruling};
+use super::developable::{Developable, Ruling, END_FRACTION};
 use super::element::Element;
 use super::pair::{cone_pair_in_band, ConePair, Frame, Rule};
 use super::piece::ConePiece;
 use super::region::SweptBand;
 use super::spline::ConeSpline;
-use crate::error::{invalid, Error, Result};
+use crate::error::{Error, Result};
 use crate::math::interior_midpoint;
+use glam::DVec3;
 
 /// Rulings sampled per interval (plus one) and points per ruling for the deviation.
 const RULING_SAMPLES: usize = 12;
@@ -86,6 +87,35 @@ fn deviation_of(rulings: &[Ruling], pieces: &[ConePiece]) -> f64 {
     worst
 }
 
+/// Why [`fit`] stopped short of the tolerance (lengths in the surface's units,
+/// parameters the surface's).
+#[derive(Debug)]
+pub(crate) enum FitError {
+    /// More than the allowed pieces would be needed: the deviation on [a, b] when the
+    /// halving stopped.
+    Pieces { deviation: f64, a: f64, b: f64 },
+    /// The interval [a, b] is too narrow to halve (1e-9 of the domain), its deviation
+    /// still above the tolerance.
+    Narrow { deviation: f64, a: f64, b: f64 },
+    /// No admissible cone pair joins the rulings at a and b, which could not be halved.
+    NoPair {
+        a: f64,
+        b: f64,
+        pieces_exhausted: bool,
+        reason: String,
+    },
+    /// The tolerance is below the rounding of the surface's coordinates (up to `largest`).
+    Resolution { largest: f64 },
+    /// Any other error (of the surface, of its rulings).
+    Other(Error),
+}
+
+impl From<Error> for FitError {
+    fn from(e: Error) -> Self {
+        FitError::Other(e)
+    }
+}
+
 /// Fits a cone spline to `surface` within `tolerance` (max distance over the region),
 /// with at most `max_pieces` pieces, the pairs chosen by `rule`.
 pub fn approximate(
@@ -94,13 +124,75 @@ pub fn approximate(
     rule: Rule,
     max_pieces: usize,
 ) -> Result<Approximation> {
+    fit(surface, tolerance, rule, max_pieces).map_err(|e| match e {
+        FitError::Pieces { deviation, a, b } => Error::not_converged(format!(
+            "tolerance = {tolerance:.3e} not reached with at most max_pieces = {max_pieces} \
+             pieces (deviation {deviation:.3e} on [{a}, {b}])"
+        )),
+        FitError::Narrow { deviation, a, b } => Error::not_converged(format!(
+            "tolerance = {tolerance:.3e} not reached: the deviation is {deviation:.3e} on \
+             [{a}, {b}], 1e-9 of the domain, which is not halved further"
+        )),
+        FitError::NoPair {
+            a,
+            b,
+            pieces_exhausted,
+            reason,
+        } => Error::not_converged(format!(
+            "no cone pair joins the rulings at t = {a} and t = {b} with its vertices \
+             outside the region of interest{}: {reason}",
+            if pieces_exhausted {
+                format!(" (within at most max_pieces = {max_pieces} pieces)")
+            } else {
+                String::new()
+            }
+        )),
+        FitError::Resolution { largest } => Error::invalid_input(format!(
+            "tolerance = {tolerance:.3e} is below what f64 resolves at the surface's \
+             coordinates (up to {largest:.3e}: one rounding is {:.3e})",
+            f64::EPSILON * largest
+        )),
+        FitError::Other(e) => e,
+    })
+}
+
+/// [`approximate`] with the reasons it stops apart, for callers that say them in their own
+/// terms (a sheet-metal part in the part's units). The tolerance must be above the
+/// rounding of the surface's coordinates.
+pub(crate) fn fit(
+    surface: &dyn Developable,
+    tolerance: f64,
+    rule: Rule,
+    max_pieces: usize,
+) -> std::result::Result<Approximation, FitError> {
     if !(tolerance.is_finite() && tolerance > 0.0) {
-        return invalid!("tolerance = {tolerance} must be finite and positive");
+        return Err(Error::invalid_input(format!(
+            "tolerance = {tolerance} must be finite and positive"
+        ))
+        .into());
     }
     let (lo, hi) = surface.domain();
     let local = Local::of(surface)?;
+    if tolerance < f64::EPSILON * local.largest {
+        return Err(FitError::Resolution {
+            largest: local.largest,
+        });
+    }
     let scale = local.frame.scale();
-    let fit = approximate_local(&local, tolerance / scale, rule, max_pieces)?;
+    let fit =
+        approximate_local(&local, tolerance / scale, rule, max_pieces).map_err(|e| match e {
+            FitError::Pieces { deviation, a, b } => FitError::Pieces {
+                deviation: deviation * scale,
+                a,
+                b,
+            },
+            FitError::Narrow { deviation, a, b } => FitError::Narrow {
+                deviation: deviation * scale,
+                a,
+                b,
+            },
+            other => other,
+        })?;
     let spline = ConeSpline::new(
         fit.spline
             .pieces()
@@ -124,6 +216,8 @@ pub fn approximate(
 struct Local<'a> {
     surface: &'a dyn Developable,
     frame: Frame,
+    /// The largest coordinate of the region at those rulings (the caller's coordinates).
+    largest: f64,
 }
 
 impl<'a> Local<'a> {
@@ -140,9 +234,17 @@ impl<'a> Local<'a> {
                     .max(r.range.0.abs())
             })
             .fold(0.0, f64::max);
+        let largest = rulings
+            .iter()
+            .flatten()
+            .flat_map(|r| {
+                [r.range.0, r.range.1].map(|v| (r.point + v * r.direction).abs().max_element())
+            })
+            .fold(0.0, f64::max);
         Ok(Self {
             surface,
             frame: Frame::around(first, size),
+            largest,
         })
     }
 }
@@ -164,6 +266,10 @@ impl Developable for Local<'_> {
     fn inflection_generators(&self) -> Result<Vec<f64>> {
         self.surface.inflection_generators()
     }
+
+    fn parallel_generators(&self) -> Result<Vec<f64>> {
+        self.surface.parallel_generators()
+    }
 }
 
 /// [`approximate`] of a surface in local coordinates.
@@ -172,11 +278,15 @@ fn approximate_local(
     tolerance: f64,
     rule: Rule,
     max_pieces: usize,
-) -> Result<Approximation> {
+) -> std::result::Result<Approximation, FitError> {
     let (lo, hi) = surface.domain();
     let inflections = surface.inflection_generators()?;
+    let mut interior: Vec<f64> = inflections.clone();
+    interior.extend(surface.parallel_generators()?);
+    interior.sort_by(f64::total_cmp);
+    interior.dedup_by(|x, y| (*x - *y).abs() <= END_FRACTION * (hi - lo));
     let mut junctions = vec![lo];
-    junctions.extend(&inflections);
+    junctions.extend(&interior);
     junctions.push(hi);
     let mut accepted: Vec<Accepted> = Vec::new();
     for w in junctions.windows(2) {
@@ -233,9 +343,48 @@ fn interval_pair(
         &band,
         ("the ruling at t_a", "the ruling at t_b"),
     )?;
+    let turn: f64 = pair.pieces.iter().map(ConePiece::segment_angle).sum();
+    let surface_turn = frame_turn(band.rulings());
+    if turn > 2.0 * surface_turn + WINDING_SLACK {
+        return Err(Error::no_solution(format!(
+            "the only admissible cone pairs turn by {turn:.3} rad where the surface turns by {surface_turn:.3} rad"
+        )));
+    }
     let error = deviation_of(band.rulings(), &pair.pieces);
     let clearance = band.clearance(&pair.pieces);
     Ok((pair, error, clearance))
+}
+
+/// How far (radians) the rotation of a pair's pieces may exceed twice the surface's own.
+const WINDING_SLACK: f64 = 0.1;
+
+/// The length of the path of the rulings' frames (ruling, side, normal) in rotations: the
+/// sum of the rotation angles between consecutive rulings' frames. The pieces of a pair
+/// rotate their frames about fixed axes by their segment angles; a pair that follows the
+/// surface rotates by about as much, one that winds round its cones by far more, though
+/// every point of the surface may still lie near it (the deviation measures the distance
+/// from the surface to the pieces, not back).
+fn frame_turn(rulings: &[Ruling]) -> f64 {
+    let mut total = 0.0;
+    let mut previous: Option<(DVec3, DVec3)> = None;
+    for r in rulings {
+        let mut n = r.normal.normalize();
+        if let Some((_, m)) = previous {
+            if n.dot(m) < 0.0 {
+                n = -n;
+            }
+        }
+        if let Some((e0, n0)) = previous {
+            let (p0, p1) = (n0.cross(e0), n.cross(r.direction));
+            // |F₁ − F₀|² = 8 sin²(θ/2) for the rotation by θ between two frames.
+            let s = (r.direction - e0).length_squared()
+                + (p1 - p0).length_squared()
+                + (n - n0).length_squared();
+            total += 2.0 * (s / 8.0).sqrt().min(1.0).asin();
+        }
+        previous = Some((r.direction, n));
+    }
+    total
 }
 
 /// Accepts [a, b] with its pair if it is within the tolerance, else halves it (depth
@@ -249,7 +398,7 @@ fn fit_interval(
     rule: Rule,
     max_pieces: usize,
     out: &mut Vec<Accepted>,
-) -> Result<()> {
+) -> std::result::Result<(), FitError> {
     let attempt = interval_pair(surface, a, b, rule);
     if let Ok((pair, error, clearance)) = &attempt {
         if *error <= tolerance {
@@ -264,19 +413,19 @@ fn fit_interval(
     }
     let pieces_so_far: usize = out.iter().map(|x| x.pair.pieces.len()).sum();
     let (lo, hi) = surface.domain();
-    let too_fine = pieces_so_far + 4 > max_pieces || b - a < 1e-9 * (hi - lo);
+    let exhausted = pieces_so_far + 4 > max_pieces;
+    let too_fine = exhausted || b - a < 1e-9 * (hi - lo);
     let Some(m) = interior_midpoint(a, b).filter(|_| !too_fine) else {
-        return Err(Error::not_converged(match attempt {
-            Ok((_, error, _)) => format!(
-                "tolerance {tolerance:.3e} not reached with at most {max_pieces} pieces \
-                 (deviation {error:.3e} on [{a}, {b}])"
-            ),
-            Err(e) => format!(
-                "no cone pair joins the rulings at t = {a} and t = {b} with its vertices \
-                 outside the region of interest (within at most {max_pieces} pieces): {}",
-                e.message()
-            ),
-        }));
+        return Err(match attempt {
+            Ok((_, deviation, _)) if exhausted => FitError::Pieces { deviation, a, b },
+            Ok((_, deviation, _)) => FitError::Narrow { deviation, a, b },
+            Err(e) => FitError::NoPair {
+                a,
+                b,
+                pieces_exhausted: exhausted,
+                reason: e.message(),
+            },
+        });
     };
     fit_interval(surface, a, m, tolerance, rule, max_pieces, out)?;
     fit_interval(surface, m, b, tolerance, rule, max_pieces, out)
@@ -710,6 +859,53 @@ mod tests {
                 "{name}: {rows:?}"
             );
             assert!(last.1 < 1e-2, "{name}: {last:?}");
+        }
+    }
+
+    /// A tolerance below the rounding of the surface's coordinates (1e-300 on a helix of
+    /// radius 25) is refused naming `tolerance` in the caller's units and the size of the
+    /// caller's coordinates, never a tolerance rescaled to the fit's own frame (about
+    /// 1e-302) nor a failure of the cone construction at that tolerance.
+    #[test]
+    fn tolerances_below_rounding_are_refused_in_the_callers_units() {
+        let helix = Helix {
+            radius: 25.0,
+            pitch: 0.5,
+            domain: (0.0, 1.0),
+        };
+        let surface = tangent_surface(&helix, 0.1, 1.0);
+        let e = approximate(&surface, 1e-300, Rule::MinimalVertexDistance, 100).unwrap_err();
+        let message = e.message();
+        assert!(e.is(crate::ErrorKind::InvalidInput), "{e}");
+        assert!(message.starts_with("tolerance = 1.000e-300 "), "{message}");
+        let largest: f64 = message
+            .split("up to ")
+            .nth(1)
+            .and_then(|rest| rest.split(':').next())
+            .and_then(|x| x.parse().ok())
+            .unwrap_or_else(|| panic!("{message}"));
+        assert!((25.0..=30.0).contains(&largest), "{message}");
+        assert!(!message.contains("two different rulings"), "{message}");
+    }
+
+    /// Running out of pieces quotes `max_pieces` as given (3, not the 2 pieces of one pair).
+    #[test]
+    fn piece_limits_are_quoted_as_given() {
+        let helix = Helix {
+            radius: 25.0,
+            pitch: 0.5,
+            domain: (0.0, 6.0),
+        };
+        let surface = tangent_surface(&helix, 0.1, 1.0);
+        for max_pieces in [3, 4, 7] {
+            let e =
+                approximate(&surface, 1e-9, Rule::MinimalVertexDistance, max_pieces).unwrap_err();
+            let message = e.message();
+            assert!(
+                message.contains(&format!("max_pieces = {max_pieces} ")),
+                "{message}"
+            );
+            assert!(message.contains("1.000e-9"), "{message}");
         }
     }
 }

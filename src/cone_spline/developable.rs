@@ -107,6 +107,17 @@ pub trait Developable {
     fn inflection_generators(&self) -> Result<Vec<f64>> {
         turning_zeros(self)
     }
+
+    /// The parameters inside the domain where the rulings stop turning in their tangent
+    /// plane and turn back (ė · p changes sign): the osculating cone is a cylinder there,
+    /// and its vertex passes through infinity from one end of the rulings to the other —
+    /// a transition between curves whose curvature radii cross. No cone pair with both
+    /// vertices off the rulings follows the surface across such a generator (each vertex
+    /// lies beyond the other end), so the approximation makes them junctions, as the
+    /// inflection generators. The default samples ė · p.
+    fn parallel_generators(&self) -> Result<Vec<f64>> {
+        ruling_turning_zeros(self)
+    }
 }
 
 /// Samples of a turning function for inflection generators (plus the searches between
@@ -126,6 +137,7 @@ const TOUCH_FRACTION: f64 = 1e-6;
 fn interior_sampled_roots(
     f: &dyn Fn(f64) -> Result<f64>,
     (lo, hi): (f64, f64),
+    touch_fraction: f64,
 ) -> Result<Vec<f64>> {
     let ts = uniform_parameters((lo, hi), INFLECTION_SAMPLES);
     let largest = ts
@@ -135,7 +147,7 @@ fn interior_sampled_roots(
         .into_iter()
         .fold(0.0, f64::max);
     let tol = 1e-14 * (hi - lo);
-    let mut roots = sampled_roots(f, &ts, TOUCH_FRACTION * largest, tol)?;
+    let mut roots = sampled_roots(f, &ts, touch_fraction * largest, tol)?;
     // A double root whose minimum dips below zero by the noise is bracketed twice.
     roots.dedup_by(|x, y| {
         let close = (*x - *y).abs() <= END_FRACTION * (hi - lo);
@@ -165,7 +177,21 @@ fn turning_zeros<S: Developable + ?Sized>(surface: &S) -> Result<Vec<f64>> {
         let (a, b) = ((t - h).max(lo), (t + h).min(hi));
         Ok((surface.element(b)?.normal() - surface.element(a)?.normal()).dot(el.side))
     };
-    interior_sampled_roots(&turning, (lo, hi))
+    interior_sampled_roots(&turning, (lo, hi), TOUCH_FRACTION)
+}
+
+/// Zeros of ė · p (the ruling's turning towards the side vector) inside the domain.
+fn ruling_turning_zeros<S: Developable + ?Sized>(surface: &S) -> Result<Vec<f64>> {
+    let (lo, hi) = surface.domain();
+    let h = 1e-5 * (hi - lo);
+    let turning = |t: f64| -> Result<f64> {
+        let el = surface.element(t)?;
+        let (a, b) = ((t - h).max(lo), (t + h).min(hi));
+        Ok((surface.ruling(b)?.direction - surface.ruling(a)?.direction).dot(el.side))
+    };
+    // Sign changes only: where the turning touches zero and keeps its sign, the
+    // vertex goes out to infinity and comes back on the same side.
+    interior_sampled_roots(&turning, (lo, hi), -1.0)
 }
 
 /// Every algorithm steps through a developable in fractions of its domain's length, which
@@ -236,6 +262,12 @@ impl Developable for TangentSurface<'_> {
         Some(self.curve.jet(t))
     }
 
+    /// None: the rulings are the curve's tangents, which turn towards the side vector at
+    /// the rate κ|x′| ≥ 0 — never back.
+    fn parallel_generators(&self) -> Result<Vec<f64>> {
+        Ok(Vec::new())
+    }
+
     fn inflection_generators(&self) -> Result<Vec<f64>> {
         let domain = self.curve.domain();
         let roots = match self.curve.as_piecewise() {
@@ -248,7 +280,7 @@ impl Developable for TangentSurface<'_> {
                     let s = crate::math::robust_length(d1);
                     Ok((d1 / s).dot((d2 / s).cross(d3 / s)))
                 };
-                return interior_sampled_roots(&torsion, domain);
+                return interior_sampled_roots(&torsion, domain, TOUCH_FRACTION);
             }
         };
         Ok(interior(domain, roots))

@@ -349,8 +349,8 @@ fn local_pair(a: &Element, b: &Element, rule: Rule, region: Option<&Omega>) -> R
             let piece = ConePiece::cone(v, *a, e2)?;
             if has_vertex_in(std::slice::from_ref(&piece), region) {
                 return no_solution!(
-                    "the rulings meet at {} in the region of interest, in one tangent plane",
-                    region.map_or(v, |r| r.frame.point_out(v))
+                    "the rulings meet{} in the region of interest, in one tangent plane",
+                    at_point(v, region)
                 );
             }
             single_plane(Ok(piece), b, scale)
@@ -364,6 +364,19 @@ fn local_pair(a: &Element, b: &Element, rule: Rule, region: Option<&Omega>) -> R
         constant_slope_case(a, b, rule, region, scale)
     } else {
         general_case(a, b, rule, region, scale)
+    }
+}
+
+/// " at v", the local point `v` in the caller's coordinates, where the caller gave them (a
+/// box); nothing for a band, whose coordinates are those of an approximation's own frame
+/// (its messages name the rulings by their parameters instead).
+fn at_point(v: DVec3, region: Option<&Omega>) -> String {
+    match region {
+        None => String::new(),
+        Some(r) => match r.keep_out {
+            LocalKeepOut::Box(_) => format!(" at {}", r.frame.point_out(v)),
+            LocalKeepOut::Band(_) => String::new(),
+        },
     }
 }
 
@@ -761,8 +774,12 @@ fn biarc_lambdas(a1: DVec3, p1: DVec3, a2: DVec3, p2: DVec3, rule: Rule) -> Resu
         _ => equal_lambda(a1, p1, a2, p2)
             .ok_or_else(|| Error::no_solution("no biarc with equal positive legs"))?,
     };
-    let lambda2 = partner_lambda(a1, p1, a2, p2, lambda1)
-        .ok_or_else(|| Error::no_solution(format!("lambda1 = {lambda1} gives no second arc")))?;
+    let lambda2 = partner_lambda(a1, p1, a2, p2, lambda1).ok_or_else(|| {
+        Error::no_solution(match rule {
+            Rule::Given(_) => "the given lambda1 gives no second arc".to_string(),
+            _ => "the equal-legged biarc has no second arc".to_string(),
+        })
+    })?;
     if (lambda1 + lambda2).abs() <= 1e-14 * (lambda1.abs() + lambda2.abs()) {
         return Err(Error::no_solution(
             "the biarc degenerates (lambda1 + lambda2 = 0)",
@@ -801,8 +818,8 @@ fn cone_case(
     let second = ConePiece::cone(v, first.end(), b.ruling)?;
     if has_vertex_in(&[first, second], region) {
         return no_solution!(
-            "the region of interest contains every possible vertex: the rulings meet at {}",
-            region.map_or(v, |r| r.frame.point_out(v))
+            "the region of interest contains every possible vertex: the rulings meet{}",
+            at_point(v, region)
         );
     }
     joins(&second.end(), b, scale)?;

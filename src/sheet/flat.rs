@@ -114,12 +114,14 @@ pub(crate) fn edge_distance(edge: &PatternEdge, p: DVec2) -> f64 {
     }
 }
 
-/// G1 biarcs through the developed curve on [v0, v1] within `tolerance`, appended to `out`.
+/// G1 biarcs through the developed curve on [v0, v1] within `tolerance`, appended to `out`
+/// (`scale` turns lengths into the caller's units for the message).
 fn biarcs(
     curve: &Developed,
     v0: f64,
     v1: f64,
     tolerance: f64,
+    scale: f64,
     depth: usize,
     out: &mut Vec<PatternEdge>,
 ) -> Result<()> {
@@ -158,11 +160,12 @@ fn biarcs(
     let mid = 0.5 * (v0 + v1);
     if depth >= MAX_BIARC_DEPTH || mid <= v0 || mid >= v1 {
         return Err(Error::not_converged(format!(
-            "the flat boundary is not within {tolerance:.3e} of biarcs after {depth} halvings"
+            "the flat boundary is not within flat_tolerance = {:.3e} of biarcs after {depth} halvings",
+            tolerance * scale
         )));
     }
-    biarcs(curve, v0, mid, tolerance, depth + 1, out)?;
-    biarcs(curve, mid, v1, tolerance, depth + 1, out)
+    biarcs(curve, v0, mid, tolerance, scale, depth + 1, out)?;
+    biarcs(curve, mid, v1, tolerance, scale, depth + 1, out)
 }
 
 /// The edges of one developed boundary (trim `side` of piece `k`), in the direction of v.
@@ -172,6 +175,7 @@ fn boundary_edges(
     k: usize,
     side: usize,
     tolerance: f64,
+    scale: f64,
     out: &mut Vec<PatternEdge>,
 ) -> Result<()> {
     let formed = &part.pieces()[k];
@@ -213,7 +217,7 @@ fn boundary_edges(
         (TrimKind::Plane, _) if bend_sign(formed) == 0.0 => {
             out.push(PatternEdge::Line { from: a, to: b })
         }
-        _ => biarcs(&curve, 0.0, 1.0, tolerance, 0, out)?,
+        _ => biarcs(&curve, 0.0, 1.0, tolerance, scale, 0, out)?,
     }
     Ok(())
 }
@@ -272,15 +276,21 @@ impl FlatLayout {
     }
 }
 
-/// The developed boundaries of the layer at distance `s` along the normals (internal units).
-pub(crate) fn flat_layout(part: &TrimmedSpline, s: f64, tolerance: f64) -> Result<FlatLayout> {
+/// The developed boundaries of the layer at distance `s` along the normals (internal units;
+/// `scale` turns them into the caller's for messages).
+pub(crate) fn flat_layout(
+    part: &TrimmedSpline,
+    s: f64,
+    tolerance: f64,
+    scale: f64,
+) -> Result<FlatLayout> {
     let developed = part.spline.offset(s)?.developed()?;
     let pieces = developed.pieces();
     let n = pieces.len();
     let (mut first, mut second) = (Vec::new(), Vec::new());
     for k in 0..n {
-        boundary_edges(part, pieces, k, 0, tolerance, &mut first)?;
-        boundary_edges(part, pieces, k, 1, tolerance, &mut second)?;
+        boundary_edges(part, pieces, k, 0, tolerance, scale, &mut first)?;
+        boundary_edges(part, pieces, k, 1, tolerance, scale, &mut second)?;
     }
     // Developed ruling of piece k at v = 0 (k = n: the end of the last piece).
     let ruling = |k: usize| {

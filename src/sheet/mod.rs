@@ -27,3 +27,5 @@ pub use thickness::{Layer, Reference, Sheet};
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod transition_classes;

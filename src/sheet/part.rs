@@ -109,18 +109,26 @@ impl SheetPart {
         options: &SheetOptions,
     ) -> Result<Self> {
         options.check()?;
-        let frame = Similarity::fitting(
+        let poles = || {
             bottom
                 .segments()
                 .iter()
                 .chain(top.segments())
-                .flat_map(|s| s.poles()),
-        );
+                .flat_map(|s| s.poles())
+        };
+        check_resolution(options.tolerance, poles(), "curves")?;
+        let frame = Similarity::fitting(poles());
         let (b, t) = (
             internal_curve(bottom, &frame)?,
             internal_curve(top, &frame)?,
         );
-        let (part, fit) = transition(&b, &t, options.tolerance / frame.scale, options.max_pieces)?;
+        let (part, fit) = transition(
+            &b,
+            &t,
+            options.tolerance / frame.scale,
+            options.max_pieces,
+            &frame,
+        )?;
         Self::new(part, frame, options, fit)
     }
 
@@ -129,12 +137,14 @@ impl SheetPart {
     /// `src/sheet/rails.rs`.
     pub fn between_rails(surface: &PiecewiseSurface, options: &SheetOptions) -> Result<Self> {
         options.check()?;
-        let frame = Similarity::fitting(
+        let poles = || {
             surface
                 .patches()
                 .iter()
-                .flat_map(|p| p.homogeneous().iter().map(|h| h.truncate() / h.w)),
-        );
+                .flat_map(|p| p.homogeneous().iter().map(|h| h.truncate() / h.w))
+        };
+        check_resolution(options.tolerance, poles(), "surface's")?;
+        let frame = Similarity::fitting(poles());
         let patches = surface
             .patches()
             .iter()
@@ -155,8 +165,12 @@ impl SheetPart {
             surface.v_breaks().to_vec(),
         )?;
         let ruled = RuledSurface::new(internal)?;
-        let (part, fit) =
-            between_rails(&ruled, options.tolerance / frame.scale, options.max_pieces)?;
+        let (part, fit) = between_rails(
+            &ruled,
+            options.tolerance / frame.scale,
+            options.max_pieces,
+            frame.scale,
+        )?;
         Self::new(part, frame, options, fit)
     }
 
@@ -182,6 +196,7 @@ impl SheetPart {
             })
             .chain(curve.segments().iter().flat_map(|s| s.poles()))
             .collect();
+        check_resolution(options.tolerance, points.iter().copied(), "part's")?;
         let frame = Similarity::fitting(points);
         let internal = internal_curve(curve, &frame)?;
         let tangent = TangentSurface::new(&internal, v_min / frame.scale, v_max / frame.scale)?;
@@ -189,6 +204,7 @@ impl SheetPart {
             &tangent,
             options.tolerance / frame.scale,
             options.max_pieces,
+            frame.scale,
         )?;
         Self::new(part, frame, options, fit)
     }
@@ -428,6 +444,7 @@ impl SheetPart {
             &self.part,
             self.layers.offset(Layer::Neutral),
             self.flat_tolerance,
+            self.frame.scale,
         )
     }
 
@@ -491,6 +508,32 @@ fn flip_u(patch: RationalBezierPatch, flip: bool) -> RationalBezierPatch {
     let h = patch.homogeneous();
     RationalBezierPatch::from_homogeneous(1, patch.degree_v(), [&h[n..], &h[..n]].concat())
         .expect("the same points")
+}
+
+/// Refuses a tolerance below the rounding of the input's coordinates `points`, which no
+/// construction can reach (`whose` names them in the message: "curves", …).
+fn check_resolution(
+    tolerance: f64,
+    points: impl IntoIterator<Item = DVec3>,
+    whose: &str,
+) -> Result<()> {
+    let largest = points
+        .into_iter()
+        .map(|p| p.abs().max_element())
+        .fold(0.0, f64::max);
+    let rounding = f64::EPSILON * largest;
+    if tolerance < rounding {
+        let whose = if whose == "curves" {
+            "the curves'".to_string()
+        } else {
+            format!("the {whose}")
+        };
+        return invalid!(
+            "tolerance = {tolerance:.3e} is below what f64 resolves at {whose} coordinates \
+             (up to {largest:.3e}: one rounding is {rounding:.3e})"
+        );
+    }
+    Ok(())
 }
 
 /// A curve of the caller's in internal coordinates.

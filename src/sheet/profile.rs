@@ -92,6 +92,8 @@ pub(crate) struct ConvexProfile {
     pub features: Vec<Feature>,
     /// Bounding-box diagonal.
     pub size: f64,
+    /// Largest distance of a control point from the plane.
+    pub flatness: f64,
 }
 
 /// Outward normal angle of a counter-clockwise tangent `t` (the tangent turned by −90°).
@@ -152,15 +154,15 @@ impl ConvexProfile {
         }
         let normal = area.normalize();
         let origin = samples.iter().copied().sum::<DVec3>() / samples.len() as f64;
-        if let Some((k, d)) = poles
+        let (k, flatness) = poles
             .iter()
             .map(|p| (p - origin).dot(normal).abs())
             .enumerate()
             .max_by(|a, b| a.1.total_cmp(&b.1))
-            .filter(|&(_, d)| d > tol)
-        {
+            .unwrap_or((0, 0.0));
+        if flatness > tol {
             return invalid!(
-                "{name} is not planar: control point {k} is {d:.3e} from the plane of the curve"
+                "{name} is not planar: control point {k} is {flatness:.3e} from the plane of the curve"
             );
         }
         let x = (samples[0] - origin - (samples[0] - origin).dot(normal) * normal).normalize();
@@ -176,6 +178,7 @@ impl ConvexProfile {
             plane,
             features,
             size,
+            flatness,
         })
     }
 
@@ -210,6 +213,7 @@ impl ConvexProfile {
             plane,
             features,
             size: self.size,
+            flatness: self.flatness,
         }
     }
 

@@ -17,10 +17,10 @@
 //! each half gets its own cubic). A fit that puts a cone vertex on the part (the paper's Ω
 //! is the part here) is repeated at a quarter of the fit tolerance.
 
-use super::thickness::bend_sign;
+use super::thickness::{bend_sign, bends_both_ways};
 use super::transition::TransitionFit;
 use super::trim::{split_piece, Trim, TrimmedSpline};
-use crate::cone_spline::approximate::approximate;
+use crate::cone_spline::approximate::{fit, FitError};
 use crate::cone_spline::developable::Developable;
 use crate::cone_spline::{ConePiece, ConeSpline, Element, Rule};
 use crate::error::{Error, Result};
@@ -186,12 +186,16 @@ fn trim_error(
 /// Trims `piece` between both rails, halving it until both boundaries are within
 /// `tolerance`; appends the pieces and trims. `starts` are the rail values (ρ, t) at the
 /// piece's first ruling.
+// The recursion carries the piece, the searches' starts and window, the tolerance and the
+// scale of the messages: one argument more than clippy's default.
+#[allow(clippy::too_many_arguments)]
 fn trim_piece(
     rails: &[Rail; 2],
     piece: ConePiece,
     starts: [(f64, f64); 2],
     window: f64,
     tolerance: f64,
+    scale: f64,
     depth: usize,
     out: &mut Trimmed,
 ) -> Result<[(f64, f64); 2]> {
@@ -218,12 +222,33 @@ fn trim_piece(
     }
     if depth >= MAX_SPLITS {
         return Err(Error::not_converged(format!(
-            "the part's edges stay {error:.3e} from the rails after {MAX_SPLITS} halvings of a piece"
+            "the part's edges stay {:.3e} from the rails (at most {:.3e}) after {MAX_SPLITS} \
+             halvings of a piece",
+            error * scale,
+            tolerance * scale
         )));
     }
     let [first, second] = <[ConePiece; 2]>::try_from(split_piece(&piece, 2)).expect("two halves");
-    let middle = trim_piece(rails, first, starts, window, tolerance, depth + 1, out)?;
-    trim_piece(rails, second, middle, window, tolerance, depth + 1, out)
+    let middle = trim_piece(
+        rails,
+        first,
+        starts,
+        window,
+        tolerance,
+        scale,
+        depth + 1,
+        out,
+    )?;
+    trim_piece(
+        rails,
+        second,
+        middle,
+        window,
+        tolerance,
+        scale,
+        depth + 1,
+        out,
+    )
 }
 
 /// The trimmed pieces, with the rails' parameters at each piece's end rulings.
@@ -257,6 +282,7 @@ pub(crate) fn between_rails(
     surface: &dyn Developable,
     tolerance: f64,
     max_pieces: usize,
+    scale: f64,
 ) -> Result<(TrimmedSpline, TransitionFit)> {
     let rails = [0, 1].map(|side| Rail {
         surface,
@@ -267,12 +293,61 @@ pub(crate) fn between_rails(
     let mut fit_tolerance = 0.5 * tolerance;
     let mut last = String::new();
     for _ in 0..REFITS {
-        let fit = approximate(
+        let user = |x: f64| x * scale;
+        let fit = match fit(
             surface,
             fit_tolerance,
             Rule::MinimalVertexDistance,
             max_pieces,
-        )?;
+        ) {
+            Ok(fit) => fit,
+            Err(FitError::Pieces { .. })
+            | Err(FitError::NoPair {
+                pieces_exhausted: true,
+                ..
+            }) => {
+                return Err(Error::not_converged(format!(
+                    "the part needs more than max_pieces = {max_pieces} pieces at the fit \
+                     tolerance {:.3e}",
+                    user(fit_tolerance)
+                )))
+            }
+            Err(FitError::Narrow { deviation, a, b }) => {
+                return Err(Error::not_converged(format!(
+                    "the cone fit stays {:.3e} from the surface (fit tolerance {:.3e}) on \
+                     [{a}, {b}], which is not halved further",
+                    user(deviation),
+                    user(fit_tolerance)
+                )))
+            }
+            Err(FitError::NoPair { a, b, reason, .. }) => {
+                return Err(Error::not_converged(format!(
+                    "no cone pair joins the rulings at t = {a} and t = {b} with its vertices \
+                     off the part (fit tolerance {:.3e}): {reason}",
+                    user(fit_tolerance)
+                )))
+            }
+            Err(FitError::Resolution { largest }) => {
+                let message = format!(
+                    "tolerance = {:.3e}{} is below what f64 resolves at the surface's \
+                     coordinates (up to {:.3e}: one rounding is {:.3e})",
+                    user(tolerance),
+                    if fit_tolerance < 0.5 * tolerance {
+                        format!(" (the fit tolerance {:.3e})", user(fit_tolerance))
+                    } else {
+                        String::new()
+                    },
+                    user(largest),
+                    user(f64::EPSILON * largest)
+                );
+                return Err(if fit_tolerance < 0.5 * tolerance {
+                    Error::not_converged(message)
+                } else {
+                    Error::invalid_input(message)
+                });
+            }
+            Err(FitError::Other(e)) => return Err(e),
+        };
         let pieces = super::trim::split_long_pieces(fit.spline.pieces());
         // A rail point moves across a piece by about the domain over the pieces: the
         // searches look a few pieces' worth either way.
@@ -284,11 +359,22 @@ pub(crate) fn between_rails(
         }
         let mut out = Trimmed::default();
         for piece in &pieces {
-            starts = trim_piece(&rails, *piece, starts, window, 0.5 * tolerance, 0, &mut out)?;
+            starts = trim_piece(
+                &rails,
+                *piece,
+                starts,
+                window,
+                0.5 * tolerance,
+                scale,
+                0,
+                &mut out,
+            )?;
         }
         if out.pieces.len() > max_pieces {
             return Err(Error::not_converged(format!(
-                "the part needs more than max_pieces = {max_pieces} pieces"
+                "the part needs more than max_pieces = {max_pieces} pieces at the fit \
+                 tolerance {:.3e}",
+                user(fit_tolerance)
             )));
         }
         let Trimmed {
@@ -302,6 +388,16 @@ pub(crate) fn between_rails(
             .position(|(p, t)| vertex_on_part(p, t))
         {
             last = format!("the cone fit puts a vertex on the part (piece {k})");
+            fit_tolerance *= 0.25;
+            continue;
+        }
+        // Where the surface has no inflection generator, pieces bending both ways are a
+        // fit too coarse somewhere.
+        if let (true, Some((k, j))) = (fit.inflections.is_empty(), bends_both_ways(&pieces)) {
+            last = format!(
+                "the cone fit bends both ways (piece {k} one way, piece {j} the other) \
+                 though the surface does not inflect"
+            );
             fit_tolerance *= 0.25;
             continue;
         }
@@ -322,8 +418,9 @@ pub(crate) fn between_rails(
         ));
     }
     Err(Error::not_converged(format!(
-        "tolerance = {tolerance:.3e}: {last} at every fit tolerance down to {:.3e}",
-        4.0 * fit_tolerance
+        "tolerance = {:.3e}: {last} at every fit tolerance down to {:.3e}",
+        tolerance * scale,
+        4.0 * fit_tolerance * scale
     )))
 }
 

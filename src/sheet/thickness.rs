@@ -106,6 +106,14 @@ pub(crate) fn bend_sign(piece: &ConePiece) -> f64 {
     }
 }
 
+/// The pieces `k` and `j` of a part that bend to opposite sides, if any.
+pub(crate) fn bends_both_ways(pieces: &[ConePiece]) -> Option<(usize, usize)> {
+    let signs: Vec<f64> = pieces.iter().map(bend_sign).collect();
+    let k = signs.iter().position(|&s| s > 0.0)?;
+    let j = signs.iter().position(|&s| s < 0.0)?;
+    Some((k, j))
+}
+
 /// The smallest bend radius of a piece over the trimmed part (sampled along the piece):
 /// distance from the vertex × tan α on a cone, the radius on a cylinder (0 at a crease),
 /// infinite on a plane.

@@ -30,15 +30,16 @@
 //! ruling when there is none.
 
 use super::profile::{ConvexProfile, FeatureKind};
-use super::trim::{split_long_pieces, Trim, TrimmedSpline};
+use super::thickness::bends_both_ways;
+use super::trim::{split_long_pieces, Similarity, Trim, TrimmedSpline};
 use crate::bezier::PiecewiseCurve;
-use crate::cone_spline::approximate::approximate;
+use crate::cone_spline::approximate::{fit, FitError};
 use crate::cone_spline::developable::{Developable, Ruling};
 use crate::cone_spline::{ConePiece, ConeSpline, Element, Motion, Rule};
 use crate::error::{invalid, no_solution, Error, Result};
 use crate::math::signed_angle;
 use glam::DVec3;
-use std::f64::consts::{FRAC_PI_2, TAU};
+use std::f64::consts::TAU;
 
 /// Normal angles closer than this (radians) are one event of the walk.
 const MERGE_ANGLE: f64 = 1e-10;
@@ -51,90 +52,171 @@ const WALK_SAMPLES: usize = 720;
 /// How often the fit tolerance is halved to bring the edges within the tolerance.
 const REFITS: usize = 6;
 
+/// Normals of the two curves' planes closer than this (|n_A × n_B|) are parallel: within
+/// the rounding of the normals computed from the curves, so that a transition between
+/// parallel planes contacts both curves at the same normal angle, as it should.
+const PARALLEL_PLANES: f64 = 1e-13;
+/// The smallest height of one curve over the plane of the other, relative to the curves'
+/// size (beyond their own distances from their planes): far above the rounding of the
+/// heights (a few ε of the coordinates), so that the side of every point is certain.
+const MIN_HEIGHT: f64 = 64.0 * f64::EPSILON;
+/// Most steps of the support iteration of [`Hull::touch`].
+const TOUCH_STEPS: usize = 100;
+
 /// The two curves, oriented: A's normal points towards B, B's away from A; both are
 /// traversed counter-clockwise about their normals.
+///
+/// Heights over A's plane are computed with the curves taken as exactly planar: the height
+/// of a point x of B's plane is h₀ + (x − o_B)·τ, τ the part of A's normal in B's plane
+/// (0 for parallel planes) — accurate to rounding of the height itself, where the 3-D
+/// difference n_A·(x − a) would carry ε of the coordinates, which for a flat transition is
+/// most of the height.
 pub(crate) struct Hull {
     pub a: ConvexProfile,
     pub b: ConvexProfile,
+    /// Height of B's plane origin over A's plane.
+    h0: f64,
+    /// The part of A's normal in B's plane (3-D, and in B's plane coordinates).
+    tilt: DVec3,
+    tilt_b: [f64; 2],
 }
 
-/// The heights of `q`'s points over the plane of `p` (smallest, largest).
+/// The heights of `q`'s points over the plane of `p` (smallest, largest), with `q` taken as
+/// exactly planar.
 fn height_range(p: &ConvexProfile, q: &ConvexProfile) -> (f64, f64) {
-    let n = p.plane.normal;
-    if n.cross(q.plane.normal).length() < 1e-12 {
-        let h = p.plane.height(q.plane.origin);
-        return (h, h);
+    let (h0, tilt) = placement(p, q);
+    if tilt == DVec3::ZERO {
+        return (h0, h0);
     }
-    (
-        p.plane.height(q.support_3d(-n)),
-        p.plane.height(q.support_3d(n)),
-    )
+    let at = |x: DVec3| h0 + (x - q.plane.origin).dot(tilt);
+    (at(q.support_3d(-tilt)), at(q.support_3d(tilt)))
+}
+
+/// h₀ and τ of `q`'s plane over `p`'s (see [`Hull`]).
+fn placement(p: &ConvexProfile, q: &ConvexProfile) -> (f64, DVec3) {
+    let (n, m) = (p.plane.normal, q.plane.normal);
+    let h0 = p.plane.height(q.plane.origin);
+    if n.cross(m).length() <= PARALLEL_PLANES {
+        return (h0, DVec3::ZERO);
+    }
+    (h0, n - n.dot(m) * m)
 }
 
 impl Hull {
-    pub fn new(bottom: &PiecewiseCurve, top: &PiecewiseCurve) -> Result<Self> {
+    /// The hull between `bottom` and `top` (internal coordinates); `scale` turns internal
+    /// lengths into the caller's for the messages.
+    pub fn new(bottom: &PiecewiseCurve, top: &PiecewiseCurve, scale: f64) -> Result<Self> {
         let mut a = ConvexProfile::new(bottom, "bottom")?;
         let mut b = ConvexProfile::new(top, "top")?;
-        let gap = 1e-6 * a.size.max(b.size);
+        // The curves' own distances from their planes, and a margin far above the rounding.
+        let gap = a.flatness + b.flatness + MIN_HEIGHT * (a.size + b.size);
+        let side = |lo: f64, hi: f64, which: &str, other: &str| -> Result<f64> {
+            if lo > gap {
+                return Ok(1.0);
+            }
+            if hi < -gap {
+                return Ok(-1.0);
+            }
+            let message = if lo < -gap && hi > gap {
+                format!(
+                    "the curves cross: {which} reaches {:.3e} and {:.3e} from the plane of {other} \
+                     (each curve must lie strictly on one side of the other's plane)",
+                    lo * scale,
+                    hi * scale
+                )
+            } else {
+                format!(
+                    "{which} comes within {:.3e} of the plane of {other} (it reaches {:.3e} to {:.3e} \
+                     from it): each curve must lie on one side of the other's plane by more than \
+                     {:.3e}, the curves' distances from their own planes and 64 roundings of their size \
+                     (the heights below that are rounding)",
+                    lo.abs().min(hi.abs()) * scale,
+                    lo * scale,
+                    hi * scale,
+                    gap * scale
+                )
+            };
+            invalid!("{message}")
+        };
         let (lo, hi) = height_range(&a, &b);
-        if hi < -gap {
+        if side(lo, hi, "top", "bottom")? < 0.0 {
             a = a.flipped();
-        } else if lo <= gap {
-            return invalid!(
-                "the curves cross: top reaches {lo:.3e} and {hi:.3e} from the plane of bottom \
-                 (each curve must lie strictly on one side of the other's plane)"
-            );
         }
         let (lo, hi) = height_range(&b, &a);
-        if lo > gap {
+        if side(lo, hi, "bottom", "top")? > 0.0 {
             b = b.flipped();
-        } else if hi >= -gap {
-            return invalid!(
-                "the curves cross: bottom reaches {lo:.3e} and {hi:.3e} from the plane of top \
-                 (each curve must lie strictly on one side of the other's plane)"
-            );
         }
-        Ok(Self { a, b })
+        let (h0, tilt) = placement(&a, &b);
+        let tilt_b = [tilt.dot(b.plane.x), tilt.dot(b.plane.y)];
+        Ok(Self {
+            a,
+            b,
+            h0,
+            tilt,
+            tilt_b,
+        })
+    }
+
+    /// The height over A's plane of a point of B.
+    fn height(&self, x: DVec3) -> f64 {
+        self.h0 + (x - self.b.plane.origin).dot(self.tilt)
+    }
+
+    /// The supporting plane through A's supporting line with normal angle `theta` (through
+    /// its point `p`) that touches B: its outward unit normal ν and B's normal angle φ at
+    /// the contact.
+    ///
+    /// The plane is ν ∝ H·d − D·n_A for the point x of B it passes through, D = d·(x − p)
+    /// and H = x's height over A's plane: the contact minimises −D/H over B (the plane
+    /// rotated about the line until it touches), found by Dinkelbach's iteration — the plane
+    /// through the support point of the previous plane — which decreases −D/H at every step
+    /// and ends at the minimum (after one step on a corner, superlinearly on an arc). B's
+    /// normal angle comes from the in-plane part H·d_B − D·τ_B of ν in B's coordinates,
+    /// never from a projection of the unit ν, which for a flat transition (ν nearly n_A)
+    /// would cancel to ε / slope.
+    pub fn touch(&self, theta: f64, p: DVec3) -> (DVec3, f64) {
+        let (d, n) = (self.a.plane.direction(theta), self.a.plane.normal);
+        let d_b = [d.dot(self.b.plane.x), d.dot(self.b.plane.y)];
+        let angle = |(dd, hh): (f64, f64)| {
+            let w = [
+                hh * d_b[0] - dd * self.tilt_b[0],
+                hh * d_b[1] - dd * self.tilt_b[1],
+            ];
+            w[1].atan2(w[0])
+        };
+        let measure = |phi: f64| {
+            let x = self.b.support(phi);
+            (d.dot(x - p), self.height(x))
+        };
+        // Start from the vertical plane ν = d.
+        let mut phi = d_b[1].atan2(d_b[0]);
+        let mut best = measure(phi);
+        for _ in 0..TOUCH_STEPS {
+            let next_phi = angle(best);
+            let next = measure(next_phi);
+            // −D'/H' < −D/H, with H, H' > 0.
+            if best.0 * next.1 < next.0 * best.1 {
+                best = next;
+                phi = next_phi;
+            } else {
+                phi = next_phi;
+                break;
+            }
+        }
+        let _ = phi;
+        let (dd, hh) = best;
+        ((hh * d - dd * n).normalize(), angle(best))
     }
 
     /// The outward normal of the supporting plane through A's supporting line with normal
     /// angle `theta` (through its point `p`) that touches B.
     pub fn plane_normal(&self, theta: f64, p: DVec3) -> DVec3 {
-        let (d, n) = (self.a.plane.direction(theta), self.a.plane.normal);
-        let nu = |beta: f64| beta.cos() * d + beta.sin() * n;
-        let (mut lo, mut hi, mut beta) = (-FRAC_PI_2, FRAC_PI_2, 0.0f64);
-        for _ in 0..200 {
-            let v = nu(beta);
-            let x = self.b.support_3d(v) - p;
-            let f = v.dot(x);
-            if f == 0.0 {
-                break;
-            }
-            let slope = (-beta.sin() * d + beta.cos() * n).dot(x);
-            if f > 0.0 {
-                hi = beta;
-            } else {
-                lo = beta;
-            }
-            let newton = beta - f / slope;
-            let next = if newton > lo && newton < hi {
-                newton
-            } else {
-                0.5 * (lo + hi)
-            };
-            let step = (next - beta).abs();
-            beta = next;
-            if step <= 1e-16 || hi - lo <= 1e-16 {
-                break;
-            }
-        }
-        nu(beta)
+        self.touch(theta, p).0
     }
 
-    /// B's outward normal angle of the spatial normal `nu`.
-    pub fn b_angle(&self, nu: DVec3) -> f64 {
-        let n = self.b.plane.normal;
-        self.b.plane.angle_of(nu - nu.dot(n) * n)
+    /// B's normal angle at the contact of the supporting plane at A's normal angle `theta`.
+    fn b_angle_at(&self, theta: f64) -> f64 {
+        self.touch(theta, self.a.support(theta)).1
     }
 
     /// The supporting plane's normal at A's normal angle `theta`.
@@ -177,10 +259,8 @@ enum Segment {
 enum TrimSpec {
     /// By the plane of the curve on that side.
     Plane,
-    /// At a point on the ruling (a vertex on the curve).
+    /// At a point on the ruling (a corner of a curve: a vertex on the curve).
     Point(DVec3),
-    /// At the piece's own vertex (a cone from a corner).
-    Vertex,
 }
 
 /// The hull between A's normal angles `hi` (start) and `lo` as a developable, for the cone
@@ -197,9 +277,29 @@ impl HullStrip<'_> {
     fn contacts(&self, t: f64) -> (DVec3, DVec3, DVec3) {
         let theta = self.hi - t;
         let p = self.hull.a.feature_point(self.fa, theta);
-        let nu = self.hull.plane_normal(theta, p);
-        let q = self.hull.b.feature_point(self.fb, self.hull.b_angle(nu));
+        let (nu, phi) = self.hull.touch(theta, p);
+        let q = self.hull.b.feature_point(self.fb, phi);
         (p, q, nu)
+    }
+}
+
+impl HullStrip<'_> {
+    /// The smallest sine of the angle between the strip's tangent planes and the planes of
+    /// the curves (sampled at 17 rulings).
+    fn smallest_edge_sine(&self) -> f64 {
+        let (na, nb) = (self.hull.a.plane.normal, self.hull.b.plane.normal);
+        (0..=16)
+            .map(|j| {
+                let nu = self.contacts((self.hi - self.lo) * j as f64 / 16.0).2;
+                nu.cross(na).length().min(nu.cross(nb).length())
+            })
+            .fold(f64::INFINITY, f64::min)
+    }
+
+    /// The ruling at `t` as its two ends, in the caller's coordinates.
+    fn describe(&self, t: f64, frame: &Similarity) -> String {
+        let (p, q, _) = self.contacts(t);
+        format!("{} – {}", frame.to_user(p), frame.to_user(q))
     }
 }
 
@@ -265,7 +365,7 @@ impl Hull {
             .collect();
         let mut phis: Vec<f64> = Vec::with_capacity(thetas.len());
         for &t in &thetas {
-            let phi = self.b_angle(self.normal_at(t));
+            let phi = self.b_angle_at(t);
             let phi = match phis.last() {
                 None => phi,
                 Some(&last) => phi - ((phi - last) / TAU).round() * TAU,
@@ -285,7 +385,7 @@ impl Hull {
                 .position(|w| w[0] <= target && target <= w[1])
                 .unwrap_or(0);
             let phi_at = |t: f64| {
-                let phi = self.b_angle(self.normal_at(t));
+                let phi = self.b_angle_at(t);
                 phi - ((phi - phis[j]) / TAU).round() * TAU
             };
             let (mut lo, mut hi) = (thetas[j], thetas[j + 1]);
@@ -352,7 +452,7 @@ impl Hull {
                     q
                 }
             }
-            None => self.b.support(self.b_angle(self.normal_at(event.theta))),
+            None => self.b.support(self.b_angle_at(event.theta)),
         };
         (a, b)
     }
@@ -373,7 +473,7 @@ impl Hull {
             );
             let mid = 0.5 * (lo + hi);
             let fa = self.a.feature_at(mid);
-            let fb = self.b.feature_at(self.b_angle(self.normal_at(mid)));
+            let fb = self.b.feature_at(self.b_angle_at(mid));
             walk.push(Segment::Strip { hi, lo, fa, fb });
             let (before, after) = (
                 self.contacts_at(&events[k], false),
@@ -459,7 +559,7 @@ fn start_at_seam(walk: Vec<Segment>, hull: &Hull) -> Vec<Segment> {
     let length = |s: &Segment| match s {
         Segment::Strip { hi, .. } => {
             let p = hull.a.support(*hi);
-            p.distance(hull.b.support(hull.b_angle(hull.plane_normal(*hi, p))))
+            p.distance(hull.b.support(hull.touch(*hi, p).1))
         }
         Segment::Planar { .. } => f64::INFINITY,
     };
@@ -478,10 +578,21 @@ fn pieces(
     walk: &[Segment],
     tolerance: f64,
     max_pieces: usize,
-) -> Result<(Vec<ConePiece>, Vec<[TrimSpec; 2]>, f64)> {
+    frame: &Similarity,
+    goal: f64,
+    first: bool,
+) -> Result<Fitted> {
+    let too_many = || {
+        Error::not_converged(format!(
+            "the transition needs more than max_pieces = {max_pieces} pieces at the fit \
+             tolerance {:.3e}",
+            tolerance * frame.scale
+        ))
+    };
     let mut pieces: Vec<ConePiece> = Vec::new();
     let mut specs: Vec<[TrimSpec; 2]> = Vec::new();
     let mut deviation = 0.0f64;
+    let mut finest = tolerance;
     for segment in walk {
         let previous = pieces.last().map(ConePiece::end);
         match segment {
@@ -518,12 +629,74 @@ fn pieces(
                     continue;
                 }
                 let budget = max_pieces.saturating_sub(pieces.len()).max(2);
-                let fit = approximate(&strip, tolerance, Rule::MinimalVertexDistance, budget)
-                    .map_err(|e| e.context("fitting the transition's cones"))?;
+                // A deviation δ of the surface moves its section with a curve's plane by
+                // δ / sin γ within the surface, γ the angle between surface and plane: the
+                // fit is asked for the tolerance times the smallest sin γ of the strip, so
+                // that the edges of a flat transition (γ small) stay within it too.
+                let sine = strip.smallest_edge_sine().min(1.0);
+                let tolerance = tolerance * sine;
+                finest = finest.min(tolerance);
+                let fit = match fit(&strip, tolerance, Rule::MinimalVertexDistance, budget) {
+                    Ok(fit) => fit,
+                    Err(FitError::Resolution { largest }) => {
+                        let rounding = f64::EPSILON * largest;
+                        let message = format!(
+                            "tolerance = {:.3e}{} is below what f64 resolves at the edges of \
+                             this transition: its surface meets the plane of a curve at an \
+                             angle of {:.3e} rad (between the rulings {} and {}), where one \
+                             rounding of the coordinates ({:.3e}) moves the edge by {:.3e}",
+                            goal * frame.scale,
+                            if first {
+                                String::new()
+                            } else {
+                                format!(" (the fit tolerance {:.3e})", tolerance * frame.scale)
+                            },
+                            sine.asin(),
+                            strip.describe(0.0, frame),
+                            strip.describe(*hi - *lo, frame),
+                            rounding * frame.scale,
+                            rounding / sine * frame.scale
+                        );
+                        return Err(if first {
+                            Error::invalid_input(message)
+                        } else {
+                            Error::not_converged(message)
+                        });
+                    }
+                    Err(FitError::Pieces { .. })
+                    | Err(FitError::NoPair {
+                        pieces_exhausted: true,
+                        ..
+                    }) => return Err(too_many()),
+                    Err(FitError::Narrow { deviation, a, b }) => {
+                        return Err(Error::not_converged(format!(
+                            "the cone fit stays {:.3e} from the hull (fit tolerance {:.3e}) \
+                             between the rulings {} and {}",
+                            deviation * frame.scale,
+                            tolerance * frame.scale,
+                            strip.describe(a, frame),
+                            strip.describe(b, frame)
+                        )))
+                    }
+                    Err(FitError::NoPair { a, b, reason, .. }) => {
+                        return Err(Error::not_converged(format!(
+                            "no cone pair follows the hull between the rulings {} and {} \
+                             (fit tolerance {:.3e}): {reason}",
+                            strip.describe(a, frame),
+                            strip.describe(b, frame),
+                            tolerance * frame.scale
+                        )))
+                    }
+                    Err(FitError::Other(e)) => return Err(e),
+                };
                 deviation = deviation.max(fit.max_error);
+                // A corner cone is trimmed at the corner itself, not at its fitted vertex:
+                // the rulings of a tall or flat transition meet at small angles, where
+                // their meeting point is known to fewer digits than the corner.
+                let (p, q, _) = strip.contacts(0.0);
                 let spec = match (corner_a, corner_b) {
-                    (true, _) => [TrimSpec::Vertex, TrimSpec::Plane],
-                    (_, true) => [TrimSpec::Plane, TrimSpec::Vertex],
+                    (true, _) => [TrimSpec::Point(p), TrimSpec::Plane],
+                    (_, true) => [TrimSpec::Plane, TrimSpec::Point(q)],
                     _ => [TrimSpec::Plane, TrimSpec::Plane],
                 };
                 // Chained as ConeSpline::new will (each piece from the end of the one
@@ -539,12 +712,24 @@ fn pieces(
             }
         }
         if pieces.len() > max_pieces {
-            return Err(Error::not_converged(format!(
-                "the transition needs more than max_pieces = {max_pieces} pieces"
-            )));
+            return Err(too_many());
         }
     }
-    Ok((pieces, specs, deviation))
+    Ok(Fitted {
+        pieces,
+        specs,
+        deviation,
+        finest,
+    })
+}
+
+/// The pieces of a walk, their trim specifications, the largest fit deviation and the
+/// smallest fit tolerance of a strip.
+struct Fitted {
+    pieces: Vec<ConePiece>,
+    specs: Vec<[TrimSpec; 2]>,
+    deviation: f64,
+    finest: f64,
 }
 
 /// The plane sector about `vertex` from the ruling of `start` to the ruling direction
@@ -598,10 +783,6 @@ fn planar_piece(
 fn trim(hull: &Hull, piece: &ConePiece, side: usize, spec: TrimSpec) -> Result<Trim> {
     match spec {
         TrimSpec::Point(p) => Ok(Trim::constant(piece.start.parameter_of(p))),
-        TrimSpec::Vertex => match piece.vertex() {
-            Some(v) => Ok(Trim::constant(piece.start.parameter_of(v))),
-            None => no_solution!("a corner cone of the transition has no vertex"),
-        },
         TrimSpec::Plane => {
             let plane = if side == 0 {
                 &hull.a.plane
@@ -621,10 +802,7 @@ fn vertex_inside(piece: &ConePiece, trims: &[Trim; 2], specs: &[TrimSpec; 2]) ->
     let Some(v) = piece.vertex() else {
         return false;
     };
-    if specs
-        .iter()
-        .any(|s| matches!(s, TrimSpec::Vertex | TrimSpec::Point(_)))
-    {
+    if specs.iter().any(|s| matches!(s, TrimSpec::Point(_))) {
         return false;
     }
     let rho = piece.start.parameter_of(v);
@@ -649,21 +827,43 @@ fn edge_distance(hull: &Hull, part: &TrimmedSpline, side: usize) -> Result<f64> 
     Ok(worst)
 }
 
-/// The transition part between `bottom` and `top` (in the caller's coordinates, which
-/// must be of unit size: see [`Similarity`](super::trim::Similarity)), the distance of
-/// its surface and edges within `tolerance` of the hull and the curves.
+/// Why a fit of the part was not accepted.
+enum Refused {
+    Vertex(usize),
+    Bends(usize, usize),
+    Edges([f64; 2]),
+}
+
+/// The transition part between `bottom` and `top` (in internal coordinates: the caller's
+/// mapped by `frame`), the distance of its surface and edges within `tolerance` of the hull
+/// and the curves; messages quote lengths and points in the caller's units.
 pub(crate) fn transition(
     bottom: &PiecewiseCurve,
     top: &PiecewiseCurve,
     tolerance: f64,
     max_pieces: usize,
+    frame: &Similarity,
 ) -> Result<(TrimmedSpline, TransitionFit)> {
-    let hull = Hull::new(bottom, top)?;
+    let scale = frame.scale;
+    let hull = Hull::new(bottom, top, scale)?;
     let walk = hull.segments()?;
     let mut fit_tolerance = 0.5 * tolerance;
     let mut last = None;
-    for _ in 0..REFITS {
-        let (pieces, specs, deviation) = pieces(&hull, &walk, fit_tolerance, max_pieces)?;
+    for refit in 0..REFITS {
+        let Fitted {
+            pieces,
+            specs,
+            deviation,
+            finest,
+        } = pieces(
+            &hull,
+            &walk,
+            fit_tolerance,
+            max_pieces,
+            frame,
+            tolerance,
+            refit == 0,
+        )?;
         let chain = ConeSpline::new(pieces.clone())?;
         // Split pieces beyond 120°, each keeping its trim specification.
         let mut split = Vec::new();
@@ -675,6 +875,17 @@ pub(crate) fn transition(
             }
         }
         let spline = ConeSpline::new(split)?;
+        let fit = TransitionFit {
+            deviation,
+            edge_distance: [f64::NAN; 2],
+            fit_tolerance: finest,
+        };
+        // The hull is convex: a fit whose pieces bend both ways is too coarse somewhere.
+        if let Some((k, j)) = bends_both_ways(spline.pieces()) {
+            last = Some((Refused::Bends(k, j), fit));
+            fit_tolerance *= 0.25;
+            continue;
+        }
         let trims = spline
             .pieces()
             .iter()
@@ -697,24 +908,34 @@ pub(crate) fn transition(
             edge_distance(&hull, &part, 1)?,
         ];
         let fit = TransitionFit {
-            deviation,
             edge_distance: distances,
-            fit_tolerance,
+            ..fit
         };
-        if inside.is_none() && distances.iter().all(|&d| d <= tolerance) {
-            return Ok((part, fit));
+        match inside {
+            Some(k) => last = Some((Refused::Vertex(k), fit)),
+            None if distances.iter().all(|&d| d <= tolerance) => return Ok((part, fit)),
+            None => last = Some((Refused::Edges(distances), fit)),
         }
-        last = Some((inside, fit));
         fit_tolerance *= 0.25;
     }
-    let (inside, fit) = last.expect("at least one fit");
-    Err(Error::not_converged(match inside {
-        Some(k) => format!(
-            "tolerance = {tolerance:.3e}: the cone fit keeps a vertex on piece {k} of the part"
+    let (refused, fit) = last.expect("at least one fit");
+    let finest = fit.fit_tolerance * scale;
+    let tolerance = tolerance * scale;
+    Err(Error::not_converged(match refused {
+        Refused::Vertex(k) => format!(
+            "tolerance = {tolerance:.3e}: the cone fit keeps a vertex on piece {k} of the part \
+             at every fit tolerance down to {finest:.3e}"
         ),
-        None => format!(
-            "tolerance = {tolerance:.3e} not reached: the edges are {:.3e} and {:.3e} from the curves",
-            fit.edge_distance[0], fit.edge_distance[1]
+        Refused::Bends(k, j) => format!(
+            "tolerance = {tolerance:.3e}: the cone fit bends both ways (piece {k} one way, \
+             piece {j} the other) at every fit tolerance down to {finest:.3e}, though a \
+             transition's surface is convex"
+        ),
+        Refused::Edges([a, b]) => format!(
+            "tolerance = {tolerance:.3e} not reached: the edges are {:.3e} and {:.3e} from \
+             the curves at the fit tolerance {finest:.3e}",
+            a * scale,
+            b * scale
         ),
     }))
 }
@@ -739,6 +960,7 @@ mod tests {
         let hull = Hull::new(
             &square(1.0, 0.0),
             &circle(DVec3::new(0.2, 0.0, 1.5), DVec3::X, DVec3::Y, 0.6),
+            1.0,
         )
         .unwrap();
         let walk = hull.segments().unwrap();
@@ -753,6 +975,10 @@ mod tests {
             &circle(DVec3::new(0.2, 0.0, 1.5), DVec3::X, DVec3::Y, 0.6),
             1e-5,
             10_000,
+            &Similarity {
+                origin: DVec3::ZERO,
+                scale: 1.0,
+            },
         )
         .unwrap();
         println!(
