@@ -8,10 +8,12 @@
 
 mod framed;
 mod primitives;
+mod similarity;
 mod topology;
 
 pub(crate) use framed::on_frame_segments;
 pub use framed::FramedCurve;
 pub(crate) use primitives::Arc;
 pub use primitives::{arc_through, circle, obround, polygon, polyline};
+pub(crate) use similarity::Similarity;
 pub use topology::{Brep, BrepBound, BrepEdge, BrepFace, BrepSurface, BrepUse, PCurve};

@@ -119,8 +119,8 @@ impl SheetPart {
         check_resolution(options.tolerance, poles(), "curves")?;
         let frame = Similarity::fitting(poles());
         let (b, t) = (
-            internal_curve(bottom, &frame)?,
-            internal_curve(top, &frame)?,
+            frame.curve_to_internal(bottom)?,
+            frame.curve_to_internal(top)?,
         );
         let (part, fit) = transition(
             &b,
@@ -198,7 +198,7 @@ impl SheetPart {
             .collect();
         check_resolution(options.tolerance, points.iter().copied(), "part's")?;
         let frame = Similarity::fitting(points);
-        let internal = internal_curve(curve, &frame)?;
+        let internal = frame.curve_to_internal(curve)?;
         let tangent = TangentSurface::new(&internal, v_min / frame.scale, v_max / frame.scale)?;
         let (part, fit) = between_rails(
             &tangent,
@@ -534,16 +534,6 @@ fn check_resolution(
         );
     }
     Ok(())
-}
-
-/// A curve of the caller's in internal coordinates.
-pub(crate) fn internal_curve(curve: &PiecewiseCurve, frame: &Similarity) -> Result<PiecewiseCurve> {
-    let segments = curve
-        .segments()
-        .iter()
-        .map(|s| s.similar(1.0 / frame.scale, -frame.origin / frame.scale))
-        .collect();
-    PiecewiseCurve::new(segments, curve.breaks().to_vec())
 }
 
 /// A piece in the caller's coordinates.

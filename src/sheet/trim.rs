@@ -30,6 +30,7 @@ use crate::bezier::{
 };
 use crate::cone_spline::{ConePiece, ConeSpline, Motion};
 use crate::error::{no_solution, Result};
+pub(crate) use crate::model::Similarity;
 use glam::{DVec3, DVec4};
 use std::f64::consts::PI;
 
@@ -168,47 +169,6 @@ pub(crate) fn split_long_pieces(pieces: &[ConePiece]) -> Vec<ConePiece> {
             )
         })
         .collect()
-}
-
-/// The similarity from the part's internal coordinates (unit size, about the origin) to
-/// the caller's: x ↦ origin + scale·x. Constructions run in the internal ones, so that
-/// they are invariant under translations and scalings of the input (1e-200 … 1e200).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Similarity {
-    pub origin: DVec3,
-    pub scale: f64,
-}
-
-impl Similarity {
-    /// The similarity that maps the unit-size box about the origin onto the box of `points`.
-    pub fn fitting(points: impl IntoIterator<Item = DVec3>) -> Self {
-        let (mut lo, mut hi) = (DVec3::INFINITY, DVec3::NEG_INFINITY);
-        for p in points {
-            lo = lo.min(p);
-            hi = hi.max(p);
-        }
-        let origin = 0.5 * lo + 0.5 * hi;
-        // Half-extents first: the diagonal of a box of 1e308 overflows.
-        let half = 0.5 * hi - 0.5 * lo;
-        let scale = 2.0 * half.abs().max_element();
-        Self {
-            origin,
-            scale: if scale > 0.0 { scale } else { 1.0 },
-        }
-    }
-
-    pub fn to_user(self, x: DVec3) -> DVec3 {
-        self.origin + self.scale * x
-    }
-
-    pub fn to_internal(self, x: DVec3) -> DVec3 {
-        (x - self.origin) / self.scale
-    }
-
-    /// A homogeneous point in internal coordinates, mapped to the user's.
-    pub fn homogeneous_to_user(&self, h: DVec4) -> DVec4 {
-        (h.truncate() * self.scale + self.origin * h.w).extend(h.w)
-    }
 }
 
 /// The trimmed cone spline of a part, in internal coordinates: pieces (each at most 120°)

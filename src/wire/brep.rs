@@ -44,6 +44,7 @@ use crate::frames::metrics::{angle_about_tangent, partials_cosine};
 use crate::frames::Frame;
 use crate::math::GaussLegendre;
 use crate::mesh::grid_parameters;
+use crate::model::Similarity;
 use crate::model::{Brep, BrepBound, BrepEdge, BrepFace, BrepSurface, BrepUse, PCurve};
 use crate::sweep::sweep_along;
 use glam::{DVec3, DVec4};
@@ -132,7 +133,7 @@ pub struct Shape {
     report: SweepReport,
     spine: Vec<PiecewiseCurve>,
     /// The map from the coordinates the sweep was built in to the caller's.
-    placement: Placement,
+    placement: Similarity,
 }
 
 impl Shape {
@@ -166,7 +167,10 @@ impl Shape {
         if !self.solid {
             return invalid!("the shape is a sheet, not a solid: it encloses no volume");
         }
-        let Placement { scale, offset } = self.placement;
+        let Similarity {
+            scale,
+            origin: offset,
+        } = self.placement;
         let local = |p: DVec3| (p - offset) / scale;
         let rule = GaussLegendre::new(VOLUME_NODES);
         let flux: f64 = self
@@ -227,40 +231,6 @@ impl Shape {
     #[cfg(test)]
     pub(crate) fn brep(&self) -> &Brep {
         &self.brep
-    }
-}
-
-/// How normalized coordinates map back: x ↦ scale·x + offset.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct Placement {
-    pub scale: f64,
-    pub offset: DVec3,
-}
-
-impl Placement {
-    fn point(&self, p: DVec3) -> DVec3 {
-        p * self.scale + self.offset
-    }
-
-    fn homogeneous(&self, h: DVec4) -> DVec4 {
-        (h.truncate() * self.scale + self.offset * h.w).extend(h.w)
-    }
-
-    fn curve(&self, c: &PiecewiseCurve) -> PiecewiseCurve {
-        let segments = c
-            .segments()
-            .iter()
-            .map(|s| s.similar(self.scale, self.offset))
-            .collect();
-        PiecewiseCurve::new(segments, c.breaks().to_vec()).expect("the same breaks")
-    }
-
-    /// The surface mapped back in place (the normalized one is not needed after).
-    fn surface(&self, mut s: PiecewiseSurface) -> Result<PiecewiseSurface> {
-        for p in s.patches_mut() {
-            p.map_homogeneous(|h| self.homogeneous(h))?;
-        }
-        Ok(s)
     }
 }
 
@@ -331,7 +301,7 @@ pub(crate) fn build(
     transport: &Transport,
     profile: &Profile,
     solid: bool,
-    placement: Placement,
+    placement: Similarity,
     margin: f64,
     gap: f64,
 ) -> Result<Shape> {
@@ -370,7 +340,12 @@ pub(crate) fn build(
         .map(|loops| {
             loops
                 .into_iter()
-                .map(|faces| faces.into_iter().map(|s| placement.surface(s)).collect())
+                .map(|faces| {
+                    faces
+                        .into_iter()
+                        .map(|s| placement.surface_to_user(s))
+                        .collect()
+                })
                 .collect::<Result<_>>()
         })
         .collect::<Result<_>>()?;
@@ -454,7 +429,7 @@ pub(crate) fn build(
         spine: transport
             .pieces
             .iter()
-            .map(|p| placement.curve(&p.spine))
+            .map(|p| placement.curve_to_user(&p.spine))
             .collect(),
         placement,
     })
@@ -464,7 +439,7 @@ pub(crate) fn build(
 fn self_intersection(
     contact: &Contact,
     transport: &Transport,
-    placement: Placement,
+    placement: Similarity,
     gap: f64,
 ) -> Error {
     let name = |piece: usize| {
@@ -476,7 +451,7 @@ fn self_intersection(
     };
     let (a, b) = contact.pieces;
     let (near, distance) = (
-        placement.point(contact.points.0),
+        placement.to_user(contact.points.0),
         contact.distance * placement.scale,
     );
     let gap = gap * placement.scale;
@@ -1138,7 +1113,7 @@ impl<'a> Topology<'a> {
         end: bool,
         transport: &Transport,
         profile: &Profile,
-        placement: Placement,
+        placement: Similarity,
     ) -> Result<(Face, BrepFace)> {
         let m = transport.pieces.len();
         let (station, framed) = if end {
@@ -1179,7 +1154,7 @@ impl<'a> Topology<'a> {
                 outer: l == 0,
             });
         }
-        let origin = placement.point(origin);
+        let origin = placement.to_user(origin);
         let face = Face {
             kind: FaceKind::Plane,
             surface: None,

@@ -418,13 +418,14 @@ fn not_planar(joint: &Joint, piece: &Piece) -> Error {
 
 #[cfg(test)]
 mod tests {
-    use super::super::edge::{chain, RawEdge, Units};
+    use super::super::edge::{chain, RawEdge};
     use super::*;
+    use crate::model::Similarity;
     use std::f64::consts::FRAC_PI_2;
 
-    const UNIT: Units = Units {
+    const UNIT: Similarity = Similarity {
         scale: 1.0,
-        offset: DVec3::ZERO,
+        origin: DVec3::ZERO,
     };
 
     fn polyline(points: &[[f64; 3]]) -> Chain {

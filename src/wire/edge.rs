@@ -19,7 +19,7 @@
 use crate::bezier::{CurveJet, PiecewiseCurve, RationalBezierCurve};
 use crate::error::{invalid, Result};
 use crate::math::{angle_between, robust_normalize, signed_angle};
-use crate::model::Arc;
+use crate::model::{Arc, Similarity};
 use glam::{DVec3, DVec4};
 use std::f64::consts::{PI, TAU};
 
@@ -282,23 +282,6 @@ pub(crate) struct Chain {
     pub closed: bool,
 }
 
-/// How normalized coordinates are shown to the caller: p ↦ scale·p + offset.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct Units {
-    pub scale: f64,
-    pub offset: DVec3,
-}
-
-impl Units {
-    pub fn point(&self, p: DVec3) -> DVec3 {
-        p * self.scale + self.offset
-    }
-
-    pub fn length(&self, l: f64) -> f64 {
-        l * self.scale
-    }
-}
-
 /// An edge as given, in normalized coordinates (see `sweep_wire`).
 #[derive(Clone, Debug)]
 pub(crate) enum RawEdge {
@@ -339,7 +322,12 @@ impl RawEdge {
 
 /// The oriented, connected chain of `edges` (module notes). `tolerance` is the largest gap
 /// between consecutive edge ends; `size` the wire's size (for relative tests).
-pub(crate) fn chain(edges: &[RawEdge], tolerance: f64, size: f64, units: Units) -> Result<Chain> {
+pub(crate) fn chain(
+    edges: &[RawEdge],
+    tolerance: f64,
+    size: f64,
+    units: Similarity,
+) -> Result<Chain> {
     if edges.is_empty() {
         return invalid!("edges: a wire needs at least one edge");
     }
@@ -398,8 +386,8 @@ pub(crate) fn chain(edges: &[RawEdge], tolerance: f64, size: f64, units: Units) 
 }
 
 /// Each edge on its own: not of zero length, arcs with a circle.
-fn check_edge(edge: &RawEdge, tolerance: f64, units: Units) -> Result<()> {
-    let p = |q: &DVec3| units.point(*q);
+fn check_edge(edge: &RawEdge, tolerance: f64, units: Similarity) -> Result<()> {
+    let p = |q: &DVec3| units.to_user(*q);
     match edge {
         RawEdge::Line(a, b) => {
             if a.distance(*b) <= tolerance {
@@ -438,7 +426,7 @@ fn check_edge(edge: &RawEdge, tolerance: f64, units: Units) -> Result<()> {
 }
 
 /// Each edge forwards or backwards so that it starts where the previous one ends.
-fn orient(edges: &[RawEdge], tolerance: f64, units: Units) -> Result<Vec<(RawEdge, bool)>> {
+fn orient(edges: &[RawEdge], tolerance: f64, units: Similarity) -> Result<Vec<(RawEdge, bool)>> {
     let mut oriented: Vec<(RawEdge, bool)> = Vec::with_capacity(edges.len());
     for (k, e) in edges.iter().enumerate() {
         let (s, t) = e.ends();
@@ -464,9 +452,9 @@ fn orient(edges: &[RawEdge], tolerance: f64, units: Units) -> Result<Vec<(RawEdg
                         units.length(gs.min(gt)),
                         units.length(tolerance),
                         k - 1,
-                        units.point(end),
-                        units.point(s),
-                        units.point(t)
+                        units.to_user(end),
+                        units.to_user(s),
+                        units.to_user(t)
                     );
                 }
                 gs <= gt
@@ -744,9 +732,9 @@ mod tests {
     use super::*;
     use std::f64::consts::FRAC_PI_2;
 
-    const UNIT: Units = Units {
+    const UNIT: Similarity = Similarity {
         scale: 1.0,
-        offset: DVec3::ZERO,
+        origin: DVec3::ZERO,
     };
 
     fn line(a: [f64; 3], b: [f64; 3]) -> RawEdge {

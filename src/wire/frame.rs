@@ -27,7 +27,7 @@
 //! pieces the margin of [`crate::ph_cubic::analysis`] — and each miter leg must be longer
 //! than the profile's cuts at its ends.
 
-use super::edge::{Chain, Geometry, Joint, JointKind, Piece, Units};
+use super::edge::{Chain, Geometry, Joint, JointKind, Piece};
 use super::profile::{Profile, SupportTable};
 use crate::bezier::{PiecewiseCurve, RationalBezierCurve};
 use crate::error::{invalid, Result, ResultExt};
@@ -35,7 +35,7 @@ use crate::frames::metrics::angle_about_tangent;
 use crate::frames::rational::RationalFrames;
 use crate::frames::Frame;
 use crate::math::{normal_plane_unit, orthogonalized, orthonormal_to, signed_angle};
-use crate::model::Arc;
+use crate::model::{Arc, Similarity};
 use crate::ph_cubic::accuracy::angle_errors;
 use crate::ph_cubic::analysis::ProfileSurface;
 use crate::ph_cubic::approximate::ph_spline_approximate;
@@ -63,7 +63,7 @@ pub(crate) struct FrameOptions {
     /// PH approximation of curves.
     pub tolerance: f64,
     /// How normalized coordinates map to the caller's.
-    pub units: Units,
+    pub units: Similarity,
 }
 
 /// A closing turn (radians) at most this is rounding: the frame closes as it is, and the
@@ -124,7 +124,7 @@ struct Spine {
 /// caller's units (the normalized coordinates scaled back by a power of two, exactly: the
 /// same decisions at every scale and position), so that what the approximation reports (a
 /// tolerance below the rounding, say) is in the caller's units.
-fn spines(chain: &Chain, tolerance: f64, units: Units) -> Result<Vec<Spine>> {
+fn spines(chain: &Chain, tolerance: f64, units: Similarity) -> Result<Vec<Spine>> {
     chain
         .pieces
         .iter()
@@ -150,7 +150,7 @@ fn spines(chain: &Chain, tolerance: f64, units: Units) -> Result<Vec<Spine>> {
                             .with_context(|| {
                                 format!(
                                     "edge {} (its coordinates taken about the wire's centre {})",
-                                    piece.edge, units.offset
+                                    piece.edge, units.origin
                                 )
                             })?;
                             let scale = 1.0 / units.scale;

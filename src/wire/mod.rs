@@ -26,6 +26,7 @@ pub use brep::{Face, FaceKind, Shape, SweepReport};
 use crate::bezier::PiecewiseCurve;
 use crate::error::{invalid, Result};
 use crate::math::robust_length;
+use crate::model::Similarity;
 use corner::CornerMode;
 use edge::RawEdge;
 use frame::FrameOptions;
@@ -192,9 +193,9 @@ pub fn sweep_wire(
         }
     }
     let size_n = size / scale;
-    let units = edge::Units {
+    let units = Similarity {
         scale,
-        offset: center,
+        origin: center,
     };
     let chain = edge::chain(&raw, options.join_tolerance * size_n, size_n, units)?;
     let profile = Profile::new(&outer, &holes, options.solid, options.join_tolerance, scale)?;
@@ -228,10 +229,7 @@ pub fn sweep_wire(
         &transport,
         &profile,
         options.solid,
-        brep::Placement {
-            scale,
-            offset: center,
-        },
+        units,
         margin,
         options.join_tolerance * size_n,
     )
