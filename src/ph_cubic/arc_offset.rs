@@ -84,12 +84,32 @@ pub fn offset_profile_by_arcs(
     let unit = profile.similar(scale, -origin * scale);
     let fit = fit_arcs(&unit, distance * scale, tolerance * scale)?;
     let back = |c: &PiecewiseCurve| c.similar(1.0 / scale, origin);
-    Ok(ArcOffset {
+    let result = ArcOffset {
         arcs: back(&fit.arcs),
         offset: back(&fit.offset),
         profile_deviation: fit.profile_deviation / scale,
         offset_deviation: fit.offset_deviation / scale,
-    })
+    };
+    // An offset far beyond a profile of large coordinates can leave the range of f64 only
+    // on the way back to the caller's units.
+    let finite = |c: &PiecewiseCurve| {
+        c.segments()
+            .iter()
+            .all(|s| s.homogeneous().iter().all(|h| h.is_finite()))
+    };
+    if !(finite(&result.arcs)
+        && finite(&result.offset)
+        && result.profile_deviation.is_finite()
+        && result.offset_deviation.is_finite())
+    {
+        return invalid!(
+            "distance = {} puts the offset beyond the range of a double (the profile's \
+             coordinates reach {:.3e})",
+            Num(distance),
+            origin.abs().max_element() + size
+        );
+    }
+    Ok(result)
 }
 
 /// [`offset_profile_by_arcs`] for a profile of about unit size.
@@ -434,6 +454,16 @@ mod tests {
                 );
             }
         }
+    }
+
+    #[test]
+    fn an_offset_beyond_the_range_of_a_double_is_refused() {
+        // A profile of 1e300 at x = 1.5e308 offset by 1e308: fitted at unit size about
+        // its first pole, it overflows only on the way back.
+        let profile = quarter_ellipse(1e300, DVec3::new(1.5e308, 0.0, 0.0));
+        let e = offset_profile_by_arcs(&profile, 1e308, 1e300).unwrap_err();
+        assert!(e.to_string().contains("distance"), "{e}");
+        assert!(e.to_string().contains("beyond the range"), "{e}");
     }
 
     #[test]
