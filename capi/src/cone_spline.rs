@@ -368,7 +368,7 @@ fn check_fit_arguments(tolerance: f64, max_pieces: usize) -> FfiResult {
 /// them. It must be regular with non-zero curvature. The fit runs in coordinates centred
 /// and scaled on the surface: the same pieces, mapped, for the curve scaled by 1e-200 …
 /// 1e200 or moved by 1e6 of its size. A 1,000-turn helix (radius 1, pitch 0.4, v 0.5 to 2)
-/// to 1e-2 takes 16,384 pieces and 1.2 to 1.7 s (test build, shared 2-core machine).
+/// to 1e-2 takes 16,384 pieces (times: docs/benchmarks.md).
 ///
 /// @param[in] curve A curve (e.g. from rmf_nurbs_curve_create), or NULL.
 /// @param[in] callback Point and derivative of an analytic curve, or NULL; called on this

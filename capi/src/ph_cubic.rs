@@ -273,8 +273,8 @@ pub unsafe extern "C" fn rmf_ph_approximation_options_init(
 /// curve (one for a callback curve), about 1.5 per PH segment on smooth curves (some 25
 /// evaluations per segment), and the call ends with
 /// RMF_ERROR_NOT_CONVERGED as soon as options->max_segments or options->max_evaluations
-/// would be exceeded. Time: about 4 µs per segment plus 35 evaluations of the curve (a cubic
-/// NURBS costs about 30 ns per evaluation) on a 2-core x86-64 machine of 2026.
+/// would be exceeded. Work: about 35 evaluations of the curve per segment (times:
+/// docs/benchmarks.md).
 ///
 /// @param[in] curve A G1 curve (NURBS data, a computed curve or a callback curve from
 ///            rmf_callback_curve_create), whole domain; a piecewise curve breaks at its

@@ -379,10 +379,8 @@ pub unsafe extern "C" fn rmf_rrmf_quintic_curve(
 ///
 /// Work: one solve (the sextic (35) for one η, its roots, each solution verified and
 /// measured) per sample plus those of the refinement — at most 502, measured 16 to 34 — so
-/// eta_samples + 502 solves at most. A solve took 12 to 70 µs on a shared 2-core x86-64
-/// machine of 2026 (`cargo bench --bench rrmf_quintic`): 0.6 to 0.9 ms at eta_samples = 16,
-/// 4 to 7 s at 100,000, about 26 s at 1,000,000. rmf_rrmf_spline_hermite_with_options
-/// caps the solves.
+/// eta_samples + 502 solves at most (times: docs/benchmarks.md, `cargo bench --bench
+/// rrmf_quintic`). rmf_rrmf_spline_hermite_with_options caps the solves.
 ///
 /// Planar data (chord and tangents coplanar to a sine of 1e-10, scale-free: also a tangent
 /// along p1 − p0, or a straight segment), where Section 4 does not apply, get the planar PH
@@ -441,7 +439,7 @@ pub unsafe extern "C" fn rmf_rrmf_quintic_best(
 /// segment the frame is the constant one carried from the segment before.
 ///
 /// Work: as rmf_rrmf_quintic_best per segment, at most eta_samples + 502 solves (measured:
-/// eta_samples + 16 to 34; 12 to 70 µs each), with no bound on the total but the count of
+/// eta_samples + 16 to 34), with no bound on the total but the count of
 /// segments: (count − 1) · (eta_samples + 502) solves. rmf_rrmf_spline_hermite_with_options
 /// is the same with a cap on the total and a report of the work.
 ///
@@ -507,8 +505,8 @@ pub struct RmfRrmfSplineOptions {
     /// not zero, not along tangents[0]. Default (0, 0, 0), which is refused: set it.
     pub initial_normal: RmfVec3,
     /// Most solves (the sextic (35) for one η) over the whole spline, ≥ 1: each segment
-    /// costs eta_samples plus at most 502 (16 to 34 measured) for the refinement, 12 to 70 µs
-    /// each. Default SIZE_MAX (no cap).
+    /// costs eta_samples plus at most 502 (16 to 34 measured) for the refinement. Default
+    /// SIZE_MAX (no cap).
     pub max_evaluations: usize,
 }
 
@@ -604,9 +602,8 @@ fn check_options(given: &RmfRrmfSplineOptions) -> FfiResult<(ShapeMeasure, DVec3
 /// report of it. The spline is the same as rmf_rrmf_spline_hermite's for the same measure,
 /// eta_samples and initial_normal. The work is counted in solves (the sextic (35) for one
 /// η, its roots, every solution verified and measured): eta_samples per segment for the
-/// scan plus at most 502 (measured 16 to 34) for the refinement, each 12 to 70 µs on a
-/// shared 2-core x86-64 machine of 2026 (0.6 to 0.9 ms per segment at eta_samples = 16,
-/// 4 to 7 s at 100,000, about 26 s at 1,000,000). The call ends with
+/// scan plus at most 502 (measured 16 to 34) for the refinement (times:
+/// docs/benchmarks.md). The call ends with
 /// RMF_ERROR_NOT_CONVERGED as soon as options->max_evaluations solves are spent before the
 /// last segment's η is chosen; it never spends more, and a budget of report->evaluations
 /// of an uncapped call gives the same spline.
