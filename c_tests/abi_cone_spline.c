@@ -233,7 +233,7 @@ static void test_approximations(void) {
                                              &untouched, NULL),
                  RMF_ERROR_INVALID_INPUT, "RMF_CONE_RULE_GIVEN");
     CHECK_STATUS(rmf_cone_spline_approximate(NULL, cubic, NULL, 0.2, 1.2, 0.5, 1.0, 1e-9, 0, 6, &untouched, NULL),
-                 RMF_ERROR_NOT_CONVERGED, "at most 6 pieces");
+                 RMF_ERROR_NOT_CONVERGED, "max_pieces = 6");
     CHECK_STATUS(rmf_cone_spline_approximate(NULL, cubic, NULL, 0.2, 1.2, 0.5, 1.0, 1e-3, 0, 1, &untouched, NULL),
                  RMF_ERROR_INVALID_INPUT, "max_pieces");
     CHECK(untouched == sentinel_spline(), "failing approximations write nothing");
@@ -457,7 +457,7 @@ static void test_option_struct_entry_points(void) {
     options.max_pieces = 6;
     options.tolerance = 1e-9;
     CHECK_STATUS(rmf_cone_spline_approximate_with_options(curve, 0.5, 1.0, &options, &untouched, &untouched_err),
-                 RMF_ERROR_NOT_CONVERGED, "at most 6 pieces");
+                 RMF_ERROR_NOT_CONVERGED, "max_pieces = 6");
     options.max_pieces = 100000;
     options.tolerance = 1e-3;
     CHECK_STATUS(rmf_cone_spline_approximate_with_options(curve, -0.5, 1.0, &options, &untouched, &untouched_err),

@@ -119,8 +119,9 @@ static void test_bad_curves(RmfCurve *bottom, RmfCurve *top) {
     CHECK_STATUS(rmf_cone_spline_transition(open, top, &o, &out), RMF_ERROR_INVALID_INPUT, "bottom is not closed");
     CHECK_STATUS(rmf_cone_spline_transition(bottom, bent, &o, &out), RMF_ERROR_INVALID_INPUT, "top is not planar");
     CHECK_STATUS(rmf_cone_spline_transition(concave, top, &o, &out), RMF_ERROR_INVALID_INPUT, "bottom is not convex");
-    /* Two curves in one plane cross each other's planes. */
-    CHECK_STATUS(rmf_cone_spline_transition(bottom, bottom, &o, &out), RMF_ERROR_INVALID_INPUT, "cross");
+    /* Two curves in one plane: neither lies on one side of the other's plane. */
+    CHECK_STATUS(rmf_cone_spline_transition(bottom, bottom, &o, &out), RMF_ERROR_INVALID_INPUT,
+                 "of the plane of bottom");
     CHECK_STATUS(rmf_cone_spline_transition(NULL, top, &o, &out), RMF_ERROR_NULL_POINTER, "bottom");
     CHECK_STATUS(rmf_cone_spline_transition(bottom, NULL, &o, &out), RMF_ERROR_NULL_POINTER, "top");
     CHECK_STATUS(rmf_cone_spline_transition(bottom, top, &o, NULL), RMF_ERROR_NULL_POINTER, "out");

@@ -939,8 +939,8 @@ typedef struct RmfRrmfSplineOptions {
   struct RmfVec3 initial_normal;
   /**
    * Most solves (the sextic (35) for one η) over the whole spline, ≥ 1: each segment
-   * costs eta_samples plus at most 502 (16 to 34 measured) for the refinement, 12 to 70 µs
-   * each. Default SIZE_MAX (no cap).
+   * costs eta_samples plus at most 502 (16 to 34 measured) for the refinement. Default
+   * SIZE_MAX (no cap).
    */
   size_t max_evaluations;
 } RmfRrmfSplineOptions;
@@ -1689,7 +1689,7 @@ RmfStatus rmf_cone_spline_hermite(const struct RmfConeElement *elements,
  * them. It must be regular with non-zero curvature. The fit runs in coordinates centred
  * and scaled on the surface: the same pieces, mapped, for the curve scaled by 1e-200 …
  * 1e200 or moved by 1e6 of its size. A 1,000-turn helix (radius 1, pitch 0.4, v 0.5 to 2)
- * to 1e-2 takes 16,384 pieces and 1.2 to 1.7 s (test build, shared 2-core machine).
+ * to 1e-2 takes 16,384 pieces (times: docs/benchmarks.md).
  *
  * @param[in] curve A curve (e.g. from rmf_nurbs_curve_create), or NULL.
  * @param[in] callback Point and derivative of an analytic curve, or NULL; called on this
@@ -2751,8 +2751,8 @@ RmfStatus rmf_ph_approximation_options_init(struct RmfPhApproximationOptions *ou
  * curve (one for a callback curve), about 1.5 per PH segment on smooth curves (some 25
  * evaluations per segment), and the call ends with
  * RMF_ERROR_NOT_CONVERGED as soon as options->max_segments or options->max_evaluations
- * would be exceeded. Time: about 4 µs per segment plus 35 evaluations of the curve (a cubic
- * NURBS costs about 30 ns per evaluation) on a 2-core x86-64 machine of 2026.
+ * would be exceeded. Work: about 35 evaluations of the curve per segment (times:
+ * docs/benchmarks.md).
  *
  * @param[in] curve A G1 curve (NURBS data, a computed curve or a callback curve from
  *            rmf_callback_curve_create), whole domain; a piecewise curve breaks at its
@@ -3205,8 +3205,8 @@ RmfStatus rmf_curve_polygon(const struct RmfVec3 *corners, size_t count, struct 
 /**
  * The obround (slot): the points at `radius` from the segment of `length` centred on
  * `centre` along `x_axis`, in the plane of `x_axis` and `y_axis`. From the bottom of the
- * end at +x, counter-clockwise about x × y: a half circle (two quarter arcs), a line, a
- * half circle, a line — six pieces on [0, 1] … [5, 6]. A length of 0 gives the circle.
+ * end at −x, counter-clockwise about x × y: a line, a half circle (two quarter arcs), a
+ * line, a half circle — six pieces on [0, 1] … [5, 6]. A length of 0 gives the circle.
  *
  * @param[in] centre The middle of the segment (finite).
  * @param[in] x_axis The segment's direction (finite, non-zero).
@@ -3384,10 +3384,8 @@ RmfStatus rmf_rrmf_quintic_curve(struct RmfVec3 p0,
  *
  * Work: one solve (the sextic (35) for one η, its roots, each solution verified and
  * measured) per sample plus those of the refinement — at most 502, measured 16 to 34 — so
- * eta_samples + 502 solves at most. A solve took 12 to 70 µs on a shared 2-core x86-64
- * machine of 2026 (`cargo bench --bench rrmf_quintic`): 0.6 to 0.9 ms at eta_samples = 16,
- * 4 to 7 s at 100,000, about 26 s at 1,000,000. rmf_rrmf_spline_hermite_with_options
- * caps the solves.
+ * eta_samples + 502 solves at most (times: docs/benchmarks.md, `cargo bench --bench
+ * rrmf_quintic`). rmf_rrmf_spline_hermite_with_options caps the solves.
  *
  * Planar data (chord and tangents coplanar to a sine of 1e-10, scale-free: also a tangent
  * along p1 − p0, or a straight segment), where Section 4 does not apply, get the planar PH
@@ -3432,7 +3430,7 @@ RmfStatus rmf_rrmf_quintic_best(struct RmfVec3 p0,
  * segment the frame is the constant one carried from the segment before.
  *
  * Work: as rmf_rrmf_quintic_best per segment, at most eta_samples + 502 solves (measured:
- * eta_samples + 16 to 34; 12 to 70 µs each), with no bound on the total but the count of
+ * eta_samples + 16 to 34), with no bound on the total but the count of
  * segments: (count − 1) · (eta_samples + 502) solves. rmf_rrmf_spline_hermite_with_options
  * is the same with a cap on the total and a report of the work.
  *
@@ -3485,9 +3483,8 @@ RmfStatus rmf_rrmf_spline_options_init(struct RmfRrmfSplineOptions *out);
  * report of it. The spline is the same as rmf_rrmf_spline_hermite's for the same measure,
  * eta_samples and initial_normal. The work is counted in solves (the sextic (35) for one
  * η, its roots, every solution verified and measured): eta_samples per segment for the
- * scan plus at most 502 (measured 16 to 34) for the refinement, each 12 to 70 µs on a
- * shared 2-core x86-64 machine of 2026 (0.6 to 0.9 ms per segment at eta_samples = 16,
- * 4 to 7 s at 100,000, about 26 s at 1,000,000). The call ends with
+ * scan plus at most 502 (measured 16 to 34) for the refinement (times:
+ * docs/benchmarks.md). The call ends with
  * RMF_ERROR_NOT_CONVERGED as soon as options->max_evaluations solves are spent before the
  * last segment's η is chosen; it never spends more, and a budget of report->evaluations
  * of an uncapped call gives the same spline.

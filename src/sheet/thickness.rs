@@ -133,6 +133,11 @@ pub(crate) fn bend_radius(piece: &ConePiece, trims: &[Trim; 2]) -> f64 {
                         .map(move |t| (t.eval(j as f64 / 32.0) - rho).abs())
                 })
                 .fold(f64::INFINITY, f64::min);
+            // A vertex within rounding of the trim is on the edge (a corner cone trimmed at
+            // its corner): the part is at unit size here, its parameters near 1.
+            if nearest <= 16.0 * f64::EPSILON * rho.abs().max(1.0) {
+                return 0.0;
+            }
             nearest * piece.half_angle().tan()
         }
     }
