@@ -389,8 +389,10 @@ def part_f():
     error = max(abs(edge.distToShape(Part.Vertex(face.Surface.value(u, v)))[0] - 0.2)
                 for u in grid(u0, u1, 9) for v in grid(v0, v1, 41)[1:-1])
     check("RmfSweep: ||point - spine| - radius| (spine tolerance 1e-4)", error, 1e-4)
-    for method in ("mobius", "rrmf"):
-        shape = rmf.sweep_selection([Selected(sketch), Selected(spine, ["Edge1"])], document, method)
+    # Some samples of this spine admit no RRMF quintic at the spacing 1e-4 needs: 1e-2.
+    for method, tolerance in (("mobius", 1e-4), ("rrmf", 1e-2)):
+        shape = rmf.sweep_selection([Selected(sketch), Selected(spine, ["Edge1"])], document,
+                                    method, tolerance)
         require("sweep_selection(%s): one valid face" % method, shape.Shape.isValid())
 
     # A cone frustum (r = 1 at z = 0, r = 0.5 at z = 2, 270 degrees) as an exact rational
