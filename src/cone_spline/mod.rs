@@ -7,7 +7,6 @@
 //! | [`element`] | G1 Hermite elements (ruling, tangent plane, side vector) | "G1 Hermite elements", Fig. 2 |
 //! | [`region`] | the region of interest Ω: a box, or the band of each ruling swept over an interval | "Fundamentals", Figs. 5–6 |
 //! | [`piece`] | one cone/cylinder/plane segment as a ruling swept by a rotation | Figs. 1, 16 |
-//! | [`biarc`] | planar and spherical biarcs, polar (Bézier) planes | (7), (8) |
 //! | [`pair`] | cone pairs through two elements, every case, rules | (5)–(6), (9)–(13), Theorem 1 |
 //! | [`spline`] | the G1 chain, Hermite interpolation of element sequences | |
 //! | [`surface`] | exact degree (1, 2) patches, boundary arc splines, box bounds | Fig. 1 |
@@ -17,9 +16,11 @@
 //! | [`develop`] | bending sequences and the exact development | φ sin α = const, Figs. 16–17 |
 //! | [`offset`] | offsets, again cone splines | "Introduction" |
 //! | [`pattern`] | the flat pattern of a strip: lines and circular arcs for cutting | Figs. 16–17 |
+//!
+//! The biarcs of the pairs (eqs. (7), (8)) and the flat pattern's types live in the model
+//! layer (`crate::model`), shared with the PH offsets, the sheet parts and the exporters.
 
 pub mod approximate;
-pub mod biarc;
 mod develop;
 pub mod developable;
 pub mod element;
@@ -32,10 +33,10 @@ pub mod region;
 pub mod spline;
 mod surface;
 
+pub use crate::model::{FlatPattern, PatternEdge};
 pub use approximate::Approximation;
 pub use element::Element;
 pub use pair::{cone_pair, ConePair, PairCase, Rule};
-pub use pattern::{FlatPattern, PatternEdge};
 pub use piece::{ConePiece, Motion, PieceKind};
 pub use region::{Region, SweptBand};
 pub use spline::ConeSpline;

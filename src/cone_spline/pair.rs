@@ -29,7 +29,6 @@
 //! cone's rulings as |e − e'|²/2, so that nothing cancels; 5,000 pairs of helix-tangent-
 //! surface rulings 0.001 apart all join (330 did before).
 
-use super::biarc::{biarc, equal_lambda, lambda_through, partner_lambda, Biarc};
 use super::developable::Ruling;
 use super::element::{check_consecutive, Element};
 use super::piece::ConePiece;
@@ -38,6 +37,7 @@ use super::region::{Region, SweptBand};
 use crate::error::no_solution;
 use crate::error::{invalid, Error, Result};
 use crate::math::{quadratic_roots, secant_refine, solve_refined};
+use crate::model::biarc::{biarc, equal_lambda, lambda_through, partner_lambda, Biarc};
 use glam::{DMat3, DVec3};
 
 /// |det(p₁, p₂, n₁ − n₂)| below which (13) holds: the constant-slope case.
@@ -851,12 +851,12 @@ fn cylinder_case(a: &Element, b: &Element, rule: Rule, scale: f64) -> Result<Con
 
 #[cfg(test)]
 mod tests {
-    use super::super::biarc::polar_plane;
     use super::super::developable::Developable;
     use super::super::piece::PieceKind;
     use super::super::test_support::{tangent_surface, twisted_cubic, Helix};
     use super::*;
     use crate::curve::ParametricCurve;
+    use crate::model::biarc::polar_plane;
     use glam::DVec4;
     use std::f64::consts::PI;
 

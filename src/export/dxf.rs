@@ -4,7 +4,7 @@
 //! counter-clockwise from its start to its end angle (degrees) about the z axis.
 
 use super::number;
-use crate::cone_spline::{FlatPattern, PatternEdge};
+use crate::model::{FlatPattern, PatternEdge};
 use std::fmt::Write;
 
 /// Group code / value pairs of one entity.

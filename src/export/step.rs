@@ -27,10 +27,10 @@
 //! 17 significant digits, so every double round-trips exactly.
 
 use crate::bezier::{NurbsCurve, NurbsSurface};
-use crate::cone_spline::{FlatPattern, PatternEdge};
 use crate::error::{invalid, Result};
 use crate::math::bounding_diagonal;
 use crate::model::{Brep, BrepBound, BrepEdge, BrepFace, BrepSurface, BrepUse, PCurve};
+use crate::model::{FlatPattern, PatternEdge};
 use glam::DVec3;
 use std::fmt::Write;
 

@@ -4,7 +4,7 @@
 //! so y is negated (the pattern is seen from the side its normals point to).
 
 use super::number;
-use crate::cone_spline::{FlatPattern, PatternEdge};
+use crate::model::{FlatPattern, PatternEdge};
 use glam::DVec2;
 use std::f64::consts::PI;
 use std::fmt::Write;

@@ -5,14 +5,21 @@
 //! | --- | --- |
 //! | `framed` | [`FramedCurve`]: a curve with rational frames adapted to it, what every frame method returns and sweeps and analyses take |
 //! | `topology` | [`Brep`]: vertices, edges shared by faces, loops with pcurves, faces with sense |
+//! | `similarity` | `Similarity`: x ↦ origin + scale·x, how constructions work at unit size |
+//! | `primitives` | circles, arcs, polylines, polygons, obrounds as exact rational pieces |
+//! | `biarc` | planar and spherical biarcs and polar (Bézier) planes (Leopoldseder & Pottmann, eqs. (7), (8)) |
+//! | `pattern` | [`FlatPattern`]: a developed outline of lines and circular arcs with its bend lines |
 
+pub(crate) mod biarc;
 mod framed;
+mod pattern;
 mod primitives;
 mod similarity;
 mod topology;
 
 pub(crate) use framed::on_frame_segments;
 pub use framed::FramedCurve;
+pub use pattern::{FlatPattern, PatternEdge};
 pub(crate) use primitives::Arc;
 pub use primitives::{arc_through, circle, obround, polygon, polyline};
 pub(crate) use similarity::Similarity;

@@ -18,9 +18,9 @@
 
 use super::offset::offset_profile;
 use crate::bezier::{PiecewiseCurve, RationalBezierCurve};
-use crate::cone_spline::biarc::{biarc, equal_lambda};
 use crate::error::{invalid, Error, Num, Result};
 use crate::math::{interior_midpoint, lerp, minimize_bracketed, robust_normalize};
+use crate::model::biarc::{biarc, equal_lambda};
 use glam::DVec3;
 
 /// Intervals between the samples at which the distances are measured.

@@ -21,9 +21,10 @@
 
 use super::thickness::bend_sign;
 use super::trim::{fraction_of_parameter, fraction_rate, TrimKind, TrimmedSpline};
-use crate::cone_spline::biarc::{biarc, equal_lambda};
-use crate::cone_spline::{ConePiece, FlatPattern, Motion, PatternEdge};
+use crate::cone_spline::{ConePiece, Motion};
 use crate::error::{Error, Result};
+use crate::model::biarc::{biarc, equal_lambda};
+use crate::model::{FlatPattern, PatternEdge};
 use glam::{DVec2, DVec3};
 
 /// Points per biarc interval at which its distance from the developed boundary is measured.

@@ -13,9 +13,10 @@ use crate::bezier::{
     NurbsSurface, PiecewiseCurve, PiecewiseSurface, RationalBezierCurve, RationalBezierPatch,
 };
 use crate::cone_spline::developable::{RuledSurface, TangentSurface};
-use crate::cone_spline::{ConePiece, ConeSpline, FlatPattern, PatternEdge};
+use crate::cone_spline::{ConePiece, ConeSpline};
 use crate::error::{invalid, Result};
 use crate::math::in_caller_units;
+use crate::model::{FlatPattern, PatternEdge};
 use glam::{DVec2, DVec3};
 
 /// Which boundary curve of a part: the first (u = 0: a transition's bottom, the first rail)
