@@ -359,7 +359,7 @@ mod tests {
     fn random_and_nearly_degenerate_data_give_ph_cubics_or_clean_errors() {
         use crate::frames::metrics::orthonormality_error;
         use crate::ph_cubic::rational_rmf::{ph_rational_rmf, RmfOptions};
-        use crate::rrmf_quintic::solutions::tests::{near_degenerate_data, random_data};
+        use crate::testing::{near_degenerate_data, random_data};
         let (mut solved, mut refused, mut worst_dip) = (0, 0, 1.0f64);
         for data in random_data(2000).iter().chain(&near_degenerate_data(500)) {
             match ph_cubic_hermite(data) {

@@ -153,7 +153,7 @@ fn polar_angle(t: DVec3, ex: DVec3) -> (f64, DVec3) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::rrmf_quintic::solutions::tests::example_1;
+    use crate::testing::example_1;
 
     #[test]
     fn canonical_coordinates_reproduce_the_data() {

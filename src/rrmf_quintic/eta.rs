@@ -222,7 +222,7 @@ fn refine(
 mod tests {
     use super::*;
     use crate::rrmf_quintic::solutions::solve;
-    use crate::rrmf_quintic::solutions::tests::{check_solution, example_1};
+    use crate::testing::{check_solution, example_1};
     use glam::DVec3;
 
     /// Canonical data with tangent angles θ_i, θ_f and azimuth φ, chord 1.

@@ -99,7 +99,7 @@ pub(crate) mod tests {
     use crate::math::Complex;
     use crate::rrmf_quintic::measures::speed_range;
     use crate::rrmf_quintic::solutions::rrmf_quintics;
-    use crate::rrmf_quintic::solutions::tests::{
+    use crate::testing::{
         check_solution, example_1, near_degenerate_data, random_data, random_vectors,
     };
     use std::sync::Arc;

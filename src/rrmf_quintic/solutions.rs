@@ -252,61 +252,9 @@ pub(super) fn is_regular(unit_chord: &HopfQuadratics) -> bool {
 }
 
 #[cfg(test)]
-pub(crate) mod tests {
+mod tests {
     use super::*;
-
-    /// Example 1 of the paper.
-    pub fn example_1() -> HermiteSegment {
-        HermiteSegment::new(
-            DVec3::ZERO,
-            DVec3::new(1.0, 0.0, 1.0),
-            DVec3::ONE,
-            DVec3::new(0.0, 1.0, 1.0),
-        )
-        .unwrap()
-    }
-
-    /// Deterministic pseudo-random vectors with components in [−1, 1) (a linear
-    /// congruential generator).
-    pub fn random_vectors(seed: u64) -> impl FnMut() -> DVec3 {
-        let mut state = seed;
-        let mut next = move || {
-            state = state
-                .wrapping_mul(6_364_136_223_846_793_005)
-                .wrapping_add(1_442_695_040_888_963_407);
-            (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-        };
-        move || DVec3::new(next(), next(), next())
-    }
-
-    /// Pseudo-random Hermite data with chords of very different lengths.
-    pub fn random_data(count: usize) -> Vec<HermiteSegment> {
-        let mut random = random_vectors(0x2545_f491_4f6c_dd1d);
-        let mut vector = |scale: f64| random() * scale;
-        (0..count)
-            .map(|k| {
-                let scale = 10f64.powi(k as i32 % 5 - 2);
-                let p0 = vector(scale);
-                let p1 = p0 + vector(scale);
-                HermiteSegment::new(p0, vector(1.0), p1, vector(1.0)).unwrap()
-            })
-            .collect()
-    }
-
-    /// Data whose start tangent makes an angle of 10⁻¹ … 10⁻⁹ rad with the chord: close to
-    /// the degenerate case θ_i = 0, with solutions whose speed dips far below its maximum.
-    pub fn near_degenerate_data(count: usize) -> Vec<HermiteSegment> {
-        random_data(count)
-            .into_iter()
-            .enumerate()
-            .map(|(k, d)| {
-                let chord = (d.p1 - d.p0).normalize();
-                let across = crate::math::orthogonalized(d.t0, chord).normalize();
-                let t0 = chord + across * 10f64.powi(-(k as i32 % 9) - 1);
-                HermiteSegment::new(d.p0, t0, d.p1, d.t1).unwrap()
-            })
-            .collect()
-    }
+    use crate::testing::{check_solution, example_1, near_degenerate_data, random_data};
 
     /// `value` rounds to `printed`, given with `decimals` decimals.
     fn agrees(value: f64, printed: f64, decimals: i32) -> bool {
@@ -377,43 +325,6 @@ pub(crate) mod tests {
             w: [(1.0, 0.0), (0.6637, 0.2024), (0.6024, 0.7542)],
             measures: [(1.9070, 4), (5.7495, 4), (1.4641, 4)],
         });
-    }
-
-    /// The checks the issue asks of every returned solution, in original coordinates.
-    pub fn check_solution(data: &HermiteSegment, s: &RrmfQuintic) -> (f64, f64, f64, f64) {
-        let (r7, r8) = s.hopf.rrmf_residuals();
-        assert!(
-            r7 <= 1e-10 && r8 <= 1e-10,
-            "(7), (8) residuals {r7:e}, {r8:e}"
-        );
-        assert!(s.rho > 0.0 && s.hopf.alpha[0].im == 0.0 && s.hopf.alpha[0].re > 0.0);
-        let curve = s.bezier().unwrap();
-        let p: Vec<DVec3> = curve.poles().collect();
-        let size = data.chord_length().max(s.measures.arc_length);
-        let end = (p[0] - data.p0).length().max((p[5] - data.p1).length()) / size;
-        // The curve's derivative r'(0) = R H(α₀, β₀), exact to rounding, and the legs of the
-        // control polygon: their direction is only as good as the poles' coordinates allow,
-        // ε |P₀| / |P₁ − P₀|, which matters when ρ is far from 1 (a short first or last leg).
-        let hodograph = s.hopf.hodograph();
-        let at = |k: usize| s.placement.vector(hodograph[k]);
-        let tangent = angle_between(at(0), data.t0).max(angle_between(at(4), data.t1));
-        let leg =
-            |a: DVec3, b: DVec3| 4.0 * f64::EPSILON * a.length().max(b.length()) / (b - a).length();
-        let legs = angle_between(p[1] - p[0], data.t0).max(angle_between(p[5] - p[4], data.t1));
-        let representable = leg(p[0], p[1]).max(leg(p[4], p[5]));
-        assert!(
-            end <= 1e-12,
-            "end points off by {end:e} (relative to max(chord, L))"
-        );
-        assert!(tangent <= 1e-12, "end tangents off by {tangent:e} rad");
-        assert!(
-            legs <= 1e-12 + representable,
-            "control legs off by {legs:e} rad"
-        );
-        // ρ² is the end-derivative ratio (20), and w certifies the RMF: σ = N₀ |w|².
-        let ratio = hodograph[4].length() / hodograph[0].length();
-        assert!((ratio - s.rho * s.rho).abs() <= 1e-12 * ratio);
-        (r7.max(r8), end, tangent, legs)
     }
 
     /// Nearly degenerate data have roots whose quintic interpolates with an RRMF but dips

@@ -94,7 +94,7 @@ pub(crate) mod tests {
     use crate::frames::{FrameField, FrameKind};
     use crate::hermite::hermite_sequence;
     use crate::rrmf_quintic::frames::tests::{distance_from_double_reflection, frame_errors};
-    use crate::rrmf_quintic::solutions::tests::check_solution;
+    use crate::testing::check_solution;
     use std::f64::consts::PI;
     use std::sync::Arc;
 

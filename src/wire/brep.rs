@@ -42,7 +42,7 @@ use crate::bezier::{
 use crate::error::{invalid, Error, Result};
 use crate::frames::metrics::{angle_about_tangent, partials_cosine};
 use crate::frames::Frame;
-use crate::math::GaussLegendre;
+use crate::math::{binomial, GaussLegendre};
 use crate::mesh::grid_parameters;
 use crate::model::Similarity;
 use crate::model::{Brep, BrepBound, BrepEdge, BrepFace, BrepSurface, BrepUse, PCurve};
@@ -746,7 +746,7 @@ fn line_cosine_bound<const NV: usize>(s: &[DVec4; NV], su: &[DVec4; NV]) -> f64 
     // Scaled Bernstein coefficients C(n, j)·a_j, in which a product is the convolution.
     let scaled = |a: &[DVec4], out: &mut [DVec4]| {
         for (j, (o, &x)) in out.iter_mut().zip(a).enumerate() {
-            *o = x * BINOMIAL[a.len() - 1][j];
+            *o = x * binomial(a.len() - 1, j);
         }
     };
     let (mut s_, mut su_, mut sv_) = (
@@ -780,7 +780,7 @@ fn line_cosine_bound<const NV: usize>(s: &[DVec4; NV], su: &[DVec4; NV]) -> f64 
     let unscaled = |c: &mut [f64]| {
         let d = c.len() - 1;
         for (k, x) in c.iter_mut().enumerate() {
-            *x /= BINOMIAL[d][k];
+            *x /= binomial(d, k);
         }
     };
     unscaled(&mut dot[..4 * n]);
@@ -797,10 +797,10 @@ fn line_cosine_bound<const NV: usize>(s: &[DVec4; NV], su: &[DVec4; NV]) -> f64 
     let mut u_ = [DVec3::ZERO; BOUND_LEN];
     let mut v_ = [DVec3::ZERO; BOUND_LEN];
     for (k, x) in u.iter().enumerate() {
-        u_[k] = *x / BINOMIAL[2 * n][k];
+        u_[k] = *x / binomial(2 * n, k);
     }
     for (k, x) in v.iter().enumerate() {
-        v_[k] = *x / BINOMIAL[2 * n - 1][k];
+        v_[k] = *x / binomial(2 * n - 1, k);
     }
     let mut worst = 0.0f64;
     for i in 0..=COSINE_SAMPLES {
@@ -815,22 +815,6 @@ fn line_cosine_bound<const NV: usize>(s: &[DVec4; NV], su: &[DVec4; NV]) -> f64 
     }
     worst
 }
-
-/// Binomial coefficients C(n, k) for n < BOUND_LEN (exact in f64).
-const BINOMIAL: [[f64; BOUND_LEN]; BOUND_LEN] = {
-    let mut t = [[0.0; BOUND_LEN]; BOUND_LEN];
-    let mut n = 0;
-    while n < BOUND_LEN {
-        t[n][0] = 1.0;
-        let mut k = 1;
-        while k <= n {
-            t[n][k] = t[n - 1][k - 1] + t[n - 1][k];
-            k += 1;
-        }
-        n += 1;
-    }
-    t
-};
 
 /// [`convolve`] of a vector polynomial with itself under the dot product (each pair i < j
 /// once, doubled).
