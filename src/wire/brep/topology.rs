@@ -1,0 +1,339 @@
+//! The topology of a wire sweep: vertices and edges shared by the faces, with a pcurve on
+//! each face, and oriented loops (the notes of the parent module: stations, section and
+//! spine edges, the faces' senses).
+
+use super::*;
+
+/// Vertices and edges shared by the faces (module notes).
+pub(super) struct Topology<'a> {
+    pub(super) vertices: Vec<DVec3>,
+    pub(super) edges: Vec<BrepEdge>,
+    /// Section edges [station][loop][edge] (a closed wire has no station M of its own).
+    sections: Vec<Vec<Vec<usize>>>,
+    /// Spine edges [piece][loop][vertex].
+    spines: Vec<Vec<Vec<usize>>>,
+    images: Option<&'a Vec<Vec<EdgeImage>>>,
+    profile: &'a Profile,
+    stations: usize,
+}
+
+impl<'a> Topology<'a> {
+    pub(super) fn new(
+        transport: &Transport,
+        profile: &'a Profile,
+        nurbs: &[Vec<Vec<NurbsSurface>>],
+        images: Option<&'a Vec<Vec<EdgeImage>>>,
+    ) -> Self {
+        let m = transport.pieces.len();
+        let stations = if transport.closed { m } else { m + 1 };
+        // Vertices and spine edges per station: the profile's vertices.
+        let per_station: usize = profile
+            .loops
+            .iter()
+            .map(|lp| lp.edges.len() + usize::from(!lp.closed))
+            .sum();
+        let mut t = Topology {
+            vertices: Vec::with_capacity(stations * per_station),
+            edges: Vec::with_capacity(stations * profile.edge_count() + m * per_station),
+            sections: Vec::with_capacity(stations),
+            spines: Vec::with_capacity(m),
+            images,
+            profile,
+            stations,
+        };
+        // Vertices [station][loop][vertex].
+        let mut vertex: Vec<Vec<Vec<usize>>> = Vec::with_capacity(stations);
+        for k in 0..stations {
+            let mut loops = Vec::with_capacity(profile.loops.len());
+            for (l, lp) in profile.loops.iter().enumerate() {
+                let count = lp.edges.len() + usize::from(!lp.closed);
+                let ids = (0..count)
+                    .map(|v| {
+                        let (face, at_end) = if k < m {
+                            (&nurbs[k][l], false)
+                        } else {
+                            (&nurbs[m - 1][l], true)
+                        };
+                        let (e, last_u) = if v < lp.edges.len() {
+                            (v, false)
+                        } else {
+                            (v - 1, true)
+                        };
+                        let s = &face[e];
+                        let i = if last_u { s.pole_count_u - 1 } else { 0 };
+                        let j = if at_end { s.pole_count_v - 1 } else { 0 };
+                        t.vertices.push(s.poles[i * s.pole_count_v + j]);
+                        t.vertices.len() - 1
+                    })
+                    .collect();
+                loops.push(ids);
+            }
+            vertex.push(loops);
+        }
+        let vertex_at = |k: usize, l: usize, v: usize| -> usize {
+            if k < stations {
+                return vertex[k][l][v];
+            }
+            // A closed wire's station M: the image of the vertex at station 0.
+            let lp = &profile.loops[l];
+            match images {
+                Some(images) if v < lp.edges.len() => {
+                    let (l2, e2, _) = images[l][v];
+                    vertex[0][l2][e2]
+                }
+                _ => vertex[0][l][v],
+            }
+        };
+        // Section edges.
+        for k in 0..stations {
+            let mut loops = Vec::with_capacity(profile.loops.len());
+            for (l, lp) in profile.loops.iter().enumerate() {
+                let n = lp.edges.len();
+                let ids = (0..n)
+                    .map(|e| {
+                        let (s, side) = if k < m {
+                            (&nurbs[k][l][e], 0)
+                        } else {
+                            (&nurbs[m - 1][l][e], 2)
+                        };
+                        let curve = s.boundary_curve(side);
+                        let next = if lp.closed { (e + 1) % n } else { e + 1 };
+                        t.edges.push(BrepEdge {
+                            curve,
+                            start: vertex[k][l][e],
+                            end: vertex[k][l][next],
+                        });
+                        t.edges.len() - 1
+                    })
+                    .collect();
+                loops.push(ids);
+            }
+            t.sections.push(loops);
+        }
+        // Spine edges.
+        for (j, faces) in nurbs.iter().enumerate().take(m) {
+            let mut loops = Vec::with_capacity(profile.loops.len());
+            for (l, lp) in profile.loops.iter().enumerate() {
+                let n = lp.edges.len();
+                let count = n + usize::from(!lp.closed);
+                let ids = (0..count)
+                    .map(|v| {
+                        let (s, side) = if v < n {
+                            (&faces[l][v], 3)
+                        } else {
+                            (&faces[l][n - 1], 1)
+                        };
+                        t.edges.push(BrepEdge {
+                            curve: s.boundary_curve(side),
+                            start: vertex_at(j, l, v),
+                            end: vertex_at(j + 1, l, v),
+                        });
+                        t.edges.len() - 1
+                    })
+                    .collect();
+                loops.push(ids);
+            }
+            t.spines.push(loops);
+        }
+        t
+    }
+
+    /// The lateral face (j, l, e): its four sides counter-clockwise in (u, v).
+    pub(super) fn lateral_face(
+        &mut self,
+        j: usize,
+        l: usize,
+        e: usize,
+        s: NurbsSurface,
+        same_sense: bool,
+    ) -> BrepFace {
+        let lp = &self.profile.loops[l];
+        let n = lp.edges.len();
+        let next = if lp.closed { (e + 1) % n } else { e + 1 };
+        let sides = [0, 1, 2, 3].map(|k| s.boundary_line(k));
+        let line = |k: usize| {
+            let (u, v) = sides[k].0;
+            if k % 2 == 1 {
+                spine_pcurve(u, &s.knots_v)
+            } else {
+                PCurve::Line {
+                    origin: (u, v),
+                    direction: sides[k].1,
+                }
+            }
+        };
+        let (top_edge, shift) = if j + 1 < self.stations {
+            (self.sections[j + 1][l][e], 0.0)
+        } else {
+            match self.images {
+                Some(images) => {
+                    let (l2, e2, shift) = images[l][e];
+                    (self.sections[0][l2][e2], shift)
+                }
+                None => (self.sections[0][l][e], 0.0),
+            }
+        };
+        let top = PCurve::Line {
+            origin: (sides[2].0 .0 - shift, sides[2].0 .1),
+            direction: sides[2].1,
+        };
+        let uses = vec![
+            BrepUse {
+                edge: self.sections[j][l][e],
+                forward: true,
+                pcurve: Some(line(0)),
+            },
+            BrepUse {
+                edge: self.spines[j][l][next],
+                forward: true,
+                pcurve: Some(line(1)),
+            },
+            BrepUse {
+                edge: top_edge,
+                forward: false,
+                pcurve: Some(top),
+            },
+            BrepUse {
+                edge: self.spines[j][l][e],
+                forward: false,
+                pcurve: Some(line(3)),
+            },
+        ];
+        BrepFace {
+            surface: BrepSurface::Nurbs(s),
+            same_sense,
+            bounds: vec![BrepBound { uses, outer: true }],
+        }
+    }
+
+    /// The cap at the start (`end` false) or the end of an open wire.
+    pub(super) fn cap(
+        &mut self,
+        end: bool,
+        transport: &Transport,
+        profile: &Profile,
+        placement: Similarity,
+    ) -> Result<(Face, BrepFace)> {
+        let m = transport.pieces.len();
+        let (station, framed) = if end {
+            (m, &transport.pieces[m - 1])
+        } else {
+            (0, &transport.pieces[0])
+        };
+        let frame = if end { framed.end } else { framed.start };
+        let origin = if end {
+            framed.piece.geometry.end()
+        } else {
+            framed.piece.geometry.start()
+        };
+        let normal = if end { frame.tangent } else { -frame.tangent };
+        let mut bounds = Vec::new();
+        let mut loops = Vec::new();
+        for (l, lp) in profile.loops.iter().enumerate() {
+            let counter_clockwise = lp.area > 0.0;
+            // Outer loops run counter-clockwise about the outward normal, holes clockwise;
+            // the normal is f₂ × f₃ at the end and its opposite at the start.
+            let forward = (l == 0) == (counter_clockwise == end);
+            let mut uses: Vec<BrepUse> = lp
+                .edges
+                .iter()
+                .enumerate()
+                .map(|(e, edge)| BrepUse {
+                    edge: self.sections[station][l][e],
+                    forward,
+                    pcurve: Some(PCurve::Curve(planar_pcurve(edge, placement.scale, !end))),
+                })
+                .collect();
+            if !forward {
+                uses.reverse();
+            }
+            loops.push(loop_curve(&uses, &self.edges)?);
+            bounds.push(BrepBound {
+                uses,
+                outer: l == 0,
+            });
+        }
+        let origin = placement.to_user(origin);
+        let face = Face {
+            kind: FaceKind::Plane,
+            surface: None,
+            plane: Some((origin, normal)),
+            loops,
+            spine_edge: framed.piece.edge,
+            profile_edge: 0,
+            profile_loop: 0,
+            round_corner: false,
+            reversed: false,
+        };
+        let brep = BrepFace {
+            surface: BrepSurface::Plane {
+                origin,
+                normal,
+                x_axis: frame.f2,
+            },
+            same_sense: true,
+            bounds,
+        };
+        Ok((face, brep))
+    }
+}
+
+/// The parameter line u = const of a spine edge: a `LINE`, or for a face of several spans
+/// along the spine the same line as a degree-1 B-spline with knots at the spans, so that
+/// OpenCascade's adaptive integration (BRepGProp with a tolerance) splits there.
+pub(super) fn spine_pcurve(u: f64, knots_v: &[f64]) -> PCurve {
+    // One span (the clamped ends only): a line, without building the breaks.
+    if knots_v.windows(2).filter(|w| w[0] != w[1]).count() == 1 {
+        return PCurve::Line {
+            origin: (u, 0.0),
+            direction: (0.0, 1.0),
+        };
+    }
+    let mut breaks = knots_v.to_vec();
+    breaks.dedup();
+    let mut knots = vec![breaks[0]];
+    knots.extend_from_slice(&breaks);
+    knots.push(breaks[breaks.len() - 1]);
+    let poles = breaks.iter().map(|&v| DVec3::new(u, v, 0.0)).collect();
+    PCurve::Curve(NurbsCurve::new(1, poles, None, knots).expect("increasing breaks"))
+}
+
+/// A profile edge as a curve in the cap's plane coordinates (x along f₂, y along the
+/// normal × f₂: f₃ at the end, −f₃ at the start), in the caller's units.
+pub(super) fn planar_pcurve(edge: &PiecewiseCurve, scale: f64, flip: bool) -> NurbsCurve {
+    let y = if flip { -1.0 } else { 1.0 };
+    let segments = edge
+        .segments()
+        .iter()
+        .map(|s| {
+            let h = s
+                .homogeneous()
+                .iter()
+                .map(|h| DVec4::new(h.x * scale, h.y * scale * y, 0.0, h.w))
+                .collect();
+            RationalBezierCurve::from_homogeneous(h).expect("finite")
+        })
+        .collect();
+    let curve = PiecewiseCurve::new(segments, edge.breaks().to_vec()).expect("same breaks");
+    NurbsCurve::from_piecewise(&curve).expect("a continuous profile edge")
+}
+
+/// The closed 3-D curve of a cap's bound: its edges' curves in the order and direction of
+/// the uses.
+pub(super) fn loop_curve(uses: &[BrepUse], edges: &[BrepEdge]) -> Result<PiecewiseCurve> {
+    let mut segments: Vec<RationalBezierCurve> = Vec::new();
+    let mut breaks = vec![0.0];
+    for u in uses {
+        let piece = edges[u.edge].curve.to_piecewise()?;
+        let piece = if u.forward {
+            piece
+        } else {
+            super::super::edge::reversed(&piece)
+        };
+        let (lo, _) = piece.domain();
+        let offset = breaks[breaks.len() - 1] - lo;
+        segments.extend_from_slice(piece.segments());
+        breaks.extend(piece.breaks()[1..].iter().map(|b| b + offset));
+    }
+    PiecewiseCurve::new(segments, breaks)
+}
