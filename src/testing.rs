@@ -156,14 +156,14 @@ pub(crate) fn example_1() -> HermiteSegment {
 /// Deterministic pseudo-random vectors with components in [−1, 1) (a linear
 /// congruential generator).
 pub(crate) fn random_vectors(seed: u64) -> impl FnMut() -> DVec3 {
-    let mut state = seed;
-    let mut next = move || {
-        state = state
-            .wrapping_mul(6_364_136_223_846_793_005)
-            .wrapping_add(1_442_695_040_888_963_407);
-        (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-    };
-    move || DVec3::new(next(), next(), next())
+    let mut stream = Stream(seed);
+    move || {
+        DVec3::new(
+            stream.uniform(-1.0, 1.0),
+            stream.uniform(-1.0, 1.0),
+            stream.uniform(-1.0, 1.0),
+        )
+    }
 }
 
 /// Pseudo-random Hermite data with chords of very different lengths.
@@ -230,4 +230,26 @@ pub(crate) fn check_solution(data: &HermiteSegment, s: &RrmfQuintic) -> (f64, f6
     let ratio = hodograph[4].length() / hodograph[0].length();
     assert!((ratio - s.rho * s.rho).abs() <= 1e-12 * ratio);
     (r7.max(r8), end, tangent, legs)
+}
+
+/// A deterministic stream of numbers in [0, 1) (a 64-bit LCG: the tests need no crate).
+pub(crate) struct Stream(pub u64);
+
+impl Stream {
+    pub(crate) fn next(&mut self) -> f64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    pub(crate) fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * self.next()
+    }
+
+    /// 10^x for x uniform in [lo, hi].
+    pub(crate) fn log_uniform(&mut self, lo: f64, hi: f64) -> f64 {
+        10f64.powf(self.uniform(lo, hi))
+    }
 }

@@ -8,6 +8,7 @@ use super::*;
 use crate::bezier::PiecewiseCurve;
 use crate::cone_spline::PatternEdge;
 use crate::math::GaussLegendre;
+use crate::testing::Stream;
 use glam::{DVec2, DVec3};
 
 pub(crate) fn hopper_curves() -> (PiecewiseCurve, PiecewiseCurve) {
@@ -130,19 +131,6 @@ fn square_to_round_hopper_figures() {
     assert!(relative(flat_bottom, bottom_length) <= 1e-9);
     assert!(relative(flat_top, top_length) <= 1e-9);
     assert!(relative(flat_seam[0], seam).max(relative(flat_seam[1], seam)) <= 1e-9);
-}
-
-/// A deterministic stream of numbers in [0, 1) (a 64-bit LCG; the tests need no crate).
-struct Stream(u64);
-
-impl Stream {
-    fn next(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
 }
 
 /// Whether `p` is inside the closed outline, by the winding number of a dense polygon of

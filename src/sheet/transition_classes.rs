@@ -12,30 +12,9 @@ use super::*;
 use crate::bezier::homogeneous::lift;
 use crate::bezier::{PiecewiseCurve, RationalBezierCurve};
 use crate::math::GaussLegendre;
+use crate::testing::Stream;
 use glam::DVec3;
 use std::f64::consts::{FRAC_1_SQRT_2, PI, TAU};
-
-/// A deterministic stream of numbers in [0, 1) (a 64-bit LCG).
-struct Stream(u64);
-
-impl Stream {
-    fn next(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.next()
-    }
-
-    /// 10^x for x uniform in [lo, hi].
-    fn log_uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        10f64.powf(self.uniform(lo, hi))
-    }
-}
 
 /// A closed convex planar curve known in closed form, in the plane through `c` spanned by
 /// the orthonormal `u`, `v`.
