@@ -2,7 +2,9 @@
 //! names files that have since gone):
 //! the relative links `](path)` and the code spans that start with a top-level directory of
 //! the repository (`src/wire/brep.rs`, `examples/cli/pipe.json`, ...). A page that names a
-//! file which moved or never existed fails here.
+//! file which moved or never existed fails here. In a git checkout a path exists when git
+//! tracks it (a file, or a directory holding one): a directory that only a local run created
+//! (`target`, fuzz artifacts) is absent from a clean clone, so it must not count.
 
 use std::path::{Path, PathBuf};
 
@@ -77,8 +79,35 @@ fn as_path(span: &str) -> Option<&str> {
     (candidate && concrete).then_some(word)
 }
 
+/// The files git tracks, relative to the root; `None` outside a git checkout.
+fn tracked() -> Option<Vec<String>> {
+    let out = std::process::Command::new("git")
+        .args(["ls-files", "-z"])
+        .current_dir(root())
+        .output()
+        .ok()?;
+    let text = String::from_utf8(out.stdout).ok()?;
+    let files: Vec<String> = text
+        .split('\0')
+        .filter(|f| !f.is_empty())
+        .map(String::from)
+        .collect();
+    (out.status.success() && !files.is_empty()).then_some(files)
+}
+
+/// Whether `path` (relative to the root, maybe with a trailing `/`) is in the repository.
+fn exists(path: &str, tracked: Option<&[String]>) -> bool {
+    let Some(files) = tracked else {
+        return root().join(path).exists();
+    };
+    let path = path.trim_end_matches('/');
+    let dir = format!("{path}/");
+    files.iter().any(|f| f == path || f.starts_with(&dir))
+}
+
 /// The paths a page names that do not exist.
 fn missing(page: &Path) -> Vec<String> {
+    let tracked = tracked();
     let text = std::fs::read_to_string(page).expect("a page");
     let dir = page.parent().expect("the page's directory");
     let mut missing = Vec::new();
@@ -88,7 +117,7 @@ fn missing(page: &Path) -> Vec<String> {
         }
     }
     for path in code_spans(&text).into_iter().filter_map(as_path) {
-        if !root().join(path).exists() {
+        if !exists(path, tracked.as_deref()) {
             missing.push(path.to_string());
         }
     }
@@ -125,4 +154,14 @@ fn the_check_finds_an_absent_path_and_a_broken_link() {
     let found = missing(&page);
     std::fs::remove_file(&page).unwrap();
     assert_eq!(found, ["link no_such_page.md", "src/no_such_module.rs"]);
+}
+
+#[test]
+fn a_directory_only_a_local_run_created_is_absent() {
+    let files = ["src/lib.rs".to_string(), "fuzz/run".to_string()];
+    assert!(exists("src/lib.rs", Some(&files)));
+    assert!(exists("src/", Some(&files)));
+    assert!(exists("fuzz/", Some(&files)));
+    assert!(!exists("fuzz/artifacts/", Some(&files)));
+    assert!(!exists("src/li", Some(&files)));
 }
