@@ -3025,11 +3025,12 @@ RmfStatus rmf_sweep_parabolic_points(const struct RmfCurve *spine,
  * @return RMF_OK on success or for a size query.
  * @return RMF_ERROR_NULL_POINTER If spine, frames, profile or count is NULL, or points is
  *         NULL with capacity > 0.
- * @return RMF_ERROR_INVALID_INPUT If tolerance is not finite and positive, the frames are not
- *         rotation-minimizing rational frames of the spine, or frame pieces × profile
- *         segments exceed 2^15.
+ * @return RMF_ERROR_INVALID_INPUT If tolerance is not finite and positive or below one
+ *         rounding of the profile's coordinates, the frames are not rotation-minimizing
+ *         rational frames of the spine, or frame pieces × profile segments exceed 2^15.
  * @return RMF_ERROR_NOT_CONVERGED If the lines need more than 2^20 vertices at this
- *         tolerance, or the spine's curvature direction turns too fast to be followed.
+ *         tolerance (estimated before they are refined, so the refusal is quick), or the
+ *         spine's curvature direction turns too fast to be followed.
  * @return RMF_ERROR_BUFFER_TOO_SMALL If 0 < capacity < count; then only count is written.
  * \since 0.2
  * \ingroup rmf_sweeps

@@ -142,6 +142,26 @@ macro_rules! no_solution {
 }
 pub(crate) use {invalid, no_solution};
 
+/// Refuses a tolerance below one rounding of coordinates up to `largest`, which no
+/// construction can measure, let alone reach; `whose` completes "at … coordinates" ("the
+/// curve's", "the profile's").
+pub(crate) fn check_resolution(tolerance: f64, largest: f64, whose: &str) -> Result<()> {
+    let rounding = f64::EPSILON * largest;
+    if tolerance < rounding {
+        return Err(below_resolution(tolerance, largest, whose));
+    }
+    Ok(())
+}
+
+/// The refusal of [`check_resolution`].
+pub(crate) fn below_resolution(tolerance: f64, largest: f64, whose: &str) -> Error {
+    Error::invalid_input(format!(
+        "tolerance = {tolerance:.3e} is below what f64 resolves at {whose} coordinates \
+         (up to {largest:.3e}: one rounding is {:.3e})",
+        f64::EPSILON * largest
+    ))
+}
+
 /// A number as messages print it: at most six significant digits, in plain form between
 /// 1e-4 and 1e6 and as `1.5e-200` outside (Rust's `{}` writes 1e200 with 200 digits). The
 /// one formatter of numbers in messages, of the geometry and of the C layer.

@@ -1099,9 +1099,16 @@ fn rows() -> Vec<Row> {
         Row {
             what: "parabolic line tolerance 1e-300",
             function: "rmf_sweep_parabolic_curves",
-            expected: NOT_CONVERGED,
+            expected: INVALID,
             names: "tolerance",
             call: |f| parabolic_curves_count(f, 1e-300),
+        },
+        Row {
+            what: "parabolic line tolerance 1e-14",
+            function: "rmf_sweep_parabolic_curves",
+            expected: NOT_CONVERGED,
+            names: "tolerance",
+            call: |f| parabolic_curves_count(f, 1e-14),
         },
         Row {
             what: "Möbius segments above 2²⁴",

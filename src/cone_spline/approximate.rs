@@ -147,11 +147,9 @@ pub fn approximate(
                 String::new()
             }
         )),
-        FitError::Resolution { largest } => Error::invalid_input(format!(
-            "tolerance = {tolerance:.3e} is below what f64 resolves at the surface's \
-             coordinates (up to {largest:.3e}: one rounding is {:.3e})",
-            f64::EPSILON * largest
-        )),
+        FitError::Resolution { largest } => {
+            crate::error::below_resolution(tolerance, largest, "the surface's")
+        }
         FitError::Other(e) => e,
     })
 }

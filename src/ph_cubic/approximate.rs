@@ -290,15 +290,7 @@ pub fn ph_spline_approximate_with(
 /// A tolerance below the rounding of the curve's coordinates cannot be measured, let alone
 /// reached.
 fn check_resolution(tolerance: f64, sampler: &Sampler) -> Result<()> {
-    let resolution = sampler.resolution();
-    if tolerance < resolution {
-        return invalid!(
-            "tolerance = {tolerance:.3e} is below what f64 resolves at the curve's coordinates \
-             (up to {:.3e}: one rounding is {resolution:.3e})",
-            sampler.largest.get()
-        );
-    }
-    Ok(())
+    crate::error::check_resolution(tolerance, sampler.largest.get(), "the curve's")
 }
 
 /// The marching of the module notes.

@@ -21,7 +21,7 @@
 use super::analysis::{global, ProfileSurface};
 use super::profile::interior_roots;
 use crate::bezier::bernstein;
-use crate::error::{invalid, Error, Num, Result};
+use crate::error::{check_resolution, invalid, Error, Num, Result};
 use crate::math::{
     illinois_root, interior_midpoint, minimize_bracketed, robust_length, robust_normalize,
     sampled_roots,
@@ -41,6 +41,14 @@ const MAX_DIRECTION_HALVINGS: usize = 30;
 
 /// Most polyline points one call returns.
 pub const MAX_PARABOLIC_POINTS: usize = 1 << 20;
+
+/// A trace estimated to need more than [`MAX_PARABOLIC_POINTS`] is refused before it is
+/// refined. The estimate, √(d/τ) points for a spine sample interval whose line is d from the
+/// chord at its middle (d shrinks with the square of the interval), is what halving reaches
+/// on a line of constant curvature; halving makes powers of two, so the trace takes up to
+/// twice as many. It overestimates only where the line turns within a small part of an
+/// interval, hence the margin.
+const ESTIMATE_MARGIN: f64 = 2.0;
 
 /// |k| below this fraction of its largest value on the frame piece counts as k = 0.
 const VANISHING_CURVATURE: f64 = 1e-9;
@@ -77,24 +85,14 @@ pub fn trace(surface: &ProfileSurface<'_>, tolerance: f64) -> Result<Vec<Parabol
     if !(tolerance.is_finite() && tolerance > 0.0) {
         return invalid!("tolerance = {} must be finite and positive", Num(tolerance));
     }
-    let pieces = sub_pieces(surface);
-    let mut tracer = Tracer {
-        surface,
-        tolerance,
-        points: 0,
-    };
-    let mut graphs = Vec::new();
-    let fb = surface.frames().breaks();
-    for j in 0..fb.len() - 1 {
-        if surface.frame_piece_is_straight(j) {
-            continue;
-        }
-        let direction = tracer.direction(j)?;
-        graphs.extend(tracer.spine_inflections(j, &direction)?);
-        for piece in &pieces {
-            graphs.extend(tracer.graphs(j, &direction, piece)?);
-        }
-    }
+    let largest = surface
+        .profile()
+        .segments()
+        .iter()
+        .flat_map(|s| s.poles())
+        .fold(0.0f64, |m, p| m.max(p.abs().max_element()));
+    check_resolution(tolerance, largest, "the profile's")?;
+    let graphs = Tracer::new(surface, tolerance).all_graphs()?;
     Ok(join(graphs, surface, tolerance))
 }
 
@@ -180,7 +178,106 @@ struct Tracer<'s, 'a> {
     points: usize,
 }
 
-impl Tracer<'_, '_> {
+/// A line of the trace before refinement: done (a line v = const), or a graph at the spine
+/// samples of frame piece `directions[frame]` on sub-piece `piece`.
+enum Planned {
+    Done(ParabolicCurve),
+    Coarse {
+        frame: usize,
+        piece: usize,
+        points: Vec<(f64, f64)>,
+    },
+}
+
+impl<'s, 'a> Tracer<'s, 'a> {
+    fn new(surface: &'s ProfileSurface<'a>, tolerance: f64) -> Self {
+        Tracer {
+            surface,
+            tolerance,
+            points: 0,
+        }
+    }
+
+    /// The graphs on every curved sub-piece over every curved frame piece, and the lines
+    /// where the spine inflects, not yet joined: first every graph at the spine samples,
+    /// then, if the estimate of the points they need is within bounds, refined.
+    fn all_graphs(&mut self) -> Result<Vec<ParabolicCurve>> {
+        let pieces = sub_pieces(self.surface);
+        let fb = self.surface.frames().breaks();
+        let mut directions = Vec::new();
+        let mut planned = Vec::new();
+        for j in 0..fb.len() - 1 {
+            if self.surface.frame_piece_is_straight(j) {
+                continue;
+            }
+            let direction = self.direction(j)?;
+            for line in self.spine_inflections(j, &direction)? {
+                planned.push(Planned::Done(line));
+            }
+            for (p, piece) in pieces.iter().enumerate() {
+                for (v0, v1) in self.runs(j, &direction, piece) {
+                    let points = self.coarse(j, &direction, piece, v0, v1);
+                    planned.push(Planned::Coarse {
+                        frame: directions.len(),
+                        piece: p,
+                        points,
+                    });
+                }
+            }
+            directions.push((j, direction));
+        }
+        self.check_estimate(&planned, &directions, &pieces)?;
+        let mut graphs = Vec::with_capacity(planned.len());
+        for line in planned {
+            graphs.push(match line {
+                Planned::Done(line) => line,
+                Planned::Coarse {
+                    frame,
+                    piece,
+                    points,
+                } => {
+                    let (j, direction) = &directions[frame];
+                    self.refined(*j, direction, &pieces[piece], &points)?
+                }
+            });
+        }
+        Ok(graphs)
+    }
+
+    /// Refuses a trace estimated to need more than [`MAX_PARABOLIC_POINTS`] (see
+    /// [`ESTIMATE_MARGIN`]).
+    fn check_estimate(
+        &self,
+        planned: &[Planned],
+        directions: &[(usize, Direction)],
+        pieces: &[SubPiece],
+    ) -> Result<()> {
+        let mut estimate = 0.0;
+        for line in planned {
+            let Planned::Coarse {
+                frame,
+                piece,
+                points,
+            } = line
+            else {
+                continue;
+            };
+            let (j, direction) = &directions[*frame];
+            for w in points.windows(2) {
+                let Some(v) = interior_midpoint(w[0].1, w[1].1) else {
+                    continue;
+                };
+                let middle = self.root(*j, direction, &pieces[*piece], v);
+                let off = self.surface.separation(middle, 0.5 * (w[0].0 + w[1].0));
+                estimate += (off / (0.5 * self.tolerance)).sqrt().ceil().max(1.0);
+            }
+        }
+        if estimate > ESTIMATE_MARGIN * MAX_PARABOLIC_POINTS as f64 {
+            return Err(self.too_many());
+        }
+        Ok(())
+    }
+
     /// Samples of the curvature direction on frame piece j, refined until neighbouring
     /// directions differ by less than 30°, oriented to turn continuously.
     fn direction(&self, j: usize) -> Result<Direction> {
@@ -287,14 +384,10 @@ impl Tracer<'_, '_> {
         Ok(lines)
     }
 
-    /// The graphs u(v) of the line (14) on one sub-piece of the profile over frame piece j:
-    /// on the runs of v between roots of F at the piece's ends where the piece holds a root.
-    fn graphs(
-        &mut self,
-        j: usize,
-        direction: &Direction,
-        piece: &SubPiece,
-    ) -> Result<Vec<ParabolicCurve>> {
+    /// The intervals of v where the line (14) has a graph u(v) on one sub-piece of the
+    /// profile over frame piece j: the runs between roots of F at the piece's ends where the
+    /// piece holds a root.
+    fn runs(&self, j: usize, direction: &Direction, piece: &SubPiece) -> Vec<(f64, f64)> {
         let end_value =
             |e: usize, v: f64| end_condition(piece.ends[e], self.oriented(j, direction, v));
         let (va, vb) = (direction.vs[0], *direction.vs.last().expect("samples"));
@@ -325,9 +418,7 @@ impl Tracer<'_, '_> {
                 _ => runs.push((w[0], w[1])),
             }
         }
-        runs.into_iter()
-            .map(|(v0, v1)| self.graph(j, direction, piece, v0, v1))
-            .collect()
+        runs
     }
 
     /// The root of F(·, v) on the sub-piece as a global profile parameter: at an end where F
@@ -359,31 +450,35 @@ impl Tracer<'_, '_> {
         global(self.surface.profile().breaks(), piece.segment, s)
     }
 
-    /// The graph on [v0, v1]: the spine samples inside, then halved where the polyline's
-    /// middle is farther than the tolerance from the line.
-    fn graph(
-        &mut self,
+    /// The graph on [v0, v1] at the spine samples inside.
+    fn coarse(
+        &self,
         j: usize,
         direction: &Direction,
         piece: &SubPiece,
         v0: f64,
         v1: f64,
-    ) -> Result<ParabolicCurve> {
+    ) -> Vec<(f64, f64)> {
         let mut vs = vec![v0];
         vs.extend(direction.vs.iter().copied().filter(|&v| v > v0 && v < v1));
         vs.push(v1);
-        let mut points = vec![(self.root(j, direction, piece, v0), v0)];
-        for w in vs.windows(2) {
-            let right = (self.root(j, direction, piece, w[1]), w[1]);
-            self.refine(
-                j,
-                direction,
-                piece,
-                *points.last().expect("a point"),
-                right,
-                &mut points,
-                0,
-            )?;
+        vs.into_iter()
+            .map(|v| (self.root(j, direction, piece, v), v))
+            .collect()
+    }
+
+    /// The graph through the `coarse` points, halved where the polyline's middle is farther
+    /// than the tolerance from the line.
+    fn refined(
+        &mut self,
+        j: usize,
+        direction: &Direction,
+        piece: &SubPiece,
+        coarse: &[(f64, f64)],
+    ) -> Result<ParabolicCurve> {
+        let mut points = vec![coarse[0]];
+        for w in coarse.windows(2) {
+            self.refine(j, direction, piece, w[0], w[1], &mut points, 0)?;
         }
         Ok(ParabolicCurve { points })
     }
@@ -425,13 +520,17 @@ impl Tracer<'_, '_> {
     fn count(&mut self, more: usize) -> Result<()> {
         self.points += more;
         if self.points > MAX_PARABOLIC_POINTS {
-            return Err(Error::not_converged(format!(
-                "the parabolic lines need more than {MAX_PARABOLIC_POINTS} points at tolerance {}: \
-                 use a larger tolerance or split the sweep",
-                Num(self.tolerance)
-            )));
+            return Err(self.too_many());
         }
         Ok(())
+    }
+
+    fn too_many(&self) -> Error {
+        Error::not_converged(format!(
+            "the parabolic lines need more than {MAX_PARABOLIC_POINTS} points at tolerance {}: \
+             use a larger tolerance or split the sweep",
+            Num(self.tolerance)
+        ))
     }
 }
 
@@ -870,6 +969,40 @@ mod tests {
                 assert!(p.1 >= 0.0 && q.1 >= 0.0);
             }
         }
+    }
+
+    #[test]
+    fn tolerances_below_the_profiles_rounding_are_refused_at_every_scale() {
+        for scale in [1e-200, 1.0, 1e200] {
+            let spine = helix_spline(2, 0.6);
+            let rmf = ph_rational_rmf(&spine, &RmfOptions::rmf(DVec3::Z)).unwrap();
+            let profile = circle(0.2 * scale, DVec3::ZERO, 0.0);
+            let analysis = ProfileSurface::new(&rmf.framed, &profile).unwrap();
+            // One rounding of the profile's coordinates (up to 0.2√2·scale) is 6.3e-17·scale.
+            let e = analysis.parabolic_curves(4e-17 * scale).unwrap_err();
+            assert_eq!(e.kind(), crate::ErrorKind::InvalidInput, "{e}");
+            assert!(
+                e.message()
+                    .contains("below what f64 resolves at the profile's"),
+                "{e}"
+            );
+            assert!(analysis.parabolic_curves(1e-7 * scale).is_ok());
+        }
+    }
+
+    #[test]
+    fn a_trace_far_beyond_the_point_bound_is_refused_before_it_is_refined() {
+        let spine = helix_spline(2, 0.6);
+        let rmf = ph_rational_rmf(&spine, &RmfOptions::rmf(DVec3::Z)).unwrap();
+        let profile = circle(0.2, DVec3::ZERO, 0.0);
+        let analysis = ProfileSurface::new(&rmf.framed, &profile).unwrap();
+        // Resolvable (a few roundings), but the lines need about 3·10⁶ points at it (4·10⁵ at
+        // 1e-13, where the estimate is 3·10⁵).
+        let mut tracer = Tracer::new(&analysis, 1e-15);
+        let e = tracer.all_graphs().unwrap_err();
+        assert_eq!(e.kind(), crate::ErrorKind::NotConverged, "{e}");
+        assert!(e.message().contains("more than 1048576 points"), "{e}");
+        assert_eq!(tracer.points, 0, "points refined before the refusal");
     }
 
     #[test]

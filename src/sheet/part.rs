@@ -511,8 +511,8 @@ fn flip_u(patch: RationalBezierPatch, flip: bool) -> RationalBezierPatch {
         .expect("the same points")
 }
 
-/// Refuses a tolerance below the rounding of the input's coordinates `points`, which no
-/// construction can reach (`whose` names them in the message: "curves", …).
+/// Refuses a tolerance below the rounding of the input's coordinates `points` (`whose` names
+/// them in the message: "curves", …).
 fn check_resolution(
     tolerance: f64,
     points: impl IntoIterator<Item = DVec3>,
@@ -522,19 +522,12 @@ fn check_resolution(
         .into_iter()
         .map(|p| p.abs().max_element())
         .fold(0.0, f64::max);
-    let rounding = f64::EPSILON * largest;
-    if tolerance < rounding {
-        let whose = if whose == "curves" {
-            "the curves'".to_string()
-        } else {
-            format!("the {whose}")
-        };
-        return invalid!(
-            "tolerance = {tolerance:.3e} is below what f64 resolves at {whose} coordinates \
-             (up to {largest:.3e}: one rounding is {rounding:.3e})"
-        );
-    }
-    Ok(())
+    let whose = if whose == "curves" {
+        "the curves'".to_string()
+    } else {
+        format!("the {whose}")
+    };
+    crate::error::check_resolution(tolerance, largest, &whose)
 }
 
 /// A piece in the caller's coordinates.
