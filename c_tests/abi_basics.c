@@ -50,9 +50,11 @@ static void test_version_and_status_names(void) {
           "header version macros agree with rmf_version()");
     CHECK(strcmp(rmf_status_name(RMF_ERROR_NULL_POINTER), "RMF_ERROR_NULL_POINTER") == 0, "status name");
     CHECK(strcmp(rmf_status_name(RMF_ERROR_INTERNAL), "RMF_ERROR_INTERNAL") == 0, "status name");
+    CHECK(strcmp(rmf_status_name(RMF_ERROR_IO), "RMF_ERROR_IO") == 0, "status name");
     CHECK(strcmp(rmf_status_name(12345u), "RMF_UNKNOWN_STATUS") == 0, "unknown status");
     CHECK(RMF_OK == 0 && RMF_ERROR_NULL_POINTER == 1 && RMF_ERROR_INVALID_INPUT == 2 && RMF_ERROR_NO_SOLUTION == 3 &&
-              RMF_ERROR_NOT_CONVERGED == 4 && RMF_ERROR_BUFFER_TOO_SMALL == 5 && RMF_ERROR_INTERNAL == 6,
+              RMF_ERROR_NOT_CONVERGED == 4 && RMF_ERROR_BUFFER_TOO_SMALL == 5 && RMF_ERROR_INTERNAL == 6 &&
+              RMF_ERROR_IO == 7,
           "status values are fixed");
     CHECK(rmf_last_error() != NULL, "rmf_last_error is never NULL");
 }

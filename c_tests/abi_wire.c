@@ -164,6 +164,39 @@ static void test_options(void) {
     CHECK_STATUS(rmf_wire_sweep_options_init(NULL), RMF_ERROR_NULL_POINTER, "options");
 }
 
+/* rmf_shape_step gives the file's text (the product named after the file's stem), with a size
+   query, and refuses a buffer without room for the NUL, writing only the length. */
+static void check_step_text_is_the_file(const RmfShape *shape, const char *path) {
+    char stem[512];
+    const char *base = strrchr(path, '/') ? strrchr(path, '/') + 1 : path;
+    snprintf(stem, sizeof stem, "%s", base);
+    if (strrchr(stem, '.')) *strrchr(stem, '.') = 0;
+    size_t length = 0, again = 0;
+    CHECK_STATUS(rmf_shape_step(shape, stem, NULL, 0, &length), RMF_OK, "");
+    char *text = malloc(length + 1), *file_text = malloc(length + 2);
+    FILE *file = fopen(path, "rb");
+    if (!text || !file_text || !file) {
+        CHECK(0, "buffers and the file");
+        free(text), free(file_text);
+        if (file) fclose(file);
+        return;
+    }
+    size_t read = fread(file_text, 1, length + 1, file);
+    fclose(file);
+    memset(text, 'x', length + 1);
+    CHECK_STATUS(rmf_shape_step(shape, stem, text, length, &again), RMF_ERROR_BUFFER_TOO_SMALL, "need");
+    CHECK(again == length && text[0] == 'x', "too small: the length, no text");
+    CHECK_STATUS(rmf_shape_step(shape, stem, text, length + 1, &again), RMF_OK, "");
+    CHECK(read == length && again == length && text[length] == 0 && memcmp(text, file_text, length) == 0,
+          "the text is the file, byte for byte");
+    CHECK_STATUS(rmf_shape_step(shape, NULL, text, 0, NULL), RMF_ERROR_NULL_POINTER, "length");
+    CHECK_STATUS(rmf_shape_step(shape, NULL, NULL, 8, &again), RMF_ERROR_NULL_POINTER, "buffer");
+    CHECK_STATUS(rmf_shape_step(NULL, NULL, NULL, 0, &again), RMF_ERROR_NULL_POINTER, "shape");
+    CHECK_STATUS(rmf_shape_step(shape, "\xff", NULL, 0, &again), RMF_ERROR_INVALID_INPUT, "name is not UTF-8");
+    free(text);
+    free(file_text);
+}
+
 static void test_pipe_route(void) {
     RmfEdge e[3];
     RmfCurve *profile = circle(1), *hole = circle(0.8);
@@ -222,6 +255,7 @@ static void test_pipe_route(void) {
         fclose(file);
         CHECK(solid, "a MANIFOLD_SOLID_BREP");
     }
+    check_step_text_is_the_file(shape, path);
     remove(path);
     /* With a hole: the annulus. */
     const RmfCurve *holes[1] = {hole};
@@ -422,7 +456,7 @@ static void test_bad_inputs(void) {
         CHECK_STATUS(rmf_shape_report(shape, NULL), RMF_ERROR_NULL_POINTER, "out");
         CHECK_STATUS(rmf_shape_report(NULL, &r), RMF_ERROR_NULL_POINTER, "shape");
         CHECK_STATUS(rmf_shape_write_step(shape, NULL), RMF_ERROR_NULL_POINTER, "path");
-        CHECK_STATUS(rmf_shape_write_step(shape, "no/such/directory/pipe.step"), RMF_ERROR_INVALID_INPUT,
+        CHECK_STATUS(rmf_shape_write_step(shape, "no/such/directory/pipe.step"), RMF_ERROR_IO,
                      "cannot write");
         CHECK(fopen("no/such/directory/pipe.step", "r") == NULL, "nothing written");
         rmf_shape_free(shape);

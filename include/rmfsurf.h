@@ -413,6 +413,10 @@ enum RmfStatus
    * An internal error (a caught panic); please report it.
    */
   RMF_ERROR_INTERNAL = 6,
+  /**
+   * A file or stream could not be written (the message names the path and says why).
+   */
+  RMF_ERROR_IO = 7,
 };
 #ifndef __cplusplus
 #if __STDC_VERSION__ >= 202311L
@@ -3603,11 +3607,39 @@ RmfStatus rmf_shape_report(const struct RmfShape *shape, struct RmfSweepReport *
  * @param[in] path The file's path (NUL-terminated; its stem names the product).
  * @return RMF_OK on success.
  * @return RMF_ERROR_NULL_POINTER If shape or path is NULL.
- * @return RMF_ERROR_INVALID_INPUT If the file cannot be written (the message says why).
+ * @return RMF_ERROR_INVALID_INPUT If the shape cannot be written as STEP.
+ * @return RMF_ERROR_IO If the file cannot be written (the message names it and says why).
  * \since 0.2
  * \ingroup rmf_export
  */
 RmfStatus rmf_shape_write_step(const struct RmfShape *shape, const char *path);
+
+/**
+ * The STEP AP214 text of a shape, as rmf_shape_write_step writes it, into a caller buffer:
+ * for a caller that writes the file or stream itself, or hands the text to a reader
+ * (OpenCascade's STEPControl_Reader reads a stream).
+ *
+ * Size query: with capacity 0 (buffer may be NULL) only length is written. Otherwise the
+ * text and a terminating NUL are written if capacity ≥ length + 1.
+ *
+ * @param[in] shape The shape.
+ * @param[in] name The product's name (NUL-terminated UTF-8), or NULL for "rmfsurf".
+ * @param[out] buffer capacity bytes for the text and its NUL.
+ * @param[in] capacity Size of buffer in bytes; 0 for a size query.
+ * @param[out] length Receives the length of the text (without the NUL).
+ * @return RMF_OK on success or for a size query.
+ * @return RMF_ERROR_NULL_POINTER If shape or length is NULL, or buffer is NULL with a
+ *         non-zero capacity.
+ * @return RMF_ERROR_BUFFER_TOO_SMALL If 0 < capacity ≤ length; length is written.
+ * @return RMF_ERROR_INVALID_INPUT If name is not UTF-8.
+ * \since 0.2
+ * \ingroup rmf_export
+ */
+RmfStatus rmf_shape_step(const struct RmfShape *shape,
+                         const char *name,
+                         char *buffer,
+                         size_t capacity,
+                         size_t *length);
 
 /**
  * Writes the default options and the struct's size.

@@ -19,6 +19,8 @@ pub(crate) enum FfiError {
     BufferTooSmall(String),
     /// The geometry core refused the input.
     Core(Error),
+    /// A file or stream could not be written (the message names it and says why).
+    Io(String),
 }
 
 impl From<Error> for FfiError {
@@ -43,6 +45,7 @@ pub(crate) fn guard(function: &str, body: impl FnOnce() -> FfiResult) -> RmfStat
             (RmfStatus::RmfErrorNullPointer, format!("{name} is NULL"))
         }
         Ok(Err(FfiError::BufferTooSmall(m))) => (RmfStatus::RmfErrorBufferTooSmall, m),
+        Ok(Err(FfiError::Io(m))) => (RmfStatus::RmfErrorIo, m),
         Ok(Err(FfiError::Core(e))) => (RmfStatus::from(&e), e.message()),
         Err(panic) => {
             let what = panic
@@ -176,6 +179,31 @@ pub(crate) unsafe fn buffer<'a, T>(
         return invalid_arg(format!("{name}: capacity {capacity} is too large"));
     }
     Ok(std::slice::from_raw_parts_mut(p, capacity))
+}
+
+/// Hands a text to the caller the way every export of the C API does: `length` receives its
+/// length without the NUL; with `capacity` 0 (`out` empty) that is all (a size query); a
+/// capacity without room for the text and its NUL is refused with BUFFER_TOO_SMALL (the
+/// length still written); otherwise the text and a NUL are copied to the front of `out`.
+///
+/// # Safety
+/// `length` must be valid for a write (checked with [`out_ptr`]).
+pub(crate) unsafe fn hand_text(text: &str, out: &mut [u8], length: *mut usize) -> FfiResult {
+    let bytes = text.as_bytes();
+    write(length, bytes.len());
+    if out.is_empty() {
+        return Ok(());
+    }
+    if out.len() <= bytes.len() {
+        return Err(FfiError::BufferTooSmall(format!(
+            "need {} bytes (the text and its NUL), capacity is {}",
+            bytes.len() + 1,
+            out.len()
+        )));
+    }
+    out[..bytes.len()].copy_from_slice(bytes);
+    out[bytes.len()] = 0;
+    Ok(())
 }
 
 /// Hands a list to the caller the way every list call of the C API does: `count` receives

@@ -300,7 +300,8 @@ pub unsafe extern "C" fn rmf_shape_report(
 /// @param[in] path The file's path (NUL-terminated; its stem names the product).
 /// @return RMF_OK on success.
 /// @return RMF_ERROR_NULL_POINTER If shape or path is NULL.
-/// @return RMF_ERROR_INVALID_INPUT If the file cannot be written (the message says why).
+/// @return RMF_ERROR_INVALID_INPUT If the shape cannot be written as STEP.
+/// @return RMF_ERROR_IO If the file cannot be written (the message names it and says why).
 /// \since 0.2
 /// \ingroup rmf_export
 #[no_mangle]
@@ -322,7 +323,51 @@ pub unsafe extern "C" fn rmf_shape_write_step(
             .unwrap_or("rmfsurf");
         let text = shape.shape.to_step(name)?;
         write_atomically(path, text.as_bytes())
-            .or_else(|e| invalid_arg(format!("cannot write {}: {e}", path.display())))
+            .map_err(|e| FfiError::Io(format!("cannot write {}: {e}", path.display())))
+    })
+}
+
+/// The STEP AP214 text of a shape, as rmf_shape_write_step writes it, into a caller buffer:
+/// for a caller that writes the file or stream itself, or hands the text to a reader
+/// (OpenCascade's STEPControl_Reader reads a stream).
+///
+/// Size query: with capacity 0 (buffer may be NULL) only length is written. Otherwise the
+/// text and a terminating NUL are written if capacity ≥ length + 1.
+///
+/// @param[in] shape The shape.
+/// @param[in] name The product's name (NUL-terminated UTF-8), or NULL for "rmfsurf".
+/// @param[out] buffer capacity bytes for the text and its NUL.
+/// @param[in] capacity Size of buffer in bytes; 0 for a size query.
+/// @param[out] length Receives the length of the text (without the NUL).
+/// @return RMF_OK on success or for a size query.
+/// @return RMF_ERROR_NULL_POINTER If shape or length is NULL, or buffer is NULL with a
+///         non-zero capacity.
+/// @return RMF_ERROR_BUFFER_TOO_SMALL If 0 < capacity ≤ length; length is written.
+/// @return RMF_ERROR_INVALID_INPUT If name is not UTF-8.
+/// \since 0.2
+/// \ingroup rmf_export
+#[no_mangle]
+pub unsafe extern "C" fn rmf_shape_step(
+    shape: *const RmfShape,
+    name: *const c_char,
+    buffer: *mut c_char,
+    capacity: usize,
+    length: *mut usize,
+) -> RmfStatus {
+    guard("rmf_shape_step", || {
+        let shape = reference(shape, "shape")?;
+        let length = out_ptr(length, "length")?;
+        let out = crate::boundary::buffer(buffer.cast::<u8>(), capacity, "buffer")?;
+        let name = if name.is_null() {
+            "rmfsurf"
+        } else {
+            match CStr::from_ptr(name).to_str() {
+                Ok(name) => name,
+                Err(e) => return invalid_arg(format!("name is not UTF-8: {e}")),
+            }
+        };
+        let text = shape.shape.to_step(name)?;
+        crate::boundary::hand_text(&text, out, length)
     })
 }
 

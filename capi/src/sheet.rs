@@ -714,19 +714,6 @@ pub unsafe extern "C" fn rmf_cone_spline_part_export(
                 ))
             }
         };
-        let bytes = text.as_bytes();
-        if capacity != 0 && capacity <= bytes.len() {
-            write(length, bytes.len());
-            return Err(FfiError::BufferTooSmall(format!(
-                "need {} bytes (the text and its NUL), capacity is {capacity}",
-                bytes.len() + 1
-            )));
-        }
-        if capacity != 0 {
-            out[..bytes.len()].copy_from_slice(bytes);
-            out[bytes.len()] = 0;
-        }
-        write(length, bytes.len());
-        Ok(())
+        crate::boundary::hand_text(&text, out, length)
     })
 }

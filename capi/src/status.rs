@@ -28,10 +28,12 @@ pub enum RmfStatus {
     RmfErrorBufferTooSmall = 5,
     /// An internal error (a caught panic); please report it.
     RmfErrorInternal = 6,
+    /// A file or stream could not be written (the message names the path and says why).
+    RmfErrorIo = 7,
 }
 
 /// All statuses with their C names, in value order.
-const STATUS_NAMES: [(RmfStatus, &str); 7] = [
+const STATUS_NAMES: [(RmfStatus, &str); 8] = [
     (RmfStatus::RmfOk, "RMF_OK\0"),
     (RmfStatus::RmfErrorNullPointer, "RMF_ERROR_NULL_POINTER\0"),
     (RmfStatus::RmfErrorInvalidInput, "RMF_ERROR_INVALID_INPUT\0"),
@@ -42,6 +44,7 @@ const STATUS_NAMES: [(RmfStatus, &str); 7] = [
         "RMF_ERROR_BUFFER_TOO_SMALL\0",
     ),
     (RmfStatus::RmfErrorInternal, "RMF_ERROR_INTERNAL\0"),
+    (RmfStatus::RmfErrorIo, "RMF_ERROR_IO\0"),
 ];
 
 impl From<&Error> for RmfStatus {

@@ -23,8 +23,9 @@ CAD adapters: :mod:`rmfsurf.ocp` (OpenCascade's Python bindings, as used by buil
 CadQuery) and :mod:`rmfsurf.freecad` (FreeCAD's Part objects).
 """
 
-from ._core import (BufferTooSmallError, InternalError, InvalidInputError, NoSolutionError,
-                    NotConvergedError, NullPointerError, RmfError, ffi, lib, live_handles)
+from ._core import (BufferTooSmallError, FileError, InternalError, InvalidInputError,
+                    NoSolutionError, NotConvergedError, NullPointerError, RmfError, ffi, lib,
+                    live_handles)
 from .cone_splines import (ConeElement, ConePiece, ConeSpline, FlatPattern,
                            cone_spline_approximate, cone_spline_approximate_dual,
                            cone_spline_approximate_ruled, cone_spline_hermite,

@@ -29,6 +29,7 @@ __all__ = [
     "NotConvergedError",
     "BufferTooSmallError",
     "InternalError",
+    "FileError",
 ]
 
 
@@ -90,10 +91,16 @@ class InternalError(RmfError):
     status = 6
 
 
+class FileError(RmfError, OSError):
+    """RMF_ERROR_IO: a file could not be written (the message names it and says why)."""
+
+    status = 7
+
+
 _ERRORS: Dict[int, Type[RmfError]] = {
     cls.status: cls
     for cls in (NullPointerError, InvalidInputError, NoSolutionError, NotConvergedError,
-                BufferTooSmallError, InternalError)
+                BufferTooSmallError, InternalError, FileError)
 }
 
 

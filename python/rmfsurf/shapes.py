@@ -167,7 +167,8 @@ class Shape:
 
     def write_step(self, path: Union[str, bytes, "os.PathLike[Any]"]) -> None:
         """Writes the shape as a STEP file (exact faces, a closed shell for a solid) at
-        `path` (str, bytes or os.PathLike; InvalidInputError for a name with a NUL)."""
+        `path` (str, bytes or os.PathLike; InvalidInputError for a name with a NUL,
+        FileError, an OSError, when the file cannot be written)."""
         call("rmf_shape_write_step", self._ptr, _core.path(path, "path"))
 
     def __repr__(self) -> str:

@@ -349,6 +349,17 @@ def test_str_bytes_and_path_like_write_the_file_they_name(case, name, make, writ
         assert f.read().startswith(b"ISO-10303-21;")
 
 
+@pytest.mark.parametrize("case", PATHS, ids=[c[0] for c in PATHS])
+def test_a_file_that_cannot_be_written_is_a_file_error_naming_it(case, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(rmfsurf.FileError) as info:
+        case[1](tmp_path / "no" / "such" / "pipe.step")
+    assert isinstance(info.value, OSError)
+    assert info.value.status_name == "RMF_ERROR_IO"
+    assert "cannot write" in info.value.message and "pipe.step" in info.value.message
+    assert _listing(tmp_path) == []
+
+
 # ---------------------------------------------------------------------------------------
 # Sequences of library objects: (key, call, one valid item). One item alone is a sequence
 # of one; anything else that is not a sequence is a TypeError naming the argument, an item
