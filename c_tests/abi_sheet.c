@@ -37,17 +37,8 @@ static RmfCurve *polygon(const RmfVec3 *corners, size_t n) {
 
 /* The circle about (cx, cy, cz) in a horizontal plane, four rational quadratic quarters. */
 static RmfCurve *circle(double cx, double cy, double cz, double r) {
-    static const double xs[9] = {1, 1, 0, -1, -1, -1, 0, 1, 1}, ys[9] = {0, 1, 1, 1, 0, -1, -1, -1, 0};
-    static const double knots[12] = {0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 4};
-    RmfVec3 poles[9];
-    double weights[9];
     RmfCurve *curve = NULL;
-    int i;
-    for (i = 0; i < 9; i++) {
-        poles[i] = vec3(cx + r * xs[i], cy + r * ys[i], cz);
-        weights[i] = i % 2 ? sqrt(0.5) : 1.0;
-    }
-    CHECK_STATUS(rmf_nurbs_curve_create(2, poles, weights, 9, knots, 12, &curve), RMF_OK, "");
+    CHECK_STATUS(rmf_curve_circle(vec3(cx, cy, cz), vec3(1, 0, 0), vec3(0, 1, 0), r, &curve), RMF_OK, "");
     return curve;
 }
 

@@ -115,12 +115,9 @@ static RmfCurve *nurbs(uint32_t degree, const RmfVec3 *poles, const double *weig
 
 /* The circle of radius r about the origin, four rational quarters. */
 static RmfCurve *circle(double r) {
-    const double s = 0.70710678118654752440;
-    const RmfVec3 p[9] = {vec3(r, 0, 0),   vec3(r, r, 0),   vec3(0, r, 0),  vec3(-r, r, 0), vec3(-r, 0, 0),
-                          vec3(-r, -r, 0), vec3(0, -r, 0), vec3(r, -r, 0), vec3(r, 0, 0)};
-    const double w[9] = {1, s, 1, s, 1, s, 1, s, 1};
-    const double k[12] = {0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 4};
-    return nurbs(2, p, w, 9, k);
+    RmfCurve *curve = NULL;
+    CHECK_STATUS(rmf_curve_circle(vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0), r, &curve), RMF_OK, "");
+    return curve;
 }
 
 /* The square of half side a, counter-clockwise. */

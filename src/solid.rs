@@ -261,21 +261,9 @@ pub(crate) mod tests {
 
     /// The unit circle (four rational quadratic quarters) or, `open`, three of them.
     fn circle(open: bool) -> PiecewiseCurve {
-        let s = std::f64::consts::FRAC_1_SQRT_2;
-        let corner = |a: DVec3, c: DVec3, b: DVec3| {
-            RationalBezierCurve::from_weighted(&[a, c, b], &[1.0, s, 1.0]).unwrap()
-        };
-        let (x, y) = (DVec3::X, DVec3::Y);
-        let mut quarters = vec![
-            corner(x, x + y, y),
-            corner(y, y - x, -x),
-            corner(-x, -x - y, -y),
-            corner(-y, x - y, x),
-        ];
-        if open {
-            quarters.pop();
-        }
-        PiecewiseCurve::with_unit_intervals(quarters).unwrap()
+        let full = crate::primitives::circle(DVec3::ZERO, DVec3::X, DVec3::Y, 1.0).unwrap();
+        let quarters = if open { 3 } else { 4 };
+        PiecewiseCurve::with_unit_intervals(full.segments()[..quarters].to_vec()).unwrap()
     }
 
     /// Σ ½ sin Δθ over the polygon through the profile's grid points (the area of the

@@ -367,35 +367,7 @@ fn curve(degree: u32, poles: &[RmfVec3]) -> *mut RmfCurve {
 
 /// The circle of radius r (four rational quarters).
 fn circle(r: f64) -> *mut RmfCurve {
-    let s = std::f64::consts::FRAC_1_SQRT_2;
-    let c = [
-        (1., 0.),
-        (1., 1.),
-        (0., 1.),
-        (-1., 1.),
-        (-1., 0.),
-        (-1., -1.),
-        (0., -1.),
-        (1., -1.),
-        (1., 0.),
-    ];
-    let poles: Vec<RmfVec3> = c.iter().map(|&(x, y)| v(r * x, r * y, 0.)).collect();
-    let weights: Vec<f64> = (0..9).map(|k| if k % 2 == 1 { s } else { 1.0 }).collect();
-    let knots = [0., 0., 0., 1., 1., 2., 2., 3., 3., 4., 4., 4.];
-    let mut out = null_mut();
-    let status = unsafe {
-        rmf_nurbs_curve_create(
-            2,
-            poles.as_ptr(),
-            weights.as_ptr(),
-            9,
-            knots.as_ptr(),
-            12,
-            &mut out,
-        )
-    };
-    assert_eq!(status, RmfStatus::RmfOk);
-    out
+    circle_curve(v(0.0, 0.0, 0.0), r)
 }
 
 /// rmf_wire_sweep of `edges` and `profile` (freed after) with `holes` and options edited by
@@ -502,24 +474,13 @@ fn polygon_curve(corners: &[RmfVec3]) -> *mut RmfCurve {
 }
 
 fn circle_curve(centre: RmfVec3, r: f64) -> *mut RmfCurve {
-    let xs = [1., 1., 0., -1., -1., -1., 0., 1., 1.];
-    let ys = [0., 1., 1., 1., 0., -1., -1., -1., 0.];
-    let poles: Vec<RmfVec3> = (0..9)
-        .map(|i| v(centre.x + r * xs[i], centre.y + r * ys[i], centre.z))
-        .collect();
-    let weights: Vec<f64> = (0..9)
-        .map(|i| if i % 2 == 1 { 0.5f64.sqrt() } else { 1.0 })
-        .collect();
-    let knots = [0., 0., 0., 1., 1., 2., 2., 3., 3., 4., 4., 4.];
     let mut out = null_mut();
     let status = unsafe {
-        rmf_nurbs_curve_create(
-            2,
-            poles.as_ptr(),
-            weights.as_ptr(),
-            9,
-            knots.as_ptr(),
-            12,
+        rmfsurf_capi::primitives::rmf_curve_circle(
+            centre,
+            v(1.0, 0.0, 0.0),
+            v(0.0, 1.0, 0.0),
+            r,
             &mut out,
         )
     };

@@ -342,28 +342,7 @@ fn polyline_wire() -> impl Strategy<Value = Vec<DVec3>> {
 
 /// The circle of radius r about the origin (four rational quarters).
 fn circle_profile(r: f64) -> PiecewiseCurve {
-    let s = std::f64::consts::FRAC_1_SQRT_2;
-    let c = [
-        (1., 0.),
-        (1., 1.),
-        (0., 1.),
-        (-1., 1.),
-        (-1., 0.),
-        (-1., -1.),
-        (0., -1.),
-        (1., -1.),
-        (1., 0.),
-    ];
-    let poles = c
-        .iter()
-        .map(|&(x, y)| DVec3::new(r * x, r * y, 0.0))
-        .collect();
-    let weights = (0..9).map(|k| if k % 2 == 1 { s } else { 1.0 }).collect();
-    let knots = vec![0., 0., 0., 1., 1., 2., 2., 3., 3., 4., 4., 4.];
-    NurbsCurve::new(2, poles, Some(weights), knots)
-        .unwrap()
-        .to_piecewise()
-        .unwrap()
+    rmfsurf::primitives::circle(DVec3::ZERO, DVec3::X, DVec3::Y, r).unwrap()
 }
 
 fn sweep_polyline(points: &[DVec3], r: f64, corner: Corner) -> rmfsurf::Result<Shape> {
@@ -485,24 +464,13 @@ fn polygon_handle(corners: &[DVec3]) -> *mut rmfsurf_capi::RmfCurve {
 
 /// The horizontal circle about `centre` of radius `r` (four rational quadratics).
 fn circle_handle(centre: DVec3, r: f64) -> *mut rmfsurf_capi::RmfCurve {
-    let xs = [1., 1., 0., -1., -1., -1., 0., 1., 1.];
-    let ys = [0., 1., 1., 1., 0., -1., -1., -1., 0.];
-    let poles: Vec<RmfVec3> = (0..9)
-        .map(|i| vec3(centre + DVec3::new(xs[i], ys[i], 0.0) * r))
-        .collect();
-    let weights: Vec<f64> = (0..9)
-        .map(|i| if i % 2 == 1 { 0.5f64.sqrt() } else { 1.0 })
-        .collect();
-    let knots = [0., 0., 0., 1., 1., 2., 2., 3., 3., 4., 4., 4.];
     let mut out = null_mut();
     let status = unsafe {
-        rmfsurf_capi::curve::rmf_nurbs_curve_create(
-            2,
-            poles.as_ptr(),
-            weights.as_ptr(),
-            9,
-            knots.as_ptr(),
-            12,
+        rmfsurf_capi::primitives::rmf_curve_circle(
+            vec3(centre),
+            vec3(DVec3::X),
+            vec3(DVec3::Y),
+            r,
             &mut out,
         )
     };

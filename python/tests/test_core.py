@@ -26,11 +26,7 @@ def helix_data(n=9, pitch=0.2):
 
 
 def circle(radius=RADIUS):
-    poles = radius * np.array([[1, 0, 0], [1, 1, 0], [0, 1, 0], [-1, 1, 0], [-1, 0, 0],
-                               [-1, -1, 0], [0, -1, 0], [1, -1, 0], [1, 0, 0]], dtype=float)
-    weights = [1, S, 1, S, 1, S, 1, S, 1]
-    knots = rmfsurf.flat_knots([0, 1, 2, 3, 4], [3, 2, 2, 2, 3])
-    return rmfsurf.Curve.from_nurbs(2, poles, knots, weights)
+    return rmfsurf.circle(radius)
 
 
 def angle(a, b):

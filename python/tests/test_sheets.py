@@ -11,7 +11,6 @@ import pytest
 import rmfsurf
 from nurbs import curve_point, surface_point
 
-S = math.sqrt(0.5)
 
 
 def square(half=100.0, z=0.0):
@@ -20,10 +19,7 @@ def square(half=100.0, z=0.0):
 
 
 def circle(centre=(20.0, 0.0, 150.0), radius=60.0):
-    unit = np.array([[1, 0, 0], [1, 1, 0], [0, 1, 0], [-1, 1, 0], [-1, 0, 0], [-1, -1, 0],
-                     [0, -1, 0], [1, -1, 0], [1, 0, 0]], dtype=float)
-    knots = rmfsurf.flat_knots([0, 1, 2, 3, 4], [3, 2, 2, 2, 3])
-    return rmfsurf.Curve.from_nurbs(2, np.array(centre) + radius * unit, knots, [1, S, 1, S, 1, S, 1, S, 1])
+    return rmfsurf.circle(radius, centre)
 
 
 @pytest.fixture(scope="module")

@@ -650,25 +650,13 @@ mod tests {
     use crate::ph_cubic::test_curves::{helix_spline, s_profile};
     use crate::sweep::sweep;
     use glam::DVec3;
-    use std::f64::consts::FRAC_PI_2;
 
     /// A circle of `radius` about `centre` from four quarter arcs, starting at the angle
     /// `start`: u ∈ [0, 4], angle start + uπ/2.
     fn circle(radius: f64, centre: DVec3, start: f64) -> PiecewiseCurve {
-        let w = std::f64::consts::FRAC_1_SQRT_2;
-        let at = |a: f64, r: f64| centre + r * DVec3::new(a.cos(), a.sin(), 0.0);
-        let arcs = (0..4)
-            .map(|q| {
-                let a = start + q as f64 * FRAC_PI_2;
-                let poles = [
-                    at(a, radius),
-                    at(a + FRAC_PI_2 / 2.0, radius * 2f64.sqrt()),
-                    at(a + FRAC_PI_2, radius),
-                ];
-                RationalBezierCurve::from_weighted(&poles, &[1.0, w, 1.0]).unwrap()
-            })
-            .collect();
-        PiecewiseCurve::new(arcs, vec![0.0, 1.0, 2.0, 3.0, 4.0]).unwrap()
+        let (sin, cos) = start.sin_cos();
+        let (x, y) = (DVec3::new(cos, sin, 0.0), DVec3::new(-sin, cos, 0.0));
+        crate::primitives::circle(centre, x, y, radius).unwrap()
     }
 
     /// The Gaussian curvature of the exported sweep at (u, v) (its own fundamental forms).

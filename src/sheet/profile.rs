@@ -515,9 +515,21 @@ pub(crate) mod tests {
         PiecewiseCurve::with_unit_intervals(segments).unwrap()
     }
 
-    /// The circle about `centre` in the plane spanned by `x`, `y` (unit, orthogonal), as
-    /// four rational quadratic quarters.
+    /// The circle about `centre` in the plane of `x`, `y` (the library's primitive) or, for
+    /// axes that are not orthonormal, the ellipse with the conjugate semi-axes `radius`·x and
+    /// `radius`·y.
     pub fn circle(centre: DVec3, x: DVec3, y: DVec3, radius: f64) -> PiecewiseCurve {
+        let unit = |v: DVec3| (v.length() - 1.0).abs() <= 1e-15;
+        if unit(x) && unit(y) && x.dot(y).abs() <= 1e-15 {
+            crate::primitives::circle(centre, x, y, radius).unwrap()
+        } else {
+            ellipse(centre, x, y, radius)
+        }
+    }
+
+    /// The ellipse about `centre` with the conjugate semi-axes `radius`·x and `radius`·y, as
+    /// four rational quadratic quarters (the affine image of a circle's).
+    fn ellipse(centre: DVec3, x: DVec3, y: DVec3, radius: f64) -> PiecewiseCurve {
         let at = |k: i32| {
             let a = k as f64 * PI / 2.0;
             centre + radius * (a.cos() * x + a.sin() * y)
@@ -596,7 +608,7 @@ pub(crate) mod tests {
     #[test]
     fn smooth_nurbs_arcs_find_their_support_points() {
         // An ellipse-like closed curve: the circle squashed by 1/2 in y (still rational).
-        let c = circle(DVec3::ZERO, DVec3::X, DVec3::Y * 0.5, 1.0);
+        let c = ellipse(DVec3::ZERO, DVec3::X, DVec3::Y * 0.5, 1.0);
         let p = ConvexProfile::new(&c, "top").unwrap();
         for k in 0..12 {
             let theta = -3.0 + k as f64 * 0.5;

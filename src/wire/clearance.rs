@@ -13,15 +13,40 @@
 //! x. Each candidate is decided by subdivision: the boxes of the parts bound their distance
 //! from below, their corner points (which lie on the surface) from above.
 //!
+//! Before two patches are subdivided, their spine segments are. Every point of a lateral
+//! patch is a section point x(v) + c₁f₂ + c₂f₃ with orthonormal frames normal to the
+//! tangent t(v), |c| ≤ R (the profile's reach). Hence two tests, each deciding every pair of
+//! patches of the two segments at once:
+//! - tubes: the patch lies within R of its spine segment, so segments farther apart than
+//!   2R + gap keep their patches apart (a thin profile along a spine that doubles back);
+//! - slabs: along a direction d, the section point's offset from x(v) is at most
+//!   R·sin∠(d, t(v)), and t(v) lies in the cone of the differences of the segment's control
+//!   points; projected on d (the chord between the segments' middles), the two segments'
+//!   ranges widened so must be more than the gap apart (sections along a short straight or
+//!   gently bent spine, a wide profile, many turns of twist).
+//!
+//! A leg cut by a miter reaches beyond its segment and is always compared patch by patch.
+//!
 //! Only lateral faces are compared. With one profile along the whole wire, another part of
 //! the solid cannot pass through an end cap without crossing the lateral faces beside it:
 //! its section in the cap's plane is at least as large as the cap.
 
-use crate::bezier::{PiecewiseSurface, RationalBezierPatch};
+use crate::bezier::{PiecewiseCurve, PiecewiseSurface, RationalBezierCurve, RationalBezierPatch};
 use glam::DVec3;
+use std::collections::HashMap;
 
 /// Subdivisions one candidate pair may take before it is left undecided.
 const PAIR_BUDGET: usize = 40_000;
+
+/// Subdivisions one pair of spine segments may take before it is left to the patches.
+const SPINE_BUDGET: usize = 200;
+
+/// What bounds the lateral patches of each piece: its spine on the surfaces' v-breaks (one
+/// segment per patch row; `None` for a leg cut by a miter) and the profile's reach.
+pub(crate) struct Tubes {
+    pub spines: Vec<Option<PiecewiseCurve>>,
+    pub reach: f64,
+}
 
 /// Two points of the sweep closer than the gap, on patches that do not meet by
 /// construction.
@@ -43,6 +68,8 @@ struct Element<'a> {
     position: usize,
     piece: usize,
     patch: &'a RationalBezierPatch,
+    /// The spine segment the patch lies within the reach of, unless cut by a miter.
+    spine: Option<&'a RationalBezierCurve>,
     lo: DVec3,
     hi: DVec3,
 }
@@ -52,6 +79,7 @@ struct Element<'a> {
 /// spine segment is followed by its first.
 pub(crate) fn self_contact(
     surfaces: &[Vec<Vec<PiecewiseSurface>>],
+    tubes: &Tubes,
     closed: bool,
     gap: f64,
 ) -> Option<Contact> {
@@ -66,10 +94,16 @@ pub(crate) fn self_contact(
                 for b in 0..nv {
                     let patch = face.patch(a, b);
                     let (lo, hi) = control_box(patch);
+                    let spine = tubes.spines[piece]
+                        .as_ref()
+                        .filter(|c| c.segments().len() == nv)
+                        .map(|c| &c.segments()[b])
+                        .filter(|c| sections_reach(patch, c, tubes.reach));
                     elements.push(Element {
                         position: offset + b,
                         piece,
                         patch,
+                        spine,
                         lo,
                         hi,
                     });
@@ -84,6 +118,8 @@ pub(crate) fn self_contact(
         d <= 1 || (closed && total - d <= 1)
     };
     elements.sort_by(|a, b| a.lo.x.total_cmp(&b.lo.x));
+    let tube_gap = 2.0 * tubes.reach + gap;
+    let mut spines_apart: HashMap<(usize, usize), bool> = HashMap::new();
     let mut undecided: Option<Contact> = None;
     for (i, a) in elements.iter().enumerate() {
         for b in elements[i + 1..].iter() {
@@ -92,6 +128,15 @@ pub(crate) fn self_contact(
             }
             if meet(a.position, b.position) || box_distance(a.lo, a.hi, b.lo, b.hi) > gap {
                 continue;
+            }
+            if let (Some(sa), Some(sb)) = (a.spine, b.spine) {
+                let key = (a.position.min(b.position), a.position.max(b.position));
+                let apart = *spines_apart.entry(key).or_insert_with(|| {
+                    slabs_apart(sa, sb, tubes.reach, gap) || curves_apart(sa, sb, tube_gap)
+                });
+                if apart {
+                    continue;
+                }
             }
             match closest_below(a.patch, b.patch, gap) {
                 Verdict::Apart => {}
@@ -166,6 +211,102 @@ fn closest_below(a: &RationalBezierPatch, b: &RationalBezierPatch, gap: f64) -> 
     Verdict::Apart
 }
 
+/// Whether two curves are proven farther apart than `distance` (subdividing the longer part
+/// while the boxes of the parts are within it); false when their ends come within it or
+/// the budget runs out.
+fn curves_apart(a: &RationalBezierCurve, b: &RationalBezierCurve, distance: f64) -> bool {
+    let mut stack = vec![(a.clone(), b.clone())];
+    let mut budget = SPINE_BUDGET;
+    while let Some((p, q)) = stack.pop() {
+        let ((plo, phi), (qlo, qhi)) = (curve_box(&p), curve_box(&q));
+        if box_distance(plo, phi, qlo, qhi) > distance {
+            continue;
+        }
+        let ends = |c: &RationalBezierCurve| [c.eval(0.0), c.eval(1.0)];
+        let near = ends(&p)
+            .iter()
+            .any(|x| ends(&q).iter().any(|y| x.distance(*y) <= distance));
+        if near || budget == 0 {
+            return false;
+        }
+        budget -= 1;
+        let (larger, other, first) = if (phi - plo).length() >= (qhi - qlo).length() {
+            (p, q, true)
+        } else {
+            (q, p, false)
+        };
+        let (left, right) = larger.split(0.5);
+        for part in [left, right] {
+            stack.push(if first {
+                (part, other.clone())
+            } else {
+                (other.clone(), part)
+            });
+        }
+    }
+    true
+}
+
+/// Whether the patch's corners lie within `reach` of the segment's ends at their own v (the
+/// patch is swept along this segment): the tests on spines hold only then.
+fn sections_reach(patch: &RationalBezierPatch, spine: &RationalBezierCurve, reach: f64) -> bool {
+    let [u0v0, u0v1, u1v0, u1v1] = corners(patch);
+    let (s0, s1) = (spine.eval(0.0), spine.eval(1.0));
+    let slack = reach * (1.0 + 1e-9) + 1e-12 * s0.abs().max(s1.abs()).max_element();
+    [(u0v0, s0), (u1v0, s0), (u0v1, s1), (u1v1, s1)]
+        .iter()
+        .all(|(x, s)| x.distance(*s) <= slack)
+}
+
+/// Whether the sections along two spine segments are more than `gap` apart along the
+/// chord between the segments' middles (module notes).
+fn slabs_apart(a: &RationalBezierCurve, b: &RationalBezierCurve, reach: f64, gap: f64) -> bool {
+    let Some(d) = (b.eval(0.5) - a.eval(0.5)).try_normalize() else {
+        return false;
+    };
+    let range = |c: &RationalBezierCurve| {
+        let (lo, hi) = c
+            .poles()
+            .map(|p| p.dot(d))
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), x| {
+                (lo.min(x), hi.max(x))
+            });
+        let widening = reach * sine_bound(c, d);
+        (lo - widening, hi + widening)
+    };
+    let ((alo, ahi), (blo, bhi)) = (range(a), range(b));
+    blo - ahi > gap || alo - bhi > gap
+}
+
+/// A bound on sin∠(d, t) over the curve's tangents t: they lie in the cone of the
+/// differences of its control points (positive weights); while the cone keeps within 90° of
+/// d its largest angle to d is at a generator, otherwise 1.
+fn sine_bound(curve: &RationalBezierCurve, d: DVec3) -> f64 {
+    let poles: Vec<DVec3> = curve.poles().collect();
+    let mut sine: f64 = 0.0;
+    for (k, p) in poles.iter().enumerate() {
+        for q in &poles[k + 1..] {
+            let Some(w) = (*q - *p).try_normalize() else {
+                continue;
+            };
+            if w.dot(d) <= 0.0 {
+                return 1.0;
+            }
+            sine = sine.max(w.cross(d).length());
+        }
+    }
+    sine.min(1.0)
+}
+
+/// The box about a curve's projected control points.
+fn curve_box(curve: &RationalBezierCurve) -> (DVec3, DVec3) {
+    curve
+        .poles()
+        .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), p| {
+            (lo.min(p), hi.max(p))
+        })
+}
+
 /// The box about a patch's projected control points.
 fn control_box(patch: &RationalBezierPatch) -> (DVec3, DVec3) {
     patch
@@ -195,4 +336,42 @@ fn corners(patch: &RationalBezierPatch) -> [DVec3; 4] {
 fn longer_along_u(patch: &RationalBezierPatch) -> bool {
     let [c00, c0n, cm0, cmn] = corners(patch);
     c00.distance(cm0) + c0n.distance(cmn) >= c00.distance(c0n) + cm0.distance(cmn)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn segment(a: DVec3, b: DVec3) -> RationalBezierCurve {
+        RationalBezierCurve::polynomial(&[a, (a + b) * 0.5, b]).unwrap()
+    }
+
+    #[test]
+    fn sections_of_a_straight_spine_are_apart_by_the_segments_between() {
+        let (a, b) = (
+            segment(DVec3::ZERO, DVec3::X),
+            segment(DVec3::X * 1.5, DVec3::X * 2.5),
+        );
+        // However wide the profile: the normal sections are 0.5 apart.
+        assert!(slabs_apart(&a, &b, 100.0, 0.49));
+        assert!(!slabs_apart(&a, &b, 100.0, 0.51));
+        assert!(!curves_apart(&a, &b, 2.0 * 100.0 + 0.49));
+        assert!(curves_apart(&a, &b, 0.49));
+    }
+
+    #[test]
+    fn sections_of_a_bent_spine_are_widened_by_the_turn_of_the_tangent() {
+        // The second segment turns by 60°: its sections lean towards the first one by up to
+        // reach·sin 60° along the chord.
+        let a = segment(DVec3::ZERO, DVec3::X);
+        let turn = DVec3::new(0.5, 3f64.sqrt() / 2.0, 0.0);
+        let b = segment(DVec3::X * 2.0, DVec3::X * 2.0 + turn);
+        assert!(slabs_apart(&a, &b, 0.5, 0.1));
+        assert!(!slabs_apart(&a, &b, 2.0, 0.1));
+        // A segment turning back on itself: the tangents leave the half-space, no bound.
+        let back =
+            RationalBezierCurve::polynomial(&[DVec3::X * 3.0, DVec3::X * 4.0, DVec3::X * 3.5])
+                .unwrap();
+        assert_eq!(sine_bound(&back, DVec3::X), 1.0);
+    }
 }

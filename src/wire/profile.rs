@@ -382,41 +382,11 @@ impl SupportTable {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::wire::tests::circle;
 
     fn polyline(points: &[(f64, f64)]) -> PiecewiseCurve {
-        let segments = points
-            .windows(2)
-            .map(|w| {
-                RationalBezierCurve::polynomial(&[
-                    DVec3::new(w[0].0, w[0].1, 0.0),
-                    DVec3::new(w[1].0, w[1].1, 0.0),
-                ])
-                .unwrap()
-            })
-            .collect();
-        PiecewiseCurve::with_unit_intervals(segments).unwrap()
-    }
-
-    pub(crate) fn circle(r: f64) -> PiecewiseCurve {
-        let s = std::f64::consts::FRAC_1_SQRT_2;
-        let q = |a: (f64, f64), m: (f64, f64), b: (f64, f64)| {
-            RationalBezierCurve::from_weighted(
-                &[
-                    DVec3::new(a.0, a.1, 0.0) * r,
-                    DVec3::new(m.0, m.1, 0.0) * r,
-                    DVec3::new(b.0, b.1, 0.0) * r,
-                ],
-                &[1.0, s, 1.0],
-            )
-            .unwrap()
-        };
-        PiecewiseCurve::with_unit_intervals(vec![
-            q((1., 0.), (1., 1.), (0., 1.)),
-            q((0., 1.), (-1., 1.), (-1., 0.)),
-            q((-1., 0.), (-1., -1.), (0., -1.)),
-            q((0., -1.), (1., -1.), (1., 0.)),
-        ])
-        .unwrap()
+        let points: Vec<DVec3> = points.iter().map(|p| DVec3::new(p.0, p.1, 0.0)).collect();
+        crate::primitives::polyline(&points).unwrap()
     }
 
     #[test]

@@ -11,25 +11,7 @@ use std::f64::consts::{FRAC_1_SQRT_2, PI};
 
 /// The circle of radius r (four rational quarters), centred.
 pub(crate) fn circle(r: f64) -> PiecewiseCurve {
-    let s = FRAC_1_SQRT_2;
-    let q = |a: (f64, f64), m: (f64, f64), b: (f64, f64)| {
-        RationalBezierCurve::from_weighted(
-            &[
-                DVec3::new(a.0, a.1, 0.0) * r,
-                DVec3::new(m.0, m.1, 0.0) * r,
-                DVec3::new(b.0, b.1, 0.0) * r,
-            ],
-            &[1.0, s, 1.0],
-        )
-        .unwrap()
-    };
-    PiecewiseCurve::with_unit_intervals(vec![
-        q((1., 0.), (1., 1.), (0., 1.)),
-        q((0., 1.), (-1., 1.), (-1., 0.)),
-        q((-1., 0.), (-1., -1.), (0., -1.)),
-        q((0., -1.), (1., -1.), (1., 0.)),
-    ])
-    .unwrap()
+    crate::primitives::circle(DVec3::ZERO, DVec3::X, DVec3::Y, r).unwrap()
 }
 
 /// The square of half side a (corners on the axes' diagonals), counter-clockwise.

@@ -31,7 +31,7 @@
 //! the face is marked reversed). Caps are bounded counter-clockwise about their outward
 //! normal (holes clockwise), so every edge is used once in each direction.
 
-use super::clearance::{self_contact, Contact};
+use super::clearance::{self_contact, Contact, Tubes};
 use super::edge::Geometry;
 use super::frame::{arc_numerators, PieceFrame, Transport, CLOSURE_ROUND_OFF};
 use super::profile::{EdgeImage, Profile};
@@ -299,6 +299,39 @@ fn lateral(framed: &super::frame::Framed, edge: &PiecewiseCurve) -> Result<Piece
     }
 }
 
+/// The spines of the pieces on the v-breaks of their lateral surfaces (none for a leg cut
+/// by a miter) and the profile's reach, which bound where the lateral patches lie.
+fn tubes(
+    transport: &Transport,
+    profile: &Profile,
+    normalized: &[Vec<Vec<PiecewiseSurface>>],
+) -> Tubes {
+    let reach = profile
+        .loops
+        .iter()
+        .flat_map(|lp| &lp.edges)
+        .flat_map(|e| e.segments())
+        .flat_map(|s| s.poles())
+        .fold(0.0f64, |m, p| m.max(p.truncate().length()));
+    let mut spines = Vec::with_capacity(transport.pieces.len());
+    for (framed, loops) in transport.pieces.iter().zip(normalized) {
+        let face = loops.iter().flatten().next();
+        let spine = match face {
+            Some(face) if framed.miters.iter().all(Option::is_none) => {
+                let spine = &framed.spine;
+                if spine.segments().len() == face.v_breaks().len() - 1 {
+                    Some(spine.clone())
+                } else {
+                    spine.refined(face.v_breaks()).ok()
+                }
+            }
+            _ => None,
+        };
+        spines.push(spine);
+    }
+    Tubes { spines, reach }
+}
+
 /// Builds the shape (in the caller's coordinates) from the framed pieces and the profile.
 pub(crate) fn build(
     transport: &Transport,
@@ -324,7 +357,8 @@ pub(crate) fn build(
         }
         normalized.push(loops);
     }
-    if let Some(contact) = self_contact(&normalized, transport.closed, gap) {
+    let tubes = tubes(transport, profile, &normalized);
+    if let Some(contact) = self_contact(&normalized, &tubes, transport.closed, gap) {
         return Err(self_intersection(&contact, transport, placement, gap));
     }
     let images = closure_images(transport, profile)?;
