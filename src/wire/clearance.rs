@@ -23,7 +23,12 @@
 //!   R·sin∠(d, t(v)), and t(v) lies in the cone of the differences of the segment's control
 //!   points; projected on d (the chord between the segments' middles), the two segments'
 //!   ranges widened so must be more than the gap apart (sections along a short straight or
-//!   gently bent spine, a wide profile, many turns of twist).
+//!   gently bent spine, a wide profile, many turns of twist). The same test runs on the
+//!   parts of the patches while they are subdivided, with the parts of their spine segments.
+//!
+//! The bound R·sin is isotropic: for a profile much larger than the spine's radius of
+//! curvature but off to its convex side (where the singularity margin still holds) it cannot
+//! decide, and the patches are subdivided to the budget (seconds for such sweeps).
 //!
 //! A leg cut by a miter reaches beyond its segment and is always compared patch by patch.
 //!
@@ -138,7 +143,11 @@ pub(crate) fn self_contact(
                     continue;
                 }
             }
-            match closest_below(a.patch, b.patch, gap) {
+            let part = |e: &Element| Part {
+                patch: e.patch.clone(),
+                spine: e.spine.cloned(),
+            };
+            match closest_below(part(a), part(b), tubes.reach, gap) {
                 Verdict::Apart => {}
                 Verdict::Touch(pa, pb, distance) => {
                     return Some(Contact {
@@ -168,19 +177,55 @@ enum Verdict {
     Undecided(DVec3, DVec3, f64),
 }
 
+/// A patch, or part of one, with the part of the spine segment it is swept along (when the
+/// tests on spines hold for it).
+#[derive(Clone)]
+struct Part {
+    patch: RationalBezierPatch,
+    spine: Option<RationalBezierCurve>,
+}
+
+impl Part {
+    /// The two halves: along u the sections are cut (the spine part stays), along v the spine
+    /// part is cut with them.
+    fn halves(self, reach: f64) -> [Part; 2] {
+        let along_u = longer_along_u(&self.patch);
+        let (left, right) = self.patch.split(along_u, 0.5);
+        let spines = match (&self.spine, along_u) {
+            (Some(spine), true) => (Some(spine.clone()), Some(spine.clone())),
+            (Some(spine), false) => {
+                let (a, b) = spine.split(0.5);
+                (Some(a), Some(b))
+            }
+            (None, _) => (None, None),
+        };
+        let part = |patch: RationalBezierPatch, spine: Option<RationalBezierCurve>| Part {
+            spine: spine.filter(|c| sections_reach(&patch, c, reach)),
+            patch,
+        };
+        [part(left, spines.0), part(right, spines.1)]
+    }
+}
+
 /// Whether two patches come within `gap`: subdivision of the larger part while the boxes
-/// of the parts are within `gap` and their corners are not.
-fn closest_below(a: &RationalBezierPatch, b: &RationalBezierPatch, gap: f64) -> Verdict {
-    let mut stack = vec![(a.clone(), b.clone())];
+/// of the parts are within `gap`, the sections along their spine parts are not proven apart
+/// (module notes) and their corners are not within `gap`.
+fn closest_below(a: Part, b: Part, reach: f64, gap: f64) -> Verdict {
+    let mut stack = vec![(a, b)];
     let mut best = (DVec3::ZERO, DVec3::ZERO, f64::INFINITY);
     let mut budget = PAIR_BUDGET;
     while let Some((p, q)) = stack.pop() {
-        let ((plo, phi), (qlo, qhi)) = (control_box(&p), control_box(&q));
+        let ((plo, phi), (qlo, qhi)) = (control_box(&p.patch), control_box(&q.patch));
         if box_distance(plo, phi, qlo, qhi) > gap {
             continue;
         }
-        for x in corners(&p) {
-            for y in corners(&q) {
+        if let (Some(sp), Some(sq)) = (&p.spine, &q.spine) {
+            if slabs_apart(sp, sq, reach, gap) {
+                continue;
+            }
+        }
+        for x in corners(&p.patch) {
+            for y in corners(&q.patch) {
                 let d = x.distance(y);
                 if d < best.2 {
                     best = (x, y, d);
@@ -199,8 +244,7 @@ fn closest_below(a: &RationalBezierPatch, b: &RationalBezierPatch, gap: f64) -> 
         } else {
             (q, p, false)
         };
-        let (left, right) = larger.split(longer_along_u(&larger), 0.5);
-        for part in [left, right] {
+        for part in larger.halves(reach) {
             stack.push(if first {
                 (part, other.clone())
             } else {
