@@ -146,8 +146,9 @@ pub(crate) fn self_contact(
             let part = |e: &Element| Part {
                 patch: e.patch.clone(),
                 spine: e.spine.cloned(),
+                reach: tubes.reach,
             };
-            match closest_below(part(a), part(b), tubes.reach, gap) {
+            match closest(part(a), part(b), gap, PAIR_BUDGET) {
                 Verdict::Apart => {}
                 Verdict::Touch(pa, pb, distance) => {
                     return Some(Contact {
@@ -179,16 +180,39 @@ enum Verdict {
 
 /// A patch, or part of one, with the part of the spine segment it is swept along (when the
 /// tests on spines hold for it).
+/// What pairwise subdivision needs of a piece of geometry: a box about it, points on it
+/// (corners or ends), its two halves, and any test proving two pieces apart beyond their
+/// boxes.
+trait Subdivided<const N: usize>: Sized + Clone {
+    fn bounds(&self) -> (DVec3, DVec3);
+    fn samples(&self) -> [DVec3; N];
+    fn halves(self) -> [Self; 2];
+    fn proven_apart(&self, _other: &Self, _gap: f64) -> bool {
+        false
+    }
+}
+
+/// A patch, or part of one, with the part of the spine segment it is swept along (when the
+/// tests on spines hold for it) and the profile's reach.
 #[derive(Clone)]
 struct Part {
     patch: RationalBezierPatch,
     spine: Option<RationalBezierCurve>,
+    reach: f64,
 }
 
-impl Part {
-    /// The two halves: along u the sections are cut (the spine part stays), along v the spine
-    /// part is cut with them.
-    fn halves(self, reach: f64) -> [Part; 2] {
+impl Subdivided<4> for Part {
+    fn bounds(&self) -> (DVec3, DVec3) {
+        control_box(&self.patch)
+    }
+
+    fn samples(&self) -> [DVec3; 4] {
+        corners(&self.patch)
+    }
+
+    /// Along u the sections are cut (the spine part stays), along v the spine part is cut
+    /// with them.
+    fn halves(self) -> [Part; 2] {
         let along_u = longer_along_u(&self.patch);
         let (left, right) = self.patch.split(along_u, 0.5);
         let spines = match (&self.spine, along_u) {
@@ -199,33 +223,52 @@ impl Part {
             }
             (None, _) => (None, None),
         };
+        let reach = self.reach;
         let part = |patch: RationalBezierPatch, spine: Option<RationalBezierCurve>| Part {
             spine: spine.filter(|c| sections_reach(&patch, c, reach)),
             patch,
+            reach,
         };
         [part(left, spines.0), part(right, spines.1)]
     }
+
+    fn proven_apart(&self, other: &Self, gap: f64) -> bool {
+        match (&self.spine, &other.spine) {
+            (Some(a), Some(b)) => slabs_apart(a, b, self.reach, gap),
+            _ => false,
+        }
+    }
 }
 
-/// Whether two patches come within `gap`: subdivision of the larger part while the boxes
-/// of the parts are within `gap`, the sections along their spine parts are not proven apart
-/// (module notes) and their corners are not within `gap`.
-fn closest_below(a: Part, b: Part, reach: f64, gap: f64) -> Verdict {
+impl Subdivided<2> for RationalBezierCurve {
+    fn bounds(&self) -> (DVec3, DVec3) {
+        points_box(self.poles())
+    }
+
+    fn samples(&self) -> [DVec3; 2] {
+        [self.eval(0.0), self.eval(1.0)]
+    }
+
+    fn halves(self) -> [Self; 2] {
+        let (left, right) = self.split(0.5);
+        [left, right]
+    }
+}
+
+/// Whether two pieces come within `gap`: subdivision of the larger part while the boxes of
+/// the parts are within `gap`, they are not proven apart otherwise and no two of their
+/// sample points are within `gap`; undecided after `budget` subdivisions.
+fn closest<const N: usize, T: Subdivided<N>>(a: T, b: T, gap: f64, budget: usize) -> Verdict {
     let mut stack = vec![(a, b)];
     let mut best = (DVec3::ZERO, DVec3::ZERO, f64::INFINITY);
-    let mut budget = PAIR_BUDGET;
+    let mut budget = budget;
     while let Some((p, q)) = stack.pop() {
-        let ((plo, phi), (qlo, qhi)) = (control_box(&p.patch), control_box(&q.patch));
-        if box_distance(plo, phi, qlo, qhi) > gap {
+        let ((plo, phi), (qlo, qhi)) = (p.bounds(), q.bounds());
+        if box_distance(plo, phi, qlo, qhi) > gap || p.proven_apart(&q, gap) {
             continue;
         }
-        if let (Some(sp), Some(sq)) = (&p.spine, &q.spine) {
-            if slabs_apart(sp, sq, reach, gap) {
-                continue;
-            }
-        }
-        for x in corners(&p.patch) {
-            for y in corners(&q.patch) {
+        for x in p.samples() {
+            for y in q.samples() {
                 let d = x.distance(y);
                 if d < best.2 {
                     best = (x, y, d);
@@ -244,7 +287,7 @@ fn closest_below(a: Part, b: Part, reach: f64, gap: f64) -> Verdict {
         } else {
             (q, p, false)
         };
-        for part in larger.halves(reach) {
+        for part in larger.halves() {
             stack.push(if first {
                 (part, other.clone())
             } else {
@@ -255,40 +298,13 @@ fn closest_below(a: Part, b: Part, reach: f64, gap: f64) -> Verdict {
     Verdict::Apart
 }
 
-/// Whether two curves are proven farther apart than `distance` (subdividing the longer part
-/// while the boxes of the parts are within it); false when their ends come within it or
-/// the budget runs out.
+/// Whether two curves are proven farther apart than `distance`; false when they come within
+/// it or the budget runs out.
 fn curves_apart(a: &RationalBezierCurve, b: &RationalBezierCurve, distance: f64) -> bool {
-    let mut stack = vec![(a.clone(), b.clone())];
-    let mut budget = SPINE_BUDGET;
-    while let Some((p, q)) = stack.pop() {
-        let ((plo, phi), (qlo, qhi)) = (curve_box(&p), curve_box(&q));
-        if box_distance(plo, phi, qlo, qhi) > distance {
-            continue;
-        }
-        let ends = |c: &RationalBezierCurve| [c.eval(0.0), c.eval(1.0)];
-        let near = ends(&p)
-            .iter()
-            .any(|x| ends(&q).iter().any(|y| x.distance(*y) <= distance));
-        if near || budget == 0 {
-            return false;
-        }
-        budget -= 1;
-        let (larger, other, first) = if (phi - plo).length() >= (qhi - qlo).length() {
-            (p, q, true)
-        } else {
-            (q, p, false)
-        };
-        let (left, right) = larger.split(0.5);
-        for part in [left, right] {
-            stack.push(if first {
-                (part, other.clone())
-            } else {
-                (other.clone(), part)
-            });
-        }
-    }
-    true
+    matches!(
+        closest(a.clone(), b.clone(), distance, SPINE_BUDGET),
+        Verdict::Apart
+    )
 }
 
 /// Whether the patch's corners lie within `reach` of the segment's ends at their own v (the
@@ -342,24 +358,16 @@ fn sine_bound(curve: &RationalBezierCurve, d: DVec3) -> f64 {
     sine.min(1.0)
 }
 
-/// The box about a curve's projected control points.
-fn curve_box(curve: &RationalBezierCurve) -> (DVec3, DVec3) {
-    curve
-        .poles()
-        .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), p| {
-            (lo.min(p), hi.max(p))
-        })
-}
-
 /// The box about a patch's projected control points.
 fn control_box(patch: &RationalBezierPatch) -> (DVec3, DVec3) {
-    patch
-        .homogeneous()
-        .iter()
-        .map(|h| h.truncate() / h.w)
-        .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), p| {
-            (lo.min(p), hi.max(p))
-        })
+    points_box(patch.homogeneous().iter().map(|h| h.truncate() / h.w))
+}
+
+/// The box about points.
+fn points_box(points: impl Iterator<Item = DVec3>) -> (DVec3, DVec3) {
+    points.fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), p| {
+        (lo.min(p), hi.max(p))
+    })
 }
 
 /// The distance between two boxes (0 when they overlap).

@@ -318,12 +318,7 @@ fn tubes(
         let face = loops.iter().flatten().next();
         let spine = match face {
             Some(face) if framed.miters.iter().all(Option::is_none) => {
-                let spine = &framed.spine;
-                if spine.segments().len() == face.v_breaks().len() - 1 {
-                    Some(spine.clone())
-                } else {
-                    spine.refined(face.v_breaks()).ok()
-                }
+                framed.spine.refined(face.v_breaks()).ok()
             }
             _ => None,
         };
