@@ -408,8 +408,8 @@ static void test_option_struct_entry_points(void) {
 
     CHECK_STATUS(rmf_cone_approximation_options_init(&options), RMF_OK, "");
     CHECK(options.struct_size == sizeof options && options.tolerance == 0 &&
-              options.rule == RMF_CONE_RULE_MIN_VERTEX_DISTANCE && options.max_pieces == 100000,
-          "the defaults: size set, tolerance to be set, the default rule, 100000 pieces");
+              options.rule == RMF_CONE_RULE_MIN_VERTEX_DISTANCE && options.max_pieces == 10000,
+          "the defaults: size set, tolerance to be set, the default rule, 10000 pieces");
     CHECK_STATUS(rmf_cone_approximation_options_init(NULL), RMF_ERROR_NULL_POINTER, "out");
     CHECK_STATUS(rmf_callback_curve_create(cubic, NULL, 0.2, 1.2, &curve), RMF_OK, "");
 

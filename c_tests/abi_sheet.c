@@ -52,7 +52,7 @@ static void test_options(void) {
     CHECK_STATUS(rmf_sheet_options_init(&o), RMF_OK, "");
     CHECK(o.struct_size == sizeof(RmfSheetOptions), "struct_size");
     CHECK(o.tolerance == 1e-4 && o.thickness == 1.0 && o.k_factor == 0.5, "defaults");
-    CHECK(o.reference == RMF_SHEET_REFERENCE_INNER && o.flat_tolerance == 0 && o.max_pieces == 100000, "defaults");
+    CHECK(o.reference == RMF_SHEET_REFERENCE_INNER && o.flat_tolerance == 0 && o.max_pieces == 10000, "defaults");
     CHECK_STATUS(rmf_sheet_options_init(NULL), RMF_ERROR_NULL_POINTER, "options");
 }
 

@@ -567,7 +567,7 @@ typedef struct RmfConeApproximationOptions {
    */
   uint32_t rule;
   /**
-   * Most pieces, ≥ 2 (default 100000); more are RMF_ERROR_NOT_CONVERGED.
+   * Most pieces, ≥ 2 (default 10000); more are RMF_ERROR_NOT_CONVERGED.
    */
   size_t max_pieces;
 } RmfConeApproximationOptions;
@@ -1125,7 +1125,7 @@ typedef struct RmfSheetOptions {
    */
   double flat_tolerance;
   /**
-   * Most cone pieces (default 100000), ≥ 2.
+   * Most cone pieces (default 10000), ≥ 2.
    */
   size_t max_pieces;
 } RmfSheetOptions;
@@ -3645,7 +3645,7 @@ RmfStatus rmf_shape_step(const struct RmfShape *shape,
  * Writes the default options and the struct's size.
  *
  * @param[out] options Receives the defaults (tolerance 1e-4, thickness 1, k_factor 0.5,
- *             reference inner, flat_tolerance 0 = the tolerance, max_pieces 100000).
+ *             reference inner, flat_tolerance 0 = the tolerance, max_pieces 10000).
  * @return RMF_OK, or RMF_ERROR_NULL_POINTER if options is NULL.
  * \since 0.2
  * \ingroup rmf_sheet

@@ -128,7 +128,7 @@ pub use rrmf_quintic::{
 };
 
 // Cone spline surfaces: developables, development, bending [LP].
-pub use cone_spline::approximate::approximate as approximate_developable;
+pub use cone_spline::approximate::{approximate as approximate_developable, DEFAULT_MAX_PIECES};
 pub use cone_spline::developable::{
     max_scaled_curvature, Developable, DualDevelopable, RuledSurface, Ruling, TangentSurface,
     DEVELOPABILITY_TOLERANCE,

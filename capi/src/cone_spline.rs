@@ -467,12 +467,9 @@ pub struct RmfConeApproximationOptions {
     /// One of RMF_CONE_RULE_* except RMF_CONE_RULE_GIVEN (default
     /// RMF_CONE_RULE_MIN_VERTEX_DISTANCE).
     pub rule: u32,
-    /// Most pieces, ≥ 2 (default 100000); more are RMF_ERROR_NOT_CONVERGED.
+    /// Most pieces, ≥ 2 (default 10000); more are RMF_ERROR_NOT_CONVERGED.
     pub max_pieces: usize,
 }
-
-/// The piece cap of RmfConeApproximationOptions, as for sheet-metal parts (RmfSheetOptions).
-const DEFAULT_MAX_PIECES: usize = 100_000;
 
 impl Default for RmfConeApproximationOptions {
     fn default() -> Self {
@@ -480,7 +477,7 @@ impl Default for RmfConeApproximationOptions {
             struct_size: std::mem::size_of::<Self>(),
             tolerance: 0.0,
             rule: RMF_CONE_RULE_MIN_VERTEX_DISTANCE,
-            max_pieces: DEFAULT_MAX_PIECES,
+            max_pieces: rmfsurf::DEFAULT_MAX_PIECES,
         }
     }
 }

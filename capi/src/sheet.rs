@@ -113,7 +113,7 @@ pub struct RmfSheetOptions {
     /// Largest distance of the flat outline's biarcs from the exact developed boundary;
     /// 0 (the default) means the tolerance.
     pub flat_tolerance: f64,
-    /// Most cone pieces (default 100000), ≥ 2.
+    /// Most cone pieces (default 10000), ≥ 2.
     pub max_pieces: usize,
 }
 
@@ -126,7 +126,7 @@ impl Default for RmfSheetOptions {
             k_factor: 0.5,
             reference: RMF_SHEET_REFERENCE_INNER,
             flat_tolerance: 0.0,
-            max_pieces: 100_000,
+            max_pieces: rmfsurf::DEFAULT_MAX_PIECES,
         }
     }
 }
@@ -258,7 +258,7 @@ fn part_of<'a>(spline: &'a RmfConeSpline, name: &str) -> FfiResult<&'a SheetPart
 /// Writes the default options and the struct's size.
 ///
 /// @param[out] options Receives the defaults (tolerance 1e-4, thickness 1, k_factor 0.5,
-///             reference inner, flat_tolerance 0 = the tolerance, max_pieces 100000).
+///             reference inner, flat_tolerance 0 = the tolerance, max_pieces 10000).
 /// @return RMF_OK, or RMF_ERROR_NULL_POINTER if options is NULL.
 /// \since 0.2
 /// \ingroup rmf_sheet

@@ -499,7 +499,7 @@ fn cone_job(cone: schema::Cone) -> InputResult<ConeJob> {
     Ok(ConeJob {
         developable,
         tolerance: cone.tolerance.map_or(DEFAULT_TOLERANCE, |t| t.0),
-        max_pieces: cone.max_pieces.map_or(10_000, |n| n.0),
+        max_pieces: cone.max_pieces.map_or(rmfsurf::DEFAULT_MAX_PIECES, |n| n.0),
         t_min,
         t_max,
     })
@@ -551,7 +551,9 @@ fn sheet_job(sheet: schema::Sheet) -> InputResult<SheetJob> {
             tolerance: sheet.tolerance.map_or(DEFAULT_TOLERANCE, |t| t.0),
             sheet: sheet_values,
             flat_tolerance: sheet.flat_tolerance.map_or(0.0, |t| t.0),
-            max_pieces: sheet.max_pieces.map_or(100_000, |n| n.0),
+            max_pieces: sheet
+                .max_pieces
+                .map_or(rmfsurf::DEFAULT_MAX_PIECES, |n| n.0),
         },
     })
 }

@@ -175,7 +175,7 @@ def _options(thickness: float, k_factor: float, tolerance: float, reference: str
 
 def transition(bottom: Curve, top: Curve, *, thickness: float = 1.0, k_factor: float = 0.5,
                tolerance: float = 1e-4, reference: str = "inner", flat_tolerance: float = 0.0,
-               max_pieces: int = 100000) -> SheetPart:
+               max_pieces: int = 10000) -> SheetPart:
     """The transition piece between two closed convex planar curves (e.g. a degree-1
     polygon and a circle of rational quadratics; see rmf_cone_spline_transition): the
     convex hull surface of the two, flat triangles, cones from corners, creases and cone
@@ -202,7 +202,7 @@ def transition(bottom: Curve, top: Curve, *, thickness: float = 1.0, k_factor: f
 
 def part_between_rails(surface: Surface, *, thickness: float = 1.0, k_factor: float = 0.5,
                        tolerance: float = 1e-4, reference: str = "inner",
-                       flat_tolerance: float = 0.0, max_pieces: int = 100000) -> SheetPart:
+                       flat_tolerance: float = 0.0, max_pieces: int = 10000) -> SheetPart:
     """The part of a developable ruled surface between its two rails (see
     rmf_cone_spline_part): `surface` has degree 1 and two poles in u (rulings along u,
     e.g. ``Surface.from_nurbs`` of two rails), v along the rails. The result is a cone
@@ -218,7 +218,7 @@ def part_between_rails(surface: Surface, *, thickness: float = 1.0, k_factor: fl
 
 def tangent_part(curve: Curve, v_min: float, v_max: float, *, thickness: float = 1.0,
                  k_factor: float = 0.5, tolerance: float = 1e-4, reference: str = "inner",
-                 flat_tolerance: float = 0.0, max_pieces: int = 100000) -> SheetPart:
+                 flat_tolerance: float = 0.0, max_pieces: int = 10000) -> SheetPart:
     """The part of the tangent surface x(t) + v·x′(t)/|x′(t)| of a regular curve between
     the rails v = v_min and v = v_max (0 outside [v_min, v_max]; see
     rmf_cone_spline_tangent_part). Keyword arguments as for :func:`transition`.

@@ -92,8 +92,14 @@ fn deviation_of(rulings: &[Ruling], pieces: &[ConePiece]) -> f64 {
 #[derive(Debug)]
 pub(crate) enum FitError {
     /// More than the allowed pieces would be needed: the deviation on [a, b] when the
-    /// halving stopped.
-    Pieces { deviation: f64, a: f64, b: f64 },
+    /// halving stopped, and the pieces estimated when it stopped early (the pieces so far
+    /// and those this interval needs at the rate its deviation falls).
+    Pieces {
+        deviation: f64,
+        a: f64,
+        b: f64,
+        estimate: Option<f64>,
+    },
     /// The interval [a, b] is too narrow to halve (1e-9 of the domain), its deviation
     /// still above the tolerance.
     Narrow { deviation: f64, a: f64, b: f64 },
@@ -116,6 +122,11 @@ impl From<Error> for FitError {
     }
 }
 
+/// The piece limit of cone spline fits and sheet-metal parts when the caller sets none:
+/// the fit's time grows with the pieces it makes (some 25 µs each), and a limit is only
+/// known to be too small once the fit has used it up.
+pub const DEFAULT_MAX_PIECES: usize = 10_000;
+
 /// Fits a cone spline to `surface` within `tolerance` (max distance over the region),
 /// with at most `max_pieces` pieces, the pairs chosen by `rule`.
 pub fn approximate(
@@ -125,9 +136,18 @@ pub fn approximate(
     max_pieces: usize,
 ) -> Result<Approximation> {
     fit(surface, tolerance, rule, max_pieces).map_err(|e| match e {
-        FitError::Pieces { deviation, a, b } => Error::not_converged(format!(
+        FitError::Pieces {
+            deviation,
+            a,
+            b,
+            estimate,
+        } => Error::not_converged(format!(
             "tolerance = {tolerance:.3e} not reached with at most max_pieces = {max_pieces} \
-             pieces (deviation {deviation:.3e} on [{a}, {b}])"
+             pieces (deviation {deviation:.3e} on [{a}, {b}]{})",
+            estimate.map_or(String::new(), |n| format!(
+                ", where the fit stopped: about {n:.0} pieces would be needed at the rate \
+                 the deviation falls"
+            ))
         )),
         FitError::Narrow { deviation, a, b } => Error::not_converged(format!(
             "tolerance = {tolerance:.3e} not reached: the deviation is {deviation:.3e} on \
@@ -179,10 +199,16 @@ pub(crate) fn fit(
     let scale = local.frame.scale();
     let fit =
         approximate_local(&local, tolerance / scale, rule, max_pieces).map_err(|e| match e {
-            FitError::Pieces { deviation, a, b } => FitError::Pieces {
+            FitError::Pieces {
+                deviation,
+                a,
+                b,
+                estimate,
+            } => FitError::Pieces {
                 deviation: deviation * scale,
                 a,
                 b,
+                estimate,
             },
             FitError::Narrow { deviation, a, b } => FitError::Narrow {
                 deviation: deviation * scale,
@@ -286,18 +312,20 @@ fn approximate_local(
     let mut junctions = vec![lo];
     junctions.extend(&interior);
     junctions.push(hi);
-    let mut accepted: Vec<Accepted> = Vec::new();
+    let mut fitting = Fitting {
+        surface,
+        tolerance,
+        rule,
+        max_pieces,
+        junctions: &junctions,
+        estimated: false,
+        accepted: Vec::new(),
+        pieces: 0,
+    };
     for w in junctions.windows(2) {
-        fit_interval(
-            surface,
-            w[0],
-            w[1],
-            tolerance,
-            rule,
-            max_pieces,
-            &mut accepted,
-        )?;
+        fitting.interval(w[0], w[1])?;
     }
+    let accepted = fitting.accepted;
     let mut parameters = vec![lo];
     parameters.extend(accepted.iter().map(|x| x.end));
     let max_error = accepted.iter().map(|x| x.error).fold(0.0, f64::max);
@@ -385,48 +413,150 @@ fn frame_turn(rulings: &[Ruling]) -> f64 {
     total
 }
 
-/// Accepts [a, b] with its pair if it is within the tolerance, else halves it (depth
-/// first, so `out` stays ordered by parameter). An interval whose rulings no admissible
-/// pair joins is halved as well.
-fn fit_interval(
-    surface: &dyn Developable,
-    a: f64,
-    b: f64,
+/// The order of approximation the estimate of the pieces needed assumes at least: the
+/// deviation of cone pairs falls as about the third to fourth power of the interval's width
+/// (measured by the tests below); the larger order estimates fewer pieces.
+const ASSUMED_ORDER: f64 = 4.0;
+
+/// How many times `max_pieces` the estimate must exceed for the fit to give up early.
+const ESTIMATE_MARGIN: f64 = 8.0;
+
+/// The part of `max_pieces` (at least [`ESTIMATE_AFTER`] pieces) a fit uses before the
+/// pieces it needs are estimated: fits within a small part of their limit never pay for
+/// the estimate.
+const ESTIMATE_FRACTION: usize = 16;
+const ESTIMATE_AFTER: usize = 16;
+
+/// The intervals each junction interval is cut into for the estimate (and each halved once
+/// more, to see how fast the deviation falls).
+const ESTIMATE_INTERVALS: usize = 16;
+
+/// The halving of a surface's junction intervals until every piece is within the
+/// tolerance, the accepted intervals in order of parameter.
+struct Fitting<'a> {
+    surface: &'a dyn Developable,
     tolerance: f64,
     rule: Rule,
     max_pieces: usize,
-    out: &mut Vec<Accepted>,
-) -> std::result::Result<(), FitError> {
-    let attempt = interval_pair(surface, a, b, rule);
-    if let Ok((pair, error, clearance)) = &attempt {
-        if *error <= tolerance {
-            out.push(Accepted {
-                end: b,
-                pair: pair.clone(),
-                error: *error,
-                clearance: *clearance,
+    junctions: &'a [f64],
+    /// Whether the pieces needed have been estimated (once per fit).
+    estimated: bool,
+    accepted: Vec<Accepted>,
+    /// The pieces of the accepted pairs.
+    pieces: usize,
+}
+
+impl Fitting<'_> {
+    /// Accepts [a, b] with its pair if it is within the tolerance, else halves it (depth
+    /// first, so the accepted intervals stay ordered by parameter). An interval whose
+    /// rulings no admissible pair joins is halved as well.
+    fn interval(&mut self, a: f64, b: f64) -> std::result::Result<(), FitError> {
+        let attempt = interval_pair(self.surface, a, b, self.rule);
+        if let Ok((pair, error, clearance)) = &attempt {
+            if *error <= self.tolerance {
+                self.pieces += pair.pieces.len();
+                self.accepted.push(Accepted {
+                    end: b,
+                    pair: pair.clone(),
+                    error: *error,
+                    clearance: *clearance,
+                });
+                return Ok(());
+            }
+        }
+        self.refuse_out_of_reach(&attempt, a, b)?;
+        let (lo, hi) = self.surface.domain();
+        let exhausted = self.pieces + 4 > self.max_pieces;
+        let too_fine = exhausted || b - a < 1e-9 * (hi - lo);
+        let Some(m) = interior_midpoint(a, b).filter(|_| !too_fine) else {
+            return Err(match attempt {
+                Ok((_, deviation, _)) if exhausted => FitError::Pieces {
+                    deviation,
+                    a,
+                    b,
+                    estimate: None,
+                },
+                Ok((_, deviation, _)) => FitError::Narrow { deviation, a, b },
+                Err(e) => FitError::NoPair {
+                    a,
+                    b,
+                    pieces_exhausted: exhausted,
+                    reason: e.message(),
+                },
             });
+        };
+        self.interval(a, m)?;
+        self.interval(m, b)
+    }
+
+    /// Once the fit has used a part of its limit: refuses when the pieces the whole surface
+    /// needs are estimated far beyond the limit (the halving of [a, b] would run into it
+    /// after most of the work).
+    fn refuse_out_of_reach(
+        &mut self,
+        attempt: &Result<(ConePair, f64, f64)>,
+        a: f64,
+        b: f64,
+    ) -> std::result::Result<(), FitError> {
+        let due = (self.max_pieces / ESTIMATE_FRACTION).max(ESTIMATE_AFTER);
+        if self.estimated || self.pieces < due {
             return Ok(());
         }
+        self.estimated = true;
+        let estimate = self.estimate();
+        match attempt {
+            Ok((_, deviation, _)) if estimate > ESTIMATE_MARGIN * self.max_pieces as f64 => {
+                Err(FitError::Pieces {
+                    deviation: *deviation,
+                    a,
+                    b,
+                    estimate: Some(estimate),
+                })
+            }
+            _ => Ok(()),
+        }
     }
-    let pieces_so_far: usize = out.iter().map(|x| x.pair.pieces.len()).sum();
-    let (lo, hi) = surface.domain();
-    let exhausted = pieces_so_far + 4 > max_pieces;
-    let too_fine = exhausted || b - a < 1e-9 * (hi - lo);
-    let Some(m) = interior_midpoint(a, b).filter(|_| !too_fine) else {
-        return Err(match attempt {
-            Ok((_, deviation, _)) if exhausted => FitError::Pieces { deviation, a, b },
-            Ok((_, deviation, _)) => FitError::Narrow { deviation, a, b },
-            Err(e) => FitError::NoPair {
-                a,
-                b,
-                pieces_exhausted: exhausted,
-                reason: e.message(),
-            },
-        });
-    };
-    fit_interval(surface, a, m, tolerance, rule, max_pieces, out)?;
-    fit_interval(surface, m, b, tolerance, rule, max_pieces, out)
+
+    /// About how many pieces the fit needs: each junction interval cut into
+    /// [`ESTIMATE_INTERVALS`], each of those needing (deviation / tolerance)^(1/order)
+    /// intervals of two pieces, the order measured by halving it once but at least
+    /// [`ASSUMED_ORDER`] (a fall steeper than asymptotic never overestimates). An
+    /// interval without an admissible pair counts as one.
+    fn estimate(&self) -> f64 {
+        let mut total = 0.0;
+        for w in self.junctions.windows(2) {
+            let step = (w[1] - w[0]) / ESTIMATE_INTERVALS as f64;
+            for k in 0..ESTIMATE_INTERVALS {
+                let (a, b) = (w[0] + k as f64 * step, w[0] + (k + 1) as f64 * step);
+                total += self.intervals_needed(a, b);
+            }
+        }
+        2.0 * total
+    }
+
+    /// The estimate of [`Fitting::estimate`] for one interval.
+    fn intervals_needed(&self, a: f64, b: f64) -> f64 {
+        let deviation = |a, b| {
+            interval_pair(self.surface, a, b, self.rule)
+                .ok()
+                .map(|(_, deviation, _)| deviation)
+        };
+        let m = 0.5 * (a + b);
+        let Some(whole) = deviation(a, b) else {
+            return 1.0;
+        };
+        let halves = [deviation(a, m), deviation(m, b)];
+        let halves: Vec<f64> = halves.into_iter().flatten().collect();
+        if halves.len() < 2 {
+            return 1.0;
+        }
+        let worst_half = halves[0].max(halves[1]);
+        if worst_half <= self.tolerance {
+            return 2.0;
+        }
+        let order = (whole / worst_half).log2().max(ASSUMED_ORDER);
+        2.0 * (worst_half / self.tolerance).powf(1.0 / order)
+    }
 }
 
 #[cfg(test)]
@@ -904,6 +1034,41 @@ mod tests {
                 "{message}"
             );
             assert!(message.contains("1.000e-9"), "{message}");
+        }
+    }
+
+    /// A tolerance far beyond what `max_pieces` can reach on a smooth surface is refused
+    /// with the estimate once the fit has used a sixteenth of the limit, not after the
+    /// limit's worth of pieces; limits the fit reaches are never refused so. (The estimate
+    /// assumes the fourth order where this surface shows about 3.3: it is low, about a
+    /// third of the pieces needed.)
+    #[test]
+    fn piece_limits_out_of_reach_are_refused_early_with_an_estimate() {
+        let helix = Helix {
+            radius: 1.0,
+            pitch: 0.5,
+            domain: (0.0, 6.0),
+        };
+        let surface = tangent_surface(&helix, 0.1, 1.0);
+        let fit = |tolerance, max_pieces| {
+            approximate(&surface, tolerance, Rule::MinimalVertexDistance, max_pieces)
+        };
+        let needed = fit(1e-9, 100_000).unwrap().spline.pieces().len();
+        let limit = needed / 64;
+        let message = fit(1e-9, limit).unwrap_err().message();
+        let estimate: f64 = message
+            .split("about ")
+            .nth(1)
+            .and_then(|rest| rest.split(' ').next())
+            .and_then(|n| n.parse().ok())
+            .unwrap_or_else(|| panic!("limit {limit}, no estimate: {message}"));
+        assert!(
+            estimate > ESTIMATE_MARGIN * limit as f64 && estimate < 4.0 * needed as f64,
+            "{needed} pieces needed, {estimate} estimated"
+        );
+        for tolerance in [1e-3, 1e-5, 1e-7, 1e-9] {
+            let needed = fit(tolerance, 100_000).unwrap().spline.pieces().len();
+            assert!(fit(tolerance, needed).is_ok(), "tolerance {tolerance:e}");
         }
     }
 }

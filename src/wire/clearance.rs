@@ -26,9 +26,9 @@
 //!   gently bent spine, a wide profile, many turns of twist). The same test runs on the
 //!   parts of the patches while they are subdivided, with the parts of their spine segments.
 //!
-//! The bound R·sin is isotropic: for a profile much larger than the spine's radius of
-//! curvature but off to its convex side (where the singularity margin still holds) it cannot
-//! decide, and the patches are subdivided to the budget (seconds for such sweeps).
+//! Patch parts whose boxes overlap may still be apart along the line between the centres of
+//! their control nets (the convex hull of the control points holds the patch). Pairs left
+//! after all that are subdivided, within a budget per pair and one for the whole check.
 //!
 //! A leg cut by a miter reaches beyond its segment and is always compared patch by patch.
 //!
@@ -42,6 +42,10 @@ use std::collections::HashMap;
 
 /// Subdivisions one candidate pair may take before it is left undecided.
 const PAIR_BUDGET: usize = 40_000;
+
+/// Subdivisions the whole check may take (pairs of patches and of spine segments); pairs met
+/// after it is spent are left undecided.
+const CALL_BUDGET: usize = 250_000;
 
 /// Subdivisions one pair of spine segments may take before it is left to the patches.
 const SPINE_BUDGET: usize = 200;
@@ -126,6 +130,7 @@ pub(crate) fn self_contact(
     let tube_gap = 2.0 * tubes.reach + gap;
     let mut spines_apart: HashMap<(usize, usize), bool> = HashMap::new();
     let mut undecided: Option<Contact> = None;
+    let mut budget = CALL_BUDGET;
     for (i, a) in elements.iter().enumerate() {
         for b in elements[i + 1..].iter() {
             if b.lo.x > a.hi.x + gap {
@@ -137,7 +142,8 @@ pub(crate) fn self_contact(
             if let (Some(sa), Some(sb)) = (a.spine, b.spine) {
                 let key = (a.position.min(b.position), a.position.max(b.position));
                 let apart = *spines_apart.entry(key).or_insert_with(|| {
-                    slabs_apart(sa, sb, tubes.reach, gap) || curves_apart(sa, sb, tube_gap)
+                    slabs_apart(sa, sb, tubes.reach, gap)
+                        || curves_apart(sa, sb, tube_gap, &mut budget)
                 });
                 if apart {
                     continue;
@@ -148,7 +154,10 @@ pub(crate) fn self_contact(
                 spine: e.spine.cloned(),
                 reach: tubes.reach,
             };
-            match closest(part(a), part(b), gap, PAIR_BUDGET) {
+            let mut allowance = PAIR_BUDGET.min(budget);
+            let verdict = closest(part(a), part(b), gap, &mut allowance);
+            budget -= PAIR_BUDGET.min(budget) - allowance;
+            match verdict {
                 Verdict::Apart => {}
                 Verdict::Touch(pa, pb, distance) => {
                     return Some(Contact {
@@ -233,10 +242,16 @@ impl Subdivided<4> for Part {
     }
 
     fn proven_apart(&self, other: &Self, gap: f64) -> bool {
-        match (&self.spine, &other.spine) {
-            (Some(a), Some(b)) => slabs_apart(a, b, self.reach, gap),
-            _ => false,
+        if let (Some(a), Some(b)) = (&self.spine, &other.spine) {
+            if slabs_apart(a, b, self.reach, gap) {
+                return true;
+            }
         }
+        let (p, q) = (projected(&self.patch), projected(&other.patch));
+        let centre = |points: &[DVec3]| points.iter().sum::<DVec3>() / points.len() as f64;
+        (centre(&q) - centre(&p))
+            .try_normalize()
+            .is_some_and(|d| separated_along(&p, &q, d, gap))
     }
 }
 
@@ -257,11 +272,11 @@ impl Subdivided<2> for RationalBezierCurve {
 
 /// Whether two pieces come within `gap`: subdivision of the larger part while the boxes of
 /// the parts are within `gap`, they are not proven apart otherwise and no two of their
-/// sample points are within `gap`; undecided after `budget` subdivisions.
-fn closest<const N: usize, T: Subdivided<N>>(a: T, b: T, gap: f64, budget: usize) -> Verdict {
+/// sample points are within `gap`; undecided when `budget` subdivisions (counted down) are
+/// spent.
+fn closest<const N: usize, T: Subdivided<N>>(a: T, b: T, gap: f64, budget: &mut usize) -> Verdict {
     let mut stack = vec![(a, b)];
     let mut best = (DVec3::ZERO, DVec3::ZERO, f64::INFINITY);
-    let mut budget = budget;
     while let Some((p, q)) = stack.pop() {
         let ((plo, phi), (qlo, qhi)) = (p.bounds(), q.bounds());
         if box_distance(plo, phi, qlo, qhi) > gap || p.proven_apart(&q, gap) {
@@ -278,10 +293,10 @@ fn closest<const N: usize, T: Subdivided<N>>(a: T, b: T, gap: f64, budget: usize
         if best.2 <= gap {
             return Verdict::Touch(best.0, best.1, best.2);
         }
-        if budget == 0 {
+        if *budget == 0 {
             return Verdict::Undecided(best.0, best.1, best.2);
         }
-        budget -= 1;
+        *budget -= 1;
         let (larger, other, first) = if (phi - plo).length() >= (qhi - qlo).length() {
             (p, q, true)
         } else {
@@ -299,12 +314,17 @@ fn closest<const N: usize, T: Subdivided<N>>(a: T, b: T, gap: f64, budget: usize
 }
 
 /// Whether two curves are proven farther apart than `distance`; false when they come within
-/// it or the budget runs out.
-fn curves_apart(a: &RationalBezierCurve, b: &RationalBezierCurve, distance: f64) -> bool {
-    matches!(
-        closest(a.clone(), b.clone(), distance, SPINE_BUDGET),
-        Verdict::Apart
-    )
+/// it or their budget (at most `budget`, which is counted down) runs out.
+fn curves_apart(
+    a: &RationalBezierCurve,
+    b: &RationalBezierCurve,
+    distance: f64,
+    budget: &mut usize,
+) -> bool {
+    let mut allowance = SPINE_BUDGET.min(*budget);
+    let verdict = closest(a.clone(), b.clone(), distance, &mut allowance);
+    *budget -= SPINE_BUDGET.min(*budget) - allowance;
+    matches!(verdict, Verdict::Apart)
 }
 
 /// Whether the patch's corners lie within `reach` of the segment's ends at their own v (the
@@ -325,12 +345,7 @@ fn slabs_apart(a: &RationalBezierCurve, b: &RationalBezierCurve, reach: f64, gap
         return false;
     };
     let range = |c: &RationalBezierCurve| {
-        let (lo, hi) = c
-            .poles()
-            .map(|p| p.dot(d))
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), x| {
-                (lo.min(x), hi.max(x))
-            });
+        let (lo, hi) = range_along(c.poles(), d);
         let widening = reach * sine_bound(c, d);
         (lo - widening, hi + widening)
     };
@@ -338,18 +353,24 @@ fn slabs_apart(a: &RationalBezierCurve, b: &RationalBezierCurve, reach: f64, gap
     blo - ahi > gap || alo - bhi > gap
 }
 
-/// A bound on sin∠(d, t) over the curve's tangents t: they lie in the cone of the
+/// A bound on sin∠(±d, t) over the curve's tangents t: they lie in the cone of the
 /// differences of its control points (positive weights); while the cone keeps within 90° of
-/// d its largest angle to d is at a generator, otherwise 1.
+/// d or of −d (a segment runs either way along the chord) its largest angle to that line is
+/// at a generator, otherwise 1.
 fn sine_bound(curve: &RationalBezierCurve, d: DVec3) -> f64 {
     let poles: Vec<DVec3> = curve.poles().collect();
     let mut sine: f64 = 0.0;
+    let mut side = 0.0;
     for (k, p) in poles.iter().enumerate() {
         for q in &poles[k + 1..] {
             let Some(w) = (*q - *p).try_normalize() else {
                 continue;
             };
-            if w.dot(d) <= 0.0 {
+            let along = w.dot(d);
+            if side == 0.0 {
+                side = along.signum();
+            }
+            if along * side <= 0.0 {
                 return 1.0;
             }
             sine = sine.max(w.cross(d).length());
@@ -358,9 +379,36 @@ fn sine_bound(curve: &RationalBezierCurve, d: DVec3) -> f64 {
     sine.min(1.0)
 }
 
+/// A patch's projected control points (their convex hull holds the patch).
+fn projected(patch: &RationalBezierPatch) -> Vec<DVec3> {
+    patch
+        .homogeneous()
+        .iter()
+        .map(|h| h.truncate() / h.w)
+        .collect()
+}
+
+/// Whether the points' ranges along the unit direction `d` are more than `gap` apart.
+fn separated_along(p: &[DVec3], q: &[DVec3], d: DVec3, gap: f64) -> bool {
+    let ((plo, phi), (qlo, qhi)) = (
+        range_along(p.iter().copied(), d),
+        range_along(q.iter().copied(), d),
+    );
+    qlo - phi > gap || plo - qhi > gap
+}
+
+/// The range of the points' coordinates along `d`.
+fn range_along(points: impl Iterator<Item = DVec3>, d: DVec3) -> (f64, f64) {
+    points
+        .map(|x| x.dot(d))
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), x| {
+            (lo.min(x), hi.max(x))
+        })
+}
+
 /// The box about a patch's projected control points.
 fn control_box(patch: &RationalBezierPatch) -> (DVec3, DVec3) {
-    points_box(patch.homogeneous().iter().map(|h| h.truncate() / h.w))
+    points_box(projected(patch).into_iter())
 }
 
 /// The box about points.
@@ -407,8 +455,13 @@ mod tests {
         // However wide the profile: the normal sections are 0.5 apart.
         assert!(slabs_apart(&a, &b, 100.0, 0.49));
         assert!(!slabs_apart(&a, &b, 100.0, 0.51));
-        assert!(!curves_apart(&a, &b, 2.0 * 100.0 + 0.49));
-        assert!(curves_apart(&a, &b, 0.49));
+        assert!(!curves_apart(
+            &a,
+            &b,
+            2.0 * 100.0 + 0.49,
+            &mut CALL_BUDGET.clone()
+        ));
+        assert!(curves_apart(&a, &b, 0.49, &mut CALL_BUDGET.clone()));
     }
 
     #[test]
@@ -425,5 +478,73 @@ mod tests {
             RationalBezierCurve::polynomial(&[DVec3::X * 3.0, DVec3::X * 4.0, DVec3::X * 3.5])
                 .unwrap();
         assert_eq!(sine_bound(&back, DVec3::X), 1.0);
+    }
+
+    #[test]
+    fn sections_are_apart_whichever_way_the_chord_runs() {
+        // Two segments of an arc of radius 5, 0.26 apart along it, sections of reach 0.09:
+        // decided in either order (the chord from the later to the earlier runs against the
+        // tangents).
+        let arc = |t: f64| DVec3::new(5.0 * t.sin(), 5.0 * (1.0 - t.cos()), 0.0);
+        let piece = |t: f64| segment(arc(t), arc(t + 0.005));
+        let (early, late) = (piece(0.0), piece(0.057));
+        assert!(slabs_apart(&early, &late, 0.09, 1e-7));
+        assert!(slabs_apart(&late, &early, 0.09, 1e-7));
+        assert_eq!(sine_bound(&early, DVec3::X), sine_bound(&early, -DVec3::X));
+    }
+
+    /// A flat patch of degree (1, 1) with the given corners (u along the first two).
+    fn quad(corners: [DVec3; 4]) -> Part {
+        let points = corners.iter().map(|c| c.extend(1.0)).collect();
+        Part {
+            patch: RationalBezierPatch::from_homogeneous(1, 1, points).unwrap(),
+            spine: None,
+            reach: 0.0,
+        }
+    }
+
+    #[test]
+    fn patches_whose_boxes_overlap_are_apart_along_the_line_between_them() {
+        // Two strips along the diagonal x = y, 0.1 apart across it: their boxes overlap.
+        let strip = |offset: f64| {
+            let across = DVec3::new(1.0, -1.0, 0.0) * offset;
+            quad([
+                across,
+                across + DVec3::Z,
+                across + DVec3::new(1.0, 1.0, 0.0),
+                across + DVec3::new(1.0, 1.0, 1.0),
+            ])
+        };
+        let (a, b) = (strip(0.0), strip(0.1 / 2f64.sqrt()));
+        let ((alo, ahi), (blo, bhi)) = (a.bounds(), b.bounds());
+        assert_eq!(box_distance(alo, ahi, blo, bhi), 0.0);
+        assert!(a.proven_apart(&b, 0.099));
+        assert!(!a.proven_apart(&b, 0.101));
+        let mut budget = CALL_BUDGET;
+        assert!(matches!(closest(a, b, 0.099, &mut budget), Verdict::Apart));
+        assert_eq!(budget, CALL_BUDGET, "decided without subdivision");
+    }
+
+    #[test]
+    fn pairs_met_after_the_budget_is_spent_are_undecided() {
+        // Two diagonal segments 1e-3 apart, a gap just below it: their boxes overlap, only
+        // subdivision decides.
+        let shift = DVec3::Y * 1e-3 * 2f64.sqrt();
+        let diagonal = DVec3::new(1.0, 1.0, 0.0);
+        let (a, b) = (
+            segment(DVec3::ZERO, diagonal),
+            segment(shift, diagonal + shift),
+        );
+        let mut budget = CALL_BUDGET;
+        assert!(matches!(
+            closest(a.clone(), b.clone(), 0.9e-3, &mut budget),
+            Verdict::Apart
+        ));
+        assert!(budget < CALL_BUDGET);
+        let mut spent = 0;
+        assert!(matches!(
+            closest(a, b, 0.9e-3, &mut spent),
+            Verdict::Undecided(..)
+        ));
     }
 }
