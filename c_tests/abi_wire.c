@@ -194,6 +194,33 @@ static void check_step_text_is_the_file(const RmfShape *shape, const char *path)
     free(file_text);
 }
 
+/* OpenCascade's B-rep text: size query, too small a buffer, the text itself (the solid of
+   14 faces: 14 "Fa" records, the root last), NULLs. */
+static void check_occ_brep_text(const RmfShape *shape) {
+    size_t length = 0, again = 0;
+    CHECK_STATUS(rmf_shape_occ_brep(shape, NULL, 0, &length), RMF_OK, "");
+    char *text = malloc(length + 1);
+    if (!text) {
+        CHECK(0, "a buffer");
+        return;
+    }
+    memset(text, 'x', length + 1);
+    CHECK_STATUS(rmf_shape_occ_brep(shape, text, length, &again), RMF_ERROR_BUFFER_TOO_SMALL, "need");
+    CHECK(again == length && text[0] == 'x', "too small: the length, no text");
+    CHECK_STATUS(rmf_shape_occ_brep(shape, text, length + 1, &again), RMF_OK, "");
+    CHECK(again == length && text[length] == 0 && strlen(text) == length, "the text and its NUL");
+    size_t faces = 0;
+    for (const char *at = text; (at = strstr(at, "\nFa\n")) != NULL; ++at) ++faces;
+    CHECK(strstr(text, "CASCADE Topology V1, (c) Matra-Datavision\n") != NULL && faces == 14,
+          "the version line and one record per face");
+    CHECK(length > 8 && strstr(text, "\nSo\n") != NULL && strcmp(text + length - 6, "\n+1 0\n") == 0,
+          "a solid, the root last");
+    CHECK_STATUS(rmf_shape_occ_brep(shape, text, 0, NULL), RMF_ERROR_NULL_POINTER, "length");
+    CHECK_STATUS(rmf_shape_occ_brep(shape, NULL, 8, &again), RMF_ERROR_NULL_POINTER, "buffer");
+    CHECK_STATUS(rmf_shape_occ_brep(NULL, NULL, 0, &again), RMF_ERROR_NULL_POINTER, "shape");
+    free(text);
+}
+
 static void test_pipe_route(void) {
     RmfEdge e[3];
     RmfCurve *profile = circle(1), *hole = circle(0.8);
@@ -254,6 +281,7 @@ static void test_pipe_route(void) {
     }
     check_step_text_is_the_file(shape, path);
     remove(path);
+    check_occ_brep_text(shape);
     /* With a hole: the annulus. */
     const RmfCurve *holes[1] = {hole};
     CHECK_STATUS(rmf_wire_sweep(e, 3, profile, holes, 1, NULL, &hollow), RMF_OK, "");

@@ -3642,6 +3642,32 @@ RmfStatus rmf_shape_step(const struct RmfShape *shape,
                          size_t *length);
 
 /**
+ * The shape in OpenCascade's own B-rep text (`CASCADE Topology V1`, what
+ * `BRepTools::Write` writes) into a caller buffer: `BRepTools::Read` (C++, or OCP's
+ * `BRepTools.Read_s` from a `BytesIO`) and FreeCAD's `Part.Shape.importBrepFromString`
+ * build the solid or shell from it as it is — shared edges, their curves on every face,
+ * the faces' senses — with no sewing or healing.
+ *
+ * Size query: with capacity 0 (buffer may be NULL) only length is written. Otherwise the
+ * text and a terminating NUL are written if capacity ≥ length + 1.
+ *
+ * @param[in] shape The shape.
+ * @param[out] buffer capacity bytes for the text and its NUL.
+ * @param[in] capacity Size of buffer in bytes; 0 for a size query.
+ * @param[out] length Receives the length of the text (without the NUL).
+ * @return RMF_OK on success or for a size query.
+ * @return RMF_ERROR_NULL_POINTER If shape or length is NULL, or buffer is NULL with a
+ *         non-zero capacity.
+ * @return RMF_ERROR_BUFFER_TOO_SMALL If 0 < capacity ≤ length; length is written.
+ * \since 0.2
+ * \ingroup rmf_export
+ */
+RmfStatus rmf_shape_occ_brep(const struct RmfShape *shape,
+                             char *buffer,
+                             size_t capacity,
+                             size_t *length);
+
+/**
  * Writes the default options and the struct's size.
  *
  * @param[out] options Receives the defaults (tolerance 1e-4, thickness 1, k_factor 0.5,

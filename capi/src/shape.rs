@@ -371,6 +371,41 @@ pub unsafe extern "C" fn rmf_shape_step(
     })
 }
 
+/// The shape in OpenCascade's own B-rep text (`CASCADE Topology V1`, what
+/// `BRepTools::Write` writes) into a caller buffer: `BRepTools::Read` (C++, or OCP's
+/// `BRepTools.Read_s` from a `BytesIO`) and FreeCAD's `Part.Shape.importBrepFromString`
+/// build the solid or shell from it as it is — shared edges, their curves on every face,
+/// the faces' senses — with no sewing or healing.
+///
+/// Size query: with capacity 0 (buffer may be NULL) only length is written. Otherwise the
+/// text and a terminating NUL are written if capacity ≥ length + 1.
+///
+/// @param[in] shape The shape.
+/// @param[out] buffer capacity bytes for the text and its NUL.
+/// @param[in] capacity Size of buffer in bytes; 0 for a size query.
+/// @param[out] length Receives the length of the text (without the NUL).
+/// @return RMF_OK on success or for a size query.
+/// @return RMF_ERROR_NULL_POINTER If shape or length is NULL, or buffer is NULL with a
+///         non-zero capacity.
+/// @return RMF_ERROR_BUFFER_TOO_SMALL If 0 < capacity ≤ length; length is written.
+/// \since 0.2
+/// \ingroup rmf_export
+#[no_mangle]
+pub unsafe extern "C" fn rmf_shape_occ_brep(
+    shape: *const RmfShape,
+    buffer: *mut c_char,
+    capacity: usize,
+    length: *mut usize,
+) -> RmfStatus {
+    guard("rmf_shape_occ_brep", || {
+        let shape = reference(shape, "shape")?;
+        let length = out_ptr(length, "length")?;
+        let out = crate::boundary::buffer(buffer.cast::<u8>(), capacity, "buffer")?;
+        let text = shape.shape.to_occ_brep()?;
+        crate::boundary::hand_text(&text, out, length)
+    })
+}
+
 /// Writes `bytes` beside `path` under a temporary name, then renames it to `path`. The
 /// temporary name is the process's and a call's own (a counter), created exclusively: threads
 /// and processes writing the same path at once each finish their file, and the last rename

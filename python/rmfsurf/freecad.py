@@ -343,31 +343,20 @@ def profile_curves(profile: Any, origin: ArrayLike, tangent: ArrayLike, toleranc
 
 
 def part_shape(value: Shape, tolerance: float = 1e-6) -> Any:
-    """An :class:`rmfsurf.Shape` as a Part.Shape: exact swept faces and planar caps sewn
-    into a Part.Solid when the shape is a solid, else the lateral faces sewn into a
-    Part.Shell (a Part.Compound of shells when the profile has holes: the outer and inner
-    walls do not meet)."""
-    tolerance = _core.finite(tolerance, "tolerance", positive=True)
-    faces = []
-    for f in _core.instance(value, "shape", Shape, "an rmfsurf.Shape").faces():
-        if f.kind == "swept":
-            faces.append(part_face(f.surface))
-        else:
-            wires = [Part.Wire([part_curve(c).toShape()]) for c in f.loops]
-            faces.append(Part.Face(Part.Plane(vector(f.plane_origin), vector(f.plane_normal)),
-                                   wires))
-    if not value.is_solid:
-        sheet = Part.Compound(faces)
-        sheet.sewShape(tolerance)
-        shells = sheet.Shells
-        return shells[0] if len(shells) == 1 else Part.Compound(shells)
-    shell = Part.Shell(faces)
-    shell.sewShape(tolerance)
-    solid = Part.Solid(Part.Shell(shell.Faces))
-    solid.fix(tolerance, tolerance, tolerance)
-    if solid.Volume < 0:
-        solid.reverse()
-    return solid
+    """An :class:`rmfsurf.Shape` as a Part.Shape, built by OpenCascade from the library's
+    B-rep (:meth:`rmfsurf.Shape.occ_brep`, ``importBrepFromString``): a Part.Solid when
+    the shape is a solid, else a Part.Shell (a Part.Compound of shells when the walls of a
+    hollow profile do not meet). Edges are shared and faces oriented as the library made
+    them: nothing is sewn or healed. `tolerance` (finite, > 0) is checked and otherwise
+    unused."""
+    _core.finite(tolerance, "tolerance", positive=True)
+    text = _core.instance(value, "shape", Shape, "an rmfsurf.Shape").occ_brep()
+    built = Part.Shape()
+    built.importBrepFromString(text)
+    if value.is_solid:
+        return built.Solids[0]
+    shells = built.Shells
+    return shells[0] if len(shells) == 1 else Part.Compound(shells)
 
 
 def _start_frame(wire: Any) -> Tuple[np.ndarray, np.ndarray]:

@@ -27,6 +27,7 @@ tangent × f2 (f3), are the 2-D profile of :func:`rmfsurf.wire_sweep`.
 
 from __future__ import annotations
 
+import io
 from typing import Any, List, Optional, Tuple
 
 import numpy as np
@@ -36,7 +37,7 @@ from .curves import ArrayLike, Curve, NurbsCurve, join_nurbs
 from .shapes import Arc, CurveEdge, Edge, Line, Shape, wire_sweep
 from .surfaces import Surface
 
-from OCP.BRep import BRep_Tool
+from OCP.BRep import BRep_Builder, BRep_Tool
 from OCP.BRepAdaptor import BRepAdaptor_Curve, BRepAdaptor_Surface
 from OCP.BRepBuilderAPI import (BRepBuilderAPI_MakeEdge, BRepBuilderAPI_MakeFace,
                                 BRepBuilderAPI_MakeSolid, BRepBuilderAPI_MakeWire,
@@ -367,20 +368,22 @@ def _cap(loops: List[Curve], origin: np.ndarray, normal: np.ndarray) -> Any:
 
 
 def shape(value: Shape, tolerance: float = 1e-6) -> Any:
-    """An :class:`rmfsurf.Shape` as OCP: its swept faces (``Geom_BSplineSurface``) and
-    planar caps sewn together, closed into a ``TopoDS_Solid`` when the shape is a solid
-    (else the sewn shell)."""
-    sewing = BRepBuilderAPI_Sewing(_core.finite(tolerance, "tolerance", positive=True))
-    for f in _core.instance(value, "shape", Shape, "an rmfsurf.Shape").faces():
-        if f.kind == "swept":
-            sewing.Add(face(f.surface))
-        else:
-            sewing.Add(_cap(f.loops, f.plane_origin, f.plane_normal))
-    sewing.Perform()
-    sewn = sewing.SewedShape()
-    if not value.is_solid:
-        return sewn
-    return closed_solid(sewn)
+    """An :class:`rmfsurf.Shape` as OCP, built by OpenCascade from the library's B-rep
+    (:meth:`rmfsurf.Shape.occ_brep`, read by ``BRepTools.Read_s``): a ``TopoDS_Solid``
+    when the shape is a solid, else its shell (a compound of shells when the walls of a
+    hollow profile do not meet). Edges are shared and faces oriented as the library made
+    them: nothing is sewn or healed. `tolerance` (finite, > 0) is checked and otherwise
+    unused: the library's shape needs no sewing."""
+    _core.finite(tolerance, "tolerance", positive=True)
+    text = _core.instance(value, "shape", Shape, "an rmfsurf.Shape").occ_brep()
+    raw = TopoDS_Shape()
+    BRepTools.Read_s(raw, io.BytesIO(text.encode("ascii")), BRep_Builder())
+    kind = raw.ShapeType()
+    if kind == TopAbs_SOLID:
+        return _as_solid(raw)
+    if kind == TopAbs_SHELL:
+        return _as_shell(raw)
+    return raw
 
 
 def closed_solid(sewn: Any) -> Any:
@@ -420,7 +423,10 @@ def _wrap_like(template: Any, raw: Any) -> Any:
     if module == "build123d":
         import build123d
 
-        return build123d.Solid(raw) if raw.ShapeType() == TopAbs_SOLID else build123d.Shell(raw)
+        kind = raw.ShapeType()
+        if kind == TopAbs_SOLID:
+            return build123d.Solid(raw)
+        return build123d.Shell(raw) if kind == TopAbs_SHELL else build123d.Compound(raw)
     if module == "cadquery":
         import cadquery
 

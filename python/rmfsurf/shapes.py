@@ -171,6 +171,17 @@ class Shape:
         FileError, an OSError, when the file cannot be written)."""
         call("rmf_shape_write_step", self._ptr, _core.path(path, "path"))
 
+    def occ_brep(self) -> str:
+        """The shape in OpenCascade's own B-rep text (``BRepTools.Read_s`` from a
+        ``BytesIO``, FreeCAD's ``Part.Shape().importBrepFromString``): the kernel builds
+        the solid or shell as it is, shared edges and faces' senses included, with no
+        sewing or healing."""
+        n = ffi.new("size_t *")
+        call("rmf_shape_occ_brep", self._ptr, ffi.NULL, 0, n)
+        text = ffi.new("char[]", n[0] + 1)
+        call("rmf_shape_occ_brep", self._ptr, text, n[0] + 1, n)
+        return ffi.string(text, n[0]).decode("ascii")
+
     def __repr__(self) -> str:
         return "<rmfsurf.Shape %d faces%s>" % (self.face_count, ", solid" if self.is_solid else "")
 

@@ -4,6 +4,7 @@
 //! | module | format | holds | read back in the tests by |
 //! | --- | --- | --- | --- |
 //! | [`step`] | STEP AP214 (ISO 10303-21) | rational B-spline surfaces as faces, curves | FreeCAD (OpenCascade's reader) |
+//! | [`occ_brep`] | OpenCascade's B-rep text (`CASCADE Topology V1`) | a B-rep solid or shell as the kernel holds it | OpenCascade's `BRepTools::Read` and `BRepCheck_Analyzer` (Python tests) |
 //! | [`vtk`] | VTK XML PolyData `.vtp` | triangle meshes with normals | VTK's `vtkXMLPolyDataReader` |
 //! | [`obj`] | Wavefront `.obj` | polygon meshes with normals | FreeCAD's mesh reader |
 //! | [`openscad`] | OpenSCAD `.scad` | closed `polyhedron()` solids, RMF transforms for sweeps | OpenSCAD (renders to STL) |
@@ -15,6 +16,7 @@
 
 pub mod dxf;
 pub mod obj;
+pub mod occ_brep;
 pub mod openscad;
 pub mod step;
 pub mod svg;
@@ -24,6 +26,21 @@ pub mod vtk;
 fn number(x: f64) -> String {
     let s = format!("{:?}", x + 0.0);
     s.strip_suffix(".0").map_or(s.clone(), str::to_string)
+}
+
+/// Distinct knots and their multiplicities.
+fn knots_and_multiplicities(knots: &[f64]) -> (Vec<f64>, Vec<usize>) {
+    let mut distinct: Vec<f64> = Vec::new();
+    let mut multiplicities: Vec<usize> = Vec::new();
+    for &k in knots {
+        if distinct.last() == Some(&k) {
+            *multiplicities.last_mut().expect("a knot before") += 1;
+        } else {
+            distinct.push(k);
+            multiplicities.push(1);
+        }
+    }
+    (distinct, multiplicities)
 }
 
 #[cfg(test)]

@@ -26,6 +26,7 @@
 //! the loop, as in OpenCascade's own files. Coordinates are written in millimetres with
 //! 17 significant digits, so every double round-trips exactly.
 
+use super::knots_and_multiplicities;
 use crate::bezier::{NurbsCurve, NurbsSurface};
 use crate::error::{invalid, Result};
 use crate::math::bounding_diagonal;
@@ -102,21 +103,6 @@ fn refs(ids: &[usize]) -> String {
 
 fn reals(values: &[f64]) -> String {
     list(values.iter().map(|&x| real(x)))
-}
-
-/// Distinct knots and their multiplicities.
-fn knots_and_multiplicities(knots: &[f64]) -> (Vec<f64>, Vec<usize>) {
-    let mut distinct: Vec<f64> = Vec::new();
-    let mut multiplicities: Vec<usize> = Vec::new();
-    for &k in knots {
-        if distinct.last() == Some(&k) {
-            *multiplicities.last_mut().expect("a knot before") += 1;
-        } else {
-            distinct.push(k);
-            multiplicities.push(1);
-        }
-    }
-    (distinct, multiplicities)
 }
 
 fn multiplicities_list(multiplicities: &[usize]) -> String {

@@ -230,6 +230,12 @@ impl Shape {
         crate::export::step::brep_to_step(&self.brep, name)
     }
 
+    /// The shape in OpenCascade's own B-rep text (`BRepTools::Read`, FreeCAD's
+    /// `Part.Shape.importBrepFromString`): the kernel builds it as it is, without sewing.
+    pub fn to_occ_brep(&self) -> Result<String> {
+        crate::export::occ_brep::brep_to_occ(&self.brep)
+    }
+
     /// The topology as written to STEP (for checks).
     #[cfg(test)]
     pub(crate) fn brep(&self) -> &Brep {

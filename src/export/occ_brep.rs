@@ -1,0 +1,485 @@
+//! OpenCascade's own B-rep text (`CASCADE Topology V1`, what `BRepTools::Write` writes) of
+//! a [`Brep`]: `BRepTools::Read` — and so build123d, CadQuery and FreeCAD's
+//! `Part.Shape.importBrepFromString` — builds the shape from it as it is, with no sewing,
+//! healing or orientation measured afterwards: shared edges are one edge of the kernel,
+//! every edge carries its curve on each B-spline face (`2` records, a `3` record for a
+//! seam; on a plane the kernel projects the edge itself), the faces' senses and loops are
+//! the model's.
+//!
+//! The file (OCCT's `BRepTools_ShapeSet`, `GeomTools_*Set`): the geometry tables —
+//! 2-D curves, 3-D curves, surfaces, each numbered from 1 in the order written — then the
+//! topological shapes, every one after the shapes it holds; a reference to a shape is its
+//! orientation and its number counted from the last shape written (the last is 1), and
+//! the file ends with the reference to the root. A face that is its whole B-spline surface
+//! is marked so (its natural restriction). Every curve is written as a B-spline
+//! (code 7: a pcurve line of the model need not run at unit speed, which a 2-D line
+//! would), surfaces as B-splines (code 9, poles with v running fastest) or planes (code
+//! 1: origin, normal, x axis, y = normal × x axis). Numbers are the shortest text that
+//! reads back as the same double.
+
+use super::{knots_and_multiplicities, number};
+use crate::bezier::{NurbsCurve, NurbsSurface};
+use crate::error::{invalid, Result};
+use crate::model::{Brep, BrepFace, BrepSurface, PCurve};
+use glam::DVec3;
+use std::fmt::Write;
+
+/// The kernel's tolerance relative to the largest coordinate (rounding of the model's
+/// geometry is some 1e-15 of it), and its floor: OpenCascade's `Precision::Confusion`.
+const RELATIVE_TOLERANCE: f64 = 1e-10;
+const KERNEL_CONFUSION: f64 = 1e-7;
+
+/// The text of `brep` in OpenCascade's B-rep format: a solid of one closed shell, or an
+/// open shell (a compound of shells when its faces fall apart into parts; module notes).
+pub fn brep_to_occ(brep: &Brep) -> Result<String> {
+    if brep.faces.is_empty() {
+        return invalid!("a shape needs at least one face");
+    }
+    let tolerance = number(tolerance(brep));
+    let mut text = String::from("\nCASCADE Topology V1, (c) Matra-Datavision\nLocations 0\n");
+    let on_edges = curves_2d(brep, &mut text)?;
+    let _ = writeln!(text, "Curves {}", brep.edges.len());
+    for edge in &brep.edges {
+        bspline(&mut text, &edge.curve, |p| vec![p.x, p.y, p.z]);
+    }
+    text.push_str("Polygon3D 0\nPolygonOnTriangulations 0\n");
+    let _ = writeln!(text, "Surfaces {}", brep.faces.len());
+    for face in &brep.faces {
+        surface(&mut text, &face.surface);
+    }
+    text.push_str("Triangulations 0\n\n");
+    let mut shapes = Shapes::default();
+    let vertices: Vec<usize> = brep
+        .vertices
+        .iter()
+        .map(|p| {
+            let data = format!(
+                "Ve\n{tolerance}\n{} {} {}\n0 0\n",
+                number(p.x),
+                number(p.y),
+                number(p.z)
+            );
+            shapes.add(data, "0101101", Vec::new())
+        })
+        .collect();
+    let mut edges = Vec::with_capacity(brep.edges.len());
+    for (e, edge) in brep.edges.iter().enumerate() {
+        let (Some(&start), Some(&end)) = (vertices.get(edge.start), vertices.get(edge.end)) else {
+            return invalid!("edge {e} joins vertices that do not exist");
+        };
+        let data = edge_data(e, &edge.curve, &on_edges[e], &tolerance);
+        edges.push(shapes.add(data, "0101000", vec![('+', start), ('-', end)]));
+    }
+    let mut in_shell = Vec::with_capacity(brep.faces.len());
+    for (f, face) in brep.faces.iter().enumerate() {
+        let wires: Vec<(char, usize)> = face
+            .bounds
+            .iter()
+            .map(|bound| {
+                let uses = bound
+                    .uses
+                    .iter()
+                    .map(|u| (if u.forward { '+' } else { '-' }, edges[u.edge]))
+                    .collect();
+                ('+', shapes.add("Wi\n".into(), "0101100", uses))
+            })
+            .collect();
+        let natural = u8::from(natural_bounds(face));
+        let data = format!("Fa\n{natural} {tolerance} {} 0\n", f + 1);
+        let sense = if face.same_sense { '+' } else { '-' };
+        in_shell.push((sense, shapes.add(data, "0101000", wires)));
+    }
+    if brep.closed {
+        let shell = shapes.add("Sh\n".into(), "0101100", in_shell);
+        shapes.add("So\n".into(), "1100000", vec![('+', shell)]);
+    } else {
+        let parts = connected_parts(brep);
+        if parts.len() == 1 {
+            shapes.add("Sh\n".into(), "1101000", in_shell);
+        } else {
+            let shells = parts
+                .iter()
+                .map(|faces| {
+                    let held = faces.iter().map(|&f| in_shell[f]).collect();
+                    ('+', shapes.add("Sh\n".into(), "0101000", held))
+                })
+                .collect();
+            shapes.add("Co\n".into(), "1100000", shells);
+        }
+    }
+    shapes.write(&mut text);
+    Ok(text)
+}
+
+/// Whether the face is its whole B-spline surface: one loop, every pcurve a line along
+/// the boundary of the parameter rectangle. The kernel then takes the rectangle for the
+/// face's domain (its natural restriction): integrals over the face, as its volume and
+/// area, run over the rectangle instead of along the loop's curves.
+fn natural_bounds(face: &BrepFace) -> bool {
+    let BrepSurface::Nurbs(surface) = &face.surface else {
+        return false;
+    };
+    let u = [
+        surface.knots_u[0],
+        surface.knots_u[surface.knots_u.len() - 1],
+    ];
+    let v = [
+        surface.knots_v[0],
+        surface.knots_v[surface.knots_v.len() - 1],
+    ];
+    let [bound] = &face.bounds[..] else {
+        return false;
+    };
+    bound.uses.iter().all(|use_| match &use_.pcurve {
+        Some(PCurve::Line { origin, direction }) => {
+            (direction.0 == 0.0 && u.contains(&origin.0))
+                || (direction.1 == 0.0 && v.contains(&origin.1))
+        }
+        _ => false,
+    })
+}
+
+/// The faces grouped by the edges they share (an open shape of a hollow profile: the
+/// outer and the inner walls), each group in the order of the faces.
+fn connected_parts(brep: &Brep) -> Vec<Vec<usize>> {
+    let mut part: Vec<usize> = (0..brep.faces.len()).collect();
+    fn root(part: &mut [usize], mut f: usize) -> usize {
+        while part[f] != f {
+            part[f] = part[part[f]];
+            f = part[f];
+        }
+        f
+    }
+    let mut first_face: Vec<Option<usize>> = vec![None; brep.edges.len()];
+    for (f, face) in brep.faces.iter().enumerate() {
+        for u in face.bounds.iter().flat_map(|b| &b.uses) {
+            match first_face.get(u.edge).copied().flatten() {
+                Some(g) => {
+                    let (a, b) = (root(&mut part, f), root(&mut part, g));
+                    part[a.max(b)] = a.min(b);
+                }
+                None => {
+                    if let Some(slot) = first_face.get_mut(u.edge) {
+                        *slot = Some(f);
+                    }
+                }
+            }
+        }
+    }
+    let mut groups: Vec<(usize, Vec<usize>)> = Vec::new();
+    for f in 0..brep.faces.len() {
+        let r = root(&mut part, f);
+        match groups.iter_mut().find(|(g, _)| *g == r) {
+            Some((_, faces)) => faces.push(f),
+            None => groups.push((r, vec![f])),
+        }
+    }
+    groups.into_iter().map(|(_, faces)| faces).collect()
+}
+
+/// The kernel's tolerance for the shape: [`RELATIVE_TOLERANCE`] of its largest coordinate,
+/// at least [`KERNEL_CONFUSION`].
+fn tolerance(brep: &Brep) -> f64 {
+    let largest = brep
+        .vertices
+        .iter()
+        .chain(brep.edges.iter().flat_map(|e| &e.curve.poles))
+        .map(|p| p.abs().max_element())
+        .fold(0.0, f64::max);
+    (RELATIVE_TOLERANCE * largest).max(KERNEL_CONFUSION)
+}
+
+/// An edge on one face: the numbers of its curve(s) in the face's parameter plane — two for
+/// a seam, the forward use's first.
+struct OnFace {
+    face: usize,
+    curves: Vec<usize>,
+}
+
+/// Writes the `Curve2ds` table (every use's pcurve, in the order of faces, loops and uses)
+/// and returns, per edge, the faces it lies on with their curves' numbers. A use without
+/// a pcurve is allowed on a plane only (the kernel projects the edge there).
+fn curves_2d(brep: &Brep, text: &mut String) -> Result<Vec<Vec<OnFace>>> {
+    let mut table = String::new();
+    let mut count = 0;
+    let mut on_edges: Vec<Vec<OnFace>> = (0..brep.edges.len()).map(|_| Vec::new()).collect();
+    for (f, face) in brep.faces.iter().enumerate() {
+        let mut uses: Vec<_> = face.bounds.iter().flat_map(|b| &b.uses).collect();
+        // The forward use of a seam first: its curve is the first of the `3` record.
+        uses.sort_by_key(|u| !u.forward);
+        for u in uses {
+            let Some(on_faces) = on_edges.get_mut(u.edge) else {
+                return invalid!("face {f} uses edge {} of {}", u.edge, brep.edges.len());
+            };
+            // On a plane the kernel projects the edge itself (`BRep_Tool::CurveOnPlane`),
+            // as it does for planes it makes.
+            if let BrepSurface::Plane { .. } = face.surface {
+                continue;
+            }
+            let Some(pcurve) = &u.pcurve else {
+                return invalid!("edge {} has no curve on face {f}", u.edge);
+            };
+            write_pcurve(&mut table, pcurve, &brep.edges[u.edge].curve);
+            count += 1;
+            match on_faces.iter_mut().find(|o| o.face == f) {
+                Some(on) => on.curves.push(count),
+                None => on_faces.push(OnFace {
+                    face: f,
+                    curves: vec![count],
+                }),
+            }
+        }
+    }
+    let _ = writeln!(text, "Curve2ds {count}");
+    text.push_str(&table);
+    Ok(on_edges)
+}
+
+/// A pcurve as a 2-D B-spline on the edge curve's parameter range.
+fn write_pcurve(text: &mut String, pcurve: &PCurve, edge: &NurbsCurve) {
+    match pcurve {
+        PCurve::Line { origin, direction } => {
+            let (first, last) = range(edge);
+            let at =
+                |t: f64| DVec3::new(origin.0 + t * direction.0, origin.1 + t * direction.1, 0.0);
+            let line = NurbsCurve {
+                degree: 1,
+                poles: vec![at(first), at(last)],
+                weights: vec![1.0, 1.0],
+                knots: vec![first, first, last, last],
+            };
+            bspline(text, &line, |p| vec![p.x, p.y]);
+        }
+        PCurve::Curve(curve) => bspline(text, curve, |p| vec![p.x, p.y]),
+    }
+}
+
+/// The edge's record: its 3-D curve (number `e + 1`) and its curves on the faces.
+fn edge_data(e: usize, curve: &NurbsCurve, on_faces: &[OnFace], tolerance: &str) -> String {
+    let (first, last) = range(curve);
+    let (first, last) = (number(first), number(last));
+    let mut data = format!("Ed\n {tolerance} 1 1 0\n1 {} 0 {first} {last}\n", e + 1);
+    for on in on_faces {
+        let surface = on.face + 1;
+        let _ = match on.curves[..] {
+            [forward, reversed, ..] => {
+                writeln!(data, "3 {forward} {reversed} C0 {surface} 0 {first} {last}")
+            }
+            [only] => writeln!(data, "2 {only} {surface} 0 {first} {last}"),
+            [] => Ok(()),
+        };
+    }
+    data.push_str("0\n");
+    data
+}
+
+/// A curve's parameter range (clamped knots).
+fn range(curve: &NurbsCurve) -> (f64, f64) {
+    (curve.knots[0], curve.knots[curve.knots.len() - 1])
+}
+
+/// A B-spline curve record (code 7) with the coordinates `coordinates` gives of each pole.
+fn bspline(text: &mut String, curve: &NurbsCurve, coordinates: impl Fn(DVec3) -> Vec<f64>) {
+    let (knots, multiplicities) = knots_and_multiplicities(&curve.knots);
+    let _ = write!(
+        text,
+        "7 1 0 {} {} {}",
+        curve.degree,
+        curve.poles.len(),
+        knots.len()
+    );
+    for (&p, &w) in curve.poles.iter().zip(&curve.weights) {
+        for x in coordinates(p) {
+            let _ = write!(text, " {}", number(x));
+        }
+        let _ = write!(text, " {}", number(w));
+    }
+    text.push('\n');
+    for (k, m) in knots.iter().zip(&multiplicities) {
+        let _ = write!(text, " {} {m}", number(*k));
+    }
+    text.push('\n');
+}
+
+/// A surface record: a B-spline (code 9, v running fastest) or a plane (code 1).
+fn surface(text: &mut String, surface: &BrepSurface) {
+    match surface {
+        BrepSurface::Nurbs(s) => nurbs_surface(text, s),
+        BrepSurface::Plane {
+            origin,
+            normal,
+            x_axis,
+        } => {
+            let y_axis = normal.cross(*x_axis);
+            let _ = write!(text, "1");
+            for v in [*origin, *normal, *x_axis, y_axis] {
+                let _ = write!(text, " {} {} {}", number(v.x), number(v.y), number(v.z));
+            }
+            text.push('\n');
+        }
+    }
+}
+
+fn nurbs_surface(text: &mut String, s: &NurbsSurface) {
+    let (ku, mu) = knots_and_multiplicities(&s.knots_u);
+    let (kv, mv) = knots_and_multiplicities(&s.knots_v);
+    let _ = writeln!(
+        text,
+        "9 1 1 0 0 {} {} {} {} {} {}",
+        s.degree_u,
+        s.degree_v,
+        s.pole_count_u,
+        s.pole_count_v,
+        ku.len(),
+        kv.len()
+    );
+    for row in s
+        .poles
+        .chunks(s.pole_count_v)
+        .zip(s.weights.chunks(s.pole_count_v))
+    {
+        for (p, w) in row.0.iter().zip(row.1) {
+            let _ = write!(
+                text,
+                " {} {} {} {}",
+                number(p.x),
+                number(p.y),
+                number(p.z),
+                number(*w)
+            );
+        }
+        text.push('\n');
+    }
+    for (knots, multiplicities) in [(ku, mu), (kv, mv)] {
+        for (k, m) in knots.iter().zip(&multiplicities) {
+            let _ = write!(text, " {} {m}", number(*k));
+        }
+        text.push('\n');
+    }
+}
+
+/// A shape held by another: its orientation (`+`, `-`) and its position in [`Shapes`].
+type Held = (char, usize);
+
+/// A shape's record: its type and data, its flags, the shapes it holds.
+struct Record {
+    data: String,
+    flags: &'static str,
+    held: Vec<Held>,
+}
+
+/// The topological shapes in the order written (each after the shapes it holds).
+#[derive(Default)]
+struct Shapes {
+    records: Vec<Record>,
+}
+
+impl Shapes {
+    /// Adds a shape — its type and data, its flags (free, modified, checked, orientable,
+    /// closed, infinite, convex), the shapes it holds with their orientations — and
+    /// returns its position (from 0).
+    fn add(&mut self, data: String, flags: &'static str, held: Vec<Held>) -> usize {
+        self.records.push(Record { data, flags, held });
+        self.records.len() - 1
+    }
+
+    /// The `TShapes` table and the root reference: a shape is referred to by its number
+    /// counted from the last written (1), the root is the last.
+    fn write(&self, text: &mut String) {
+        let n = self.records.len();
+        let _ = writeln!(text, "TShapes {n}");
+        for Record { data, flags, held } in &self.records {
+            text.push_str(data);
+            let _ = write!(text, "\n{flags}\n");
+            for (orientation, position) in held {
+                let _ = write!(text, "{orientation}{} 0 ", n - position);
+            }
+            text.push_str("*\n");
+        }
+        text.push_str("\n+1 0\n");
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::wire::tests::{circle, pipe_route, square};
+    use crate::wire::{sweep_wire, WireSweep};
+
+    /// The `TShapes` records: each one's type and the numbers it refers to.
+    fn records(text: &str) -> Vec<(String, Vec<usize>)> {
+        let table = text.split("TShapes ").nth(1).expect("a TShapes table");
+        let mut lines = table.lines();
+        let n: usize = lines.next().unwrap().trim().parse().unwrap();
+        let mut out = Vec::new();
+        let mut kind = None;
+        for line in lines {
+            match line.get(..2) {
+                Some(k @ ("Ve" | "Ed" | "Wi" | "Fa" | "Sh" | "So" | "Co")) if kind.is_none() => {
+                    kind = Some(k.to_string())
+                }
+                _ if line.ends_with('*') => {
+                    let refs = line
+                        .split_whitespace()
+                        .filter(|t| t.starts_with(['+', '-']))
+                        .map(|t| t[1..].parse().unwrap())
+                        .collect();
+                    out.push((kind.take().unwrap(), refs));
+                }
+                _ => {}
+            }
+        }
+        assert_eq!(out.len(), n);
+        out
+    }
+
+    /// Every reference is to a shape written before (numbered from the last, 1), the last
+    /// shape is the root, and the counts are the model's.
+    fn check_order_and_counts(brep: &Brep, text: &str, root: &str) {
+        let shapes = records(text);
+        let n = shapes.len();
+        for (i, (kind, refs)) in shapes.iter().enumerate() {
+            for &k in refs {
+                assert!(k >= 1 && n - k < i, "record {i} ({kind}) refers to {k}");
+            }
+        }
+        assert_eq!(shapes.last().unwrap().0, root);
+        assert!(text.trim_end().ends_with("+1 0"));
+        let count = |kind: &str| shapes.iter().filter(|(k, _)| k == kind).count();
+        assert_eq!(count("Ve"), brep.vertices.len());
+        assert_eq!(count("Ed"), brep.edges.len());
+        assert_eq!(count("Fa"), brep.faces.len());
+    }
+
+    #[test]
+    fn a_pipe_is_a_solid_whose_shapes_follow_the_shapes_they_hold() {
+        let shape = sweep_wire(&pipe_route(), &circle(1.0), &[], &WireSweep::default()).unwrap();
+        let text = shape.to_occ_brep().unwrap();
+        check_order_and_counts(shape.brep(), &text, "So");
+        if let Ok(path) = std::env::var("RMFSURF_DUMP_OCC") {
+            std::fs::write(path, &text).unwrap();
+        }
+        // Every edge of a B-spline face has its curve on that face.
+        for (e, edge_record) in text.split("\nEd\n").skip(1).enumerate() {
+            let on_faces = edge_record
+                .lines()
+                .take_while(|l| *l != "0")
+                .filter(|l| l.starts_with("2 ") || l.starts_with("3 "))
+                .count();
+            assert!(on_faces >= 1, "edge {e} has no curve on a face");
+        }
+    }
+
+    #[test]
+    fn an_open_hollow_sweep_is_a_compound_of_its_two_walls() {
+        let sheet = WireSweep {
+            solid: false,
+            ..WireSweep::default()
+        };
+        let shape = sweep_wire(&pipe_route(), &square(1.0), &[circle(0.5)], &sheet).unwrap();
+        let text = shape.to_occ_brep().unwrap();
+        check_order_and_counts(shape.brep(), &text, "Co");
+        let shells = records(&text).iter().filter(|(k, _)| k == "Sh").count();
+        assert_eq!(shells, 2);
+    }
+}
