@@ -71,7 +71,7 @@ pub fn status_ok(function: &str, status: RmfStatus) -> bool {
         );
     }
     let code = status as u32;
-    assert!(code <= 6, "{function}: undocumented status {code}");
+    assert!(code <= 7, "{function}: undocumented status {code}");
     if status == RmfStatus::RmfOk {
         return true;
     }

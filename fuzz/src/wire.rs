@@ -1,7 +1,7 @@
 //! Operations on the wire sweep entry points: wires of lines, arcs and pooled curves
 //! (mostly connected, sometimes not), profiles (a circle or square of any size, or a pooled
-//! curve) with holes, options of every value; then the shapes' faces, loops, report and STEP
-//! file, each checked against the contract (a solid's figures finite and in range, caps with
+//! curve) with holes, options of every value; then the shapes' faces, loops, report, STEP
+//! file and texts (STEP, OpenCascade's B-rep), each checked against the contract (a solid's figures finite and in range, caps with
 //! unit normals, borrowed surfaces that evaluate).
 
 use rmfsurf_capi::curve::rmf_nurbs_curve_create;
@@ -23,6 +23,7 @@ pub const OPS: &[fn(&mut Session)] = &[
     shape_faces,
     shape_report,
     shape_step,
+    shape_texts,
 ];
 
 fn add(a: RmfVec3, b: RmfVec3) -> RmfVec3 {
@@ -299,4 +300,55 @@ fn shape_step(s: &mut Session) {
     }
     let _ = std::fs::remove_file(&path);
     let _ = std::fs::remove_dir(&dir);
+}
+
+/// The STEP and OpenCascade B-rep texts of a shape: a size query, then the text into a
+/// buffer of exactly that size, NUL-terminated; the B-rep text from its version line to
+/// the root reference.
+fn shape_texts(s: &mut Session) {
+    let shape = s.shape();
+    type Text = unsafe extern "C" fn(
+        *const RmfShape,
+        *mut std::ffi::c_char,
+        usize,
+        *mut usize,
+    ) -> rmfsurf_capi::RmfStatus;
+    unsafe extern "C" fn step(
+        shape: *const RmfShape,
+        buffer: *mut std::ffi::c_char,
+        capacity: usize,
+        length: *mut usize,
+    ) -> rmfsurf_capi::RmfStatus {
+        rmf_shape_step(shape, std::ptr::null(), buffer, capacity, length)
+    }
+    let calls: [(&str, Text); 2] = [
+        ("rmf_shape_step", step),
+        ("rmf_shape_occ_brep", rmf_shape_occ_brep),
+    ];
+    for (name, call) in calls {
+        let mut length = poisoned::<usize>();
+        let status = unsafe { call(shape, null_mut(), 0, &mut length) };
+        if !checked(name, status, &[is_poisoned(&length)]) {
+            continue;
+        }
+        let mut buffer = vec![0xAAu8; length + 1];
+        let mut again = 0usize;
+        let status = unsafe { call(shape, buffer.as_mut_ptr().cast(), length + 1, &mut again) };
+        assert!(
+            status_ok(name, status),
+            "{name}: the size it gave is not enough"
+        );
+        assert_eq!(again, length, "{name}: the length changed");
+        assert_eq!(buffer[length], 0, "{name}: no NUL");
+        let text = std::str::from_utf8(&buffer[..length]).expect("UTF-8 text");
+        assert!(!text.contains('\0'), "{name}: a NUL inside the text");
+        if name == "rmf_shape_occ_brep" {
+            assert!(text.starts_with("\nCASCADE Topology V1, (c) Matra-Datavision\n"));
+            assert!(text.ends_with("\n+1 0\n"));
+            assert!(
+                !text.contains("NaN") && !text.contains("inf"),
+                "a number out of range"
+            );
+        }
+    }
 }
