@@ -33,6 +33,9 @@ pub struct RmfShape {
     surfaces: Vec<Option<RmfSurface>>,
     /// The caps' loops, the views of rmf_shape_face_loop.
     loops: Vec<Vec<RmfCurve>>,
+    /// OpenCascade's B-rep text, made on the first rmf_shape_occ_brep (a caller asks twice:
+    /// the size, then the text).
+    occ_brep: std::sync::OnceLock<String>,
 }
 
 impl RmfShape {
@@ -56,6 +59,7 @@ impl RmfShape {
             shape,
             surfaces,
             loops,
+            occ_brep: std::sync::OnceLock::new(),
         }
     }
 
@@ -401,8 +405,14 @@ pub unsafe extern "C" fn rmf_shape_occ_brep(
         let shape = reference(shape, "shape")?;
         let length = out_ptr(length, "length")?;
         let out = crate::boundary::buffer(buffer.cast::<u8>(), capacity, "buffer")?;
-        let text = shape.shape.to_occ_brep()?;
-        crate::boundary::hand_text(&text, out, length)
+        let text = match shape.occ_brep.get() {
+            Some(text) => text,
+            None => {
+                let text = shape.shape.to_occ_brep()?;
+                shape.occ_brep.get_or_init(|| text)
+            }
+        };
+        crate::boundary::hand_text(text, out, length)
     })
 }
 

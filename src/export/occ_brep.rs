@@ -17,12 +17,23 @@
 //! 1: origin, normal, x axis, y = normal × x axis). Numbers are the shortest text that
 //! reads back as the same double.
 
-use super::{knots_and_multiplicities, number};
+use super::knots_and_multiplicities;
 use crate::bezier::{NurbsCurve, NurbsSurface};
 use crate::error::{invalid, Result};
 use crate::model::{Brep, BrepFace, BrepSurface, PCurve};
 use glam::DVec3;
 use std::fmt::Write;
+
+/// A number as the shortest text that reads back as the same double (−0 as 0), written
+/// without an allocation: the files hold a great many.
+#[derive(Clone, Copy)]
+struct Real(f64);
+
+impl std::fmt::Display for Real {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{:?}", self.0 + 0.0)
+    }
+}
 
 /// The kernel's tolerance relative to the largest coordinate (rounding of the model's
 /// geometry is some 1e-15 of it), and its floor: OpenCascade's `Precision::Confusion`.
@@ -35,12 +46,12 @@ pub fn brep_to_occ(brep: &Brep) -> Result<String> {
     if brep.faces.is_empty() {
         return invalid!("a shape needs at least one face");
     }
-    let tolerance = number(tolerance(brep));
+    let tolerance = Real(tolerance(brep));
     let mut text = String::from("\nCASCADE Topology V1, (c) Matra-Datavision\nLocations 0\n");
     let on_edges = curves_2d(brep, &mut text)?;
     let _ = writeln!(text, "Curves {}", brep.edges.len());
     for edge in &brep.edges {
-        bspline(&mut text, &edge.curve, |p| vec![p.x, p.y, p.z]);
+        bspline(&mut text, &edge.curve, 3);
     }
     text.push_str("Polygon3D 0\nPolygonOnTriangulations 0\n");
     let _ = writeln!(text, "Surfaces {}", brep.faces.len());
@@ -55,9 +66,9 @@ pub fn brep_to_occ(brep: &Brep) -> Result<String> {
         .map(|p| {
             let data = format!(
                 "Ve\n{tolerance}\n{} {} {}\n0 0\n",
-                number(p.x),
-                number(p.y),
-                number(p.z)
+                Real(p.x),
+                Real(p.y),
+                Real(p.z)
             );
             shapes.add(data, "0101101", Vec::new())
         })
@@ -67,7 +78,7 @@ pub fn brep_to_occ(brep: &Brep) -> Result<String> {
         let (Some(&start), Some(&end)) = (vertices.get(edge.start), vertices.get(edge.end)) else {
             return invalid!("edge {e} joins vertices that do not exist");
         };
-        let data = edge_data(e, &edge.curve, &on_edges[e], &tolerance);
+        let data = edge_data(e, &edge.curve, &on_edges[e], tolerance);
         edges.push(shapes.add(data, "0101000", vec![('+', start), ('-', end)]));
     }
     let mut in_shell = Vec::with_capacity(brep.faces.len());
@@ -248,16 +259,16 @@ fn write_pcurve(text: &mut String, pcurve: &PCurve, edge: &NurbsCurve) {
                 weights: vec![1.0, 1.0],
                 knots: vec![first, first, last, last],
             };
-            bspline(text, &line, |p| vec![p.x, p.y]);
+            bspline(text, &line, 2);
         }
-        PCurve::Curve(curve) => bspline(text, curve, |p| vec![p.x, p.y]),
+        PCurve::Curve(curve) => bspline(text, curve, 2),
     }
 }
 
 /// The edge's record: its 3-D curve (number `e + 1`) and its curves on the faces.
-fn edge_data(e: usize, curve: &NurbsCurve, on_faces: &[OnFace], tolerance: &str) -> String {
+fn edge_data(e: usize, curve: &NurbsCurve, on_faces: &[OnFace], tolerance: Real) -> String {
     let (first, last) = range(curve);
-    let (first, last) = (number(first), number(last));
+    let (first, last) = (Real(first), Real(last));
     let mut data = format!("Ed\n {tolerance} 1 1 0\n1 {} 0 {first} {last}\n", e + 1);
     for on in on_faces {
         let surface = on.face + 1;
@@ -278,8 +289,9 @@ fn range(curve: &NurbsCurve) -> (f64, f64) {
     (curve.knots[0], curve.knots[curve.knots.len() - 1])
 }
 
-/// A B-spline curve record (code 7) with the coordinates `coordinates` gives of each pole.
-fn bspline(text: &mut String, curve: &NurbsCurve, coordinates: impl Fn(DVec3) -> Vec<f64>) {
+/// A B-spline curve record (code 7), its poles' first `dimension` coordinates (2 for a
+/// curve in a parameter plane, 3 in space).
+fn bspline(text: &mut String, curve: &NurbsCurve, dimension: usize) {
     let (knots, multiplicities) = knots_and_multiplicities(&curve.knots);
     let _ = write!(
         text,
@@ -289,14 +301,14 @@ fn bspline(text: &mut String, curve: &NurbsCurve, coordinates: impl Fn(DVec3) ->
         knots.len()
     );
     for (&p, &w) in curve.poles.iter().zip(&curve.weights) {
-        for x in coordinates(p) {
-            let _ = write!(text, " {}", number(x));
+        for x in &p.to_array()[..dimension] {
+            let _ = write!(text, " {}", Real(*x));
         }
-        let _ = write!(text, " {}", number(w));
+        let _ = write!(text, " {}", Real(w));
     }
     text.push('\n');
     for (k, m) in knots.iter().zip(&multiplicities) {
-        let _ = write!(text, " {} {m}", number(*k));
+        let _ = write!(text, " {} {m}", Real(*k));
     }
     text.push('\n');
 }
@@ -313,7 +325,7 @@ fn surface(text: &mut String, surface: &BrepSurface) {
             let y_axis = normal.cross(*x_axis);
             let _ = write!(text, "1");
             for v in [*origin, *normal, *x_axis, y_axis] {
-                let _ = write!(text, " {} {} {}", number(v.x), number(v.y), number(v.z));
+                let _ = write!(text, " {} {} {}", Real(v.x), Real(v.y), Real(v.z));
             }
             text.push('\n');
         }
@@ -342,17 +354,17 @@ fn nurbs_surface(text: &mut String, s: &NurbsSurface) {
             let _ = write!(
                 text,
                 " {} {} {} {}",
-                number(p.x),
-                number(p.y),
-                number(p.z),
-                number(*w)
+                Real(p.x),
+                Real(p.y),
+                Real(p.z),
+                Real(*w)
             );
         }
         text.push('\n');
     }
     for (knots, multiplicities) in [(ku, mu), (kv, mv)] {
         for (k, m) in knots.iter().zip(&multiplicities) {
-            let _ = write!(text, " {} {m}", number(*k));
+            let _ = write!(text, " {} {m}", Real(*k));
         }
         text.push('\n');
     }
