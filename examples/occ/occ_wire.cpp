@@ -1,6 +1,7 @@
 // An OpenCascade kernel taking rmfsurf's wire sweeps: the wire is swept through the C API
 // (rmf_wire_sweep), written with rmf_shape_write_step and read back by OpenCascade's own
-// STEP reader, then checked by OpenCascade — one Solid, BRepCheck_Analyzer valid, the volume
+// STEP reader, and handed over in OpenCascade's B-rep text (rmf_shape_occ_brep, built by
+// BRepTools::Read from a string, no file), then checked by OpenCascade — one Solid, BRepCheck_Analyzer valid, the volume
 // by BRepGProp's adaptive integration against the closed form, the parameter lines of every
 // face (GeomAdaptor D1) — and printed beside OpenCascade's own sweep of the same wire
 // (BRepOffsetAPI_MakePipeShell in corrected-Frenet and Frenet mode, right or round corners),
@@ -186,6 +187,17 @@ static void run(const Case &c) {
     const TopoDS_Shape read = wire_sweep::read_step(path);
     std::remove(path.c_str());
     const Measure ours = wire_sweep::measure(read);
+    // The same solid handed over in OpenCascade's own B-rep text: built as it is, no file.
+    size_t length = 0;
+    require(rmf_shape_occ_brep(shape, nullptr, 0, &length) == RMF_OK, "rmf_shape_occ_brep (size)");
+    std::string text(length + 1, '\0');
+    require(rmf_shape_occ_brep(shape, text.data(), text.size(), &length) == RMF_OK, "rmf_shape_occ_brep");
+    text.resize(length);
+    const Measure handed = wire_sweep::measure(wire_sweep::read_brep_text(text));
+    require(handed.valid && handed.solids == 1, "OpenCascade builds one valid Solid from the B-rep text");
+    check(std::fabs(handed.volume - ours.volume) <= 1e-9 * ours.volume,
+          "volume from the B-rep text against the STEP solid's, relative",
+          std::fabs(handed.volume - ours.volume) / ours.volume, 1e-9);
     RmfSweepReport report;
     rmf_shape_report(shape, &report);
     require(ours.valid && ours.solids == 1, "OpenCascade reads one valid Solid (BRepCheck_Analyzer)");
@@ -220,6 +232,7 @@ static void run(const Case &c) {
     std::printf("  | %-28s | %-26s | valid | solids | volume error%s | max cos | poles |\n", "wire", "sweep",
                 c.exact > 0 ? "" : " (vs rmfsurf)");
     wire_sweep::print_row(c.name, "rmfsurf (STEP)", ours, exact, false);
+    wire_sweep::print_row(c.name, "rmfsurf (B-rep text)", handed, exact, false);
     const bool round = c.corner == RMF_CORNER_ROUND;
     for (int frenet = 0; frenet <= 1; ++frenet) {
         const Measure occ = wire_sweep::in_child(

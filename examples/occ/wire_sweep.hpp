@@ -1,5 +1,6 @@
-// Wire sweeps in OpenCascade, shared by examples/occ/occ_wire.cpp (rmfsurf's STEP solids
-// read by OpenCascade, beside OpenCascade's own sweep of the same wires) and the benchmark
+// Wire sweeps in OpenCascade, shared by examples/occ/occ_wire.cpp (rmfsurf's solids read by
+// OpenCascade from STEP and from its own B-rep text, beside OpenCascade's own sweep of the
+// same wires) and the benchmark
 // driver benches/occ/wire_pipe_shell.cpp:
 //
 //  - wires of lines, arcs (three points) and NURBS edges, and the profile (a circle or a
@@ -23,6 +24,7 @@
 #include <BRepGProp.hxx>
 #include <BRepOffsetAPI_MakePipeShell.hxx>
 #include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <GC_MakeArcOfCircle.hxx>
 #include <GProp_GProps.hxx>
@@ -37,6 +39,8 @@
 #include <TopoDS.hxx>
 #include <gp_Ax2.hxx>
 #include <gp_Circ.hxx>
+
+#include <sstream>
 
 #include <poll.h>
 #include <signal.h>
@@ -177,6 +181,16 @@ inline TopoDS_Shape read_step(const std::string &path) {
     if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) return TopoDS_Shape();
     reader.TransferRoots();
     return reader.OneShape();
+}
+
+/// The shape OpenCascade builds from its own B-rep text (what rmf_shape_occ_brep hands
+/// over): no file, no sewing.
+inline TopoDS_Shape read_brep_text(const std::string &text) {
+    std::istringstream stream(text);
+    TopoDS_Shape shape;
+    BRep_Builder builder;
+    BRepTools::Read(shape, stream, builder);
+    return shape;
 }
 
 /// The sweep of `profile` along `edges` by BRepOffsetAPI_MakePipeShell, made solid.
