@@ -3,7 +3,8 @@
 //!   validity, points and derivatives against rmf_surface_eval, GeomLProp_SLProps Gaussian
 //!   curvature;
 //! * `examples/occ/occ_wire.cpp`: wire sweeps (rmf_wire_sweep) written as STEP and read by
-//!   OpenCascade's STEPControl_Reader: one valid Solid (BRepCheck_Analyzer), the volume by
+//!   OpenCascade's STEPControl_Reader, and handed over as OpenCascade's B-rep text
+//!   (rmf_shape_occ_brep, BRepTools::Read): one valid Solid (BRepCheck_Analyzer), the volume by
 //!   BRepGProp's adaptive integration against the closed form (≤ 1e-9), the parameter lines
 //!   of the faces, the corners and the seam; beside BRepOffsetAPI_MakePipeShell (corrected
 //!   Frenet and Frenet) on the same wires, measured by the same code.
