@@ -15,17 +15,9 @@ from OCP.TopoDS import TopoDS_Shape
 
 import rmfsurf
 import rmfsurf.ocp as rocp
+from timing import best
 
 TOLERANCE = 1e-4
-
-
-def best(call, runs=3):
-    times, result = [], None
-    for _ in range(runs):
-        start = time.perf_counter()
-        result = call()
-        times.append(time.perf_counter() - start)
-    return min(times), result
 
 
 def placed(path, face):

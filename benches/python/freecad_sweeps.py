@@ -4,24 +4,18 @@
 Run in freecadcmd (scripts/bench installs this checkout's wheel where FreeCAD looks for
 add-on packages)."""
 
-import math
-import time
+import os
+import sys
 
 import FreeCAD
 import Part
 
-import rmfsurf.freecad as rfc
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+import rmfsurf.freecad as rfc  # noqa: E402
+from timing import best  # noqa: E402
 
 V = FreeCAD.Vector
-
-
-def best(call, runs=3):
-    times, result = [], None
-    for _ in range(runs):
-        start = time.perf_counter()
-        result = call()
-        times.append(time.perf_counter() - start)
-    return min(times), result
 
 
 def polyline(points):
