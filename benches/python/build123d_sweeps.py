@@ -27,8 +27,9 @@ def placed(path, face):
 
 def cases():
     ring = bd.Circle(3) - bd.Circle(1.5)
-    yield ("pipe route (line, arc, line, line), ring",
-           bd.FilletPolyline((0, 0, 0), (60, 0, 0), (60, 40, 0), (60, 40, 30), radius=10), ring)
+    route = bd.FilletPolyline((0, 0, 0), (60, 0, 0), (60, 40, 0), (60, 40, 30), radius=10)
+    yield "pipe route (line, arc, line, arc, line), circle", route, bd.Circle(3)
+    yield "pipe route (line, arc, line, arc, line), ring", route, ring
     yield ("5-turn helix, circle",
            bd.Wire([bd.Helix(pitch=10, height=50, radius=15)]), bd.Circle(2))
     yield ("100-edge polyline, round corners, circle",
