@@ -22,11 +22,11 @@ fn edge_entity(out: &mut String, edge: &PatternEdge, layer: &str) {
             &[
                 (0, "LINE".into()),
                 (8, layer),
-                (10, number(from.x)),
-                (20, number(from.y)),
+                (10, number(from.x).to_string()),
+                (20, number(from.y).to_string()),
                 (30, "0".into()),
-                (11, number(to.x)),
-                (21, number(to.y)),
+                (11, number(to.x).to_string()),
+                (21, number(to.y).to_string()),
                 (31, "0".into()),
             ],
         ),
@@ -45,12 +45,12 @@ fn edge_entity(out: &mut String, edge: &PatternEdge, layer: &str) {
                 &[
                     (0, "ARC".into()),
                     (8, layer),
-                    (10, number(center.x)),
-                    (20, number(center.y)),
+                    (10, number(center.x).to_string()),
+                    (20, number(center.y).to_string()),
                     (30, "0".into()),
-                    (40, number(radius)),
-                    (50, number(degrees(a))),
-                    (51, number(degrees(b))),
+                    (40, number(radius).to_string()),
+                    (50, number(degrees(a)).to_string()),
+                    (51, number(degrees(b)).to_string()),
                 ],
             )
         }

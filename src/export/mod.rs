@@ -14,6 +14,8 @@
 //! Numbers are written with Rust's shortest round-trip representation, so every coordinate
 //! reads back as the same double.
 
+use crate::bezier::NurbsCurve;
+
 pub mod dxf;
 pub mod obj;
 pub mod occ_brep;
@@ -22,10 +24,31 @@ pub mod step;
 pub mod svg;
 pub mod vtk;
 
-/// The shortest decimal text that reads back as `x` (`1`, `0.1`, `1e-7`; −0 as `0`).
-fn number(x: f64) -> String {
-    let s = format!("{:?}", x + 0.0);
-    s.strip_suffix(".0").map_or(s.clone(), str::to_string)
+/// The shortest decimal text that reads back as `x` (`1`, `0.1`, `1e-7`; −0 as `0`),
+/// written where it is formatted: no allocation per number (the files hold a great many).
+fn number(x: f64) -> Number {
+    Number(x + 0.0)
+}
+
+/// A number formatted by [`number`].
+#[derive(Clone, Copy)]
+struct Number(f64);
+
+impl std::fmt::Display for Number {
+    /// Rust's shortest round-trip form, without the `.0` it gives whole numbers below 1e16
+    /// (from 1e16 on it is an exponent form).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        if self.0.fract() == 0.0 && self.0.abs() < 1e16 {
+            write!(f, "{:.0}", self.0)
+        } else {
+            write!(f, "{:?}", self.0)
+        }
+    }
+}
+
+/// A clamped NURBS curve's parameter range.
+fn curve_range(curve: &NurbsCurve) -> (f64, f64) {
+    (curve.knots[0], curve.knots[curve.knots.len() - 1])
 }
 
 /// Distinct knots and their multiplicities.
@@ -50,8 +73,45 @@ mod tests {
     #[test]
     fn numbers_round_trip() {
         for x in [0.0, 1.0, -2.5, 1e-7, 1.5e300, 0.1, std::f64::consts::PI] {
-            assert_eq!(number(x).parse::<f64>().unwrap(), x);
+            assert_eq!(number(x).to_string().parse::<f64>().unwrap(), x);
         }
-        assert_eq!(number(2.0), "2");
+        assert_eq!(number(2.0).to_string(), "2");
+        assert_eq!(number(-0.0).to_string(), "0");
+    }
+
+    /// The text is Rust's shortest round-trip form with a whole number's `.0` dropped, for
+    /// whole numbers on both sides of 1e16, fractions and any bit pattern.
+    #[test]
+    fn numbers_are_the_shortest_form_without_a_trailing_point_zero() {
+        let expected = |x: f64| {
+            let s = format!("{:?}", x + 0.0);
+            s.strip_suffix(".0").map_or(s.clone(), str::to_string)
+        };
+        let mut bits = 0x9E37_79B9_7F4A_7C15u64;
+        let mut values = vec![
+            1e15,
+            1e16,
+            9_999_999_999_999_998.0,
+            -123.0,
+            4.5e15,
+            f64::NAN,
+        ];
+        values.extend([
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::MAX,
+            f64::MIN_POSITIVE,
+        ]);
+        for _ in 0..20_000 {
+            bits ^= bits << 13;
+            bits ^= bits >> 7;
+            bits ^= bits << 17;
+            values.push(f64::from_bits(bits));
+            values.push((bits >> 11) as f64);
+            values.push(((bits >> 40) as f64) * 0.25);
+        }
+        for x in values {
+            assert_eq!(number(x).to_string(), expected(x), "{x:e}");
+        }
     }
 }

@@ -17,23 +17,12 @@
 //! 1: origin, normal, x axis, y = normal × x axis). Numbers are the shortest text that
 //! reads back as the same double.
 
-use super::knots_and_multiplicities;
+use super::{curve_range, knots_and_multiplicities, number, Number};
 use crate::bezier::{NurbsCurve, NurbsSurface};
 use crate::error::{invalid, Result};
 use crate::model::{Brep, BrepFace, BrepSurface, PCurve};
 use glam::DVec3;
 use std::fmt::Write;
-
-/// A number as the shortest text that reads back as the same double (−0 as 0), written
-/// without an allocation: the files hold a great many.
-#[derive(Clone, Copy)]
-struct Real(f64);
-
-impl std::fmt::Display for Real {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{:?}", self.0 + 0.0)
-    }
-}
 
 /// The kernel's tolerance relative to the largest coordinate (rounding of the model's
 /// geometry is some 1e-15 of it), and its floor: OpenCascade's `Precision::Confusion`.
@@ -46,7 +35,7 @@ pub fn brep_to_occ(brep: &Brep) -> Result<String> {
     if brep.faces.is_empty() {
         return invalid!("a shape needs at least one face");
     }
-    let tolerance = Real(tolerance(brep));
+    let tolerance = number(tolerance(brep));
     let mut text = String::from("\nCASCADE Topology V1, (c) Matra-Datavision\nLocations 0\n");
     let on_edges = curves_2d(brep, &mut text)?;
     let _ = writeln!(text, "Curves {}", brep.edges.len());
@@ -66,9 +55,9 @@ pub fn brep_to_occ(brep: &Brep) -> Result<String> {
         .map(|p| {
             let data = format!(
                 "Ve\n{tolerance}\n{} {} {}\n0 0\n",
-                Real(p.x),
-                Real(p.y),
-                Real(p.z)
+                number(p.x),
+                number(p.y),
+                number(p.z)
             );
             shapes.add(data, "0101101", Vec::new())
         })
@@ -250,7 +239,7 @@ fn curves_2d(brep: &Brep, text: &mut String) -> Result<Vec<Vec<OnFace>>> {
 fn write_pcurve(text: &mut String, pcurve: &PCurve, edge: &NurbsCurve) {
     match pcurve {
         PCurve::Line { origin, direction } => {
-            let (first, last) = range(edge);
+            let (first, last) = curve_range(edge);
             let at =
                 |t: f64| DVec3::new(origin.0 + t * direction.0, origin.1 + t * direction.1, 0.0);
             let line = NurbsCurve {
@@ -266,9 +255,9 @@ fn write_pcurve(text: &mut String, pcurve: &PCurve, edge: &NurbsCurve) {
 }
 
 /// The edge's record: its 3-D curve (number `e + 1`) and its curves on the faces.
-fn edge_data(e: usize, curve: &NurbsCurve, on_faces: &[OnFace], tolerance: Real) -> String {
-    let (first, last) = range(curve);
-    let (first, last) = (Real(first), Real(last));
+fn edge_data(e: usize, curve: &NurbsCurve, on_faces: &[OnFace], tolerance: Number) -> String {
+    let (first, last) = curve_range(curve);
+    let (first, last) = (number(first), number(last));
     let mut data = format!("Ed\n {tolerance} 1 1 0\n1 {} 0 {first} {last}\n", e + 1);
     for on in on_faces {
         let surface = on.face + 1;
@@ -284,11 +273,6 @@ fn edge_data(e: usize, curve: &NurbsCurve, on_faces: &[OnFace], tolerance: Real)
     data
 }
 
-/// A curve's parameter range (clamped knots).
-fn range(curve: &NurbsCurve) -> (f64, f64) {
-    (curve.knots[0], curve.knots[curve.knots.len() - 1])
-}
-
 /// A B-spline curve record (code 7), its poles' first `dimension` coordinates (2 for a
 /// curve in a parameter plane, 3 in space).
 fn bspline(text: &mut String, curve: &NurbsCurve, dimension: usize) {
@@ -302,13 +286,13 @@ fn bspline(text: &mut String, curve: &NurbsCurve, dimension: usize) {
     );
     for (&p, &w) in curve.poles.iter().zip(&curve.weights) {
         for x in &p.to_array()[..dimension] {
-            let _ = write!(text, " {}", Real(*x));
+            let _ = write!(text, " {}", number(*x));
         }
-        let _ = write!(text, " {}", Real(w));
+        let _ = write!(text, " {}", number(w));
     }
     text.push('\n');
     for (k, m) in knots.iter().zip(&multiplicities) {
-        let _ = write!(text, " {} {m}", Real(*k));
+        let _ = write!(text, " {} {m}", number(*k));
     }
     text.push('\n');
 }
@@ -325,7 +309,7 @@ fn surface(text: &mut String, surface: &BrepSurface) {
             let y_axis = normal.cross(*x_axis);
             let _ = write!(text, "1");
             for v in [*origin, *normal, *x_axis, y_axis] {
-                let _ = write!(text, " {} {} {}", Real(v.x), Real(v.y), Real(v.z));
+                let _ = write!(text, " {} {} {}", number(v.x), number(v.y), number(v.z));
             }
             text.push('\n');
         }
@@ -354,17 +338,17 @@ fn nurbs_surface(text: &mut String, s: &NurbsSurface) {
             let _ = write!(
                 text,
                 " {} {} {} {}",
-                Real(p.x),
-                Real(p.y),
-                Real(p.z),
-                Real(*w)
+                number(p.x),
+                number(p.y),
+                number(p.z),
+                number(*w)
             );
         }
         text.push('\n');
     }
     for (knots, multiplicities) in [(ku, mu), (kv, mv)] {
         for (k, m) in knots.iter().zip(&multiplicities) {
-            let _ = write!(text, " {} {m}", Real(*k));
+            let _ = write!(text, " {} {m}", number(*k));
         }
         text.push('\n');
     }

@@ -26,7 +26,7 @@
 //! the loop, as in OpenCascade's own files. Coordinates are written in millimetres with
 //! 17 significant digits, so every double round-trips exactly.
 
-use super::knots_and_multiplicities;
+use super::{curve_range, knots_and_multiplicities};
 use crate::bezier::{NurbsCurve, NurbsSurface};
 use crate::error::{invalid, Result};
 use crate::math::bounding_diagonal;
@@ -621,11 +621,6 @@ fn same_or_reversed(a: &NurbsCurve, b: &NurbsCurve, tolerance: f64) -> Option<bo
         knots: b.knots.clone(),
     };
     same_curve(a, &reversed, tolerance).then_some(false)
-}
-
-/// The parameter range of a curve.
-fn curve_range(c: &NurbsCurve) -> (f64, f64) {
-    (c.knots[0], c.knots[c.knots.len() - 1])
 }
 
 /// The parameter line of a face's side for the parameter t of the edge's curve on

@@ -149,11 +149,7 @@ pub(crate) fn self_contact(
                     continue;
                 }
             }
-            let part = |e: &Element| Part {
-                patch: e.patch.clone(),
-                spine: e.spine.cloned(),
-                reach: tubes.reach,
-            };
+            let part = |e: &Element| Part::new(e.patch.clone(), e.spine.cloned(), tubes.reach);
             let mut allowance = PAIR_BUDGET.min(budget);
             let verdict = closest(part(a), part(b), gap, &mut allowance);
             budget -= PAIR_BUDGET.min(budget) - allowance;
@@ -206,13 +202,26 @@ trait Subdivided<const N: usize>: Sized + Clone {
 #[derive(Clone)]
 struct Part {
     patch: RationalBezierPatch,
+    /// The patch's projected control points, for its box and the separation test.
+    points: Vec<DVec3>,
     spine: Option<RationalBezierCurve>,
     reach: f64,
 }
 
+impl Part {
+    fn new(patch: RationalBezierPatch, spine: Option<RationalBezierCurve>, reach: f64) -> Self {
+        Part {
+            points: projected(&patch),
+            patch,
+            spine,
+            reach,
+        }
+    }
+}
+
 impl Subdivided<4> for Part {
     fn bounds(&self) -> (DVec3, DVec3) {
-        control_box(&self.patch)
+        points_box(self.points.iter().copied())
     }
 
     fn samples(&self) -> [DVec3; 4] {
@@ -233,10 +242,9 @@ impl Subdivided<4> for Part {
             (None, _) => (None, None),
         };
         let reach = self.reach;
-        let part = |patch: RationalBezierPatch, spine: Option<RationalBezierCurve>| Part {
-            spine: spine.filter(|c| sections_reach(&patch, c, reach)),
-            patch,
-            reach,
+        let part = |patch: RationalBezierPatch, spine: Option<RationalBezierCurve>| {
+            let spine = spine.filter(|c| sections_reach(&patch, c, reach));
+            Part::new(patch, spine, reach)
         };
         [part(left, spines.0), part(right, spines.1)]
     }
@@ -247,11 +255,11 @@ impl Subdivided<4> for Part {
                 return true;
             }
         }
-        let (p, q) = (projected(&self.patch), projected(&other.patch));
+        let (p, q) = (&self.points, &other.points);
         let centre = |points: &[DVec3]| points.iter().sum::<DVec3>() / points.len() as f64;
-        (centre(&q) - centre(&p))
+        (centre(q) - centre(p))
             .try_normalize()
-            .is_some_and(|d| separated_along(&p, &q, d, gap))
+            .is_some_and(|d| separated_along(p, q, d, gap))
     }
 }
 
@@ -496,11 +504,11 @@ mod tests {
     /// A flat patch of degree (1, 1) with the given corners (u along the first two).
     fn quad(corners: [DVec3; 4]) -> Part {
         let points = corners.iter().map(|c| c.extend(1.0)).collect();
-        Part {
-            patch: RationalBezierPatch::from_homogeneous(1, 1, points).unwrap(),
-            spine: None,
-            reach: 0.0,
-        }
+        Part::new(
+            RationalBezierPatch::from_homogeneous(1, 1, points).unwrap(),
+            None,
+            0.0,
+        )
     }
 
     #[test]
