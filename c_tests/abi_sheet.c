@@ -237,6 +237,24 @@ static void test_part(RmfCurve *bottom, RmfCurve *top) {
     text = (char *)malloc(length + 1);
     CHECK_STATUS(rmf_cone_spline_part_export(part, RMF_SHEET_FORMAT_STEP_SOLID, text, length + 1, &length), RMF_OK, "");
     CHECK(strstr(text, "MANIFOLD_SOLID_BREP") && strstr(text, "CLOSED_SHELL"), "a STEP solid");
+    {
+        /* The same solid in OpenCascade's B-rep text: one face record per STEP face, the
+           solid the root. */
+        size_t step_faces = 0, occ_faces = 0, occ_length = 0;
+        char *occ;
+        for (const char *at = text; (at = strstr(at, "ADVANCED_FACE(")) != NULL; ++at) ++step_faces;
+        CHECK_STATUS(rmf_cone_spline_part_export(part, RMF_SHEET_FORMAT_OCC_BREP, NULL, 0, &occ_length), RMF_OK, "");
+        occ = (char *)malloc(occ_length + 1);
+        CHECK_STATUS(rmf_cone_spline_part_export(part, RMF_SHEET_FORMAT_OCC_BREP, occ, occ_length, &occ_length),
+                     RMF_ERROR_BUFFER_TOO_SMALL, "NUL");
+        CHECK_STATUS(rmf_cone_spline_part_export(part, RMF_SHEET_FORMAT_OCC_BREP, occ, occ_length + 1, &occ_length),
+                     RMF_OK, "");
+        for (const char *at = occ; (at = strstr(at, "\nFa\n")) != NULL; ++at) ++occ_faces;
+        CHECK(strncmp(occ, "\nCASCADE Topology V1, (c) Matra-Datavision\n", 43) == 0 && occ_faces == step_faces &&
+                  step_faces > 8 && strstr(occ, "\nSo\n") && strcmp(occ + occ_length - 6, "\n+1 0\n") == 0,
+              "the OpenCascade B-rep text of the STEP solid");
+        free(occ);
+    }
     free(text);
     CHECK_STATUS(rmf_cone_spline_part_export(part, 99, NULL, 0, &length), RMF_ERROR_INVALID_INPUT, "format");
     CHECK_STATUS(rmf_cone_spline_part_export(part, RMF_SHEET_FORMAT_SVG, NULL, 0, NULL), RMF_ERROR_NULL_POINTER, "length");

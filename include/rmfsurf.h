@@ -1608,6 +1608,16 @@ typedef struct RmfEdge {
 #define RMF_SHEET_FORMAT_SVG 3
 
 /**
+ * OpenCascade's own B-rep text ("CASCADE Topology V1", what BRepTools::Read and FreeCAD's
+ * Part.Shape.importBrepFromString read): the formed part as the solid of
+ * RMF_SHEET_FORMAT_STEP_SOLID, its faces sharing their edges, built by the kernel as it
+ * is (no sewing or healing).
+ * \since 0.2
+ * \ingroup rmf_export
+ */
+#define RMF_SHEET_FORMAT_OCC_BREP 4
+
+/**
  * A straight line from points[0] to points[1].
  * \ingroup rmf_wire
  */
@@ -3908,7 +3918,8 @@ RmfStatus rmf_cone_spline_surface_to_flat(const struct RmfConeSpline *part,
 
 /**
  * The text of a file of the part: the formed solid or the flat pattern as STEP, the flat
- * pattern as DXF or SVG (RMF_SHEET_FORMAT_*), exactly as the command-line tool writes it.
+ * pattern as DXF or SVG, the formed solid in OpenCascade's B-rep text
+ * (RMF_SHEET_FORMAT_*), exactly as the command-line tool writes it.
  *
  * Size query: with capacity 0 (buffer may be NULL) only length is written. Otherwise the
  * text and a terminating NUL are written if capacity ≥ length + 1.

@@ -12,11 +12,12 @@ use crate::frames::Frame;
 use crate::hermite::HermiteSegment;
 use crate::math::angle_between;
 use crate::mobius::hermite::planar_frame;
-use crate::model::FramedCurve;
+use crate::model::{Brep, BrepSurface, FramedCurve, PCurve};
 use crate::ph_cubic::PhCubic;
 use crate::rrmf_quintic::RrmfQuintic;
 use crate::Result;
 use glam::DVec3;
+use std::collections::HashMap;
 
 /// The circular helix (r cos t, r sin t, h t) on [0, 4π].
 pub struct Helix {
@@ -251,5 +252,118 @@ impl Stream {
     /// 10^x for x uniform in [lo, hi].
     pub(crate) fn log_uniform(&mut self, lo: f64, hi: f64) -> f64 {
         10f64.powf(self.uniform(lo, hi))
+    }
+}
+
+/// Every edge is used exactly twice, once in each direction once the faces' orientation is
+/// applied (a closed, consistently oriented shell), a degenerate edge once, at one vertex;
+/// consecutive uses of a loop meet at a vertex; edge curves end at their vertices; every
+/// use's parameter curve, mapped by its face's surface, is the edge's curve (sampled, to
+/// 1e-9 of the shape's size).
+pub(crate) fn assert_closed_oriented(brep: &Brep) {
+    let mut uses: HashMap<usize, (usize, usize)> = HashMap::new();
+    for face in &brep.faces {
+        for u in face.bounds.iter().flat_map(|b| &b.uses) {
+            let forward = u.forward == face.same_sense;
+            let entry = uses.entry(u.edge).or_default();
+            if forward {
+                entry.0 += 1;
+            } else {
+                entry.1 += 1;
+            }
+        }
+    }
+    assert_eq!(uses.len(), brep.edges.len(), "every edge is used");
+    for (edge, (f, b)) in uses {
+        if brep.edges[edge].degenerate {
+            assert_eq!(f + b, 1, "degenerate edge {edge}: {f} + {b} uses");
+            assert_eq!(brep.edges[edge].start, brep.edges[edge].end);
+        } else {
+            assert_eq!(
+                (f, b),
+                (1, 1),
+                "edge {edge}: {f} forward, {b} backward uses"
+            );
+        }
+    }
+    // Consecutive uses of a loop meet at a vertex.
+    for (k, face) in brep.faces.iter().enumerate() {
+        for bound in &face.bounds {
+            let ends: Vec<(usize, usize)> = bound
+                .uses
+                .iter()
+                .map(|u| {
+                    let e = &brep.edges[u.edge];
+                    if u.forward {
+                        (e.start, e.end)
+                    } else {
+                        (e.end, e.start)
+                    }
+                })
+                .collect();
+            for i in 0..ends.len() {
+                let next = ends[(i + 1) % ends.len()];
+                assert_eq!(
+                    ends[i].1, next.0,
+                    "face {k}: the loop is broken after use {i}"
+                );
+            }
+        }
+    }
+    let size = brep
+        .vertices
+        .iter()
+        .map(|p| p.abs().max_element())
+        .fold(0.0, f64::max)
+        .max(f64::MIN_POSITIVE);
+    // Edge curves end at their vertices.
+    for (k, e) in brep.edges.iter().enumerate() {
+        let (first, last) = (e.curve.poles[0], e.curve.poles[e.curve.poles.len() - 1]);
+        assert!(
+            first.distance(brep.vertices[e.start]) < 1e-9 * size,
+            "edge {k} start"
+        );
+        assert!(
+            last.distance(brep.vertices[e.end]) < 1e-9 * size,
+            "edge {k} end"
+        );
+    }
+    assert_pcurves_on_edges(brep, size);
+}
+
+/// Every use's parameter curve on a NURBS face, mapped by the surface, is its edge's curve
+/// at 9 parameters, to 1e-9 of `size`.
+fn assert_pcurves_on_edges(brep: &Brep, size: f64) {
+    for (k, face) in brep.faces.iter().enumerate() {
+        let BrepSurface::Nurbs(surface) = &face.surface else {
+            continue;
+        };
+        let surface = surface.to_piecewise().expect("a valid surface");
+        for u in face.bounds.iter().flat_map(|b| &b.uses) {
+            let edge = &brep.edges[u.edge];
+            let curve = edge.curve.to_piecewise().expect("a valid curve");
+            let (a, b) = (
+                edge.curve.knots[0],
+                edge.curve.knots[edge.curve.knots.len() - 1],
+            );
+            for j in 0..=8 {
+                let t = a + (b - a) * j as f64 / 8.0;
+                let (x, y) = match u.pcurve.as_ref().expect("a pcurve on a NURBS face") {
+                    PCurve::Line { origin, direction } => {
+                        (origin.0 + t * direction.0, origin.1 + t * direction.1)
+                    }
+                    PCurve::Curve(c) => {
+                        let p = c.to_piecewise().expect("a valid pcurve").eval(t);
+                        (p.x, p.y)
+                    }
+                };
+                let gap = surface.eval(x, y).distance(curve.eval(t));
+                assert!(
+                    gap <= 1e-9 * size,
+                    "face {k}, edge {}: the pcurve is {gap:e} off the edge at t = {t}",
+                    u.edge
+                );
+            }
+        }
     }
 }

@@ -1,11 +1,15 @@
 """The whole sweep where a FreeCAD user is: FreeCAD's own `makePipeShell` beside
-`rmfsurf.freecad.sweep` on the same wires and profiles, in the same run (best of 3).
+`rmfsurf.freecad.sweep` on the same wires and profiles, in the same run (best of 3); and
+the square-to-round transition of the RmfSurf workbench's feature (`rmfsurf.freecad`
+`transition` and `part_solid`), with where its time goes, beside FreeCAD's ruled loft of
+the same two wires (a surface without thickness: FreeCAD has no developable transition).
 
 Run in freecadcmd (scripts/bench installs this checkout's wheel where FreeCAD looks for
 add-on packages)."""
 
 import os
 import sys
+import time
 
 import FreeCAD
 import Part
@@ -47,6 +51,46 @@ def main():
         assert solid.isValid() and shell.isValid(), name
         print("| %-44s %14.1f %10.1f %6.2fx" % (name, theirs * 1e3, ours * 1e3, theirs / ours))
     print("| ratio: FreeCAD's time over rmfsurf's (> 1: rmfsurf is faster)")
+    transition()
+
+
+def first_export(make, runs=3):
+    """The best time of a part's first export("brep") (the library keeps the text it made),
+    each on a part made anew, and the text."""
+    times, text = [], None
+    for _ in range(runs):
+        part = make()
+        start = time.perf_counter()
+        text = part.export("brep")
+        times.append(time.perf_counter() - start)
+    return min(times), text
+
+
+def transition():
+    square = polyline([(-100, -100, 0), (100, -100, 0), (100, 100, 0), (-100, 100, 0), (-100, -100, 0)])
+    circle = Part.Wire([Part.makeCircle(60, V(20, 0, 150), V(0, 0, 1))])
+    print("| square-to-round transition, thickness 2: best of 3, milliseconds")
+    print("| %-12s %8s %10s %10s %8s %8s %6s" % ("tolerance", "loft", "rmfsurf", "library",
+                                                 "text", "kernel", "faces"))
+    for tolerance in (1e-3, 1e-4):
+        loft, _ = best(lambda: Part.makeLoft([square, circle], False, True))
+        library, part = best(lambda: rfc.transition(square, circle, 2.0, 0.5, tolerance))
+        text_time, text = first_export(lambda: rfc.transition(square, circle, 2.0, 0.5, tolerance))
+
+        def build():
+            built = Part.Shape()
+            built.importBrepFromString(text)
+            return built.Solids[0]
+
+        kernel, _ = best(build)
+        whole, solid = best(lambda: rfc.part_solid(rfc.transition(square, circle, 2.0, 0.5, tolerance)))
+        assert solid.isValid() and solid.Volume > 0
+        print("| %-12g %8.1f %10.1f %10.1f %8.1f %8.1f %6d" % (
+            tolerance, loft * 1e3, whole * 1e3, library * 1e3, text_time * 1e3, kernel * 1e3,
+            len(solid.Faces)))
+    print("| loft: Part.makeLoft of the two wires, ruled (a surface: no thickness, no flat "
+          "pattern); rmfsurf: the whole call (transition, then part_solid), split into the "
+          "library, its B-rep text and FreeCAD reading it")
 
 
 main()

@@ -181,6 +181,19 @@ pub(crate) unsafe fn buffer<'a, T>(
     Ok(std::slice::from_raw_parts_mut(p, capacity))
 }
 
+/// The text in `cell`, made by `make` on the first call (a caller of a text export asks
+/// twice: the size, then the text); a failure is returned and nothing kept.
+pub(crate) fn made_once<E>(
+    cell: &std::sync::OnceLock<String>,
+    make: impl FnOnce() -> Result<String, E>,
+) -> Result<&String, E> {
+    if let Some(text) = cell.get() {
+        return Ok(text);
+    }
+    let text = make()?;
+    Ok(cell.get_or_init(|| text))
+}
+
 /// Hands a text to the caller the way every export of the C API does: `length` receives its
 /// length without the NUL; with `capacity` 0 (`out` empty) that is all (a size query); a
 /// capacity without room for the text and its NUL is refused with BUFFER_TOO_SMALL (the

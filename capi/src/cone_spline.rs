@@ -170,7 +170,7 @@ pub struct RmfConeSpline {
     fit: Option<Fit>,
     /// A sheet-metal part (rmf_cone_spline_transition, rmf_cone_spline_part): `spline` is
     /// its designed surface.
-    pub(crate) part: Option<std::sync::Arc<rmfsurf::SheetPart>>,
+    pub(crate) part: Option<std::sync::Arc<crate::sheet::PartHandle>>,
 }
 
 impl RmfConeSpline {
@@ -192,7 +192,7 @@ impl RmfConeSpline {
             cases: vec![RMF_CONE_CASE_NONE; spline.pieces().len()],
             spline,
             fit: None,
-            part: Some(std::sync::Arc::new(part)),
+            part: Some(std::sync::Arc::new(crate::sheet::PartHandle::new(part))),
         })
     }
 

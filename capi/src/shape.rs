@@ -405,13 +405,7 @@ pub unsafe extern "C" fn rmf_shape_occ_brep(
         let shape = reference(shape, "shape")?;
         let length = out_ptr(length, "length")?;
         let out = crate::boundary::buffer(buffer.cast::<u8>(), capacity, "buffer")?;
-        let text = match shape.occ_brep.get() {
-            Some(text) => text,
-            None => {
-                let text = shape.shape.to_occ_brep()?;
-                shape.occ_brep.get_or_init(|| text)
-            }
-        };
+        let text = crate::boundary::made_once(&shape.occ_brep, || shape.shape.to_occ_brep())?;
         crate::boundary::hand_text(text, out, length)
     })
 }

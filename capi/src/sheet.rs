@@ -19,6 +19,7 @@ use rmfsurf::glam::DVec2;
 use rmfsurf::PatternEdge;
 use rmfsurf::{Layer, Reference, Sheet, SheetOptions, SheetPart, Side};
 use std::ffi::c_char;
+use std::sync::OnceLock;
 
 /// Which face of the sheet the designed surface is (RmfSheetOptions.reference).
 /// \ingroup rmf_sheet
@@ -78,6 +79,13 @@ pub const RMF_SHEET_FORMAT_DXF: RmfSheetFormat = 2;
 /// SVG 1.1: the flat pattern in millimetres, bend lines dashed.
 /// \ingroup rmf_export
 pub const RMF_SHEET_FORMAT_SVG: RmfSheetFormat = 3;
+/// OpenCascade's own B-rep text ("CASCADE Topology V1", what BRepTools::Read and FreeCAD's
+/// Part.Shape.importBrepFromString read): the formed part as the solid of
+/// RMF_SHEET_FORMAT_STEP_SOLID, its faces sharing their edges, built by the kernel as it
+/// is (no sewing or healing).
+/// \since 0.2
+/// \ingroup rmf_export
+pub const RMF_SHEET_FORMAT_OCC_BREP: RmfSheetFormat = 4;
 
 /// RmfFlatEdge.kind: a straight segment.
 /// \ingroup rmf_sheet
@@ -247,7 +255,27 @@ unsafe fn options_from(options: *const RmfSheetOptions) -> FfiResult<SheetOption
 }
 
 /// The part of a handle, or an error naming it.
+/// A sheet-metal part behind its handle, with the texts of its files as made (a caller asks
+/// twice: the size, then the text).
+pub(crate) struct PartHandle {
+    part: SheetPart,
+    texts: [OnceLock<String>; 5],
+}
+
+impl PartHandle {
+    pub(crate) fn new(part: SheetPart) -> Self {
+        Self {
+            part,
+            texts: Default::default(),
+        }
+    }
+}
+
 fn part_of<'a>(spline: &'a RmfConeSpline, name: &str) -> FfiResult<&'a SheetPart> {
+    handle_of(spline, name).map(|h| &h.part)
+}
+
+fn handle_of<'a>(spline: &'a RmfConeSpline, name: &str) -> FfiResult<&'a PartHandle> {
     spline.part.as_deref().ok_or_else(|| {
         FfiError::Core(rmfsurf::Error::invalid_input(format!(
             "{name} is not a sheet-metal part (make it with rmf_cone_spline_transition, rmf_cone_spline_part or rmf_cone_spline_tangent_part)"
@@ -671,7 +699,8 @@ pub unsafe extern "C" fn rmf_cone_spline_surface_to_flat(
 }
 
 /// The text of a file of the part: the formed solid or the flat pattern as STEP, the flat
-/// pattern as DXF or SVG (RMF_SHEET_FORMAT_*), exactly as the command-line tool writes it.
+/// pattern as DXF or SVG, the formed solid in OpenCascade's B-rep text
+/// (RMF_SHEET_FORMAT_*), exactly as the command-line tool writes it.
 ///
 /// Size query: with capacity 0 (buffer may be NULL) only length is written. Otherwise the
 /// text and a terminating NUL are written if capacity ≥ length + 1.
@@ -697,23 +726,34 @@ pub unsafe extern "C" fn rmf_cone_spline_part_export(
     length: *mut usize,
 ) -> RmfStatus {
     guard("rmf_cone_spline_part_export", || {
-        let p = part_of(reference(part, "part")?, "part")?;
+        let handle = handle_of(reference(part, "part")?, "part")?;
         let length = out_ptr(length, "length")?;
         // The parameter keeps its C name and shadows the helper, hence the path.
         let out = crate::boundary::buffer(buffer.cast::<u8>(), capacity, "buffer")?;
-        let text = match format {
-            RMF_SHEET_FORMAT_STEP_SOLID => step::solid_to_step(&p.solid_faces()?, "rmfsurf part")?,
-            RMF_SHEET_FORMAT_STEP_FLAT => {
-                step::flat_to_step(&p.flat_pattern()?, "rmfsurf flat pattern")?
-            }
-            RMF_SHEET_FORMAT_DXF => dxf::pattern_to_dxf(&p.flat_pattern()?),
-            RMF_SHEET_FORMAT_SVG => svg::pattern_to_svg("rmfsurf flat pattern", &p.flat_pattern()?),
-            other => {
-                return invalid_arg(format!(
-                    "format = {other} is not one of the RMF_SHEET_FORMAT_* values"
-                ))
-            }
+        let Some(cell) = handle.texts.get(format as usize) else {
+            return invalid_arg(format!(
+                "format = {format} is not one of the RMF_SHEET_FORMAT_* values"
+            ));
         };
-        crate::boundary::hand_text(&text, out, length)
+        let p = &handle.part;
+        let text = crate::boundary::made_once(cell, || {
+            Ok(match format {
+                RMF_SHEET_FORMAT_STEP_SOLID => p.to_step("rmfsurf part")?,
+                RMF_SHEET_FORMAT_OCC_BREP => p.to_occ_brep()?,
+                RMF_SHEET_FORMAT_STEP_FLAT => {
+                    step::flat_to_step(&p.flat_pattern()?, "rmfsurf flat pattern")?
+                }
+                RMF_SHEET_FORMAT_DXF => dxf::pattern_to_dxf(&p.flat_pattern()?),
+                RMF_SHEET_FORMAT_SVG => {
+                    svg::pattern_to_svg("rmfsurf flat pattern", &p.flat_pattern()?)
+                }
+                other => {
+                    return invalid_arg(format!(
+                        "format = {other} is not one of the RMF_SHEET_FORMAT_* values"
+                    ))
+                }
+            })
+        })?;
+        crate::boundary::hand_text(text, out, length)
     })
 }

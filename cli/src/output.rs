@@ -97,7 +97,7 @@ fn render_sheet(
     summary: &Summary,
 ) -> rmfsurf::Result<String> {
     Ok(match format {
-        Format::Step => step::solid_to_step(&outcome.part.solid_faces()?, name)?,
+        Format::Step => outcome.part.to_step(name)?,
         Format::StepFlat => step::flat_to_step(&outcome.flat, name)?,
         Format::Dxf => dxf::pattern_to_dxf(&outcome.flat),
         Format::Svg => svg::pattern_to_svg(name, &outcome.flat),

@@ -88,7 +88,8 @@ fn opencascade_kernel_example_builds_and_checks_the_surfaces() {
 }
 
 /// OpenCascade's STEP reader (TKSTEP, libocct-data-exchange-dev) on the formed hopper of
-/// examples/cli/hopper.json as the command-line tool writes it: one valid closed solid
+/// examples/cli/hopper.json as the command-line tool writes it, and BRepTools::Read on the
+/// library's B-rep text of the same part (`SheetPart::to_occ_brep`): one valid closed solid
 /// (BRepCheck, no free edges), whose volume (BRepGProp) is t·A(t/2) — the layers of a
 /// developable grow linearly in area, A(s) from the library's inner and neutral layers by
 /// Gauss–Legendre quadrature.
@@ -132,19 +133,24 @@ fn opencascade_reads_the_formed_hopper_as_a_valid_closed_solid() {
         &flags,
         &libs,
     );
-    let out = std::process::Command::new(&exe)
-        .arg(dir.join("hopper.step"))
-        .arg(format!("{volume:.12}"))
-        .arg("1e-8")
-        .output()
-        .expect("occ_read_solid runs");
-    print!("{}", String::from_utf8_lossy(&out.stdout));
-    assert!(
-        out.status.success(),
-        "OpenCascade does not read a valid closed solid of the expected volume:\n{}{}",
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
-    );
+    // The library's B-rep text of the same part, read by BRepTools::Read as it is.
+    std::fs::write(dir.join("hopper.brep"), part.to_occ_brep().unwrap()).unwrap();
+    for file in ["hopper.step", "hopper.brep"] {
+        let out = std::process::Command::new(&exe)
+            .arg(dir.join(file))
+            .arg(format!("{volume:.12}"))
+            .arg("1e-8")
+            .output()
+            .expect("occ_read_solid runs");
+        print!("{}", String::from_utf8_lossy(&out.stdout));
+        assert!(
+            out.status.success(),
+            "OpenCascade does not read {file} as a valid closed solid of the expected \
+             volume:\n{}{}",
+            String::from_utf8_lossy(&out.stdout),
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
 }
 
 /// The curves of examples/cli/hopper.json: the square and the circle (rational quadratics).

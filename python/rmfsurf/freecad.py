@@ -485,17 +485,13 @@ def transition(bottom: Any, top: Any, thickness: float = 1.0, k_factor: float = 
 
 
 def part_solid(part: SheetPart) -> Any:
-    """The formed part as a ``Part.Solid``: its STEP solid, read by FreeCAD."""
-    _core.instance(part, "part", SheetPart, "an rmfsurf.SheetPart")
-    import os
-    import tempfile
-    with tempfile.TemporaryDirectory(prefix="rmfsurf") as directory:
-        path = os.path.join(directory, "part.step")
-        with open(path, "w") as f:
-            f.write(part.export("step"))
-        shape = Part.Shape()
-        shape.read(path)
-    return shape.Solids[0]
+    """The formed part as a ``Part.Solid``, built by OpenCascade from the library's B-rep
+    (``part.export("brep")``, ``importBrepFromString``): its faces share their edges as the
+    library made them; nothing is sewn or healed."""
+    text = _core.instance(part, "part", SheetPart, "an rmfsurf.SheetPart").export("brep")
+    built = Part.Shape()
+    built.importBrepFromString(text)
+    return built.Solids[0]
 
 
 def flat_pattern(part: SheetPart) -> Tuple[Any, Any]:

@@ -7,7 +7,8 @@ OCP objects both ways:
   wire-sweep edges;
 * out: :class:`rmfsurf.Curve` → ``Geom_BSplineCurve``, ``TopoDS_Edge``;
   :class:`rmfsurf.Surface` → ``Geom_BSplineSurface``, ``TopoDS_Face``; an
-  :class:`rmfsurf.Shape` → ``TopoDS_Solid`` (sewn faces, planar caps).
+  :class:`rmfsurf.Shape` or :class:`rmfsurf.SheetPart` → ``TopoDS_Solid``, built by the
+  kernel from the library's B-rep as it is (no sewing or healing).
 
 :func:`sweep` is the one call build123d and CadQuery users need::
 
@@ -34,6 +35,7 @@ import numpy as np
 
 from . import _core
 from .curves import ArrayLike, Curve, NurbsCurve, join_nurbs
+from .sheets import SheetPart
 from .shapes import Arc, CurveEdge, Edge, Line, Shape, wire_sweep
 from .surfaces import Surface
 
@@ -367,6 +369,13 @@ def _cap(loops: List[Curve], origin: np.ndarray, normal: np.ndarray) -> Any:
     return maker.Face()
 
 
+def _read_brep(text: str) -> TopoDS_Shape:
+    """The shape of an OpenCascade B-rep text, as the kernel reads it."""
+    raw = TopoDS_Shape()
+    BRepTools.Read_s(raw, io.BytesIO(text.encode("ascii")), BRep_Builder())
+    return raw
+
+
 def shape(value: Shape, tolerance: float = 1e-6) -> Any:
     """An :class:`rmfsurf.Shape` as OCP, built by OpenCascade from the library's B-rep
     (:meth:`rmfsurf.Shape.occ_brep`, read by ``BRepTools.Read_s``): a ``TopoDS_Solid``
@@ -375,15 +384,21 @@ def shape(value: Shape, tolerance: float = 1e-6) -> Any:
     them: nothing is sewn or healed. `tolerance` (finite, > 0) is checked and otherwise
     unused: the library's shape needs no sewing."""
     _core.finite(tolerance, "tolerance", positive=True)
-    text = _core.instance(value, "shape", Shape, "an rmfsurf.Shape").occ_brep()
-    raw = TopoDS_Shape()
-    BRepTools.Read_s(raw, io.BytesIO(text.encode("ascii")), BRep_Builder())
+    raw = _read_brep(_core.instance(value, "shape", Shape, "an rmfsurf.Shape").occ_brep())
     kind = raw.ShapeType()
     if kind == TopAbs_SOLID:
         return _as_solid(raw)
     if kind == TopAbs_SHELL:
         return _as_shell(raw)
     return raw
+
+
+def part_solid(part: SheetPart) -> Any:
+    """The formed sheet-metal part as a ``TopoDS_Solid``, built by OpenCascade from the
+    library's B-rep (``part.export("brep")``): wrap it as ``build123d.Solid(...)`` or
+    ``cadquery.Solid(...)`` to fuse, cut and export."""
+    text = _core.instance(part, "part", SheetPart, "an rmfsurf.SheetPart").export("brep")
+    return _as_solid(_read_brep(text))
 
 
 def closed_solid(sewn: Any) -> Any:

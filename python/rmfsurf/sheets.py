@@ -39,6 +39,7 @@ FORMATS: Dict[str, int] = {
     "flat_step": lib.RMF_SHEET_FORMAT_STEP_FLAT,
     "dxf": lib.RMF_SHEET_FORMAT_DXF,
     "svg": lib.RMF_SHEET_FORMAT_SVG,
+    "brep": lib.RMF_SHEET_FORMAT_OCC_BREP,
 }
 
 
@@ -145,7 +146,9 @@ class SheetPart(ConeSpline):
 
     def export(self, format: str = "step") -> str:
         """The text of a file of the part: "step" (the formed solid), "flat_step" (the flat
-        pattern as a planar face), "dxf" or "svg" (the flat pattern)."""
+        pattern as a planar face), "dxf" or "svg" (the flat pattern), "brep" (the formed
+        solid in OpenCascade's own B-rep text, which ``BRepTools.Read`` and FreeCAD's
+        ``importBrepFromString`` build as it is)."""
         code = _core.choice(format, "format", FORMATS)
         n = ffi.new("size_t *")
         call("rmf_cone_spline_part_export", self._ptr, code, ffi.NULL, 0, n)

@@ -84,6 +84,9 @@ def test_the_files_of_the_part(hopper):
     dxf = hopper.export("dxf")
     assert "\nARC\n" in dxf and "\nBEND\n" in dxf and "POLYLINE" not in dxf
     assert "PLANE(" in hopper.export("flat_step")
+    brep = hopper.export("brep")
+    assert brep.startswith("\nCASCADE Topology V1, (c) Matra-Datavision\n")
+    assert brep.count("\nFa\n") == step.count("ADVANCED_FACE(") and "\nSo\n" in brep
     with pytest.raises(ValueError, match="format"):
         hopper.export("iges")
 

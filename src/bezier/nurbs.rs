@@ -375,6 +375,17 @@ impl NurbsCurve {
             knots: clamped_knots(curve.breaks(), p),
         })
     }
+
+    /// The same curve run the other way on the same parameter range: t ↦ a + b − t.
+    pub(crate) fn reversed(&self) -> Self {
+        let (a, b) = (self.knots[0], self.knots[self.knots.len() - 1]);
+        Self {
+            degree: self.degree,
+            poles: self.poles.iter().rev().copied().collect(),
+            weights: self.weights.iter().rev().copied().collect(),
+            knots: self.knots.iter().rev().map(|&t| a + b - t).collect(),
+        }
+    }
 }
 
 impl NurbsSurface {

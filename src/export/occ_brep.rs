@@ -20,7 +20,7 @@
 use super::{curve_range, knots_and_multiplicities, number, Number};
 use crate::bezier::{NurbsCurve, NurbsSurface};
 use crate::error::{invalid, Result};
-use crate::model::{Brep, BrepFace, BrepSurface, PCurve};
+use crate::model::{Brep, BrepEdge, BrepFace, BrepSurface, PCurve};
 use glam::DVec3;
 use std::fmt::Write;
 
@@ -67,7 +67,7 @@ pub fn brep_to_occ(brep: &Brep) -> Result<String> {
         let (Some(&start), Some(&end)) = (vertices.get(edge.start), vertices.get(edge.end)) else {
             return invalid!("edge {e} joins vertices that do not exist");
         };
-        let data = edge_data(e, &edge.curve, &on_edges[e], tolerance);
+        let data = edge_data(e, edge, &on_edges[e], tolerance);
         edges.push(shapes.add(data, "0101000", vec![('+', start), ('-', end)]));
     }
     let mut in_shell = Vec::with_capacity(brep.faces.len());
@@ -254,11 +254,16 @@ fn write_pcurve(text: &mut String, pcurve: &PCurve, edge: &NurbsCurve) {
     }
 }
 
-/// The edge's record: its 3-D curve (number `e + 1`) and its curves on the faces.
-fn edge_data(e: usize, curve: &NurbsCurve, on_faces: &[OnFace], tolerance: Number) -> String {
-    let (first, last) = curve_range(curve);
+/// The edge's record: its 3-D curve (number `e + 1`; none for a degenerate edge, which
+/// the kernel marks so) and its curves on the faces.
+fn edge_data(e: usize, edge: &BrepEdge, on_faces: &[OnFace], tolerance: Number) -> String {
+    let (first, last) = curve_range(&edge.curve);
     let (first, last) = (number(first), number(last));
-    let mut data = format!("Ed\n {tolerance} 1 1 0\n1 {} 0 {first} {last}\n", e + 1);
+    let mut data = if edge.degenerate {
+        format!("Ed\n {tolerance} 1 1 1\n")
+    } else {
+        format!("Ed\n {tolerance} 1 1 0\n1 {} 0 {first} {last}\n", e + 1)
+    };
     for on in on_faces {
         let surface = on.face + 1;
         let _ = match on.curves[..] {

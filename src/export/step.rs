@@ -14,9 +14,8 @@
 //!   an `OPEN_SHELL` for a sheet. Every edge is written once, as a `SURFACE_CURVE` carrying
 //!   its parameter line on each face that uses it (a `SEAM_CURVE` when one face uses it
 //!   twice); on a plane the parameter curve is the 2-D B-spline in the plane's axes.
-//! * a closed solid (a formed sheet-metal part) is a `MANIFOLD_SOLID_BREP` of a
-//!   `CLOSED_SHELL` of such faces, every edge shared by two of them
-//!   (`ADVANCED_BREP_SHAPE_REPRESENTATION`);
+//!   Degenerate edges (a side of a surface collapsed to a point) are left out: STEP loops
+//!   close in space.
 //! * a flat pattern is one `PLANE` face bounded by `LINE` and `CIRCLE` edges.
 //!
 //! The boundary curves are exact: a clamped NURBS surface's boundary is the NURBS curve of
@@ -26,11 +25,11 @@
 //! the loop, as in OpenCascade's own files. Coordinates are written in millimetres with
 //! 17 significant digits, so every double round-trips exactly.
 
-use super::{curve_range, knots_and_multiplicities};
+use super::knots_and_multiplicities;
 use crate::bezier::{NurbsCurve, NurbsSurface};
 use crate::error::{invalid, Result};
 use crate::math::bounding_diagonal;
-use crate::model::{Brep, BrepBound, BrepEdge, BrepFace, BrepSurface, BrepUse, PCurve};
+use crate::model::{Brep, BrepSurface, PCurve};
 use crate::model::{FlatPattern, PatternEdge};
 use glam::DVec3;
 use std::fmt::Write;
@@ -505,6 +504,10 @@ pub fn brep_to_step(brep: &Brep, name: &str) -> Result<String> {
         let (Some(&start), Some(&end)) = (vertices.get(edge.start), vertices.get(edge.end)) else {
             return invalid!("edge {e} joins vertices that do not exist");
         };
+        if edge.degenerate {
+            edges.push(0);
+            continue;
+        }
         let curve = curve_entity(&mut out, &edge.curve);
         let on_faces: Vec<usize> = pcurves[e]
             .iter()
@@ -534,6 +537,7 @@ pub fn brep_to_step(brep: &Brep, name: &str) -> Result<String> {
                     let uses: Vec<usize> = bound
                         .uses
                         .iter()
+                        .filter(|u| !brep.edges[u.edge].degenerate)
                         .map(|u| {
                             out.add(format!(
                                 "ORIENTED_EDGE('',*,*,#{},{})",
@@ -592,180 +596,6 @@ pub fn curves_to_step(curves: &[&NurbsCurve], name: &str) -> Result<String> {
     );
     represent(&mut out, shape, representation);
     Ok(exchange_structure(&out, name))
-}
-
-/// One boundary side of a face of a solid, with where its curve starts and ends.
-struct SolidSide {
-    face: usize,
-    /// Which side (the order of [`boundaries`]: counter-clockwise in (u, v)).
-    index: usize,
-    start: DVec3,
-    end: DVec3,
-}
-
-/// Whether two boundary curves are the same curve, run in the same direction (`Some(true)`),
-/// in opposite directions (`Some(false)`), or not the same (`None`): poles within
-/// `tolerance` and proportional weights, forwards or backwards.
-fn same_or_reversed(a: &NurbsCurve, b: &NurbsCurve, tolerance: f64) -> Option<bool> {
-    if a.poles.len() != b.poles.len() {
-        return None;
-    }
-    let forward = same_curve(a, b, tolerance);
-    if forward {
-        return Some(true);
-    }
-    let reversed = NurbsCurve {
-        degree: b.degree,
-        poles: b.poles.iter().rev().copied().collect(),
-        weights: b.weights.iter().rev().copied().collect(),
-        knots: b.knots.clone(),
-    };
-    same_curve(a, &reversed, tolerance).then_some(false)
-}
-
-/// The parameter line of a face's side for the parameter t of the edge's curve on
-/// [t0, t1], the side's own parameter t′ on [s0, s1] running the same way (`same`) or
-/// backwards.
-fn side_pcurve(side: &Boundary, edge_range: (f64, f64), same: bool) -> PCurve {
-    let (t0, t1) = edge_range;
-    let (s0, s1) = curve_range(&side.curve);
-    let rate = (s1 - s0) / (t1 - t0);
-    // t′ = s0 + (t − t0)·rate, or s1 − (t − t0)·rate.
-    let (offset, slope) = if same {
-        (s0 - t0 * rate, rate)
-    } else {
-        (s1 + t0 * rate, -rate)
-    };
-    PCurve::Line {
-        origin: (
-            side.origin.0 + offset * side.direction.0,
-            side.origin.1 + offset * side.direction.1,
-        ),
-        direction: (slope * side.direction.0, slope * side.direction.1),
-    }
-}
-
-/// A STEP file holding one closed solid (`MANIFOLD_SOLID_BREP` of a `CLOSED_SHELL`)
-/// bounded by `faces`, the product called `name`. Every face's normal ∂u × ∂v must point
-/// out of the solid, and each boundary side of a face that is not collapsed to a point must
-/// be the boundary side of exactly one other face (the same curve, either way round): the
-/// edge is written once, with the parameter line of both faces, and used in each face's
-/// loop in the direction that face's orientation asks for.
-pub fn solid_to_step(faces: &[NurbsSurface], name: &str) -> Result<String> {
-    if faces.is_empty() {
-        return invalid!("a solid needs at least one face");
-    }
-    let tolerance = SAME_TOLERANCE
-        * bounding_diagonal(faces.iter().flat_map(|f| f.poles.iter().copied()))
-            .max(f64::MIN_POSITIVE);
-    let all: Vec<[Boundary; 4]> = faces.iter().map(boundaries).collect();
-    let mut sides = Vec::new();
-    for (face, b) in all.iter().enumerate() {
-        for (index, side) in b.iter().enumerate() {
-            if collapsed(&side.curve, tolerance) {
-                continue;
-            }
-            let poles = &side.curve.poles;
-            sides.push(SolidSide {
-                face,
-                index,
-                start: poles[0],
-                end: poles[poles.len() - 1],
-            });
-        }
-    }
-    // Pair the sides: partner[i] = (j, same direction).
-    let mut partner: Vec<Option<(usize, bool)>> = vec![None; sides.len()];
-    for i in 0..sides.len() {
-        if partner[i].is_some() {
-            continue;
-        }
-        let a = &sides[i];
-        let found = (i + 1..sides.len()).find_map(|j| {
-            let b = &sides[j];
-            let ends = (a.start.distance(b.start) <= tolerance
-                && a.end.distance(b.end) <= tolerance)
-                || (a.start.distance(b.end) <= tolerance && a.end.distance(b.start) <= tolerance);
-            if partner[j].is_some() || !ends {
-                return None;
-            }
-            same_or_reversed(
-                &all[a.face][a.index].curve,
-                &all[b.face][b.index].curve,
-                tolerance,
-            )
-            .map(|same| (j, same))
-        });
-        let Some((j, same)) = found else {
-            return invalid!(
-                "the faces do not close: side {} of face {} is the side of no other face",
-                a.index,
-                a.face
-            );
-        };
-        partner[i] = Some((j, same));
-        partner[j] = Some((i, same));
-    }
-    let mut vertices: Vec<DVec3> = Vec::new();
-    let mut vertex = |p: DVec3| {
-        if let Some(k) = vertices.iter().position(|q| q.distance(p) <= tolerance) {
-            return k;
-        }
-        vertices.push(p);
-        vertices.len() - 1
-    };
-    // The edge of each side (one per pair), whether the side runs along the edge's curve,
-    // and the side's parameter line for the edge's parameter.
-    let mut edges = Vec::new();
-    let mut edge_of: Vec<Option<(usize, bool, PCurve)>> = vec![None; sides.len()];
-    for i in 0..sides.len() {
-        if edge_of[i].is_some() {
-            continue;
-        }
-        let (j, same) = partner[i].expect("every side is paired");
-        let (a, b) = (&sides[i], &sides[j]);
-        let (side_a, side_b) = (&all[a.face][a.index], &all[b.face][b.index]);
-        let range = curve_range(&side_a.curve);
-        edges.push(BrepEdge {
-            curve: side_a.curve.clone(),
-            start: vertex(a.start),
-            end: vertex(a.end),
-        });
-        edge_of[i] = Some((edges.len() - 1, true, side_pcurve(side_a, range, true)));
-        edge_of[j] = Some((edges.len() - 1, same, side_pcurve(side_b, range, same)));
-    }
-    let faces = faces
-        .iter()
-        .enumerate()
-        .map(|(face, surface)| {
-            let uses = sides
-                .iter()
-                .zip(&edge_of)
-                .filter(|(s, _)| s.face == face)
-                .map(|(side, edge)| {
-                    let (edge, along, pcurve) = edge.clone().expect("every side has its edge");
-                    // The loop runs counter-clockwise in (u, v): sides 0 and 1 forwards.
-                    BrepUse {
-                        edge,
-                        forward: (side.index < 2) == along,
-                        pcurve: Some(pcurve),
-                    }
-                })
-                .collect();
-            BrepFace {
-                surface: BrepSurface::Nurbs(surface.clone()),
-                same_sense: true,
-                bounds: vec![BrepBound { uses, outer: true }],
-            }
-        })
-        .collect();
-    let brep = Brep {
-        vertices,
-        edges,
-        faces,
-        closed: true,
-    };
-    brep_to_step(&brep, name)
 }
 
 /// A STEP file holding a flat pattern as one planar face in z = 0 (`PLANE`, bounded by

@@ -31,6 +31,11 @@ pub struct BrepEdge {
     pub start: usize,
     /// Index of the vertex at the curve's last parameter.
     pub end: usize,
+    /// A side of a face's surface collapsed to a point (a cone's apex on a boundary): the
+    /// curve is that point, `start` = `end`, and the edge is used by one face, whose
+    /// parameter curve alone says where it runs. STEP leaves it out of the loops; the
+    /// OpenCascade kernel needs it to close the loop in the parameter plane.
+    pub degenerate: bool,
 }
 
 /// An edge's curve in a face's parameter plane, on the edge curve's parameter.

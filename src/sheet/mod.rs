@@ -11,8 +11,10 @@
 //! | `flat` | the flat pattern of a layer: lines, arcs and biarcs | [LP] "Bending sequences and development", (7)–(8) |
 //! | `rails` | parts between the rails of a ruled developable or of a tangent surface | [LP] (1), (2); distances along the rulings fitted as cubics |
 //! | `marks` | the isometry flat ↔ formed for points | φ sin α = const |
+//! | `brep` | the part's solid as a B-rep: faces, shared edges and vertices named by construction | [LP] Fig. 1 |
 //! | `part` | [`SheetPart`]: the public face of all of the above | |
 
+mod brep;
 mod flat;
 mod marks;
 mod part;

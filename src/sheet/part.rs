@@ -3,20 +3,19 @@
 //! and outer face with normal-cut edges (what a laser cut of the flat blank gives when
 //! formed), the flat pattern of the neutral layer, and the maps between flat and formed.
 
+use super::brep::{EdgeKey, PartFace};
 use super::flat::{flat_layout, FlatLayout};
 use super::marks::{flat_to_part, part_to_flat, part_to_surface, surface_to_part};
 use super::rails::between_rails;
 use super::thickness::{layers, Layer, Layers, Sheet};
 use super::transition::{transition, TransitionFit};
-use super::trim::{patch_nurbs, Face, Similarity, TrimmedSpline};
-use crate::bezier::{
-    NurbsSurface, PiecewiseCurve, PiecewiseSurface, RationalBezierCurve, RationalBezierPatch,
-};
+use super::trim::{patch_nurbs, Face, Similarity, TrimmedSpline, COLLAPSED};
+use crate::bezier::{PiecewiseCurve, PiecewiseSurface, RationalBezierCurve, RationalBezierPatch};
 use crate::cone_spline::developable::{RuledSurface, TangentSurface};
 use crate::cone_spline::{ConePiece, ConeSpline};
 use crate::error::{invalid, Result};
 use crate::math::in_caller_units;
-use crate::model::{FlatPattern, PatternEdge};
+use crate::model::{Brep, FlatPattern, PatternEdge};
 use glam::{DVec2, DVec3};
 
 /// Which boundary curve of a part: the first (u = 0: a transition's bottom, the first rail)
@@ -371,51 +370,80 @@ impl SheetPart {
         .expect("a similarity keeps the weights")
     }
 
-    /// The faces of the closed solid between the inner and the outer face, each with its
-    /// normal ∂u × ∂v pointing out of the solid: per piece the two layer faces and the cut
-    /// faces along both boundaries (the normal cut of the flat blank), and for an open part
-    /// the two end faces; faces of zero area (a crease on a layer, a vertex's cut) dropped.
-    pub fn solid_faces(&self) -> Result<Vec<NurbsSurface>> {
+    /// The closed solid between the inner and the outer face, in the caller's units, as a
+    /// B-rep built from the construction (`brep` module notes): per piece the two layer
+    /// faces and the cut faces along both boundaries (the normal cut of the flat blank),
+    /// and for an open part the two end faces; every face's normal ∂u × ∂v points out of
+    /// the solid.
+    pub fn brep(&self) -> Result<Brep> {
         let (inner, outer) = (
             self.layers.offset(Layer::Inner),
             self.layers.offset(Layer::Outer),
         );
         let (lo, hi) = (inner.min(outer), inner.max(outer));
+        let inner_layer = usize::from(inner > outer);
         let sign = self.layers.sign;
-        let mut patches = Vec::new();
-        for k in 0..self.piece_count() {
+        let n = self.piece_count();
+        let next = |k: usize| if self.part.closed { (k + 1) % n } else { k + 1 };
+        let mut faces = Vec::with_capacity(4 * n + 2);
+        for k in 0..n {
             // Layer faces: ∂u × ∂v = n; the solid's outward normal is −m on the inner face
             // and +m on the outer, m = sign·n.
-            patches.push(flip_u(self.part.patch(k, Face::Layer(inner)), sign > 0.0));
-            patches.push(flip_u(self.part.patch(k, Face::Layer(outer)), sign < 0.0));
+            for (offset, layer, flip) in [
+                (inner, inner_layer, sign > 0.0),
+                (outer, 1 - inner_layer, sign < 0.0),
+            ] {
+                let patch = flip_u(self.part.patch(k, Face::Layer(offset)), flip);
+                faces.push(self.part_face(&patch, layer_sides(k, next(k), layer, flip))?);
+            }
             // Cut faces: ∂u × ∂v ∝ −(to − from)·e; outward −e on the first, +e on the second.
-            patches.push(self.part.patch(
-                k,
-                Face::Cut {
-                    side: 0,
-                    from: lo,
-                    to: hi,
-                },
-            ));
-            patches.push(self.part.patch(
-                k,
-                Face::Cut {
-                    side: 1,
-                    from: hi,
-                    to: lo,
-                },
-            ));
+            for (side, from, to) in [(0, lo, hi), (1, hi, lo)] {
+                let patch = self.part.patch(k, Face::Cut { side, from, to });
+                faces.push(self.part_face(&patch, cut_sides(k, next(k), side))?);
+            }
         }
         if !self.part.closed {
             // ∂u × ∂v = −(to − from)·p: outward −p at the first ruling, +p at the last.
-            patches.push(self.part.end_patch(false, lo, hi));
-            patches.push(self.part.end_patch(true, hi, lo));
+            for (ruling, last) in [(0, false), (n, true)] {
+                let patch = if last {
+                    self.part.end_patch(true, hi, lo)
+                } else {
+                    self.part.end_patch(false, lo, hi)
+                };
+                faces.push(self.part_face(&patch, end_sides(ruling, last))?);
+            }
         }
-        patches
-            .into_iter()
-            .filter(|p| !TrimmedSpline::degenerate(p))
-            .map(|p| patch_nurbs(self.user_patch(&p)))
-            .collect()
+        Ok(super::brep::solid(&faces, next))
+    }
+
+    /// The part's solid as a STEP AP214 file (a `MANIFOLD_SOLID_BREP`), the product called
+    /// `name`.
+    pub fn to_step(&self, name: &str) -> Result<String> {
+        crate::export::step::brep_to_step(&self.brep()?, name)
+    }
+
+    /// The part's solid in OpenCascade's own B-rep text (`BRepTools::Read`, FreeCAD's
+    /// `Part.Shape.importBrepFromString`): the kernel builds it as it is, without sewing.
+    pub fn to_occ_brep(&self) -> Result<String> {
+        crate::export::occ_brep::brep_to_occ(&self.brep()?)
+    }
+
+    /// A face of the solid from its patch (internal coordinates) and its named sides.
+    fn part_face(
+        &self,
+        patch: &RationalBezierPatch,
+        sides: [(EdgeKey, bool); 4],
+    ) -> Result<PartFace> {
+        let internal = patch_nurbs(patch.clone())?;
+        let collapsed = [0, 1, 2, 3].map(|s| {
+            let poles = internal.boundary_curve(s).poles;
+            poles.iter().all(|p| p.distance(poles[0]) <= COLLAPSED)
+        });
+        Ok(PartFace {
+            surface: patch_nurbs(self.user_patch(patch))?,
+            sides,
+            collapsed,
+        })
     }
 
     /// The flat pattern of the neutral layer for the cutter (caller's units): outline of
@@ -498,6 +526,61 @@ impl SheetPart {
         }
         Ok(part_to_flat(self.developed.pieces(), p) * self.frame.scale)
     }
+}
+
+/// The sides of the layer face of piece `k` (first ruling `k`, last `next`) on `layer`, u
+/// from the first boundary to the second, or back when `flip`.
+fn layer_sides(k: usize, next: usize, layer: usize, flip: bool) -> [(EdgeKey, bool); 4] {
+    let ruling = |ruling| (EdgeKey::Ruling { ruling, layer }, !flip);
+    let row = |side| {
+        (
+            EdgeKey::Row {
+                piece: k,
+                side,
+                layer,
+            },
+            true,
+        )
+    };
+    let (first, second) = if flip {
+        (row(0), row(1))
+    } else {
+        (row(1), row(0))
+    };
+    [ruling(k), first, ruling(next), second]
+}
+
+/// The sides of the cut face of piece `k` along boundary `side`: u from layer 0 to layer 1
+/// on the first boundary, back on the second.
+fn cut_sides(k: usize, next: usize, side: usize) -> [(EdgeKey, bool); 4] {
+    let up = side == 0;
+    let across = |ruling| (EdgeKey::Thickness { ruling, side }, up);
+    let row = |layer| {
+        (
+            EdgeKey::Row {
+                piece: k,
+                side,
+                layer,
+            },
+            true,
+        )
+    };
+    [
+        across(k),
+        row(usize::from(up)),
+        across(next),
+        row(usize::from(!up)),
+    ]
+}
+
+/// The sides of the end face at `ruling` (the first, or the `last`): u from the first
+/// boundary to the second, v from layer 0 to layer 1 at the first ruling and back at the
+/// last.
+fn end_sides(ruling: usize, last: bool) -> [(EdgeKey, bool); 4] {
+    let along = |layer| (EdgeKey::Ruling { ruling, layer }, true);
+    let across = |side| (EdgeKey::Thickness { ruling, side }, !last);
+    let (from, to) = if last { (1, 0) } else { (0, 1) };
+    [along(from), across(1), along(to), across(0)]
 }
 
 /// `patch` with u reversed (its two rows swapped) when `flip`.

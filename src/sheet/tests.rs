@@ -408,7 +408,7 @@ fn check_transition(
             "{name}: normal jump"
         );
     }
-    assert!(!part.solid_faces().unwrap().is_empty());
+    crate::testing::assert_closed_oriented(&part.brep().unwrap());
     part
 }
 
@@ -880,4 +880,54 @@ fn polygon_to_circle_transitions_are_the_same_part_at_every_scale() {
             );
         }
     }
+}
+
+#[test]
+fn the_hoppers_solid_is_built_from_its_construction() {
+    let (bottom, top) = hopper_curves();
+    let part = SheetPart::transition(&bottom, &top, &hopper_options(1e-4)).unwrap();
+    let brep = part.brep().unwrap();
+    crate::testing::assert_closed_oriented(&brep);
+    assert!(brep.closed);
+    // Four faces a piece; the cuts at the square's corners have no area (both rows are
+    // the corner) and are left out. Rows through the apex of a cone or of a plane sector
+    // are degenerate edges: at a corner of the square or on the circle on the inner
+    // (designed) layer, the sheet's thickness (2) from there on the outer.
+    let n = part.piece_count();
+    assert!(
+        brep.faces.len() < 4 * n && brep.faces.len() >= 4 * n - 8,
+        "{}",
+        brep.faces.len()
+    );
+    let degenerate = brep.edges.iter().filter(|e| e.degenerate).count();
+    assert!(degenerate >= 8, "{degenerate}");
+    for e in brep.edges.iter().filter(|e| e.degenerate) {
+        let p = brep.vertices[e.start];
+        let corner = DVec3::new(100.0f64.copysign(p.x), 100.0f64.copysign(p.y), 0.0);
+        let circle = ((p.x - 20.0).hypot(p.y) - 60.0).hypot(p.z - 150.0);
+        let near = p.distance(corner).min(circle);
+        assert!(near < 2.0 + 1e-9, "a degenerate edge at {p}");
+    }
+    // Sides named alike are one edge: every other edge is shared by two faces, so
+    // edges = (sides of the faces − degenerate sides) / 2 + degenerate sides.
+    let sides = 4 * brep.faces.len();
+    assert_eq!(brep.edges.len(), (sides - degenerate) / 2 + degenerate);
+    // The STEP and OpenCascade texts write this model.
+    let step = part.to_step("hopper").unwrap();
+    assert!(step.contains("MANIFOLD_SOLID_BREP"));
+    assert_eq!(step.matches("ADVANCED_FACE(").count(), brep.faces.len());
+    assert_eq!(
+        step.matches("EDGE_CURVE(").count(),
+        brep.edges.len() - degenerate
+    );
+    let occ = part.to_occ_brep().unwrap();
+    assert_eq!(occ.matches("\nFa\n").count(), brep.faces.len());
+    let flags: Vec<&str> = occ
+        .split("\nEd\n")
+        .skip(1)
+        .map(|record| record.lines().next().unwrap().trim_start())
+        .collect();
+    assert_eq!(flags.len(), brep.edges.len());
+    let marked = flags.iter().filter(|f| f.ends_with(" 1 1 1")).count();
+    assert_eq!(marked, degenerate);
 }

@@ -171,6 +171,10 @@ pub(crate) fn split_long_pieces(pieces: &[ConePiece]) -> Vec<ConePiece> {
         .collect()
 }
 
+/// The distance within which a side of a patch is a point (internal coordinates, where the
+/// part is about 1 across): a boundary through a cone's apex, a crease's ruling.
+pub(crate) const COLLAPSED: f64 = 1e-12;
+
 /// The trimmed cone spline of a part, in internal coordinates: pieces (each at most 120°)
 /// and their two trims; `closed` when the last ruling is the first (a transition around).
 #[derive(Clone, Debug, PartialEq)]
@@ -213,20 +217,6 @@ impl TrimmedSpline {
         let [r0, r1] = rows.map(|r| bernstein::elevate_to(&r, degree));
         RationalBezierPatch::from_homogeneous(1, degree, [r0, r1].concat())
             .expect("trimmed rows have positive weights")
-    }
-
-    /// Whether a patch (internal coordinates) has no area: both rows collapsed to points —
-    /// the cut face at a vertex on a boundary, a crease on its own layer (every ruling the
-    /// same segment).
-    pub fn degenerate(patch: &RationalBezierPatch) -> bool {
-        let n = patch.degree_v() + 1;
-        let points: Vec<DVec3> = patch
-            .homogeneous()
-            .iter()
-            .map(|h| h.truncate() / h.w)
-            .collect();
-        let collapsed = |r: &[DVec3]| r.iter().all(|p| p.distance(r[0]) <= 1e-12);
-        collapsed(&points[..n]) && collapsed(&points[n..])
     }
 
     /// The end face at the first (`end = false`) or last ruling of an open part, between

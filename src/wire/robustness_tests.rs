@@ -3,9 +3,10 @@
 //! untwisted, scales from 1e-200 to 1e200, and wires that cross themselves within the
 //! profile's reach. Each class is tested on a family of inputs, most as property tests.
 
-use super::tests::{assert_closed_oriented, circle, pipe_route, square};
+use super::tests::{circle, pipe_route, square};
 use super::*;
 use crate::bezier::RationalBezierCurve;
+use crate::testing::assert_closed_oriented;
 use proptest::prelude::*;
 use std::f64::consts::{PI, TAU};
 

@@ -5,8 +5,7 @@
 
 use super::*;
 use crate::bezier::{NurbsCurve, RationalBezierCurve};
-use crate::model::Brep;
-use std::collections::HashMap;
+use crate::testing::assert_closed_oriented;
 use std::f64::consts::{FRAC_1_SQRT_2, PI};
 
 /// The circle of radius r (four rational quarters), centred.
@@ -54,68 +53,6 @@ pub(crate) fn pipe_route() -> Vec<Edge> {
 /// The enclosed volume of a solid.
 pub(crate) fn volume(shape: &Shape) -> f64 {
     shape.volume().expect("a solid")
-}
-
-/// Every edge is used exactly twice, once in each direction once the faces' orientation is
-/// applied: a closed, consistently oriented shell.
-pub(crate) fn assert_closed_oriented(brep: &Brep) {
-    let mut uses: HashMap<usize, (usize, usize)> = HashMap::new();
-    for face in &brep.faces {
-        for u in face.bounds.iter().flat_map(|b| &b.uses) {
-            let forward = u.forward == face.same_sense;
-            let entry = uses.entry(u.edge).or_default();
-            if forward {
-                entry.0 += 1;
-            } else {
-                entry.1 += 1;
-            }
-        }
-    }
-    assert_eq!(uses.len(), brep.edges.len(), "every edge is used");
-    for (edge, (f, b)) in uses {
-        assert_eq!(
-            (f, b),
-            (1, 1),
-            "edge {edge}: {f} forward, {b} backward uses"
-        );
-    }
-    // Consecutive uses of a loop meet at a vertex.
-    for (k, face) in brep.faces.iter().enumerate() {
-        for bound in &face.bounds {
-            let ends: Vec<(usize, usize)> = bound
-                .uses
-                .iter()
-                .map(|u| {
-                    let e = &brep.edges[u.edge];
-                    if u.forward {
-                        (e.start, e.end)
-                    } else {
-                        (e.end, e.start)
-                    }
-                })
-                .collect();
-            for i in 0..ends.len() {
-                let next = ends[(i + 1) % ends.len()];
-                assert_eq!(
-                    ends[i].1, next.0,
-                    "face {k}: the loop is broken after use {i}"
-                );
-            }
-        }
-    }
-    // Edge curves end at their vertices.
-    for (k, e) in brep.edges.iter().enumerate() {
-        let (first, last) = (e.curve.poles[0], e.curve.poles[e.curve.poles.len() - 1]);
-        let size = 1.0 + first.length();
-        assert!(
-            first.distance(brep.vertices[e.start]) < 1e-9 * size,
-            "edge {k} start"
-        );
-        assert!(
-            last.distance(brep.vertices[e.end]) < 1e-9 * size,
-            "edge {k} end"
-        );
-    }
 }
 
 fn relative(a: f64, b: f64) -> f64 {

@@ -1,10 +1,13 @@
 // Reads a STEP file with OpenCascade's STEP reader (STEPControl_Reader, as FreeCAD, CadQuery
-// and build123d do) and checks that it holds one valid closed solid: BRepCheck_Analyzer,
+// and build123d do), or a file in OpenCascade's own B-rep text (name ending in .brep) with
+// BRepTools::Read, and checks that it holds one valid closed solid: BRepCheck_Analyzer,
 // no free edges (ShapeAnalysis_FreeBounds), every shell closed; prints its face count,
 // volume (BRepGProp) and, given an expected volume as the second argument, the relative
 // difference, which must be below the third argument. Exit status 0 on success.
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepGProp.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
 #include <IFSelect_ReturnStatus.hxx>
@@ -18,19 +21,30 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 
 int main(int argc, char **argv) {
     if (argc < 2) {
-        std::fprintf(stderr, "usage: occ_read_solid FILE.step [expected_volume tolerance]\n");
+        std::fprintf(stderr, "usage: occ_read_solid FILE.step|FILE.brep [expected_volume tolerance]\n");
         return 2;
     }
-    STEPControl_Reader reader;
-    if (reader.ReadFile(argv[1]) != IFSelect_RetDone) {
-        std::fprintf(stderr, "%s: not read\n", argv[1]);
-        return 1;
+    const size_t name_length = std::strlen(argv[1]);
+    TopoDS_Shape shape;
+    if (name_length > 5 && std::strcmp(argv[1] + name_length - 5, ".brep") == 0) {
+        BRep_Builder builder;
+        if (!BRepTools::Read(shape, argv[1], builder)) {
+            std::fprintf(stderr, "%s: not read\n", argv[1]);
+            return 1;
+        }
+    } else {
+        STEPControl_Reader reader;
+        if (reader.ReadFile(argv[1]) != IFSelect_RetDone) {
+            std::fprintf(stderr, "%s: not read\n", argv[1]);
+            return 1;
+        }
+        reader.TransferRoots();
+        shape = reader.OneShape();
     }
-    reader.TransferRoots();
-    const TopoDS_Shape shape = reader.OneShape();
     int solids = 0, shells = 0, faces = 0, open_shells = 0;
     for (TopExp_Explorer e(shape, TopAbs_SOLID); e.More(); e.Next()) ++solids;
     for (TopExp_Explorer e(shape, TopAbs_SHELL); e.More(); e.Next()) {

@@ -102,6 +102,7 @@ impl<'a> Topology<'a> {
                             curve,
                             start: vertex[k][l][e],
                             end: vertex[k][l][next],
+                            degenerate: false,
                         });
                         t.edges.len() - 1
                     })
@@ -127,6 +128,7 @@ impl<'a> Topology<'a> {
                             curve: s.boundary_curve(side),
                             start: vertex_at(j, l, v),
                             end: vertex_at(j + 1, l, v),
+                            degenerate: false,
                         });
                         t.edges.len() - 1
                     })
