@@ -85,6 +85,14 @@
  */
 
 /**
+ * \defgroup rmf_brep Boundary representation
+ * The B-rep of a wire sweep's shape or a sheet-metal part's solid (RmfBrep): vertices,
+ * shared edges with their curves on each face, oriented loops, faces with their senses,
+ * shells, for a kernel to build natively (include/rmfsurf_occ.hpp for OpenCascade;
+ * docs/c-api.md).
+ */
+
+/**
  * \defgroup rmf_export Export
  * STEP and flat-pattern files written by the library (docs/cad-integration.md).
  */
@@ -95,6 +103,40 @@
 
 #include <stddef.h>
 #include <stdint.h>
+
+/**
+ * RmfBrepFace.kind: a rational B-spline surface (RmfBrepFace.nurbs).
+ * \ingroup rmf_brep
+ */
+#define RMF_BREP_SURFACE_NURBS 0
+
+/**
+ * RmfBrepFace.kind: a plane (plane_origin, plane_normal, plane_x_axis); its parameters run
+ * along plane_x_axis and plane_normal × plane_x_axis.
+ * \ingroup rmf_brep
+ */
+#define RMF_BREP_SURFACE_PLANE 1
+
+/**
+ * RmfBrepUse.pcurve_kind: no curve in the face's parameter plane (on a plane: the kernel
+ * projects the edge).
+ * \ingroup rmf_brep
+ */
+#define RMF_PCURVE_NONE 0
+
+/**
+ * RmfBrepUse.pcurve_kind: the line line_origin + t · line_direction, t the edge curve's
+ * parameter.
+ * \ingroup rmf_brep
+ */
+#define RMF_PCURVE_LINE 1
+
+/**
+ * RmfBrepUse.pcurve_kind: the 2-D NURBS curve RmfBrepUse.pcurve (x, y of its poles; z is
+ * 0), on the edge curve's parameter.
+ * \ingroup rmf_brep
+ */
+#define RMF_PCURVE_NURBS 2
 
 /**
  * rule of a cone pair: locally minimal vertex distance (12), the useful root. For
@@ -427,6 +469,13 @@ typedef uint32_t RmfStatus;
 #endif // __cplusplus
 
 /**
+ * A boundary representation (see rmf_brep_counts). Free with rmf_brep_free; the views the
+ * accessors give are borrowed from it.
+ * \ingroup rmf_brep
+ */
+typedef struct RmfBrep RmfBrep;
+
+/**
  * A cone spline surface (opaque). Freed with rmf_cone_spline_free. Immutable; may be read
  * from several threads at once.
  * \ingroup rmf_cone_spline
@@ -466,6 +515,40 @@ typedef struct RmfShape RmfShape;
 typedef struct RmfSurface RmfSurface;
 
 /**
+ * The sizes of a B-rep and its tolerance.
+ * \ingroup rmf_brep
+ */
+typedef struct RmfBrepCounts {
+  /**
+   * Number of vertices (rmf_brep_vertex).
+   */
+  size_t vertex_count;
+  /**
+   * Number of edges (rmf_brep_edge), each shared by the faces whose loops use it.
+   */
+  size_t edge_count;
+  /**
+   * Number of faces (rmf_brep_face).
+   */
+  size_t face_count;
+  /**
+   * Number of shells (rmf_brep_shell): 1 for a solid; an open shape may have several
+   * (the two walls of a hollow profile).
+   */
+  size_t shell_count;
+  /**
+   * 1 if the shell bounds a solid (closed, faces oriented outwards), 0 for a sheet.
+   */
+  uint32_t solid;
+  /**
+   * The distance within which vertices, edges and faces meet: 1e-10 of the largest
+   * coordinate, at least 1e-7 (OpenCascade's Precision::Confusion). A kernel's
+   * tolerance for every vertex, edge and face.
+   */
+  double tolerance;
+} RmfBrepCounts;
+
+/**
  * A point or vector in 3-space.
  * \ingroup rmf_foundation
  */
@@ -483,6 +566,230 @@ typedef struct RmfVec3 {
    */
   double z;
 } RmfVec3;
+
+/**
+ * Borrowed view of a NURBS curve, the layout of OpenCascade Geom_BSplineCurve, FreeCAD
+ * Part.BSplineCurve, IGES 126 and STEP (with knots listed one by one, not with
+ * multiplicities).
+ *
+ * The arrays are owned by the curve handle: do not free them; they stay valid until the
+ * handle is freed.
+ * \ingroup rmf_curves
+ */
+typedef struct RmfNurbsCurve {
+  /**
+   * Polynomial degree p ≥ 1.
+   */
+  uint32_t degree;
+  /**
+   * Number of poles n ≥ p + 1.
+   */
+  size_t pole_count;
+  /**
+   * pole_count Cartesian poles.
+   */
+  const struct RmfVec3 *poles;
+  /**
+   * pole_count weights, all > 0.
+   */
+  const double *weights;
+  /**
+   * pole_count + degree + 1.
+   */
+  size_t knot_count;
+  /**
+   * Clamped, non-decreasing knot vector; curves built by the library have interior knots
+   * of full multiplicity p at segment joints.
+   */
+  const double *knots;
+} RmfNurbsCurve;
+
+/**
+ * An edge: its 3-D curve from vertex start (at the curve's first knot) to vertex end.
+ * \ingroup rmf_brep
+ */
+typedef struct RmfBrepEdge {
+  /**
+   * Index of the vertex at the curve's first parameter.
+   */
+  size_t start;
+  /**
+   * Index of the vertex at the curve's last parameter.
+   */
+  size_t end;
+  /**
+   * 1 for a side of a face collapsed to a point (a cone's apex on a boundary): start ==
+   * end, the curve is that point, the edge is used by one face and only its curve in
+   * that face's parameter plane says where it runs (OpenCascade: a degenerated edge,
+   * without a 3-D curve).
+   */
+  uint32_t degenerate;
+  /**
+   * The 3-D curve, borrowed from the B-rep.
+   */
+  struct RmfNurbsCurve curve;
+} RmfBrepEdge;
+
+/**
+ * Borrowed view of a NURBS surface. Pole (i, j) is at index `i * pole_count_v + j`, i along
+ * u; the arrays are owned by the surface handle (do not free; valid until it is freed).
+ * \ingroup rmf_surfaces
+ */
+typedef struct RmfNurbsSurface {
+  /**
+   * Degree along u.
+   */
+  uint32_t degree_u;
+  /**
+   * Degree along v.
+   */
+  uint32_t degree_v;
+  /**
+   * Number of poles along u.
+   */
+  size_t pole_count_u;
+  /**
+   * Number of poles along v.
+   */
+  size_t pole_count_v;
+  /**
+   * pole_count_u * pole_count_v Cartesian poles, index i * pole_count_v + j.
+   */
+  const struct RmfVec3 *poles;
+  /**
+   * Weights in the same order, all > 0.
+   */
+  const double *weights;
+  /**
+   * pole_count_u + degree_u + 1.
+   */
+  size_t knot_count_u;
+  /**
+   * knot_count_u clamped knots along u.
+   */
+  const double *knots_u;
+  /**
+   * pole_count_v + degree_v + 1.
+   */
+  size_t knot_count_v;
+  /**
+   * knot_count_v clamped knots along v.
+   */
+  const double *knots_v;
+} RmfNurbsSurface;
+
+/**
+ * A face: its surface, whether its outward normal is the surface's, its loops.
+ * \ingroup rmf_brep
+ */
+typedef struct RmfBrepFace {
+  /**
+   * RMF_BREP_SURFACE_NURBS or RMF_BREP_SURFACE_PLANE.
+   */
+  uint32_t kind;
+  /**
+   * RMF_BREP_SURFACE_NURBS: the surface, borrowed from the B-rep (zero otherwise).
+   */
+  struct RmfNurbsSurface nurbs;
+  /**
+   * RMF_BREP_SURFACE_PLANE: a point of the plane (zero otherwise).
+   */
+  struct RmfVec3 plane_origin;
+  /**
+   * RMF_BREP_SURFACE_PLANE: the plane's unit normal, the normal of its parameters.
+   */
+  struct RmfVec3 plane_normal;
+  /**
+   * RMF_BREP_SURFACE_PLANE: the unit direction of the first parameter.
+   */
+  struct RmfVec3 plane_x_axis;
+  /**
+   * 1 if the face's normal (out of a solid) is the surface's, 0 if its opposite.
+   */
+  uint32_t same_sense;
+  /**
+   * Number of loops (rmf_brep_loop): the outer bound and the holes.
+   */
+  size_t loop_count;
+} RmfBrepFace;
+
+/**
+ * A loop of a face: counter-clockwise in the face's parameter plane (about the surface's
+ * normal) for the outer bound, clockwise for holes.
+ * \ingroup rmf_brep
+ */
+typedef struct RmfBrepLoop {
+  /**
+   * 1 for the face's outer bound, 0 for a hole.
+   */
+  uint32_t outer;
+  /**
+   * Number of edge uses (rmf_brep_use), each starting where the one before ends.
+   */
+  size_t use_count;
+} RmfBrepLoop;
+
+/**
+ * A point or vector in a plane (a flat pattern's coordinates).
+ * \ingroup rmf_sheet
+ */
+typedef struct RmfVec2 {
+  /**
+   * The x coordinate.
+   */
+  double x;
+  /**
+   * The y coordinate.
+   */
+  double y;
+} RmfVec2;
+
+/**
+ * An edge used by a loop, along its curve or against it, with its curve in the face's
+ * parameter plane. An edge a face uses twice (a seam) has one use each way.
+ * \ingroup rmf_brep
+ */
+typedef struct RmfBrepUse {
+  /**
+   * Index of the edge.
+   */
+  size_t edge;
+  /**
+   * 1 if the loop runs along the edge's curve, 0 against it.
+   */
+  uint32_t forward;
+  /**
+   * RMF_PCURVE_NONE, RMF_PCURVE_LINE or RMF_PCURVE_NURBS.
+   */
+  uint32_t pcurve_kind;
+  /**
+   * RMF_PCURVE_LINE: the point (u, v) at the edge curve's parameter 0.
+   */
+  struct RmfVec2 line_origin;
+  /**
+   * RMF_PCURVE_LINE: (du, dv) per unit of the edge curve's parameter.
+   */
+  struct RmfVec2 line_direction;
+  /**
+   * RMF_PCURVE_NURBS: the curve (x, y of the poles are u, v), borrowed from the B-rep.
+   */
+  struct RmfNurbsCurve pcurve;
+} RmfBrepUse;
+
+/**
+ * A shell: the faces it holds.
+ * \ingroup rmf_brep
+ */
+typedef struct RmfBrepShell {
+  /**
+   * Number of faces.
+   */
+  size_t face_count;
+  /**
+   * face_count face indices, borrowed from the B-rep.
+   */
+  const size_t *faces;
+} RmfBrepShell;
 
 /**
  * A G1 Hermite element: a ruling through `point` with direction `ruling` and the tangent
@@ -657,43 +964,6 @@ typedef struct RmfConePiece {
    */
   size_t patch_count;
 } RmfConePiece;
-
-/**
- * Borrowed view of a NURBS curve, the layout of OpenCascade Geom_BSplineCurve, FreeCAD
- * Part.BSplineCurve, IGES 126 and STEP (with knots listed one by one, not with
- * multiplicities).
- *
- * The arrays are owned by the curve handle: do not free them; they stay valid until the
- * handle is freed.
- * \ingroup rmf_curves
- */
-typedef struct RmfNurbsCurve {
-  /**
-   * Polynomial degree p ≥ 1.
-   */
-  uint32_t degree;
-  /**
-   * Number of poles n ≥ p + 1.
-   */
-  size_t pole_count;
-  /**
-   * pole_count Cartesian poles.
-   */
-  const struct RmfVec3 *poles;
-  /**
-   * pole_count weights, all > 0.
-   */
-  const double *weights;
-  /**
-   * pole_count + degree + 1.
-   */
-  size_t knot_count;
-  /**
-   * Clamped, non-decreasing knot vector; curves built by the library have interior knots
-   * of full multiplicity p at segment joints.
-   */
-  const double *knots;
-} RmfNurbsCurve;
 
 /**
  * Borrowed view of one rational Bézier segment of a curve: degree + 1 poles and weights
@@ -1183,21 +1453,6 @@ typedef uint32_t RmfSheetLayer;
 typedef uint32_t RmfSheetSide;
 
 /**
- * A point or vector in a plane (a flat pattern's coordinates).
- * \ingroup rmf_sheet
- */
-typedef struct RmfVec2 {
-  /**
-   * The x coordinate.
-   */
-  double x;
-  /**
-   * The y coordinate.
-   */
-  double y;
-} RmfVec2;
-
-/**
  * One edge of a flat pattern: a line from `from` to `to`, or an arc about `center` of
  * `radius` from `from` through the signed angle `sweep` (counter-clockwise when positive)
  * to `to`. Coordinates in the caller's units, in the plane of the flat pattern.
@@ -1294,54 +1549,6 @@ typedef struct RmfNurbsSurfaceData {
    */
   const double *knots_v;
 } RmfNurbsSurfaceData;
-
-/**
- * Borrowed view of a NURBS surface. Pole (i, j) is at index `i * pole_count_v + j`, i along
- * u; the arrays are owned by the surface handle (do not free; valid until it is freed).
- * \ingroup rmf_surfaces
- */
-typedef struct RmfNurbsSurface {
-  /**
-   * Degree along u.
-   */
-  uint32_t degree_u;
-  /**
-   * Degree along v.
-   */
-  uint32_t degree_v;
-  /**
-   * Number of poles along u.
-   */
-  size_t pole_count_u;
-  /**
-   * Number of poles along v.
-   */
-  size_t pole_count_v;
-  /**
-   * pole_count_u * pole_count_v Cartesian poles, index i * pole_count_v + j.
-   */
-  const struct RmfVec3 *poles;
-  /**
-   * Weights in the same order, all > 0.
-   */
-  const double *weights;
-  /**
-   * pole_count_u + degree_u + 1.
-   */
-  size_t knot_count_u;
-  /**
-   * knot_count_u clamped knots along u.
-   */
-  const double *knots_u;
-  /**
-   * pole_count_v + degree_v + 1.
-   */
-  size_t knot_count_v;
-  /**
-   * knot_count_v clamped knots along v.
-   */
-  const double *knots_v;
-} RmfNurbsSurface;
 
 /**
  * Caller buffers for rmf_surface_nurbs_copy_into. The caller sets struct_size =
@@ -1653,6 +1860,109 @@ typedef struct RmfEdge {
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
+
+/**
+ * Frees a B-rep; its views become invalid. NULL is a no-op.
+ *
+ * @param[in] brep The B-rep to free, or NULL.
+ * \since 0.2
+ * \ingroup rmf_brep
+ */
+void rmf_brep_free(struct RmfBrep *brep);
+
+/**
+ * The sizes of a B-rep, whether it is a solid, and its tolerance.
+ *
+ * @param[in] brep The B-rep.
+ * @param[out] out Receives the counts.
+ * @return RMF_OK or RMF_ERROR_NULL_POINTER.
+ * \since 0.2
+ * \ingroup rmf_brep
+ */
+RmfStatus rmf_brep_counts(const struct RmfBrep *brep, struct RmfBrepCounts *out);
+
+/**
+ * Vertex `index` of a B-rep.
+ *
+ * @param[in] brep The B-rep.
+ * @param[in] index 0 ≤ index < vertex_count.
+ * @param[out] out Receives the point.
+ * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT naming index.
+ * \since 0.2
+ * \ingroup rmf_brep
+ */
+RmfStatus rmf_brep_vertex(const struct RmfBrep *brep, size_t index, struct RmfVec3 *out);
+
+/**
+ * Edge `index` of a B-rep.
+ *
+ * @param[in] brep The B-rep.
+ * @param[in] index 0 ≤ index < edge_count.
+ * @param[out] out Receives the edge; its curve is borrowed from the B-rep.
+ * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT naming index.
+ * \since 0.2
+ * \ingroup rmf_brep
+ */
+RmfStatus rmf_brep_edge(const struct RmfBrep *brep, size_t index, struct RmfBrepEdge *out);
+
+/**
+ * Face `index` of a B-rep.
+ *
+ * @param[in] brep The B-rep.
+ * @param[in] index 0 ≤ index < face_count.
+ * @param[out] out Receives the face; a NURBS surface is borrowed from the B-rep.
+ * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT naming index.
+ * \since 0.2
+ * \ingroup rmf_brep
+ */
+RmfStatus rmf_brep_face(const struct RmfBrep *brep, size_t index, struct RmfBrepFace *out);
+
+/**
+ * Loop `index` of face `face`.
+ *
+ * @param[in] brep The B-rep.
+ * @param[in] face 0 ≤ face < face_count.
+ * @param[in] index 0 ≤ index < the face's loop_count.
+ * @param[out] out Receives the loop.
+ * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT naming face or index.
+ * \since 0.2
+ * \ingroup rmf_brep
+ */
+RmfStatus rmf_brep_loop(const struct RmfBrep *brep,
+                        size_t face,
+                        size_t index,
+                        struct RmfBrepLoop *out);
+
+/**
+ * Edge use `index` of loop `loop` of face `face`.
+ *
+ * @param[in] brep The B-rep.
+ * @param[in] face 0 ≤ face < face_count.
+ * @param[in] loop 0 ≤ loop < the face's loop_count.
+ * @param[in] index 0 ≤ index < the loop's use_count.
+ * @param[out] out Receives the use; a NURBS pcurve is borrowed from the B-rep.
+ * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT naming face, loop or
+ *         index.
+ * \since 0.2
+ * \ingroup rmf_brep
+ */
+RmfStatus rmf_brep_use(const struct RmfBrep *brep,
+                       size_t face,
+                       size_t loop,
+                       size_t index,
+                       struct RmfBrepUse *out);
+
+/**
+ * Shell `index` of a B-rep: the faces it holds.
+ *
+ * @param[in] brep The B-rep.
+ * @param[in] index 0 ≤ index < shell_count.
+ * @param[out] out Receives the shell; its face indices are borrowed from the B-rep.
+ * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT naming index.
+ * \since 0.2
+ * \ingroup rmf_brep
+ */
+RmfStatus rmf_brep_shell(const struct RmfBrep *brep, size_t index, struct RmfBrepShell *out);
 
 /**
  * Creates the cone spline through G1 Hermite elements: one cone pair (or one plane piece)
@@ -3678,6 +3988,18 @@ RmfStatus rmf_shape_occ_brep(const struct RmfShape *shape,
                              size_t *length);
 
 /**
+ * The boundary representation of a wire sweep's shape (its solid or sheet), as the STEP
+ * and OpenCascade texts write it.
+ *
+ * @param[in] shape The shape.
+ * @param[out] out Receives a new B-rep; free it with rmf_brep_free.
+ * @return RMF_OK or RMF_ERROR_NULL_POINTER.
+ * \since 0.2
+ * \ingroup rmf_brep
+ */
+RmfStatus rmf_shape_brep(const struct RmfShape *shape, struct RmfBrep **out);
+
+/**
  * Writes the default options and the struct's size.
  *
  * @param[out] options Receives the defaults (tolerance 1e-4, thickness 1, k_factor 0.5,
@@ -3942,6 +4264,19 @@ RmfStatus rmf_cone_spline_part_export(const struct RmfConeSpline *part,
                                       char *buffer,
                                       size_t capacity,
                                       size_t *length);
+
+/**
+ * The boundary representation of a sheet-metal part's formed solid (the solid of
+ * RMF_SHEET_FORMAT_STEP_SOLID and RMF_SHEET_FORMAT_OCC_BREP).
+ *
+ * @param[in] part A part (rmf_cone_spline_transition, _part or _tangent_part).
+ * @param[out] out Receives a new B-rep; free it with rmf_brep_free.
+ * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT for a cone spline
+ *         that is not a part.
+ * \since 0.2
+ * \ingroup rmf_brep
+ */
+RmfStatus rmf_cone_spline_part_brep(const struct RmfConeSpline *part, struct RmfBrep **out);
 
 /**
  * The message of the last failing call on the calling thread.

@@ -18,6 +18,7 @@
 #![warn(missing_docs)]
 
 mod boundary;
+pub mod brep;
 pub mod cone_spline;
 pub mod curve;
 pub mod frames;
@@ -33,6 +34,7 @@ pub mod surface;
 pub mod types;
 pub mod wire;
 
+pub use brep::RmfBrep;
 pub use cone_spline::RmfConeSpline;
 pub use curve::RmfCurve;
 pub use frames::RmfFrames;

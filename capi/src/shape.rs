@@ -442,3 +442,27 @@ fn write_atomically(path: &std::path::Path, bytes: &[u8]) -> std::io::Result<()>
     }
     result
 }
+
+/// The boundary representation of a wire sweep's shape (its solid or sheet), as the STEP
+/// and OpenCascade texts write it.
+///
+/// @param[in] shape The shape.
+/// @param[out] out Receives a new B-rep; free it with rmf_brep_free.
+/// @return RMF_OK or RMF_ERROR_NULL_POINTER.
+/// \since 0.2
+/// \ingroup rmf_brep
+#[no_mangle]
+pub unsafe extern "C" fn rmf_shape_brep(
+    shape: *const RmfShape,
+    out: *mut *mut crate::brep::RmfBrep,
+) -> RmfStatus {
+    guard("rmf_shape_brep", || {
+        let shape = reference(shape, "shape")?;
+        let out = out_ptr(out, "out")?;
+        write(
+            out,
+            crate::brep::RmfBrep::new(shape.shape.brep().clone()).into_raw(),
+        );
+        Ok(())
+    })
+}

@@ -757,3 +757,25 @@ pub unsafe extern "C" fn rmf_cone_spline_part_export(
         crate::boundary::hand_text(text, out, length)
     })
 }
+
+/// The boundary representation of a sheet-metal part's formed solid (the solid of
+/// RMF_SHEET_FORMAT_STEP_SOLID and RMF_SHEET_FORMAT_OCC_BREP).
+///
+/// @param[in] part A part (rmf_cone_spline_transition, _part or _tangent_part).
+/// @param[out] out Receives a new B-rep; free it with rmf_brep_free.
+/// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT for a cone spline
+///         that is not a part.
+/// \since 0.2
+/// \ingroup rmf_brep
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_part_brep(
+    part: *const RmfConeSpline,
+    out: *mut *mut crate::brep::RmfBrep,
+) -> RmfStatus {
+    guard("rmf_cone_spline_part_brep", || {
+        let part = part_of(reference(part, "part")?, "part")?;
+        let out = out_ptr(out, "out")?;
+        write(out, crate::brep::RmfBrep::new(part.brep()?).into_raw());
+        Ok(())
+    })
+}

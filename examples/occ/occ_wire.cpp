@@ -1,12 +1,15 @@
 // An OpenCascade kernel taking rmfsurf's wire sweeps: the wire is swept through the C API
 // (rmf_wire_sweep), written with rmf_shape_write_step and read back by OpenCascade's own
-// STEP reader, and handed over in OpenCascade's B-rep text (rmf_shape_occ_brep, built by
-// BRepTools::Read from a string, no file), then checked by OpenCascade — one Solid, BRepCheck_Analyzer valid, the volume
+// STEP reader, handed over in OpenCascade's B-rep text (rmf_shape_occ_brep, built by
+// BRepTools::Read from a string, no file), and built from the library's B-rep model with
+// BRep_Builder (rmf_shape_brep and include/rmfsurf_occ.hpp: no text, no sewing), then
+// checked by OpenCascade — one Solid, BRepCheck_Analyzer valid, the volume
 // by BRepGProp's adaptive integration against the closed form, the parameter lines of every
 // face (GeomAdaptor D1) — and printed beside OpenCascade's own sweep of the same wire
 // (BRepOffsetAPI_MakePipeShell in corrected-Frenet and Frenet mode, right or round corners),
 // measured by the same code. rmfsurf's figures are checked (the program fails on any);
-// OpenCascade's are reported.
+// OpenCascade's are reported. A square-to-round sheet-metal part (rmf_cone_spline_transition)
+// is built both ways too (rmf_cone_spline_part_brep).
 //
 // Built and run by the test command (integration/tests/opencascade.rs): C++17 against
 // include/rmfsurf.h and librmfsurf, with OpenCascade's TKSTEP, TKXSBase, TKOffset (the
@@ -23,6 +26,7 @@
 #include <vector>
 
 #include "rmfsurf.h"
+#include "rmfsurf_occ.hpp"
 #include "wire_sweep.hpp"
 
 using wire_sweep::Edge;
@@ -198,6 +202,15 @@ static void run(const Case &c) {
     check(std::fabs(handed.volume - ours.volume) <= 1e-9 * ours.volume,
           "volume from the B-rep text against the STEP solid's, relative",
           std::fabs(handed.volume - ours.volume) / ours.volume, 1e-9);
+    // And built from the library's B-rep model: the same solid, no text.
+    RmfBrep *brep = nullptr;
+    require(rmf_shape_brep(shape, &brep) == RMF_OK, "rmf_shape_brep");
+    const Measure built = wire_sweep::measure(rmfsurf::occ::build(brep));
+    rmf_brep_free(brep);
+    require(built.valid && built.solids == 1, "BRep_Builder builds one valid Solid from the B-rep model");
+    check(std::fabs(built.volume - handed.volume) <= 1e-12 * handed.volume,
+          "volume from the B-rep model against the text's, relative",
+          std::fabs(built.volume - handed.volume) / handed.volume, 1e-12);
     RmfSweepReport report;
     rmf_shape_report(shape, &report);
     require(ours.valid && ours.solids == 1, "OpenCascade reads one valid Solid (BRepCheck_Analyzer)");
@@ -233,6 +246,7 @@ static void run(const Case &c) {
                 c.exact > 0 ? "" : " (vs rmfsurf)");
     wire_sweep::print_row(c.name, "rmfsurf (STEP)", ours, exact, false);
     wire_sweep::print_row(c.name, "rmfsurf (B-rep text)", handed, exact, false);
+    wire_sweep::print_row(c.name, "rmfsurf (B-rep model)", built, exact, false);
     const bool round = c.corner == RMF_CORNER_ROUND;
     for (int frenet = 0; frenet <= 1; ++frenet) {
         const Measure occ = wire_sweep::in_child(
@@ -243,6 +257,44 @@ static void run(const Case &c) {
     }
     rmf_shape_free(shape);
     rmf_curve_free(profile);
+}
+
+/// The square-to-round hopper (square 200 × 200, circle of radius 60 at height 150 offset by
+/// 20, thickness 2): its solid from the B-rep text and from the model, the same valid solid.
+static void hopper() {
+    std::printf("square-to-round hopper (sheet metal)\n");
+    const RmfVec3 corners[4] = {{-100, -100, 0}, {100, -100, 0}, {100, 100, 0}, {-100, 100, 0}};
+    RmfCurve *square = nullptr, *circle = nullptr;
+    RmfConeSpline *part = nullptr;
+    require(rmf_curve_polygon(corners, 4, &square) == RMF_OK, "rmf_curve_polygon");
+    require(rmf_curve_circle(RmfVec3{20, 0, 150}, RmfVec3{1, 0, 0}, RmfVec3{0, 1, 0}, 60, &circle) == RMF_OK,
+            "rmf_curve_circle");
+    RmfSheetOptions o;
+    rmf_sheet_options_init(&o);
+    o.thickness = 2;
+    require(rmf_cone_spline_transition(square, circle, &o, &part) == RMF_OK, "rmf_cone_spline_transition");
+    size_t length = 0;
+    require(rmf_cone_spline_part_export(part, RMF_SHEET_FORMAT_OCC_BREP, nullptr, 0, &length) == RMF_OK,
+            "rmf_cone_spline_part_export (size)");
+    std::string text(length + 1, '\0');
+    require(rmf_cone_spline_part_export(part, RMF_SHEET_FORMAT_OCC_BREP, text.data(), text.size(), &length) ==
+                RMF_OK,
+            "rmf_cone_spline_part_export");
+    text.resize(length);
+    const Measure handed = wire_sweep::measure(wire_sweep::read_brep_text(text));
+    RmfBrep *brep = nullptr;
+    require(rmf_cone_spline_part_brep(part, &brep) == RMF_OK, "rmf_cone_spline_part_brep");
+    const Measure built = wire_sweep::measure(rmfsurf::occ::build(brep));
+    rmf_brep_free(brep);
+    require(handed.valid && handed.solids == 1, "the hopper from the B-rep text: one valid Solid");
+    require(built.valid && built.solids == 1, "the hopper from the B-rep model: one valid Solid");
+    check(std::fabs(built.volume - handed.volume) <= 1e-12 * handed.volume,
+          "the hopper's volume from the model against the text's, relative",
+          std::fabs(built.volume - handed.volume) / handed.volume, 1e-12);
+    std::printf("  %d B-spline faces, volume %.9f\n", built.bspline_faces, built.volume);
+    rmf_cone_spline_free(part);
+    rmf_curve_free(square);
+    rmf_curve_free(circle);
 }
 
 int main() {
@@ -306,6 +358,7 @@ int main() {
              4});
     run(Case{"rounded rectangle (closed)", rounded, Profile{false, 0.2}, RMF_CORNER_ROUND, 0, gp_Dir(0, 0, 1),
              0.16 * (12 + 2 * PI), 1e-12, {}, 1});
+    hopper();
     return failures == 0 ? (std::printf("occ_wire: all checks passed\n"), 0)
                          : (std::printf("occ_wire: %d check(s) failed\n", failures), 1);
 }

@@ -104,6 +104,13 @@ fn installed_files_soname_and_symlinks() {
         std::fs::read(root().join("include/rmfsurf.h")).unwrap(),
         "the installed header is the committed one"
     );
+    let builder = std::fs::read(prefix().join("include/rmfsurf_occ.hpp"))
+        .expect("the OpenCascade builder installed");
+    assert_eq!(
+        builder,
+        std::fs::read(root().join("include/rmfsurf_occ.hpp")).unwrap(),
+        "the installed OpenCascade builder is the committed one"
+    );
     let dynamic = succeeds(Command::new("readelf").arg("-d").arg(lib.join(&real)));
     let line = dynamic
         .lines()

@@ -24,18 +24,13 @@ use crate::model::{Brep, BrepEdge, BrepFace, BrepSurface, PCurve};
 use glam::DVec3;
 use std::fmt::Write;
 
-/// The kernel's tolerance relative to the largest coordinate (rounding of the model's
-/// geometry is some 1e-15 of it), and its floor: OpenCascade's `Precision::Confusion`.
-const RELATIVE_TOLERANCE: f64 = 1e-10;
-const KERNEL_CONFUSION: f64 = 1e-7;
-
 /// The text of `brep` in OpenCascade's B-rep format: a solid of one closed shell, or an
 /// open shell (a compound of shells when its faces fall apart into parts; module notes).
 pub fn brep_to_occ(brep: &Brep) -> Result<String> {
     if brep.faces.is_empty() {
         return invalid!("a shape needs at least one face");
     }
-    let tolerance = number(tolerance(brep));
+    let tolerance = number(brep.tolerance());
     let mut text = String::from("\nCASCADE Topology V1, (c) Matra-Datavision\nLocations 0\n");
     let on_edges = curves_2d(brep, &mut text)?;
     let _ = writeln!(text, "Curves {}", brep.edges.len());
@@ -93,7 +88,7 @@ pub fn brep_to_occ(brep: &Brep) -> Result<String> {
         let shell = shapes.add("Sh\n".into(), "0101100", in_shell);
         shapes.add("So\n".into(), "1100000", vec![('+', shell)]);
     } else {
-        let parts = connected_parts(brep);
+        let parts = brep.shells();
         if parts.len() == 1 {
             shapes.add("Sh\n".into(), "1101000", in_shell);
         } else {
@@ -137,56 +132,6 @@ fn natural_bounds(face: &BrepFace) -> bool {
         }
         _ => false,
     })
-}
-
-/// The faces grouped by the edges they share (an open shape of a hollow profile: the
-/// outer and the inner walls), each group in the order of the faces.
-fn connected_parts(brep: &Brep) -> Vec<Vec<usize>> {
-    let mut part: Vec<usize> = (0..brep.faces.len()).collect();
-    fn root(part: &mut [usize], mut f: usize) -> usize {
-        while part[f] != f {
-            part[f] = part[part[f]];
-            f = part[f];
-        }
-        f
-    }
-    let mut first_face: Vec<Option<usize>> = vec![None; brep.edges.len()];
-    for (f, face) in brep.faces.iter().enumerate() {
-        for u in face.bounds.iter().flat_map(|b| &b.uses) {
-            match first_face.get(u.edge).copied().flatten() {
-                Some(g) => {
-                    let (a, b) = (root(&mut part, f), root(&mut part, g));
-                    part[a.max(b)] = a.min(b);
-                }
-                None => {
-                    if let Some(slot) = first_face.get_mut(u.edge) {
-                        *slot = Some(f);
-                    }
-                }
-            }
-        }
-    }
-    let mut groups: Vec<(usize, Vec<usize>)> = Vec::new();
-    for f in 0..brep.faces.len() {
-        let r = root(&mut part, f);
-        match groups.iter_mut().find(|(g, _)| *g == r) {
-            Some((_, faces)) => faces.push(f),
-            None => groups.push((r, vec![f])),
-        }
-    }
-    groups.into_iter().map(|(_, faces)| faces).collect()
-}
-
-/// The kernel's tolerance for the shape: [`RELATIVE_TOLERANCE`] of its largest coordinate,
-/// at least [`KERNEL_CONFUSION`].
-fn tolerance(brep: &Brep) -> f64 {
-    let largest = brep
-        .vertices
-        .iter()
-        .chain(brep.edges.iter().flat_map(|e| &e.curve.poles))
-        .map(|p| p.abs().max_element())
-        .fold(0.0, f64::max);
-    (RELATIVE_TOLERANCE * largest).max(KERNEL_CONFUSION)
 }
 
 /// An edge on one face: the numbers of its curve(s) in the face's parameter plane — two for

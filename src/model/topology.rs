@@ -102,3 +102,66 @@ pub struct BrepFace {
     /// The loops: the outer bound and the holes.
     pub bounds: Vec<BrepBound>,
 }
+
+/// The geometry's tolerance relative to its largest coordinate (rounding of the model's
+/// geometry is some 1e-15 of it), and its floor: OpenCascade's `Precision::Confusion`.
+const RELATIVE_TOLERANCE: f64 = 1e-10;
+const KERNEL_CONFUSION: f64 = 1e-7;
+
+impl Brep {
+    /// The distance within which the model's vertices, edges and faces meet, for a kernel
+    /// building it: 1e-10 of its largest coordinate, at least 1e-7 (OpenCascade's
+    /// `Precision::Confusion`).
+    pub fn tolerance(&self) -> f64 {
+        let largest = self
+            .vertices
+            .iter()
+            .chain(self.edges.iter().flat_map(|e| &e.curve.poles))
+            .map(|p| p.abs().max_element())
+            .fold(0.0, f64::max);
+        (RELATIVE_TOLERANCE * largest).max(KERNEL_CONFUSION)
+    }
+
+    /// The faces grouped into shells by the edges they share, each shell's faces in the
+    /// order of the faces: one shell for a solid; an open shape may fall apart into several
+    /// (the outer and the inner walls of a hollow profile).
+    pub fn shells(&self) -> Vec<Vec<usize>> {
+        let mut part: Vec<usize> = (0..self.faces.len()).collect();
+        fn root(part: &mut [usize], mut f: usize) -> usize {
+            while part[f] != f {
+                part[f] = part[part[f]];
+                f = part[f];
+            }
+            f
+        }
+        let mut first_face: Vec<Option<usize>> = vec![None; self.edges.len()];
+        for (f, face) in self.faces.iter().enumerate() {
+            for u in face.bounds.iter().flat_map(|b| &b.uses) {
+                match first_face.get(u.edge).copied().flatten() {
+                    Some(g) => {
+                        let (a, b) = (root(&mut part, f), root(&mut part, g));
+                        part[a.max(b)] = a.min(b);
+                    }
+                    None => {
+                        if let Some(slot) = first_face.get_mut(u.edge) {
+                            *slot = Some(f);
+                        }
+                    }
+                }
+            }
+        }
+        let mut shell_of_root: Vec<Option<usize>> = vec![None; self.faces.len()];
+        let mut shells: Vec<Vec<usize>> = Vec::new();
+        for f in 0..self.faces.len() {
+            let r = root(&mut part, f);
+            match shell_of_root[r] {
+                Some(s) => shells[s].push(f),
+                None => {
+                    shell_of_root[r] = Some(shells.len());
+                    shells.push(vec![f]);
+                }
+            }
+        }
+        shells
+    }
+}

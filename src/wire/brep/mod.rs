@@ -236,9 +236,10 @@ impl Shape {
         crate::export::occ_brep::brep_to_occ(&self.brep)
     }
 
-    /// The topology as written to STEP (for checks).
-    #[cfg(test)]
-    pub(crate) fn brep(&self) -> &Brep {
+    /// The shape's boundary representation: vertices, shared edges with their curves on
+    /// each face, oriented loops, faces with their senses (what the STEP and OpenCascade
+    /// texts are written from).
+    pub fn brep(&self) -> &Brep {
         &self.brep
     }
 }

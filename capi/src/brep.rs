@@ -1,0 +1,525 @@
+//! RmfBrep: a shape's boundary representation for a kernel to build natively — vertices,
+//! edges with their 3-D curve, oriented loops of edge uses with each edge's curve in the
+//! face's parameter plane, faces with their surface and sense, shells — as counts and
+//! borrowed views (the model of `rmfsurf::Brep`). Wire sweeps (rmf_shape_brep) and sheet
+//! parts (rmf_cone_spline_part_brep) hand it out; `include/rmfsurf_occ.hpp` builds an
+//! OpenCascade shape from it with BRep_Builder.
+
+use super::boundary::{free_handle, guard, invalid_arg, out_ptr, reference, write, FfiResult};
+use super::status::RmfStatus;
+use super::types::{RmfNurbsCurve, RmfNurbsSurface, RmfVec2, RmfVec3};
+use rmfsurf::{Brep, BrepFace, BrepSurface, BrepUse, NurbsCurve, PCurve};
+
+/// RmfBrepFace.kind: a rational B-spline surface (RmfBrepFace.nurbs).
+/// \ingroup rmf_brep
+pub const RMF_BREP_SURFACE_NURBS: u32 = 0;
+/// RmfBrepFace.kind: a plane (plane_origin, plane_normal, plane_x_axis); its parameters run
+/// along plane_x_axis and plane_normal × plane_x_axis.
+/// \ingroup rmf_brep
+pub const RMF_BREP_SURFACE_PLANE: u32 = 1;
+
+/// RmfBrepUse.pcurve_kind: no curve in the face's parameter plane (on a plane: the kernel
+/// projects the edge).
+/// \ingroup rmf_brep
+pub const RMF_PCURVE_NONE: u32 = 0;
+/// RmfBrepUse.pcurve_kind: the line line_origin + t · line_direction, t the edge curve's
+/// parameter.
+/// \ingroup rmf_brep
+pub const RMF_PCURVE_LINE: u32 = 1;
+/// RmfBrepUse.pcurve_kind: the 2-D NURBS curve RmfBrepUse.pcurve (x, y of its poles; z is
+/// 0), on the edge curve's parameter.
+/// \ingroup rmf_brep
+pub const RMF_PCURVE_NURBS: u32 = 2;
+
+/// A boundary representation (see rmf_brep_counts). Free with rmf_brep_free; the views the
+/// accessors give are borrowed from it.
+/// \ingroup rmf_brep
+pub struct RmfBrep {
+    counts: RmfBrepCounts,
+    vertices: Vec<RmfVec3>,
+    edges: Vec<RmfBrepEdge>,
+    faces: Vec<RmfBrepFace>,
+    loops: Vec<Vec<RmfBrepLoop>>,
+    /// [face][loop][use].
+    uses: Vec<Vec<Vec<RmfBrepUse>>>,
+    shells: Vec<Vec<usize>>,
+    /// What the views point into: the model (weights, knots) and the poles in the C layout.
+    /// Neither changes after the views are made (moving the handle moves no buffer).
+    _model: Brep,
+    _poles: Vec<Vec<RmfVec3>>,
+}
+
+impl RmfBrep {
+    pub(crate) fn new(brep: Brep) -> Self {
+        let mut poles: Vec<Vec<RmfVec3>> = Vec::new();
+        let mut keep = |points: &[rmfsurf::glam::DVec3]| -> *const RmfVec3 {
+            let c: Vec<RmfVec3> = points.iter().map(|&p| p.into()).collect();
+            let at = c.as_ptr();
+            poles.push(c);
+            at
+        };
+        let edges = brep
+            .edges
+            .iter()
+            .map(|e| RmfBrepEdge {
+                start: e.start,
+                end: e.end,
+                degenerate: u32::from(e.degenerate),
+                curve: curve_view(&e.curve, keep(&e.curve.poles)),
+            })
+            .collect();
+        let faces = brep.faces.iter().map(|f| face_view(f, &mut keep)).collect();
+        let loops = brep
+            .faces
+            .iter()
+            .map(|f| {
+                f.bounds
+                    .iter()
+                    .map(|b| RmfBrepLoop {
+                        outer: u32::from(b.outer),
+                        use_count: b.uses.len(),
+                    })
+                    .collect()
+            })
+            .collect();
+        let uses = brep
+            .faces
+            .iter()
+            .map(|f| {
+                f.bounds
+                    .iter()
+                    .map(|b| b.uses.iter().map(|u| use_view(u, &mut keep)).collect())
+                    .collect()
+            })
+            .collect();
+        let shells = brep.shells();
+        Self {
+            counts: RmfBrepCounts {
+                vertex_count: brep.vertices.len(),
+                edge_count: brep.edges.len(),
+                face_count: brep.faces.len(),
+                shell_count: shells.len(),
+                solid: u32::from(brep.closed),
+                tolerance: brep.tolerance(),
+            },
+            vertices: brep.vertices.iter().map(|&p| p.into()).collect(),
+            edges,
+            faces,
+            loops,
+            uses,
+            shells,
+            _model: brep,
+            _poles: poles,
+        }
+    }
+
+    pub(crate) fn into_raw(self) -> *mut Self {
+        Box::into_raw(Box::new(self))
+    }
+}
+
+/// The view of a curve whose poles, in the C layout, are at `poles`.
+fn curve_view(curve: &NurbsCurve, poles: *const RmfVec3) -> RmfNurbsCurve {
+    RmfNurbsCurve {
+        degree: curve.degree as u32,
+        pole_count: curve.poles.len(),
+        poles,
+        weights: curve.weights.as_ptr(),
+        knot_count: curve.knots.len(),
+        knots: curve.knots.as_ptr(),
+    }
+}
+
+fn face_view(
+    face: &BrepFace,
+    keep: &mut impl FnMut(&[rmfsurf::glam::DVec3]) -> *const RmfVec3,
+) -> RmfBrepFace {
+    let zero = RmfVec3::default();
+    let (kind, nurbs, [plane_origin, plane_normal, plane_x_axis]) = match &face.surface {
+        BrepSurface::Nurbs(s) => (
+            RMF_BREP_SURFACE_NURBS,
+            RmfNurbsSurface {
+                degree_u: s.degree_u as u32,
+                degree_v: s.degree_v as u32,
+                pole_count_u: s.pole_count_u,
+                pole_count_v: s.pole_count_v,
+                poles: keep(&s.poles),
+                weights: s.weights.as_ptr(),
+                knot_count_u: s.knots_u.len(),
+                knots_u: s.knots_u.as_ptr(),
+                knot_count_v: s.knots_v.len(),
+                knots_v: s.knots_v.as_ptr(),
+            },
+            [zero; 3],
+        ),
+        BrepSurface::Plane {
+            origin,
+            normal,
+            x_axis,
+        } => (
+            RMF_BREP_SURFACE_PLANE,
+            empty_surface(),
+            [(*origin).into(), (*normal).into(), (*x_axis).into()],
+        ),
+    };
+    RmfBrepFace {
+        kind,
+        nurbs,
+        plane_origin,
+        plane_normal,
+        plane_x_axis,
+        same_sense: u32::from(face.same_sense),
+        loop_count: face.bounds.len(),
+    }
+}
+
+fn use_view(
+    u: &BrepUse,
+    keep: &mut impl FnMut(&[rmfsurf::glam::DVec3]) -> *const RmfVec3,
+) -> RmfBrepUse {
+    let zero = RmfVec2 { x: 0.0, y: 0.0 };
+    let (pcurve_kind, line_origin, line_direction, pcurve) = match &u.pcurve {
+        None => (RMF_PCURVE_NONE, zero, zero, empty_curve()),
+        Some(PCurve::Line { origin, direction }) => (
+            RMF_PCURVE_LINE,
+            RmfVec2 {
+                x: origin.0,
+                y: origin.1,
+            },
+            RmfVec2 {
+                x: direction.0,
+                y: direction.1,
+            },
+            empty_curve(),
+        ),
+        Some(PCurve::Curve(c)) => (RMF_PCURVE_NURBS, zero, zero, curve_view(c, keep(&c.poles))),
+    };
+    RmfBrepUse {
+        edge: u.edge,
+        forward: u32::from(u.forward),
+        pcurve_kind,
+        line_origin,
+        line_direction,
+        pcurve,
+    }
+}
+
+fn empty_curve() -> RmfNurbsCurve {
+    RmfNurbsCurve {
+        degree: 0,
+        pole_count: 0,
+        poles: std::ptr::null(),
+        weights: std::ptr::null(),
+        knot_count: 0,
+        knots: std::ptr::null(),
+    }
+}
+
+fn empty_surface() -> RmfNurbsSurface {
+    RmfNurbsSurface {
+        degree_u: 0,
+        degree_v: 0,
+        pole_count_u: 0,
+        pole_count_v: 0,
+        poles: std::ptr::null(),
+        weights: std::ptr::null(),
+        knot_count_u: 0,
+        knots_u: std::ptr::null(),
+        knot_count_v: 0,
+        knots_v: std::ptr::null(),
+    }
+}
+
+/// The sizes of a B-rep and its tolerance.
+/// \ingroup rmf_brep
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default)]
+pub struct RmfBrepCounts {
+    /// Number of vertices (rmf_brep_vertex).
+    pub vertex_count: usize,
+    /// Number of edges (rmf_brep_edge), each shared by the faces whose loops use it.
+    pub edge_count: usize,
+    /// Number of faces (rmf_brep_face).
+    pub face_count: usize,
+    /// Number of shells (rmf_brep_shell): 1 for a solid; an open shape may have several
+    /// (the two walls of a hollow profile).
+    pub shell_count: usize,
+    /// 1 if the shell bounds a solid (closed, faces oriented outwards), 0 for a sheet.
+    pub solid: u32,
+    /// The distance within which vertices, edges and faces meet: 1e-10 of the largest
+    /// coordinate, at least 1e-7 (OpenCascade's Precision::Confusion). A kernel's
+    /// tolerance for every vertex, edge and face.
+    pub tolerance: f64,
+}
+
+/// An edge: its 3-D curve from vertex start (at the curve's first knot) to vertex end.
+/// \ingroup rmf_brep
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct RmfBrepEdge {
+    /// Index of the vertex at the curve's first parameter.
+    pub start: usize,
+    /// Index of the vertex at the curve's last parameter.
+    pub end: usize,
+    /// 1 for a side of a face collapsed to a point (a cone's apex on a boundary): start ==
+    /// end, the curve is that point, the edge is used by one face and only its curve in
+    /// that face's parameter plane says where it runs (OpenCascade: a degenerated edge,
+    /// without a 3-D curve).
+    pub degenerate: u32,
+    /// The 3-D curve, borrowed from the B-rep.
+    pub curve: RmfNurbsCurve,
+}
+
+/// A face: its surface, whether its outward normal is the surface's, its loops.
+/// \ingroup rmf_brep
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct RmfBrepFace {
+    /// RMF_BREP_SURFACE_NURBS or RMF_BREP_SURFACE_PLANE.
+    pub kind: u32,
+    /// RMF_BREP_SURFACE_NURBS: the surface, borrowed from the B-rep (zero otherwise).
+    pub nurbs: RmfNurbsSurface,
+    /// RMF_BREP_SURFACE_PLANE: a point of the plane (zero otherwise).
+    pub plane_origin: RmfVec3,
+    /// RMF_BREP_SURFACE_PLANE: the plane's unit normal, the normal of its parameters.
+    pub plane_normal: RmfVec3,
+    /// RMF_BREP_SURFACE_PLANE: the unit direction of the first parameter.
+    pub plane_x_axis: RmfVec3,
+    /// 1 if the face's normal (out of a solid) is the surface's, 0 if its opposite.
+    pub same_sense: u32,
+    /// Number of loops (rmf_brep_loop): the outer bound and the holes.
+    pub loop_count: usize,
+}
+
+/// A loop of a face: counter-clockwise in the face's parameter plane (about the surface's
+/// normal) for the outer bound, clockwise for holes.
+/// \ingroup rmf_brep
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default)]
+pub struct RmfBrepLoop {
+    /// 1 for the face's outer bound, 0 for a hole.
+    pub outer: u32,
+    /// Number of edge uses (rmf_brep_use), each starting where the one before ends.
+    pub use_count: usize,
+}
+
+/// An edge used by a loop, along its curve or against it, with its curve in the face's
+/// parameter plane. An edge a face uses twice (a seam) has one use each way.
+/// \ingroup rmf_brep
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct RmfBrepUse {
+    /// Index of the edge.
+    pub edge: usize,
+    /// 1 if the loop runs along the edge's curve, 0 against it.
+    pub forward: u32,
+    /// RMF_PCURVE_NONE, RMF_PCURVE_LINE or RMF_PCURVE_NURBS.
+    pub pcurve_kind: u32,
+    /// RMF_PCURVE_LINE: the point (u, v) at the edge curve's parameter 0.
+    pub line_origin: RmfVec2,
+    /// RMF_PCURVE_LINE: (du, dv) per unit of the edge curve's parameter.
+    pub line_direction: RmfVec2,
+    /// RMF_PCURVE_NURBS: the curve (x, y of the poles are u, v), borrowed from the B-rep.
+    pub pcurve: RmfNurbsCurve,
+}
+
+/// A shell: the faces it holds.
+/// \ingroup rmf_brep
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct RmfBrepShell {
+    /// Number of faces.
+    pub face_count: usize,
+    /// face_count face indices, borrowed from the B-rep.
+    pub faces: *const usize,
+}
+
+/// Frees a B-rep; its views become invalid. NULL is a no-op.
+///
+/// @param[in] brep The B-rep to free, or NULL.
+/// \since 0.2
+/// \ingroup rmf_brep
+#[no_mangle]
+pub unsafe extern "C" fn rmf_brep_free(brep: *mut RmfBrep) {
+    free_handle(brep)
+}
+
+/// The sizes of a B-rep, whether it is a solid, and its tolerance.
+///
+/// @param[in] brep The B-rep.
+/// @param[out] out Receives the counts.
+/// @return RMF_OK or RMF_ERROR_NULL_POINTER.
+/// \since 0.2
+/// \ingroup rmf_brep
+#[no_mangle]
+pub unsafe extern "C" fn rmf_brep_counts(
+    brep: *const RmfBrep,
+    out: *mut RmfBrepCounts,
+) -> RmfStatus {
+    guard("rmf_brep_counts", || {
+        let b = reference(brep, "brep")?;
+        let out = out_ptr(out, "out")?;
+        write(out, b.counts);
+        Ok(())
+    })
+}
+
+/// The element `index` of `items` (`what` and `name` for the message).
+fn item<'a, T>(items: &'a [T], index: usize, name: &str, what: &str) -> FfiResult<&'a T> {
+    match items.get(index) {
+        Some(item) => Ok(item),
+        None => invalid_arg(format!(
+            "{name} = {index} but the B-rep has {} {what}",
+            items.len()
+        )),
+    }
+}
+
+/// Vertex `index` of a B-rep.
+///
+/// @param[in] brep The B-rep.
+/// @param[in] index 0 ≤ index < vertex_count.
+/// @param[out] out Receives the point.
+/// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT naming index.
+/// \since 0.2
+/// \ingroup rmf_brep
+#[no_mangle]
+pub unsafe extern "C" fn rmf_brep_vertex(
+    brep: *const RmfBrep,
+    index: usize,
+    out: *mut RmfVec3,
+) -> RmfStatus {
+    guard("rmf_brep_vertex", || {
+        let b = reference(brep, "brep")?;
+        let out = out_ptr(out, "out")?;
+        write(out, *item(&b.vertices, index, "index", "vertices")?);
+        Ok(())
+    })
+}
+
+/// Edge `index` of a B-rep.
+///
+/// @param[in] brep The B-rep.
+/// @param[in] index 0 ≤ index < edge_count.
+/// @param[out] out Receives the edge; its curve is borrowed from the B-rep.
+/// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT naming index.
+/// \since 0.2
+/// \ingroup rmf_brep
+#[no_mangle]
+pub unsafe extern "C" fn rmf_brep_edge(
+    brep: *const RmfBrep,
+    index: usize,
+    out: *mut RmfBrepEdge,
+) -> RmfStatus {
+    guard("rmf_brep_edge", || {
+        let b = reference(brep, "brep")?;
+        let out = out_ptr(out, "out")?;
+        write(out, *item(&b.edges, index, "index", "edges")?);
+        Ok(())
+    })
+}
+
+/// Face `index` of a B-rep.
+///
+/// @param[in] brep The B-rep.
+/// @param[in] index 0 ≤ index < face_count.
+/// @param[out] out Receives the face; a NURBS surface is borrowed from the B-rep.
+/// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT naming index.
+/// \since 0.2
+/// \ingroup rmf_brep
+#[no_mangle]
+pub unsafe extern "C" fn rmf_brep_face(
+    brep: *const RmfBrep,
+    index: usize,
+    out: *mut RmfBrepFace,
+) -> RmfStatus {
+    guard("rmf_brep_face", || {
+        let b = reference(brep, "brep")?;
+        let out = out_ptr(out, "out")?;
+        write(out, *item(&b.faces, index, "index", "faces")?);
+        Ok(())
+    })
+}
+
+/// Loop `index` of face `face`.
+///
+/// @param[in] brep The B-rep.
+/// @param[in] face 0 ≤ face < face_count.
+/// @param[in] index 0 ≤ index < the face's loop_count.
+/// @param[out] out Receives the loop.
+/// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT naming face or index.
+/// \since 0.2
+/// \ingroup rmf_brep
+#[no_mangle]
+pub unsafe extern "C" fn rmf_brep_loop(
+    brep: *const RmfBrep,
+    face: usize,
+    index: usize,
+    out: *mut RmfBrepLoop,
+) -> RmfStatus {
+    guard("rmf_brep_loop", || {
+        let b = reference(brep, "brep")?;
+        let out = out_ptr(out, "out")?;
+        let loops = item(&b.loops, face, "face", "faces")?;
+        write(out, *item(loops, index, "index", "loops on that face")?);
+        Ok(())
+    })
+}
+
+/// Edge use `index` of loop `loop` of face `face`.
+///
+/// @param[in] brep The B-rep.
+/// @param[in] face 0 ≤ face < face_count.
+/// @param[in] loop 0 ≤ loop < the face's loop_count.
+/// @param[in] index 0 ≤ index < the loop's use_count.
+/// @param[out] out Receives the use; a NURBS pcurve is borrowed from the B-rep.
+/// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT naming face, loop or
+///         index.
+/// \since 0.2
+/// \ingroup rmf_brep
+#[no_mangle]
+pub unsafe extern "C" fn rmf_brep_use(
+    brep: *const RmfBrep,
+    face: usize,
+    r#loop: usize,
+    index: usize,
+    out: *mut RmfBrepUse,
+) -> RmfStatus {
+    guard("rmf_brep_use", || {
+        let b = reference(brep, "brep")?;
+        let out = out_ptr(out, "out")?;
+        let loops = item(&b.uses, face, "face", "faces")?;
+        let uses = item(loops, r#loop, "loop", "loops on that face")?;
+        write(out, *item(uses, index, "index", "uses in that loop")?);
+        Ok(())
+    })
+}
+
+/// Shell `index` of a B-rep: the faces it holds.
+///
+/// @param[in] brep The B-rep.
+/// @param[in] index 0 ≤ index < shell_count.
+/// @param[out] out Receives the shell; its face indices are borrowed from the B-rep.
+/// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT naming index.
+/// \since 0.2
+/// \ingroup rmf_brep
+#[no_mangle]
+pub unsafe extern "C" fn rmf_brep_shell(
+    brep: *const RmfBrep,
+    index: usize,
+    out: *mut RmfBrepShell,
+) -> RmfStatus {
+    guard("rmf_brep_shell", || {
+        let b = reference(brep, "brep")?;
+        let out = out_ptr(out, "out")?;
+        let shell = item(&b.shells, index, "index", "shells")?;
+        write(
+            out,
+            RmfBrepShell {
+                face_count: shell.len(),
+                faces: shell.as_ptr(),
+            },
+        );
+        Ok(())
+    })
+}
