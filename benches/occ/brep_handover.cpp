@@ -5,8 +5,6 @@
 // beside BRepOffsetAPI_MakePipeShell on the same wire (corrected Frenet, round corners, made
 // solid). Best of 5, milliseconds; every shape checked valid (BRepCheck_Analyzer) once.
 #include <BRepCheck_Analyzer.hxx>
-#include <BRepTools.hxx>
-#include <BRep_Builder.hxx>
 #include <Standard_Version.hxx>
 
 #include <algorithm>
@@ -14,7 +12,6 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -48,14 +45,6 @@ static RmfEdge c_edge(const Edge &e) {
     c.kind = e.kind == Kind::Line ? RMF_EDGE_LINE : RMF_EDGE_ARC;
     for (int i = 0; i < 3; ++i) c.points[i] = RmfVec3{e.p[i].X(), e.p[i].Y(), e.p[i].Z()};
     return c;
-}
-
-static TopoDS_Shape from_text(const std::string &text) {
-    std::istringstream stream(text);
-    TopoDS_Shape shape;
-    BRep_Builder builder;
-    BRepTools::Read(shape, stream, builder);
-    return shape;
 }
 
 static std::string shape_text(const RmfShape *shape) {
@@ -104,7 +93,7 @@ static void sweep_case(const char *name, const std::vector<Edge> &wire, double r
         RmfShape *fresh = nullptr;
         must(rmf_wire_sweep(edges.data(), edges.size(), profile, nullptr, 0, &o, &fresh), "rmf_wire_sweep");
         model = std::min(model, best_ms([&] { by_model = from_model(fresh); }, 1));
-        text = std::min(text, best_ms([&] { by_text = from_text(shape_text(fresh)); }, 1));
+        text = std::min(text, best_ms([&] { by_text = wire_sweep::read_brep_text(shape_text(fresh)); }, 1));
         rmf_shape_free(fresh);
     }
     const wire_sweep::Profile circle{true, radius};
@@ -158,7 +147,7 @@ static void hopper(double tolerance) {
                                                                        t.size(), &length),
                                            "rmf_cone_spline_part_export");
                                       t.resize(length);
-                                      by_text = from_text(t);
+                                      by_text = wire_sweep::read_brep_text(t);
                                   },
                                   1));
         rmf_cone_spline_free(fresh);

@@ -158,7 +158,7 @@ fn face_view(
             x_axis,
         } => (
             RMF_BREP_SURFACE_PLANE,
-            empty_surface(),
+            RmfNurbsSurface::default(),
             [(*origin).into(), (*normal).into(), (*x_axis).into()],
         ),
     };
@@ -179,7 +179,7 @@ fn use_view(
 ) -> RmfBrepUse {
     let zero = RmfVec2 { x: 0.0, y: 0.0 };
     let (pcurve_kind, line_origin, line_direction, pcurve) = match &u.pcurve {
-        None => (RMF_PCURVE_NONE, zero, zero, empty_curve()),
+        None => (RMF_PCURVE_NONE, zero, zero, RmfNurbsCurve::default()),
         Some(PCurve::Line { origin, direction }) => (
             RMF_PCURVE_LINE,
             RmfVec2 {
@@ -190,7 +190,7 @@ fn use_view(
                 x: direction.0,
                 y: direction.1,
             },
-            empty_curve(),
+            RmfNurbsCurve::default(),
         ),
         Some(PCurve::Curve(c)) => (RMF_PCURVE_NURBS, zero, zero, curve_view(c, keep(&c.poles))),
     };
@@ -201,32 +201,6 @@ fn use_view(
         line_origin,
         line_direction,
         pcurve,
-    }
-}
-
-fn empty_curve() -> RmfNurbsCurve {
-    RmfNurbsCurve {
-        degree: 0,
-        pole_count: 0,
-        poles: std::ptr::null(),
-        weights: std::ptr::null(),
-        knot_count: 0,
-        knots: std::ptr::null(),
-    }
-}
-
-fn empty_surface() -> RmfNurbsSurface {
-    RmfNurbsSurface {
-        degree_u: 0,
-        degree_v: 0,
-        pole_count_u: 0,
-        pole_count_v: 0,
-        poles: std::ptr::null(),
-        weights: std::ptr::null(),
-        knot_count_u: 0,
-        knots_u: std::ptr::null(),
-        knot_count_v: 0,
-        knots_v: std::ptr::null(),
     }
 }
 

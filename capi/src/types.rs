@@ -96,6 +96,21 @@ pub struct RmfNurbsCurve {
     pub knots: *const f64,
 }
 
+/// The empty view: no poles, null pointers (a field for a kind of geometry a struct does
+/// not hold).
+impl Default for RmfNurbsCurve {
+    fn default() -> Self {
+        Self {
+            degree: 0,
+            pole_count: 0,
+            poles: std::ptr::null(),
+            weights: std::ptr::null(),
+            knot_count: 0,
+            knots: std::ptr::null(),
+        }
+    }
+}
+
 /// Borrowed view of a NURBS surface. Pole (i, j) is at index `i * pole_count_v + j`, i along
 /// u; the arrays are owned by the surface handle (do not free; valid until it is freed).
 /// \ingroup rmf_surfaces
@@ -122,6 +137,24 @@ pub struct RmfNurbsSurface {
     pub knot_count_v: usize,
     /// knot_count_v clamped knots along v.
     pub knots_v: *const f64,
+}
+
+/// The empty view: no poles, null pointers.
+impl Default for RmfNurbsSurface {
+    fn default() -> Self {
+        Self {
+            degree_u: 0,
+            degree_v: 0,
+            pole_count_u: 0,
+            pole_count_v: 0,
+            poles: std::ptr::null(),
+            weights: std::ptr::null(),
+            knot_count_u: 0,
+            knots_u: std::ptr::null(),
+            knot_count_v: 0,
+            knots_v: std::ptr::null(),
+        }
+    }
 }
 
 /// Borrowed view of one rational Bézier segment of a curve: degree + 1 poles and weights
