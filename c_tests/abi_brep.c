@@ -6,7 +6,8 @@
  * curves that end at their vertices, and every edge's curve on each face — evaluated on
  * the face's surface by the suite's own NURBS evaluator — on the edge's 3-D curve. Shells
  * cover the faces once. On a pipe route with a ring (holes), its open walls (two shells),
- * and the square-to-round hopper (degenerate edges). Bad input names the argument.
+ * the ring round a closed loop (a solid of two shells: the cavity's wall) and the
+ * square-to-round hopper (degenerate edges). Bad input names the argument.
  */
 #include <math.h>
 #include <stdint.h>
@@ -177,6 +178,21 @@ static void test_pipe(void) {
     CHECK_STATUS(rmf_shape_brep(walls, &brep), RMF_OK, "");
     if (brep) check_model(brep, "pipe route with a ring, open walls", 2, 20);
     rmf_brep_free(brep);
+    brep = NULL;
+    {
+        /* Round a closed square loop: a solid with a cavity, two closed shells. */
+        RmfEdge loop[4];
+        RmfShape *hollow = NULL;
+        loop[0] = line(vec3(0, 0, 0), vec3(20, 0, 0));
+        loop[1] = line(vec3(20, 0, 0), vec3(20, 20, 0));
+        loop[2] = line(vec3(20, 20, 0), vec3(0, 20, 0));
+        loop[3] = line(vec3(0, 20, 0), vec3(0, 0, 0));
+        CHECK_STATUS(rmf_wire_sweep(loop, 4, ring, (const RmfCurve *const *)&hole, 1, NULL, &hollow), RMF_OK, "");
+        CHECK_STATUS(rmf_shape_brep(hollow, &brep), RMF_OK, "");
+        if (brep) check_model(brep, "ring round a closed loop, a solid with a cavity", 2, 30);
+        rmf_brep_free(brep);
+        rmf_shape_free(hollow);
+    }
     brep = (RmfBrep *)(uintptr_t)0x5e5e;
     CHECK_STATUS(rmf_shape_brep(NULL, &brep), RMF_ERROR_NULL_POINTER, "shape");
     CHECK(brep == (RmfBrep *)(uintptr_t)0x5e5e, "a failing call writes no out-pointer");

@@ -162,9 +162,9 @@ inline bool natural_bounds(const RmfBrepFace &f, const std::vector<RmfBrepUse> &
 
 } // namespace detail
 
-/// The OpenCascade shape of a B-rep: a TopoDS_Solid for a solid, else its TopoDS_Shell (a
-/// TopoDS_Compound of shells when it has several). Throws Error if the B-rep cannot be
-/// read.
+/// The OpenCascade shape of a B-rep: a TopoDS_Solid for a solid (of all its shells: a
+/// cavity's walls are shells too), else its TopoDS_Shell (a TopoDS_Compound of shells when
+/// it has several). Throws Error if the B-rep cannot be read.
 inline TopoDS_Shape build(const RmfBrep *brep) {
     using detail::check;
     RmfBrepCounts counts;
@@ -250,10 +250,12 @@ inline TopoDS_Shape build(const RmfBrep *brep) {
         for (size_t k = 0; k < shell.face_count; ++k) builder.Add(shells[s], faces[shell.faces[k]]);
         shells[s].Closed(counts.solid != 0);
     }
-    if (counts.solid && counts.shell_count == 1) {
+    if (counts.solid) {
+        // The outer shell and, for a hollow profile swept round a closed wire, the walls of
+        // the cavity: closed shells of one solid, their faces facing out of the material.
         TopoDS_Solid solid;
         builder.MakeSolid(solid);
-        builder.Add(solid, shells[0]);
+        for (const TopoDS_Shell &shell : shells) builder.Add(solid, shell);
         return solid;
     }
     if (counts.shell_count == 1) return shells[0];

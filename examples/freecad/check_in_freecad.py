@@ -450,6 +450,29 @@ def part_g():
     box = Part.makeBox(10, 10, 10, V(-5, -5, -5))
     fused = box.fuse(solid)
     require("sweep: fuses with a box into a valid shape", fused.isValid())
+    walls = rmf.sweep(wire, ring, solid=False)
+    require("sweep, solid=False: the ring's two walls, two valid shells",
+            len(walls.Shells) == 2 and walls.isValid())
+    # Miter corners on a polyline with a square profile: the volume is A·L exactly.
+    poly = Part.makePolygon([V(0, 0, 0), V(6, 0, 0), V(6, 6, 0), V(6, 6, 6)])
+    square = Part.Face(Part.makePolygon([V(0, -0.5, -0.5), V(0, 0.5, -0.5), V(0, 0.5, 0.5),
+                                         V(0, -0.5, 0.5), V(0, -0.5, -0.5)]))
+    mitred = rmf.sweep(poly, square, corner="miter")
+    require("sweep, miter corners: a valid Part.Solid", mitred.ShapeType == "Solid" and mitred.isValid())
+    check("sweep, miter corners: rel. volume error against A L", abs(mitred.Volume - 18) / 18, 1e-9)
+    corner = Part.makeBox(3, 3, 3, V(4.5, -1.5, -1.5))
+    parts = [mitred.common(corner), mitred.cut(corner)]
+    require("sweep, miter corners: a box's common and cut, valid", all(p.isValid() for p in parts))
+    check("sweep, miter corners: the two parts' volumes against the solid's, relative",
+          abs(sum(p.Volume for p in parts) - mitred.Volume) / mitred.Volume, 1e-8)
+    # A closed wire: a square loop with round corners, the ring swept all the way round.
+    loop = Part.makePolygon([V(0, 0, 0), V(20, 0, 0), V(20, 20, 0), V(0, 20, 0), V(0, 0, 0)])
+    closed = rmf.sweep(loop, ring)
+    require("sweep, closed wire: a valid Part.Solid", closed.ShapeType == "Solid" and closed.isValid())
+    r = 1.5 * 2  # the library's corner radius: 1.5 times the profile's
+    length = 80 - 4 * (2 * r - r * 3.141592653589793 / 2)
+    check("sweep, closed wire: rel. volume error against pi (R^2 - r^2) L",
+          abs(closed.Volume - 3.141592653589793 * 3 * length) / (3.141592653589793 * 3 * length), 1e-9)
     try:
         rmf.sweep(ring, ring)
         require("sweep: a Part.Face as the wire is refused", False)
@@ -600,8 +623,15 @@ def part_h():
     square, circle = hopper_curves(document)
     own = rmf.transition(square.Shape, circle.Shape.Edges[0], t, k, tol)
     limit = tol * neutral / volume
+    own_solid = rmf.part_solid(own)
     check("transition of FreeCAD's square and circle: volume against the tool's, relative",
-          abs(rmf.part_solid(own).Volume - solid.Volume) / solid.Volume, limit)
+          abs(own_solid.Volume - solid.Volume) / solid.Volume, limit)
+    # A box over y < -37 (off the symmetry plane, which holds the seam ruling).
+    box = Part.makeBox(400, 400, 400, V(-200, -437, -200))
+    parts = [own_solid.common(box), own_solid.cut(box)]
+    require("transition: a box's common and cut, valid", all(p.isValid() for p in parts))
+    check("transition: the two parts' volumes against the solid's, relative",
+          abs(sum(p.Volume for p in parts) - own_solid.Volume) / own_solid.Volume, 1e-8)
     rmf.transition_selection([Selected(square), Selected(circle, ["Edge1"])], document, t, k, 1e-3)
     made = [document.getObject(n) for n in ("Transition", "FlatPattern", "BendLines")]
     require("transition_selection: made Transition, FlatPattern, BendLines, all valid",

@@ -30,13 +30,16 @@ const TOOLKITS: [&str; 8] = [
     "TKernel",
 ];
 
-/// What the wire example links in addition: STEP, the sweep (TKOffset) and what they use.
-const WIRE_TOOLKITS: [&str; 6] = [
+/// What the wire example links in addition: STEP, the sweep (TKOffset), booleans (TKBO),
+/// boxes (TKPrim) and what they use.
+const WIRE_TOOLKITS: [&str; 8] = [
     "TKSTEP",
     "TKXSBase",
     "TKOffset",
     "TKFillet",
     "TKBool",
+    "TKBO",
+    "TKPrim",
     "TKShHealing",
 ];
 

@@ -85,8 +85,18 @@ pub fn brep_to_occ(brep: &Brep) -> Result<String> {
         in_shell.push((sense, shapes.add(data, "0101000", wires)));
     }
     if brep.closed {
-        let shell = shapes.add("Sh\n".into(), "0101100", in_shell);
-        shapes.add("So\n".into(), "1100000", vec![('+', shell)]);
+        // One closed shell, or the outer shell and the walls of cavities (a hollow profile
+        // swept round a closed wire): each a closed shell of the one solid, its faces facing
+        // out of the material.
+        let shells = brep
+            .shells()
+            .iter()
+            .map(|faces| {
+                let held = faces.iter().map(|&f| in_shell[f]).collect();
+                ('+', shapes.add("Sh\n".into(), "0101100", held))
+            })
+            .collect();
+        shapes.add("So\n".into(), "1100000", shells);
     } else {
         let parts = brep.shells();
         if parts.len() == 1 {

@@ -13,8 +13,9 @@
 //!   `MANIFOLD_SOLID_BREP` of a `CLOSED_SHELL` (`ADVANCED_BREP_SHAPE_REPRESENTATION`), or
 //!   an `OPEN_SHELL` for a sheet. Every edge is written once, as a `SURFACE_CURVE` carrying
 //!   its parameter line on each face that uses it (a `SEAM_CURVE` when one face uses it
-//!   twice); on a plane the parameter curve is the 2-D B-spline in the plane's axes.
-//!   Degenerate edges (a side of a surface collapsed to a point) are left out: STEP loops
+//!   twice); on a plane the parameter curve is the 2-D B-spline in the plane's axes. A solid
+//!   with cavities (a hollow profile swept round a closed wire) is a `BREP_WITH_VOIDS`; an
+//!   open shape that falls apart writes one `OPEN_SHELL` per part. Degenerate edges (a side of a surface collapsed to a point) are left out: STEP loops
 //!   close in space.
 //! * a flat pattern is one `PLANE` face bounded by `LINE` and `CIRCLE` edges.
 //!
@@ -525,11 +526,26 @@ pub fn brep_to_step(brep: &Brep, name: &str) -> Result<String> {
         };
         edges.push(out.add(format!("EDGE_CURVE('',#{start},#{end},#{geometry},.T.)")));
     }
+    // A closed B-rep of several shells is a solid with cavities: the shell reaching
+    // farthest bounds it, the others are voids, written (as OpenCascade writes them) as
+    // closed shells of the faces turned over, each used the other way round
+    // (`ORIENTED_CLOSED_SHELL` .F.): the faces still face out of the material.
+    let shells = brep.shells();
+    let outer = outermost(brep, &shells);
+    let mut turned = vec![false; brep.faces.len()];
+    if brep.closed {
+        for (s, faces) in shells.iter().enumerate() {
+            if s != outer {
+                faces.iter().for_each(|&f| turned[f] = true);
+            }
+        }
+    }
     let faces: Vec<usize> = brep
         .faces
         .iter()
         .zip(&surfaces)
-        .map(|(face, &surface)| {
+        .zip(&turned)
+        .map(|((face, &surface), &turned)| {
             let bounds: Vec<usize> = face
                 .bounds
                 .iter()
@@ -552,26 +568,40 @@ pub fn brep_to_step(brep: &Brep, name: &str) -> Result<String> {
                     } else {
                         "FACE_BOUND"
                     };
-                    out.add(format!("{kind}('',#{edge_loop},.T.)"))
+                    out.add(format!("{kind}('',#{edge_loop},{})", flag(!turned)))
                 })
                 .collect();
             out.add(format!(
                 "ADVANCED_FACE('',{},#{surface},{})",
                 refs(&bounds),
-                flag(face.same_sense)
+                flag(face.same_sense != turned)
             ))
         })
         .collect();
+    let shell_faces = |s: usize| -> Vec<usize> { shells[s].iter().map(|&f| faces[f]).collect() };
     let representation = if brep.closed {
-        let shell = out.add(format!("CLOSED_SHELL('',{})", refs(&faces)));
-        let solid = out.add(format!("MANIFOLD_SOLID_BREP('',#{shell})"));
+        let shell = out.add(format!("CLOSED_SHELL('',{})", refs(&shell_faces(outer))));
+        let voids: Vec<usize> = (0..shells.len())
+            .filter(|&s| s != outer)
+            .map(|s| {
+                let closed = out.add(format!("CLOSED_SHELL('',{})", refs(&shell_faces(s))));
+                out.add(format!("ORIENTED_CLOSED_SHELL('',*,#{closed},.F.)"))
+            })
+            .collect();
+        let solid = if voids.is_empty() {
+            out.add(format!("MANIFOLD_SOLID_BREP('',#{shell})"))
+        } else {
+            out.add(format!("BREP_WITH_VOIDS('',#{shell},{})", refs(&voids)))
+        };
         format!(
             "ADVANCED_BREP_SHAPE_REPRESENTATION('{}',(#{placement},#{solid}),#{context})",
             string(name)
         )
     } else {
-        let shell = out.add(format!("OPEN_SHELL('',{})", refs(&faces)));
-        let model = out.add(format!("SHELL_BASED_SURFACE_MODEL('',(#{shell}))"));
+        let open: Vec<usize> = (0..shells.len())
+            .map(|s| out.add(format!("OPEN_SHELL('',{})", refs(&shell_faces(s)))))
+            .collect();
+        let model = out.add(format!("SHELL_BASED_SURFACE_MODEL('',{})", refs(&open)));
         format!(
             "MANIFOLD_SURFACE_SHAPE_REPRESENTATION('{}',(#{placement},#{model}),#{context})",
             string(name)
@@ -579,6 +609,23 @@ pub fn brep_to_step(brep: &Brep, name: &str) -> Result<String> {
     };
     represent(&mut out, shape, representation);
     Ok(exchange_structure(&out, name))
+}
+
+/// The shell reaching farthest: the largest box about the vertices of its faces' edges (the
+/// outer shell of a solid with cavities).
+fn outermost(brep: &Brep, shells: &[Vec<usize>]) -> usize {
+    let diagonal = |faces: &Vec<usize>| {
+        bounding_diagonal(faces.iter().flat_map(|&f| {
+            brep.faces[f]
+                .bounds
+                .iter()
+                .flat_map(|b| &b.uses)
+                .map(|u| brep.vertices[brep.edges[u.edge].start])
+        }))
+    };
+    (0..shells.len())
+        .max_by(|&a, &b| diagonal(&shells[a]).total_cmp(&diagonal(&shells[b])))
+        .unwrap_or(0)
 }
 
 /// A STEP file holding `curves` in one geometric curve set, the product called `name`.

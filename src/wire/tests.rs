@@ -236,6 +236,35 @@ fn a_rounded_rectangle_closes_without_a_seam() {
     assert!(relative(v, 0.16 * length) < 1e-12);
 }
 
+/// A ring swept round a closed wire bounds a solid with a cavity: the outer wall and the
+/// cavity's wall are two closed shells of one solid, written as such to OpenCascade's text
+/// (one `So` of two `Sh`) and to STEP (`BREP_WITH_VOIDS`).
+#[test]
+fn a_ring_swept_round_a_closed_wire_is_a_solid_with_a_cavity() {
+    let edges = vec![
+        line([0., 0., 0.], [20., 0., 0.]),
+        line([20., 0., 0.], [20., 20., 0.]),
+        line([20., 20., 0.], [0., 20., 0.]),
+        line([0., 20., 0.], [0., 0., 0.]),
+    ];
+    let shape = sweep_wire(&edges, &circle(2.0), &[circle(1.0)], &WireSweep::default()).unwrap();
+    assert!(shape.is_solid());
+    assert_closed_oriented(shape.brep());
+    let shells = shape.brep().shells();
+    assert_eq!(shells.len(), 2);
+    assert_eq!(shells[0].len() + shells[1].len(), shape.faces().len());
+    let r = 3.0; // the corners' radius: 1.5 times the profile's
+    let length = 80.0 - 4.0 * (2.0 * r - r * PI / 2.0);
+    assert!(relative(volume(&shape), 3.0 * PI * length) < 1e-12);
+    let occ = shape.to_occ_brep().unwrap();
+    assert_eq!(occ.matches("\nSh\n").count(), 2);
+    assert_eq!(occ.matches("\nSo\n").count(), 1);
+    let step = shape.to_step("ring").unwrap();
+    assert_eq!(step.matches("BREP_WITH_VOIDS(").count(), 1);
+    assert_eq!(step.matches("ORIENTED_CLOSED_SHELL(").count(), 1);
+    assert_eq!(step.matches("CLOSED_SHELL(").count(), 3);
+}
+
 /// A closed, non-planar NURBS (a periodic cubic through a bent loop, made clamped by knot
 /// insertion at the seam).
 pub(crate) fn closed_nurbs() -> PiecewiseCurve {
