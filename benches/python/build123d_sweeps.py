@@ -1,7 +1,8 @@
 """The whole sweep where a build123d user is: build123d's own `sweep` beside
 `rmfsurf.ocp.sweep` on the same wires and profiles, in the same run (best of 3), with where
 rmfsurf's time goes: reading the user's wire and face (adapter in), the library's sweep, its
-B-rep text, and OpenCascade building the shape from it (`BRepTools.Read_s`).
+B-rep text, and OpenCascade building the shape from it (`BRepTools.Read_s`); then a thread
+cut, the boolean downstream of each program's groove.
 
 Run by scripts/bench in the test venv with this checkout's wheel."""
 
@@ -66,6 +67,48 @@ def main():
         print("%-42s %10.1f %10.1f %6.2fx | %8.1f %8.1f %8.1f %8.1f" % (
             name, theirs * 1e3, ours * 1e3, theirs / ours, *(p * 1e3 for p in parts)))
     print("ratio: build123d's time over rmfsurf's (> 1: rmfsurf is faster)")
+    thread_cut()
+
+
+def poles(shape):
+    """Faces and B-spline poles of a shape (what downstream work handles)."""
+    from OCP.BRep import BRep_Tool
+    from OCP.Geom import Geom_BSplineSurface
+    from OCP.TopAbs import TopAbs_FACE
+    from OCP.TopExp import TopExp_Explorer
+    from OCP.TopoDS import TopoDS
+    faces, count = 0, 0
+    explorer = TopExp_Explorer(shape.wrapped, TopAbs_FACE)
+    while explorer.More():
+        surface = BRep_Tool.Surface_s(TopoDS.Face(explorer.Current()))
+        if isinstance(surface, Geom_BSplineSurface):
+            count += surface.NbUPoles() * surface.NbVPoles()
+        faces += 1
+        explorer.Next()
+    return faces, count
+
+
+def thread_cut():
+    """A rod less a helical groove (a triangle swept along a helix on the rod's surface):
+    the groove by build123d's Frenet sweep and by rmfsurf's RMF sweep, then the same
+    boolean with each."""
+    rod = bd.Cylinder(10, 50, align=(bd.Align.CENTER, bd.Align.CENTER, bd.Align.MIN))
+    helix = bd.Wire([bd.Helix(pitch=5, height=40, radius=10, center=(0, 0, 5))])
+    triangle = placed(helix, bd.RegularPolygon(1.5, 3).faces()[0])
+    theirs_groove_time, theirs = best(lambda: bd.sweep(triangle, helix, is_frenet=True))
+    ours_groove_time, ours = best(lambda: rocp.sweep(helix, triangle, tolerance=1e-5))
+    theirs_cut_time, theirs_cut = best(lambda: rod - theirs)
+    ours_cut_time, ours_cut = best(lambda: rod - ours)
+    assert rocp.is_valid(ours_cut) and rocp.is_valid(theirs_cut)
+    print("thread cut (rod - 8-turn helical triangle groove), tolerance 1e-5: milliseconds")
+    print("%-24s %10s %10s %12s %14s" % ("groove by", "groove", "boolean", "groove faces", "B-spline poles"))
+    for name, groove_time, cut_time, groove in [
+            ("build123d sweep (Frenet)", theirs_groove_time, theirs_cut_time, theirs),
+            ("rmfsurf.ocp.sweep (RMF)", ours_groove_time, ours_cut_time, ours)]:
+        faces, count = poles(groove)
+        print("%-24s %10.1f %10.1f %12d %14d" % (name, groove_time * 1e3, cut_time * 1e3, faces, count))
+    print("boolean with rmfsurf's groove over the boolean with build123d's: %.2fx"
+          % (ours_cut_time / theirs_cut_time))
 
 
 if __name__ == "__main__":
