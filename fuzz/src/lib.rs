@@ -13,6 +13,7 @@
 //! toolchain without instrumentation, over the committed corpus in the test command
 //! (`tests/fuzz_corpus.rs` of the main crate).
 
+pub mod brep;
 pub mod callback;
 pub mod cone_spline;
 pub mod core;

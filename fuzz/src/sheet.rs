@@ -29,6 +29,7 @@ pub const OPS: &[fn(&mut Session)] = &[
     flat_pattern,
     marks,
     export,
+    part_brep,
 ];
 
 fn add(a: RmfVec3, b: RmfVec3, s: f64) -> RmfVec3 {
@@ -360,5 +361,16 @@ fn export(s: &mut Session) {
     {
         assert_eq!(written, length);
         assert_eq!(text[length], 0, "NUL-terminated");
+    }
+}
+
+/// The B-rep model of the part's solid (rmf_cone_spline_part_brep), walked and freed
+/// (`brep::walk`); a cone spline that is not a part is refused unwritten.
+fn part_brep(s: &mut Session) {
+    let part = s.spline();
+    let mut brep = poisoned::<*mut rmfsurf_capi::RmfBrep>();
+    let status = unsafe { rmfsurf_capi::sheet::rmf_cone_spline_part_brep(part, &mut brep) };
+    if checked("rmf_cone_spline_part_brep", status, &[is_poisoned(&brep)]) {
+        super::brep::walk(brep);
     }
 }

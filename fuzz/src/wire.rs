@@ -4,7 +4,6 @@
 //! file, texts (STEP, OpenCascade's B-rep) and B-rep model, each checked against the contract (a solid's figures finite and in range, caps with
 //! unit normals, borrowed surfaces that evaluate).
 
-use rmfsurf_capi::brep::*;
 use rmfsurf_capi::curve::rmf_nurbs_curve_create;
 use rmfsurf_capi::shape::*;
 use rmfsurf_capi::surface::{rmf_surface_domain, rmf_surface_eval};
@@ -355,85 +354,12 @@ fn shape_texts(s: &mut Session) {
     }
 }
 
-/// The B-rep model of a shape (rmf_shape_brep): every accessor answers within the counts,
-/// with indices in range, finite numbers, loops that run on from vertex to vertex and
-/// shells holding the faces; one past the end is refused without a write; then freed.
+/// The B-rep model of a shape (rmf_shape_brep), walked and freed (`brep::walk`).
 fn shape_brep(s: &mut Session) {
     let shape = s.shape();
     let mut brep = poisoned::<*mut RmfBrep>();
     let status = unsafe { rmf_shape_brep(shape, &mut brep) };
-    if !checked("rmf_shape_brep", status, &[is_poisoned(&brep)]) {
-        return;
+    if checked("rmf_shape_brep", status, &[is_poisoned(&brep)]) {
+        super::brep::walk(brep);
     }
-    let ok = |name: &str, status| assert!(status_ok(name, status), "{name} refused in range");
-    let mut counts = poisoned::<RmfBrepCounts>();
-    ok("rmf_brep_counts", unsafe {
-        rmf_brep_counts(brep, &mut counts)
-    });
-    assert!(counts.tolerance.is_finite() && counts.tolerance > 0.0);
-    assert!(counts.face_count > 0 && counts.shell_count > 0);
-    for i in 0..counts.vertex_count {
-        let mut p = poisoned::<RmfVec3>();
-        ok("rmf_brep_vertex", unsafe {
-            rmf_brep_vertex(brep, i, &mut p)
-        });
-        assert!(p.x.is_finite() && p.y.is_finite() && p.z.is_finite());
-    }
-    let mut ends = Vec::with_capacity(counts.edge_count);
-    for e in 0..counts.edge_count {
-        let mut edge = poisoned::<RmfBrepEdge>();
-        ok("rmf_brep_edge", unsafe {
-            rmf_brep_edge(brep, e, &mut edge)
-        });
-        assert!(edge.start < counts.vertex_count && edge.end < counts.vertex_count);
-        let c = edge.curve;
-        assert!(
-            c.pole_count > c.degree as usize
-                && c.knot_count == c.pole_count + c.degree as usize + 1
-        );
-        // SAFETY: the view's arrays hold the counts it gives while the B-rep lives.
-        let weights = unsafe { std::slice::from_raw_parts(c.weights, c.pole_count) };
-        assert!(weights.iter().all(|w| w.is_finite() && *w > 0.0));
-        ends.push((edge.start, edge.end));
-    }
-    let mut in_shell = vec![0usize; counts.face_count];
-    for shell in 0..counts.shell_count {
-        let mut view = poisoned::<RmfBrepShell>();
-        ok("rmf_brep_shell", unsafe {
-            rmf_brep_shell(brep, shell, &mut view)
-        });
-        // SAFETY: as above.
-        let faces = unsafe { std::slice::from_raw_parts(view.faces, view.face_count) };
-        faces.iter().for_each(|&f| in_shell[f] += 1);
-    }
-    assert!(in_shell.iter().all(|&n| n == 1), "every face in one shell");
-    for f in 0..counts.face_count {
-        let mut face = poisoned::<RmfBrepFace>();
-        ok("rmf_brep_face", unsafe {
-            rmf_brep_face(brep, f, &mut face)
-        });
-        for l in 0..face.loop_count {
-            let mut bound = poisoned::<RmfBrepLoop>();
-            ok("rmf_brep_loop", unsafe {
-                rmf_brep_loop(brep, f, l, &mut bound)
-            });
-            let mut path = Vec::with_capacity(bound.use_count);
-            for k in 0..bound.use_count {
-                let mut u = poisoned::<RmfBrepUse>();
-                ok("rmf_brep_use", unsafe {
-                    rmf_brep_use(brep, f, l, k, &mut u)
-                });
-                assert!(u.edge < counts.edge_count);
-                let (a, b) = ends[u.edge];
-                path.push(if u.forward != 0 { (a, b) } else { (b, a) });
-            }
-            for k in 0..path.len() {
-                assert_eq!(path[k].1, path[(k + 1) % path.len()].0, "a loop runs on");
-            }
-        }
-    }
-    let mut edge = poisoned::<RmfBrepEdge>();
-    let status = unsafe { rmf_brep_edge(brep, counts.edge_count, &mut edge) };
-    assert!(!checked("rmf_brep_edge", status, &[is_poisoned(&edge)]));
-    unsafe { rmf_brep_free(brep) };
 }
