@@ -8,7 +8,7 @@
 use super::boundary::{free_handle, guard, invalid_arg, out_ptr, reference, write, FfiResult};
 use super::status::RmfStatus;
 use super::types::{RmfNurbsCurve, RmfNurbsSurface, RmfVec2, RmfVec3};
-use rmfsurf::{Brep, BrepFace, BrepSurface, BrepUse, NurbsCurve, PCurve};
+use rmfsurf::{Brep, BrepFace, BrepSurface, BrepUse, PCurve};
 
 /// RmfBrepFace.kind: a rational B-spline surface (RmfBrepFace.nurbs).
 /// \ingroup rmf_brep
@@ -65,7 +65,7 @@ impl RmfBrep {
                 start: e.start,
                 end: e.end,
                 degenerate: u32::from(e.degenerate),
-                curve: curve_view(&e.curve, keep(&e.curve.poles)),
+                curve: RmfNurbsCurve::of(&e.curve, keep(&e.curve.poles)),
             })
             .collect();
         let faces = brep.faces.iter().map(|f| face_view(f, &mut keep)).collect();
@@ -118,18 +118,6 @@ impl RmfBrep {
     }
 }
 
-/// The view of a curve whose poles, in the C layout, are at `poles`.
-fn curve_view(curve: &NurbsCurve, poles: *const RmfVec3) -> RmfNurbsCurve {
-    RmfNurbsCurve {
-        degree: curve.degree as u32,
-        pole_count: curve.poles.len(),
-        poles,
-        weights: curve.weights.as_ptr(),
-        knot_count: curve.knots.len(),
-        knots: curve.knots.as_ptr(),
-    }
-}
-
 fn face_view(
     face: &BrepFace,
     keep: &mut impl FnMut(&[rmfsurf::glam::DVec3]) -> *const RmfVec3,
@@ -138,18 +126,7 @@ fn face_view(
     let (kind, nurbs, [plane_origin, plane_normal, plane_x_axis]) = match &face.surface {
         BrepSurface::Nurbs(s) => (
             RMF_BREP_SURFACE_NURBS,
-            RmfNurbsSurface {
-                degree_u: s.degree_u as u32,
-                degree_v: s.degree_v as u32,
-                pole_count_u: s.pole_count_u,
-                pole_count_v: s.pole_count_v,
-                poles: keep(&s.poles),
-                weights: s.weights.as_ptr(),
-                knot_count_u: s.knots_u.len(),
-                knots_u: s.knots_u.as_ptr(),
-                knot_count_v: s.knots_v.len(),
-                knots_v: s.knots_v.as_ptr(),
-            },
+            RmfNurbsSurface::of(s, keep(&s.poles)),
             [zero; 3],
         ),
         BrepSurface::Plane {
@@ -192,7 +169,12 @@ fn use_view(
             },
             RmfNurbsCurve::default(),
         ),
-        Some(PCurve::Curve(c)) => (RMF_PCURVE_NURBS, zero, zero, curve_view(c, keep(&c.poles))),
+        Some(PCurve::Curve(c)) => (
+            RMF_PCURVE_NURBS,
+            zero,
+            zero,
+            RmfNurbsCurve::of(c, keep(&c.poles)),
+        ),
     };
     RmfBrepUse {
         edge: u.edge,

@@ -315,17 +315,7 @@ pub unsafe extern "C" fn rmf_curve_nurbs(
         let curve = reference(curve, "curve")?;
         let view = out_ptr(view, "view")?;
         let v = curve.nurbs_view()?;
-        write(
-            view,
-            RmfNurbsCurve {
-                degree: v.nurbs.degree as u32,
-                pole_count: v.poles.len(),
-                poles: v.poles.as_ptr(),
-                weights: v.nurbs.weights.as_ptr(),
-                knot_count: v.nurbs.knots.len(),
-                knots: v.nurbs.knots.as_ptr(),
-            },
-        );
+        write(view, RmfNurbsCurve::of(&v.nurbs, v.poles.as_ptr()));
         Ok(())
     })
 }

@@ -376,22 +376,7 @@ pub unsafe extern "C" fn rmf_surface_nurbs(
         let surface = reference(surface, "surface")?;
         let view = out_ptr(view, "view")?;
         let v = surface.nurbs_view()?;
-        let n = &v.nurbs;
-        write(
-            view,
-            RmfNurbsSurface {
-                degree_u: n.degree_u as u32,
-                degree_v: n.degree_v as u32,
-                pole_count_u: n.pole_count_u,
-                pole_count_v: n.pole_count_v,
-                poles: v.poles.as_ptr(),
-                weights: n.weights.as_ptr(),
-                knot_count_u: n.knots_u.len(),
-                knots_u: n.knots_u.as_ptr(),
-                knot_count_v: n.knots_v.len(),
-                knots_v: n.knots_v.as_ptr(),
-            },
-        );
+        write(view, RmfNurbsSurface::of(&v.nurbs, v.poles.as_ptr()));
         Ok(())
     })
 }

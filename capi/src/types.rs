@@ -96,6 +96,20 @@ pub struct RmfNurbsCurve {
     pub knots: *const f64,
 }
 
+impl RmfNurbsCurve {
+    /// The view of `curve` whose poles, in the C layout, are at `poles` (owned beside it).
+    pub(crate) fn of(curve: &rmfsurf::NurbsCurve, poles: *const RmfVec3) -> Self {
+        Self {
+            degree: curve.degree as u32,
+            pole_count: curve.poles.len(),
+            poles,
+            weights: curve.weights.as_ptr(),
+            knot_count: curve.knots.len(),
+            knots: curve.knots.as_ptr(),
+        }
+    }
+}
+
 /// The empty view: no poles, null pointers (a field for a kind of geometry a struct does
 /// not hold).
 impl Default for RmfNurbsCurve {
@@ -137,6 +151,24 @@ pub struct RmfNurbsSurface {
     pub knot_count_v: usize,
     /// knot_count_v clamped knots along v.
     pub knots_v: *const f64,
+}
+
+impl RmfNurbsSurface {
+    /// The view of `surface` whose poles, in the C layout, are at `poles` (owned beside it).
+    pub(crate) fn of(surface: &rmfsurf::NurbsSurface, poles: *const RmfVec3) -> Self {
+        Self {
+            degree_u: surface.degree_u as u32,
+            degree_v: surface.degree_v as u32,
+            pole_count_u: surface.pole_count_u,
+            pole_count_v: surface.pole_count_v,
+            poles,
+            weights: surface.weights.as_ptr(),
+            knot_count_u: surface.knots_u.len(),
+            knots_u: surface.knots_u.as_ptr(),
+            knot_count_v: surface.knots_v.len(),
+            knots_v: surface.knots_v.as_ptr(),
+        }
+    }
 }
 
 /// The empty view: no poles, null pointers.

@@ -159,6 +159,25 @@ static double c_face_cosine(const RmfShape *shape, const std::vector<size_t> &ed
     return worst;
 }
 
+/// The shape's OpenCascade B-rep text (rmf_shape_occ_brep: the size, then the text).
+static std::string occ_text(const RmfShape *shape) {
+    size_t length = 0;
+    require(rmf_shape_occ_brep(shape, nullptr, 0, &length) == RMF_OK, "rmf_shape_occ_brep (size)");
+    std::string text(length + 1, '\0');
+    require(rmf_shape_occ_brep(shape, text.data(), text.size(), &length) == RMF_OK, "rmf_shape_occ_brep");
+    text.resize(length);
+    return text;
+}
+
+/// The shape built by BRep_Builder from the library's B-rep model (rmfsurf_occ.hpp).
+static TopoDS_Shape from_model(const RmfShape *shape) {
+    RmfBrep *brep = nullptr;
+    require(rmf_shape_brep(shape, &brep) == RMF_OK, "rmf_shape_brep");
+    const TopoDS_Shape built = rmfsurf::occ::build(brep);
+    rmf_brep_free(brep);
+    return built;
+}
+
 /// OpenCascade's booleans on a solid: the part of it inside a box holding the lower 37 % of
 /// its bounding box in y and the rest, both valid, together its volume to 1e-8 relative
 /// (OpenCascade integrates the parts' trimmed faces to about 1e-9; a wrong boolean is off by
@@ -225,21 +244,13 @@ static void run(const Case &c) {
     std::remove(path.c_str());
     const Measure ours = wire_sweep::measure(read);
     // The same solid handed over in OpenCascade's own B-rep text: built as it is, no file.
-    size_t length = 0;
-    require(rmf_shape_occ_brep(shape, nullptr, 0, &length) == RMF_OK, "rmf_shape_occ_brep (size)");
-    std::string text(length + 1, '\0');
-    require(rmf_shape_occ_brep(shape, text.data(), text.size(), &length) == RMF_OK, "rmf_shape_occ_brep");
-    text.resize(length);
-    const Measure handed = wire_sweep::measure(wire_sweep::read_brep_text(text));
+    const Measure handed = wire_sweep::measure(wire_sweep::read_brep_text(occ_text(shape)));
     require(handed.valid && handed.solids == 1, "OpenCascade builds one valid Solid from the B-rep text");
     check(std::fabs(handed.volume - ours.volume) <= 1e-9 * ours.volume,
           "volume from the B-rep text against the STEP solid's, relative",
           std::fabs(handed.volume - ours.volume) / ours.volume, 1e-9);
     // And built from the library's B-rep model: the same solid, no text.
-    RmfBrep *brep = nullptr;
-    require(rmf_shape_brep(shape, &brep) == RMF_OK, "rmf_shape_brep");
-    const TopoDS_Shape solid = rmfsurf::occ::build(brep);
-    rmf_brep_free(brep);
+    const TopoDS_Shape solid = from_model(shape);
     const Measure built = wire_sweep::measure(solid);
     require(built.valid && built.solids == 1, "BRep_Builder builds one valid Solid from the B-rep model");
     check(std::fabs(built.volume - handed.volume) <= 1e-12 * handed.volume,
@@ -315,18 +326,11 @@ static void cavity() {
     require(rmf_wire_sweep(wire.edges.data(), wire.edges.size(), outer, holes, 1, &o, &shape) == RMF_OK,
             "rmf_wire_sweep");
     if (shape) {
-        size_t length = 0;
-        rmf_shape_occ_brep(shape, nullptr, 0, &length);
-        std::string text(length + 1, '\0');
-        rmf_shape_occ_brep(shape, text.data(), text.size(), &length);
-        text.resize(length);
-        RmfBrep *brep = nullptr;
-        require(rmf_shape_brep(shape, &brep) == RMF_OK, "rmf_shape_brep");
-        const TopoDS_Shape solid = rmfsurf::occ::build(brep);
-        rmf_brep_free(brep);
+        const TopoDS_Shape solid = from_model(shape);
         int shells = 0;
         for (TopExp_Explorer e(solid, TopAbs_SHELL); e.More(); e.Next()) ++shells;
-        const Measure built = wire_sweep::measure(solid), handed = wire_sweep::measure(wire_sweep::read_brep_text(text));
+        const Measure built = wire_sweep::measure(solid);
+        const Measure handed = wire_sweep::measure(wire_sweep::read_brep_text(occ_text(shape)));
         require(built.valid && built.solids == 1 && shells == 2, "from the model: one valid Solid of two shells");
         require(handed.valid && handed.solids == 1, "from the text: one valid Solid");
         const double r = 3, exact = PI * 3 * (80 - 4 * (2 * r - r * PI / 2));
