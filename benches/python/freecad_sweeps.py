@@ -74,7 +74,7 @@ def transition():
                                                  "text", "kernel", "faces"))
     for tolerance in (1e-3, 1e-4):
         loft, _ = best(lambda: Part.makeLoft([square, circle], False, True))
-        library, part = best(lambda: rfc.transition(square, circle, 2.0, 0.5, tolerance))
+        library, _ = best(lambda: rfc.transition(square, circle, 2.0, 0.5, tolerance))
         text_time, text = first_export(lambda: rfc.transition(square, circle, 2.0, 0.5, tolerance))
 
         def build():

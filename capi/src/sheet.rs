@@ -254,7 +254,6 @@ unsafe fn options_from(options: *const RmfSheetOptions) -> FfiResult<SheetOption
     })
 }
 
-/// The part of a handle, or an error naming it.
 /// A sheet-metal part behind its handle, with the texts of its files as made (a caller asks
 /// twice: the size, then the text).
 pub(crate) struct PartHandle {
@@ -271,10 +270,12 @@ impl PartHandle {
     }
 }
 
+/// The part of a handle, or an error naming it.
 fn part_of<'a>(spline: &'a RmfConeSpline, name: &str) -> FfiResult<&'a SheetPart> {
     handle_of(spline, name).map(|h| &h.part)
 }
 
+/// The part's handle (with its texts), or an error naming it.
 fn handle_of<'a>(spline: &'a RmfConeSpline, name: &str) -> FfiResult<&'a PartHandle> {
     spline.part.as_deref().ok_or_else(|| {
         FfiError::Core(rmfsurf::Error::invalid_input(format!(

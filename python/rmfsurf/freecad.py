@@ -342,6 +342,13 @@ def profile_curves(profile: Any, origin: ArrayLike, tangent: ArrayLike, toleranc
     return outer, holes, f2
 
 
+def _from_brep(text: str) -> Any:
+    """The Part.Shape FreeCAD builds from an OpenCascade B-rep text, as it is."""
+    built = Part.Shape()
+    built.importBrepFromString(text)
+    return built
+
+
 def part_shape(value: Shape, tolerance: float = 1e-6) -> Any:
     """An :class:`rmfsurf.Shape` as a Part.Shape, built by OpenCascade from the library's
     B-rep (:meth:`rmfsurf.Shape.occ_brep`, ``importBrepFromString``): a Part.Solid when
@@ -350,9 +357,7 @@ def part_shape(value: Shape, tolerance: float = 1e-6) -> Any:
     them: nothing is sewn or healed. `tolerance` (finite, > 0) is checked and otherwise
     unused."""
     _core.finite(tolerance, "tolerance", positive=True)
-    text = _core.instance(value, "shape", Shape, "an rmfsurf.Shape").occ_brep()
-    built = Part.Shape()
-    built.importBrepFromString(text)
+    built = _from_brep(_core.instance(value, "shape", Shape, "an rmfsurf.Shape").occ_brep())
     if value.is_solid:
         return built.Solids[0]
     shells = built.Shells
@@ -489,9 +494,7 @@ def part_solid(part: SheetPart) -> Any:
     (``part.export("brep")``, ``importBrepFromString``): its faces share their edges as the
     library made them; nothing is sewn or healed."""
     text = _core.instance(part, "part", SheetPart, "an rmfsurf.SheetPart").export("brep")
-    built = Part.Shape()
-    built.importBrepFromString(text)
-    return built.Solids[0]
+    return _from_brep(text).Solids[0]
 
 
 def flat_pattern(part: SheetPart) -> Tuple[Any, Any]:

@@ -84,33 +84,23 @@ pub fn brep_to_occ(brep: &Brep) -> Result<String> {
         let sense = if face.same_sense { '+' } else { '-' };
         in_shell.push((sense, shapes.add(data, "0101000", wires)));
     }
-    if brep.closed {
-        // One closed shell, or the outer shell and the walls of cavities (a hollow profile
-        // swept round a closed wire): each a closed shell of the one solid, its faces facing
-        // out of the material.
-        let shells = brep
-            .shells()
+    // A solid holds its closed shells: one, or the outer shell and the walls of cavities (a
+    // hollow profile swept round a closed wire), each with its faces facing out of the
+    // material. An open shape is its shell, or a compound of the shells it falls apart into.
+    let parts = brep.shells();
+    if !brep.closed && parts.len() == 1 {
+        shapes.add("Sh\n".into(), "1101000", in_shell);
+    } else {
+        let flags = if brep.closed { "0101100" } else { "0101000" };
+        let shells = parts
             .iter()
             .map(|faces| {
                 let held = faces.iter().map(|&f| in_shell[f]).collect();
-                ('+', shapes.add("Sh\n".into(), "0101100", held))
+                ('+', shapes.add("Sh\n".into(), flags, held))
             })
             .collect();
-        shapes.add("So\n".into(), "1100000", shells);
-    } else {
-        let parts = brep.shells();
-        if parts.len() == 1 {
-            shapes.add("Sh\n".into(), "1101000", in_shell);
-        } else {
-            let shells = parts
-                .iter()
-                .map(|faces| {
-                    let held = faces.iter().map(|&f| in_shell[f]).collect();
-                    ('+', shapes.add("Sh\n".into(), "0101000", held))
-                })
-                .collect();
-            shapes.add("Co\n".into(), "1100000", shells);
-        }
+        let holder = if brep.closed { "So\n" } else { "Co\n" };
+        shapes.add(holder.into(), "1100000", shells);
     }
     shapes.write(&mut text);
     Ok(text)

@@ -15,8 +15,8 @@
 //!   its parameter line on each face that uses it (a `SEAM_CURVE` when one face uses it
 //!   twice); on a plane the parameter curve is the 2-D B-spline in the plane's axes. A solid
 //!   with cavities (a hollow profile swept round a closed wire) is a `BREP_WITH_VOIDS`; an
-//!   open shape that falls apart writes one `OPEN_SHELL` per part. Degenerate edges (a side of a surface collapsed to a point) are left out: STEP loops
-//!   close in space.
+//!   open shape that falls apart writes one `OPEN_SHELL` per part. Degenerate edges (a side
+//!   of a surface collapsed to a point) are left out: STEP loops close in space.
 //! * a flat pattern is one `PLANE` face bounded by `LINE` and `CIRCLE` edges.
 //!
 //! The boundary curves are exact: a clamped NURBS surface's boundary is the NURBS curve of
@@ -506,6 +506,7 @@ pub fn brep_to_step(brep: &Brep, name: &str) -> Result<String> {
             return invalid!("edge {e} joins vertices that do not exist");
         };
         if edge.degenerate {
+            // No entity: its uses are left out of the loops below.
             edges.push(0);
             continue;
         }

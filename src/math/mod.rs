@@ -1,10 +1,12 @@
 //! Shared numerical building blocks: binomial coefficients, complex numbers, validated vectors,
+//! classes of joined items (union–find),
 //! robust polynomial root finding, secant polishing of roots, Gauss–Legendre quadrature and
 //! 1-D minimization.
 //!
 //! Every geometric module takes these from here rather than writing its own.
 
 mod binomial;
+mod classes;
 mod complex;
 mod double_double;
 mod interval;
@@ -17,6 +19,7 @@ mod units;
 mod vector;
 
 pub use binomial::{binomial, binomial_row, reciprocal_binomial_row};
+pub(crate) use classes::Classes;
 pub use complex::Complex;
 pub use double_double::{DoubleDouble, DoubleDoubleVec3};
 pub use interval::{fraction, lerp, reciprocal_length};

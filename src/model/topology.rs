@@ -6,6 +6,7 @@
 //! afterwards.
 
 use crate::bezier::{NurbsCurve, NurbsSurface};
+use crate::math::Classes;
 use glam::DVec3;
 
 /// A boundary representation: faces on surfaces, bounded by loops of shared edges
@@ -126,38 +127,25 @@ impl Brep {
     /// order of the faces: one shell for a solid; an open shape may fall apart into several
     /// (the outer and the inner walls of a hollow profile).
     pub fn shells(&self) -> Vec<Vec<usize>> {
-        let mut part: Vec<usize> = (0..self.faces.len()).collect();
-        fn root(part: &mut [usize], mut f: usize) -> usize {
-            while part[f] != f {
-                part[f] = part[part[f]];
-                f = part[f];
-            }
-            f
-        }
+        let mut classes = Classes::new(self.faces.len());
         let mut first_face: Vec<Option<usize>> = vec![None; self.edges.len()];
         for (f, face) in self.faces.iter().enumerate() {
             for u in face.bounds.iter().flat_map(|b| &b.uses) {
-                match first_face.get(u.edge).copied().flatten() {
-                    Some(g) => {
-                        let (a, b) = (root(&mut part, f), root(&mut part, g));
-                        part[a.max(b)] = a.min(b);
-                    }
-                    None => {
-                        if let Some(slot) = first_face.get_mut(u.edge) {
-                            *slot = Some(f);
-                        }
-                    }
+                match first_face.get_mut(u.edge) {
+                    Some(Some(g)) => classes.join(*g, f, false),
+                    Some(slot) => *slot = Some(f),
+                    None => {}
                 }
             }
         }
         let mut shell_of_root: Vec<Option<usize>> = vec![None; self.faces.len()];
         let mut shells: Vec<Vec<usize>> = Vec::new();
         for f in 0..self.faces.len() {
-            let r = root(&mut part, f);
-            match shell_of_root[r] {
+            let (root, _) = classes.find(f);
+            match shell_of_root[root] {
                 Some(s) => shells[s].push(f),
                 None => {
-                    shell_of_root[r] = Some(shells.len());
+                    shell_of_root[root] = Some(shells.len());
                     shells.push(vec![f]);
                 }
             }

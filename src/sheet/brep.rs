@@ -9,6 +9,7 @@
 //! left out, its other two sides — then one segment — joined into one edge.
 
 use crate::bezier::{NurbsCurve, NurbsSurface};
+use crate::math::Classes;
 use crate::model::{Brep, BrepBound, BrepEdge, BrepFace, BrepSurface, BrepUse, PCurve};
 use glam::DVec3;
 use std::collections::HashMap;
@@ -65,38 +66,6 @@ pub(super) struct PartFace {
     pub collapsed: [bool; 4],
 }
 
-/// Union–find over sides with the relative direction of each to its class's root.
-#[derive(Default)]
-struct Classes {
-    parent: Vec<(usize, bool)>,
-}
-
-impl Classes {
-    fn add(&mut self) -> usize {
-        self.parent.push((self.parent.len(), false));
-        self.parent.len() - 1
-    }
-
-    /// The root of `x`'s class and whether `x` runs against it.
-    fn find(&mut self, x: usize) -> (usize, bool) {
-        let (p, flip) = self.parent[x];
-        if p == x {
-            return (x, false);
-        }
-        let (root, up) = self.find(p);
-        self.parent[x] = (root, flip != up);
-        (root, flip != up)
-    }
-
-    /// Joins the classes of `a` and `b`, `b` running against `a` when `reversed`.
-    fn join(&mut self, a: usize, b: usize, reversed: bool) {
-        let ((ra, fa), (rb, fb)) = (self.find(a), self.find(b));
-        if ra != rb {
-            self.parent[rb] = (ra, (fa != fb) != reversed);
-        }
-    }
-}
-
 /// The side `s` of a face's surface, run the side's way (`along`: the surface's way).
 fn side_curve(face: &PartFace, s: usize) -> NurbsCurve {
     let curve = face.surface.boundary_curve(s);
@@ -122,11 +91,10 @@ pub(super) fn solid(faces: &[PartFace], next: impl Fn(usize) -> usize) -> Brep {
             })
         }));
     }
-    let is_point: Vec<[bool; 4]> = faces.iter().map(|f| f.collapsed).collect();
     // Faces without area: their two other sides are one segment, run the same way.
     let mut kept = vec![true; faces.len()];
     for (f, face) in faces.iter().enumerate() {
-        let points = is_point[f];
+        let points = face.collapsed;
         for (a, b) in [(0, 2), (1, 3)] {
             let (c, d) = ((a + 1) % 4, (b + 1) % 4);
             if points[c] && points[d] {
@@ -152,8 +120,8 @@ pub(super) fn solid(faces: &[PartFace], next: impl Fn(usize) -> usize) -> Brep {
         points.join(a, ra, false);
         points.join(b, rb, false);
     }
-    for (f, face) in faces.iter().enumerate() {
-        for s in (0..4).filter(|&s| is_point[f][s]) {
+    for face in faces {
+        for s in (0..4).filter(|&s| face.collapsed[s]) {
             let [a, b] = face.sides[s].0.ends(&next).map(|v| vertex(v, &mut points));
             points.join(a, b, false);
         }
@@ -176,7 +144,7 @@ pub(super) fn solid(faces: &[PartFace], next: impl Fn(usize) -> usize) -> Brep {
     let mut edge_of: HashMap<usize, (usize, bool)> = HashMap::new();
     for (f, face) in faces.iter().enumerate().filter(|&(f, _)| kept[f]) {
         let mut uses = Vec::with_capacity(4);
-        for s in 0..4 {
+        for (s, &side) in side_ids[f].iter().enumerate() {
             let (key, along) = face.sides[s];
             let curve = side_curve(face, s);
             let [start, end] = key.ends(&next);
@@ -184,26 +152,30 @@ pub(super) fn solid(faces: &[PartFace], next: impl Fn(usize) -> usize) -> Brep {
                 place(start, curve.poles[0], &mut brep),
                 place(end, curve.poles[curve.poles.len() - 1], &mut brep),
             );
-            let (root, against_root) = classes.find(side_ids[f][s]);
-            let (edge, against) = if is_point[f][s] {
-                brep.edges.push(BrepEdge {
-                    curve,
-                    start,
-                    end,
-                    degenerate: true,
-                });
-                (brep.edges.len() - 1, false)
+            // A collapsed side is its face's own degenerate edge; the others share their
+            // class's edge, made by the first face to come to it, running its way.
+            let (root, against_root) = classes.find(side);
+            let degenerate = face.collapsed[s];
+            let shared = if degenerate {
+                None
             } else {
-                let (edge, edge_against_root) = *edge_of.entry(root).or_insert_with(|| {
+                edge_of.get(&root).copied()
+            };
+            let (edge, against) = match shared {
+                Some((edge, edge_against_root)) => (edge, edge_against_root != against_root),
+                None => {
                     brep.edges.push(BrepEdge {
                         curve,
                         start,
                         end,
-                        degenerate: false,
+                        degenerate,
                     });
-                    (brep.edges.len() - 1, against_root)
-                });
-                (edge, edge_against_root != against_root)
+                    let edge = brep.edges.len() - 1;
+                    if !degenerate {
+                        edge_of.insert(root, (edge, against_root));
+                    }
+                    (edge, false)
+                }
             };
             // The loop runs counter-clockwise: sides 0 and 1 along the surface's parameter.
             let with_parameter = along != against;

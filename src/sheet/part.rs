@@ -9,7 +9,7 @@ use super::marks::{flat_to_part, part_to_flat, part_to_surface, surface_to_part}
 use super::rails::between_rails;
 use super::thickness::{layers, Layer, Layers, Sheet};
 use super::transition::{transition, TransitionFit};
-use super::trim::{patch_nurbs, Face, Similarity, TrimmedSpline, COLLAPSED};
+use super::trim::{collapsed_sides, patch_nurbs, Face, Similarity, TrimmedSpline};
 use crate::bezier::{PiecewiseCurve, PiecewiseSurface, RationalBezierCurve, RationalBezierPatch};
 use crate::cone_spline::developable::{RuledSurface, TangentSurface};
 use crate::cone_spline::{ConePiece, ConeSpline};
@@ -404,12 +404,8 @@ impl SheetPart {
         }
         if !self.part.closed {
             // ∂u × ∂v = −(to − from)·p: outward −p at the first ruling, +p at the last.
-            for (ruling, last) in [(0, false), (n, true)] {
-                let patch = if last {
-                    self.part.end_patch(true, hi, lo)
-                } else {
-                    self.part.end_patch(false, lo, hi)
-                };
+            for (ruling, last, from, to) in [(0, false, lo, hi), (n, true, hi, lo)] {
+                let patch = self.part.end_patch(last, from, to);
                 faces.push(self.part_face(&patch, end_sides(ruling, last))?);
             }
         }
@@ -434,15 +430,10 @@ impl SheetPart {
         patch: &RationalBezierPatch,
         sides: [(EdgeKey, bool); 4],
     ) -> Result<PartFace> {
-        let internal = patch_nurbs(patch.clone())?;
-        let collapsed = [0, 1, 2, 3].map(|s| {
-            let poles = internal.boundary_curve(s).poles;
-            poles.iter().all(|p| p.distance(poles[0]) <= COLLAPSED)
-        });
         Ok(PartFace {
             surface: patch_nurbs(self.user_patch(patch))?,
             sides,
-            collapsed,
+            collapsed: collapsed_sides(patch),
         })
     }
 

@@ -173,7 +173,25 @@ pub(crate) fn split_long_pieces(pieces: &[ConePiece]) -> Vec<ConePiece> {
 
 /// The distance within which a side of a patch is a point (internal coordinates, where the
 /// part is about 1 across): a boundary through a cone's apex, a crease's ruling.
-pub(crate) const COLLAPSED: f64 = 1e-12;
+const COLLAPSED: f64 = 1e-12;
+
+/// Which sides of a patch (internal coordinates) are a point, in the order of
+/// `NurbsSurface::boundary_line`: v = 0, u = 1, v = 1, u = 0.
+pub(crate) fn collapsed_sides(patch: &RationalBezierPatch) -> [bool; 4] {
+    let (nu, nv) = (patch.degree_u() + 1, patch.degree_v() + 1);
+    let h = patch.homogeneous();
+    let at = |i: usize, j: usize| h[i * nv + j].truncate() / h[i * nv + j].w;
+    fn point(mut side: impl Iterator<Item = DVec3>) -> bool {
+        let first = side.next().expect("a side has poles");
+        side.all(|p| p.distance(first) <= COLLAPSED)
+    }
+    [
+        point((0..nu).map(|i| at(i, 0))),
+        point((0..nv).map(|j| at(nu - 1, j))),
+        point((0..nu).map(|i| at(i, nv - 1))),
+        point((0..nv).map(|j| at(0, j))),
+    ]
+}
 
 /// The trimmed cone spline of a part, in internal coordinates: pieces (each at most 120°)
 /// and their two trims; `closed` when the last ruling is the first (a transition around).
