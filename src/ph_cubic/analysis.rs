@@ -117,28 +117,6 @@ impl<'a> ProfileSurface<'a> {
                 )
             }
         }
-        Self::of_checked_frames(spine, frames, profile)
-    }
-
-    /// The sweep with any frames of the spine (orthonormal, f₁ the tangent), rotation
-    /// minimizing or not, for its singularity margin only: s_u lies in the normal plane and
-    /// the part of s_v along the tangent is |x′|·g whatever the frames' turn about the
-    /// tangent, so g > 0 everywhere still guarantees a regular sweep (g ≤ 0 then no longer
-    /// implies a fold: a sufficient test, as the wire sweeps use it).
-    pub(crate) fn with_adapted_frames(
-        spine: &'a PiecewiseCurve,
-        frames: &'a RationalFrames,
-        profile: &'a PiecewiseCurve,
-    ) -> Result<Self> {
-        FramedCurve::check(spine, frames)?;
-        Self::of_checked_frames(spine, frames, profile)
-    }
-
-    fn of_checked_frames(
-        spine: &'a PiecewiseCurve,
-        frames: &'a RationalFrames,
-        profile: &'a PiecewiseCurve,
-    ) -> Result<Self> {
         let (pieces, profile_pieces) = (frames.segments().len(), profile.segments().len());
         if pieces.saturating_mul(profile_pieces) > MAX_ANALYSIS_PAIRS {
             return invalid!(
@@ -146,18 +124,43 @@ impl<'a> ProfileSurface<'a> {
                  {MAX_ANALYSIS_PAIRS} pairs to analyse: split the sweep"
             );
         }
+        Ok(Self::of_checked_frames(spine, frames, profile))
+    }
+
+    /// The sweep with any frames of the spine (orthonormal, f₁ the tangent), rotation
+    /// minimizing or not, for its singularity margin only: s_u lies in the normal plane and
+    /// the part of s_v along the tangent is |x′|·g whatever the frames' turn about the
+    /// tangent, so g > 0 everywhere still guarantees a regular sweep (g ≤ 0 then no longer
+    /// implies a fold: a sufficient test, as the wire sweeps use it).
+    ///
+    /// The profile's segments need not join (a wire sweep passes every loop's segments at
+    /// once); the bound on the work is the caller's, who builds a face per pair anyway.
+    pub(crate) fn with_adapted_frames(
+        spine: &'a PiecewiseCurve,
+        frames: &'a RationalFrames,
+        profile: &'a PiecewiseCurve,
+    ) -> Result<Self> {
+        FramedCurve::check(spine, frames)?;
+        Ok(Self::of_checked_frames(spine, frames, profile))
+    }
+
+    fn of_checked_frames(
+        spine: &'a PiecewiseCurve,
+        frames: &'a RationalFrames,
+        profile: &'a PiecewiseCurve,
+    ) -> Self {
         let segments = profile_segments(profile);
         let tangents = segments
             .iter()
             .map(ProfileSegment::scaled_tangent)
             .collect();
-        Ok(Self {
+        Self {
             spine,
             frames,
             profile,
             segments,
             tangents,
-        })
+        }
     }
 
     /// k(v): the spine's curvature vector in frame coordinates.
@@ -206,7 +209,7 @@ impl<'a> ProfileSurface<'a> {
             let along: Vec<f64> = a.iter().zip(b).map(|(a, b)| a * k.x + b * k.y).collect();
             let candidates = critical_points(&along);
             for s in candidates {
-                let g = 1.0 - segment.jet(s).point.dot(k);
+                let g = 1.0 - segment.point(s).dot(k);
                 if g < best.0 {
                     best = (g, global(self.profile.breaks(), i, s));
                 }
@@ -217,6 +220,18 @@ impl<'a> ProfileSurface<'a> {
 
     /// The singularity margin of Corollary 7 with where it is attained, and the cheap bound.
     pub fn singularity_margin(&self) -> SingularityMargin {
+        let (margin, u, v) = self.least_margin();
+        SingularityMargin {
+            margin,
+            u,
+            v,
+            bound_margin: 1.0 - self.max_spine_curvature() * self.max_profile_radius(),
+        }
+    }
+
+    /// The margin of Corollary 7 alone, (g, u, v) where it is least: g sampled along the
+    /// spine and refined about its least sample.
+    pub(crate) fn least_margin(&self) -> (f64, f64, f64) {
         let samples = grid_parameters(self.frames.breaks(), SAMPLES_PER_PIECE);
         let (i, _) = samples
             .iter()
@@ -232,12 +247,7 @@ impl<'a> ProfileSurface<'a> {
             refined.x
         };
         let (margin, u) = self.least_stretch(v);
-        SingularityMargin {
-            margin,
-            u,
-            v,
-            bound_margin: 1.0 - self.max_spine_curvature() * self.max_profile_radius(),
-        }
+        (margin, u, v)
     }
 
     /// max ‖c(u)‖.

@@ -5,7 +5,7 @@
 
 use crate::bezier::bernstein::{self, elevate_to, product, to_power};
 use crate::bezier::{PiecewiseCurve, RationalBezierCurve};
-use crate::math::real_roots_in;
+use crate::math::{quadratic_roots, real_roots_in};
 use glam::DVec2;
 
 /// One profile segment c = (X, Y)/h on [0, 1]; polynomial segments keep h = 1 (degree 0),
@@ -56,6 +56,15 @@ impl ProfileSegment {
         ProfileJet { point, d1, d2 }
     }
 
+    /// c at the local parameter u.
+    pub fn point(&self, u: f64) -> DVec2 {
+        let h = bernstein::evaluate(&self.h, u);
+        DVec2::new(
+            bernstein::evaluate(&self.x, u),
+            bernstein::evaluate(&self.y, u),
+        ) / h
+    }
+
     /// (A, B) = h²c' = (X'h − Xh', Y'h − Yh').
     pub fn scaled_tangent(&self) -> (Vec<f64>, Vec<f64>) {
         let dh = bernstein::derivative(&self.h);
@@ -75,7 +84,7 @@ impl ProfileSegment {
         let radial = sum(&product(&self.x, &a, mul), &product(&self.y, &b, mul));
         critical_points(&radial)
             .into_iter()
-            .map(|s| self.jet(s).point.length())
+            .map(|s| self.point(s).length())
             .fold(0.0, f64::max)
     }
 
@@ -162,10 +171,29 @@ pub fn vanishes(p: &[f64], scale: f64) -> bool {
 /// The roots in the open interval (0, 1) of a Bernstein polynomial that does not vanish
 /// identically.
 pub fn interior_roots(p: &[f64]) -> Vec<f64> {
-    real_roots_in(&to_power(p), 0.0, 1.0)
-        .into_iter()
-        .filter(|&u| u > 0.0 && u < 1.0)
-        .collect()
+    // Bernstein coefficients of one strict sign bound a polynomial of that sign on [0, 1]
+    // (convex hull): no root, and no need to look for one.
+    if p.iter().all(|&c| c > 0.0) || p.iter().all(|&c| c < 0.0) {
+        return Vec::new();
+    }
+    let mut power = to_power(p);
+    // Leading coefficients at the rounding level of the others are dropped (a rational
+    // quadratic's scaled tangent, of degree 2, comes written with degree 3): on [0, 1] they
+    // move a root by as little, and a quadratic has its roots in closed form.
+    let size = power.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+    while power.len() > 1 && power[power.len() - 1].abs() <= 1e-14 * size {
+        power.pop();
+    }
+    let roots = match power[..] {
+        // Scaled by a power of two near 1/size (exact): b² − 4ac under- or overflows at
+        // extreme scales.
+        [c, b, a] => {
+            let f = 2f64.powi((-size.log2().round()).clamp(-1000.0, 1000.0) as i32);
+            quadratic_roots(a * f, b * f, c * f)
+        }
+        _ => real_roots_in(&power, 0.0, 1.0),
+    };
+    roots.into_iter().filter(|&u| u > 0.0 && u < 1.0).collect()
 }
 
 #[cfg(test)]

@@ -607,6 +607,8 @@ pub(crate) fn singularity_margin(
     let mut least = 1.0f64;
     // The support function in every arc's and miter's direction, from one preparation.
     let table = profile.support_table();
+    // Curve pieces scan the whole profile at once: one spine evaluation per sample.
+    let chain = profile.segment_chain();
     // Arcs of a wire often share their direction (axis-aligned routes): the support
     // function of the last few directions met, by their exact bits.
     let mut reaches: Vec<([u64; 2], f64)> = Vec::with_capacity(REACH_CACHE);
@@ -638,30 +640,26 @@ pub(crate) fn singularity_margin(
                 margin
             }
             (_, PieceFrame::Rational(frames)) => {
-                let mut least = f64::INFINITY;
-                for (_, _, edge) in profile.edges() {
-                    let analysis = ProfileSurface::with_adapted_frames(&framed.spine, frames, edge)
-                        .with_context(|| format!("edge {}", piece.edge))?;
-                    let m = analysis.singularity_margin();
-                    if m.margin <= 0.0 {
-                        if let Geometry::Arc(arc) = &piece.geometry {
-                            let reach = arc.radius * (1.0 - m.margin);
-                            return Err(fold_at_arc(piece, arc.radius, reach, unit));
-                        }
-                        return invalid!(
-                            "edge {}: the profile reaches past the spine's centre of curvature \
-                             near its parameter {:.6} (singularity margin g = {:.3e}, Mäurer & \
-                             Jüttler Cor. 7): the sweep would fold; the profile may be at most \
-                             {:.6} times as large there",
-                            piece.edge,
-                            m.v,
-                            m.margin,
-                            1.0 / (1.0 - m.margin)
-                        );
+                let analysis = ProfileSurface::with_adapted_frames(&framed.spine, frames, &chain)
+                    .with_context(|| format!("edge {}", piece.edge))?;
+                let (margin, _, v) = analysis.least_margin();
+                if margin <= 0.0 {
+                    if let Geometry::Arc(arc) = &piece.geometry {
+                        let reach = arc.radius * (1.0 - margin);
+                        return Err(fold_at_arc(piece, arc.radius, reach, unit));
                     }
-                    least = least.min(m.margin);
+                    return invalid!(
+                        "edge {}: the profile reaches past the spine's centre of curvature \
+                         near its parameter {:.6} (singularity margin g = {:.3e}, Mäurer & \
+                         Jüttler Cor. 7): the sweep would fold; the profile may be at most \
+                         {:.6} times as large there",
+                        piece.edge,
+                        v,
+                        margin,
+                        1.0 / (1.0 - margin)
+                    );
                 }
-                least
+                margin
             }
             _ => 1.0,
         };

@@ -124,6 +124,19 @@ impl Profile {
             .fold(0.0, f64::max)
     }
 
+    /// Every segment of every loop one after another on unit intervals: the profile as an
+    /// analysis that takes it segment by segment sees it (consecutive segments of different
+    /// loops do not join).
+    pub fn segment_chain(&self) -> PiecewiseCurve {
+        let segments = self
+            .loops
+            .iter()
+            .flat_map(|l| &l.edges)
+            .flat_map(|e| e.segments().iter().cloned())
+            .collect();
+        PiecewiseCurve::with_unit_intervals(segments).expect("a profile has segments")
+    }
+
     fn segments(&self) -> impl Iterator<Item = ProfileSegment> + '_ {
         self.loops
             .iter()
@@ -372,7 +385,7 @@ impl SupportTable {
                 let along: Vec<f64> = a.iter().zip(b).map(|(a, b)| a * d.x + b * d.y).collect();
                 critical_points(&along)
                     .into_iter()
-                    .map(|s| segment.jet(s).point.dot(d))
+                    .map(|s| segment.point(s).dot(d))
                     .fold(f64::NEG_INFINITY, f64::max)
             })
             .fold(f64::NEG_INFINITY, f64::max)

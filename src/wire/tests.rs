@@ -582,3 +582,61 @@ fn wires_of_subnormal_or_huge_size_are_refused() {
         "{e}"
     );
 }
+
+/// The singularity margin along a curve edge is that of the whole profile, holes and all
+/// (Cor. 7: g = 1 − κ h(n), h the profile's extent towards the centre of curvature): an
+/// off-centre circle along a planar curve, the reported margin against κ_max of the PH
+/// spline swept along, on either side of the spine; past the centre of curvature refused.
+#[test]
+fn the_singularity_margin_along_a_curve_is_the_whole_profiles() {
+    let bend = RationalBezierCurve::polynomial(&[
+        DVec3::new(0.0, 0.0, 0.0),
+        DVec3::new(10.0, 0.0, 0.0),
+        DVec3::new(20.0, 10.0, 0.0),
+        DVec3::new(20.0, 20.0, 0.0),
+    ])
+    .unwrap();
+    let edges = [Edge::Curve(
+        PiecewiseCurve::with_unit_intervals(vec![bend]).unwrap(),
+    )];
+    let options = WireSweep {
+        initial_normal: Some(DVec3::Z),
+        ..WireSweep::default()
+    };
+    let (r, d) = (0.3, 0.1);
+    let off = |y: f64, radius: f64| {
+        crate::primitives::circle(DVec3::new(0.0, y, 0.0), DVec3::X, DVec3::Y, radius).unwrap()
+    };
+    let toward = |y: f64, holes: &[PiecewiseCurve]| {
+        sweep_wire(&edges, &off(y, r), holes, &options).map(|s| {
+            let spine = &s.spine()[0];
+            let (lo, hi) = spine.domain();
+            let kappa = (0..=20_000)
+                .map(|i| {
+                    let jet = spine.eval_jet(lo + (hi - lo) * i as f64 / 20_000.0);
+                    jet.d1.cross(jet.d2).length() / jet.d1.length().powi(3)
+                })
+                .fold(0.0, f64::max);
+            (s.report().singularity_margin, kappa)
+        })
+    };
+    let (a, kappa) = toward(d, &[]).unwrap();
+    let (b, _) = toward(-d, &[]).unwrap();
+    let (inner, outer) = (a.min(b), a.max(b));
+    assert!(
+        (inner - (1.0 - kappa * (r + d))).abs() < 1e-6
+            && (outer - (1.0 - kappa * (r - d))).abs() < 1e-6,
+        "margins {a}, {b}; κ_max {kappa}"
+    );
+    // A hole reaches less far than the outer loop: the same margin.
+    let side = if a < b { d } else { -d };
+    let (with_hole, _) = toward(side, &[off(side, 0.1)]).unwrap();
+    assert!((with_hole - inner).abs() < 1e-12, "{with_hole} vs {inner}");
+    // Past the centre of curvature (1/κ_max ≈ {1/kappa}) on the inner side: refused.
+    let e = toward(side * (1.2 / kappa) / d, &[]).unwrap_err();
+    assert!(
+        e.message()
+            .contains("edge 0: the profile reaches past the spine's centre"),
+        "{e}"
+    );
+}
