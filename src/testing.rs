@@ -12,7 +12,7 @@ use crate::frames::Frame;
 use crate::hermite::HermiteSegment;
 use crate::math::angle_between;
 use crate::mobius::hermite::planar_frame;
-use crate::model::{Brep, BrepSurface, FramedCurve, PCurve};
+use crate::model::{Brep, BrepSurface, BrepUse, FramedCurve, PCurve};
 use crate::ph_cubic::PhCubic;
 use crate::rrmf_quintic::RrmfQuintic;
 use crate::Result;
@@ -363,6 +363,94 @@ fn assert_pcurves_on_edges(brep: &Brep, size: f64) {
                     "face {k}, edge {}: the pcurve is {gap:e} off the edge at t = {t}",
                     u.edge
                 );
+            }
+        }
+    }
+}
+
+/// A point of a face's surface at the parameters (x, y).
+fn surface_point(surface: &BrepSurface, x: f64, y: f64) -> DVec3 {
+    match surface {
+        BrepSurface::Nurbs(s) => s.to_piecewise().expect("a valid surface").eval(x, y),
+        BrepSurface::Plane {
+            origin,
+            normal,
+            x_axis,
+        } => *origin + x * *x_axis + y * normal.cross(*x_axis),
+    }
+}
+
+/// The point of an edge at the fraction `f` of its parameter range, and of its curve in a
+/// face's parameter plane there, mapped by the face's surface.
+fn edge_points(brep: &Brep, face: usize, use_: &BrepUse, f: f64) -> (DVec3, Option<DVec3>) {
+    let curve = &brep.edges[use_.edge].curve;
+    let (a, b) = (curve.knots[0], curve.knots[curve.knots.len() - 1]);
+    let t = a + (b - a) * f;
+    let on_face = use_.pcurve.as_ref().map(|p| {
+        let (x, y) = match p {
+            PCurve::Line { origin, direction } => {
+                (origin.0 + t * direction.0, origin.1 + t * direction.1)
+            }
+            PCurve::Curve(c) => {
+                let p = c.to_piecewise().expect("a valid pcurve").eval(t);
+                (p.x, p.y)
+            }
+        };
+        surface_point(&brep.faces[face].surface, x, y)
+    });
+    let point = curve.to_piecewise().expect("a valid curve").eval(t);
+    (point, on_face)
+}
+
+/// `moved` is `unit` scaled by `scale` about the origin and then moved by `shift`: the same
+/// topology (vertices, edges, loops, uses, senses) and, mapped back, the same vertices, edge
+/// curves and curves on the faces at 9 parameters each, to 1e-9 of the unit model's size.
+pub(crate) fn assert_similar_breps(unit: &Brep, moved: &Brep, scale: f64, shift: DVec3) {
+    let back = |p: DVec3| (p - shift) / scale;
+    let size = unit
+        .vertices
+        .iter()
+        .map(|p| p.abs().max_element())
+        .fold(0.0, f64::max);
+    let near = |a: DVec3, b: DVec3, what: &str| {
+        assert!(
+            a.distance(back(b)) <= 1e-9 * size,
+            "scale {scale:e}, shift {shift}: {what}: {a} vs {}",
+            back(b)
+        );
+    };
+    assert_eq!(unit.closed, moved.closed);
+    assert_eq!(unit.vertices.len(), moved.vertices.len());
+    for (k, (a, b)) in unit.vertices.iter().zip(&moved.vertices).enumerate() {
+        near(*a, *b, &format!("vertex {k}"));
+    }
+    assert_eq!(unit.edges.len(), moved.edges.len());
+    for (k, (a, b)) in unit.edges.iter().zip(&moved.edges).enumerate() {
+        assert_eq!(
+            (a.start, a.end, a.degenerate),
+            (b.start, b.end, b.degenerate)
+        );
+        assert_eq!(a.curve.degree, b.curve.degree, "edge {k}");
+    }
+    assert_eq!(unit.faces.len(), moved.faces.len());
+    for (k, (a, b)) in unit.faces.iter().zip(&moved.faces).enumerate() {
+        assert_eq!(a.same_sense, b.same_sense, "face {k}");
+        assert_eq!(a.bounds.len(), b.bounds.len(), "face {k}");
+        for (p, q) in a.bounds.iter().zip(&b.bounds) {
+            assert_eq!(p.outer, q.outer, "face {k}");
+            assert_eq!(p.uses.len(), q.uses.len(), "face {k}");
+            for (u, v) in p.uses.iter().zip(&q.uses) {
+                assert_eq!((u.edge, u.forward), (v.edge, v.forward), "face {k}");
+                assert_eq!(u.pcurve.is_some(), v.pcurve.is_some(), "face {k}");
+                for j in 0..=8 {
+                    let f = j as f64 / 8.0;
+                    let (pa, sa) = edge_points(unit, k, u, f);
+                    let (pb, sb) = edge_points(moved, k, v, f);
+                    near(pa, pb, &format!("edge {} at {f}", u.edge));
+                    if let (Some(sa), Some(sb)) = (sa, sb) {
+                        near(sa, sb, &format!("face {k}, edge {} at {f}", u.edge));
+                    }
+                }
             }
         }
     }

@@ -931,3 +931,32 @@ fn the_hoppers_solid_is_built_from_its_construction() {
     let marked = flags.iter().filter(|f| f.ends_with(" 1 1 1")).count();
     assert_eq!(marked, degenerate);
 }
+
+/// The hopper's B-rep scaled by 1e-200 and 1e200 and moved far off is the same model: the
+/// same vertices, edges, loops and senses, its points the scaled and moved ones.
+#[test]
+fn the_hoppers_brep_is_invariant_under_scaling_and_translation() {
+    let (bottom, top) = hopper_curves();
+    let unit = SheetPart::transition(&bottom, &top, &hopper_options(1e-3))
+        .unwrap()
+        .brep()
+        .unwrap();
+    for (scale, shift) in [
+        (1e-200, DVec3::ZERO),
+        (1e200, DVec3::ZERO),
+        (1.0, DVec3::new(1e5, -3e5, 2e4)),
+    ] {
+        let options = SheetOptions {
+            tolerance: 1e-3 * scale,
+            sheet: Sheet::new(2.0 * scale, 0.4, Reference::Inner).unwrap(),
+            ..hopper_options(1e-3)
+        };
+        let part = SheetPart::transition(
+            &bottom.similar(scale, shift),
+            &top.similar(scale, shift),
+            &options,
+        )
+        .unwrap();
+        crate::testing::assert_similar_breps(&unit, &part.brep().unwrap(), scale, shift);
+    }
+}

@@ -172,8 +172,11 @@ pub(crate) fn split_long_pieces(pieces: &[ConePiece]) -> Vec<ConePiece> {
 }
 
 /// The distance within which a side of a patch is a point (internal coordinates, where the
-/// part is about 1 across): a boundary through a cone's apex, a crease's ruling.
-const COLLAPSED: f64 = 1e-12;
+/// part is about 1 across): a boundary through a cone's apex, a crease's ruling. Such sides
+/// come out of the construction up to some 1e-12 apart once rounding of the input is
+/// amplified at an apex (the hopper 3e5 off the origin); a genuine side is orders of
+/// magnitude longer, and one this short is within ten times the B-rep's own tolerance.
+const COLLAPSED: f64 = 1e-9;
 
 /// Which sides of a patch (internal coordinates) are a point, in the order of
 /// `NurbsSurface::boundary_line`: v = 0, u = 1, v = 1, u = 0.
