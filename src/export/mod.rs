@@ -36,17 +36,39 @@ fn number(x: f64) -> Number {
 #[derive(Clone, Copy)]
 struct Number(f64);
 
-impl std::fmt::Display for Number {
-    /// Whole numbers below 1e16 as integers, everything else in Ryu's shortest round-trip
-    /// form.
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+impl Number {
+    /// The text, handed to `f`: whole numbers below 1e16 as integers (exact below 2⁵³, and
+    /// every whole double up to 1e16 fits an i64), everything else in Ryu's shortest
+    /// round-trip form.
+    fn with_text<R>(self, f: impl FnOnce(&str) -> R) -> R {
         if self.0.fract() == 0.0 && self.0.abs() < 1e16 {
-            // As an integer: exact below 2⁵³ and every whole double up to 1e16 fits an
-            // i64 (the `{:.0}` of a float takes the slow exact path).
-            write!(f, "{}", self.0 as i64)
+            f(itoa::Buffer::new().format(self.0 as i64))
         } else {
-            f.write_str(ryu::Buffer::new().format(self.0))
+            f(ryu::Buffer::new().format(self.0))
         }
+    }
+}
+
+impl std::fmt::Display for Number {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        self.with_text(|text| f.write_str(text))
+    }
+}
+
+/// Appends a space and each of `values` as [`number`] writes it: the writers' inner loops,
+/// without the formatting machinery, which costs them more than the digits themselves.
+fn push_numbers(text: &mut String, values: impl IntoIterator<Item = f64>) {
+    for x in values {
+        text.push(' ');
+        number(x).with_text(|digits| text.push_str(digits));
+    }
+}
+
+/// Appends a space and each of `counts` (integers of the writers' records).
+fn push_counts(text: &mut String, counts: impl IntoIterator<Item = usize>) {
+    for n in counts {
+        text.push(' ');
+        text.push_str(itoa::Buffer::new().format(n));
     }
 }
 
@@ -55,19 +77,14 @@ pub(crate) fn curve_range(curve: &NurbsCurve) -> (f64, f64) {
     (curve.knots[0], curve.knots[curve.knots.len() - 1])
 }
 
+/// Distinct knots and their multiplicities, in order.
+fn knot_runs(knots: &[f64]) -> impl Iterator<Item = (f64, usize)> + Clone + '_ {
+    knots.chunk_by(|a, b| a == b).map(|run| (run[0], run.len()))
+}
+
 /// Distinct knots and their multiplicities.
 fn knots_and_multiplicities(knots: &[f64]) -> (Vec<f64>, Vec<usize>) {
-    let mut distinct: Vec<f64> = Vec::new();
-    let mut multiplicities: Vec<usize> = Vec::new();
-    for &k in knots {
-        if distinct.last() == Some(&k) {
-            *multiplicities.last_mut().expect("a knot before") += 1;
-        } else {
-            distinct.push(k);
-            multiplicities.push(1);
-        }
-    }
-    (distinct, multiplicities)
+    knot_runs(knots).unzip()
 }
 
 #[cfg(test)]

@@ -17,11 +17,10 @@
 //! 1: origin, normal, x axis, y = normal × x axis). Numbers are the shortest text that
 //! reads back as the same double.
 
-use super::{curve_range, knots_and_multiplicities, number, Number};
+use super::{curve_range, knot_runs, number, push_counts, push_numbers};
 use crate::bezier::{NurbsCurve, NurbsSurface};
 use crate::error::{invalid, Result};
 use crate::model::{Brep, BrepEdge, BrepFace, BrepSurface, PCurve};
-use glam::DVec3;
 use std::fmt::Write;
 
 /// The text of `brep` in OpenCascade's B-rep format: a solid of one closed shell, or an
@@ -30,7 +29,7 @@ pub fn brep_to_occ(brep: &Brep) -> Result<String> {
     if brep.faces.is_empty() {
         return invalid!("a shape needs at least one face");
     }
-    let tolerance = number(brep.tolerance());
+    let tolerance = number(brep.tolerance()).to_string();
     let mut text = String::from("\nCASCADE Topology V1, (c) Matra-Datavision\nLocations 0\n");
     let on_edges = curves_2d(brep, &mut text)?;
     let _ = writeln!(text, "Curves {}", brep.edges.len());
@@ -48,12 +47,9 @@ pub fn brep_to_occ(brep: &Brep) -> Result<String> {
         .vertices
         .iter()
         .map(|p| {
-            let data = format!(
-                "Ve\n{tolerance}\n{} {} {}\n0 0\n",
-                number(p.x),
-                number(p.y),
-                number(p.z)
-            );
+            let mut data = format!("Ve\n{tolerance}\n{}", number(p.x));
+            push_numbers(&mut data, [p.y, p.z]);
+            data.push_str("\n0 0\n");
             shapes.add(data, "0101101", Vec::new())
         })
         .collect();
@@ -62,7 +58,7 @@ pub fn brep_to_occ(brep: &Brep) -> Result<String> {
         let (Some(&start), Some(&end)) = (vertices.get(edge.start), vertices.get(edge.end)) else {
             return invalid!("edge {e} joins vertices that do not exist");
         };
-        let data = edge_data(e, edge, &on_edges[e], tolerance);
+        let data = edge_data(e, edge, &on_edges[e], &tolerance);
         edges.push(shapes.add(data, "0101000", vec![('+', start), ('-', end)]));
     }
     let mut in_shell = Vec::with_capacity(brep.faces.len());
@@ -79,8 +75,15 @@ pub fn brep_to_occ(brep: &Brep) -> Result<String> {
                 ('+', shapes.add("Wi\n".into(), "0101100", uses))
             })
             .collect();
-        let natural = u8::from(natural_bounds(face));
-        let data = format!("Fa\n{natural} {tolerance} {} 0\n", f + 1);
+        let mut data = String::with_capacity(40);
+        data.push_str(if natural_bounds(face) {
+            "Fa\n1 "
+        } else {
+            "Fa\n0 "
+        });
+        data.push_str(&tolerance);
+        push_counts(&mut data, [f + 1, 0]);
+        data.push('\n');
         let sense = if face.same_sense { '+' } else { '-' };
         in_shell.push((sense, shapes.add(data, "0101000", wires)));
     }
@@ -184,16 +187,18 @@ fn curves_2d(brep: &Brep, text: &mut String) -> Result<Vec<Vec<OnFace>>> {
 fn write_pcurve(text: &mut String, pcurve: &PCurve, edge: &NurbsCurve) {
     match pcurve {
         PCurve::Line { origin, direction } => {
+            // The degree-1 B-spline from the line's point at the edge's first parameter to
+            // that at its last.
             let (first, last) = curve_range(edge);
-            let at =
-                |t: f64| DVec3::new(origin.0 + t * direction.0, origin.1 + t * direction.1, 0.0);
-            let line = NurbsCurve {
-                degree: 1,
-                poles: vec![at(first), at(last)],
-                weights: vec![1.0, 1.0],
-                knots: vec![first, first, last, last],
-            };
-            bspline(text, &line, 2);
+            let at = |t: f64| [origin.0 + t * direction.0, origin.1 + t * direction.1, 1.0];
+            text.push_str("7 1 0 1 2 2");
+            push_numbers(text, at(first));
+            push_numbers(text, at(last));
+            text.push('\n');
+            push_numbers(text, [first]);
+            text.push_str(" 2");
+            push_numbers(text, [last]);
+            text.push_str(" 2\n");
         }
         PCurve::Curve(curve) => bspline(text, curve, 2),
     }
@@ -201,23 +206,35 @@ fn write_pcurve(text: &mut String, pcurve: &PCurve, edge: &NurbsCurve) {
 
 /// The edge's record: its 3-D curve (number `e + 1`; none for a degenerate edge, which
 /// the kernel marks so) and its curves on the faces.
-fn edge_data(e: usize, edge: &BrepEdge, on_faces: &[OnFace], tolerance: Number) -> String {
+fn edge_data(e: usize, edge: &BrepEdge, on_faces: &[OnFace], tolerance: &str) -> String {
     let (first, last) = curve_range(&edge.curve);
-    let (first, last) = (number(first), number(last));
-    let mut data = if edge.degenerate {
-        format!("Ed\n {tolerance} 1 1 1\n")
+    let mut data = String::with_capacity(160);
+    data.push_str("Ed\n ");
+    data.push_str(tolerance);
+    if edge.degenerate {
+        data.push_str(" 1 1 1\n");
     } else {
-        format!("Ed\n {tolerance} 1 1 0\n1 {} 0 {first} {last}\n", e + 1)
-    };
+        data.push_str(" 1 1 0\n1");
+        push_counts(&mut data, [e + 1, 0]);
+        push_numbers(&mut data, [first, last]);
+        data.push('\n');
+    }
     for on in on_faces {
-        let surface = on.face + 1;
-        let _ = match on.curves[..] {
+        match on.curves[..] {
             [forward, reversed, ..] => {
-                writeln!(data, "3 {forward} {reversed} C0 {surface} 0 {first} {last}")
+                data.push('3');
+                push_counts(&mut data, [forward, reversed]);
+                data.push_str(" C0");
             }
-            [only] => writeln!(data, "2 {only} {surface} 0 {first} {last}"),
-            [] => Ok(()),
-        };
+            [only] => {
+                data.push('2');
+                push_counts(&mut data, [only]);
+            }
+            [] => continue,
+        }
+        push_counts(&mut data, [on.face + 1, 0]);
+        push_numbers(&mut data, [first, last]);
+        data.push('\n');
     }
     data.push_str("0\n");
     data
@@ -226,23 +243,25 @@ fn edge_data(e: usize, edge: &BrepEdge, on_faces: &[OnFace], tolerance: Number) 
 /// A B-spline curve record (code 7), its poles' first `dimension` coordinates (2 for a
 /// curve in a parameter plane, 3 in space).
 fn bspline(text: &mut String, curve: &NurbsCurve, dimension: usize) {
-    let (knots, multiplicities) = knots_and_multiplicities(&curve.knots);
-    let _ = write!(
+    let knots = knot_runs(&curve.knots);
+    text.push_str("7 1 0");
+    push_counts(
         text,
-        "7 1 0 {} {} {}",
-        curve.degree,
-        curve.poles.len(),
-        knots.len()
+        [curve.degree, curve.poles.len(), knots.clone().count()],
     );
     for (&p, &w) in curve.poles.iter().zip(&curve.weights) {
-        for x in &p.to_array()[..dimension] {
-            let _ = write!(text, " {}", number(*x));
-        }
-        let _ = write!(text, " {}", number(w));
+        push_numbers(text, p.to_array()[..dimension].iter().copied());
+        push_numbers(text, [w]);
     }
     text.push('\n');
-    for (k, m) in knots.iter().zip(&multiplicities) {
-        let _ = write!(text, " {} {m}", number(*k));
+    push_knots(text, knots);
+}
+
+/// Each distinct knot and its multiplicity, and the end of the line.
+fn push_knots(text: &mut String, knots: impl Iterator<Item = (f64, usize)>) {
+    for (k, m) in knots {
+        push_numbers(text, [k]);
+        push_counts(text, [m]);
     }
     text.push('\n');
 }
@@ -257,9 +276,9 @@ fn surface(text: &mut String, surface: &BrepSurface) {
             x_axis,
         } => {
             let y_axis = normal.cross(*x_axis);
-            let _ = write!(text, "1");
+            text.push('1');
             for v in [*origin, *normal, *x_axis, y_axis] {
-                let _ = write!(text, " {} {} {}", number(v.x), number(v.y), number(v.z));
+                push_numbers(text, v.to_array());
             }
             text.push('\n');
         }
@@ -267,41 +286,32 @@ fn surface(text: &mut String, surface: &BrepSurface) {
 }
 
 fn nurbs_surface(text: &mut String, s: &NurbsSurface) {
-    let (ku, mu) = knots_and_multiplicities(&s.knots_u);
-    let (kv, mv) = knots_and_multiplicities(&s.knots_v);
-    let _ = writeln!(
+    let (ku, kv) = (knot_runs(&s.knots_u), knot_runs(&s.knots_v));
+    text.push_str("9 1 1 0 0");
+    push_counts(
         text,
-        "9 1 1 0 0 {} {} {} {} {} {}",
-        s.degree_u,
-        s.degree_v,
-        s.pole_count_u,
-        s.pole_count_v,
-        ku.len(),
-        kv.len()
+        [
+            s.degree_u,
+            s.degree_v,
+            s.pole_count_u,
+            s.pole_count_v,
+            ku.clone().count(),
+            kv.clone().count(),
+        ],
     );
+    text.push('\n');
     for row in s
         .poles
         .chunks(s.pole_count_v)
         .zip(s.weights.chunks(s.pole_count_v))
     {
         for (p, w) in row.0.iter().zip(row.1) {
-            let _ = write!(
-                text,
-                " {} {} {} {}",
-                number(p.x),
-                number(p.y),
-                number(p.z),
-                number(*w)
-            );
+            push_numbers(text, [p.x, p.y, p.z, *w]);
         }
         text.push('\n');
     }
-    for (knots, multiplicities) in [(ku, mu), (kv, mv)] {
-        for (k, m) in knots.iter().zip(&multiplicities) {
-            let _ = write!(text, " {} {m}", number(*k));
-        }
-        text.push('\n');
-    }
+    push_knots(text, ku);
+    push_knots(text, kv);
 }
 
 /// A shape held by another: its orientation (`+`, `-`) and its position in [`Shapes`].
@@ -338,7 +348,9 @@ impl Shapes {
             text.push_str(data);
             let _ = write!(text, "\n{flags}\n");
             for (orientation, position) in held {
-                let _ = write!(text, "{orientation}{} 0 ", n - position);
+                text.push(*orientation);
+                text.push_str(itoa::Buffer::new().format(n - position));
+                text.push_str(" 0 ");
             }
             text.push_str("*\n");
         }

@@ -15,8 +15,9 @@
 //!
 //! An open wire gets a planar cap at each end, bounded by the profile's loops there.
 //!
-//! The report's max |cos| between parameter lines is taken on the lines u = i/8 of every
-//! patch: along the lines and arcs (degree ≤ 2 in v) as a bound over the whole line from
+//! The report's max |cos| between parameter lines is measured when the report is first
+//! asked for (a diagnostic the construction does not need: a third of a helix's build), in
+//! internal coordinates again, on the lines u = i/8 of every patch: along the lines and arcs (degree ≤ 2 in v) as a bound over the whole line from
 //! the Bernstein coefficients of polynomials in v (see `line_cosine_bound`), which costs
 //! less than sampling and misses nothing between samples; along PH pieces (degree 9) by 9
 //! samples per line.
@@ -48,6 +49,7 @@ use crate::model::Similarity;
 use crate::model::{Brep, BrepBound, BrepEdge, BrepFace, BrepSurface, BrepUse, PCurve};
 use crate::sweep::sweep_along;
 use glam::{DVec3, DVec4};
+use std::sync::OnceLock;
 
 mod cosine;
 mod topology;
@@ -133,7 +135,10 @@ pub struct Shape {
     faces: Vec<Face>,
     brep: Brep,
     solid: bool,
-    report: SweepReport,
+    /// The figures measured while building, without the parameter-line cosine.
+    built: SweepReport,
+    /// The whole report, made on first request.
+    report: OnceLock<SweepReport>,
     spine: Vec<PiecewiseCurve>,
     /// The map from the coordinates the sweep was built in to the caller's.
     placement: Similarity,
@@ -151,8 +156,31 @@ impl Shape {
     }
 
     /// The accuracy figures of the sweep.
+    ///
+    /// The largest cosine between parameter lines is measured on the lateral faces when the
+    /// report is first asked for.
     pub fn report(&self) -> &SweepReport {
-        &self.report
+        self.report.get_or_init(|| SweepReport {
+            max_parameter_cosine: self.max_parameter_cosine(),
+            ..self.built
+        })
+    }
+
+    /// The report's largest cosine between parameter lines, in internal coordinates (the
+    /// bound's products of coordinates under- or overflow at extreme scales).
+    fn max_parameter_cosine(&self) -> f64 {
+        let mut bases = CosineBases::new();
+        self.faces
+            .iter()
+            .filter_map(|face| face.surface.clone())
+            .map(|s| {
+                let internal = self
+                    .placement
+                    .surface_to_internal(s)
+                    .expect("internal coordinates are about 1");
+                max_parameter_cosine(&internal, &mut bases)
+            })
+            .fold(0.0, f64::max)
     }
 
     /// The curves swept along, in order: the lines, arcs and round-corner elbows exactly,
@@ -366,13 +394,6 @@ pub(crate) fn build(
     let images = closure_images(transport, profile)?;
     let seam_gap = seam_gap(&normalized, profile, images.as_ref()) * placement.scale;
     let joint_gap = joint_gap(&normalized) * placement.scale;
-    let mut bases = CosineBases::new();
-    let max_cosine = normalized
-        .iter()
-        .flatten()
-        .flatten()
-        .map(|s| max_parameter_cosine(s, &mut bases))
-        .fold(0.0, f64::max);
     // In the caller's coordinates.
     let surfaces: Vec<Vec<Vec<PiecewiseSurface>>> = normalized
         .into_iter()
@@ -436,7 +457,7 @@ pub(crate) fn build(
         }
     }
     let closed_shell = solid && profile.loops[0].closed;
-    let report = SweepReport {
+    let built = SweepReport {
         spine_distance: transport
             .pieces
             .iter()
@@ -448,7 +469,8 @@ pub(crate) fn build(
             .iter()
             .map(|p| p.angle_error)
             .fold(0.0, f64::max),
-        max_parameter_cosine: max_cosine,
+        // Measured on request (Shape::report).
+        max_parameter_cosine: f64::NAN,
         singularity_margin: margin,
         face_count: faces.len(),
         corner_turn: corner_turn(transport),
@@ -464,7 +486,8 @@ pub(crate) fn build(
             closed: closed_shell,
         },
         solid: closed_shell,
-        report,
+        built,
+        report: OnceLock::new(),
         spine: transport
             .pieces
             .iter()
