@@ -82,12 +82,4 @@ impl Similarity {
         }
         Ok(s)
     }
-
-    /// A surface of the caller's in internal coordinates.
-    pub fn surface_to_internal(self, mut s: PiecewiseSurface) -> Result<PiecewiseSurface> {
-        for p in s.patches_mut() {
-            p.map_homogeneous(|h| ((h.truncate() - self.origin * h.w) / self.scale).extend(h.w))?;
-        }
-        Ok(s)
-    }
 }

@@ -225,8 +225,14 @@ impl<'a> ProfileSurface<'a> {
             margin,
             u,
             v,
-            bound_margin: 1.0 - self.max_spine_curvature() * self.max_profile_radius(),
+            bound_margin: self.bound_margin(),
         }
+    }
+
+    /// The sufficient margin 1 − κ_max·max‖c‖ alone (positive: the sweep does not fold),
+    /// which costs a curvature per sample instead of a root search per profile segment.
+    pub(crate) fn bound_margin(&self) -> f64 {
+        1.0 - self.max_spine_curvature() * self.max_profile_radius()
     }
 
     /// The margin of Corollary 7 alone, (g, u, v) where it is least: g sampled along the

@@ -596,15 +596,43 @@ fn fit_parts(
 /// Directions of arcs whose support function [`singularity_margin`] keeps.
 const REACH_CACHE: usize = 8;
 
-/// The least singularity margin of the sweep (Cor. 7; see the module notes), or the
+/// The fold check of a sweep (Cor. 7): the least singularity margin where it was measured,
+/// and the curve pieces known not to fold from the sufficient bound 1 − κ_max·max‖c‖ > 0,
+/// whose margin is measured when asked for ([`Margins::least`]: the report's figure).
+#[derive(Clone, Debug)]
+pub(crate) struct Margins {
+    measured: f64,
+    /// The spines and frames of the curve pieces not measured yet.
+    deferred: Vec<(PiecewiseCurve, RationalFrames)>,
+    /// The profile's segments, as the analysis takes them.
+    chain: PiecewiseCurve,
+}
+
+impl Margins {
+    /// The least singularity margin of the sweep.
+    pub fn least(&self) -> f64 {
+        self.deferred
+            .iter()
+            .map(|(spine, frames)| {
+                ProfileSurface::with_adapted_frames(spine, frames, &self.chain)
+                    .expect("checked while building")
+                    .least_margin()
+                    .0
+            })
+            .fold(self.measured, f64::min)
+    }
+}
+
+/// The fold check of the sweep (Cor. 7; see the module notes): its margins, or the
 /// refusal naming the edge or joint where the profile reaches past the centre of
 /// curvature. `unit` converts lengths to the caller's units for messages.
 pub(crate) fn singularity_margin(
     transport: &Transport,
     profile: &Profile,
     unit: f64,
-) -> Result<f64> {
+) -> Result<Margins> {
     let mut least = 1.0f64;
+    let mut deferred = Vec::new();
     // The support function in every arc's and miter's direction, from one preparation.
     let table = profile.support_table();
     // Curve pieces scan the whole profile at once: one spine evaluation per sample.
@@ -642,6 +670,10 @@ pub(crate) fn singularity_margin(
             (_, PieceFrame::Rational(frames)) => {
                 let analysis = ProfileSurface::with_adapted_frames(&framed.spine, frames, &chain)
                     .with_context(|| format!("edge {}", piece.edge))?;
+                if analysis.bound_margin() > 0.0 {
+                    deferred.push((framed.spine.clone(), frames.clone()));
+                    continue;
+                }
                 let (margin, _, v) = analysis.least_margin();
                 if margin <= 0.0 {
                     if let Geometry::Arc(arc) = &piece.geometry {
@@ -665,7 +697,11 @@ pub(crate) fn singularity_margin(
         };
         least = least.min(margin);
     }
-    Ok(least)
+    Ok(Margins {
+        measured: least,
+        deferred,
+        chain,
+    })
 }
 
 fn fold_at_arc(piece: &Piece, radius: f64, reach: f64, unit: f64) -> crate::Error {

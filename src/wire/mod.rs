@@ -224,13 +224,13 @@ pub fn sweep_wire(
             units,
         },
     )?;
-    let margin = frame::singularity_margin(&transport, &profile, scale)?;
+    let margins = frame::singularity_margin(&transport, &profile, scale)?;
     brep::build(
         &transport,
         &profile,
         options.solid,
         units,
-        margin,
+        margins,
         options.join_tolerance * size_n,
     )
 }

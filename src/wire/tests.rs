@@ -633,6 +633,10 @@ fn the_singularity_margin_along_a_curve_is_the_whole_profiles() {
     let side = if a < b { d } else { -d };
     let (with_hole, _) = toward(side, &[off(side, 0.1)]).unwrap();
     assert!((with_hole - inner).abs() < 1e-12, "{with_hole} vs {inner}");
+    // Far out on the outer side: the bound 1 − κ_max·max‖c‖ < 0 says nothing, the margin
+    // is measured while building: g > 1 everywhere, and the report gives at most 1.
+    let (far, _) = toward(-side * (1.5 / kappa) / d, &[]).unwrap();
+    assert_eq!(far, 1.0);
     // Past the centre of curvature (1/κ_max ≈ {1/kappa}) on the inner side: refused.
     let e = toward(side * (1.2 / kappa) / d, &[]).unwrap_err();
     assert!(

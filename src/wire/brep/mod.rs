@@ -16,11 +16,11 @@
 //! An open wire gets a planar cap at each end, bounded by the profile's loops there.
 //!
 //! The report's max |cos| between parameter lines is measured when the report is first
-//! asked for (a diagnostic the construction does not need: a third of a helix's build), in
-//! internal coordinates again, on the lines u = i/8 of every patch: along the lines and arcs (degree ≤ 2 in v) as a bound over the whole line from
-//! the Bernstein coefficients of polynomials in v (see `line_cosine_bound`), which costs
-//! less than sampling and misses nothing between samples; along PH pieces (degree 9) by 9
-//! samples per line.
+//! asked for (a diagnostic the construction does not need: a third of a helix's build), on
+//! the surfaces as built, on the lines u = i/8 of every patch: along the lines and arcs
+//! (degree ≤ 2 in v) as a bound over the whole line from the Bernstein coefficients of
+//! polynomials in v (see `line_cosine_bound`), which costs less than sampling and misses
+//! nothing between samples; along PH pieces (degree 9) by 9 samples per line.
 //!
 //! Topology. Stations k = 0 … M separate the M pieces (a closed wire's station M is station
 //! 0, its profile edges turned onto one another by the closing turn). Section edges lie at
@@ -34,7 +34,7 @@
 
 use super::clearance::{self_contact, Contact, Tubes};
 use super::edge::Geometry;
-use super::frame::{arc_numerators, PieceFrame, Transport, CLOSURE_ROUND_OFF};
+use super::frame::{arc_numerators, Margins, PieceFrame, Transport, CLOSURE_ROUND_OFF};
 use super::profile::{EdgeImage, Profile};
 use crate::bezier::{
     NurbsCurve, NurbsSurface, PiecewiseCurve, PiecewiseSurface, RationalBezierCurve,
@@ -139,6 +139,14 @@ pub struct Shape {
     built: SweepReport,
     /// The whole report, made on first request.
     report: OnceLock<SweepReport>,
+    /// The fold check's margins, some measured on request.
+    margins: Margins,
+    /// The lateral surfaces in the coordinates they were built in, for the report's
+    /// parameter-line cosine (measured on request as it would be at build time: the same
+    /// figure at every scale and position; the caller's surfaces mapped back carry the
+    /// rounding of the placement, which the sampled cosine of a twisted face amplifies to
+    /// 1e-9).
+    internal: Vec<PiecewiseSurface>,
     spine: Vec<PiecewiseCurve>,
     /// The map from the coordinates the sweep was built in to the caller's.
     placement: Similarity,
@@ -157,29 +165,23 @@ impl Shape {
 
     /// The accuracy figures of the sweep.
     ///
-    /// The largest cosine between parameter lines is measured on the lateral faces when the
+    /// The largest cosine between parameter lines, and the singularity margin along curve
+    /// pieces the construction knew to be positive from a bound, are measured when the
     /// report is first asked for.
     pub fn report(&self) -> &SweepReport {
         self.report.get_or_init(|| SweepReport {
             max_parameter_cosine: self.max_parameter_cosine(),
+            singularity_margin: self.margins.least(),
             ..self.built
         })
     }
 
-    /// The report's largest cosine between parameter lines, in internal coordinates (the
-    /// bound's products of coordinates under- or overflow at extreme scales).
+    /// The report's largest cosine between parameter lines, on the surfaces as built.
     fn max_parameter_cosine(&self) -> f64 {
         let mut bases = CosineBases::new();
-        self.faces
+        self.internal
             .iter()
-            .filter_map(|face| face.surface.clone())
-            .map(|s| {
-                let internal = self
-                    .placement
-                    .surface_to_internal(s)
-                    .expect("internal coordinates are about 1");
-                max_parameter_cosine(&internal, &mut bases)
-            })
+            .map(|s| max_parameter_cosine(s, &mut bases))
             .fold(0.0, f64::max)
     }
 
@@ -368,7 +370,7 @@ pub(crate) fn build(
     profile: &Profile,
     solid: bool,
     placement: Similarity,
-    margin: f64,
+    margins: Margins,
     gap: f64,
 ) -> Result<Shape> {
     let m = transport.pieces.len();
@@ -396,14 +398,14 @@ pub(crate) fn build(
     let joint_gap = joint_gap(&normalized) * placement.scale;
     // In the caller's coordinates.
     let surfaces: Vec<Vec<Vec<PiecewiseSurface>>> = normalized
-        .into_iter()
+        .iter()
         .map(|loops| {
             loops
-                .into_iter()
+                .iter()
                 .map(|faces| {
                     faces
-                        .into_iter()
-                        .map(|s| placement.surface_to_user(s))
+                        .iter()
+                        .map(|s| placement.surface_to_user(s.clone()))
                         .collect()
                 })
                 .collect::<Result<_>>()
@@ -471,13 +473,14 @@ pub(crate) fn build(
             .fold(0.0, f64::max),
         // Measured on request (Shape::report).
         max_parameter_cosine: f64::NAN,
-        singularity_margin: margin,
+        // Measured on request (Shape::report) along curve pieces known not to fold.
+        singularity_margin: f64::NAN,
         face_count: faces.len(),
         corner_turn: corner_turn(transport),
         seam_gap,
         joint_gap,
     };
-    Ok(Shape {
+    let shape = Shape {
         faces,
         brep: Brep {
             vertices: topology.vertices,
@@ -488,13 +491,16 @@ pub(crate) fn build(
         solid: closed_shell,
         built,
         report: OnceLock::new(),
+        margins,
+        internal: normalized.into_iter().flatten().flatten().collect(),
         spine: transport
             .pieces
             .iter()
             .map(|p| placement.curve_to_user(&p.spine))
             .collect(),
         placement,
-    })
+    };
+    Ok(shape)
 }
 
 /// The refusal of a sweep that touches itself, in the caller's units.
