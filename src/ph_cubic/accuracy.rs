@@ -35,48 +35,77 @@ pub struct AngleErrors {
 /// The angle errors of `frames` (rational frames along `spline`, e.g. from
 /// `ph_rational_rmf`) against the exact RMF of the PH cubic spline.
 pub fn angle_errors(spline: &PhSpline, frames: &RationalFrames) -> Result<AngleErrors> {
-    let (lo, hi) = spline.domain();
-    let fb = frames.breaks();
-    if fb[0] != lo || fb[fb.len() - 1] != hi || spline.breaks().iter().any(|b| !fb.contains(b)) {
-        return invalid!("the frames do not belong to the spline: their breakpoints differ");
+    Ok(AngleCheck::new(spline, frames)?.errors())
+}
+
+/// The comparison of frames with the exact RMF, checked and prepared (what can refuse:
+/// frames of another spline, a spline whose exact RMF cannot be continued across a joint)
+/// and measured apart ([`AngleCheck::errors`], which cannot fail): a wire sweep prepares
+/// it while building and measures it when its report is asked for.
+#[derive(Clone, Debug)]
+pub(crate) struct AngleCheck {
+    exact: ExactRmf,
+    frames: RationalFrames,
+    segments: usize,
+}
+
+impl AngleCheck {
+    pub(crate) fn new(spline: &PhSpline, frames: &RationalFrames) -> Result<Self> {
+        let (lo, hi) = spline.domain();
+        let fb = frames.breaks();
+        if fb[0] != lo || fb[fb.len() - 1] != hi || spline.breaks().iter().any(|b| !fb.contains(b))
+        {
+            return invalid!("the frames do not belong to the spline: their breakpoints differ");
+        }
+        Ok(Self {
+            exact: ExactRmf::new(spline, frames.frame(lo).f2, 0.0)?,
+            frames: frames.clone(),
+            segments: spline.segments().len(),
+        })
     }
-    let exact = ExactRmf::new(spline, frames.frame(lo).f2, 0.0)?;
-    let raw = |t: f64| angle_about_tangent(&exact.frame(t), &frames.frame(t));
-    let samples = grid_parameters(fb, SAMPLES_PER_PIECE);
-    let unwrapped = unwrap(samples.iter().map(|&t| raw(t)));
-    let twist = match frames.turning() {
-        Turning::Twisted { total } => total,
-        Turning::RotationMinimizing | Turning::Unknown => 0.0,
-    };
-    let total = exact.total_length();
-    let error_near = |t: f64, reference: f64| {
-        let turned = reference + wrap(raw(t) - reference);
-        turned - twist * exact.arc_length_at(t) / total
-    };
-    let mut worst = vec![(0.0f64, 0usize); spline.segments().len()];
-    for (i, (&t, &angle)) in samples.iter().zip(&unwrapped).enumerate() {
-        let (k, _) = exact.locate(t);
-        let e = (angle - twist * exact.arc_length_at(t) / total).abs();
-        if e > worst[k].0 {
-            worst[k] = (e, i);
+
+    /// The angles, sampled on every frame piece and refined about the largest one of each
+    /// spline segment.
+    pub(crate) fn errors(&self) -> AngleErrors {
+        let (exact, frames) = (&self.exact, &self.frames);
+        let fb = frames.breaks();
+        let raw = |t: f64| angle_about_tangent(&exact.frame(t), &frames.frame(t));
+        let samples = grid_parameters(fb, SAMPLES_PER_PIECE);
+        let unwrapped = unwrap(samples.iter().map(|&t| raw(t)));
+        let twist = match frames.turning() {
+            Turning::Twisted { total } => total,
+            Turning::RotationMinimizing | Turning::Unknown => 0.0,
+        };
+        let total = exact.total_length();
+        let error_near = |t: f64, reference: f64| {
+            let turned = reference + wrap(raw(t) - reference);
+            turned - twist * exact.arc_length_at(t) / total
+        };
+        let mut worst = vec![(0.0f64, 0usize); self.segments];
+        for (i, (&t, &angle)) in samples.iter().zip(&unwrapped).enumerate() {
+            let (k, _) = exact.locate(t);
+            let e = (angle - twist * exact.arc_length_at(t) / total).abs();
+            if e > worst[k].0 {
+                worst[k] = (e, i);
+            }
+        }
+        let per_segment: Vec<f64> = worst
+            .iter()
+            .map(|&(e, i)| {
+                let (a, b) = (
+                    samples[i.saturating_sub(1)],
+                    samples[(i + 1).min(samples.len() - 1)],
+                );
+                let refined = minimize_bracketed(|t| -error_near(t, unwrapped[i]).abs(), a, b, 0.0);
+                e.max(-refined.value)
+            })
+            .collect();
+        AngleErrors {
+            max: per_segment.iter().fold(0.0, |m: f64, &e| m.max(e)),
+            per_segment,
+            twist,
         }
     }
-    let per_segment: Vec<f64> = worst
-        .iter()
-        .map(|&(e, i)| {
-            let (a, b) = (
-                samples[i.saturating_sub(1)],
-                samples[(i + 1).min(samples.len() - 1)],
-            );
-            let refined = minimize_bracketed(|t| -error_near(t, unwrapped[i]).abs(), a, b, 0.0);
-            e.max(-refined.value)
-        })
-        .collect();
-    Ok(AngleErrors {
-        max: per_segment.iter().fold(0.0, |m: f64, &e| m.max(e)),
-        per_segment,
-        twist,
-    })
 }
 
 /// The angle in (−π, π] differing from `a` by a multiple of 2π.

@@ -36,7 +36,7 @@ use crate::frames::rational::RationalFrames;
 use crate::frames::Frame;
 use crate::math::{normal_plane_unit, orthogonalized, orthonormal_to, signed_angle};
 use crate::model::{Arc, Similarity};
-use crate::ph_cubic::accuracy::angle_errors;
+use crate::ph_cubic::accuracy::AngleCheck;
 use crate::ph_cubic::analysis::ProfileSurface;
 use crate::ph_cubic::approximate::ph_spline_approximate;
 use crate::ph_cubic::base_frame::{FrameNumerators, FramePieces};
@@ -95,8 +95,12 @@ pub(crate) struct Framed {
     pub length: f64,
     /// Distance of the PH spline from the curve (0 for lines and arcs).
     pub distance: f64,
-    /// Largest angle between the frames and the exact (twisted) RMF.
+    /// Largest angle between the frames and the exact (twisted) RMF, where it is known
+    /// while building (lines and arcs).
     pub angle_error: f64,
+    /// Along a curve: the comparison of its frames with the PH spline's exact RMF, prepared
+    /// (the angle is measured for the report, on request).
+    pub angle_check: Option<AngleCheck>,
     /// Miter planes (point, unit normal) cutting a straight leg at its start and end.
     pub miters: [Option<(DVec3, DVec3)>; 2],
 }
@@ -374,6 +378,7 @@ fn frame_piece(
     let tangent = geometry.start_tangent();
     let f2 = orthogonalized(f2, tangent).normalize();
     let start = Frame::from_tangent_normal(tangent, f2);
+    let mut angle_check = None;
     let (frame, end, angle_error) = match geometry {
         Geometry::Line { .. } if turn == 0.0 => {
             (PieceFrame::Constant { f2, f3: start.f3 }, start, 0.0)
@@ -413,9 +418,9 @@ fn frame_piece(
                 ..RmfOptions::rmf(f2)
             };
             let frames = ph_rational_rmf(ph, &options)?.framed.into_parts().1;
-            let error = angle_errors(ph, &frames)?.max;
+            angle_check = Some(AngleCheck::new(ph, &frames)?);
             let end = frames.frame(ph.domain().1);
-            (PieceFrame::Rational(frames), end, error)
+            (PieceFrame::Rational(frames), end, 0.0)
         }
     };
     let Spine {
@@ -432,6 +437,7 @@ fn frame_piece(
         length,
         distance,
         angle_error,
+        angle_check,
         miters,
     })
 }

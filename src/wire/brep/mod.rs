@@ -47,6 +47,7 @@ use crate::math::{binomial, GaussLegendre};
 use crate::mesh::grid_parameters;
 use crate::model::Similarity;
 use crate::model::{Brep, BrepBound, BrepEdge, BrepFace, BrepSurface, BrepUse, PCurve};
+use crate::ph_cubic::accuracy::AngleCheck;
 use crate::sweep::sweep_along;
 use glam::{DVec3, DVec4};
 use std::sync::OnceLock;
@@ -141,6 +142,9 @@ pub struct Shape {
     report: OnceLock<SweepReport>,
     /// The fold check's margins, some measured on request.
     margins: Margins,
+    /// The comparisons of the frames along curve pieces with their exact RMFs, measured
+    /// on request.
+    angle_checks: Vec<AngleCheck>,
     /// The lateral surfaces in the coordinates they were built in, for the report's
     /// parameter-line cosine (measured on request as it would be at build time: the same
     /// figure at every scale and position; the caller's surfaces mapped back carry the
@@ -165,13 +169,19 @@ impl Shape {
 
     /// The accuracy figures of the sweep.
     ///
-    /// The largest cosine between parameter lines, and the singularity margin along curve
-    /// pieces the construction knew to be positive from a bound, are measured when the
-    /// report is first asked for.
+    /// The largest cosine between parameter lines, the angle between the frames and the
+    /// exact RMF along curve pieces, and the singularity margin along curve pieces the
+    /// construction knew to be positive from a bound, are measured when the report is
+    /// first asked for.
     pub fn report(&self) -> &SweepReport {
         self.report.get_or_init(|| SweepReport {
             max_parameter_cosine: self.max_parameter_cosine(),
             singularity_margin: self.margins.least(),
+            rmf_angle_error: self
+                .angle_checks
+                .iter()
+                .map(|check| check.errors().max)
+                .fold(self.built.rmf_angle_error, f64::max),
             ..self.built
         })
     }
@@ -492,6 +502,11 @@ pub(crate) fn build(
         built,
         report: OnceLock::new(),
         margins,
+        angle_checks: transport
+            .pieces
+            .iter()
+            .filter_map(|p| p.angle_check.clone())
+            .collect(),
         internal: normalized.into_iter().flatten().flatten().collect(),
         spine: transport
             .pieces
