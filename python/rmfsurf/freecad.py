@@ -268,9 +268,8 @@ def _wire_curve(wire: Any, origin: np.ndarray, f2: np.ndarray, f3: np.ndarray, n
     pieces = []
     for e in edges:
         d = _part_curve_data(_edge_bspline(e, degree=degree))
-        local = d.poles - origin
-        pieces.append(NurbsCurve(d.degree, np.c_[local @ f2, local @ f3, np.zeros(len(local))],
-                                 d.weights, d.knots))
+        pieces.append(NurbsCurve(d.degree, _core.in_plane(d.poles, origin, f2, f3), d.weights,
+                                 d.knots))
     joined = join_nurbs(pieces, name, tolerance)
     return Curve.from_nurbs(joined.degree, joined.poles, joined.knots, joined.weights)
 
@@ -322,7 +321,7 @@ def profile_curves(profile: Any, origin: ArrayLike, tangent: ArrayLike, toleranc
     if not isinstance(face.Surface, Part.Plane):
         raise ValueError("profile: not planar")
     normal = np.array(tuple(face.Surface.Axis))
-    tilt = np.linalg.norm(np.cross(normal, t))
+    tilt = np.linalg.norm(_core.cross(normal, t))
     if tilt > 1e-6:
         raise ValueError("profile: its plane must be normal to the wire at the wire's start "
                          "(it is tilted by %.3g degrees)" % np.degrees(np.arcsin(min(tilt, 1))))
@@ -335,7 +334,7 @@ def profile_curves(profile: Any, origin: ArrayLike, tangent: ArrayLike, toleranc
     x = np.array(tuple(x_axis if x_axis is not None else _plane_x_axis(face.Surface)))
     f2 = x - np.dot(x, t) * t
     f2 /= np.linalg.norm(f2)
-    f3 = np.cross(t, f2)
+    f3 = _core.cross(t, f2)
     outer = _wire_curve(face.OuterWire, o, f2, f3, "profile", tolerance)
     holes = [_wire_curve(w, o, f2, f3, "profile hole %d" % i, tolerance)
              for i, w in enumerate(w for w in face.Wires if not w.isSame(face.OuterWire))]

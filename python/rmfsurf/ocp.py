@@ -318,14 +318,15 @@ def _profile_plane(profile: Any, tolerance: float) -> Tuple[Any, List[Any], gp_P
 def _wire_curve(wire: Any, origin: np.ndarray, f2: np.ndarray, f3: np.ndarray,
                 name: str, tolerance: float) -> Curve:
     """A closed wire as one curve in the (f2, f3) coordinates about origin."""
-    edges = _ordered_edges(wire)
-    degree = max(_edge_bspline(e).Degree() for e in edges)
+    bsplines = [_edge_bspline(e) for e in _ordered_edges(wire)]
+    degree = max(b.Degree() for b in bsplines)
     pieces = []
-    for e in edges:
-        d = _bspline_data(_edge_bspline(e, degree))
-        local = d.poles - origin
-        planar = np.c_[local @ f2, local @ f3, np.zeros(len(local))]
-        pieces.append(NurbsCurve(d.degree, planar, d.weights, d.knots))
+    for b in bsplines:
+        if b.Degree() < degree:
+            b.IncreaseDegree(degree)
+        d = _bspline_data(b)
+        pieces.append(NurbsCurve(d.degree, _core.in_plane(d.poles, origin, f2, f3), d.weights,
+                                 d.knots))
     joined = join_nurbs(pieces, name, tolerance)
     return Curve.from_nurbs(joined.degree, joined.poles, joined.knots, joined.weights)
 
@@ -341,7 +342,7 @@ def profile_curves(profile: Any, origin: ArrayLike, tangent: ArrayLike, toleranc
     outer, inner, plane = _profile_plane(profile, tolerance)
     axis = plane.Position()
     normal = np.array(axis.Direction().Coord())
-    tilt = np.linalg.norm(np.cross(normal, t))
+    tilt = np.linalg.norm(_core.cross(normal, t))
     if tilt > 1e-6:
         raise ValueError("profile: its plane must be normal to the path at the path's start "
                          "(it is tilted by %.3g degrees)" % np.degrees(np.arcsin(min(tilt, 1))))
@@ -352,7 +353,7 @@ def profile_curves(profile: Any, origin: ArrayLike, tangent: ArrayLike, toleranc
     x = np.array(axis.XDirection().Coord())
     f2 = x - np.dot(x, t) * t
     f2 /= np.linalg.norm(f2)
-    f3 = np.cross(t, f2)
+    f3 = _core.cross(t, f2)
     outer_curve = _wire_curve(outer, origin, f2, f3, "profile", tolerance)
     holes = [_wire_curve(w, origin, f2, f3, "profile hole %d" % i, tolerance)
              for i, w in enumerate(inner)]
@@ -369,10 +370,11 @@ def _cap(loops: List[Curve], origin: np.ndarray, normal: np.ndarray) -> Any:
     return maker.Face()
 
 
-def _read_brep(text: str) -> TopoDS_Shape:
-    """The shape of an OpenCascade B-rep text, as the kernel reads it."""
+def _read_brep(text: Any) -> TopoDS_Shape:
+    """The shape of an OpenCascade B-rep text (str or bytes), as the kernel reads it."""
+    data = text if isinstance(text, bytes) else text.encode("ascii")
     raw = TopoDS_Shape()
-    BRepTools.Read_s(raw, io.BytesIO(text.encode("ascii")), BRep_Builder())
+    BRepTools.Read_s(raw, io.BytesIO(data), BRep_Builder())
     return raw
 
 
@@ -384,7 +386,7 @@ def shape(value: Shape, tolerance: float = 1e-6) -> Any:
     them: nothing is sewn or healed. `tolerance` (finite, > 0) is checked and otherwise
     unused: the library's shape needs no sewing."""
     _core.finite(tolerance, "tolerance", positive=True)
-    raw = _read_brep(_core.instance(value, "shape", Shape, "an rmfsurf.Shape").occ_brep())
+    raw = _read_brep(_core.instance(value, "shape", Shape, "an rmfsurf.Shape")._occ_brep_bytes())
     kind = raw.ShapeType()
     if kind == TopAbs_SOLID:
         return _as_solid(raw)

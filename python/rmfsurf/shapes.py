@@ -19,6 +19,9 @@ import numpy as np
 
 from . import _core
 from ._core import call, ffi, lib
+
+# Buffers the library fills whole: not cleared first (a helix's B-rep text is over 1 MB).
+_uncleared = ffi.new_allocator(should_clear_after_alloc=False)
 from .curves import ArrayLike, Curve, as_curve
 from .surfaces import Surface
 
@@ -176,11 +179,15 @@ class Shape:
         ``BytesIO``, FreeCAD's ``Part.Shape().importBrepFromString``): the kernel builds
         the solid or shell as it is, shared edges and faces' senses included, with no
         sewing or healing."""
+        return self._occ_brep_bytes().decode("ascii")
+
+    def _occ_brep_bytes(self) -> bytes:
+        """:meth:`occ_brep` as the bytes a kernel reads, copied once out of the library."""
         n = ffi.new("size_t *")
         call("rmf_shape_occ_brep", self._ptr, ffi.NULL, 0, n)
-        text = ffi.new("char[]", n[0] + 1)
+        text = _uncleared("char[]", n[0] + 1)
         call("rmf_shape_occ_brep", self._ptr, text, n[0] + 1, n)
-        return ffi.string(text, n[0]).decode("ascii")
+        return ffi.unpack(text, n[0])
 
     def __repr__(self) -> str:
         return "<rmfsurf.Shape %d faces%s>" % (self.face_count, ", solid" if self.is_solid else "")
