@@ -163,6 +163,8 @@ class Shape:
         return result
 
     def report(self) -> SweepReport:
+        """The sweep's accuracy figures; the first call measures those the construction
+        did not need (rmf_shape_report)."""
         r = ffi.new("RmfSweepReport *")
         call("rmf_shape_report", self._ptr, r)
         return SweepReport(r.spine_distance, r.rmf_angle_error, r.max_parameter_cosine,
