@@ -2,7 +2,7 @@
 //! frames, and Hermite data (the RRMF paper's Example 1, pseudo-random and nearly
 //! degenerate data) with the checks every RRMF quintic solution must pass.
 
-use crate::bezier::PiecewiseCurve;
+use crate::bezier::{PiecewiseCurve, PiecewiseSurface};
 use crate::curve::{uniform_parameters, ParametricCurve};
 use crate::frames::double_reflection::DoubleReflectionRmf;
 use crate::frames::frenet::frenet_frame;
@@ -334,30 +334,17 @@ pub(crate) fn assert_closed_oriented(brep: &Brep) {
 /// Every use's parameter curve on a NURBS face, mapped by the surface, is its edge's curve
 /// at 9 parameters, to 1e-9 of `size`.
 fn assert_pcurves_on_edges(brep: &Brep, size: f64) {
+    let model = Prepared::new(brep);
     for (k, face) in brep.faces.iter().enumerate() {
-        let BrepSurface::Nurbs(surface) = &face.surface else {
+        if let BrepSurface::Plane { .. } = face.surface {
             continue;
-        };
-        let surface = surface.to_piecewise().expect("a valid surface");
+        }
         for u in face.bounds.iter().flat_map(|b| &b.uses) {
-            let edge = &brep.edges[u.edge];
-            let curve = edge.curve.to_piecewise().expect("a valid curve");
-            let (a, b) = (
-                edge.curve.knots[0],
-                edge.curve.knots[edge.curve.knots.len() - 1],
-            );
             for j in 0..=8 {
-                let t = a + (b - a) * j as f64 / 8.0;
-                let (x, y) = match u.pcurve.as_ref().expect("a pcurve on a NURBS face") {
-                    PCurve::Line { origin, direction } => {
-                        (origin.0 + t * direction.0, origin.1 + t * direction.1)
-                    }
-                    PCurve::Curve(c) => {
-                        let p = c.to_piecewise().expect("a valid pcurve").eval(t);
-                        (p.x, p.y)
-                    }
-                };
-                let gap = surface.eval(x, y).distance(curve.eval(t));
+                let (t, point) = model.edge_at(u.edge, j as f64 / 8.0);
+                let pcurve = u.pcurve.as_ref().expect("a pcurve on a NURBS face");
+                let (x, y) = pcurve_at(pcurve, t);
+                let gap = model.surface_at(k, x, y).distance(point);
                 assert!(
                     gap <= 1e-9 * size,
                     "face {k}, edge {}: the pcurve is {gap:e} off the edge at t = {t}",
@@ -368,38 +355,81 @@ fn assert_pcurves_on_edges(brep: &Brep, size: f64) {
     }
 }
 
-/// A point of a face's surface at the parameters (x, y).
-fn surface_point(surface: &BrepSurface, x: f64, y: f64) -> DVec3 {
-    match surface {
-        BrepSurface::Nurbs(s) => s.to_piecewise().expect("a valid surface").eval(x, y),
-        BrepSurface::Plane {
-            origin,
-            normal,
-            x_axis,
-        } => *origin + x * *x_axis + y * normal.cross(*x_axis),
+/// A B-rep's curves and surfaces converted once for the checks that evaluate them.
+struct Prepared<'a> {
+    brep: &'a Brep,
+    curves: Vec<PiecewiseCurve>,
+    /// The NURBS faces' surfaces (None for planes).
+    surfaces: Vec<Option<PiecewiseSurface>>,
+}
+
+impl<'a> Prepared<'a> {
+    fn new(brep: &'a Brep) -> Self {
+        Self {
+            brep,
+            curves: brep
+                .edges
+                .iter()
+                .map(|e| e.curve.to_piecewise().expect("a valid curve"))
+                .collect(),
+            surfaces: brep
+                .faces
+                .iter()
+                .map(|f| match &f.surface {
+                    BrepSurface::Nurbs(s) => Some(s.to_piecewise().expect("a valid surface")),
+                    BrepSurface::Plane { .. } => None,
+                })
+                .collect(),
+        }
+    }
+
+    /// Edge `e` at the fraction `f` of its parameter range: the parameter and the point.
+    fn edge_at(&self, e: usize, f: f64) -> (f64, DVec3) {
+        let knots = &self.brep.edges[e].curve.knots;
+        let (a, b) = (knots[0], knots[knots.len() - 1]);
+        let t = a + (b - a) * f;
+        (t, self.curves[e].eval(t))
+    }
+
+    /// The surface of face `face` at the parameters (x, y).
+    fn surface_at(&self, face: usize, x: f64, y: f64) -> DVec3 {
+        match (&self.surfaces[face], &self.brep.faces[face].surface) {
+            (Some(s), _) => s.eval(x, y),
+            (
+                None,
+                BrepSurface::Plane {
+                    origin,
+                    normal,
+                    x_axis,
+                },
+            ) => *origin + x * *x_axis + y * normal.cross(*x_axis),
+            (None, BrepSurface::Nurbs(_)) => unreachable!("NURBS faces are prepared"),
+        }
+    }
+
+    /// The point of a use's edge at the fraction `f` of its parameter range, and that of
+    /// its curve in the face's parameter plane there, mapped by the face's surface.
+    fn use_points(&self, face: usize, use_: &BrepUse, f: f64) -> (DVec3, Option<DVec3>) {
+        let (t, point) = self.edge_at(use_.edge, f);
+        let on_face = use_.pcurve.as_ref().map(|p| {
+            let (x, y) = pcurve_at(p, t);
+            self.surface_at(face, x, y)
+        });
+        (point, on_face)
     }
 }
 
-/// The point of an edge at the fraction `f` of its parameter range, and of its curve in a
-/// face's parameter plane there, mapped by the face's surface.
-fn edge_points(brep: &Brep, face: usize, use_: &BrepUse, f: f64) -> (DVec3, Option<DVec3>) {
-    let curve = &brep.edges[use_.edge].curve;
-    let (a, b) = (curve.knots[0], curve.knots[curve.knots.len() - 1]);
-    let t = a + (b - a) * f;
-    let on_face = use_.pcurve.as_ref().map(|p| {
-        let (x, y) = match p {
-            PCurve::Line { origin, direction } => {
-                (origin.0 + t * direction.0, origin.1 + t * direction.1)
-            }
-            PCurve::Curve(c) => {
-                let p = c.to_piecewise().expect("a valid pcurve").eval(t);
-                (p.x, p.y)
-            }
-        };
-        surface_point(&brep.faces[face].surface, x, y)
-    });
-    let point = curve.to_piecewise().expect("a valid curve").eval(t);
-    (point, on_face)
+/// A parameter curve at the edge curve's parameter t.
+fn pcurve_at(pcurve: &PCurve, t: f64) -> (f64, f64) {
+    match pcurve {
+        PCurve::Line { origin, direction } => {
+            (origin.0 + t * direction.0, origin.1 + t * direction.1)
+        }
+        PCurve::Curve(c) => {
+            let p = c.to_piecewise().expect("a valid pcurve").eval(t);
+            (p.x, p.y)
+        }
+    }
 }
 
 /// `moved` is `unit` scaled by `scale` about the origin and then moved by `shift`: the same
@@ -433,6 +463,7 @@ pub(crate) fn assert_similar_breps(unit: &Brep, moved: &Brep, scale: f64, shift:
         assert_eq!(a.curve.degree, b.curve.degree, "edge {k}");
     }
     assert_eq!(unit.faces.len(), moved.faces.len());
+    let prepared = (Prepared::new(unit), Prepared::new(moved));
     for (k, (a, b)) in unit.faces.iter().zip(&moved.faces).enumerate() {
         assert_eq!(a.same_sense, b.same_sense, "face {k}");
         assert_eq!(a.bounds.len(), b.bounds.len(), "face {k}");
@@ -444,8 +475,8 @@ pub(crate) fn assert_similar_breps(unit: &Brep, moved: &Brep, scale: f64, shift:
                 assert_eq!(u.pcurve.is_some(), v.pcurve.is_some(), "face {k}");
                 for j in 0..=8 {
                     let f = j as f64 / 8.0;
-                    let (pa, sa) = edge_points(unit, k, u, f);
-                    let (pb, sb) = edge_points(moved, k, v, f);
+                    let (pa, sa) = prepared.0.use_points(k, u, f);
+                    let (pb, sb) = prepared.1.use_points(k, v, f);
                     near(pa, pb, &format!("edge {} at {f}", u.edge));
                     if let (Some(sa), Some(sb)) = (sa, sb) {
                         near(sa, sb, &format!("face {k}, edge {} at {f}", u.edge));

@@ -34,6 +34,6 @@ pub use secant::secant_refine;
 pub use units::in_caller_units;
 pub use vector::{
     angle_between, bounding_diagonal, check_finite, check_point, check_unit_direction,
-    largest_coordinate, normal_plane_unit, orthogonalized, orthonormal_to, power_of_two_scale,
-    robust_length, robust_normalize, signed_angle, unit_scaled,
+    largest_coordinate, normal_plane_unit, orthogonalized, orthonormal_to, power_of_two_inverse,
+    power_of_two_scale, robust_length, robust_normalize, signed_angle, unit_scaled,
 };

@@ -136,9 +136,16 @@ pub fn unit_scaled(v: DVec3) -> DVec3 {
 /// 2⁻ᵏ with 2ᵏ nearest the largest component of `v` (1 for zero or non-finite vectors):
 /// multiplying by it is exact and brings the components near 1.
 pub fn power_of_two_scale(v: DVec3) -> f64 {
-    let largest = v.abs().max_element();
-    if largest > 0.0 && largest.is_finite() {
-        2f64.powi(-(largest.log2().round() as i32))
+    power_of_two_inverse(v.abs().max_element())
+}
+
+/// 2⁻ᵏ with 2ᵏ nearest |x| (1 for zero or non-finite x), k kept within ±1023 so that the
+/// factor is a finite, non-zero power of two (for subnormal |x| the factor 2¹⁰²³ still
+/// brings it to normal numbers): multiplying by it is exact.
+pub fn power_of_two_inverse(x: f64) -> f64 {
+    let x = x.abs();
+    if x > 0.0 && x.is_finite() {
+        2f64.powi((-x.log2().round()).clamp(-1023.0, 1023.0) as i32)
     } else {
         1.0
     }

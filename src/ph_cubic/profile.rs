@@ -5,7 +5,7 @@
 
 use crate::bezier::bernstein::{self, elevate_to, product, to_power};
 use crate::bezier::{PiecewiseCurve, RationalBezierCurve};
-use crate::math::{quadratic_roots, real_roots_in};
+use crate::math::{power_of_two_inverse, quadratic_roots, real_roots_in};
 use glam::DVec2;
 
 /// One profile segment c = (X, Y)/h on [0, 1]; polynomial segments keep h = 1 (degree 0),
@@ -100,7 +100,7 @@ impl ProfileSegment {
         if size == 0.0 || !size.is_finite() {
             return self.clone();
         }
-        let factor = 2f64.powi(-size.log2().round() as i32);
+        let factor = power_of_two_inverse(size);
         Self {
             x: self.x.iter().map(|c| c * factor).collect(),
             y: self.y.iter().map(|c| c * factor).collect(),
@@ -188,7 +188,7 @@ pub fn interior_roots(p: &[f64]) -> Vec<f64> {
         // Scaled by a power of two near 1/size (exact): b² − 4ac under- or overflows at
         // extreme scales.
         [c, b, a] => {
-            let f = 2f64.powi((-size.log2().round()).clamp(-1000.0, 1000.0) as i32);
+            let f = power_of_two_inverse(size);
             quadratic_roots(a * f, b * f, c * f)
         }
         _ => real_roots_in(&power, 0.0, 1.0),

@@ -490,7 +490,7 @@ pub(crate) fn build(
         seam_gap,
         joint_gap,
     };
-    let shape = Shape {
+    Ok(Shape {
         faces,
         brep: Brep {
             vertices: topology.vertices,
@@ -514,8 +514,7 @@ pub(crate) fn build(
             .map(|p| placement.curve_to_user(&p.spine))
             .collect(),
         placement,
-    };
-    Ok(shape)
+    })
 }
 
 /// The refusal of a sweep that touches itself, in the caller's units.
