@@ -15,7 +15,7 @@
  *    memory owned by the handle: do not free them; they stay valid until the handle is freed.
  */
 
-/* The capabilities, one Doxygen group each (the Topics page of scripts/api-docs). */
+/* The capabilities, one Doxygen group each (the Topics page of the C API in scripts/docs-site). */
 
 /**
  * \defgroup rmf_foundation Foundation

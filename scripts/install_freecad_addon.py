@@ -7,11 +7,15 @@ Environment (set by the shell script):
   RMFSURF_WHEEL         the wheel of the Python package rmfsurf (it carries librmfsurf)
   RMFSURF_ADDON_INTO    where to write the addon tree; empty: <user data>/Mod/RmfSurf
   RMFSURF_ADDON_CHECK   "1": do not install; check that the installed addon loads
+  RMFSURF_LICENSES      the folder of the license files (the repository's root)
+  RMFSURF_CFFI_WHEELS   a folder of cffi wheels, one per CPython version
 
 The addon tree is the addon folder with the wheel unpacked into it (rmfsurf/ and its
-dist-info): FreeCAD puts the addon's folder on sys.path when it starts, so the workbench,
-documents holding its features and the user's scripts all find `rmfsurf` there — one folder
-to install, update or delete, the library always the version the workbench was released
+dist-info), the license files package.xml names, and cffi's compiled backend
+(_cffi_backend.cpython-3X-*.so, one per CPython version, each Python loading its own):
+FreeCAD puts the addon's folder on sys.path when it starts, so the workbench, documents
+holding its features and the user's scripts all find `rmfsurf` there — one folder to
+install, update or delete, the library always the version the workbench was released
 with. freecadcmd exits 0 even when a script raises, so this one exits 1 itself.
 """
 
@@ -68,11 +72,18 @@ def check_platform(wheel):
                       % (os.path.basename(wheel), tag, here))
 
 
-def check_python_modules():
-    """The package's run-time needs in FreeCAD's own Python (FreeCAD brings NumPy; cffi's
-    backend is Debian's python3-cffi-backend)."""
+def bundled_backend_fits(wheels):
+    """Whether one of the cffi wheels to bundle is for this Python (cpXY)."""
+    tag = "-cp%d%d-" % sys.version_info[:2]
+    return any(tag in name for name in os.listdir(wheels))
+
+
+def check_python_modules(wheels):
+    """The package's run-time needs in FreeCAD's own Python: NumPy (FreeCAD brings it) and
+    cffi's backend, which the addon brings for CPython 3.8–3.13."""
     missing = []
-    for module in ("numpy", "_cffi_backend"):
+    needs = ("numpy",) if bundled_backend_fits(wheels) else ("numpy", "_cffi_backend")
+    for module in needs:
         try:
             __import__(module)
         except ImportError:
@@ -121,6 +132,33 @@ def unpack_wheel(wheel, target):
             os.chmod(path, os.stat(path).st_mode | 0o755)
 
 
+LICENSES = ("LICENSE-MIT", "LICENSE-APACHE")
+
+
+def copy_licenses(source, target):
+    for name in LICENSES:
+        shutil.copyfile(os.path.join(source, name), os.path.join(target, name))
+
+
+def unpack_cffi_backends(wheels, target):
+    """cffi's _cffi_backend extension from each cffi wheel in `wheels` into `target`, and
+    cffi's license as LICENSE-cffi."""
+    found = sorted(n for n in os.listdir(wheels) if n.startswith("cffi-") and n.endswith(".whl"))
+    if not found:
+        raise Refused("no cffi wheels in %s" % wheels)
+    for name in found:
+        with zipfile.ZipFile(os.path.join(wheels, name)) as archive:
+            for member in archive.namelist():
+                base = os.path.basename(member)
+                if "/" not in member and base.startswith("_cffi_backend.") and base.endswith(".so"):
+                    archive.extract(member, target)
+                    os.chmod(os.path.join(target, base), 0o755)
+                elif member.endswith(".dist-info/LICENSE") or member.endswith("licenses/LICENSE"):
+                    with archive.open(member) as src, \
+                            open(os.path.join(target, "LICENSE-cffi"), "wb") as dst:
+                        shutil.copyfileobj(src, dst)
+
+
 def version_of(addon):
     root = ElementTree.parse(os.path.join(addon, "package.xml")).getroot()
     namespace = root.tag[:root.tag.index("}") + 1] if root.tag.startswith("{") else ""
@@ -139,9 +177,11 @@ def install():
         raise Refused("the wheel is rmfsurf %s, the addon (package.xml) %s"
                       % (wheel_version, version_of(source)))
     check_platform(wheel)
-    check_python_modules()
+    check_python_modules(os.environ["RMFSURF_CFFI_WHEELS"])
     copy_addon(source, target)
     unpack_wheel(wheel, target)
+    copy_licenses(os.environ["RMFSURF_LICENSES"], target)
+    unpack_cffi_backends(os.environ["RMFSURF_CFFI_WHEELS"], target)
     say("FreeCAD %s, Python %d.%d, %s" % (".".join(FreeCAD.Version()[:3]),
                                           sys.version_info[0], sys.version_info[1],
                                           sysconfig.get_platform()))

@@ -21,7 +21,7 @@ pub trait ParametricCurve {
     /// The point and first derivative at `t` (inside the domain).
     fn point_derivative(&self, t: f64) -> Result<(DVec3, DVec3)>;
 
-    /// x, x', x'', x''' at `t`. The default differences x' ([`differenced_jet`]); curves
+    /// x, x', x'', x''' at `t`. The default differences x' (`differenced_jet`); curves
     /// that know their higher derivatives override it.
     fn jet(&self, t: f64) -> Result<[DVec3; 4]> {
         differenced_jet(self, t)

@@ -2,7 +2,7 @@
 //! generates from the sources. Regenerate it with
 //! `RMFSURF_BLESS_HEADER=1 cargo test --test header`.
 //!
-//! Its documentation is checked here too, without Doxygen (which `scripts/api-docs` runs):
+//! Its documentation is checked here too, without Doxygen (which `scripts/docs-site` runs):
 //! every function has `\since`, every function, type and constant is `\ingroup`ed in a group
 //! the header defines, and every parameter of every function has an `@param`, with no
 //! `@param` naming something that is not a parameter.

@@ -5,11 +5,13 @@
 //! | --- | --- |
 //! | `tests/c_suite.rs` | valgrind and AddressSanitizer + UBSan on `c_tests/abi_*.c`; OpenMesh and VTK (`c_tests/geometry_*.cpp`); the demo |
 //! | `tests/freecad.rs` | `freecadcmd` reading the tool's files, the Python package inside FreeCAD |
-//! | `tests/workbench.rs` | the FreeCAD workbench, headless and in the GUI under Xvfb |
+//! | `tests/workbench.rs` | the FreeCAD workbench, headless and in the GUI under Xvfb; the addon tree as the Addon Manager takes it |
 //! | `tests/openscad.rs` | `openscad` rendering the tool's `.scad` files |
 //! | `tests/opencascade.rs` | OpenCascade's kernel and STEP reader |
 //! | `tests/vtk_reader.rs` | VTK's `vtkXMLPolyDataReader` on the tool's `.vtp` files |
-//! | `tests/python.rs` | the Python package: `pip wheel`, `pip install`, pytest |
+//! | `tests/python.rs` | the Python package as published (`scripts/python-dist`: the manylinux wheel, the sdist), each installed, then pytest |
+//! | `tests/publish.rs` | the packages' metadata against the crate's (addresses, licenses) |
+//! | `tests/docs_site.rs` | `scripts/docs-site`: rustdoc, Doxygen, pdoc and the guide into one site, its links checked |
 //! | `tests/install.rs` | `scripts/install` and its consumers: CMake, pkg-config, make |
 //!
 //! `scripts/setup-debian test` installs what they run, and `scripts/test` runs them after

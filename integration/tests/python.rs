@@ -1,13 +1,14 @@
-//! The Python package (python/): built and installed the two ways users get it, then its
-//! test suite (python/tests, pytest) run against the installed copy.
+//! The Python package (python/): its distributions as published (scripts/python-dist), each
+//! installed the way users get it and then its test suite (python/tests, pytest) run
+//! against the installed copy:
 //!
-//!  - `pip install ./python` in a fresh virtual environment builds the library with
-//!    maturin (downloaded by pip) and installs it; `import rmfsurf` works and
-//!    `rmfsurf.__version__ == rmf_version()`;
-//!  - `pip wheel ./python` gives a wheel carrying the library; it is installed into the
+//!  - the manylinux wheel, carrying the library, linked against glibc 2.17's symbols (read
+//!    here from the library itself, not only from auditwheel's verdict), installed into the
 //!    test environment (scripts/python-env: build123d and OCP from PyPI) with no Rust
-//!    toolchain on the PATH, and pytest runs python/tests there: the API against the tests'
-//!    own NURBS evaluator, errors, freed handles, and the OCP adapter with build123d.
+//!    toolchain on the PATH;
+//!  - the sdist, installed by pip in a fresh virtual environment — pip fetches maturin,
+//!    which builds the library with Rust — with the tests' requirements beside it;
+//!    `rmfsurf.__version__ == rmf_version()`.
 //!
 //! pytest runs with RMFSURF_REQUIRE_ALL=1: python/tests/conftest.py then turns every skip
 //! (a module `pytest.importorskip` does not find, a `skipif` whose condition holds) into a
@@ -17,9 +18,9 @@
 
 mod support;
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::Command;
-use support::{maturin_lock, python_env, python_wheel, root, SETUP_HINT};
+use support::{python_dists, python_env, python_wheel, root, SETUP_HINT};
 
 /// A PATH with the virtual environment and the system's programs but no Rust toolchain.
 fn path_without_rust(venv: &std::path::Path) -> String {
@@ -37,6 +38,91 @@ fn path_without_rust(venv: &std::path::Path) -> String {
         );
     }
     path
+}
+
+/// Runs python/tests with the Python of `venv` (RMFSURF_REQUIRE_ALL: a skip fails); asserts
+/// that they pass.
+fn run_python_tests(venv: &Path, path: &str) {
+    let out = Command::new(venv.join("bin/python"))
+        .args(["-m", "pytest", "-q", "-s", "-rs", "-p", "no:cacheprovider"])
+        .current_dir(root().join("python/tests"))
+        .env("PATH", path)
+        .env("RMFSURF_REPOSITORY", root())
+        .env("RMFSURF_REQUIRE_ALL", "1")
+        .output()
+        .unwrap_or_else(|e| panic!("cannot run pytest ({e}): {SETUP_HINT}"));
+    print!("{}", String::from_utf8_lossy(&out.stdout));
+    eprint!("{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "the Python tests failed in {} ({})",
+        venv.display(),
+        out.status
+    );
+}
+
+/// The newest GLIBC_x.y symbol version the ELF file `library` needs (objdump -T).
+fn newest_glibc_symbol(library: &Path) -> (u32, u32) {
+    let out = Command::new("objdump")
+        .arg("-T")
+        .arg(library)
+        .output()
+        .unwrap_or_else(|e| panic!("cannot run objdump ({e}): {SETUP_HINT}"));
+    assert!(out.status.success(), "objdump -T {}", library.display());
+    String::from_utf8_lossy(&out.stdout)
+        .split_whitespace()
+        .filter_map(|word| word.strip_prefix("(GLIBC_").or(word.strip_prefix("GLIBC_")))
+        .filter_map(|v| {
+            let mut parts = v.trim_end_matches(')').split('.');
+            Some((parts.next()?.parse().ok()?, parts.next()?.parse().ok()?))
+        })
+        .max()
+        .expect("the library uses versioned glibc symbols")
+}
+
+#[test]
+fn the_wheel_is_manylinux_2_17_and_carries_the_licenses() {
+    let wheel = python_wheel();
+    let name = wheel.file_name().unwrap().to_string_lossy().into_owned();
+    assert!(
+        name.ends_with("manylinux_2_17_x86_64.whl"),
+        "{name}: not tagged manylinux_2_17_x86_64"
+    );
+    let dir = root().join("target/python-test/wheel-contents");
+    let _ = std::fs::remove_dir_all(&dir);
+    let status = Command::new("/usr/bin/python3")
+        .args(["-m", "zipfile", "-e"])
+        .arg(&wheel)
+        .arg(&dir)
+        .status()
+        .expect("python3 runs");
+    assert!(status.success(), "cannot unpack {name}");
+    let library = dir.join("rmfsurf/_native/lib_native.so");
+    let newest = newest_glibc_symbol(&library);
+    println!(
+        "{name}: the library's newest glibc symbol is GLIBC_{}.{}",
+        newest.0, newest.1
+    );
+    assert!(
+        newest <= (2, 17),
+        "{name} needs GLIBC_{}.{}",
+        newest.0,
+        newest.1
+    );
+    let info = dir.join(format!("rmfsurf-{}.dist-info", env!("CARGO_PKG_VERSION")));
+    let metadata = std::fs::read_to_string(info.join("METADATA")).expect("METADATA");
+    assert!(
+        metadata.contains("License-Expression: MIT OR Apache-2.0"),
+        "{metadata}"
+    );
+    for license in ["LICENSE-MIT", "LICENSE-APACHE"] {
+        let carried = std::fs::read(info.join("licenses").join(license)).expect(license);
+        assert_eq!(
+            carried,
+            std::fs::read(root().join(license)).unwrap(),
+            "{license}"
+        );
+    }
 }
 
 #[test]
@@ -57,26 +143,13 @@ fn wheel_installs_without_rust_and_passes_the_python_tests() {
         .status()
         .expect("pip runs");
     assert!(status.success(), "pip install {} failed", wheel.display());
-    let out = Command::new(venv.join("bin/python"))
-        .args(["-m", "pytest", "-q", "-s", "-rs", "-p", "no:cacheprovider"])
-        .current_dir(root().join("python/tests"))
-        .env("PATH", &path)
-        .env("RMFSURF_REPOSITORY", root())
-        .env("RMFSURF_REQUIRE_ALL", "1")
-        .output()
-        .unwrap_or_else(|e| panic!("cannot run pytest ({e}): {SETUP_HINT}"));
-    print!("{}", String::from_utf8_lossy(&out.stdout));
-    eprint!("{}", String::from_utf8_lossy(&out.stderr));
-    assert!(
-        out.status.success(),
-        "the Python tests failed ({})",
-        out.status
-    );
+    run_python_tests(&venv, &path);
 }
 
 #[test]
-fn pip_install_of_the_source_builds_the_library() {
-    let venv: PathBuf = root().join("target/python-test/source-venv");
+fn the_sdist_builds_in_a_fresh_environment_and_passes_the_python_tests() {
+    let sdist = &python_dists().sdist;
+    let venv: PathBuf = root().join("target/python-test/sdist-venv");
     let _ = std::fs::remove_dir_all(&venv);
     let made = Command::new("/usr/bin/python3")
         .args(["-m", "venv"])
@@ -84,21 +157,21 @@ fn pip_install_of_the_source_builds_the_library() {
         .status()
         .unwrap_or_else(|e| panic!("cannot run /usr/bin/python3 ({e}): {SETUP_HINT}"));
     assert!(made.success(), "python3 -m venv failed");
-    let maturin = maturin_lock();
     let start = std::time::Instant::now();
     let out = Command::new(venv.join("bin/pip"))
         .args(["install", "--quiet", "--disable-pip-version-check"])
-        .arg(root().join("python"))
+        .arg(sdist)
         .output()
         .expect("pip runs");
-    drop(maturin);
     assert!(
         out.status.success(),
-        "pip install ./python failed:\n{}",
+        "pip install {} failed:\n{}",
+        sdist.display(),
         String::from_utf8_lossy(&out.stderr)
     );
     println!(
-        "pip install ./python (maturin, cffi and NumPy from PyPI, the library built): {:.0} s",
+        "pip install {} (maturin, cffi and NumPy from PyPI, the library built): {:.0} s",
+        sdist.file_name().unwrap().to_string_lossy(),
         start.elapsed().as_secs_f64()
     );
     let check = "import rmfsurf, sys\n\
@@ -117,4 +190,18 @@ fn pip_install_of_the_source_builds_the_library() {
         String::from_utf8_lossy(&out.stderr)
     );
     assert!(String::from_utf8_lossy(&out.stdout).contains(env!("CARGO_PKG_VERSION")));
+    let requirements = root().join("python/tests/requirements.txt");
+    let out = Command::new(venv.join("bin/pip"))
+        .args(["install", "--quiet", "--disable-pip-version-check", "-r"])
+        .arg(&requirements)
+        .output()
+        .expect("pip runs");
+    assert!(
+        out.status.success(),
+        "pip install -r {} failed:\n{}",
+        requirements.display(),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let path = format!("{}:/usr/bin:/bin", venv.join("bin").display());
+    run_python_tests(&venv, &path);
 }

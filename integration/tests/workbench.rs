@@ -63,7 +63,8 @@ fn package_xml_carries_the_library_version() {
         "freecad/package.xml's version is not the library's (capi/Cargo.toml)"
     );
     for needed in [
-        "<license>MIT OR Apache-2.0</license>",
+        "<license file=\"LICENSE-MIT\">MIT</license>",
+        "<license file=\"LICENSE-APACHE\">Apache-2.0</license>",
         "<classname>RmfSurfWorkbench</classname>",
         "<freecadmin>0.20.0</freecadmin>",
         "<icon>Resources/icons/RmfSurfWorkbench.svg</icon>",
@@ -191,6 +192,10 @@ fn install_script_writes_the_addon_tree_and_refuses_what_it_must() {
         "rmfsurf_workbench/__init__.py",
         "rmfsurf/__init__.py",
         "rmfsurf/_native/lib_native.so",
+        "README.md",
+        "LICENSE-MIT",
+        "LICENSE-APACHE",
+        "LICENSE-cffi",
     ] {
         assert!(tree.join(path).exists(), "the addon tree lacks {path}");
     }
@@ -232,40 +237,100 @@ fn install_script_writes_the_addon_tree_and_refuses_what_it_must() {
     );
 }
 
-/// The first Python block under "## Scripting" in docs/freecad.md, run in freecadcmd as
-/// written (the addon installed as the page says); it must leave a valid shape in `result`.
-#[test]
-fn docs_freecad_example_runs() {
-    let text = std::fs::read_to_string(root().join("docs/freecad.md")).expect("docs/freecad.md");
+/// The first Python block under "## Scripting" of the Markdown `text`, run in freecadcmd as
+/// written for the user `home` (the addon installed); it must leave a valid shape in
+/// `result`. FreeCAD's output.
+fn run_scripting_example(text: &str, home: &Path, page: &str) -> String {
     let section = text
         .find("## Scripting")
-        .expect("docs/freecad.md has ## Scripting");
+        .unwrap_or_else(|| panic!("{page} has ## Scripting"));
     let start = section
         + text[section..]
             .find("```python\n")
-            .expect("a Python example under ## Scripting")
+            .unwrap_or_else(|| panic!("a Python example under ## Scripting of {page}"))
         + 10;
     let end = start + text[start..].find("```").expect("the end of the example");
-    let home = fresh_dir("workbench_docs");
-    install(&home);
     let script = format!(
-        "import sys\n{}\nprint('\\n| docs example: valid', result.isValid())\nsys.exit(0 if result.isValid() else 1)\n",
+        "import sys\n{}\nprint('\\n| example: valid', result.isValid())\nsys.exit(0 if result.isValid() else 1)\n",
         &text[start..end]
     );
-    std::fs::write(home.join("docs_example.py"), script).unwrap();
+    std::fs::write(home.join("example.py"), script).unwrap();
     let out = Command::new("freecadcmd")
-        .arg("docs_example.py")
-        .current_dir(&home)
-        .env("HOME", &home)
+        .arg("example.py")
+        .current_dir(home)
+        .env("HOME", home)
         .output()
         .unwrap_or_else(|e| panic!("cannot run freecadcmd ({e}): {SETUP_HINT}"));
-    let stdout = String::from_utf8_lossy(&out.stdout);
-    report(&stdout).for_each(|line| println!("{line}"));
+    let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
+    report(&stdout).for_each(|line| println!("{page}: {line}"));
     assert!(
-        out.status.success()
-            && report(&stdout).any(|l| l == "docs example: valid True")
-            && home.join("hood.dxf").exists(),
-        "the example of docs/freecad.md failed:\n{stdout}\n{}",
+        out.status.success() && report(&stdout).any(|l| l == "example: valid True"),
+        "the example of {page} failed:\n{stdout}\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    stdout
+}
+
+/// The first Python block under "## Scripting" in docs/freecad.md, run in freecadcmd as
+/// written (the addon installed as the page says).
+#[test]
+fn docs_freecad_example_runs() {
+    let text = std::fs::read_to_string(root().join("docs/freecad.md")).expect("docs/freecad.md");
+    let home = fresh_dir("workbench_docs");
+    install(&home);
+    run_scripting_example(&text, &home, "docs/freecad.md");
+    assert!(
+        home.join("hood.dxf").exists(),
+        "docs/freecad.md's example wrote no hood.dxf"
+    );
+}
+
+/// The tree `--into` writes is what a registered repository holds: copied as it is into
+/// FreeCAD's Mod folder (what the Addon Manager does with a clone), the workbench and the
+/// library load and the addon README's example runs. Its cffi backend loads without the
+/// system's cffi (a Python without site-packages) and opens the library.
+#[test]
+fn the_addon_tree_copied_into_mod_runs_its_readme_example() {
+    let home = fresh_dir("workbench_tree");
+    let tree = home.join("tree");
+    let wheel = python_wheel();
+    let out = install_script(
+        &home,
+        &[
+            "--wheel".as_ref(),
+            wheel.as_os_str(),
+            "--into".as_ref(),
+            tree.as_os_str(),
+        ],
+    );
+    assert!(out.status.success(), "--into failed: {out:?}");
+    let mod_dir = home.join(".local/share/FreeCAD/Mod");
+    std::fs::create_dir_all(&mod_dir).unwrap();
+    let copied = Command::new("cp")
+        .arg("-r")
+        .arg(&tree)
+        .arg(mod_dir.join("RmfSurf"))
+        .status()
+        .expect("cp runs");
+    assert!(copied.success(), "cp -r of the addon tree failed");
+    let readme = std::fs::read_to_string(tree.join("README.md")).expect("the tree's README.md");
+    run_scripting_example(&readme, &home, "the addon's README.md");
+    let backend = "import sys\n\
+                   sys.path.insert(0, sys.argv[1])\n\
+                   sys.path.insert(0, sys.argv[1] + '/rmfsurf')\n\
+                   import _cffi_backend, _native\n\
+                   assert _cffi_backend.__file__.startswith(sys.argv[1]), _cffi_backend.__file__\n\
+                   print(_cffi_backend.__file__, _native.ffi.string(_native.lib.rmf_version()).decode())";
+    let out = Command::new("/usr/bin/python3")
+        .args(["-S", "-c", backend])
+        .arg(&tree)
+        .output()
+        .expect("python3 runs");
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    println!("the bundled cffi backend: {stdout}");
+    assert!(
+        out.status.success() && stdout.trim().ends_with(env!("CARGO_PKG_VERSION")),
+        "the addon's cffi backend does not load the library: {stdout}{}",
         String::from_utf8_lossy(&out.stderr)
     );
 }

@@ -1,5 +1,6 @@
-"""The Python examples of docs/install.md and docs/python.md, run as written (in a scratch
-directory). The FreeCAD ones run in freecadcmd (integration/tests/freecad.rs)."""
+"""The Python examples of the README, python/PACKAGE.md (the package's page on the index),
+docs/install.md and docs/python.md, run as written (in a scratch directory). The FreeCAD
+ones run in freecadcmd (integration/tests/freecad.rs)."""
 
 import os
 import re
@@ -32,6 +33,13 @@ def test_readme_python_example(tmp_path, monkeypatch):
     with open(os.path.join(DOCS, "..", "README.md")) as f:
         text = f.read().split("<!-- python-example -->")[1].split("\n## ")[0]
     (code,) = re.findall(r"```python\n(.*?)```", text, re.S)
+    run(code, tmp_path, monkeypatch)
+    assert (tmp_path / "pipe.step").stat().st_size > 0
+
+
+def test_package_page_example(tmp_path, monkeypatch):
+    with open(os.path.join(DOCS, "..", "python", "PACKAGE.md")) as f:
+        (code,) = re.findall(r"```python\n(.*?)```", f.read(), re.S)
     run(code, tmp_path, monkeypatch)
     assert (tmp_path / "pipe.step").stat().st_size > 0
 

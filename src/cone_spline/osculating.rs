@@ -610,7 +610,7 @@ fn merged(a: &ConePiece, b: &ConePiece) -> Option<ConePiece> {
 /// The osculating cone spline through the osculating cones at the parameters `ts`
 /// (increasing, at least 2): segments of the osculating cones joined by filling cones.
 /// Intervals whose cones cannot be joined are halved by further osculating cones, at most
-/// [`MAX_SUBDIVISIONS`] times (NotConverged beyond).
+/// `MAX_SUBDIVISIONS` times (NotConverged beyond).
 pub fn osculating_spline(surface: &dyn Developable, ts: &[f64]) -> Result<ConeSpline> {
     osculating_spline_with(surface, ts, MAX_SUBDIVISIONS)
 }

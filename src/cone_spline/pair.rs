@@ -104,7 +104,7 @@ enum Apex {
 /// `names` are the caller's names of the two elements, for messages.
 ///
 /// The pair is solved in coordinates centred on the first element's point and scaled by a
-/// power of two near the elements' distance ([`Frame`]), so that it does not depend on
+/// power of two near the elements' distance (`Frame`), so that it does not depend on
 /// where the data lie or on their size: the tolerances below are relative to that
 /// distance, and a scaling by a power of two changes no rounding at all.
 pub fn cone_pair(

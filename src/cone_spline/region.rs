@@ -143,7 +143,7 @@ impl SweptBand {
     }
 
     /// Whether no vertex of the pieces lies strictly inside the region (within
-    /// [`BOUNDARY_MARGIN`] of its boundary counts as on it).
+    /// `BOUNDARY_MARGIN` of its boundary counts as on it).
     pub fn admits(&self, pieces: &[ConePiece]) -> bool {
         self.clearance(pieces) >= -BOUNDARY_MARGIN
     }

@@ -83,7 +83,7 @@ pub struct BestQuintic {
     /// quintic of planar data (no η is sampled).
     pub admissible: usize,
     /// Roots left out over all solves (scan and refinement) for a speed dipping below
-    /// [`REGULARITY`](super::solutions::REGULARITY) of its maximum: interpolants with an
+    /// `REGULARITY` of its maximum: interpolants with an
     /// RRMF, but near-cusps.
     pub irregular_roots: usize,
 }

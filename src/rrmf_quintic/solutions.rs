@@ -121,17 +121,17 @@ pub struct Solutions {
     /// The solutions, in increasing ρ.
     pub quintics: Vec<RrmfQuintic>,
     /// In increasing ρ, roots whose quintic interpolates the data with an RRMF but whose speed dips below
-    /// [`REGULARITY`] times its maximum (a near-cusp): not returned as solutions, since
+    /// `REGULARITY` times its maximum (a near-cusp): not returned as solutions, since
     /// their tangent is not known to the accuracy the frames need there.
     pub irregular: Vec<IrregularRoot>,
 }
 
-/// A root of (35) left out of the solutions for its speed ([`REGULARITY`]).
+/// A root of (35) left out of the solutions for its speed (`REGULARITY`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct IrregularRoot {
     /// Its end-derivative ratio ρ (20).
     pub rho: f64,
-    /// Least over greatest speed on [0, 1], below [`REGULARITY`].
+    /// Least over greatest speed on [0, 1], below `REGULARITY`.
     pub speed_ratio: f64,
 }
 

@@ -133,45 +133,35 @@ pub fn maturin_lock() -> MutexGuard<'static, ()> {
     LOCK.lock().unwrap_or_else(|poisoned| poisoned.into_inner())
 }
 
-/// The wheel of the Python package (`pip wheel ./python`, maturin), carrying the library,
-/// built once into target/python-wheel; its path.
+/// The Python package's distributions as published (scripts/python-dist): the manylinux
+/// wheel, carrying the library, and the sdist.
+pub struct Dists {
+    pub wheel: PathBuf,
+    pub sdist: PathBuf,
+}
+
+/// The distributions, built once per test binary into target/dist (the Rust build is
+/// cargo's, kept between runs).
+pub fn python_dists() -> &'static Dists {
+    static DISTS: OnceLock<Dists> = OnceLock::new();
+    DISTS.get_or_init(|| {
+        let _maturin = maturin_lock();
+        let out = Command::new(root().join("scripts/python-dist"))
+            .output()
+            .unwrap_or_else(|e| panic!("cannot run scripts/python-dist ({e}): {SETUP_HINT}"));
+        eprint!("{}", String::from_utf8_lossy(&out.stderr));
+        assert!(out.status.success(), "scripts/python-dist failed");
+        let stdout = String::from_utf8_lossy(&out.stdout);
+        let mut paths = stdout.lines().map(PathBuf::from);
+        let (wheel, sdist) = (paths.next(), paths.next());
+        Dists {
+            wheel: wheel.expect("python-dist prints the wheel"),
+            sdist: sdist.expect("python-dist prints the sdist"),
+        }
+    })
+}
+
+/// The manylinux wheel of the Python package (see [`python_dists`]).
 pub fn python_wheel() -> PathBuf {
-    static WHEEL: OnceLock<PathBuf> = OnceLock::new();
-    WHEEL
-        .get_or_init(|| {
-            let dir = root().join("target/python-wheel");
-            let _ = std::fs::remove_dir_all(&dir);
-            let _maturin = maturin_lock();
-            let start = std::time::Instant::now();
-            let out = Command::new(python_env().join("bin/pip"))
-                .args([
-                    "wheel",
-                    "--quiet",
-                    "--no-deps",
-                    "--disable-pip-version-check",
-                ])
-                .arg(root().join("python"))
-                .arg("-w")
-                .arg(&dir)
-                .output()
-                .expect("pip runs");
-            assert!(
-                out.status.success(),
-                "pip wheel ./python failed:\n{}",
-                String::from_utf8_lossy(&out.stderr)
-            );
-            let wheel = std::fs::read_dir(&dir)
-                .expect("the wheel directory")
-                .filter_map(Result::ok)
-                .map(|e| e.path())
-                .find(|p| p.extension().is_some_and(|x| x == "whl"))
-                .expect("pip wheel wrote a wheel");
-            println!(
-                "pip wheel ./python: {} in {:.0} s",
-                wheel.file_name().unwrap().to_string_lossy(),
-                start.elapsed().as_secs_f64()
-            );
-            wheel
-        })
-        .clone()
+    python_dists().wheel.clone()
 }

@@ -8,7 +8,9 @@ addon into a fresh user directory ($HOME a scratch directory). In the environmen
 
 What is checked, each figure printed with its limit:
   A. the installed addon: where rmfsurf_workbench and rmfsurf load from, package.xml read
-     by FreeCAD's own parser, the fixed signatures of make_sweep/make_transition/make_unfold;
+     by FreeCAD's own parser and the Addon Manager's submission rules (date, maintainer's
+     e-mail, license files, URLs, icon, a README without HTML, cffi's backend carried),
+     the fixed signatures of make_sweep/make_transition/make_unfold;
   B. RmfSweep: a ring sketch (inner loop) swept along a wire of a line, an arc and a line
      (sub-element links), a circle along a sketch with a sharp corner (round, then miter):
      valid solids, volumes against Pappus's A·L; a sketch constraint changed, recomputed;
@@ -133,8 +135,9 @@ def part_a():
     licenses = [entry["name"] for entry in meta.License]
     require("package.xml: license %s, FreeCAD >= %s, supports this FreeCAD"
             % (licenses, meta.FreeCADMin),
-            licenses == ["MIT OR Apache-2.0"] and meta.FreeCADMin.startswith("0.20")
+            licenses == ["MIT", "Apache-2.0"] and meta.FreeCADMin.startswith("0.20")
             and meta.supportsCurrentFreeCAD())
+    check_submission_rules(addon, meta)
     workbenches = meta.Content.get("workbench", [])
     require("package.xml: one workbench, class RmfSurfWorkbench, its icon exists",
             len(workbenches) == 1 and workbenches[0].Classname == "RmfSurfWorkbench"
@@ -149,6 +152,49 @@ def part_a():
     for name, signature in expected.items():
         actual = str(inspect.signature(getattr(rmfsurf_workbench, name)))
         require("rmfsurf_workbench.%s%s" % (name, actual), actual == signature)
+
+
+def check_submission_rules(addon, meta):
+    """What the Addon Manager's submission rules (FreeCAD-addons Documentation/Submission.md
+    and the Package_Metadata page) ask of an addon, in the tree as installed: a dated
+    version, a maintainer with an e-mail, license files, the repository with its branch, the
+    bug tracker and the documentation, an SVG icon of at most 10 KB, a README without HTML,
+    and the compiled dependencies the Addon Manager does not install carried along."""
+    import datetime
+    import re
+    import xml.etree.ElementTree as ElementTree
+    (date,) = [entry["contents"] for entry in meta.getGenericMetadata("date")]
+    day = datetime.date.fromisoformat(date)
+    require("package.xml: date %s, a day not after today" % date,
+            day <= datetime.date.today())
+    require("package.xml: maintainer %s" % meta.Maintainer,
+            len(meta.Maintainer) >= 1 and all(
+                re.fullmatch(r"[^@\s]+@[^@\s]+\.[a-z]{2,}", m["email"]) for m in meta.Maintainer))
+    for entry in meta.License:
+        path = os.path.join(addon, entry["file"])
+        require("license %s: the file %s is in the addon (%d bytes)"
+                % (entry["name"], entry["file"], os.path.getsize(path) if os.path.isfile(path)
+                   else 0),
+                os.path.isfile(path) and os.path.getsize(path) > 1000)
+    urls = {u["type"]: u for u in meta.Urls}
+    require("package.xml: urls %s" % sorted(urls),
+            {"repository", "bugtracker", "documentation", "readme"} <= set(urls)
+            and all(u["location"].startswith("https://") for u in urls.values())
+            and urls["repository"].get("branch"))
+    icon = os.path.join(addon, meta.Icon)
+    root = ElementTree.parse(icon).getroot()
+    require("the icon %s: SVG, %d bytes (at most 10 KB)" % (meta.Icon, os.path.getsize(icon)),
+            root.tag.endswith("svg") and os.path.getsize(icon) <= 10 * 1024)
+    with open(os.path.join(addon, "README.md"), encoding="utf-8") as f:
+        readme = f.read()
+    tags = re.findall(r"<[A-Za-z!/][^>]*>", readme)
+    require("README.md: %d characters, no HTML %s" % (len(readme), tags[:3]),
+            len(readme) > 500 and not tags)
+    backends = sorted(n for n in os.listdir(addon) if n.startswith("_cffi_backend."))
+    pythons = sorted({re.search(r"cpython-(3\d+)", n).group(1) for n in backends}, key=int)
+    require("cffi's backend carried for CPython %s, with its license" % pythons,
+            pythons == ["38", "39", "310", "311", "312", "313"]
+            and os.path.isfile(os.path.join(addon, "LICENSE-cffi")))
 
 
 # ---------------------------------------------------------------------------------------
