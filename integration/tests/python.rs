@@ -1,14 +1,13 @@
 //! The Python package (python/): its distributions as published (scripts/python-dist), each
-//! installed the way users get it and then its test suite (python/tests, pytest) run
-//! against the installed copy:
+//! installed the way users get it into a fresh virtual environment with the tests'
+//! requirements (python/tests/requirements.txt: build123d and OCP, pytest), and then its
+//! test suite (python/tests) run against the installed copy:
 //!
 //!  - the manylinux wheel, carrying the library, linked against glibc 2.17's symbols (read
-//!    here from the library itself, not only from auditwheel's verdict), installed into the
-//!    test environment (scripts/python-env: build123d and OCP from PyPI) with no Rust
-//!    toolchain on the PATH;
-//!  - the sdist, installed by pip in a fresh virtual environment — pip fetches maturin,
-//!    which builds the library with Rust — with the tests' requirements beside it;
-//!    `rmfsurf.__version__ == rmf_version()`.
+//!    here from the library itself, not only from auditwheel's verdict), installed with no
+//!    Rust toolchain on the PATH;
+//!  - the sdist, which pip builds — it fetches maturin, which builds the library with
+//!    Rust; `rmfsurf.__version__ == rmf_version()`.
 //!
 //! pytest runs with RMFSURF_REQUIRE_ALL=1: python/tests/conftest.py then turns every skip
 //! (a module `pytest.importorskip` does not find, a `skipif` whose condition holds) into a
@@ -20,7 +19,7 @@ mod support;
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
-use support::{python_dists, python_env, python_wheel, root, SETUP_HINT};
+use support::{python_dists, python_wheel, root, SETUP_HINT};
 
 /// A PATH with the virtual environment and the system's programs but no Rust toolchain.
 fn path_without_rust(venv: &std::path::Path) -> String {
@@ -125,31 +124,9 @@ fn the_wheel_is_manylinux_2_17_and_carries_the_licenses() {
     }
 }
 
-#[test]
-fn wheel_installs_without_rust_and_passes_the_python_tests() {
-    let venv = python_env();
-    let wheel = python_wheel();
-    let path = path_without_rust(&venv);
-    let status = Command::new(venv.join("bin/pip"))
-        .args([
-            "install",
-            "--quiet",
-            "--no-deps",
-            "--no-index",
-            "--force-reinstall",
-        ])
-        .arg(&wheel)
-        .env("PATH", &path)
-        .status()
-        .expect("pip runs");
-    assert!(status.success(), "pip install {} failed", wheel.display());
-    run_python_tests(&venv, &path);
-}
-
-#[test]
-fn the_sdist_builds_in_a_fresh_environment_and_passes_the_python_tests() {
-    let sdist = &python_dists().sdist;
-    let venv: PathBuf = root().join("target/python-test/sdist-venv");
+/// A fresh virtual environment of Debian's Python 3.11 in target/python-test/`name`.
+fn fresh_venv(name: &str) -> PathBuf {
+    let venv = root().join("target/python-test").join(name);
     let _ = std::fs::remove_dir_all(&venv);
     let made = Command::new("/usr/bin/python3")
         .args(["-m", "venv"])
@@ -157,18 +134,59 @@ fn the_sdist_builds_in_a_fresh_environment_and_passes_the_python_tests() {
         .status()
         .unwrap_or_else(|e| panic!("cannot run /usr/bin/python3 ({e}): {SETUP_HINT}"));
     assert!(made.success(), "python3 -m venv failed");
-    let start = std::time::Instant::now();
+    venv
+}
+
+/// pip installs `args` into `venv` (PATH as given); asserts success.
+fn pip_install(venv: &Path, args: &[&std::ffi::OsStr], path: &str) {
     let out = Command::new(venv.join("bin/pip"))
         .args(["install", "--quiet", "--disable-pip-version-check"])
-        .arg(sdist)
+        .args(args)
+        .env("PATH", path)
         .output()
         .expect("pip runs");
     assert!(
         out.status.success(),
-        "pip install {} failed:\n{}",
-        sdist.display(),
+        "pip install {args:?} failed:\n{}",
         String::from_utf8_lossy(&out.stderr)
     );
+}
+
+/// The tests' own needs (build123d and OCP, pytest: python/tests/requirements.txt).
+fn install_test_requirements(venv: &Path, path: &str) {
+    let requirements = root().join("python/tests/requirements.txt");
+    pip_install(venv, &["-r".as_ref(), requirements.as_os_str()], path);
+}
+
+#[test]
+fn wheel_installs_without_rust_and_passes_the_python_tests() {
+    let venv = fresh_venv("wheel-venv");
+    let wheel = python_wheel();
+    let path = path_without_rust(&venv);
+    install_test_requirements(&venv, &path);
+    pip_install(
+        &venv,
+        &[
+            "--no-deps".as_ref(),
+            "--no-index".as_ref(),
+            wheel.as_os_str(),
+        ],
+        &path,
+    );
+    run_python_tests(&venv, &path);
+}
+
+#[test]
+fn the_sdist_builds_in_a_fresh_environment_and_passes_the_python_tests() {
+    let sdist = &python_dists().sdist;
+    let venv = fresh_venv("sdist-venv");
+    let path = format!(
+        "{}:{}",
+        venv.join("bin").display(),
+        std::env::var("PATH").unwrap_or_default()
+    );
+    let start = std::time::Instant::now();
+    pip_install(&venv, &[sdist.as_os_str()], &path);
     println!(
         "pip install {} (maturin, cffi and NumPy from PyPI, the library built): {:.0} s",
         sdist.file_name().unwrap().to_string_lossy(),
@@ -190,18 +208,6 @@ fn the_sdist_builds_in_a_fresh_environment_and_passes_the_python_tests() {
         String::from_utf8_lossy(&out.stderr)
     );
     assert!(String::from_utf8_lossy(&out.stdout).contains(env!("CARGO_PKG_VERSION")));
-    let requirements = root().join("python/tests/requirements.txt");
-    let out = Command::new(venv.join("bin/pip"))
-        .args(["install", "--quiet", "--disable-pip-version-check", "-r"])
-        .arg(&requirements)
-        .output()
-        .expect("pip runs");
-    assert!(
-        out.status.success(),
-        "pip install -r {} failed:\n{}",
-        requirements.display(),
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let path = format!("{}:/usr/bin:/bin", venv.join("bin").display());
+    install_test_requirements(&venv, &path);
     run_python_tests(&venv, &path);
 }

@@ -168,14 +168,12 @@ fn wheel_tagged(dir: &Path, platform: &str) -> PathBuf {
     copy
 }
 
-#[test]
-fn install_script_writes_the_addon_tree_and_refuses_what_it_must() {
-    let home = fresh_dir("workbench_install");
-    // --into: the tree an Addon Manager repository holds.
+/// `--into HOME/tree` with the tests' wheel: the tree an Addon Manager repository holds.
+fn write_tree(home: &Path) -> PathBuf {
     let tree = home.join("tree");
     let wheel = python_wheel();
     let out = install_script(
-        &home,
+        home,
         &[
             "--wheel".as_ref(),
             wheel.as_os_str(),
@@ -184,6 +182,14 @@ fn install_script_writes_the_addon_tree_and_refuses_what_it_must() {
         ],
     );
     assert!(out.status.success(), "--into failed: {out:?}");
+    tree
+}
+
+#[test]
+fn install_script_writes_the_addon_tree_and_refuses_what_it_must() {
+    let home = fresh_dir("workbench_install");
+    let tree = write_tree(&home);
+    let wheel = python_wheel();
     for path in [
         "package.xml",
         "Init.py",
@@ -292,18 +298,7 @@ fn docs_freecad_example_runs() {
 #[test]
 fn the_addon_tree_copied_into_mod_runs_its_readme_example() {
     let home = fresh_dir("workbench_tree");
-    let tree = home.join("tree");
-    let wheel = python_wheel();
-    let out = install_script(
-        &home,
-        &[
-            "--wheel".as_ref(),
-            wheel.as_os_str(),
-            "--into".as_ref(),
-            tree.as_os_str(),
-        ],
-    );
-    assert!(out.status.success(), "--into failed: {out:?}");
+    let tree = write_tree(&home);
     let mod_dir = home.join(".local/share/FreeCAD/Mod");
     std::fs::create_dir_all(&mod_dir).unwrap();
     let copied = Command::new("cp")
