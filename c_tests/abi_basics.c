@@ -5,6 +5,8 @@
  * under valgrind (no leaks, no invalid accesses). Geometry is checked against the suite's
  * own NURBS evaluator (nurbs_eval.c), not the library's.
  */
+/* These tests call the deprecated wrappers on purpose (they keep working): no warning. */
+#define RMF_DEPRECATED(note)
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>

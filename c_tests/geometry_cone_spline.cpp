@@ -12,6 +12,8 @@
  *     angles between rulings and boundaries; planarity and no overlaps of the development;
  *  E. offsets: every point at distance |d| along the normal.
  */
+// These tests call the deprecated wrappers on purpose (they keep working): no warning.
+#define RMF_DEPRECATED(note)
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

@@ -104,6 +104,17 @@
 #include <stddef.h>
 #include <stdint.h>
 
+/* Marks the functions kept for compatibility; each note names the replacement. */
+#if !defined(RMF_DEPRECATED)
+#if defined(__GNUC__) || defined(__clang__)
+#define RMF_DEPRECATED(note) __attribute__((deprecated(note)))
+#elif defined(_MSC_VER)
+#define RMF_DEPRECATED(note) __declspec(deprecated(note))
+#else
+#define RMF_DEPRECATED(note)
+#endif
+#endif
+
 /**
  * RmfBrepFace.kind: a rational B-spline surface (RmfBrepFace.nurbs).
  * \ingroup rmf_brep
@@ -2005,7 +2016,7 @@ RmfStatus rmf_cone_spline_hermite(const struct RmfConeElement *elements,
  * junctions, further rulings are chosen adaptively until the largest distance from the
  * surface's region to the cone spline is ≤ tolerance.
  *
- * Deprecated: use rmf_cone_spline_approximate_with_options (a callback as a curve from
+ * \deprecated Use rmf_cone_spline_approximate_with_options (a callback as a curve from
  * rmf_callback_curve_create, the tolerance, rule and piece cap in an options struct that
  * can grow). This function stays, with the same results, for at least one release.
  *
@@ -2037,6 +2048,7 @@ RmfStatus rmf_cone_spline_hermite(const struct RmfConeElement *elements,
  * \since 0.1
  * \ingroup rmf_cone_spline
  */
+RMF_DEPRECATED("use rmf_cone_spline_approximate_with_options")
 RmfStatus rmf_cone_spline_approximate(const struct RmfCurve *curve,
                                       RmfCurveCallback callback,
                                       void *user,
@@ -2127,7 +2139,7 @@ RmfStatus rmf_cone_spline_approximate_ruled(const struct RmfSurface *surface,
  * B-spline curve of planes U(t) = Σ Uᵢ Nᵢ(t), u0 + u1 x + u2 y + u3 z = 0, whose rulings
  * are U ∩ U'. The region of interest is a box; each ruling is used where it crosses it.
  *
- * Deprecated: use rmf_cone_spline_approximate_dual_with_options (the tolerance, rule and
+ * \deprecated Use rmf_cone_spline_approximate_dual_with_options (the tolerance, rule and
  * piece cap in an options struct that can grow). This function stays, with the same
  * results, for at least one release.
  *
@@ -2149,6 +2161,7 @@ RmfStatus rmf_cone_spline_approximate_ruled(const struct RmfSurface *surface,
  * \since 0.1
  * \ingroup rmf_cone_spline
  */
+RMF_DEPRECATED("use rmf_cone_spline_approximate_dual_with_options")
 RmfStatus rmf_cone_spline_approximate_dual(uint32_t degree,
                                            const double *planes,
                                            size_t plane_count,
@@ -2206,7 +2219,7 @@ RmfStatus rmf_cone_spline_approximate_dual_with_options(uint32_t degree,
  * segment of each and a Hermite cone pair between them (G1, four pieces per interval).
  * An interval without a consistent filling cone is halved, up to 6 times.
  *
- * Deprecated: use rmf_cone_spline_osculating_curve (a callback as a curve from
+ * \deprecated Use rmf_cone_spline_osculating_curve (a callback as a curve from
  * rmf_callback_curve_create). This function stays, with the same results, for at least one
  * release.
  *
@@ -2225,6 +2238,7 @@ RmfStatus rmf_cone_spline_approximate_dual_with_options(uint32_t degree,
  * \since 0.1
  * \ingroup rmf_cone_spline
  */
+RMF_DEPRECATED("use rmf_cone_spline_osculating_curve")
 RmfStatus rmf_cone_spline_osculating(const struct RmfCurve *curve,
                                      RmfCurveCallback callback,
                                      void *user,
@@ -4315,7 +4329,7 @@ const char *rmf_status_name(uint32_t status);
 /**
  * Creates a surface from NURBS data.
  *
- * Deprecated: use rmf_nurbs_surface_create_from (the data in one struct that can grow).
+ * \deprecated Use rmf_nurbs_surface_create_from (the data in one struct that can grow).
  * This function stays, with the same results, for at least one release.
  *
  * @param[in] degree_u, degree_v Degrees, each in 1..=64.
@@ -4335,6 +4349,7 @@ const char *rmf_status_name(uint32_t status);
  * \since 0.1
  * \ingroup rmf_surfaces
  */
+RMF_DEPRECATED("use rmf_nurbs_surface_create_from")
 RmfStatus rmf_nurbs_surface_create(uint32_t degree_u,
                                    uint32_t degree_v,
                                    const struct RmfVec3 *poles,
@@ -4428,7 +4443,7 @@ RmfStatus rmf_surface_nurbs(const struct RmfSurface *surface, struct RmfNurbsSur
 /**
  * Copies the NURBS data of a surface (as in rmf_surface_nurbs) into caller buffers.
  *
- * Deprecated: use rmf_surface_nurbs_copy_into (the buffers in one struct that can grow,
+ * \deprecated Use rmf_surface_nurbs_copy_into (the buffers in one struct that can grow,
  * the degrees and counts in an RmfNurbsSurface). This function stays, with the same
  * results, for at least one release.
  *
@@ -4451,6 +4466,7 @@ RmfStatus rmf_surface_nurbs(const struct RmfSurface *surface, struct RmfNurbsSur
  * \since 0.1
  * \ingroup rmf_surfaces
  */
+RMF_DEPRECATED("use rmf_surface_nurbs_copy_into")
 RmfStatus rmf_surface_nurbs_copy(const struct RmfSurface *surface,
                                  uint32_t *degree_u,
                                  uint32_t *degree_v,

@@ -360,7 +360,7 @@ fn check_fit_arguments(tolerance: f64, max_pieces: usize) -> FfiResult {
 /// junctions, further rulings are chosen adaptively until the largest distance from the
 /// surface's region to the cone spline is ≤ tolerance.
 ///
-/// Deprecated: use rmf_cone_spline_approximate_with_options (a callback as a curve from
+/// \deprecated Use rmf_cone_spline_approximate_with_options (a callback as a curve from
 /// rmf_callback_curve_create, the tolerance, rule and piece cap in an options struct that
 /// can grow). This function stays, with the same results, for at least one release.
 ///
@@ -392,6 +392,7 @@ fn check_fit_arguments(tolerance: f64, max_pieces: usize) -> FfiResult {
 /// \since 0.1
 /// \ingroup rmf_cone_spline
 #[no_mangle]
+#[deprecated(since = "0.2.0", note = "use rmf_cone_spline_approximate_with_options")]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn rmf_cone_spline_approximate(
     curve: *const RmfCurve,
@@ -635,7 +636,7 @@ pub unsafe extern "C" fn rmf_cone_spline_approximate_ruled(
 /// B-spline curve of planes U(t) = Σ Uᵢ Nᵢ(t), u0 + u1 x + u2 y + u3 z = 0, whose rulings
 /// are U ∩ U'. The region of interest is a box; each ruling is used where it crosses it.
 ///
-/// Deprecated: use rmf_cone_spline_approximate_dual_with_options (the tolerance, rule and
+/// \deprecated Use rmf_cone_spline_approximate_dual_with_options (the tolerance, rule and
 /// piece cap in an options struct that can grow). This function stays, with the same
 /// results, for at least one release.
 ///
@@ -657,6 +658,10 @@ pub unsafe extern "C" fn rmf_cone_spline_approximate_ruled(
 /// \since 0.1
 /// \ingroup rmf_cone_spline
 #[no_mangle]
+#[deprecated(
+    since = "0.2.0",
+    note = "use rmf_cone_spline_approximate_dual_with_options"
+)]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn rmf_cone_spline_approximate_dual(
     degree: u32,
@@ -776,7 +781,7 @@ pub unsafe extern "C" fn rmf_cone_spline_approximate_dual_with_options(
 /// segment of each and a Hermite cone pair between them (G1, four pieces per interval).
 /// An interval without a consistent filling cone is halved, up to 6 times.
 ///
-/// Deprecated: use rmf_cone_spline_osculating_curve (a callback as a curve from
+/// \deprecated Use rmf_cone_spline_osculating_curve (a callback as a curve from
 /// rmf_callback_curve_create). This function stays, with the same results, for at least one
 /// release.
 ///
@@ -795,6 +800,7 @@ pub unsafe extern "C" fn rmf_cone_spline_approximate_dual_with_options(
 /// \since 0.1
 /// \ingroup rmf_cone_spline
 #[no_mangle]
+#[deprecated(since = "0.2.0", note = "use rmf_cone_spline_osculating_curve")]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn rmf_cone_spline_osculating(
     curve: *const RmfCurve,

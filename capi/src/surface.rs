@@ -69,7 +69,7 @@ impl RmfSurface {
 
 /// Creates a surface from NURBS data.
 ///
-/// Deprecated: use rmf_nurbs_surface_create_from (the data in one struct that can grow).
+/// \deprecated Use rmf_nurbs_surface_create_from (the data in one struct that can grow).
 /// This function stays, with the same results, for at least one release.
 ///
 /// @param[in] degree_u, degree_v Degrees, each in 1..=64.
@@ -89,6 +89,7 @@ impl RmfSurface {
 /// \since 0.1
 /// \ingroup rmf_surfaces
 #[no_mangle]
+#[deprecated(since = "0.2.0", note = "use rmf_nurbs_surface_create_from")]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn rmf_nurbs_surface_create(
     degree_u: u32,
@@ -383,7 +384,7 @@ pub unsafe extern "C" fn rmf_surface_nurbs(
 
 /// Copies the NURBS data of a surface (as in rmf_surface_nurbs) into caller buffers.
 ///
-/// Deprecated: use rmf_surface_nurbs_copy_into (the buffers in one struct that can grow,
+/// \deprecated Use rmf_surface_nurbs_copy_into (the buffers in one struct that can grow,
 /// the degrees and counts in an RmfNurbsSurface). This function stays, with the same
 /// results, for at least one release.
 ///
@@ -406,6 +407,7 @@ pub unsafe extern "C" fn rmf_surface_nurbs(
 /// \since 0.1
 /// \ingroup rmf_surfaces
 #[no_mangle]
+#[deprecated(since = "0.2.0", note = "use rmf_surface_nurbs_copy_into")]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn rmf_surface_nurbs_copy(
     surface: *const RmfSurface,

@@ -425,7 +425,9 @@ use RmfStatus::{
 };
 
 /// `rmf_cone_spline_approximate` on the tangent surface of the twisted cubic (1e-3, t in
-/// [0.2, 1.2], v in [0.5, 6]) with the given rule and piece limit.
+/// [0.2, 1.2], v in [0.5, 6]) with the given rule and piece limit (the deprecated wrapper
+/// refuses as it always did).
+#[allow(deprecated)]
 unsafe fn twisted_cubic_cones(
     rule: u32,
     max_pieces: usize,
@@ -528,6 +530,7 @@ fn saddle_surface() -> *mut RmfSurface {
     ];
     let knots = [0., 0., 1., 1.];
     let mut out = null_mut();
+    #[allow(deprecated)] // the deprecated wrapper refuses as it always did
     let status = unsafe {
         rmf_nurbs_surface_create(
             1,

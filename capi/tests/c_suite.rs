@@ -42,6 +42,54 @@ fn header_compiles_alone_as_c99_and_cpp() {
     }
 }
 
+/// The deprecated functions are deprecated for the compiler: calling one warns with the
+/// note naming its replacement, in C and in C++, unless the includer defines
+/// RMF_DEPRECATED itself (as the suites that test the old wrappers do).
+#[test]
+fn calling_a_deprecated_function_warns_with_its_replacement() {
+    let source = toolchain().out_dir.join("deprecated_call.c");
+    std::fs::write(
+        &source,
+        "#include \"rmfsurf.h\"\n\
+         int call(void) {\n\
+             RmfSurface *s = 0;\n\
+             return (int)rmf_nurbs_surface_create(1, 1, 0, 0, 2, 2, 0, 4, 0, 4, &s);\n\
+         }\n",
+    )
+    .unwrap();
+    let include = format!("-I{}", root().join("include").display());
+    for (compiler, language) in [(&toolchain().cc, "c"), (&toolchain().cxx, "c++")] {
+        let compile = |extra: &[&str]| {
+            Command::new(compiler)
+                .args([
+                    "-x",
+                    language,
+                    "-c",
+                    "-Werror=deprecated-declarations",
+                    "-o",
+                ])
+                .arg(toolchain().out_dir.join("deprecated_call.o"))
+                .arg(&include)
+                .args(extra)
+                .arg(&source)
+                .output()
+                .expect("the compiler runs")
+        };
+        let warned = compile(&[]);
+        let message = String::from_utf8_lossy(&warned.stderr);
+        assert!(
+            !warned.status.success() && message.contains("use rmf_nurbs_surface_create_from"),
+            "{language}: calling rmf_nurbs_surface_create did not warn: {message}"
+        );
+        let silenced = compile(&["-DRMF_DEPRECATED(note)="]);
+        assert!(
+            silenced.status.success(),
+            "{language}: with RMF_DEPRECATED defined: {}",
+            String::from_utf8_lossy(&silenced.stderr)
+        );
+    }
+}
+
 /// Every `c_tests/abi_*.c`: C99 ABI tests, built against the library and run as they are
 /// (under valgrind and the sanitizers too by the integration crate's c_suite).
 #[test]

@@ -10,11 +10,36 @@
 use std::collections::BTreeSet;
 use std::path::Path;
 
+/// Deprecation the compiler sees: functions with `#[deprecated(note = ...)]` are declared
+/// with `RMF_DEPRECATED(note)`, which this defines for GCC, Clang and MSVC unless the
+/// includer has (`#define RMF_DEPRECATED(note)` before the include silences it).
+const DEPRECATION: &str = "
+/* Marks the functions kept for compatibility; each note names the replacement. */
+#if !defined(RMF_DEPRECATED)
+#if defined(__GNUC__) || defined(__clang__)
+#define RMF_DEPRECATED(note) __attribute__((deprecated(note)))
+#elif defined(_MSC_VER)
+#define RMF_DEPRECATED(note) __declspec(deprecated(note))
+#else
+#define RMF_DEPRECATED(note)
+#endif
+#endif";
+
+/// cbindgen.toml with the deprecation macro. It is added here, not in cbindgen.toml, because
+/// maturin generates the Python package's cffi declarations from cbindgen.toml, and cffi
+/// reads no preprocessor conditionals.
+fn config(root: &Path) -> cbindgen::Config {
+    let mut config =
+        cbindgen::Config::from_file(root.join("cbindgen.toml")).expect("cbindgen.toml parses");
+    config.after_includes = Some(DEPRECATION.into());
+    config.function.deprecated_with_note = Some("RMF_DEPRECATED({})".into());
+    config
+}
+
 #[test]
 fn committed_header_is_what_cbindgen_generates() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let config =
-        cbindgen::Config::from_file(root.join("cbindgen.toml")).expect("cbindgen.toml parses");
+    let config = config(root);
     let bindings = cbindgen::Builder::new()
         .with_crate(root)
         .with_config(config)
@@ -185,8 +210,9 @@ fn check_header(header: &str, version: (u32, u32)) -> (Vec<Item>, Vec<String>) {
         }
         let declaration = if let Some(rest) = line.strip_prefix("#define ") {
             let name = rest.split_whitespace().next().unwrap_or("").to_string();
-            // The include guard is no constant.
-            (name != "RMFSURF_H").then(|| (Kind::Constant, name, Vec::new()))
+            // The include guard and the deprecation attribute are no constants.
+            (name != "RMFSURF_H" && !name.starts_with("RMF_DEPRECATED("))
+                .then(|| (Kind::Constant, name, Vec::new()))
         } else if line.starts_with("typedef ")
             || line.starts_with("enum ")
             || line.starts_with("struct ")
@@ -198,7 +224,11 @@ fn check_header(header: &str, version: (u32, u32)) -> (Vec<Item>, Vec<String>) {
             && line.contains('(')
             && !line.starts_with("extern ")
         {
-            let mut prototype = line.to_string();
+            // A deprecated function's attribute stands on the line above its prototype.
+            if line.starts_with("RMF_DEPRECATED(") {
+                i += 1;
+            }
+            let mut prototype = lines[i].to_string();
             while !prototype.trim_end().ends_with(';') && i + 1 < lines.len() {
                 i += 1;
                 prototype.push(' ');

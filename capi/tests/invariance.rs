@@ -281,6 +281,7 @@ fn fit_with(factor: f64, fit: usize) -> Result<Vec<f64>, String> {
     let callback = Some(cubic_times as unsafe extern "C" fn(_, _, _, _));
     let (mut curve, mut frames, mut spline) = (null_mut(), null_mut(), null_mut());
     let mut error = 0.0;
+    #[allow(deprecated)] // the callback entry points: deprecated, still exported, invariant
     let status = unsafe {
         match fit {
             0 => rmf_ph_spline_approximate(
@@ -547,6 +548,7 @@ fn cone_fit(
 ) -> Result<(*mut RmfConeSpline, f64), String> {
     let mut user = [scale, offset.x, offset.y, offset.z];
     let (mut out, mut error) = (null_mut(), 0.0);
+    #[allow(deprecated)] // the callback entry point: deprecated, still exported, invariant
     let status = unsafe {
         rmf_cone_spline_approximate(
             null(),

@@ -149,6 +149,7 @@ proptest! {
         let coefficients = [a, b];
         let mut spline = null_mut();
         let mut max_error = 0.0;
+        #[allow(deprecated)] // the deprecated wrapper gives the same fits
         let status = unsafe {
             rmf_cone_spline_approximate(
                 std::ptr::null(), Some(cubic), coefficients.as_ptr() as *mut c_void,

@@ -229,6 +229,7 @@ static void demo_tessellated_surface(void) {
     const double knots[6] = {0, 0, 0, 1, 1, 1};
     RmfVec3 poles[9];
     double weights[9];
+    RmfNurbsSurfaceData data = {0};
     RmfSurface *surface = NULL;
     int i, j;
 
@@ -243,7 +244,14 @@ static void demo_tessellated_surface(void) {
             weights[i * 3 + j] = wij;
         }
     /* Middle poles of the tube circle sit on the tangent lines: r = 2 + 0.5, z = 0.5. */
-    TRY(rmf_nurbs_surface_create(2, 2, poles, weights, 3, 3, knots, 6, knots, 6, &surface));
+    data.struct_size = sizeof data;
+    data.degree_u = data.degree_v = 2;
+    data.pole_count_u = data.pole_count_v = 3;
+    data.poles = poles;
+    data.weights = weights;
+    data.knot_count_u = data.knot_count_v = 6;
+    data.knots_u = data.knots_v = knots;
+    TRY(rmf_nurbs_surface_create_from(&data, &surface));
     write_tessellation(surface, 24, 24, "torus_patch", "tessellated rational NURBS surface");
     rmf_surface_free(surface);
 }
@@ -360,8 +368,9 @@ static void svg_arcs(FILE *f, const RmfCurve *curve, int forward, double scale) 
 static void demo_cone_spline(void) {
     const double t_min = -0.3, t_max = 0.3, scale = 100;
     RmfConeSpline *spline = NULL, *flat = NULL;
+    RmfConeApproximationOptions options;
     RmfSurface *surface = NULL;
-    RmfCurve *lower = NULL, *upper = NULL;
+    RmfCurve *cubic = NULL, *lower = NULL, *upper = NULL;
     RmfConePiece piece;
     RmfVec3 start;
     size_t pieces, k;
@@ -370,8 +379,11 @@ static void demo_cone_spline(void) {
     FILE *f;
 
     printf("4. cone spline approximating the tangent surface of (t, t^2, t^3), and its development\n");
-    TRY(rmf_cone_spline_approximate(NULL, twisted_cubic, NULL, 0.2, 1.2, 0.5, 6.0, 1e-4,
-                                    RMF_CONE_RULE_MIN_VERTEX_DISTANCE, 10000, &spline, &deviation));
+    TRY(rmf_callback_curve_create(twisted_cubic, NULL, 0.2, 1.2, &cubic));
+    TRY(rmf_cone_approximation_options_init(&options));
+    options.tolerance = 1e-4;
+    TRY(rmf_cone_spline_approximate_with_options(cubic, 0.5, 6.0, &options, &spline, &deviation));
+    rmf_curve_free(cubic);
     TRY(rmf_cone_spline_piece_count(spline, &pieces));
     printf("  %zu cone pieces, max deviation %.2e from the surface (tolerance 1e-4)\n", pieces, deviation);
     TRY(rmf_cone_spline_surface(spline, t_min, t_max, &surface));

@@ -236,9 +236,14 @@ int main() {
 
     // A cone spline within 1e-4 of the tangent surface of (t, t², t³), and its development.
     RmfConeSpline *spline_raw = nullptr, *flat_raw = nullptr;
-    require(rmf_cone_spline_approximate(nullptr, twisted_cubic, nullptr, 0.2, 1.2, 0.5, 6.0, 1e-4,
-                                        RMF_CONE_RULE_MIN_VERTEX_DISTANCE, 10000, &spline_raw, nullptr),
-            "rmf_cone_spline_approximate");
+    RmfCurve *cubic_raw = nullptr;
+    require(rmf_callback_curve_create(twisted_cubic, nullptr, 0.2, 1.2, &cubic_raw), "rmf_callback_curve_create");
+    Curve cubic(cubic_raw);
+    RmfConeApproximationOptions options;
+    require(rmf_cone_approximation_options_init(&options), "rmf_cone_approximation_options_init");
+    options.tolerance = 1e-4;
+    require(rmf_cone_spline_approximate_with_options(cubic.get(), 0.5, 6.0, &options, &spline_raw, nullptr),
+            "rmf_cone_spline_approximate_with_options");
     Spline spline(spline_raw);
     require(rmf_cone_spline_develop(spline.get(), &flat_raw), "rmf_cone_spline_develop");
     Spline flat(flat_raw);

@@ -2,6 +2,9 @@
 //! pairs, the three approximations and osculating cones, pieces, surfaces, boundaries,
 //! bending, development, offsets and the fit reports.
 
+// The deprecated C entry points are fuzzed for as long as they are exported.
+#![allow(deprecated)]
+
 use rmfsurf_capi::cone_spline::*;
 use rmfsurf_capi::RmfStatus;
 use std::ptr::{null, null_mut};

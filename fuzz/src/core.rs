@@ -3,6 +3,9 @@
 //! status helpers. Every capability's target mixes these in, so that its results are also
 //! read back through every accessor.
 
+// The deprecated C entry points are fuzzed for as long as they are exported.
+#![allow(deprecated)]
+
 use rmfsurf_capi::curve::*;
 use rmfsurf_capi::frames::*;
 use rmfsurf_capi::status::{rmf_status_name, rmf_version};

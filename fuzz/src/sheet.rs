@@ -6,6 +6,9 @@
 //! drawn distances; then reports, layer surfaces and boundaries, flat patterns, marks both ways
 //! and exports of whatever part was made.
 
+// The deprecated C entry points are fuzzed for as long as they are exported.
+#![allow(deprecated)]
+
 use rmfsurf_capi::cone_spline::RmfConeSpline;
 use rmfsurf_capi::curve::rmf_nurbs_curve_create;
 use rmfsurf_capi::sheet::*;
