@@ -3156,7 +3156,9 @@ RmfStatus rmf_ph_rational_rmf(const struct RmfCurve *ph_spline,
  *  - closure_symmetry k ≥ 1 (closed spines only): the RMF of a closed spine comes back
  *    turned by its holonomy; the smallest additional turn, modulo 2π/k, that closes it is
  *    added to twist. k is the symmetry order of the profile (1 for any profile, 4 for a
- *    square), so that the closed sweep has no seam. 0: open spine, no closure.
+ *    square), so that the closed sweep has no seam. 0: not given; the frame is left
+ *    open (the RMF with its holonomy). The same meaning as RmfWireSweepOptions's, where a
+ *    closed wire must close and 0 is taken as 1 (docs/c-api.md, "Parameters").
  *
  * @param[in] ph_spline, initial_normal As for rmf_ph_rational_rmf.
  * @param[in] twist Finite.

@@ -1,13 +1,14 @@
 //! The Python package (python/): its distributions as published (scripts/python-dist), each
-//! installed the way users get it into a fresh virtual environment with the tests'
-//! requirements (python/tests/requirements.txt: build123d and OCP, pytest), and then its
-//! test suite (python/tests) run against the installed copy:
+//! installed the way users get it beside the tests' requirements
+//! (python/tests/requirements.txt: build123d and OCP, pytest), and then its test suite
+//! (python/tests) run against the installed copy:
 //!
 //!  - the manylinux wheel, carrying the library, linked against glibc 2.17's symbols (read
 //!    here from the library itself, not only from auditwheel's verdict), installed with no
-//!    Rust toolchain on the PATH;
-//!  - the sdist, which pip builds — it fetches maturin, which builds the library with
-//!    Rust; `rmfsurf.__version__ == rmf_version()`.
+//!    Rust toolchain on the PATH into the test environment (scripts/python-env: built by
+//!    the test command on a fresh machine, kept between runs);
+//!  - the sdist, which pip builds in a fresh virtual environment — it fetches maturin,
+//!    which builds the library with Rust; `rmfsurf.__version__ == rmf_version()`.
 //!
 //! pytest runs with RMFSURF_REQUIRE_ALL=1: python/tests/conftest.py then turns every skip
 //! (a module `pytest.importorskip` does not find, a `skipif` whose condition holds) into a
@@ -19,7 +20,7 @@ mod support;
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
-use support::{python_dists, python_wheel, root, SETUP_HINT};
+use support::{python_dists, python_env, python_wheel, root, SETUP_HINT};
 
 /// A PATH with the virtual environment and the system's programs but no Rust toolchain.
 fn path_without_rust(venv: &std::path::Path) -> String {
@@ -158,17 +159,19 @@ fn install_test_requirements(venv: &Path, path: &str) {
     pip_install(venv, &["-r".as_ref(), requirements.as_os_str()], path);
 }
 
+/// The wheel goes into the test environment (scripts/python-env, which the test command
+/// builds on a fresh machine and keeps between runs), replacing the copy a run before left.
 #[test]
 fn wheel_installs_without_rust_and_passes_the_python_tests() {
-    let venv = fresh_venv("wheel-venv");
+    let venv = python_env();
     let wheel = python_wheel();
     let path = path_without_rust(&venv);
-    install_test_requirements(&venv, &path);
     pip_install(
         &venv,
         &[
             "--no-deps".as_ref(),
             "--no-index".as_ref(),
+            "--force-reinstall".as_ref(),
             wheel.as_os_str(),
         ],
         &path,

@@ -95,7 +95,8 @@ def ph_rational_rmf(ph_spline: Curve, initial_normal: ArrayLike = (0.0, 0.0, 1.0
     """The rational approximation of the RMF of a PH cubic spline (Mäurer & Jüttler
     §3.3–3.4), exact at the joints, degree 6. `twist` adds a turn linear in arc length
     (radians from start to end); `closure_symmetry` k ≥ 1 closes the frame of a closed
-    spine modulo 2π/k (k = the profile's symmetry order)."""
+    spine modulo 2π/k (k = the profile's symmetry order); 0 leaves the RMF's holonomy
+    (docs/c-api.md, "Parameters")."""
     spline = as_curve(ph_spline, "ph_spline")
     normal = _core.vec3(initial_normal, "initial_normal")
     turn = _core.number(twist, "twist")

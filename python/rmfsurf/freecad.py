@@ -19,8 +19,6 @@ from __future__ import annotations
 
 from typing import Any, List, Optional, Sequence, Tuple
 
-import math
-
 import numpy as np
 
 import FreeCAD
@@ -28,7 +26,8 @@ import Part
 
 from . import _core
 from .cone_splines import ConeSpline, cone_spline_approximate_ruled
-from .curves import ArrayLike, Curve, NurbsCurve, distinct_knots, flat_knots, join_nurbs
+from .curves import (ArrayLike, Curve, NurbsCurve, arc, circle, distinct_knots, flat_knots,
+                     join_nurbs)
 from .frames import SPINE_METHODS, Frames, framed_spine
 from .shapes import Arc, CurveEdge, Edge, Line, Shape, SweepReport, wire_sweep
 from .sheets import SheetPart
@@ -63,30 +62,18 @@ def _part_curve_data(curve: Any) -> NurbsCurve:
 
 
 def _circle_bspline(edge: Any) -> Any:
-    """A circular edge as the rational quadratic B-spline of spans of at most 90° (middle
-    weights the cosine of the half span: exact) over the edge's range. OpenCascade's own
-    conversion has 120° spans, which FreeCAD's fixed-order Shape.Volume resolves less well
-    (1.1e-9 against 1e-11 on a swept ring)."""
-    circle = edge.Curve
+    """A circular edge as the library's exact circle or arc (rational quadratic spans of at
+    most 90°) over the edge's parameter range. OpenCascade's own conversion has 120° spans,
+    which FreeCAD's fixed-order Shape.Volume resolves less well (1.1e-9 against 1e-11 on a
+    swept ring)."""
+    c = edge.Curve
     a, b = edge.FirstParameter, edge.LastParameter
-    n = max(1, int(math.ceil((b - a) / (0.5 * math.pi) - 1e-9)))
-    half = 0.5 * (b - a) / n
-    centre, x = circle.Center, circle.XAxis
-    y = circle.Axis.cross(x)
-
-    def point(t: float, r: float) -> Any:
-        return centre + x * (r * math.cos(t)) + y * (r * math.sin(t))
-
-    poles, weights = [edge.valueAt(a)], [1.0]
-    for k in range(n):
-        t = a + 2 * half * k
-        poles += [point(t + half, circle.Radius / math.cos(half)), point(t + 2 * half, circle.Radius)]
-        weights += [math.cos(half), 1.0]
-    poles[-1] = edge.valueAt(b)
-    knots = [a + 2 * half * k for k in range(n)] + [b]
-    curve = Part.BSplineCurve()
-    curve.buildFromPolesMultsKnots(poles, [3] + [2] * (n - 1) + [3], knots, False, 2, weights)
-    return curve
+    if edge.isClosed():
+        start = edge.valueAt(a) - c.Center
+        exact = circle(c.Radius, c.Center, start, c.Axis.cross(start))
+    else:
+        exact = arc(edge.valueAt(a), edge.valueAt(0.5 * (a + b)), edge.valueAt(b))
+    return part_curve(exact, (a, b))
 
 
 def _edge_bspline(edge: Any, placement: Any = None, degree: Optional[int] = None) -> Any:
@@ -129,10 +116,15 @@ def curve(value: Any, placement: Any = None) -> Curve:
     return Curve.from_nurbs(d.degree, d.poles, d.knots, d.weights)
 
 
-def part_curve(value: Curve) -> Any:
-    """An :class:`rmfsurf.Curve` as a ``Part.BSplineCurve`` (knots with multiplicities)."""
+def part_curve(value: Curve, bounds: Optional[Tuple[float, float]] = None) -> Any:
+    """An :class:`rmfsurf.Curve` as a ``Part.BSplineCurve`` (knots with multiplicities),
+    its parameter mapped linearly onto `bounds` if given."""
     d = _core.instance(value, "curve", Curve, "an rmfsurf.Curve").nurbs()
     knots, mults = distinct_knots(d.knots)
+    if bounds is not None:
+        k0, k1 = knots[0], knots[-1]
+        knots = [bounds[0] + (bounds[1] - bounds[0]) * (k - k0) / (k1 - k0) for k in knots]
+        knots[0], knots[-1] = bounds
     result = Part.BSplineCurve()
     result.buildFromPolesMultsKnots([vector(p) for p in d.poles], [int(m) for m in mults],
                                     [float(k) for k in knots], False, d.degree,
@@ -396,9 +388,10 @@ def sweep_with_report(wire: Any, profile: Any, *, solid: bool = True, corner: st
                       twist: float = 0.0, closure_symmetry: int = 0
                       ) -> Tuple[Any, SweepReport]:
     """:func:`sweep` with the wire sweep's `twist` (radians over the whole wire) and
-    `closure_symmetry` (closed wires: the frame closes modulo 2π/k), returning the
-    Part.Shape and the library's :class:`rmfsurf.SweepReport` (spine distance, RMF angle
-    error, parameter-line orthogonality, singularity margin, face count)."""
+    `closure_symmetry` (closed wires: the frame closes modulo 2π/k; 0 is taken as 1),
+    returning the Part.Shape and the library's :class:`rmfsurf.SweepReport` (spine
+    distance, RMF angle error, parameter-line orthogonality, singularity margin, face
+    count)."""
     tolerance = _core.finite(tolerance, "tolerance", positive=True)
     edges = _path_edges(wire, "wire")
     origin, tangent = _start_frame(wire)

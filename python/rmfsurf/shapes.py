@@ -217,7 +217,8 @@ def wire_sweep(edges: Union[Edge, Sequence[Edge]], profile: Curve,
         initial_normal: f2 at the start (None: the library's choice).
         twist: extra turn of the frame from start to end, radians.
         closure_symmetry: for a closed wire, the profile's symmetry order k ≥ 1 so that
-            the frame closes modulo 2π/k (0: open wire).
+            the frame closes modulo 2π/k without a seam; 0 is taken as 1 (ignored for an
+            open wire; docs/c-api.md, "Parameters").
     """
     _require_wire_sweep()
     array, count, keep = _edges(edges)
