@@ -73,7 +73,7 @@ def _circle_bspline(edge: Any) -> Any:
         exact = circle(c.Radius, c.Center, start, c.Axis.cross(start))
     else:
         exact = arc(edge.valueAt(a), edge.valueAt(0.5 * (a + b)), edge.valueAt(b))
-    return part_curve(exact, (a, b))
+    return _part_bspline(exact.nurbs(), (a, b))
 
 
 def _edge_bspline(edge: Any, placement: Any = None, degree: Optional[int] = None) -> Any:
@@ -116,10 +116,14 @@ def curve(value: Any, placement: Any = None) -> Curve:
     return Curve.from_nurbs(d.degree, d.poles, d.knots, d.weights)
 
 
-def part_curve(value: Curve, bounds: Optional[Tuple[float, float]] = None) -> Any:
-    """An :class:`rmfsurf.Curve` as a ``Part.BSplineCurve`` (knots with multiplicities),
-    its parameter mapped linearly onto `bounds` if given."""
-    d = _core.instance(value, "curve", Curve, "an rmfsurf.Curve").nurbs()
+def part_curve(value: Curve) -> Any:
+    """An :class:`rmfsurf.Curve` as a ``Part.BSplineCurve`` (knots with multiplicities)."""
+    return _part_bspline(_core.instance(value, "curve", Curve, "an rmfsurf.Curve").nurbs())
+
+
+def _part_bspline(d: NurbsCurve, bounds: Optional[Tuple[float, float]] = None) -> Any:
+    """NURBS data as a ``Part.BSplineCurve``, its parameter mapped linearly onto `bounds`
+    if given."""
     knots, mults = distinct_knots(d.knots)
     if bounds is not None:
         k0, k1 = knots[0], knots[-1]
