@@ -83,9 +83,11 @@ def rewrite_link(target, source, page_of):
     return BLOB + path + fragment
 
 
-def render_page(root, source, page_of, title):
+def render_page(root, source, page_of):
     with open(os.path.join(root, source), encoding="utf-8") as f:
         text = f.read()
+    heading = re.search(r"^# (.+)$", text, re.M)
+    title = heading.group(1) if heading else os.path.basename(source)[:-3]
     body = markdown.markdown(text, extensions=["tables", "fenced_code", "toc"])
 
     def fix(match):
@@ -95,7 +97,7 @@ def render_page(root, source, page_of, title):
     body = re.sub(r'\b(href|src)="([^"]*)"', fix, body)
     nav = " ".join('<a href="%s">%s</a>' % (href, label) for href, label in NAV)
     return ("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
-            "<title>%s — rmfsurf</title><style>%s</style></head><body><nav>%s</nav>\n%s"
+            "<title>%s</title><style>%s</style></head><body><nav>%s</nav>\n%s"
             "</body></html>\n" % (html.escape(title), STYLE, nav, body))
 
 
@@ -103,9 +105,8 @@ def write_guide(root, site):
     found = pages(root)
     page_of = {source: page for source, page in found}
     for source, page in found:
-        title = os.path.basename(source)[:-3] if page != "index.html" else "rmfsurf"
         with open(os.path.join(site, page), "w", encoding="utf-8") as f:
-            f.write(render_page(root, source, page_of, title))
+            f.write(render_page(root, source, page_of))
     shutil.copytree(os.path.join(root, "docs", "images"), os.path.join(site, "images"))
     return len(found)
 
