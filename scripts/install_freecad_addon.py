@@ -43,15 +43,23 @@ class Refused(Exception):
     pass
 
 
-def package_name(folder):
-    """The <name> of the package.xml in `folder`, or None."""
+def manifest(folder):
+    """A function giving the elements of a tag directly under the <package> of the
+    package.xml in `folder` (qualified with the file's namespace), or None when there is no
+    package.xml."""
     path = os.path.join(folder, "package.xml")
     if not os.path.isfile(path):
         return None
     root = ElementTree.parse(path).getroot()
     namespace = root.tag[:root.tag.index("}") + 1] if root.tag.startswith("{") else ""
-    name = root.find(namespace + "name")
-    return name.text.strip() if name is not None else None
+    return lambda tag: root.findall(namespace + tag)
+
+
+def package_name(folder):
+    """The <name> of the package.xml in `folder`, or None."""
+    children = manifest(folder)
+    names = children("name") if children else []
+    return names[0].text.strip() if names else None
 
 
 def wheel_platform(wheel):
@@ -132,11 +140,10 @@ def unpack_wheel(wheel, target):
             os.chmod(path, os.stat(path).st_mode | 0o755)
 
 
-LICENSES = ("LICENSE-MIT", "LICENSE-APACHE")
-
-
-def copy_licenses(source, target):
-    for name in LICENSES:
+def copy_licenses(addon, source, target):
+    """The license files the addon's package.xml names, from `source` into `target`."""
+    for license in manifest(addon)("license"):
+        name = license.get("file")
         shutil.copyfile(os.path.join(source, name), os.path.join(target, name))
 
 
@@ -153,16 +160,16 @@ def unpack_cffi_backends(wheels, target):
                 if "/" not in member and base.startswith("_cffi_backend.") and base.endswith(".so"):
                     archive.extract(member, target)
                     os.chmod(os.path.join(target, base), 0o755)
-                elif member.endswith(".dist-info/LICENSE") or member.endswith("licenses/LICENSE"):
-                    with archive.open(member) as src, \
-                            open(os.path.join(target, "LICENSE-cffi"), "wb") as dst:
-                        shutil.copyfileobj(src, dst)
+    # Every wheel carries the same license; the first one's is taken.
+    with zipfile.ZipFile(os.path.join(wheels, found[0])) as archive:
+        (member,) = [m for m in archive.namelist()
+                     if m.endswith(".dist-info/LICENSE") or m.endswith("licenses/LICENSE")]
+        with archive.open(member) as src, open(os.path.join(target, "LICENSE-cffi"), "wb") as dst:
+            shutil.copyfileobj(src, dst)
 
 
 def version_of(addon):
-    root = ElementTree.parse(os.path.join(addon, "package.xml")).getroot()
-    namespace = root.tag[:root.tag.index("}") + 1] if root.tag.startswith("{") else ""
-    return root.find(namespace + "version").text.strip()
+    return manifest(addon)("version")[0].text.strip()
 
 
 def install():
@@ -180,7 +187,7 @@ def install():
     check_python_modules(os.environ["RMFSURF_CFFI_WHEELS"])
     copy_addon(source, target)
     unpack_wheel(wheel, target)
-    copy_licenses(os.environ["RMFSURF_LICENSES"], target)
+    copy_licenses(source, os.environ["RMFSURF_LICENSES"], target)
     unpack_cffi_backends(os.environ["RMFSURF_CFFI_WHEELS"], target)
     say("FreeCAD %s, Python %d.%d, %s" % (".".join(FreeCAD.Version()[:3]),
                                           sys.version_info[0], sys.version_info[1],
