@@ -141,7 +141,8 @@ pub use cone_spline::{
 
 // Sweeps along wires (lines, arcs, curves, corners) into closed solids of exact faces.
 pub use wire::{
-    sweep_wire, Corner, Edge, Face, FaceKind, Shape, SweepReport, WireSweep, MAX_FACES,
+    sweep_wire, Corner, Edge, Face, FaceKind, Shape, SweepFrame, SweepReport, WireSweep,
+    MAX_FACES,
 };
 // Sheet-metal parts: transition pieces between two curves, thickness and K-factor, the
 // neutral layer's flat pattern, marks between flat and formed [LP].
@@ -189,7 +190,7 @@ pub mod prelude {
         ph_spline_approximate, ph_spline_hermite, rrmf_spline, sweep, sweep_wire, ConeSpline, Edge,
         Error, ErrorKind, ExactRmf, FrameField, NurbsCurve, NurbsSurface, ParametricCurve,
         PiecewiseCurve, PiecewiseSurface, RationalFrames, Result, ResultExt, RmfOptions, Shape,
-        WireSweep,
+        SweepFrame, WireSweep,
     };
     pub use glam::DVec3;
 }

@@ -162,6 +162,7 @@ fn wire_options(o: &RmfWireSweepOptions) -> Result<WireSweep, FfiError> {
         twist: o.twist,
         closure_symmetry: o.closure_symmetry,
         solid: o.solid == 1,
+        ..WireSweep::default()
     })
 }
 

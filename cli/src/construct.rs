@@ -128,6 +128,7 @@ pub fn run_wire(job: &WireJob) -> Result<Shape, InputError> {
         twist: job.twist,
         closure_symmetry: job.closure_symmetry,
         solid: job.solid,
+        ..WireSweep::default()
     };
     sweep_wire(&edges, &profile, &holes, &options).map_err(|e| InputError {
         path: wire_blame(&e.message()),

@@ -113,6 +113,8 @@ pub(crate) struct Transport {
     /// Closed wires: the frame after the closing joint is the start frame turned by this
     /// (a multiple of 2π/k up to rounding).
     pub closing_turn: f64,
+    /// Largest angle between the frames and the frame law asked for (0 for the RMF).
+    pub frame_error: f64,
 }
 
 /// The curve a piece is swept along: the line or the arc, or the PH spline of a curve
@@ -361,6 +363,7 @@ pub(crate) fn transport(chain: &Chain, options: &FrameOptions) -> Result<Transpo
         pieces,
         closed: chain.closed,
         closing_turn,
+        frame_error: 0.0,
     })
 }
 

@@ -70,6 +70,23 @@ pub enum Corner {
     Miter,
 }
 
+/// How the profile turns about the wire's tangent (before any twist).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub enum SweepFrame {
+    /// The rotation-minimizing frame: no turn about the tangent (pipes, mouldings).
+    #[default]
+    Rmf,
+    /// The Frenet frame: f₂ along the principal normal at the start, then turning against
+    /// the RMF by the curve's torsion — the screw motion of a helix, so a thread's edges are
+    /// helices. Where the curvature vanishes (lines, inflections) or the normal jumps
+    /// (joints) the frame keeps its angle instead of flipping.
+    Frenet,
+    /// f₂ along this direction projected onto the normal plane: the profile keeps its
+    /// relation to the axis (OpenCascade's binormal mode). Refused where the direction is
+    /// along the tangent.
+    Fixed(DVec3),
+}
+
 /// The options of a wire sweep.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct WireSweep {
@@ -91,6 +108,11 @@ pub struct WireSweep {
     pub closure_symmetry: u32,
     /// A closed solid (the profile must be closed); otherwise the lateral faces only.
     pub solid: bool,
+    /// How the profile turns about the tangent (default the RMF).
+    pub frame: SweepFrame,
+    /// The profile's scale at the wire's start and end (default `[1, 1]`), linear in arc
+    /// length between; both finite and positive, equal on a closed wire.
+    pub scale: [f64; 2],
 }
 
 impl Default for WireSweep {
@@ -103,6 +125,8 @@ impl Default for WireSweep {
             twist: 0.0,
             closure_symmetry: 0,
             solid: true,
+            frame: SweepFrame::Rmf,
+            scale: [1.0, 1.0],
         }
     }
 }
@@ -286,8 +310,33 @@ fn check_options(options: &WireSweep) -> Result<()> {
         if !n.is_finite() {
             return invalid!("initial_normal = {n} must be finite");
         }
+        if n != DVec3::ZERO && options.frame != SweepFrame::Rmf {
+            return invalid!(
+                "initial_normal = {n} is for the rmf frame; the {} frame sets f2 itself",
+                frame_name(&options.frame)
+            );
+        }
+    }
+    if let SweepFrame::Fixed(d) = options.frame {
+        if !(d.is_finite() && d != DVec3::ZERO) {
+            return invalid!("frame: the fixed direction {d} must be finite and not zero");
+        }
+    }
+    for (name, s) in ["start", "end"].iter().zip(options.scale) {
+        if !(s.is_finite() && s > 0.0) {
+            return invalid!("scale: the {name} scale {s} must be finite and positive");
+        }
     }
     Ok(())
+}
+
+/// The frame's name as the CLI and Python spell it.
+fn frame_name(frame: &SweepFrame) -> &'static str {
+    match frame {
+        SweepFrame::Rmf => "rmf",
+        SweepFrame::Frenet => "frenet",
+        SweepFrame::Fixed(_) => "fixed",
+    }
 }
 
 /// The points that span an edge (for the wire's size and centre).

@@ -124,6 +124,11 @@ pub struct SweepReport {
     /// Closed wires: the largest distance between the sections where the wire closes (0
     /// for open wires), in the wire's units.
     pub seam_gap: f64,
+    /// Largest angle (radians) between the frames used and the frame asked for
+    /// ([`super::SweepFrame`]: the Frenet frame or the fixed direction's, each offset by the
+    /// turn it kept where the curvature vanished or the normal jumped), sampled; 0 for the
+    /// RMF.
+    pub frame_error: f64,
     /// The largest distance between the sections of consecutive pieces at the joints
     /// inside the wire (0 at G1 joints up to rounding; ½θ²·r at near-tangent joints), in
     /// the wire's units.
@@ -489,6 +494,7 @@ pub(crate) fn build(
         corner_turn: corner_turn(transport),
         seam_gap,
         joint_gap,
+        frame_error: transport.frame_error,
     };
     Ok(Shape {
         faces,
