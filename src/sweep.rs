@@ -12,7 +12,7 @@
 //! RRMF constructions. The weights h(u)·w(v)·d(v) factor, so the patches join into one NURBS
 //! whenever frames and spine are continuous.
 
-use crate::bezier::bernstein::product;
+use crate::bezier::bernstein::{elevate, product};
 use crate::bezier::{PiecewiseCurve, PiecewiseSurface, RationalBezierCurve, RationalBezierPatch};
 use crate::error::{invalid, Result};
 use crate::frames::rational::{RationalFrameSegment, RationalFrames};
@@ -38,13 +38,43 @@ pub(crate) fn sweep_along(
     frames: &RationalFrames,
     profile: &PiecewiseCurve,
 ) -> Result<PiecewiseSurface> {
+    sweep_with(spine, frames, profile, None)
+}
+
+/// [`sweep_along`] with the profile scaled by σ(v) (a scale law, Mäurer & Jüttler (1) with
+/// σ c in place of c): `sigma(v0, v1)` gives σ's Bernstein coefficients on each frame
+/// segment [v0, v1]. The frame factors take σ, the spine's is raised to match:
+/// S = h ⊗ (X·d, w·d)↑ + C₂ ⊗ (σ·w·N₂, 0) + C₃ ⊗ (σ·w·N₃, 0).
+pub(crate) fn sweep_scaled(
+    spine: &PiecewiseCurve,
+    frames: &RationalFrames,
+    profile: &PiecewiseCurve,
+    sigma: impl Fn(f64, f64) -> Vec<f64>,
+) -> Result<PiecewiseSurface> {
+    sweep_with(spine, frames, profile, Some(&sigma))
+}
+
+/// The sweep, its profile scaled by `sigma` where one is given.
+fn sweep_with(
+    spine: &PiecewiseCurve,
+    frames: &RationalFrames,
+    profile: &PiecewiseCurve,
+    sigma: Option<&dyn Fn(f64, f64) -> Vec<f64>>,
+) -> Result<PiecewiseSurface> {
     let spine = &*on_frame_segments(spine, frames);
     check_sweep_size(spine, frames, profile)?;
     let factors: Vec<SpineFactors> = spine
         .segments()
         .iter()
         .zip(frames.segments())
-        .map(|(segment, frame)| SpineFactors::new(segment, frame))
+        .zip(frames.breaks().windows(2))
+        .map(|((segment, frame), v)| {
+            let factors = SpineFactors::new(segment, frame);
+            match sigma {
+                Some(sigma) => factors.scaled(&sigma(v[0], v[1])),
+                None => factors,
+            }
+        })
         .collect();
     let mut patches = Vec::with_capacity(profile.segments().len() * factors.len());
     for piece in profile.segments() {
@@ -101,6 +131,18 @@ impl SpineFactors {
             along_spine: product(x, frame.denominator(), |h: DVec4, d: f64| h * d),
             along_f2: weighted(frame.f2_numerator()),
             along_f3: weighted(frame.f3_numerator()),
+        }
+    }
+}
+
+impl SpineFactors {
+    /// The factors with the profile scaled by σ (Bernstein coefficients on the segment).
+    fn scaled(self, sigma: &[f64]) -> Self {
+        let times = |n: &[DVec4]| product(sigma, n, |s: f64, n: DVec4| n * s);
+        Self {
+            along_spine: elevate(&self.along_spine, sigma.len() - 1),
+            along_f2: times(&self.along_f2),
+            along_f3: times(&self.along_f3),
         }
     }
 }

@@ -130,7 +130,13 @@ impl Arc {
 
     /// The arc as rational quadratic Bézier segments on the breakpoints k/n, ends exact.
     pub fn curve(&self) -> PiecewiseCurve {
-        let n = self.segment_count();
+        self.curve_in(self.segment_count())
+    }
+
+    /// The arc as `n` rational quadratic Bézier segments of equal angle (n ≥ 1) on the
+    /// breakpoints k/n, ends exact.
+    pub fn curve_in(&self, n: usize) -> PiecewiseCurve {
+        let n = n.max(1);
         let half = 0.5 * self.angle / n as f64;
         let weight = half.cos();
         let segments = (0..n)

@@ -235,6 +235,16 @@ pub(crate) struct Piece {
     pub corner: Option<String>,
 }
 
+impl Piece {
+    /// What the piece is called in messages: its edge, or the round corner it makes.
+    pub fn name(&self) -> String {
+        match &self.corner {
+            Some(joint) => format!("the round corner at the {joint}"),
+            None => format!("edge {}", self.edge),
+        }
+    }
+}
+
 /// How two consecutive pieces meet.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) enum JointKind {

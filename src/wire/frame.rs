@@ -28,13 +28,18 @@
 //! than the profile's cuts at its ends.
 
 use super::edge::{Chain, Geometry, Joint, JointKind, Piece};
+use super::law::{law_jet, law_normal, LawAngle, Unwrapped, LAW_SAMPLES};
 use super::profile::{Profile, SupportTable};
+use super::scale::{arc_segments, ScaleLaw};
+use super::SweepFrame;
 use crate::bezier::{PiecewiseCurve, RationalBezierCurve};
 use crate::error::{invalid, Result, ResultExt};
 use crate::frames::metrics::angle_about_tangent;
-use crate::frames::rational::RationalFrames;
+use crate::frames::rational::{RationalFrameSegment, RationalFrames};
 use crate::frames::Frame;
+use crate::math::lerp;
 use crate::math::{normal_plane_unit, orthogonalized, orthonormal_to, signed_angle};
+use crate::mesh::grid_parameters;
 use crate::model::{Arc, Similarity};
 use crate::ph_cubic::accuracy::AngleCheck;
 use crate::ph_cubic::analysis::ProfileSurface;
@@ -45,7 +50,7 @@ use crate::ph_cubic::exact_rmf::ExactRmf;
 use crate::ph_cubic::rational_rmf::{ph_rational_rmf, RmfOptions};
 use crate::ph_cubic::spline::PhSpline;
 use glam::{DVec2, DVec3};
-use std::f64::consts::{FRAC_PI_2, PI};
+use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 /// Samples per segment at which twisted lines and arcs are compared with their target.
 const ERROR_SAMPLES: usize = 64;
@@ -57,6 +62,8 @@ const MAX_HALVINGS: usize = 16;
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct FrameOptions {
     pub initial_normal: Option<DVec3>,
+    /// The frame followed (the RMF, Frenet, a fixed direction), before the twist.
+    pub law: SweepFrame,
     pub twist: f64,
     /// Closed wires: k of 2π/k (≥ 1).
     pub closure_symmetry: u32,
@@ -64,6 +71,10 @@ pub(crate) struct FrameOptions {
     pub tolerance: f64,
     /// How normalized coordinates map to the caller's.
     pub units: Similarity,
+    /// The scale law (its length estimated from the wire's edges), and the profile's
+    /// largest distance from the spine, for cutting arcs fine enough for it.
+    pub scale: ScaleLaw,
+    pub reach: f64,
 }
 
 /// A closing turn (radians) at most this is rounding: the frame closes as it is, and the
@@ -130,7 +141,8 @@ struct Spine {
 /// caller's units (the normalized coordinates scaled back by a power of two, exactly: the
 /// same decisions at every scale and position), so that what the approximation reports (a
 /// tolerance below the rounding, say) is in the caller's units.
-fn spines(chain: &Chain, tolerance: f64, units: Similarity) -> Result<Vec<Spine>> {
+fn spines(chain: &Chain, options: &FrameOptions) -> Result<Vec<Spine>> {
+    let (tolerance, units) = (options.tolerance, options.units);
     chain
         .pieces
         .iter()
@@ -142,6 +154,16 @@ fn spines(chain: &Chain, tolerance: f64, units: Similarity) -> Result<Vec<Spine>
             };
             Ok(match &piece.geometry {
                 Geometry::Line { a, b } => exact(line_curve(*a, *b)),
+                Geometry::Arc(arc) if !options.scale.is_constant() => {
+                    exact(arc.curve_in(arc_segments(
+                        arc.segment_count(),
+                        arc.angle,
+                        arc.radius,
+                        &options.scale,
+                        options.reach,
+                        tolerance,
+                    )))
+                }
                 Geometry::Arc(arc) => exact(arc.curve()),
                 Geometry::Curve(c) => {
                     let (ph, distance) = match given_ph_spline(c) {
@@ -287,14 +309,15 @@ fn miters(chain: &Chain) -> Vec<[Option<(DVec3, DVec3)>; 2]> {
 
 /// The frame along the chain (module notes).
 pub(crate) fn transport(chain: &Chain, options: &FrameOptions) -> Result<Transport> {
-    let spines = spines(chain, options.tolerance, options.units)?;
+    let spines = spines(chain, options)?;
     let m = chain.pieces.len();
     let first = &chain.pieces[0].geometry;
     let t0 = first.start_tangent();
     let f2_start = match options.initial_normal {
         Some(n) => normal_plane_unit(n, t0, "initial_normal")?,
-        None => default_normal(chain),
+        None => law_start(chain, &spines[0], options)?.unwrap_or_else(|| default_normal(chain)),
     };
+    let law_turns = law_turns(chain, &spines, options)?;
     let lengths: Vec<f64> = chain
         .pieces
         .iter()
@@ -314,8 +337,18 @@ pub(crate) fn transport(chain: &Chain, options: &FrameOptions) -> Result<Transpo
     let mut total_twist = options.twist;
     if chain.closed {
         let mut f2 = f2_start;
-        for ((piece, spine), joint) in chain.pieces.iter().zip(&spines).zip(&chain.joints).take(m) {
+        for (i, ((piece, spine), joint)) in chain
+            .pieces
+            .iter()
+            .zip(&spines)
+            .zip(&chain.joints)
+            .take(m)
+            .enumerate()
+        {
             f2 = carry(piece, spine, f2)?;
+            f2 = Frame::from_tangent_normal(piece.geometry.end_tangent(), f2)
+                .rotated(law_turns[i].turn)
+                .f2;
             f2 = across(joint, f2);
         }
         let holonomy = signed_angle(f2_start, f2, t0);
@@ -345,9 +378,28 @@ pub(crate) fn transport(chain: &Chain, options: &FrameOptions) -> Result<Transpo
     let mut f2 = f2_start;
     for i in 0..m {
         let piece = &chain.pieces[i];
-        let turn = if twistable[i] { rate * lengths[i] } else { 0.0 };
-        let framed = frame_piece(piece, spines[i].clone(), lengths[i], f2, turn, miters[i])
-            .with_context(|| format!("edge {}", piece.edge))?;
+        let LawTurn {
+            turn: law_turn,
+            uniform,
+        } = law_turns[i];
+        let turn = law_turn + if twistable[i] { rate * lengths[i] } else { 0.0 };
+        // Along a curve a law that turns is followed (the twist of a PH spline's RMF that
+        // cancels its torsion, as a helix's Frenet frame asks, leaves W no direction).
+        let follow = !uniform || (law_turn != 0.0 && matches!(piece.geometry, Geometry::Curve(_)));
+        let law = follow.then_some(&options.law);
+        let framed = frame_piece(
+            piece,
+            spines[i].clone(),
+            lengths[i],
+            f2,
+            PieceTurn {
+                total: turn,
+                law: law.map(|law| (law, turn - law_turn)),
+                accuracy: law_accuracy(options),
+            },
+            miters[i],
+        )
+        .with_context(|| format!("edge {}", piece.edge))?;
         f2 = framed.end.f2;
         if let Some(joint) = chain.joints.get(i) {
             f2 = across(joint, f2);
@@ -360,21 +412,213 @@ pub(crate) fn transport(chain: &Chain, options: &FrameOptions) -> Result<Transpo
         0.0
     };
     Ok(Transport {
+        frame_error: frame_error(&pieces, &options.law),
         pieces,
         closed: chain.closed,
         closing_turn,
-        frame_error: 0.0,
     })
 }
 
-/// The frame along one piece starting at f₂, turned by `turn` in total (linear in arc
-/// length).
+/// The curve as given, where a piece is one.
+fn given(piece: &Piece) -> Option<&PiecewiseCurve> {
+    match &piece.geometry {
+        Geometry::Curve(c) => Some(c),
+        _ => None,
+    }
+}
+
+/// f₂ at the wire's start as the law asks (`None`: the RMF, or a Frenet frame where the
+/// start is straight).
+fn law_start(chain: &Chain, spine: &Spine, options: &FrameOptions) -> Result<Option<DVec3>> {
+    let piece = &chain.pieces[0];
+    let v = spine.curve.domain().0;
+    let jet = law_jet(given(piece), &spine.curve, v, v);
+    let normal = law_normal(&options.law, &jet);
+    if let (SweepFrame::Fixed(d), None) = (options.law, normal) {
+        return Err(along_tangent(d, piece, jet.point, options.units));
+    }
+    Ok(normal.map(|n| orthogonalized(n, piece.geometry.start_tangent()).normalize()))
+}
+
+fn along_tangent(d: DVec3, piece: &Piece, at: DVec3, units: Similarity) -> crate::error::Error {
+    crate::error::Error::invalid_input(format!(
+        "frame: the fixed direction {d} runs along the tangent of {} at {} (it must stay out \
+         of the tangent everywhere on the wire)",
+        piece.name(),
+        units.to_user(at)
+    ))
+}
+
+/// The RMF along one piece from a given f₂ at its start, at the spine's parameters.
+enum PieceRmf<'a> {
+    Constant(DVec3),
+    Arc { arc: &'a Arc, a: f64, b: f64 },
+    Exact(ExactRmf),
+}
+
+impl PieceRmf<'_> {
+    /// (f₂, unit tangent) at the spine's parameter `v`.
+    fn at(&self, spine: &PiecewiseCurve, v: f64) -> (DVec3, DVec3) {
+        match self {
+            PieceRmf::Constant(f2) => (*f2, spine.eval_jet(v).d1.normalize()),
+            PieceRmf::Arc { arc, a, b } => circular_at(arc, *a, *b, spine, v),
+            PieceRmf::Exact(exact) => {
+                let frame = exact.frame(v);
+                (frame.f2, frame.tangent)
+            }
+        }
+    }
+}
+
+/// The arc's frame f₂ = aN + bB at the spine's parameter `v`, with the unit tangent.
+fn circular_at(arc: &Arc, a: f64, b: f64, spine: &PiecewiseCurve, v: f64) -> (DVec3, DVec3) {
+    let jet = spine.eval_jet(v);
+    let n = (arc.center - jet.point) / arc.radius;
+    (a * n + b * arc.normal, jet.d1.normalize())
+}
+
+/// What a frame law asks of one piece: its turn against the RMF, and whether that turn
+/// is linear in arc length (within the law's accuracy: the twist machinery carries it, as
+/// on a helix, a planar curve or a line) or must be followed ([`law_frames`]).
+#[derive(Clone, Copy, Debug, Default)]
+struct LawTurn {
+    turn: f64,
+    uniform: bool,
+}
+
+/// The turn against the RMF over each piece that the frame law asks for (module `law`).
+fn law_turns(chain: &Chain, spines: &[Spine], options: &FrameOptions) -> Result<Vec<LawTurn>> {
+    let law = &options.law;
+    if *law == SweepFrame::Rmf {
+        return Ok(vec![
+            LawTurn {
+                turn: 0.0,
+                uniform: true
+            };
+            chain.pieces.len()
+        ]);
+    }
+    let accuracy = law_accuracy(options);
+    chain
+        .pieces
+        .iter()
+        .zip(spines)
+        .map(|(piece, spine)| {
+            let f2 = orthonormal_to(piece.geometry.start_tangent());
+            let (lo, hi) = spine.curve.domain();
+            let rmf = match (&piece.geometry, &spine.ph) {
+                (Geometry::Arc(arc), _) => {
+                    let (a, b) = arc_coefficients(arc, f2);
+                    PieceRmf::Arc { arc, a, b }
+                }
+                (_, Some(ph)) => PieceRmf::Exact(
+                    ExactRmf::new(ph, f2, 0.0).with_context(|| format!("edge {}", piece.edge))?,
+                ),
+                _ => PieceRmf::Constant(f2),
+            };
+            let mut angles = Unwrapped::new(law);
+            // (arc length, angle) where the law is defined.
+            let mut track = Vec::new();
+            for v in grid_parameters(spine.curve.breaks(), LAW_SAMPLES) {
+                let jet = law_jet(given(piece), &spine.curve, v, v);
+                let (r2, t) = rmf.at(&spine.curve, v);
+                match (law_normal(law, &jet), law) {
+                    (Some(n), _) => {
+                        angles.push(r2, n, t);
+                        let s = match &rmf {
+                            PieceRmf::Exact(exact) => exact.arc_length_at(v),
+                            _ => piece.geometry.length() * (v - lo) / (hi - lo),
+                        };
+                        track.extend(angles.last().map(|a| (s, a)));
+                    }
+                    (None, SweepFrame::Fixed(d)) => {
+                        return Err(along_tangent(*d, piece, jet.point, options.units))
+                    }
+                    (None, _) => {}
+                }
+            }
+            let turn = angles.change();
+            let uniform = match (track.first(), track.last()) {
+                (Some(&(s0, a0)), Some(&(s1, a1))) if s1 > s0 => track
+                    .iter()
+                    .all(|&(s, a)| (a - a0 - (a1 - a0) * (s - s0) / (s1 - s0)).abs() <= accuracy),
+                _ => true,
+            };
+            let turn = if turn.abs() <= CLOSURE_ROUND_OFF {
+                0.0
+            } else {
+                turn
+            };
+            Ok(LawTurn { turn, uniform })
+        })
+        .collect()
+}
+
+/// Largest angle between the frames built and the law, each piece's offset at its start
+/// taken off (module `law`); 0 for the RMF.
+fn frame_error(pieces: &[Framed], law: &SweepFrame) -> f64 {
+    if *law == SweepFrame::Rmf {
+        return 0.0;
+    }
+    let mut worst = 0.0f64;
+    for framed in pieces {
+        let mut angles = Unwrapped::new(law);
+        for v in grid_parameters(framed.spine.breaks(), LAW_SAMPLES) {
+            let (f2, t) = match (&framed.frame, &framed.piece.geometry) {
+                (PieceFrame::Constant { f2, .. }, _) => (*f2, framed.start.tangent),
+                (PieceFrame::Circular { a, b }, Geometry::Arc(arc)) => {
+                    circular_at(arc, *a, *b, &framed.spine, v)
+                }
+                (PieceFrame::Rational(frames), _) => {
+                    let frame = frames.frame(v);
+                    (frame.f2, frame.tangent)
+                }
+                _ => continue,
+            };
+            let jet = law_jet(given(&framed.piece), &framed.spine, v, v);
+            if let Some(n) = law_normal(law, &jet) {
+                angles.push(f2, n, t);
+            }
+        }
+        // A fixed direction is followed from the wire's start on (f₂ starts on it); the
+        // Frenet frame keeps the angle it has where its normal was undefined or jumped.
+        worst = worst.max(match law {
+            SweepFrame::Fixed(_) => angles.largest(),
+            _ => angles.spread(),
+        });
+    }
+    worst
+}
+
+/// How closely a frame law is followed: a quarter of the tolerance at the profile's
+/// reach (the profile then lies within it of the law's sweep), between the accuracy of a
+/// twist and a milliradian.
+fn law_accuracy(options: &FrameOptions) -> f64 {
+    (0.25 * options.tolerance / options.reach.max(f64::MIN_POSITIVE)).clamp(TWIST_ACCURACY, 1e-3)
+}
+
+/// How a piece's frame turns against the RMF.
+#[derive(Clone, Copy)]
+struct PieceTurn<'a> {
+    /// The whole turn over the piece.
+    total: f64,
+    /// A frame law other than the RMF, and the part of the turn that is twist and closure
+    /// (linear in arc length) on top of it.
+    law: Option<(&'a SweepFrame, f64)>,
+    /// How closely (radians) the frame follows the law: the tolerance at the profile's
+    /// reach.
+    accuracy: f64,
+}
+
+/// The frame along one piece starting at f₂, turned by `turn.total` in total: linearly in
+/// arc length, or as the frame law asks where it does not turn so (a fixed direction
+/// across an arc, either law along a curve; module `law`).
 fn frame_piece(
     piece: &Piece,
     spine: Spine,
     length: f64,
     f2: DVec3,
-    turn: f64,
+    turn: PieceTurn,
     miters: [Option<(DVec3, DVec3)>; 2],
 ) -> Result<Framed> {
     let geometry = &piece.geometry;
@@ -382,49 +626,61 @@ fn frame_piece(
     let f2 = orthogonalized(f2, tangent).normalize();
     let start = Frame::from_tangent_normal(tangent, f2);
     let mut angle_check = None;
-    let (frame, end, angle_error) = match geometry {
-        Geometry::Line { .. } if turn == 0.0 => {
-            (PieceFrame::Constant { f2, f3: start.f3 }, start, 0.0)
+    let (followed, accuracy) = (turn.law, turn.accuracy);
+    let turn = turn.total;
+    let (frame, end, angle_error) = match (geometry, followed) {
+        (Geometry::Arc(_) | Geometry::Curve(_), Some((law, extra))) => {
+            let frames = law_frames(piece, &spine, length, f2, law, extra, accuracy)?;
+            let end = frames.frame(spine.curve.domain().1);
+            (PieceFrame::Rational(frames), end, 0.0)
         }
-        Geometry::Line { .. } => {
-            let base = FrameNumerators {
-                e2: vec![f2; 2],
-                e3: vec![start.f3; 2],
-                d: vec![1.0; 2],
-            };
-            let frames =
-                turned_frames(spine.curve.breaks(), &[base], &|_, v| turn * v, &|_, _| {
-                    turn
-                })?;
-            let error = max_error(&frames, |v| start.rotated(turn * v));
-            let end = frames.frame(1.0);
-            (PieceFrame::Rational(frames), end, error)
-        }
-        Geometry::Arc(arc) => {
-            let (a, b) = arc_coefficients(arc, f2);
-            let exact = |phi: f64| {
-                let n = arc.principal_normal(phi);
-                Frame::from_tangent_normal(arc.tangent(phi), a * n + b * arc.normal)
-            };
-            if turn == 0.0 {
-                (PieceFrame::Circular { a, b }, exact(arc.angle), 0.0)
-            } else {
-                let (frames, error) = twisted_arc(arc, &spine.curve, a, b, turn)?;
+        (geometry, _) => match geometry {
+            Geometry::Line { .. } if turn == 0.0 => {
+                (PieceFrame::Constant { f2, f3: start.f3 }, start, 0.0)
+            }
+            Geometry::Line { .. } => {
+                let base = FrameNumerators {
+                    e2: vec![f2; 2],
+                    e3: vec![start.f3; 2],
+                    d: vec![1.0; 2],
+                };
+                let frames = turned_frames(
+                    spine.curve.breaks(),
+                    &[base],
+                    &|_, v| turn * v,
+                    &|_, _| turn,
+                    TWIST_ACCURACY,
+                )?;
+                let error = max_error(&frames, |v| start.rotated(turn * v));
                 let end = frames.frame(1.0);
                 (PieceFrame::Rational(frames), end, error)
             }
-        }
-        Geometry::Curve(_) => {
-            let ph = spine.ph.as_ref().expect("a curve piece has a PH spline");
-            let options = RmfOptions {
-                twist: turn,
-                ..RmfOptions::rmf(f2)
-            };
-            let frames = ph_rational_rmf(ph, &options)?.framed.into_parts().1;
-            angle_check = Some(AngleCheck::new(ph, &frames)?);
-            let end = frames.frame(ph.domain().1);
-            (PieceFrame::Rational(frames), end, 0.0)
-        }
+            Geometry::Arc(arc) => {
+                let (a, b) = arc_coefficients(arc, f2);
+                let exact = |phi: f64| {
+                    let n = arc.principal_normal(phi);
+                    Frame::from_tangent_normal(arc.tangent(phi), a * n + b * arc.normal)
+                };
+                if turn == 0.0 {
+                    (PieceFrame::Circular { a, b }, exact(arc.angle), 0.0)
+                } else {
+                    let (frames, error) = twisted_arc(arc, &spine.curve, a, b, turn)?;
+                    let end = frames.frame(1.0);
+                    (PieceFrame::Rational(frames), end, error)
+                }
+            }
+            Geometry::Curve(_) => {
+                let ph = spine.ph.as_ref().expect("a curve piece has a PH spline");
+                let options = RmfOptions {
+                    twist: turn,
+                    ..RmfOptions::rmf(f2)
+                };
+                let frames = ph_rational_rmf(ph, &options)?.framed.into_parts().1;
+                angle_check = Some(AngleCheck::new(ph, &frames)?);
+                let end = frames.frame(ph.domain().1);
+                (PieceFrame::Rational(frames), end, 0.0)
+            }
+        },
     };
     let Spine {
         curve: spine,
@@ -443,6 +699,110 @@ fn frame_piece(
         angle_check,
         miters,
     })
+}
+
+/// Rational frames along a piece that follow a frame law: its RMF (exact on an arc, the
+/// PH spline's rational RMF on a curve) turned by 2 arctan W fitted to the law's angle
+/// against it, plus `extra` (twist and closure) linear in arc length — within
+/// [`TWIST_ACCURACY`] of the law, exact at the ends of every piece of W.
+fn law_frames(
+    piece: &Piece,
+    spine: &Spine,
+    length: f64,
+    f2: DVec3,
+    law: &SweepFrame,
+    extra: f64,
+    accuracy: f64,
+) -> Result<RationalFrames> {
+    // The RMF as rational frames on the spine's parameter, and the arc length at v.
+    let (base, arc_length): (RationalFrames, Box<dyn Fn(f64) -> f64>) =
+        match (&piece.geometry, &spine.ph) {
+            (Geometry::Arc(arc), _) => {
+                let (a, b) = arc_coefficients(arc, f2);
+                let segments = spine
+                    .curve
+                    .segments()
+                    .iter()
+                    .map(|s| {
+                        let n = arc_numerators(arc, s, a, b);
+                        RationalFrameSegment::new(n.e2, n.e3, n.d)
+                    })
+                    .collect::<Result<Vec<_>>>()?;
+                let frames = RationalFrames::new(segments, spine.curve.breaks().to_vec())?;
+                let start = arc.start - arc.center;
+                let (center, normal, radius) = (arc.center, arc.normal, arc.radius);
+                let curve = spine.curve.clone();
+                let angle = arc.angle;
+                (
+                    frames,
+                    Box::new(move |v| {
+                        let p = curve.eval(v) - center;
+                        // Past a half turn signed_angle is negative; at the start, rounding.
+                        let phi = signed_angle(start, p, normal);
+                        let phi = if phi < -1e-6 { phi + TAU } else { phi.max(0.0) };
+                        radius * phi.min(angle)
+                    }),
+                )
+            }
+            (_, Some(ph)) => {
+                let frames = ph_rational_rmf(ph, &RmfOptions::rmf(f2))?
+                    .framed
+                    .into_parts()
+                    .1;
+                let exact = ExactRmf::new(ph, f2, 0.0)?;
+                (frames, Box::new(move |v| exact.arc_length_at(v)))
+            }
+            _ => return invalid!("internal: a frame law on {}", piece.geometry.kind_name()),
+        };
+    let given = given(piece);
+    // The raw angle at v, the law read on the side of `inside`.
+    let raw_in = |v: f64, inside: f64| {
+        let frame = base.frame(v);
+        law_normal(law, &law_jet(given, &spine.curve, v, inside))
+            .map(|n| signed_angle(frame.f2, n, frame.tangent))
+    };
+    let raw = |v: f64| raw_in(v, v);
+    let target = LawAngle::new(law, base.breaks(), &raw);
+    let breaks = base.breaks().to_vec();
+    // The law on segment k, read on its own side of its ends.
+    let on = |k: usize, v: f64| {
+        let inside = lerp(breaks[k], breaks[k + 1], 0.5);
+        target.at(v, &|v| raw_in(v, inside))
+    };
+    // Where the law's normal jumps at a break (the curve as given is only G1 there), both
+    // sides meet at the mean and the jump is spread linearly over each side's segment, so
+    // that the frames stay continuous.
+    let last = breaks.len() - 2;
+    let joints: Vec<f64> = (0..breaks.len())
+        .map(|j| match j {
+            0 => on(0, breaks[0]),
+            j if j > last => on(last, breaks[j]),
+            j => 0.5 * (on(j - 1, breaks[j]) + on(j, breaks[j])),
+        })
+        .collect();
+    let angle = |k: usize, s: f64| {
+        let v = lerp(breaks[k], breaks[k + 1], s);
+        let (d0, d1) = (
+            on(k, breaks[k]) - joints[k],
+            on(k, breaks[k + 1]) - joints[k + 1],
+        );
+        on(k, v) - lerp(d0, d1, s) + extra * arc_length(v) / length
+    };
+    const STEP: f64 = 1e-3;
+    let rate = |k: usize, s: f64| {
+        let (s0, s1) = ((s - STEP).max(0.0), (s + STEP).min(1.0));
+        (angle(k, s1) - angle(k, s0)) / (s1 - s0)
+    };
+    let bases: Vec<FrameNumerators> = base
+        .segments()
+        .iter()
+        .map(|s| FrameNumerators {
+            e2: s.f2_numerator().to_vec(),
+            e3: s.f3_numerator().to_vec(),
+            d: s.denominator().to_vec(),
+        })
+        .collect();
+    turned_frames(&breaks, &bases, &angle, &rate, accuracy)
 }
 
 /// Rational frames along an arc (its segments on k/n), the RMF f₂ = aN + bB turned by
@@ -469,7 +829,7 @@ fn twisted_arc(
     let angle = |k: usize, s: f64| per_angle * phi(k, s);
     let rate =
         |k: usize, s: f64| per_angle * spine.segments()[k].eval_jet(s).d1.length() / arc.radius;
-    let frames = turned_frames(spine.breaks(), &bases, &angle, &rate)?;
+    let frames = turned_frames(spine.breaks(), &bases, &angle, &rate, TWIST_ACCURACY)?;
     let target = |v: f64| {
         let (k, s) = spine.locate(v);
         let p = phi(k, s);
@@ -528,11 +888,17 @@ fn turned_frames(
     bases: &[FrameNumerators],
     angle: &dyn Fn(usize, f64) -> f64,
     rate: &dyn Fn(usize, f64) -> f64,
+    accuracy: f64,
 ) -> Result<RationalFrames> {
     let mut pieces = FramePieces::new(breaks);
     for (k, base) in bases.iter().enumerate() {
         let mut parts = Vec::new();
-        fit_parts(&|s| angle(k, s), &|s| rate(k, s), 0.0, 1.0, 0, &mut parts)?;
+        let fit = Fit {
+            angle: &|s| angle(k, s),
+            rate: &|s| rate(k, s),
+            accuracy,
+        };
+        fit_parts(&fit, 0.0, 1.0, 0, &mut parts)?;
         for (v0, v1, w) in parts {
             let (g0, g1) = (angle(k, v0), angle(k, v1));
             let turned = base.restricted(v0, v1).turned(&w.numerator, &w.denominator);
@@ -549,16 +915,28 @@ fn turned_frames(
 /// Largest angle (radians) between a twisted line's or arc's rational frame and its target.
 const TWIST_ACCURACY: f64 = 1e-10;
 
+/// A target angle (local parameter), its rate, and how closely W must follow it.
+#[derive(Clone, Copy)]
+struct Fit<'a> {
+    angle: &'a dyn Fn(f64) -> f64,
+    rate: &'a dyn Fn(f64) -> f64,
+    accuracy: f64,
+}
+
 /// The W of the part [a, b] (the target angle less its mean there, over 2), halved while it
 /// turns by more than π/2 or misses the target by more than [`TWIST_ACCURACY`] (sampled).
 fn fit_parts(
-    angle: &dyn Fn(f64) -> f64,
-    rate: &dyn Fn(f64) -> f64,
+    fit_to: &Fit,
     a: f64,
     b: f64,
     depth: usize,
     out: &mut Vec<(f64, f64, Biquadratic)>,
 ) -> Result<()> {
+    let Fit {
+        angle,
+        rate,
+        accuracy,
+    } = *fit_to;
     let (g0, g1) = (angle(a), angle(b));
     let turns_too_much = (g1 - g0).abs() > FRAC_PI_2;
     // W = tan of a quarter of the turn: past a turn of 2π its ends change sign and the data
@@ -573,15 +951,25 @@ fn fit_parts(
             );
         }
         let m = 0.5 * (a + b);
-        fit_parts(angle, rate, a, m, depth + 1, out)?;
-        return fit_parts(angle, rate, m, b, depth + 1, out);
+        fit_parts(fit_to, a, m, depth + 1, out)?;
+        return fit_parts(fit_to, m, b, depth + 1, out);
     }
     let mid = 0.5 * (g0 + g1);
     let length = b - a;
     let local = |u: f64| rate(a + u * length) * length;
     let quarter = 0.25 * (g1 - g0);
     let (w0, w1) = (-quarter.tan(), quarter.tan());
-    let slope = |w: f64, r: f64| 0.5 * (1.0 + w * w) * r;
+    // An end slope against the turn (a target that is flat there, up to rounding, or turns
+    // back) is taken as 0: the data stay monotone, and the miss decides on halving.
+    let direction = (g1 - g0).signum();
+    let slope = |w: f64, r: f64| {
+        let s = 0.5 * (1.0 + w * w) * r;
+        if g1 == g0 || s * direction < 0.0 {
+            0.0
+        } else {
+            s
+        }
+    };
     let data = AngleHermite {
         w0,
         w1,
@@ -593,10 +981,10 @@ fn fit_parts(
         .map(|i| i as f64 / ERROR_SAMPLES as f64)
         .map(|u| (2.0 * w.eval(u).atan() + mid - angle(a + u * length)).abs())
         .fold(0.0, f64::max);
-    if miss > TWIST_ACCURACY && depth < MAX_HALVINGS {
+    if miss > accuracy && depth < MAX_HALVINGS {
         let m = 0.5 * (a + b);
-        fit_parts(angle, rate, a, m, depth + 1, out)?;
-        return fit_parts(angle, rate, m, b, depth + 1, out);
+        fit_parts(fit_to, a, m, depth + 1, out)?;
+        return fit_parts(fit_to, m, b, depth + 1, out);
     }
     out.push((a, b, w));
     Ok(())

@@ -19,7 +19,9 @@ mod clearance;
 mod corner;
 mod edge;
 mod frame;
+mod law;
 mod profile;
+mod scale;
 
 pub use brep::{Face, FaceKind, Shape, SweepReport};
 
@@ -32,6 +34,7 @@ use edge::RawEdge;
 use frame::FrameOptions;
 use glam::DVec3;
 use profile::Profile;
+use scale::ScaleLaw;
 
 /// Most lateral faces one sweep may have (spine pieces × profile edges).
 pub const MAX_FACES: usize = 1 << 16;
@@ -193,10 +196,13 @@ pub fn sweep_wire(
             Edge::Curve(c) => RawEdge::Curve(c.similar(1.0 / scale, -center / scale)),
         })
         .collect();
-    let outer = profile.similar(1.0 / scale, DVec3::ZERO);
+    // A constant scale is the profile's own; a varying one is the law of module `scale`.
+    let constant = (options.scale[0] == options.scale[1]).then_some(options.scale[0]);
+    let profile_scale = constant.unwrap_or(1.0) / scale;
+    let outer = profile.similar(profile_scale, DVec3::ZERO);
     let holes: Vec<PiecewiseCurve> = holes
         .iter()
-        .map(|h| h.similar(1.0 / scale, DVec3::ZERO))
+        .map(|h| h.similar(profile_scale, DVec3::ZERO))
         .collect();
     for (name, curve) in std::iter::once(("profile".to_string(), &outer)).chain(
         holes
@@ -223,8 +229,24 @@ pub fn sweep_wire(
     };
     let chain = edge::chain(&raw, options.join_tolerance * size_n, size_n, units)?;
     let profile = Profile::new(&outer, &holes, options.solid, options.join_tolerance, scale)?;
+    if constant.is_none() && chain.closed {
+        return invalid!(
+            "scale: a closed wire must end at the scale it starts with, not {} and {}",
+            options.scale[0],
+            options.scale[1]
+        );
+    }
+    let law = match constant {
+        Some(_) => ScaleLaw::none(),
+        None => ScaleLaw {
+            start: options.scale[0],
+            end: options.scale[1],
+            length: chain.pieces.iter().map(|p| p.geometry.length()).sum(),
+        },
+    };
     // Its largest distance from the spine takes a root search per profile segment: once.
-    let radius = profile.radius();
+    let reach = profile.radius();
+    let radius = reach * law.max();
     let mode = match options.corner {
         Corner::Miter => CornerMode::Miter,
         Corner::Round(Some(r)) => CornerMode::Round(r / scale),
@@ -242,16 +264,40 @@ pub fn sweep_wire(
         &chain,
         &FrameOptions {
             initial_normal: options.initial_normal.filter(|n| *n != DVec3::ZERO),
+            law: options.frame,
             twist: options.twist,
             closure_symmetry: options.closure_symmetry.max(1),
             tolerance: options.tolerance / scale,
             units,
+            scale: law,
+            reach,
         },
     )?;
-    let margins = frame::singularity_margin(&transport, &profile, scale)?;
+    let law = ScaleLaw {
+        length: transport.pieces.iter().map(|p| p.length).sum(),
+        ..law
+    };
+    // The fold check with the profile at its largest: g = 1 − κσc·n is least there.
+    let margins = if law.is_constant() {
+        frame::singularity_margin(&transport, &profile, scale)?
+    } else {
+        let k = law.max();
+        let largest = Profile::new(
+            &outer.similar(k, DVec3::ZERO),
+            &holes
+                .iter()
+                .map(|h| h.similar(k, DVec3::ZERO))
+                .collect::<Vec<_>>(),
+            options.solid,
+            options.join_tolerance,
+            scale,
+        )?;
+        frame::singularity_margin(&transport, &largest, scale)?
+    };
     brep::build(
         &transport,
         &profile,
+        &law,
         options.solid,
         units,
         margins,
@@ -352,6 +398,8 @@ fn edge_points(edge: &Edge) -> Vec<DVec3> {
     }
 }
 
+#[cfg(test)]
+mod options_tests;
 #[cfg(test)]
 mod robustness_tests;
 #[cfg(test)]

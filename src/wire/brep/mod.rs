@@ -36,6 +36,8 @@ use super::clearance::{self_contact, Contact, Tubes};
 use super::edge::Geometry;
 use super::frame::{arc_numerators, Margins, PieceFrame, Transport, CLOSURE_ROUND_OFF};
 use super::profile::{EdgeImage, Profile};
+use super::scale::{PieceScale, ScaleLaw, SpineKind};
+use crate::bezier::bernstein::{elevate, product};
 use crate::bezier::{
     NurbsCurve, NurbsSurface, PiecewiseCurve, PiecewiseSurface, RationalBezierCurve,
     RationalBezierPatch,
@@ -48,7 +50,7 @@ use crate::mesh::grid_parameters;
 use crate::model::Similarity;
 use crate::model::{Brep, BrepBound, BrepEdge, BrepFace, BrepSurface, BrepUse, PCurve};
 use crate::ph_cubic::accuracy::AngleCheck;
-use crate::sweep::sweep_along;
+use crate::sweep::{sweep_along, sweep_scaled};
 use glam::{DVec3, DVec4};
 use std::sync::OnceLock;
 
@@ -291,11 +293,17 @@ impl Shape {
 
 /// The lateral surface of one framed piece and one profile edge (module notes), in
 /// normalized coordinates.
-fn lateral(framed: &super::frame::Framed, edge: &PiecewiseCurve) -> Result<PiecewiseSurface> {
+fn lateral(
+    framed: &super::frame::Framed,
+    edge: &PiecewiseCurve,
+    scale: Option<&PieceScale>,
+) -> Result<PiecewiseSurface> {
     match (&framed.piece.geometry, &framed.frame) {
         (Geometry::Line { a, b }, PieceFrame::Constant { f2, f3 }) => {
             let t = framed.start.tangent;
-            let section = |p: DVec3, miter: Option<(DVec3, DVec3)>, h: DVec4| {
+            let (sa, sb) = scale.map_or((1.0, 1.0), PieceScale::ends);
+            let section = |p: DVec3, miter: Option<(DVec3, DVec3)>, h: DVec4, k: f64| {
+                let h = DVec4::new(h.x * k, h.y * k, h.z, h.w);
                 let mut x = p * h.w + *f2 * h.x + *f3 * h.y;
                 if let Some((_, m)) = miter {
                     x -= t * ((*f2 * h.x + *f3 * h.y).dot(m) / t.dot(m));
@@ -308,8 +316,8 @@ fn lateral(framed: &super::frame::Framed, edge: &PiecewiseCurve) -> Result<Piece
                 .map(|seg| {
                     let mut points = Vec::with_capacity(2 * seg.homogeneous().len());
                     for &h in seg.homogeneous() {
-                        points.push(section(*a, framed.miters[0], h));
-                        points.push(section(*b, framed.miters[1], h));
+                        points.push(section(*a, framed.miters[0], h, sa));
+                        points.push(section(*b, framed.miters[1], h, sb));
                     }
                     RationalBezierPatch::from_homogeneous(seg.degree(), 1, points)
                 })
@@ -325,28 +333,53 @@ fn lateral(framed: &super::frame::Framed, edge: &PiecewiseCurve) -> Result<Piece
                 .iter()
                 .map(|along| arc_numerators(arc, along, *a, *b))
                 .collect();
+            // With a scale law σ (linear on each segment): X elevated, σF₂, σF₃.
+            let factors: Vec<(Vec<DVec4>, Vec<DVec3>, Vec<DVec3>)> = spine
+                .segments()
+                .iter()
+                .zip(&frames)
+                .zip(spine.breaks().windows(2))
+                .map(|((along, frame), v)| match scale {
+                    None => (
+                        along.homogeneous().to_vec(),
+                        frame.e2.clone(),
+                        frame.e3.clone(),
+                    ),
+                    Some(scale) => {
+                        let sigma = scale.on(v[0], v[1]);
+                        let scaled = |n: &[DVec3]| product(&sigma, n, |s: f64, n: DVec3| n * s);
+                        (
+                            elevate(along.homogeneous(), sigma.len() - 1),
+                            scaled(&frame.e2),
+                            scaled(&frame.e3),
+                        )
+                    }
+                })
+                .collect();
             for seg in edge.segments() {
-                for (along, frame) in spine.segments().iter().zip(&frames) {
-                    let x = along.homogeneous();
+                for (x, e2, e3) in &factors {
                     let mut points = Vec::with_capacity(seg.homogeneous().len() * x.len());
                     for &h in seg.homogeneous() {
                         for (l, xl) in x.iter().enumerate() {
                             points.push(
-                                (xl.truncate() * h.w + frame.e2[l] * h.x + frame.e3[l] * h.y)
+                                (xl.truncate() * h.w + e2[l] * h.x + e3[l] * h.y)
                                     .extend(h.w * xl.w),
                             );
                         }
                     }
                     patches.push(RationalBezierPatch::from_homogeneous(
                         seg.degree(),
-                        2,
+                        x.len() - 1,
                         points,
                     )?);
                 }
             }
             PiecewiseSurface::new(patches, edge.breaks().to_vec(), spine.breaks().to_vec())
         }
-        (_, PieceFrame::Rational(frames)) => sweep_along(&framed.spine, frames, edge),
+        (_, PieceFrame::Rational(frames)) => match scale {
+            None => sweep_along(&framed.spine, frames, edge),
+            Some(scale) => sweep_scaled(&framed.spine, frames, edge, |v0, v1| scale.on(v0, v1)),
+        },
         _ => invalid!("internal: a frame that does not fit its piece"),
     }
 }
@@ -356,15 +389,17 @@ fn lateral(framed: &super::frame::Framed, edge: &PiecewiseCurve) -> Result<Piece
 fn tubes(
     transport: &Transport,
     profile: &Profile,
+    largest_scale: f64,
     normalized: &[Vec<Vec<PiecewiseSurface>>],
 ) -> Tubes {
-    let reach = profile
-        .loops
-        .iter()
-        .flat_map(|lp| &lp.edges)
-        .flat_map(|e| e.segments())
-        .flat_map(|s| s.poles())
-        .fold(0.0f64, |m, p| m.max(p.truncate().length()));
+    let reach = largest_scale
+        * profile
+            .loops
+            .iter()
+            .flat_map(|lp| &lp.edges)
+            .flat_map(|e| e.segments())
+            .flat_map(|s| s.poles())
+            .fold(0.0f64, |m, p| m.max(p.truncate().length()));
     let mut spines = Vec::with_capacity(transport.pieces.len());
     for (framed, loops) in transport.pieces.iter().zip(normalized) {
         let face = loops.iter().flatten().next();
@@ -380,31 +415,34 @@ fn tubes(
 }
 
 /// Builds the shape (in the caller's coordinates) from the framed pieces and the profile.
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn build(
     transport: &Transport,
     profile: &Profile,
+    law: &ScaleLaw,
     solid: bool,
     placement: Similarity,
     margins: Margins,
     gap: f64,
 ) -> Result<Shape> {
     let m = transport.pieces.len();
+    let scales = piece_scales(transport, law)?;
     // Lateral surfaces, normalized, [piece][loop][edge].
     let mut normalized: Vec<Vec<Vec<PiecewiseSurface>>> = Vec::with_capacity(m);
-    for framed in &transport.pieces {
+    for (framed, scale) in transport.pieces.iter().zip(&scales) {
         let mut loops = Vec::with_capacity(profile.loops.len());
         for lp in &profile.loops {
             let faces = lp
                 .edges
                 .iter()
-                .map(|e| lateral(framed, e))
+                .map(|e| lateral(framed, e, scale.as_ref()))
                 .collect::<Result<Vec<_>>>()
                 .map_err(|e| e.context(format!("edge {}", framed.piece.edge)))?;
             loops.push(faces);
         }
         normalized.push(loops);
     }
-    let tubes = tubes(transport, profile, &normalized);
+    let tubes = tubes(transport, profile, law.max(), &normalized);
     if let Some(contact) = self_contact(&normalized, &tubes, transport.closed, gap) {
         return Err(self_intersection(&contact, transport, placement, gap));
     }
@@ -468,7 +506,12 @@ pub(crate) fn build(
     let capped = !transport.closed && profile.loops[0].closed;
     if capped && solid {
         for end in [false, true] {
-            let (face, brep_face) = topology.cap(end, transport, profile, placement)?;
+            let sigma = match (&scales[if end { m - 1 } else { 0 }], end) {
+                (Some(scale), true) => scale.ends().1,
+                (Some(scale), false) => scale.ends().0,
+                (None, _) => 1.0,
+            };
+            let (face, brep_face) = topology.cap(end, transport, profile, placement, sigma)?;
             faces.push(face);
             brep_faces.push(brep_face);
         }
@@ -523,6 +566,31 @@ pub(crate) fn build(
     })
 }
 
+/// The scale law on each piece (`None` everywhere for a constant one).
+fn piece_scales(transport: &Transport, law: &ScaleLaw) -> Result<Vec<Option<PieceScale>>> {
+    let mut s0 = 0.0;
+    transport
+        .pieces
+        .iter()
+        .map(|framed| {
+            if law.is_constant() {
+                return Ok(None);
+            }
+            let kind = match &framed.piece.geometry {
+                Geometry::Line { .. } => SpineKind::Line(framed.length),
+                Geometry::Arc(arc) => SpineKind::Arc {
+                    radius: arc.radius,
+                    angle: arc.angle,
+                },
+                Geometry::Curve(_) => SpineKind::Ph,
+            };
+            let scale = PieceScale::new(&framed.spine, kind, s0, law)?;
+            s0 += framed.length;
+            Ok(Some(scale))
+        })
+        .collect()
+}
+
 /// The refusal of a sweep that touches itself, in the caller's units.
 fn self_intersection(
     contact: &Contact,
@@ -530,13 +598,7 @@ fn self_intersection(
     placement: Similarity,
     gap: f64,
 ) -> Error {
-    let name = |piece: usize| {
-        let p = &transport.pieces[piece].piece;
-        match &p.corner {
-            Some(joint) => format!("the round corner at the {joint}"),
-            None => format!("edge {}", p.edge),
-        }
-    };
+    let name = |piece: usize| transport.pieces[piece].piece.name();
     let (a, b) = contact.pieces;
     let (near, distance) = (
         placement.to_user(contact.points.0),

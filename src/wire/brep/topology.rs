@@ -215,6 +215,7 @@ impl<'a> Topology<'a> {
         transport: &Transport,
         profile: &Profile,
         placement: Similarity,
+        sigma: f64,
     ) -> Result<(Face, BrepFace)> {
         let m = transport.pieces.len();
         let (station, framed) = if end {
@@ -243,7 +244,11 @@ impl<'a> Topology<'a> {
                 .map(|(e, edge)| BrepUse {
                     edge: self.sections[station][l][e],
                     forward,
-                    pcurve: Some(PCurve::Curve(planar_pcurve(edge, placement.scale, !end))),
+                    pcurve: Some(PCurve::Curve(planar_pcurve(
+                        edge,
+                        placement.scale * sigma,
+                        !end,
+                    ))),
                 })
                 .collect();
             if !forward {

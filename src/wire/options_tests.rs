@@ -1,0 +1,392 @@
+//! Frames and scale laws of wire sweeps against closed forms: a frustum's volume, the
+//! volume π r² ∫σ² ds of a scaled tube (the sweep's Jacobian is σ²(1 − κσ c·n), whose
+//! second term integrates to 0 over a centred circle), profile vertices that run on
+//! helices under the Frenet frame and a fixed axis, and the refusals.
+
+use super::tests::{circle, pipe_route, square, volume};
+use super::*;
+use crate::ph_cubic::ph_spline_hermite;
+use std::f64::consts::{FRAC_1_SQRT_2, PI, TAU};
+
+fn relative(a: f64, b: f64) -> f64 {
+    (a - b).abs() / b.abs()
+}
+
+fn line(a: [f64; 3], b: [f64; 3]) -> Edge {
+    Edge::Line {
+        from: DVec3::from(a),
+        to: DVec3::from(b),
+    }
+}
+
+/// A helix about the z axis of radius `radius`, rising `pitch` per turn, `turns` turns from
+/// (radius, 0, 0), as a PH spline through 96 samples per turn (within 1e-7 of the helix).
+pub(crate) fn helix(radius: f64, pitch: f64, turns: f64) -> Edge {
+    let n = (96.0 * turns).ceil() as usize;
+    let h = pitch / TAU;
+    let (points, tangents): (Vec<DVec3>, Vec<DVec3>) = (0..=n)
+        .map(|i| {
+            let t = TAU * turns * i as f64 / n as f64;
+            (
+                DVec3::new(radius * t.cos(), radius * t.sin(), h * t),
+                DVec3::new(-radius * t.sin(), radius * t.cos(), h),
+            )
+        })
+        .unzip();
+    Edge::Curve(ph_spline_hermite(&points, &tangents).unwrap().into_curve())
+}
+
+/// The length of the swept spine (lines, arcs, the PH splines of curves).
+fn spine_length(shape: &Shape) -> f64 {
+    shape.spine().iter().map(|c| c.arc_length()).sum()
+}
+
+/// π r² ∫σ² ds for σ linear from s0 to s1 over length L.
+fn scaled_tube_volume(r: f64, length: f64, [s0, s1]: [f64; 2]) -> f64 {
+    PI * r * r * length * (s0 * s0 + s0 * s1 + s1 * s1) / 3.0
+}
+
+#[test]
+fn a_scale_law_along_a_line_is_an_exact_cone_frustum() {
+    let options = WireSweep {
+        scale: [1.0, 0.5],
+        ..WireSweep::default()
+    };
+    let shape = sweep_wire(
+        &[line([0., 0., 0.], [0., 0., 3.])],
+        &circle(1.0),
+        &[],
+        &options,
+    )
+    .unwrap();
+    assert!(shape.is_solid());
+    crate::testing::assert_closed_oriented(shape.brep());
+    let (r0, r1, l) = (1.0, 0.5, 3.0);
+    let exact = PI * l * (r0 * r0 + r0 * r1 + r1 * r1) / 3.0;
+    let v = volume(&shape);
+    println!("frustum r 1 → 0.5, L 3: volume {v:.15} against {exact:.15}");
+    assert!(relative(v, exact) < 1e-12, "{v} against {exact}");
+    for face in shape.faces().iter().filter(|f| f.kind == FaceKind::Swept) {
+        let s = face.surface.as_ref().unwrap();
+        assert_eq!(s.patches()[0].degree_v(), 1, "ruled along the line");
+        for i in 0..=8 {
+            for j in 0..=8 {
+                let p = s.eval(i as f64 / 8.0, j as f64 / 8.0);
+                let radius = 1.0 - 0.5 * p.z / 3.0;
+                assert!((p.truncate().length() - radius).abs() < 1e-14);
+            }
+        }
+    }
+    // The caps are the circles of radius 1 and 0.5.
+    let caps: Vec<&Face> = shape
+        .faces()
+        .iter()
+        .filter(|f| f.kind == FaceKind::Plane)
+        .collect();
+    for (cap, (radius, z)) in caps.iter().zip([(1.0, 0.0), (0.5, 3.0)]) {
+        for k in 0..=16 {
+            let p = cap.loops[0].eval(cap.loops[0].domain().1 * k as f64 / 16.0);
+            assert!((p.truncate().length() - radius).abs() < 1e-14, "{p}");
+            assert!((p.z - z).abs() < 1e-14, "{p}");
+        }
+    }
+}
+
+#[test]
+fn a_scaled_tube_along_lines_arcs_and_curves_encloses_pi_r2_times_the_integral_of_sigma2() {
+    for (name, edges, tolerance, exact) in [
+        ("pipe route", pipe_route(), 1e-6, false),
+        ("helix", vec![helix(3.0, 2.0, 1.5)], 1e-6, true),
+    ] {
+        for scale in [[1.0, 0.4], [0.5, 1.5]] {
+            let options = WireSweep {
+                scale,
+                tolerance,
+                ..WireSweep::default()
+            };
+            let shape = sweep_wire(&edges, &circle(0.5), &[], &options).unwrap();
+            crate::testing::assert_closed_oriented(shape.brep());
+            let want = scaled_tube_volume(0.5, spine_length(&shape), scale);
+            let v = volume(&shape);
+            let error = relative(v, want);
+            println!(
+                "{name}, scale {scale:?}: volume {v:.12} against {want:.12}, relative {error:.1e}"
+            );
+            // Exact on lines and PH pieces; on arcs σ is within the tolerance of the law.
+            let bound = if exact { 1e-11 } else { 4.0 * tolerance / 0.5 };
+            assert!(error < bound, "{name} {scale:?}: {error:e}");
+        }
+    }
+}
+
+/// The largest distance of the profile's vertex tracks (the lateral faces' edges u = 0)
+/// from the helix of axis z through their start with the given rise per radian.
+fn off_helix(shape: &Shape, rise: f64) -> f64 {
+    let mut worst = 0.0f64;
+    for face in shape.faces().iter().filter(|f| f.kind == FaceKind::Swept) {
+        let s = face.surface.as_ref().unwrap();
+        let (v0, v1) = s.domain_v();
+        let start = s.eval(0.0, v0);
+        let (r0, a0) = (start.truncate().length(), start.y.atan2(start.x));
+        let mut last = a0;
+        let mut turned = 0.0;
+        for k in 0..=400 {
+            let p = s.eval(0.0, v0 + (v1 - v0) * k as f64 / 400.0);
+            let a = p.y.atan2(p.x);
+            turned += (a - last + PI).rem_euclid(TAU) - PI;
+            last = a;
+            let on = DVec3::new(
+                r0 * (a0 + turned).cos(),
+                r0 * (a0 + turned).sin(),
+                start.z + rise * turned,
+            );
+            worst = worst.max(p.distance(on));
+        }
+    }
+    worst
+}
+
+#[test]
+fn frenet_and_axis_frames_carry_the_profile_on_helices_and_the_rmf_does_not() {
+    let (radius, pitch) = (3.0, 2.0);
+    let rise = pitch / TAU;
+    let edges = [helix(radius, pitch, 2.0)];
+    let triangle = crate::primitives::polygon(&[
+        DVec3::new(0.2, 0.0, 0.0),
+        DVec3::new(0.6, -0.3, 0.0),
+        DVec3::new(0.6, 0.3, 0.0),
+    ])
+    .unwrap();
+    let sweep = |frame| {
+        sweep_wire(
+            &edges,
+            &triangle,
+            &[],
+            &WireSweep {
+                frame,
+                tolerance: 1e-6,
+                ..WireSweep::default()
+            },
+        )
+        .unwrap()
+    };
+    let frenet = sweep(SweepFrame::Frenet);
+    let axis = sweep(SweepFrame::Fixed(DVec3::Z));
+    let rmf = sweep(SweepFrame::Rmf);
+    let (on_frenet, on_axis, on_rmf) = (
+        off_helix(&frenet, rise),
+        off_helix(&axis, rise),
+        off_helix(&rmf, rise),
+    );
+    println!(
+        "vertex tracks off their helices: Frenet {on_frenet:.1e}, fixed axis {on_axis:.1e}, RMF \
+         {on_rmf:.1e}; frame errors {:.1e} / {:.1e}",
+        frenet.report().frame_error,
+        axis.report().frame_error
+    );
+    assert!(on_frenet < 1e-5, "{on_frenet}");
+    assert!(on_axis < 1e-5, "{on_axis}");
+    assert!(
+        on_rmf > 1e-2,
+        "the RMF turns against the screw motion: {on_rmf}"
+    );
+    assert!(frenet.report().frame_error < 1e-4);
+    assert!(axis.report().frame_error < 1e-4);
+    assert_eq!(rmf.report().frame_error, 0.0);
+    // Frenet: f₂ along the principal normal at the start, towards the axis (−x).
+    let p = frenet.faces()[0].surface.as_ref().unwrap().eval(0.0, 0.0);
+    // (The given spline's normal is the helix's within its 1e-7.)
+    assert!(p.distance(DVec3::new(radius - 0.2, 0.0, 0.0)) < 1e-6, "{p}");
+    assert!(frenet.is_solid() && axis.is_solid());
+    crate::testing::assert_closed_oriented(frenet.brep());
+}
+
+#[test]
+fn a_fixed_normal_of_a_planar_wire_is_its_rmf() {
+    let route = pipe_route();
+    let rmf = sweep_wire(&route, &square(0.5), &[], &WireSweep::default()).unwrap();
+    let fixed = sweep_wire(
+        &route,
+        &square(0.5),
+        &[],
+        &WireSweep {
+            frame: SweepFrame::Fixed(DVec3::new(0.0, 0.0, 2.0)),
+            ..WireSweep::default()
+        },
+    )
+    .unwrap();
+    assert_eq!(fixed.report().frame_error, 0.0);
+    for (a, b) in rmf.faces().iter().zip(fixed.faces()) {
+        if let (Some(a), Some(b)) = (&a.surface, &b.surface) {
+            assert_eq!(a.patches()[0].degree_v(), b.patches()[0].degree_v());
+            for i in 0..=4 {
+                let (u, v) = (i as f64 / 4.0, 0.3);
+                assert!(a.eval(u, v).distance(b.eval(u, v)) < 1e-12);
+            }
+        }
+    }
+}
+
+#[test]
+fn frames_and_scales_that_cannot_be_are_refused_naming_the_option() {
+    let bar = [line([0., 0., 0.], [0., 0., 3.])];
+    let refused = |edges: &[Edge], options: WireSweep| {
+        sweep_wire(edges, &circle(1.0), &[], &options)
+            .unwrap_err()
+            .message()
+    };
+    let with = |frame, scale| WireSweep {
+        frame,
+        scale,
+        ..WireSweep::default()
+    };
+    for s in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+        let m = refused(&bar, with(SweepFrame::Rmf, [1.0, s]));
+        assert!(m.starts_with("scale: the end scale"), "{m}");
+        let m = refused(&bar, with(SweepFrame::Rmf, [s, 1.0]));
+        assert!(m.starts_with("scale: the start scale"), "{m}");
+    }
+    let m = refused(&bar, with(SweepFrame::Fixed(DVec3::Z), [1.0, 1.0]));
+    assert!(
+        m.contains("frame: the fixed direction") && m.contains("tangent"),
+        "{m}"
+    );
+    let m = refused(&bar, with(SweepFrame::Fixed(DVec3::ZERO), [1.0, 1.0]));
+    assert!(m.starts_with("frame:"), "{m}");
+    let m = refused(
+        &bar,
+        with(SweepFrame::Fixed(DVec3::new(f64::NAN, 0., 0.)), [1.0, 1.0]),
+    );
+    assert!(m.starts_with("frame:"), "{m}");
+    let m = refused(
+        &bar,
+        WireSweep {
+            initial_normal: Some(DVec3::X),
+            ..with(SweepFrame::Frenet, [1.0, 1.0])
+        },
+    );
+    assert!(m.contains("initial_normal"), "{m}");
+    // A fixed direction the wire turns into: along the tangent of the second edge.
+    let m = refused(
+        &[
+            line([0., 0., 0.], [5., 0., 0.]),
+            line([5., 0., 0.], [5., 0., 5.]),
+        ],
+        with(SweepFrame::Fixed(DVec3::Z), [1.0, 1.0]),
+    );
+    assert!(m.contains("tangent of the round corner at the"), "{m}");
+    let m = refused(
+        &[
+            line([0., 0., 0.], [5., 0., 0.]),
+            line([5., 0., 0.], [5., 0., 5.]),
+        ],
+        WireSweep {
+            corner: Corner::Miter,
+            ..with(SweepFrame::Fixed(DVec3::Z), [1.0, 1.0])
+        },
+    );
+    assert!(m.contains("tangent of edge 1"), "{m}");
+    let square_loop = [
+        line([0., 0., 0.], [10., 0., 0.]),
+        line([10., 0., 0.], [10., 10., 0.]),
+        line([10., 10., 0.], [0., 10., 0.]),
+        line([0., 10., 0.], [0., 0., 0.]),
+    ];
+    let m = refused(&square_loop, with(SweepFrame::Rmf, [1.0, 2.0]));
+    assert!(m.starts_with("scale: a closed wire"), "{m}");
+    // A constant scale closes.
+    let shape = sweep_wire(
+        &square_loop,
+        &circle(1.0),
+        &[],
+        &with(SweepFrame::Rmf, [1.5, 1.5]),
+    )
+    .unwrap();
+    assert!(shape.is_solid());
+}
+
+#[test]
+fn a_fixed_direction_across_an_arc_is_followed_within_the_tolerance() {
+    for d in [DVec3::new(1.0, 0.0, 1.0), DVec3::new(0.0, 1.0, 0.2)] {
+        let shape = sweep_wire(
+            &pipe_route(),
+            &square(0.5),
+            &[],
+            &WireSweep {
+                frame: SweepFrame::Fixed(d),
+                scale: [1.0, 0.5],
+                ..WireSweep::default()
+            },
+        )
+        .unwrap();
+        crate::testing::assert_closed_oriented(shape.brep());
+        let error = shape.report().frame_error;
+        println!("fixed {d} along the pipe route: frame error {error:.3e} rad");
+        // A quarter of the tolerance 1e-4 at the square's reach √2/2.
+        assert!(error > 0.0 && error <= 0.25e-4 / FRAC_1_SQRT_2, "{error}");
+    }
+}
+
+/// A curve whose torsion is not constant (the twisted cubic (t, t², t³)): the Frenet frame
+/// is followed, not just turned linearly, within the tolerance at the profile's reach.
+#[test]
+fn the_frenet_frame_of_a_curve_of_varying_torsion_is_followed_within_the_tolerance() {
+    let cubic = crate::bezier::RationalBezierCurve::polynomial(&[
+        DVec3::ZERO,
+        DVec3::new(1.0 / 3.0, 0.0, 0.0),
+        DVec3::new(2.0 / 3.0, 1.0 / 3.0, 0.0),
+        DVec3::new(1.0, 1.0, 1.0),
+    ])
+    .unwrap();
+    let edge = Edge::Curve(PiecewiseCurve::with_unit_intervals(vec![cubic]).unwrap());
+    for tolerance in [1e-4, 1e-6] {
+        let shape = sweep_wire(
+            std::slice::from_ref(&edge),
+            &square(0.05),
+            &[],
+            &WireSweep {
+                frame: SweepFrame::Frenet,
+                tolerance,
+                ..WireSweep::default()
+            },
+        )
+        .unwrap();
+        crate::testing::assert_closed_oriented(shape.brep());
+        let error = shape.report().frame_error;
+        let reach = 0.05 * 2f64.sqrt();
+        println!(
+            "Frenet along the twisted cubic, tolerance {tolerance:e}: frame error {error:.2e}"
+        );
+        assert!(error <= 0.25 * tolerance / reach, "{error}");
+        // The frame starts on the principal normal: (0, 1, 0) at t = 0.
+        let start = shape.faces()[0].surface.as_ref().unwrap().eval(0.0, 0.0);
+        assert!(
+            start.distance(DVec3::new(0.0, 0.05, 0.05)) < 1e-12,
+            "{start}"
+        );
+    }
+}
+
+/// Scale laws, the Frenet frame and a fixed direction give the same faces at 1e-200 and
+/// 1e200 of the unit wire, moved by 300 times their size (the property test spreads this
+/// over the whole range).
+#[test]
+fn frames_and_scale_laws_are_the_same_from_1e_200_to_1e200() {
+    use super::robustness_tests::{check_similar, example_pipe};
+    let frenet = WireSweep {
+        frame: SweepFrame::Frenet,
+        scale: [0.5, 1.0],
+        ..WireSweep::default()
+    };
+    let fixed = WireSweep {
+        corner: Corner::Round(Some(2.0)),
+        frame: SweepFrame::Fixed(DVec3::new(1.0, 0.3, 1.0)),
+        scale: [1.0, 0.5],
+        ..WireSweep::default()
+    };
+    for s in [1e-200, 1e-100, 1.0, 1e100, 1e200] {
+        let o = DVec3::new(3e2, -1e2, 2e2) * s;
+        check_similar(&[helix(3.0, 2.0, 0.5)], &square(0.5), &frenet, s, o);
+        check_similar(&example_pipe(), &circle(1.0), &fixed, s, o);
+    }
+}
