@@ -9,6 +9,7 @@
  * valgrind and AddressSanitizer (no leaks).
  */
 #include <math.h>
+#include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -158,6 +159,10 @@ static void test_options(void) {
     CHECK(o.struct_size == sizeof o && o.tolerance == 1e-4 && o.join_tolerance == 1e-7, "defaults");
     CHECK(o.corner == RMF_CORNER_ROUND && o.corner_radius == 0 && o.solid == 1 && o.closure_symmetry == 0,
           "round corners, default radius, solids");
+    CHECK(o.frame == RMF_FRAME_RMF && o.frame_direction.x == 0 && o.frame_direction.y == 0 &&
+              o.frame_direction.z == 0 && o.scale_start == 1 && o.scale_end == 1,
+          "the RMF, no fixed direction, scale 1 at both ends");
+    CHECK(RMF_FRAME_RMF == 0 && RMF_FRAME_FRENET == 1 && RMF_FRAME_FIXED == 2, "frame codes fixed");
     CHECK_STATUS(rmf_wire_sweep_options_init(NULL), RMF_ERROR_NULL_POINTER, "options");
 }
 
@@ -384,6 +389,64 @@ static RmfShape *sentinel(void) { return (RmfShape *)(uintptr_t)0x5e5e; }
         CHECK(out == sentinel(), "out untouched on failure");                                     \
     } while (0)
 
+/* The options of a program built against the header before frame and scale (struct_size up
+   to solid): accepted, the fields it does not know keep their defaults (whatever lies after
+   its struct is not read), the same shape as with the defaults. */
+static void test_options_of_an_older_header(void) {
+    RmfEdge e[3];
+    RmfCurve *profile = circle(1);
+    RmfWireSweepOptions o;
+    RmfShape *shape = NULL;
+    pipe_route(e);
+    rmf_wire_sweep_options_init(&o);
+    o.struct_size = offsetof(RmfWireSweepOptions, frame);
+    o.frame = 77, o.scale_start = -1, o.scale_end = nan_value(); /* not the caller's: ignored */
+    CHECK(o.struct_size == 80, "the struct of 0.2 before frame and scale is 80 bytes");
+    CHECK_STATUS(rmf_wire_sweep(e, 3, profile, NULL, 0, &o, &shape), RMF_OK, "");
+    if (shape) {
+        const double exact = PI * (20 + 2.5 * PI), v = volume(shape);
+        CHECK(fabs(v - exact) <= 1e-12 * exact, "the default sweep");
+    }
+    rmf_shape_free(shape);
+    o.struct_size = offsetof(RmfWireSweepOptions, frame) - 8;
+    REFUSED(rmf_wire_sweep(e, 3, profile, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
+            "options->struct_size = 72 is no size of this struct (80 to");
+    rmf_curve_free(profile);
+}
+
+/* The scale law along a straight line (intended behaviour of the geometry): a circle of
+   radius 1 at the start, scale [1, 0.5], length 3, is the frustum of volume
+   pi L (r0^2 + r0 r1 + r1^2) / 3; the report's frame_error is 0 for the RMF. Then each frame
+   on the same line: the volume does not depend on how the circle turns. */
+static void test_scale_law_frustum(void) {
+    RmfEdge e = line(vec3(0, 0, 0), vec3(3, 0, 0));
+    RmfCurve *profile = circle(1);
+    RmfWireSweepOptions o;
+    const double r0 = 1, r1 = 0.5, length = 3, exact = PI * length * (r0 * r0 + r0 * r1 + r1 * r1) / 3;
+    const RmfSweepFrame frames[3] = {RMF_FRAME_RMF, RMF_FRAME_FRENET, RMF_FRAME_FIXED};
+    for (int k = 0; k < 3; ++k) {
+        RmfShape *shape = NULL;
+        RmfSweepReport r;
+        rmf_wire_sweep_options_init(&o);
+        o.scale_start = 1, o.scale_end = 0.5;
+        o.frame = frames[k];
+        if (frames[k] == RMF_FRAME_FIXED) o.frame_direction = vec3(0, 0, 1);
+        CHECK_STATUS(rmf_wire_sweep(&e, 1, profile, NULL, 0, &o, &shape), RMF_OK, "");
+        if (!shape) continue;
+        const double v = volume(shape);
+        CHECK_STATUS(rmf_shape_report(shape, &r), RMF_OK, "");
+        printf("frustum along a line, scale [1, 0.5], frame %d: volume %.15f vs %.15f (relative %.1e), frame "
+               "error %.1e\n",
+               (int)frames[k], v, exact, fabs(v - exact) / exact, r.frame_error);
+        CHECK(rmf_shape_is_solid(shape) == 1, "a closed solid");
+        CHECK(fabs(v - exact) <= 1e-12 * exact, "the frustum's volume pi L (r0^2 + r0 r1 + r1^2) / 3");
+        CHECK(r.frame_error >= 0 && r.frame_error <= 1e-12, "the frame asked for");
+        rmf_shape_free(shape);
+    }
+    rmf_curve_free(profile);
+}
+
+
 static void test_bad_inputs(void) {
     RmfEdge e[3], bad[3];
     RmfCurve *profile = circle(1), *small = circle(0.1), *sq = square(0.5);
@@ -464,6 +527,38 @@ static void test_bad_inputs(void) {
         rmf_wire_sweep_options_init(&o);
         o.struct_size = 3;
         REFUSED(rmf_wire_sweep(poly, 3, tiny, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT, "struct_size");
+        /* The frame and the scale law: each bad field named. */
+        rmf_wire_sweep_options_init(&o);
+        o.frame = 3;
+        REFUSED(rmf_wire_sweep(poly, 3, tiny, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
+                "options->frame = 3 is no RmfSweepFrame");
+        o.frame = RMF_FRAME_FIXED;
+        REFUSED(rmf_wire_sweep(poly, 3, tiny, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
+                "options->frame_direction");
+        o.frame_direction = vec3(0, nan_value(), 1);
+        REFUSED(rmf_wire_sweep(poly, 3, tiny, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
+                "options->frame_direction");
+        o.frame_direction = vec3(0, 0, 1);
+        o.initial_normal = vec3(0, 0, 1);
+        REFUSED(rmf_wire_sweep(poly, 3, tiny, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
+                "options->initial_normal");
+        o.frame = RMF_FRAME_FRENET;
+        REFUSED(rmf_wire_sweep(poly, 3, tiny, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
+                "options->initial_normal");
+        rmf_wire_sweep_options_init(&o);
+        o.scale_start = 0;
+        REFUSED(rmf_wire_sweep(poly, 3, tiny, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
+                "options->scale_start = 0");
+        o.scale_start = -2;
+        REFUSED(rmf_wire_sweep(poly, 3, tiny, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
+                "options->scale_start = -2");
+        o.scale_start = 1;
+        o.scale_end = nan_value();
+        REFUSED(rmf_wire_sweep(poly, 3, tiny, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
+                "options->scale_end = NaN");
+        o.scale_end = HUGE_VAL;
+        REFUSED(rmf_wire_sweep(poly, 3, tiny, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
+                "options->scale_end = inf");
         rmf_curve_free(tiny);
     }
     /* Accessors on NULL and out of range; no file for a failure. */
@@ -500,5 +595,7 @@ int main(void) {
     test_corners();
     test_closed_nurbs();
     test_bad_inputs();
+    test_options_of_an_older_header();
+    test_scale_law_frustum();
     return rmf_check_exit_code("abi_wire");
 }

@@ -1364,6 +1364,13 @@ typedef struct RmfSweepReport {
    * edge's normal plane), in the wire's units.
    */
   double joint_gap;
+  /**
+   * Added in 0.2 (after joint_gap): the largest angle (radians) between the frames used
+   * and the frame asked for in RmfWireSweepOptions.frame (the Frenet frame or the fixed
+   * direction's, each offset by the turn it kept where the curvature vanished or the
+   * normal jumped), sampled; 0 for RMF_FRAME_RMF.
+   */
+  double frame_error;
 } RmfSweepReport;
 
 /**
@@ -1651,6 +1658,13 @@ typedef struct RmfBezierPatch {
 typedef uint32_t RmfCorner;
 
 /**
+ * How the profile turns about the wire's tangent (before any twist; values fixed,
+ * validated).
+ * \ingroup rmf_wire
+ */
+typedef uint32_t RmfSweepFrame;
+
+/**
  * Options of rmf_wire_sweep. Initialise with rmf_wire_sweep_options_init, then change
  * fields; the struct only grows at the end.
  * \ingroup rmf_wire
@@ -1701,6 +1715,27 @@ typedef struct RmfWireSweepOptions {
    * 1 (default): a closed solid (refuses open profiles); 0: the lateral faces only.
    */
   uint32_t solid;
+  /**
+   * Added in 0.2 (after solid): RMF_FRAME_RMF (default), RMF_FRAME_FRENET or
+   * RMF_FRAME_FIXED. A frame other than RMF_FRAME_RMF sets f2 itself: initial_normal
+   * must then be zero.
+   */
+  RmfSweepFrame frame;
+  /**
+   * RMF_FRAME_FIXED: the direction f2 follows (finite, not zero, never along the
+   * tangent); ignored otherwise. Default (0, 0, 0).
+   */
+  struct RmfVec3 frame_direction;
+  /**
+   * The profile's scale at the wire's start (finite, > 0; default 1), linear in arc
+   * length to scale_end.
+   */
+  double scale_start;
+  /**
+   * The profile's scale at the wire's end (finite, > 0; default 1); equal to scale_start
+   * on a closed wire.
+   */
+  double scale_end;
 } RmfWireSweepOptions;
 
 /**
@@ -1867,6 +1902,29 @@ typedef struct RmfEdge {
  * \ingroup rmf_wire
  */
 #define RMF_CORNER_MITER 1
+
+/**
+ * The rotation-minimizing frame: no turn about the tangent (pipes, mouldings).
+ * \ingroup rmf_wire
+ */
+#define RMF_FRAME_RMF 0
+
+/**
+ * The Frenet frame: f2 along the principal normal at the start, then turning against the
+ * RMF by the curve's torsion — the screw motion of a helix, so a thread's edges are
+ * helices. Where the curvature vanishes (lines, inflections) or the normal jumps (joints)
+ * the frame keeps its angle instead of flipping.
+ * \ingroup rmf_wire
+ */
+#define RMF_FRAME_FRENET 1
+
+/**
+ * f2 along frame_direction projected onto the normal plane: the profile keeps its
+ * relation to that direction (OpenCascade's binormal mode). Refused where the direction
+ * is along the tangent.
+ * \ingroup rmf_wire
+ */
+#define RMF_FRAME_FIXED 2
 
 #ifdef __cplusplus
 extern "C" {
@@ -4624,6 +4682,11 @@ RmfStatus rmf_wire_sweep_options_init(struct RmfWireSweepOptions *options);
  *   are approximated by a PH cubic spline within options->tolerance and carry its rational
  *   RMF (Mäurer & Jüttler, eqs. (29), (36)–(42)). One RMF runs along the whole wire: it
  *   is carried across every joint without a turn about the tangent;
+ * - options->frame turns the profile about the tangent by another law than the RMF: the
+ *   Frenet frame (RMF_FRAME_FRENET: a thread along a helix) or a fixed direction
+ *   (RMF_FRAME_FIXED with options->frame_direction); options->scale_start and
+ *   options->scale_end scale the profile about the spine, linearly in arc length (a
+ *   frustum along a line);
  * - sharp joints are rounded (a tangent arc, exact torus elbow) or mitred (options->corner);
  * - a closed wire closes without a seam: the RMF's holonomy is cancelled by the smallest
  *   turn modulo 2π/closure_symmetry, spread linearly in arc length;

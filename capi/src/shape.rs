@@ -135,6 +135,11 @@ pub struct RmfSweepReport {
     /// line meets a curved edge at an angle θ so slight that the line is cut by the curved
     /// edge's normal plane), in the wire's units.
     pub joint_gap: f64,
+    /// Added in 0.2 (after joint_gap): the largest angle (radians) between the frames used
+    /// and the frame asked for in RmfWireSweepOptions.frame (the Frenet frame or the fixed
+    /// direction's, each offset by the turn it kept where the curvature vanished or the
+    /// normal jumped), sampled; 0 for RMF_FRAME_RMF.
+    pub frame_error: f64,
 }
 
 /// Frees a shape; its face surfaces and loop curves become invalid. NULL is a no-op.
@@ -291,6 +296,7 @@ pub unsafe extern "C" fn rmf_shape_report(
                 corner_turn: r.corner_turn,
                 seam_gap: r.seam_gap,
                 joint_gap: r.joint_gap,
+                frame_error: r.frame_error,
             },
         );
         Ok(())

@@ -12,7 +12,7 @@ use super::status::RmfStatus;
 use super::types::RmfVec3;
 use rmfsurf::glam::DVec3;
 use rmfsurf::PiecewiseCurve;
-use rmfsurf::{sweep_wire, Corner, Edge, WireSweep, MAX_FACES};
+use rmfsurf::{sweep_wire, Corner, Edge, SweepFrame, WireSweep, MAX_FACES};
 
 /// What an RmfEdge is (values fixed, validated).
 /// \ingroup rmf_wire
@@ -55,6 +55,25 @@ pub const RMF_CORNER_ROUND: RmfCorner = 0;
 /// \ingroup rmf_wire
 pub const RMF_CORNER_MITER: RmfCorner = 1;
 
+/// How the profile turns about the wire's tangent (before any twist; values fixed,
+/// validated).
+/// \ingroup rmf_wire
+pub type RmfSweepFrame = u32;
+/// The rotation-minimizing frame: no turn about the tangent (pipes, mouldings).
+/// \ingroup rmf_wire
+pub const RMF_FRAME_RMF: RmfSweepFrame = 0;
+/// The Frenet frame: f2 along the principal normal at the start, then turning against the
+/// RMF by the curve's torsion — the screw motion of a helix, so a thread's edges are
+/// helices. Where the curvature vanishes (lines, inflections) or the normal jumps (joints)
+/// the frame keeps its angle instead of flipping.
+/// \ingroup rmf_wire
+pub const RMF_FRAME_FRENET: RmfSweepFrame = 1;
+/// f2 along frame_direction projected onto the normal plane: the profile keeps its
+/// relation to that direction (OpenCascade's binormal mode). Refused where the direction
+/// is along the tangent.
+/// \ingroup rmf_wire
+pub const RMF_FRAME_FIXED: RmfSweepFrame = 2;
+
 /// Options of rmf_wire_sweep. Initialise with rmf_wire_sweep_options_init, then change
 /// fields; the struct only grows at the end.
 /// \ingroup rmf_wire
@@ -88,6 +107,19 @@ pub struct RmfWireSweepOptions {
     pub closure_symmetry: u32,
     /// 1 (default): a closed solid (refuses open profiles); 0: the lateral faces only.
     pub solid: u32,
+    /// Added in 0.2 (after solid): RMF_FRAME_RMF (default), RMF_FRAME_FRENET or
+    /// RMF_FRAME_FIXED. A frame other than RMF_FRAME_RMF sets f2 itself: initial_normal
+    /// must then be zero.
+    pub frame: RmfSweepFrame,
+    /// RMF_FRAME_FIXED: the direction f2 follows (finite, not zero, never along the
+    /// tangent); ignored otherwise. Default (0, 0, 0).
+    pub frame_direction: RmfVec3,
+    /// The profile's scale at the wire's start (finite, > 0; default 1), linear in arc
+    /// length to scale_end.
+    pub scale_start: f64,
+    /// The profile's scale at the wire's end (finite, > 0; default 1); equal to scale_start
+    /// on a closed wire.
+    pub scale_end: f64,
 }
 
 impl Default for RmfWireSweepOptions {
@@ -103,6 +135,10 @@ impl Default for RmfWireSweepOptions {
             twist: 0.0,
             closure_symmetry: 0,
             solid: 1,
+            frame: RMF_FRAME_RMF,
+            frame_direction: RmfVec3::default(),
+            scale_start: d.scale[0],
+            scale_end: d.scale[1],
         }
     }
 }
@@ -110,7 +146,9 @@ impl Default for RmfWireSweepOptions {
 // SAFETY: #[repr(C)], first field size_t, every field a number or a u32 code (any bit
 // pattern is a value, validated on use).
 unsafe impl OptionsStruct for RmfWireSweepOptions {
-    const FIRST_SIZE: usize = std::mem::size_of::<RmfWireSweepOptions>();
+    /// The struct up to `solid`, before `frame` was added: a caller built against that
+    /// header gets the defaults of the fields after it.
+    const FIRST_SIZE: usize = std::mem::offset_of!(RmfWireSweepOptions, frame);
 }
 
 /// Writes the default options and their struct_size.
@@ -153,7 +191,41 @@ fn wire_options(o: &RmfWireSweepOptions) -> Result<WireSweep, FfiError> {
     if o.solid > 1 {
         return invalid_arg(format!("options->solid = {} must be 0 or 1", o.solid));
     }
+    let frame = match o.frame {
+        RMF_FRAME_RMF => SweepFrame::Rmf,
+        RMF_FRAME_FRENET => SweepFrame::Frenet,
+        RMF_FRAME_FIXED => {
+            let d: DVec3 = o.frame_direction.into();
+            if !(d.is_finite() && d != DVec3::ZERO) {
+                return invalid_arg(format!(
+                    "options->frame_direction = {d} must be finite and not zero (the \
+                     direction of RMF_FRAME_FIXED)"
+                ));
+            }
+            SweepFrame::Fixed(d)
+        }
+        other => {
+            return invalid_arg(format!(
+                "options->frame = {other} is no RmfSweepFrame (RMF_FRAME_RMF = 0, \
+                 RMF_FRAME_FRENET = 1, RMF_FRAME_FIXED = 2)"
+            ))
+        }
+    };
+    for (name, s) in [("scale_start", o.scale_start), ("scale_end", o.scale_end)] {
+        if !(s.is_finite() && s > 0.0) {
+            return invalid_arg(format!(
+                "options->{name} = {s} must be finite and positive (default 1)"
+            ));
+        }
+    }
     let normal: DVec3 = o.initial_normal.into();
+    if normal != DVec3::ZERO && frame != SweepFrame::Rmf {
+        return invalid_arg(format!(
+            "options->initial_normal = {normal} goes with RMF_FRAME_RMF only: options->frame \
+             = {} sets f2 itself (leave initial_normal zero)",
+            o.frame
+        ));
+    }
     Ok(WireSweep {
         tolerance: o.tolerance,
         join_tolerance: o.join_tolerance,
@@ -162,7 +234,8 @@ fn wire_options(o: &RmfWireSweepOptions) -> Result<WireSweep, FfiError> {
         twist: o.twist,
         closure_symmetry: o.closure_symmetry,
         solid: o.solid == 1,
-        ..WireSweep::default()
+        frame,
+        scale: [o.scale_start, o.scale_end],
     })
 }
 
@@ -226,6 +299,11 @@ unsafe fn wire_edges(edges: &[RmfEdge]) -> Result<Vec<Edge>, FfiError> {
 ///   are approximated by a PH cubic spline within options->tolerance and carry its rational
 ///   RMF (Mäurer & Jüttler, eqs. (29), (36)–(42)). One RMF runs along the whole wire: it
 ///   is carried across every joint without a turn about the tangent;
+/// - options->frame turns the profile about the tangent by another law than the RMF: the
+///   Frenet frame (RMF_FRAME_FRENET: a thread along a helix) or a fixed direction
+///   (RMF_FRAME_FIXED with options->frame_direction); options->scale_start and
+///   options->scale_end scale the profile about the spine, linearly in arc length (a
+///   frustum along a line);
 /// - sharp joints are rounded (a tangent arc, exact torus elbow) or mitred (options->corner);
 /// - a closed wire closes without a seam: the RMF's holonomy is cancelled by the smallest
 ///   turn modulo 2π/closure_symmetry, spread linearly in arc length;

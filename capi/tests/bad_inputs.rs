@@ -1633,6 +1633,43 @@ fn rows() -> Vec<Row> {
             },
         },
         Row {
+            what: "unknown sweep frame",
+            function: "rmf_wire_sweep",
+            expected: INVALID,
+            names: "options->frame = 7 is no RmfSweepFrame",
+            call: |_| wire_sweep(&pipe_route(), circle(1.0), &[], |o| o.frame = 7),
+        },
+        Row {
+            what: "fixed frame without a direction",
+            function: "rmf_wire_sweep",
+            expected: INVALID,
+            names: "options->frame_direction = [0, 0, 0] must be finite and not zero",
+            call: |_| {
+                wire_sweep(&pipe_route(), circle(1.0), &[], |o| {
+                    o.frame = RMF_FRAME_FIXED
+                })
+            },
+        },
+        Row {
+            what: "initial normal with a Frenet frame",
+            function: "rmf_wire_sweep",
+            expected: INVALID,
+            names: "options->initial_normal = [0, 0, 1] goes with RMF_FRAME_RMF only",
+            call: |_| {
+                wire_sweep(&pipe_route(), circle(1.0), &[], |o| {
+                    o.frame = RMF_FRAME_FRENET;
+                    o.initial_normal = v(0., 0., 1.);
+                })
+            },
+        },
+        Row {
+            what: "profile scale not positive",
+            function: "rmf_wire_sweep",
+            expected: INVALID,
+            names: "options->scale_end = 0 must be finite and positive",
+            call: |_| wire_sweep(&pipe_route(), circle(1.0), &[], |o| o.scale_end = 0.0),
+        },
+        Row {
             what: "face index out of range",
             function: "rmf_shape_face",
             expected: INVALID,

@@ -128,7 +128,8 @@ pub fn run_wire(job: &WireJob) -> Result<Shape, InputError> {
         twist: job.twist,
         closure_symmetry: job.closure_symmetry,
         solid: job.solid,
-        ..WireSweep::default()
+        frame: job.frame,
+        scale: job.scale,
     };
     sweep_wire(&edges, &profile, &holes, &options).map_err(|e| InputError {
         path: wire_blame(&e.message()),
@@ -151,6 +152,11 @@ fn wire_blame(message: &str) -> String {
     }
     if message.starts_with("profile") {
         return "sweep.profile".into();
+    }
+    for field in ["scale", "frame", "initial_normal"] {
+        if message.starts_with(&format!("{field}:")) || message.starts_with(&format!("{field} =")) {
+            return format!("sweep.{field}");
+        }
     }
     if message.contains("corner radius") || message.contains("miter corner") {
         return "sweep.corner".into();

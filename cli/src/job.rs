@@ -85,6 +85,10 @@ pub struct WireJob {
     pub profile: NurbsCurve,
     pub holes: Vec<NurbsCurve>,
     pub solid: bool,
+    /// How the profile turns about the tangent (default the RMF).
+    pub frame: rmfsurf::SweepFrame,
+    /// The profile's scale at the wire's start and end (default `[1, 1]`).
+    pub scale: [f64; 2],
 }
 
 /// What a sheet-metal part is made from.
@@ -252,7 +256,7 @@ fn wire_job(sweep: schema::Sweep) -> InputResult<WireJob> {
         return Err(InputError::at(
             "sweep.method",
             "only for a sweep along a curve (spine nurbs or points); a wire's frames are \
-             rotation-minimizing",
+             rotation-minimizing unless \"frame\" says otherwise",
         ));
     }
     let spine = sweep.spine;
@@ -309,6 +313,8 @@ fn wire_job(sweep: schema::Sweep) -> InputResult<WireJob> {
         profile,
         holes,
         solid: sweep.solid.map_or(defaults.solid, |s| s.0),
+        frame: sweep.frame.map_or(defaults.frame, |f| f.0),
+        scale: sweep.scale.map_or(defaults.scale, |s| s.0),
     })
 }
 

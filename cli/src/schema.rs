@@ -5,8 +5,9 @@
 //! library's, so that reading stops at the first item too many.
 
 use crate::json::{Bool, Bound, Bounded, Count, NameVisitor, Number, Point2, Positive, Vec3};
-use rmfsurf::{Corner, Reference, SpineMethod, MAX_DEGREE, MAX_FACES, MAX_SWEEP_POLES};
-use serde::de::{self, Deserializer, MapAccess, Visitor};
+use rmfsurf::glam::DVec3;
+use rmfsurf::{Corner, Reference, SpineMethod, SweepFrame, MAX_DEGREE, MAX_FACES, MAX_SWEEP_POLES};
+use serde::de::{self, Deserializer, MapAccess, SeqAccess, Visitor};
 use serde::Deserialize;
 use std::fmt;
 
@@ -136,6 +137,8 @@ pub struct Sweep {
     pub twist: Option<Number>,
     pub closure_symmetry: Option<Count<0, { 1 << 16 }>>,
     pub solid: Option<Bool>,
+    pub frame: Option<FrameName>,
+    pub scale: Option<Scale>,
 }
 
 impl Sweep {
@@ -147,6 +150,8 @@ impl Sweep {
             ("twist", self.twist.is_some()),
             ("closure_symmetry", self.closure_symmetry.is_some()),
             ("solid", self.solid.is_some()),
+            ("frame", self.frame.is_some()),
+            ("scale", self.scale.is_some()),
         ]
         .into_iter()
         .filter_map(|(name, given)| given.then_some(name))
@@ -429,5 +434,103 @@ impl<'de> Visitor<'de> for CornerVisitor {
 impl<'de> Deserialize<'de> for CornerName {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         d.deserialize_any(CornerVisitor).map(CornerName)
+    }
+}
+
+/// `"rmf"`, `"frenet"` or `{"fixed": [x, y, z]}` (a direction, not zero).
+#[derive(Clone, Copy, Debug)]
+pub struct FrameName(pub SweepFrame);
+
+struct FrameVisitor;
+
+impl<'de> Visitor<'de> for FrameVisitor {
+    type Value = SweepFrame;
+
+    fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+        f.write_str("\"rmf\", \"frenet\" or {\"fixed\": [x, y, z]}")
+    }
+
+    fn visit_str<E: de::Error>(self, name: &str) -> Result<SweepFrame, E> {
+        match name {
+            "rmf" => Ok(SweepFrame::Rmf),
+            "frenet" => Ok(SweepFrame::Frenet),
+            other => Err(E::custom(format!(
+                "unknown frame \"{other}\"; expected rmf, frenet or {{\"fixed\": [x, y, z]}}"
+            ))),
+        }
+    }
+
+    fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<SweepFrame, A::Error> {
+        let mut frame = None;
+        while let Some(key) = map.next_key::<String>()? {
+            if key != "fixed" {
+                return Err(de::Error::unknown_field(&key, &["fixed"]));
+            }
+            if frame.is_some() {
+                return Err(de::Error::duplicate_field("fixed"));
+            }
+            frame = Some(SweepFrame::Fixed(map.next_value::<FixedDirection>()?.0));
+        }
+        frame.ok_or_else(|| de::Error::custom("needs one of fixed"))
+    }
+}
+
+impl<'de> Deserialize<'de> for FrameName {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        d.deserialize_any(FrameVisitor).map(FrameName)
+    }
+}
+
+/// The direction of a fixed frame: `[x, y, z]`, not zero.
+struct FixedDirection(DVec3);
+
+impl<'de> Deserialize<'de> for FixedDirection {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let Vec3(v) = Vec3::deserialize(d)?;
+        if v == DVec3::ZERO {
+            return Err(de::Error::custom(
+                "must not be zero (the direction f2 follows)",
+            ));
+        }
+        Ok(FixedDirection(v))
+    }
+}
+
+/// `[start, end]`: the profile's scale at the wire's ends, both positive.
+#[derive(Clone, Copy, Debug)]
+pub struct Scale(pub [f64; 2]);
+
+struct ScaleVisitor;
+
+impl<'de> Visitor<'de> for ScaleVisitor {
+    type Value = [f64; 2];
+
+    fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+        f.write_str("[start, end] (two positive numbers)")
+    }
+
+    fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<[f64; 2], A::Error> {
+        let mut scale = [1.0; 2];
+        let mut n = 0usize;
+        // Numbers past the second are checked and counted, not kept.
+        while let Some(Positive(x)) = seq.next_element::<Positive>()? {
+            if let Some(slot) = scale.get_mut(n) {
+                *slot = x;
+            }
+            n += 1;
+        }
+        if n != 2 {
+            return Err(de::Error::custom(format!(
+                "must be [start, end], got {n} number{}",
+                if n == 1 { "" } else { "s" }
+            )));
+        }
+        Ok(scale)
+    }
+}
+
+impl<'de> Deserialize<'de> for Scale {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        d.deserialize_any(ScaleVisitor).map(Scale)
     }
 }

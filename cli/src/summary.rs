@@ -204,6 +204,7 @@ fn wire_figures(edges: usize, shape: &rmfsurf::Shape) -> Vec<Figure> {
         figure("orthogonality", "surface: max |cos| between parameter lines", r.max_parameter_cosine),
         figure("singularity_margin", "least singularity margin (Cor. 7)", r.singularity_margin),
         figure("corner_turn", "frames: max turn about the tangent across corners (rad)", r.corner_turn),
+        figure("frame_error", "frames: max angle to the frame asked for (rad)", r.frame_error),
         figure("seam_gap", "closed wire: seam gap", r.seam_gap),
         figure("joint_gap", "largest gap between sections at joints", r.joint_gap),
     ];

@@ -453,6 +453,126 @@ fn bad_wires_are_reported_at_the_field() {
     );
 }
 
+/// A circle of radius 1 swept along a straight line of length 3, with `extra` keys in the
+/// sweep (e.g. `"frame": "frenet", `).
+fn line_job(extra: &str) -> String {
+    format!(
+        r#"{{"sweep": {{"spine": {{"wire": [{{"line": {{"from": [0, 0, 0], "to": [3, 0, 0]}}}}]}},
+            {extra}"profile": {{"circle": {{"radius": 1}}}}}}}}"#
+    )
+}
+
+/// Runs a job on standard input, writing STEP and the figures; the figures.
+fn wire_figures(name: &str, json: &str) -> serde_json::Value {
+    let dir = scratch(name);
+    let out = tool(&dir, &["-", "-o", "out.step", "-o", "out.json"], Some(json));
+    assert!(
+        out.status.success(),
+        "{name}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(dir.join("out.json")).unwrap();
+    serde_json::from_str::<serde_json::Value>(&text).unwrap()["figures"].clone()
+}
+
+/// `"frame"` ("rmf", "frenet", {"fixed": [x, y, z]}) and `"scale"` ([start, end]) are read
+/// on wire sweeps, reported as the frame error, and refused with the field named: unknown
+/// names, a fixed direction of two numbers or zero, a scale of one number or a negative
+/// one, either key on a sweep along a curve, an initial normal with a frame that sets f2.
+#[test]
+fn wire_sweep_frames_and_scales_are_read_and_refused_at_the_field() {
+    for (k, frame) in [r#""rmf""#, r#""frenet""#, r#"{"fixed": [0, 0, 1]}"#]
+        .iter()
+        .enumerate()
+    {
+        let f = wire_figures(
+            &format!("wire_frame_{k}"),
+            &line_job(&format!(r#""frame": {frame}, "scale": [1, 1], "#)),
+        );
+        let error = f["frame_error"].as_f64().unwrap();
+        assert!((0.0..=1e-9).contains(&error), "{frame}: {error}");
+        let volume = f["volume"].as_f64().unwrap();
+        let cylinder = 3.0 * std::f64::consts::PI;
+        assert!(
+            (volume - cylinder).abs() <= 1e-9 * cylinder,
+            "{frame}: {volume}"
+        );
+    }
+    let cases = [
+        (
+            r#""frame": "binormal", "#,
+            "sweep.frame: unknown frame \"binormal\"; expected rmf, frenet or {\"fixed\": [x, y, z]}",
+        ),
+        (
+            r#""frame": {"fixed": [0, 1]}, "#,
+            "sweep.frame.fixed: must be [x, y, z], got 2 numbers",
+        ),
+        (
+            r#""frame": {"fixed": [0, 0, 0]}, "#,
+            "sweep.frame.fixed: must not be zero",
+        ),
+        (
+            r#""frame": {"fixd": [0, 0, 1]}, "#,
+            "sweep.frame.fixd: unknown field",
+        ),
+        (r#""frame": 3, "#, "sweep.frame"),
+        (
+            r#""scale": [0.5], "#,
+            "sweep.scale: must be [start, end], got 1 number",
+        ),
+        (
+            r#""scale": [1, 0.5, 2], "#,
+            "sweep.scale: must be [start, end], got 3 numbers",
+        ),
+        (
+            r#""scale": [1, -0.5], "#,
+            "sweep.scale[1]: must be positive, got -0.5",
+        ),
+        (r#""scale": 0.5, "#, "sweep.scale"),
+        (
+            r#""frame": "frenet", "initial_normal": [0, 0, 1], "#,
+            "sweep.initial_normal: ",
+        ),
+    ];
+    for (k, (extra, expected)) in cases.iter().enumerate() {
+        wire_fails_with(
+            &format!("wire_frame_bad_{k}"),
+            &line_job(extra),
+            &[expected],
+        );
+    }
+    for (k, key) in [r#""frame": "frenet", "#, r#""scale": [1, 0.5], "#]
+        .iter()
+        .enumerate()
+    {
+        let name = &key[1..6];
+        fails_with(
+            &format!("curve_frame_{k}"),
+            &GOOD_SWEEP.replace("\"profile\"", &format!("{key}\"profile\"")),
+            &[&format!("sweep.{name}: only for a sweep along a wire")],
+        );
+    }
+}
+
+/// The scale law (intended behaviour of the geometry): a circle of radius 1 scaled from 1
+/// to ½ along a line of length 3 is the frustum of volume π L (r₀² + r₀r₁ + r₁²)/3.
+#[test]
+fn a_scaled_circle_along_a_line_is_a_frustum() {
+    for frame in [r#""rmf""#, r#""frenet""#, r#"{"fixed": [0, 1, 1]}"#] {
+        let f = wire_figures(
+            "wire_frustum",
+            &line_job(&format!(r#""frame": {frame}, "scale": [1, 0.5], "#)),
+        );
+        let (r0, r1, length) = (1.0, 0.5, 3.0);
+        let exact = std::f64::consts::PI * length * (r0 * r0 + r0 * r1 + r1 * r1) / 3.0;
+        let volume = f["volume"].as_f64().unwrap();
+        assert!(
+            (volume - exact).abs() <= 1e-9 * exact,
+            "{frame}: volume {volume}, frustum {exact}"
+        );
+    }
+}
+
 /// The fixed input of issue 15 (examples/cli/hopper.json): the formed solid as STEP, the
 /// neutral layer's flat pattern as DXF, SVG and a planar STEP face, the figures as JSON.
 #[test]

@@ -11,7 +11,7 @@ use std::process::Command;
 const TOOL: &str = env!("CARGO_BIN_EXE_rmfsurf");
 
 /// Numbers that are not lengths: degrees, knots, weights, counts, angles, ratios.
-const UNSCALED: [&str; 14] = [
+const UNSCALED: [&str; 15] = [
     "degree",
     "degree_u",
     "degree_v",
@@ -26,6 +26,7 @@ const UNSCALED: [&str; 14] = [
     "twist",
     "k_factor",
     "join_tolerance",
+    "scale",
 ];
 
 /// Points in space: scaled and moved (directions, such as normals and tangents, are only

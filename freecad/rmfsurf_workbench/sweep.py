@@ -1,5 +1,6 @@
-"""RmfSweep: a planar profile swept along a wire with rotation-minimizing frames, by the
-library's wire sweep (``rmf_wire_sweep`` through :func:`rmfsurf.freecad.sweep_with_report`).
+"""RmfSweep: a planar profile swept along a wire with rotation-minimizing frames (or the
+Frenet frame, or a frame following a fixed direction; the profile scaled linearly from
+ScaleStart to ScaleEnd), by the library's wire sweep (``rmf_wire_sweep`` through :func:`rmfsurf.freecad.sweep_with_report`).
 
 Lines and circular arcs of the spine give exact cylinders and tori; curve edges are
 approximated by a PH cubic spline within the tolerance and carry its rational RMF in closed
@@ -21,6 +22,7 @@ from .view import attach_view, hide
 
 METHODS = ("ph-rmf",)
 CORNERS = ("round", "miter")
+FRAMES = ("rmf", "frenet", "fixed")
 
 
 class SweepFeature(Feature):
@@ -52,6 +54,19 @@ class SweepFeature(Feature):
         Property("App::PropertyInteger", "ClosureSymmetry", "Sweep",
                  "Closed spines: the frame closes modulo 360°/k, k the profile's rotational "
                  "symmetry (e.g. 4 for a square); 0: closes exactly", default=0),
+        Property("App::PropertyEnumeration", "Frame", "Sweep",
+                 "How the profile turns about the tangent: rmf (rotation-minimizing), frenet "
+                 "(with the spine's torsion: threads along helices) or fixed (its x axis "
+                 "follows FrameDirection)", enum=FRAMES),
+        Property("App::PropertyVector", "FrameDirection", "Sweep",
+                 "Frame fixed: the direction the profile's x axis follows (projected onto "
+                 "the normal plane; not zero, never along the spine)"),
+        Property("App::PropertyFloat", "ScaleStart", "Sweep",
+                 "The profile's scale at the spine's start (> 0), linear in arc length to "
+                 "ScaleEnd", default=1.0),
+        Property("App::PropertyFloat", "ScaleEnd", "Sweep",
+                 "The profile's scale at the spine's end (> 0; equal to ScaleStart on a "
+                 "closed spine)", default=1.0),
         Property("App::PropertyFloat", "SpineDistance", "Accuracy",
                  "Largest distance of the PH cubic spline from the curve edges (mm; 0 on "
                  "lines and arcs)", output=True),
@@ -66,6 +81,9 @@ class SweepFeature(Feature):
                  "at the spine's curvature, Mäurer & Jüttler Cor. 7)", output=True),
         Property("App::PropertyInteger", "FaceCount", "Accuracy",
                  "Number of faces of the result", output=True),
+        Property("App::PropertyFloat", "FrameError", "Accuracy",
+                 "Largest angle between the frames used and the frame asked for (radians; "
+                 "0 for rmf)", output=True),
     )
 
     def compute(self, obj):
@@ -75,18 +93,29 @@ class SweepFeature(Feature):
         if obj.ClosureSymmetry < 0:
             raise ValueError("ClosureSymmetry: must be 0 or a symmetry order k >= 1, got %d"
                              % obj.ClosureSymmetry)
+        frame = obj.Frame
+        if frame == "fixed":
+            frame = ("fixed", tuple(obj.FrameDirection))
+            if not any(frame[1]):
+                raise ValueError("FrameDirection: Frame fixed needs a direction, not (0, 0, 0)")
+        for name in ("ScaleStart", "ScaleEnd"):
+            value = getattr(obj, name)
+            if not (math.isfinite(value) and value > 0):
+                raise ValueError("%s: the profile's scale must be positive, got %r"
+                                 % (name, value))
         radius = obj.CornerRadius.Value
         shape, report = sweep_with_report(
             inputs.wire(obj.Spine, "Spine"), inputs.profile(obj.Profile, "Profile"),
             solid=obj.Solid, corner=obj.Corner, corner_radius=radius if radius > 0 else None,
             tolerance=obj.Tolerance, twist=math.radians(obj.Twist.Value),
-            closure_symmetry=obj.ClosureSymmetry)
+            closure_symmetry=obj.ClosureSymmetry, frame=frame,
+            scale=(obj.ScaleStart, obj.ScaleEnd))
         obj.Shape = shape
         self.set_outputs(obj, SpineDistance=report.spine_distance,
                          RmfDefect=report.rmf_angle_error,
                          Orthogonality=report.max_parameter_cosine,
                          SingularityMargin=report.singularity_margin,
-                         FaceCount=report.face_count)
+                         FaceCount=report.face_count, FrameError=report.frame_error)
 
 
 def make_sweep(doc, spine, profile, solid=True, corner="round", corner_radius=None,

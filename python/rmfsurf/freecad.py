@@ -29,7 +29,8 @@ from .cone_splines import ConeSpline, cone_spline_approximate_ruled
 from .curves import (ArrayLike, Curve, NurbsCurve, arc, circle, distinct_knots, flat_knots,
                      join_nurbs)
 from .frames import SPINE_METHODS, Frames, framed_spine
-from .shapes import Arc, CurveEdge, Edge, Line, Shape, SweepReport, wire_sweep
+from .shapes import (Arc, CurveEdge, Edge, Line, Shape, SweepFrame, SweepReport,
+                     _frame_start_normal, _named, wire_sweep)
 from .sheets import SheetPart
 from .sheets import transition as _transition
 from .surfaces import Surface, sweep_surface
@@ -310,6 +311,13 @@ def profile_curves(profile: Any, origin: ArrayLike, tangent: ArrayLike, toleranc
     normal to `tangent` through `origin`, as the 2-D outer curve, holes and initial normal
     f2 (the x direction of the profile's placement, e.g. the sketch's x axis) of
     :func:`rmfsurf.wire_sweep`."""
+    return _profile_curves(profile, origin, tangent, tolerance)
+
+
+def _profile_curves(profile: Any, origin: ArrayLike, tangent: ArrayLike, tolerance: float,
+                    f2: Optional[np.ndarray] = None) -> Tuple[Curve, List[Curve], np.ndarray]:
+    """:func:`profile_curves`, in the coordinates of the unit normal `f2` (normal to the
+    tangent) when given instead of the profile's x axis."""
     o = _core.vector(origin, "origin", finite_only=True)
     t = _core.direction(tangent, "tangent")
     tolerance = _core.finite(tolerance, "tolerance", positive=True)
@@ -328,6 +336,8 @@ def profile_curves(profile: Any, origin: ArrayLike, tangent: ArrayLike, toleranc
     placement = getattr(profile, "Placement", None) if not isinstance(profile, Part.Shape) else None
     x_axis = placement.Rotation.multVec(V(1, 0, 0)) if placement is not None else None
     x = np.array(tuple(x_axis if x_axis is not None else _plane_x_axis(face.Surface)))
+    if f2 is not None:
+        x = f2
     f2 = x - np.dot(x, t) * t
     f2 /= np.linalg.norm(f2)
     f3 = _core.cross(t, f2)
@@ -366,9 +376,27 @@ def _start_frame(wire: Any) -> Tuple[np.ndarray, np.ndarray]:
     return np.array(tuple(bspline.value(a))), np.array(tuple(bspline.tangent(a)[0]))
 
 
+def _start_principal_normal(wire: Any) -> Optional[np.ndarray]:
+    """The wire's principal normal at its start (towards the centre of curvature), None
+    where it starts straight."""
+    first = _wire_of(wire, "wire", "a Part.Wire, a Part.Edge or a sketch").OrderedEdges[0]
+    bspline = _edge_bspline(first)
+    a = bspline.FirstParameter
+    try:
+        if not bspline.curvature(a) > 0:
+            return None
+        n = np.array(tuple(bspline.centerOfCurvature(a))) - np.array(tuple(bspline.value(a)))
+    except Part.OCCError:  # no centre of curvature: straight there
+        return None
+    length = np.linalg.norm(n)
+    return n / length if length > 0 and np.isfinite(length) else None
+
+
 def sweep(wire: Any, profile: Any, *, solid: bool = True, corner: str = "round",
-          corner_radius: Optional[float] = None, tolerance: float = 1e-4) -> Any:
-    """Sweeps `profile` along `wire` with rotation-minimizing frames (rmf_wire_sweep).
+          corner_radius: Optional[float] = None, tolerance: float = 1e-4,
+          frame: SweepFrame = "rmf", scale: Tuple[float, float] = (1.0, 1.0)) -> Any:
+    """Sweeps `profile` along `wire` (rmf_wire_sweep), by default with rotation-minimizing
+    frames.
 
     Args:
         wire: a Part.Wire, a Part.Edge or a sketch (one wire): lines, arcs and curves.
@@ -379,30 +407,43 @@ def sweep(wire: Any, profile: Any, *, solid: bool = True, corner: str = "round",
         corner: "round" or "miter".
         corner_radius: the rounding radius of round corners (None: the library's).
         tolerance: the distance tolerance of the sweep.
+        frame: "rmf" (default), "frenet" (as makePipeShell's Frenet mode: along a helix
+            the profile's points trace helices, for threads) or ("fixed", (x, y, z)) /
+            {"fixed": (x, y, z)} (f2 follows that direction, the binormal mode); see
+            :func:`rmfsurf.wire_sweep`. The profile stays where it is placed at the start,
+            except with "frenet" on a wire that starts straight, where the library
+            chooses f2 there.
+        scale: the profile's scale (start, end), linear in arc length: two positive
+            numbers ((1, 0.5) tapers a circle along a line into a frustum).
 
     Returns:
         A Part.Shape: a Part.Solid (or a Part.Shell with ``solid=False``).
     """
     return sweep_with_report(wire, profile, solid=solid, corner=corner,
-                             corner_radius=corner_radius, tolerance=tolerance)[0]
+                             corner_radius=corner_radius, tolerance=tolerance, frame=frame,
+                             scale=scale)[0]
 
 
 def sweep_with_report(wire: Any, profile: Any, *, solid: bool = True, corner: str = "round",
                       corner_radius: Optional[float] = None, tolerance: float = 1e-4,
-                      twist: float = 0.0, closure_symmetry: int = 0
+                      twist: float = 0.0, closure_symmetry: int = 0,
+                      frame: SweepFrame = "rmf", scale: Tuple[float, float] = (1.0, 1.0)
                       ) -> Tuple[Any, SweepReport]:
     """:func:`sweep` with the wire sweep's `twist` (radians over the whole wire) and
     `closure_symmetry` (closed wires: the frame closes modulo 2π/k; 0 is taken as 1),
     returning the Part.Shape and the library's :class:`rmfsurf.SweepReport` (spine
     distance, RMF angle error, parameter-line orthogonality, singularity margin, face
-    count)."""
+    count, frame error)."""
     tolerance = _core.finite(tolerance, "tolerance", positive=True)
     edges = _path_edges(wire, "wire")
     origin, tangent = _start_frame(wire)
-    outer, holes, f2 = profile_curves(profile, origin, tangent, tolerance)
+    principal = _start_principal_normal(wire) if _named(frame, "frenet") else None
+    start_f2 = _frame_start_normal(frame, tangent / np.linalg.norm(tangent), principal)
+    outer, holes, f2 = _profile_curves(profile, origin, tangent, tolerance, start_f2)
     result = wire_sweep(edges, outer, holes, solid=solid, corner=corner,
-                        corner_radius=corner_radius, tolerance=tolerance, initial_normal=f2,
-                        twist=twist, closure_symmetry=closure_symmetry)
+                        corner_radius=corner_radius, tolerance=tolerance,
+                        initial_normal=f2 if _named(frame, "rmf") else None, twist=twist,
+                        closure_symmetry=closure_symmetry, frame=frame, scale=scale)
     return part_shape(result, min(tolerance, 1e-6)), result.report()
 
 

@@ -36,7 +36,8 @@ import numpy as np
 from . import _core
 from .curves import ArrayLike, Curve, NurbsCurve, join_nurbs
 from .sheets import SheetPart
-from .shapes import Arc, CurveEdge, Edge, Line, Shape, wire_sweep
+from .shapes import (Arc, CurveEdge, Edge, Line, Shape, SweepFrame, _frame_start_normal,
+                     _named, wire_sweep)
 from .surfaces import Surface
 
 from OCP.BRep import BRep_Builder, BRep_Tool
@@ -275,6 +276,23 @@ def _start_frame(path: Any) -> Tuple[np.ndarray, np.ndarray]:
     return _pnt(p), t / np.linalg.norm(t)
 
 
+def _start_principal_normal(path: Any) -> Optional[np.ndarray]:
+    """The path's principal normal at its start (towards the centre of curvature), None
+    where it starts straight."""
+    raw = _unwrap(path)
+    if isinstance(raw, Geom_Curve):
+        bspline = GeomConvert.CurveToBSplineCurve_s(raw)
+    else:
+        bspline = _edge_bspline(_ordered_edges(path)[0])
+    p, d1, d2 = gp_Pnt(), gp_Vec(), gp_Vec()
+    bspline.D2(bspline.FirstParameter(), p, d1, d2)
+    v, a = np.array(d1.Coord()), np.array(d2.Coord())
+    t = v / np.linalg.norm(v)
+    n = a - np.dot(a, t) * t
+    length = np.linalg.norm(n)
+    return n / length if length > 1e-12 * np.dot(v, v) else None
+
+
 def _profile_plane(profile: Any, tolerance: float) -> Tuple[Any, List[Any], gp_Pln]:
     """The outer wire, the inner wires and the plane of a planar profile."""
     raw = _shape_of(profile, "profile", (TopAbs_FACE, TopAbs_WIRE, TopAbs_EDGE, TopAbs_COMPOUND),
@@ -336,6 +354,13 @@ def profile_curves(profile: Any, origin: ArrayLike, tangent: ArrayLike, toleranc
     """A planar profile placed in space (normal to `tangent` through `origin`) as the
     2-D outer curve, hole curves and initial normal f2 of :func:`rmfsurf.wire_sweep`.
     f2 is the x direction of the profile's plane."""
+    return _profile_curves(profile, origin, tangent, tolerance)
+
+
+def _profile_curves(profile: Any, origin: ArrayLike, tangent: ArrayLike, tolerance: float,
+                    f2: Optional[np.ndarray] = None) -> Tuple[Curve, List[Curve], np.ndarray]:
+    """:func:`profile_curves`, in the coordinates of the unit normal `f2` (normal to the
+    tangent) when given instead of the profile plane's x direction."""
     origin = _core.vector(origin, "origin", finite_only=True)
     t = _core.direction(tangent, "tangent")
     tolerance = _core.finite(tolerance, "tolerance", positive=True)
@@ -350,7 +375,7 @@ def profile_curves(profile: Any, origin: ArrayLike, tangent: ArrayLike, toleranc
     if off > tolerance:
         raise ValueError("profile: its plane must pass through the path's start point (it "
                          "is %.3g away)" % off)
-    x = np.array(axis.XDirection().Coord())
+    x = np.array(axis.XDirection().Coord()) if f2 is None else f2
     f2 = x - np.dot(x, t) * t
     f2 /= np.linalg.norm(f2)
     f3 = _core.cross(t, f2)
@@ -452,8 +477,10 @@ def _wrap_like(template: Any, raw: Any) -> Any:
 
 
 def sweep(path: Any, profile: Any, *, solid: bool = True, corner: str = "round",
-          corner_radius: Optional[float] = None, tolerance: float = 1e-4) -> Any:
-    """Sweeps `profile` along `path` with rotation-minimizing frames (rmf_wire_sweep).
+          corner_radius: Optional[float] = None, tolerance: float = 1e-4,
+          frame: SweepFrame = "rmf", scale: Tuple[float, float] = (1.0, 1.0)) -> Any:
+    """Sweeps `profile` along `path` (rmf_wire_sweep), by default with rotation-minimizing
+    frames.
 
     Args:
         path: a build123d/CadQuery Wire or Edge, a TopoDS_Wire/TopoDS_Edge or a
@@ -464,6 +491,14 @@ def sweep(path: Any, profile: Any, *, solid: bool = True, corner: str = "round",
         corner: "round" or "miter" at the path's corners.
         corner_radius: the rounding radius of round corners (None: the library's).
         tolerance: the distance tolerance of the sweep (spine approximation, joints).
+        frame: "rmf" (default), "frenet" (as build123d's ``sweep(is_frenet=True)``: along
+            a helix the profile's points trace helices, for threads) or ("fixed", (x, y,
+            z)) / {"fixed": (x, y, z)} (f2 follows that direction, OpenCascade's binormal
+            mode); see :func:`rmfsurf.wire_sweep`. The profile stays where it is placed at
+            the start, except with "frenet" on a path that starts straight, where the
+            library chooses f2 there.
+        scale: the profile's scale (start, end), linear in arc length: two positive
+            numbers ((1, 0.5) tapers a circle along a line into a frustum).
 
     Returns:
         A ``TopoDS_Solid`` (or shell) — a build123d ``Solid`` / CadQuery ``Shape`` when
@@ -472,7 +507,11 @@ def sweep(path: Any, profile: Any, *, solid: bool = True, corner: str = "round",
     tolerance = _core.finite(tolerance, "tolerance", positive=True)
     edges = path_edges(path)
     origin, tangent = _start_frame(path)
-    outer, holes, f2 = profile_curves(profile, origin, tangent, tolerance)
+    start_f2 = _frame_start_normal(frame, tangent, _start_principal_normal(path)
+                                   if _named(frame, "frenet") else None)
+    outer, holes, f2 = _profile_curves(profile, origin, tangent, tolerance, start_f2)
     result = wire_sweep(edges, outer, holes, solid=solid, corner=corner,
-                        corner_radius=corner_radius, tolerance=tolerance, initial_normal=f2)
+                        corner_radius=corner_radius, tolerance=tolerance,
+                        initial_normal=f2 if _named(frame, "rmf") else None, frame=frame,
+                        scale=scale)
     return _wrap_like(path, shape(result, min(tolerance, 1e-6)))

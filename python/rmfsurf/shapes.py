@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import os
 from dataclasses import dataclass
-from typing import Any, List, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -68,6 +68,82 @@ def corners() -> dict:
     return {"round": lib.RMF_CORNER_ROUND, "miter": lib.RMF_CORNER_MITER}
 
 
+#: What `frame` of :func:`wire_sweep` takes: "rmf", "frenet", ("fixed", (x, y, z)) or
+#: {"fixed": (x, y, z)}.
+SweepFrame = Union[str, Tuple[str, ArrayLike], Dict[str, ArrayLike]]
+
+_FRAME_FORMS = "'rmf', 'frenet', ('fixed', (x, y, z)) or {'fixed': (x, y, z)}"
+
+
+def _frame_codes() -> dict:
+    """The frame names of :func:`wire_sweep` ("fixed" takes a direction too)."""
+    return {"rmf": lib.RMF_FRAME_RMF, "frenet": lib.RMF_FRAME_FRENET,
+            "fixed": lib.RMF_FRAME_FIXED}
+
+
+def _sweep_frame(value: Any) -> Tuple[int, Optional[np.ndarray]]:
+    """The RmfSweepFrame code of `frame` and, for "fixed", its direction (finite, not
+    zero). TypeError for what is no string, pair or dict; ValueError (InvalidInputError for
+    a direction that is zero or not finite) for an unknown name or a malformed fixed
+    frame; each message names `frame`."""
+    if isinstance(value, dict):
+        if list(value) != ["fixed"]:
+            raise ValueError("frame: a dict frame is {'fixed': (x, y, z)}, got keys %s"
+                             % ", ".join(repr(k) for k in value))
+        items: Any = ("fixed", value["fixed"])
+    elif isinstance(value, tuple):
+        items = value
+    elif isinstance(value, str):
+        if value == "fixed":
+            raise ValueError("frame: 'fixed' needs its direction: ('fixed', (x, y, z)) or "
+                             "{'fixed': (x, y, z)}")
+        if value not in ("rmf", "frenet"):
+            raise ValueError("frame: expected %s, got %r" % (_FRAME_FORMS, value))
+        return int(_frame_codes()[value]), None
+    else:
+        raise TypeError("frame: expected %s, got %s" % (_FRAME_FORMS, type(value).__name__))
+    if len(items) != 2 or items[0] != "fixed":
+        raise ValueError("frame: expected %s, got %r" % (_FRAME_FORMS, value))
+    direction = _core.vector(items[1], "frame", finite_only=True)
+    if not np.any(direction):
+        raise _core._refused("frame", "the fixed direction (0, 0, 0) is zero")
+    return int(lib.RMF_FRAME_FIXED), direction
+
+
+def _scale(value: Any) -> Tuple[float, float]:
+    """The profile's scale at the start and the end: two finite positive numbers."""
+    start, end = _core.pair(value, "scale")
+    for i, s in enumerate((start, end)):
+        if not s > 0:
+            raise _core._refused("scale[%d]" % i, "%r must be positive" % s)
+    return start, end
+
+
+def _named(frame: Any, name: str) -> bool:
+    """Whether `frame` is the frame called `name` ("rmf", "frenet")."""
+    return isinstance(frame, str) and frame == name
+
+
+def _frame_start_normal(frame: Any, tangent: np.ndarray,
+                        principal_normal: Optional[np.ndarray]) -> Optional[np.ndarray]:
+    """For the CAD adapters: f2 at the wire's start as the library sets it for `frame`
+    (validated), so that a profile placed in space is given in the frame it will be swept
+    in — the fixed direction projected onto the normal plane, or the principal normal at
+    the start for "frenet" (`principal_normal`, None where the wire starts straight) —
+    and None where the adapter's own f2 (the profile's x axis) is the initial normal (the
+    RMF) or the library chooses (a Frenet frame on a straight start, a fixed direction
+    along the tangent, which the library refuses)."""
+    code, direction = _sweep_frame(frame)
+    if code == lib.RMF_FRAME_FIXED:
+        d = direction / np.linalg.norm(direction)
+        f2 = d - np.dot(d, tangent) * tangent
+        length = np.linalg.norm(f2)
+        return f2 / length if length > 1e-9 else None
+    if code == lib.RMF_FRAME_FRENET:
+        return principal_normal
+    return None
+
+
 def _edges(edges: Sequence[Edge]) -> Tuple[Any, int, List[Any]]:
     """An RmfEdge array, its length, and what must stay alive during the call."""
     edges = _core.objects(edges, "edges", (Line, Arc, CurveEdge),
@@ -98,13 +174,15 @@ class SweepReport:
     """Figures of a wire sweep: the largest distance of the spine from the wire, the RMF
     angle error (radians), the largest |cos| of the angle between parameter lines (0:
     orthogonal, lines of curvature), the singularity margin (> 0: regular), the face
-    count."""
+    count, and the frame error: the largest angle (radians) between the frames used and the
+    frame asked for (`frame` of :func:`wire_sweep`; 0 for the RMF)."""
 
     spine_distance: float
     rmf_angle_error: float
     max_parameter_cosine: float
     singularity_margin: float
     face_count: int
+    frame_error: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -168,7 +246,7 @@ class Shape:
         r = ffi.new("RmfSweepReport *")
         call("rmf_shape_report", self._ptr, r)
         return SweepReport(r.spine_distance, r.rmf_angle_error, r.max_parameter_cosine,
-                           r.singularity_margin, int(r.face_count))
+                           r.singularity_margin, int(r.face_count), r.frame_error)
 
     def write_step(self, path: Union[str, bytes, "os.PathLike[Any]"]) -> None:
         """Writes the shape as a STEP file (exact faces, a closed shell for a solid) at
@@ -201,7 +279,8 @@ def wire_sweep(edges: Union[Edge, Sequence[Edge]], profile: Curve,
                corner_radius: Optional[float] = None, tolerance: float = 1e-4,
                join_tolerance: Optional[float] = None,
                initial_normal: Optional[ArrayLike] = None, twist: float = 0.0,
-               closure_symmetry: int = 0) -> Shape:
+               closure_symmetry: int = 0, frame: SweepFrame = "rmf",
+               scale: Tuple[float, float] = (1.0, 1.0)) -> Shape:
     """Sweeps a closed profile (with `holes`) along a connected wire of `edges`.
 
     Args:
@@ -219,6 +298,15 @@ def wire_sweep(edges: Union[Edge, Sequence[Edge]], profile: Curve,
         closure_symmetry: for a closed wire, the profile's symmetry order k ≥ 1 so that
             the frame closes modulo 2π/k without a seam; 0 is taken as 1 (ignored for an
             open wire; docs/c-api.md, "Parameters").
+        frame: how the profile turns about the tangent: "rmf" (the rotation-minimizing
+            frame, the default), "frenet" (f2 along the principal normal at the start, then
+            turning with the torsion: along a helix the profile's points trace helices, as
+            a thread needs) or ("fixed", (x, y, z)) / {"fixed": (x, y, z)} (f2 along that
+            direction projected onto the normal plane). A frame other than "rmf" sets f2
+            itself: `initial_normal` must then be None.
+        scale: the profile's scale (start, end) about the spine, linear in arc length
+            between: two finite positive numbers, equal on a closed wire ((1, 0.5) makes a
+            circle along a line a frustum).
     """
     _require_wire_sweep()
     array, count, keep = _edges(edges)
@@ -238,6 +326,10 @@ def wire_sweep(edges: Union[Edge, Sequence[Edge]], profile: Curve,
     options.twist = _core.number(twist, "twist")
     options.closure_symmetry = _core.integer(closure_symmetry, "closure_symmetry", "uint32_t")
     options.solid = 1 if solid else 0
+    options.frame, direction = _sweep_frame(frame)
+    if direction is not None:
+        options.frame_direction = _core.vec3(direction, "frame")
+    options.scale_start, options.scale_end = _scale(scale)
     out = ffi.new("RmfShape **")
     call("rmf_wire_sweep", array, count, prof._ptr, hole_array, len(hole_list), options, out)
     del keep

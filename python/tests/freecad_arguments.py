@@ -176,6 +176,45 @@ def test_non_finite_placements_are_invalid_input():
                 rmfsurf.InvalidInputError, "tangent")
 
 
+PAIRS = [
+    ("freecad.sweep(scale)", lambda v: rfc.sweep(IN.wire, IN.ring, scale=v)),
+    ("freecad.sweep_with_report(scale)",
+     lambda v: rfc.sweep_with_report(IN.wire, IN.ring, scale=v)),
+]
+BAD_PAIRS = [
+    (3.0, TypeError, ""), ((0.0, 1.0, 2.0), ValueError, ""), ((1.0,), ValueError, ""),
+    (("1", 1.0), TypeError, "[0]"), ((1.0, None), TypeError, "[1]"),
+    ((10 ** 400, 1.0), rmfsurf.InvalidInputError, "[0]"),
+    ((1.0, math.nan), rmfsurf.InvalidInputError, "[1]"),
+    ((0.0, 1.0), rmfsurf.InvalidInputError, "[0]"), ((1.0, -0.5), rmfsurf.InvalidInputError, "[1]"),
+]
+
+
+@pytest.mark.parametrize("case, bad", parametrize(PAIRS, lambda c: BAD_PAIRS))
+def test_a_bad_scale_names_the_argument_and_the_item(case, bad):
+    value, exception, item = bad
+    refused(case[1], value, exception, argument(case[0]) + item)
+
+
+FRAMES = [
+    ("freecad.sweep(frame)", lambda v: rfc.sweep(IN.wire, IN.ring, frame=v)),
+    ("freecad.sweep_with_report(frame)",
+     lambda v: rfc.sweep_with_report(IN.wire, IN.ring, frame=v)),
+]
+BAD_FRAMES = [
+    ("binormal", ValueError), ("fixed", ValueError), (("fixed",), ValueError),
+    ({"fixd": (0, 0, 1)}, ValueError), (("fixed", (0, 1)), ValueError),
+    (("fixed", (0, 0, 0)), rmfsurf.InvalidInputError),
+    ({"fixed": (0, math.nan, 1)}, rmfsurf.InvalidInputError), (3, TypeError), (None, TypeError),
+]
+
+
+@pytest.mark.parametrize("case, bad", parametrize(FRAMES, lambda c: BAD_FRAMES))
+def test_a_bad_frame_names_the_argument(case, bad):
+    value, exception = bad
+    refused(case[1], value, exception, argument(case[0]))
+
+
 def test_wrong_objects_name_the_argument():
     refused(lambda v: rfc.spine_with_frames(v), IN.line, TypeError, "spine")
     refused(lambda v: rfc.spine_with_frames(IN.spline, v), "ph_rmf", ValueError, "method")
@@ -200,6 +239,7 @@ CASES = {
     "integer": {c[0] for c in INTEGERS},
     "number": {c[0] for c in NUMBERS},
     "array": {c[0] for c in ARRAYS},
+    "pair": {c[0] for c in PAIRS},
 }
 
 

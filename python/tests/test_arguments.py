@@ -462,6 +462,8 @@ PAIRS = [
      lambda v: rmfsurf.cone_spline_osculating(helix, (0.5, 2.0), [0.5, 1.0], domain=v)),
     ("cone_spline_osculating(v_range)",
      lambda v: rmfsurf.cone_spline_osculating(twisted_cubic(), v, [0.3, 0.6])),
+    ("wire_sweep(scale)", lambda v: rmfsurf.wire_sweep(IN.edges, circle(1.0), scale=v)),
+    ("ocp.sweep(scale)", lambda v: IN.ocp.sweep(IN.route, IN.ring, scale=v)),
 ]
 BAD_PAIRS = [
     (3.0, TypeError, ""), ("ab", TypeError, ""), ((0.0, 1.0, 2.0), ValueError, ""),
@@ -476,6 +478,44 @@ BAD_PAIRS = [
 def test_a_bad_pair_names_the_argument_and_the_item(case, bad):
     value, exception, item = bad
     refused(case[1], value, exception, argument(case[0]) + item)
+
+
+#: Pairs that must be positive too (a profile's scale): (key, call).
+POSITIVE_PAIRS = [c for c in PAIRS if argument(c[0]) == "scale"]
+
+
+@pytest.mark.parametrize("case, bad", parametrize(POSITIVE_PAIRS, lambda c: [
+    ((0.0, 1.0), "[0]"), ((1.0, -0.5), "[1]"), ((-1.0, -1.0), "[0]")]))
+def test_a_scale_that_is_not_positive_is_invalid_input_naming_the_item(case, bad):
+    value, item = bad
+    refused(case[1], value, rmfsurf.InvalidInputError, argument(case[0]) + item)
+
+
+# ---------------------------------------------------------------------------------------
+# Frames of wire sweeps: "rmf", "frenet", ("fixed", (x, y, z)) or {"fixed": (x, y, z)}.
+# Not a class of the annotations: (key, call), each with every bad frame.
+
+FRAMES = [
+    ("wire_sweep(frame)", lambda v: rmfsurf.wire_sweep(IN.edges, circle(1.0), frame=v)),
+    ("ocp.sweep(frame)", lambda v: IN.ocp.sweep(IN.route, IN.ring, frame=v)),
+]
+BAD_FRAMES = [
+    ("binormal", ValueError), ("fixed", ValueError), ("RMF", ValueError),
+    (("fixed",), ValueError), (("fixed", (0, 0, 1), 2), ValueError),
+    (("frenet", (0, 0, 1)), ValueError), ({"fixd": (0, 0, 1)}, ValueError),
+    ({"fixed": (0, 0, 1), "rmf": 1}, ValueError), (("fixed", (0, 1)), ValueError),
+    (("fixed", ("a", 0, 1)), TypeError), ({"fixed": (0, 0, 10 ** 400)}, rmfsurf.InvalidInputError),
+    (("fixed", (0, 0, 0)), rmfsurf.InvalidInputError),
+    (("fixed", (0, math.nan, 1)), rmfsurf.InvalidInputError),
+    ({"fixed": (math.inf, 0, 1)}, rmfsurf.InvalidInputError),
+    (3, TypeError), (None, TypeError), (["fixed", (0, 0, 1)], TypeError), (b"rmf", TypeError),
+]
+
+
+@pytest.mark.parametrize("case, bad", parametrize(FRAMES, lambda c: BAD_FRAMES))
+def test_a_bad_frame_names_the_argument(case, bad):
+    value, exception = bad
+    refused(case[1], value, exception, argument(case[0]))
 
 
 BOXES = [

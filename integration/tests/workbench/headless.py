@@ -14,7 +14,8 @@ What is checked, each figure printed with its limit:
   B. RmfSweep: a ring sketch (inner loop) swept along a wire of a line, an arc and a line
      (sub-element links), a circle along a sketch with a sharp corner (round, then miter):
      valid solids, volumes against Pappus's A·L; a sketch constraint changed, recomputed;
-     twist, sheet; the library's refusals mark the feature Invalid with a message;
+     twist, sheet; Frame (rmf, frenet, fixed with FrameDirection), ScaleStart/ScaleEnd
+     (a frustum's volume); the library's refusals mark the feature Invalid with a message;
   C. RmfUnfold of a developable face (a cone frustum): flat area against the closed form,
      bend lines, true arcs; the DXF export read back by this script's own parser (layers,
      outline area by Green's theorem);
@@ -336,6 +337,54 @@ def part_b(doc):
     doc.removeObject(bar.Name)
     doc.removeObject(rectangle.Name)
     doc.removeObject(line.Name)
+    doc.recompute()
+
+    # Frame and scale: the properties and their defaults; a circle of radius 2 scaled to 1
+    # along a line of 30 is a frustum (the scale law); the frames on a 4 x 2 rectangle keep
+    # its volume; a fixed frame without a direction and a scale of 0 are refused, naming
+    # the property.
+    require("Frame %r of %s, FrameDirection %s, ScaleStart %r, ScaleEnd %r, FrameError %r"
+            % (sweep.Frame, sweep.getEnumerationsOfProperty("Frame"), tuple(sweep.FrameDirection),
+               sweep.ScaleStart, sweep.ScaleEnd, sweep.FrameError),
+            sweep.Frame == "rmf" and sweep.getEnumerationsOfProperty("Frame")
+            == ["rmf", "frenet", "fixed"] and tuple(sweep.FrameDirection) == (0, 0, 0)
+            and sweep.ScaleStart == 1.0 and sweep.ScaleEnd == 1.0 and sweep.FrameError == 0.0)
+    axis = doc.addObject("Part::Feature", "Axis")
+    axis.Shape = Part.LineSegment(V(0, -80, 0), V(30, -80, 0)).toShape()
+    cone, _ = circle_sketch(doc, "Cone", FreeCAD.Placement(V(0, -80, 0), Z_TO_X), (2.0,))
+    doc.recompute()
+    frustum = wb.make_sweep(doc, axis, cone)
+    frustum.ScaleEnd = 0.5
+    doc.recompute()
+    check_solid("a circle r 2 along a line of 30, ScaleEnd 0.5: the frustum", frustum.Shape,
+                PI * 30 * (4 + 2 + 1) / 3)
+    block = polyline_sketch(doc, "Block", FreeCAD.Placement(V(0, -80, 0), Z_TO_X),
+                            [(-2, -1, 0), (2, -1, 0), (2, 1, 0), (-2, 1, 0), (-2, -1, 0)])
+    block.addConstraint(Sketcher.Constraint("Coincident", 3, 2, 0, 1))
+    frustum.Profile = block
+    frustum.ScaleEnd = 1.0
+    for frame, direction in (("frenet", None), ("fixed", V(0, 0, 1)), ("fixed", V(0, 1, 1))):
+        frustum.Frame = frame
+        if direction is not None:
+            frustum.FrameDirection = direction
+        doc.recompute()
+        check_solid("a 4 x 2 rectangle along a line, Frame %s %s" % (frame, direction or ""),
+                    frustum.Shape, 8 * 30)
+        check("  its FrameError (radians)", frustum.FrameError, 1e-9)
+    for name, value, word in (("FrameDirection", V(0, 0, 0), "FrameDirection"),
+                              ("ScaleStart", 0.0, "ScaleStart"), ("ScaleEnd", -1.0, "ScaleEnd")):
+        saved = getattr(frustum, name)
+        setattr(frustum, name, value)
+        doc.recompute()
+        message = frustum.getStatusString()
+        require("%s = %s: Invalid, '%s'" % (name, value, message),
+                not frustum.isValid() and word in message)
+        setattr(frustum, name, saved)
+    frustum.Frame = "rmf"
+    doc.recompute()
+    require("Frame rmf again: valid", frustum.isValid())
+    for name in (frustum.Name, block.Name, cone.Name, axis.Name):
+        doc.removeObject(name)
     doc.recompute()
 
     # A closed spine: a rounded rectangle of lines and quarter arcs (radius 5), a circle of

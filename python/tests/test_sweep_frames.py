@@ -1,0 +1,135 @@
+"""The frame and the scale law of wire sweeps through the package and rmfsurf.ocp:
+`frame` ("rmf", "frenet", ("fixed", d) / {"fixed": d}) and `scale` (start, end) change
+nothing when left at their defaults; a circle scaled from 1 to 1/2 along a line is the
+frustum π L (r0² + r0 r1 + r1²)/3 by OpenCascade's integration; a small triangle swept
+along a helix with the Frenet frame has helices of the helix's axis and pitch for edges,
+and its solid cuts a thread into a rod. (The last two need the geometry of the frame and
+scale law; the bad arguments are in test_arguments.py.)"""
+
+import math
+
+import numpy as np
+import pytest
+
+import rmfsurf
+
+bd = pytest.importorskip("build123d")
+rocp = pytest.importorskip("rmfsurf.ocp")
+from OCP.BRepAdaptor import BRepAdaptor_Curve  # noqa: E402
+from OCP.BRepCheck import BRepCheck_Analyzer  # noqa: E402
+from OCP.BRepGProp import BRepGProp  # noqa: E402
+from OCP.GProp import GProp_GProps  # noqa: E402
+from OCP.TopAbs import TopAbs_EDGE  # noqa: E402
+from OCP.TopExp import TopExp_Explorer  # noqa: E402
+from OCP.TopoDS import TopoDS  # noqa: E402
+
+LINE = [rmfsurf.Line((0, 0, 0), (3, 0, 0))]
+
+
+def test_the_defaults_are_the_rmf_and_no_scale():
+    profile = rmfsurf.circle(1.0)
+    plain = rmfsurf.wire_sweep(LINE, profile)
+    given = rmfsurf.wire_sweep(LINE, profile, frame="rmf", scale=(1.0, 1.0))
+    assert plain.occ_brep() == given.occ_brep()
+    assert plain.report() == given.report()
+    assert plain.report().frame_error == 0.0
+
+
+def test_each_form_of_a_frame_is_taken():
+    profile = rmfsurf.circle(1.0)
+    for frame in ["rmf", "frenet", ("fixed", (0, 0, 1)), {"fixed": [0.0, 1.0, 1.0]},
+                  ("fixed", np.array([0.0, 0.0, 2.0]))]:
+        shape = rmfsurf.wire_sweep(LINE, profile, frame=frame, scale=[1, 1])
+        assert shape.is_solid, frame
+        assert 0.0 <= shape.report().frame_error <= 1e-9, frame
+
+
+def test_an_initial_normal_goes_with_the_rmf_only():
+    with pytest.raises(rmfsurf.InvalidInputError, match="initial_normal"):
+        rmfsurf.wire_sweep(LINE, rmfsurf.circle(1.0), frame="frenet", initial_normal=(0, 0, 1))
+
+
+def occ_volume(solid):
+    """OpenCascade's volume: BRepGProp's adaptive Gauss-Kronrod integration to 1e-12
+    (VolumePropertiesGK_s; VolumeProperties_s with eps 1e-12 stops at 7e-10 relative on
+    the cylinder of the same sweep without scale)."""
+    props = GProp_GProps()
+    BRepGProp.VolumePropertiesGK_s(getattr(solid, "wrapped", solid), props, 1e-12)
+    return props.Mass()
+
+
+def is_valid(shape):
+    return BRepCheck_Analyzer(getattr(shape, "wrapped", shape)).IsValid()
+
+
+@pytest.mark.parametrize("frame", ["rmf", "frenet", ("fixed", (0, 0, 1))])
+def test_a_circle_scaled_along_a_line_is_a_frustum(frame):
+    r0, r1, length = 1.0, 0.5, 3.0
+    path = bd.Line((0, 0, 0), (length, 0, 0))
+    profile = bd.Plane(origin=(0, 0, 0), z_dir=(1, 0, 0)) * bd.Circle(r0)
+    solid = rocp.sweep(path, profile, frame=frame, scale=(1.0, r1 / r0))
+    exact = math.pi * length * (r0 * r0 + r0 * r1 + r1 * r1) / 3
+    volume = occ_volume(solid)
+    print("\nfrustum, frame %r: volume %.15f vs %.15f (relative %.1e)"
+          % (frame, volume, exact, abs(volume - exact) / exact))
+    assert is_valid(solid)
+    assert abs(volume - exact) <= 1e-9 * exact
+
+
+PITCH, HEIGHT, RADIUS = 3.0, 6.0, 5.0
+#: The triangle in the normal plane at the helix's start: (radial, along the normal plane's
+#: second axis) offsets from the helix; its tip points at the axis.
+TRIANGLE = [(0.4, -0.3), (0.4, 0.3), (-0.4, 0.0)]
+
+
+def helix_and_thread():
+    """The helix (axis z through the origin, start (RADIUS, 0, 0)) and the triangle there in
+    its normal plane, swept with the Frenet frame."""
+    helix = bd.Wire([bd.Helix(pitch=PITCH, height=HEIGHT, radius=RADIUS)])
+    start, tangent = np.array(tuple(helix @ 0)), np.array(tuple(helix % 0))
+    radial = np.array([start[0], start[1], 0.0]) / np.hypot(start[0], start[1])
+    other = np.cross(tangent, radial)
+    corners = [tuple(start + a * radial + b * other) for a, b in TRIANGLE]
+    triangle = bd.Face(bd.Wire.make_polygon(corners, close=True))
+    thread = rocp.sweep(helix, triangle, frame="frenet", tolerance=1e-6)
+    return helix, thread, corners
+
+
+def lateral_edges(shape, path):
+    """The edges of `shape` that do not lie in the normal plane at either end of `path`
+    (the caps), each sampled at 41 points: the tracks of the profile's corners."""
+    caps = [(np.array(tuple(path @ u)), np.array(tuple(path % u))) for u in (0.0, 1.0)]
+    tracks, explorer = [], TopExp_Explorer(shape.wrapped, TopAbs_EDGE)
+    while explorer.More():
+        curve = BRepAdaptor_Curve(TopoDS.Edge(explorer.Current()))
+        ts = np.linspace(curve.FirstParameter(), curve.LastParameter(), 41)
+        points = np.array([curve.Value(t).Coord() for t in ts])
+        if all(np.max(np.abs((points - o) @ n)) > 1e-6 for o, n in caps):
+            tracks.append(points)
+        explorer.Next()
+    return tracks
+
+
+def test_a_frenet_sweep_along_a_helix_has_helices_for_edges_and_cuts_a_thread():
+    helix, thread, corners = helix_and_thread()
+    assert is_valid(thread)
+    radii = sorted(np.hypot(c[0], c[1]) for c in corners)
+    tracks = lateral_edges(thread, helix)
+    assert len(tracks) >= 3
+    worst_radius = worst_pitch = 0.0
+    for points in tracks:
+        r = np.hypot(points[:, 0], points[:, 1])
+        phi = np.unwrap(np.arctan2(points[:, 1], points[:, 0]))
+        # Same axis: a constant distance from it, one of the triangle's corners'.
+        worst_radius = max(worst_radius, np.ptp(r), min(abs(r[0] - q) for q in radii))
+        # Same pitch: the rise is pitch / 2π per radian about the axis.
+        rise = points[:, 2] - points[0, 2] - PITCH * (phi - phi[0]) / (2 * math.pi)
+        worst_pitch = max(worst_pitch, np.max(np.abs(rise)))
+    print("\nFrenet thread along a helix: %d edge tracks, distance from the axis within %.1e, "
+          "pitch relation within %.1e" % (len(tracks), worst_radius, worst_pitch))
+    assert worst_radius <= 1e-4 and worst_pitch <= 1e-4
+    rod = bd.Pos(0, 0, HEIGHT / 2) * bd.Cylinder(RADIUS, HEIGHT - 2)
+    cut = rod.cut(thread)
+    solids = cut.solids()
+    assert len(solids) == 1 and is_valid(solids[0])
+    assert solids[0].volume < rod.volume
