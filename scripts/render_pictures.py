@@ -1,6 +1,7 @@
-"""Renders docs/images/rmfsurf.png from the demo's output (run by scripts/render-pictures).
+"""Renders docs/images/rmfsurf.png (and docs/images/sweep-frames.png) from the demo's
+output (run by scripts/render-pictures).
 
-    python3 render_pictures.py <demo-output-directory> <png>
+    python3 render_pictures.py <demo-output-directory> <png> [<sweep-frames png>]
 
 Three panels, each drawn from a file the demo writes:
   1. closed_sweep_trefoil.vtp: a square tube swept along a trefoil with the PH cubic
@@ -231,6 +232,37 @@ def main(demo_dir, png):
         (0, 1, 0), (0, 0, 1), 1.0,
     )
 
+    write_png(window, png)
+
+
+def sweep_frames(demo_dir, png):
+    """docs/images/sweep-frames.png: the demo's section 9."""
+    window = vtk.vtkRenderWindow()
+    window.SetSize(WIDTH, HEIGHT)
+    window.SetOffScreenRendering(1)
+    window.SetMultiSamples(0)
+    panel(
+        window, 0.0, 0.33,
+        [shaded(read_vtp(f"{demo_dir}/thread_frenet.vtp"), (0.80, 0.62, 0.30), 40.0)],
+        "a thread ridge along a helix, Frenet frame:\nits edges are helices (screw motion)",
+        (0, 0, 1), (1.0, -1.6, 0.5), 1.1,
+    )
+    panel(
+        window, 0.33, 0.66,
+        [shaded(read_vtp(f"{demo_dir}/thread_rmf.vtp"), (0.55, 0.55, 0.60), 40.0)],
+        "the same ridge with the RMF:\nit turns against the screw motion",
+        (0, 0, 1), (1.0, -1.6, 0.5), 1.1,
+    )
+    panel(
+        window, 0.66, 1.0,
+        [shaded(read_vtp(f"{demo_dir}/pipe_tapered.vtp"), (0.45, 0.64, 0.86))],
+        "scale law from 1 to 0.4 along line, arc, line:\nexact on lines, arcs within the tolerance",
+        (0, 1, 0), (0.3, -0.5, 1.0), 1.1,
+    )
+    write_png(window, png)
+
+
+def write_png(window, png):
     window.Render()
     grab = vtk.vtkWindowToImageFilter()
     grab.SetInput(window)
@@ -245,3 +277,5 @@ def main(demo_dir, png):
 
 if __name__ == "__main__":
     main(sys.argv[1], sys.argv[2])
+    if len(sys.argv) > 3:
+        sweep_frames(sys.argv[1], sys.argv[3])

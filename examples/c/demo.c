@@ -727,6 +727,117 @@ static void demo_hopper(void) {
     rmf_curve_free(top);
 }
 
+/* Every lateral face of a shape tessellated into one VTK file (the pictures in docs/). */
+static void write_shape_mesh(const RmfShape *shape, uint32_t v_steps, const char *name, const char *what) {
+    RmfVec3 *points = NULL;
+    uint32_t *triangles = NULL;
+    size_t np = 0, nt = 0, f, k;
+    for (f = 0; f < rmf_shape_face_count(shape); f++) {
+        RmfShapeFace face;
+        size_t fp, ft;
+        TRY(rmf_shape_face(shape, f, &face));
+        if (face.kind != RMF_FACE_SWEPT) continue;
+        TRY(rmf_surface_tessellate(face.surface, 8, v_steps, NULL, 0, NULL, 0, &fp, &ft));
+        points = (RmfVec3 *)realloc(points, (np + fp) * sizeof *points);
+        triangles = (uint32_t *)realloc(triangles, 3 * (nt + ft) * sizeof *triangles);
+        if (!points || !triangles) exit(1);
+        TRY(rmf_surface_tessellate(face.surface, 8, v_steps, points + np, fp, triangles + 3 * nt, ft, &fp, &ft));
+        for (k = 3 * nt; k < 3 * (nt + ft); k++) triangles[k] += (uint32_t)np;
+        np += fp, nt += ft;
+    }
+    write_mesh_vtp(name, points, np, triangles, nt, what);
+    free(points);
+    free(triangles);
+}
+
+/* ---- 9. sweeps as users make them: a thread (Frenet frame) and a taper (scale law) ---- */
+
+/* A helix of radius 5 rising 2 per turn about the z axis. */
+static void thread_helix(double t, void *user, RmfVec3 *point, RmfVec3 *tangent) {
+    const double h = 2 / (2 * PH_DEMO_PI);
+    (void)user;
+    point->x = 5 * cos(t), point->y = 5 * sin(t), point->z = h * t;
+    tangent->x = -5 * sin(t), tangent->y = 5 * cos(t), tangent->z = h;
+}
+
+/* The largest distance of a face's edge u = 0 from the helix about z through its start with
+ * the thread's rise per radian: 0 for a screw motion. */
+static double off_helix(const RmfSurface *surface, double rise) {
+    RmfVec3 p, start, du, dv;
+    double worst = 0, a0, r0, last, turned = 0, u0, u1, v0, v1;
+    int k;
+    TRY(rmf_surface_domain(surface, &u0, &u1, &v0, &v1));
+    TRY(rmf_surface_eval(surface, u0, v0, &start, &du, &dv));
+    a0 = atan2(start.y, start.x), r0 = hypot(start.x, start.y), last = a0;
+    for (k = 0; k <= 400; k++) {
+        double a, d;
+        TRY(rmf_surface_eval(surface, u0, v0 + (v1 - v0) * k / 400.0, &p, &du, &dv));
+        a = atan2(p.y, p.x);
+        d = a - last;
+        turned += d - 2 * PH_DEMO_PI * floor((d + PH_DEMO_PI) / (2 * PH_DEMO_PI));
+        last = a;
+        worst = fmax(worst, hypot(hypot(p.x - r0 * cos(a0 + turned), p.y - r0 * sin(a0 + turned)),
+                                  p.z - start.z - rise * turned));
+    }
+    return worst;
+}
+
+static void demo_thread_and_taper(void) {
+    const double s = 0.70710678118654752440, rise = 2 / (2 * PH_DEMO_PI);
+    /* The thread's ridge in the normal plane at the start: f2 is the principal normal
+     * (towards the axis), so the apex (-0.6, 0) points out of the rod. */
+    const RmfVec3 ridge[4] = {{0.1, -0.45, 0}, {0.1, 0.45, 0}, {-0.6, 0, 0}, {0.1, -0.45, 0}};
+    const double ridge_knots[6] = {0, 0, 1, 2, 3, 3};
+    RmfCurve *helix = NULL, *triangle = NULL, *circle = circle_profile(1.0);
+    RmfEdge edges[3];
+    RmfWireSweepOptions options;
+    RmfShape *thread = NULL, *rmf = NULL, *taper = NULL;
+    RmfShapeFace face;
+    RmfSweepReport report;
+    double distance, frenet_off = 0, rmf_off = 0;
+    size_t f;
+
+    printf("9. sweeps as users make them: a thread (Frenet frame) and a tapered pipe (scale law)\n");
+    TRY(rmf_ph_spline_approximate(NULL, thread_helix, NULL, 0, 6 * PH_DEMO_PI, 1e-5, &helix, &distance));
+    TRY(rmf_nurbs_curve_create(1, ridge, NULL, 4, ridge_knots, 6, &triangle));
+    memset(edges, 0, sizeof edges);
+    edges[0].kind = RMF_EDGE_CURVE, edges[0].curve = helix;
+    TRY(rmf_wire_sweep_options_init(&options));
+    options.tolerance = 1e-5;
+    options.frame = RMF_FRAME_FRENET;
+    TRY(rmf_wire_sweep(edges, 1, triangle, NULL, 0, &options, &thread));
+    write_shape(thread, "thread_frenet", "a thread ridge along a 3-turn helix, Frenet frame (STEP solid)");
+    write_shape_mesh(thread, 1, "thread_frenet.vtp", "its lateral faces as one mesh");
+    options.frame = RMF_FRAME_RMF;
+    TRY(rmf_wire_sweep(edges, 1, triangle, NULL, 0, &options, &rmf));
+    write_shape_mesh(rmf, 1, "thread_rmf.vtp", "the same ridge with the RMF: it turns against the screw motion");
+    for (f = 0; f < rmf_shape_face_count(thread); f++) {
+        TRY(rmf_shape_face(thread, f, &face));
+        if (face.kind == RMF_FACE_SWEPT) frenet_off = fmax(frenet_off, off_helix(face.surface, rise));
+        TRY(rmf_shape_face(rmf, f, &face));
+        if (face.kind == RMF_FACE_SWEPT) rmf_off = fmax(rmf_off, off_helix(face.surface, rise));
+    }
+    TRY(rmf_shape_report(thread, &report));
+    printf("  the ridge's edges are helices of the thread's pitch within %.1e (frames within %.1e rad of the\n"
+           "  Frenet frame); with the RMF they stray %.2f from them\n", frenet_off, report.frame_error, rmf_off);
+    /* The pipe route of section 7 (line, tangent arc, line), the circle tapering to 0.4. */
+    edges[0].kind = RMF_EDGE_LINE, edges[0].points[0] = vec(0, 0, 0), edges[0].points[1] = vec(10, 0, 0);
+    edges[1].kind = RMF_EDGE_ARC, edges[1].points[0] = vec(10, 0, 0);
+    edges[1].points[1] = vec(10 + 5 * s, 5 - 5 * s, 0), edges[1].points[2] = vec(15, 5, 0);
+    edges[2].kind = RMF_EDGE_LINE, edges[2].points[0] = vec(15, 5, 0), edges[2].points[1] = vec(15, 15, 0);
+    TRY(rmf_wire_sweep_options_init(&options));
+    options.scale_start = 1, options.scale_end = 0.4;
+    TRY(rmf_wire_sweep(edges, 3, circle, NULL, 0, &options, &taper));
+    write_shape(taper, "pipe_tapered", "the pipe route, its circle scaled from 1 to 0.4 (STEP solid)");
+    write_shape_mesh(taper, 8, "pipe_tapered.vtp", "its lateral faces as one mesh");
+    rmf_shape_free(taper);
+    rmf_shape_free(rmf);
+    rmf_shape_free(thread);
+    rmf_curve_free(circle);
+    rmf_curve_free(triangle);
+    rmf_curve_free(helix);
+}
+
 int main(int argc, char **argv) {
     if (argc > 1) out_dir = argv[1];
     if (mkdir(out_dir, 0777) != 0 && errno != EEXIST) {
@@ -742,5 +853,6 @@ int main(int argc, char **argv) {
     demo_mobius();
     demo_pipe_route();
     demo_hopper();
+    demo_thread_and_taper();
     return 0;
 }

@@ -473,6 +473,29 @@ def part_g():
     length = 80 - 4 * (2 * r - r * 3.141592653589793 / 2)
     check("sweep, closed wire: rel. volume error against pi (R^2 - r^2) L",
           abs(closed.Volume - 3.141592653589793 * 3 * length) / (3.141592653589793 * 3 * length), 1e-9)
+    # Open profiles sweep into sheets: an arc (its own plane), a line (the wire's normal
+    # plane), a polyline; their areas against FreeCAD's own makePipeShell of the same.
+    straight = Part.Wire([Part.LineSegment(V(0, 0, 0), V(10, 0, 0)).toShape()])
+    for label, profile in [
+            ("an arc", Part.ArcOfCircle(Part.Circle(V(0, 0, 0), V(1, 0, 0), 2), 0, 2.0).toShape()),
+            ("a line", Part.LineSegment(V(0, -1, 0), V(0, 1, 0)).toShape()),
+            ("a polyline", Part.makePolygon([V(0, -1, 0), V(0, 0, 1), V(0, 1, 0)]))]:
+        sheet = rmf.sweep(straight, profile, solid=False)
+        own = straight.makePipeShell([Part.Wire(profile.Edges)], False, False)
+        require("sweep, open profile (%s): a valid sheet" % label, sheet.isValid() and not sheet.Solids)
+        check("sweep, open profile (%s): rel. area error against makePipeShell" % label,
+              abs(sheet.Area - own.Area) / own.Area, 1e-9)
+    try:
+        rmf.sweep(straight, Part.LineSegment(V(0, -1, 0), V(1, 1, 0)).toShape(), solid=False)
+        require("sweep: a line out of the normal plane is refused", False)
+    except ValueError as e:
+        require("sweep: a line out of the normal plane is refused naming the profile (%s)" % e,
+                str(e).startswith("profile:"))
+    # A scale law: a circle from radius 2 to 1 along the line is a frustum.
+    frustum = rmf.sweep(straight, Part.Face(Part.Wire([outer])), scale=(1.0, 0.5))
+    expected = 3.141592653589793 * 10 * (4 + 2 + 1) / 3
+    check("sweep, scale (1, 0.5): rel. volume error against the frustum", abs(frustum.Volume - expected) / expected,
+          1e-9)
     try:
         rmf.sweep(ring, ring)
         require("sweep: a Part.Face as the wire is refused", False)

@@ -163,6 +163,20 @@ fn options(s: &mut Session) -> RmfWireSweepOptions {
     } else {
         s.input.below(2) as u32
     };
+    o.frame = if s.input.below(4) == 0 {
+        s.input.code()
+    } else {
+        s.input.below(3) as u32
+    };
+    if s.input.flag() {
+        o.frame_direction = s.input.vec3();
+    }
+    if s.input.below(4) == 0 {
+        o.scale_start = s.input.f64();
+    }
+    if s.input.below(4) == 0 {
+        o.scale_end = s.input.f64();
+    }
     if s.input.below(16) == 0 {
         o.struct_size = s.input.work();
     }

@@ -259,7 +259,8 @@ def _path_edges(path: Any, name: str) -> List[Edge]:
 
 def _wire_curve(wire: Any, origin: np.ndarray, f2: np.ndarray, f3: np.ndarray, name: str,
                 tolerance: float) -> Curve:
-    """A closed wire as one curve in (f2, f3) coordinates about `origin`."""
+    """A wire (closed, or open for a sheet) as one curve in (f2, f3) coordinates about
+    `origin`."""
     edges = wire.OrderedEdges
     degree = max(_edge_bspline(e).Degree for e in edges)
     pieces = []
@@ -273,7 +274,8 @@ def _wire_curve(wire: Any, origin: np.ndarray, f2: np.ndarray, f3: np.ndarray, n
 
 def _profile_face(shape: Any) -> Any:
     """The one planar region of a profile: a face, a closed wire, or closed wires nested as
-    outer loops and holes (a sketch with inner loops: FreeCAD's Bullseye face maker)."""
+    outer loops and holes (a sketch with inner loops: FreeCAD's Bullseye face maker). (An
+    open profile is a sheet's, see `_open_profile`.)"""
     if isinstance(shape, Part.Face):
         return shape
     if shape.Faces:
@@ -321,30 +323,68 @@ def _profile_curves(profile: Any, origin: ArrayLike, tangent: ArrayLike, toleran
     o = _core.vector(origin, "origin", finite_only=True)
     t = _core.direction(tangent, "tangent")
     tolerance = _core.finite(tolerance, "tolerance", positive=True)
-    face = _profile_face(_shape_of(profile, "profile"))
-    if not isinstance(face.Surface, Part.Plane):
-        raise ValueError("profile: not planar")
-    normal = np.array(tuple(face.Surface.Axis))
+    shape = _shape_of(profile, "profile")
+    sheet = _open_profile(shape)
+    if sheet is not None:
+        outer_wire, hole_wires = sheet, []
+        normal, position, plane_x = _open_profile_plane(sheet, o, t, tolerance)
+    else:
+        face = _profile_face(shape)
+        if not isinstance(face.Surface, Part.Plane):
+            raise ValueError("profile: not planar")
+        outer_wire = face.OuterWire
+        hole_wires = [w for w in face.Wires if not w.isSame(face.OuterWire)]
+        normal = np.array(tuple(face.Surface.Axis))
+        position = np.array(tuple(face.Surface.Position))
+        plane_x = np.array(tuple(_plane_x_axis(face.Surface)))
     tilt = np.linalg.norm(_core.cross(normal, t))
     if tilt > 1e-6:
         raise ValueError("profile: its plane must be normal to the wire at the wire's start "
                          "(it is tilted by %.3g degrees)" % np.degrees(np.arcsin(min(tilt, 1))))
-    off = abs(np.dot(np.array(tuple(face.Surface.Position)) - o, normal))
+    off = abs(np.dot(position - o, normal))
     if off > tolerance:
         raise ValueError("profile: its plane must pass through the wire's start point (it "
                          "is %.3g away)" % off)
     placement = getattr(profile, "Placement", None) if not isinstance(profile, Part.Shape) else None
     x_axis = placement.Rotation.multVec(V(1, 0, 0)) if placement is not None else None
-    x = np.array(tuple(x_axis if x_axis is not None else _plane_x_axis(face.Surface)))
+    x = np.array(tuple(x_axis)) if x_axis is not None else plane_x
     if f2 is not None:
         x = f2
     f2 = x - np.dot(x, t) * t
     f2 /= np.linalg.norm(f2)
     f3 = _core.cross(t, f2)
-    outer = _wire_curve(face.OuterWire, o, f2, f3, "profile", tolerance)
+    outer = _wire_curve(outer_wire, o, f2, f3, "profile", tolerance)
     holes = [_wire_curve(w, o, f2, f3, "profile hole %d" % i, tolerance)
-             for i, w in enumerate(w for w in face.Wires if not w.isSame(face.OuterWire))]
+             for i, w in enumerate(hole_wires)]
     return outer, holes, f2
+
+
+def _open_profile(shape: Any) -> Any:
+    """The open wire of a sheet's profile (an open edge or wire), else None."""
+    if isinstance(shape, Part.Edge):
+        return None if shape.isClosed() else Part.Wire([shape])
+    if shape.Faces:
+        return None
+    wires = [shape] if isinstance(shape, Part.Wire) else shape.Wires
+    if len(wires) == 1 and not wires[0].isClosed():
+        return wires[0]
+    return None
+
+
+def _open_profile_plane(wire: Any, origin: np.ndarray, tangent: np.ndarray, tolerance: float
+                        ) -> Tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The plane (normal, point, x direction) of an open profile; a straight one spans
+    none, and is taken in the wire's normal plane at its start when it lies there (its x
+    direction along the line)."""
+    plane = wire.findPlane(tolerance)
+    if plane is not None:
+        return (np.array(tuple(plane.Axis)), np.array(tuple(plane.Position)),
+                np.array(tuple(_plane_x_axis(plane))))
+    points = np.array([tuple(p) for e in wire.OrderedEdges for p in e.discretize(9)])
+    if np.max(np.abs((points - origin) @ tangent)) > tolerance:
+        raise ValueError("profile: a straight profile spans no plane of its own; it must lie "
+                         "in the wire's normal plane at the wire's start (within %g)" % tolerance)
+    return tangent, origin, points[-1] - points[0]
 
 
 def _from_brep(text: str) -> Any:
@@ -402,7 +442,9 @@ def sweep(wire: Any, profile: Any, *, solid: bool = True, corner: str = "round",
         wire: a Part.Wire, a Part.Edge or a sketch (one wire): lines, arcs and curves.
         profile: a planar Part.Face (holes allowed), a closed Part.Wire or a sketch (inner
             loops are holes), in the plane normal to the wire at its start, where it is in
-            space; its x axis (a sketch's) is the frame's initial normal f2.
+            space; its x axis (a sketch's) is the frame's initial normal f2. An open edge
+            or wire (an arc, a polyline, a line in that plane) sweeps into a sheet
+            (``solid=False``).
         solid: close the result with planar caps into a solid.
         corner: "round" or "miter".
         corner_radius: the rounding radius of round corners (None: the library's).

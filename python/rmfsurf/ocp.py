@@ -82,8 +82,8 @@ _as_shell, _as_solid = _downcast("Shell"), _downcast("Solid")
 
 _WIRE_LIKE = ("a wire or an edge (build123d/CadQuery Wire or Edge, TopoDS_Wire, TopoDS_Edge "
               "or Geom_BSplineCurve)")
-_PROFILE_LIKE = ("a planar profile (build123d/CadQuery Face, Sketch or closed Wire, TopoDS_Face "
-                 "or TopoDS_Wire)")
+_PROFILE_LIKE = ("a planar profile (build123d/CadQuery Face, Sketch, Wire or Edge (open ones "
+                 "for sheets), TopoDS_Face, TopoDS_Wire or TopoDS_Edge)")
 
 
 def _unwrap(value: Any) -> Any:
@@ -293,8 +293,11 @@ def _start_principal_normal(path: Any) -> Optional[np.ndarray]:
     return n / length if length > 1e-12 * np.dot(v, v) else None
 
 
-def _profile_plane(profile: Any, tolerance: float) -> Tuple[Any, List[Any], gp_Pln]:
-    """The outer wire, the inner wires and the plane of a planar profile."""
+def _profile_plane(profile: Any, tolerance: float, origin: np.ndarray, tangent: np.ndarray
+                   ) -> Tuple[Any, List[Any], gp_Pln]:
+    """The outer wire, the inner wires and the plane of a planar profile. An open wire or
+    an edge (a sheet's profile) that defines no plane of its own — a straight line — is
+    taken in the path's normal plane at its start (`origin`, `tangent`) when it lies there."""
     raw = _shape_of(profile, "profile", (TopAbs_FACE, TopAbs_WIRE, TopAbs_EDGE, TopAbs_COMPOUND),
                     _PROFILE_LIKE)
     if raw.ShapeType() == TopAbs_COMPOUND:  # a build123d sketch such as Circle(3)
@@ -324,18 +327,36 @@ def _profile_plane(profile: Any, tolerance: float) -> Tuple[Any, List[Any], gp_P
     if raw.ShapeType() == TopAbs_EDGE:
         raw = BRepBuilderAPI_MakeWire(_as_edge(raw)).Wire()
     wire = _as_wire(raw)
-    if not BRep_Tool.IsClosed_s(wire):
-        raise ValueError("profile: the wire is not closed")
+    # An open wire is a sheet's profile: the library refuses it for a solid, naming it.
     finder = BRepLib_FindSurface(wire, tolerance, True)
-    if not finder.Found():
+    if finder.Found():
+        plane = BRepAdaptor_Surface(BRepBuilderAPI_MakeFace(finder.Surface(), 1e-7).Face()).Plane()
+        return wire, [], plane
+    normal_plane = gp_Pln(gp_Pnt(*map(float, origin)), gp_Dir(*map(float, tangent)))
+    if BRep_Tool.IsClosed_s(wire):
         raise ValueError("profile: the wire is not planar (within %g)" % tolerance)
-    plane = BRepAdaptor_Surface(BRepBuilderAPI_MakeFace(finder.Surface(), 1e-7).Face()).Plane()
-    return wire, [], plane
+    if not _in_plane(wire, normal_plane, tolerance):
+        raise ValueError("profile: a straight profile spans no plane of its own; it must lie "
+                         "in the path's normal plane at the path's start (within %g)" % tolerance)
+    return wire, [], normal_plane
+
+
+def _in_plane(wire: Any, plane: gp_Pln, tolerance: float) -> bool:
+    """Whether every edge of a wire lies in a plane (9 points of each)."""
+    for e in _ordered_edges(wire):
+        curve = _edge_bspline(e)
+        first, last = curve.FirstParameter(), curve.LastParameter()
+        for k in range(9):
+            p = curve.Value(first + (last - first) * k / 8)
+            if plane.Distance(p) > tolerance:
+                return False
+    return True
 
 
 def _wire_curve(wire: Any, origin: np.ndarray, f2: np.ndarray, f3: np.ndarray,
                 name: str, tolerance: float) -> Curve:
-    """A closed wire as one curve in the (f2, f3) coordinates about origin."""
+    """A wire (closed, or open for a sheet) as one curve in the (f2, f3) coordinates about
+    origin."""
     bsplines = [_edge_bspline(e) for e in _ordered_edges(wire)]
     degree = max(b.Degree() for b in bsplines)
     pieces = []
@@ -364,7 +385,7 @@ def _profile_curves(profile: Any, origin: ArrayLike, tangent: ArrayLike, toleran
     origin = _core.vector(origin, "origin", finite_only=True)
     t = _core.direction(tangent, "tangent")
     tolerance = _core.finite(tolerance, "tolerance", positive=True)
-    outer, inner, plane = _profile_plane(profile, tolerance)
+    outer, inner, plane = _profile_plane(profile, tolerance, origin, t)
     axis = plane.Position()
     normal = np.array(axis.Direction().Coord())
     tilt = np.linalg.norm(_core.cross(normal, t))
@@ -486,7 +507,9 @@ def sweep(path: Any, profile: Any, *, solid: bool = True, corner: str = "round",
         path: a build123d/CadQuery Wire or Edge, a TopoDS_Wire/TopoDS_Edge or a
             Geom_BSplineCurve: lines, arcs and curves end to end.
         profile: a planar Face (holes allowed) or closed Wire in the plane normal to the
-            path at its start, placed where it is in space (as for build123d's sweep).
+            path at its start, placed where it is in space (as for build123d's sweep). An
+            open Edge or Wire (an arc, a polyline, a line in that plane) sweeps into a
+            sheet (``solid=False``), as build123d's ``Shell.sweep``.
         solid: close the result with planar caps into a solid (else the open shell).
         corner: "round" or "miter" at the path's corners.
         corner_radius: the rounding radius of round corners (None: the library's).

@@ -8,6 +8,8 @@
 //! | `corner` | sharp joints resolved: round (a tangent circular arc, solved on curves too) or miter (the bisecting plane) |
 //! | `profile` | the cross-section's loops split at their corners, their orientation, extent (support function) and symmetry |
 //! | `frame` | one RMF along the whole wire: constant on lines, the rational frame of arcs, the PH cubic rational RMF (Mäurer & Jüttler (29), (36)–(41)) on curves; twist, closure, the Cor. 7 margin |
+//! | `law` | the Frenet frame and a fixed direction as turns against the RMF (θ' = τ for Frenet), unwrapped, their accuracy |
+//! | `scale` | the scale law σ linear in arc length, as polynomials in each piece's parameter (exact on lines and PH pieces) |
 //! | `brep` | the faces (exact cylinders, tori, sweeps (42)), planar caps, shared edges, orientation; the accuracy report |
 //!
 //! The work is done in coordinates centred on the wire and scaled by a power of two to its
