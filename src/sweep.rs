@@ -38,28 +38,39 @@ pub(crate) fn sweep_along(
     frames: &RationalFrames,
     profile: &PiecewiseCurve,
 ) -> Result<PiecewiseSurface> {
-    sweep_with(spine, frames, profile, None)
+    sweep_with(spine, frames, profile, None, false)
 }
 
-/// [`sweep_along`] with the profile scaled by σ(v) (a scale law, Mäurer & Jüttler (1) with
-/// σ c in place of c): `sigma(v0, v1)` gives σ's Bernstein coefficients on each frame
-/// segment [v0, v1]. The frame factors take σ, the spine's is raised to match:
-/// S = h ⊗ (X·d, w·d)↑ + C₂ ⊗ (σ·w·N₂, 0) + C₃ ⊗ (σ·w·N₃, 0).
-pub(crate) fn sweep_scaled(
+/// How a construction's own sweep takes its profile: scaled by a law σ(v) (`sigma(v0, v1)`
+/// gives σ's Bernstein coefficients on each frame segment [v0, v1]), and with its z along
+/// the tangent (`tangential`: a profile drawn out of the normal plane).
+#[derive(Clone, Copy, Default)]
+pub(crate) struct SweepProfile<'a> {
+    pub sigma: Option<&'a dyn Fn(f64, f64) -> Vec<f64>>,
+    pub tangential: bool,
+}
+
+/// [`sweep_along`] with the profile as `how` says: Mäurer & Jüttler (1) with σ c in place
+/// of c, and c₁ t added. The frame factors take σ, the spine's is raised to match; the
+/// tangent t = f₂ × f₃ = (N₂ × N₃)/d², so that with it every factor takes one more d:
+/// S = h ⊗ (X·d², w·d²)↑ + C₁ ⊗ (σ·w·N₂ × N₃, 0) + C₂ ⊗ (σ·w·d·N₂, 0) + C₃ ⊗ (σ·w·d·N₃, 0).
+pub(crate) fn sweep_profile(
     spine: &PiecewiseCurve,
     frames: &RationalFrames,
     profile: &PiecewiseCurve,
-    sigma: impl Fn(f64, f64) -> Vec<f64>,
+    how: SweepProfile,
 ) -> Result<PiecewiseSurface> {
-    sweep_with(spine, frames, profile, Some(&sigma))
+    sweep_with(spine, frames, profile, how.sigma, how.tangential)
 }
 
-/// The sweep, its profile scaled by `sigma` where one is given.
+/// The sweep, its profile scaled by `sigma` where one is given, its z along the tangent
+/// where `tangential`.
 fn sweep_with(
     spine: &PiecewiseCurve,
     frames: &RationalFrames,
     profile: &PiecewiseCurve,
     sigma: Option<&dyn Fn(f64, f64) -> Vec<f64>>,
+    tangential: bool,
 ) -> Result<PiecewiseSurface> {
     let spine = &*on_frame_segments(spine, frames);
     check_sweep_size(spine, frames, profile)?;
@@ -69,7 +80,7 @@ fn sweep_with(
         .zip(frames.segments())
         .zip(frames.breaks().windows(2))
         .map(|((segment, frame), v)| {
-            let factors = SpineFactors::new(segment, frame);
+            let factors = SpineFactors::new(segment, frame, tangential);
             match sigma {
                 Some(sigma) => factors.scaled(&sigma(v[0], v[1])),
                 None => factors,
@@ -78,7 +89,7 @@ fn sweep_with(
         .collect();
     let mut patches = Vec::with_capacity(profile.segments().len() * factors.len());
     for piece in profile.segments() {
-        let profile = ProfileFactors::new(piece);
+        let profile = ProfileFactors::new(piece, tangential);
         for spine in &factors {
             patches.push(sweep_patch(spine, &profile)?);
         }
@@ -111,15 +122,17 @@ fn check_sweep_size(
 }
 
 /// The factors in v of every patch along one spine segment (the module equation): X·d,
-/// w·N₂ and w·N₃, homogeneous. They do not depend on the profile piece.
+/// w·N₂ and w·N₃, homogeneous — with the tangent's w·N₂ × N₃ and one more d in each where
+/// the profile has a tangential part. They do not depend on the profile piece.
 struct SpineFactors {
     along_spine: Vec<DVec4>,
     along_f2: Vec<DVec4>,
     along_f3: Vec<DVec4>,
+    along_t: Option<Vec<DVec4>>,
 }
 
 impl SpineFactors {
-    fn new(spine: &RationalBezierCurve, frame: &RationalFrameSegment) -> Self {
+    fn new(spine: &RationalBezierCurve, frame: &RationalFrameSegment, tangential: bool) -> Self {
         let x = spine.homogeneous();
         let spine_weight: Vec<f64> = x.iter().map(|h| h.w).collect();
         let weighted = |numerator: &[DVec3]| {
@@ -127,10 +140,31 @@ impl SpineFactors {
                 (n * w).extend(0.0)
             })
         };
+        let d = frame.denominator();
+        let along_spine = product(x, d, |h: DVec4, d: f64| h * d);
+        let (along_f2, along_f3) = (
+            weighted(frame.f2_numerator()),
+            weighted(frame.f3_numerator()),
+        );
+        if !tangential {
+            return Self {
+                along_spine,
+                along_f2,
+                along_f3,
+                along_t: None,
+            };
+        }
+        let times_d = |n: &[DVec4]| product(d, n, |d: f64, n: DVec4| n * d);
+        let tangent = product(
+            frame.f2_numerator(),
+            frame.f3_numerator(),
+            |a: DVec3, b: DVec3| a.cross(b),
+        );
         Self {
-            along_spine: product(x, frame.denominator(), |h: DVec4, d: f64| h * d),
-            along_f2: weighted(frame.f2_numerator()),
-            along_f3: weighted(frame.f3_numerator()),
+            along_spine: times_d(&along_spine),
+            along_f2: times_d(&along_f2),
+            along_f3: times_d(&along_f3),
+            along_t: Some(weighted(&tangent)),
         }
     }
 }
@@ -143,35 +177,47 @@ impl SpineFactors {
             along_spine: elevate(&self.along_spine, sigma.len() - 1),
             along_f2: times(&self.along_f2),
             along_f3: times(&self.along_f3),
+            along_t: self.along_t.as_deref().map(times),
         }
     }
 }
 
-/// The factors in u of every patch across one profile piece: h, C₂ and C₃.
+/// The factors in u of every patch across one profile piece: h, C₂, C₃ (and C₁, its z,
+/// where the profile has a tangential part).
 struct ProfileFactors {
     h: Vec<f64>,
     c2: Vec<f64>,
     c3: Vec<f64>,
+    c1: Vec<f64>,
 }
 
 impl ProfileFactors {
-    fn new(profile: &RationalBezierCurve) -> Self {
+    fn new(profile: &RationalBezierCurve, tangential: bool) -> Self {
         let c = profile.homogeneous();
         Self {
             h: c.iter().map(|p| p.w).collect(),
             c2: c.iter().map(|p| p.x).collect(),
             c3: c.iter().map(|p| p.y).collect(),
+            c1: if tangential {
+                c.iter().map(|p| p.z).collect()
+            } else {
+                Vec::new()
+            },
         }
     }
 }
 
 /// One patch: profile piece × spine segment (see the module equation).
 fn sweep_patch(spine: &SpineFactors, profile: &ProfileFactors) -> Result<RationalBezierPatch> {
-    RationalBezierPatch::from_outer_products(&[
-        (&profile.h, &spine.along_spine),
-        (&profile.c2, &spine.along_f2),
-        (&profile.c3, &spine.along_f3),
-    ])
+    let mut products = vec![
+        (&profile.h[..], &spine.along_spine[..]),
+        (&profile.c2[..], &spine.along_f2[..]),
+        (&profile.c3[..], &spine.along_f3[..]),
+    ];
+    if let Some(along_t) = &spine.along_t {
+        products.push((&profile.c1[..], &along_t[..]));
+    }
+    RationalBezierPatch::from_outer_products(&products)
 }
 
 #[cfg(test)]

@@ -362,15 +362,16 @@ def cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
                      a[0] * b[1] - a[1] * b[0]])
 
 
-def in_plane(points: np.ndarray, origin: np.ndarray, x: np.ndarray, y: np.ndarray
-             ) -> np.ndarray:
-    """Points' coordinates along the unit vectors `x` and `y` about `origin`, as 3-D points
-    with z = 0 (a profile in the plane of the sweep's start)."""
+def in_frame(points: np.ndarray, origin: np.ndarray, x: np.ndarray, y: np.ndarray,
+             z: np.ndarray) -> np.ndarray:
+    """Points' coordinates along the orthonormal `x`, `y`, `z` about `origin` (a profile in
+    the frame of the sweep's start: x along f2, y along f3, z along the tangent)."""
     local = points - origin
-    planar = np.zeros((len(local), 3))
-    planar[:, 0] = local @ x
-    planar[:, 1] = local @ y
-    return planar
+    framed = np.empty((len(local), 3))
+    framed[:, 0] = local @ x
+    framed[:, 1] = local @ y
+    framed[:, 2] = local @ z
+    return framed
 
 
 def doubles(value: Any, name: str, count: Optional[int] = None,

@@ -257,16 +257,16 @@ def _path_edges(path: Any, name: str) -> List[Edge]:
     return result
 
 
-def _wire_curve(wire: Any, origin: np.ndarray, f2: np.ndarray, f3: np.ndarray, name: str,
-                tolerance: float) -> Curve:
-    """A wire (closed, or open for a sheet) as one curve in (f2, f3) coordinates about
-    `origin`."""
+def _wire_curve(wire: Any, origin: np.ndarray, frame: Tuple[np.ndarray, np.ndarray, np.ndarray],
+                name: str, tolerance: float) -> Curve:
+    """A wire (closed, or open for a sheet) as one curve in the coordinates of `frame`
+    (f2, f3, t) about `origin`."""
     edges = wire.OrderedEdges
     degree = max(_edge_bspline(e).Degree for e in edges)
     pieces = []
     for e in edges:
         d = _part_curve_data(_edge_bspline(e, degree=degree))
-        pieces.append(NurbsCurve(d.degree, _core.in_plane(d.poles, origin, f2, f3), d.weights,
+        pieces.append(NurbsCurve(d.degree, _core.in_frame(d.poles, origin, *frame), d.weights,
                                  d.knots))
     joined = join_nurbs(pieces, name, tolerance)
     return Curve.from_nurbs(joined.degree, joined.poles, joined.knots, joined.weights)
@@ -309,10 +309,11 @@ def _plane_x_axis(plane: Any) -> Any:
 def profile_curves(profile: Any, origin: ArrayLike, tangent: ArrayLike, tolerance: float = 1e-4
                    ) -> Tuple[Curve, List[Curve], np.ndarray]:
     """A planar profile (Part.Face with holes, closed Part.Wire, closed wires nested as
-    outer loop and holes, or a sketch of them) in the plane
-    normal to `tangent` through `origin`, as the 2-D outer curve, holes and initial normal
-    f2 (the x direction of the profile's placement, e.g. the sketch's x axis) of
-    :func:`rmfsurf.wire_sweep`."""
+    outer loop and holes, or a sketch of them) as the outer curve, holes and initial
+    normal f2 (the x direction of the profile's placement, e.g. the sketch's x axis,
+    projected onto the normal plane) of :func:`rmfsurf.wire_sweep`, in the frame at the
+    wire's start (`origin`, `tangent`): x along f2, y along f3, z along the tangent — 0 for
+    a profile in the normal plane."""
     return _profile_curves(profile, origin, tangent, tolerance)
 
 
@@ -327,7 +328,7 @@ def _profile_curves(profile: Any, origin: ArrayLike, tangent: ArrayLike, toleran
     sheet = _open_profile(shape)
     if sheet is not None:
         outer_wire, hole_wires = sheet, []
-        normal, position, plane_x = _open_profile_plane(sheet, o, t, tolerance)
+        normal, _, plane_x = _open_profile_plane(sheet, o, t, tolerance)
     else:
         face = _profile_face(shape)
         if not isinstance(face.Surface, Part.Plane):
@@ -335,26 +336,22 @@ def _profile_curves(profile: Any, origin: ArrayLike, tangent: ArrayLike, toleran
         outer_wire = face.OuterWire
         hole_wires = [w for w in face.Wires if not w.isSame(face.OuterWire)]
         normal = np.array(tuple(face.Surface.Axis))
-        position = np.array(tuple(face.Surface.Position))
         plane_x = np.array(tuple(_plane_x_axis(face.Surface)))
-    tilt = np.linalg.norm(_core.cross(normal, t))
-    if tilt > 1e-6:
-        raise ValueError("profile: its plane must be normal to the wire at the wire's start "
-                         "(it is tilted by %.3g degrees)" % np.degrees(np.arcsin(min(tilt, 1))))
-    off = abs(np.dot(position - o, normal))
-    if off > tolerance:
-        raise ValueError("profile: its plane must pass through the wire's start point (it "
-                         "is %.3g away)" % off)
+    # Any plane across the wire, carried rigidly by the frame (the library refuses one that
+    # holds the tangent, or that would fold the sweep).
     placement = getattr(profile, "Placement", None) if not isinstance(profile, Part.Shape) else None
     x_axis = placement.Rotation.multVec(V(1, 0, 0)) if placement is not None else None
     x = np.array(tuple(x_axis)) if x_axis is not None else plane_x
     if f2 is not None:
         x = f2
     f2 = x - np.dot(x, t) * t
+    if np.linalg.norm(f2) < 0.1:  # the plane's x axis near the tangent: its line across it
+        f2 = _core.cross(normal, t)
     f2 /= np.linalg.norm(f2)
     f3 = _core.cross(t, f2)
-    outer = _wire_curve(outer_wire, o, f2, f3, "profile", tolerance)
-    holes = [_wire_curve(w, o, f2, f3, "profile hole %d" % i, tolerance)
+    frame = (f2, f3, t)
+    outer = _wire_curve(outer_wire, o, frame, "profile", tolerance)
+    holes = [_wire_curve(w, o, frame, "profile hole %d" % i, tolerance)
              for i, w in enumerate(hole_wires)]
     return outer, holes, f2
 
@@ -441,8 +438,10 @@ def sweep(wire: Any, profile: Any, *, solid: bool = True, corner: str = "round",
     Args:
         wire: a Part.Wire, a Part.Edge or a sketch (one wire): lines, arcs and curves.
         profile: a planar Part.Face (holes allowed), a closed Part.Wire or a sketch (inner
-            loops are holes), in the plane normal to the wire at its start, where it is in
-            space; its x axis (a sketch's) is the frame's initial normal f2. An open edge
+            loops are holes), where it is in space — in the plane normal to the wire at
+            its start, or in any plane across the wire (a thread's profile in the axial
+            plane), carried rigidly by the frame; its x axis (a sketch's) is the frame's
+            initial normal f2. An open edge
             or wire (an arc, a polyline, a line in that plane) sweeps into a sheet
             (``solid=False``).
         solid: close the result with planar caps into a solid.

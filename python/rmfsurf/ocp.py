@@ -353,10 +353,10 @@ def _in_plane(wire: Any, plane: gp_Pln, tolerance: float) -> bool:
     return True
 
 
-def _wire_curve(wire: Any, origin: np.ndarray, f2: np.ndarray, f3: np.ndarray,
+def _wire_curve(wire: Any, origin: np.ndarray, frame: Tuple[np.ndarray, np.ndarray, np.ndarray],
                 name: str, tolerance: float) -> Curve:
-    """A wire (closed, or open for a sheet) as one curve in the (f2, f3) coordinates about
-    origin."""
+    """A wire (closed, or open for a sheet) as one curve in the coordinates of `frame`
+    (f2, f3, t) about origin."""
     bsplines = [_edge_bspline(e) for e in _ordered_edges(wire)]
     degree = max(b.Degree() for b in bsplines)
     pieces = []
@@ -364,7 +364,7 @@ def _wire_curve(wire: Any, origin: np.ndarray, f2: np.ndarray, f3: np.ndarray,
         if b.Degree() < degree:
             b.IncreaseDegree(degree)
         d = _bspline_data(b)
-        pieces.append(NurbsCurve(d.degree, _core.in_plane(d.poles, origin, f2, f3), d.weights,
+        pieces.append(NurbsCurve(d.degree, _core.in_frame(d.poles, origin, *frame), d.weights,
                                  d.knots))
     joined = join_nurbs(pieces, name, tolerance)
     return Curve.from_nurbs(joined.degree, joined.poles, joined.knots, joined.weights)
@@ -372,9 +372,11 @@ def _wire_curve(wire: Any, origin: np.ndarray, f2: np.ndarray, f3: np.ndarray,
 
 def profile_curves(profile: Any, origin: ArrayLike, tangent: ArrayLike, tolerance: float = 1e-4
                    ) -> Tuple[Curve, List[Curve], np.ndarray]:
-    """A planar profile placed in space (normal to `tangent` through `origin`) as the
-    2-D outer curve, hole curves and initial normal f2 of :func:`rmfsurf.wire_sweep`.
-    f2 is the x direction of the profile's plane."""
+    """A planar profile placed in space as the outer curve, hole curves and initial normal
+    f2 of :func:`rmfsurf.wire_sweep`, in the frame at the path's start (`origin`,
+    `tangent`): x along f2, y along f3, z along the tangent — 0 for a profile in the normal
+    plane. f2 is the x direction of the profile's plane (projected onto the normal
+    plane)."""
     return _profile_curves(profile, origin, tangent, tolerance)
 
 
@@ -387,21 +389,17 @@ def _profile_curves(profile: Any, origin: ArrayLike, tangent: ArrayLike, toleran
     tolerance = _core.finite(tolerance, "tolerance", positive=True)
     outer, inner, plane = _profile_plane(profile, tolerance, origin, t)
     axis = plane.Position()
-    normal = np.array(axis.Direction().Coord())
-    tilt = np.linalg.norm(_core.cross(normal, t))
-    if tilt > 1e-6:
-        raise ValueError("profile: its plane must be normal to the path at the path's start "
-                         "(it is tilted by %.3g degrees)" % np.degrees(np.arcsin(min(tilt, 1))))
-    off = abs(np.dot(np.array(axis.Location().Coord()) - origin, normal))
-    if off > tolerance:
-        raise ValueError("profile: its plane must pass through the path's start point (it "
-                         "is %.3g away)" % off)
+    # Any plane across the path, carried rigidly by the frame (the library refuses one that
+    # holds the tangent, or that would fold the sweep).
     x = np.array(axis.XDirection().Coord()) if f2 is None else f2
     f2 = x - np.dot(x, t) * t
+    if np.linalg.norm(f2) < 0.1:  # the plane's x axis near the tangent: its line across it
+        f2 = _core.cross(np.array(axis.Direction().Coord()), t)
     f2 /= np.linalg.norm(f2)
     f3 = _core.cross(t, f2)
-    outer_curve = _wire_curve(outer, origin, f2, f3, "profile", tolerance)
-    holes = [_wire_curve(w, origin, f2, f3, "profile hole %d" % i, tolerance)
+    frame = (f2, f3, t)
+    outer_curve = _wire_curve(outer, origin, frame, "profile", tolerance)
+    holes = [_wire_curve(w, origin, frame, "profile hole %d" % i, tolerance)
              for i, w in enumerate(inner)]
     return outer_curve, holes, f2
 
@@ -506,8 +504,10 @@ def sweep(path: Any, profile: Any, *, solid: bool = True, corner: str = "round",
     Args:
         path: a build123d/CadQuery Wire or Edge, a TopoDS_Wire/TopoDS_Edge or a
             Geom_BSplineCurve: lines, arcs and curves end to end.
-        profile: a planar Face (holes allowed) or closed Wire in the plane normal to the
-            path at its start, placed where it is in space (as for build123d's sweep). An
+        profile: a planar Face (holes allowed) or closed Wire placed where it is in space
+            (as for build123d's sweep): in the plane normal to the path at its start, or
+            in any plane across the path (a thread's profile in the axial plane), carried
+            rigidly by the frame. An
             open Edge or Wire (an arc, a polyline, a line in that plane) sweeps into a
             sheet (``solid=False``), as build123d's ``Shell.sweep``.
         solid: close the result with planar caps into a solid (else the open shell).

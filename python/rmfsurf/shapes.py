@@ -286,7 +286,9 @@ def wire_sweep(edges: Union[Edge, Sequence[Edge]], profile: Curve,
     Args:
         edges: :class:`Line`, :class:`Arc` and :class:`CurveEdge` items, end to end (or
             one of them).
-        profile: closed curve in the start normal plane, x along f2, y along f3.
+        profile: closed (or, for a sheet, open) planar curve in the frame at the wire's
+            start: x along f2, y along f3, z along the tangent (z = 0 in the normal plane;
+            any other plane across the wire is carried rigidly).
         holes: closed curves inside the profile, same coordinates (or one curve).
         solid: close the shape with planar caps (needs a closed profile).
         corner: "round" (the profile swept around the corner) or "miter".

@@ -231,11 +231,18 @@ def test_a_transition_is_handed_over_as_a_solid_opencascade_takes_as_built():
     assert gk_volume(inside) > 0.1 * volume and abs(parts - volume) <= 1e-8 * volume
 
 
-def test_wrong_profile_placement_is_refused():
+def test_a_profile_across_the_path_is_carried_rigidly_and_one_along_it_refused():
     path = pipe_route()
-    tilted = bd.Plane(origin=path @ 0, z_dir=(0, 1, 1)) * bd.Circle(R)
-    with pytest.raises(ValueError, match="profile: its plane must be normal to the path"):
-        rocp.sweep(path, tilted)
+    # A disc in a plane at 45° to the path's start tangent (x): carried rigidly, it sweeps
+    # cos 45° times the normal disc's volume (module src/wire/oblique.rs).
+    tilted = bd.Plane(origin=path @ 0, z_dir=(1, 1, 0)) * bd.Circle(R)
+    solid = rocp.sweep(path, tilted)
+    assert rocp.is_valid(solid)
+    expected = math.cos(math.pi / 4) * math.pi * R * R * path.length
+    assert abs(gk_volume(solid) - expected) <= 1e-9 * expected
+    along = bd.Plane(origin=path @ 0, z_dir=(0, 1, 0)) * bd.Circle(R)
+    with pytest.raises(rmfsurf.InvalidInputError, match="contains the wire's start tangent"):
+        rocp.sweep(path, along)
 
 
 def self_intersects(shape):

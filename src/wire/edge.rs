@@ -280,6 +280,14 @@ impl Joint {
     pub fn angle(&self) -> f64 {
         angle_between(self.incoming, self.outgoing)
     }
+
+    /// Whether a plane cuts the pieces here (a miter, a near-tangent joint).
+    pub fn cuts(&self) -> bool {
+        matches!(
+            self.kind,
+            JointKind::Miter { .. } | JointKind::NearTangent { .. }
+        )
+    }
 }
 
 /// The spine: pieces end to end, the joints between them.

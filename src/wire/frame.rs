@@ -1006,6 +1006,15 @@ pub(crate) struct Margins {
 }
 
 impl Margins {
+    /// Margins measured while building, the least `least`.
+    pub fn measured(least: f64, chain: PiecewiseCurve) -> Self {
+        Self {
+            measured: least,
+            deferred: Vec::new(),
+            chain,
+        }
+    }
+
     /// The least singularity margin of the sweep.
     pub fn least(&self) -> f64 {
         self.deferred

@@ -10,6 +10,7 @@
 //! | `frame` | one RMF along the whole wire: constant on lines, the rational frame of arcs, the PH cubic rational RMF (Mäurer & Jüttler (29), (36)–(41)) on curves; twist, closure, the Cor. 7 margin |
 //! | `law` | the Frenet frame and a fixed direction as turns against the RMF (θ' = τ for Frenet), unwrapped, their accuracy |
 //! | `scale` | the scale law σ linear in arc length, as polynomials in each piece's parameter (exact on lines and PH pieces) |
+//! | `oblique` | the fold check of a profile drawn in a plane across the wire other than the normal plane |
 //! | `brep` | the faces (exact cylinders, tori, sweeps (42)), planar caps, shared edges, orientation; the accuracy report |
 //!
 //! The work is done in coordinates centred on the wire and scaled by a power of two to its
@@ -22,6 +23,7 @@ mod corner;
 mod edge;
 mod frame;
 mod law;
+mod oblique;
 mod profile;
 mod scale;
 
@@ -144,8 +146,9 @@ const MAX_SIZE: f64 = 1e290;
 /// The factor of the radius of a default round corner over the profile's radius.
 const DEFAULT_RADIUS_FACTOR: f64 = 1.5;
 
-/// The sweep of `profile` (with `holes`; planar curves in the normal plane, x ↦ f₂,
-/// y ↦ f₃, z = 0) along the wire of `edges` (see the module notes).
+/// The sweep of `profile` (with `holes`; planar curves in the frame at the wire's start,
+/// x ↦ f₂, y ↦ f₃, z ↦ t: z = 0 in the normal plane, any other plane across the wire
+/// carried rigidly, see `oblique`) along the wire of `edges` (see the module notes).
 pub fn sweep_wire(
     edges: &[Edge],
     profile: &PiecewiseCurve,
@@ -246,8 +249,14 @@ pub fn sweep_wire(
             length: chain.pieces.iter().map(|p| p.geometry.length()).sum(),
         },
     };
+    if profile.plane.is_some() && chain.closed {
+        return invalid!(
+            "profile: a closed wire takes a profile in its normal plane at the start (z = 0), \
+             which its frame closes onto; this one is drawn out of it"
+        );
+    }
     // Its largest distance from the spine takes a root search per profile segment: once.
-    let reach = profile.radius();
+    let reach = profile.reach();
     let radius = reach * law.max();
     let mode = match options.corner {
         Corner::Miter => CornerMode::Miter,
@@ -255,6 +264,12 @@ pub fn sweep_wire(
         Corner::Round(None) => CornerMode::Round(DEFAULT_RADIUS_FACTOR * radius),
     };
     let chain = edge::split_arcs(corner::resolve(chain, mode, scale, radius)?);
+    if profile.plane.is_some() && chain.joints.iter().any(edge::Joint::cuts) {
+        return invalid!(
+            "profile: miter cuts take a profile in the wire's normal plane (z = 0); this one \
+             is drawn out of it: use round corners"
+        );
+    }
     let faces = chain.pieces.len().saturating_mul(profile.edge_count());
     if faces > MAX_FACES {
         return invalid!(
@@ -280,7 +295,16 @@ pub fn sweep_wire(
         ..law
     };
     // The fold check with the profile at its largest: g = 1 − κσc·n is least there.
-    let margins = if law.is_constant() {
+    let margins = if let Some(plane) = profile.plane {
+        oblique::oblique_margin(
+            &transport,
+            &profile,
+            plane,
+            reach * law.max(),
+            law.slope(),
+            scale,
+        )?
+    } else if law.is_constant() {
         frame::singularity_margin(&transport, &profile, scale)?
     } else {
         let k = law.max();

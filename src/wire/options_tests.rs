@@ -390,3 +390,182 @@ fn frames_and_scale_laws_are_the_same_from_1e_200_to_1e200() {
         check_similar(&example_pipe(), &circle(1.0), &fixed, s, o);
     }
 }
+
+/// A circle of radius r about the spine point in the plane through f₂ tilted by `tilt`
+/// from the normal plane towards the tangent (profile coordinates: x along f₂, y along f₃,
+/// z along t).
+fn tilted_circle(r: f64, tilt: f64) -> PiecewiseCurve {
+    crate::primitives::circle(
+        DVec3::ZERO,
+        DVec3::X,
+        DVec3::new(0.0, tilt.cos(), tilt.sin()),
+        r,
+    )
+    .unwrap()
+}
+
+/// A profile drawn out of the normal plane is carried rigidly: a centred region of area A
+/// in a plane whose normal makes the angle α with the tangent sweeps m_z A L = A L cos α
+/// (the flux of the moving plane; module `oblique`), along lines, arcs and PH pieces alike.
+#[test]
+fn a_profile_out_of_the_normal_plane_sweeps_cos_alpha_times_the_volume() {
+    for (name, edges) in [
+        ("line", vec![line([0., 0., 0.], [0., 0., 4.])]),
+        ("pipe route", pipe_route()),
+        ("helix", vec![helix(3.0, 2.0, 1.0)]),
+    ] {
+        for tilt in [0.3, -0.9] {
+            let shape = sweep_wire(
+                &edges,
+                &tilted_circle(0.5, tilt),
+                &[],
+                &WireSweep::default(),
+            )
+            .unwrap_or_else(|e| panic!("{name}, tilt {tilt}: {e}"));
+            assert!(shape.is_solid());
+            crate::testing::assert_closed_oriented(shape.brep());
+            let want = tilt.cos() * PI * 0.25 * spine_length(&shape);
+            let v = volume(&shape);
+            println!("{name}, tilt {tilt}: volume {v:.12} against cos α π r² L {want:.12}");
+            assert!(
+                relative(v, want) < 1e-11,
+                "{name} {tilt}: {v} against {want}"
+            );
+            // The start cap is the tilted disc itself: its plane's normal is ∓m.
+            let cap = shape
+                .faces()
+                .iter()
+                .find(|f| f.kind == FaceKind::Plane)
+                .unwrap();
+            let (_, n) = cap.plane.unwrap();
+            let t0 = match &edges[0] {
+                Edge::Line { from, to } => (*to - *from).normalize(),
+                _ => shape.spine()[0]
+                    .eval_jet(shape.spine()[0].domain().0)
+                    .d1
+                    .normalize(),
+            };
+            assert!((n.dot(t0) + tilt.cos()).abs() < 1e-12, "{n}");
+        }
+    }
+}
+
+/// A thread as users draw it: the triangle in the axial plane through the helix's start
+/// (which holds the axis and the radial direction: tilted from the normal plane by the
+/// helix's lead angle), carried by the Frenet frame: every vertex runs on a helix.
+#[test]
+fn an_axial_thread_profile_runs_on_helices_under_the_frenet_frame() {
+    let (radius, pitch) = (3.0, 1.0);
+    let edges = [helix(radius, pitch, 2.0)];
+    // At the start f₂ = −x (towards the axis), the tangent t ∝ (0, R, h), f₃ = t × f₂.
+    let h = pitch / TAU;
+    let t = DVec3::new(0.0, radius, h).normalize();
+    let f2 = -DVec3::X;
+    let f3 = t.cross(f2);
+    // Profile coordinates of a world offset d from the start point: (d·f₂, d·f₃, d·t).
+    let local = |d: DVec3| DVec3::new(d.dot(f2), d.dot(f3), d.dot(t));
+    let triangle = crate::primitives::polygon(&[
+        local(DVec3::new(0.0, 0.0, -0.3)),
+        local(DVec3::new(0.0, 0.0, 0.3)),
+        local(DVec3::new(0.4, 0.0, 0.0)),
+    ])
+    .unwrap();
+    let shape = sweep_wire(
+        &edges,
+        &triangle,
+        &[],
+        &WireSweep {
+            frame: SweepFrame::Frenet,
+            tolerance: 1e-6,
+            ..WireSweep::default()
+        },
+    )
+    .unwrap();
+    crate::testing::assert_closed_oriented(shape.brep());
+    let off = off_helix(&shape, h);
+    println!("axial thread profile: vertex tracks off their helices {off:.1e}");
+    assert!(off < 1e-5, "{off}");
+    // The start cap is the axial plane y = 0.
+    let cap = shape
+        .faces()
+        .iter()
+        .find(|f| f.kind == FaceKind::Plane)
+        .unwrap();
+    let (o, n) = cap.plane.unwrap();
+    assert!(
+        o.y.abs() < 1e-12 && (n.y.abs() - 1.0).abs() < 1e-12,
+        "{o} {n}"
+    );
+}
+
+#[test]
+fn profiles_out_of_the_normal_plane_that_cannot_be_swept_are_refused() {
+    let refused = |edges: &[Edge], profile: &PiecewiseCurve, options: WireSweep| {
+        sweep_wire(edges, profile, &[], &options)
+            .unwrap_err()
+            .message()
+    };
+    let square_loop = [
+        line([0., 0., 0.], [10., 0., 0.]),
+        line([10., 0., 0.], [10., 10., 0.]),
+        line([10., 10., 0.], [0., 10., 0.]),
+        line([0., 10., 0.], [0., 0., 0.]),
+    ];
+    let m = refused(&square_loop, &tilted_circle(1.0, 0.3), WireSweep::default());
+    assert!(
+        m.contains("a closed wire takes a profile in its normal plane"),
+        "{m}"
+    );
+    let elbow = [
+        line([0., 0., 0.], [10., 0., 0.]),
+        line([10., 0., 0.], [10., 10., 0.]),
+    ];
+    let miter = WireSweep {
+        corner: Corner::Miter,
+        ..WireSweep::default()
+    };
+    let m = refused(&elbow, &tilted_circle(1.0, 0.3), miter);
+    assert!(
+        m.contains("miter cuts take a profile in the wire's normal plane"),
+        "{m}"
+    );
+    let m = refused(&elbow, &tilted_circle(1.0, 1.5705), WireSweep::default());
+    assert!(m.contains("contains the wire's start tangent"), "{m}");
+    // Steeply tilted along a tight arc: the plane's motion folds the sweep.
+    let arc = [Edge::Arc {
+        start: DVec3::new(2.0, 0.0, 0.0),
+        through: DVec3::new(2f64.sqrt(), 2f64.sqrt(), 0.0),
+        end: DVec3::new(0.0, 2.0, 0.0),
+    }];
+    let m = refused(&arc, &tilted_circle(1.5, 1.2), WireSweep::default());
+    assert!(m.contains("may fold the sweep"), "{m}");
+    assert!(sweep_wire(&arc, &tilted_circle(0.5, 0.3), &[], &WireSweep::default()).is_ok());
+}
+
+/// Profiles out of the normal plane give the same faces at every scale and position.
+#[test]
+fn profiles_out_of_the_normal_plane_are_the_same_from_1e_200_to_1e200() {
+    use super::robustness_tests::check_similar;
+    let frenet = WireSweep {
+        frame: SweepFrame::Frenet,
+        scale: [1.0, 0.7],
+        ..WireSweep::default()
+    };
+    for s in [1e-200, 1e-100, 1.0, 1e100, 1e200] {
+        let o = DVec3::new(3e2, -1e2, 2e2) * s;
+        check_similar(
+            &pipe_route(),
+            &tilted_circle(0.5, 0.4),
+            &WireSweep::default(),
+            s,
+            o,
+        );
+        check_similar(
+            &[helix(3.0, 2.0, 0.5)],
+            &tilted_circle(0.3, -0.2),
+            &frenet,
+            s,
+            o,
+        );
+    }
+}

@@ -39,7 +39,22 @@ pub(crate) struct ProfileLoop {
 #[derive(Clone, Debug)]
 pub(crate) struct Profile {
     pub loops: Vec<ProfileLoop>,
+    /// A profile drawn out of the normal plane: its plane, in the profile's coordinates
+    /// (x along f₂, y along f₃, z along the tangent); `None` in the normal plane (z = 0).
+    pub plane: Option<ProfilePlane>,
 }
+
+/// The plane m·c = offset of a profile drawn out of the normal plane, m a unit vector with
+/// m_z > 0 (towards the tangent; the plane never contains it).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct ProfilePlane {
+    pub normal: DVec3,
+    pub offset: f64,
+}
+
+/// Least |m_z| of a profile's plane: a plane within 1e-3 rad of containing the tangent
+/// would sweep a sheet of no thickness along it.
+const MIN_TILT: f64 = 1e-3;
 
 /// Where a turn of the profile sends one of its edges: (loop, edge, parameter shift).
 pub(crate) type EdgeImage = (usize, usize, f64);
@@ -55,11 +70,12 @@ impl Profile {
         tolerance: f64,
         unit: f64,
     ) -> Result<Self> {
+        let plane = profile_plane(std::iter::once(outer).chain(holes), unit)?;
         let mut loops =
-            vec![profile_loop(outer, tolerance, unit).map_err(|e| e.context("profile"))?];
+            vec![profile_loop(outer, tolerance, plane).map_err(|e| e.context("profile"))?];
         for (k, hole) in holes.iter().enumerate() {
             loops.push(
-                profile_loop(hole, tolerance, unit)
+                profile_loop(hole, tolerance, plane)
                     .map_err(|e| e.context(format!("holes[{k}]")))?,
             );
         }
@@ -81,7 +97,7 @@ impl Profile {
                 return invalid!("holes[{k}]: a hole must be a closed curve");
             }
         }
-        let profile = Self { loops };
+        let profile = Self { loops, plane };
         profile.check_nesting()?;
         Ok(profile)
     }
@@ -117,7 +133,23 @@ impl Profile {
         }
     }
 
-    /// max ‖c‖: the profile's largest distance from the spine.
+    /// The profile's largest distance from the spine: max ‖c‖ in the normal plane; out of
+    /// it a bound, the farthest control point (the curves lie in their hulls).
+    pub fn reach(&self) -> f64 {
+        match self.plane {
+            None => self.radius(),
+            Some(_) => self
+                .loops
+                .iter()
+                .flat_map(|l| &l.edges)
+                .flat_map(|e| e.segments())
+                .flat_map(|s| s.poles())
+                .map(|p| p.length())
+                .fold(0.0, f64::max),
+        }
+    }
+
+    /// max ‖c‖ of the profile's projection onto the normal plane.
     pub fn radius(&self) -> f64 {
         self.segments()
             .map(|segment| segment.max_radius())
@@ -247,8 +279,81 @@ fn same_edge(
         })
 }
 
-/// One loop: planar, snapped shut if its ends meet, split at its corners.
-fn profile_loop(curve: &PiecewiseCurve, tolerance: f64, unit: f64) -> Result<ProfileLoop> {
+/// The plane of a profile's loops: `None` when they lie in the normal plane (z = 0 within
+/// rounding), else the one plane they all lie in, which must not contain the tangent.
+fn profile_plane<'a>(
+    curves: impl Iterator<Item = &'a PiecewiseCurve>,
+    unit: f64,
+) -> Result<Option<ProfilePlane>> {
+    let poles: Vec<DVec3> = curves
+        .flat_map(|c| c.segments())
+        .flat_map(|s| s.poles())
+        .collect();
+    if poles.iter().any(|p| !p.is_finite()) {
+        return Ok(None); // refused by the loop, which names it
+    }
+    let size = bounding_diagonal(poles.iter().copied());
+    if !(size > 0.0) || poles.iter().all(|p| p.z.abs() <= PLANAR * size) {
+        return Ok(None);
+    }
+    // Three poles spanning the largest triangle give the plane; a straight profile lies in
+    // the plane through it nearest to the normal plane.
+    let p0 = poles[0];
+    let p1 = poles.iter().copied().fold(p0, |far, p| {
+        if p.distance(p0) > far.distance(p0) {
+            p
+        } else {
+            far
+        }
+    });
+    let chord = (p1 - p0).normalize();
+    let off_line = |p: DVec3| (p - p0).cross(chord);
+    let p2 = poles.iter().copied().fold(p0, |far, p| {
+        if off_line(p).length() > off_line(far).length() {
+            p
+        } else {
+            far
+        }
+    });
+    let mut normal = if off_line(p2).length() > PLANAR * size {
+        (p1 - p0).cross(p2 - p0).normalize()
+    } else {
+        (DVec3::Z - DVec3::Z.dot(chord) * chord).normalize()
+    };
+    if normal.z < 0.0 {
+        normal = -normal;
+    }
+    if let Some((k, p)) = poles
+        .iter()
+        .enumerate()
+        .find(|(_, p)| (**p - p0).dot(normal).abs() > PLANAR * size)
+    {
+        return invalid!(
+            "profile: pole {k} {} lies {:.3e} off the plane of the others: a profile is planar",
+            *p * unit,
+            (*p - p0).dot(normal).abs() * unit
+        );
+    }
+    if !(normal.z > MIN_TILT) {
+        return invalid!(
+            "profile: its plane contains the wire's start tangent (within {:.3e} rad): it \
+             would sweep no volume; draw it across the wire",
+            normal.z.asin()
+        );
+    }
+    Ok(Some(ProfilePlane {
+        normal,
+        offset: p0.dot(normal),
+    }))
+}
+
+/// One loop: planar, snapped shut if its ends meet, split at its corners. In the normal
+/// plane (`plane` `None`) its z is rounding and is made 0.
+fn profile_loop(
+    curve: &PiecewiseCurve,
+    tolerance: f64,
+    plane: Option<ProfilePlane>,
+) -> Result<ProfileLoop> {
     let poles: Vec<DVec3> = curve.segments().iter().flat_map(|s| s.poles()).collect();
     if poles.iter().any(|p| !p.is_finite()) {
         return invalid!("has a non-finite pole");
@@ -257,17 +362,6 @@ fn profile_loop(curve: &PiecewiseCurve, tolerance: f64, unit: f64) -> Result<Pro
     if size.is_nan() || size <= 0.0 {
         return invalid!("is a single point: it has no extent");
     }
-    if let Some((k, p)) = poles
-        .iter()
-        .enumerate()
-        .find(|(_, p)| p.z.abs() > PLANAR * size)
-    {
-        return invalid!(
-            "pole {k} has z = {}: the profile lies in the normal plane (x along f2, y along f3, \
-             z = 0)",
-            p.z * unit
-        );
-    }
     let flat: Vec<RationalBezierCurve> = curve
         .segments()
         .iter()
@@ -275,7 +369,10 @@ fn profile_loop(curve: &PiecewiseCurve, tolerance: f64, unit: f64) -> Result<Pro
             let h = s
                 .homogeneous()
                 .iter()
-                .map(|h| DVec4::new(h.x, h.y, 0.0, h.w))
+                .map(|h| match plane {
+                    None => DVec4::new(h.x, h.y, 0.0, h.w),
+                    Some(_) => *h,
+                })
                 .collect();
             RationalBezierCurve::from_homogeneous(h).expect("the same weights")
         })
@@ -454,7 +551,32 @@ mod tests {
         ])
         .unwrap()])
         .unwrap();
-        let e = Profile::new(&lifted, &[], false, 1e-9, 1.0).unwrap_err();
-        assert!(e.message().contains("z = 0.5"), "{e}");
+        // A straight profile out of the normal plane lies in the plane through it nearest
+        // to the normal plane; a lifted polygon in its own plane.
+        let plane = Profile::new(&lifted, &[], false, 1e-9, 1.0)
+            .unwrap()
+            .plane
+            .unwrap();
+        assert!((plane.normal - DVec3::new(-0.5, 0.0, 1.0).normalize()).length() < 1e-15);
+        let upright = crate::primitives::polyline(&[
+            DVec3::ZERO,
+            DVec3::new(1.0, 0.0, 0.0),
+            DVec3::new(1.0, 0.0, 1.0),
+        ])
+        .unwrap();
+        let e = Profile::new(&upright, &[], false, 1e-9, 1.0).unwrap_err();
+        assert!(
+            e.message().contains("contains the wire's start tangent"),
+            "{e}"
+        );
+        let skew = crate::primitives::polyline(&[
+            DVec3::ZERO,
+            DVec3::new(1.0, 0.0, 0.0),
+            DVec3::new(1.0, 0.0, 1.0),
+            DVec3::new(0.0, 1.0, 0.3),
+        ])
+        .unwrap();
+        let e = Profile::new(&skew, &[], false, 1e-9, 1.0).unwrap_err();
+        assert!(e.message().contains("off the plane"), "{e}");
     }
 }

@@ -304,8 +304,14 @@ def part_b(doc):
     set_radius(profile, radius[0], 4.0)
     sweep.Profile = open_sketch
     doc.recompute()
-    require("an open profile: Invalid, '%s'" % sweep.getStatusString(),
-            not sweep.isValid() and "not closed" in sweep.getStatusString())
+    require("an open profile with Solid: Invalid, '%s'" % sweep.getStatusString(),
+            not sweep.isValid() and "needs a closed profile" in sweep.getStatusString())
+    sweep.Solid = False
+    doc.recompute()
+    require("an open profile with Solid = False: a valid sheet",
+            sweep.isValid() and sweep.Shape.isValid() and not sweep.Shape.Solids
+            and len(sweep.Shape.Faces) > 0)
+    sweep.Solid = True
     sweep.Profile = profile
     doc.removeObject(open_sketch.Name)
     doc.recompute()

@@ -50,7 +50,7 @@ use crate::mesh::grid_parameters;
 use crate::model::Similarity;
 use crate::model::{Brep, BrepBound, BrepEdge, BrepFace, BrepSurface, BrepUse, PCurve};
 use crate::ph_cubic::accuracy::AngleCheck;
-use crate::sweep::{sweep_along, sweep_scaled};
+use crate::sweep::{sweep_profile, SweepProfile};
 use glam::{DVec3, DVec4};
 use std::sync::OnceLock;
 
@@ -297,16 +297,17 @@ fn lateral(
     framed: &super::frame::Framed,
     edge: &PiecewiseCurve,
     scale: Option<&PieceScale>,
+    tangential: bool,
 ) -> Result<PiecewiseSurface> {
     match (&framed.piece.geometry, &framed.frame) {
         (Geometry::Line { a, b }, PieceFrame::Constant { f2, f3 }) => {
             let t = framed.start.tangent;
             let (sa, sb) = scale.map_or((1.0, 1.0), PieceScale::ends);
             let section = |p: DVec3, miter: Option<(DVec3, DVec3)>, h: DVec4, k: f64| {
-                let h = DVec4::new(h.x * k, h.y * k, h.z, h.w);
-                let mut x = p * h.w + *f2 * h.x + *f3 * h.y;
+                let offset = (*f2 * h.x + *f3 * h.y + t * h.z) * k;
+                let mut x = p * h.w + offset;
                 if let Some((_, m)) = miter {
-                    x -= t * ((*f2 * h.x + *f3 * h.y).dot(m) / t.dot(m));
+                    x -= t * (offset.dot(m) / t.dot(m));
                 }
                 x.extend(h.w)
             };
@@ -333,36 +334,55 @@ fn lateral(
                 .iter()
                 .map(|along| arc_numerators(arc, along, *a, *b))
                 .collect();
-            // With a scale law σ (linear on each segment): X elevated, σF₂, σF₃.
-            let factors: Vec<(Vec<DVec4>, Vec<DVec3>, Vec<DVec3>)> = spine
+            // The tangent over the arc's weights, T = n × (X − c w)/R (a profile drawn out
+            // of the normal plane); with a scale law σ (linear on each segment): X
+            // elevated, σF₂, σF₃, σT.
+            let tangents = |along: &RationalBezierCurve| -> Vec<DVec3> {
+                along
+                    .homogeneous()
+                    .iter()
+                    .map(|x| arc.normal.cross(x.truncate() - arc.center * x.w) / arc.radius)
+                    .collect()
+            };
+            type Factors = (Vec<DVec4>, Vec<DVec3>, Vec<DVec3>, Vec<DVec3>);
+            let factors: Vec<Factors> = spine
                 .segments()
                 .iter()
                 .zip(&frames)
                 .zip(spine.breaks().windows(2))
-                .map(|((along, frame), v)| match scale {
-                    None => (
-                        along.homogeneous().to_vec(),
-                        frame.e2.clone(),
-                        frame.e3.clone(),
-                    ),
-                    Some(scale) => {
-                        let sigma = scale.on(v[0], v[1]);
-                        let scaled = |n: &[DVec3]| product(&sigma, n, |s: f64, n: DVec3| n * s);
-                        (
-                            elevate(along.homogeneous(), sigma.len() - 1),
-                            scaled(&frame.e2),
-                            scaled(&frame.e3),
-                        )
+                .map(|((along, frame), v)| {
+                    let t = if tangential {
+                        tangents(along)
+                    } else {
+                        vec![DVec3::ZERO; along.homogeneous().len()]
+                    };
+                    match scale {
+                        None => (
+                            along.homogeneous().to_vec(),
+                            frame.e2.clone(),
+                            frame.e3.clone(),
+                            t,
+                        ),
+                        Some(scale) => {
+                            let sigma = scale.on(v[0], v[1]);
+                            let scaled = |n: &[DVec3]| product(&sigma, n, |s: f64, n: DVec3| n * s);
+                            (
+                                elevate(along.homogeneous(), sigma.len() - 1),
+                                scaled(&frame.e2),
+                                scaled(&frame.e3),
+                                scaled(&t),
+                            )
+                        }
                     }
                 })
                 .collect();
             for seg in edge.segments() {
-                for (x, e2, e3) in &factors {
+                for (x, e2, e3, e1) in &factors {
                     let mut points = Vec::with_capacity(seg.homogeneous().len() * x.len());
                     for &h in seg.homogeneous() {
                         for (l, xl) in x.iter().enumerate() {
                             points.push(
-                                (xl.truncate() * h.w + e2[l] * h.x + e3[l] * h.y)
+                                (xl.truncate() * h.w + e2[l] * h.x + e3[l] * h.y + e1[l] * h.z)
                                     .extend(h.w * xl.w),
                             );
                         }
@@ -376,10 +396,16 @@ fn lateral(
             }
             PiecewiseSurface::new(patches, edge.breaks().to_vec(), spine.breaks().to_vec())
         }
-        (_, PieceFrame::Rational(frames)) => match scale {
-            None => sweep_along(&framed.spine, frames, edge),
-            Some(scale) => sweep_scaled(&framed.spine, frames, edge, |v0, v1| scale.on(v0, v1)),
-        },
+        (_, PieceFrame::Rational(frames)) => {
+            let sigma = |v0: f64, v1: f64| scale.map_or(vec![1.0], |s| s.on(v0, v1));
+            let how = SweepProfile {
+                sigma: scale
+                    .is_some()
+                    .then_some(&sigma as &dyn Fn(f64, f64) -> Vec<f64>),
+                tangential,
+            };
+            sweep_profile(&framed.spine, frames, edge, how)
+        }
         _ => invalid!("internal: a frame that does not fit its piece"),
     }
 }
@@ -399,7 +425,7 @@ fn tubes(
             .flat_map(|lp| &lp.edges)
             .flat_map(|e| e.segments())
             .flat_map(|s| s.poles())
-            .fold(0.0f64, |m, p| m.max(p.truncate().length()));
+            .fold(0.0f64, |m, p| m.max(p.length()));
     let mut spines = Vec::with_capacity(transport.pieces.len());
     for (framed, loops) in transport.pieces.iter().zip(normalized) {
         let face = loops.iter().flatten().next();
@@ -435,7 +461,7 @@ pub(crate) fn build(
             let faces = lp
                 .edges
                 .iter()
-                .map(|e| lateral(framed, e, scale.as_ref()))
+                .map(|e| lateral(framed, e, scale.as_ref(), profile.plane.is_some()))
                 .collect::<Result<Vec<_>>>()
                 .map_err(|e| e.context(format!("edge {}", framed.piece.edge)))?;
             loops.push(faces);

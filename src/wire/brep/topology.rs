@@ -224,12 +224,23 @@ impl<'a> Topology<'a> {
             (0, &transport.pieces[0])
         };
         let frame = if end { framed.end } else { framed.start };
-        let origin = if end {
+        let spine_point = if end {
             framed.piece.geometry.end()
         } else {
             framed.piece.geometry.start()
         };
-        let normal = if end { frame.tangent } else { -frame.tangent };
+        // The cap lies in the profile's plane m·c = offset carried by the frame (the normal
+        // plane: m = z, offset 0), its outward normal ∓m; axes x = f₂ projected onto it,
+        // y = normal × x, in the profile's coordinates (x along f₂, y along f₃, z along t).
+        let (m, offset) = profile
+            .plane
+            .map_or((DVec3::Z, 0.0), |p| (p.normal, p.offset));
+        let outward = if end { m } else { -m };
+        let x_axis = (DVec3::X - m.x * m).normalize();
+        let y_axis = outward.cross(x_axis);
+        let world = |c: DVec3| frame.f2 * c.x + frame.f3 * c.y + frame.tangent * c.z;
+        let normal = world(outward);
+        let origin = spine_point + world(m * (offset * sigma));
         let mut bounds = Vec::new();
         let mut loops = Vec::new();
         for (l, lp) in profile.loops.iter().enumerate() {
@@ -247,7 +258,7 @@ impl<'a> Topology<'a> {
                     pcurve: Some(PCurve::Curve(planar_pcurve(
                         edge,
                         placement.scale * sigma,
-                        !end,
+                        (x_axis, y_axis),
                     ))),
                 })
                 .collect();
@@ -276,7 +287,7 @@ impl<'a> Topology<'a> {
             surface: BrepSurface::Plane {
                 origin,
                 normal,
-                x_axis: frame.f2,
+                x_axis: world(x_axis),
             },
             same_sense: true,
             bounds,
@@ -305,10 +316,14 @@ pub(super) fn spine_pcurve(u: f64, knots_v: &[f64]) -> PCurve {
     PCurve::Curve(NurbsCurve::new(1, poles, None, knots).expect("increasing breaks"))
 }
 
-/// A profile edge as a curve in the cap's plane coordinates (x along f₂, y along the
-/// normal × f₂: f₃ at the end, −f₃ at the start), in the caller's units.
-pub(super) fn planar_pcurve(edge: &PiecewiseCurve, scale: f64, flip: bool) -> NurbsCurve {
-    let y = if flip { -1.0 } else { 1.0 };
+/// A profile edge as a curve in the cap's plane coordinates (`axes`, in the profile's
+/// coordinates: in the normal plane x along f₂ and y along the normal × f₂, f₃ at the
+/// end, −f₃ at the start), in the caller's units.
+pub(super) fn planar_pcurve(
+    edge: &PiecewiseCurve,
+    scale: f64,
+    (x, y): (DVec3, DVec3),
+) -> NurbsCurve {
     let segments = edge
         .segments()
         .iter()
@@ -316,7 +331,10 @@ pub(super) fn planar_pcurve(edge: &PiecewiseCurve, scale: f64, flip: bool) -> Nu
             let h = s
                 .homogeneous()
                 .iter()
-                .map(|h| DVec4::new(h.x * scale, h.y * scale * y, 0.0, h.w))
+                .map(|h| {
+                    let c = h.truncate() * scale;
+                    DVec4::new(c.dot(x), c.dot(y), 0.0, h.w)
+                })
                 .collect();
             RationalBezierCurve::from_homogeneous(h).expect("finite")
         })
