@@ -4690,7 +4690,10 @@ RmfStatus rmf_wire_sweep_options_init(struct RmfWireSweepOptions *options);
  * - sharp joints are rounded (a tangent arc, exact torus elbow) or mitred (options->corner);
  * - a closed wire closes without a seam: the RMF's holonomy is cancelled by the smallest
  *   turn modulo 2π/closure_symmetry, spread linearly in arc length;
- * - the profile (x along f2, y along f3, z = 0) is split at its Bézier segment joints:
+ * - the profile is given in the frame at the wire's start: x along f2, y along f3 and z
+ *   along the tangent — z = 0 in the normal plane, as usual; a planar profile in any
+ *   other plane across the wire (a thread's profile in the axial plane) is carried
+ *   rigidly (not on closed wires or with miter cuts). It is split at its Bézier segment joints:
  *   one lateral face per profile segment per line, quarter arc, or curve edge. With
  *   options->solid the profile and the holes must be closed, and an open wire gets planar
  *   caps: the faces form a closed, outward-oriented solid sharing its edges.
@@ -4702,7 +4705,9 @@ RmfStatus rmf_wire_sweep_options_init(struct RmfWireSweepOptions *options);
  *
  * @param[in] edges edge_count edges (≥ 1), consecutive along the wire.
  * @param[in] edge_count Number of edges.
- * @param[in] profile The outer profile loop (a curve in the normal plane, z = 0).
+ * @param[in] profile The outer profile loop (a planar curve in the start frame's
+ *            coordinates: x along f2, y along f3, z along the tangent; z = 0 in the
+ *            normal plane).
  * @param[in] holes hole_count inner loops (closed, inside the profile, disjoint), or NULL
  *            when hole_count is 0. Need a closed profile.
  * @param[in] hole_count Number of holes.
