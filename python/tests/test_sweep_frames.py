@@ -133,3 +133,48 @@ def test_a_frenet_sweep_along_a_helix_has_helices_for_edges_and_cuts_a_thread():
     solids = cut.solids()
     assert len(solids) == 1 and is_valid(solids[0])
     assert solids[0].volume < rod.volume
+
+
+def straight(points):
+    """Whether sampled points lie on one line (a cap's edge, not a track)."""
+    chord = points[-1] - points[0]
+    if np.linalg.norm(chord) == 0:
+        return False
+    off = np.cross(points - points[0], chord / np.linalg.norm(chord))
+    return np.max(np.linalg.norm(off, axis=1)) < 1e-9
+
+
+def test_a_thread_profile_drawn_in_the_axial_plane_runs_on_helices_and_cuts_a_thread():
+    """The triangle as users draw a thread's profile: in the axial plane (XZ) through the
+    helix's start, which the helix crosses at its lead angle; carried rigidly by the Frenet
+    frame (src/wire/oblique.rs), its corners trace helices of the helix's axis and pitch."""
+    helix = bd.Wire([bd.Helix(pitch=PITCH, height=HEIGHT, radius=RADIUS)])
+    start = np.array(tuple(helix @ 0))
+    assert abs(start[1]) < 1e-9  # the helix starts in the XZ plane
+    corners = [tuple(start + d) for d in [(0.4, 0, -0.3), (0.4, 0, 0.3), (-0.4, 0, 0)]]
+    triangle = bd.Face(bd.Wire.make_polygon(corners, close=True))
+    thread = rocp.sweep(helix, triangle, frame="frenet", tolerance=1e-6)
+    assert is_valid(thread)
+    radii = [np.hypot(c[0], c[1]) for c in corners]
+    tracks, explorer = [], TopExp_Explorer(thread.wrapped, TopAbs_EDGE)
+    while explorer.More():
+        curve = BRepAdaptor_Curve(TopoDS.Edge(explorer.Current()))
+        ts = np.linspace(curve.FirstParameter(), curve.LastParameter(), 41)
+        points = np.array([curve.Value(t).Coord() for t in ts])
+        if not straight(points):
+            tracks.append(points)
+        explorer.Next()
+    assert tracks and len(tracks) % 3 == 0  # each corner's track, one edge per spine piece
+    worst_radius = worst_pitch = 0.0
+    for points in tracks:
+        r = np.hypot(points[:, 0], points[:, 1])
+        phi = np.unwrap(np.arctan2(points[:, 1], points[:, 0]))
+        worst_radius = max(worst_radius, np.ptp(r), min(abs(r[0] - q) for q in radii))
+        rise = points[:, 2] - points[0, 2] - PITCH * (phi - phi[0]) / (2 * math.pi)
+        worst_pitch = max(worst_pitch, np.max(np.abs(rise)))
+    print("\naxial thread profile along a helix: distance from the axis within %.1e, pitch "
+          "relation within %.1e" % (worst_radius, worst_pitch))
+    assert worst_radius <= 1e-4 and worst_pitch <= 1e-4
+    rod = bd.Pos(0, 0, HEIGHT / 2) * bd.Cylinder(RADIUS, HEIGHT - 2)
+    solids = rod.cut(thread).solids()
+    assert len(solids) == 1 and is_valid(solids[0]) and solids[0].volume < rod.volume
