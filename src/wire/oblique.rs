@@ -59,7 +59,7 @@ pub(crate) fn oblique_margin(
             _ => 0.0,
         };
         let g = m.z - kappa * reach - omega * reach * across - slope * plane.offset.abs();
-        if !(g > 0.0) {
+        if g.is_nan() || g <= 0.0 {
             return invalid!(
                 "{}: the profile, drawn {:.2}° out of the normal plane, may fold the sweep \
                  there (curvature {:.3e}, the frame turning at {:.3e} rad per length, reach \

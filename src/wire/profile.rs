@@ -293,7 +293,7 @@ fn profile_plane<'a>(
         return Ok(None); // refused by the loop, which names it
     }
     let size = bounding_diagonal(poles.iter().copied());
-    if !(size > 0.0) || poles.iter().all(|p| p.z.abs() <= PLANAR * size) {
+    if size.is_nan() || size <= 0.0 || poles.iter().all(|p| p.z.abs() <= PLANAR * size) {
         return Ok(None);
     }
     // Three poles spanning the largest triangle give the plane; a straight profile lies in
@@ -334,7 +334,7 @@ fn profile_plane<'a>(
             (*p - p0).dot(normal).abs() * unit
         );
     }
-    if !(normal.z > MIN_TILT) {
+    if normal.z.is_nan() || normal.z <= MIN_TILT {
         return invalid!(
             "profile: its plane contains the wire's start tangent (within {:.3e} rad): it \
              would sweep no volume; draw it across the wire",
