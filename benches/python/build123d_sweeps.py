@@ -88,27 +88,45 @@ def poles(shape):
     return faces, count
 
 
+def axial(helix, face):
+    """`face` in the axial plane through the helix's start (the plane of its axis z and the
+    radial direction there), as users draw a thread's profile."""
+    start = helix @ 0
+    radial = bd.Vector(start.X, start.Y, 0).normalized()
+    return bd.Plane(origin=start, x_dir=radial, z_dir=radial.cross(bd.Vector(0, 0, 1))) * face
+
+
 def thread_cut():
     """A rod less a helical groove (a triangle swept along a helix on the rod's surface):
-    the groove by build123d's Frenet sweep and by rmfsurf's RMF sweep, then the same
-    boolean with each."""
+    the groove by build123d's Frenet sweep and by rmfsurf's sweeps (the RMF, and the
+    Frenet frame whose edges are helices), the triangle in the helix's normal plane and
+    in the axial plane as users draw it; then the same boolean with each."""
     rod = bd.Cylinder(10, 50, align=(bd.Align.CENTER, bd.Align.CENTER, bd.Align.MIN))
     helix = bd.Wire([bd.Helix(pitch=5, height=40, radius=10, center=(0, 0, 5))])
-    triangle = placed(helix, bd.RegularPolygon(1.5, 3).faces()[0])
-    theirs_groove_time, theirs = best(lambda: bd.sweep(triangle, helix, is_frenet=True))
-    ours_groove_time, ours = best(lambda: rocp.sweep(helix, triangle, tolerance=1e-5))
-    theirs_cut_time, theirs_cut = best(lambda: rod - theirs)
-    ours_cut_time, ours_cut = best(lambda: rod - ours)
-    assert rocp.is_valid(ours_cut) and rocp.is_valid(theirs_cut)
+    shape = bd.RegularPolygon(1.5, 3).faces()[0]
+    normal, axial_face = placed(helix, shape), axial(helix, shape)
+    grooves = [
+        ("build123d sweep (Frenet)", lambda: bd.sweep(normal, helix, is_frenet=True)),
+        ("rmfsurf.ocp.sweep (RMF)", lambda: rocp.sweep(helix, normal, tolerance=1e-5)),
+        ("rmfsurf.ocp.sweep (Frenet)",
+         lambda: rocp.sweep(helix, normal, tolerance=1e-5, frame="frenet")),
+        ("build123d, axial profile", lambda: bd.sweep(axial_face, helix, is_frenet=True)),
+        ("rmfsurf, axial profile",
+         lambda: rocp.sweep(helix, axial_face, tolerance=1e-5, frame="frenet")),
+    ]
     print("thread cut (rod - 8-turn helical triangle groove), tolerance 1e-5: milliseconds")
-    print("%-24s %10s %10s %12s %14s" % ("groove by", "groove", "boolean", "groove faces", "B-spline poles"))
-    for name, groove_time, cut_time, groove in [
-            ("build123d sweep (Frenet)", theirs_groove_time, theirs_cut_time, theirs),
-            ("rmfsurf.ocp.sweep (RMF)", ours_groove_time, ours_cut_time, ours)]:
+    print("%-28s %10s %10s %8s %12s %14s %6s" % (
+        "groove by", "groove", "boolean", "valid", "groove faces", "B-spline poles", "ratio"))
+    base = None
+    for name, make in grooves:
+        groove_time, groove = best(make)
+        cut_time, cut = best(lambda: rod - groove)
+        valid = rocp.is_valid(groove) and rocp.is_valid(cut) and len(cut.solids()) == 1
         faces, count = poles(groove)
-        print("%-24s %10.1f %10.1f %12d %14d" % (name, groove_time * 1e3, cut_time * 1e3, faces, count))
-    print("boolean with rmfsurf's groove over the boolean with build123d's: %.2fx"
-          % (ours_cut_time / theirs_cut_time))
+        base = base or cut_time
+        print("%-28s %10.1f %10.1f %8s %12d %14d %5.2fx" % (
+            name, groove_time * 1e3, cut_time * 1e3, valid, faces, count, cut_time / base))
+    print("ratio: the boolean's time over the boolean with build123d's own groove")
 
 
 if __name__ == "__main__":

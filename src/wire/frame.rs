@@ -47,6 +47,7 @@ use crate::ph_cubic::approximate::ph_spline_approximate;
 use crate::ph_cubic::base_frame::{FrameNumerators, FramePieces};
 use crate::ph_cubic::biquadratic::{fit, AngleHermite, Biquadratic};
 use crate::ph_cubic::exact_rmf::ExactRmf;
+use crate::ph_cubic::frenet::ph_frenet_frames;
 use crate::ph_cubic::rational_rmf::{ph_rational_rmf, RmfOptions};
 use crate::ph_cubic::spline::PhSpline;
 use glam::{DVec2, DVec3};
@@ -701,6 +702,29 @@ fn frame_piece(
     })
 }
 
+/// The frames a law is followed from along a PH spline: where the law sets f₂ itself
+/// (Frenet, a fixed direction), the spline's own rational Frenet frames (degree 2, Farouki's
+/// (19): a PH cubic's Frenet frame is rational), each segment turned to continue the
+/// previous one from f₂ — the law is then close to them, often a constant turn away (a
+/// helix's screw motion, its axis); otherwise (a twist on the RMF) its rational RMF.
+fn law_base(ph: &PhSpline, f2: DVec3, law: &SweepFrame) -> Result<RationalFrames> {
+    if *law != SweepFrame::Rmf {
+        // A straight segment has no Frenet frame: the RMF serves.
+        if let Ok(frenet) = ph_frenet_frames(ph) {
+            let frames = frenet.into_parts().1;
+            return RationalFrames::chained(
+                frames.segments().to_vec(),
+                frames.breaks().to_vec(),
+                f2,
+            );
+        }
+    }
+    Ok(ph_rational_rmf(ph, &RmfOptions::rmf(f2))?
+        .framed
+        .into_parts()
+        .1)
+}
+
 /// Rational frames along a piece that follow a frame law: its RMF (exact on an arc, the
 /// PH spline's rational RMF on a curve) turned by 2 arctan W fitted to the law's angle
 /// against it, plus `extra` (twist and closure) linear in arc length — within
@@ -745,12 +769,11 @@ fn law_frames(
                 )
             }
             (_, Some(ph)) => {
-                let frames = ph_rational_rmf(ph, &RmfOptions::rmf(f2))?
-                    .framed
-                    .into_parts()
-                    .1;
                 let exact = ExactRmf::new(ph, f2, 0.0)?;
-                (frames, Box::new(move |v| exact.arc_length_at(v)))
+                (
+                    law_base(ph, f2, law)?,
+                    Box::new(move |v| exact.arc_length_at(v)),
+                )
             }
             _ => return invalid!("internal: a frame law on {}", piece.geometry.kind_name()),
         };
@@ -901,10 +924,19 @@ fn turned_frames(
         fit_parts(&fit, 0.0, 1.0, 0, &mut parts)?;
         for (v0, v1, w) in parts {
             let (g0, g1) = (angle(k, v0), angle(k, v1));
-            let turned = base.restricted(v0, v1).turned(&w.numerator, &w.denominator);
+            // A constant W is a constant turn: the base keeps its degree.
+            let constant = w.numerator.iter().all(|&n| n == w.numerator[0])
+                && w.denominator.iter().all(|&d| d == w.denominator[0]);
+            let (turned, turn) = if constant {
+                let w0 = w.numerator[0] / w.denominator[0];
+                (base.restricted(v0, v1), 2.0 * w0.atan())
+            } else {
+                let turned = base.restricted(v0, v1).turned(&w.numerator, &w.denominator);
+                (turned, 0.0)
+            };
             let mut segments = turned.positive_pieces()?;
             for (_, _, segment) in segments.iter_mut() {
-                segment.rotate(0.5 * (g0 + g1));
+                segment.rotate(0.5 * (g0 + g1) + turn);
             }
             pieces.push_all(k, v0, v1, segments);
         }
