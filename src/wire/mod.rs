@@ -9,6 +9,7 @@
 //! | `profile` | the cross-section's loops split at their corners, their orientation, extent (support function) and symmetry |
 //! | `frame` | one RMF along the whole wire: constant on lines, the rational frame of arcs, the PH cubic rational RMF (Mäurer & Jüttler (29), (36)–(41)) on curves; twist, closure, the Cor. 7 margin |
 //! | `law` | the Frenet frame and a fixed direction as turns against the RMF (θ' = τ for Frenet), unwrapped, their accuracy |
+//! | `blend` | sweeps between two profiles: the profiles matched loop by loop, over common denominators, the blend as sums of scaled sweeps |
 //! | `scale` | the scale law σ linear in arc length, as polynomials in each piece's parameter (exact on lines and PH pieces) |
 //! | `oblique` | the fold check of a profile drawn in a plane across the wire other than the normal plane |
 //! | `brep` | the faces (exact cylinders, tori, sweeps (42)), planar caps, shared edges, orientation; the accuracy report |
@@ -17,6 +18,7 @@
 //! size, so that the result does not depend on where the wire is or how large it is
 //! (1e-200 … 1e200), and mapped back exactly at the end.
 
+mod blend;
 mod brep;
 mod clearance;
 mod corner;
@@ -155,6 +157,38 @@ pub fn sweep_wire(
     holes: &[PiecewiseCurve],
     options: &WireSweep,
 ) -> Result<Shape> {
+    sweep(edges, profile, holes, None, options)
+}
+
+/// [`sweep_wire`] from `profile` (with `holes`) at the wire's start to `end_profile` (with
+/// `end_holes`, as many as `holes`) at its end, blended linearly in arc length (module
+/// `blend`): each loop matched to its counterpart, corner to corner. Open wires; both
+/// profiles in the normal plane; a constant scale.
+pub fn sweep_wire_between(
+    edges: &[Edge],
+    profile: &PiecewiseCurve,
+    holes: &[PiecewiseCurve],
+    end_profile: &PiecewiseCurve,
+    end_holes: &[PiecewiseCurve],
+    options: &WireSweep,
+) -> Result<Shape> {
+    check_counts(edges.len(), end_profile, end_holes)?;
+    sweep(
+        edges,
+        profile,
+        holes,
+        Some((end_profile, end_holes)),
+        options,
+    )
+}
+
+fn sweep(
+    edges: &[Edge],
+    profile: &PiecewiseCurve,
+    holes: &[PiecewiseCurve],
+    end: Option<(&PiecewiseCurve, &[PiecewiseCurve])>,
+    options: &WireSweep,
+) -> Result<Shape> {
     check_options(options)?;
     check_counts(edges.len(), profile, holes)?;
     let points: Vec<DVec3> = edges.iter().flat_map(edge_points).collect();
@@ -234,6 +268,18 @@ pub fn sweep_wire(
     };
     let chain = edge::chain(&raw, options.join_tolerance * size_n, size_n, units)?;
     let profile = Profile::new(&outer, &holes, options.solid, options.join_tolerance, scale)?;
+    let blend = match end {
+        Some((end_profile, end_holes)) => Some(end_blend(
+            &profile,
+            end_profile,
+            end_holes,
+            options,
+            chain.closed,
+            profile_scale,
+        )?),
+        None => None,
+    };
+    let profile = blend.as_ref().map_or(profile, |b| b.start.clone());
     if constant.is_none() && chain.closed {
         return invalid!(
             "scale: a closed wire must end at the scale it starts with, not {} and {}",
@@ -256,8 +302,9 @@ pub fn sweep_wire(
         );
     }
     // Its largest distance from the spine takes a root search per profile segment: once.
+    let end_reach = blend.as_ref().map_or(0.0, |b| b.end.reach());
     let reach = profile.reach();
-    let radius = reach * law.max();
+    let radius = reach.max(end_reach) * law.max();
     let mode = match options.corner {
         Corner::Miter => CornerMode::Miter,
         Corner::Round(Some(r)) => CornerMode::Round(r / scale),
@@ -286,8 +333,16 @@ pub fn sweep_wire(
             closure_symmetry: options.closure_symmetry.max(1),
             tolerance: options.tolerance / scale,
             units,
-            scale: law,
-            reach,
+            // Arcs are cut for the blend's λ as for a scale law, |c₁ − c₀| ≤ the reaches.
+            scale: match &blend {
+                Some(_) => ScaleLaw {
+                    start: 0.0,
+                    end: 1.0,
+                    length: chain.pieces.iter().map(|p| p.geometry.length()).sum(),
+                },
+                None => law,
+            },
+            reach: reach + end_reach,
         },
     )?;
     let law = ScaleLaw {
@@ -304,6 +359,11 @@ pub fn sweep_wire(
             law.slope(),
             scale,
         )?
+    } else if let Some(blend) = &blend {
+        // Every section lies between the two profiles: g ≥ the least of theirs.
+        let start = frame::singularity_margin(&transport, &profile, scale)?.least();
+        let end = frame::singularity_margin(&transport, &blend.end, scale)?.least();
+        frame::Margins::measured(start.min(end), profile.segment_chain())
     } else if law.is_constant() {
         frame::singularity_margin(&transport, &profile, scale)?
     } else {
@@ -323,12 +383,45 @@ pub fn sweep_wire(
     brep::build(
         &transport,
         &profile,
+        blend.as_ref(),
         &law,
         options.solid,
         units,
         margins,
         options.join_tolerance * size_n,
     )
+}
+
+/// The end profile in the sweep's coordinates, matched to the start profile (module
+/// `blend`); what a sweep between two profiles cannot take is refused here.
+fn end_blend(
+    profile: &Profile,
+    end_profile: &PiecewiseCurve,
+    end_holes: &[PiecewiseCurve],
+    options: &WireSweep,
+    closed: bool,
+    profile_scale: f64,
+) -> Result<blend::Blend> {
+    if closed {
+        return invalid!(
+            "end_profile: a closed wire ends where it starts, with its start profile; give an \
+             open wire"
+        );
+    }
+    if options.scale[0] != options.scale[1] {
+        return invalid!(
+            "scale: with end_profile the profiles set the sections; use a constant scale"
+        );
+    }
+    let outer = end_profile.similar(profile_scale, DVec3::ZERO);
+    let holes: Vec<PiecewiseCurve> = end_holes
+        .iter()
+        .map(|h| h.similar(profile_scale, DVec3::ZERO))
+        .collect();
+    let unit = 1.0 / profile_scale;
+    let end = Profile::new(&outer, &holes, options.solid, options.join_tolerance, unit)
+        .map_err(|e| e.context("end_profile"))?;
+    blend::matched(profile, &end)
 }
 
 /// Every edge gives at least one lateral face per profile segment: a wire or profile beyond

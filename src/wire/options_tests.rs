@@ -569,3 +569,209 @@ fn profiles_out_of_the_normal_plane_are_the_same_from_1e_200_to_1e200() {
         );
     }
 }
+
+/// Between two concentric circles the blend is the scale law: a frustum along a line,
+/// π r² ∫σ² ds along lines, arcs and helices.
+#[test]
+fn a_sweep_between_two_circles_is_the_scaled_tube() {
+    for (name, edges, bound) in [
+        ("line", vec![line([0., 0., 0.], [0., 0., 3.])], 1e-12),
+        ("pipe route", pipe_route(), 4e-6),
+        ("helix", vec![helix(3.0, 2.0, 1.0)], 1e-12),
+    ] {
+        let shape = sweep_wire_between(
+            &edges,
+            &circle(0.5),
+            &[],
+            &circle(0.2),
+            &[],
+            &WireSweep {
+                tolerance: 1e-6,
+                ..WireSweep::default()
+            },
+        )
+        .unwrap_or_else(|e| panic!("{name}: {e}"));
+        crate::testing::assert_closed_oriented(shape.brep());
+        let want = scaled_tube_volume(0.5, spine_length(&shape), [1.0, 0.4]);
+        let v = volume(&shape);
+        println!("circle 0.5 to 0.2 along the {name}: volume {v:.12} against {want:.12}");
+        assert!(relative(v, want) < bound, "{name}: {v} against {want}");
+    }
+}
+
+/// A square into a circle along a line: its sections are quadratic in λ, so the volume is
+/// Simpson's L (A₀ + 4A½ + A₁)/6 exactly — A½ measured on the faces at mid-length; the
+/// caps are the square and the circle.
+#[test]
+fn a_square_blends_into_a_circle_corner_to_corner() {
+    let edges = [line([0., 0., 0.], [0., 0., 4.])];
+    for (start, end) in [(square(0.5), circle(0.6)), (triangle(0.6), square(0.4))] {
+        let shape =
+            sweep_wire_between(&edges, &start, &[], &end, &[], &WireSweep::default()).unwrap();
+        crate::testing::assert_closed_oriented(shape.brep());
+        let area = |z: f64| {
+            let mut points = Vec::new();
+            for face in shape.faces().iter().filter(|f| f.kind == FaceKind::Swept) {
+                let s = face.surface.as_ref().unwrap();
+                let ((u0, u1), (v0, v1)) = (s.domain_u(), s.domain_v());
+                for k in 0..400 {
+                    let p = s.eval(u0 + (u1 - u0) * k as f64 / 400.0, v0 + (v1 - v0) * z / 4.0);
+                    assert!((p.z - z).abs() < 1e-12);
+                    points.push(p.truncate());
+                }
+            }
+            // The faces in order around the loop: the polygon's shoelace area.
+            let n = points.len();
+            0.5 * (0..n)
+                .map(|i| points[i].perp_dot(points[(i + 1) % n]))
+                .sum::<f64>()
+                .abs()
+        };
+        let (a0, a_mid, a1) = (area(0.0), area(2.0), area(4.0));
+        let simpson = 4.0 * (a0 + 4.0 * a_mid + a1) / 6.0;
+        let v = volume(&shape);
+        println!(
+            "blend: areas {a0:.6}, {a_mid:.6}, {a1:.6}; volume {v:.9} against Simpson {simpson:.9}"
+        );
+        // (The sampled areas are 400-gons: 1e-4 of the circle's.)
+        assert!(relative(v, simpson) < 2e-4, "{v} against {simpson}");
+        let caps: Vec<&Face> = shape
+            .faces()
+            .iter()
+            .filter(|f| f.kind == FaceKind::Plane)
+            .collect();
+        assert_eq!(caps.len(), 2);
+    }
+}
+
+fn triangle(r: f64) -> PiecewiseCurve {
+    let corner = |k: f64| {
+        let a = TAU * k / 3.0;
+        DVec3::new(r * a.cos(), r * a.sin(), 0.0)
+    };
+    crate::primitives::polygon(&[corner(0.0), corner(1.0), corner(2.0)]).unwrap()
+}
+
+#[test]
+fn sweeps_between_profiles_that_cannot_be_matched_are_refused() {
+    let bar = [line([0., 0., 0.], [0., 0., 3.])];
+    let refused = |edges: &[Edge], end_holes: &[PiecewiseCurve], options: WireSweep| {
+        sweep_wire_between(
+            edges,
+            &circle(1.0),
+            &[circle(0.5)],
+            &square(0.8),
+            end_holes,
+            &options,
+        )
+        .unwrap_err()
+        .message()
+    };
+    let m = refused(&bar, &[], WireSweep::default());
+    assert!(
+        m.starts_with("end_profile: it has 0 holes, the profile 1"),
+        "{m}"
+    );
+    let m = refused(
+        &bar,
+        &[circle(0.2)],
+        WireSweep {
+            scale: [1.0, 2.0],
+            ..WireSweep::default()
+        },
+    );
+    assert!(m.starts_with("scale:"), "{m}");
+    let square_loop = [
+        line([0., 0., 0.], [10., 0., 0.]),
+        line([10., 0., 0.], [10., 10., 0.]),
+        line([10., 10., 0.], [0., 10., 0.]),
+        line([0., 10., 0.], [0., 0., 0.]),
+    ];
+    let m = refused(&square_loop, &[circle(0.2)], WireSweep::default());
+    assert!(m.starts_with("end_profile: a closed wire"), "{m}");
+    // Matched hole to hole: a ring into a square frame.
+    let ok = sweep_wire_between(
+        &bar,
+        &circle(1.0),
+        &[circle(0.5)],
+        &square(0.8),
+        &[square(0.3)],
+        &WireSweep::default(),
+    )
+    .unwrap();
+    crate::testing::assert_closed_oriented(ok.brep());
+}
+
+/// A blend gives the same faces at every scale and position.
+#[test]
+fn sweeps_between_profiles_are_the_same_from_1e_200_to_1e200() {
+    let edges = pipe_route();
+    let unit = sweep_wire_between(
+        &edges,
+        &square(0.5),
+        &[],
+        &circle(0.3),
+        &[],
+        &WireSweep::default(),
+    )
+    .unwrap();
+    for s in [1e-200, 1e-100, 1e100, 1e200] {
+        let o = DVec3::new(3e2, -1e2, 2e2) * s;
+        let moved: Vec<Edge> = edges
+            .iter()
+            .map(|e| match e {
+                Edge::Line { from, to } => Edge::Line {
+                    from: *from * s + o,
+                    to: *to * s + o,
+                },
+                Edge::Arc {
+                    start,
+                    through,
+                    end,
+                } => Edge::Arc {
+                    start: *start * s + o,
+                    through: *through * s + o,
+                    end: *end * s + o,
+                },
+                Edge::Curve(c) => Edge::Curve(c.similar(s, o)),
+            })
+            .collect();
+        let options = WireSweep {
+            tolerance: 1e-4 * s,
+            ..WireSweep::default()
+        };
+        let shape = sweep_wire_between(
+            &moved,
+            &square(0.5).similar(s, DVec3::ZERO),
+            &[],
+            &circle(0.3).similar(s, DVec3::ZERO),
+            &[],
+            &options,
+        )
+        .unwrap();
+        assert_eq!(shape.faces().len(), unit.faces().len());
+        let rounding = 1.0 + crate::math::robust_length(o) / s;
+        for (a, b) in unit.faces().iter().zip(shape.faces()) {
+            if let (Some(a), Some(b)) = (&a.surface, &b.surface) {
+                for i in 0..=4 {
+                    for j in 0..=4 {
+                        let (u, v) = (i as f64 / 4.0, j as f64 / 4.0);
+                        let (u, v) = (
+                            a.domain_u().0 + (a.domain_u().1 - a.domain_u().0) * u,
+                            a.domain_v().0 + (a.domain_v().1 - a.domain_v().0) * v,
+                        );
+                        let (pa, pb) = (a.eval(u, v), (b.eval(u, v) - o) / s);
+                        assert!(
+                            pa.distance(pb) < 1e-8 * rounding,
+                            "{s:e}: {pa} against {pb}"
+                        );
+                    }
+                }
+            }
+        }
+        // (A volume at 1e±100 and beyond is outside f64's range.)
+        if let Ok(v) = shape.volume() {
+            assert!(relative(v / s / s / s, unit.volume().unwrap()) < 1e-9);
+        }
+    }
+}

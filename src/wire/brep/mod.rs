@@ -32,6 +32,7 @@
 //! the face is marked reversed). Caps are bounded counter-clockwise about their outward
 //! normal (holes clockwise), so every edge is used once in each direction.
 
+use super::blend::{combined, Blend};
 use super::clearance::{self_contact, Contact, Tubes};
 use super::edge::Geometry;
 use super::frame::{arc_numerators, Margins, PieceFrame, Transport, CLOSURE_ROUND_OFF};
@@ -445,6 +446,7 @@ fn tubes(
 pub(crate) fn build(
     transport: &Transport,
     profile: &Profile,
+    blend: Option<&Blend>,
     law: &ScaleLaw,
     solid: bool,
     placement: Similarity,
@@ -453,22 +455,48 @@ pub(crate) fn build(
 ) -> Result<Shape> {
     let m = transport.pieces.len();
     let scales = piece_scales(transport, law)?;
+    let blend_scales = match blend {
+        Some(_) => Some(blend_scales(transport)?),
+        None => None,
+    };
     // Lateral surfaces, normalized, [piece][loop][edge].
     let mut normalized: Vec<Vec<Vec<PiecewiseSurface>>> = Vec::with_capacity(m);
-    for (framed, scale) in transport.pieces.iter().zip(&scales) {
+    for (j, (framed, scale)) in transport.pieces.iter().zip(&scales).enumerate() {
         let mut loops = Vec::with_capacity(profile.loops.len());
-        for lp in &profile.loops {
+        for (l, lp) in profile.loops.iter().enumerate() {
             let faces = lp
                 .edges
                 .iter()
-                .map(|e| lateral(framed, e, scale.as_ref(), profile.plane.is_some()))
+                .enumerate()
+                .map(|(e, edge)| match (blend, &blend_scales) {
+                    (Some(b), Some(laws)) => {
+                        let [down, up, ones] = &laws[j];
+                        combined(
+                            &lateral(framed, edge, Some(down), false)?,
+                            &lateral(framed, &b.end.loops[l].edges[e], Some(up), false)?,
+                            &lateral(framed, &b.zero.loops[l].edges[e], Some(ones), false)?,
+                        )
+                    }
+                    _ => lateral(framed, edge, scale.as_ref(), profile.plane.is_some()),
+                })
                 .collect::<Result<Vec<_>>>()
                 .map_err(|e| e.context(format!("edge {}", framed.piece.edge)))?;
             loops.push(faces);
         }
         normalized.push(loops);
     }
-    let tubes = tubes(transport, profile, law.max(), &normalized);
+    let tubes = tubes(
+        transport,
+        blend.map_or(profile, |b| {
+            if b.end.reach() > profile.reach() {
+                &b.end
+            } else {
+                profile
+            }
+        }),
+        law.max(),
+        &normalized,
+    );
     if let Some(contact) = self_contact(&normalized, &tubes, transport.closed, gap) {
         return Err(self_intersection(&contact, transport, placement, gap));
     }
@@ -537,7 +565,12 @@ pub(crate) fn build(
                 (Some(scale), false) => scale.ends().0,
                 (None, _) => 1.0,
             };
-            let (face, brep_face) = topology.cap(end, transport, profile, placement, sigma)?;
+            // A blend ends on its end profile.
+            let capped = match (blend, end) {
+                (Some(b), true) => &b.end,
+                _ => profile,
+            };
+            let (face, brep_face) = topology.cap(end, transport, capped, placement, sigma)?;
             faces.push(face);
             brep_faces.push(brep_face);
         }
@@ -592,6 +625,38 @@ pub(crate) fn build(
     })
 }
 
+/// A blend's laws on each piece: 1 − λ, λ and 1 (for the spine's own term), λ linear in
+/// arc length from 0 at the wire's start to 1 at its end.
+fn blend_scales(transport: &Transport) -> Result<Vec<[PieceScale; 3]>> {
+    let length = transport.pieces.iter().map(|p| p.length).sum();
+    let law = |start, end| ScaleLaw { start, end, length };
+    let (down, up, ones) = (law(1.0, 0.0), law(0.0, 1.0), law(1.0, 1.0));
+    let mut s0 = 0.0;
+    transport
+        .pieces
+        .iter()
+        .map(|framed| {
+            let scale =
+                |law: &ScaleLaw| PieceScale::new(&framed.spine, spine_kind(framed), s0, law);
+            let laws = [scale(&down)?, scale(&up)?, scale(&ones)?];
+            s0 += framed.length;
+            Ok(laws)
+        })
+        .collect()
+}
+
+/// How a piece's spine is parameterized, for a scale law on it.
+fn spine_kind(framed: &super::frame::Framed) -> SpineKind {
+    match &framed.piece.geometry {
+        Geometry::Line { .. } => SpineKind::Line(framed.length),
+        Geometry::Arc(arc) => SpineKind::Arc {
+            radius: arc.radius,
+            angle: arc.angle,
+        },
+        Geometry::Curve(_) => SpineKind::Ph,
+    }
+}
+
 /// The scale law on each piece (`None` everywhere for a constant one).
 fn piece_scales(transport: &Transport, law: &ScaleLaw) -> Result<Vec<Option<PieceScale>>> {
     let mut s0 = 0.0;
@@ -602,15 +667,7 @@ fn piece_scales(transport: &Transport, law: &ScaleLaw) -> Result<Vec<Option<Piec
             if law.is_constant() {
                 return Ok(None);
             }
-            let kind = match &framed.piece.geometry {
-                Geometry::Line { .. } => SpineKind::Line(framed.length),
-                Geometry::Arc(arc) => SpineKind::Arc {
-                    radius: arc.radius,
-                    angle: arc.angle,
-                },
-                Geometry::Curve(_) => SpineKind::Ph,
-            };
-            let scale = PieceScale::new(&framed.spine, kind, s0, law)?;
+            let scale = PieceScale::new(&framed.spine, spine_kind(framed), s0, law)?;
             s0 += framed.length;
             Ok(Some(scale))
         })
