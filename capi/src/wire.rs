@@ -12,7 +12,7 @@ use super::status::RmfStatus;
 use super::types::RmfVec3;
 use rmfsurf::glam::DVec3;
 use rmfsurf::PiecewiseCurve;
-use rmfsurf::{sweep_wire, Corner, Edge, SweepFrame, WireSweep, MAX_FACES};
+use rmfsurf::{sweep_wire, sweep_wire_between, Corner, Edge, SweepFrame, WireSweep, MAX_FACES};
 
 /// What an RmfEdge is (values fixed, validated).
 /// \ingroup rmf_wire
@@ -351,37 +351,130 @@ pub unsafe extern "C" fn rmf_wire_sweep(
 ) -> RmfStatus {
     guard("rmf_wire_sweep", || {
         let out = out_ptr(out, "out")?;
-        if edge_count == 0 {
-            return invalid_arg("edge_count = 0: a wire needs at least one edge".into());
-        }
-        // Each edge and each hole gives at least one lateral face: counts beyond the face
-        // bound are refused before any edge is read.
-        for (name, count) in [("edge_count", edge_count), ("hole_count", hole_count)] {
-            if count > MAX_FACES {
-                return invalid_arg(format!(
-                    "{name} = {count}: a wire sweep has at most {MAX_FACES} lateral faces, one \
-                     or more per edge and per profile segment"
-                ));
-            }
-        }
-        let edges = wire_edges(slice(edges, edge_count, "edges")?)?;
+        let edges = checked_edges(edges, edge_count)?;
+        face_bound("hole_count", hole_count)?;
+        let edges = wire_edges(edges)?;
         let profile = reference(profile, "profile")?;
-        let holes: Vec<PiecewiseCurve> = slice(holes, hole_count, "holes")?
-            .iter()
-            .enumerate()
-            .map(|(k, &h)| {
-                if h.is_null() {
-                    return invalid_arg(format!("holes[{k}] is NULL"));
-                }
-                Ok(reference(h, "holes[]")?
-                    .rational(&format!("holes[{k}]"))?
-                    .as_ref()
-                    .clone())
-            })
-            .collect::<Result<_, _>>()?;
+        let holes = loops(holes, hole_count, "holes")?;
         let options = wire_options(&read_options(options, "options")?)?;
         let shape = sweep_wire(&edges, profile.rational("profile")?, &holes, &options)?;
         write(out, RmfShape::new(shape).into_raw());
         Ok(())
     })
+}
+
+/// rmf_wire_sweep from `profile` (with `holes`) at the wire's start to `end_profile` (with
+/// `end_holes`) at its end: the section blends linearly in arc length. Each loop is matched
+/// to its counterpart (hole to hole, the same turning sense, the loop with fewer edges
+/// split at the middle of its longest, corner to the nearest corner), each pair of matched
+/// segments written over one denominator: exact rational faces (Mäurer & Jüttler (1) with
+/// a moving profile; along arcs within options->tolerance). A circle into a smaller
+/// concentric circle is the scale law's sweep.
+///
+/// @param[in] edges, edge_count, profile, holes, hole_count, options As for rmf_wire_sweep.
+/// @param[in] end_profile The outer loop at the wire's end (same coordinates as profile).
+/// @param[in] end_holes end_hole_count inner loops (as many as holes), or NULL when 0.
+/// @param[in] end_hole_count Number of end holes.
+/// @param[out] out Receives the shape; free with rmf_shape_free. Untouched on failure.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If edges, a profile, a hole array with a count > 0 or out
+///         is NULL.
+/// @return RMF_ERROR_INVALID_INPUT As for rmf_wire_sweep; also (the message naming
+///         end_profile) for a different number of holes, a closed wire, a scale law beside
+///         the end profile, a profile out of the normal plane.
+/// \since 0.2
+/// \ingroup rmf_wire
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn rmf_wire_sweep_between(
+    edges: *const RmfEdge,
+    edge_count: usize,
+    profile: *const RmfCurve,
+    holes: *const *const RmfCurve,
+    hole_count: usize,
+    end_profile: *const RmfCurve,
+    end_holes: *const *const RmfCurve,
+    end_hole_count: usize,
+    options: *const RmfWireSweepOptions,
+    out: *mut *mut RmfShape,
+) -> RmfStatus {
+    guard("rmf_wire_sweep_between", || {
+        let out = out_ptr(out, "out")?;
+        let edges = checked_edges(edges, edge_count)?;
+        face_bound("hole_count", hole_count)?;
+        face_bound("end_hole_count", end_hole_count)?;
+        let edges = wire_edges(edges)?;
+        let profile = reference(profile, "profile")?;
+        let holes = loops(holes, hole_count, "holes")?;
+        let end_profile = reference(end_profile, "end_profile")?;
+        let end_holes = loops(end_holes, end_hole_count, "end_holes")?;
+        let options = wire_options(&read_options(options, "options")?)?;
+        let shape = sweep_wire_between(
+            &edges,
+            profile.rational("profile")?,
+            &holes,
+            end_profile.rational("end_profile")?,
+            &end_holes,
+            &options,
+        )?;
+        write(out, RmfShape::new(shape).into_raw());
+        Ok(())
+    })
+}
+
+/// The edges, their count checked first: each edge gives at least one lateral face, so a
+/// count beyond the face bound is refused before any edge is read.
+///
+/// # Safety
+/// `edges` must be NULL or point to `edge_count` edges.
+unsafe fn checked_edges<'a>(
+    edges: *const RmfEdge,
+    edge_count: usize,
+) -> Result<&'a [RmfEdge], FfiError> {
+    if edge_count == 0 {
+        return invalid_arg("edge_count = 0: a wire needs at least one edge".into());
+    }
+    face_bound("edge_count", edge_count)?;
+    slice(edges, edge_count, "edges")
+}
+
+/// Each edge and each hole gives at least one lateral face: counts beyond the face bound
+/// are refused before anything is read.
+fn face_bound(name: &str, count: usize) -> Result<(), FfiError> {
+    if count > MAX_FACES {
+        return invalid_arg(format!(
+            "{name} = {count}: a wire sweep has at most {MAX_FACES} lateral faces, one or more \
+             per edge and per profile segment"
+        ));
+    }
+    Ok(())
+}
+
+/// A profile's holes (`name`: "holes" or "end_holes"), each closed curve borrowed.
+///
+/// # Safety
+/// `holes` must be NULL or point to `count` pointers, each NULL or a valid handle.
+unsafe fn loops(
+    holes: *const *const RmfCurve,
+    count: usize,
+    name: &'static str,
+) -> Result<Vec<PiecewiseCurve>, FfiError> {
+    let element = if name == "holes" {
+        "holes[]"
+    } else {
+        "end_holes[]"
+    };
+    slice(holes, count, name)?
+        .iter()
+        .enumerate()
+        .map(|(k, &h)| {
+            if h.is_null() {
+                return invalid_arg(format!("{name}[{k}] is NULL"));
+            }
+            Ok(reference(h, element)?
+                .rational(&format!("{name}[{k}]"))?
+                .as_ref()
+                .clone())
+        })
+        .collect()
 }
