@@ -16,6 +16,7 @@ use crate::bezier::bernstein::{elevate, product};
 use crate::bezier::{PiecewiseCurve, PiecewiseSurface, RationalBezierCurve, RationalBezierPatch};
 use crate::error::{invalid, Result};
 use crate::frames::rational::{RationalFrameSegment, RationalFrames};
+use crate::math::binomial;
 use crate::model::{on_frame_segments, FramedCurve};
 use glam::{DVec3, DVec4};
 
@@ -74,13 +75,15 @@ fn sweep_with(
 ) -> Result<PiecewiseSurface> {
     let spine = &*on_frame_segments(spine, frames);
     check_sweep_size(spine, frames, profile)?;
+    let forms = tangents(frames, tangential);
     let factors: Vec<SpineFactors> = spine
         .segments()
         .iter()
         .zip(frames.segments())
         .zip(frames.breaks().windows(2))
-        .map(|((segment, frame), v)| {
-            let factors = SpineFactors::new(segment, frame, tangential);
+        .zip(&forms)
+        .map(|(((segment, frame), v), form)| {
+            let factors = SpineFactors::new(segment, frame, form);
             match sigma {
                 Some(sigma) => factors.scaled(&sigma(v[0], v[1])),
                 None => factors,
@@ -132,7 +135,7 @@ struct SpineFactors {
 }
 
 impl SpineFactors {
-    fn new(spine: &RationalBezierCurve, frame: &RationalFrameSegment, tangential: bool) -> Self {
+    fn new(spine: &RationalBezierCurve, frame: &RationalFrameSegment, tangent: &Tangent) -> Self {
         let x = spine.homogeneous();
         let spine_weight: Vec<f64> = x.iter().map(|h| h.w).collect();
         let weighted = |numerator: &[DVec3]| {
@@ -146,7 +149,7 @@ impl SpineFactors {
             weighted(frame.f2_numerator()),
             weighted(frame.f3_numerator()),
         );
-        if !tangential {
+        if let Tangent::None = tangent {
             return Self {
                 along_spine,
                 along_f2,
@@ -154,17 +157,21 @@ impl SpineFactors {
                 along_t: None,
             };
         }
+        let cross = frame_cross(frame);
+        if let Tangent::OverD(tangent) = tangent {
+            return Self {
+                along_spine,
+                along_f2,
+                along_f3,
+                along_t: Some(weighted(tangent)),
+            };
+        }
         let times_d = |n: &[DVec4]| product(d, n, |d: f64, n: DVec4| n * d);
-        let tangent = product(
-            frame.f2_numerator(),
-            frame.f3_numerator(),
-            |a: DVec3, b: DVec3| a.cross(b),
-        );
         Self {
             along_spine: times_d(&along_spine),
             along_f2: times_d(&along_f2),
             along_f3: times_d(&along_f3),
-            along_t: Some(weighted(&tangent)),
+            along_t: Some(weighted(&cross)),
         }
     }
 }
@@ -180,6 +187,86 @@ impl SpineFactors {
             along_t: self.along_t.as_deref().map(times),
         }
     }
+}
+
+/// How the tangent enters a segment's factors: not at all (a profile in the normal plane),
+/// as d t over the frames' d (its numerator of their degree), or as N₂ × N₃ = d² t over d².
+enum Tangent {
+    None,
+    OverD(Vec<DVec3>),
+    OverD2,
+}
+
+fn frame_cross(frame: &RationalFrameSegment) -> Vec<DVec3> {
+    product(
+        frame.f2_numerator(),
+        frame.f3_numerator(),
+        |a: DVec3, b: DVec3| a.cross(b),
+    )
+}
+
+/// The tangent's form on every frame segment: N₂ × N₃ = d² t, and d t is a polynomial
+/// wherever d holds the spine's speed (the frames of a PH spline, built on its
+/// Euler–Rodrigues or Frenet frame over σ = |x'|), so the tangent goes over d as the
+/// normals do, without raising the degree — on every segment, or over d² on all (one form
+/// for the whole surface, its patches alike).
+fn tangents(frames: &RationalFrames, tangential: bool) -> Vec<Tangent> {
+    let n = frames.segments().len();
+    if !tangential {
+        return (0..n).map(|_| Tangent::None).collect();
+    }
+    let quotients: Option<Vec<Vec<DVec3>>> = frames
+        .segments()
+        .iter()
+        .map(|f| exact_quotient(&frame_cross(f), f.denominator()))
+        .collect();
+    match quotients {
+        Some(q) => q.into_iter().map(Tangent::OverD).collect(),
+        None => (0..n).map(|_| Tangent::OverD2).collect(),
+    }
+}
+
+/// How far the product of a quotient and the denominator may be from the numerator,
+/// relative to it: rational frames pinned to their exact end values (to ~1e-11) are
+/// divisible to about that; the tangent is then within 1e-10 rad of N₂ × N₃'s.
+const QUOTIENT_ROUNDING: f64 = 1e-10;
+
+/// The quotient of two Bernstein polynomials on [0, 1] when the division is exact (to
+/// rounding): the product's Bernstein coefficients N_k = Σ_{i+j=k} C(m,i)C(r,j)/C(n,k) d_i q_j
+/// solved for q from both ends — from t = 0 for its first half, from t = 1 for the rest,
+/// where the denominator (a frame's positive weight) does not vanish — and checked by
+/// multiplying back.
+fn exact_quotient(numerator: &[DVec3], denominator: &[f64]) -> Option<Vec<DVec3>> {
+    let (n, m) = (numerator.len() - 1, denominator.len() - 1);
+    if n < m || denominator[0] <= 0.0 || denominator[m] <= 0.0 {
+        return None;
+    }
+    let r = n - m;
+    let weight = |i: usize, j: usize| binomial(m, i) * binomial(r, j) / binomial(n, i + j);
+    let mut q = vec![DVec3::ZERO; r + 1];
+    let half = r / 2;
+    for k in 0..=half {
+        let known = (1..=k.min(m)).fold(DVec3::ZERO, |acc, i| {
+            acc + q[k - i] * (denominator[i] * weight(i, k - i))
+        });
+        q[k] = (numerator[k] - known) / (denominator[0] * weight(0, k));
+    }
+    for j in (half + 1..=r).rev() {
+        // The coefficient k = j + m involves q_j with d_m, and q_{j'} (j' > j) with d_{i < m}.
+        let k = j + m;
+        let known = (j + 1..=r.min(k)).fold(DVec3::ZERO, |acc, jj| {
+            acc + q[jj] * (denominator[k - jj] * weight(k - jj, jj))
+        });
+        q[j] = (numerator[k] - known) / (denominator[m] * weight(m, j));
+    }
+    let back = product(denominator, &q, |d: f64, q: DVec3| q * d);
+    let size = numerator.iter().map(|c| c.length()).fold(0.0, f64::max);
+    let worst = back
+        .iter()
+        .zip(numerator)
+        .map(|(x, y)| x.distance(*y))
+        .fold(0.0, f64::max);
+    (worst <= QUOTIENT_ROUNDING * size).then_some(q)
 }
 
 /// The factors in u of every patch across one profile piece: h, C₂, C₃ (and C₁, its z,

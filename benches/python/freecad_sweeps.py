@@ -51,7 +51,44 @@ def main():
         assert solid.isValid() and shell.isValid(), name
         print("| %-44s %14.1f %10.1f %6.2fx" % (name, theirs * 1e3, ours * 1e3, theirs / ours))
     print("| ratio: FreeCAD's time over rmfsurf's (> 1: rmfsurf is faster)")
+    thread()
     transition()
+
+
+def poles(shape):
+    """B-spline poles of a shape's faces (what downstream work handles)."""
+    count = 0
+    for face in shape.Faces:
+        surface = face.Surface
+        if isinstance(surface, Part.BSplineSurface):
+            count += surface.NbUPoles * surface.NbVPoles
+    return count
+
+
+def thread():
+    """A thread's groove as FreeCAD users make it: a triangle in the axial plane through
+    the helix's start, swept with the Frenet frame (makePipeShell's isFrenet, rmfsurf's
+    frame="frenet"), then cut from a rod."""
+    helix = Part.Wire([Part.makeHelix(5, 40, 10)])
+    start = helix.OrderedEdges[0].valueAt(helix.OrderedEdges[0].FirstParameter)
+    triangle = Part.makePolygon([start + V(0.75, 0, -0.6), start + V(0.75, 0, 0.6),
+                                 start + V(-0.6, 0, 0), start + V(0.75, 0, -0.6)])
+    rod = Part.makeCylinder(10, 50, V(0, 0, -5))
+    print("| thread (rod - 8-turn groove, axial triangle, Frenet), tolerance 1e-5: milliseconds")
+    print("| %-28s %8s %9s %6s %8s %7s" % ("groove by", "groove", "boolean", "valid", "poles",
+                                            "ratio"))
+    base = None
+    for name, make in [
+            ("makePipeShell (Frenet)", lambda: helix.makePipeShell([triangle], True, True)),
+            ("rmfsurf (frame frenet)",
+             lambda: rfc.sweep(helix, Part.Face(triangle), frame="frenet", tolerance=1e-5))]:
+        groove_time, groove = best(make)
+        cut_time, cut = best(lambda: rod.cut(groove))
+        valid = groove.isValid() and cut.isValid() and len(cut.Solids) == 1
+        base = base or cut_time
+        print("| %-28s %8.1f %9.1f %6s %8d %6.2fx" % (
+            name, groove_time * 1e3, cut_time * 1e3, valid, poles(groove), cut_time / base))
+    print("| ratio: the boolean's time over the boolean with makePipeShell's groove")
 
 
 def first_export(make, runs=3):

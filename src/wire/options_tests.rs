@@ -775,3 +775,31 @@ fn sweeps_between_profiles_are_the_same_from_1e_200_to_1e200() {
         }
     }
 }
+
+/// A profile out of the normal plane adds the tangent to the faces; along a PH spline
+/// (whose frames hold its speed in their denominator) it goes over the frames' own
+/// denominator, so the faces are no heavier than the normal profile's.
+#[test]
+fn a_tilted_profile_along_a_ph_spline_keeps_the_faces_degree() {
+    let edges = [helix(3.0, 1.0, 1.0)];
+    for frame in [SweepFrame::Rmf, SweepFrame::Frenet] {
+        let degree = |profile: &PiecewiseCurve| {
+            let options = WireSweep {
+                frame,
+                tolerance: 1e-5,
+                ..WireSweep::default()
+            };
+            let shape = sweep_wire(&edges, profile, &[], &options).unwrap();
+            let surface = shape.faces()[0].surface.as_ref().unwrap();
+            surface
+                .patches()
+                .iter()
+                .map(|p| p.degree_v())
+                .max()
+                .unwrap()
+        };
+        let (normal, tilted) = (degree(&circle(0.3)), degree(&tilted_circle(0.3, 0.2)));
+        println!("{frame:?}: degree along the spine {normal} (normal plane), {tilted} (tilted)");
+        assert_eq!(normal, tilted, "{frame:?}");
+    }
+}
