@@ -1736,6 +1736,16 @@ typedef struct RmfWireSweepOptions {
    * on a closed wire.
    */
   double scale_end;
+  /**
+   * Added in 0.2 (after scale_end): how curve edges are swept — RMF_SPINE_PH_RMF
+   * (default: a PH cubic spline within tolerance and its rational approximation of the
+   * RMF), RMF_SPINE_MOBIUS or RMF_SPINE_RRMF (spines with exact rational RMFs: the
+   * parameter lines orthogonal to rounding). Lines and arcs are exact whatever the
+   * method. RMF_SPINE_FRENET is refused (the Frenet frame is options->frame =
+   * RMF_FRAME_FRENET); RMF_SPINE_MOBIUS and RMF_SPINE_RRMF take no scale law
+   * (scale_start = scale_end).
+   */
+  uint32_t method;
 } RmfWireSweepOptions;
 
 /**
@@ -4687,6 +4697,11 @@ RmfStatus rmf_wire_sweep_options_init(struct RmfWireSweepOptions *options);
  *   (RMF_FRAME_FIXED with options->frame_direction); options->scale_start and
  *   options->scale_end scale the profile about the spine, linearly in arc length (a
  *   frustum along a line);
+ * - options->method sweeps curve edges along spines with exact rational RMFs instead
+ *   (RMF_SPINE_MOBIUS: Möbius images of planar PH cubics, Bartoň, Jüttler & Wang;
+ *   RMF_SPINE_RRMF: RRMF quintics, Farouki, Giannelli & Sestini): the parameter lines of
+ *   their faces are orthogonal to rounding (report's max_parameter_cosine ~1e-14, where
+ *   the PH cubic's rational RMF leaves ~1e-7);
  * - sharp joints are rounded (a tangent arc, exact torus elbow) or mitred (options->corner);
  * - a closed wire closes without a seam: the RMF's holonomy is cancelled by the smallest
  *   turn modulo 2π/closure_symmetry, spread linearly in arc length;
