@@ -163,6 +163,9 @@ static void test_options(void) {
               o.frame_direction.z == 0 && o.scale_start == 1 && o.scale_end == 1,
           "the RMF, no fixed direction, scale 1 at both ends");
     CHECK(RMF_FRAME_RMF == 0 && RMF_FRAME_FRENET == 1 && RMF_FRAME_FIXED == 2, "frame codes fixed");
+    CHECK(o.method == RMF_SPINE_PH_RMF, "curve edges along the PH cubic spline's rational RMF by default");
+    CHECK(RMF_SPINE_PH_RMF == 0 && RMF_SPINE_FRENET == 1 && RMF_SPINE_MOBIUS == 2 && RMF_SPINE_RRMF == 3,
+          "method codes fixed");
     CHECK_STATUS(rmf_wire_sweep_options_init(NULL), RMF_ERROR_NULL_POINTER, "options");
 }
 
@@ -408,6 +411,13 @@ static void test_options_of_an_older_header(void) {
         CHECK(fabs(v - exact) <= 1e-12 * exact, "the default sweep");
     }
     rmf_shape_free(shape);
+    /* The header of frame and scale, before method: the PH cubic spline's RMF. */
+    o.struct_size = offsetof(RmfWireSweepOptions, method);
+    o.frame = RMF_FRAME_RMF, o.scale_start = 1, o.scale_end = 1, o.method = 77; /* not read */
+    CHECK(o.struct_size == 128, "the struct of 0.2 before method is 128 bytes");
+    CHECK_STATUS(rmf_wire_sweep(e, 3, profile, NULL, 0, &o, &shape), RMF_OK, "");
+    rmf_shape_free(shape);
+    shape = NULL;
     o.struct_size = offsetof(RmfWireSweepOptions, frame) - 8;
     REFUSED(rmf_wire_sweep(e, 3, profile, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
             "options->struct_size = 72 is no size of this struct (80 to");
@@ -446,6 +456,49 @@ static void test_scale_law_frustum(void) {
     rmf_curve_free(profile);
 }
 
+/* The spine method on a curve edge (intended behaviour of the geometry): a line into the
+   twisted cubic (t, t^2, t^3), tangent to it, with a circle of radius 0.05. The PH cubic
+   spline's rational RMF leaves its parameter lines off orthogonal by more than 1e-10; the
+   Moebius and RRMF spines carry exact rational RMFs, orthogonal to rounding (< 1e-12). Each
+   spine within its tolerance, each shape a closed solid whose volume agrees with the
+   ph-rmf one's to the tolerances. */
+static void test_spine_methods(void) {
+    const RmfVec3 poles[4] = {vec3(0, 0, 0), vec3(1.0 / 3, 0, 0), vec3(2.0 / 3, 1.0 / 3, 0), vec3(1, 1, 1)};
+    const double knots[8] = {0, 0, 0, 0, 1, 1, 1, 1};
+    RmfCurve *cubic = nurbs(3, poles, NULL, 4, knots), *profile = circle(0.05);
+    RmfEdge e[2] = {line(vec3(-1, 0, 0), vec3(0, 0, 0)),
+                    {RMF_EDGE_CURVE, {vec3(0, 0, 0), vec3(0, 0, 0), vec3(0, 0, 0)}, NULL}};
+    const uint32_t methods[3] = {RMF_SPINE_PH_RMF, RMF_SPINE_MOBIUS, RMF_SPINE_RRMF};
+    const double tolerances[3] = {1e-5, 1e-5, 1e-4};
+    double cosines[3] = {0, 1, 1}, volumes[3] = {0, 0, 0};
+    e[1].curve = cubic;
+    for (int k = 0; k < 3; ++k) {
+        RmfWireSweepOptions o;
+        RmfShape *shape = NULL;
+        RmfSweepReport r;
+        rmf_wire_sweep_options_init(&o);
+        o.method = methods[k];
+        o.tolerance = tolerances[k];
+        CHECK_STATUS(rmf_wire_sweep(e, 2, profile, NULL, 0, &o, &shape), RMF_OK, "");
+        if (!shape) continue;
+        CHECK_STATUS(rmf_shape_report(shape, &r), RMF_OK, "");
+        cosines[k] = r.max_parameter_cosine;
+        volumes[k] = volume(shape);
+        printf("line into the twisted cubic, method %u: max |cos| %.1e, spine within %.1e, volume %.15f\n",
+               (unsigned)methods[k], r.max_parameter_cosine, r.spine_distance, volumes[k]);
+        CHECK(rmf_shape_is_solid(shape) == 1, "a closed solid");
+        CHECK(r.spine_distance <= tolerances[k], "the spine within the tolerance");
+        rmf_shape_free(shape);
+    }
+    CHECK(cosines[0] > 1e-10, "the PH cubic spline's rational RMF: parameter lines off orthogonal by > 1e-10");
+    CHECK(cosines[1] < 1e-12, "the Moebius spine's exact RMF: parameter lines orthogonal to rounding");
+    CHECK(cosines[2] < 1e-12, "the RRMF spine's exact RMF: parameter lines orthogonal to rounding");
+    /* pi r^2 times lengths that differ by the spines' distances from the cubic. */
+    CHECK(fabs(volumes[1] - volumes[0]) <= 1e-6 * volumes[0] && fabs(volumes[2] - volumes[0]) <= 1e-5 * volumes[0],
+          "the same tube");
+    rmf_curve_free(profile);
+    rmf_curve_free(cubic);
+}
 
 static void test_bad_inputs(void) {
     RmfEdge e[3], bad[3];
@@ -559,6 +612,19 @@ static void test_bad_inputs(void) {
         o.scale_end = HUGE_VAL;
         REFUSED(rmf_wire_sweep(poly, 3, tiny, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
                 "options->scale_end = inf");
+        /* The spine method: unknown codes, the Frenet frame (options->frame's), and a scale law
+           with the exact-RMF methods, each refused naming options->method. */
+        rmf_wire_sweep_options_init(&o);
+        o.method = 4;
+        REFUSED(rmf_wire_sweep(poly, 3, tiny, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
+                "options->method = 4 is no method of a wire sweep");
+        o.method = RMF_SPINE_FRENET;
+        REFUSED(rmf_wire_sweep(poly, 3, tiny, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
+                "options->method = 1: frenet makes Frenet frames");
+        o.method = RMF_SPINE_RRMF;
+        o.scale_end = 2;
+        REFUSED(rmf_wire_sweep(poly, 3, tiny, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
+                "options->method = 3: a scale law is exact along PH splines");
         rmf_curve_free(tiny);
     }
     /* Accessors on NULL and out of range; no file for a failure. */
@@ -597,5 +663,6 @@ int main(void) {
     test_bad_inputs();
     test_options_of_an_older_header();
     test_scale_law_frustum();
+    test_spine_methods();
     return rmf_check_exit_code("abi_wire");
 }

@@ -1736,6 +1736,16 @@ typedef struct RmfWireSweepOptions {
    * on a closed wire.
    */
   double scale_end;
+  /**
+   * Added in 0.2 (after scale_end): how curve edges are swept — RMF_SPINE_PH_RMF
+   * (default: a PH cubic spline within tolerance and its rational approximation of the
+   * RMF), RMF_SPINE_MOBIUS or RMF_SPINE_RRMF (spines with exact rational RMFs: the
+   * parameter lines orthogonal to rounding). Lines and arcs are exact whatever the
+   * method. RMF_SPINE_FRENET is refused (the Frenet frame is options->frame =
+   * RMF_FRAME_FRENET); RMF_SPINE_MOBIUS and RMF_SPINE_RRMF take no scale law
+   * (scale_start = scale_end).
+   */
+  uint32_t method;
 } RmfWireSweepOptions;
 
 /**
@@ -4687,6 +4697,11 @@ RmfStatus rmf_wire_sweep_options_init(struct RmfWireSweepOptions *options);
  *   (RMF_FRAME_FIXED with options->frame_direction); options->scale_start and
  *   options->scale_end scale the profile about the spine, linearly in arc length (a
  *   frustum along a line);
+ * - options->method sweeps curve edges along spines with exact rational RMFs instead
+ *   (RMF_SPINE_MOBIUS: Möbius images of planar PH cubics, Bartoň, Jüttler & Wang;
+ *   RMF_SPINE_RRMF: RRMF quintics, Farouki, Giannelli & Sestini): the parameter lines of
+ *   their faces are orthogonal to rounding (report's max_parameter_cosine ~1e-14, where
+ *   the PH cubic's rational RMF leaves ~1e-7);
  * - sharp joints are rounded (a tangent arc, exact torus elbow) or mitred (options->corner);
  * - a closed wire closes without a seam: the RMF's holonomy is cancelled by the smallest
  *   turn modulo 2π/closure_symmetry, spread linearly in arc length;
@@ -4730,6 +4745,40 @@ RmfStatus rmf_wire_sweep(const struct RmfEdge *edges,
                          size_t hole_count,
                          const struct RmfWireSweepOptions *options,
                          struct RmfShape **out);
+
+/**
+ * rmf_wire_sweep from `profile` (with `holes`) at the wire's start to `end_profile` (with
+ * `end_holes`) at its end: the section blends linearly in arc length. Each loop is matched
+ * to its counterpart (hole to hole, the same turning sense, the loop with fewer edges
+ * split at the middle of its longest, corner to the nearest corner), each pair of matched
+ * segments written over one denominator: exact rational faces (Mäurer & Jüttler (1) with
+ * a moving profile; along arcs within options->tolerance). A circle into a smaller
+ * concentric circle is the scale law's sweep.
+ *
+ * @param[in] edges, edge_count, profile, holes, hole_count, options As for rmf_wire_sweep.
+ * @param[in] end_profile The outer loop at the wire's end (same coordinates as profile).
+ * @param[in] end_holes end_hole_count inner loops (as many as holes), or NULL when 0.
+ * @param[in] end_hole_count Number of end holes.
+ * @param[out] out Receives the shape; free with rmf_shape_free. Untouched on failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If edges, a profile, a hole array with a count > 0 or out
+ *         is NULL.
+ * @return RMF_ERROR_INVALID_INPUT As for rmf_wire_sweep; also (the message naming
+ *         end_profile) for a different number of holes, a closed wire, a scale law beside
+ *         the end profile, a profile out of the normal plane.
+ * \since 0.2
+ * \ingroup rmf_wire
+ */
+RmfStatus rmf_wire_sweep_between(const struct RmfEdge *edges,
+                                 size_t edge_count,
+                                 const struct RmfCurve *profile,
+                                 const struct RmfCurve *const *holes,
+                                 size_t hole_count,
+                                 const struct RmfCurve *end_profile,
+                                 const struct RmfCurve *const *end_holes,
+                                 size_t end_hole_count,
+                                 const struct RmfWireSweepOptions *options,
+                                 struct RmfShape **out);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -7,12 +7,16 @@ use super::boundary::{
     OptionsStruct,
 };
 use super::curve::RmfCurve;
+use super::frames::{RMF_SPINE_FRENET, RMF_SPINE_MOBIUS, RMF_SPINE_PH_RMF, RMF_SPINE_RRMF};
 use super::shape::RmfShape;
 use super::status::RmfStatus;
 use super::types::RmfVec3;
 use rmfsurf::glam::DVec3;
 use rmfsurf::PiecewiseCurve;
-use rmfsurf::{sweep_wire, sweep_wire_between, Corner, Edge, SweepFrame, WireSweep, MAX_FACES};
+use rmfsurf::{
+    sweep_wire, sweep_wire_between, Corner, Edge, Error, SpineMethod, SweepFrame, WireSweep,
+    MAX_FACES,
+};
 
 /// What an RmfEdge is (values fixed, validated).
 /// \ingroup rmf_wire
@@ -120,6 +124,14 @@ pub struct RmfWireSweepOptions {
     /// The profile's scale at the wire's end (finite, > 0; default 1); equal to scale_start
     /// on a closed wire.
     pub scale_end: f64,
+    /// Added in 0.2 (after scale_end): how curve edges are swept — RMF_SPINE_PH_RMF
+    /// (default: a PH cubic spline within tolerance and its rational approximation of the
+    /// RMF), RMF_SPINE_MOBIUS or RMF_SPINE_RRMF (spines with exact rational RMFs: the
+    /// parameter lines orthogonal to rounding). Lines and arcs are exact whatever the
+    /// method. RMF_SPINE_FRENET is refused (the Frenet frame is options->frame =
+    /// RMF_FRAME_FRENET); RMF_SPINE_MOBIUS and RMF_SPINE_RRMF take no scale law
+    /// (scale_start = scale_end).
+    pub method: u32,
 }
 
 impl Default for RmfWireSweepOptions {
@@ -139,6 +151,7 @@ impl Default for RmfWireSweepOptions {
             frame_direction: RmfVec3::default(),
             scale_start: d.scale[0],
             scale_end: d.scale[1],
+            method: RMF_SPINE_PH_RMF,
         }
     }
 }
@@ -147,7 +160,7 @@ impl Default for RmfWireSweepOptions {
 // pattern is a value, validated on use).
 unsafe impl OptionsStruct for RmfWireSweepOptions {
     /// The struct up to `solid`, before `frame` was added: a caller built against that
-    /// header gets the defaults of the fields after it.
+    /// header (or the one before `method`) gets the defaults of the fields after it.
     const FIRST_SIZE: usize = std::mem::offset_of!(RmfWireSweepOptions, frame);
 }
 
@@ -218,6 +231,19 @@ fn wire_options(o: &RmfWireSweepOptions) -> Result<WireSweep, FfiError> {
             ));
         }
     }
+    let method = match o.method {
+        RMF_SPINE_PH_RMF => SpineMethod::PhRmf,
+        // Refused by the geometry, whose message `blame_method` puts on options->method.
+        RMF_SPINE_FRENET => SpineMethod::Frenet,
+        RMF_SPINE_MOBIUS => SpineMethod::Mobius,
+        RMF_SPINE_RRMF => SpineMethod::Rrmf,
+        other => {
+            return invalid_arg(format!(
+                "options->method = {other} is no method of a wire sweep (RMF_SPINE_PH_RMF = \
+                 0, RMF_SPINE_MOBIUS = 2, RMF_SPINE_RRMF = 3)"
+            ))
+        }
+    };
     let normal: DVec3 = o.initial_normal.into();
     if normal != DVec3::ZERO && frame != SweepFrame::Rmf {
         return invalid_arg(format!(
@@ -236,7 +262,29 @@ fn wire_options(o: &RmfWireSweepOptions) -> Result<WireSweep, FfiError> {
         solid: o.solid == 1,
         frame,
         scale: [o.scale_start, o.scale_end],
+        method,
     })
+}
+
+/// The geometry's refusals of the method (`method: …`) and of a scale law with it
+/// (`scale: …`) with the fields of the options named.
+fn blame_method(e: Error, o: &RmfWireSweepOptions) -> Error {
+    let fields = if let Some(rest) = e.reason().strip_prefix("method: ") {
+        format!("options->method = {}: {rest}", o.method)
+    } else if let Some(rest) = e.reason().strip_prefix("scale: ") {
+        format!(
+            "options->scale_start = {}, options->scale_end = {} with options->method = {}: \
+             {rest}",
+            o.scale_start, o.scale_end, o.method
+        )
+    } else {
+        return e;
+    };
+    let contexts: Vec<&str> = e.contexts().collect();
+    contexts
+        .into_iter()
+        .rev()
+        .fold(Error::new(e.kind(), fields), |e, c| e.context(c))
 }
 
 /// The edges as the geometry takes them (kinds and points checked, curves borrowed).
@@ -304,6 +352,11 @@ unsafe fn wire_edges(edges: &[RmfEdge]) -> Result<Vec<Edge>, FfiError> {
 ///   (RMF_FRAME_FIXED with options->frame_direction); options->scale_start and
 ///   options->scale_end scale the profile about the spine, linearly in arc length (a
 ///   frustum along a line);
+/// - options->method sweeps curve edges along spines with exact rational RMFs instead
+///   (RMF_SPINE_MOBIUS: Möbius images of planar PH cubics, Bartoň, Jüttler & Wang;
+///   RMF_SPINE_RRMF: RRMF quintics, Farouki, Giannelli & Sestini): the parameter lines of
+///   their faces are orthogonal to rounding (report's max_parameter_cosine ~1e-14, where
+///   the PH cubic's rational RMF leaves ~1e-7);
 /// - sharp joints are rounded (a tangent arc, exact torus elbow) or mitred (options->corner);
 /// - a closed wire closes without a seam: the RMF's holonomy is cancelled by the smallest
 ///   turn modulo 2π/closure_symmetry, spread linearly in arc length;
@@ -356,8 +409,10 @@ pub unsafe extern "C" fn rmf_wire_sweep(
         let edges = wire_edges(edges)?;
         let profile = reference(profile, "profile")?;
         let holes = loops(holes, hole_count, "holes")?;
-        let options = wire_options(&read_options(options, "options")?)?;
-        let shape = sweep_wire(&edges, profile.rational("profile")?, &holes, &options)?;
+        let raw = read_options(options, "options")?;
+        let options = wire_options(&raw)?;
+        let shape = sweep_wire(&edges, profile.rational("profile")?, &holes, &options)
+            .map_err(|e| blame_method(e, &raw))?;
         write(out, RmfShape::new(shape).into_raw());
         Ok(())
     })
@@ -408,7 +463,8 @@ pub unsafe extern "C" fn rmf_wire_sweep_between(
         let holes = loops(holes, hole_count, "holes")?;
         let end_profile = reference(end_profile, "end_profile")?;
         let end_holes = loops(end_holes, end_hole_count, "end_holes")?;
-        let options = wire_options(&read_options(options, "options")?)?;
+        let raw = read_options(options, "options")?;
+        let options = wire_options(&raw)?;
         let shape = sweep_wire_between(
             &edges,
             profile.rational("profile")?,
@@ -416,7 +472,8 @@ pub unsafe extern "C" fn rmf_wire_sweep_between(
             end_profile.rational("end_profile")?,
             &end_holes,
             &options,
-        )?;
+        )
+        .map_err(|e| blame_method(e, &raw))?;
         write(out, RmfShape::new(shape).into_raw());
         Ok(())
     })

@@ -1670,6 +1670,36 @@ fn rows() -> Vec<Row> {
             call: |_| wire_sweep(&pipe_route(), circle(1.0), &[], |o| o.scale_end = 0.0),
         },
         Row {
+            what: "unknown wire sweep method",
+            function: "rmf_wire_sweep",
+            expected: INVALID,
+            names: "options->method = 7 is no method of a wire sweep",
+            call: |_| wire_sweep(&pipe_route(), circle(1.0), &[], |o| o.method = 7),
+        },
+        Row {
+            what: "Frenet spine method on a wire",
+            function: "rmf_wire_sweep",
+            expected: INVALID,
+            names: "options->method = 1: frenet makes Frenet frames",
+            call: |_| {
+                wire_sweep(&pipe_route(), circle(1.0), &[], |o| {
+                    o.method = RMF_SPINE_FRENET
+                })
+            },
+        },
+        Row {
+            what: "scale law with an exact-RMF method",
+            function: "rmf_wire_sweep",
+            expected: INVALID,
+            names: "options->scale_start = 1, options->scale_end = 0.5 with options->method = 2",
+            call: |_| {
+                wire_sweep(&pipe_route(), circle(1.0), &[], |o| {
+                    o.method = RMF_SPINE_MOBIUS;
+                    o.scale_end = 0.5;
+                })
+            },
+        },
+        Row {
             what: "face index out of range",
             function: "rmf_shape_face",
             expected: INVALID,
@@ -2075,6 +2105,31 @@ fn status_name(status: RmfStatus) -> String {
     unsafe { CStr::from_ptr(rmf_status_name(status as u32)) }
         .to_string_lossy()
         .into_owned()
+}
+
+/// The method of wire sweeps defaults to the PH cubic spline's rational RMF, and each
+/// method of a wire sweep is taken on the pipe route (lines and an arc: exact whatever
+/// the method).
+#[test]
+fn wire_sweep_method_defaults_to_ph_rmf() {
+    let mut options = std::mem::MaybeUninit::<RmfWireSweepOptions>::uninit();
+    let options = unsafe {
+        assert_eq!(
+            rmf_wire_sweep_options_init(options.as_mut_ptr()),
+            RmfStatus::RmfOk
+        );
+        options.assume_init()
+    };
+    assert_eq!(options.method, RMF_SPINE_PH_RMF);
+    for method in [RMF_SPINE_PH_RMF, RMF_SPINE_MOBIUS, RMF_SPINE_RRMF] {
+        let status = wire_sweep(&pipe_route(), circle(1.0), &[], |o| o.method = method);
+        assert_eq!(
+            status,
+            RmfStatus::RmfOk,
+            "method {method}: {}",
+            last_error()
+        );
+    }
 }
 
 #[test]

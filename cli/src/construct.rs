@@ -130,6 +130,7 @@ pub fn run_wire(job: &WireJob) -> Result<Shape, InputError> {
         solid: job.solid,
         frame: job.frame,
         scale: job.scale,
+        method: job.method,
     };
     sweep_wire(&edges, &profile, &holes, &options).map_err(|e| InputError {
         path: wire_blame(&e.message()),
@@ -153,7 +154,7 @@ fn wire_blame(message: &str) -> String {
     if message.starts_with("profile") {
         return "sweep.profile".into();
     }
-    for field in ["scale", "frame", "initial_normal"] {
+    for field in ["scale", "frame", "initial_normal", "method"] {
         if message.starts_with(&format!("{field}:")) || message.starts_with(&format!("{field} =")) {
             return format!("sweep.{field}");
         }

@@ -89,6 +89,9 @@ pub struct WireJob {
     pub frame: rmfsurf::SweepFrame,
     /// The profile's scale at the wire's start and end (default `[1, 1]`).
     pub scale: [f64; 2],
+    /// How curve edges are swept (default ph-rmf; mobius and rrmf carry exact rational
+    /// RMFs; frenet is refused by the library, blamed on `sweep.method`).
+    pub method: SpineMethod,
 }
 
 /// What a sheet-metal part is made from.
@@ -252,13 +255,6 @@ fn vectors<P: Into<DVec3>>(points: Vec<P>) -> Vec<DVec3> {
 }
 
 fn wire_job(sweep: schema::Sweep) -> InputResult<WireJob> {
-    if sweep.method.is_some() {
-        return Err(InputError::at(
-            "sweep.method",
-            "only for a sweep along a curve (spine nurbs or points); a wire's frames are \
-             rotation-minimizing unless \"frame\" says otherwise",
-        ));
-    }
     let spine = sweep.spine;
     if let Some((name, _)) = [
         ("nurbs", spine.nurbs.is_some()),
@@ -315,6 +311,7 @@ fn wire_job(sweep: schema::Sweep) -> InputResult<WireJob> {
         solid: sweep.solid.map_or(defaults.solid, |s| s.0),
         frame: sweep.frame.map_or(defaults.frame, |f| f.0),
         scale: sweep.scale.map_or(defaults.scale, |s| s.0),
+        method: sweep.method.map_or(defaults.method, |m| m.0),
     })
 }
 

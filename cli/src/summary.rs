@@ -45,7 +45,9 @@ impl Summary {
                 sweep_figures(j.method, j.profile_is_line, o)?
             }
             (_, Outcome::ConeSpline(o)) => cone_figures(o)?,
-            (Construction::Wire(j), Outcome::Wire(shape)) => wire_figures(j.edges.len(), shape),
+            (Construction::Wire(j), Outcome::Wire(shape)) => {
+                wire_figures(j.edges.len(), j.method, shape)
+            }
             (_, Outcome::Sheet(o)) => sheet_figures(o)?,
             _ => unreachable!("the outcome matches the job"),
         };
@@ -178,7 +180,7 @@ fn sweep_figures(
     Ok(figures)
 }
 
-fn wire_figures(edges: usize, shape: &rmfsurf::Shape) -> Vec<Figure> {
+fn wire_figures(edges: usize, method: SpineMethod, shape: &rmfsurf::Shape) -> Vec<Figure> {
     let r = shape.report();
     let caps = shape
         .faces()
@@ -189,7 +191,15 @@ fn wire_figures(edges: usize, shape: &rmfsurf::Shape) -> Vec<Figure> {
         figure(
             "method",
             "method",
-            "wire sweep: lines and arcs exact, curves by PH cubic splines with rational RMFs (Mäurer & Jüttler)",
+            match method {
+                SpineMethod::Mobius => {
+                    "wire sweep (mobius): lines and arcs exact, curves by Möbius images of planar PH cubics with exact rational RMFs (Bartoň, Jüttler & Wang)"
+                }
+                SpineMethod::Rrmf => {
+                    "wire sweep (rrmf): lines and arcs exact, curves by RRMF quintics with exact rational RMFs (Farouki, Giannelli & Sestini)"
+                }
+                _ => "wire sweep: lines and arcs exact, curves by PH cubic splines with rational RMFs (Mäurer & Jüttler)",
+            },
         ),
         figure("edges", "wire edges", edges),
         figure("spine_pieces", "spine pieces (lines, arcs, elbows, PH splines)", shape.spine().len()),

@@ -554,6 +554,90 @@ fn wire_sweep_frames_and_scales_are_read_and_refused_at_the_field() {
     }
 }
 
+/// A circle of radius 0.05 along a line into the twisted cubic (t, t², t³) as a NURBS edge
+/// tangent to it, with `extra` keys in the sweep.
+fn cubic_job(extra: &str) -> String {
+    format!(
+        r#"{{"sweep": {{"spine": {{"wire": [
+              {{"line": {{"from": [-1, 0, 0], "to": [0, 0, 0]}}}},
+              {{"nurbs": {{"degree": 3, "poles": [[0, 0, 0], [0.3333333333333333, 0, 0],
+                [0.6666666666666666, 0.3333333333333333, 0], [1, 1, 1]],
+                "knots": [0, 0, 0, 0, 1, 1, 1, 1]}}}}]}},
+            {extra}"profile": {{"circle": {{"radius": 0.05}}}}}}}}"#
+    )
+}
+
+/// `"method"` ("ph-rmf", "mobius", "rrmf") is read on wire sweeps: lines are exact whatever
+/// the method (the cylinder's volume to 1e-9); on a NURBS edge the Möbius and RRMF spines
+/// carry exact rational RMFs, so the summary's max |cos| between parameter lines is at
+/// rounding (< 1e-12), where the PH cubic's rational RMF leaves more than 1e-10. Refused at
+/// the field: "frenet" (the library's message: the Frenet frame is "frame"'s), a scale law
+/// with mobius, an unknown name.
+#[test]
+fn wire_sweep_methods_are_read_and_refused_at_the_field() {
+    for (k, method) in ["ph-rmf", "mobius", "rrmf"].iter().enumerate() {
+        let f = wire_figures(
+            &format!("wire_method_{k}"),
+            &line_job(&format!(r#""method": "{method}", "#)),
+        );
+        let volume = f["volume"].as_f64().unwrap();
+        let cylinder = 3.0 * std::f64::consts::PI;
+        assert!(
+            (volume - cylinder).abs() <= 1e-9 * cylinder,
+            "{method}: {volume}"
+        );
+        assert_eq!(f["solid"], serde_json::json!(true), "{method}");
+    }
+    let mut cosines = Vec::new();
+    for (k, (method, tolerance)) in [("ph-rmf", 1e-5), ("mobius", 1e-5), ("rrmf", 1e-4)]
+        .iter()
+        .enumerate()
+    {
+        let f = wire_figures(
+            &format!("wire_method_cubic_{k}"),
+            &cubic_job(&format!(
+                r#""method": "{method}", "tolerance": {tolerance}, "#
+            )),
+        );
+        let cosine = f["orthogonality"].as_f64().unwrap();
+        let distance = f["spine_distance"].as_f64().unwrap();
+        println!("{method}: max |cos| {cosine:.1e}, spine within {distance:.1e}");
+        assert!(distance <= *tolerance, "{method}: {distance}");
+        assert_eq!(f["solid"], serde_json::json!(true), "{method}");
+        if *method != "ph-rmf" {
+            let label = f["method"].as_str().unwrap();
+            assert!(label.contains(&format!("({method})")), "{label}");
+        }
+        cosines.push(cosine);
+    }
+    assert!(cosines[0] > 1e-10, "ph-rmf: {}", cosines[0]);
+    assert!(cosines[1] < 1e-12, "mobius: {}", cosines[1]);
+    assert!(cosines[2] < 1e-12, "rrmf: {}", cosines[2]);
+    let cases = [
+        (
+            r#""method": "frenet", "#,
+            "sweep.method: method: frenet makes Frenet frames, which a wire sweep asks for \
+             with its frame option",
+        ),
+        (
+            r#""method": "mobius", "scale": [1, 0.5], "#,
+            "sweep.scale: scale: a scale law is exact along PH splines",
+        ),
+        (
+            r#""method": "spline", "#,
+            "sweep.method: unknown method \"spline\"; expected one of ph-rmf, frenet, mobius, rrmf",
+        ),
+        (r#""method": 2, "#, "sweep.method"),
+    ];
+    for (k, (extra, expected)) in cases.iter().enumerate() {
+        wire_fails_with(
+            &format!("wire_method_bad_{k}"),
+            &line_job(extra),
+            &[expected],
+        );
+    }
+}
+
 /// The scale law (intended behaviour of the geometry): a circle of radius 1 scaled from 1
 /// to ½ along a line of length 3 is the frustum of volume π L (r₀² + r₀r₁ + r₁²)/3.
 #[test]

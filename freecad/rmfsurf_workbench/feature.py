@@ -69,6 +69,7 @@ class Property:
 
     def add(self, obj):
         if self.name in obj.PropertiesList:
+            self.update_enumeration(obj)
             return
         obj.addProperty(self.kind, self.name, self.group, self.doc,
                         _READ_ONLY | _OUTPUT if self.output else 0)
@@ -76,6 +77,16 @@ class Property:
             setattr(obj, self.name, list(self.enum))
         if self.default is not None:
             setattr(obj, self.name, self.default)
+
+
+    def update_enumeration(self, obj):
+        """An enumeration saved by an older workbench gets the choices offered since; its
+        value is kept where it is still offered, else the first choice (the default)."""
+        if self.enum is None or obj.getEnumerationsOfProperty(self.name) == list(self.enum):
+            return
+        value = getattr(obj, self.name)
+        setattr(obj, self.name, list(self.enum))
+        setattr(obj, self.name, value if value in self.enum else self.enum[0])
 
 
 class Feature:

@@ -3,12 +3,13 @@ Frenet frame, or a frame following a fixed direction; the profile scaled linearl
 ScaleStart to ScaleEnd), by the library's wire sweep (``rmf_wire_sweep`` through :func:`rmfsurf.freecad.sweep_with_report`).
 
 Lines and circular arcs of the spine give exact cylinders and tori; curve edges are
-approximated by a PH cubic spline within the tolerance and carry its rational RMF in closed
-form (Mäurer & Jüttler, eqs. (36)–(41)), one RMF across every joint; sharp joints get round
-(torus) or mitred corners. The wire sweep offers the PH RMF only (Method "ph-rmf"): the
-Möbius (Bartoň, Jüttler & Wang) and RRMF-quintic (Farouki, Giannelli & Sestini) frames are
-single-curve constructions of the Python package (``rmfsurf.freecad.spine_with_frames``),
-not wire sweeps.
+swept along a spine within the tolerance by the Method: "ph-rmf" (default), a PH cubic
+spline with its rational RMF in closed form (Mäurer & Jüttler, eqs. (36)–(41)); "mobius",
+Möbius images of planar PH cubics (Bartoň, Jüttler & Wang), or "rrmf", RRMF quintics
+(Farouki, Giannelli & Sestini), both with exact rational RMFs, so the parameter lines are
+orthogonal to rounding (Orthogonality ~1e-14, ~1e-7 with ph-rmf). One RMF runs across every
+joint; sharp joints get round (torus) or mitred corners. Mobius and rrmf take no scale law
+(ScaleStart = ScaleEnd).
 
 The accuracy figures are the library's report (``rmf_shape_report``), measured on the
 result.
@@ -20,7 +21,7 @@ from . import inputs
 from .feature import Feature, Property
 from .view import attach_view, hide
 
-METHODS = ("ph-rmf",)
+METHODS = ("ph-rmf", "mobius", "rrmf")
 CORNERS = ("round", "miter")
 FRAMES = ("rmf", "frenet", "fixed")
 
@@ -35,8 +36,10 @@ class SweepFeature(Feature):
                  "plane normal to the spine at its start; its x axis is the frame's initial "
                  "normal"),
         Property("App::PropertyEnumeration", "Method", "Sweep",
-                 "The frame: ph-rmf, the rational RMF of the PH cubic spline (exact on "
-                 "lines and arcs); the wire sweep offers no other", enum=METHODS),
+                 "How curve edges are swept: ph-rmf, the PH cubic spline with its rational "
+                 "RMF; mobius or rrmf, spines with exact rational RMFs (parameter lines "
+                 "orthogonal to rounding; no scale law). Lines and arcs are exact whatever "
+                 "the method", enum=METHODS),
         Property("App::PropertyEnumeration", "Corner", "Sweep",
                  "Sharp joints of the spine: round (a torus elbow) or miter", enum=CORNERS),
         Property("App::PropertyLength", "CornerRadius", "Sweep",
@@ -90,6 +93,10 @@ class SweepFeature(Feature):
         from rmfsurf.freecad import sweep_with_report
         if obj.Method not in METHODS:
             raise ValueError("Method: %r is not offered by the wire sweep" % obj.Method)
+        if obj.Method != "ph-rmf" and obj.ScaleStart != obj.ScaleEnd:
+            raise ValueError("Method: %s takes a constant scale (ScaleStart %r, ScaleEnd %r); "
+                             "a scale law needs ph-rmf" % (obj.Method, obj.ScaleStart,
+                                                           obj.ScaleEnd))
         if obj.ClosureSymmetry < 0:
             raise ValueError("ClosureSymmetry: must be 0 or a symmetry order k >= 1, got %d"
                              % obj.ClosureSymmetry)
@@ -109,7 +116,7 @@ class SweepFeature(Feature):
             solid=obj.Solid, corner=obj.Corner, corner_radius=radius if radius > 0 else None,
             tolerance=obj.Tolerance, twist=math.radians(obj.Twist.Value),
             closure_symmetry=obj.ClosureSymmetry, frame=frame,
-            scale=(obj.ScaleStart, obj.ScaleEnd))
+            scale=(obj.ScaleStart, obj.ScaleEnd), method=obj.Method)
         obj.Shape = shape
         self.set_outputs(obj, SpineDistance=report.spine_distance,
                          RmfDefect=report.rmf_angle_error,

@@ -431,7 +431,8 @@ def _start_principal_normal(wire: Any) -> Optional[np.ndarray]:
 
 def sweep(wire: Any, profile: Any, *, solid: bool = True, corner: str = "round",
           corner_radius: Optional[float] = None, tolerance: float = 1e-4,
-          frame: SweepFrame = "rmf", scale: Tuple[float, float] = (1.0, 1.0)) -> Any:
+          frame: SweepFrame = "rmf", scale: Tuple[float, float] = (1.0, 1.0),
+          method: str = "ph-rmf") -> Any:
     """Sweeps `profile` along `wire` (rmf_wire_sweep), by default with rotation-minimizing
     frames.
 
@@ -456,20 +457,23 @@ def sweep(wire: Any, profile: Any, *, solid: bool = True, corner: str = "round",
             chooses f2 there.
         scale: the profile's scale (start, end), linear in arc length: two positive
             numbers ((1, 0.5) tapers a circle along a line into a frustum).
+        method: how the wire's curves are swept: "ph-rmf" (default), "mobius" or "rrmf"
+            (spines with exact rational RMFs: parameter lines orthogonal to rounding); see
+            :func:`rmfsurf.wire_sweep`. Lines and arcs are exact whatever the method.
 
     Returns:
         A Part.Shape: a Part.Solid (or a Part.Shell with ``solid=False``).
     """
     return sweep_with_report(wire, profile, solid=solid, corner=corner,
                              corner_radius=corner_radius, tolerance=tolerance, frame=frame,
-                             scale=scale)[0]
+                             scale=scale, method=method)[0]
 
 
 def sweep_with_report(wire: Any, profile: Any, *, solid: bool = True, corner: str = "round",
                       corner_radius: Optional[float] = None, tolerance: float = 1e-4,
                       twist: float = 0.0, closure_symmetry: int = 0,
-                      frame: SweepFrame = "rmf", scale: Tuple[float, float] = (1.0, 1.0)
-                      ) -> Tuple[Any, SweepReport]:
+                      frame: SweepFrame = "rmf", scale: Tuple[float, float] = (1.0, 1.0),
+                      method: str = "ph-rmf") -> Tuple[Any, SweepReport]:
     """:func:`sweep` with the wire sweep's `twist` (radians over the whole wire) and
     `closure_symmetry` (closed wires: the frame closes modulo 2π/k; 0 is taken as 1),
     returning the Part.Shape and the library's :class:`rmfsurf.SweepReport` (spine
@@ -484,7 +488,8 @@ def sweep_with_report(wire: Any, profile: Any, *, solid: bool = True, corner: st
     result = wire_sweep(edges, outer, holes, solid=solid, corner=corner,
                         corner_radius=corner_radius, tolerance=tolerance,
                         initial_normal=f2 if _named(frame, "rmf") else None, twist=twist,
-                        closure_symmetry=closure_symmetry, frame=frame, scale=scale)
+                        closure_symmetry=closure_symmetry, frame=frame, scale=scale,
+                        method=method)
     return part_shape(result, min(tolerance, 1e-6)), result.report()
 
 

@@ -497,7 +497,8 @@ def _wrap_like(template: Any, raw: Any) -> Any:
 
 def sweep(path: Any, profile: Any, *, solid: bool = True, corner: str = "round",
           corner_radius: Optional[float] = None, tolerance: float = 1e-4,
-          frame: SweepFrame = "rmf", scale: Tuple[float, float] = (1.0, 1.0)) -> Any:
+          frame: SweepFrame = "rmf", scale: Tuple[float, float] = (1.0, 1.0),
+          method: str = "ph-rmf") -> Any:
     """Sweeps `profile` along `path` (rmf_wire_sweep), by default with rotation-minimizing
     frames.
 
@@ -522,6 +523,9 @@ def sweep(path: Any, profile: Any, *, solid: bool = True, corner: str = "round",
             library chooses f2 there.
         scale: the profile's scale (start, end), linear in arc length: two positive
             numbers ((1, 0.5) tapers a circle along a line into a frustum).
+        method: how the path's curves are swept: "ph-rmf" (default), "mobius" or "rrmf"
+            (spines with exact rational RMFs: parameter lines orthogonal to rounding); see
+            :func:`rmfsurf.wire_sweep`. Lines and arcs are exact whatever the method.
 
     Returns:
         A ``TopoDS_Solid`` (or shell) — a build123d ``Solid`` / CadQuery ``Shape`` when
@@ -536,5 +540,5 @@ def sweep(path: Any, profile: Any, *, solid: bool = True, corner: str = "round",
     result = wire_sweep(edges, outer, holes, solid=solid, corner=corner,
                         corner_radius=corner_radius, tolerance=tolerance,
                         initial_normal=f2 if _named(frame, "rmf") else None, frame=frame,
-                        scale=scale)
+                        scale=scale, method=method)
     return _wrap_like(path, shape(result, min(tolerance, 1e-6)))

@@ -119,6 +119,18 @@ def _scale(value: Any) -> Tuple[float, float]:
     return start, end
 
 
+def _wire_method(value: Any) -> int:
+    """The RMF_SPINE_* code of a wire sweep's `method`: "ph-rmf", "mobius" or "rrmf".
+    TypeError for what is no string, ValueError for another name (with a pointer to
+    `frame` for "frenet"); each message names `method`."""
+    methods = {"ph-rmf": lib.RMF_SPINE_PH_RMF, "mobius": lib.RMF_SPINE_MOBIUS,
+               "rrmf": lib.RMF_SPINE_RRMF}
+    if isinstance(value, str) and value == "frenet":
+        raise ValueError("method: expected one of 'ph-rmf', 'mobius', 'rrmf', got 'frenet' "
+                         "(a wire sweep asks for Frenet frames with frame='frenet')")
+    return int(_core.choice(value, "method", methods))
+
+
 def _named(frame: Any, name: str) -> bool:
     """Whether `frame` is the frame called `name` ("rmf", "frenet")."""
     return isinstance(frame, str) and frame == name
@@ -280,7 +292,7 @@ def wire_sweep(edges: Union[Edge, Sequence[Edge]], profile: Curve,
                join_tolerance: Optional[float] = None,
                initial_normal: Optional[ArrayLike] = None, twist: float = 0.0,
                closure_symmetry: int = 0, frame: SweepFrame = "rmf",
-               scale: Tuple[float, float] = (1.0, 1.0)) -> Shape:
+               scale: Tuple[float, float] = (1.0, 1.0), method: str = "ph-rmf") -> Shape:
     """Sweeps a closed profile (with `holes`) along a connected wire of `edges`.
 
     Args:
@@ -309,6 +321,13 @@ def wire_sweep(edges: Union[Edge, Sequence[Edge]], profile: Curve,
         scale: the profile's scale (start, end) about the spine, linear in arc length
             between: two finite positive numbers, equal on a closed wire ((1, 0.5) makes a
             circle along a line a frustum).
+        method: how curve edges are swept: "ph-rmf" (the default: a PH cubic spline within
+            `tolerance` and its rational approximation of the RMF), "mobius" (Möbius images
+            of planar PH cubics) or "rrmf" (RRMF quintics) — spines with exact rational
+            RMFs, so the parameter lines of their faces are orthogonal to rounding
+            (``report().max_parameter_cosine`` ~1e-14, ~1e-7 with "ph-rmf"). Lines and
+            arcs are exact whatever the method. "mobius" and "rrmf" take a constant
+            `scale` only.
     """
     _require_wire_sweep()
     array, count, keep = _edges(edges)
@@ -332,6 +351,7 @@ def wire_sweep(edges: Union[Edge, Sequence[Edge]], profile: Curve,
     if direction is not None:
         options.frame_direction = _core.vec3(direction, "frame")
     options.scale_start, options.scale_end = _scale(scale)
+    options.method = _wire_method(method)
     out = ffi.new("RmfShape **")
     call("rmf_wire_sweep", array, count, prof._ptr, hole_array, len(hole_list), options, out)
     del keep

@@ -4,6 +4,7 @@ and checks as test_arguments.py, and the coverage of the adapter's arguments by 
 annotations."""
 
 import functools
+import inspect
 import math
 import os
 import sys
@@ -213,6 +214,38 @@ BAD_FRAMES = [
 def test_a_bad_frame_names_the_argument(case, bad):
     value, exception = bad
     refused(case[1], value, exception, argument(case[0]))
+
+
+METHODS = [
+    ("freecad.sweep(method)", lambda v: rfc.sweep(IN.wire, IN.ring, method=v)),
+    ("freecad.sweep_with_report(method)",
+     lambda v: rfc.sweep_with_report(IN.wire, IN.ring, method=v)),
+]
+BAD_METHODS = [
+    ("frenet", ValueError), ("PH-RMF", ValueError), ("ph_rmf", ValueError),
+    ("moebius", ValueError), ("", ValueError), (None, TypeError), (2, TypeError),
+    (b"mobius", TypeError),
+]
+
+
+@pytest.mark.parametrize("case, bad", parametrize(METHODS, lambda c: BAD_METHODS))
+def test_a_bad_method_names_the_argument(case, bad):
+    value, exception = bad
+    refused(case[1], value, exception, argument(case[0]))
+
+
+def test_every_method_of_a_wire_sweep_has_its_cases():
+    """Every function of the adapter taking both `frame` and `method` (a wire sweep) has
+    METHODS cases, and takes each method of wire sweeps."""
+    required = {"freecad.%s(method)" % name for name in dir(rfc)
+                if not name.startswith("_") and inspect.isfunction(getattr(rfc, name))
+                and getattr(rfc, name).__module__ == "rmfsurf.freecad"
+                and {"frame", "method"} <= set(inspect.signature(getattr(rfc, name)).parameters)}
+    assert {"freecad.sweep(method)", "freecad.sweep_with_report(method)"} <= required, required
+    assert required <= {c[0] for c in METHODS}, required - {c[0] for c in METHODS}
+    for _, call in METHODS:
+        for method in ("ph-rmf", "mobius", "rrmf"):
+            call(method)
 
 
 def test_wrong_objects_name_the_argument():

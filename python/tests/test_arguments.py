@@ -9,6 +9,7 @@ Run by integration/tests/python.rs."""
 
 import builtins
 import functools
+import inspect
 import math
 import os
 import pathlib
@@ -516,6 +517,58 @@ BAD_FRAMES = [
 def test_a_bad_frame_names_the_argument(case, bad):
     value, exception = bad
     refused(case[1], value, exception, argument(case[0]))
+
+
+# ---------------------------------------------------------------------------------------
+# Methods of wire sweeps: "ph-rmf", "mobius" or "rrmf" ("frenet" is the frame's).
+# Not a class of the annotations: (key, call), each with every bad method, and a coverage
+# check of their own below.
+
+METHODS = [
+    ("wire_sweep(method)", lambda v: rmfsurf.wire_sweep(IN.edges, circle(1.0), method=v)),
+    ("ocp.sweep(method)", lambda v: IN.ocp.sweep(IN.route, IN.ring, method=v)),
+]
+BAD_METHODS = [
+    ("frenet", ValueError), ("PH-RMF", ValueError), ("ph_rmf", ValueError),
+    ("moebius", ValueError), ("", ValueError), ("rmf", ValueError),
+    (None, TypeError), (2, TypeError), (b"mobius", TypeError), (["mobius"], TypeError),
+]
+
+
+@pytest.mark.parametrize("case, bad", parametrize(METHODS, lambda c: BAD_METHODS))
+def test_a_bad_method_names_the_argument(case, bad):
+    value, exception = bad
+    refused(case[1], value, exception, argument(case[0]))
+
+
+def test_frenet_as_a_wire_method_points_to_the_frame():
+    message = refused(METHODS[0][1], "frenet", ValueError, "method")
+    assert "frame='frenet'" in message, message
+
+
+@pytest.mark.parametrize("case", METHODS, ids=[c[0] for c in METHODS])
+def test_every_wire_method_is_taken(case):
+    for method in ("ph-rmf", "mobius", "rrmf"):
+        case[1](method)
+
+
+def test_every_method_of_a_wire_sweep_has_its_cases():
+    """Every public function taking both `frame` and `method` (a wire sweep) has METHODS
+    cases."""
+    ocp = pytest.importorskip("rmfsurf.ocp")
+    required = set()
+    for module, prefix in ((rmfsurf, ""), (ocp, "ocp.")):
+        for name in dir(module):
+            obj = getattr(module, name)
+            if name.startswith("_") or not inspect.isfunction(obj):
+                continue
+            if getattr(obj, "__module__", "") != module.__name__ and module is ocp:
+                continue
+            parameters = inspect.signature(obj).parameters
+            if "frame" in parameters and "method" in parameters:
+                required.add("%s%s(method)" % (prefix, name))
+    assert "wire_sweep(method)" in required and "ocp.sweep(method)" in required, required
+    assert required <= {c[0] for c in METHODS}, required - {c[0] for c in METHODS}
 
 
 BOXES = [

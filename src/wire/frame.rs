@@ -37,7 +37,7 @@ use crate::error::{invalid, Result, ResultExt};
 use crate::frames::metrics::angle_about_tangent;
 use crate::frames::rational::{RationalFrameSegment, RationalFrames};
 use crate::frames::Frame;
-use crate::math::lerp;
+use crate::math::{lerp, GaussLegendre};
 use crate::math::{normal_plane_unit, orthogonalized, orthonormal_to, signed_angle};
 use crate::mesh::grid_parameters;
 use crate::model::{Arc, Similarity};
@@ -50,6 +50,7 @@ use crate::ph_cubic::exact_rmf::ExactRmf;
 use crate::ph_cubic::frenet::ph_frenet_frames;
 use crate::ph_cubic::rational_rmf::{ph_rational_rmf, RmfOptions};
 use crate::ph_cubic::spline::PhSpline;
+use crate::spine::{framed_spine, SpineMethod};
 use glam::{DVec2, DVec3};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
@@ -65,6 +66,9 @@ pub(crate) struct FrameOptions {
     pub initial_normal: Option<DVec3>,
     /// The frame followed (the RMF, Frenet, a fixed direction), before the twist.
     pub law: SweepFrame,
+    /// How curve pieces are made: the PH cubic spline with its rational RMF, or a Möbius or
+    /// RRMF spine with its exact rational RMF.
+    pub method: SpineMethod,
     pub twist: f64,
     /// Closed wires: k of 2π/k (≥ 1).
     pub closure_symmetry: u32,
@@ -135,7 +139,65 @@ pub(crate) struct Transport {
 struct Spine {
     curve: PiecewiseCurve,
     ph: Option<PhSpline>,
+    /// A Möbius or RRMF spine's exact rational RMF.
+    exact: Option<ExactFrames>,
     distance: f64,
+}
+
+/// The exact rational RMF of a Möbius or RRMF spine (Bartoň, Jüttler & Wang; Farouki,
+/// Giannelli & Sestini), from some f₂ at its start, with the arc length along the spine
+/// (by Gauss–Legendre quadrature: these spines are not PH).
+#[derive(Clone, Debug)]
+struct ExactFrames {
+    frames: RationalFrames,
+    spine: PiecewiseCurve,
+    /// The arc length at each of the spine's breaks.
+    lengths: Vec<f64>,
+}
+
+/// Gauss–Legendre nodes per spine segment for the arc length of exact-RMF spines.
+const LENGTH_NODES: usize = 16;
+
+impl ExactFrames {
+    fn new(frames: RationalFrames, spine: PiecewiseCurve) -> Self {
+        let rule = GaussLegendre::new(LENGTH_NODES);
+        let mut lengths = vec![0.0];
+        for w in spine.breaks().windows(2) {
+            let length = rule.integrate(w[0], w[1], |v| spine.eval_jet(v).d1.length());
+            lengths.push(lengths[lengths.len() - 1] + length);
+        }
+        Self {
+            frames,
+            spine,
+            lengths,
+        }
+    }
+
+    /// The RMF started at the unit normal `f2`: the frames turned by one constant angle.
+    fn from(&self, f2: DVec3) -> Result<RationalFrames> {
+        let (lo, _) = self.spine.domain();
+        let start = self.frames.frame(lo);
+        let angle = signed_angle(start.f2, f2, start.tangent);
+        let segments = self
+            .frames
+            .segments()
+            .iter()
+            .map(|s| s.rotated(angle))
+            .collect();
+        RationalFrames::new(segments, self.frames.breaks().to_vec())
+    }
+
+    /// The arc length from the start to the spine's parameter v.
+    fn arc_length_at(&self, v: f64) -> f64 {
+        let (k, _) = self.spine.locate(v);
+        let a = self.spine.breaks()[k];
+        let rule = GaussLegendre::new(LENGTH_NODES);
+        self.lengths[k] + rule.integrate(a, v, |t| self.spine.eval_jet(t).d1.length())
+    }
+
+    fn length(&self) -> f64 {
+        self.lengths[self.lengths.len() - 1]
+    }
 }
 
 /// The spines of the pieces. Curves are approximated about the wire's centre in the
@@ -151,6 +213,7 @@ fn spines(chain: &Chain, options: &FrameOptions) -> Result<Vec<Spine>> {
             let exact = |curve| Spine {
                 curve,
                 ph: None,
+                exact: None,
                 distance: 0.0,
             };
             Ok(match &piece.geometry {
@@ -166,6 +229,9 @@ fn spines(chain: &Chain, options: &FrameOptions) -> Result<Vec<Spine>> {
                     )))
                 }
                 Geometry::Arc(arc) => exact(arc.curve()),
+                Geometry::Curve(c) if options.method != SpineMethod::PhRmf => {
+                    exact_spine(piece, c, options.method, tolerance, units)?
+                }
                 Geometry::Curve(c) => {
                     let (ph, distance) = match given_ph_spline(c) {
                         Some(ph) => (ph, 0.0),
@@ -192,12 +258,42 @@ fn spines(chain: &Chain, options: &FrameOptions) -> Result<Vec<Spine>> {
                     Spine {
                         curve: ph.curve().clone(),
                         ph: Some(ph),
+                        exact: None,
                         distance,
                     }
                 }
             })
         })
         .collect()
+}
+
+/// The Möbius or RRMF spine of a curve within `tolerance`, with its exact rational RMF,
+/// made in the normalized coordinates (their constructions sample and compare distances:
+/// at the unit size they decide alike at every scale and position).
+fn exact_spine(
+    piece: &Piece,
+    curve: &PiecewiseCurve,
+    method: SpineMethod,
+    tolerance: f64,
+    units: Similarity,
+) -> Result<Spine> {
+    let start = curve.segments()[0].eval_jet(0.0).d1;
+    let fit = framed_spine(curve, method, tolerance, orthonormal_to(start.normalize()))
+        .with_context(|| {
+            format!(
+                "edge {} (method {}, tolerance {:e} in the wire's units)",
+                piece.edge,
+                method.name(),
+                units.length(tolerance)
+            )
+        })?;
+    let (spine, frames) = fit.framed.into_parts();
+    Ok(Spine {
+        curve: spine.clone(),
+        ph: None,
+        exact: Some(ExactFrames::new(frames, spine)),
+        distance: fit.distance,
+    })
 }
 
 /// A curve that is already a PH cubic spline (cubic polynomial segments satisfying (17)).
@@ -243,7 +339,10 @@ fn carry(piece: &Piece, spine: &Spine, f2: DVec3) -> Result<DVec3> {
                 ExactRmf::new(ph, f2, 0.0).with_context(|| format!("edge {}", piece.edge))?;
             exact.frame(ph.domain().1).f2
         }
-        _ => f2,
+        _ => match &spine.exact {
+            Some(exact) => exact.from(f2)?.frame(spine.curve.domain().1).f2,
+            None => f2,
+        },
     })
 }
 
@@ -323,10 +422,11 @@ pub(crate) fn transport(chain: &Chain, options: &FrameOptions) -> Result<Transpo
         .pieces
         .iter()
         .zip(&spines)
-        .map(|(p, spine)| match &spine.ph {
+        .map(|(p, spine)| match (&spine.ph, &spine.exact) {
             // The arc length of a PH spline is a polynomial: exact.
-            Some(ph) => ph.cubics().iter().map(|c| c.arc_length()).sum(),
-            None => p.geometry.length(),
+            (Some(ph), _) => ph.cubics().iter().map(|c| c.arc_length()).sum(),
+            (_, Some(exact)) => exact.length(),
+            _ => p.geometry.length(),
         })
         .collect();
     let miters = miters(chain);
@@ -453,8 +553,14 @@ fn along_tangent(d: DVec3, piece: &Piece, at: DVec3, units: Similarity) -> crate
 /// The RMF along one piece from a given f₂ at its start, at the spine's parameters.
 enum PieceRmf<'a> {
     Constant(DVec3),
-    Arc { arc: &'a Arc, a: f64, b: f64 },
+    Arc {
+        arc: &'a Arc,
+        a: f64,
+        b: f64,
+    },
     Exact(ExactRmf),
+    /// A Möbius or RRMF spine's exact rational RMF, turned to start at f₂.
+    Frames(RationalFrames, &'a ExactFrames),
 }
 
 impl PieceRmf<'_> {
@@ -465,6 +571,10 @@ impl PieceRmf<'_> {
             PieceRmf::Arc { arc, a, b } => circular_at(arc, *a, *b, spine, v),
             PieceRmf::Exact(exact) => {
                 let frame = exact.frame(v);
+                (frame.f2, frame.tangent)
+            }
+            PieceRmf::Frames(frames, _) => {
+                let frame = frames.frame(v);
                 (frame.f2, frame.tangent)
             }
         }
@@ -507,14 +617,15 @@ fn law_turns(chain: &Chain, spines: &[Spine], options: &FrameOptions) -> Result<
         .map(|(piece, spine)| {
             let f2 = orthonormal_to(piece.geometry.start_tangent());
             let (lo, hi) = spine.curve.domain();
-            let rmf = match (&piece.geometry, &spine.ph) {
-                (Geometry::Arc(arc), _) => {
+            let rmf = match (&piece.geometry, &spine.ph, &spine.exact) {
+                (Geometry::Arc(arc), _, _) => {
                     let (a, b) = arc_coefficients(arc, f2);
                     PieceRmf::Arc { arc, a, b }
                 }
-                (_, Some(ph)) => PieceRmf::Exact(
+                (_, Some(ph), _) => PieceRmf::Exact(
                     ExactRmf::new(ph, f2, 0.0).with_context(|| format!("edge {}", piece.edge))?,
                 ),
+                (_, _, Some(exact)) => PieceRmf::Frames(exact.from(f2)?, exact),
                 _ => PieceRmf::Constant(f2),
             };
             let mut angles = Unwrapped::new(law);
@@ -528,6 +639,7 @@ fn law_turns(chain: &Chain, spines: &[Spine], options: &FrameOptions) -> Result<
                         angles.push(r2, n, t);
                         let s = match &rmf {
                             PieceRmf::Exact(exact) => exact.arc_length_at(v),
+                            PieceRmf::Frames(_, exact) => exact.arc_length_at(v),
                             _ => piece.geometry.length() * (v - lo) / (hi - lo),
                         };
                         track.extend(angles.last().map(|a| (s, a)));
@@ -670,6 +782,17 @@ fn frame_piece(
                     (PieceFrame::Rational(frames), end, error)
                 }
             }
+            Geometry::Curve(_) if spine.exact.is_some() => {
+                let exact = spine.exact.as_ref().expect("an exact-RMF spine");
+                let frames = if turn == 0.0 {
+                    exact.from(f2)?
+                } else {
+                    // Twist and closure on the exact RMF: followed as a law would be.
+                    law_frames(piece, &spine, length, f2, &SweepFrame::Rmf, turn, accuracy)?
+                };
+                let end = frames.frame(spine.curve.domain().1);
+                (PieceFrame::Rational(frames), end, 0.0)
+            }
             Geometry::Curve(_) => {
                 let ph = spine.ph.as_ref().expect("a curve piece has a PH spline");
                 let options = RmfOptions {
@@ -739,7 +862,7 @@ fn law_frames(
     accuracy: f64,
 ) -> Result<RationalFrames> {
     // The RMF as rational frames on the spine's parameter, and the arc length at v.
-    let (base, arc_length): (RationalFrames, Box<dyn Fn(f64) -> f64>) =
+    let (base, arc_length): (RationalFrames, Box<dyn Fn(f64) -> f64 + '_>) =
         match (&piece.geometry, &spine.ph) {
             (Geometry::Arc(arc), _) => {
                 let (a, b) = arc_coefficients(arc, f2);
@@ -774,6 +897,10 @@ fn law_frames(
                     law_base(ph, f2, law)?,
                     Box::new(move |v| exact.arc_length_at(v)),
                 )
+            }
+            (_, None) if spine.exact.is_some() => {
+                let exact = spine.exact.as_ref().expect("an exact-RMF spine");
+                (exact.from(f2)?, Box::new(|v| exact.arc_length_at(v)))
             }
             _ => return invalid!("internal: a frame law on {}", piece.geometry.kind_name()),
         };

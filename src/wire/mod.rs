@@ -35,6 +35,7 @@ use crate::bezier::PiecewiseCurve;
 use crate::error::{invalid, Result};
 use crate::math::robust_length;
 use crate::model::Similarity;
+use crate::spine::SpineMethod;
 use corner::CornerMode;
 use edge::RawEdge;
 use frame::FrameOptions;
@@ -122,6 +123,11 @@ pub struct WireSweep {
     /// The profile's scale at the wire's start and end (default `[1, 1]`), linear in arc
     /// length between; both finite and positive, equal on a closed wire.
     pub scale: [f64; 2],
+    /// How curve edges are swept: [`SpineMethod::PhRmf`] (default: the PH cubic spline and
+    /// its rational RMF), [`SpineMethod::Mobius`] or [`SpineMethod::Rrmf`] (spines with
+    /// exact rational RMFs: the parameter lines orthogonal to rounding). Lines and arcs are
+    /// exact whatever the method.
+    pub method: SpineMethod,
 }
 
 impl Default for WireSweep {
@@ -136,6 +142,7 @@ impl Default for WireSweep {
             solid: true,
             frame: SweepFrame::Rmf,
             scale: [1.0, 1.0],
+            method: SpineMethod::PhRmf,
         }
     }
 }
@@ -329,6 +336,7 @@ fn sweep(
         &FrameOptions {
             initial_normal: options.initial_normal.filter(|n| *n != DVec3::ZERO),
             law: options.frame,
+            method: options.method,
             twist: options.twist,
             closure_symmetry: options.closure_symmetry.max(1),
             tolerance: options.tolerance / scale,
@@ -491,6 +499,19 @@ fn check_options(options: &WireSweep) -> Result<()> {
         if !(s.is_finite() && s > 0.0) {
             return invalid!("scale: the {name} scale {s} must be finite and positive");
         }
+    }
+    if options.method == SpineMethod::Frenet {
+        return invalid!(
+            "method: frenet makes Frenet frames, which a wire sweep asks for with its frame \
+             option; the methods of wire sweeps are ph-rmf, mobius and rrmf"
+        );
+    }
+    if options.method != SpineMethod::PhRmf && options.scale[0] != options.scale[1] {
+        return invalid!(
+            "scale: a scale law is exact along PH splines, whose arc length is a polynomial; \
+             with method {} use a constant scale, or method ph-rmf",
+            options.method.name()
+        );
     }
     Ok(())
 }
