@@ -654,6 +654,62 @@ static void test_bad_inputs(void) {
     rmf_curve_free(profile);
 }
 
+/* Sweeps between two profiles (rmf_wire_sweep_between; intended behaviour of the geometry):
+   two concentric circles, radius 1 at the start and 0.5 at the end of a line of length 3,
+   are the frustum of volume pi L (r0^2 + r0 r1 + r1^2) / 3; a square (half side 0.5) into a
+   circle (radius 0.6) along a line of 4 is a closed solid whose volume lies between the
+   square's prism and the circle's (the circle's quarter points on the square's diagonals:
+   corner to corner, no turn; with the quarters starting on the x axis the corners are as
+   near to two of them and the section turns by 45 degrees, pinching it below the square's). Then the bad inputs: a NULL end profile, a different
+   number of holes and a closed wire, each refused with *out untouched. */
+static void test_sweep_between(void) {
+    RmfEdge e = line(vec3(0, 0, 0), vec3(3, 0, 0)), e4 = line(vec3(0, 0, 0), vec3(4, 0, 0));
+    RmfCurve *big = circle(1), *small = circle(0.5), *sq = square(0.5), *round = NULL, *hole = circle(0.2);
+    RmfShape *shape = NULL;
+    const double h = 0.70710678118654752440;
+    CHECK_STATUS(rmf_curve_circle(vec3(0, 0, 0), vec3(h, h, 0), vec3(-h, h, 0), 0.6, &round), RMF_OK, "");
+    const double r0 = 1, r1 = 0.5, length = 3, exact = PI * length * (r0 * r0 + r0 * r1 + r1 * r1) / 3;
+    CHECK_STATUS(rmf_wire_sweep_between(&e, 1, big, NULL, 0, small, NULL, 0, NULL, &shape), RMF_OK, "");
+    if (shape) {
+        const double v = volume(shape);
+        printf("circle 1 into circle 0.5 along a line of 3: volume %.15f vs the frustum %.15f (relative %.1e)\n", v,
+               exact, fabs(v - exact) / exact);
+        CHECK(rmf_shape_is_solid(shape) == 1, "a closed solid");
+        CHECK(fabs(v - exact) <= 1e-12 * exact, "the frustum's volume pi L (r0^2 + r0 r1 + r1^2) / 3");
+    }
+    rmf_shape_free(shape);
+    shape = NULL;
+    CHECK_STATUS(rmf_wire_sweep_between(&e4, 1, sq, NULL, 0, round, NULL, 0, NULL, &shape), RMF_OK, "");
+    if (shape) {
+        const double v = volume(shape), square_prism = 4 * 1.0, circle_prism = 4 * PI * 0.36;
+        printf("square 0.5 into circle 0.6 along a line of 4: %zu faces, volume %.15f between %.6f and %.6f\n",
+               rmf_shape_face_count(shape), v, square_prism, circle_prism);
+        CHECK(rmf_shape_is_solid(shape) == 1, "a closed solid");
+        CHECK(v > square_prism && v < circle_prism, "between the square's prism and the circle's");
+    }
+    rmf_shape_free(shape);
+    {
+        const RmfCurve *holes[1] = {hole};
+        const RmfEdge loop[4] = {line(vec3(0, 0, 0), vec3(10, 0, 0)), line(vec3(10, 0, 0), vec3(10, 10, 0)),
+                                 line(vec3(10, 10, 0), vec3(0, 10, 0)), line(vec3(0, 10, 0), vec3(0, 0, 0))};
+        REFUSED(rmf_wire_sweep_between(&e, 1, big, NULL, 0, NULL, NULL, 0, NULL, &out), RMF_ERROR_NULL_POINTER,
+                "end_profile");
+        REFUSED(rmf_wire_sweep_between(&e, 1, big, holes, 1, small, NULL, 0, NULL, &out), RMF_ERROR_INVALID_INPUT,
+                "end_profile: it has 0 holes, the profile 1");
+        REFUSED(rmf_wire_sweep_between(&e, 1, big, NULL, 0, small, NULL, 1, NULL, &out), RMF_ERROR_NULL_POINTER,
+                "end_holes");
+        REFUSED(rmf_wire_sweep_between(loop, 4, big, NULL, 0, small, NULL, 0, NULL, &out), RMF_ERROR_INVALID_INPUT,
+                "end_profile: a closed wire");
+        CHECK_STATUS(rmf_wire_sweep_between(&e, 1, big, NULL, 0, small, NULL, 0, NULL, NULL), RMF_ERROR_NULL_POINTER,
+                     "out");
+    }
+    rmf_curve_free(hole);
+    rmf_curve_free(round);
+    rmf_curve_free(sq);
+    rmf_curve_free(small);
+    rmf_curve_free(big);
+}
+
 int main(void) {
     gauss_init();
     test_options();
@@ -664,5 +720,6 @@ int main(void) {
     test_options_of_an_older_header();
     test_scale_law_frustum();
     test_spine_methods();
+    test_sweep_between();
     return rmf_check_exit_code("abi_wire");
 }

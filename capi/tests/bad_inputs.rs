@@ -403,6 +403,40 @@ fn wire_sweep(
     }
 }
 
+/// rmf_wire_sweep_between along a line of 3 from the circle of radius 1 with `holes` to
+/// `end_profile` with `end_holes` (all freed after; `end_profile` may be NULL), default
+/// options; the shape, if any, is freed.
+fn wire_sweep_between(
+    holes: &[*mut RmfCurve],
+    end_profile: *mut RmfCurve,
+    end_holes: &[*mut RmfCurve],
+) -> RmfStatus {
+    let edges = [line(v(0., 0., 0.), v(3., 0., 0.))];
+    let profile = circle(1.0);
+    let mut out: *mut RmfShape = null_mut();
+    let holes_c: Vec<*const RmfCurve> = holes.iter().map(|&h| h.cast_const()).collect();
+    let end_holes_c: Vec<*const RmfCurve> = end_holes.iter().map(|&h| h.cast_const()).collect();
+    unsafe {
+        let status = rmf_wire_sweep_between(
+            edges.as_ptr(),
+            edges.len(),
+            profile,
+            holes_c.as_ptr(),
+            holes_c.len(),
+            end_profile,
+            end_holes_c.as_ptr(),
+            end_holes_c.len(),
+            null(),
+            &mut out,
+        );
+        rmf_shape_free(out);
+        for &c in [profile, end_profile].iter().chain(holes).chain(end_holes) {
+            rmf_curve_free(c);
+        }
+        status
+    }
+}
+
 /// A polyline wire through `points` (lines).
 fn polyline(points: &[RmfVec3]) -> Vec<RmfEdge> {
     points.windows(2).map(|w| line(w[0], w[1])).collect()
@@ -1698,6 +1732,20 @@ fn rows() -> Vec<Row> {
                     o.scale_end = 0.5;
                 })
             },
+        },
+        Row {
+            what: "sweep between two profiles: end profile NULL",
+            function: "rmf_wire_sweep_between",
+            expected: NULL,
+            names: "end_profile",
+            call: |_| wire_sweep_between(&[circle(0.5)], null_mut(), &[]),
+        },
+        Row {
+            what: "sweep between two profiles: a different number of holes",
+            function: "rmf_wire_sweep_between",
+            expected: INVALID,
+            names: "end_profile: it has 0 holes, the profile 1",
+            call: |_| wire_sweep_between(&[circle(0.5)], circle(0.8), &[]),
         },
         Row {
             what: "face index out of range",
