@@ -9,8 +9,8 @@ use crate::json::InputError;
 use rmfsurf::glam::DVec3;
 use rmfsurf::{
     approximate_developable, check_g1, framed_spine, framed_spine_through, sweep, sweep_wire,
-    ConeSpline, Developable, Edge, FlatPattern, FramedCurve, PiecewiseCurve, PiecewiseSurface,
-    Rule, RuledSurface, Shape, SheetPart, TangentSurface, WireSweep,
+    sweep_wire_between, ConeSpline, Developable, Edge, FlatPattern, FramedCurve, PiecewiseCurve,
+    PiecewiseSurface, Rule, RuledSurface, Shape, SheetPart, TangentSurface, WireSweep,
 };
 
 /// A swept surface with its spine and frames.
@@ -132,7 +132,24 @@ pub fn run_wire(job: &WireJob) -> Result<Shape, InputError> {
         scale: job.scale,
         method: job.method,
     };
-    sweep_wire(&edges, &profile, &holes, &options).map_err(|e| InputError {
+    let end = match &job.end_profile {
+        Some((end_profile, end_holes)) => Some((
+            curve(end_profile, "sweep.end_profile".into())?,
+            end_holes
+                .iter()
+                .enumerate()
+                .map(|(k, h)| curve(h, format!("sweep.end_profile.holes[{k}]")))
+                .collect::<Result<Vec<_>, _>>()?,
+        )),
+        None => None,
+    };
+    match &end {
+        Some((end_profile, end_holes)) => {
+            sweep_wire_between(&edges, &profile, &holes, end_profile, end_holes, &options)
+        }
+        None => sweep_wire(&edges, &profile, &holes, &options),
+    }
+    .map_err(|e| InputError {
         path: wire_blame(&e.message()),
         message: e.message(),
     })
@@ -148,6 +165,12 @@ fn wire_blame(message: &str) -> String {
                 .and_then(|n| n.parse::<usize>().ok())
         })
     };
+    if message.starts_with("end_profile") {
+        return match number_after("holes[") {
+            Some(k) => format!("sweep.end_profile.holes[{k}]"),
+            None => "sweep.end_profile".into(),
+        };
+    }
     if let Some(k) = number_after("holes[") {
         return format!("sweep.profile.holes[{k}]");
     }

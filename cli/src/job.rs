@@ -92,6 +92,9 @@ pub struct WireJob {
     /// How curve edges are swept (default ph-rmf; mobius and rrmf carry exact rational
     /// RMFs; frenet is refused by the library, blamed on `sweep.method`).
     pub method: SpineMethod,
+    /// The section at the wire's end and its holes (`"end_profile"`, same coordinates as
+    /// the profile): the section blends linearly in arc length from the profile to it.
+    pub end_profile: Option<(NurbsCurve, Vec<NurbsCurve>)>,
 }
 
 /// What a sheet-metal part is made from.
@@ -281,18 +284,11 @@ fn wire_job(sweep: schema::Sweep) -> InputResult<WireJob> {
         .enumerate()
         .map(|(k, e)| wire_edge(e, &format!("sweep.spine.wire[{k}]")))
         .collect::<InputResult<Vec<_>>>()?;
-    let mut profile = sweep.profile;
-    let holes = profile
-        .holes
-        .take()
-        .map(|h| h.into_vec())
-        .unwrap_or_default();
-    let (profile, _) = profile_curve(profile, "sweep.profile")?;
-    let holes = holes
-        .into_iter()
-        .enumerate()
-        .map(|(k, h)| hole_curve(h, &format!("sweep.profile.holes[{k}]")))
-        .collect::<InputResult<Vec<_>>>()?;
+    let (profile, holes) = profile_with_holes(sweep.profile, "sweep.profile")?;
+    let end_profile = sweep
+        .end_profile
+        .map(|p| profile_with_holes(p, "sweep.end_profile"))
+        .transpose()?;
     let defaults = rmfsurf::WireSweep::default();
     Ok(WireJob {
         edges,
@@ -312,7 +308,27 @@ fn wire_job(sweep: schema::Sweep) -> InputResult<WireJob> {
         frame: sweep.frame.map_or(defaults.frame, |f| f.0),
         scale: sweep.scale.map_or(defaults.scale, |s| s.0),
         method: sweep.method.map_or(defaults.method, |m| m.0),
+        end_profile,
     })
+}
+
+/// A wire sweep's profile (or end profile) at `path` and its holes at `path.holes[k]`.
+fn profile_with_holes(
+    mut profile: schema::Profile,
+    path: &str,
+) -> InputResult<(NurbsCurve, Vec<NurbsCurve>)> {
+    let holes = profile
+        .holes
+        .take()
+        .map(|h| h.into_vec())
+        .unwrap_or_default();
+    let (profile, _) = profile_curve(profile, path)?;
+    let holes = holes
+        .into_iter()
+        .enumerate()
+        .map(|(k, h)| hole_curve(h, &format!("{path}.holes[{k}]")))
+        .collect::<InputResult<Vec<_>>>()?;
+    Ok((profile, holes))
 }
 
 /// `{"line": {"from", "to"}}`, `{"arc": {"start", "through", "end"}}` or `{"nurbs": {...}}`.

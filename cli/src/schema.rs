@@ -139,6 +139,8 @@ pub struct Sweep {
     pub solid: Option<Bool>,
     pub frame: Option<FrameName>,
     pub scale: Option<Scale>,
+    /// The section at the wire's end (same form as `profile`): a sweep between two profiles.
+    pub end_profile: Option<Profile>,
 }
 
 impl Sweep {
@@ -152,6 +154,7 @@ impl Sweep {
             ("solid", self.solid.is_some()),
             ("frame", self.frame.is_some()),
             ("scale", self.scale.is_some()),
+            ("end_profile", self.end_profile.is_some()),
         ]
         .into_iter()
         .filter_map(|(name, given)| given.then_some(name))

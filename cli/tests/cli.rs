@@ -1251,3 +1251,68 @@ fn oversized_inputs_and_lists_are_refused_while_reading() {
         &["lateral faces", "more than 65536"],
     );
 }
+
+/// `"end_profile"` (the form of `"profile"`, its holes too) on wire sweeps: a circle of
+/// radius 1 into one of radius 0.5 along a line of 3 is the frustum π L (r0² + r0 r1 +
+/// r1²)/3 (the summary's volume to 1e-9), a square into a circle a closed solid; refused at
+/// the field: a different number of holes and a bad radius (`sweep.end_profile`), a scale
+/// law beside it (`sweep.scale`), the key on a sweep along a curve (only for a wire).
+#[test]
+fn wire_sweeps_between_two_profiles_are_read_and_refused_at_the_field() {
+    let f = wire_figures(
+        "wire_between_circles",
+        &line_job(r#""end_profile": {"circle": {"radius": 0.5}}, "#),
+    );
+    let volume = f["volume"].as_f64().unwrap();
+    let (r0, r1, length) = (1.0, 0.5, 3.0);
+    let frustum = std::f64::consts::PI * length * (r0 * r0 + r0 * r1 + r1 * r1) / 3.0;
+    println!(
+        "circle 1 into circle 0.5 along a line of 3: volume {volume:.12} against {frustum:.12}"
+    );
+    assert!(
+        (volume - frustum).abs() <= 1e-9 * frustum,
+        "{volume} against {frustum}"
+    );
+    assert_eq!(f["solid"], serde_json::json!(true));
+    let f = wire_figures(
+        "wire_between_square_circle",
+        &line_job(
+            r#""end_profile": {"polygon": [[0.5, 0.5], [-0.5, 0.5], [-0.5, -0.5], [0.5, -0.5]]}, "#,
+        ),
+    );
+    assert_eq!(f["solid"], serde_json::json!(true));
+    let volume = f["volume"].as_f64().unwrap();
+    assert!(
+        volume > 3.0 && volume < 3.0 * std::f64::consts::PI,
+        "between the square's prism and the circle's: {volume}"
+    );
+    let cases = [
+        (
+            r#""end_profile": {"circle": {"radius": 0.5}, "holes": [{"circle": {"radius": 0.1}}]}, "#,
+            "sweep.end_profile: end_profile: it has 1 holes, the profile 0",
+        ),
+        (
+            r#""end_profile": {"circle": {"radius": -0.5}}, "#,
+            "sweep.end_profile.circle.radius",
+        ),
+        (
+            r#""end_profile": {"circle": {"radius": 0.5}}, "scale": [1, 0.5], "#,
+            "sweep.scale: scale: with end_profile",
+        ),
+    ];
+    for (k, (extra, expected)) in cases.iter().enumerate() {
+        wire_fails_with(
+            &format!("wire_between_bad_{k}"),
+            &line_job(extra),
+            &[expected],
+        );
+    }
+    fails_with(
+        "curve_end_profile",
+        &GOOD_SWEEP.replace(
+            "\"profile\"",
+            r#""end_profile": {"circle": {"radius": 0.05}}, "profile""#,
+        ),
+        &["sweep.end_profile: only for a sweep along a wire"],
+    );
+}
