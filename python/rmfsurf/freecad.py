@@ -272,7 +272,7 @@ def _wire_curve(wire: Any, origin: np.ndarray, frame: Tuple[np.ndarray, np.ndarr
     return Curve.from_nurbs(joined.degree, joined.poles, joined.knots, joined.weights)
 
 
-def _profile_face(shape: Any) -> Any:
+def _profile_face(shape: Any, name: str = "profile") -> Any:
     """The one planar region of a profile: a face, a closed wire, or closed wires nested as
     outer loops and holes (a sketch with inner loops: FreeCAD's Bullseye face maker). (An
     open profile is a sheet's, see `_open_profile`.)"""
@@ -280,23 +280,24 @@ def _profile_face(shape: Any) -> Any:
         return shape
     if shape.Faces:
         if len(shape.Faces) != 1:
-            raise ValueError("profile: expected one face, got %d" % len(shape.Faces))
+            raise ValueError("%s: expected one face, got %d" % (name, len(shape.Faces)))
         return shape.Faces[0]
     wires = [shape] if isinstance(shape, Part.Wire) else shape.Wires
     if isinstance(shape, Part.Edge):
         wires = [Part.Wire([shape])]
     if not wires:
-        raise TypeError("profile: expected a Part.Face, closed wires or a sketch, got a %s "
-                        "without wires" % shape.ShapeType)
+        raise TypeError("%s: expected a Part.Face, closed wires or a sketch, got a %s "
+                        "without wires" % (name, shape.ShapeType))
     open_wires = [i for i, w in enumerate(wires) if not w.isClosed()]
     if open_wires:
-        raise ValueError("profile: wire %d of %d is not closed" % (open_wires[0] + 1, len(wires)))
+        raise ValueError("%s: wire %d of %d is not closed"
+                         % (name, open_wires[0] + 1, len(wires)))
     if len(wires) == 1:
         return Part.Face(wires[0])
     faces = Part.makeFace(wires, "Part::FaceMakerBullseye").Faces
     if len(faces) != 1:
-        raise ValueError("profile: its %d closed wires bound %d separate regions; a sweep takes "
-                         "one region (with holes)" % (len(wires), len(faces)))
+        raise ValueError("%s: its %d closed wires bound %d separate regions; a sweep takes "
+                         "one region (with holes)" % (name, len(wires), len(faces)))
     return faces[0]
 
 
@@ -318,21 +319,23 @@ def profile_curves(profile: Any, origin: ArrayLike, tangent: ArrayLike, toleranc
 
 
 def _profile_curves(profile: Any, origin: ArrayLike, tangent: ArrayLike, tolerance: float,
-                    f2: Optional[np.ndarray] = None) -> Tuple[Curve, List[Curve], np.ndarray]:
+                    f2: Optional[np.ndarray] = None, name: str = "profile"
+                    ) -> Tuple[Curve, List[Curve], np.ndarray]:
     """:func:`profile_curves`, in the coordinates of the unit normal `f2` (normal to the
-    tangent) when given instead of the profile's x axis."""
+    tangent) when given instead of the profile's x axis; messages name the argument
+    `name`."""
     o = _core.vector(origin, "origin", finite_only=True)
     t = _core.direction(tangent, "tangent")
     tolerance = _core.finite(tolerance, "tolerance", positive=True)
-    shape = _shape_of(profile, "profile")
+    shape = _shape_of(profile, name)
     sheet = _open_profile(shape)
     if sheet is not None:
         outer_wire, hole_wires = sheet, []
-        normal, _, plane_x = _open_profile_plane(sheet, o, t, tolerance)
+        normal, _, plane_x = _open_profile_plane(sheet, o, t, tolerance, name)
     else:
-        face = _profile_face(shape)
+        face = _profile_face(shape, name)
         if not isinstance(face.Surface, Part.Plane):
-            raise ValueError("profile: not planar")
+            raise ValueError("%s: not planar" % name)
         outer_wire = face.OuterWire
         hole_wires = [w for w in face.Wires if not w.isSame(face.OuterWire)]
         normal = np.array(tuple(face.Surface.Axis))
@@ -350,8 +353,8 @@ def _profile_curves(profile: Any, origin: ArrayLike, tangent: ArrayLike, toleran
     f2 /= np.linalg.norm(f2)
     f3 = _core.cross(t, f2)
     frame = (f2, f3, t)
-    outer = _wire_curve(outer_wire, o, frame, "profile", tolerance)
-    holes = [_wire_curve(w, o, frame, "profile hole %d" % i, tolerance)
+    outer = _wire_curve(outer_wire, o, frame, name, tolerance)
+    holes = [_wire_curve(w, o, frame, "%s hole %d" % (name, i), tolerance)
              for i, w in enumerate(hole_wires)]
     return outer, holes, f2
 
@@ -368,8 +371,8 @@ def _open_profile(shape: Any) -> Any:
     return None
 
 
-def _open_profile_plane(wire: Any, origin: np.ndarray, tangent: np.ndarray, tolerance: float
-                        ) -> Tuple[np.ndarray, np.ndarray, np.ndarray]:
+def _open_profile_plane(wire: Any, origin: np.ndarray, tangent: np.ndarray, tolerance: float,
+                        name: str = "profile") -> Tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The plane (normal, point, x direction) of an open profile; a straight one spans
     none, and is taken in the wire's normal plane at its start when it lies there (its x
     direction along the line)."""
@@ -379,8 +382,9 @@ def _open_profile_plane(wire: Any, origin: np.ndarray, tangent: np.ndarray, tole
                 np.array(tuple(_plane_x_axis(plane))))
     points = np.array([tuple(p) for e in wire.OrderedEdges for p in e.discretize(9)])
     if np.max(np.abs((points - origin) @ tangent)) > tolerance:
-        raise ValueError("profile: a straight profile spans no plane of its own; it must lie "
-                         "in the wire's normal plane at the wire's start (within %g)" % tolerance)
+        raise ValueError("%s: a straight profile spans no plane of its own; it must lie "
+                         "in the wire's normal plane at the wire's start (within %g)"
+                         % (name, tolerance))
     return tangent, origin, points[-1] - points[0]
 
 
@@ -432,7 +436,7 @@ def _start_principal_normal(wire: Any) -> Optional[np.ndarray]:
 def sweep(wire: Any, profile: Any, *, solid: bool = True, corner: str = "round",
           corner_radius: Optional[float] = None, tolerance: float = 1e-4,
           frame: SweepFrame = "rmf", scale: Tuple[float, float] = (1.0, 1.0),
-          method: str = "ph-rmf") -> Any:
+          method: str = "ph-rmf", end_profile: Any = None) -> Any:
     """Sweeps `profile` along `wire` (rmf_wire_sweep), by default with rotation-minimizing
     frames.
 
@@ -460,20 +464,29 @@ def sweep(wire: Any, profile: Any, *, solid: bool = True, corner: str = "round",
         method: how the wire's curves are swept: "ph-rmf" (default), "mobius" or "rrmf"
             (spines with exact rational RMFs: parameter lines orthogonal to rounding); see
             :func:`rmfsurf.wire_sweep`. Lines and arcs are exact whatever the method.
+        end_profile: the section at the wire's end (None: `profile` all along), of the
+            kinds `profile` takes (as many holes), DRAWN AT THE WIRE'S START, in the plane
+            normal to the wire there, like `profile`: it is given in the start frame's
+            coordinates and carried to the end by the frame, the section blending
+            linearly in arc length from `profile` into it, loop to loop, corner to corner
+            (rmf_wire_sweep_between). To taper a circle of radius 2 into one of radius 1,
+            draw both circles about the wire's start. Open wires and a constant `scale`
+            only; `profile` must lie in the normal plane too.
 
     Returns:
         A Part.Shape: a Part.Solid (or a Part.Shell with ``solid=False``).
     """
     return sweep_with_report(wire, profile, solid=solid, corner=corner,
                              corner_radius=corner_radius, tolerance=tolerance, frame=frame,
-                             scale=scale, method=method)[0]
+                             scale=scale, method=method, end_profile=end_profile)[0]
 
 
 def sweep_with_report(wire: Any, profile: Any, *, solid: bool = True, corner: str = "round",
                       corner_radius: Optional[float] = None, tolerance: float = 1e-4,
                       twist: float = 0.0, closure_symmetry: int = 0,
                       frame: SweepFrame = "rmf", scale: Tuple[float, float] = (1.0, 1.0),
-                      method: str = "ph-rmf") -> Tuple[Any, SweepReport]:
+                      method: str = "ph-rmf", end_profile: Any = None
+                      ) -> Tuple[Any, SweepReport]:
     """:func:`sweep` with the wire sweep's `twist` (radians over the whole wire) and
     `closure_symmetry` (closed wires: the frame closes modulo 2π/k; 0 is taken as 1),
     returning the Part.Shape and the library's :class:`rmfsurf.SweepReport` (spine
@@ -485,11 +498,16 @@ def sweep_with_report(wire: Any, profile: Any, *, solid: bool = True, corner: st
     principal = _start_principal_normal(wire) if _named(frame, "frenet") else None
     start_f2 = _frame_start_normal(frame, tangent / np.linalg.norm(tangent), principal)
     outer, holes, f2 = _profile_curves(profile, origin, tangent, tolerance, start_f2)
+    end_outer, end_holes = None, []
+    if end_profile is not None:
+        # In the same coordinates as the profile: the frame (f2, f3, t) at the start.
+        end_outer, end_holes, _ = _profile_curves(end_profile, origin, tangent, tolerance, f2,
+                                                  "end_profile")
     result = wire_sweep(edges, outer, holes, solid=solid, corner=corner,
                         corner_radius=corner_radius, tolerance=tolerance,
                         initial_normal=f2 if _named(frame, "rmf") else None, twist=twist,
                         closure_symmetry=closure_symmetry, frame=frame, scale=scale,
-                        method=method)
+                        method=method, end_profile=end_outer, end_holes=end_holes)
     return part_shape(result, min(tolerance, 1e-6)), result.report()
 
 

@@ -293,12 +293,12 @@ def _start_principal_normal(path: Any) -> Optional[np.ndarray]:
     return n / length if length > 1e-12 * np.dot(v, v) else None
 
 
-def _profile_plane(profile: Any, tolerance: float, origin: np.ndarray, tangent: np.ndarray
-                   ) -> Tuple[Any, List[Any], gp_Pln]:
+def _profile_plane(profile: Any, tolerance: float, origin: np.ndarray, tangent: np.ndarray,
+                   name: str = "profile") -> Tuple[Any, List[Any], gp_Pln]:
     """The outer wire, the inner wires and the plane of a planar profile. An open wire or
     an edge (a sheet's profile) that defines no plane of its own — a straight line — is
     taken in the path's normal plane at its start (`origin`, `tangent`) when it lies there."""
-    raw = _shape_of(profile, "profile", (TopAbs_FACE, TopAbs_WIRE, TopAbs_EDGE, TopAbs_COMPOUND),
+    raw = _shape_of(profile, name, (TopAbs_FACE, TopAbs_WIRE, TopAbs_EDGE, TopAbs_COMPOUND),
                     _PROFILE_LIKE)
     if raw.ShapeType() == TopAbs_COMPOUND:  # a build123d sketch such as Circle(3)
         faces = []
@@ -307,14 +307,14 @@ def _profile_plane(profile: Any, tolerance: float, origin: np.ndarray, tangent: 
             faces.append(explorer.Current())
             explorer.Next()
         if len(faces) != 1:
-            raise ValueError("profile: a compound (sketch) must hold exactly one face, it "
-                             "holds %d" % len(faces))
+            raise ValueError("%s: a compound (sketch) must hold exactly one face, it "
+                             "holds %d" % (name, len(faces)))
         raw = faces[0]
     if raw.ShapeType() == TopAbs_FACE:
         f = _as_face(raw)
         surface = BRepAdaptor_Surface(f)
         if surface.GetType() != GeomAbs_Plane:
-            raise ValueError("profile: the face is not planar")
+            raise ValueError("%s: the face is not planar" % name)
         outer = BRepTools.OuterWire_s(f)
         inner = []
         explorer = TopExp_Explorer(f, TopAbs_WIRE)
@@ -334,10 +334,11 @@ def _profile_plane(profile: Any, tolerance: float, origin: np.ndarray, tangent: 
         return wire, [], plane
     normal_plane = gp_Pln(gp_Pnt(*map(float, origin)), gp_Dir(*map(float, tangent)))
     if BRep_Tool.IsClosed_s(wire):
-        raise ValueError("profile: the wire is not planar (within %g)" % tolerance)
+        raise ValueError("%s: the wire is not planar (within %g)" % (name, tolerance))
     if not _in_plane(wire, normal_plane, tolerance):
-        raise ValueError("profile: a straight profile spans no plane of its own; it must lie "
-                         "in the path's normal plane at the path's start (within %g)" % tolerance)
+        raise ValueError("%s: a straight profile spans no plane of its own; it must lie "
+                         "in the path's normal plane at the path's start (within %g)"
+                         % (name, tolerance))
     return wire, [], normal_plane
 
 
@@ -381,13 +382,15 @@ def profile_curves(profile: Any, origin: ArrayLike, tangent: ArrayLike, toleranc
 
 
 def _profile_curves(profile: Any, origin: ArrayLike, tangent: ArrayLike, tolerance: float,
-                    f2: Optional[np.ndarray] = None) -> Tuple[Curve, List[Curve], np.ndarray]:
+                    f2: Optional[np.ndarray] = None, name: str = "profile"
+                    ) -> Tuple[Curve, List[Curve], np.ndarray]:
     """:func:`profile_curves`, in the coordinates of the unit normal `f2` (normal to the
-    tangent) when given instead of the profile plane's x direction."""
+    tangent) when given instead of the profile plane's x direction; messages name the
+    argument `name`."""
     origin = _core.vector(origin, "origin", finite_only=True)
     t = _core.direction(tangent, "tangent")
     tolerance = _core.finite(tolerance, "tolerance", positive=True)
-    outer, inner, plane = _profile_plane(profile, tolerance, origin, t)
+    outer, inner, plane = _profile_plane(profile, tolerance, origin, t, name)
     axis = plane.Position()
     # Any plane across the path, carried rigidly by the frame (the library refuses one that
     # holds the tangent, or that would fold the sweep).
@@ -398,8 +401,8 @@ def _profile_curves(profile: Any, origin: ArrayLike, tangent: ArrayLike, toleran
     f2 /= np.linalg.norm(f2)
     f3 = _core.cross(t, f2)
     frame = (f2, f3, t)
-    outer_curve = _wire_curve(outer, origin, frame, "profile", tolerance)
-    holes = [_wire_curve(w, origin, frame, "profile hole %d" % i, tolerance)
+    outer_curve = _wire_curve(outer, origin, frame, name, tolerance)
+    holes = [_wire_curve(w, origin, frame, "%s hole %d" % (name, i), tolerance)
              for i, w in enumerate(inner)]
     return outer_curve, holes, f2
 
@@ -498,7 +501,7 @@ def _wrap_like(template: Any, raw: Any) -> Any:
 def sweep(path: Any, profile: Any, *, solid: bool = True, corner: str = "round",
           corner_radius: Optional[float] = None, tolerance: float = 1e-4,
           frame: SweepFrame = "rmf", scale: Tuple[float, float] = (1.0, 1.0),
-          method: str = "ph-rmf") -> Any:
+          method: str = "ph-rmf", end_profile: Any = None) -> Any:
     """Sweeps `profile` along `path` (rmf_wire_sweep), by default with rotation-minimizing
     frames.
 
@@ -526,6 +529,14 @@ def sweep(path: Any, profile: Any, *, solid: bool = True, corner: str = "round",
         method: how the path's curves are swept: "ph-rmf" (default), "mobius" or "rrmf"
             (spines with exact rational RMFs: parameter lines orthogonal to rounding); see
             :func:`rmfsurf.wire_sweep`. Lines and arcs are exact whatever the method.
+        end_profile: the section at the path's end (None: `profile` all along), a planar
+            Face (as many holes as `profile`) or Wire of the same kind as `profile`, DRAWN
+            AT THE PATH'S START, in the plane normal to the path there, like `profile`: it
+            is given in the start frame's coordinates and carried to the end by the frame,
+            the section blending linearly in arc length from `profile` into it, loop to
+            loop, corner to corner (rmf_wire_sweep_between). To taper a circle of radius
+            2 into one of radius 1, draw both circles about the path's start. Open paths
+            and a constant `scale` only; `profile` must lie in the normal plane too.
 
     Returns:
         A ``TopoDS_Solid`` (or shell) — a build123d ``Solid`` / CadQuery ``Shape`` when
@@ -537,8 +548,14 @@ def sweep(path: Any, profile: Any, *, solid: bool = True, corner: str = "round",
     start_f2 = _frame_start_normal(frame, tangent, _start_principal_normal(path)
                                    if _named(frame, "frenet") else None)
     outer, holes, f2 = _profile_curves(profile, origin, tangent, tolerance, start_f2)
+    end_outer, end_holes = None, []
+    if end_profile is not None:
+        # In the same coordinates as the profile: the frame (f2, f3, t) at the start.
+        end_outer, end_holes, _ = _profile_curves(end_profile, origin, tangent, tolerance, f2,
+                                                  "end_profile")
     result = wire_sweep(edges, outer, holes, solid=solid, corner=corner,
                         corner_radius=corner_radius, tolerance=tolerance,
                         initial_normal=f2 if _named(frame, "rmf") else None, frame=frame,
-                        scale=scale, method=method)
+                        scale=scale, method=method, end_profile=end_outer,
+                        end_holes=end_holes)
     return _wrap_like(path, shape(result, min(tolerance, 1e-6)))

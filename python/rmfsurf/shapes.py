@@ -292,7 +292,9 @@ def wire_sweep(edges: Union[Edge, Sequence[Edge]], profile: Curve,
                join_tolerance: Optional[float] = None,
                initial_normal: Optional[ArrayLike] = None, twist: float = 0.0,
                closure_symmetry: int = 0, frame: SweepFrame = "rmf",
-               scale: Tuple[float, float] = (1.0, 1.0), method: str = "ph-rmf") -> Shape:
+               scale: Tuple[float, float] = (1.0, 1.0), method: str = "ph-rmf",
+               end_profile: Optional[Curve] = None,
+               end_holes: Union[Curve, Sequence[Curve]] = ()) -> Shape:
     """Sweeps a closed profile (with `holes`) along a connected wire of `edges`.
 
     Args:
@@ -328,6 +330,14 @@ def wire_sweep(edges: Union[Edge, Sequence[Edge]], profile: Curve,
             (``report().max_parameter_cosine`` ~1e-14, ~1e-7 with "ph-rmf"). Lines and
             arcs are exact whatever the method. "mobius" and "rrmf" take a constant
             `scale` only.
+        end_profile: the section at the wire's end (None: the profile all along), in the
+            profile's coordinates (x along f2, y along f3 of the frame, z = 0): the section
+            blends linearly in arc length from `profile` to it, loop to loop and corner to
+            corner (rmf_wire_sweep_between; a circle into a smaller concentric circle is
+            the frustum of `scale`). Open wires only, with a constant `scale`, both
+            profiles in the normal plane.
+        end_holes: the end profile's holes (or one curve), as many as `holes`, matched in
+            order; only with `end_profile`.
     """
     _require_wire_sweep()
     array, count, keep = _edges(edges)
@@ -353,6 +363,16 @@ def wire_sweep(edges: Union[Edge, Sequence[Edge]], profile: Curve,
     options.scale_start, options.scale_end = _scale(scale)
     options.method = _wire_method(method)
     out = ffi.new("RmfShape **")
-    call("rmf_wire_sweep", array, count, prof._ptr, hole_array, len(hole_list), options, out)
+    if end_profile is None:
+        if _core.objects(end_holes, "end_holes", Curve, "an rmfsurf.Curve"):
+            raise _core._refused("end_holes", "holes of the end profile need end_profile")
+        call("rmf_wire_sweep", array, count, prof._ptr, hole_array, len(hole_list), options,
+             out)
+    else:
+        end = as_curve(end_profile, "end_profile")
+        end_list = _core.objects(end_holes, "end_holes", Curve, "an rmfsurf.Curve")
+        end_array = ffi.new("RmfCurve *[]", [h._ptr for h in end_list] or [ffi.NULL])
+        call("rmf_wire_sweep_between", array, count, prof._ptr, hole_array, len(hole_list),
+             end._ptr, end_array, len(end_list), options, out)
     del keep
     return Shape(_core.owned("shape", out[0]))

@@ -268,6 +268,55 @@ def test_spine_with_frames_is_the_librarys_framed_spine():
         assert frames.domain == curve.domain
 
 
+# End profiles (a sweep between two profiles), drawn at the wire's start like the profile.
+END_PROFILES = [
+    ("freecad.sweep(end_profile)", lambda v: rfc.sweep(IN.wire, IN.ring, end_profile=v)),
+    ("freecad.sweep_with_report(end_profile)",
+     lambda v: rfc.sweep_with_report(IN.wire, IN.ring, end_profile=v)),
+]
+
+
+def _end_ring(radius, normal=(1, 0, 0), hole=None):
+    """A circle face of `radius` about the wire's start, in the plane of `normal`, with a
+    hole of radius `hole`."""
+    face = Part.Face(Part.Wire(Part.makeCircle(radius, V(0, 0, 0), V(*normal))))
+    if hole is not None:
+        face = face.cut(Part.Face(Part.Wire(Part.makeCircle(hole, V(0, 0, 0), V(*normal)))))
+    return face
+
+
+BAD_END_PROFILES = [
+    ("int", lambda: 3, TypeError, "end_profile"),
+    ("str", lambda: "circle", TypeError, "end_profile"),
+    ("a hole", lambda: _end_ring(0.5, hole=0.2), rmfsurf.InvalidInputError,
+     "end_profile: it has 1 holes, the profile 0"),
+    ("tilted", lambda: _end_ring(0.5, normal=(1, 1, 0)), rmfsurf.InvalidInputError,
+     "end_profile"),
+]
+
+
+@pytest.mark.parametrize("case, bad", [
+    pytest.param(c, b, id="%s-%s" % (c[0], b[0])) for c in END_PROFILES for b in BAD_END_PROFILES])
+def test_a_bad_end_profile_names_the_argument(case, bad):
+    _, value, exception, mention = bad
+    refused(case[1], value(), exception, mention)
+
+
+def test_every_end_profile_of_the_adapter_has_its_cases_and_is_taken():
+    """Every function of the adapter taking `end_profile` has END_PROFILES cases, each
+    taking a smaller circle drawn at the wire's start into a closed solid."""
+    required = {"freecad.%s(end_profile)" % name for name in dir(rfc)
+                if not name.startswith("_") and inspect.isfunction(getattr(rfc, name))
+                and getattr(getattr(rfc, name), "__module__", "") == "rmfsurf.freecad"
+                and "end_profile" in inspect.signature(getattr(rfc, name)).parameters}
+    assert {"freecad.sweep(end_profile)", "freecad.sweep_with_report(end_profile)"} <= required
+    assert required <= {c[0] for c in END_PROFILES}, required - {c[0] for c in END_PROFILES}
+    for _, call in END_PROFILES:
+        result = call(_end_ring(0.5))
+        solid = result[0] if isinstance(result, tuple) else result
+        assert solid.isValid() and solid.ShapeType == "Solid"
+
+
 CASES = {
     "integer": {c[0] for c in INTEGERS},
     "number": {c[0] for c in NUMBERS},

@@ -366,12 +366,19 @@ def test_a_file_that_cannot_be_written_is_a_file_error_naming_it(case, tmp_path,
 # of one; anything else that is not a sequence is a TypeError naming the argument, an item
 # of another type a TypeError naming its index.
 
+#: A straight open wire of length 3 (sweeps between two profiles).
+BAR = [rmfsurf.Line((0, 0, 0), (3, 0, 0))]
+
 OBJECTS = [
     ("wire_sweep(edges)", lambda v: rmfsurf.wire_sweep(v, circle(1.0)),
      rmfsurf.Line((0, 0, 0), (10, 0, 0))),
     ("wire_sweep(holes)", lambda v: rmfsurf.wire_sweep(IN.edges, circle(1.0), v,
                                                        corner_radius=2.0),
      circle(0.5)),
+    ("wire_sweep(end_holes)",
+     lambda v: rmfsurf.wire_sweep(BAR, circle(1.0), circle(0.5), end_profile=circle(0.8),
+                                  end_holes=v),
+     circle(0.4)),
     ("mobius_point(maps)", lambda v: rmfsurf.mobius_point(v, (1, 0, 0)), INVERSION),
     ("mobius_curve(maps)", lambda v: rmfsurf.mobius_curve(IN.spline, v), INVERSION),
     ("mobius_frames(maps)", lambda v: rmfsurf.mobius_frames(IN.frames, v), INVERSION),
@@ -569,6 +576,86 @@ def test_every_method_of_a_wire_sweep_has_its_cases():
                 required.add("%s%s(method)" % (prefix, name))
     assert "wire_sweep(method)" in required and "ocp.sweep(method)" in required, required
     assert required <= {c[0] for c in METHODS}, required - {c[0] for c in METHODS}
+
+
+# ---------------------------------------------------------------------------------------
+# End profiles of wire sweeps (a sweep between two profiles): a curve (rmfsurf.wire_sweep)
+# or a planar profile drawn at the path's start (the adapters). Not a class of the
+# annotations: (key, call, a valid end profile), each with every bad value, and a coverage
+# check of their own below.
+
+END_PROFILES = [
+    ("wire_sweep(end_profile)", lambda v: rmfsurf.wire_sweep(BAR, circle(1.0), end_profile=v),
+     lambda: circle(0.5)),
+    ("ocp.sweep(end_profile)", lambda v: IN.ocp.sweep(IN.route, IN.ring, end_profile=v),
+     lambda: IN.bd.Plane(origin=(0, 0, 0), z_dir=(1, 0, 0)) * IN.bd.Circle(0.5)),
+]
+
+
+def _ring_in_a_tilted_plane():
+    """A circle of radius 0.5 about the start in the plane z = x (not the normal plane)."""
+    n = circle(0.5).nurbs()
+    poles = np.array(n.poles, dtype=float)
+    poles[:, 2] = poles[:, 0]
+    return rmfsurf.Curve.from_nurbs(n.degree, poles, n.knots, n.weights)
+
+
+def bad_end_profiles(case):
+    """(label, value factory, exception, what the message names) for a case of
+    END_PROFILES: no profile (TypeError), a hole the profile has not, a plane across the
+    path that is not normal to it (the library's refusals, naming end_profile)."""
+    bad = [("int", lambda: 3, TypeError, "end_profile"),
+           ("str", lambda: "circle", TypeError, "end_profile"),
+           ("list", lambda: [circle(0.5)], TypeError, "end_profile")]
+    if case[0].startswith("ocp."):
+        plane = lambda z_dir: IN.bd.Plane(origin=(0, 0, 0), z_dir=z_dir)  # noqa: E731
+        bad += [("a hole", lambda: plane((1, 0, 0)) * (IN.bd.Circle(0.5) - IN.bd.Circle(0.2)),
+                 rmfsurf.InvalidInputError, "end_profile: it has 1 holes, the profile 0"),
+                ("tilted", lambda: plane((1, 1, 0)) * IN.bd.Circle(0.5),
+                 rmfsurf.InvalidInputError, "end_profile")]
+    else:
+        bad.append(("tilted", _ring_in_a_tilted_plane, rmfsurf.InvalidInputError,
+                    "end_profile"))
+    return [pytest.param(case, b, id="%s-%s" % (case[0], b[0])) for b in bad]
+
+
+@pytest.mark.parametrize("case, bad", [p for c in END_PROFILES for p in bad_end_profiles(c)])
+def test_a_bad_end_profile_names_the_argument(case, bad):
+    _, value, exception, mention = bad
+    refused(case[1], value(), exception, mention)
+
+
+def test_an_end_profile_without_the_profiles_holes_is_refused_naming_it():
+    refused(lambda v: rmfsurf.wire_sweep(BAR, circle(1.0), circle(0.5), end_profile=v),
+            circle(0.8), rmfsurf.InvalidInputError,
+            "end_profile: it has 0 holes, the profile 1")
+
+
+@pytest.mark.parametrize("case", END_PROFILES, ids=[c[0] for c in END_PROFILES])
+def test_a_good_end_profile_is_taken(case):
+    case[1](case[2]())
+
+
+def test_end_holes_without_an_end_profile_are_refused_naming_them():
+    refused(lambda v: rmfsurf.wire_sweep(BAR, circle(1.0), circle(0.5), end_holes=v),
+            circle(0.4), rmfsurf.InvalidInputError, "end_holes")
+
+
+def test_every_end_profile_of_a_wire_sweep_has_its_cases():
+    """Every public function taking `end_profile` has END_PROFILES cases."""
+    ocp = pytest.importorskip("rmfsurf.ocp")
+    required = set()
+    for module, prefix in ((rmfsurf, ""), (ocp, "ocp.")):
+        for name in dir(module):
+            obj = getattr(module, name)
+            if name.startswith("_") or not inspect.isfunction(obj):
+                continue
+            if getattr(obj, "__module__", "") != module.__name__ and module is ocp:
+                continue
+            if "end_profile" in inspect.signature(obj).parameters:
+                required.add("%s%s(end_profile)" % (prefix, name))
+    assert {"wire_sweep(end_profile)", "ocp.sweep(end_profile)"} <= required, required
+    assert required <= {c[0] for c in END_PROFILES}, required - {c[0] for c in END_PROFILES}
 
 
 BOXES = [
