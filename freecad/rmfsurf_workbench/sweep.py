@@ -1,6 +1,8 @@
 """RmfSweep: a planar profile swept along a wire with rotation-minimizing frames (or the
 Frenet frame, or a frame following a fixed direction; the profile scaled linearly from
-ScaleStart to ScaleEnd), by the library's wire sweep (``rmf_wire_sweep`` through :func:`rmfsurf.freecad.sweep_with_report`).
+ScaleStart to ScaleEnd, or blended into an EndProfile), by the library's wire sweep (``rmf_wire_sweep``,
+``rmf_wire_sweep_between`` with an EndProfile, through
+:func:`rmfsurf.freecad.sweep_with_report`).
 
 Lines and circular arcs of the spine give exact cylinders and tori; curve edges are
 swept along a spine within the tolerance by the Method: "ph-rmf" (default), a PH cubic
@@ -35,6 +37,12 @@ class SweepFeature(Feature):
                  "A sketch (inner loops are holes), a planar face or closed edges, in the "
                  "plane normal to the spine at its start; its x axis is the frame's initial "
                  "normal"),
+        Property("App::PropertyLinkSub", "EndProfile", "Sweep",
+                 "Optional: the section at the spine's end, of the kinds Profile takes (as "
+                 "many holes), drawn at the spine's START in the plane normal to it there, "
+                 "like Profile: the section blends linearly in arc length from Profile into "
+                 "it, loop to loop, corner to corner (open spines, ScaleStart = ScaleEnd). "
+                 "Empty: Profile all along"),
         Property("App::PropertyEnumeration", "Method", "Sweep",
                  "How curve edges are swept: ph-rmf, the PH cubic spline with its rational "
                  "RMF; mobius or rrmf, spines with exact rational RMFs (parameter lines "
@@ -111,12 +119,15 @@ class SweepFeature(Feature):
                 raise ValueError("%s: the profile's scale must be positive, got %r"
                                  % (name, value))
         radius = obj.CornerRadius.Value
+        end_profile = (inputs.profile(obj.EndProfile, "EndProfile") if obj.EndProfile
+                       else None)
         shape, report = sweep_with_report(
             inputs.wire(obj.Spine, "Spine"), inputs.profile(obj.Profile, "Profile"),
             solid=obj.Solid, corner=obj.Corner, corner_radius=radius if radius > 0 else None,
             tolerance=obj.Tolerance, twist=math.radians(obj.Twist.Value),
             closure_symmetry=obj.ClosureSymmetry, frame=frame,
-            scale=(obj.ScaleStart, obj.ScaleEnd), method=obj.Method)
+            scale=(obj.ScaleStart, obj.ScaleEnd), method=obj.Method,
+            end_profile=end_profile)
         obj.Shape = shape
         self.set_outputs(obj, SpineDistance=report.spine_distance,
                          RmfDefect=report.rmf_angle_error,

@@ -15,7 +15,8 @@ What is checked, each figure printed with its limit:
      (sub-element links), a circle along a sketch with a sharp corner (round, then miter):
      valid solids, volumes against Pappus's A·L; a sketch constraint changed, recomputed;
      twist, sheet; Frame (rmf, frenet, fixed with FrameDirection), ScaleStart/ScaleEnd
-     (a frustum's volume); Method (ph-rmf, mobius, rrmf: a line and a B-spline, parameter
+     (a frustum's volume), EndProfile (the same frustum from two circles; older documents
+     get it empty); Method (ph-rmf, mobius, rrmf: a line and a B-spline, parameter
      lines orthogonal to rounding with the exact RMFs; older documents get the methods);
      the library's refusals mark the feature Invalid with a message;
   C. RmfUnfold of a developable face (a cone frustum): flat area against the closed form,
@@ -366,6 +367,38 @@ def part_b(doc):
     doc.recompute()
     check_solid("a circle r 2 along a line of 30, ScaleEnd 0.5: the frustum", frustum.Shape,
                 PI * 30 * (4 + 2 + 1) / 3)
+    # EndProfile: empty by default (and on a document before it); a circle of radius 1
+    # drawn at the start as the end profile, ScaleEnd back at 1: the same frustum, by the
+    # blend of the two profiles; a ring (a hole the profile has not) is refused naming
+    # EndProfile; emptied again: the cylinder.
+    frustum.ScaleEnd = 1.0
+    require("EndProfile of a new RmfSweep: empty (%r)" % (frustum.EndProfile,),
+            not frustum.EndProfile)
+    end_circle, _ = circle_sketch(doc, "EndCircle", FreeCAD.Placement(V(0, -80, 0), Z_TO_X),
+                                  (1.0,))
+    doc.recompute()
+    frustum.EndProfile = (end_circle, [])
+    doc.recompute()
+    check_solid("a circle r 2 into an EndProfile circle r 1 along a line of 30: the frustum",
+                frustum.Shape, PI * 30 * (4 + 2 + 1) / 3)
+    end_ring, _ = circle_sketch(doc, "EndRing", FreeCAD.Placement(V(0, -80, 0), Z_TO_X),
+                                (1.0, 0.5))
+    doc.recompute()
+    frustum.EndProfile = (end_ring, [])
+    doc.recompute()
+    message = frustum.getStatusString()
+    require("an EndProfile with a hole the Profile has not: Invalid, '%s'" % message,
+            not frustum.isValid() and "end_profile" in message)
+    frustum.EndProfile = None
+    frustum.removeProperty("EndProfile")
+    frustum.Proxy.onDocumentRestored(frustum)
+    doc.recompute()
+    require("no EndProfile (a document before it): added empty, valid",
+            "EndProfile" in frustum.PropertiesList and not frustum.EndProfile
+            and frustum.isValid())
+    check_solid("EndProfile empty again: the cylinder", frustum.Shape, PI * 4 * 30)
+    for name in (end_ring.Name, end_circle.Name):
+        doc.removeObject(name)
     block = polyline_sketch(doc, "Block", FreeCAD.Placement(V(0, -80, 0), Z_TO_X),
                             [(-2, -1, 0), (2, -1, 0), (2, 1, 0), (-2, 1, 0), (-2, -1, 0)])
     block.addConstraint(Sketcher.Constraint("Coincident", 3, 2, 0, 1))
