@@ -658,16 +658,15 @@ static void test_bad_inputs(void) {
    two concentric circles, radius 1 at the start and 0.5 at the end of a line of length 3,
    are the frustum of volume pi L (r0^2 + r0 r1 + r1^2) / 3; a square (half side 0.5) into a
    circle (radius 0.6) along a line of 4 is a closed solid whose volume lies between the
-   square's prism and the circle's (the circle's quarter points on the square's diagonals:
-   corner to corner, no turn; with the quarters starting on the x axis the corners are as
-   near to two of them and the section turns by 45 degrees, pinching it below the square's). Then the bad inputs: a NULL end profile, a different
-   number of holes and a closed wire, each refused with *out untouched. */
+   square's prism and the circle's (its quarters start on the x axis: the circle is cut where
+   the square's corners point, on its diagonals, and the section does not turn). Then the bad
+   inputs: a NULL end profile, a different number of holes and a closed wire, each refused
+   with *out untouched. */
 static void test_sweep_between(void) {
     RmfEdge e = line(vec3(0, 0, 0), vec3(3, 0, 0)), e4 = line(vec3(0, 0, 0), vec3(4, 0, 0));
     RmfCurve *big = circle(1), *small = circle(0.5), *sq = square(0.5), *round = NULL, *hole = circle(0.2);
     RmfShape *shape = NULL;
-    const double h = 0.70710678118654752440;
-    CHECK_STATUS(rmf_curve_circle(vec3(0, 0, 0), vec3(h, h, 0), vec3(-h, h, 0), 0.6, &round), RMF_OK, "");
+    CHECK_STATUS(rmf_curve_circle(vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0), 0.6, &round), RMF_OK, "");
     const double r0 = 1, r1 = 0.5, length = 3, exact = PI * length * (r0 * r0 + r0 * r1 + r1 * r1) / 3;
     CHECK_STATUS(rmf_wire_sweep_between(&e, 1, big, NULL, 0, small, NULL, 0, NULL, &shape), RMF_OK, "");
     if (shape) {

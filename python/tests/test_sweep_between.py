@@ -60,8 +60,7 @@ def test_two_concentric_circles_along_a_line_are_the_frustum():
 def test_ocp_sweeps_a_square_face_into_a_circle_face_along_a_build123d_line():
     """Both faces are drawn at the line's start, in its normal plane (the end profile in the
     start frame's coordinates, carried to the end). OpenCascade's circle is three rational
-    120° arcs: the blend splits one and matches the square's corners to the nearest joints
-    (volume 4.166; turned by 45° it is 4.029, the section turning more on the way)."""
+    120° arcs: the blend cuts it where the square's corners point."""
     length, half, radius = 4.0, 0.5, 0.6
     line = bd.Line((0, 0, 0), (length, 0, 0))
     plane = bd.Plane(origin=(0, 0, 0), z_dir=(1, 0, 0))

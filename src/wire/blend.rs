@@ -3,21 +3,23 @@
 //! & Jüttler (1) with a moving profile) — built from the scale law's machinery (`scale`):
 //!
 //! * the profiles are matched loop by loop: the same number of loops (refused otherwise),
-//!   each loop turning the same way, the edges of the one with fewer split at the middle of
-//!   their longest until both have as many, and the end loop's start turned to the edge
-//!   whose start is nearest the start loop's (in each loop's own size and centre: a square
-//!   onto a circle corner to corner);
+//!   each loop turning the same way; a smooth loop is cut where the other's corners point
+//!   (its points nearest them, each loop in its own size and centre: a circle at a square's
+//!   diagonals), the edges of the one with fewer split at the middle of their longest until
+//!   both have as many, and the end loop's start turned to the joint nearest the start
+//!   loop's;
 //! * each pair of matched segments is written over one denominator h₀h₁ (c₀ = C₀h₁/h₀h₁,
 //!   c₁ = C₁h₀/h₀h₁, degree p₀ + p₁): with equal weights the patch of the blend is the sum
 //!   of the patches of c₀ scaled by 1 − λ and of c₁ scaled by λ, less the spine's own term
 //!   (the patch of the profile 0 with those weights, scaled by 1): exact rational faces,
 //!   exact where the scale law is (lines, PH pieces; arcs within the tolerance).
 
-use super::edge::reversed;
+use super::edge::{end_direction, reversed};
 use super::profile::{Profile, ProfileLoop};
 use crate::bezier::bernstein::product;
 use crate::bezier::{PiecewiseCurve, PiecewiseSurface, RationalBezierCurve, RationalBezierPatch};
 use crate::error::{invalid, Result};
+use crate::math::minimize_bracketed;
 use glam::{DVec3, DVec4};
 
 /// The start and end profiles matched edge for edge over common denominators, and the
@@ -87,6 +89,15 @@ fn matched_loop(a: &ProfileLoop, b: &ProfileLoop) -> (ProfileLoop, ProfileLoop, 
     if a.closed && (a.area > 0.0) != (b.area > 0.0) {
         s1 = s1.iter().rev().map(reversed_segment).collect();
     }
+    if a.closed {
+        // Corners onto a smooth loop: it is cut where they fall, so that they meet points
+        // of it, not the middles between its joints (a square onto a circle of quarters).
+        match (corners(&s0).is_empty(), corners(&s1).is_empty()) {
+            (false, true) => cut_at_corners_of(&s0, &mut s1),
+            (true, false) => cut_at_corners_of(&s1, &mut s0),
+            _ => {}
+        }
+    }
     while s0.len() < s1.len() {
         split_longest(&mut s0);
     }
@@ -132,6 +143,91 @@ fn segments(lp: &ProfileLoop) -> Vec<RationalBezierCurve> {
 fn reversed_segment(s: &RationalBezierCurve) -> RationalBezierCurve {
     let curve = PiecewiseCurve::new(vec![s.clone()], vec![0.0, 1.0]).expect("one segment");
     reversed(&curve).segments()[0].clone()
+}
+
+/// Largest angle between the tangents at a joint that still counts as smooth.
+const SMOOTH: f64 = 1e-6;
+
+/// Samples per segment of the search for the point of a loop nearest a corner.
+const NEAREST_SAMPLES: usize = 64;
+
+/// The joints of a closed loop (joint k starts segment k) where its tangent turns.
+fn corners(segments: &[RationalBezierCurve]) -> Vec<usize> {
+    let n = segments.len();
+    (0..n)
+        .filter(|&k| {
+            let before = end_direction(&segments[(k + n - 1) % n], true);
+            let after = end_direction(&segments[k], false);
+            before.angle_between(after) > SMOOTH
+        })
+        .collect()
+}
+
+/// A loop's points about its centre, in units of its size (two loops of different size
+/// and place compared alike).
+fn normalizer(segments: &[RationalBezierCurve]) -> impl Fn(DVec3) -> DVec3 {
+    let starts: Vec<DVec3> = segments.iter().map(|c| c.eval(0.0)).collect();
+    let centre = starts.iter().copied().sum::<DVec3>() / starts.len() as f64;
+    let size = starts
+        .iter()
+        .map(|p| p.distance(centre))
+        .fold(0.0, f64::max)
+        .max(f64::MIN_POSITIVE);
+    move |p| (p - centre) / size
+}
+
+/// Cuts the smooth loop `smooth` at its points nearest the corners of `cornered` (each
+/// loop about its centre and in its size).
+fn cut_at_corners_of(cornered: &[RationalBezierCurve], smooth: &mut Vec<RationalBezierCurve>) {
+    let (from, to) = (normalizer(cornered), normalizer(smooth));
+    let mut cuts: Vec<(usize, f64)> = corners(cornered)
+        .into_iter()
+        .map(|k| {
+            let corner = from(cornered[k].eval(0.0));
+            let distance = |j: usize, t: f64| to(smooth[j].eval(t)).distance(corner);
+            let (j, t) = (0..smooth.len())
+                .flat_map(|j| {
+                    (0..=NEAREST_SAMPLES).map(move |i| (j, i as f64 / NEAREST_SAMPLES as f64))
+                })
+                .fold((0, 0.0), |best, c| {
+                    if distance(c.0, c.1) < distance(best.0, best.1) {
+                        c
+                    } else {
+                        best
+                    }
+                });
+            let step = 1.0 / NEAREST_SAMPLES as f64;
+            let refined = minimize_bracketed(
+                |t| distance(j, t),
+                (t - step).max(0.0),
+                (t + step).min(1.0),
+                0.0,
+            );
+            (j, refined.x)
+        })
+        .filter(|&(_, t)| t > 1e-9 && t < 1.0 - 1e-9)
+        .collect();
+    // From the last cut back, so that earlier segment indices stay valid; several cuts in
+    // one segment from its end back, each in the piece left before it.
+    cuts.sort_by(|a, b| b.0.cmp(&a.0).then(b.1.total_cmp(&a.1)));
+    cuts.dedup_by(|a, b| a.0 == b.0 && (a.1 - b.1).abs() < 1e-9);
+    let mut last: Option<(usize, f64)> = None;
+    for (j, t) in cuts {
+        // A later cut in the same segment took the part after it: rescale into what is left.
+        let t = match last {
+            Some((k, t_after)) if k == j => t / t_after,
+            _ => t,
+        };
+        let (left, right) = smooth[j].split(t);
+        smooth.splice(j..=j, [left, right]);
+        last = Some((
+            j,
+            match last {
+                Some((k, t_after)) if k == j => t * t_after,
+                _ => t,
+            },
+        ));
+    }
 }
 
 /// Splits the segment with the longest control polygon at its middle.

@@ -602,7 +602,7 @@ fn a_sweep_between_two_circles_is_the_scaled_tube() {
 
 /// A square into a circle along a line: its sections are quadratic in λ, so the volume is
 /// Simpson's L (A₀ + 4A½ + A₁)/6 exactly — A½ measured on the faces at mid-length; the
-/// caps are the square and the circle.
+/// caps are the square and the circle, the circle cut where the square's corners point.
 #[test]
 fn a_square_blends_into_a_circle_corner_to_corner() {
     let edges = [line([0., 0., 0.], [0., 0., 4.])];
@@ -636,6 +636,12 @@ fn a_square_blends_into_a_circle_corner_to_corner() {
         );
         // (The sampled areas are 400-gons: 1e-4 of the circle's.)
         assert!(relative(v, simpson) < 2e-4, "{v} against {simpson}");
+        // Corners meet the circle where they point (it is cut there): the sections widen
+        // monotonically, none narrows below both ends (a 45° turn gave 0.913 < 1).
+        assert!(
+            a0.min(a1) <= a_mid && a_mid <= a0.max(a1),
+            "{a0} {a_mid} {a1}"
+        );
         let caps: Vec<&Face> = shape
             .faces()
             .iter()
