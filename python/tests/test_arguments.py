@@ -559,11 +559,10 @@ def test_every_wire_method_is_taken(case):
         case[1](method)
 
 
-def test_every_method_of_a_wire_sweep_has_its_cases():
-    """Every public function taking both `frame` and `method` (a wire sweep) has METHODS
-    cases."""
+def wire_sweep_functions():
+    """(name, parameters) of the public functions of rmfsurf and rmfsurf.ocp ("ocp."
+    prefixed; the adapter's own, not what it imports)."""
     ocp = pytest.importorskip("rmfsurf.ocp")
-    required = set()
     for module, prefix in ((rmfsurf, ""), (ocp, "ocp.")):
         for name in dir(module):
             obj = getattr(module, name)
@@ -571,9 +570,14 @@ def test_every_method_of_a_wire_sweep_has_its_cases():
                 continue
             if getattr(obj, "__module__", "") != module.__name__ and module is ocp:
                 continue
-            parameters = inspect.signature(obj).parameters
-            if "frame" in parameters and "method" in parameters:
-                required.add("%s%s(method)" % (prefix, name))
+            yield prefix + name, inspect.signature(obj).parameters
+
+
+def test_every_method_of_a_wire_sweep_has_its_cases():
+    """Every public function taking both `frame` and `method` (a wire sweep) has METHODS
+    cases."""
+    required = {"%s(method)" % name for name, parameters in wire_sweep_functions()
+                if "frame" in parameters and "method" in parameters}
     assert "wire_sweep(method)" in required and "ocp.sweep(method)" in required, required
     assert required <= {c[0] for c in METHODS}, required - {c[0] for c in METHODS}
 
@@ -643,17 +647,8 @@ def test_end_holes_without_an_end_profile_are_refused_naming_them():
 
 def test_every_end_profile_of_a_wire_sweep_has_its_cases():
     """Every public function taking `end_profile` has END_PROFILES cases."""
-    ocp = pytest.importorskip("rmfsurf.ocp")
-    required = set()
-    for module, prefix in ((rmfsurf, ""), (ocp, "ocp.")):
-        for name in dir(module):
-            obj = getattr(module, name)
-            if name.startswith("_") or not inspect.isfunction(obj):
-                continue
-            if getattr(obj, "__module__", "") != module.__name__ and module is ocp:
-                continue
-            if "end_profile" in inspect.signature(obj).parameters:
-                required.add("%s%s(end_profile)" % (prefix, name))
+    required = {"%s(end_profile)" % name for name, parameters in wire_sweep_functions()
+                if "end_profile" in parameters}
     assert {"wire_sweep(end_profile)", "ocp.sweep(end_profile)"} <= required, required
     assert required <= {c[0] for c in END_PROFILES}, required - {c[0] for c in END_PROFILES}
 

@@ -110,21 +110,27 @@ def lateral_edges(shape, path):
     return tracks
 
 
+def off_helices(tracks, radii):
+    """How far sampled edge tracks are from helices about the z axis with the helix's pitch:
+    (the largest change of the distance from the axis, or its distance from every corner's,
+    the largest departure from the rise of pitch / 2π per radian)."""
+    worst_radius = worst_pitch = 0.0
+    for points in tracks:
+        r = np.hypot(points[:, 0], points[:, 1])
+        phi = np.unwrap(np.arctan2(points[:, 1], points[:, 0]))
+        worst_radius = max(worst_radius, np.ptp(r), min(abs(r[0] - q) for q in radii))
+        rise = points[:, 2] - points[0, 2] - PITCH * (phi - phi[0]) / (2 * math.pi)
+        worst_pitch = max(worst_pitch, np.max(np.abs(rise)))
+    return worst_radius, worst_pitch
+
+
 def test_a_frenet_sweep_along_a_helix_has_helices_for_edges_and_cuts_a_thread():
     helix, thread, corners = helix_and_thread()
     assert is_valid(thread)
     radii = sorted(np.hypot(c[0], c[1]) for c in corners)
     tracks = lateral_edges(thread, helix)
     assert len(tracks) >= 3
-    worst_radius = worst_pitch = 0.0
-    for points in tracks:
-        r = np.hypot(points[:, 0], points[:, 1])
-        phi = np.unwrap(np.arctan2(points[:, 1], points[:, 0]))
-        # Same axis: a constant distance from it, one of the triangle's corners'.
-        worst_radius = max(worst_radius, np.ptp(r), min(abs(r[0] - q) for q in radii))
-        # Same pitch: the rise is pitch / 2π per radian about the axis.
-        rise = points[:, 2] - points[0, 2] - PITCH * (phi - phi[0]) / (2 * math.pi)
-        worst_pitch = max(worst_pitch, np.max(np.abs(rise)))
+    worst_radius, worst_pitch = off_helices(tracks, radii)
     print("\nFrenet thread along a helix: %d edge tracks, distance from the axis within %.1e, "
           "pitch relation within %.1e" % (len(tracks), worst_radius, worst_pitch))
     assert worst_radius <= 1e-4 and worst_pitch <= 1e-4
@@ -165,13 +171,7 @@ def test_a_thread_profile_drawn_in_the_axial_plane_runs_on_helices_and_cuts_a_th
             tracks.append(points)
         explorer.Next()
     assert tracks and len(tracks) % 3 == 0  # each corner's track, one edge per spine piece
-    worst_radius = worst_pitch = 0.0
-    for points in tracks:
-        r = np.hypot(points[:, 0], points[:, 1])
-        phi = np.unwrap(np.arctan2(points[:, 1], points[:, 0]))
-        worst_radius = max(worst_radius, np.ptp(r), min(abs(r[0] - q) for q in radii))
-        rise = points[:, 2] - points[0, 2] - PITCH * (phi - phi[0]) / (2 * math.pi)
-        worst_pitch = max(worst_pitch, np.max(np.abs(rise)))
+    worst_radius, worst_pitch = off_helices(tracks, radii)
     print("\naxial thread profile along a helix: distance from the axis within %.1e, pitch "
           "relation within %.1e" % (worst_radius, worst_pitch))
     assert worst_radius <= 1e-4 and worst_pitch <= 1e-4

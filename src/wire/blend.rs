@@ -249,14 +249,8 @@ fn split_longest(segments: &mut Vec<RationalBezierCurve>) {
 /// loop taken about its centre and in units of its size.
 fn nearest_start(s0: &[RationalBezierCurve], s1: &[RationalBezierCurve]) -> usize {
     let normalized = |s: &[RationalBezierCurve]| -> Vec<DVec3> {
-        let starts: Vec<DVec3> = s.iter().map(|c| c.eval(0.0)).collect();
-        let centre = starts.iter().copied().sum::<DVec3>() / starts.len() as f64;
-        let size = starts
-            .iter()
-            .map(|p| p.distance(centre))
-            .fold(0.0, f64::max)
-            .max(f64::MIN_POSITIVE);
-        starts.iter().map(|p| (*p - centre) / size).collect()
+        let to = normalizer(s);
+        s.iter().map(|c| to(c.eval(0.0))).collect()
     };
     let (a, b) = (normalized(s0), normalized(s1));
     let n = a.len();

@@ -724,25 +724,7 @@ fn sweeps_between_profiles_are_the_same_from_1e_200_to_1e200() {
     .unwrap();
     for s in [1e-200, 1e-100, 1e100, 1e200] {
         let o = DVec3::new(3e2, -1e2, 2e2) * s;
-        let moved: Vec<Edge> = edges
-            .iter()
-            .map(|e| match e {
-                Edge::Line { from, to } => Edge::Line {
-                    from: *from * s + o,
-                    to: *to * s + o,
-                },
-                Edge::Arc {
-                    start,
-                    through,
-                    end,
-                } => Edge::Arc {
-                    start: *start * s + o,
-                    through: *through * s + o,
-                    end: *end * s + o,
-                },
-                Edge::Curve(c) => Edge::Curve(c.similar(s, o)),
-            })
-            .collect();
+        let moved = super::robustness_tests::moved(&edges, s, o);
         let options = WireSweep {
             tolerance: 1e-4 * s,
             ..WireSweep::default()

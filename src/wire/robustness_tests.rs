@@ -266,17 +266,9 @@ fn a_coil_wound_tighter_than_its_profile_is_refused() {
     assert!(shape.is_solid());
 }
 
-/// The sweep of `edges` mapped by x ↦ s·x + o against the sweep of `edges`: the same faces,
-/// mapped the same way.
-pub(super) fn check_similar(
-    edges: &[Edge],
-    profile: &PiecewiseCurve,
-    options: &WireSweep,
-    s: f64,
-    o: DVec3,
-) {
-    let unit = sweep_wire(edges, profile, &[], options).unwrap();
-    let moved: Vec<Edge> = edges
+/// The edges mapped by x ↦ s·x + o.
+pub(super) fn moved(edges: &[Edge], s: f64, o: DVec3) -> Vec<Edge> {
+    edges
         .iter()
         .map(|e| match e {
             Edge::Line { from, to } => line(*from * s + o, *to * s + o),
@@ -291,7 +283,20 @@ pub(super) fn check_similar(
             },
             Edge::Curve(c) => Edge::Curve(c.similar(s, o)),
         })
-        .collect();
+        .collect()
+}
+
+/// The sweep of `edges` mapped by x ↦ s·x + o against the sweep of `edges`: the same faces,
+/// mapped the same way.
+pub(super) fn check_similar(
+    edges: &[Edge],
+    profile: &PiecewiseCurve,
+    options: &WireSweep,
+    s: f64,
+    o: DVec3,
+) {
+    let unit = sweep_wire(edges, profile, &[], options).unwrap();
+    let moved = moved(edges, s, o);
     let scaled = WireSweep {
         tolerance: options.tolerance * s,
         corner: match options.corner {
