@@ -121,7 +121,9 @@ def thread_cut():
     for name, make in grooves:
         groove_time, groove = best(make)
         cut_time, cut = best(lambda: rod - groove)
-        valid = rocp.is_valid(groove) and rocp.is_valid(cut) and len(cut.solids()) == 1
+        # A cut that leaves the rod's faces alone did not cut: count it as failed.
+        valid = (rocp.is_valid(groove) and rocp.is_valid(cut) and len(cut.solids()) == 1
+                 and len(cut.faces()) > len(rod.faces()))
         faces, count = poles(groove)
         base = base or cut_time
         print("%-28s %10.1f %10.1f %8s %12d %14d %5.2fx" % (

@@ -81,10 +81,15 @@ def thread():
     for name, make in [
             ("makePipeShell (Frenet)", lambda: helix.makePipeShell([triangle], True, True)),
             ("rmfsurf (frame frenet)",
-             lambda: rfc.sweep(helix, Part.Face(triangle), frame="frenet", tolerance=1e-5))]:
+             lambda: rfc.sweep(helix, Part.Face(triangle), frame="frenet", tolerance=1e-5)),
+            ("rmfsurf (fixed axis)",
+             lambda: rfc.sweep(helix, Part.Face(triangle), frame=("fixed", (0, 0, 1)),
+                               tolerance=1e-5))]:
         groove_time, groove = best(make)
         cut_time, cut = best(lambda: rod.cut(groove))
-        valid = groove.isValid() and cut.isValid() and len(cut.Solids) == 1
+        # A cut that leaves the rod's faces alone did not cut: count it as failed.
+        valid = (groove.isValid() and cut.isValid() and len(cut.Solids) == 1
+                 and len(cut.Faces) > len(rod.Faces))
         base = base or cut_time
         print("| %-28s %8.1f %9.1f %6s %8d %6.2fx" % (
             name, groove_time * 1e3, cut_time * 1e3, valid, poles(groove), cut_time / base))
