@@ -153,6 +153,8 @@ struct ExactFrames {
     spine: PiecewiseCurve,
     /// The arc length at each of the spine's breaks.
     lengths: Vec<f64>,
+    /// The quadrature rule of the arc length, made once.
+    rule: GaussLegendre,
 }
 
 /// Gauss–Legendre nodes per spine segment for the arc length of exact-RMF spines.
@@ -170,14 +172,19 @@ impl ExactFrames {
             frames,
             spine,
             lengths,
+            rule,
         }
+    }
+
+    /// The constant angle that turns the frames to start at the unit normal `f2`.
+    fn turn_to(&self, f2: DVec3) -> f64 {
+        let start = self.frames.frame(self.spine.domain().0);
+        signed_angle(start.f2, f2, start.tangent)
     }
 
     /// The RMF started at the unit normal `f2`: the frames turned by one constant angle.
     fn from(&self, f2: DVec3) -> Result<RationalFrames> {
-        let (lo, _) = self.spine.domain();
-        let start = self.frames.frame(lo);
-        let angle = signed_angle(start.f2, f2, start.tangent);
+        let angle = self.turn_to(f2);
         let segments = self
             .frames
             .segments()
@@ -187,12 +194,20 @@ impl ExactFrames {
         RationalFrames::new(segments, self.frames.breaks().to_vec())
     }
 
+    /// f₂ at the end of the RMF started at `f2` (without turning every segment).
+    fn end_from(&self, f2: DVec3) -> DVec3 {
+        let end = self.frames.frame(self.spine.domain().1);
+        end.rotated(self.turn_to(f2)).f2
+    }
+
     /// The arc length from the start to the spine's parameter v.
     fn arc_length_at(&self, v: f64) -> f64 {
         let (k, _) = self.spine.locate(v);
         let a = self.spine.breaks()[k];
-        let rule = GaussLegendre::new(LENGTH_NODES);
-        self.lengths[k] + rule.integrate(a, v, |t| self.spine.eval_jet(t).d1.length())
+        self.lengths[k]
+            + self
+                .rule
+                .integrate(a, v, |t| self.spine.eval_jet(t).d1.length())
     }
 
     fn length(&self) -> f64 {
@@ -340,7 +355,7 @@ fn carry(piece: &Piece, spine: &Spine, f2: DVec3) -> Result<DVec3> {
             exact.frame(ph.domain().1).f2
         }
         _ => match &spine.exact {
-            Some(exact) => exact.from(f2)?.frame(spine.curve.domain().1).f2,
+            Some(exact) => exact.end_from(f2),
             None => f2,
         },
     })
