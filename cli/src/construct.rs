@@ -128,7 +128,7 @@ pub fn run_wire(job: &WireJob) -> Result<Shape, InputError> {
         twist: job.twist,
         closure_symmetry: job.closure_symmetry,
         solid: job.solid,
-        frame: job.frame,
+        frame: job.frame.clone(),
         scale: job.scale,
         method: job.method,
     };

@@ -441,7 +441,7 @@ impl<'de> Deserialize<'de> for CornerName {
 }
 
 /// `"rmf"`, `"frenet"` or `{"fixed": [x, y, z]}` (a direction, not zero).
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 pub struct FrameName(pub SweepFrame);
 
 struct FrameVisitor;

@@ -28,10 +28,9 @@
 //! than the profile's cuts at its ends.
 
 use super::edge::{Chain, Geometry, Joint, JointKind, Piece};
-use super::law::{law_jet, law_normal, LawAngle, Unwrapped, LAW_SAMPLES};
+use super::law::{law_jet, law_normal, FrameLaw, LawAngle, Unwrapped, LAW_SAMPLES};
 use super::profile::{Profile, SupportTable};
 use super::scale::{arc_segments, ScaleLaw};
-use super::SweepFrame;
 use crate::bezier::{PiecewiseCurve, RationalBezierCurve};
 use crate::error::{invalid, Result, ResultExt};
 use crate::frames::metrics::angle_about_tangent;
@@ -61,11 +60,11 @@ const ERROR_SAMPLES: usize = 64;
 const MAX_HALVINGS: usize = 16;
 
 /// How the frame is set up (normalized coordinates).
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 pub(crate) struct FrameOptions {
     pub initial_normal: Option<DVec3>,
     /// The frame followed (the RMF, Frenet, a fixed direction), before the twist.
-    pub law: SweepFrame,
+    pub law: FrameLaw,
     /// How curve pieces are made: the PH cubic spline with its rational RMF, or a Möbius or
     /// RRMF spine with its exact rational RMF.
     pub method: SpineMethod,
@@ -550,19 +549,38 @@ fn law_start(chain: &Chain, spine: &Spine, options: &FrameOptions) -> Result<Opt
     let v = spine.curve.domain().0;
     let jet = law_jet(given(piece), &spine.curve, v, v);
     let normal = law_normal(&options.law, &jet);
-    if let (SweepFrame::Fixed(d), None) = (options.law, normal) {
-        return Err(along_tangent(d, piece, jet.point, options.units));
+    if normal.is_none() {
+        if let Some(e) = undefined_law(&options.law, piece, jet.point, options.units) {
+            return Err(e);
+        }
     }
     Ok(normal.map(|n| orthogonalized(n, piece.geometry.start_tangent()).normalize()))
 }
 
-fn along_tangent(d: DVec3, piece: &Piece, at: DVec3, units: Similarity) -> crate::error::Error {
-    crate::error::Error::invalid_input(format!(
-        "frame: the fixed direction {d} runs along the tangent of {} at {} (it must stay out \
-         of the tangent everywhere on the wire)",
-        piece.name(),
-        units.to_user(at)
-    ))
+/// The refusal where a law that must be defined everywhere on the wire (a fixed direction, a
+/// guide) is not, at `at` on `piece`; `None` for a law that may lapse (Frenet).
+fn undefined_law(
+    law: &FrameLaw,
+    piece: &Piece,
+    at: DVec3,
+    units: Similarity,
+) -> Option<crate::error::Error> {
+    let message = match law {
+        FrameLaw::Fixed(d) => format!(
+            "frame: the fixed direction {d} runs along the tangent of {} at {} (it must stay \
+             out of the tangent everywhere on the wire)",
+            piece.name(),
+            units.to_user(at)
+        ),
+        FrameLaw::Guide(_) => format!(
+            "frame: the guide does not run beside the wire at {} of {} (it must cross every \
+             normal plane of the wire, away from the wire)",
+            units.to_user(at),
+            piece.name()
+        ),
+        _ => return None,
+    };
+    Some(crate::error::Error::invalid_input(message))
 }
 
 /// The RMF along one piece from a given f₂ at its start, at the spine's parameters.
@@ -615,7 +633,7 @@ struct LawTurn {
 /// The turn against the RMF over each piece that the frame law asks for (module `law`).
 fn law_turns(chain: &Chain, spines: &[Spine], options: &FrameOptions) -> Result<Vec<LawTurn>> {
     let law = &options.law;
-    if *law == SweepFrame::Rmf {
+    if *law == FrameLaw::Rmf {
         return Ok(vec![
             LawTurn {
                 turn: 0.0,
@@ -649,8 +667,8 @@ fn law_turns(chain: &Chain, spines: &[Spine], options: &FrameOptions) -> Result<
             for v in grid_parameters(spine.curve.breaks(), LAW_SAMPLES) {
                 let jet = law_jet(given(piece), &spine.curve, v, v);
                 let (r2, t) = rmf.at(&spine.curve, v);
-                match (law_normal(law, &jet), law) {
-                    (Some(n), _) => {
+                match law_normal(law, &jet) {
+                    Some(n) => {
                         angles.push(r2, n, t);
                         let s = match &rmf {
                             PieceRmf::Exact(exact) => exact.arc_length_at(v),
@@ -659,10 +677,11 @@ fn law_turns(chain: &Chain, spines: &[Spine], options: &FrameOptions) -> Result<
                         };
                         track.extend(angles.last().map(|a| (s, a)));
                     }
-                    (None, SweepFrame::Fixed(d)) => {
-                        return Err(along_tangent(*d, piece, jet.point, options.units))
+                    None => {
+                        if let Some(e) = undefined_law(law, piece, jet.point, options.units) {
+                            return Err(e);
+                        }
                     }
-                    (None, _) => {}
                 }
             }
             let turn = angles.change();
@@ -684,8 +703,8 @@ fn law_turns(chain: &Chain, spines: &[Spine], options: &FrameOptions) -> Result<
 
 /// Largest angle between the frames built and the law, each piece's offset at its start
 /// taken off (module `law`); 0 for the RMF.
-fn frame_error(pieces: &[Framed], law: &SweepFrame) -> f64 {
-    if *law == SweepFrame::Rmf {
+fn frame_error(pieces: &[Framed], law: &FrameLaw) -> f64 {
+    if *law == FrameLaw::Rmf {
         return 0.0;
     }
     let mut worst = 0.0f64;
@@ -711,7 +730,7 @@ fn frame_error(pieces: &[Framed], law: &SweepFrame) -> f64 {
         // A fixed direction is followed from the wire's start on (f₂ starts on it); the
         // Frenet frame keeps the angle it has where its normal was undefined or jumped.
         worst = worst.max(match law {
-            SweepFrame::Fixed(_) => angles.largest(),
+            FrameLaw::Fixed(_) | FrameLaw::Guide(_) => angles.largest(),
             _ => angles.spread(),
         });
     }
@@ -732,7 +751,7 @@ struct PieceTurn<'a> {
     total: f64,
     /// A frame law other than the RMF, and the part of the turn that is twist and closure
     /// (linear in arc length) on top of it.
-    law: Option<(&'a SweepFrame, f64)>,
+    law: Option<(&'a FrameLaw, f64)>,
     /// How closely (radians) the frame follows the law: the tolerance at the profile's
     /// reach.
     accuracy: f64,
@@ -757,7 +776,7 @@ fn frame_piece(
     let (followed, accuracy) = (turn.law, turn.accuracy);
     let turn = turn.total;
     let (frame, end, angle_error) = match (geometry, followed) {
-        (Geometry::Arc(_) | Geometry::Curve(_), Some((law, extra))) => {
+        (_, Some((law, extra))) => {
             let frames = law_frames(piece, &spine, length, f2, law, extra, accuracy)?;
             let end = frames.frame(spine.curve.domain().1);
             (PieceFrame::Rational(frames), end, 0.0)
@@ -803,7 +822,7 @@ fn frame_piece(
                     exact.from(f2)?
                 } else {
                     // Twist and closure on the exact RMF: followed as a law would be.
-                    law_frames(piece, &spine, length, f2, &SweepFrame::Rmf, turn, accuracy)?
+                    law_frames(piece, &spine, length, f2, &FrameLaw::Rmf, turn, accuracy)?
                 };
                 let end = frames.frame(spine.curve.domain().1);
                 (PieceFrame::Rational(frames), end, 0.0)
@@ -845,8 +864,8 @@ fn frame_piece(
 /// (19): a PH cubic's Frenet frame is rational), each segment turned to continue the
 /// previous one from f₂ — the law is then close to them, often a constant turn away (a
 /// helix's screw motion, its axis); otherwise (a twist on the RMF) its rational RMF.
-fn law_base(ph: &PhSpline, f2: DVec3, law: &SweepFrame) -> Result<RationalFrames> {
-    if *law != SweepFrame::Rmf {
+fn law_base(ph: &PhSpline, f2: DVec3, law: &FrameLaw) -> Result<RationalFrames> {
+    if matches!(law, FrameLaw::Frenet | FrameLaw::Fixed(_)) {
         // A straight segment has no Frenet frame: the RMF serves.
         if let Ok(frenet) = ph_frenet_frames(ph) {
             let frames = frenet.into_parts().1;
@@ -872,7 +891,7 @@ fn law_frames(
     spine: &Spine,
     length: f64,
     f2: DVec3,
-    law: &SweepFrame,
+    law: &FrameLaw,
     extra: f64,
     accuracy: f64,
 ) -> Result<RationalFrames> {
@@ -905,6 +924,18 @@ fn law_frames(
                         radius * phi.min(angle)
                     }),
                 )
+            }
+            (Geometry::Line { .. }, _) => {
+                let f3 = Frame::from_tangent_normal(piece.geometry.start_tangent(), f2).f3;
+                let segments = spine
+                    .curve
+                    .segments()
+                    .iter()
+                    .map(|_| RationalFrameSegment::new(vec![f2; 2], vec![f3; 2], vec![1.0; 2]))
+                    .collect::<Result<Vec<_>>>()?;
+                let frames = RationalFrames::new(segments, spine.curve.breaks().to_vec())?;
+                let (lo, hi) = spine.curve.domain();
+                (frames, Box::new(move |v| length * (v - lo) / (hi - lo)))
             }
             (_, Some(ph)) => {
                 let exact = ExactRmf::new(ph, f2, 0.0)?;

@@ -10,14 +10,21 @@
 //! from samples; how far the result is from the law inside a piece is the report's
 //! `frame_error`.
 //!
+//! For a guide curve, f₂ points from the spine's point to where the guide crosses the normal
+//! plane there (the crossing nearest the spine): the profile turns to follow the second
+//! rail, as OpenCascade's auxiliary mode and CATIA's guide sweeps do.
+//!
 //! Where the law is undefined — the principal normal of a line or at an inflection — no
 //! turn is taken: the frame keeps its angle rather than flipping with the normal. The
 //! principal normal is defined up to sign across an inflection, so the Frenet angle is
 //! followed modulo π, the fixed direction's modulo 2π.
 
-use super::SweepFrame;
-use crate::bezier::{CurveJet, PiecewiseCurve};
-use crate::math::signed_angle;
+use super::{Edge, SweepFrame};
+use crate::bezier::bernstein::to_power;
+use crate::bezier::{CurveJet, PiecewiseCurve, RationalBezierCurve};
+use crate::error::Result;
+use crate::math::{real_roots_in, signed_angle};
+use crate::model::{arc_through, polyline};
 use glam::DVec3;
 use std::f64::consts::{PI, TAU};
 
@@ -31,6 +38,93 @@ const FLAT: f64 = 1e-6;
 /// Sine of the angle to the tangent below which a fixed direction gives no frame.
 pub(crate) const ALONG_TANGENT: f64 = 1e-6;
 
+/// Distance (in units of the wire's size) from the spine within which a guide's point
+/// gives no direction.
+const GUIDE_CLEARANCE: f64 = 1e-9;
+
+/// How far past a guide segment's ends (in its parameter, and relative to its coefficients)
+/// a crossing is taken as at the end.
+const GUIDE_END: f64 = 1e-9;
+
+/// A frame law in the sweep's normalized coordinates.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum FrameLaw {
+    Rmf,
+    Frenet,
+    Fixed(DVec3),
+    Guide(Guide),
+}
+
+impl FrameLaw {
+    /// The law of `frame`, a guide's points mapped by `unit` (a similarity) to the sweep's
+    /// coordinates.
+    pub fn new(
+        frame: &SweepFrame,
+        unit: &dyn Fn(&PiecewiseCurve) -> PiecewiseCurve,
+    ) -> Result<Self> {
+        Ok(match frame {
+            SweepFrame::Rmf => FrameLaw::Rmf,
+            SweepFrame::Frenet => FrameLaw::Frenet,
+            SweepFrame::Fixed(d) => FrameLaw::Fixed(*d),
+            SweepFrame::Guide(edges) => FrameLaw::Guide(Guide::new(edges, unit)?),
+        })
+    }
+}
+
+/// A guide curve: its rational Bézier segments, in any order and orientation.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Guide {
+    segments: Vec<RationalBezierCurve>,
+}
+
+impl Guide {
+    fn new(edges: &[Edge], unit: &dyn Fn(&PiecewiseCurve) -> PiecewiseCurve) -> Result<Self> {
+        let mut segments = Vec::new();
+        for edge in edges {
+            let curve = match edge {
+                Edge::Line { from, to } => polyline(&[*from, *to])?,
+                Edge::Arc {
+                    start,
+                    through,
+                    end,
+                } => arc_through(*start, *through, *end)?,
+                Edge::Curve(c) => c.clone(),
+            };
+            segments.extend(unit(&curve).segments().iter().cloned());
+        }
+        Ok(Self { segments })
+    }
+
+    /// The guide's point in the plane through `point` normal to the unit `t` that is
+    /// nearest `point`: the real roots of t·(g(w) − point), a polynomial in the Bernstein
+    /// basis for each (homogeneous) segment, whose coefficients of one sign rule it out.
+    pub fn point_in_plane(&self, point: DVec3, t: DVec3) -> Option<DVec3> {
+        let level = t.dot(point);
+        let mut nearest: Option<(f64, DVec3)> = None;
+        for segment in &self.segments {
+            let c: Vec<f64> = segment
+                .homogeneous()
+                .iter()
+                .map(|h| t.dot(h.truncate()) - level * h.w)
+                .collect();
+            // A guide that ends in the wire's end plane (one as long as the wire) crosses
+            // it at its end, which rounding may move out of [0, 1]: taken within a margin.
+            let margin = GUIDE_END * c.iter().fold(level.abs(), |m, x| m.max(x.abs()));
+            if c.iter().all(|&x| x > margin) || c.iter().all(|&x| x < -margin) {
+                continue;
+            }
+            for w in real_roots_in(&to_power(&c), -GUIDE_END, 1.0 + GUIDE_END) {
+                let q = segment.eval(w.clamp(0.0, 1.0));
+                let d = q.distance(point);
+                if nearest.is_none_or(|(best, _)| d < best) {
+                    nearest = Some((d, q));
+                }
+            }
+        }
+        nearest.map(|(_, q)| q)
+    }
+}
+
 /// The angle the law's f₂ makes with a frame's f₂ about the tangent, unwrapped along a
 /// piece (modulo the law's period: π for the Frenet normal, 2π for a fixed direction).
 pub(crate) struct Unwrapped {
@@ -41,9 +135,9 @@ pub(crate) struct Unwrapped {
 }
 
 impl Unwrapped {
-    pub fn new(law: &SweepFrame) -> Self {
+    pub fn new(law: &FrameLaw) -> Self {
         let period = match law {
-            SweepFrame::Frenet => PI,
+            FrameLaw::Frenet => PI,
             _ => TAU,
         };
         Self {
@@ -96,12 +190,13 @@ impl Unwrapped {
 
 /// The f₂ the law asks for at a point of the spine with derivatives `jet`: the principal
 /// normal (Frenet; `None` where the curvature vanishes), the fixed direction projected
-/// onto the normal plane (`None` along the tangent), `None` for the RMF.
-pub(crate) fn law_normal(law: &SweepFrame, jet: &CurveJet) -> Option<DVec3> {
+/// onto the normal plane (`None` along the tangent), towards the guide in the normal plane
+/// (`None` where the guide does not cross it, or touches the spine), `None` for the RMF.
+pub(crate) fn law_normal(law: &FrameLaw, jet: &CurveJet) -> Option<DVec3> {
     let t = jet.d1.try_normalize()?;
     match law {
-        SweepFrame::Rmf => None,
-        SweepFrame::Frenet => {
+        FrameLaw::Rmf => None,
+        FrameLaw::Frenet => {
             let speed = jet.d1.length();
             let binormal = jet.d1.cross(jet.d2);
             if binormal.length() <= FLAT * speed * speed * speed {
@@ -109,10 +204,15 @@ pub(crate) fn law_normal(law: &SweepFrame, jet: &CurveJet) -> Option<DVec3> {
             }
             Some(binormal.normalize().cross(t))
         }
-        SweepFrame::Fixed(d) => {
+        FrameLaw::Fixed(d) => {
             let d = d.normalize();
             let p = d - d.dot(t) * t;
             (p.length() > ALONG_TANGENT).then(|| p.normalize())
+        }
+        FrameLaw::Guide(guide) => {
+            let to = guide.point_in_plane(jet.point, t)? - jet.point;
+            let across = to - to.dot(t) * t;
+            (across.length() > GUIDE_CLEARANCE).then(|| across.normalize())
         }
     }
 }
@@ -148,7 +248,7 @@ pub(crate) struct LawAngle {
 }
 
 impl LawAngle {
-    pub fn new(law: &SweepFrame, breaks: &[f64], raw: &dyn Fn(f64) -> Option<f64>) -> Self {
+    pub fn new(law: &FrameLaw, breaks: &[f64], raw: &dyn Fn(f64) -> Option<f64>) -> Self {
         let period = Unwrapped::new(law).period;
         let mut params = Vec::new();
         let mut angles: Vec<f64> = Vec::new();

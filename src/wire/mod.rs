@@ -8,7 +8,7 @@
 //! | `corner` | sharp joints resolved: round (a tangent circular arc, solved on curves too) or miter (the bisecting plane) |
 //! | `profile` | the cross-section's loops split at their corners, their orientation, extent (support function) and symmetry |
 //! | `frame` | one RMF along the whole wire: constant on lines, the rational frame of arcs, the PH cubic rational RMF (Mäurer & Jüttler (29), (36)–(41)) on curves; twist, closure, the Cor. 7 margin |
-//! | `law` | the Frenet frame and a fixed direction as turns against the RMF (θ' = τ for Frenet), unwrapped, their accuracy |
+//! | `law` | the Frenet frame, a fixed direction and a guide curve as turns against the RMF (θ' = τ for Frenet; the guide's crossing of each normal plane), unwrapped, their accuracy |
 //! | `blend` | sweeps between two profiles: the profiles matched loop by loop, over common denominators, the blend as sums of scaled sweeps |
 //! | `scale` | the scale law σ linear in arc length, as polynomials in each piece's parameter (exact on lines and PH pieces) |
 //! | `oblique` | the fold check of a profile drawn in a plane across the wire other than the normal plane |
@@ -40,6 +40,7 @@ use corner::CornerMode;
 use edge::RawEdge;
 use frame::FrameOptions;
 use glam::DVec3;
+use law::FrameLaw;
 use profile::Profile;
 use scale::ScaleLaw;
 
@@ -81,7 +82,7 @@ pub enum Corner {
 }
 
 /// How the profile turns about the wire's tangent (before any twist).
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub enum SweepFrame {
     /// The rotation-minimizing frame: no turn about the tangent (pipes, mouldings).
     #[default]
@@ -95,10 +96,15 @@ pub enum SweepFrame {
     /// relation to the axis (OpenCascade's binormal mode). Refused where the direction is
     /// along the tangent.
     Fixed(DVec3),
+    /// f₂ towards the guide curve of these edges (in any order and orientation), where it
+    /// crosses the wire's normal plane (the crossing nearest the wire): the profile turns
+    /// to follow a second rail (OpenCascade's auxiliary mode). Refused where the guide does
+    /// not cross a normal plane, or touches the wire.
+    Guide(Vec<Edge>),
 }
 
 /// The options of a wire sweep.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct WireSweep {
     /// Largest distance of the PH cubic spline from a curve edge (absolute; default 1e-4).
     pub tolerance: f64,
@@ -335,7 +341,7 @@ fn sweep(
         &chain,
         &FrameOptions {
             initial_normal: options.initial_normal.filter(|n| *n != DVec3::ZERO),
-            law: options.frame,
+            law: FrameLaw::new(&options.frame, &|c| c.similar(1.0 / scale, -center / scale))?,
             method: options.method,
             twist: options.twist,
             closure_symmetry: options.closure_symmetry.max(1),
@@ -490,10 +496,12 @@ fn check_options(options: &WireSweep) -> Result<()> {
             );
         }
     }
-    if let SweepFrame::Fixed(d) = options.frame {
-        if !(d.is_finite() && d != DVec3::ZERO) {
+    match &options.frame {
+        SweepFrame::Fixed(d) if !(d.is_finite() && *d != DVec3::ZERO) => {
             return invalid!("frame: the fixed direction {d} must be finite and not zero");
         }
+        SweepFrame::Guide(edges) => check_guide(edges)?,
+        _ => {}
     }
     for (name, s) in ["start", "end"].iter().zip(options.scale) {
         if !(s.is_finite() && s > 0.0) {
@@ -522,7 +530,21 @@ fn frame_name(frame: &SweepFrame) -> &'static str {
         SweepFrame::Rmf => "rmf",
         SweepFrame::Frenet => "frenet",
         SweepFrame::Fixed(_) => "fixed",
+        SweepFrame::Guide(_) => "guide",
     }
+}
+
+/// A guide's edges: at least one, every point finite.
+fn check_guide(edges: &[Edge]) -> Result<()> {
+    if edges.is_empty() {
+        return invalid!("frame: the guide needs at least one edge");
+    }
+    for (k, edge) in edges.iter().enumerate() {
+        if let Some(p) = edge_points(edge).into_iter().find(|p| !p.is_finite()) {
+            return invalid!("frame: edge {k} of the guide has a non-finite point {p}");
+        }
+    }
+    Ok(())
 }
 
 /// The points that span an edge (for the wire's size and centre).
@@ -538,6 +560,8 @@ fn edge_points(edge: &Edge) -> Vec<DVec3> {
     }
 }
 
+#[cfg(test)]
+mod guide_tests;
 #[cfg(test)]
 mod options_tests;
 #[cfg(test)]

@@ -122,7 +122,7 @@ fn a_scaled_tube_along_lines_arcs_and_curves_encloses_pi_r2_times_the_integral_o
 
 /// The largest distance of the profile's vertex tracks (the lateral faces' edges u = 0)
 /// from the helix of axis z through their start with the given rise per radian.
-fn off_helix(shape: &Shape, rise: f64) -> f64 {
+pub(super) fn off_helix(shape: &Shape, rise: f64) -> f64 {
     let mut worst = 0.0f64;
     for face in shape.faces().iter().filter(|f| f.kind == FaceKind::Swept) {
         let s = face.surface.as_ref().unwrap();
@@ -774,7 +774,7 @@ fn a_tilted_profile_along_a_ph_spline_keeps_the_faces_degree() {
     for frame in [SweepFrame::Rmf, SweepFrame::Frenet] {
         let degree = |profile: &PiecewiseCurve| {
             let options = WireSweep {
-                frame,
+                frame: frame.clone(),
                 tolerance: 1e-5,
                 ..WireSweep::default()
             };
@@ -863,7 +863,7 @@ fn exact_rmf_methods_take_twists_frames_and_refuse_what_they_cannot() {
             let tolerance = 1e-4;
             let options = WireSweep {
                 method,
-                frame,
+                frame: frame.clone(),
                 twist,
                 tolerance,
                 ..WireSweep::default()

@@ -296,16 +296,20 @@ pub(super) fn check_similar(
     o: DVec3,
 ) {
     let unit = sweep_wire(edges, profile, &[], options).unwrap();
-    let moved = moved(edges, s, o);
+    let moved_edges = moved(edges, s, o);
     let scaled = WireSweep {
         tolerance: options.tolerance * s,
         corner: match options.corner {
             Corner::Round(Some(r)) => Corner::Round(Some(r * s)),
             c => c,
         },
-        ..*options
+        frame: match &options.frame {
+            SweepFrame::Guide(guide) => SweepFrame::Guide(moved(guide, s, o)),
+            frame => frame.clone(),
+        },
+        ..options.clone()
     };
-    let shape = sweep_wire(&moved, &profile.similar(s, DVec3::ZERO), &[], &scaled)
+    let shape = sweep_wire(&moved_edges, &profile.similar(s, DVec3::ZERO), &[], &scaled)
         .unwrap_or_else(|e| panic!("scale {s:e}, offset {o}: {e}"));
     assert_eq!(shape.faces().len(), unit.faces().len(), "scale {s:e}");
     assert_eq!(shape.is_solid(), unit.is_solid());

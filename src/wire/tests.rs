@@ -343,13 +343,16 @@ fn bad_wires_and_profiles_are_refused_naming_the_edge_or_joint() {
     let open = square(0.5).segments()[..3].to_vec();
     let open = PiecewiseCurve::with_unit_intervals(open).unwrap();
     assert!(message(&staircase(), &open, &[], &d).contains("closed profile"));
-    let sheet = WireSweep { solid: false, ..d };
+    let sheet = WireSweep {
+        solid: false,
+        ..d.clone()
+    };
     let shape = sweep_wire(&staircase(), &open, &[], &sheet).unwrap();
     assert!(!shape.is_solid() && shape.faces().iter().all(|f| f.kind == FaceKind::Swept));
     assert!(message(&staircase(), &open, &[circle(0.1)], &sheet).contains("holes need a closed"));
     let big = WireSweep {
         corner: Corner::Round(Some(4.0)),
-        ..d
+        ..d.clone()
     };
     let m = message(&staircase(), &square(0.5), &[], &big);
     assert!(
@@ -359,7 +362,7 @@ fn bad_wires_and_profiles_are_refused_naming_the_edge_or_joint() {
     );
     let small = WireSweep {
         corner: Corner::Round(Some(0.4)),
-        ..d
+        ..d.clone()
     };
     let m = message(&staircase(), &square(0.5), &[], &small);
     assert!(
@@ -371,7 +374,7 @@ fn bad_wires_and_profiles_are_refused_naming_the_edge_or_joint() {
     // that radius has NaN control points).
     let default = WireSweep {
         corner: Corner::Round(None),
-        ..d
+        ..d.clone()
     };
     let m = message(&staircase(), &circle(1e-34), &[], &default);
     assert!(
@@ -383,7 +386,7 @@ fn bad_wires_and_profiles_are_refused_naming_the_edge_or_joint() {
     assert!(m.contains("edge 1") && m.contains("at most 4.99999"), "{m}");
     let miter = WireSweep {
         corner: Corner::Miter,
-        ..d
+        ..d.clone()
     };
     let m = message(&staircase(), &square(5.0), &[], &miter);
     assert!(m.contains("miter cuts"), "{m}");
@@ -415,7 +418,7 @@ fn results_do_not_depend_on_scale_or_position() {
         let profile = square(0.5).similar(scale, DVec3::ZERO);
         let o = WireSweep {
             corner: Corner::Round(Some(scale)),
-            ..options
+            ..options.clone()
         };
         let shape = sweep_wire(&moved, &profile, &[], &o).unwrap();
         crate::testing::assert_similar_breps(unit.brep(), shape.brep(), scale, shift);
