@@ -263,6 +263,7 @@ fn wire_options(o: &RmfWireSweepOptions) -> Result<WireSweep, FfiError> {
         frame,
         scale: [o.scale_start, o.scale_end],
         method,
+        ..WireSweep::default()
     })
 }
 

@@ -131,6 +131,7 @@ pub fn run_wire(job: &WireJob) -> Result<Shape, InputError> {
         frame: job.frame.clone(),
         scale: job.scale,
         method: job.method,
+        ..WireSweep::default()
     };
     let end = match &job.end_profile {
         Some((end_profile, end_holes)) => Some((

@@ -10,7 +10,7 @@
 //! | `frame` | one RMF along the whole wire: constant on lines, the rational frame of arcs, the PH cubic rational RMF (Mäurer & Jüttler (29), (36)–(41)) on curves; twist, closure, the Cor. 7 margin |
 //! | `law` | the Frenet frame, a fixed direction and a guide curve as turns against the RMF (θ' = τ for Frenet; the guide's crossing of each normal plane), unwrapped, their accuracy |
 //! | `blend` | sweeps between two profiles: the profiles matched loop by loop, over common denominators, the blend as sums of scaled sweeps |
-//! | `scale` | the scale law σ linear in arc length, as polynomials in each piece's parameter (exact on lines and PH pieces) |
+//! | `scale` | the scale law σ piecewise linear in arc length (the wire cut at its knots), as polynomials in each piece's parameter (exact on lines and PH pieces) |
 //! | `oblique` | the fold check of a profile drawn in a plane across the wire other than the normal plane |
 //! | `brep` | the faces (exact cylinders, tori, sweeps (42)), planar caps, shared edges, orientation; the accuracy report |
 //!
@@ -127,8 +127,13 @@ pub struct WireSweep {
     /// How the profile turns about the tangent (default the RMF).
     pub frame: SweepFrame,
     /// The profile's scale at the wire's start and end (default `[1, 1]`), linear in arc
-    /// length between; both finite and positive, equal on a closed wire.
+    /// length between (through `scale_knots`); both finite and positive, equal on a
+    /// closed wire.
     pub scale: [f64; 2],
+    /// Scales the law passes through between its start and end: (fraction of the wire's
+    /// length, increasing in (0, 1); scale, finite and positive). σ is piecewise linear in
+    /// arc length through them (default none: linear from start to end).
+    pub scale_knots: Vec<(f64, f64)>,
     /// How curve edges are swept: [`SpineMethod::PhRmf`] (default: the PH cubic spline and
     /// its rational RMF), [`SpineMethod::Mobius`] or [`SpineMethod::Rrmf`] (spines with
     /// exact rational RMFs: the parameter lines orthogonal to rounding). Lines and arcs are
@@ -148,6 +153,7 @@ impl Default for WireSweep {
             solid: true,
             frame: SweepFrame::Rmf,
             scale: [1.0, 1.0],
+            scale_knots: Vec::new(),
             method: SpineMethod::PhRmf,
         }
     }
@@ -249,7 +255,7 @@ fn sweep(
         })
         .collect();
     // A constant scale is the profile's own; a varying one is the law of module `scale`.
-    let constant = (options.scale[0] == options.scale[1]).then_some(options.scale[0]);
+    let constant = constant_scale(options);
     let profile_scale = constant.unwrap_or(1.0) / scale;
     let outer = profile.similar(profile_scale, DVec3::ZERO);
     let holes: Vec<PiecewiseCurve> = holes
@@ -293,20 +299,17 @@ fn sweep(
         None => None,
     };
     let profile = blend.as_ref().map_or(profile, |b| b.start.clone());
-    if constant.is_none() && chain.closed {
+    if options.scale[0] != options.scale[1] && chain.closed {
         return invalid!(
             "scale: a closed wire must end at the scale it starts with, not {} and {}",
             options.scale[0],
             options.scale[1]
         );
     }
-    let law = match constant {
-        Some(_) => ScaleLaw::none(),
-        None => ScaleLaw {
-            start: options.scale[0],
-            end: options.scale[1],
-            length: chain.pieces.iter().map(|p| p.geometry.length()).sum(),
-        },
+    // The law's largest value (a constant scale is the profile's own).
+    let largest = match constant {
+        Some(_) => 1.0,
+        None => scale_values(options).fold(0.0, f64::max),
     };
     if profile.plane.is_some() && chain.closed {
         return invalid!(
@@ -317,13 +320,31 @@ fn sweep(
     // Its largest distance from the spine takes a root search per profile segment: once.
     let end_reach = blend.as_ref().map_or(0.0, |b| b.end.reach());
     let reach = profile.reach();
-    let radius = reach.max(end_reach) * law.max();
+    let radius = reach.max(end_reach) * largest;
     let mode = match options.corner {
         Corner::Miter => CornerMode::Miter,
         Corner::Round(Some(r)) => CornerMode::Round(r / scale),
         Corner::Round(None) => CornerMode::Round(DEFAULT_RADIUS_FACTOR * radius),
     };
     let chain = edge::split_arcs(corner::resolve(chain, mode, scale, radius)?);
+    // The wire cut at the scale's knots: σ linear along every piece.
+    let (chain, knots) = match constant {
+        Some(_) => (chain, Vec::new()),
+        None => {
+            let fractions: Vec<f64> = options.scale_knots.iter().map(|k| k.0).collect();
+            let (chain, starts) = scale::split_at_knots(chain, &fractions)?;
+            let values = starts
+                .into_iter()
+                .zip(options.scale_knots.iter().map(|k| k.1));
+            (chain, values.collect())
+        }
+    };
+    let law_on = |lengths: &[f64]| match constant {
+        Some(_) => ScaleLaw::none(),
+        None => ScaleLaw::on_pieces(options.scale[0], &knots, options.scale[1], lengths),
+    };
+    let estimated: Vec<f64> = chain.pieces.iter().map(|p| p.geometry.length()).collect();
+    let law = law_on(&estimated);
     if profile.plane.is_some() && chain.joints.iter().any(edge::Joint::cuts) {
         return invalid!(
             "profile: miter cuts take a profile in the wire's normal plane (z = 0); this one \
@@ -349,20 +370,19 @@ fn sweep(
             units,
             // Arcs are cut for the blend's λ as for a scale law, |c₁ − c₀| ≤ the reaches.
             scale: match &blend {
-                Some(_) => ScaleLaw {
-                    start: 0.0,
-                    end: 1.0,
-                    length: chain.pieces.iter().map(|p| p.geometry.length()).sum(),
-                },
+                Some(_) => ScaleLaw::linear(0.0, 1.0, estimated.iter().sum()),
                 None => law,
             },
             reach: reach + end_reach,
         },
     )?;
-    let law = ScaleLaw {
-        length: transport.pieces.iter().map(|p| p.length).sum(),
-        ..law
-    };
+    let law = law_on(
+        &transport
+            .pieces
+            .iter()
+            .map(|p| p.length)
+            .collect::<Vec<_>>(),
+    );
     // The fold check with the profile at its largest: g = 1 − κσc·n is least there.
     let margins = if let Some(plane) = profile.plane {
         oblique::oblique_margin(
@@ -422,7 +442,7 @@ fn end_blend(
              open wire"
         );
     }
-    if options.scale[0] != options.scale[1] {
+    if constant_scale(options).is_none() {
         return invalid!(
             "scale: with end_profile the profiles set the sections; use a constant scale"
         );
@@ -508,13 +528,14 @@ fn check_options(options: &WireSweep) -> Result<()> {
             return invalid!("scale: the {name} scale {s} must be finite and positive");
         }
     }
+    check_scale_knots(&options.scale_knots)?;
     if options.method == SpineMethod::Frenet {
         return invalid!(
             "method: frenet makes Frenet frames, which a wire sweep asks for with its frame \
              option; the methods of wire sweeps are ph-rmf, mobius and rrmf"
         );
     }
-    if options.method != SpineMethod::PhRmf && options.scale[0] != options.scale[1] {
+    if options.method != SpineMethod::PhRmf && constant_scale(options).is_none() {
         return invalid!(
             "scale: a scale law is exact along PH splines, whose arc length is a polynomial; \
              with method {} use a constant scale, or method ph-rmf",
@@ -522,6 +543,38 @@ fn check_options(options: &WireSweep) -> Result<()> {
         );
     }
     Ok(())
+}
+
+/// The scale's knots: fractions increasing in (0, 1), values finite and positive.
+fn check_scale_knots(knots: &[(f64, f64)]) -> Result<()> {
+    let mut last = 0.0;
+    for (k, &(at, value)) in knots.iter().enumerate() {
+        if !(at > last && at < 1.0) {
+            return invalid!(
+                "scale_knots[{k}]: its fraction of the wire's length {at} must lie in (0, 1), \
+                 after the knot before it ({last})"
+            );
+        }
+        if !(value.is_finite() && value > 0.0) {
+            return invalid!("scale_knots[{k}]: the scale {value} must be finite and positive");
+        }
+        last = at;
+    }
+    Ok(())
+}
+
+/// Every value the scale law takes at its start, knots and end.
+fn scale_values(options: &WireSweep) -> impl Iterator<Item = f64> + '_ {
+    let knots = options.scale_knots.iter().map(|k| k.1);
+    std::iter::once(options.scale[0])
+        .chain(knots)
+        .chain(std::iter::once(options.scale[1]))
+}
+
+/// The scale when it is the same along the whole wire.
+fn constant_scale(options: &WireSweep) -> Option<f64> {
+    let first = options.scale[0];
+    scale_values(options).all(|s| s == first).then_some(first)
 }
 
 /// The frame's name as the CLI and Python spell it.
@@ -566,5 +619,7 @@ mod guide_tests;
 mod options_tests;
 #[cfg(test)]
 mod robustness_tests;
+#[cfg(test)]
+mod scale_knot_tests;
 #[cfg(test)]
 pub(crate) mod tests;

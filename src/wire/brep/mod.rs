@@ -629,7 +629,7 @@ pub(crate) fn build(
 /// arc length from 0 at the wire's start to 1 at its end.
 fn blend_scales(transport: &Transport) -> Result<Vec<[PieceScale; 3]>> {
     let length = transport.pieces.iter().map(|p| p.length).sum();
-    let law = |start, end| ScaleLaw { start, end, length };
+    let law = |start, end| ScaleLaw::linear(start, end, length);
     let (down, up, ones) = (law(1.0, 0.0), law(0.0, 1.0), law(1.0, 1.0));
     let mut s0 = 0.0;
     transport
