@@ -164,6 +164,7 @@ static void test_options(void) {
           "the RMF, no fixed direction, scale 1 at both ends");
     CHECK(RMF_FRAME_RMF == 0 && RMF_FRAME_FRENET == 1 && RMF_FRAME_FIXED == 2, "frame codes fixed");
     CHECK(o.method == RMF_SPINE_PH_RMF, "curve edges along the PH cubic spline's rational RMF by default");
+    CHECK(o.scale_knots == NULL && o.scale_knot_count == 0, "no knots in the scale law by default");
     CHECK(RMF_SPINE_PH_RMF == 0 && RMF_SPINE_FRENET == 1 && RMF_SPINE_MOBIUS == 2 && RMF_SPINE_RRMF == 3,
           "method codes fixed");
     CHECK_STATUS(rmf_wire_sweep_options_init(NULL), RMF_ERROR_NULL_POINTER, "options");
@@ -418,6 +419,17 @@ static void test_options_of_an_older_header(void) {
     CHECK_STATUS(rmf_wire_sweep(e, 3, profile, NULL, 0, &o, &shape), RMF_OK, "");
     rmf_shape_free(shape);
     shape = NULL;
+    /* The header of method, before scale_knots: no knots, whatever lies after its struct. */
+    o.struct_size = offsetof(RmfWireSweepOptions, scale_knots);
+    o.method = RMF_SPINE_PH_RMF, o.scale_knots = NULL, o.scale_knot_count = 3; /* not read */
+    CHECK(o.struct_size == 136, "the struct of 0.2 before scale_knots is 136 bytes");
+    CHECK_STATUS(rmf_wire_sweep(e, 3, profile, NULL, 0, &o, &shape), RMF_OK, "");
+    if (shape) {
+        const double exact = PI * (20 + 2.5 * PI), v = volume(shape);
+        CHECK(fabs(v - exact) <= 1e-12 * exact, "the default sweep: the knots not read");
+    }
+    rmf_shape_free(shape);
+    shape = NULL;
     o.struct_size = offsetof(RmfWireSweepOptions, frame) - 8;
     REFUSED(rmf_wire_sweep(e, 3, profile, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
             "options->struct_size = 72 is no size of this struct (80 to");
@@ -452,6 +464,55 @@ static void test_scale_law_frustum(void) {
         CHECK(fabs(v - exact) <= 1e-12 * exact, "the frustum's volume pi L (r0^2 + r0 r1 + r1^2) / 3");
         CHECK(r.frame_error >= 0 && r.frame_error <= 1e-12, "the frame asked for");
         rmf_shape_free(shape);
+    }
+    rmf_curve_free(profile);
+}
+
+/* The knots of the scale law along a straight line (intended behaviour of the geometry): a
+   circle of radius r along a line of length L, scale [1, 1] through the knots (0.25, 2) and
+   (0.75, 0.5), is the chain of frustums of lengths L/4, L/2, L/4 between the scales 1, 2, 0.5,
+   1: volume pi r^2 sum L_i (a^2 + a b + b^2) / 3, by this suite's own integration. Then the
+   same with scale [0.5, 1.5] through one knot (0.4, 1); the first law without its knots is
+   the cylinder (the check can fail). */
+static void test_scale_knots_frustums(void) {
+    const double r = 0.75, length = 4;
+    RmfEdge e = line(vec3(0, 0, 0), vec3(length, 0, 0));
+    RmfCurve *profile = circle(r);
+    const double two_knots[4] = {0.25, 2, 0.75, 0.5}, one_knot[2] = {0.4, 1};
+    struct {
+        double start, end;
+        const double *knots;
+        size_t count;
+    } laws[2] = {{1, 1, two_knots, 2}, {0.5, 1.5, one_knot, 1}};
+    for (int k = 0; k < 2; ++k) {
+        RmfWireSweepOptions o;
+        RmfShape *shape = NULL;
+        double exact = 0, at = 0, a = laws[k].start;
+        for (size_t i = 0; i <= laws[k].count; ++i) {
+            const double next = i < laws[k].count ? laws[k].knots[2 * i] : 1;
+            const double b = i < laws[k].count ? laws[k].knots[2 * i + 1] : laws[k].end;
+            exact += PI * r * r * (next - at) * length * (a * a + a * b + b * b) / 3;
+            at = next, a = b;
+        }
+        rmf_wire_sweep_options_init(&o);
+        o.scale_start = laws[k].start, o.scale_end = laws[k].end;
+        o.scale_knots = laws[k].knots, o.scale_knot_count = laws[k].count;
+        CHECK_STATUS(rmf_wire_sweep(&e, 1, profile, NULL, 0, &o, &shape), RMF_OK, "");
+        if (!shape) continue;
+        const double v = volume(shape);
+        printf("chain of frustums along a line, scale [%g, %g] through %zu knot(s): volume %.15f vs %.15f "
+               "(relative %.1e)\n",
+               laws[k].start, laws[k].end, laws[k].count, v, exact, fabs(v - exact) / exact);
+        CHECK(rmf_shape_is_solid(shape) == 1, "a closed solid");
+        CHECK(fabs(v - exact) <= 1e-12 * exact, "the chain of frustums pi r^2 sum L_i (a^2 + a b + b^2) / 3");
+        rmf_shape_free(shape);
+        /* Without its knots the first law is the cylinder: the volumes differ. */
+        if (k == 0) {
+            o.scale_knot_count = 0;
+            CHECK_STATUS(rmf_wire_sweep(&e, 1, profile, NULL, 0, &o, &shape), RMF_OK, "");
+            if (shape) CHECK(fabs(volume(shape) - exact) > 0.1 * exact, "the knots change the volume");
+            rmf_shape_free(shape);
+        }
     }
     rmf_curve_free(profile);
 }
@@ -625,6 +686,41 @@ static void test_bad_inputs(void) {
         o.scale_end = 2;
         REFUSED(rmf_wire_sweep(poly, 3, tiny, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
                 "options->method = 3: a scale law is exact along PH splines");
+        /* The knots of the scale law: NULL with a count, a fraction out of (0, 1) or not
+           after the one before, a scale not positive, each refused naming the double; a
+           knot that makes the law non-constant with an exact-RMF method names the knots. */
+        {
+            const double outside[2] = {1.0, 2}, zero[2] = {0.0, 2}, decreasing[4] = {0.5, 2, 0.25, 1},
+                         negative[4] = {0.25, 2, 0.5, -1}, not_a_number[2] = {0.5, 0}, tame[2] = {0.5, 2};
+            double nan_scale[2] = {0.5, 0};
+            nan_scale[1] = nan_value();
+            rmf_wire_sweep_options_init(&o);
+            o.scale_knot_count = 1;
+            REFUSED(rmf_wire_sweep(poly, 3, tiny, NULL, 0, &o, &out), RMF_ERROR_NULL_POINTER,
+                    "options->scale_knots is NULL");
+            o.scale_knots = outside;
+            REFUSED(rmf_wire_sweep(poly, 3, tiny, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
+                    "options->scale_knots[0] (the fraction of knot 0): its fraction of the wire's length 1 must "
+                    "lie in (0, 1)");
+            o.scale_knots = zero;
+            REFUSED(rmf_wire_sweep(poly, 3, tiny, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
+                    "options->scale_knots[0] (the fraction of knot 0)");
+            o.scale_knots = decreasing, o.scale_knot_count = 2;
+            REFUSED(rmf_wire_sweep(poly, 3, tiny, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
+                    "options->scale_knots[2] (the fraction of knot 1)");
+            o.scale_knots = negative;
+            REFUSED(rmf_wire_sweep(poly, 3, tiny, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
+                    "options->scale_knots[3] (the scale of knot 1): the scale -1 must be finite and positive");
+            o.scale_knots = not_a_number, o.scale_knot_count = 1;
+            REFUSED(rmf_wire_sweep(poly, 3, tiny, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
+                    "options->scale_knots[1] (the scale of knot 0): the scale 0");
+            o.scale_knots = nan_scale;
+            REFUSED(rmf_wire_sweep(poly, 3, tiny, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
+                    "options->scale_knots[1] (the scale of knot 0): the scale NaN");
+            o.scale_knots = tame, o.method = RMF_SPINE_MOBIUS;
+            REFUSED(rmf_wire_sweep(poly, 3, tiny, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
+                    "options->scale_knots = [(0.5, 2)] with options->method = 2: a scale law is exact");
+        }
         rmf_curve_free(tiny);
     }
     /* Accessors on NULL and out of range; no file for a failure. */
@@ -718,6 +814,7 @@ int main(void) {
     test_bad_inputs();
     test_options_of_an_older_header();
     test_scale_law_frustum();
+    test_scale_knots_frustums();
     test_spine_methods();
     test_sweep_between();
     return rmf_check_exit_code("abi_wire");

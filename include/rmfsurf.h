@@ -1746,6 +1746,20 @@ typedef struct RmfWireSweepOptions {
    * (scale_start = scale_end).
    */
   uint32_t method;
+  /**
+   * Added in 0.2 (after method): scale_knot_count knots of the scale law, each two
+   * doubles (fraction, scale): the fraction of the wire's length where the profile has
+   * that scale, the fractions strictly increasing in (0, 1), the scales finite and
+   * positive. The scale then runs from scale_start through every knot to scale_end,
+   * linearly in arc length between them (a chain of frustums along a line). NULL with
+   * scale_knot_count 0 (default): no knots. Borrowed for the call.
+   */
+  const double *scale_knots;
+  /**
+   * Added in 0.2 (with scale_knots): the number of knots, pairs of doubles at scale_knots
+   * (default 0).
+   */
+  size_t scale_knot_count;
 } RmfWireSweepOptions;
 
 /**
@@ -4696,7 +4710,8 @@ RmfStatus rmf_wire_sweep_options_init(struct RmfWireSweepOptions *options);
  *   Frenet frame (RMF_FRAME_FRENET: a thread along a helix) or a fixed direction
  *   (RMF_FRAME_FIXED with options->frame_direction); options->scale_start and
  *   options->scale_end scale the profile about the spine, linearly in arc length (a
- *   frustum along a line);
+ *   frustum along a line), through the knots at options->scale_knots if any (piecewise
+ *   linear: a chain of frustums);
  * - options->method sweeps curve edges along spines with exact rational RMFs instead
  *   (RMF_SPINE_MOBIUS: Möbius images of planar PH cubics, Bartoň, Jüttler & Wang;
  *   RMF_SPINE_RRMF: RRMF quintics, Farouki, Giannelli & Sestini): the parameter lines of
@@ -4730,7 +4745,8 @@ RmfStatus rmf_wire_sweep_options_init(struct RmfWireSweepOptions *options);
  * @param[out] out Receives the shape; free with rmf_shape_free. Untouched on failure.
  * @return RMF_OK on success.
  * @return RMF_ERROR_NULL_POINTER If edges (with edge_count > 0), profile, a hole, holes
- *         (with hole_count > 0) or out is NULL.
+ *         (with hole_count > 0), options->scale_knots (with options->scale_knot_count >
+ *         0) or out is NULL.
  * @return RMF_ERROR_INVALID_INPUT If an edge, the profile, a hole or an option is invalid
  *         or the sweep would fold (the message names the edge, joint, loop or option).
  * @return RMF_ERROR_NO_SOLUTION / RMF_ERROR_NOT_CONVERGED If a curve edge admits no PH
@@ -4761,8 +4777,8 @@ RmfStatus rmf_wire_sweep(const struct RmfEdge *edges,
  * @param[in] end_hole_count Number of end holes.
  * @param[out] out Receives the shape; free with rmf_shape_free. Untouched on failure.
  * @return RMF_OK on success.
- * @return RMF_ERROR_NULL_POINTER If edges, a profile, a hole array with a count > 0 or out
- *         is NULL.
+ * @return RMF_ERROR_NULL_POINTER If edges, a profile, a hole array with a count > 0,
+ *         options->scale_knots with a count > 0 or out is NULL.
  * @return RMF_ERROR_INVALID_INPUT As for rmf_wire_sweep; also (the message naming
  *         end_profile) for a different number of holes, a closed wire, a scale law beside
  *         the end profile, a profile out of the normal plane.

@@ -132,6 +132,16 @@ pub struct RmfWireSweepOptions {
     /// RMF_FRAME_FRENET); RMF_SPINE_MOBIUS and RMF_SPINE_RRMF take no scale law
     /// (scale_start = scale_end).
     pub method: u32,
+    /// Added in 0.2 (after method): scale_knot_count knots of the scale law, each two
+    /// doubles (fraction, scale): the fraction of the wire's length where the profile has
+    /// that scale, the fractions strictly increasing in (0, 1), the scales finite and
+    /// positive. The scale then runs from scale_start through every knot to scale_end,
+    /// linearly in arc length between them (a chain of frustums along a line). NULL with
+    /// scale_knot_count 0 (default): no knots. Borrowed for the call.
+    pub scale_knots: *const f64,
+    /// Added in 0.2 (with scale_knots): the number of knots, pairs of doubles at scale_knots
+    /// (default 0).
+    pub scale_knot_count: usize,
 }
 
 impl Default for RmfWireSweepOptions {
@@ -152,15 +162,19 @@ impl Default for RmfWireSweepOptions {
             scale_start: d.scale[0],
             scale_end: d.scale[1],
             method: RMF_SPINE_PH_RMF,
+            scale_knots: std::ptr::null(),
+            scale_knot_count: 0,
         }
     }
 }
 
-// SAFETY: #[repr(C)], first field size_t, every field a number or a u32 code (any bit
-// pattern is a value, validated on use).
+// SAFETY: #[repr(C)], first field size_t, every field a number, a u32 code or a raw pointer
+// (any bit pattern is a value: codes validated on use, the pointer checked like an argument
+// before it is read).
 unsafe impl OptionsStruct for RmfWireSweepOptions {
     /// The struct up to `solid`, before `frame` was added: a caller built against that
-    /// header (or the one before `method`) gets the defaults of the fields after it.
+    /// header (or the one before `method`, or before `scale_knots`) gets the defaults of the
+    /// fields after it.
     const FIRST_SIZE: usize = std::mem::offset_of!(RmfWireSweepOptions, frame);
 }
 
@@ -181,8 +195,32 @@ pub unsafe extern "C" fn rmf_wire_sweep_options_init(
     })
 }
 
+/// The scale law's knots, (fraction, scale) from the doubles at options->scale_knots: the
+/// pointer and the count checked here, the values by the geometry (whose `scale_knots[k]:`
+/// messages `blame_method` puts on the doubles).
+///
+/// # Safety
+/// `o.scale_knots` must be NULL or point to `2 * o.scale_knot_count` doubles.
+unsafe fn scale_knots(o: &RmfWireSweepOptions) -> Result<Vec<(f64, f64)>, FfiError> {
+    let count = o.scale_knot_count;
+    if count == 0 {
+        return Ok(Vec::new());
+    }
+    if count > MAX_FACES {
+        return invalid_arg(format!(
+            "options->scale_knot_count = {count}: each knot cuts the wire, and a wire sweep \
+             has at most {MAX_FACES} lateral faces"
+        ));
+    }
+    let doubles = slice(o.scale_knots, 2 * count, "options->scale_knots")?;
+    Ok(doubles.chunks_exact(2).map(|k| (k[0], k[1])).collect())
+}
+
 /// The options as the geometry takes them (validated).
-fn wire_options(o: &RmfWireSweepOptions) -> Result<WireSweep, FfiError> {
+///
+/// # Safety
+/// `o.scale_knots` must be NULL or point to `2 * o.scale_knot_count` doubles.
+unsafe fn wire_options(o: &RmfWireSweepOptions) -> Result<WireSweep, FfiError> {
     let corner = match o.corner {
         RMF_CORNER_ROUND if o.corner_radius == 0.0 => Corner::Round(None),
         RMF_CORNER_ROUND => {
@@ -262,22 +300,44 @@ fn wire_options(o: &RmfWireSweepOptions) -> Result<WireSweep, FfiError> {
         solid: o.solid == 1,
         frame,
         scale: [o.scale_start, o.scale_end],
+        scale_knots: scale_knots(o)?,
         method,
-        ..WireSweep::default()
     })
 }
 
-/// The geometry's refusals of the method (`method: …`) and of a scale law with it
-/// (`scale: …`) with the fields of the options named.
-fn blame_method(e: Error, o: &RmfWireSweepOptions) -> Error {
+/// The geometry's refusals of the method (`method: …`), of a scale law with it (`scale:
+/// …`) and of a knot of the law (`scale_knots[k]: …`, put on the double at
+/// options->scale_knots that is wrong) with the fields of the options named; `knots` as
+/// read from options->scale_knots.
+fn blame_method(e: Error, o: &RmfWireSweepOptions, knots: &[(f64, f64)]) -> Error {
     let fields = if let Some(rest) = e.reason().strip_prefix("method: ") {
         format!("options->method = {}: {rest}", o.method)
     } else if let Some(rest) = e.reason().strip_prefix("scale: ") {
+        let knots = match knots.len() {
+            0 => String::new(),
+            1..=4 => format!(
+                ", options->scale_knots = [{}]",
+                knots
+                    .iter()
+                    .map(|(at, s)| format!("({at}, {s})"))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
+            n => format!(", options->scale_knot_count = {n}"),
+        };
         format!(
-            "options->scale_start = {}, options->scale_end = {} with options->method = {}: \
-             {rest}",
+            "options->scale_start = {}, options->scale_end = {}{knots} with options->method = \
+             {}: {rest}",
             o.scale_start, o.scale_end, o.method
         )
+    } else if let Some((k, rest)) = knot_refusal(e.reason()) {
+        // Knot k is the doubles 2k (its fraction) and 2k + 1 (its scale).
+        let (index, what) = if rest.starts_with("the scale") {
+            (2 * k + 1, "scale")
+        } else {
+            (2 * k, "fraction")
+        };
+        format!("options->scale_knots[{index}] (the {what} of knot {k}): {rest}")
     } else {
         return e;
     };
@@ -286,6 +346,12 @@ fn blame_method(e: Error, o: &RmfWireSweepOptions) -> Error {
         .into_iter()
         .rev()
         .fold(Error::new(e.kind(), fields), |e, c| e.context(c))
+}
+
+/// The knot and the rest of a geometry's refusal `scale_knots[k]: rest`.
+fn knot_refusal(reason: &str) -> Option<(usize, &str)> {
+    let (k, rest) = reason.strip_prefix("scale_knots[")?.split_once("]: ")?;
+    Some((k.parse().ok()?, rest))
 }
 
 /// The edges as the geometry takes them (kinds and points checked, curves borrowed).
@@ -352,7 +418,8 @@ unsafe fn wire_edges(edges: &[RmfEdge]) -> Result<Vec<Edge>, FfiError> {
 ///   Frenet frame (RMF_FRAME_FRENET: a thread along a helix) or a fixed direction
 ///   (RMF_FRAME_FIXED with options->frame_direction); options->scale_start and
 ///   options->scale_end scale the profile about the spine, linearly in arc length (a
-///   frustum along a line);
+///   frustum along a line), through the knots at options->scale_knots if any (piecewise
+///   linear: a chain of frustums);
 /// - options->method sweeps curve edges along spines with exact rational RMFs instead
 ///   (RMF_SPINE_MOBIUS: Möbius images of planar PH cubics, Bartoň, Jüttler & Wang;
 ///   RMF_SPINE_RRMF: RRMF quintics, Farouki, Giannelli & Sestini): the parameter lines of
@@ -386,7 +453,8 @@ unsafe fn wire_edges(edges: &[RmfEdge]) -> Result<Vec<Edge>, FfiError> {
 /// @param[out] out Receives the shape; free with rmf_shape_free. Untouched on failure.
 /// @return RMF_OK on success.
 /// @return RMF_ERROR_NULL_POINTER If edges (with edge_count > 0), profile, a hole, holes
-///         (with hole_count > 0) or out is NULL.
+///         (with hole_count > 0), options->scale_knots (with options->scale_knot_count >
+///         0) or out is NULL.
 /// @return RMF_ERROR_INVALID_INPUT If an edge, the profile, a hole or an option is invalid
 ///         or the sweep would fold (the message names the edge, joint, loop or option).
 /// @return RMF_ERROR_NO_SOLUTION / RMF_ERROR_NOT_CONVERGED If a curve edge admits no PH
@@ -413,7 +481,7 @@ pub unsafe extern "C" fn rmf_wire_sweep(
         let raw = read_options(options, "options")?;
         let options = wire_options(&raw)?;
         let shape = sweep_wire(&edges, profile.rational("profile")?, &holes, &options)
-            .map_err(|e| blame_method(e, &raw))?;
+            .map_err(|e| blame_method(e, &raw, &options.scale_knots))?;
         write(out, RmfShape::new(shape).into_raw());
         Ok(())
     })
@@ -433,8 +501,8 @@ pub unsafe extern "C" fn rmf_wire_sweep(
 /// @param[in] end_hole_count Number of end holes.
 /// @param[out] out Receives the shape; free with rmf_shape_free. Untouched on failure.
 /// @return RMF_OK on success.
-/// @return RMF_ERROR_NULL_POINTER If edges, a profile, a hole array with a count > 0 or out
-///         is NULL.
+/// @return RMF_ERROR_NULL_POINTER If edges, a profile, a hole array with a count > 0,
+///         options->scale_knots with a count > 0 or out is NULL.
 /// @return RMF_ERROR_INVALID_INPUT As for rmf_wire_sweep; also (the message naming
 ///         end_profile) for a different number of holes, a closed wire, a scale law beside
 ///         the end profile, a profile out of the normal plane.
@@ -474,7 +542,7 @@ pub unsafe extern "C" fn rmf_wire_sweep_between(
             &end_holes,
             &options,
         )
-        .map_err(|e| blame_method(e, &raw))?;
+        .map_err(|e| blame_method(e, &raw, &options.scale_knots))?;
         write(out, RmfShape::new(shape).into_raw());
         Ok(())
     })

@@ -379,7 +379,9 @@ fn wire_sweep(
     edit: impl Fn(&mut RmfWireSweepOptions),
 ) -> RmfStatus {
     let mut options = std::mem::MaybeUninit::<RmfWireSweepOptions>::uninit();
-    let mut out: *mut RmfShape = null_mut();
+    // A failure writes nothing: `out` keeps this (never dereferenced) value.
+    let sentinel = std::ptr::NonNull::<RmfShape>::dangling().as_ptr();
+    let mut out = sentinel;
     unsafe {
         rmf_wire_sweep_options_init(options.as_mut_ptr());
         let mut options = options.assume_init();
@@ -394,13 +396,29 @@ fn wire_sweep(
             &options,
             &mut out,
         );
-        rmf_shape_free(out);
+        if status == RmfStatus::RmfOk {
+            rmf_shape_free(out);
+        } else {
+            assert_eq!(out, sentinel, "{status:?}: out written on failure");
+        }
         rmf_curve_free(profile);
         for &h in holes {
             rmf_curve_free(h);
         }
         status
     }
+}
+
+/// A valid knot of the scale law: σ = 2 half way.
+static ONE_KNOT: [f64; 2] = [0.5, 2.0];
+
+/// rmf_wire_sweep of a circle of radius 1 along the pipe route with the knots at `knots`
+/// (pairs of doubles), the rest the defaults.
+fn knotted(knots: &[f64]) -> RmfStatus {
+    wire_sweep(&pipe_route(), circle(1.0), &[], |o| {
+        o.scale_knots = knots.as_ptr();
+        o.scale_knot_count = knots.len() / 2;
+    })
 }
 
 /// rmf_wire_sweep_between along a line of 3 from the circle of radius 1 with `holes` to
@@ -1730,6 +1748,70 @@ fn rows() -> Vec<Row> {
                 wire_sweep(&pipe_route(), circle(1.0), &[], |o| {
                     o.method = RMF_SPINE_MOBIUS;
                     o.scale_end = 0.5;
+                })
+            },
+        },
+        Row {
+            what: "scale knots NULL with a count",
+            function: "rmf_wire_sweep",
+            expected: NULL,
+            names: "options->scale_knots is NULL",
+            call: |_| wire_sweep(&pipe_route(), circle(1.0), &[], |o| o.scale_knot_count = 2),
+        },
+        Row {
+            what: "more scale knots than faces allowed",
+            function: "rmf_wire_sweep",
+            expected: INVALID,
+            names: "options->scale_knot_count = 65537: each knot cuts the wire",
+            call: |_| {
+                wire_sweep(&pipe_route(), circle(1.0), &[], |o| {
+                    o.scale_knots = ONE_KNOT.as_ptr();
+                    o.scale_knot_count = 65_537;
+                })
+            },
+        },
+        Row {
+            what: "scale knot fraction out of (0, 1)",
+            function: "rmf_wire_sweep",
+            expected: INVALID,
+            names: "options->scale_knots[0] (the fraction of knot 0): its fraction of the wire's \
+                    length 1.5 must lie in (0, 1)",
+            call: |_| knotted(&[1.5, 2.0]),
+        },
+        Row {
+            what: "scale knot fractions not increasing",
+            function: "rmf_wire_sweep",
+            expected: INVALID,
+            names: "options->scale_knots[2] (the fraction of knot 1): its fraction of the wire's \
+                    length 0.25 must lie in (0, 1), after the knot before it (0.5)",
+            call: |_| knotted(&[0.5, 2.0, 0.25, 1.0]),
+        },
+        Row {
+            what: "scale knot scale not positive",
+            function: "rmf_wire_sweep",
+            expected: INVALID,
+            names: "options->scale_knots[3] (the scale of knot 1): the scale 0 must be finite and \
+                    positive",
+            call: |_| knotted(&[0.25, 2.0, 0.5, 0.0]),
+        },
+        Row {
+            what: "scale knot scale NaN",
+            function: "rmf_wire_sweep",
+            expected: INVALID,
+            names: "options->scale_knots[1] (the scale of knot 0): the scale NaN must be finite",
+            call: |_| knotted(&[0.5, NAN]),
+        },
+        Row {
+            what: "scale knots with an exact-RMF method",
+            function: "rmf_wire_sweep",
+            expected: INVALID,
+            names: "options->scale_start = 1, options->scale_end = 1, options->scale_knots = \
+                    [(0.5, 2)] with options->method = 3",
+            call: |_| {
+                wire_sweep(&pipe_route(), circle(1.0), &[], |o| {
+                    o.method = RMF_SPINE_RRMF;
+                    o.scale_knots = ONE_KNOT.as_ptr();
+                    o.scale_knot_count = 1;
                 })
             },
         },

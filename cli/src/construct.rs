@@ -130,8 +130,8 @@ pub fn run_wire(job: &WireJob) -> Result<Shape, InputError> {
         solid: job.solid,
         frame: job.frame.clone(),
         scale: job.scale,
+        scale_knots: job.scale_knots.clone(),
         method: job.method,
-        ..WireSweep::default()
     };
     let end = match &job.end_profile {
         Some((end_profile, end_holes)) => Some((
@@ -150,9 +150,14 @@ pub fn run_wire(job: &WireJob) -> Result<Shape, InputError> {
         }
         None => sweep_wire(&edges, &profile, &holes, &options),
     }
-    .map_err(|e| InputError {
-        path: wire_blame(&e.message()),
-        message: e.message(),
+    .map_err(|e| {
+        let message = e.message();
+        let mut path = wire_blame(&message);
+        // A law made non-constant by its knots alone (`scale: …` with a constant "scale").
+        if path == "sweep.scale" && job.scale[0] == job.scale[1] && !job.scale_knots.is_empty() {
+            path = "sweep.scale_knots".into();
+        }
+        InputError { path, message }
     })
 }
 
@@ -166,6 +171,12 @@ fn wire_blame(message: &str) -> String {
                 .and_then(|n| n.parse::<usize>().ok())
         })
     };
+    if message.starts_with("scale_knots[") {
+        return match number_after("scale_knots[") {
+            Some(k) => format!("sweep.scale_knots[{k}]"),
+            None => "sweep.scale_knots".into(),
+        };
+    }
     if message.starts_with("end_profile") {
         return match number_after("holes[") {
             Some(k) => format!("sweep.end_profile.holes[{k}]"),

@@ -89,6 +89,8 @@ pub struct WireJob {
     pub frame: rmfsurf::SweepFrame,
     /// The profile's scale at the wire's start and end (default `[1, 1]`).
     pub scale: [f64; 2],
+    /// Knots of the scale law, (fraction of the wire's length, scale) (default none).
+    pub scale_knots: Vec<(f64, f64)>,
     /// How curve edges are swept (default ph-rmf; mobius and rrmf carry exact rational
     /// RMFs; frenet is refused by the library, blamed on `sweep.method`).
     pub method: SpineMethod,
@@ -307,6 +309,10 @@ fn wire_job(sweep: schema::Sweep) -> InputResult<WireJob> {
         solid: sweep.solid.map_or(defaults.solid, |s| s.0),
         frame: sweep.frame.map_or(defaults.frame, |f| f.0),
         scale: sweep.scale.map_or(defaults.scale, |s| s.0),
+        scale_knots: sweep
+            .scale_knots
+            .map(|k| k.into_vec().into_iter().map(|k| k.0).collect())
+            .unwrap_or_default(),
         method: sweep.method.map_or(defaults.method, |m| m.0),
         end_profile,
     })

@@ -75,6 +75,16 @@ impl Bound for Rows {
         "a developable ruled surface has degree_u = 1 and two rows of poles, its rails";
 }
 
+/// Knots of a wire sweep's scale law.
+pub struct ScaleKnots;
+
+impl Bound for ScaleKnots {
+    const MAX: usize = MAX_FACES;
+    const ITEMS: &'static str = "knots";
+    const WHY: &'static str = "each knot cuts the wire, and a wire sweep has at most \
+                               rmfsurf::MAX_FACES lateral faces";
+}
+
 /// Hermite points and tangents of a spine.
 pub struct Points;
 
@@ -139,6 +149,8 @@ pub struct Sweep {
     pub solid: Option<Bool>,
     pub frame: Option<FrameName>,
     pub scale: Option<Scale>,
+    /// Knots of the scale law: `[[fraction, scale], ...]`, σ piecewise linear through them.
+    pub scale_knots: Option<Bounded<ScaleKnot, ScaleKnots>>,
     /// The section at the wire's end (same form as `profile`): a sweep between two profiles.
     pub end_profile: Option<Profile>,
 }
@@ -154,6 +166,7 @@ impl Sweep {
             ("solid", self.solid.is_some()),
             ("frame", self.frame.is_some()),
             ("scale", self.scale.is_some()),
+            ("scale_knots", self.scale_knots.is_some()),
             ("end_profile", self.end_profile.is_some()),
         ]
         .into_iter()
@@ -535,5 +548,68 @@ impl<'de> Visitor<'de> for ScaleVisitor {
 impl<'de> Deserialize<'de> for Scale {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         d.deserialize_any(ScaleVisitor).map(Scale)
+    }
+}
+
+/// `[fraction, scale]`: a knot of the scale law, the fraction of the wire's length in (0, 1)
+/// (increasing from knot to knot: checked by the library) and the scale there, positive.
+#[derive(Clone, Copy, Debug)]
+pub struct ScaleKnot(pub (f64, f64));
+
+struct ScaleKnotVisitor;
+
+/// A knot's fraction of the wire's length: a finite number in (0, 1).
+struct Fraction(f64);
+
+impl<'de> Deserialize<'de> for Fraction {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let Number(x) = Number::deserialize(d)?;
+        if x > 0.0 && x < 1.0 {
+            Ok(Fraction(x))
+        } else {
+            Err(de::Error::custom(format!(
+                "must lie in (0, 1) (a fraction of the wire's length), got {x}"
+            )))
+        }
+    }
+}
+
+impl<'de> Visitor<'de> for ScaleKnotVisitor {
+    type Value = (f64, f64);
+
+    fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+        f.write_str(
+            "[fraction, scale] (a fraction of the wire's length in (0, 1), a positive scale)",
+        )
+    }
+
+    fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<(f64, f64), A::Error> {
+        let count = |n: usize| {
+            de::Error::custom(format!(
+                "must be [fraction, scale], got {n} number{}",
+                if n == 1 { "" } else { "s" }
+            ))
+        };
+        let Some(Fraction(at)) = seq.next_element::<Fraction>()? else {
+            return Err(count(0));
+        };
+        let Some(Positive(scale)) = seq.next_element::<Positive>()? else {
+            return Err(count(1));
+        };
+        // Numbers past the second are checked and counted, not kept.
+        let mut n = 2;
+        while seq.next_element::<Number>()?.is_some() {
+            n += 1;
+        }
+        if n != 2 {
+            return Err(count(n));
+        }
+        Ok((at, scale))
+    }
+}
+
+impl<'de> Deserialize<'de> for ScaleKnot {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        d.deserialize_any(ScaleKnotVisitor).map(ScaleKnot)
     }
 }

@@ -657,6 +657,99 @@ fn a_scaled_circle_along_a_line_is_a_frustum() {
     }
 }
 
+/// The knots of the scale law (intended behaviour of the geometry): a circle of radius 1
+/// along a line of length 3, `"scale": [1, 1]` through the knots `[0.25, 2]` and `[0.75, 0.5]`,
+/// is the chain of frustums of lengths 0.75, 1.5, 0.75 between the scales 1, 2, 0.5, 1, of
+/// volume π Σ Lᵢ (aᵢ² + aᵢbᵢ + bᵢ²)/3 (the summary's volume); without the knots the
+/// cylinder, so the check can fail.
+#[test]
+fn scale_knots_make_a_chain_of_frustums() {
+    let chain = |start: f64, knots: &[(f64, f64)], end: f64| {
+        let mut points = vec![(0.0, start)];
+        points.extend_from_slice(knots);
+        points.push((1.0, end));
+        points
+            .windows(2)
+            .map(|w| {
+                let (length, a, b) = (3.0 * (w[1].0 - w[0].0), w[0].1, w[1].1);
+                std::f64::consts::PI * length * (a * a + a * b + b * b) / 3.0
+            })
+            .sum::<f64>()
+    };
+    for (k, (extra, exact)) in [
+        (
+            r#""scale": [1, 1], "scale_knots": [[0.25, 2], [0.75, 0.5]], "#,
+            chain(1.0, &[(0.25, 2.0), (0.75, 0.5)], 1.0),
+        ),
+        (
+            r#""scale_knots": [[0.4, 1.5]], "scale": [0.5, 1], "#,
+            chain(0.5, &[(0.4, 1.5)], 1.0),
+        ),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let f = wire_figures(&format!("wire_knots_{k}"), &line_job(extra));
+        let volume = f["volume"].as_f64().unwrap();
+        println!("{extra}: volume {volume:.15}, chain of frustums {exact:.15}");
+        assert!(
+            (volume - exact).abs() <= 1e-9 * exact,
+            "{extra}: volume {volume}, frustums {exact}"
+        );
+        assert_eq!(f["solid"], serde_json::json!(true), "{extra}");
+        let cylinder = 3.0 * std::f64::consts::PI;
+        assert!((exact - cylinder).abs() > 0.1, "{extra}: {exact}");
+    }
+}
+
+/// `"scale_knots"` refused at the field: a fraction out of (0, 1), fractions not
+/// increasing (the library's message), a scale not positive, a knot of one or three
+/// numbers, no array, knots with an exact-RMF method (the law made non-constant by its knots
+/// alone), the key on a sweep along a curve.
+#[test]
+fn scale_knots_are_refused_at_the_field() {
+    let cases = [
+        (
+            r#""scale_knots": [[1.5, 2]], "#,
+            "sweep.scale_knots[0][0]: must lie in (0, 1) (a fraction of the wire's length), got 1.5",
+        ),
+        (
+            r#""scale_knots": [[0.5, 2], [0.25, 1]], "#,
+            "sweep.scale_knots[1]: scale_knots[1]: its fraction of the wire's length 0.25 must \
+             lie in (0, 1), after the knot before it (0.5)",
+        ),
+        (
+            r#""scale_knots": [[0.5, -1]], "#,
+            "sweep.scale_knots[0][1]: must be positive, got -1",
+        ),
+        (
+            r#""scale_knots": [[0.5]], "#,
+            "sweep.scale_knots[0]: must be [fraction, scale], got 1 number",
+        ),
+        (
+            r#""scale_knots": [[0.5, 2, 3]], "#,
+            "sweep.scale_knots[0]: must be [fraction, scale], got 3 numbers",
+        ),
+        (r#""scale_knots": 0.5, "#, "sweep.scale_knots"),
+        (
+            r#""method": "mobius", "scale_knots": [[0.5, 2]], "#,
+            "sweep.scale_knots: scale: a scale law is exact along PH splines",
+        ),
+    ];
+    for (k, (extra, expected)) in cases.iter().enumerate() {
+        wire_fails_with(
+            &format!("wire_knots_bad_{k}"),
+            &line_job(extra),
+            &[expected],
+        );
+    }
+    fails_with(
+        "curve_knots",
+        &GOOD_SWEEP.replace("\"profile\"", r#""scale_knots": [[0.5, 2]], "profile""#),
+        &["sweep.scale_knots: only for a sweep along a wire"],
+    );
+}
+
 /// The fixed input of issue 15 (examples/cli/hopper.json): the formed solid as STEP, the
 /// neutral layer's flat pattern as DXF, SVG and a planar STEP face, the figures as JSON.
 #[test]

@@ -1,6 +1,7 @@
 """RmfSweep: a planar profile swept along a wire with rotation-minimizing frames (or the
 Frenet frame, or a frame following a fixed direction; the profile scaled linearly from
-ScaleStart to ScaleEnd, or blended into an EndProfile), by the library's wire sweep (``rmf_wire_sweep``,
+ScaleStart to ScaleEnd, through ScaleKnotFractions/ScaleKnotScales if given, or blended
+into an EndProfile), by the library's wire sweep (``rmf_wire_sweep``,
 ``rmf_wire_sweep_between`` with an EndProfile, through
 :func:`rmfsurf.freecad.sweep_with_report`).
 
@@ -11,7 +12,7 @@ Möbius images of planar PH cubics (Bartoň, Jüttler & Wang), or "rrmf", RRMF q
 (Farouki, Giannelli & Sestini), both with exact rational RMFs, so the parameter lines are
 orthogonal to rounding (Orthogonality ~1e-14, ~1e-7 with ph-rmf). One RMF runs across every
 joint; sharp joints get round (torus) or mitred corners. Mobius and rrmf take no scale law
-(ScaleStart = ScaleEnd).
+(ScaleStart = ScaleEnd, and the same at every knot).
 
 The accuracy figures are the library's report (``rmf_shape_report``), measured on the
 result.
@@ -78,6 +79,13 @@ class SweepFeature(Feature):
         Property("App::PropertyFloat", "ScaleEnd", "Sweep",
                  "The profile's scale at the spine's end (> 0; equal to ScaleStart on a "
                  "closed spine)", default=1.0),
+        Property("App::PropertyFloatList", "ScaleKnotFractions", "Sweep",
+                 "Knots of the scale law: fractions of the spine's length, strictly "
+                 "increasing in (0, 1), where the profile has the scale of the same place "
+                 "in ScaleKnotScales; the scale runs from ScaleStart through them to "
+                 "ScaleEnd, linear in arc length between (empty: none)"),
+        Property("App::PropertyFloatList", "ScaleKnotScales", "Sweep",
+                 "The profile's scale (> 0) at each of ScaleKnotFractions (as many)"),
         Property("App::PropertyFloat", "SpineDistance", "Accuracy",
                  "Largest distance of the PH cubic spline from the curve edges (mm; 0 on "
                  "lines and arcs)", output=True),
@@ -101,10 +109,13 @@ class SweepFeature(Feature):
         from rmfsurf.freecad import sweep_with_report
         if obj.Method not in METHODS:
             raise ValueError("Method: %r is not offered by the wire sweep" % obj.Method)
-        if obj.Method != "ph-rmf" and obj.ScaleStart != obj.ScaleEnd:
-            raise ValueError("Method: %s takes a constant scale (ScaleStart %r, ScaleEnd %r); "
-                             "a scale law needs ph-rmf" % (obj.Method, obj.ScaleStart,
-                                                           obj.ScaleEnd))
+        knots = scale_knots(obj)
+        if obj.Method != "ph-rmf" and any(s != obj.ScaleStart for s in
+                                          [obj.ScaleEnd] + [k[1] for k in knots]):
+            raise ValueError("Method: %s takes a constant scale (ScaleStart %r, ScaleEnd %r, "
+                             "ScaleKnotScales %r); a scale law needs ph-rmf"
+                             % (obj.Method, obj.ScaleStart, obj.ScaleEnd,
+                                [k[1] for k in knots]))
         if obj.ClosureSymmetry < 0:
             raise ValueError("ClosureSymmetry: must be 0 or a symmetry order k >= 1, got %d"
                              % obj.ClosureSymmetry)
@@ -126,7 +137,7 @@ class SweepFeature(Feature):
             solid=obj.Solid, corner=obj.Corner, corner_radius=radius if radius > 0 else None,
             tolerance=obj.Tolerance, twist=math.radians(obj.Twist.Value),
             closure_symmetry=obj.ClosureSymmetry, frame=frame,
-            scale=(obj.ScaleStart, obj.ScaleEnd), method=obj.Method,
+            scale=(obj.ScaleStart, obj.ScaleEnd), scale_knots=knots, method=obj.Method,
             end_profile=end_profile)
         obj.Shape = shape
         self.set_outputs(obj, SpineDistance=report.spine_distance,
@@ -134,6 +145,28 @@ class SweepFeature(Feature):
                          Orthogonality=report.max_parameter_cosine,
                          SingularityMargin=report.singularity_margin,
                          FaceCount=report.face_count, FrameError=report.frame_error)
+
+
+def scale_knots(obj):
+    """The knots of the scale law, (fraction, scale) pairs from ScaleKnotFractions and
+    ScaleKnotScales: as many of each, the fractions strictly increasing in (0, 1), the scales
+    finite and positive; ValueError naming the property otherwise."""
+    fractions, scales = list(obj.ScaleKnotFractions), list(obj.ScaleKnotScales)
+    if len(fractions) != len(scales):
+        raise ValueError("ScaleKnotFractions, ScaleKnotScales: a knot is a fraction and a "
+                         "scale, but there are %d fractions and %d scales"
+                         % (len(fractions), len(scales)))
+    last = 0.0
+    for k, (at, scale) in enumerate(zip(fractions, scales)):
+        if not last < at < 1:
+            raise ValueError("ScaleKnotFractions[%d]: the fraction of the spine's length %r "
+                             "must lie in (0, 1), after the one before it (%r)"
+                             % (k, at, last))
+        if not (math.isfinite(scale) and scale > 0):
+            raise ValueError("ScaleKnotScales[%d]: the profile's scale must be positive, got %r"
+                             % (k, scale))
+        last = at
+    return list(zip(fractions, scales))
 
 
 def make_sweep(doc, spine, profile, solid=True, corner="round", corner_radius=None,

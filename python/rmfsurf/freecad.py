@@ -436,6 +436,7 @@ def _start_principal_normal(wire: Any) -> Optional[np.ndarray]:
 def sweep(wire: Any, profile: Any, *, solid: bool = True, corner: str = "round",
           corner_radius: Optional[float] = None, tolerance: float = 1e-4,
           frame: SweepFrame = "rmf", scale: Tuple[float, float] = (1.0, 1.0),
+          scale_knots: Optional[Sequence[Tuple[float, float]]] = None,
           method: str = "ph-rmf", end_profile: Any = None) -> Any:
     """Sweeps `profile` along `wire` (rmf_wire_sweep), by default with rotation-minimizing
     frames.
@@ -461,6 +462,9 @@ def sweep(wire: Any, profile: Any, *, solid: bool = True, corner: str = "round",
             chooses f2 there.
         scale: the profile's scale (start, end), linear in arc length: two positive
             numbers ((1, 0.5) tapers a circle along a line into a frustum).
+        scale_knots: (fraction, scale) pairs the scale passes through between its start
+            and end, at fractions of the wire's length strictly increasing in (0, 1)
+            (None: none); see :func:`rmfsurf.wire_sweep`.
         method: how the wire's curves are swept: "ph-rmf" (default), "mobius" or "rrmf"
             (spines with exact rational RMFs: parameter lines orthogonal to rounding); see
             :func:`rmfsurf.wire_sweep`. Lines and arcs are exact whatever the method.
@@ -478,13 +482,15 @@ def sweep(wire: Any, profile: Any, *, solid: bool = True, corner: str = "round",
     """
     return sweep_with_report(wire, profile, solid=solid, corner=corner,
                              corner_radius=corner_radius, tolerance=tolerance, frame=frame,
-                             scale=scale, method=method, end_profile=end_profile)[0]
+                             scale=scale, scale_knots=scale_knots, method=method,
+                             end_profile=end_profile)[0]
 
 
 def sweep_with_report(wire: Any, profile: Any, *, solid: bool = True, corner: str = "round",
                       corner_radius: Optional[float] = None, tolerance: float = 1e-4,
                       twist: float = 0.0, closure_symmetry: int = 0,
                       frame: SweepFrame = "rmf", scale: Tuple[float, float] = (1.0, 1.0),
+                      scale_knots: Optional[Sequence[Tuple[float, float]]] = None,
                       method: str = "ph-rmf", end_profile: Any = None
                       ) -> Tuple[Any, SweepReport]:
     """:func:`sweep` with the wire sweep's `twist` (radians over the whole wire) and
@@ -507,7 +513,8 @@ def sweep_with_report(wire: Any, profile: Any, *, solid: bool = True, corner: st
                         corner_radius=corner_radius, tolerance=tolerance,
                         initial_normal=f2 if _named(frame, "rmf") else None, twist=twist,
                         closure_symmetry=closure_symmetry, frame=frame, scale=scale,
-                        method=method, end_profile=end_outer, end_holes=end_holes)
+                        scale_knots=scale_knots, method=method, end_profile=end_outer,
+                        end_holes=end_holes)
     return part_shape(result, min(tolerance, 1e-6)), result.report()
 
 

@@ -29,7 +29,7 @@ tangent × f2 (f3), are the 2-D profile of :func:`rmfsurf.wire_sweep`.
 from __future__ import annotations
 
 import io
-from typing import Any, List, Optional, Tuple
+from typing import Any, List, Optional, Sequence, Tuple
 
 import numpy as np
 
@@ -501,6 +501,7 @@ def _wrap_like(template: Any, raw: Any) -> Any:
 def sweep(path: Any, profile: Any, *, solid: bool = True, corner: str = "round",
           corner_radius: Optional[float] = None, tolerance: float = 1e-4,
           frame: SweepFrame = "rmf", scale: Tuple[float, float] = (1.0, 1.0),
+          scale_knots: Optional[Sequence[Tuple[float, float]]] = None,
           method: str = "ph-rmf", end_profile: Any = None) -> Any:
     """Sweeps `profile` along `path` (rmf_wire_sweep), by default with rotation-minimizing
     frames.
@@ -526,6 +527,9 @@ def sweep(path: Any, profile: Any, *, solid: bool = True, corner: str = "round",
             library chooses f2 there.
         scale: the profile's scale (start, end), linear in arc length: two positive
             numbers ((1, 0.5) tapers a circle along a line into a frustum).
+        scale_knots: (fraction, scale) pairs the scale passes through between its start
+            and end, at fractions of the path's length strictly increasing in (0, 1)
+            (None: none); see :func:`rmfsurf.wire_sweep`.
         method: how the path's curves are swept: "ph-rmf" (default), "mobius" or "rrmf"
             (spines with exact rational RMFs: parameter lines orthogonal to rounding); see
             :func:`rmfsurf.wire_sweep`. Lines and arcs are exact whatever the method.
@@ -556,6 +560,7 @@ def sweep(path: Any, profile: Any, *, solid: bool = True, corner: str = "round",
     result = wire_sweep(edges, outer, holes, solid=solid, corner=corner,
                         corner_radius=corner_radius, tolerance=tolerance,
                         initial_normal=f2 if _named(frame, "rmf") else None, frame=frame,
-                        scale=scale, method=method, end_profile=end_outer,
+                        scale=scale, scale_knots=scale_knots, method=method,
+                        end_profile=end_outer,
                         end_holes=end_holes)
     return _wrap_like(path, shape(result, min(tolerance, 1e-6)))

@@ -12,6 +12,7 @@ coordinates.
 from __future__ import annotations
 
 import os
+from collections.abc import Iterable
 from dataclasses import dataclass
 from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
@@ -117,6 +118,32 @@ def _scale(value: Any) -> Tuple[float, float]:
         if not s > 0:
             raise _core._refused("scale[%d]" % i, "%r must be positive" % s)
     return start, end
+
+
+def _scale_knots(value: Any) -> List[Tuple[float, float]]:
+    """The knots of the scale law: (fraction, scale) pairs, the fractions of the wire's
+    length strictly increasing in (0, 1), the scales finite and positive. None (or an empty
+    sequence) for none. TypeError for what is no sequence of pairs, ValueError for an item
+    that is no pair, InvalidInputError for a value out of range; each message names
+    `scale_knots` and the item (``scale_knots[1][0]``)."""
+    if value is None:
+        return []
+    if isinstance(value, (str, bytes, dict)) or not isinstance(value, Iterable):
+        raise TypeError("scale_knots: expected a sequence of (fraction, scale) pairs, got %s"
+                        % type(value).__name__)
+    knots: List[Tuple[float, float]] = []
+    last = 0.0
+    for k, item in enumerate(value):
+        name = "scale_knots[%d]" % k
+        at, scale = _core.pair(item, name)
+        if not (last < at < 1):
+            raise _core._refused(name + "[0]", "the fraction of the wire's length %r must lie "
+                                 "in (0, 1), after the knot before it (%r)" % (at, last))
+        if not scale > 0:
+            raise _core._refused(name + "[1]", "the scale %r must be positive" % scale)
+        knots.append((at, scale))
+        last = at
+    return knots
 
 
 def _wire_method(value: Any) -> int:
@@ -292,8 +319,9 @@ def wire_sweep(edges: Union[Edge, Sequence[Edge]], profile: Curve,
                join_tolerance: Optional[float] = None,
                initial_normal: Optional[ArrayLike] = None, twist: float = 0.0,
                closure_symmetry: int = 0, frame: SweepFrame = "rmf",
-               scale: Tuple[float, float] = (1.0, 1.0), method: str = "ph-rmf",
-               end_profile: Optional[Curve] = None,
+               scale: Tuple[float, float] = (1.0, 1.0),
+               scale_knots: Optional[Sequence[Tuple[float, float]]] = None,
+               method: str = "ph-rmf", end_profile: Optional[Curve] = None,
                end_holes: Union[Curve, Sequence[Curve]] = ()) -> Shape:
     """Sweeps a closed profile (with `holes`) along a connected wire of `edges`.
 
@@ -323,19 +351,25 @@ def wire_sweep(edges: Union[Edge, Sequence[Edge]], profile: Curve,
         scale: the profile's scale (start, end) about the spine, linear in arc length
             between: two finite positive numbers, equal on a closed wire ((1, 0.5) makes a
             circle along a line a frustum).
+        scale_knots: scales the law passes through between its start and end: (fraction,
+            scale) pairs, the fraction of the wire's length strictly increasing in (0, 1),
+            the scale finite and positive (None, the default: none). σ runs from scale[0]
+            through every knot to scale[1], linear in arc length between them
+            (``scale=(1, 1), scale_knots=[(0.25, 2), (0.75, 0.5)]`` makes a circle along a
+            line a chain of three frustums).
         method: how curve edges are swept: "ph-rmf" (the default: a PH cubic spline within
             `tolerance` and its rational approximation of the RMF), "mobius" (Möbius images
             of planar PH cubics) or "rrmf" (RRMF quintics) — spines with exact rational
             RMFs, so the parameter lines of their faces are orthogonal to rounding
             (``report().max_parameter_cosine`` ~1e-14, ~1e-7 with "ph-rmf"). Lines and
             arcs are exact whatever the method. "mobius" and "rrmf" take a constant
-            `scale` only.
+            `scale` only (no knots of other scales).
         end_profile: the section at the wire's end (None: the profile all along), in the
             profile's coordinates (x along f2, y along f3 of the frame, z = 0): the section
             blends linearly in arc length from `profile` to it, loop to loop and corner to
             corner (rmf_wire_sweep_between; a circle into a smaller concentric circle is
-            the frustum of `scale`). Open wires only, with a constant `scale`, both
-            profiles in the normal plane.
+            the frustum of `scale`). Open wires only, with a constant `scale` (and
+            `scale_knots`), both profiles in the normal plane.
         end_holes: the end profile's holes (or one curve), as many as `holes`, matched in
             order; only with `end_profile`.
     """
@@ -361,6 +395,12 @@ def wire_sweep(edges: Union[Edge, Sequence[Edge]], profile: Curve,
     if direction is not None:
         options.frame_direction = _core.vec3(direction, "frame")
     options.scale_start, options.scale_end = _scale(scale)
+    knots = _scale_knots(scale_knots)
+    # Kept alive until the call: the options borrow the doubles.
+    knot_doubles = ffi.new("double[]", [x for knot in knots for x in knot] or [0.0])
+    if knots:
+        options.scale_knots = knot_doubles
+        options.scale_knot_count = len(knots)
     options.method = _wire_method(method)
     out = ffi.new("RmfShape **")
     if end_profile is None:
@@ -374,5 +414,5 @@ def wire_sweep(edges: Union[Edge, Sequence[Edge]], profile: Curve,
         end_array = ffi.new("RmfCurve *[]", [h._ptr for h in end_list] or [ffi.NULL])
         call("rmf_wire_sweep_between", array, count, prof._ptr, hole_array, len(hole_list),
              end._ptr, end_array, len(end_list), options, out)
-    del keep
+    del keep, knot_doubles
     return Shape(_core.owned("shape", out[0]))

@@ -197,6 +197,27 @@ def test_a_bad_scale_names_the_argument_and_the_item(case, bad):
     refused(case[1], value, exception, argument(case[0]) + item)
 
 
+KNOTS = [
+    ("freecad.sweep(scale_knots)", lambda v: rfc.sweep(IN.wire, IN.ring, scale_knots=v)),
+    ("freecad.sweep_with_report(scale_knots)",
+     lambda v: rfc.sweep_with_report(IN.wire, IN.ring, scale_knots=v)),
+]
+BAD_KNOTS = [
+    (0.5, TypeError, ""), ([0.5, 2.0], TypeError, "[0]"), ([(0.5,)], ValueError, "[0]"),
+    ([("0.5", 2.0)], TypeError, "[0][0]"), ([(math.nan, 2.0)], rmfsurf.InvalidInputError, "[0][0]"),
+    ([(1.0, 2.0)], rmfsurf.InvalidInputError, "[0][0]"),
+    ([(0.5, 2.0), (0.25, 1.0)], rmfsurf.InvalidInputError, "[1][0]"),
+    ([(0.5, 0.0)], rmfsurf.InvalidInputError, "[0][1]"),
+    ([(0.5, math.nan)], rmfsurf.InvalidInputError, "[0][1]"),
+]
+
+
+@pytest.mark.parametrize("case, bad", parametrize(KNOTS, lambda c: BAD_KNOTS))
+def test_bad_scale_knots_name_the_argument_and_the_item(case, bad):
+    value, exception, item = bad
+    refused(case[1], value, exception, argument(case[0]) + item)
+
+
 FRAMES = [
     ("freecad.sweep(frame)", lambda v: rfc.sweep(IN.wire, IN.ring, frame=v)),
     ("freecad.sweep_with_report(frame)",

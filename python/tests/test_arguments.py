@@ -500,6 +500,40 @@ def test_a_scale_that_is_not_positive_is_invalid_input_naming_the_item(case, bad
 
 
 # ---------------------------------------------------------------------------------------
+# Knots of a scale law: a sequence of (fraction, scale) pairs, the fractions increasing in
+# (0, 1), the scales positive. Not a class of the annotations: (key, call), each with every
+# bad value (and the item the message must name after the argument).
+
+KNOTS = [
+    ("wire_sweep(scale_knots)",
+     lambda v: rmfsurf.wire_sweep(IN.edges, circle(1.0), scale_knots=v)),
+    ("ocp.sweep(scale_knots)", lambda v: IN.ocp.sweep(IN.route, IN.ring, scale_knots=v)),
+]
+BAD_KNOTS = [
+    (0.5, TypeError, ""), ("ab", TypeError, ""), ({0.5: 2.0}, TypeError, ""),
+    ([0.5, 2.0], TypeError, "[0]"), ([(0.5,)], ValueError, "[0]"),
+    ([(0.25, 2.0), (0.5, 1.0, 3.0)], ValueError, "[1]"), ([("0.5", 2.0)], TypeError, "[0][0]"),
+    ([(0.5, None)], TypeError, "[0][1]"), ([(10 ** 400, 2.0)], rmfsurf.InvalidInputError, "[0][0]"),
+    ([(math.nan, 2.0)], rmfsurf.InvalidInputError, "[0][0]"),
+    ([(1.0, 2.0)], rmfsurf.InvalidInputError, "[0][0]"),
+    ([(0.0, 2.0)], rmfsurf.InvalidInputError, "[0][0]"),
+    ([(-0.5, 2.0)], rmfsurf.InvalidInputError, "[0][0]"),
+    ([(0.5, 2.0), (0.25, 1.0)], rmfsurf.InvalidInputError, "[1][0]"),
+    ([(0.5, 2.0), (0.5, 1.0)], rmfsurf.InvalidInputError, "[1][0]"),
+    ([(0.5, 0.0)], rmfsurf.InvalidInputError, "[0][1]"),
+    ([(0.25, 2.0), (0.5, -1.0)], rmfsurf.InvalidInputError, "[1][1]"),
+    ([(0.5, math.nan)], rmfsurf.InvalidInputError, "[0][1]"),
+    ([(0.5, math.inf)], rmfsurf.InvalidInputError, "[0][1]"),
+]
+
+
+@pytest.mark.parametrize("case, bad", parametrize(KNOTS, lambda c: BAD_KNOTS))
+def test_bad_scale_knots_name_the_argument_and_the_item(case, bad):
+    value, exception, item = bad
+    refused(case[1], value, exception, argument(case[0]) + item)
+
+
+# ---------------------------------------------------------------------------------------
 # Frames of wire sweeps: "rmf", "frenet", ("fixed", (x, y, z)) or {"fixed": (x, y, z)}.
 # Not a class of the annotations: (key, call), each with every bad frame.
 

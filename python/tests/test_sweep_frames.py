@@ -1,7 +1,8 @@
 """The frame and the scale law of wire sweeps through the package and rmfsurf.ocp:
-`frame` ("rmf", "frenet", ("fixed", d) / {"fixed": d}) and `scale` (start, end) change
-nothing when left at their defaults; a circle scaled from 1 to 1/2 along a line is the
-frustum π L (r0² + r0 r1 + r1²)/3 by OpenCascade's integration; a small triangle swept
+`frame` ("rmf", "frenet", ("fixed", d) / {"fixed": d}), `scale` (start, end) and
+`scale_knots` change nothing when left at their defaults; a circle scaled from 1 to 1/2
+along a line is the frustum π L (r0² + r0 r1 + r1²)/3 by OpenCascade's integration, and
+through knots the chain of frustums; a small triangle swept
 along a helix with the Frenet frame has helices of the helix's axis and pitch for edges,
 and its solid cuts a thread into a rod. (The last two need the geometry of the frame and
 scale law; the bad arguments are in test_arguments.py.)"""
@@ -74,6 +75,46 @@ def test_a_circle_scaled_along_a_line_is_a_frustum(frame):
           % (frame, volume, exact, abs(volume - exact) / exact))
     assert is_valid(solid)
     assert abs(volume - exact) <= 1e-9 * exact
+
+
+def frustum_chain(r, length, start, knots, end):
+    """π r² Σ Lᵢ (aᵢ² + aᵢbᵢ + bᵢ²)/3: the volume of a circle of radius r scaled piecewise
+    linearly from `start` through the (fraction, scale) `knots` to `end` along a line."""
+    points = [(0.0, start)] + list(knots) + [(1.0, end)]
+    return sum(math.pi * r * r * length * (f1 - f0) * (a * a + a * b + b * b) / 3
+               for (f0, a), (f1, b) in zip(points, points[1:]))
+
+
+@pytest.mark.parametrize("scale, knots", [((1.0, 1.0), [(0.25, 2.0), (0.75, 0.5)]),
+                                          ((0.5, 1.5), [(0.4, 1.0)])])
+def test_a_circle_scaled_through_knots_along_a_line_is_a_chain_of_frustums(scale, knots):
+    r, length = 1.0, 3.0
+    path = bd.Line((0, 0, 0), (length, 0, 0))
+    profile = bd.Plane(origin=(0, 0, 0), z_dir=(1, 0, 0)) * bd.Circle(r)
+    solid = rocp.sweep(path, profile, scale=scale, scale_knots=knots)
+    exact = frustum_chain(r, length, scale[0], knots, scale[1])
+    volume = occ_volume(solid)
+    print("\nchain of frustums, scale %r through %r: volume %.15f vs %.15f (relative %.1e)"
+          % (scale, knots, volume, exact, abs(volume - exact) / exact))
+    assert is_valid(solid)
+    assert abs(volume - exact) <= 1e-9 * exact
+    # Without the knots the law is linear from start to end: another volume.
+    plain = frustum_chain(r, length, scale[0], [], scale[1])
+    assert abs(occ_volume(rocp.sweep(path, profile, scale=scale)) - plain) <= 1e-9 * plain
+    assert abs(plain - exact) > 0.1
+
+
+def test_knots_are_taken_as_any_sequence_of_pairs_and_none_is_no_knots():
+    profile = rmfsurf.circle(1.0)
+    plain = rmfsurf.wire_sweep(LINE, profile).occ_brep()
+    assert rmfsurf.wire_sweep(LINE, profile, scale_knots=None).occ_brep() == plain
+    assert rmfsurf.wire_sweep(LINE, profile, scale_knots=[]).occ_brep() == plain
+    listed = rmfsurf.wire_sweep(LINE, profile, scale_knots=[(0.25, 2.0), (0.75, 0.5)])
+    array = rmfsurf.wire_sweep(LINE, profile, scale_knots=np.array([[0.25, 2], [0.75, 0.5]]))
+    assert listed.occ_brep() == array.occ_brep() != plain
+    # With an exact-RMF method a knot that makes the law non-constant is refused, named.
+    with pytest.raises(rmfsurf.InvalidInputError, match=r"scale_knots.*method = 2"):
+        rmfsurf.wire_sweep(LINE, profile, scale_knots=[(0.5, 2.0)], method="mobius")
 
 
 PITCH, HEIGHT, RADIUS = 3.0, 6.0, 5.0

@@ -15,7 +15,8 @@ What is checked, each figure printed with its limit:
      (sub-element links), a circle along a sketch with a sharp corner (round, then miter):
      valid solids, volumes against Pappus's A·L; a sketch constraint changed, recomputed;
      twist, sheet; Frame (rmf, frenet, fixed with FrameDirection), ScaleStart/ScaleEnd
-     (a frustum's volume), EndProfile (the same frustum from two circles; older documents
+     (a frustum's volume), ScaleKnotFractions/ScaleKnotScales (a chain of frustums; older
+     documents get them empty), EndProfile (the same frustum from two circles; older documents
      get it empty); Method (ph-rmf, mobius, rrmf: a line and a B-spline, parameter
      lines orthogonal to rounding with the exact RMFs; older documents get the methods);
      the library's refusals mark the feature Invalid with a message;
@@ -367,6 +368,39 @@ def part_b(doc):
     doc.recompute()
     check_solid("a circle r 2 along a line of 30, ScaleEnd 0.5: the frustum", frustum.Shape,
                 PI * 30 * (4 + 2 + 1) / 3)
+    # Knots of the scale law: none by default (and on a document before them); ScaleEnd back
+    # at 1 through the knots (0.25, 2) and (0.75, 0.5): the chain of frustums of lengths 7.5,
+    # 15, 7.5 between the scales 1, 2, 0.5, 1; lists of different lengths, a fraction out of
+    # (0, 1) and a scale of 0 are refused naming the property; emptied: the cylinder.
+    require("ScaleKnotFractions %r, ScaleKnotScales %r of a new RmfSweep: empty"
+            % (frustum.ScaleKnotFractions, frustum.ScaleKnotScales),
+            list(frustum.ScaleKnotFractions) == [] and list(frustum.ScaleKnotScales) == [])
+    frustum.ScaleEnd = 1.0
+    frustum.ScaleKnotFractions = [0.25, 0.75]
+    frustum.ScaleKnotScales = [2.0, 0.5]
+    doc.recompute()
+    chain = [(0.0, 1.0), (0.25, 2.0), (0.75, 0.5), (1.0, 1.0)]
+    check_solid("a circle r 2 along a line of 30 through the knots 1, 2, 0.5, 1: the frustums",
+                frustum.Shape, sum(PI * 4 * 30 * (f1 - f0) * (a * a + a * b + b * b) / 3
+                                   for (f0, a), (f1, b) in zip(chain, chain[1:])))
+    for fractions, scales, word in (([0.25, 0.75], [2.0], "ScaleKnotScales"),
+                                    ([0.25, 1.0], [2.0, 0.5], "ScaleKnotFractions[1]"),
+                                    ([0.75, 0.25], [2.0, 0.5], "ScaleKnotFractions[1]"),
+                                    ([0.25, 0.75], [2.0, 0.0], "ScaleKnotScales[1]")):
+        frustum.ScaleKnotFractions, frustum.ScaleKnotScales = fractions, scales
+        doc.recompute()
+        message = frustum.getStatusString()
+        require("ScaleKnotFractions %r, ScaleKnotScales %r: Invalid, '%s'"
+                % (fractions, scales, message), not frustum.isValid() and word in message)
+    frustum.ScaleKnotFractions, frustum.ScaleKnotScales = [], []
+    for name in ("ScaleKnotFractions", "ScaleKnotScales"):
+        frustum.removeProperty(name)
+    frustum.Proxy.onDocumentRestored(frustum)
+    doc.recompute()
+    require("no ScaleKnotFractions/ScaleKnotScales (a document before them): added empty, valid",
+            "ScaleKnotScales" in frustum.PropertiesList and not frustum.ScaleKnotFractions
+            and frustum.isValid())
+    check_solid("no knots, ScaleEnd 1: the cylinder", frustum.Shape, PI * 4 * 30)
     # EndProfile: empty by default (and on a document before it); a circle of radius 1
     # drawn at the start as the end profile, ScaleEnd back at 1: the same frustum, by the
     # blend of the two profiles; a ring (a hole the profile has not) is refused naming
@@ -474,6 +508,12 @@ def part_b(doc):
     require("Method mobius with ScaleEnd 0.5: Invalid, '%s'" % message,
             not tube.isValid() and "Method" in message)
     tube.ScaleEnd = 1.0
+    tube.ScaleKnotFractions, tube.ScaleKnotScales = [0.5], [0.8]
+    doc.recompute()
+    message = tube.getStatusString()
+    require("Method mobius with a knot of scale 0.8: Invalid, '%s'" % message,
+            not tube.isValid() and "Method" in message and "ScaleKnotScales" in message)
+    tube.ScaleKnotFractions, tube.ScaleKnotScales = [], []
     doc.recompute()
     require("ScaleEnd 1 again: valid", tube.isValid())
     # An older document: Method offered ph-rmf only, or had no Method at all.
