@@ -601,7 +601,7 @@ static void test_guide_frame(void) {
         /* A guide along the first quarter of the wire only: the library's refusal, on the guide. */
         bad = line(vec3(2, 0, 0), vec3(2, 0, 1));
         REFUSED(rmf_wire_sweep(&bar, 1, profile, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
-                "options->guide_edges (RMF_FRAME_GUIDE): the guide does not run beside the wire");
+                "options->frame = RMF_FRAME_GUIDE, options->guide_edges: the guide does not run beside the wire");
     }
     rmf_curve_free(profile);
     rmf_curve_free(helix);

@@ -307,7 +307,7 @@ fn blame_method(e: Error, o: &RmfWireSweepOptions) -> Error {
         .strip_prefix("frame: ")
         .filter(|_| o.frame == RMF_FRAME_GUIDE)
     {
-        format!("options->guide_edges (RMF_FRAME_GUIDE): {rest}")
+        format!("options->frame = RMF_FRAME_GUIDE, options->guide_edges: {rest}")
     } else if let Some(rest) = e.reason().strip_prefix("scale: ") {
         format!(
             "options->scale_start = {}, options->scale_end = {} with options->method = {}: \
