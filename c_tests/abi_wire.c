@@ -162,7 +162,9 @@ static void test_options(void) {
     CHECK(o.frame == RMF_FRAME_RMF && o.frame_direction.x == 0 && o.frame_direction.y == 0 &&
               o.frame_direction.z == 0 && o.scale_start == 1 && o.scale_end == 1,
           "the RMF, no fixed direction, scale 1 at both ends");
-    CHECK(RMF_FRAME_RMF == 0 && RMF_FRAME_FRENET == 1 && RMF_FRAME_FIXED == 2, "frame codes fixed");
+    CHECK(RMF_FRAME_RMF == 0 && RMF_FRAME_FRENET == 1 && RMF_FRAME_FIXED == 2 && RMF_FRAME_GUIDE == 3,
+          "frame codes fixed");
+    CHECK(o.guide_edges == NULL && o.guide_edge_count == 0, "no guide");
     CHECK(o.method == RMF_SPINE_PH_RMF, "curve edges along the PH cubic spline's rational RMF by default");
     CHECK(o.scale_knots == NULL && o.scale_knot_count == 0, "no knots in the scale law by default");
     CHECK(RMF_SPINE_PH_RMF == 0 && RMF_SPINE_FRENET == 1 && RMF_SPINE_MOBIUS == 2 && RMF_SPINE_RRMF == 3,
@@ -430,6 +432,18 @@ static void test_options_of_an_older_header(void) {
     }
     rmf_shape_free(shape);
     shape = NULL;
+    /* The header of scale_knots, before the guide: its fields are not read. */
+    o.struct_size = offsetof(RmfWireSweepOptions, guide_edges);
+    o.scale_knot_count = 0;
+    o.guide_edges = (const RmfEdge *)(uintptr_t)0x5e5e, o.guide_edge_count = 7;
+    CHECK(o.struct_size == 152, "the struct of 0.2 before the guide is 152 bytes");
+    CHECK_STATUS(rmf_wire_sweep(e, 3, profile, NULL, 0, &o, &shape), RMF_OK, "");
+    if (shape) {
+        const double exact = PI * (20 + 2.5 * PI), v = volume(shape);
+        CHECK(fabs(v - exact) <= 1e-12 * exact, "the default sweep: the guide not read");
+    }
+    rmf_shape_free(shape);
+    shape = NULL;
     o.struct_size = offsetof(RmfWireSweepOptions, frame) - 8;
     REFUSED(rmf_wire_sweep(e, 3, profile, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
             "options->struct_size = 72 is no size of this struct (80 to");
@@ -561,6 +575,100 @@ static void test_spine_methods(void) {
     rmf_curve_free(cubic);
 }
 
+/* The helix (2 cos t, 2 sin t, pitch t / 2pi) as a callback; user points to the pitch. */
+static void guide_helix(double t, void *user, RmfVec3 *point, RmfVec3 *tangent) {
+    const double rise = *(const double *)user / (2 * PI);
+    *point = vec3(2 * cos(t), 2 * sin(t), rise * t);
+    *tangent = vec3(-2 * sin(t), 2 * cos(t), rise);
+}
+
+/* The guide frame (intended behaviour of the geometry): a triangle with a vertex at 0.5 on
+   f2, swept along the z axis (a line of 4) with the helix of radius 2 and pitch 2 about it
+   as the guide (a PH spline within 1e-8 of it, an RMF_EDGE_CURVE edge). f2 points at the
+   guide's crossing of each normal plane z = const, the helix's point at angle 2 pi z /
+   pitch: the vertex runs along the helix (0.5 cos, 0.5 sin, z) of the same pitch, measured
+   here on every swept face that starts at radius 0.5; the RMF of the line does not turn
+   (the vertex stays at (0.5, 0, z), off that helix). The prism's volume is the
+   triangle's area times the length either way. Then the guide's bad inputs: NULL, a count
+   of 0, a point that is not finite, each refused with *out untouched. */
+static void test_guide_frame(void) {
+    double pitch = 2, d = 0;
+    const RmfVec3 corners[4] = {vec3(0.5, 0, 0), vec3(-0.2, 0.3, 0), vec3(-0.2, -0.3, 0), vec3(0.5, 0, 0)};
+    const double k[6] = {0, 0, 1, 2, 3, 3};
+    RmfCurve *helix = NULL, *profile = nurbs(1, corners, NULL, 4, k);
+    RmfEdge bar = line(vec3(0, 0, 0), vec3(0, 0, 4));
+    RmfEdge guide = {RMF_EDGE_CURVE, {vec3(0, 0, 0), vec3(0, 0, 0), vec3(0, 0, 0)}, NULL};
+    double off[2] = {0, 0};
+    int tracked[2] = {0, 0};
+    CHECK_STATUS(rmf_ph_spline_approximate(NULL, guide_helix, &pitch, 0, 4 * PI, 1e-8, &helix, &d), RMF_OK, "");
+    guide.curve = helix;
+    for (int guided = 0; guided <= 1; ++guided) {
+        RmfWireSweepOptions o;
+        RmfShape *shape = NULL;
+        RmfSweepReport r;
+        rmf_wire_sweep_options_init(&o);
+        o.tolerance = 1e-6;
+        if (guided) o.frame = RMF_FRAME_GUIDE, o.guide_edges = &guide, o.guide_edge_count = 1;
+        CHECK_STATUS(rmf_wire_sweep(&bar, 1, profile, NULL, 0, &o, &shape), RMF_OK, "");
+        if (!shape) continue;
+        for (size_t f = 0; f < rmf_shape_face_count(shape); ++f) {
+            RmfShapeFace face;
+            RmfNurbsSurface view;
+            CHECK_STATUS(rmf_shape_face(shape, f, &face), RMF_OK, "");
+            if (face.kind != RMF_FACE_SWEPT) continue;
+            CHECK_STATUS(rmf_surface_nurbs(face.surface, &view), RMF_OK, "");
+            const double u0 = view.knots_u[0], v0 = view.knots_v[0], v1 = view.knots_v[view.knot_count_v - 1];
+            RmfVec3 d0[3][3];
+            ne_surface_derivatives(&view, u0, v0, d0);
+            if (fabs(hypot(d0[0][0].x, d0[0][0].y) - 0.5) > 1e-9) continue; /* another vertex */
+            ++tracked[guided];
+            for (int j = 0; j <= 400; ++j) {
+                RmfVec3 dd[3][3];
+                ne_surface_derivatives(&view, u0, v0 + (v1 - v0) * j / 400, dd);
+                const RmfVec3 p = dd[0][0];
+                const double a = 2 * PI * p.z / pitch;
+                off[guided] = fmax(off[guided], ne_norm(ne_sub(p, vec3(0.5 * cos(a), 0.5 * sin(a), p.z))));
+            }
+        }
+        const double v = volume(shape), exact = 0.5 * 0.6 * 0.7 * 4;
+        CHECK_STATUS(rmf_shape_report(shape, &r), RMF_OK, "");
+        printf("triangle along a line of 4, %s: the f2 vertex off the helix of radius 0.5, pitch 2 by %.1e "
+               "(%d faces), volume %.15f vs %.15f (relative %.1e), frame error %.1e\n",
+               guided ? "helical guide (RMF_FRAME_GUIDE)" : "the RMF", off[guided], tracked[guided], v, exact,
+               fabs(v - exact) / exact, r.frame_error);
+        CHECK(rmf_shape_is_solid(shape) == 1, "a closed solid");
+        CHECK(fabs(v - exact) <= 1e-12 * exact, "the prism's volume: the triangle's area times the length");
+        rmf_shape_free(shape);
+    }
+    CHECK(tracked[1] >= 1 && off[1] < 1e-6, "the f2 vertex on the helix of the guide's pitch (within 1e-6)");
+    CHECK(tracked[0] >= 1 && off[0] > 0.1, "the RMF of a line does not turn: the check can fail");
+    {
+        RmfWireSweepOptions o;
+        RmfEdge bad = line(vec3(2, 0, 0), vec3(2, 0, 4));
+        rmf_wire_sweep_options_init(&o);
+        o.frame = RMF_FRAME_GUIDE;
+        REFUSED(rmf_wire_sweep(&bar, 1, profile, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
+                "options->guide_edge_count = 0: RMF_FRAME_GUIDE needs the guide's edges in options->guide_edges");
+        o.guide_edge_count = 1;
+        REFUSED(rmf_wire_sweep(&bar, 1, profile, NULL, 0, &o, &out), RMF_ERROR_NULL_POINTER,
+                "options->guide_edges is NULL");
+        o.guide_edges = &bad;
+        o.guide_edge_count = 0;
+        REFUSED(rmf_wire_sweep(&bar, 1, profile, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
+                "options->guide_edges");
+        o.guide_edge_count = 1;
+        bad.points[1].z = nan_value();
+        REFUSED(rmf_wire_sweep(&bar, 1, profile, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
+                "options->guide_edges[0].points[1]");
+        /* A guide along the first quarter of the wire only: the library's refusal, on the guide. */
+        bad = line(vec3(2, 0, 0), vec3(2, 0, 1));
+        REFUSED(rmf_wire_sweep(&bar, 1, profile, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
+                "options->frame = RMF_FRAME_GUIDE, options->guide_edges: the guide does not run beside the wire");
+    }
+    rmf_curve_free(profile);
+    rmf_curve_free(helix);
+}
+
 static void test_bad_inputs(void) {
     RmfEdge e[3], bad[3];
     RmfCurve *profile = circle(1), *small = circle(0.1), *sq = square(0.5);
@@ -643,9 +751,9 @@ static void test_bad_inputs(void) {
         REFUSED(rmf_wire_sweep(poly, 3, tiny, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT, "struct_size");
         /* The frame and the scale law: each bad field named. */
         rmf_wire_sweep_options_init(&o);
-        o.frame = 3;
+        o.frame = 4;
         REFUSED(rmf_wire_sweep(poly, 3, tiny, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
-                "options->frame = 3 is no RmfSweepFrame");
+                "options->frame = 4 is no RmfSweepFrame");
         o.frame = RMF_FRAME_FIXED;
         REFUSED(rmf_wire_sweep(poly, 3, tiny, NULL, 0, &o, &out), RMF_ERROR_INVALID_INPUT,
                 "options->frame_direction");
@@ -817,5 +925,6 @@ int main(void) {
     test_scale_knots_frustums();
     test_spine_methods();
     test_sweep_between();
+    test_guide_frame();
     return rmf_check_exit_code("abi_wire");
 }

@@ -1665,6 +1665,33 @@ typedef uint32_t RmfCorner;
 typedef uint32_t RmfSweepFrame;
 
 /**
+ * What an RmfEdge is (values fixed, validated).
+ * \ingroup rmf_wire
+ */
+typedef uint32_t RmfEdgeKind;
+
+/**
+ * One edge of a wire, in either orientation. Unused points are ignored; `curve` is read
+ * only for RMF_EDGE_CURVE (borrowed for the call; the shape keeps nothing of it).
+ * \ingroup rmf_wire
+ */
+typedef struct RmfEdge {
+  /**
+   * RMF_EDGE_LINE, RMF_EDGE_ARC or RMF_EDGE_CURVE.
+   */
+  RmfEdgeKind kind;
+  /**
+   * A line's start and end (points[0], points[1]); an arc's start, a point on it and
+   * its end.
+   */
+  struct RmfVec3 points[3];
+  /**
+   * RMF_EDGE_CURVE: the curve, on its whole domain; ignored otherwise.
+   */
+  const struct RmfCurve *curve;
+} RmfEdge;
+
+/**
  * Options of rmf_wire_sweep. Initialise with rmf_wire_sweep_options_init, then change
  * fields; the struct only grows at the end.
  * \ingroup rmf_wire
@@ -1716,9 +1743,9 @@ typedef struct RmfWireSweepOptions {
    */
   uint32_t solid;
   /**
-   * Added in 0.2 (after solid): RMF_FRAME_RMF (default), RMF_FRAME_FRENET or
-   * RMF_FRAME_FIXED. A frame other than RMF_FRAME_RMF sets f2 itself: initial_normal
-   * must then be zero.
+   * Added in 0.2 (after solid): RMF_FRAME_RMF (default), RMF_FRAME_FRENET,
+   * RMF_FRAME_FIXED or RMF_FRAME_GUIDE. A frame other than RMF_FRAME_RMF sets f2
+   * itself: initial_normal must then be zero.
    */
   RmfSweepFrame frame;
   /**
@@ -1760,34 +1787,17 @@ typedef struct RmfWireSweepOptions {
    * (default 0).
    */
   size_t scale_knot_count;
+  /**
+   * Added in 0.2 (after scale_knot_count): RMF_FRAME_GUIDE: guide_edge_count edges of the guide
+   * curve (as `edges` of rmf_wire_sweep: lines, arcs and curves, in any order and
+   * orientation; curves borrowed for the call); ignored otherwise. Default NULL.
+   */
+  const struct RmfEdge *guide_edges;
+  /**
+   * RMF_FRAME_GUIDE: the number of guide_edges (≥ 1); ignored otherwise. Default 0.
+   */
+  size_t guide_edge_count;
 } RmfWireSweepOptions;
-
-/**
- * What an RmfEdge is (values fixed, validated).
- * \ingroup rmf_wire
- */
-typedef uint32_t RmfEdgeKind;
-
-/**
- * One edge of a wire, in either orientation. Unused points are ignored; `curve` is read
- * only for RMF_EDGE_CURVE (borrowed for the call; the shape keeps nothing of it).
- * \ingroup rmf_wire
- */
-typedef struct RmfEdge {
-  /**
-   * RMF_EDGE_LINE, RMF_EDGE_ARC or RMF_EDGE_CURVE.
-   */
-  RmfEdgeKind kind;
-  /**
-   * A line's start and end (points[0], points[1]); an arc's start, a point on it and
-   * its end.
-   */
-  struct RmfVec3 points[3];
-  /**
-   * RMF_EDGE_CURVE: the curve, on its whole domain; ignored otherwise.
-   */
-  const struct RmfCurve *curve;
-} RmfEdge;
 
 /**
  * A lateral face: an exact rational RmfSurface (u along the profile edge, v along the
@@ -1949,6 +1959,15 @@ typedef struct RmfEdge {
  * \ingroup rmf_wire
  */
 #define RMF_FRAME_FIXED 2
+
+/**
+ * f2 towards the guide curve of guide_edges, where it crosses the wire's normal plane (the
+ * crossing nearest the wire): the profile turns to follow a second rail (OpenCascade's
+ * auxiliary mode). Refused where the guide does not cross a normal plane, or touches the
+ * wire.
+ * \ingroup rmf_wire
+ */
+#define RMF_FRAME_GUIDE 3
 
 #ifdef __cplusplus
 extern "C" {
@@ -4707,8 +4726,9 @@ RmfStatus rmf_wire_sweep_options_init(struct RmfWireSweepOptions *options);
  *   RMF (Mäurer & Jüttler, eqs. (29), (36)–(42)). One RMF runs along the whole wire: it
  *   is carried across every joint without a turn about the tangent;
  * - options->frame turns the profile about the tangent by another law than the RMF: the
- *   Frenet frame (RMF_FRAME_FRENET: a thread along a helix) or a fixed direction
- *   (RMF_FRAME_FIXED with options->frame_direction); options->scale_start and
+ *   Frenet frame (RMF_FRAME_FRENET: a thread along a helix), a fixed direction
+ *   (RMF_FRAME_FIXED with options->frame_direction) or a guide curve, a second rail f2
+ *   points at (RMF_FRAME_GUIDE with options->guide_edges); options->scale_start and
  *   options->scale_end scale the profile about the spine, linearly in arc length (a
  *   frustum along a line), through the knots at options->scale_knots if any (piecewise
  *   linear: a chain of frustums);

@@ -77,6 +77,12 @@ pub const RMF_FRAME_FRENET: RmfSweepFrame = 1;
 /// is along the tangent.
 /// \ingroup rmf_wire
 pub const RMF_FRAME_FIXED: RmfSweepFrame = 2;
+/// f2 towards the guide curve of guide_edges, where it crosses the wire's normal plane (the
+/// crossing nearest the wire): the profile turns to follow a second rail (OpenCascade's
+/// auxiliary mode). Refused where the guide does not cross a normal plane, or touches the
+/// wire.
+/// \ingroup rmf_wire
+pub const RMF_FRAME_GUIDE: RmfSweepFrame = 3;
 
 /// Options of rmf_wire_sweep. Initialise with rmf_wire_sweep_options_init, then change
 /// fields; the struct only grows at the end.
@@ -111,9 +117,9 @@ pub struct RmfWireSweepOptions {
     pub closure_symmetry: u32,
     /// 1 (default): a closed solid (refuses open profiles); 0: the lateral faces only.
     pub solid: u32,
-    /// Added in 0.2 (after solid): RMF_FRAME_RMF (default), RMF_FRAME_FRENET or
-    /// RMF_FRAME_FIXED. A frame other than RMF_FRAME_RMF sets f2 itself: initial_normal
-    /// must then be zero.
+    /// Added in 0.2 (after solid): RMF_FRAME_RMF (default), RMF_FRAME_FRENET,
+    /// RMF_FRAME_FIXED or RMF_FRAME_GUIDE. A frame other than RMF_FRAME_RMF sets f2
+    /// itself: initial_normal must then be zero.
     pub frame: RmfSweepFrame,
     /// RMF_FRAME_FIXED: the direction f2 follows (finite, not zero, never along the
     /// tangent); ignored otherwise. Default (0, 0, 0).
@@ -142,6 +148,12 @@ pub struct RmfWireSweepOptions {
     /// Added in 0.2 (with scale_knots): the number of knots, pairs of doubles at scale_knots
     /// (default 0).
     pub scale_knot_count: usize,
+    /// Added in 0.2 (after scale_knot_count): RMF_FRAME_GUIDE: guide_edge_count edges of the guide
+    /// curve (as `edges` of rmf_wire_sweep: lines, arcs and curves, in any order and
+    /// orientation; curves borrowed for the call); ignored otherwise. Default NULL.
+    pub guide_edges: *const RmfEdge,
+    /// RMF_FRAME_GUIDE: the number of guide_edges (≥ 1); ignored otherwise. Default 0.
+    pub guide_edge_count: usize,
 }
 
 impl Default for RmfWireSweepOptions {
@@ -164,13 +176,15 @@ impl Default for RmfWireSweepOptions {
             method: RMF_SPINE_PH_RMF,
             scale_knots: std::ptr::null(),
             scale_knot_count: 0,
+            guide_edges: std::ptr::null(),
+            guide_edge_count: 0,
         }
     }
 }
 
 // SAFETY: #[repr(C)], first field size_t, every field a number, a u32 code or a raw pointer
-// (any bit pattern is a value: codes validated on use, the pointer checked like an argument
-// before it is read).
+// (any bit pattern is a value: codes validated on use, the pointers checked like arguments
+// before they are read; guide_edges read only with RMF_FRAME_GUIDE, through `slice`).
 unsafe impl OptionsStruct for RmfWireSweepOptions {
     /// The struct up to `solid`, before `frame` was added: a caller built against that
     /// header (or the one before `method`, or before `scale_knots`) gets the defaults of the
@@ -216,10 +230,12 @@ unsafe fn scale_knots(o: &RmfWireSweepOptions) -> Result<Vec<(f64, f64)>, FfiErr
     Ok(doubles.chunks_exact(2).map(|k| (k[0], k[1])).collect())
 }
 
-/// The options as the geometry takes them (validated).
+/// The options as the geometry takes them (validated; the guide's edges read and checked).
 ///
 /// # Safety
-/// `o.scale_knots` must be NULL or point to `2 * o.scale_knot_count` doubles.
+/// `o.scale_knots` must be NULL or point to `2 * o.scale_knot_count` doubles; with
+/// RMF_FRAME_GUIDE, `o.guide_edges` must be NULL or point to `o.guide_edge_count` edges,
+/// each curve NULL or a valid handle.
 unsafe fn wire_options(o: &RmfWireSweepOptions) -> Result<WireSweep, FfiError> {
     let corner = match o.corner {
         RMF_CORNER_ROUND if o.corner_radius == 0.0 => Corner::Round(None),
@@ -255,10 +271,21 @@ unsafe fn wire_options(o: &RmfWireSweepOptions) -> Result<WireSweep, FfiError> {
             }
             SweepFrame::Fixed(d)
         }
+        RMF_FRAME_GUIDE => {
+            if o.guide_edge_count == 0 {
+                return invalid_arg(
+                    "options->guide_edge_count = 0: RMF_FRAME_GUIDE needs the guide's edges \
+                     in options->guide_edges (at least one)"
+                        .into(),
+                );
+            }
+            let guide = slice(o.guide_edges, o.guide_edge_count, "options->guide_edges")?;
+            SweepFrame::Guide(wire_edges(guide, EdgeArray::Guide)?)
+        }
         other => {
             return invalid_arg(format!(
                 "options->frame = {other} is no RmfSweepFrame (RMF_FRAME_RMF = 0, \
-                 RMF_FRAME_FRENET = 1, RMF_FRAME_FIXED = 2)"
+                 RMF_FRAME_FRENET = 1, RMF_FRAME_FIXED = 2, RMF_FRAME_GUIDE = 3)"
             ))
         }
     };
@@ -306,12 +333,18 @@ unsafe fn wire_options(o: &RmfWireSweepOptions) -> Result<WireSweep, FfiError> {
 }
 
 /// The geometry's refusals of the method (`method: …`), of a scale law with it (`scale:
-/// …`) and of a knot of the law (`scale_knots[k]: …`, put on the double at
-/// options->scale_knots that is wrong) with the fields of the options named; `knots` as
-/// read from options->scale_knots.
+/// …`), of a knot of the law (`scale_knots[k]: …`, put on the double at
+/// options->scale_knots that is wrong) and of a guide (`frame: …` with RMF_FRAME_GUIDE) with
+/// the fields of the options named; `knots` as read from options->scale_knots.
 fn blame_method(e: Error, o: &RmfWireSweepOptions, knots: &[(f64, f64)]) -> Error {
     let fields = if let Some(rest) = e.reason().strip_prefix("method: ") {
         format!("options->method = {}: {rest}", o.method)
+    } else if let Some(rest) = e
+        .reason()
+        .strip_prefix("frame: ")
+        .filter(|_| o.frame == RMF_FRAME_GUIDE)
+    {
+        format!("options->frame = RMF_FRAME_GUIDE, options->guide_edges: {rest}")
     } else if let Some(rest) = e.reason().strip_prefix("scale: ") {
         let knots = match knots.len() {
             0 => String::new(),
@@ -354,11 +387,38 @@ fn knot_refusal(reason: &str) -> Option<(usize, &str)> {
     Some((k.parse().ok()?, rest))
 }
 
-/// The edges as the geometry takes them (kinds and points checked, curves borrowed).
+/// Which array of edges is read: the wire's (`edges`) or the guide's
+/// (`options->guide_edges`), as the messages name it.
+#[derive(Clone, Copy)]
+enum EdgeArray {
+    Wire,
+    Guide,
+}
+
+impl EdgeArray {
+    fn name(self) -> &'static str {
+        match self {
+            EdgeArray::Wire => "edges",
+            EdgeArray::Guide => "options->guide_edges",
+        }
+    }
+
+    /// The name of a curve handle in the array (for `reference`).
+    fn curve(self) -> &'static str {
+        match self {
+            EdgeArray::Wire => "edges[].curve",
+            EdgeArray::Guide => "options->guide_edges[].curve",
+        }
+    }
+}
+
+/// The edges as the geometry takes them (kinds and points checked, curves borrowed);
+/// messages name `array`.
 ///
 /// # Safety
 /// Every `curve` of a curve edge must be NULL or a valid handle.
-unsafe fn wire_edges(edges: &[RmfEdge]) -> Result<Vec<Edge>, FfiError> {
+unsafe fn wire_edges(edges: &[RmfEdge], array: EdgeArray) -> Result<Vec<Edge>, FfiError> {
+    let name = array.name();
     edges
         .iter()
         .enumerate()
@@ -366,7 +426,7 @@ unsafe fn wire_edges(edges: &[RmfEdge]) -> Result<Vec<Edge>, FfiError> {
             let point = |i: usize| -> Result<DVec3, FfiError> {
                 let p: DVec3 = e.points[i].into();
                 if !p.is_finite() {
-                    return invalid_arg(format!("edges[{k}].points[{i}] = {p} is not finite"));
+                    return invalid_arg(format!("{name}[{k}].points[{i}] = {p} is not finite"));
                 }
                 Ok(p)
             };
@@ -383,19 +443,19 @@ unsafe fn wire_edges(edges: &[RmfEdge]) -> Result<Vec<Edge>, FfiError> {
                 RMF_EDGE_CURVE => {
                     if e.curve.is_null() {
                         return invalid_arg(format!(
-                            "edges[{k}].curve is NULL (an RMF_EDGE_CURVE edge)"
+                            "{name}[{k}].curve is NULL (an RMF_EDGE_CURVE edge)"
                         ));
                     }
                     Edge::Curve(
-                        reference(e.curve, "edges[].curve")?
-                            .rational(&format!("edges[{k}].curve"))?
+                        reference(e.curve, array.curve())?
+                            .rational(&format!("{name}[{k}].curve"))?
                             .as_ref()
                             .clone(),
                     )
                 }
                 other => {
                     return invalid_arg(format!(
-                        "edges[{k}].kind = {other} is no RmfEdgeKind (LINE 0, ARC 1, CURVE 2)"
+                        "{name}[{k}].kind = {other} is no RmfEdgeKind (LINE 0, ARC 1, CURVE 2)"
                     ))
                 }
             })
@@ -415,8 +475,9 @@ unsafe fn wire_edges(edges: &[RmfEdge]) -> Result<Vec<Edge>, FfiError> {
 ///   RMF (Mäurer & Jüttler, eqs. (29), (36)–(42)). One RMF runs along the whole wire: it
 ///   is carried across every joint without a turn about the tangent;
 /// - options->frame turns the profile about the tangent by another law than the RMF: the
-///   Frenet frame (RMF_FRAME_FRENET: a thread along a helix) or a fixed direction
-///   (RMF_FRAME_FIXED with options->frame_direction); options->scale_start and
+///   Frenet frame (RMF_FRAME_FRENET: a thread along a helix), a fixed direction
+///   (RMF_FRAME_FIXED with options->frame_direction) or a guide curve, a second rail f2
+///   points at (RMF_FRAME_GUIDE with options->guide_edges); options->scale_start and
 ///   options->scale_end scale the profile about the spine, linearly in arc length (a
 ///   frustum along a line), through the knots at options->scale_knots if any (piecewise
 ///   linear: a chain of frustums);
@@ -475,7 +536,7 @@ pub unsafe extern "C" fn rmf_wire_sweep(
         let out = out_ptr(out, "out")?;
         let edges = checked_edges(edges, edge_count)?;
         face_bound("hole_count", hole_count)?;
-        let edges = wire_edges(edges)?;
+        let edges = wire_edges(edges, EdgeArray::Wire)?;
         let profile = reference(profile, "profile")?;
         let holes = loops(holes, hole_count, "holes")?;
         let raw = read_options(options, "options")?;
@@ -527,7 +588,7 @@ pub unsafe extern "C" fn rmf_wire_sweep_between(
         let edges = checked_edges(edges, edge_count)?;
         face_bound("hole_count", hole_count)?;
         face_bound("end_hole_count", end_hole_count)?;
-        let edges = wire_edges(edges)?;
+        let edges = wire_edges(edges, EdgeArray::Wire)?;
         let profile = reference(profile, "profile")?;
         let holes = loops(holes, hole_count, "holes")?;
         let end_profile = reference(end_profile, "end_profile")?;

@@ -1703,6 +1703,44 @@ fn rows() -> Vec<Row> {
             },
         },
         Row {
+            what: "guide frame without guide edges",
+            function: "rmf_wire_sweep",
+            expected: INVALID,
+            names: "options->guide_edge_count = 0: RMF_FRAME_GUIDE needs the guide's edges in \
+                    options->guide_edges",
+            call: |_| {
+                wire_sweep(&pipe_route(), circle(1.0), &[], |o| {
+                    o.frame = RMF_FRAME_GUIDE
+                })
+            },
+        },
+        Row {
+            what: "guide frame with NULL guide edges",
+            function: "rmf_wire_sweep",
+            expected: NULL,
+            names: "options->guide_edges is NULL",
+            call: |_| {
+                wire_sweep(&pipe_route(), circle(1.0), &[], |o| {
+                    o.frame = RMF_FRAME_GUIDE;
+                    o.guide_edge_count = 1;
+                })
+            },
+        },
+        Row {
+            what: "guide edge not finite",
+            function: "rmf_wire_sweep",
+            expected: INVALID,
+            names: "options->guide_edges[0].points[1] = [0, NaN, 10] is not finite",
+            call: |_| {
+                let guide = [line(v(0., 3., 0.), v(0., NAN, 10.))];
+                wire_sweep(&pipe_route(), circle(1.0), &[], |o| {
+                    o.frame = RMF_FRAME_GUIDE;
+                    o.guide_edges = guide.as_ptr();
+                    o.guide_edge_count = guide.len();
+                })
+            },
+        },
+        Row {
             what: "initial normal with a Frenet frame",
             function: "rmf_wire_sweep",
             expected: INVALID,
@@ -2260,6 +2298,61 @@ fn wire_sweep_method_defaults_to_ph_rmf() {
             last_error()
         );
     }
+}
+
+/// A guide frame's bad guides (NULL, a count of 0, a point that is not finite) leave the
+/// out-pointer as it was; a good guide on the same call writes it (the check can fail).
+#[test]
+fn bad_guides_write_nothing() {
+    let sentinel = 0x5e5e_usize as *mut RmfShape;
+    let edges = [line(v(0., 0., 0.), v(0., 0., 4.))];
+    let good = [line(v(2., 0., 0.), v(2., 0., 4.))];
+    let not_finite = [line(v(2., 0., 0.), v(2., NAN, 4.))];
+    let cases: [(*const RmfEdge, usize, RmfStatus, &str); 4] = [
+        (null(), 1, NULL, "options->guide_edges is NULL"),
+        (good.as_ptr(), 0, INVALID, "options->guide_edge_count = 0"),
+        (null(), 0, INVALID, "options->guide_edges"),
+        (
+            not_finite.as_ptr(),
+            1,
+            INVALID,
+            "options->guide_edges[0].points[1] = [2, NaN, 4] is not finite",
+        ),
+    ];
+    let profile = circle(0.5);
+    for (guide, count, expected, names) in
+        cases
+            .into_iter()
+            .chain([(good.as_ptr(), 1, RmfStatus::RmfOk, "")])
+    {
+        let mut options = RmfWireSweepOptions::default();
+        unsafe { rmf_wire_sweep_options_init(&mut options) };
+        options.frame = RMF_FRAME_GUIDE;
+        options.guide_edges = guide;
+        options.guide_edge_count = count;
+        let mut out = sentinel;
+        let status = unsafe {
+            rmf_wire_sweep(
+                edges.as_ptr(),
+                edges.len(),
+                profile,
+                null(),
+                0,
+                &options,
+                &mut out,
+            )
+        };
+        let message = last_error();
+        assert_eq!(status, expected, "{names}: {message}");
+        if expected == RmfStatus::RmfOk {
+            assert!(!out.is_null() && out != sentinel, "a shape is written");
+            unsafe { rmf_shape_free(out) };
+        } else {
+            assert!(message.contains(names), "{message}");
+            assert_eq!(out, sentinel, "{names}: nothing written");
+        }
+    }
+    unsafe { rmf_curve_free(profile) };
 }
 
 #[test]

@@ -3,14 +3,15 @@
 //! development. Failures of the geometry are reported at the input field they come from.
 
 use crate::job::{
-    ConeJob, Developable as Input, SheetInput, SheetJob, Spine, SweepJob, WireEdge, WireJob,
+    ConeJob, Developable as Input, SheetInput, SheetJob, Spine, SweepJob, WireEdge, WireFrame,
+    WireJob,
 };
 use crate::json::InputError;
 use rmfsurf::glam::DVec3;
 use rmfsurf::{
     approximate_developable, check_g1, framed_spine, framed_spine_through, sweep, sweep_wire,
     sweep_wire_between, ConeSpline, Developable, Edge, FlatPattern, FramedCurve, PiecewiseCurve,
-    PiecewiseSurface, Rule, RuledSurface, Shape, SheetPart, TangentSurface, WireSweep,
+    PiecewiseSurface, Rule, RuledSurface, Shape, SheetPart, SweepFrame, TangentSurface, WireSweep,
 };
 
 /// A swept surface with its spine and frames.
@@ -81,32 +82,11 @@ pub fn run_sweep(job: &SweepJob) -> Result<SweepOutcome, InputError> {
 /// The wire sweep: the shape, or the failure at the field its message names (an edge or
 /// a joint of the wire, the profile, a hole, the corner).
 pub fn run_wire(job: &WireJob) -> Result<Shape, InputError> {
-    let edges = job
-        .edges
-        .iter()
-        .enumerate()
-        .map(|(k, e)| {
-            Ok(match e {
-                WireEdge::Line { from, to } => Edge::Line {
-                    from: *from,
-                    to: *to,
-                },
-                WireEdge::Arc {
-                    start,
-                    through,
-                    end,
-                } => Edge::Arc {
-                    start: *start,
-                    through: *through,
-                    end: *end,
-                },
-                WireEdge::Nurbs(n) => Edge::Curve(n.to_piecewise().map_err(|e| InputError {
-                    path: format!("sweep.spine.wire[{k}].nurbs"),
-                    message: e.message(),
-                })?),
-            })
-        })
-        .collect::<Result<Vec<_>, InputError>>()?;
+    let edges = library_edges(&job.edges, "sweep.spine.wire")?;
+    let frame = match &job.frame {
+        WireFrame::Law(law) => law.clone(),
+        WireFrame::Guide(guide) => SweepFrame::Guide(library_edges(guide, "sweep.frame.guide")?),
+    };
     let curve = |n: &rmfsurf::NurbsCurve, path: String| {
         n.to_piecewise().map_err(|e| InputError {
             path,
@@ -128,7 +108,7 @@ pub fn run_wire(job: &WireJob) -> Result<Shape, InputError> {
         twist: job.twist,
         closure_symmetry: job.closure_symmetry,
         solid: job.solid,
-        frame: job.frame.clone(),
+        frame,
         scale: job.scale,
         scale_knots: job.scale_knots.clone(),
         method: job.method,
@@ -159,6 +139,36 @@ pub fn run_wire(job: &WireJob) -> Result<Shape, InputError> {
         }
         InputError { path, message }
     })
+}
+
+/// The edges of a wire (or of a guide) as the library takes them; a NURBS edge that is
+/// not a valid curve is reported at `path[k].nurbs`.
+fn library_edges(edges: &[WireEdge], path: &str) -> Result<Vec<Edge>, InputError> {
+    edges
+        .iter()
+        .enumerate()
+        .map(|(k, e)| {
+            Ok(match e {
+                WireEdge::Line { from, to } => Edge::Line {
+                    from: *from,
+                    to: *to,
+                },
+                WireEdge::Arc {
+                    start,
+                    through,
+                    end,
+                } => Edge::Arc {
+                    start: *start,
+                    through: *through,
+                    end: *end,
+                },
+                WireEdge::Nurbs(n) => Edge::Curve(n.to_piecewise().map_err(|e| InputError {
+                    path: format!("{path}[{k}].nurbs"),
+                    message: e.message(),
+                })?),
+            })
+        })
+        .collect()
 }
 
 /// The input field a wire sweep's message is about.

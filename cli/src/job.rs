@@ -71,6 +71,14 @@ pub enum WireEdge {
     Nurbs(NurbsCurve),
 }
 
+/// How a wire sweep's profile turns about the tangent: a law of the library's, or a guide
+/// curve of edges of the wire's kinds (`{"guide": [...]}`).
+#[derive(Clone, Debug)]
+pub enum WireFrame {
+    Law(rmfsurf::SweepFrame),
+    Guide(Vec<WireEdge>),
+}
+
 /// A sweep along a wire of lines, arcs and NURBS edges (`"spine": {"wire": [...]}`).
 #[derive(Clone, Debug)]
 pub struct WireJob {
@@ -86,7 +94,7 @@ pub struct WireJob {
     pub holes: Vec<NurbsCurve>,
     pub solid: bool,
     /// How the profile turns about the tangent (default the RMF).
-    pub frame: rmfsurf::SweepFrame,
+    pub frame: WireFrame,
     /// The profile's scale at the wire's start and end (default `[1, 1]`).
     pub scale: [f64; 2],
     /// Knots of the scale law, (fraction of the wire's length, scale) (default none).
@@ -291,6 +299,25 @@ fn wire_job(sweep: schema::Sweep) -> InputResult<WireJob> {
         .end_profile
         .map(|p| profile_with_holes(p, "sweep.end_profile"))
         .transpose()?;
+    let frame = match sweep.frame {
+        None => WireFrame::Law(rmfsurf::WireSweep::default().frame),
+        Some(schema::FrameName::Law(law)) => WireFrame::Law(law),
+        Some(schema::FrameName::Guide(guide)) => {
+            if guide.is_empty() {
+                return Err(InputError::at(
+                    "sweep.frame.guide",
+                    "needs at least one edge",
+                ));
+            }
+            WireFrame::Guide(
+                guide
+                    .into_iter()
+                    .enumerate()
+                    .map(|(k, e)| wire_edge(e, &format!("sweep.frame.guide[{k}]")))
+                    .collect::<InputResult<Vec<_>>>()?,
+            )
+        }
+    };
     let defaults = rmfsurf::WireSweep::default();
     Ok(WireJob {
         edges,
@@ -307,7 +334,7 @@ fn wire_job(sweep: schema::Sweep) -> InputResult<WireJob> {
         profile,
         holes,
         solid: sweep.solid.map_or(defaults.solid, |s| s.0),
-        frame: sweep.frame.map_or(defaults.frame, |f| f.0),
+        frame,
         scale: sweep.scale.map_or(defaults.scale, |s| s.0),
         scale_knots: sweep
             .scale_knots

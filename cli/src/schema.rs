@@ -453,47 +453,65 @@ impl<'de> Deserialize<'de> for CornerName {
     }
 }
 
-/// `"rmf"`, `"frenet"` or `{"fixed": [x, y, z]}` (a direction, not zero).
-#[derive(Clone, Debug)]
-pub struct FrameName(pub SweepFrame);
+/// `"rmf"`, `"frenet"`, `{"fixed": [x, y, z]}` (a direction, not zero) or `{"guide":
+/// [edges]}` (edges of the form of `"wire"`'s, turned into the library's by `job`).
+#[derive(Debug)]
+pub enum FrameName {
+    /// A frame law that needs no curve: the RMF, Frenet, a fixed direction.
+    Law(SweepFrame),
+    /// The guide curve's edges as given.
+    Guide(Vec<Edge>),
+}
+
+const FRAME_FORMS: &str = "rmf, frenet, {\"fixed\": [x, y, z]} or {\"guide\": [edges]}";
 
 struct FrameVisitor;
 
 impl<'de> Visitor<'de> for FrameVisitor {
-    type Value = SweepFrame;
+    type Value = FrameName;
 
     fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-        f.write_str("\"rmf\", \"frenet\" or {\"fixed\": [x, y, z]}")
+        f.write_str("\"rmf\", \"frenet\", {\"fixed\": [x, y, z]} or {\"guide\": [edges]}")
     }
 
-    fn visit_str<E: de::Error>(self, name: &str) -> Result<SweepFrame, E> {
+    fn visit_str<E: de::Error>(self, name: &str) -> Result<FrameName, E> {
         match name {
-            "rmf" => Ok(SweepFrame::Rmf),
-            "frenet" => Ok(SweepFrame::Frenet),
+            "rmf" => Ok(FrameName::Law(SweepFrame::Rmf)),
+            "frenet" => Ok(FrameName::Law(SweepFrame::Frenet)),
             other => Err(E::custom(format!(
-                "unknown frame \"{other}\"; expected rmf, frenet or {{\"fixed\": [x, y, z]}}"
+                "unknown frame \"{other}\"; expected {FRAME_FORMS}"
             ))),
         }
     }
 
-    fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<SweepFrame, A::Error> {
+    fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<FrameName, A::Error> {
         let mut frame = None;
+        let mut given: Option<String> = None;
         while let Some(key) = map.next_key::<String>()? {
-            if key != "fixed" {
-                return Err(de::Error::unknown_field(&key, &["fixed"]));
+            match &given {
+                Some(first) if *first == key => {
+                    return Err(de::Error::custom(format!("duplicate field `{key}`")));
+                }
+                Some(first) => {
+                    return Err(de::Error::custom(format!(
+                        "{key} beside {first}: give one of fixed, guide"
+                    )));
+                }
+                None => given = Some(key.clone()),
             }
-            if frame.is_some() {
-                return Err(de::Error::duplicate_field("fixed"));
-            }
-            frame = Some(SweepFrame::Fixed(map.next_value::<FixedDirection>()?.0));
+            frame = Some(match key.as_str() {
+                "fixed" => FrameName::Law(SweepFrame::Fixed(map.next_value::<FixedDirection>()?.0)),
+                "guide" => FrameName::Guide(map.next_value::<Bounded<Edge, Edges>>()?.into_vec()),
+                _ => return Err(de::Error::unknown_field(&key, &["fixed", "guide"])),
+            });
         }
-        frame.ok_or_else(|| de::Error::custom("needs one of fixed"))
+        frame.ok_or_else(|| de::Error::custom("needs one of fixed, guide"))
     }
 }
 
 impl<'de> Deserialize<'de> for FrameName {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        d.deserialize_any(FrameVisitor).map(FrameName)
+        d.deserialize_any(FrameVisitor)
     }
 }
 

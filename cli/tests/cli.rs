@@ -501,7 +501,8 @@ fn wire_sweep_frames_and_scales_are_read_and_refused_at_the_field() {
     let cases = [
         (
             r#""frame": "binormal", "#,
-            "sweep.frame: unknown frame \"binormal\"; expected rmf, frenet or {\"fixed\": [x, y, z]}",
+            "sweep.frame: unknown frame \"binormal\"; expected rmf, frenet, {\"fixed\": [x, y, z]} \
+             or {\"guide\": [edges]}",
         ),
         (
             r#""frame": {"fixed": [0, 1]}, "#,
@@ -550,6 +551,102 @@ fn wire_sweep_frames_and_scales_are_read_and_refused_at_the_field() {
             &format!("curve_frame_{k}"),
             &GOOD_SWEEP.replace("\"profile\"", &format!("{key}\"profile\"")),
             &[&format!("sweep.{name}: only for a sweep along a wire")],
+        );
+    }
+}
+
+/// The helix of radius 2 about the x axis, (h t, 2 cos t, 2 sin t) with h = pitch / 2π for
+/// t in [0, 2π turns], as a C¹ cubic NURBS edge: one Bézier per quarter turn, its inner
+/// poles along the helix's tangents at a third of the span (Hermite interpolation).
+fn helix_guide_edge(pitch: f64, turns: f64) -> String {
+    let h = pitch / std::f64::consts::TAU;
+    let n = (4.0 * turns).ceil() as usize;
+    let span = std::f64::consts::TAU * turns / n as f64;
+    let point = |t: f64| [h * t, 2.0 * t.cos(), 2.0 * t.sin()];
+    let tangent = |t: f64| [h, -2.0 * t.sin(), 2.0 * t.cos()];
+    let mut poles = vec![point(0.0)];
+    for i in 0..n {
+        let (a, b) = (span * i as f64, span * (i + 1) as f64);
+        let (pa, ta, pb, tb) = (point(a), tangent(a), point(b), tangent(b));
+        poles.push(std::array::from_fn(|j| pa[j] + ta[j] * span / 3.0));
+        poles.push(std::array::from_fn(|j| pb[j] - tb[j] * span / 3.0));
+        poles.push(pb);
+    }
+    let mut knots = vec![0.0; 4];
+    for i in 1..n {
+        knots.extend([i as f64; 3]);
+    }
+    knots.extend([n as f64; 4]);
+    let poles: Vec<String> = poles
+        .iter()
+        .map(|p| format!("[{:?}, {:?}, {:?}]", p[0], p[1], p[2]))
+        .collect();
+    let knots: Vec<String> = knots.iter().map(|k| format!("{k:?}")).collect();
+    format!(
+        r#"{{"nurbs": {{"degree": 3, "poles": [{}], "knots": [{}]}}}}"#,
+        poles.join(", "),
+        knots.join(", ")
+    )
+}
+
+/// `"frame": {"guide": [edges]}` (edges of the form of "wire"'s): a circle of radius 1
+/// along a line of 3 with a helical guide about it (radius 2, pitch 2) turns with the guide
+/// but keeps the cylinder's volume π r² L (to 1e-9), the frame followed within the
+/// tolerance; a guide that does not run beside the wire, an empty guide, an edge of no
+/// known kind and a guide beside a fixed direction are refused naming `sweep.frame`.
+#[test]
+fn a_guide_curve_frame_is_read_and_refused_at_the_field() {
+    let guide = helix_guide_edge(2.0, 1.5);
+    let f = wire_figures(
+        "wire_guide",
+        &line_job(&format!(
+            r#""frame": {{"guide": [{guide}]}}, "tolerance": 1e-6, "#
+        )),
+    );
+    let volume = f["volume"].as_f64().unwrap();
+    let cylinder = 3.0 * std::f64::consts::PI;
+    let error = f["frame_error"].as_f64().unwrap();
+    println!(
+        "circle r 1 along a line of 3, helical guide: volume {volume:.15} vs pi r^2 L \
+         {cylinder:.15} (relative {:.1e}), frame error {error:.1e} rad",
+        (volume - cylinder).abs() / cylinder
+    );
+    assert!(
+        (volume - cylinder).abs() <= 1e-9 * cylinder,
+        "volume {volume}, cylinder {cylinder}"
+    );
+    assert!((0.0..=0.25e-6).contains(&error), "{error}");
+    assert_eq!(f["solid"], serde_json::json!(true));
+    let cases = [
+        (
+            r#""frame": {"guide": [{"line": {"from": [0, 2, 0], "to": [1, 2, 0]}}]}, "#.to_string(),
+            "sweep.frame: frame: the guide does not run beside the wire",
+        ),
+        (
+            r#""frame": {"guide": []}, "#.to_string(),
+            "sweep.frame.guide: needs at least one edge",
+        ),
+        (
+            r#""frame": {"guide": [{"spline": {"from": [0, 2, 0], "to": [3, 2, 0]}}]}, "#
+                .to_string(),
+            "sweep.frame.guide[0].spline: unknown field",
+        ),
+        (
+            r#""frame": {"guide": [{"line": {"from": [0, 2, 0], "to": [3, 2, 0]}}],
+                         "fixed": [0, 0, 1]}, "#
+                .to_string(),
+            "sweep.frame",
+        ),
+        (
+            format!(r#""frame": {{"guide": [{guide}]}}, "initial_normal": [0, 0, 1], "#),
+            "sweep.initial_normal: ",
+        ),
+    ];
+    for (k, (extra, expected)) in cases.iter().enumerate() {
+        wire_fails_with(
+            &format!("wire_guide_bad_{k}"),
+            &line_job(extra),
+            &[expected],
         );
     }
 }

@@ -1,8 +1,8 @@
 """RmfSweep: a planar profile swept along a wire with rotation-minimizing frames (or the
-Frenet frame, or a frame following a fixed direction; the profile scaled linearly from
-ScaleStart to ScaleEnd, through ScaleKnotFractions/ScaleKnotScales if given, or blended
-into an EndProfile), by the library's wire sweep (``rmf_wire_sweep``,
-``rmf_wire_sweep_between`` with an EndProfile, through
+Frenet frame, a frame following a fixed direction, or one following a Guide curve; the
+profile scaled linearly from ScaleStart to ScaleEnd, through ScaleKnotFractions/
+ScaleKnotScales if given, or blended into an EndProfile), by the library's wire sweep
+(``rmf_wire_sweep``, ``rmf_wire_sweep_between`` with an EndProfile, through
 :func:`rmfsurf.freecad.sweep_with_report`).
 
 Lines and circular arcs of the spine give exact cylinders and tori; curve edges are
@@ -26,7 +26,7 @@ from .view import attach_view, hide
 
 METHODS = ("ph-rmf", "mobius", "rrmf")
 CORNERS = ("round", "miter")
-FRAMES = ("rmf", "frenet", "fixed")
+FRAMES = ("rmf", "frenet", "fixed", "guide")
 
 
 class SweepFeature(Feature):
@@ -68,11 +68,16 @@ class SweepFeature(Feature):
                  "symmetry (e.g. 4 for a square); 0: closes exactly", default=0),
         Property("App::PropertyEnumeration", "Frame", "Sweep",
                  "How the profile turns about the tangent: rmf (rotation-minimizing), frenet "
-                 "(with the spine's torsion: threads along helices) or fixed (its x axis "
-                 "follows FrameDirection)", enum=FRAMES),
+                 "(with the spine's torsion: threads along helices), fixed (its x axis "
+                 "follows FrameDirection) or guide (its x axis points at the Guide curve, a "
+                 "second rail)", enum=FRAMES),
         Property("App::PropertyVector", "FrameDirection", "Sweep",
                  "Frame fixed: the direction the profile's x axis follows (projected onto "
                  "the normal plane; not zero, never along the spine)"),
+        Property("App::PropertyLink", "Guide", "Sweep",
+                 "Frame guide: an object whose shape is the guide curve (edges joined end "
+                 "to end, beside the spine all along): the profile's x axis points where it "
+                 "crosses the spine's normal plane, the crossing nearest the spine"),
         Property("App::PropertyFloat", "ScaleStart", "Sweep",
                  "The profile's scale at the spine's start (> 0), linear in arc length to "
                  "ScaleEnd", default=1.0),
@@ -124,6 +129,11 @@ class SweepFeature(Feature):
             frame = ("fixed", tuple(obj.FrameDirection))
             if not any(frame[1]):
                 raise ValueError("FrameDirection: Frame fixed needs a direction, not (0, 0, 0)")
+        elif frame == "guide":
+            if obj.Guide is None:
+                raise ValueError("Guide: Frame guide needs a Guide, an object whose shape "
+                                 "is the guide curve")
+            frame = ("guide", inputs.wire((obj.Guide, []), "Guide"))
         for name in ("ScaleStart", "ScaleEnd"):
             value = getattr(obj, name)
             if not (math.isfinite(value) and value > 0):

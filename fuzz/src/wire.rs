@@ -1,6 +1,6 @@
 //! Operations on the wire sweep entry points: wires of lines, arcs and pooled curves
 //! (mostly connected, sometimes not), profiles (a circle or square of any size, or a pooled
-//! curve) with holes, options of every value; then the shapes' faces, loops, report, STEP
+//! curve) with holes, options of every value (a guide frame's edges drawn like the wire's); then the shapes' faces, loops, report, STEP
 //! file, texts (STEP, OpenCascade's B-rep) and B-rep model, each checked against the contract (a solid's figures finite and in range, caps with
 //! unit normals, borrowed surfaces that evaluate).
 
@@ -166,7 +166,7 @@ fn options(s: &mut Session) -> RmfWireSweepOptions {
     o.frame = if s.input.below(4) == 0 {
         s.input.code()
     } else {
-        s.input.below(3) as u32
+        s.input.below(4) as u32
     };
     if s.input.flag() {
         o.frame_direction = s.input.vec3();
@@ -187,11 +187,21 @@ fn wire_sweep(s: &mut Session) {
     let edges = edges(s);
     let profile = s.curve();
     let holes: Vec<*const RmfCurve> = (0..s.input.len(2)).map(|_| s.curve()).collect();
-    let options = options(s);
+    let mut options = options(s);
+    // A guide frame's edges, drawn like the wire's (NULL sometimes); kept alive to the call.
+    let guide = if options.frame == RMF_FRAME_GUIDE {
+        self::edges(s)
+    } else {
+        Vec::new()
+    };
+    if options.frame == RMF_FRAME_GUIDE {
+        options.guide_edges = or_null(&mut s.input, &guide);
+        options.guide_edge_count = guide.len();
+    }
     let with_options = s.input.below(8) != 0;
     if super::session::tracing() {
         eprintln!(
-            "wire sweep: edges {edges:?}, holes {}, options {options:?}",
+            "wire sweep: edges {edges:?}, holes {}, options {options:?}, guide {guide:?}",
             holes.len()
         );
     }

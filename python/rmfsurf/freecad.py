@@ -30,7 +30,7 @@ from .curves import (ArrayLike, Curve, NurbsCurve, arc, circle, distinct_knots, 
                      join_nurbs)
 from .frames import SPINE_METHODS, Frames, framed_spine
 from .shapes import (Arc, CurveEdge, Edge, Line, Shape, SweepFrame, SweepReport,
-                     _frame_start_normal, _named, wire_sweep)
+                     _frame_guide, _frame_start_normal, _named, wire_sweep)
 from .sheets import SheetPart
 from .sheets import transition as _transition
 from .surfaces import Surface, sweep_surface
@@ -456,10 +456,13 @@ def sweep(wire: Any, profile: Any, *, solid: bool = True, corner: str = "round",
         tolerance: the distance tolerance of the sweep.
         frame: "rmf" (default), "frenet" (as makePipeShell's Frenet mode: along a helix
             the profile's points trace helices, for threads) or ("fixed", (x, y, z)) /
-            {"fixed": (x, y, z)} (f2 follows that direction, the binormal mode); see
-            :func:`rmfsurf.wire_sweep`. The profile stays where it is placed at the start,
-            except with "frenet" on a wire that starts straight, where the library
-            chooses f2 there.
+            {"fixed": (x, y, z)} (f2 follows that direction, the binormal mode) or
+            ("guide", guide) / {"guide": guide} with a Part.Wire, a Part.Edge or a sketch
+            of one wire, converted as `wire` is (f2 towards where the guide crosses the
+            wire's normal plane: the profile follows a second rail, makePipeShell's
+            auxiliary mode); see :func:`rmfsurf.wire_sweep`. The profile stays where it
+            is placed at the start, except with "frenet" on a wire that starts straight,
+            where the library chooses f2 there.
         scale: the profile's scale (start, end), linear in arc length: two positive
             numbers ((1, 0.5) tapers a circle along a line into a frustum).
         scale_knots: (fraction, scale) pairs the scale passes through between its start
@@ -500,9 +503,13 @@ def sweep_with_report(wire: Any, profile: Any, *, solid: bool = True, corner: st
     count, frame error)."""
     tolerance = _core.finite(tolerance, "tolerance", positive=True)
     edges = _path_edges(wire, "wire")
+    guide = _frame_guide(frame)
+    if guide is not None:  # the guide as the wire is converted, in the library's edges
+        frame = ("guide", _path_edges(guide, "frame"))
     origin, tangent = _start_frame(wire)
     principal = _start_principal_normal(wire) if _named(frame, "frenet") else None
-    start_f2 = _frame_start_normal(frame, tangent / np.linalg.norm(tangent), principal)
+    start_f2 = _frame_start_normal(frame, tangent / np.linalg.norm(tangent), principal,
+                                   origin)
     outer, holes, f2 = _profile_curves(profile, origin, tangent, tolerance, start_f2)
     end_outer, end_holes = None, []
     if end_profile is not None:

@@ -36,8 +36,8 @@ import numpy as np
 from . import _core
 from .curves import ArrayLike, Curve, NurbsCurve, join_nurbs
 from .sheets import SheetPart
-from .shapes import (Arc, CurveEdge, Edge, Line, Shape, SweepFrame, _frame_start_normal,
-                     _named, wire_sweep)
+from .shapes import (Arc, CurveEdge, Edge, Line, Shape, SweepFrame, _frame_guide,
+                     _frame_start_normal, _named, wire_sweep)
 from .surfaces import Surface
 
 from OCP.BRep import BRep_Builder, BRep_Tool
@@ -224,9 +224,10 @@ def face(value: Surface, tolerance: float = 1e-7) -> Any:
 # Wire sweeps
 
 
-def _ordered_edges(path: Any) -> List[Any]:
-    """The edges of a wire in connection order, each with its orientation in the wire."""
-    raw = _shape_of(path, "path", (TopAbs_WIRE, TopAbs_EDGE), _WIRE_LIKE)
+def _ordered_edges(path: Any, name: str = "path") -> List[Any]:
+    """The edges of a wire in connection order, each with its orientation in the wire;
+    messages name the argument `name`."""
+    raw = _shape_of(path, name, (TopAbs_WIRE, TopAbs_EDGE), _WIRE_LIKE)
     if raw.ShapeType() == TopAbs_EDGE:
         return [_as_edge(raw)]
     edges = []
@@ -235,7 +236,7 @@ def _ordered_edges(path: Any) -> List[Any]:
         edges.append(explorer.Current())
         explorer.Next()
     if not edges:
-        raise ValueError("path: the wire has no edges")
+        raise ValueError("%s: the wire has no edges" % name)
     return edges
 
 
@@ -243,11 +244,16 @@ def path_edges(path: Any) -> List[Edge]:
     """The wire-sweep edges of an OCP wire or edge (or a build123d/CadQuery one), in order:
     straight edges as :class:`rmfsurf.Line`, circular arcs as :class:`rmfsurf.Arc`, every
     other edge as its exact NURBS curve."""
+    return _path_edges(path, "path")
+
+
+def _path_edges(path: Any, name: str) -> List[Edge]:
+    """:func:`path_edges`, messages naming the argument `name`."""
     raw = _unwrap(path)
     if isinstance(raw, Geom_Curve):
         return [CurveEdge(curve(raw))]
     result: List[Edge] = []
-    for e in _ordered_edges(path):
+    for e in _ordered_edges(path, name):
         adaptor = BRepAdaptor_Curve(e)
         start = _pnt(BRep_Tool.Pnt_s(TopExp.FirstVertex_s(e, True)))
         end = _pnt(BRep_Tool.Pnt_s(TopExp.LastVertex_s(e, True)))
@@ -522,9 +528,13 @@ def sweep(path: Any, profile: Any, *, solid: bool = True, corner: str = "round",
         frame: "rmf" (default), "frenet" (as build123d's ``sweep(is_frenet=True)``: along
             a helix the profile's points trace helices, for threads) or ("fixed", (x, y,
             z)) / {"fixed": (x, y, z)} (f2 follows that direction, OpenCascade's binormal
-            mode); see :func:`rmfsurf.wire_sweep`. The profile stays where it is placed at
-            the start, except with "frenet" on a path that starts straight, where the
-            library chooses f2 there.
+            mode) or ("guide", guide) / {"guide": guide} with a build123d/CadQuery Wire or
+            Edge, a TopoDS_Wire/TopoDS_Edge or a Geom_BSplineCurve, converted as `path` is
+            (f2 towards where the guide crosses the path's normal plane: the profile
+            follows a second rail, OpenCascade's auxiliary mode, as build123d's
+            ``sweep(..., binormal=guide)``); see :func:`rmfsurf.wire_sweep`. The profile
+            stays where it is placed at the start, except with "frenet" on a path that
+            starts straight, where the library chooses f2 there.
         scale: the profile's scale (start, end), linear in arc length: two positive
             numbers ((1, 0.5) tapers a circle along a line into a frustum).
         scale_knots: (fraction, scale) pairs the scale passes through between its start
@@ -548,9 +558,12 @@ def sweep(path: Any, profile: Any, *, solid: bool = True, corner: str = "round",
     """
     tolerance = _core.finite(tolerance, "tolerance", positive=True)
     edges = path_edges(path)
+    guide = _frame_guide(frame)
+    if guide is not None:  # the guide as the path is converted, in the library's edges
+        frame = ("guide", _path_edges(guide, "frame"))
     origin, tangent = _start_frame(path)
     start_f2 = _frame_start_normal(frame, tangent, _start_principal_normal(path)
-                                   if _named(frame, "frenet") else None)
+                                   if _named(frame, "frenet") else None, origin)
     outer, holes, f2 = _profile_curves(profile, origin, tangent, tolerance, start_f2)
     end_outer, end_holes = None, []
     if end_profile is not None:

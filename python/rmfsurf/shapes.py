@@ -11,6 +11,7 @@ coordinates.
 
 from __future__ import annotations
 
+import math
 import os
 from collections.abc import Iterable
 from dataclasses import dataclass
@@ -69,42 +70,65 @@ def corners() -> dict:
     return {"round": lib.RMF_CORNER_ROUND, "miter": lib.RMF_CORNER_MITER}
 
 
-#: What `frame` of :func:`wire_sweep` takes: "rmf", "frenet", ("fixed", (x, y, z)) or
-#: {"fixed": (x, y, z)}.
-SweepFrame = Union[str, Tuple[str, ArrayLike], Dict[str, ArrayLike]]
+#: What `frame` of :func:`wire_sweep` takes: "rmf", "frenet", ("fixed", (x, y, z)),
+#: {"fixed": (x, y, z)}, ("guide", edges) or {"guide": edges}.
+SweepFrame = Union[str, Tuple[str, Any], Dict[str, Any]]
 
-_FRAME_FORMS = "'rmf', 'frenet', ('fixed', (x, y, z)) or {'fixed': (x, y, z)}"
+_FRAME_FORMS = ("'rmf', 'frenet', ('fixed', (x, y, z)), {'fixed': (x, y, z)}, "
+                "('guide', edges) or {'guide': edges}")
+
+_FRAME_ARGUMENTS = {"fixed": "a direction (x, y, z)", "guide": "the guide's edges"}
 
 
 def _frame_codes() -> dict:
-    """The frame names of :func:`wire_sweep` ("fixed" takes a direction too)."""
+    """The frame names of :func:`wire_sweep` ("fixed" takes a direction too, "guide" its
+    edges)."""
     return {"rmf": lib.RMF_FRAME_RMF, "frenet": lib.RMF_FRAME_FRENET,
-            "fixed": lib.RMF_FRAME_FIXED}
+            "fixed": lib.RMF_FRAME_FIXED, "guide": lib.RMF_FRAME_GUIDE}
 
 
-def _sweep_frame(value: Any) -> Tuple[int, Optional[np.ndarray]]:
+def _frame_guide(value: Any) -> Optional[Any]:
+    """The guide of a guide frame — ("guide", edges) or {"guide": edges} — as given (edges
+    of whatever kind the caller takes for its path, for the CAD adapters to convert), None
+    for any other frame."""
+    if isinstance(value, dict) and list(value) == ["guide"]:
+        return value["guide"]
+    if isinstance(value, tuple) and len(value) == 2 and _named(value[0], "guide"):
+        return value[1]
+    return None
+
+
+def _sweep_frame(value: Any) -> Tuple[int, Any]:
     """The RmfSweepFrame code of `frame` and, for "fixed", its direction (finite, not
-    zero). TypeError for what is no string, pair or dict; ValueError (InvalidInputError for
-    a direction that is zero or not finite) for an unknown name or a malformed fixed
-    frame; each message names `frame`."""
+    zero), for "guide" its edges (rmfsurf.Line, Arc or CurveEdge, at least one). TypeError
+    for what is no string, pair or dict, or a guide edge of another type; ValueError
+    (InvalidInputError for a direction that is zero or not finite, or a guide without
+    edges) for an unknown name or a malformed fixed or guide frame; each message names
+    `frame`."""
     if isinstance(value, dict):
-        if list(value) != ["fixed"]:
-            raise ValueError("frame: a dict frame is {'fixed': (x, y, z)}, got keys %s"
-                             % ", ".join(repr(k) for k in value))
-        items: Any = ("fixed", value["fixed"])
+        if list(value) not in (["fixed"], ["guide"]):
+            raise ValueError("frame: a dict frame is {'fixed': (x, y, z)} or {'guide': edges}, "
+                             "got keys %s" % ", ".join(repr(k) for k in value))
+        items: Any = next(iter(value.items()))
     elif isinstance(value, tuple):
         items = value
     elif isinstance(value, str):
-        if value == "fixed":
-            raise ValueError("frame: 'fixed' needs its direction: ('fixed', (x, y, z)) or "
-                             "{'fixed': (x, y, z)}")
+        if value in _FRAME_ARGUMENTS:
+            raise ValueError("frame: %r needs %s: (%r, ...) or {%r: ...}"
+                             % (value, _FRAME_ARGUMENTS[value], value, value))
         if value not in ("rmf", "frenet"):
             raise ValueError("frame: expected %s, got %r" % (_FRAME_FORMS, value))
         return int(_frame_codes()[value]), None
     else:
         raise TypeError("frame: expected %s, got %s" % (_FRAME_FORMS, type(value).__name__))
-    if len(items) != 2 or items[0] != "fixed":
+    if len(items) != 2 or not (_named(items[0], "fixed") or _named(items[0], "guide")):
         raise ValueError("frame: expected %s, got %r" % (_FRAME_FORMS, value))
+    if items[0] == "guide":
+        edges = _core.objects(items[1], "frame", (Line, Arc, CurveEdge),
+                              "an rmfsurf.Line, Arc or CurveEdge")
+        if not edges:
+            raise _core._refused("frame", "the guide needs at least one edge")
+        return int(lib.RMF_FRAME_GUIDE), edges
     direction = _core.vector(items[1], "frame", finite_only=True)
     if not np.any(direction):
         raise _core._refused("frame", "the fixed direction (0, 0, 0) is zero")
@@ -164,17 +188,28 @@ def _named(frame: Any, name: str) -> bool:
 
 
 def _frame_start_normal(frame: Any, tangent: np.ndarray,
-                        principal_normal: Optional[np.ndarray]) -> Optional[np.ndarray]:
+                        principal_normal: Optional[np.ndarray],
+                        origin: Optional[np.ndarray] = None) -> Optional[np.ndarray]:
     """For the CAD adapters: f2 at the wire's start as the library sets it for `frame`
     (validated), so that a profile placed in space is given in the frame it will be swept
-    in — the fixed direction projected onto the normal plane, or the principal normal at
-    the start for "frenet" (`principal_normal`, None where the wire starts straight) —
-    and None where the adapter's own f2 (the profile's x axis) is the initial normal (the
-    RMF) or the library chooses (a Frenet frame on a straight start, a fixed direction
-    along the tangent, which the library refuses)."""
-    code, direction = _sweep_frame(frame)
+    in — the fixed direction projected onto the normal plane, the principal normal at the
+    start for "frenet" (`principal_normal`, None where the wire starts straight), or
+    towards the guide's crossing of the normal plane at the start (`origin`) nearest it
+    for "guide" (its edges already rmfsurf edges) — and None where the adapter's own f2
+    (the profile's x axis) is the initial normal (the RMF) or the library chooses or
+    refuses (a Frenet frame on a straight start, a fixed direction along the tangent, a
+    guide that does not cross the plane or passes through the start)."""
+    code, argument = _sweep_frame(frame)
+    if code == lib.RMF_FRAME_GUIDE:
+        crossing = None if origin is None else _guide_crossing(argument, origin, tangent)
+        if crossing is None:
+            return None
+        f2 = crossing - origin
+        f2 = f2 - np.dot(f2, tangent) * tangent
+        length = np.linalg.norm(f2)
+        return f2 / length if length > 0 else None
     if code == lib.RMF_FRAME_FIXED:
-        d = direction / np.linalg.norm(direction)
+        d = argument / np.linalg.norm(argument)
         f2 = d - np.dot(d, tangent) * tangent
         length = np.linalg.norm(f2)
         return f2 / length if length > 1e-9 else None
@@ -183,24 +218,96 @@ def _frame_start_normal(frame: Any, tangent: np.ndarray,
     return None
 
 
-def _edges(edges: Sequence[Edge]) -> Tuple[Any, int, List[Any]]:
-    """An RmfEdge array, its length, and what must stay alive during the call."""
-    edges = _core.objects(edges, "edges", (Line, Arc, CurveEdge),
+def _edge_points(edge: Edge, name: str) -> Any:
+    """The points of an edge at s in [0, 1] (an array of n parameters: an (n, 3) array),
+    from its start to its end: a line's, an arc's (the circle through its three points),
+    a curve's over its domain."""
+    if isinstance(edge, Line):
+        a = _core.vector(edge.start, name + ".start", finite_only=True)
+        b = _core.vector(edge.end, name + ".end", finite_only=True)
+        return lambda s: a + np.outer(s, b - a)
+    if isinstance(edge, Arc):
+        a = _core.vector(edge.start, name + ".start", finite_only=True)
+        m = _core.vector(edge.through, name + ".through", finite_only=True)
+        b = _core.vector(edge.end, name + ".end", finite_only=True)
+        ab, ac = m - a, b - a
+        n = _core.cross(ab, ac)
+        nn = np.dot(n, n)
+        if not nn > 0:  # collinear: the library refuses it; its chord here
+            return lambda s: a + np.outer(s, b - a)
+        centre = a + (np.dot(ac, ac) * _core.cross(n, ab)
+                      + np.dot(ab, ab) * _core.cross(ac, n)) / (2 * nn)
+        radius = np.linalg.norm(a - centre)
+        u = (a - centre) / radius
+        v = _core.cross(n / np.sqrt(nn), u)
+        w = b - centre
+        sweep = math.atan2(np.dot(w, v), np.dot(w, u)) % (2 * math.pi)
+        return lambda s: centre + radius * (np.outer(np.cos(sweep * s), u)
+                                            + np.outer(np.sin(sweep * s), v))
+    c = as_curve(edge.curve, name + ".curve")
+    lo, hi = c.domain
+    return lambda s: c.eval(lo + (hi - lo) * np.asarray(s, dtype=float))
+
+
+def _guide_crossing(edges: Sequence[Edge], origin: np.ndarray, tangent: np.ndarray
+                    ) -> Optional[np.ndarray]:
+    """Where the guide's edges cross the plane through `origin` normal to the unit
+    `tangent`, the crossing nearest `origin` (sign changes of the distance from the plane
+    at 256 samples per edge, each bisected to rounding); None where they do not cross it."""
+    best: Optional[np.ndarray] = None
+    samples = np.linspace(0.0, 1.0, 257)
+    for i, e in enumerate(edges):
+        points = _edge_points(e, "frame[%d]" % i)
+        side = (points(samples) - origin) @ tangent
+        for k in range(len(samples) - 1):
+            if side[k] == 0:
+                s = samples[k]
+            elif side[k + 1] == 0 or side[k] * side[k + 1] > 0:
+                continue
+            else:
+                lo, hi = samples[k], samples[k + 1]
+                for _ in range(60):
+                    mid = 0.5 * (lo + hi)
+                    if (np.dot(points(np.array([mid]))[0] - origin, tangent) > 0) == \
+                            (side[k] > 0):
+                        lo = mid
+                    else:
+                        hi = mid
+                s = 0.5 * (lo + hi)
+            p = points(np.array([s]))[0]
+            if best is None or np.linalg.norm(p - origin) < np.linalg.norm(best - origin):
+                best = p
+        if side[-1] == 0:
+            p = points(np.array([1.0]))[0]
+            if best is None or np.linalg.norm(p - origin) < np.linalg.norm(best - origin):
+                best = p
+    return best
+
+
+def _edges(edges: Sequence[Edge], argument: str = "edges", finite_only: bool = False
+           ) -> Tuple[Any, int, List[Any]]:
+    """An RmfEdge array, its length, and what must stay alive during the call; messages
+    name `argument`. With `finite_only` (a guide's edges, which the library would name by
+    its own field) points that are not finite are refused here."""
+    def vec3(value: Any, name: str) -> Any:
+        return _core.vec3(_core.vector(value, name, finite_only), name)
+
+    edges = _core.objects(edges, argument, (Line, Arc, CurveEdge),
                           "an rmfsurf.Line, Arc or CurveEdge")
     array = ffi.new("RmfEdge[]", max(len(edges), 1))
     keep: List[Any] = []
     for i, e in enumerate(edges):
-        name = "edges[%d]" % i
+        name = "%s[%d]" % (argument, i)
         item = array[i]
         if isinstance(e, Line):
             item.kind = lib.RMF_EDGE_LINE
-            item.points[0] = _core.vec3(e.start, name + ".start")
-            item.points[1] = _core.vec3(e.end, name + ".end")
+            item.points[0] = vec3(e.start, name + ".start")
+            item.points[1] = vec3(e.end, name + ".end")
         elif isinstance(e, Arc):
             item.kind = lib.RMF_EDGE_ARC
-            item.points[0] = _core.vec3(e.start, name + ".start")
-            item.points[1] = _core.vec3(e.through, name + ".through")
-            item.points[2] = _core.vec3(e.end, name + ".end")
+            item.points[0] = vec3(e.start, name + ".start")
+            item.points[1] = vec3(e.through, name + ".through")
+            item.points[2] = vec3(e.end, name + ".end")
         elif isinstance(e, CurveEdge):
             item.kind = lib.RMF_EDGE_CURVE
             item.curve = as_curve(e.curve, name + ".curve")._ptr
@@ -345,9 +452,14 @@ def wire_sweep(edges: Union[Edge, Sequence[Edge]], profile: Curve,
         frame: how the profile turns about the tangent: "rmf" (the rotation-minimizing
             frame, the default), "frenet" (f2 along the principal normal at the start, then
             turning with the torsion: along a helix the profile's points trace helices, as
-            a thread needs) or ("fixed", (x, y, z)) / {"fixed": (x, y, z)} (f2 along that
-            direction projected onto the normal plane). A frame other than "rmf" sets f2
-            itself: `initial_normal` must then be None.
+            a thread needs), ("fixed", (x, y, z)) / {"fixed": (x, y, z)} (f2 along that
+            direction projected onto the normal plane) or ("guide", edges) / {"guide":
+            edges} (f2 towards where the guide curve of these edges — :class:`Line`,
+            :class:`Arc` and :class:`CurveEdge` items as `edges`, in any order and
+            orientation — crosses the normal plane, the crossing nearest the wire: the
+            profile turns to follow a second rail, OpenCascade's auxiliary mode; refused
+            where the guide does not cross a normal plane, or touches the wire). A frame
+            other than "rmf" sets f2 itself: `initial_normal` must then be None.
         scale: the profile's scale (start, end) about the spine, linear in arc length
             between: two finite positive numbers, equal on a closed wire ((1, 0.5) makes a
             circle along a line a frustum).
@@ -391,9 +503,14 @@ def wire_sweep(edges: Union[Edge, Sequence[Edge]], profile: Curve,
     options.twist = _core.number(twist, "twist")
     options.closure_symmetry = _core.integer(closure_symmetry, "closure_symmetry", "uint32_t")
     options.solid = 1 if solid else 0
-    options.frame, direction = _sweep_frame(frame)
-    if direction is not None:
-        options.frame_direction = _core.vec3(direction, "frame")
+    options.frame, argument = _sweep_frame(frame)
+    guide_array = None
+    if options.frame == lib.RMF_FRAME_FIXED:
+        options.frame_direction = _core.vec3(argument, "frame")
+    elif options.frame == lib.RMF_FRAME_GUIDE:
+        guide_array, options.guide_edge_count, guide_keep = _edges(argument, "frame", True)
+        options.guide_edges = guide_array
+        keep += guide_keep
     options.scale_start, options.scale_end = _scale(scale)
     knots = _scale_knots(scale_knots)
     # Kept alive until the call: the options borrow the doubles.
@@ -414,5 +531,5 @@ def wire_sweep(edges: Union[Edge, Sequence[Edge]], profile: Curve,
         end_array = ffi.new("RmfCurve *[]", [h._ptr for h in end_list] or [ffi.NULL])
         call("rmf_wire_sweep_between", array, count, prof._ptr, hole_array, len(hole_list),
              end._ptr, end_array, len(end_list), options, out)
-    del keep, knot_doubles
+    del keep, knot_doubles, guide_array
     return Shape(_core.owned("shape", out[0]))

@@ -228,7 +228,19 @@ BAD_FRAMES = [
     ({"fixd": (0, 0, 1)}, ValueError), (("fixed", (0, 1)), ValueError),
     (("fixed", (0, 0, 0)), rmfsurf.InvalidInputError),
     ({"fixed": (0, math.nan, 1)}, rmfsurf.InvalidInputError), (3, TypeError), (None, TypeError),
+    # Guides: a Part.Wire/Part.Edge/sketch, converted as the wire is.
+    ("guide", ValueError), (("guide",), ValueError), (("guide", 3), TypeError),
+    ({"guide": None}, TypeError), (("guide", []), TypeError),
+    (("guide", rmfsurf.Line((0, 5, 0), (20, 5, 0))), TypeError),
 ]
+
+
+@pytest.mark.parametrize("case", FRAMES)
+def test_a_guide_beside_part_of_the_wire_is_refused_naming_the_frame(case):
+    """The library's refusal of a guide along the first leg's first metre only."""
+    for frame in (("guide", Part.makeLine(V(0, 5, 0), V(1, 5, 0))),
+                  {"guide": Part.Wire([Part.makeLine(V(0, 5, 0), V(1, 5, 0))])}):
+        refused(case[1], frame, rmfsurf.InvalidInputError, argument(case[0]))
 
 
 @pytest.mark.parametrize("case, bad", parametrize(FRAMES, lambda c: BAD_FRAMES))

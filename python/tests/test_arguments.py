@@ -560,6 +560,56 @@ def test_a_bad_frame_names_the_argument(case, bad):
     refused(case[1], value, exception, argument(case[0]))
 
 
+# Guide frames: ("guide", edges) / {"guide": edges}, the edges what each function takes as
+# its path (rmfsurf edges for wire_sweep, a build123d/OCP wire or edge for ocp.sweep). The
+# forms both refuse alike, then each function's own: no edges, an edge of another kind, a
+# point that is not finite, a guide along a part of the path only (the library's refusal).
+BAD_GUIDE_FORMS = [
+    ("guide", ValueError), (("guide",), ValueError), (("guide", [], 2), ValueError),
+    ({"guide": [], "fixed": (0, 0, 1)}, ValueError), (("guide", 3), TypeError),
+    (("guide", None), TypeError), (("guide", "line"), TypeError), ({"guide": 2.5}, TypeError),
+]
+
+
+@pytest.mark.parametrize("case, bad", parametrize(FRAMES, lambda c: BAD_GUIDE_FORMS))
+def test_a_bad_guide_frame_names_the_frame(case, bad):
+    value, exception = bad
+    refused(case[1], value, exception, argument(case[0]))
+
+
+#: (key, the guide as a function of the inputs, the exception).
+BAD_GUIDES = [
+    ("wire_sweep(frame)", lambda: [], rmfsurf.InvalidInputError),
+    ("wire_sweep(frame)", lambda: [rmfsurf.Line((0, 5, 0), (0, 5, math.nan))],
+     rmfsurf.InvalidInputError),
+    ("wire_sweep(frame)", lambda: {"line": ((0, 5, 0), (10, 5, 0))}, TypeError),
+    ("wire_sweep(frame)", lambda: [rmfsurf.Line((0, 5, 0), (1, 5, 0))],
+     rmfsurf.InvalidInputError),
+    ("ocp.sweep(frame)", lambda: [], TypeError),
+    ("ocp.sweep(frame)", lambda: rmfsurf.Line((0, 5, 0), (20, 5, 0)), TypeError),
+    ("ocp.sweep(frame)", lambda: IN.bd.Line((0, 5, 0), (1, 5, 0)), rmfsurf.InvalidInputError),
+]
+
+
+@pytest.mark.parametrize("key, guide, exception", BAD_GUIDES)
+def test_a_bad_guide_names_the_frame(key, guide, exception):
+    call = dict(FRAMES)[key]
+    for frame in (("guide", guide()), {"guide": guide()}):
+        refused(call, frame, exception, argument(key))
+
+
+def test_a_guide_frame_is_taken_in_both_forms():
+    """A guide of two lines (given out of order, one reversed) beside a line of 3: a solid,
+    the frame error within a quarter of the tolerance at the profile's reach; the same
+    shape in either form."""
+    line = [rmfsurf.Line((0, 0, 0), (3, 0, 0))]
+    guide = [rmfsurf.Line((3.5, 0, 2), (1.5, 2, 0)), rmfsurf.Line((-0.5, 2, 0), (1.5, 2, 0))]
+    shapes = [rmfsurf.wire_sweep(line, circle(1.0), frame=frame)
+              for frame in (("guide", guide), {"guide": guide})]
+    assert shapes[0].occ_brep() == shapes[1].occ_brep()
+    assert shapes[0].is_solid and shapes[0].report().frame_error <= 0.25e-4
+
+
 # ---------------------------------------------------------------------------------------
 # Methods of wire sweeps: "ph-rmf", "mobius" or "rrmf" ("frenet" is the frame's).
 # Not a class of the annotations: (key, call), each with every bad method, and a coverage

@@ -219,3 +219,58 @@ def test_a_thread_profile_drawn_in_the_axial_plane_runs_on_helices_and_cuts_a_th
     rod = bd.Pos(0, 0, HEIGHT / 2) * bd.Cylinder(RADIUS, HEIGHT - 2)
     solids = rod.cut(thread).solids()
     assert len(solids) == 1 and is_valid(solids[0]) and solids[0].volume < rod.volume
+
+
+#: A triangle in the plane z = 0 with its vertex (0.5, 0, 0) on f2, towards the guide's start
+#: (RADIUS, 0, 0): the vertex whose track the guide frame puts on a helix.
+POINTER = [(0.5, 0.0, 0.0), (-0.2, 0.3, 0.0), (-0.2, -0.3, 0.0)]
+
+
+@pytest.mark.parametrize("turn", [0.0, 120.0])
+def test_a_helical_guide_about_a_line_puts_the_profile_on_helices(turn):
+    """The guide frame through rmfsurf.ocp: a triangle swept up the z axis (a bd.Line of
+    HEIGHT) with a bd.Helix of RADIUS and PITCH about it as the guide, both turned by `turn`
+    degrees about the axis (so that the profile's plane's x axis is not f2: the adapter
+    gives the profile in the frame pointing at the guide). f2 points at the guide's crossing
+    of each normal plane z = h, at the angle turn + 2π h / PITCH: the track of the vertex
+    on f2, sampled on the solid's own edges (BRepAdaptor_Curve), is the helix (0.5 cos,
+    0.5 sin, h) of the guide's pitch; every corner stays at its distance from the axis; the
+    solid is valid, of the prism's volume. The RMF of a line does not turn: its vertex
+    track is off that helix (the check can fail)."""
+    path = bd.Line((0, 0, 0), (0, 0, HEIGHT))
+    guide = bd.Rot(0, 0, turn) * bd.Helix(pitch=PITCH, height=HEIGHT, radius=RADIUS)
+    phase = math.radians(turn)
+    start = np.array(tuple(guide @ 0))
+    assert np.linalg.norm(start - RADIUS * np.array([math.cos(phase), math.sin(phase), 0])) < 1e-9
+    c, s = math.cos(phase), math.sin(phase)
+    triangle = bd.Face(bd.Wire.make_polygon([(c * x - s * y, s * x + c * y, 0.0)
+                                             for x, y, _ in POINTER], close=True))
+
+    def vertex_track_off_the_helix(solid):
+        tracks = [t for t in lateral_edges(solid, path)
+                  if abs(np.hypot(t[0, 0], t[0, 1]) - 0.5) < 1e-9]
+        assert tracks
+        angle = phase + 2 * math.pi * np.concatenate([t[:, 2] for t in tracks]) / PITCH
+        points = np.concatenate(tracks)
+        on = np.stack([0.5 * np.cos(angle), 0.5 * np.sin(angle), points[:, 2]], axis=1)
+        return np.max(np.linalg.norm(points - on, axis=1)), tracks
+
+    solid = rocp.sweep(path, triangle, frame=("guide", guide), tolerance=1e-6)
+    off, tracks = vertex_track_off_the_helix(solid)
+    all_tracks = lateral_edges(solid, path)
+    radii = [np.hypot(x, y) for x, y, _ in POINTER]
+    worst_radius, worst_pitch = off_helices(all_tracks, radii)
+    volume, exact = occ_volume(solid), 0.5 * 0.6 * 0.7 * HEIGHT
+    print("\ntriangle up a line with a helical guide turned by %g deg: the f2 vertex's track "
+          "(%d edges) off the helix of radius 0.5, pitch %g by %.1e; %d corner tracks within "
+          "%.1e of their radii, pitch relation within %.1e; volume %.15f vs %.15f (relative "
+          "%.1e)" % (turn, len(tracks), PITCH, off, len(all_tracks), worst_radius, worst_pitch,
+                     volume, exact, abs(volume - exact) / exact))
+    assert is_valid(solid)
+    # Within the sweep's tolerance (the screw motion along a line is a twist: exact).
+    assert off <= 1e-6 and worst_radius <= 1e-6 and worst_pitch <= 1e-6
+    assert abs(volume - exact) <= 1e-9 * exact
+    same = rocp.sweep(path, triangle, frame={"guide": bd.Wire([guide])}, tolerance=1e-6)
+    assert vertex_track_off_the_helix(same)[0] <= 1e-6
+    rmf, _ = vertex_track_off_the_helix(rocp.sweep(path, triangle, tolerance=1e-6))
+    assert rmf > 0.1

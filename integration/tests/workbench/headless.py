@@ -14,9 +14,10 @@ What is checked, each figure printed with its limit:
   B. RmfSweep: a ring sketch (inner loop) swept along a wire of a line, an arc and a line
      (sub-element links), a circle along a sketch with a sharp corner (round, then miter):
      valid solids, volumes against Pappus's A·L; a sketch constraint changed, recomputed;
-     twist, sheet; Frame (rmf, frenet, fixed with FrameDirection), ScaleStart/ScaleEnd
-     (a frustum's volume), ScaleKnotFractions/ScaleKnotScales (a chain of frustums; older
-     documents get them empty), EndProfile (the same frustum from two circles; older documents
+     twist, sheet; Frame (rmf, frenet, fixed with FrameDirection, guide with a helical
+     Guide: the cylinder's volume), ScaleStart/ScaleEnd (a frustum's volume),
+     ScaleKnotFractions/ScaleKnotScales (a chain of frustums; older documents get them
+     empty), EndProfile (the same frustum from two circles; older documents
      get it empty); Method (ph-rmf, mobius, rrmf: a line and a B-spline, parameter
      lines orthogonal to rounding with the exact RMFs; older documents get the methods);
      the library's refusals mark the feature Invalid with a message;
@@ -353,12 +354,14 @@ def part_b(doc):
     # along a line of 30 is a frustum (the scale law); the frames on a 4 x 2 rectangle keep
     # its volume; a fixed frame without a direction and a scale of 0 are refused, naming
     # the property.
-    require("Frame %r of %s, FrameDirection %s, ScaleStart %r, ScaleEnd %r, FrameError %r"
+    require("Frame %r of %s, FrameDirection %s, Guide %r, ScaleStart %r, ScaleEnd %r, "
+            "FrameError %r"
             % (sweep.Frame, sweep.getEnumerationsOfProperty("Frame"), tuple(sweep.FrameDirection),
-               sweep.ScaleStart, sweep.ScaleEnd, sweep.FrameError),
+               sweep.Guide, sweep.ScaleStart, sweep.ScaleEnd, sweep.FrameError),
             sweep.Frame == "rmf" and sweep.getEnumerationsOfProperty("Frame")
-            == ["rmf", "frenet", "fixed"] and tuple(sweep.FrameDirection) == (0, 0, 0)
-            and sweep.ScaleStart == 1.0 and sweep.ScaleEnd == 1.0 and sweep.FrameError == 0.0)
+            == ["rmf", "frenet", "fixed", "guide"] and tuple(sweep.FrameDirection) == (0, 0, 0)
+            and sweep.Guide is None and sweep.ScaleStart == 1.0 and sweep.ScaleEnd == 1.0
+            and sweep.FrameError == 0.0)
     axis = doc.addObject("Part::Feature", "Axis")
     axis.Shape = Part.LineSegment(V(0, -80, 0), V(30, -80, 0)).toShape()
     cone, _ = circle_sketch(doc, "Cone", FreeCAD.Placement(V(0, -80, 0), Z_TO_X), (2.0,))
@@ -458,7 +461,41 @@ def part_b(doc):
     frustum.Frame = "rmf"
     doc.recompute()
     require("Frame rmf again: valid", frustum.isValid())
-    for name in (frustum.Name, block.Name, cone.Name, axis.Name):
+    # Frame guide: without a Guide refused naming it; with a helix of radius 6 and pitch 10
+    # about the axis as the Guide (Part.makeHelix turned from z onto the axis), the circle of
+    # radius 2 turns with it and keeps the cylinder's volume π r² L; a Guide beside the
+    # axis's first 5 only is the library's refusal, naming the frame; a document before
+    # Guide gets it empty.
+    frustum.Profile = cone
+    frustum.Frame = "guide"
+    doc.recompute()
+    message = frustum.getStatusString()
+    require("Frame guide without a Guide: Invalid, '%s'" % message,
+            not frustum.isValid() and "Guide" in message)
+    helix = doc.addObject("Part::Feature", "GuideHelix")
+    helix_shape = Part.makeHelix(10.0, 30.0, 6.0)
+    helix_shape.Placement = FreeCAD.Placement(V(0, -80, 0), FreeCAD.Rotation(V(0, 1, 0), 90))
+    helix.Shape = helix_shape
+    frustum.Guide = helix
+    doc.recompute()
+    check_solid("a circle r 2 along a line of 30, Frame guide (a helix r 6 about it)",
+                frustum.Shape, PI * 4 * 30)
+    check("  its FrameError (radians)", frustum.FrameError, 0.25 * frustum.Tolerance / 2)
+    short = doc.addObject("Part::Feature", "ShortGuide")
+    short.Shape = Part.makeLine(V(0, -80, 6), V(5, -80, 6))
+    frustum.Guide = short
+    doc.recompute()
+    message = frustum.getStatusString()
+    require("a Guide beside the first 5 of the axis only: Invalid, '%s'" % message,
+            not frustum.isValid() and "frame" in message and "guide" in message)
+    frustum.Guide = None
+    frustum.Frame = "rmf"
+    frustum.removeProperty("Guide")
+    frustum.Proxy.onDocumentRestored(frustum)
+    doc.recompute()
+    require("no Guide (a document before it): added empty, valid",
+            "Guide" in frustum.PropertiesList and frustum.Guide is None and frustum.isValid())
+    for name in (frustum.Name, short.Name, helix.Name, block.Name, cone.Name, axis.Name):
         doc.removeObject(name)
     doc.recompute()
 
