@@ -1,7 +1,7 @@
 """Renders docs/images/rmfsurf.png (and docs/images/sweep-frames.png) from the demo's
 output (run by scripts/render-pictures).
 
-    python3 render_pictures.py <demo-output-directory> <png> [<sweep-frames png>]
+    python3 render_pictures.py <demo-output-directory> <png> [<sweep-frames png> [<guide-knots png>]]
 
 Three panels, each drawn from a file the demo writes:
   1. closed_sweep_trefoil.vtp: a square tube swept along a trefoil with the PH cubic
@@ -262,6 +262,30 @@ def sweep_frames(demo_dir, png):
     write_png(window, png)
 
 
+def guide_and_knots(demo_dir, png):
+    """docs/images/sweep-guide-knots.png: the demo's section 9, its guide and scale knots."""
+    window = vtk.vtkRenderWindow()
+    window.SetSize(WIDTH, HEIGHT)
+    window.SetOffScreenRendering(1)
+    window.SetMultiSamples(0)
+    guide = read_vtp(f"{demo_dir}/bar_guide.vtp")
+    points = [guide.GetPoint(k) for k in range(guide.GetNumberOfPoints())]
+    helix = lines_actor(points, [(k, k + 1) for k in range(len(points) - 1)], (0.25, 0.35, 0.7), 2.5)
+    panel(
+        window, 0.0, 0.5,
+        [shaded(read_vtp(f"{demo_dir}/bar_guided.vtp"), (0.80, 0.62, 0.30), 40.0), helix],
+        "a flat bar up a line, its width turned to point at\na helical guide (blue): frame \"guide\"",
+        (0, 0, 1), (1.0, -1.4, 0.7), 0.85,
+    )
+    panel(
+        window, 0.5, 1.0,
+        [shaded(read_vtp(f"{demo_dir}/baluster.vtp"), (0.45, 0.64, 0.86), 40.0)],
+        "a baluster: a circle through scales 1, 1.6, 0.6, 1.3, 1\n(scale_knots): a chain of exact frustums",
+        (0, 0, 1), (1.0, -1.4, 0.7), 0.85,
+    )
+    write_png(window, png)
+
+
 def write_png(window, png):
     window.Render()
     grab = vtk.vtkWindowToImageFilter()
@@ -279,3 +303,5 @@ if __name__ == "__main__":
     main(sys.argv[1], sys.argv[2])
     if len(sys.argv) > 3:
         sweep_frames(sys.argv[1], sys.argv[3])
+    if len(sys.argv) > 4:
+        guide_and_knots(sys.argv[1], sys.argv[4])

@@ -750,7 +750,8 @@ static void write_shape_mesh(const RmfShape *shape, uint32_t v_steps, const char
     free(triangles);
 }
 
-/* ---- 9. sweeps as users make them: a thread (Frenet frame) and a taper (scale law) ---- */
+/* ---- 9. sweeps as users make them: a thread (Frenet frame), a taper (scale law), a bar
+ *         turned by a guide curve, a baluster (scale knots) ---- */
 
 /* A helix of radius 5 rising 2 per turn about the z axis. */
 static void thread_helix(double t, void *user, RmfVec3 *point, RmfVec3 *tangent) {
@@ -782,6 +783,89 @@ static double off_helix(const RmfSurface *surface, double rise) {
     return worst;
 }
 
+/* A helix of radius 3 rising 8 in one turn about the z axis: the guide of a bar. */
+static void guide_helix(double t, void *user, RmfVec3 *point, RmfVec3 *tangent) {
+    const double h = 8 / (2 * PH_DEMO_PI);
+    (void)user;
+    point->x = 3 * cos(t), point->y = 3 * sin(t), point->z = h * t;
+    tangent->x = -3 * sin(t), tangent->y = 3 * cos(t), tangent->z = h;
+}
+
+/* A flat bar up the z axis whose width turns to point at a helical guide (a twisted bar:
+ * its corners run on helices), and a baluster: a circle along a line through four scales. */
+static void demo_guide_and_knots(void) {
+    const RmfVec3 bar[5] = {{0.8, -0.15, 0}, {0.8, 0.15, 0}, {-0.8, 0.15, 0}, {-0.8, -0.15, 0}, {0.8, -0.15, 0}};
+    const double bar_knots[7] = {0, 0, 1, 2, 3, 4, 4};
+    /* (fraction of the length, scale): 1 at the foot, 1.6, 0.6, 1.3, 1 at the top. */
+    const double knots[6] = {0.2, 1.6, 0.5, 0.6, 0.8, 1.3};
+    const double r = 0.9, l = 8, ends[5] = {1, 1.6, 0.6, 1.3, 1}, at[5] = {0, 0.2, 0.5, 0.8, 1};
+    RmfCurve *guide = NULL, *section = NULL, *circle = circle_profile(r);
+    RmfEdge line, guide_edge;
+    RmfWireSweepOptions options;
+    RmfShape *twisted = NULL, *baluster = NULL;
+    RmfShapeFace face;
+    RmfSweepReport report;
+    RmfVec3 samples[65];
+    double distance, off = 0, off_scale = 0;
+    size_t f;
+    int k;
+
+    TRY(rmf_ph_spline_approximate(NULL, guide_helix, NULL, 0, 2 * PH_DEMO_PI, 1e-6, &guide, &distance));
+    TRY(rmf_nurbs_curve_create(1, bar, NULL, 5, bar_knots, 7, &section));
+    memset(&line, 0, sizeof line);
+    memset(&guide_edge, 0, sizeof guide_edge);
+    line.kind = RMF_EDGE_LINE, line.points[0] = vec(0, 0, 0), line.points[1] = vec(0, 0, l);
+    guide_edge.kind = RMF_EDGE_CURVE, guide_edge.curve = guide;
+    TRY(rmf_wire_sweep_options_init(&options));
+    options.frame = RMF_FRAME_GUIDE;
+    options.guide_edges = &guide_edge, options.guide_edge_count = 1;
+    TRY(rmf_wire_sweep(&line, 1, section, NULL, 0, &options, &twisted));
+    write_shape(twisted, "bar_guided", "a flat bar up a line, turned to point at a helical guide (STEP solid)");
+    write_shape_mesh(twisted, 64, "bar_guided.vtp", "its lateral faces as one mesh");
+    for (k = 0; k <= 64; k++) {
+        RmfVec3 tangent;
+        guide_helix(2 * PH_DEMO_PI * k / 64.0, NULL, &samples[k], &tangent);
+    }
+    write_polyline_vtp("bar_guide.vtp", samples, 65, NULL, NULL, 0, "the guide helix, sampled");
+    for (f = 0; f < rmf_shape_face_count(twisted); f++) {
+        TRY(rmf_shape_face(twisted, f, &face));
+        if (face.kind == RMF_FACE_SWEPT) off = fmax(off, off_helix(face.surface, l / (2 * PH_DEMO_PI)));
+    }
+    TRY(rmf_shape_report(twisted, &report));
+    printf("  a bar turned by a helical guide: its corners run on helices within %.1e (frames within\n"
+           "  %.1e rad of the guide's direction)\n", off, report.frame_error);
+    TRY(rmf_wire_sweep_options_init(&options));
+    options.scale_knots = knots, options.scale_knot_count = 3;
+    TRY(rmf_wire_sweep(&line, 1, circle, NULL, 0, &options, &baluster));
+    write_shape(baluster, "baluster", "a circle along a line through scales 1, 1.6, 0.6, 1.3, 1 (STEP solid)");
+    write_shape_mesh(baluster, 8, "baluster.vtp", "its lateral faces as one mesh");
+    for (f = 0; f < rmf_shape_face_count(baluster); f++) {
+        double u0, u1, v0, v1;
+        int i;
+        TRY(rmf_shape_face(baluster, f, &face));
+        if (face.kind != RMF_FACE_SWEPT) continue;
+        TRY(rmf_surface_domain(face.surface, &u0, &u1, &v0, &v1));
+        for (i = 0; i <= 8; i++)
+            for (k = 0; k <= 8; k++) {
+                RmfVec3 p, du, dv;
+                double z, sigma;
+                int j = 0;
+                TRY(rmf_surface_eval(face.surface, u0 + (u1 - u0) * i / 8.0, v0 + (v1 - v0) * k / 8.0, &p, &du, &dv));
+                z = p.z / l;
+                while (j < 3 && z > at[j + 1]) j++;
+                sigma = ends[j] + (ends[j + 1] - ends[j]) * (z - at[j]) / (at[j + 1] - at[j]);
+                off_scale = fmax(off_scale, fabs(hypot(p.x, p.y) - r * sigma));
+            }
+    }
+    printf("  a baluster through scales 1, 1.6, 0.6, 1.3, 1 at 0, 0.2, 0.5, 0.8, 1 of its height: its\n"
+           "  sections are the circles of those radii, linear between, within %.1e\n", off_scale);
+    rmf_shape_free(baluster);
+    rmf_shape_free(twisted);
+    rmf_curve_free(circle);
+    rmf_curve_free(section);
+    rmf_curve_free(guide);
+}
+
 static void demo_thread_and_taper(void) {
     const double s = 0.70710678118654752440, rise = 2 / (2 * PH_DEMO_PI);
     /* The thread's ridge in the normal plane at the start: f2 is the principal normal
@@ -797,7 +881,8 @@ static void demo_thread_and_taper(void) {
     double distance, frenet_off = 0, rmf_off = 0;
     size_t f;
 
-    printf("9. sweeps as users make them: a thread (Frenet frame) and a tapered pipe (scale law)\n");
+    printf("9. sweeps as users make them: a thread (Frenet frame), a tapered pipe (scale law), a bar\n"
+           "   following a guide curve, a baluster (scale knots)\n");
     TRY(rmf_ph_spline_approximate(NULL, thread_helix, NULL, 0, 6 * PH_DEMO_PI, 1e-5, &helix, &distance));
     TRY(rmf_nurbs_curve_create(1, ridge, NULL, 4, ridge_knots, 6, &triangle));
     memset(edges, 0, sizeof edges);
@@ -836,6 +921,7 @@ static void demo_thread_and_taper(void) {
     rmf_curve_free(circle);
     rmf_curve_free(triangle);
     rmf_curve_free(helix);
+    demo_guide_and_knots();
 }
 
 int main(int argc, char **argv) {

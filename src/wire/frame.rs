@@ -998,7 +998,15 @@ fn law_frames(
             d: s.denominator().to_vec(),
         })
         .collect();
-    turned_frames(&breaks, &bases, &angle, &rate, accuracy)
+    turned_frames(&breaks, &bases, &angle, &rate, accuracy).map_err(|e| match law.name() {
+        // Twist and closure on the RMF: the twist's own message.
+        None => e,
+        Some(name) => crate::error::Error::invalid_input(format!(
+            "frame: the {name} frame cannot be followed along {}: {} (does it jump?)",
+            piece.name(),
+            e.reason().trim_start_matches("twist: ")
+        )),
+    })
 }
 
 /// Rational frames along an arc (its segments on k/n), the RMF f₂ = aN + bB turned by

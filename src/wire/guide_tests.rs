@@ -163,6 +163,18 @@ fn guides_that_do_not_run_beside_the_wire_are_refused_naming_the_option() {
         m.contains("frame: the guide does not run beside the wire"),
         "{m}"
     );
+    // A guide whose nearest crossing jumps to the other side halfway up.
+    let m = refused(guided(
+        vec![
+            line([1., 0., 0.], [1., 0., 1.5]),
+            line([-0.5, 0., 1.5], [-0.5, 0., 3.]),
+        ],
+        1e-4,
+    ));
+    assert!(
+        m.contains("frame: the guide frame cannot be followed along edge 0"),
+        "{m}"
+    );
     let m = refused(guided(vec![], 1e-4));
     assert!(
         m.starts_with("frame: the guide needs at least one edge"),

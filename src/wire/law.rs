@@ -56,6 +56,16 @@ pub(crate) enum FrameLaw {
 }
 
 impl FrameLaw {
+    /// The name of a law other than the RMF, as the options spell it.
+    pub fn name(&self) -> Option<&'static str> {
+        match self {
+            FrameLaw::Rmf => None,
+            FrameLaw::Frenet => Some("frenet"),
+            FrameLaw::Fixed(_) => Some("fixed"),
+            FrameLaw::Guide(_) => Some("guide"),
+        }
+    }
+
     /// The law of `frame`, a guide's points mapped by `unit` (a similarity) to the sweep's
     /// coordinates.
     pub fn new(
