@@ -141,8 +141,8 @@ pub use cone_spline::{
 
 // Sweeps along wires (lines, arcs, curves, corners) into closed solids of exact faces.
 pub use wire::{
-    sweep_wire, sweep_wire_between, Corner, Edge, Face, FaceKind, Shape, SweepFrame, SweepReport,
-    WireSweep, MAX_FACES,
+    sweep_wire, sweep_wire_between, sweep_wire_through, Corner, Edge, Face, FaceKind, Section,
+    Shape, SweepFrame, SweepReport, WireSweep, MAX_FACES,
 };
 // Sheet-metal parts: transition pieces between two curves, thickness and K-factor, the
 // neutral layer's flat pattern, marks between flat and formed [LP].

@@ -1,13 +1,18 @@
-//! Sweeps between two profiles: the section blends from the start profile c₀ to the end
+//! Sweeps between profiles: the section blends from the start profile c₀ to the end
 //! profile c₁ as s = x + (1 − λ) c₀·F + λ c₁·F, λ linear in arc length from 0 to 1 (Mäurer
-//! & Jüttler (1) with a moving profile) — built from the scale law's machinery (`scale`):
+//! & Jüttler (1) with a moving profile) — built from the scale law's machinery (`scale`).
+//! Through more sections, the wire is cut at each (`scale::split_at_knots`) and every
+//! interval blends its two ends, λ from 0 to 1 along it; every profile is matched to the
+//! same edges, so a station's section is one edge shared by the faces on both sides:
 //!
 //! * the profiles are matched loop by loop: the same number of loops (refused otherwise),
 //!   each loop turning the same way; a smooth loop is cut where the other's corners point
 //!   (its points nearest them, each loop in its own size and centre: a circle at a square's
 //!   diagonals), the edges of the one with fewer split at the middle of their longest until
 //!   both have as many, and the end loop's start turned to the joint nearest the start
-//!   loop's;
+//!   loop's (ties, as between a regular polygon's sides, to the first, whatever the
+//!   rounding); through more sections each is matched to the one before, a cut of that
+//!   one made in all before it;
 //! * each pair of matched segments is written over one denominator h₀h₁ (c₀ = C₀h₁/h₀h₁,
 //!   c₁ = C₁h₀/h₀h₁, degree p₀ + p₁): with equal weights the patch of the blend is the sum
 //!   of the patches of c₀ scaled by 1 − λ and of c₁ scaled by λ, less the spine's own term
@@ -31,89 +36,134 @@ pub(crate) struct Blend {
     pub zero: Profile,
 }
 
-/// Matches the end profile to the start profile (module notes).
-pub(crate) fn matched(start: &Profile, end: &Profile) -> Result<Blend> {
-    if start.loops.len() != end.loops.len() {
-        return invalid!(
-            "end_profile: it has {} holes, the profile {}: a sweep between two profiles \
-             matches hole to hole",
-            end.loops.len() - 1,
-            start.loops.len() - 1
-        );
-    }
-    if start.plane.is_some() || end.plane.is_some() {
-        return invalid!(
-            "end_profile: a sweep between two profiles takes both in the normal plane (z = 0)"
-        );
-    }
-    let mut loops = (Vec::new(), Vec::new(), Vec::new());
-    for (l, (a, b)) in start.loops.iter().zip(&end.loops).enumerate() {
-        if a.closed != b.closed {
-            return invalid!(
-                "end_profile: {} is {} where the profile's is {}",
-                if l == 0 {
-                    "the outer loop".to_string()
-                } else {
-                    format!("hole {}", l - 1)
-                },
-                if b.closed { "closed" } else { "open" },
-                if a.closed { "closed" } else { "open" }
-            );
-        }
-        let (p, q, z) = matched_loop(a, b);
-        loops.0.push(p);
-        loops.1.push(q);
-        loops.2.push(z);
-    }
-    Ok(Blend {
-        start: Profile {
-            loops: loops.0,
-            plane: None,
-        },
-        end: Profile {
-            loops: loops.1,
-            plane: None,
-        },
-        zero: Profile {
-            loops: loops.2,
-            plane: None,
-        },
-    })
+/// The blends of a sweep through sections: one per interval between consecutive
+/// stations, and the first piece of the wire in each interval.
+#[derive(Clone, Debug)]
+pub(crate) struct Blends {
+    pub intervals: Vec<Blend>,
+    pub first_piece: Vec<usize>,
 }
 
-/// One pair of loops matched: (start, end, zero) with equal edge counts and, edge by edge,
-/// equal weights.
-fn matched_loop(a: &ProfileLoop, b: &ProfileLoop) -> (ProfileLoop, ProfileLoop, ProfileLoop) {
-    let mut s0 = segments(a);
-    let mut s1 = segments(b);
-    if a.closed && (a.area > 0.0) != (b.area > 0.0) {
-        s1 = s1.iter().rev().map(reversed_segment).collect();
+impl Blends {
+    /// The interval that holds piece `j`.
+    pub fn interval_of(&self, j: usize) -> usize {
+        self.first_piece.partition_point(|&first| first <= j) - 1
     }
-    if a.closed {
-        // Corners onto a smooth loop: it is cut where they fall, so that they meet points
-        // of it, not the middles between its joints (a square onto a circle of quarters).
-        match (corners(&s0).is_empty(), corners(&s1).is_empty()) {
-            (false, true) => cut_at_corners_of(&s0, &mut s1),
-            (true, false) => cut_at_corners_of(&s1, &mut s0),
-            _ => {}
+
+    /// The profile at the wire's end.
+    pub fn end(&self) -> &Profile {
+        &self.intervals[self.intervals.len() - 1].end
+    }
+
+    /// Every section: the start and end of each interval.
+    pub fn sections(&self) -> impl Iterator<Item = &Profile> {
+        self.intervals.iter().flat_map(|b| [&b.start, &b.end])
+    }
+}
+
+/// Matches profiles at consecutive stations along the wire, every loop to its counterpart
+/// in each: the blends between consecutive ones, all with the same edges (a split of one
+/// profile's loop is made in every profile's, so that the sections at the stations are
+/// shared edges). `name` says what refusals call profile k.
+pub(crate) fn matched_sections(
+    profiles: &[Profile],
+    name: &dyn Fn(usize) -> String,
+) -> Result<Vec<Blend>> {
+    let first = &profiles[0];
+    for (i, other) in profiles.iter().enumerate().skip(1) {
+        let name = name(i);
+        if first.loops.len() != other.loops.len() {
+            return invalid!(
+                "{name}: it has {} holes, the profile {}: a sweep between profiles matches \
+                 hole to hole",
+                other.loops.len() - 1,
+                first.loops.len() - 1
+            );
+        }
+        if first.plane.is_some() || other.plane.is_some() {
+            return invalid!(
+                "{name}: a sweep between profiles takes them in the normal plane (z = 0)"
+            );
+        }
+        for (l, (a, b)) in first.loops.iter().zip(&other.loops).enumerate() {
+            if a.closed != b.closed {
+                return invalid!(
+                    "{name}: {} is {} where the profile's is {}",
+                    if l == 0 {
+                        "the outer loop".to_string()
+                    } else {
+                        format!("hole {}", l - 1)
+                    },
+                    if b.closed { "closed" } else { "open" },
+                    if a.closed { "closed" } else { "open" }
+                );
+            }
         }
     }
-    while s0.len() < s1.len() {
-        split_longest(&mut s0);
+    // [interval][loop] → (start, end, zero)
+    let n = profiles.len() - 1;
+    let mut loops: Vec<(Vec<_>, Vec<_>, Vec<_>)> = vec![(Vec::new(), Vec::new(), Vec::new()); n];
+    for l in 0..first.loops.len() {
+        let matched = matched_loops(&profiles.iter().map(|p| &p.loops[l]).collect::<Vec<_>>());
+        for (interval, (p, q, z)) in loops.iter_mut().zip(matched) {
+            interval.0.push(p);
+            interval.1.push(q);
+            interval.2.push(z);
+        }
     }
-    while s1.len() < s0.len() {
-        split_longest(&mut s1);
-    }
-    if a.closed {
-        let shift = nearest_start(&s0, &s1);
-        s1.rotate_left(shift);
-    }
-    let mut triple = (Vec::new(), Vec::new(), Vec::new());
-    for (p, q) in s0.iter().zip(&s1) {
-        let (p, q, z) = common_denominator(p, q);
-        triple.0.push(p);
-        triple.1.push(q);
-        triple.2.push(z);
+    let profile = |loops| Profile { loops, plane: None };
+    Ok(loops
+        .into_iter()
+        .map(|(p, q, z)| Blend {
+            start: profile(p),
+            end: profile(q),
+            zero: profile(z),
+        })
+        .collect())
+}
+
+/// The loops of consecutive sections matched (module notes), each turning as the first:
+/// for each interval between two, (start, end, zero) with equal edge counts and, edge by
+/// edge, equal weights.
+fn matched_loops(loops: &[&ProfileLoop]) -> Vec<(ProfileLoop, ProfileLoop, ProfileLoop)> {
+    let a = loops[0];
+    // The segments of the sections matched so far, index by index.
+    let mut chain: Vec<Vec<RationalBezierCurve>> = vec![segments(a)];
+    for b in &loops[1..] {
+        let mut next = segments(b);
+        if a.closed && (a.area > 0.0) != (b.area > 0.0) {
+            next = next.iter().rev().map(reversed_segment).collect();
+        }
+        let last = chain.len() - 1;
+        if a.closed {
+            // Corners onto a smooth loop: it is cut where they fall, so that they meet
+            // points of it, not the middles between its joints (a square onto a circle of
+            // quarters).
+            match (corners(&chain[last]).is_empty(), corners(&next).is_empty()) {
+                (false, true) => {
+                    let cuts = corner_cuts(&chain[last], &next);
+                    apply_cuts(&mut next, &cuts);
+                }
+                (true, false) => {
+                    let cuts = corner_cuts(&next, &chain[last]);
+                    chain.iter_mut().for_each(|s| apply_cuts(s, &cuts));
+                }
+                _ => {}
+            }
+        }
+        while chain[last].len() < next.len() {
+            let cut = [(longest(&chain[last]), 0.5)];
+            chain.iter_mut().for_each(|s| apply_cuts(s, &cut));
+        }
+        while next.len() < chain[last].len() {
+            let cut = [(longest(&next), 0.5)];
+            apply_cuts(&mut next, &cut);
+        }
+        if a.closed {
+            let shift = nearest_start(&chain[last], &next);
+            next.rotate_left(shift);
+        }
+        chain.push(next);
     }
     let as_loop = |segments: Vec<RationalBezierCurve>, area: f64| ProfileLoop {
         edges: segments
@@ -126,11 +176,33 @@ fn matched_loop(a: &ProfileLoop, b: &ProfileLoop) -> (ProfileLoop, ProfileLoop, 
         closed: a.closed,
         area,
     };
-    (
-        as_loop(triple.0, a.area),
-        as_loop(triple.1, a.area.signum() * b.area.abs()),
-        as_loop(triple.2, a.area),
-    )
+    chain
+        .windows(2)
+        .zip(loops.windows(2))
+        .map(|(pair, given)| {
+            let mut triple = (Vec::new(), Vec::new(), Vec::new());
+            for (p, q) in pair[0].iter().zip(&pair[1]) {
+                let (p, q, z) = common_denominator(p, q);
+                triple.0.push(p);
+                triple.1.push(q);
+                triple.2.push(z);
+            }
+            let sign = a.area.signum();
+            (
+                as_loop(triple.0, sign * given[0].area.abs()),
+                as_loop(triple.1, sign * given[1].area.abs()),
+                as_loop(triple.2, a.area),
+            )
+        })
+        .collect()
+}
+
+/// Splits segment j at t, for each (j, t) in turn.
+fn apply_cuts(segments: &mut Vec<RationalBezierCurve>, cuts: &[(usize, f64)]) {
+    for &(j, t) in cuts {
+        let (left, right) = segments[j].split(t);
+        segments.splice(j..=j, [left, right]);
+    }
 }
 
 fn segments(lp: &ProfileLoop) -> Vec<RationalBezierCurve> {
@@ -147,6 +219,9 @@ fn reversed_segment(s: &RationalBezierCurve) -> RationalBezierCurve {
 
 /// Largest angle between the tangents at a joint that still counts as smooth.
 const SMOOTH: f64 = 1e-6;
+
+/// A cut this close to a segment's end (in its parameter) is the joint there.
+const AT_JOINT: f64 = 1e-6;
 
 /// Samples per segment of the search for the point of a loop nearest a corner.
 const NEAREST_SAMPLES: usize = 64;
@@ -176,9 +251,12 @@ fn normalizer(segments: &[RationalBezierCurve]) -> impl Fn(DVec3) -> DVec3 {
     move |p| (p - centre) / size
 }
 
-/// Cuts the smooth loop `smooth` at its points nearest the corners of `cornered` (each
-/// loop about its centre and in its size).
-fn cut_at_corners_of(cornered: &[RationalBezierCurve], smooth: &mut Vec<RationalBezierCurve>) {
+/// The cuts ([`apply_cuts`], in order) of the smooth loop `smooth` at its points nearest the
+/// corners of `cornered` (each loop about its centre and in its size).
+fn corner_cuts(
+    cornered: &[RationalBezierCurve],
+    smooth: &[RationalBezierCurve],
+) -> Vec<(usize, f64)> {
     let (from, to) = (normalizer(cornered), normalizer(smooth));
     let mut cuts: Vec<(usize, f64)> = corners(cornered)
         .into_iter()
@@ -205,21 +283,22 @@ fn cut_at_corners_of(cornered: &[RationalBezierCurve], smooth: &mut Vec<Rational
             );
             (j, refined.x)
         })
-        .filter(|&(_, t)| t > 1e-9 && t < 1.0 - 1e-9)
+        // A corner that points at a joint already meets it.
+        .filter(|&(_, t)| t > AT_JOINT && t < 1.0 - AT_JOINT)
         .collect();
     // From the last cut back, so that earlier segment indices stay valid; several cuts in
     // one segment from its end back, each in the piece left before it.
     cuts.sort_by(|a, b| b.0.cmp(&a.0).then(b.1.total_cmp(&a.1)));
     cuts.dedup_by(|a, b| a.0 == b.0 && (a.1 - b.1).abs() < 1e-9);
     let mut last: Option<(usize, f64)> = None;
+    let mut ops = Vec::with_capacity(cuts.len());
     for (j, t) in cuts {
         // A later cut in the same segment took the part after it: rescale into what is left.
         let t = match last {
             Some((k, t_after)) if k == j => t / t_after,
             _ => t,
         };
-        let (left, right) = smooth[j].split(t);
-        smooth.splice(j..=j, [left, right]);
+        ops.push((j, t));
         last = Some((
             j,
             match last {
@@ -228,21 +307,34 @@ fn cut_at_corners_of(cornered: &[RationalBezierCurve], smooth: &mut Vec<Rational
             },
         ));
     }
+    ops
 }
 
-/// Splits the segment with the longest control polygon at its middle.
-fn split_longest(segments: &mut Vec<RationalBezierCurve>) {
+/// The segment with the longest control polygon.
+fn longest(segments: &[RationalBezierCurve]) -> usize {
     let length = |s: &RationalBezierCurve| {
         let poles: Vec<DVec3> = s.poles().collect();
         poles.windows(2).map(|w| w[0].distance(w[1])).sum::<f64>()
     };
-    let (k, _) = segments
+    let lengths: Vec<f64> = segments.iter().map(length).collect();
+    first_near(
+        &lengths,
+        lengths.iter().fold(f64::NEG_INFINITY, |a, &b| a.max(b)),
+    )
+}
+
+/// Relative difference within which two lengths or costs are taken as equal, so that ties
+/// (a regular polygon's sides) go to the first index whatever the rounding: the match
+/// does not depend on the profiles' size.
+const TIE: f64 = 1e-9;
+
+/// The first index whose value is within [`TIE`] of `best`.
+fn first_near(values: &[f64], best: f64) -> usize {
+    let slack = TIE * best.abs();
+    values
         .iter()
-        .enumerate()
-        .map(|(k, s)| (k, length(s)))
-        .fold((0, f64::NEG_INFINITY), |a, b| if b.1 > a.1 { b } else { a });
-    let (left, right) = segments[k].split(0.5);
-    segments.splice(k..=k, [left, right]);
+        .position(|&v| (v - best).abs() <= slack)
+        .unwrap_or(0)
 }
 
 /// The turn of the end loop's segments that puts its starts nearest the start loop's, each
@@ -254,13 +346,10 @@ fn nearest_start(s0: &[RationalBezierCurve], s1: &[RationalBezierCurve]) -> usiz
     };
     let (a, b) = (normalized(s0), normalized(s1));
     let n = a.len();
-    (0..n)
-        .map(|r| {
-            let cost: f64 = (0..n).map(|i| a[i].distance(b[(i + r) % n])).sum();
-            (r, cost)
-        })
-        .fold((0, f64::INFINITY), |x, y| if y.1 < x.1 { y } else { x })
-        .0
+    let costs: Vec<f64> = (0..n)
+        .map(|r| (0..n).map(|i| a[i].distance(b[(i + r) % n])).sum())
+        .collect();
+    first_near(&costs, costs.iter().fold(f64::INFINITY, |x, &y| x.min(y)))
 }
 
 /// Two segments over the denominator h₀h₁, and the zero segment with it.

@@ -9,7 +9,7 @@
 //! | `profile` | the cross-section's loops split at their corners, their orientation, extent (support function) and symmetry |
 //! | `frame` | one RMF along the whole wire: constant on lines, the rational frame of arcs, the PH cubic rational RMF (Mäurer & Jüttler (29), (36)–(41)) on curves; twist, closure, the Cor. 7 margin |
 //! | `law` | the Frenet frame, a fixed direction and a guide curve as turns against the RMF (θ' = τ for Frenet; the guide's crossing of each normal plane), unwrapped, their accuracy |
-//! | `blend` | sweeps between two profiles: the profiles matched loop by loop, over common denominators, the blend as sums of scaled sweeps |
+//! | `blend` | sweeps between two profiles or through sections: the profiles matched loop by loop, over common denominators, the blend as sums of scaled sweeps |
 //! | `scale` | the scale law σ piecewise linear in arc length (the wire cut at its knots), as polynomials in each piece's parameter (exact on lines and PH pieces) |
 //! | `oblique` | the fold check of a profile drawn in a plane across the wire other than the normal plane |
 //! | `brep` | the faces (exact cylinders, tori, sweeps (42)), planar caps, shared edges, orientation; the accuracy report |
@@ -176,7 +176,7 @@ pub fn sweep_wire(
     holes: &[PiecewiseCurve],
     options: &WireSweep,
 ) -> Result<Shape> {
-    sweep(edges, profile, holes, None, options)
+    sweep(edges, profile, holes, Stations::none(), options)
 }
 
 /// [`sweep_wire`] from `profile` (with `holes`) at the wire's start to `end_profile` (with
@@ -192,20 +192,87 @@ pub fn sweep_wire_between(
     options: &WireSweep,
 ) -> Result<Shape> {
     check_counts(edges.len(), end_profile, end_holes)?;
+    let end = Section {
+        at: 1.0,
+        profile: end_profile,
+        holes: end_holes,
+    };
+    sweep(edges, profile, holes, Stations::end(&end), options)
+}
+
+/// A profile a sweep passes through (with its holes), in the frame there as the start
+/// profile is in the frame at the start, at `at`: a fraction of the wire's length.
+#[derive(Clone, Copy, Debug)]
+pub struct Section<'a> {
+    /// Where along the wire: 0 at its start, 1 at its end (measured on the given edges, with
+    /// their round corners).
+    pub at: f64,
+    /// The outer loop.
+    pub profile: &'a PiecewiseCurve,
+    /// The holes, as many in every section.
+    pub holes: &'a [PiecewiseCurve],
+}
+
+/// [`sweep_wire`] through `sections` (two or more: the first at 0, the last at 1, the
+/// fractions between strictly increasing), each blended into the next linearly in arc
+/// length (module `blend`): every loop matched to its counterpart in all sections, corner
+/// to corner, so that the sections are shared edges. Open wires; every profile in the
+/// normal plane; a constant scale.
+pub fn sweep_wire_through(
+    edges: &[Edge],
+    sections: &[Section],
+    options: &WireSweep,
+) -> Result<Shape> {
+    check_sections(edges.len(), sections)?;
+    let first = &sections[0];
     sweep(
         edges,
-        profile,
-        holes,
-        Some((end_profile, end_holes)),
+        first.profile,
+        first.holes,
+        Stations {
+            after: &sections[1..],
+            name: "sections",
+        },
         options,
     )
+}
+
+/// The sections a sweep passes through after its start, and what refusals call them.
+#[derive(Clone, Copy)]
+struct Stations<'a> {
+    after: &'a [Section<'a>],
+    name: &'static str,
+}
+
+impl<'a> Stations<'a> {
+    fn none() -> Self {
+        Self {
+            after: &[],
+            name: "",
+        }
+    }
+
+    fn end(end: &'a Section<'a>) -> Self {
+        Self {
+            after: std::slice::from_ref(end),
+            name: "end_profile",
+        }
+    }
+
+    /// How a refusal names section k (of the whole list, the start being 0).
+    fn name_of(&self, k: usize) -> String {
+        match self.name {
+            "end_profile" => self.name.to_string(),
+            name => format!("{name}[{k}]"),
+        }
+    }
 }
 
 fn sweep(
     edges: &[Edge],
     profile: &PiecewiseCurve,
     holes: &[PiecewiseCurve],
-    end: Option<(&PiecewiseCurve, &[PiecewiseCurve])>,
+    stations: Stations,
     options: &WireSweep,
 ) -> Result<Shape> {
     check_options(options)?;
@@ -287,18 +354,17 @@ fn sweep(
     };
     let chain = edge::chain(&raw, options.join_tolerance * size_n, size_n, units)?;
     let profile = Profile::new(&outer, &holes, options.solid, options.join_tolerance, scale)?;
-    let blend = match end {
-        Some((end_profile, end_holes)) => Some(end_blend(
+    let blend = match stations.after.is_empty() {
+        true => None,
+        false => Some(matched_sections(
             &profile,
-            end_profile,
-            end_holes,
+            stations,
             options,
             chain.closed,
             profile_scale,
         )?),
-        None => None,
     };
-    let profile = blend.as_ref().map_or(profile, |b| b.start.clone());
+    let profile = blend.as_ref().map_or(profile, |b| b[0].start.clone());
     if options.scale[0] != options.scale[1] && chain.closed {
         return invalid!(
             "scale: a closed wire must end at the scale it starts with, not {} and {}",
@@ -318,7 +384,11 @@ fn sweep(
         );
     }
     // Its largest distance from the spine takes a root search per profile segment: once.
-    let end_reach = blend.as_ref().map_or(0.0, |b| b.end.reach());
+    let end_reach = blend
+        .iter()
+        .flatten()
+        .map(|b| b.end.reach())
+        .fold(0.0, f64::max);
     let reach = profile.reach();
     let radius = reach.max(end_reach) * largest;
     let mode = match options.corner {
@@ -327,6 +397,24 @@ fn sweep(
         Corner::Round(None) => CornerMode::Round(DEFAULT_RADIUS_FACTOR * radius),
     };
     let chain = edge::split_arcs(corner::resolve(chain, mode, scale, radius)?);
+    // The wire cut at the sections between its ends: the blend is linear along every piece.
+    let inner: Vec<f64> = stations
+        .after
+        .iter()
+        .map(|s| s.at)
+        .filter(|&at| at < 1.0)
+        .collect();
+    let (chain, first_piece) = match &blend {
+        Some(_) => {
+            let (chain, starts) = scale::split_at_knots(chain, &inner)?;
+            (chain, [0].into_iter().chain(starts).collect())
+        }
+        None => (chain, Vec::new()),
+    };
+    let blend = blend.map(|intervals| blend::Blends {
+        intervals,
+        first_piece,
+    });
     // The wire cut at the scale's knots: σ linear along every piece.
     let (chain, knots) = match constant {
         Some(_) => (chain, Vec::new()),
@@ -368,9 +456,16 @@ fn sweep(
             closure_symmetry: options.closure_symmetry.max(1),
             tolerance: options.tolerance / scale,
             units,
-            // Arcs are cut for the blend's λ as for a scale law, |c₁ − c₀| ≤ the reaches.
+            // Arcs are cut for each interval's λ as for a scale law, |c₁ − c₀| ≤ the
+            // reaches: λ up and down from 0 to 1 at every station.
             scale: match &blend {
-                Some(_) => ScaleLaw::linear(0.0, 1.0, estimated.iter().sum()),
+                Some(b) => {
+                    let up_down: Vec<(usize, f64)> = (1..b.intervals.len())
+                        .map(|i| (b.first_piece[i], (i % 2) as f64))
+                        .collect();
+                    let end = (b.intervals.len() % 2) as f64;
+                    ScaleLaw::on_pieces(0.0, &up_down, end, &estimated)
+                }
                 None => law,
             },
             reach: reach + end_reach,
@@ -394,10 +489,12 @@ fn sweep(
             scale,
         )?
     } else if let Some(blend) = &blend {
-        // Every section lies between the two profiles: g ≥ the least of theirs.
-        let start = frame::singularity_margin(&transport, &profile, scale)?.least();
-        let end = frame::singularity_margin(&transport, &blend.end, scale)?.least();
-        frame::Margins::measured(start.min(end), profile.segment_chain())
+        // Every section lies between two profiles: g ≥ the least of theirs.
+        let mut least = frame::singularity_margin(&transport, &profile, scale)?.least();
+        for b in &blend.intervals {
+            least = least.min(frame::singularity_margin(&transport, &b.end, scale)?.least());
+        }
+        frame::Margins::measured(least, profile.segment_chain())
     } else if law.is_constant() {
         frame::singularity_margin(&transport, &profile, scale)?
     } else {
@@ -426,36 +523,77 @@ fn sweep(
     )
 }
 
-/// The end profile in the sweep's coordinates, matched to the start profile (module
-/// `blend`); what a sweep between two profiles cannot take is refused here.
-fn end_blend(
+/// The sections after the start in the sweep's coordinates, matched to the start profile
+/// and to each other (module `blend`): the blend of each interval between two. What a
+/// sweep through sections cannot take is refused here.
+fn matched_sections(
     profile: &Profile,
-    end_profile: &PiecewiseCurve,
-    end_holes: &[PiecewiseCurve],
+    stations: Stations,
     options: &WireSweep,
     closed: bool,
     profile_scale: f64,
-) -> Result<blend::Blend> {
+) -> Result<Vec<blend::Blend>> {
+    let name = stations.name;
     if closed {
         return invalid!(
-            "end_profile: a closed wire ends where it starts, with its start profile; give an \
-             open wire"
+            "{name}: a closed wire ends where it starts, with its start profile; give an open \
+             wire"
         );
     }
     if constant_scale(options).is_none() {
+        return invalid!("scale: with {name} the profiles set the sections; use a constant scale");
+    }
+    let mut profiles = vec![profile.clone()];
+    for (k, section) in stations.after.iter().enumerate() {
+        let outer = section.profile.similar(profile_scale, DVec3::ZERO);
+        let holes: Vec<PiecewiseCurve> = section
+            .holes
+            .iter()
+            .map(|h| h.similar(profile_scale, DVec3::ZERO))
+            .collect();
+        let unit = 1.0 / profile_scale;
+        let section = Profile::new(&outer, &holes, options.solid, options.join_tolerance, unit)
+            .map_err(|e| e.context(stations.name_of(k + 1)))?;
+        profiles.push(section);
+    }
+    blend::matched_sections(&profiles, &|k| stations.name_of(k))
+}
+
+/// Two or more sections, the first at 0 and the last at 1, the fractions strictly
+/// increasing; each with no more holes than a sweep can take.
+fn check_sections(edge_count: usize, sections: &[Section]) -> Result<()> {
+    if sections.len() < 2 {
         return invalid!(
-            "scale: with end_profile the profiles set the sections; use a constant scale"
+            "sections: a sweep through sections needs two or more (the first at 0, the last \
+             at 1), not {}",
+            sections.len()
         );
     }
-    let outer = end_profile.similar(profile_scale, DVec3::ZERO);
-    let holes: Vec<PiecewiseCurve> = end_holes
-        .iter()
-        .map(|h| h.similar(profile_scale, DVec3::ZERO))
-        .collect();
-    let unit = 1.0 / profile_scale;
-    let end = Profile::new(&outer, &holes, options.solid, options.join_tolerance, unit)
-        .map_err(|e| e.context("end_profile"))?;
-    blend::matched(profile, &end)
+    let last = sections.len() - 1;
+    for (k, section) in sections.iter().enumerate() {
+        let at = section.at;
+        let fits = match k {
+            0 => at == 0.0,
+            k if k == last => at == 1.0,
+            k => at > sections[k - 1].at && at < 1.0,
+        };
+        if !fits {
+            return invalid!(
+                "sections[{k}]: at = {at} must be {}",
+                match k {
+                    0 => "0 (the first section is at the wire's start)".to_string(),
+                    k if k == last => "1 (the last section is at the wire's end)".to_string(),
+                    k => format!(
+                        "in ({}, 1), after the section before it",
+                        sections[k - 1].at
+                    ),
+                }
+            );
+        }
+        check_counts(edge_count, section.profile, section.holes)
+            .map_err(|e| e.context(format!("sections[{k}]")))?;
+    }
+    Ok(())
 }
 
 /// Every edge gives at least one lateral face per profile segment: a wire or profile beyond
@@ -621,5 +759,7 @@ mod options_tests;
 mod robustness_tests;
 #[cfg(test)]
 mod scale_knot_tests;
+#[cfg(test)]
+mod section_tests;
 #[cfg(test)]
 pub(crate) mod tests;

@@ -32,7 +32,7 @@
 //! the face is marked reversed). Caps are bounded counter-clockwise about their outward
 //! normal (holes clockwise), so every edge is used once in each direction.
 
-use super::blend::{combined, Blend};
+use super::blend::{combined, Blends};
 use super::clearance::{self_contact, Contact, Tubes};
 use super::edge::Geometry;
 use super::frame::{arc_numerators, Margins, PieceFrame, Transport, CLOSURE_ROUND_OFF};
@@ -446,7 +446,7 @@ fn tubes(
 pub(crate) fn build(
     transport: &Transport,
     profile: &Profile,
-    blend: Option<&Blend>,
+    blend: Option<&Blends>,
     law: &ScaleLaw,
     solid: bool,
     placement: Similarity,
@@ -456,7 +456,7 @@ pub(crate) fn build(
     let m = transport.pieces.len();
     let scales = piece_scales(transport, law)?;
     let blend_scales = match blend {
-        Some(_) => Some(blend_scales(transport)?),
+        Some(b) => Some(blend_scales(transport, b)?),
         None => None,
     };
     // Lateral surfaces, normalized, [piece][loop][edge].
@@ -471,8 +471,9 @@ pub(crate) fn build(
                 .map(|(e, edge)| match (blend, &blend_scales) {
                     (Some(b), Some(laws)) => {
                         let [down, up, ones] = &laws[j];
+                        let b = &b.intervals[b.interval_of(j)];
                         combined(
-                            &lateral(framed, edge, Some(down), false)?,
+                            &lateral(framed, &b.start.loops[l].edges[e], Some(down), false)?,
                             &lateral(framed, &b.end.loops[l].edges[e], Some(up), false)?,
                             &lateral(framed, &b.zero.loops[l].edges[e], Some(ones), false)?,
                         )
@@ -488,11 +489,8 @@ pub(crate) fn build(
     let tubes = tubes(
         transport,
         blend.map_or(profile, |b| {
-            if b.end.reach() > profile.reach() {
-                &b.end
-            } else {
-                profile
-            }
+            b.sections()
+                .fold(profile, |a, c| if c.reach() > a.reach() { c } else { a })
         }),
         law.max(),
         &normalized,
@@ -567,7 +565,7 @@ pub(crate) fn build(
             };
             // A blend ends on its end profile.
             let capped = match (blend, end) {
-                (Some(b), true) => &b.end,
+                (Some(b), true) => b.end(),
                 _ => profile,
             };
             let (face, brep_face) = topology.cap(end, transport, capped, placement, sigma)?;
@@ -626,18 +624,27 @@ pub(crate) fn build(
 }
 
 /// A blend's laws on each piece: 1 − λ, λ and 1 (for the spine's own term), λ linear in
-/// arc length from 0 at the wire's start to 1 at its end.
-fn blend_scales(transport: &Transport) -> Result<Vec<[PieceScale; 3]>> {
-    let length = transport.pieces.iter().map(|p| p.length).sum();
-    let law = |start, end| ScaleLaw::linear(start, end, length);
-    let (down, up, ones) = (law(1.0, 0.0), law(0.0, 1.0), law(1.0, 1.0));
+/// arc length from 0 at the start of the piece's interval to 1 at its end.
+fn blend_scales(transport: &Transport, blends: &Blends) -> Result<Vec<[PieceScale; 3]>> {
+    let lengths: Vec<f64> = transport.pieces.iter().map(|p| p.length).collect();
     let mut s0 = 0.0;
     transport
         .pieces
         .iter()
-        .map(|framed| {
-            let scale =
-                |law: &ScaleLaw| PieceScale::new(&framed.spine, spine_kind(framed), s0, law);
+        .enumerate()
+        .map(|(j, framed)| {
+            let i = blends.interval_of(j);
+            let first = blends.first_piece[i];
+            let last = blends
+                .first_piece
+                .get(i + 1)
+                .copied()
+                .unwrap_or(lengths.len());
+            let law = |start, end| ScaleLaw::on_pieces(start, &[], end, &lengths[first..last]);
+            let (down, up, ones) = (law(1.0, 0.0), law(0.0, 1.0), law(1.0, 1.0));
+            // Arc length from the interval's start.
+            let s = s0 - lengths[..first].iter().sum::<f64>();
+            let scale = |law: &ScaleLaw| PieceScale::new(&framed.spine, spine_kind(framed), s, law);
             let laws = [scale(&down)?, scale(&up)?, scale(&ones)?];
             s0 += framed.length;
             Ok(laws)
