@@ -1800,6 +1800,32 @@ typedef struct RmfWireSweepOptions {
 } RmfWireSweepOptions;
 
 /**
+ * A section of a sweep through sections (rmf_wire_sweep_through): a profile with its holes
+ * at a fraction of the wire's length (all borrowed for the call).
+ * \ingroup rmf_wire
+ */
+typedef struct RmfWireSection {
+  /**
+   * Where along the wire: a fraction of its length (measured with its round corners), 0
+   * for the first section, 1 for the last, strictly increasing between.
+   */
+  double at;
+  /**
+   * The outer loop, in the frame at its station as rmf_wire_sweep's profile is in the
+   * frame at the start (x along f2, y along f3, z = 0 in the normal plane).
+   */
+  const struct RmfCurve *profile;
+  /**
+   * hole_count inner loops (as many in every section), or NULL when hole_count is 0.
+   */
+  const struct RmfCurve *const *holes;
+  /**
+   * Number of holes.
+   */
+  size_t hole_count;
+} RmfWireSection;
+
+/**
  * A lateral face: an exact rational RmfSurface (u along the profile edge, v along the
  * wire).
  * \ingroup rmf_wire
@@ -4813,6 +4839,41 @@ RmfStatus rmf_wire_sweep_between(const struct RmfEdge *edges,
                                  const struct RmfCurve *end_profile,
                                  const struct RmfCurve *const *end_holes,
                                  size_t end_hole_count,
+                                 const struct RmfWireSweepOptions *options,
+                                 struct RmfShape **out);
+
+/**
+ * rmf_wire_sweep through sections: the section passes through each profile of `sections`
+ * at its fraction of the wire's length (the first at 0, the last at 1, strictly increasing
+ * between), blended linearly in arc length from each into the next. Every loop is matched
+ * to its counterpart in all sections (hole to hole, as rmf_wire_sweep_between matches two),
+ * so the section at a station is an edge shared by the faces before and after it: exact
+ * rational faces (along arcs within options->tolerance). Circles of radii a0, a1, ... at
+ * the stations along a line are the chain of frustums of volume
+ * pi/3 sum L_i (a_i^2 + a_i a_(i+1) + a_(i+1)^2).
+ *
+ * @param[in] edges, edge_count, options As for rmf_wire_sweep.
+ * @param[in] sections section_count sections (≥ 2), each profile in the frame at its
+ *            station as rmf_wire_sweep's profile is in the frame at the start (x along
+ *            f2, y along f3, z = 0 in the normal plane), with as many holes as the others.
+ * @param[in] section_count Number of sections (≥ 2).
+ * @param[out] out Receives the shape; free with rmf_shape_free. Untouched on failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If edges, sections, a section's profile, its holes with
+ *         a hole_count > 0, options->scale_knots with a count > 0 or out is NULL (the
+ *         message naming sections[k].profile, sections[k].holes).
+ * @return RMF_ERROR_INVALID_INPUT As for rmf_wire_sweep; also (the message naming
+ *         section_count, sections[k].at, sections[k].profile or sections[k].holes) for
+ *         fewer than two sections, fractions not 0, increasing, 1, a NULL hole, a
+ *         different number of holes, a profile out of the normal plane; and (naming
+ *         sections) a closed wire, or (naming the options' scale) a scale law.
+ * \since 0.2
+ * \ingroup rmf_wire
+ */
+RmfStatus rmf_wire_sweep_through(const struct RmfEdge *edges,
+                                 size_t edge_count,
+                                 const struct RmfWireSection *sections,
+                                 size_t section_count,
                                  const struct RmfWireSweepOptions *options,
                                  struct RmfShape **out);
 

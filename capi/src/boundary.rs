@@ -15,6 +15,9 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 pub(crate) enum FfiError {
     /// A required pointer argument was NULL (its name).
     Null(&'static str),
+    /// A required pointer in an array's element was NULL (its name with the index, e.g.
+    /// `sections[2].profile`).
+    NullAt(String),
     /// A caller buffer was too small (message says what is needed).
     BufferTooSmall(String),
     /// The geometry core refused the input.
@@ -42,6 +45,9 @@ pub(crate) fn guard(function: &str, body: impl FnOnce() -> FfiResult) -> RmfStat
     let (status, message) = match catch_unwind(AssertUnwindSafe(body)) {
         Ok(Ok(())) => return RmfStatus::RmfOk,
         Ok(Err(FfiError::Null(name))) => {
+            (RmfStatus::RmfErrorNullPointer, format!("{name} is NULL"))
+        }
+        Ok(Err(FfiError::NullAt(name))) => {
             (RmfStatus::RmfErrorNullPointer, format!("{name} is NULL"))
         }
         Ok(Err(FfiError::BufferTooSmall(m))) => (RmfStatus::RmfErrorBufferTooSmall, m),

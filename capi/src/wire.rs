@@ -14,8 +14,8 @@ use super::types::RmfVec3;
 use rmfsurf::glam::DVec3;
 use rmfsurf::PiecewiseCurve;
 use rmfsurf::{
-    sweep_wire, sweep_wire_between, Corner, Edge, Error, SpineMethod, SweepFrame, WireSweep,
-    MAX_FACES,
+    sweep_wire, sweep_wire_between, sweep_wire_through, Corner, Edge, Error, Section, SpineMethod,
+    SweepFrame, WireSweep, MAX_FACES,
 };
 
 /// What an RmfEdge is (values fixed, validated).
@@ -83,6 +83,24 @@ pub const RMF_FRAME_FIXED: RmfSweepFrame = 2;
 /// wire.
 /// \ingroup rmf_wire
 pub const RMF_FRAME_GUIDE: RmfSweepFrame = 3;
+
+/// A section of a sweep through sections (rmf_wire_sweep_through): a profile with its holes
+/// at a fraction of the wire's length (all borrowed for the call).
+/// \ingroup rmf_wire
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct RmfWireSection {
+    /// Where along the wire: a fraction of its length (measured with its round corners), 0
+    /// for the first section, 1 for the last, strictly increasing between.
+    pub at: f64,
+    /// The outer loop, in the frame at its station as rmf_wire_sweep's profile is in the
+    /// frame at the start (x along f2, y along f3, z = 0 in the normal plane).
+    pub profile: *const RmfCurve,
+    /// hole_count inner loops (as many in every section), or NULL when hole_count is 0.
+    pub holes: *const *const RmfCurve,
+    /// Number of holes.
+    pub hole_count: usize,
+}
 
 /// Options of rmf_wire_sweep. Initialise with rmf_wire_sweep_options_init, then change
 /// fields; the struct only grows at the end.
@@ -609,6 +627,128 @@ pub unsafe extern "C" fn rmf_wire_sweep_between(
     })
 }
 
+/// rmf_wire_sweep through sections: the section passes through each profile of `sections`
+/// at its fraction of the wire's length (the first at 0, the last at 1, strictly increasing
+/// between), blended linearly in arc length from each into the next. Every loop is matched
+/// to its counterpart in all sections (hole to hole, as rmf_wire_sweep_between matches two),
+/// so the section at a station is an edge shared by the faces before and after it: exact
+/// rational faces (along arcs within options->tolerance). Circles of radii a0, a1, ... at
+/// the stations along a line are the chain of frustums of volume
+/// pi/3 sum L_i (a_i^2 + a_i a_(i+1) + a_(i+1)^2).
+///
+/// @param[in] edges, edge_count, options As for rmf_wire_sweep.
+/// @param[in] sections section_count sections (≥ 2), each profile in the frame at its
+///            station as rmf_wire_sweep's profile is in the frame at the start (x along
+///            f2, y along f3, z = 0 in the normal plane), with as many holes as the others.
+/// @param[in] section_count Number of sections (≥ 2).
+/// @param[out] out Receives the shape; free with rmf_shape_free. Untouched on failure.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If edges, sections, a section's profile, its holes with
+///         a hole_count > 0, options->scale_knots with a count > 0 or out is NULL (the
+///         message naming sections[k].profile, sections[k].holes).
+/// @return RMF_ERROR_INVALID_INPUT As for rmf_wire_sweep; also (the message naming
+///         section_count, sections[k].at, sections[k].profile or sections[k].holes) for
+///         fewer than two sections, fractions not 0, increasing, 1, a NULL hole, a
+///         different number of holes, a profile out of the normal plane; and (naming
+///         sections) a closed wire, or (naming the options' scale) a scale law.
+/// \since 0.2
+/// \ingroup rmf_wire
+#[no_mangle]
+pub unsafe extern "C" fn rmf_wire_sweep_through(
+    edges: *const RmfEdge,
+    edge_count: usize,
+    sections: *const RmfWireSection,
+    section_count: usize,
+    options: *const RmfWireSweepOptions,
+    out: *mut *mut RmfShape,
+) -> RmfStatus {
+    guard("rmf_wire_sweep_through", || {
+        let out = out_ptr(out, "out")?;
+        let edges = checked_edges(edges, edge_count)?;
+        if section_count < 2 {
+            return invalid_arg(format!(
+                "section_count = {section_count}: a sweep through sections needs two or more \
+                 (the first at 0, the last at 1)"
+            ));
+        }
+        face_bound("section_count", section_count)?;
+        let sections = slice(sections, section_count, "sections")?;
+        let edges = wire_edges(edges, EdgeArray::Wire)?;
+        let loops = sections
+            .iter()
+            .enumerate()
+            .map(|(k, s)| section_loops(s, k))
+            .collect::<Result<Vec<_>, _>>()?;
+        let sections: Vec<Section> = sections
+            .iter()
+            .zip(&loops)
+            .map(|(s, (profile, holes))| Section {
+                at: s.at,
+                profile,
+                holes,
+            })
+            .collect();
+        let raw = read_options(options, "options")?;
+        let options = wire_options(&raw)?;
+        let shape = sweep_wire_through(&edges, &sections, &options)
+            .map_err(|e| blame_section(blame_method(e, &raw, &options.scale_knots)))?;
+        write(out, RmfShape::new(shape).into_raw());
+        Ok(())
+    })
+}
+
+/// The outer loop and the holes of section k, each curve borrowed; messages name
+/// `sections[k].profile`, `sections[k].holes`.
+///
+/// # Safety
+/// `section.profile` must be NULL or a valid handle; `section.holes` NULL or pointing to
+/// `section.hole_count` pointers, each NULL or a valid handle.
+unsafe fn section_loops(
+    section: &RmfWireSection,
+    k: usize,
+) -> Result<(PiecewiseCurve, Vec<PiecewiseCurve>), FfiError> {
+    if section.profile.is_null() {
+        return Err(FfiError::NullAt(format!("sections[{k}].profile")));
+    }
+    let profile = reference(section.profile, "sections[].profile")?
+        .rational(&format!("sections[{k}].profile"))?
+        .as_ref()
+        .clone();
+    face_bound(&format!("sections[{k}].hole_count"), section.hole_count)?;
+    if section.hole_count > 0 && section.holes.is_null() {
+        return Err(FfiError::NullAt(format!("sections[{k}].holes")));
+    }
+    let holes = slice(section.holes, section.hole_count, "sections[].holes")?;
+    let holes = curves(holes, &format!("sections[{k}].holes"), "sections[].holes[]")?;
+    Ok((profile, holes))
+}
+
+/// The core's refusals of section k (`sections[k]: …`) on the field of the RmfWireSection
+/// they are about: `sections[k].at`, `sections[k].holes` (a different number, or a hole's
+/// own refusal) or `sections[k].profile`.
+fn blame_section(e: Error) -> Error {
+    let message = e.message();
+    let Some((k, rest)) = message
+        .strip_prefix("sections[")
+        .and_then(|m| m.split_once("]: "))
+        .filter(|(k, _)| k.parse::<usize>().is_ok())
+    else {
+        return e;
+    };
+    let fields = if let Some(at) = rest.strip_prefix("at = ") {
+        format!("sections[{k}].at = {at}")
+    } else if let Some(hole) = rest.strip_prefix("holes[") {
+        format!("sections[{k}].holes[{hole}")
+    } else if let Some(profile) = rest.strip_prefix("profile: ") {
+        format!("sections[{k}].profile: {profile}")
+    } else if rest.contains("hole") {
+        format!("sections[{k}].holes: {rest}")
+    } else {
+        format!("sections[{k}].profile: {rest}")
+    };
+    Error::new(e.kind(), fields)
+}
+
 /// The edges, their count checked first: each edge gives at least one lateral face, so a
 /// count beyond the face bound is refused before any edge is read.
 ///
@@ -651,7 +791,20 @@ unsafe fn loops(
     } else {
         "end_holes[]"
     };
-    slice(holes, count, name)?
+    curves(slice(holes, count, name)?, name, element)
+}
+
+/// The curves of an array of holes, messages naming `name[k]` (`element` for a handle's
+/// alignment).
+///
+/// # Safety
+/// Each pointer must be NULL or a valid handle.
+unsafe fn curves(
+    holes: &[*const RmfCurve],
+    name: &str,
+    element: &'static str,
+) -> Result<Vec<PiecewiseCurve>, FfiError> {
+    holes
         .iter()
         .enumerate()
         .map(|(k, &h)| {

@@ -455,6 +455,55 @@ fn wire_sweep_between(
     }
 }
 
+/// The sections of a sweep through circles of radii 0.5 at 0, 1 at 0.25, 0.3 at 1 (the
+/// curves to free after), which a row then breaks.
+fn three_circles() -> (Vec<RmfWireSection>, Vec<*mut RmfCurve>) {
+    let curves = vec![circle(0.5), circle(1.0), circle(0.3)];
+    let sections = [0.0, 0.25, 1.0]
+        .iter()
+        .zip(&curves)
+        .map(|(&at, &c)| RmfWireSection {
+            at,
+            profile: c,
+            holes: null(),
+            hole_count: 0,
+        })
+        .collect();
+    (sections, curves)
+}
+
+/// rmf_wire_sweep_through along a line of 4 through `section_count` of `sections` (NULL
+/// when `sections` is None; the curves freed after), default options; on failure `*out`
+/// must keep its sentinel, a shape made is freed.
+fn wire_sweep_through(
+    sections: Option<&[RmfWireSection]>,
+    section_count: usize,
+    curves: &[*mut RmfCurve],
+) -> RmfStatus {
+    let edges = [line(v(0., 0., 0.), v(4., 0., 0.))];
+    let sentinel = std::ptr::NonNull::<RmfShape>::dangling().as_ptr();
+    let mut out = sentinel;
+    unsafe {
+        let status = rmf_wire_sweep_through(
+            edges.as_ptr(),
+            edges.len(),
+            sections.map_or(null(), |s| s.as_ptr()),
+            section_count,
+            null(),
+            &mut out,
+        );
+        if status == RmfStatus::RmfOk {
+            rmf_shape_free(out);
+        } else {
+            assert_eq!(out, sentinel, "{status:?}: out written on failure");
+        }
+        for &c in curves {
+            rmf_curve_free(c);
+        }
+        status
+    }
+}
+
 /// A polyline wire through `points` (lines).
 fn polyline(points: &[RmfVec3]) -> Vec<RmfEdge> {
     points.windows(2).map(|w| line(w[0], w[1])).collect()
@@ -1866,6 +1915,74 @@ fn rows() -> Vec<Row> {
             expected: INVALID,
             names: "end_profile: it has 0 holes, the profile 1",
             call: |_| wire_sweep_between(&[circle(0.5)], circle(0.8), &[]),
+        },
+        Row {
+            what: "sweep through sections: sections NULL with a count",
+            function: "rmf_wire_sweep_through",
+            expected: NULL,
+            names: "sections is NULL",
+            call: |_| {
+                let (_, curves) = three_circles();
+                wire_sweep_through(None, 3, &curves)
+            },
+        },
+        Row {
+            what: "sweep through sections: one section",
+            function: "rmf_wire_sweep_through",
+            expected: INVALID,
+            names: "section_count = 1: a sweep through sections needs two or more",
+            call: |_| {
+                let (sections, curves) = three_circles();
+                wire_sweep_through(Some(&sections), 1, &curves)
+            },
+        },
+        Row {
+            what: "sweep through sections: fractions out of order",
+            function: "rmf_wire_sweep_through",
+            expected: INVALID,
+            names: "sections[2].at = 0.2 must be in (0.5, 1)",
+            call: |_| {
+                let (mut sections, mut curves) = three_circles();
+                let extra = circle(0.8);
+                curves.push(extra);
+                sections[1].at = 0.5;
+                sections.insert(
+                    2,
+                    RmfWireSection {
+                        at: 0.2,
+                        profile: extra,
+                        holes: null(),
+                        hole_count: 0,
+                    },
+                );
+                wire_sweep_through(Some(&sections), 4, &curves)
+            },
+        },
+        Row {
+            what: "sweep through sections: a section's profile NULL",
+            function: "rmf_wire_sweep_through",
+            expected: NULL,
+            names: "sections[1].profile is NULL",
+            call: |_| {
+                let (mut sections, curves) = three_circles();
+                sections[1].profile = null();
+                wire_sweep_through(Some(&sections), 3, &curves)
+            },
+        },
+        Row {
+            what: "sweep through sections: a different number of holes",
+            function: "rmf_wire_sweep_through",
+            expected: INVALID,
+            names: "sections[1].holes: it has 1 holes, the profile 0",
+            call: |_| {
+                let (mut sections, mut curves) = three_circles();
+                let hole = circle(0.2);
+                curves.push(hole);
+                let holes = [hole.cast_const()];
+                sections[1].holes = holes.as_ptr();
+                sections[1].hole_count = 1;
+                wire_sweep_through(Some(&sections), 3, &curves)
+            },
         },
         Row {
             what: "face index out of range",

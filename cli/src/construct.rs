@@ -10,8 +10,9 @@ use crate::json::InputError;
 use rmfsurf::glam::DVec3;
 use rmfsurf::{
     approximate_developable, check_g1, framed_spine, framed_spine_through, sweep, sweep_wire,
-    sweep_wire_between, ConeSpline, Developable, Edge, FlatPattern, FramedCurve, PiecewiseCurve,
-    PiecewiseSurface, Rule, RuledSurface, Shape, SheetPart, SweepFrame, TangentSurface, WireSweep,
+    sweep_wire_between, sweep_wire_through, ConeSpline, Developable, Edge, Error, FlatPattern,
+    FramedCurve, PiecewiseCurve, PiecewiseSurface, Rule, RuledSurface, Section, Shape, SheetPart,
+    SweepFrame, TangentSurface, WireSweep,
 };
 
 /// A swept surface with its spine and frames.
@@ -124,7 +125,33 @@ pub fn run_wire(job: &WireJob) -> Result<Shape, InputError> {
         )),
         None => None,
     };
+    let sections = job
+        .sections
+        .iter()
+        .enumerate()
+        .map(|(k, (at, profile, holes))| {
+            let path = format!("sweep.sections[{k}]");
+            Ok((
+                *at,
+                curve(profile, format!("{path}.profile"))?,
+                holes
+                    .iter()
+                    .enumerate()
+                    .map(|(i, h)| curve(h, format!("{path}.holes[{i}]")))
+                    .collect::<Result<Vec<_>, _>>()?,
+            ))
+        })
+        .collect::<Result<Vec<_>, InputError>>()?;
     match &end {
+        Some((end_profile, end_holes)) if !sections.is_empty() => {
+            let all: Vec<Section> = std::iter::once((0.0, &profile, &holes))
+                .chain(sections.iter().map(|(at, p, h)| (*at, p, h)))
+                .chain(std::iter::once((1.0, end_profile, end_holes)))
+                .map(|(at, profile, holes)| Section { at, profile, holes })
+                .collect();
+            sweep_wire_through(&edges, &all, &options)
+                .map_err(|e| Error::new(e.kind(), section_names(&e.message(), sections.len())))
+        }
         Some((end_profile, end_holes)) => {
             sweep_wire_between(&edges, &profile, &holes, end_profile, end_holes, &options)
         }
@@ -171,6 +198,25 @@ fn library_edges(edges: &[WireEdge], path: &str) -> Result<Vec<Edge>, InputError
         .collect()
 }
 
+/// A message of a sweep through sections with the library's `sections[k]` (k of the whole
+/// list: the start profile 0, the end profile `count + 1`) named as the input names them:
+/// `profile`, `sections[k - 1]` (of the `count` intermediate ones), `end_profile`.
+fn section_names(message: &str, count: usize) -> String {
+    let Some((k, rest)) = message
+        .strip_prefix("sections[")
+        .and_then(|m| m.split_once("]: "))
+        .and_then(|(k, rest)| Some((k.parse::<usize>().ok()?, rest)))
+    else {
+        return message.to_string();
+    };
+    let name = match k {
+        0 => "profile".to_string(),
+        k if k == count + 1 => "end_profile".to_string(),
+        k => format!("sections[{}]", k - 1),
+    };
+    format!("{name}: {rest}")
+}
+
 /// The input field a wire sweep's message is about.
 fn wire_blame(message: &str) -> String {
     let number_after = |prefix: &str| {
@@ -186,6 +232,21 @@ fn wire_blame(message: &str) -> String {
             Some(k) => format!("sweep.scale_knots[{k}]"),
             None => "sweep.scale_knots".into(),
         };
+    }
+    if message.starts_with("sections[") {
+        let k = number_after("sections[").unwrap_or(0);
+        let field = match message.split_once("]: ").map(|(_, rest)| rest) {
+            Some(rest) if rest.starts_with("at =") => ".at".to_string(),
+            Some(rest) if rest.starts_with("profile") => ".profile".to_string(),
+            Some(rest) if rest.starts_with("holes[") => {
+                format!(".holes[{}]", number_after("]: holes[").unwrap_or(0))
+            }
+            _ => String::new(),
+        };
+        return format!("sweep.sections[{k}]{field}");
+    }
+    if message.starts_with("sections:") {
+        return "sweep.sections".into();
     }
     if message.starts_with("end_profile") {
         return match number_after("holes[") {

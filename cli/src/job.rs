@@ -105,6 +105,9 @@ pub struct WireJob {
     /// The section at the wire's end and its holes (`"end_profile"`, same coordinates as
     /// the profile): the section blends linearly in arc length from the profile to it.
     pub end_profile: Option<(NurbsCurve, Vec<NurbsCurve>)>,
+    /// The sections between the profile and the end profile (`"sections"`): (fraction of
+    /// the wire's length, profile, holes), the section passing through each.
+    pub sections: Vec<(f64, NurbsCurve, Vec<NurbsCurve>)>,
 }
 
 /// What a sheet-metal part is made from.
@@ -299,6 +302,21 @@ fn wire_job(sweep: schema::Sweep) -> InputResult<WireJob> {
         .end_profile
         .map(|p| profile_with_holes(p, "sweep.end_profile"))
         .transpose()?;
+    let sections = sweep
+        .sections
+        .map(|s| s.into_vec())
+        .unwrap_or_default()
+        .into_iter()
+        .enumerate()
+        .map(|(k, s)| section(s, &format!("sweep.sections[{k}]")))
+        .collect::<InputResult<Vec<_>>>()?;
+    if !sections.is_empty() && end_profile.is_none() {
+        return Err(InputError::at(
+            "sweep.sections",
+            "need \"end_profile\": the sweep runs from \"profile\" at the start through the \
+             sections to \"end_profile\" at the end",
+        ));
+    }
     let frame = match sweep.frame {
         None => WireFrame::Law(rmfsurf::WireSweep::default().frame),
         Some(schema::FrameName::Law(law)) => WireFrame::Law(law),
@@ -342,7 +360,32 @@ fn wire_job(sweep: schema::Sweep) -> InputResult<WireJob> {
             .unwrap_or_default(),
         method: sweep.method.map_or(defaults.method, |m| m.0),
         end_profile,
+        sections,
     })
+}
+
+/// A section of a sweep through sections at `path`: its fraction, its profile at
+/// `path.profile` and its holes at `path.holes[k]` (beside the profile, not in it).
+fn section(
+    section: schema::SectionIn,
+    path: &str,
+) -> InputResult<(f64, NurbsCurve, Vec<NurbsCurve>)> {
+    if section.profile.holes.is_some() {
+        return Err(InputError::at(
+            format!("{path}.profile.holes"),
+            format!("a section's holes go beside its profile: {path}.holes"),
+        ));
+    }
+    let (profile, _) = profile_with_holes(section.profile, &format!("{path}.profile"))?;
+    let holes = section
+        .holes
+        .map(|h| h.into_vec())
+        .unwrap_or_default()
+        .into_iter()
+        .enumerate()
+        .map(|(k, h)| hole_curve(h, &format!("{path}.holes[{k}]")))
+        .collect::<InputResult<Vec<_>>>()?;
+    Ok((section.at.0, profile, holes))
 }
 
 /// A wire sweep's profile (or end profile) at `path` and its holes at `path.holes[k]`.

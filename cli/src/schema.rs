@@ -85,6 +85,16 @@ impl Bound for ScaleKnots {
                                rmfsurf::MAX_FACES lateral faces";
 }
 
+/// Intermediate sections of a wire sweep through sections.
+pub struct Sections;
+
+impl Bound for Sections {
+    const MAX: usize = MAX_FACES;
+    const ITEMS: &'static str = "sections";
+    const WHY: &'static str = "each section cuts the wire, and a wire sweep has at most \
+                               rmfsurf::MAX_FACES lateral faces";
+}
+
 /// Hermite points and tangents of a spine.
 pub struct Points;
 
@@ -153,6 +163,20 @@ pub struct Sweep {
     pub scale_knots: Option<Bounded<ScaleKnot, ScaleKnots>>,
     /// The section at the wire's end (same form as `profile`): a sweep between two profiles.
     pub end_profile: Option<Profile>,
+    /// The sections between the start (`profile`) and the end (`end_profile`): a sweep
+    /// through sections.
+    pub sections: Option<Bounded<SectionIn, Sections>>,
+}
+
+/// `{"at": fraction, "profile": {...}, "holes": [...]}`: a section a sweep passes through,
+/// at a fraction of the wire's length in (0, 1) (increasing from section to section:
+/// checked by the library).
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields, expecting = "an object")]
+pub struct SectionIn {
+    pub at: Fraction,
+    pub profile: Profile,
+    pub holes: Option<Bounded<Hole, Holes>>,
 }
 
 impl Sweep {
@@ -168,6 +192,7 @@ impl Sweep {
             ("scale", self.scale.is_some()),
             ("scale_knots", self.scale_knots.is_some()),
             ("end_profile", self.end_profile.is_some()),
+            ("sections", self.sections.is_some()),
         ]
         .into_iter()
         .filter_map(|(name, given)| given.then_some(name))
@@ -576,8 +601,9 @@ pub struct ScaleKnot(pub (f64, f64));
 
 struct ScaleKnotVisitor;
 
-/// A knot's fraction of the wire's length: a finite number in (0, 1).
-struct Fraction(f64);
+/// A fraction of the wire's length (a knot's, a section's): a finite number in (0, 1).
+#[derive(Debug)]
+pub struct Fraction(pub f64);
 
 impl<'de> Deserialize<'de> for Fraction {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {

@@ -1442,6 +1442,81 @@ fn oversized_inputs_and_lists_are_refused_while_reading() {
     );
 }
 
+/// `"sections"` with `"end_profile"` on wire sweeps: circles of radii 0.5 at 0 (the
+/// profile), 1 at 0.25 (a section) and 0.3 at 1 (the end profile) along a line of 4 are the
+/// chain of two frustums π/3 Σ Lᵢ (aᵢ² + aᵢ aᵢ₊₁ + aᵢ₊₁²) (the summary's volume to 1e-9);
+/// refused naming `sections`: without an end profile, a fraction out of (0, 1), fractions
+/// out of order, a hole the profile has not, the key on a sweep along a curve.
+#[test]
+fn wire_sweeps_through_sections_are_read_and_refused_at_the_field() {
+    let job = |sections: &str, end: &str| {
+        format!(
+            r#"{{"sweep": {{"spine": {{"wire": [{{"line": {{"from": [0, 0, 0], "to": [4, 0, 0]}}}}]}},
+            "profile": {{"circle": {{"radius": 0.5}}}}, {end}"sections": [{sections}]}}}}"#
+        )
+    };
+    let end = r#""end_profile": {"circle": {"radius": 0.3}}, "#;
+    let f = wire_figures(
+        "wire_through_circles",
+        &job(r#"{"at": 0.25, "profile": {"circle": {"radius": 1}}}"#, end),
+    );
+    let volume = f["volume"].as_f64().unwrap();
+    let chain = [(0.0, 0.5), (0.25, 1.0), (1.0, 0.3)];
+    let frustums: f64 = chain
+        .windows(2)
+        .map(|w| {
+            let ((f0, a), (f1, b)) = (w[0], w[1]);
+            std::f64::consts::PI / 3.0 * (f1 - f0) * 4.0 * (a * a + a * b + b * b)
+        })
+        .sum();
+    println!(
+        "circles 0.5 at 0, 1 at 0.25, 0.3 at 1 along a line of 4: volume {volume:.12} against \
+         {frustums:.12}"
+    );
+    assert!(
+        (volume - frustums).abs() <= 1e-9 * frustums,
+        "{volume} against {frustums}"
+    );
+    assert_eq!(f["solid"], serde_json::json!(true));
+    let one = r#"{"at": 0.25, "profile": {"circle": {"radius": 1}}}"#;
+    let cases = [
+        (job(one, ""), "sweep.sections: need \"end_profile\""),
+        (
+            job(r#"{"at": 1, "profile": {"circle": {"radius": 1}}}"#, end),
+            "sweep.sections[0].at: must lie in (0, 1)",
+        ),
+        (
+            job(
+                &format!(r#"{one}, {{"at": 0.2, "profile": {{"circle": {{"radius": 1}}}}}}"#),
+                end,
+            ),
+            "sweep.sections[1].at: sections[1]: at = 0.2 must be in (0.25, 1)",
+        ),
+        (
+            job(
+                r#"{"at": 0.25, "profile": {"circle": {"radius": 1}}, "holes": [{"circle": {"radius": 0.1}}]}"#,
+                end,
+            ),
+            "sweep.sections[0]: sections[0]: it has 1 holes, the profile 0",
+        ),
+        (
+            job(
+                r#"{"at": 0.25, "profile": {"circle": {"radius": 1}, "holes": [{"circle": {"radius": 0.1}}]}}"#,
+                end,
+            ),
+            "sweep.sections[0].profile.holes: a section's holes go beside its profile",
+        ),
+    ];
+    for (k, (json, expected)) in cases.iter().enumerate() {
+        wire_fails_with(&format!("wire_through_bad_{k}"), json, &[expected]);
+    }
+    fails_with(
+        "curve_sections",
+        &GOOD_SWEEP.replace("\"profile\"", &format!(r#""sections": [{one}], "profile""#)),
+        &["sweep.sections: only for a sweep along a wire"],
+    );
+}
+
 /// `"end_profile"` (the form of `"profile"`, its holes too) on wire sweeps: a circle of
 /// radius 1 into one of radius 0.5 along a line of 3 is the frustum π L (r0² + r0 r1 +
 /// r1²)/3 (the summary's volume to 1e-9), a square into a circle a closed solid; refused at

@@ -1,9 +1,10 @@
 """RmfSweep: a planar profile swept along a wire with rotation-minimizing frames (or the
 Frenet frame, a frame following a fixed direction, or one following a Guide curve; the
 profile scaled linearly from ScaleStart to ScaleEnd, through ScaleKnotFractions/
-ScaleKnotScales if given, or blended into an EndProfile), by the library's wire sweep
-(``rmf_wire_sweep``, ``rmf_wire_sweep_between`` with an EndProfile, through
-:func:`rmfsurf.freecad.sweep_with_report`).
+ScaleKnotScales if given, or blended into an EndProfile, through Sections at
+SectionFractions if given), by the library's wire sweep (``rmf_wire_sweep``,
+``rmf_wire_sweep_between`` with an EndProfile, ``rmf_wire_sweep_through`` with Sections,
+through :func:`rmfsurf.freecad.sweep_with_report`).
 
 Lines and circular arcs of the spine give exact cylinders and tori; curve edges are
 swept along a spine within the tolerance by the Method: "ph-rmf" (default), a PH cubic
@@ -44,6 +45,15 @@ class SweepFeature(Feature):
                  "like Profile: the section blends linearly in arc length from Profile into "
                  "it, loop to loop, corner to corner (open spines, ScaleStart = ScaleEnd). "
                  "Empty: Profile all along"),
+        Property("App::PropertyLinkList", "Sections", "Sweep",
+                 "Optional, with EndProfile: the sections the sweep passes through between "
+                 "Profile and EndProfile, of the kinds Profile takes (as many holes), each "
+                 "drawn at the spine's START like EndProfile, at the fraction of the spine's "
+                 "length of the same place in SectionFractions; the section blends linearly "
+                 "in arc length from each into the next. Empty: none"),
+        Property("App::PropertyFloatList", "SectionFractions", "Sweep",
+                 "Where the Sections are: fractions of the spine's length, strictly "
+                 "increasing in (0, 1), one per section (as many)"),
         Property("App::PropertyEnumeration", "Method", "Sweep",
                  "How curve edges are swept: ph-rmf, the PH cubic spline with its rational "
                  "RMF; mobius or rrmf, spines with exact rational RMFs (parameter lines "
@@ -142,19 +152,46 @@ class SweepFeature(Feature):
         radius = obj.CornerRadius.Value
         end_profile = (inputs.profile(obj.EndProfile, "EndProfile") if obj.EndProfile
                        else None)
+        through = sections(obj)
         shape, report = sweep_with_report(
             inputs.wire(obj.Spine, "Spine"), inputs.profile(obj.Profile, "Profile"),
             solid=obj.Solid, corner=obj.Corner, corner_radius=radius if radius > 0 else None,
             tolerance=obj.Tolerance, twist=math.radians(obj.Twist.Value),
             closure_symmetry=obj.ClosureSymmetry, frame=frame,
             scale=(obj.ScaleStart, obj.ScaleEnd), scale_knots=knots, method=obj.Method,
-            end_profile=end_profile)
+            end_profile=end_profile, sections=through)
         obj.Shape = shape
         self.set_outputs(obj, SpineDistance=report.spine_distance,
                          RmfDefect=report.rmf_angle_error,
                          Orthogonality=report.max_parameter_cosine,
                          SingularityMargin=report.singularity_margin,
                          FaceCount=report.face_count, FrameError=report.frame_error)
+
+
+def sections(obj):
+    """The sections between Profile and EndProfile, (fraction, profile) pairs from
+    SectionFractions and Sections: as many of each, the fractions strictly increasing in
+    (0, 1), and an EndProfile; None without sections; ValueError naming the property
+    otherwise."""
+    fractions, links = list(obj.SectionFractions), list(obj.Sections)
+    if len(fractions) != len(links):
+        raise ValueError("Sections, SectionFractions: a section is a profile and a fraction, "
+                         "but there are %d sections and %d fractions"
+                         % (len(links), len(fractions)))
+    if not links:
+        return None
+    if not obj.EndProfile:
+        raise ValueError("Sections: need an EndProfile, the section at the spine's end (the "
+                         "sweep runs from Profile through the Sections to EndProfile)")
+    last = 0.0
+    for k, at in enumerate(fractions):
+        if not last < at < 1:
+            raise ValueError("SectionFractions[%d]: the fraction of the spine's length %r "
+                             "must lie in (0, 1), after the one before it (%r)"
+                             % (k, at, last))
+        last = at
+    return [(at, inputs.profile((link, []), "Sections[%d]" % k))
+            for k, (at, link) in enumerate(zip(fractions, links))]
 
 
 def scale_knots(obj):

@@ -30,7 +30,7 @@ from .curves import (ArrayLike, Curve, NurbsCurve, arc, circle, distinct_knots, 
                      join_nurbs)
 from .frames import SPINE_METHODS, Frames, framed_spine
 from .shapes import (Arc, CurveEdge, Edge, Line, Shape, SweepFrame, SweepReport,
-                     _frame_guide, _frame_start_normal, _named, wire_sweep)
+                     _drawn_sections, _frame_guide, _frame_start_normal, _named, wire_sweep)
 from .sheets import SheetPart
 from .sheets import transition as _transition
 from .surfaces import Surface, sweep_surface
@@ -437,7 +437,8 @@ def sweep(wire: Any, profile: Any, *, solid: bool = True, corner: str = "round",
           corner_radius: Optional[float] = None, tolerance: float = 1e-4,
           frame: SweepFrame = "rmf", scale: Tuple[float, float] = (1.0, 1.0),
           scale_knots: Optional[Sequence[Tuple[float, float]]] = None,
-          method: str = "ph-rmf", end_profile: Any = None) -> Any:
+          method: str = "ph-rmf", end_profile: Any = None,
+          sections: Optional[Sequence[Tuple[Any, ...]]] = None) -> Any:
     """Sweeps `profile` along `wire` (rmf_wire_sweep), by default with rotation-minimizing
     frames.
 
@@ -479,6 +480,13 @@ def sweep(wire: Any, profile: Any, *, solid: bool = True, corner: str = "round",
             (rmf_wire_sweep_between). To taper a circle of radius 2 into one of radius 1,
             draw both circles about the wire's start. Open wires and a constant `scale`
             only; `profile` must lie in the normal plane too.
+        sections: the sections the sweep passes through between `profile` and `end_profile`
+            (required with them): ``(at, profile)`` items, `at` the fraction of the wire's
+            length strictly increasing in (0, 1), each profile of the kinds `profile` takes
+            (as many holes), DRAWN AT THE WIRE'S START like `end_profile`, in the same
+            placement as `profile`, and carried to its station by the frame; the section
+            blends linearly in arc length from each into the next (rmf_wire_sweep_through;
+            see :func:`rmfsurf.wire_sweep`). Refusals name ``sections[k]``.
 
     Returns:
         A Part.Shape: a Part.Solid (or a Part.Shell with ``solid=False``).
@@ -486,7 +494,7 @@ def sweep(wire: Any, profile: Any, *, solid: bool = True, corner: str = "round",
     return sweep_with_report(wire, profile, solid=solid, corner=corner,
                              corner_radius=corner_radius, tolerance=tolerance, frame=frame,
                              scale=scale, scale_knots=scale_knots, method=method,
-                             end_profile=end_profile)[0]
+                             end_profile=end_profile, sections=sections)[0]
 
 
 def sweep_with_report(wire: Any, profile: Any, *, solid: bool = True, corner: str = "round",
@@ -494,13 +502,14 @@ def sweep_with_report(wire: Any, profile: Any, *, solid: bool = True, corner: st
                       twist: float = 0.0, closure_symmetry: int = 0,
                       frame: SweepFrame = "rmf", scale: Tuple[float, float] = (1.0, 1.0),
                       scale_knots: Optional[Sequence[Tuple[float, float]]] = None,
-                      method: str = "ph-rmf", end_profile: Any = None
+                      method: str = "ph-rmf", end_profile: Any = None,
+                      sections: Optional[Sequence[Tuple[Any, ...]]] = None
                       ) -> Tuple[Any, SweepReport]:
     """:func:`sweep` with the wire sweep's `twist` (radians over the whole wire) and
     `closure_symmetry` (closed wires: the frame closes modulo 2π/k; 0 is taken as 1),
     returning the Part.Shape and the library's :class:`rmfsurf.SweepReport` (spine
     distance, RMF angle error, parameter-line orthogonality, singularity margin, face
-    count, frame error)."""
+    count, frame error). `end_profile` and `sections` as for :func:`sweep`."""
     tolerance = _core.finite(tolerance, "tolerance", positive=True)
     edges = _path_edges(wire, "wire")
     guide = _frame_guide(frame)
@@ -516,12 +525,14 @@ def sweep_with_report(wire: Any, profile: Any, *, solid: bool = True, corner: st
         # In the same coordinates as the profile: the frame (f2, f3, t) at the start.
         end_outer, end_holes, _ = _profile_curves(end_profile, origin, tangent, tolerance, f2,
                                                   "end_profile")
+    through = _drawn_sections(sections, lambda face, name: _profile_curves(
+        face, origin, tangent, tolerance, f2, name))
     result = wire_sweep(edges, outer, holes, solid=solid, corner=corner,
                         corner_radius=corner_radius, tolerance=tolerance,
                         initial_normal=f2 if _named(frame, "rmf") else None, twist=twist,
                         closure_symmetry=closure_symmetry, frame=frame, scale=scale,
                         scale_knots=scale_knots, method=method, end_profile=end_outer,
-                        end_holes=end_holes)
+                        end_holes=end_holes, sections=through)
     return part_shape(result, min(tolerance, 1e-6)), result.report()
 
 

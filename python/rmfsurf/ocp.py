@@ -37,7 +37,7 @@ from . import _core
 from .curves import ArrayLike, Curve, NurbsCurve, join_nurbs
 from .sheets import SheetPart
 from .shapes import (Arc, CurveEdge, Edge, Line, Shape, SweepFrame, _frame_guide,
-                     _frame_start_normal, _named, wire_sweep)
+                     _drawn_sections, _frame_start_normal, _named, wire_sweep)
 from .surfaces import Surface
 
 from OCP.BRep import BRep_Builder, BRep_Tool
@@ -508,7 +508,8 @@ def sweep(path: Any, profile: Any, *, solid: bool = True, corner: str = "round",
           corner_radius: Optional[float] = None, tolerance: float = 1e-4,
           frame: SweepFrame = "rmf", scale: Tuple[float, float] = (1.0, 1.0),
           scale_knots: Optional[Sequence[Tuple[float, float]]] = None,
-          method: str = "ph-rmf", end_profile: Any = None) -> Any:
+          method: str = "ph-rmf", end_profile: Any = None,
+          sections: Optional[Sequence[Tuple[Any, ...]]] = None) -> Any:
     """Sweeps `profile` along `path` (rmf_wire_sweep), by default with rotation-minimizing
     frames.
 
@@ -551,6 +552,14 @@ def sweep(path: Any, profile: Any, *, solid: bool = True, corner: str = "round",
             loop, corner to corner (rmf_wire_sweep_between). To taper a circle of radius
             2 into one of radius 1, draw both circles about the path's start. Open paths
             and a constant `scale` only; `profile` must lie in the normal plane too.
+        sections: the sections the sweep passes through between `profile` and `end_profile`
+            (required with them): ``(at, profile)`` items, `at` the fraction of the path's
+            length strictly increasing in (0, 1), each profile a planar Face or Wire of the
+            kind of `profile` (as many holes), DRAWN AT THE PATH'S START like `end_profile`,
+            in the same placement as `profile`, and carried to its station by the frame; the
+            section blends linearly in arc length from each into the next
+            (rmf_wire_sweep_through; see :func:`rmfsurf.wire_sweep`). Refusals name
+            ``sections[k]``.
 
     Returns:
         A ``TopoDS_Solid`` (or shell) — a build123d ``Solid`` / CadQuery ``Shape`` when
@@ -570,10 +579,12 @@ def sweep(path: Any, profile: Any, *, solid: bool = True, corner: str = "round",
         # In the same coordinates as the profile: the frame (f2, f3, t) at the start.
         end_outer, end_holes, _ = _profile_curves(end_profile, origin, tangent, tolerance, f2,
                                                   "end_profile")
+    through = _drawn_sections(sections, lambda face, name: _profile_curves(
+        face, origin, tangent, tolerance, f2, name))
     result = wire_sweep(edges, outer, holes, solid=solid, corner=corner,
                         corner_radius=corner_radius, tolerance=tolerance,
                         initial_normal=f2 if _named(frame, "rmf") else None, frame=frame,
                         scale=scale, scale_knots=scale_knots, method=method,
                         end_profile=end_outer,
-                        end_holes=end_holes)
+                        end_holes=end_holes, sections=through)
     return _wrap_like(path, shape(result, min(tolerance, 1e-6)))

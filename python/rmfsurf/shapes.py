@@ -11,11 +11,13 @@ coordinates.
 
 from __future__ import annotations
 
+import collections.abc
 import math
 import os
+import re
 from collections.abc import Iterable
 from dataclasses import dataclass
-from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
+from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -419,6 +421,70 @@ class Shape:
         return "<rmfsurf.Shape %d faces%s>" % (self.face_count, ", solid" if self.is_solid else "")
 
 
+def _is_empty(value: Any, name: str) -> bool:
+    """Whether a sequence argument has no items (TypeError naming it if it is no sequence)."""
+    if isinstance(value, (str, bytes)) or not isinstance(value, collections.abc.Sequence):
+        raise TypeError("%s: expected a sequence of (at, profile[, holes]) items, got %s"
+                        % (name, type(value).__name__))
+    return len(value) == 0
+
+
+def _sections(sections: Sequence[Any]) -> List[Tuple[float, Curve, List[Curve]]]:
+    """The intermediate sections of a sweep through sections: (at, profile[, holes]) items
+    as (fraction, curve, holes), each checked for its type and named ``sections[k]``."""
+    result = []
+    for k, item in enumerate(sections):
+        name = "sections[%d]" % k
+        if isinstance(item, (str, bytes)) or not isinstance(item, collections.abc.Sequence) \
+                or len(item) not in (2, 3):
+            raise TypeError("%s: expected (at, profile) or (at, profile, holes), got %r"
+                            % (name, item))
+        at = _core.number(item[0], name + ".at")
+        curve = as_curve(item[1], name + ".profile")
+        holes = _core.objects(item[2] if len(item) == 3 else (), name + ".holes", Curve,
+                              "an rmfsurf.Curve")
+        result.append((at, curve, holes))
+    return result
+
+
+def _drawn_sections(sections: Any, convert: Callable[[Any, str], Any]
+                    ) -> Optional[List[Tuple[float, Curve, List[Curve]]]]:
+    """The adapters' `sections`: ``(at, profile)`` items whose profiles are drawn at the
+    path's start, each converted by ``convert(profile, "sections[k]")`` (the adapter's
+    profile conversion in the start frame's coordinates, returning outer, holes, ...) into
+    the ``(at, curve, holes)`` items :func:`wire_sweep` takes; None stays None."""
+    if sections is None:
+        return None
+    _is_empty(sections, "sections")
+    result = []
+    for k, item in enumerate(sections):
+        name = "sections[%d]" % k
+        if isinstance(item, (str, bytes)) or not isinstance(item, collections.abc.Sequence) \
+                or len(item) != 2:
+            raise TypeError("%s: expected (at, profile), got %r" % (name, item))
+        at = _core.number(item[0], name + ".at")
+        outer, holes = convert(item[1], name)[:2]
+        result.append((at, outer, holes))
+    return result
+
+
+def _renamed_sections(error: Any, count: int) -> Any:
+    """The library's refusal of a sweep through sections with its ``sections[k]`` (k of the
+    whole list: 0 the start profile, count + 1 the end profile) named as the caller's
+    arguments: ``profile``/``holes``, ``sections[k - 1]``, ``end_profile``/``end_holes``."""
+    def name(match: Any) -> str:
+        k, field = int(match.group(1)), match.group(2) or ""
+        if 1 <= k <= count:
+            return "sections[%d]%s" % (k - 1, field)
+        start = k == 0
+        if field.startswith(".holes"):
+            return ("holes" if start else "end_holes") + field[len(".holes"):]
+        return "profile" if start else "end_profile"
+    message = re.sub(r"\bsections\[(\d+)\]((?:\.at|\.profile|\.holes)(?:\[\d+\])?)?", name,
+                     error.message)
+    return type(error)(message, error.status, error.function)
+
+
 def wire_sweep(edges: Union[Edge, Sequence[Edge]], profile: Curve,
                holes: Union[Curve, Sequence[Curve]] = (), *,
                solid: bool = True, corner: str = "round",
@@ -429,7 +495,8 @@ def wire_sweep(edges: Union[Edge, Sequence[Edge]], profile: Curve,
                scale: Tuple[float, float] = (1.0, 1.0),
                scale_knots: Optional[Sequence[Tuple[float, float]]] = None,
                method: str = "ph-rmf", end_profile: Optional[Curve] = None,
-               end_holes: Union[Curve, Sequence[Curve]] = ()) -> Shape:
+               end_holes: Union[Curve, Sequence[Curve]] = (),
+               sections: Optional[Sequence[Tuple[Any, ...]]] = None) -> Shape:
     """Sweeps a closed profile (with `holes`) along a connected wire of `edges`.
 
     Args:
@@ -484,6 +551,16 @@ def wire_sweep(edges: Union[Edge, Sequence[Edge]], profile: Curve,
             `scale_knots`), both profiles in the normal plane.
         end_holes: the end profile's holes (or one curve), as many as `holes`, matched in
             order; only with `end_profile`.
+        sections: the sections the sweep passes through between `profile` (at 0) and
+            `end_profile` (at 1, required with them): ``(at, profile)`` or ``(at, profile,
+            holes)`` items, `at` the fraction of the wire's length strictly increasing in
+            (0, 1), each profile an rmfsurf.Curve in the frame at its station as `profile`
+            is in the frame at the start (x along f2, y along f3, z = 0), with as many holes
+            (one curve or a sequence) as `holes`. The section blends linearly in arc length
+            from each into the next, every loop matched to its counterpart in all of them
+            (rmf_wire_sweep_through): circles of radii 0.5, 1, 0.3 at 0, 0.25, 1 along a
+            line are a chain of two frustums. Refusals name ``sections[k]`` (k counting
+            these items) or the field, e.g. ``sections[0].at``.
     """
     _require_wire_sweep()
     array, count, keep = _edges(edges)
@@ -520,7 +597,27 @@ def wire_sweep(edges: Union[Edge, Sequence[Edge]], profile: Curve,
         options.scale_knot_count = len(knots)
     options.method = _wire_method(method)
     out = ffi.new("RmfShape **")
-    if end_profile is None:
+    if sections is not None and not _is_empty(sections, "sections"):
+        if end_profile is None:
+            raise _core._refused("sections", "need end_profile: the sweep runs from profile "
+                                 "at the start through the sections to end_profile at the "
+                                 "end")
+        end = as_curve(end_profile, "end_profile")
+        end_list = _core.objects(end_holes, "end_holes", Curve, "an rmfsurf.Curve")
+        stations = ([(0.0, prof, hole_list)] + _sections(sections)
+                    + [(1.0, end, end_list)])
+        arrays = [ffi.new("RmfCurve *[]", [h._ptr for h in holes] or [ffi.NULL])
+                  for _, _, holes in stations]
+        c_sections = ffi.new("RmfWireSection[]", len(stations))
+        for c, (at, curve, holes), hole_array_k in zip(c_sections, stations, arrays):
+            c.at, c.profile, c.holes, c.hole_count = at, curve._ptr, hole_array_k, len(holes)
+        try:
+            call("rmf_wire_sweep_through", array, count, c_sections, len(stations), options,
+                 out)
+        except _core.RmfError as error:
+            raise _renamed_sections(error, len(stations) - 2) from None
+        del stations, arrays, c_sections
+    elif end_profile is None:
         if _core.objects(end_holes, "end_holes", Curve, "an rmfsurf.Curve"):
             raise _core._refused("end_holes", "holes of the end profile need end_profile")
         call("rmf_wire_sweep", array, count, prof._ptr, hole_array, len(hole_list), options,

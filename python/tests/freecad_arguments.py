@@ -350,6 +350,56 @@ def test_every_end_profile_of_the_adapter_has_its_cases_and_is_taken():
         assert solid.isValid() and solid.ShapeType == "Solid"
 
 
+# Sections (a sweep through sections): (at, profile) items between the profile and the end
+# profile, each drawn at the wire's start like it; refusals name sections[k].
+SECTIONS = [
+    ("freecad.sweep(sections)",
+     lambda v: rfc.sweep(IN.wire, IN.ring, end_profile=_end_ring(0.5), sections=v)),
+    ("freecad.sweep_with_report(sections)",
+     lambda v: rfc.sweep_with_report(IN.wire, IN.ring, end_profile=_end_ring(0.5),
+                                     sections=v)),
+]
+
+BAD_SECTIONS = [
+    ("int", lambda: 3, TypeError, "sections"),
+    ("an item of three", lambda: [(0.5, _end_ring(0.8), 1)], TypeError, "sections[0]"),
+    ("a profile that is none", lambda: [(0.5, 3)], TypeError, "sections[0]"),
+    ("at 1", lambda: [(1.0, _end_ring(0.8))], rmfsurf.InvalidInputError,
+     "sections[0].at = 1 must be in (0, 1)"),
+    ("out of order", lambda: [(0.5, _end_ring(0.8)), (0.25, _end_ring(0.7))],
+     rmfsurf.InvalidInputError, "sections[1].at = 0.25 must be in (0.5, 1)"),
+    ("a hole", lambda: [(0.5, _end_ring(0.8, hole=0.2))], rmfsurf.InvalidInputError,
+     "sections[0].holes: it has 1 holes, the profile 0"),
+    ("tilted", lambda: [(0.5, _end_ring(0.8, normal=(1, 1, 0)))], rmfsurf.InvalidInputError,
+     "sections[0]"),
+]
+
+
+@pytest.mark.parametrize("case, bad", [
+    pytest.param(c, b, id="%s-%s" % (c[0], b[0])) for c in SECTIONS for b in BAD_SECTIONS])
+def test_bad_sections_name_the_argument(case, bad):
+    _, value, exception, mention = bad
+    refused(case[1], value(), exception, mention)
+
+
+def test_every_sections_argument_of_the_adapter_has_its_cases_and_is_taken():
+    """Every function of the adapter taking `sections` has SECTIONS cases, each taking two
+    circles drawn at the wire's start into a closed solid; without an end profile they are
+    refused naming `sections`."""
+    required = {"freecad.%s(sections)" % name for name in dir(rfc)
+                if not name.startswith("_") and inspect.isfunction(getattr(rfc, name))
+                and getattr(getattr(rfc, name), "__module__", "") == "rmfsurf.freecad"
+                and "sections" in inspect.signature(getattr(rfc, name)).parameters}
+    assert {"freecad.sweep(sections)", "freecad.sweep_with_report(sections)"} <= required
+    assert required <= {c[0] for c in SECTIONS}, required - {c[0] for c in SECTIONS}
+    for _, call in SECTIONS:
+        result = call([(0.25, _end_ring(0.8)), (0.5, _end_ring(0.6))])
+        solid = result[0] if isinstance(result, tuple) else result
+        assert solid.isValid() and solid.ShapeType == "Solid"
+    refused(lambda v: rfc.sweep(IN.wire, IN.ring, sections=v), [(0.5, _end_ring(0.8))],
+            rmfsurf.InvalidInputError, "sections: need end_profile")
+
+
 CASES = {
     "integer": {c[0] for c in INTEGERS},
     "number": {c[0] for c in NUMBERS},

@@ -737,6 +737,90 @@ def test_every_end_profile_of_a_wire_sweep_has_its_cases():
     assert required <= {c[0] for c in END_PROFILES}, required - {c[0] for c in END_PROFILES}
 
 
+# Sections (a sweep through sections): (at, profile[, holes]) between the profile and the
+# end profile; refusals name sections[k] as the caller counts them.
+SECTIONS = [
+    ("wire_sweep(sections)",
+     lambda v: rmfsurf.wire_sweep(BAR, circle(1.0), end_profile=circle(0.5), sections=v),
+     lambda at, r, holes=(): ((at, circle(r), [circle(h) for h in holes]) if holes
+                              else (at, circle(r)))),
+    ("ocp.sweep(sections)",
+     lambda v: IN.ocp.sweep(IN.route, IN.ring, end_profile=_start_face(0.5), sections=v),
+     lambda at, r, holes=(): (at, _start_face(r, holes))),
+]
+
+
+def _start_face(radius, holes=()):
+    """A circle face of `radius` about the route's start, in its normal plane (with holes of
+    the radii `holes`)."""
+    plane = IN.bd.Plane(origin=(0, 0, 0), z_dir=(1, 0, 0))
+    face = plane * IN.bd.Circle(radius)
+    for r in holes:
+        face = face - plane * IN.bd.Circle(r)
+    return face
+
+
+def bad_sections(case):
+    """(label, value factory, exception, what the message names) for a case of SECTIONS."""
+    item = case[2]
+    bad = [("int", lambda: 3, TypeError, "sections"),
+           ("str", lambda: "circle", TypeError, "sections"),
+           ("an item of one", lambda: [(0.5,)], TypeError, "sections[0]"),
+           ("a profile that is none", lambda: [(0.5, 3)], TypeError, "sections[0]"),
+           ("at 0", lambda: [item(0.0, 0.8)], rmfsurf.InvalidInputError,
+            "sections[0].at = 0 must be in (0, 1)"),
+           ("at 1", lambda: [item(1.0, 0.8)], rmfsurf.InvalidInputError,
+            "sections[0].at = 1 must be in (0, 1)"),
+           ("at NaN", lambda: [item(math.nan, 0.8)], rmfsurf.InvalidInputError,
+            "sections[0].at = NaN"),
+           ("out of order", lambda: [item(0.5, 0.8), item(0.25, 0.7)],
+            rmfsurf.InvalidInputError, "sections[1].at = 0.25 must be in (0.5, 1)"),
+           ("a hole the profile has not", lambda: [item(0.5, 0.8), item(0.75, 0.7, (0.2,))],
+            rmfsurf.InvalidInputError, "sections[1].holes: it has 1 holes, the profile 0")]
+    if case[0] == "wire_sweep(sections)":
+        bad.append(("holes that are none", lambda: [(0.5, circle(0.8), 3)], TypeError,
+                    "sections[0].holes"))
+    return [pytest.param(case, b, id="%s-%s" % (case[0], b[0])) for b in bad]
+
+
+@pytest.mark.parametrize("case, bad", [p for c in SECTIONS for p in bad_sections(c)])
+def test_bad_sections_name_the_argument(case, bad):
+    _, value, exception, mention = bad
+    refused(case[1], value(), exception, mention)
+
+
+@pytest.mark.parametrize("case", SECTIONS, ids=[c[0] for c in SECTIONS])
+def test_good_sections_are_taken_and_need_an_end_profile(case):
+    case[1]([case[2](0.25, 0.8), case[2](0.5, 0.6)])
+    case[1]([])
+    without = (lambda v: rmfsurf.wire_sweep(BAR, circle(1.0), sections=v)) \
+        if case[0].startswith("wire_sweep") else (lambda v: IN.ocp.sweep(IN.route, IN.ring,
+                                                                         sections=v))
+    refused(without, [case[2](0.5, 0.8)], rmfsurf.InvalidInputError,
+            "sections: need end_profile")
+
+
+def test_a_refusal_of_the_end_profile_through_sections_names_it():
+    """The library counts the profile and the end profile among the sections: its refusals
+    of them name `holes`, `end_profile` and `end_holes` as the caller gave them."""
+    refused(lambda v: rmfsurf.wire_sweep(BAR, circle(1.0), end_profile=v,
+                                         sections=[(0.5, circle(0.8))]),
+            _ring_in_a_tilted_plane(), rmfsurf.InvalidInputError,
+            "rmf_wire_sweep_through: end_profile: a sweep between profiles takes them in the "
+            "normal plane")
+    refused(lambda v: rmfsurf.wire_sweep(BAR, circle(1.0), end_profile=circle(0.5),
+                                         end_holes=v, sections=[(0.5, circle(0.8))]),
+            circle(0.1), rmfsurf.InvalidInputError, "end_holes: it has 1 holes, the profile 0")
+
+
+def test_every_sections_argument_of_a_wire_sweep_has_its_cases():
+    """Every public function taking `sections` has SECTIONS cases."""
+    required = {"%s(sections)" % name for name, parameters in wire_sweep_functions()
+                if "sections" in parameters}
+    assert {"wire_sweep(sections)", "ocp.sweep(sections)"} <= required, required
+    assert required <= {c[0] for c in SECTIONS}, required - {c[0] for c in SECTIONS}
+
+
 BOXES = [
     ("ConeSpline.bounds_in_box(box)", lambda v: IN.cone.bounds_in_box(v)),
     ("cone_spline_hermite(region)", lambda v: rmfsurf.cone_spline_hermite(IN.elements, region=v)),

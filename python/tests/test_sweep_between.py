@@ -2,7 +2,10 @@
 the geometry, rmf_wire_sweep_between): two concentric circles along a line are the frustum
 π L (r0² + r0 r1 + r1²)/3 by OpenCascade's integration; a square face into a circle face,
 both drawn at the start of a build123d line, is one valid solid whose volume lies between
-the two prisms. (The bad arguments are in test_arguments.py.)"""
+the two prisms. Through sections (rmf_wire_sweep_through): three circles along a build123d
+line are the chain of two frustums π/3 Σ Lᵢ (aᵢ² + aᵢ aᵢ₊₁ + aᵢ₊₁²) by OpenCascade's
+integration; a square through a circle into a triangle is one valid solid. (The bad
+arguments are in test_arguments.py.)"""
 
 import math
 
@@ -79,3 +82,63 @@ def test_ocp_sweeps_a_square_face_into_a_circle_face_along_a_build123d_line():
     bounds = solid.bounding_box()
     assert abs(bounds.min.X) < 1e-4 and abs(bounds.max.X - length) < 1e-4, bounds
     assert abs(bounds.max.Y - radius) < 1e-4, bounds
+
+
+def frustum_chain(length, stations):
+    """π/3 Σ Lᵢ (aᵢ² + aᵢ aᵢ₊₁ + aᵢ₊₁²) of circles of radii a at fractions f of `length`."""
+    return sum(math.pi / 3 * (f1 - f0) * length * (a * a + a * b + b * b)
+               for (f0, a), (f1, b) in zip(stations, stations[1:]))
+
+
+def test_three_circles_through_a_build123d_line_are_the_chain_of_frustums():
+    """Radii 0.5 at 0, 1 at 0.25 and 0.3 at 1 along a line of 4, every circle drawn at the
+    line's start (ocp.sweep's convention); rmfsurf.wire_sweep with the same circles as
+    Curves gives the same volume."""
+    length, stations = 4.0, [(0.0, 0.5), (0.25, 1.0), (1.0, 0.3)]
+    line = bd.Line((0, 0, 0), (length, 0, 0))
+    plane = bd.Plane(origin=(0, 0, 0), z_dir=(1, 0, 0))
+    circle = lambda r: plane * bd.Circle(r)  # noqa: E731
+    solid = rocp.sweep(line, circle(0.5), end_profile=circle(0.3),
+                       sections=[(0.25, circle(1.0))])
+    raw = getattr(solid, "wrapped", solid)
+    assert BRepCheck_Analyzer(raw).IsValid()
+    assert solids_of(solid) == 1
+    exact = frustum_chain(length, stations)
+    volume = occ_volume(solid)
+    print("\ncircles 0.5 at 0, 1 at 0.25, 0.3 at 1 through a build123d line of 4: volume %.15f "
+          "vs the frustums %.15f (relative %.1e)" % (volume, exact, abs(volume - exact) / exact))
+    assert abs(volume - exact) <= 1e-9 * exact
+    shape = rmfsurf.wire_sweep([rmfsurf.Line((0, 0, 0), (length, 0, 0))], rmfsurf.circle(0.5),
+                               end_profile=rmfsurf.circle(0.3),
+                               sections=[(0.25, rmfsurf.circle(1.0))])
+    assert shape.is_solid
+    volume = occ_volume(rocp.shape(shape))
+    assert abs(volume - exact) <= 1e-9 * exact, (volume, exact)
+    # Without the middle section: one frustum, another volume.
+    straight = occ_volume(rocp.shape(rmfsurf.wire_sweep(
+        [rmfsurf.Line((0, 0, 0), (length, 0, 0))], rmfsurf.circle(0.5),
+        end_profile=rmfsurf.circle(0.3), sections=[])))
+    assert abs(straight - frustum_chain(length, [(0.0, 0.5), (1.0, 0.3)])) <= 1e-9 * straight
+    assert abs(straight - exact) > 0.1 * exact
+
+
+def test_ocp_sweeps_a_square_through_a_circle_into_a_triangle():
+    """A square (side 1) at 0, a circle (radius 0.6) at 0.5, a triangle at 1, all faces
+    drawn at a build123d line's start: one valid solid from the line's start to its end."""
+    length = 4.0
+    line = bd.Line((0, 0, 0), (length, 0, 0))
+    plane = bd.Plane(origin=(0, 0, 0), z_dir=(1, 0, 0))
+    square = plane * bd.Rectangle(1.0, 1.0)
+    circle = plane * bd.Circle(0.6)
+    triangle = plane * bd.RegularPolygon(0.7, 3)
+    solid = rocp.sweep(line, square, end_profile=triangle, sections=[(0.5, circle)])
+    raw = getattr(solid, "wrapped", solid)
+    assert BRepCheck_Analyzer(raw).IsValid()
+    assert solids_of(solid) == 1
+    volume = occ_volume(solid)
+    faces = len(solid.faces())
+    print("\nsquare 1 through circle 0.6 into triangle 0.7 along a build123d line of 4: %d faces, "
+          "volume %.12f" % (faces, volume))
+    assert volume > 0
+    bounds = solid.bounding_box()
+    assert abs(bounds.min.X) < 1e-4 and abs(bounds.max.X - length) < 1e-4, bounds

@@ -18,7 +18,8 @@ What is checked, each figure printed with its limit:
      Guide: the cylinder's volume), ScaleStart/ScaleEnd (a frustum's volume),
      ScaleKnotFractions/ScaleKnotScales (a chain of frustums; older documents get them
      empty), EndProfile (the same frustum from two circles; older documents
-     get it empty); Method (ph-rmf, mobius, rrmf: a line and a B-spline, parameter
+     get it empty), Sections/SectionFractions (a chain of frustums through three circles;
+     older documents get them empty); Method (ph-rmf, mobius, rrmf: a line and a B-spline, parameter
      lines orthogonal to rounding with the exact RMFs; older documents get the methods);
      the library's refusals mark the feature Invalid with a message;
   C. RmfUnfold of a developable face (a cone frustum): flat area against the closed form,
@@ -418,6 +419,44 @@ def part_b(doc):
     doc.recompute()
     check_solid("a circle r 2 into an EndProfile circle r 1 along a line of 30: the frustum",
                 frustum.Shape, PI * 30 * (4 + 2 + 1) / 3)
+    # Sections/SectionFractions: empty by default (and on a document before them); a circle
+    # of radius 3 drawn at the start as a section at 0.25: the chain of two frustums
+    # π/3 Σ Lᵢ (aᵢ² + aᵢ aᵢ₊₁ + aᵢ₊₁²) through radii 2, 3, 1; a fraction missing is refused
+    # naming both properties, sections without an EndProfile naming Sections.
+    require("Sections %r, SectionFractions %r of a new RmfSweep: empty"
+            % (frustum.Sections, frustum.SectionFractions),
+            list(frustum.Sections) == [] and list(frustum.SectionFractions) == [])
+    mid_circle, _ = circle_sketch(doc, "MidCircle", FreeCAD.Placement(V(0, -80, 0), Z_TO_X),
+                                  (3.0,))
+    doc.recompute()
+    frustum.Sections = [mid_circle]
+    frustum.SectionFractions = [0.25]
+    doc.recompute()
+    chain = [(0.0, 2.0), (0.25, 3.0), (1.0, 1.0)]
+    check_solid("a circle r 2 through Sections r 3 at 0.25 into r 1 along 30: the frustums",
+                frustum.Shape, sum(PI / 3 * (f1 - f0) * 30 * (a * a + a * b + b * b)
+                                   for (f0, a), (f1, b) in zip(chain, chain[1:])))
+    for fractions, end, word in (([], end_circle, "Sections, SectionFractions"),
+                                 ([1.0], end_circle, "SectionFractions[0]"),
+                                 ([0.25], None, "Sections: need an EndProfile")):
+        frustum.SectionFractions = fractions
+        frustum.EndProfile = (end, []) if end is not None else None
+        doc.recompute()
+        message = frustum.getStatusString()
+        require("SectionFractions %r, EndProfile %s: Invalid, '%s'"
+                % (fractions, end and end.Name, message),
+                not frustum.isValid() and word in message)
+    frustum.EndProfile = (end_circle, [])
+    frustum.Sections, frustum.SectionFractions = [], []
+    for name in ("Sections", "SectionFractions"):
+        frustum.removeProperty(name)
+    frustum.Proxy.onDocumentRestored(frustum)
+    doc.recompute()
+    require("no Sections/SectionFractions (a document before them): added empty, valid",
+            "SectionFractions" in frustum.PropertiesList and not frustum.Sections
+            and frustum.isValid())
+    check_solid("no Sections again: the frustum", frustum.Shape, PI * 30 * (4 + 2 + 1) / 3)
+    doc.removeObject(mid_circle.Name)
     end_ring, _ = circle_sketch(doc, "EndRing", FreeCAD.Placement(V(0, -80, 0), Z_TO_X),
                                 (1.0, 0.5))
     doc.recompute()
