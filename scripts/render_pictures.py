@@ -1,7 +1,8 @@
-"""Renders docs/images/rmfsurf.png (and docs/images/sweep-frames.png) from the demo's
-output (run by scripts/render-pictures).
+"""Renders docs/images/rmfsurf.png (and the wire sweeps' pictures, docs/images/sweep-*.png)
+from the demo's output (run by scripts/render-pictures).
 
-    python3 render_pictures.py <demo-output-directory> <png> [<sweep-frames png> [<guide-knots png>]]
+    python3 render_pictures.py <demo-output-directory> <png> [<sweep-frames png>
+        [<guide-knots png> [<sections png>]]]
 
 Three panels, each drawn from a file the demo writes:
   1. closed_sweep_trefoil.vtp: a square tube swept along a trefoil with the PH cubic
@@ -286,6 +287,28 @@ def guide_and_knots(demo_dir, png):
     write_png(window, png)
 
 
+def sections_and_sheet(demo_dir, png):
+    """docs/images/sweep-sections.png: the demo's section 9, a sweep through sections and a
+    sheet from an open profile."""
+    window = vtk.vtkRenderWindow()
+    window.SetSize(WIDTH, HEIGHT)
+    window.SetOffScreenRendering(1)
+    window.SetMultiSamples(0)
+    panel(
+        window, 0.0, 0.5,
+        [shaded(read_vtp(f"{demo_dir}/pipe_sections.vtp"), (0.45, 0.64, 0.86), 40.0)],
+        "the pipe route through a square, a circle half way\nand a triangle (sections): one solid, shared sections",
+        (0, 0, 1), (0.5, -1.0, 0.9), 1.05,
+    )
+    panel(
+        window, 0.5, 1.0,
+        [shaded(read_vtp(f"{demo_dir}/gutter.vtp"), (0.80, 0.62, 0.30), 40.0)],
+        "an open half circle along the same route:\na sheet (solid off), exact cylinders and torus",
+        (0, 0, 1), (0.5, -1.0, 0.9), 1.05,
+    )
+    write_png(window, png)
+
+
 def write_png(window, png):
     window.Render()
     grab = vtk.vtkWindowToImageFilter()
@@ -305,3 +328,5 @@ if __name__ == "__main__":
         sweep_frames(sys.argv[1], sys.argv[3])
     if len(sys.argv) > 4:
         guide_and_knots(sys.argv[1], sys.argv[4])
+    if len(sys.argv) > 5:
+        sections_and_sheet(sys.argv[1], sys.argv[5])

@@ -751,7 +751,8 @@ static void write_shape_mesh(const RmfShape *shape, uint32_t v_steps, const char
 }
 
 /* ---- 9. sweeps as users make them: a thread (Frenet frame), a taper (scale law), a bar
- *         turned by a guide curve, a baluster (scale knots) ---- */
+ *         turned by a guide curve, a baluster (scale knots), a pipe through sections, a
+ *         sheet from an open profile ---- */
 
 /* A helix of radius 5 rising 2 per turn about the z axis. */
 static void thread_helix(double t, void *user, RmfVec3 *point, RmfVec3 *tangent) {
@@ -789,6 +790,82 @@ static void guide_helix(double t, void *user, RmfVec3 *point, RmfVec3 *tangent) 
     (void)user;
     point->x = 3 * cos(t), point->y = 3 * sin(t), point->z = h * t;
     tangent->x = -3 * sin(t), tangent->y = 3 * cos(t), tangent->z = h;
+}
+
+/* Along the pipe route (line, arc, line): a square through a circle into a triangle
+ * (sections), and an open arc swept into a sheet (a gutter). */
+static void demo_sections_and_sheet(void) {
+    const double s = 0.70710678118654752440, r = 0.8, c = 0.86602540378443864676;
+    const RmfVec3 square[5] = {{0.6, 0.6, 0}, {-0.6, 0.6, 0}, {-0.6, -0.6, 0}, {0.6, -0.6, 0}, {0.6, 0.6, 0}};
+    const RmfVec3 triangle[4] = {{0.9, 0, 0}, {-0.45, 0.9 * c, 0}, {-0.45, -0.9 * c, 0}, {0.9, 0, 0}};
+    const double square_knots[7] = {0, 0, 1, 2, 3, 4, 4}, triangle_knots[6] = {0, 0, 1, 2, 3, 3};
+    /* A half circle of radius 0.8 on the side of -f2 (below the planar route, whose f2 is
+     * its plane's normal), open towards f2: the gutter's section. */
+    const RmfVec3 half[5] = {{0, r, 0}, {-r, r, 0}, {-r, 0, 0}, {-r, -r, 0}, {0, -r, 0}};
+    const double half_w[5] = {1, s, 1, s, 1}, half_knots[8] = {0, 0, 0, 1, 1, 2, 2, 2};
+    RmfCurve *sq = NULL, *tri = NULL, *ci = circle_profile(0.7), *gutter_arc = NULL;
+    RmfEdge edges[3];
+    RmfWireSection sections[3];
+    RmfWireSweepOptions options;
+    RmfShape *through = NULL, *gutter = NULL;
+    RmfShapeFace face;
+    double off = 0;
+    size_t f, at_station = 0;
+
+    TRY(rmf_nurbs_curve_create(1, square, NULL, 5, square_knots, 7, &sq));
+    TRY(rmf_nurbs_curve_create(1, triangle, NULL, 4, triangle_knots, 6, &tri));
+    TRY(rmf_nurbs_curve_create(2, half, half_w, 5, half_knots, 8, &gutter_arc));
+    memset(edges, 0, sizeof edges);
+    edges[0].kind = RMF_EDGE_LINE, edges[0].points[0] = vec(0, 0, 0), edges[0].points[1] = vec(10, 0, 0);
+    edges[1].kind = RMF_EDGE_ARC, edges[1].points[0] = vec(10, 0, 0);
+    edges[1].points[1] = vec(10 + 5 * s, 5 - 5 * s, 0), edges[1].points[2] = vec(15, 5, 0);
+    edges[2].kind = RMF_EDGE_LINE, edges[2].points[0] = vec(15, 5, 0), edges[2].points[1] = vec(15, 15, 0);
+    memset(sections, 0, sizeof sections);
+    sections[0].at = 0, sections[0].profile = sq;
+    sections[1].at = 0.5, sections[1].profile = ci;
+    sections[2].at = 1, sections[2].profile = tri;
+    TRY(rmf_wire_sweep_options_init(&options));
+    TRY(rmf_wire_sweep_through(edges, 3, sections, 3, &options, &through));
+    write_shape(through, "pipe_sections", "the pipe route through a square, a circle and a triangle (STEP solid)");
+    write_shape_mesh(through, 16, "pipe_sections.vtp", "its lateral faces as one mesh");
+    /* Half way along the route (length 20 + 2.5 pi) lies in the arc: the faces' edges there
+     * are the circle of radius 0.7 about the route's point. */
+    for (f = 0; f < rmf_shape_face_count(through); f++) {
+        double u0, u1, v0, v1, v;
+        int k, end;
+        TRY(rmf_shape_face(through, f, &face));
+        if (face.kind != RMF_FACE_SWEPT) continue;
+        TRY(rmf_surface_domain(face.surface, &u0, &u1, &v0, &v1));
+        for (end = 0; end < 2; end++) {
+            RmfVec3 p, du, dv;
+            double phi, centre_x, centre_y, d;
+            v = end ? v1 : v0;
+            TRY(rmf_surface_eval(face.surface, u0, v, &p, &du, &dv));
+            /* The route's point half way: 10 + 2.5 pi - 10 = 2.5 pi into the arc of radius 5. */
+            phi = 0.25 * PH_DEMO_PI;
+            centre_x = 10 + 5 * sin(phi), centre_y = 5 - 5 * cos(phi);
+            d = hypot(hypot(p.x - centre_x, p.y - centre_y), p.z);
+            if (fabs(d - 0.7) > 1e-6) continue;
+            at_station++;
+            for (k = 0; k <= 16; k++) {
+                TRY(rmf_surface_eval(face.surface, u0 + (u1 - u0) * k / 16.0, v, &p, &du, &dv));
+                off = fmax(off, fabs(hypot(hypot(p.x - centre_x, p.y - centre_y), p.z) - 0.7));
+            }
+        }
+    }
+    printf("  the pipe route through a square, a circle half way and a triangle: %zu face edges at the\n"
+           "  circle's station, on the circle within %.1e\n", at_station, off);
+    TRY(rmf_wire_sweep_options_init(&options));
+    options.solid = 0;
+    TRY(rmf_wire_sweep(edges, 3, gutter_arc, NULL, 0, &options, &gutter));
+    write_shape(gutter, "gutter", "an open half circle along the pipe route: a sheet (STEP shell)");
+    write_shape_mesh(gutter, 16, "gutter.vtp", "its faces as one mesh");
+    rmf_shape_free(gutter);
+    rmf_shape_free(through);
+    rmf_curve_free(gutter_arc);
+    rmf_curve_free(ci);
+    rmf_curve_free(tri);
+    rmf_curve_free(sq);
 }
 
 /* A flat bar up the z axis whose width turns to point at a helical guide (a twisted bar:
@@ -864,6 +941,7 @@ static void demo_guide_and_knots(void) {
     rmf_curve_free(circle);
     rmf_curve_free(section);
     rmf_curve_free(guide);
+    demo_sections_and_sheet();
 }
 
 static void demo_thread_and_taper(void) {
@@ -882,7 +960,8 @@ static void demo_thread_and_taper(void) {
     size_t f;
 
     printf("9. sweeps as users make them: a thread (Frenet frame), a tapered pipe (scale law), a bar\n"
-           "   following a guide curve, a baluster (scale knots)\n");
+           "   following a guide curve, a baluster (scale knots), a pipe through sections, a gutter\n"
+           "   (an open profile)\n");
     TRY(rmf_ph_spline_approximate(NULL, thread_helix, NULL, 0, 6 * PH_DEMO_PI, 1e-5, &helix, &distance));
     TRY(rmf_nurbs_curve_create(1, ridge, NULL, 4, ridge_knots, 6, &triangle));
     memset(edges, 0, sizeof edges);
