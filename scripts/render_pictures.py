@@ -204,11 +204,17 @@ def panel(window, x0, x1, actors, caption, view_up, direction, zoom=1.0):
     return renderer
 
 
-def main(demo_dir, png):
+def new_window():
+    """An off-screen window of the pictures' size."""
     window = vtk.vtkRenderWindow()
     window.SetSize(WIDTH, HEIGHT)
     window.SetOffScreenRendering(1)
     window.SetMultiSamples(0)
+    return window
+
+
+def main(demo_dir, png):
+    window = new_window()
 
     tube = read_vtp(f"{demo_dir}/closed_sweep_trefoil.vtp")
     panel(
@@ -238,10 +244,7 @@ def main(demo_dir, png):
 
 def sweep_frames(demo_dir, png):
     """docs/images/sweep-frames.png: the demo's section 9."""
-    window = vtk.vtkRenderWindow()
-    window.SetSize(WIDTH, HEIGHT)
-    window.SetOffScreenRendering(1)
-    window.SetMultiSamples(0)
+    window = new_window()
     panel(
         window, 0.0, 0.33,
         [shaded(read_vtp(f"{demo_dir}/thread_frenet.vtp"), (0.80, 0.62, 0.30), 40.0)],
@@ -265,10 +268,7 @@ def sweep_frames(demo_dir, png):
 
 def guide_and_knots(demo_dir, png):
     """docs/images/sweep-guide-knots.png: the demo's section 9, its guide and scale knots."""
-    window = vtk.vtkRenderWindow()
-    window.SetSize(WIDTH, HEIGHT)
-    window.SetOffScreenRendering(1)
-    window.SetMultiSamples(0)
+    window = new_window()
     guide = read_vtp(f"{demo_dir}/bar_guide.vtp")
     points = [guide.GetPoint(k) for k in range(guide.GetNumberOfPoints())]
     helix = lines_actor(points, [(k, k + 1) for k in range(len(points) - 1)], (0.25, 0.35, 0.7), 2.5)
@@ -290,10 +290,7 @@ def guide_and_knots(demo_dir, png):
 def sections_and_sheet(demo_dir, png):
     """docs/images/sweep-sections.png: the demo's section 9, a sweep through sections and a
     sheet from an open profile."""
-    window = vtk.vtkRenderWindow()
-    window.SetSize(WIDTH, HEIGHT)
-    window.SetOffScreenRendering(1)
-    window.SetMultiSamples(0)
+    window = new_window()
     panel(
         window, 0.0, 0.5,
         [shaded(read_vtp(f"{demo_dir}/pipe_sections.vtp"), (0.45, 0.64, 0.86), 40.0)],

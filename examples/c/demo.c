@@ -582,6 +582,16 @@ static RmfCurve *circle_profile(double r) {
     return c;
 }
 
+/* The pipe route of sections 7 and 9: a line along x, a tangent quarter arc of radius 5, a
+ * line up y to (15, end_y, 0). */
+static void pipe_route_edges(RmfEdge edges[3], double end_y) {
+    const double s = 0.70710678118654752440;
+    edges[0].kind = RMF_EDGE_LINE, edges[0].points[0] = vec(0, 0, 0), edges[0].points[1] = vec(10, 0, 0);
+    edges[1].kind = RMF_EDGE_ARC, edges[1].points[0] = vec(10, 0, 0);
+    edges[1].points[1] = vec(10 + 5 * s, 5 - 5 * s, 0), edges[1].points[2] = vec(15, 5, 0);
+    edges[2].kind = RMF_EDGE_LINE, edges[2].points[0] = vec(15, 5, 0), edges[2].points[1] = vec(15, end_y, 0);
+}
+
 static void write_shape(const RmfShape *shape, const char *name, const char *what) {
     char path[512];
     RmfSweepReport r;
@@ -607,7 +617,6 @@ static void write_shape(const RmfShape *shape, const char *name, const char *wha
 }
 
 static void demo_pipe_route(void) {
-    const double s = 0.70710678118654752440;
     const RmfVec3 poles[4] = {{15, 10, 0}, {15, 15, 0}, {20, 20, 5}, {25, 20, 5}};
     const RmfVec3 square[5] = {{0.7, 0.7, 0}, {-0.7, 0.7, 0}, {-0.7, -0.7, 0}, {0.7, -0.7, 0}, {0.7, 0.7, 0}};
     const double knots[8] = {0, 0, 0, 0, 1, 1, 1, 1}, square_knots[7] = {0, 0, 1, 2, 3, 4, 4};
@@ -621,10 +630,7 @@ static void demo_pipe_route(void) {
     TRY(rmf_nurbs_curve_create(3, poles, NULL, 4, knots, 8, &nurbs));
     TRY(rmf_nurbs_curve_create(1, square, NULL, 5, square_knots, 7, &duct));
     memset(edges, 0, sizeof edges);
-    edges[0].kind = RMF_EDGE_LINE, edges[0].points[0] = vec(0, 0, 0), edges[0].points[1] = vec(10, 0, 0);
-    edges[1].kind = RMF_EDGE_ARC, edges[1].points[0] = vec(10, 0, 0);
-    edges[1].points[1] = vec(10 + 5 * s, 5 - 5 * s, 0), edges[1].points[2] = vec(15, 5, 0);
-    edges[2].kind = RMF_EDGE_LINE, edges[2].points[0] = vec(15, 5, 0), edges[2].points[1] = vec(15, 10, 0);
+    pipe_route_edges(edges, 10);
     edges[3].kind = RMF_EDGE_CURVE, edges[3].curve = nurbs;
     holes[0] = inner;
     TRY(rmf_wire_sweep_options_init(&options));
@@ -816,10 +822,7 @@ static void demo_sections_and_sheet(void) {
     TRY(rmf_nurbs_curve_create(1, triangle, NULL, 4, triangle_knots, 6, &tri));
     TRY(rmf_nurbs_curve_create(2, half, half_w, 5, half_knots, 8, &gutter_arc));
     memset(edges, 0, sizeof edges);
-    edges[0].kind = RMF_EDGE_LINE, edges[0].points[0] = vec(0, 0, 0), edges[0].points[1] = vec(10, 0, 0);
-    edges[1].kind = RMF_EDGE_ARC, edges[1].points[0] = vec(10, 0, 0);
-    edges[1].points[1] = vec(10 + 5 * s, 5 - 5 * s, 0), edges[1].points[2] = vec(15, 5, 0);
-    edges[2].kind = RMF_EDGE_LINE, edges[2].points[0] = vec(15, 5, 0), edges[2].points[1] = vec(15, 15, 0);
+    pipe_route_edges(edges, 15);
     memset(sections, 0, sizeof sections);
     sections[0].at = 0, sections[0].profile = sq;
     sections[1].at = 0.5, sections[1].profile = ci;
@@ -945,7 +948,7 @@ static void demo_guide_and_knots(void) {
 }
 
 static void demo_thread_and_taper(void) {
-    const double s = 0.70710678118654752440, rise = 2 / (2 * PH_DEMO_PI);
+    const double rise = 2 / (2 * PH_DEMO_PI);
     /* The thread's ridge in the normal plane at the start: f2 is the principal normal
      * (towards the axis), so the apex (-0.6, 0) points out of the rod. */
     const RmfVec3 ridge[4] = {{0.1, -0.45, 0}, {0.1, 0.45, 0}, {-0.6, 0, 0}, {0.1, -0.45, 0}};
@@ -985,10 +988,7 @@ static void demo_thread_and_taper(void) {
     printf("  the ridge's edges are helices of the thread's pitch within %.1e (frames within %.1e rad of the\n"
            "  Frenet frame); with the RMF they stray %.2f from them\n", frenet_off, report.frame_error, rmf_off);
     /* The pipe route of section 7 (line, tangent arc, line), the circle tapering to 0.4. */
-    edges[0].kind = RMF_EDGE_LINE, edges[0].points[0] = vec(0, 0, 0), edges[0].points[1] = vec(10, 0, 0);
-    edges[1].kind = RMF_EDGE_ARC, edges[1].points[0] = vec(10, 0, 0);
-    edges[1].points[1] = vec(10 + 5 * s, 5 - 5 * s, 0), edges[1].points[2] = vec(15, 5, 0);
-    edges[2].kind = RMF_EDGE_LINE, edges[2].points[0] = vec(15, 5, 0), edges[2].points[1] = vec(15, 15, 0);
+    pipe_route_edges(edges, 15);
     TRY(rmf_wire_sweep_options_init(&options));
     options.scale_start = 1, options.scale_end = 0.4;
     TRY(rmf_wire_sweep(edges, 3, circle, NULL, 0, &options, &taper));

@@ -6,17 +6,10 @@
 
 use super::options_tests::{helix, off_helix};
 use super::robustness_tests::check_similar;
-use super::tests::{circle, square};
+use super::tests::{circle, line, square};
 use super::*;
 use crate::bezier::RationalBezierCurve;
 use std::f64::consts::TAU;
-
-fn line(a: [f64; 3], b: [f64; 3]) -> Edge {
-    Edge::Line {
-        from: DVec3::from(a),
-        to: DVec3::from(b),
-    }
-}
 
 fn guided(guide: Vec<Edge>, tolerance: f64) -> WireSweep {
     WireSweep {

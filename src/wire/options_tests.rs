@@ -3,7 +3,7 @@
 //! second term integrates to 0 over a centred circle), profile vertices that run on
 //! helices under the Frenet frame and a fixed axis, and the refusals.
 
-use super::tests::{circle, pipe_route, square, volume};
+use super::tests::{circle, frustum, line, pipe_route, square, square_loop, triangle, volume};
 use super::*;
 use crate::ph_cubic::ph_spline_hermite;
 use crate::spine::SpineMethod;
@@ -11,13 +11,6 @@ use std::f64::consts::{FRAC_1_SQRT_2, PI, TAU};
 
 fn relative(a: f64, b: f64) -> f64 {
     (a - b).abs() / b.abs()
-}
-
-fn line(a: [f64; 3], b: [f64; 3]) -> Edge {
-    Edge::Line {
-        from: DVec3::from(a),
-        to: DVec3::from(b),
-    }
 }
 
 /// A helix about the z axis of radius `radius`, rising `pitch` per turn, `turns` turns from
@@ -44,7 +37,7 @@ fn spine_length(shape: &Shape) -> f64 {
 
 /// π r² ∫σ² ds for σ linear from s0 to s1 over length L.
 fn scaled_tube_volume(r: f64, length: f64, [s0, s1]: [f64; 2]) -> f64 {
-    PI * r * r * length * (s0 * s0 + s0 * s1 + s1 * s1) / 3.0
+    frustum(r, length, s0, s1)
 }
 
 #[test]
@@ -287,12 +280,7 @@ fn frames_and_scales_that_cannot_be_are_refused_naming_the_option() {
         },
     );
     assert!(m.contains("tangent of edge 1"), "{m}");
-    let square_loop = [
-        line([0., 0., 0.], [10., 0., 0.]),
-        line([10., 0., 0.], [10., 10., 0.]),
-        line([10., 10., 0.], [0., 10., 0.]),
-        line([0., 10., 0.], [0., 0., 0.]),
-    ];
+    let square_loop = square_loop();
     let m = refused(&square_loop, with(SweepFrame::Rmf, [1.0, 2.0]));
     assert!(m.starts_with("scale: a closed wire"), "{m}");
     // A constant scale closes.
@@ -506,12 +494,7 @@ fn profiles_out_of_the_normal_plane_that_cannot_be_swept_are_refused() {
             .unwrap_err()
             .message()
     };
-    let square_loop = [
-        line([0., 0., 0.], [10., 0., 0.]),
-        line([10., 0., 0.], [10., 10., 0.]),
-        line([10., 10., 0.], [0., 10., 0.]),
-        line([0., 10., 0.], [0., 0., 0.]),
-    ];
+    let square_loop = square_loop();
     let m = refused(&square_loop, &tilted_circle(1.0, 0.3), WireSweep::default());
     assert!(
         m.contains("a closed wire takes a profile in its normal plane"),
@@ -651,14 +634,6 @@ fn a_square_blends_into_a_circle_corner_to_corner() {
     }
 }
 
-fn triangle(r: f64) -> PiecewiseCurve {
-    let corner = |k: f64| {
-        let a = TAU * k / 3.0;
-        DVec3::new(r * a.cos(), r * a.sin(), 0.0)
-    };
-    crate::primitives::polygon(&[corner(0.0), corner(1.0), corner(2.0)]).unwrap()
-}
-
 #[test]
 fn sweeps_between_profiles_that_cannot_be_matched_are_refused() {
     let bar = [line([0., 0., 0.], [0., 0., 3.])];
@@ -688,12 +663,7 @@ fn sweeps_between_profiles_that_cannot_be_matched_are_refused() {
         },
     );
     assert!(m.starts_with("scale:"), "{m}");
-    let square_loop = [
-        line([0., 0., 0.], [10., 0., 0.]),
-        line([10., 0., 0.], [10., 10., 0.]),
-        line([10., 10., 0.], [0., 10., 0.]),
-        line([0., 10., 0.], [0., 0., 0.]),
-    ];
+    let square_loop = square_loop();
     let m = refused(&square_loop, &[circle(0.2)], WireSweep::default());
     assert!(m.starts_with("end_profile: a closed wire"), "{m}");
     // Matched hole to hole: a ring into a square frame.

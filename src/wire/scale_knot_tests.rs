@@ -5,21 +5,8 @@
 
 use super::options_tests::helix;
 use super::robustness_tests::check_similar;
-use super::tests::{circle, pipe_route, square, volume};
+use super::tests::{circle, frustum, line, off_circles, pipe_route, square, square_loop, volume};
 use super::*;
-use std::f64::consts::PI;
-
-fn line(a: [f64; 3], b: [f64; 3]) -> Edge {
-    Edge::Line {
-        from: DVec3::from(a),
-        to: DVec3::from(b),
-    }
-}
-
-/// π r² ∫σ² ds over a piece of length l where σ runs linearly from a to b.
-fn frustum(r: f64, l: f64, a: f64, b: f64) -> f64 {
-    PI * r * r * l * (a * a + a * b + b * b) / 3.0
-}
 
 fn knotted(scale: [f64; 2], knots: &[(f64, f64)]) -> WireSweep {
     WireSweep {
@@ -47,20 +34,7 @@ fn knots_along_a_line_make_a_chain_of_exact_frustums() {
         z if z <= 3.0 => 2.0 - 0.75 * (z - 1.0),
         z => 0.5 + 0.5 * (z - 3.0),
     };
-    let mut worst = 0.0f64;
-    for face in shape.faces().iter().filter(|f| f.kind == FaceKind::Swept) {
-        let s = face.surface.as_ref().unwrap();
-        let ((u0, u1), (v0, v1)) = (s.domain_u(), s.domain_v());
-        for i in 0..=8 {
-            for j in 0..=8 {
-                let p = s.eval(
-                    u0 + (u1 - u0) * i as f64 / 8.0,
-                    v0 + (v1 - v0) * j as f64 / 8.0,
-                );
-                worst = worst.max((p.truncate().length() - 0.5 * sigma(p.z)).abs());
-            }
-        }
-    }
+    let worst = off_circles(&shape, |z| 0.5 * sigma(z));
     println!("sections off 0.5 σ(z): {worst:.1e}");
     assert!(worst < 1e-14, "{worst}");
     // The law without its knots is a cylinder: the check can fail.
@@ -102,12 +76,7 @@ fn a_knot_on_a_ph_helix_cuts_it_there_and_is_exact() {
 
 #[test]
 fn a_closed_wire_swells_through_its_knots_and_closes() {
-    let loop_edges = [
-        line([0., 0., 0.], [10., 0., 0.]),
-        line([10., 0., 0.], [10., 10., 0.]),
-        line([10., 10., 0.], [0., 10., 0.]),
-        line([0., 10., 0.], [0., 0., 0.]),
-    ];
+    let loop_edges = square_loop();
     let options = knotted([1.0, 1.0], &[(0.3, 1.5), (0.6, 0.7)]);
     let shape = sweep_wire(&loop_edges, &circle(0.5), &[], &options).unwrap();
     assert!(shape.is_solid());

@@ -5,20 +5,10 @@
 //! route (arcs within the tolerance); the refusals; invariance under scaling and
 //! translation.
 
-use super::tests::{circle, pipe_route, square, volume};
+use super::tests::{
+    circle, frustum, line, off_circles, pipe_route, square, square_loop, triangle, volume,
+};
 use super::*;
-use std::f64::consts::{PI, TAU};
-
-fn line(a: [f64; 3], b: [f64; 3]) -> Edge {
-    Edge::Line {
-        from: DVec3::from(a),
-        to: DVec3::from(b),
-    }
-}
-
-fn frustum(l: f64, a: f64, b: f64) -> f64 {
-    PI * l * (a * a + a * b + b * b) / 3.0
-}
 
 fn at(at: f64, profile: &PiecewiseCurve) -> Section<'_> {
     Section {
@@ -26,14 +16,6 @@ fn at(at: f64, profile: &PiecewiseCurve) -> Section<'_> {
         profile,
         holes: &[],
     }
-}
-
-fn triangle(r: f64) -> PiecewiseCurve {
-    let corner = |k: f64| {
-        let a = TAU * k / 3.0;
-        DVec3::new(r * a.cos(), r * a.sin(), 0.0)
-    };
-    crate::primitives::polygon(&[corner(0.0), corner(1.0), corner(2.0)]).unwrap()
 }
 
 #[test]
@@ -44,7 +26,7 @@ fn circles_through_three_radii_along_a_line_are_exact_frustums() {
     let shape = sweep_wire_through(&bar, &sections, &WireSweep::default()).unwrap();
     assert!(shape.is_solid());
     crate::testing::assert_closed_oriented(shape.brep());
-    let want = frustum(1.0, 0.5, 1.0) + frustum(3.0, 1.0, 0.3);
+    let want = frustum(1.0, 1.0, 0.5, 1.0) + frustum(1.0, 3.0, 1.0, 0.3);
     let v = volume(&shape);
     println!("circles 0.5 → 1 (at 1/4) → 0.3 along a line of 4: volume {v:.15} against {want:.15}");
     assert!((v - want).abs() < 1e-12 * want, "{v} against {want}");
@@ -56,20 +38,7 @@ fn circles_through_three_radii_along_a_line_are_exact_frustums() {
             1.0 - 0.7 * (z - 1.0) / 3.0
         }
     };
-    let mut worst = 0.0f64;
-    for face in shape.faces().iter().filter(|f| f.kind == FaceKind::Swept) {
-        let s = face.surface.as_ref().unwrap();
-        let ((u0, u1), (v0, v1)) = (s.domain_u(), s.domain_v());
-        for i in 0..=8 {
-            for j in 0..=8 {
-                let p = s.eval(
-                    u0 + (u1 - u0) * i as f64 / 8.0,
-                    v0 + (v1 - v0) * j as f64 / 8.0,
-                );
-                worst = worst.max((p.truncate().length() - radius(p.z)).abs());
-            }
-        }
-    }
+    let worst = off_circles(&shape, radius);
     assert!(worst < 1e-14, "{worst}");
     // Two sections are sweep_wire_between, bit for bit.
     let two =
@@ -180,9 +149,9 @@ fn circles_through_four_radii_along_the_pipe_route() {
     let shape = sweep_wire_through(&route, &sections, &options).unwrap();
     crate::testing::assert_closed_oriented(shape.brep());
     let length: f64 = shape.spine().iter().map(|c| c.arc_length()).sum();
-    let want = frustum(0.3 * length, 0.5, 0.8)
-        + frustum(0.3 * length, 0.8, 0.4)
-        + frustum(0.4 * length, 0.4, 0.6);
+    let want = frustum(1.0, 0.3 * length, 0.5, 0.8)
+        + frustum(1.0, 0.3 * length, 0.8, 0.4)
+        + frustum(1.0, 0.4 * length, 0.4, 0.6);
     let v = volume(&shape);
     let error = (v - want).abs() / want;
     println!("circles 0.5, 0.8, 0.4, 0.6 along the pipe route: volume {v:.10} against {want:.10}, relative {error:.1e}");
@@ -221,12 +190,7 @@ fn sections_that_cannot_be_are_refused_naming_them() {
     let m = refused(&[at(0.0, &c), holed, at(1.0, &c)]);
     assert!(m.contains("sections[1]") && m.contains("holes"), "{m}");
     // A closed wire, a scale law.
-    let loop_edges = [
-        line([0., 0., 0.], [10., 0., 0.]),
-        line([10., 0., 0.], [10., 10., 0.]),
-        line([10., 10., 0.], [0., 10., 0.]),
-        line([0., 10., 0.], [0., 0., 0.]),
-    ];
+    let loop_edges = square_loop();
     let m = sweep_wire_through(
         &loop_edges,
         &[at(0.0, &c), at(0.5, &s), at(1.0, &c)],

@@ -29,11 +29,56 @@ pub(crate) fn square(a: f64) -> PiecewiseCurve {
     PiecewiseCurve::with_unit_intervals(segments).unwrap()
 }
 
-fn line(a: [f64; 3], b: [f64; 3]) -> Edge {
+pub(crate) fn line(a: [f64; 3], b: [f64; 3]) -> Edge {
     Edge::Line {
         from: DVec3::from(a),
         to: DVec3::from(b),
     }
+}
+
+/// A closed square wire of side 10 in the xy plane, corners sharp.
+pub(crate) fn square_loop() -> [Edge; 4] {
+    [
+        line([0., 0., 0.], [10., 0., 0.]),
+        line([10., 0., 0.], [10., 10., 0.]),
+        line([10., 10., 0.], [0., 10., 0.]),
+        line([0., 10., 0.], [0., 0., 0.]),
+    ]
+}
+
+/// An equilateral triangle with its corners on the circle of radius r, the first on +x.
+pub(crate) fn triangle(r: f64) -> PiecewiseCurve {
+    let corner = |k: f64| {
+        let a = std::f64::consts::TAU * k / 3.0;
+        DVec3::new(r * a.cos(), r * a.sin(), 0.0)
+    };
+    crate::primitives::polygon(&[corner(0.0), corner(1.0), corner(2.0)]).unwrap()
+}
+
+/// π r² ∫σ² ds over a length l where σ runs linearly from a to b: a frustum of the circle of
+/// radius r scaled from a to b.
+pub(crate) fn frustum(r: f64, l: f64, a: f64, b: f64) -> f64 {
+    std::f64::consts::PI * r * r * l * (a * a + a * b + b * b) / 3.0
+}
+
+/// The largest distance of a sweep's lateral faces (on a 9 × 9 grid) from the circle about
+/// the z axis of radius `radius(z)` at their height.
+pub(crate) fn off_circles(shape: &Shape, radius: impl Fn(f64) -> f64) -> f64 {
+    let mut worst = 0.0f64;
+    for face in shape.faces().iter().filter(|f| f.kind == FaceKind::Swept) {
+        let s = face.surface.as_ref().unwrap();
+        let ((u0, u1), (v0, v1)) = (s.domain_u(), s.domain_v());
+        for i in 0..=8 {
+            for j in 0..=8 {
+                let p = s.eval(
+                    u0 + (u1 - u0) * i as f64 / 8.0,
+                    v0 + (v1 - v0) * j as f64 / 8.0,
+                );
+                worst = worst.max((p.truncate().length() - radius(p.z)).abs());
+            }
+        }
+    }
+    worst
 }
 
 /// Line – tangent quarter arc (radius 5) – line, as a pipe route.
