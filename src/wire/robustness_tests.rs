@@ -468,14 +468,15 @@ proptest! {
         check_closed_miter(&skew_quadrilateral(z), 1.0);
     }
 
-    /// Pipe routes, twisted bars, closed miter wires, Frenet helices and fixed-direction
-    /// pipes with scale laws at any scale from 1e-200 to 1e200 and any translation up to
-    /// 1e3 of their size give the same faces.
+    /// Pipe routes, twisted bars, closed miter wires, Frenet helices, fixed-direction
+    /// pipes with scale laws, bars following a guide and pipes through scale knots at any
+    /// scale from 1e-200 to 1e200 and any translation up to 1e3 of their size give the same
+    /// faces (the guide moved with the wire).
     #[test]
     fn wire_sweeps_are_invariant_under_scaling_and_translation(
         exponent in -200.0f64..200.0,
         shift in (-1e3f64..1e3, -1e3f64..1e3, -1e3f64..1e3),
-        which in 0usize..6,
+        which in 0usize..8,
         twist in -20.0f64..20.0,
     ) {
         let s = 10f64.powf(exponent);
@@ -509,6 +510,29 @@ proptest! {
                     corner: Corner::Round(Some(2.0)),
                     frame: SweepFrame::Fixed(DVec3::new(1.0, 0.3, 1.0)),
                     scale: [1.0, 0.5],
+                    ..WireSweep::default()
+                },
+                s,
+                o,
+            ),
+            6 => check_similar(
+                &[line(DVec3::ZERO, DVec3::new(0.0, 0.0, 3.0))],
+                &square(0.5),
+                &WireSweep {
+                    frame: SweepFrame::Guide(vec![super::options_tests::helix(2.0, 2.0, 1.5)]),
+                    twist,
+                    ..WireSweep::default()
+                },
+                s,
+                o,
+            ),
+            7 => check_similar(
+                &example_pipe(),
+                &circle(1.0),
+                &WireSweep {
+                    corner: Corner::Round(Some(2.0)),
+                    scale: [1.0, 0.8],
+                    scale_knots: vec![(0.3, 1.4), (0.7, 0.6)],
                     ..WireSweep::default()
                 },
                 s,
