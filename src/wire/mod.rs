@@ -575,7 +575,7 @@ fn check_sections(edge_count: usize, sections: &[Section]) -> Result<()> {
         let fits = match k {
             0 => at == 0.0,
             k if k == last => at == 1.0,
-            k => at > sections[k - 1].at && at < 1.0,
+            k => station_fits(at, sections[k - 1].at),
         };
         if !fits {
             return invalid!(
@@ -584,7 +584,8 @@ fn check_sections(edge_count: usize, sections: &[Section]) -> Result<()> {
                     0 => "0 (the first section is at the wire's start)".to_string(),
                     k if k == last => "1 (the last section is at the wire's end)".to_string(),
                     k => format!(
-                        "in ({}, 1), after the section before it",
+                        "in ({}, 1), after the section before it, by at least \
+                         {MIN_STATION_GAP:e} from it and from the wire's end",
                         sections[k - 1].at
                     ),
                 }
@@ -683,14 +684,26 @@ fn check_options(options: &WireSweep) -> Result<()> {
     Ok(())
 }
 
+/// Least distance, as a fraction of the wire's length, of a scale knot or a section from
+/// the wire's ends and from the one before it: ten times the distance within which the wire
+/// is cut at a piece boundary instead (`scale::split_at_knots`), so that no two of them, nor
+/// one and an end, fall on the same boundary (which would make the law jump there).
+const MIN_STATION_GAP: f64 = 1e-8;
+
+/// Whether `at` lies in (0, 1) at least [`MIN_STATION_GAP`] after `before` and before 1.
+fn station_fits(at: f64, before: f64) -> bool {
+    at - before >= MIN_STATION_GAP && 1.0 - at >= MIN_STATION_GAP
+}
+
 /// The scale's knots: fractions increasing in (0, 1), values finite and positive.
 fn check_scale_knots(knots: &[(f64, f64)]) -> Result<()> {
     let mut last = 0.0;
     for (k, &(at, value)) in knots.iter().enumerate() {
-        if !(at > last && at < 1.0) {
+        if !station_fits(at, last) {
             return invalid!(
                 "scale_knots[{k}]: its fraction of the wire's length {at} must lie in (0, 1), \
-                 after the knot before it ({last})"
+                 after the knot before it ({last}), by at least {MIN_STATION_GAP:e} from it \
+                 and from the ends"
             );
         }
         if !(value.is_finite() && value > 0.0) {

@@ -125,6 +125,19 @@ fn knots_that_cannot_be_are_refused_naming_the_option() {
             "{knots:?}: {m}"
         );
     }
+    // Knots that would fall on one piece boundary with an end or each other (the law would
+    // jump there: a knot 1e-12 from the end gave the volume of σ running from 5 down to 1).
+    for knots in [
+        vec![(1.0 - 1e-12, 5.0)],
+        vec![(1e-12, 5.0)],
+        vec![(0.5, 1.0), (0.5 + 1e-12, 5.0)],
+    ] {
+        let m = refused(&knots);
+        assert!(
+            m.starts_with("scale_knots[") && m.contains("by at least 1e-8"),
+            "{knots:?}: {m}"
+        );
+    }
     for value in [0.0, -1.0, f64::NAN, f64::INFINITY] {
         let m = refused(&[(0.5, value)]);
         assert!(m.starts_with("scale_knots[0]: the scale"), "{m}");

@@ -178,10 +178,16 @@ fn sections_that_cannot_be_are_refused_naming_them() {
     assert!(m.starts_with("sections[0]: at = 0.1 must be 0"), "{m}");
     let m = refused(&[at(0.0, &c), at(0.9, &s)]);
     assert!(m.starts_with("sections[1]: at = 0.9 must be 1"), "{m}");
-    for bad in [0.0, 0.5, 1.0, f64::NAN] {
+    // Also a section so near another, or the end, that both would stand on one boundary.
+    for bad in [0.0, 0.5, 1.0, f64::NAN, 0.5 + 1e-12, 1.0 - 1e-12] {
         let m = refused(&[at(0.0, &c), at(0.5, &s), at(bad, &c), at(1.0, &s)]);
         assert!(m.starts_with("sections[2]: at ="), "{bad}: {m}");
     }
+    let m = refused(&[at(0.0, &c), at(1e-12, &s), at(1.0, &c)]);
+    assert!(
+        m.starts_with("sections[1]: at =") && m.contains("1e-8"),
+        "{m}"
+    );
     let holed = Section {
         at: 0.5,
         profile: &c,
