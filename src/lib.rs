@@ -63,6 +63,7 @@ mod spine;
 mod sweep;
 #[cfg(test)]
 mod testing;
+mod unfold;
 mod wire;
 
 /// The vector types of every signature (f64 throughout).
@@ -147,6 +148,11 @@ pub use wire::{
 // Sheet-metal parts: transition pieces between two curves, thickness and K-factor, the
 // neutral layer's flat pattern, marks between flat and formed [LP].
 pub use sheet::{Layer, PartReport, Reference, Sheet, SheetOptions, SheetPart, Side};
+
+// Unfolding the user's own faces: developability report, exact flat patterns.
+pub use unfold::{
+    face_developability, unfold_face, Developability, SurfaceKind, UnfoldOptions, UnfoldedFace,
+};
 
 // Meshes of surfaces (for viewers and mesh checks).
 pub use mesh::{grid_normals, grid_parameters, mesh_size, tessellate, TriangleMesh};

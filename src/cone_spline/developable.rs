@@ -189,10 +189,25 @@ fn ruling_turning_zeros<S: Developable + ?Sized>(surface: &S) -> Result<Vec<f64>
         let (a, b) = ((t - h).max(lo), (t + h).min(hi));
         Ok((surface.ruling(b)?.direction - surface.ruling(a)?.direction).dot(el.side))
     };
+    // On a cylinder the rulings never turn: ė · p is round-off everywhere, its sign
+    // changes mean nothing, and every osculating cone is a cylinder already.
+    let still = uniform_parameters((lo, hi), INFLECTION_SAMPLES)
+        .iter()
+        .map(|&t| turning(t).map(f64::abs))
+        .collect::<Result<Vec<_>>>()?
+        .into_iter()
+        .all(|f| f <= STILL_RULINGS);
+    if still {
+        return Ok(vec![]);
+    }
     // Sign changes only: where the turning touches zero and keeps its sign, the
     // vertex goes out to infinity and comes back on the same side.
     interior_sampled_roots(&turning, (lo, hi), -1.0)
 }
+
+/// Largest |ė · p| (the change of unit ruling directions over the difference step) of
+/// rulings that do not turn: round-off of unit vectors.
+const STILL_RULINGS: f64 = 1e-13;
 
 /// Every algorithm steps through a developable in fractions of its domain's length, which
 /// must therefore be a finite f64 (a domain of length beyond f64::MAX makes the derivative

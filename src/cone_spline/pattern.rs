@@ -32,6 +32,7 @@ impl ConeSpline {
         let scaled = |edges: &[PatternEdge]| edges.iter().map(|e| e.scaled(scale)).collect();
         Ok(FlatPattern {
             outline: scaled(&unit.outline),
+            holes: vec![],
             bend_lines: scaled(&unit.bend_lines),
         })
     }
@@ -59,6 +60,7 @@ impl ConeSpline {
         outline.push(ruling(0).reversed());
         Ok(FlatPattern {
             outline,
+            holes: vec![],
             bend_lines: (1..n).map(ruling).collect(),
         })
     }

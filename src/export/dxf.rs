@@ -1,6 +1,6 @@
 //! Flat patterns as DXF R12 (AC1009) files, the DXF every cutting machine's CAM reads
 //! (AutoCAD DXF Reference, ENTITIES section): true `LINE` and `ARC` entities, never
-//! polylines. The outline is on layer `CUT`, the bend lines on layer `BEND`. An `ARC` runs
+//! polylines. The outline and its holes are on layer `CUT`, the bend lines on layer `BEND`. An `ARC` runs
 //! counter-clockwise from its start to its end angle (degrees) about the z axis.
 
 use super::number;
@@ -72,7 +72,7 @@ pub fn pattern_to_dxf(pattern: &FlatPattern) -> String {
             (2, "ENTITIES".into()),
         ],
     );
-    for edge in &pattern.outline {
+    for edge in pattern.outline.iter().chain(pattern.holes.iter().flatten()) {
         edge_entity(&mut out, edge, "CUT");
     }
     for edge in &pattern.bend_lines {
@@ -99,6 +99,7 @@ mod tests {
         };
         let pattern = FlatPattern {
             outline: vec![arc],
+            holes: vec![],
             bend_lines: vec![PatternEdge::Line {
                 from: DVec2::ZERO,
                 to: DVec2::X,

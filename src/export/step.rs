@@ -647,8 +647,8 @@ pub fn curves_to_step(curves: &[&NurbsCurve], name: &str) -> Result<String> {
 }
 
 /// A STEP file holding a flat pattern as one planar face in z = 0 (`PLANE`, bounded by
-/// `LINE` and `CIRCLE` edges, the outline counter-clockwise about +z), the product called
-/// `name`. The bend lines are not part of the face (the DXF and SVG files carry them).
+/// `LINE` and `CIRCLE` edges, the outline counter-clockwise about +z, the holes inner
+/// bounds), the product called `name`. The bend lines are not part of the face (the DXF and SVG files carry them).
 pub fn flat_to_step(pattern: &FlatPattern, name: &str) -> Result<String> {
     let outline = &pattern.outline;
     if outline.is_empty() {
@@ -661,8 +661,29 @@ pub fn flat_to_step(pattern: &FlatPattern, name: &str) -> Result<String> {
     let x = out.add("DIRECTION('',(1.,0.,0.))");
     let placement = out.add(format!("AXIS2_PLACEMENT_3D('',#{origin},#{z},#{x})"));
     let plane = out.add(format!("PLANE('',#{placement})"));
+    let edge_loop = flat_loop(&mut out, outline, z, x);
+    let bound = out.add(format!("FACE_OUTER_BOUND('',#{edge_loop},.T.)"));
+    let mut bounds = vec![bound];
+    for hole in pattern.holes.iter().filter(|h| !h.is_empty()) {
+        let edge_loop = flat_loop(&mut out, hole, z, x);
+        bounds.push(out.add(format!("FACE_BOUND('',#{edge_loop},.T.)")));
+    }
+    let face = out.add(format!("ADVANCED_FACE('',{},#{plane},.T.)", refs(&bounds)));
+    let shell = out.add(format!("OPEN_SHELL('',(#{face}))"));
+    let model = out.add(format!("SHELL_BASED_SURFACE_MODEL('',(#{shell}))"));
+    let representation = format!(
+        "MANIFOLD_SURFACE_SHAPE_REPRESENTATION('{}',(#{placement},#{model}),#{context})",
+        string(name)
+    );
+    represent(&mut out, shape, representation);
+    Ok(exchange_structure(&out, name))
+}
+
+/// A closed loop of lines and arcs in z = 0 as an `EDGE_LOOP` (`z`, `x`: the plane's
+/// directions); returns its id.
+fn flat_loop(out: &mut Entities, edges: &[PatternEdge], z: usize, x: usize) -> usize {
     let lift = |p: glam::DVec2| p.extend(0.0);
-    let vertices: Vec<usize> = outline
+    let vertices: Vec<usize> = edges
         .iter()
         .map(|e| {
             let point = out.point(lift(e.start()));
@@ -670,7 +691,7 @@ pub fn flat_to_step(pattern: &FlatPattern, name: &str) -> Result<String> {
         })
         .collect();
     let mut loop_edges = Vec::new();
-    for (k, edge) in outline.iter().enumerate() {
+    for (k, edge) in edges.iter().enumerate() {
         let (start, end) = (vertices[k], vertices[(k + 1) % vertices.len()]);
         let (geometry, same) = match *edge {
             PatternEdge::Line { from, to } => {
@@ -703,17 +724,7 @@ pub fn flat_to_step(pattern: &FlatPattern, name: &str) -> Result<String> {
         let e = out.add(format!("EDGE_CURVE('',#{start},#{end},#{geometry},{flag})"));
         loop_edges.push(out.add(format!("ORIENTED_EDGE('',*,*,#{e},.T.)")));
     }
-    let edge_loop = out.add(format!("EDGE_LOOP('',{})", refs(&loop_edges)));
-    let bound = out.add(format!("FACE_OUTER_BOUND('',#{edge_loop},.T.)"));
-    let face = out.add(format!("ADVANCED_FACE('',(#{bound}),#{plane},.T.)"));
-    let shell = out.add(format!("OPEN_SHELL('',(#{face}))"));
-    let model = out.add(format!("SHELL_BASED_SURFACE_MODEL('',(#{shell}))"));
-    let representation = format!(
-        "MANIFOLD_SURFACE_SHAPE_REPRESENTATION('{}',(#{placement},#{model}),#{context})",
-        string(name)
-    );
-    represent(&mut out, shape, representation);
-    Ok(exchange_structure(&out, name))
+    out.add(format!("EDGE_LOOP('',{})", refs(&loop_edges)))
 }
 
 #[cfg(test)]

@@ -63,6 +63,13 @@ pub fn pattern_to_svg(title: &str, pattern: &FlatPattern) -> String {
         "  <path id=\"outline\" fill=\"none\" stroke=\"black\" stroke-width=\"0.2\" d=\"{}\"/>",
         path(&pattern.outline, true)
     );
+    for (k, hole) in pattern.holes.iter().enumerate() {
+        let _ = writeln!(
+            out,
+            "  <path id=\"hole{k}\" fill=\"none\" stroke=\"black\" stroke-width=\"0.2\" d=\"{}\"/>",
+            path(hole, true)
+        );
+    }
     for (k, bend) in pattern.bend_lines.iter().enumerate() {
         let _ = writeln!(
             out,
@@ -107,6 +114,7 @@ mod tests {
                     to: DVec2::new(2.0, 0.0),
                 },
             ],
+            holes: vec![],
             bend_lines: vec![],
         };
         let svg = pattern_to_svg("a & b", &pattern);

@@ -8,11 +8,13 @@
 //! | `similarity` | `Similarity`: x ↦ origin + scale·x, how constructions work at unit size |
 //! | `primitives` | circles, arcs, polylines, polygons, obrounds as exact rational pieces |
 //! | `biarc` | planar and spherical biarcs and polar (Bézier) planes (Leopoldseder & Pottmann, eqs. (7), (8)) |
+//! | `planar` | lines, arcs and G1 biarcs drawing a planar curve within a tolerance; closed loops of them |
 //! | `pattern` | [`FlatPattern`]: a developed outline of lines and circular arcs with its bend lines |
 
 pub(crate) mod biarc;
 mod framed;
 mod pattern;
+pub(crate) mod planar;
 mod primitives;
 mod similarity;
 mod topology;
@@ -23,4 +25,5 @@ pub use pattern::{FlatPattern, PatternEdge};
 pub(crate) use primitives::Arc;
 pub use primitives::{arc_through, circle, obround, polygon, polyline};
 pub(crate) use similarity::Similarity;
+
 pub use topology::{Brep, BrepBound, BrepEdge, BrepFace, BrepSurface, BrepUse, PCurve};

@@ -92,6 +92,32 @@ impl PatternEdge {
         }
     }
 
+    /// Distance from `p` to the edge.
+    pub fn distance(&self, p: DVec2) -> f64 {
+        match *self {
+            PatternEdge::Line { from, to } => {
+                let d = to - from;
+                let s = ((p - from).dot(d) / d.length_squared()).clamp(0.0, 1.0);
+                p.distance(from + s * d)
+            }
+            PatternEdge::Arc {
+                center,
+                radius,
+                from,
+                to,
+                sweep,
+            } => {
+                let (a, b) = (from - center, p - center);
+                let psi = a.perp_dot(b).atan2(a.dot(b)) * sweep.signum();
+                if psi.rem_euclid(std::f64::consts::TAU) <= sweep.abs() {
+                    (b.length() - radius).abs()
+                } else {
+                    p.distance(from).min(p.distance(to))
+                }
+            }
+        }
+    }
+
     /// Arc length.
     pub fn length(&self) -> f64 {
         match *self {
@@ -101,18 +127,21 @@ impl PatternEdge {
     }
 }
 
-/// The cutting outline and the bend lines of a developed strip.
+/// The cutting outline, its holes and the bend lines of a developed part.
 #[derive(Clone, Debug, PartialEq)]
 pub struct FlatPattern {
-    /// A closed loop: each edge starts where the one before ends.
+    /// A closed loop: each edge starts where the one before ends; counter-clockwise.
     pub outline: Vec<PatternEdge>,
+    /// Holes and cutouts inside the outline, each a closed loop, clockwise.
+    pub holes: Vec<Vec<PatternEdge>>,
     /// The rulings between consecutive pieces, from the t₀ side to the t₁ side.
     pub bend_lines: Vec<PatternEdge>,
 }
 
 impl FlatPattern {
-    /// The area enclosed by the outline, positive when it runs counter-clockwise (Green's
-    /// theorem: the chords of its edges, plus the circular segments of its arcs). Summed in
+    /// The area enclosed by the outline less the holes', positive when the outline runs
+    /// counter-clockwise and the holes clockwise (Green's theorem: the chords of the
+    /// edges, plus the circular segments of the arcs). Summed in
     /// coordinates scaled to the pattern's size (a power of two), so that no product
     /// overflows or underflows; refused when the area itself is outside the range of f64.
     pub fn area(&self) -> Result<f64> {
@@ -127,6 +156,7 @@ impl FlatPattern {
             * self
                 .outline
                 .iter()
+                .chain(self.holes.iter().flatten())
                 .map(|e| {
                     let chord = (e.start() / scale).perp_dot(e.end() / scale);
                     match *e {

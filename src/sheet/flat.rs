@@ -22,17 +22,10 @@
 use super::thickness::bend_sign;
 use super::trim::{fraction_of_parameter, fraction_rate, TrimKind, TrimmedSpline};
 use crate::cone_spline::{ConePiece, Motion};
-use crate::error::{Error, Result};
-use crate::model::biarc::{biarc, equal_lambda};
+use crate::error::Result;
+use crate::model::planar::{biarcs, close_loop, POINT_LENGTH};
 use crate::model::{FlatPattern, PatternEdge};
 use glam::{DVec2, DVec3};
-
-/// Points per biarc interval at which its distance from the developed boundary is measured.
-const BIARC_SAMPLES: usize = 12;
-/// Deepest halving of a boundary interval for biarcs.
-const MAX_BIARC_DEPTH: usize = 30;
-/// Relative length below which an edge is a point (skipped).
-const POINT_LENGTH: f64 = 1e-12;
 
 /// A developed boundary curve over the formed piece's arc parameter v: point and
 /// derivative.
@@ -64,109 +57,6 @@ impl Developed<'_> {
             (dp + rho * de) * fraction_rate(self.angle, v) + self.trim.derivative(v) * el.ruling;
         ((el.point + rho * el.ruling).truncate(), d.truncate())
     }
-}
-
-fn perp(v: DVec2) -> DVec2 {
-    DVec2::new(-v.y, v.x)
-}
-
-/// The arc (or line) from `a` with unit tangent `t` to `c`.
-fn arc_from(a: DVec2, t: DVec2, c: DVec2) -> PatternEdge {
-    let d = c - a;
-    let sweep = 2.0 * t.perp_dot(d).atan2(t.dot(d));
-    if sweep.abs() <= 1e-12 {
-        return PatternEdge::Line { from: a, to: c };
-    }
-    let radius = d.length() / (2.0 * (0.5 * sweep).sin().abs());
-    let centre = a + radius * sweep.signum() * perp(t);
-    PatternEdge::Arc {
-        center: centre,
-        radius,
-        from: a,
-        to: c,
-        sweep,
-    }
-}
-
-/// Distance from `p` to an edge.
-pub(crate) fn edge_distance(edge: &PatternEdge, p: DVec2) -> f64 {
-    match *edge {
-        PatternEdge::Line { from, to } => {
-            let d = to - from;
-            let s = ((p - from).dot(d) / d.length_squared()).clamp(0.0, 1.0);
-            p.distance(from + s * d)
-        }
-        PatternEdge::Arc {
-            center,
-            radius,
-            from,
-            to,
-            sweep,
-        } => {
-            let (a, b) = (from - center, p - center);
-            let psi = a.perp_dot(b).atan2(a.dot(b)) * sweep.signum();
-            let along = psi.rem_euclid(std::f64::consts::TAU);
-            if along <= sweep.abs() {
-                (b.length() - radius).abs()
-            } else {
-                p.distance(from).min(p.distance(to))
-            }
-        }
-    }
-}
-
-/// G1 biarcs through the developed curve on [v0, v1] within `tolerance`, appended to `out`
-/// (`scale` turns lengths into the caller's units for the message).
-fn biarcs(
-    curve: &Developed,
-    v0: f64,
-    v1: f64,
-    tolerance: f64,
-    scale: f64,
-    depth: usize,
-    out: &mut Vec<PatternEdge>,
-) -> Result<()> {
-    let ((a, ta), (b, tb)) = (curve.at(v0), curve.at(v1));
-    let lift = |p: DVec2| p.extend(0.0);
-    let attempt = (ta.length() > 0.0 && tb.length() > 0.0)
-        .then(|| equal_lambda(lift(a), lift(ta.normalize()), lift(b), lift(tb.normalize())))
-        .flatten()
-        .map(|lambda| {
-            let arc = biarc(
-                lift(a),
-                lift(ta.normalize()),
-                lift(b),
-                lift(tb.normalize()),
-                lambda,
-                lambda,
-            );
-            let c = arc.c.truncate();
-            let first = arc_from(a, ta.normalize(), c);
-            // The second arc, traversed backwards from b against its tangent.
-            let second = arc_from(b, -tb.normalize(), c).reversed();
-            [first, second]
-        });
-    if let Some(pair) = attempt {
-        let error = (1..BIARC_SAMPLES)
-            .map(|j| {
-                let p = curve.at(v0 + (v1 - v0) * j as f64 / BIARC_SAMPLES as f64).0;
-                edge_distance(&pair[0], p).min(edge_distance(&pair[1], p))
-            })
-            .fold(0.0, f64::max);
-        if error <= tolerance {
-            out.extend(pair);
-            return Ok(());
-        }
-    }
-    let mid = 0.5 * (v0 + v1);
-    if depth >= MAX_BIARC_DEPTH || mid <= v0 || mid >= v1 {
-        return Err(Error::not_converged(format!(
-            "the flat boundary is not within flat_tolerance = {:.3e} of biarcs after {depth} halvings",
-            tolerance * scale
-        )));
-    }
-    biarcs(curve, v0, mid, tolerance, scale, depth + 1, out)?;
-    biarcs(curve, mid, v1, tolerance, scale, depth + 1, out)
 }
 
 /// The edges of one developed boundary (trim `side` of piece `k`), in the direction of v.
@@ -218,28 +108,9 @@ fn boundary_edges(
         (TrimKind::Plane, _) if bend_sign(formed) == 0.0 => {
             out.push(PatternEdge::Line { from: a, to: b })
         }
-        _ => biarcs(&curve, 0.0, 1.0, tolerance, scale, 0, out)?,
+        _ => biarcs(&|v| curve.at(v), 0.0, 1.0, tolerance, scale, out)?,
     }
     Ok(())
-}
-
-/// The edge between the points `from` and `to`: a line, or the arc of the same sweep
-/// through both (centre and radius recomputed, so that both ends lie on its circle).
-fn between(edge: PatternEdge, from: DVec2, to: DVec2) -> PatternEdge {
-    match edge {
-        PatternEdge::Line { .. } => PatternEdge::Line { from, to },
-        PatternEdge::Arc { sweep, .. } => {
-            let d = to - from;
-            let half = 0.5 * d.length();
-            PatternEdge::Arc {
-                center: from + 0.5 * d + perp(d / d.length()) * (half / (0.5 * sweep).tan()),
-                radius: half / (0.5 * sweep).sin().abs(),
-                from,
-                to,
-                sweep,
-            }
-        }
-    }
 }
 
 /// The developed boundaries of a layer, before they are joined into the outline: the
@@ -263,6 +134,7 @@ impl FlatLayout {
         // Internal coordinates are of unit size.
         let mut pattern = FlatPattern {
             outline: close_loop(outline, 1.0),
+            holes: vec![],
             bend_lines: self.bend_lines.clone(),
         };
         if pattern.area().is_ok_and(|a| a < 0.0) {
@@ -316,28 +188,4 @@ pub(crate) fn flat_layout(
             .filter(|e| e.length() > POINT_LENGTH)
             .collect(),
     })
-}
-
-/// Drops point-like edges and closes the round-off gaps between the others (a vertex
-/// computed on two pieces differs by ~1e-12): where a line meets an arc the joint is the
-/// arc's end point, between arcs the first arc's, and every arc is redrawn through its
-/// joints, so that its DXF form (centre, radius, angles) gives the same end points.
-fn close_loop(edges: Vec<PatternEdge>, size: f64) -> Vec<PatternEdge> {
-    let kept: Vec<PatternEdge> = edges
-        .into_iter()
-        .filter(|e| e.length() > POINT_LENGTH * size)
-        .collect();
-    let m = kept.len();
-    let joints: Vec<DVec2> = (0..m)
-        .map(|k| {
-            let (before, after) = (&kept[(k + m - 1) % m], &kept[k]);
-            match (before, after) {
-                (PatternEdge::Line { .. }, PatternEdge::Arc { from, .. }) => *from,
-                _ => before.end(),
-            }
-        })
-        .collect();
-    (0..m)
-        .map(|k| between(kept[k], joints[k], joints[(k + 1) % m]))
-        .collect()
 }

@@ -16,13 +16,13 @@
 
 mod brep;
 mod flat;
-mod marks;
+pub(crate) mod marks;
 mod part;
 mod profile;
-mod rails;
+pub(crate) mod rails;
 mod thickness;
 mod transition;
-mod trim;
+pub(crate) mod trim;
 
 pub use part::{PartReport, SheetOptions, SheetPart, Side};
 pub use thickness::{Layer, Reference, Sheet};

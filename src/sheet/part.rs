@@ -444,6 +444,7 @@ impl SheetPart {
         let scale = |e: &PatternEdge| e.scaled(self.frame.scale);
         Ok(FlatPattern {
             outline: flat.outline.iter().map(scale).collect(),
+            holes: vec![],
             bend_lines: flat.bend_lines.iter().map(scale).collect(),
         })
     }

@@ -267,6 +267,7 @@ fn flat_area(part: &SheetPart, scale: f64) -> f64 {
         .collect();
     crate::FlatPattern {
         outline,
+        holes: vec![],
         bend_lines: vec![],
     }
     .area()

@@ -778,6 +778,7 @@ fn flat_tall_and_eccentric_transitions_are_invariant_under_scaling_and_translati
                 .collect::<Vec<_>>();
             let a = crate::FlatPattern {
                 outline: area,
+                holes: vec![],
                 bend_lines: vec![],
             }
             .area()

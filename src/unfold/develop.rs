@@ -1,0 +1,178 @@
+//! The isometry from a face onto the plane, both ways (internal coordinates).
+//!
+//! * A plane: its own coordinates.
+//! * A circular cylinder of radius R: (R θ, z), θ the angle about the axis, z along it.
+//! * A right cone of half angle α: the point at distance ρ from the apex and angle θ about
+//!   the axis goes to ρ (cos θ sin α, sin θ sin α) — the sector of angle φ sin α of [LP]
+//!   "Bending sequences and development".
+//! * Any other developable: its cone spline ([LP] "G1 Hermite elements", fitted between
+//!   the surface's rails within half the tolerance, `crate::sheet` rails), each point
+//!   developed through the piece, fraction of the motion and distance along the ruling of
+//!   its nearest point on the spline (the exact development of the spline, as the marks of
+//!   a sheet part).
+//!
+//! On a cylinder or a cone θ is measured from a cut: a seam of the face, or the middle of
+//! the widest angle its boundary leaves free; θ ∈ [0, 2π). A point on the cut itself is at
+//! 0 or at 2π, which the caller chooses by continuity along the boundary.
+
+use super::kind::Recognized;
+use crate::cone_spline::ConeSpline;
+use crate::sheet::marks::{flat_to_part, part_to_flat, part_to_surface, surface_to_part};
+use crate::sheet::trim::TrimmedSpline;
+use glam::{DVec2, DVec3};
+use std::f64::consts::TAU;
+
+/// Angles within this of the cut are on it.
+const ON_CUT: f64 = 1e-9;
+
+/// A face's development (internal coordinates).
+#[derive(Clone, Debug)]
+pub(crate) enum Development {
+    Plane {
+        origin: DVec3,
+        x: DVec3,
+        y: DVec3,
+    },
+    /// A cylinder (`sin` = None) or a cone about an axis; angles from `x` turned by `cut`.
+    Round {
+        origin: DVec3,
+        axis: DVec3,
+        x: DVec3,
+        y: DVec3,
+        cut: f64,
+        radius: f64,
+        sin: Option<f64>,
+    },
+    Spline {
+        part: TrimmedSpline,
+        developed: ConeSpline,
+    },
+}
+
+/// A flat point and whether it lies on the cut (so that 2π·scale may be added or removed).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct FlatPoint {
+    pub point: DVec2,
+    pub on_cut: bool,
+}
+
+impl Development {
+    /// The development of a plane, a cylinder or a cone with the cut at angle `cut` from
+    /// its `x` (unused for planes); `None` for the other kinds.
+    pub fn analytic(shape: &Recognized, cut: f64) -> Option<Self> {
+        Some(match *shape {
+            Recognized::Plane { origin, x, y } => Development::Plane { origin, x, y },
+            Recognized::Cylinder {
+                origin,
+                axis,
+                x,
+                radius,
+            } => Development::Round {
+                origin,
+                axis,
+                x,
+                y: axis.cross(x),
+                cut,
+                radius,
+                sin: None,
+            },
+            Recognized::Cone { apex, axis, x, sin } => Development::Round {
+                origin: apex,
+                axis,
+                x,
+                y: axis.cross(x),
+                cut,
+                radius: 0.0,
+                sin: Some(sin),
+            },
+            _ => return None,
+        })
+    }
+
+    /// The angle of `p` about the axis of a round face from its `x` (not from the cut).
+    pub fn raw_angle(p: DVec3, origin: DVec3, x: DVec3, y: DVec3) -> f64 {
+        let d = p - origin;
+        d.dot(y).atan2(d.dot(x))
+    }
+
+    /// The flat point of `p` (on the face); on a cut, the point at angle 0.
+    pub fn flat(&self, p: DVec3) -> FlatPoint {
+        match self {
+            Development::Plane { origin, x, y } => FlatPoint {
+                point: DVec2::new((p - *origin).dot(*x), (p - *origin).dot(*y)),
+                on_cut: false,
+            },
+            Development::Round {
+                origin,
+                axis,
+                x,
+                y,
+                cut,
+                radius,
+                sin,
+            } => {
+                let theta = (Self::raw_angle(p, *origin, *x, *y) - cut).rem_euclid(TAU);
+                let on_cut = theta <= ON_CUT || theta >= TAU - ON_CUT;
+                let theta = if theta >= TAU - ON_CUT { 0.0 } else { theta };
+                let point = match sin {
+                    None => DVec2::new(radius * theta, (p - *origin).dot(*axis)),
+                    Some(s) => DVec2::from_angle(theta * s) * (p - *origin).length(),
+                };
+                FlatPoint { point, on_cut }
+            }
+            Development::Spline { part, developed } => {
+                let (at, _) = surface_to_part(part, 0.0, p);
+                FlatPoint {
+                    point: part_to_flat(developed.pieces(), at),
+                    on_cut: false,
+                }
+            }
+        }
+    }
+
+    /// The flat point at the other end of the cut from `q` (a point at angle 0).
+    pub fn across_cut(&self, q: DVec2) -> DVec2 {
+        match self {
+            Development::Round {
+                radius, sin: None, ..
+            } => q + DVec2::X * radius * TAU,
+            Development::Round { sin: Some(s), .. } => DVec2::from_angle(TAU * s).rotate(q),
+            _ => q,
+        }
+    }
+
+    /// The formed point of the flat point `q`, `None` where the development has no point
+    /// (beyond the apex of a cone, outside a cone spline's pieces by more than `slack`).
+    pub fn formed(&self, q: DVec2, slack: f64) -> Option<DVec3> {
+        match self {
+            Development::Plane { origin, x, y } => Some(*origin + q.x * *x + q.y * *y),
+            Development::Round {
+                origin,
+                axis,
+                x,
+                y,
+                cut,
+                radius,
+                sin,
+            } => {
+                let (theta, along) = match sin {
+                    None => (q.x / radius, q.y),
+                    Some(s) => (q.to_angle().rem_euclid(TAU) / s, q.length()),
+                };
+                let angle = theta + cut;
+                let radial = angle.cos() * *x + angle.sin() * *y;
+                Some(match sin {
+                    None => *origin + radius * radial + along * *axis,
+                    Some(s) => {
+                        let cos = (1.0 - s * s).max(0.0).sqrt();
+                        *origin + along * (cos * *axis + s * radial)
+                    }
+                })
+            }
+            Development::Spline { part, developed } => {
+                let at = flat_to_part(part, developed.pieces(), q, slack)?;
+                Some(part_to_surface(part, at, 0.0).0)
+            }
+        }
+    }
+}
