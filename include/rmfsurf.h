@@ -79,6 +79,12 @@
  */
 
 /**
+ * \defgroup rmf_unfold Unfolding the caller's faces
+ * Any face of a B-rep handed in (rmf_brep_create): how developable it is, and its exact
+ * flat pattern with holes, bend lines, DXF and marks (docs/unfold.md).
+ */
+
+/**
  * \defgroup rmf_wire Wire sweeps and solids
  * A profile swept along a wire of lines, arcs and curves into exact faces and closed
  * solids (RmfShape; docs/wire-sweeps.md).
@@ -86,7 +92,8 @@
 
 /**
  * \defgroup rmf_brep Boundary representation
- * The B-rep of a wire sweep's shape or a sheet-metal part's solid (RmfBrep): vertices,
+ * The B-rep of a wire sweep's shape or a sheet-metal part's solid (RmfBrep), or one the
+ * caller hands in (rmf_brep_create): vertices,
  * shared edges with their curves on each face, oriented loops, faces with their senses,
  * shells, for a kernel to build natively (include/rmfsurf_occ.hpp for OpenCascade;
  * docs/c-api.md).
@@ -427,6 +434,55 @@
 #define RMF_ABI_VERSION 1
 
 /**
+ * RmfDevelopability.kind: a plane.
+ * \ingroup rmf_unfold
+ */
+#define RMF_SURFACE_PLANE 0
+
+/**
+ * RmfDevelopability.kind: a circular cylinder.
+ * \ingroup rmf_unfold
+ */
+#define RMF_SURFACE_CIRCULAR_CYLINDER 1
+
+/**
+ * RmfDevelopability.kind: a right circular cone.
+ * \ingroup rmf_unfold
+ */
+#define RMF_SURFACE_RIGHT_CONE 2
+
+/**
+ * RmfDevelopability.kind: a cylinder over any cross-section (parallel rulings).
+ * \ingroup rmf_unfold
+ */
+#define RMF_SURFACE_GENERAL_CYLINDER 3
+
+/**
+ * RmfDevelopability.kind: a cone over any cross-section (rulings through one apex).
+ * \ingroup rmf_unfold
+ */
+#define RMF_SURFACE_GENERAL_CONE 4
+
+/**
+ * RmfDevelopability.kind: the tangent surface of a space curve.
+ * \ingroup rmf_unfold
+ */
+#define RMF_SURFACE_TANGENT_DEVELOPABLE 5
+
+/**
+ * RmfDevelopability.kind: a developable of several of the kinds above joined along
+ * rulings, or one whose rulings are not a parameter direction.
+ * \ingroup rmf_unfold
+ */
+#define RMF_SURFACE_RULED_DEVELOPABLE 6
+
+/**
+ * RmfDevelopability.kind: not developable (Gaussian curvature beyond 1e-6 / size²).
+ * \ingroup rmf_unfold
+ */
+#define RMF_SURFACE_NOT_DEVELOPABLE 7
+
+/**
  * Result of every rmf_* function that is not a pure accessor.
  *
  * The values are fixed and never reused; new codes are added at the end.
@@ -524,6 +580,12 @@ typedef struct RmfShape RmfShape;
  * \ingroup rmf_surfaces
  */
 typedef struct RmfSurface RmfSurface;
+
+/**
+ * A face unrolled (rmf_unfold_face). Free with rmf_unfolded_face_free.
+ * \ingroup rmf_unfold
+ */
+typedef struct RmfUnfoldedFace RmfUnfoldedFace;
 
 /**
  * The sizes of a B-rep and its tolerance.
@@ -801,6 +863,52 @@ typedef struct RmfBrepShell {
    */
   const size_t *faces;
 } RmfBrepShell;
+
+/**
+ * A B-rep handed in by the caller (rmf_brep_create): the same views the library hands out,
+ * in arrays. Face f's loops are the next `faces[f].loop_count` entries of `loops` (faces in
+ * order), loop l's uses the next `loops[l].use_count` entries of `uses`. Every pointer in
+ * the views is the caller's and is read during the call only.
+ * \ingroup rmf_brep
+ */
+typedef struct RmfBrepInput {
+  /**
+   * Number of vertices.
+   */
+  size_t vertex_count;
+  /**
+   * The vertices.
+   */
+  const struct RmfVec3 *vertices;
+  /**
+   * Number of edges.
+   */
+  size_t edge_count;
+  /**
+   * The edges (start, end, degenerate, the 3-D curve).
+   */
+  const struct RmfBrepEdge *edges;
+  /**
+   * Number of faces.
+   */
+  size_t face_count;
+  /**
+   * The faces (kind, surface or plane, sense, loop_count).
+   */
+  const struct RmfBrepFace *faces;
+  /**
+   * The loops of all faces, face after face (outer flag, use_count).
+   */
+  const struct RmfBrepLoop *loops;
+  /**
+   * The edge uses of all loops, loop after loop (edge, forward, optional pcurve).
+   */
+  const struct RmfBrepUse *uses;
+  /**
+   * 1 if the faces bound a solid, 0 for a sheet.
+   */
+  uint32_t solid;
+} RmfBrepInput;
 
 /**
  * A G1 Hermite element: a ruling through `point` with direction `ruling` and the tangent
@@ -1652,6 +1760,62 @@ typedef struct RmfBezierPatch {
 } RmfBezierPatch;
 
 /**
+ * How a face is unrolled. Initialise with rmf_unfold_options_init; the struct only grows
+ * at the end.
+ * \ingroup rmf_unfold
+ */
+typedef struct RmfUnfoldOptions {
+  /**
+   * sizeof(RmfUnfoldOptions), written by rmf_unfold_options_init.
+   */
+  size_t struct_size;
+  /**
+   * Largest distance of the cone spline from a face that is neither a plane, a circular
+   * cylinder nor a right cone (default 1e-4, caller's units), > 0.
+   */
+  double tolerance;
+  /**
+   * Largest distance of the outline's biarcs from the developed boundary; 0 (the
+   * default) means the tolerance.
+   */
+  double flat_tolerance;
+  /**
+   * Most cone pieces for one face (default 10000), ≥ 2.
+   */
+  size_t max_pieces;
+} RmfUnfoldOptions;
+
+/**
+ * How developable a face is. Set struct_size to sizeof(RmfDevelopability) before the call.
+ * \ingroup rmf_unfold
+ */
+typedef struct RmfDevelopability {
+  /**
+   * sizeof(RmfDevelopability), set by the caller.
+   */
+  size_t struct_size;
+  /**
+   * RMF_SURFACE_*.
+   */
+  uint32_t kind;
+  /**
+   * Largest |K|·size² sampled over the face's surface (K the Gaussian curvature, size
+   * the diagonal of its bounding box).
+   */
+  double curvature;
+  /**
+   * For a face that is not developable: the largest relative change of length of a
+   * least-squares flattening of a grid over its surface; 0 for developable faces.
+   */
+  double stretch;
+  /**
+   * rmf_unfold_face only: the largest sampled distance of the cone spline from the face
+   * (0 where the face unrolls in closed form: planes, circular cylinders, right cones).
+   */
+  double fit_error;
+} RmfDevelopability;
+
+/**
  * How sharp (G0) joints of a wire are resolved (values fixed, validated).
  * \ingroup rmf_wire
  */
@@ -2101,6 +2265,25 @@ RmfStatus rmf_brep_use(const struct RmfBrep *brep,
  * \ingroup rmf_brep
  */
 RmfStatus rmf_brep_shell(const struct RmfBrep *brep, size_t index, struct RmfBrepShell *out);
+
+/**
+ * Makes a B-rep from the caller's data: a face or a body from another kernel (an
+ * OpenCascade shape's faces with their B-spline surfaces and edge curves, a STEP file's),
+ * for the analyses that take one (rmf_unfold_face, rmf_face_developability). Checked
+ * here: counts, NURBS data, finite vertices, vertex and edge indices in range; the
+ * analyses check what they rely on (closed loops, orthonormal plane axes).
+ *
+ * @param[in] input The arrays (see RmfBrepInput); read during the call only.
+ * @param[out] out Receives the B-rep; free with rmf_brep_free. Untouched on failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If input or out is NULL, or an array or a view's pointer
+ *         is NULL with a non-zero count.
+ * @return RMF_ERROR_INVALID_INPUT If a count, an index or a NURBS is malformed, or an
+ *         unknown kind is given (the message names it: faces[f], edges[e], uses[k]).
+ * \since 0.2
+ * \ingroup rmf_brep
+ */
+RmfStatus rmf_brep_create(const struct RmfBrepInput *input, struct RmfBrep **out);
 
 /**
  * Creates the cone spline through G1 Hermite elements: one cone pair (or one plane piece)
@@ -4728,6 +4911,228 @@ RmfStatus rmf_sweep_surface(const struct RmfCurve *spine,
                             const struct RmfFrames *frames,
                             const struct RmfCurve *profile,
                             struct RmfSurface **out);
+
+/**
+ * Writes the default options and the struct's size.
+ *
+ * @param[out] options Receives the defaults (tolerance 1e-4, flat_tolerance 0 = the
+ *             tolerance, max_pieces 10000).
+ * @return RMF_OK, or RMF_ERROR_NULL_POINTER if options is NULL.
+ * \since 0.2
+ * \ingroup rmf_unfold
+ */
+RmfStatus rmf_unfold_options_init(struct RmfUnfoldOptions *options);
+
+/**
+ * How developable face `face` of `brep` is: the kind of its surface (told from its
+ * geometry, so a cylinder handed over as a rational B-spline is a circular cylinder), its
+ * largest |K|·size², and for a face that is not developable the stretch an unrolling
+ * needs, measured.
+ *
+ * @param[in] brep The B-rep (rmf_brep_create, or one the library made).
+ * @param[in] face 0 ≤ face < face_count.
+ * @param[in,out] out struct_size set by the caller; receives the report (fit_error 0).
+ * @return RMF_OK on success; nothing is written on failure.
+ * @return RMF_ERROR_NULL_POINTER If brep or out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If face is out of range, the face has no or several
+ *         outer loops, a pole is not finite, or out->struct_size is wrong.
+ * @return RMF_ERROR_NO_SOLUTION If the surface of a face that is not developable is
+ *         singular at the middle of its domain (its stretch is not measured).
+ * \since 0.2
+ * \ingroup rmf_unfold
+ */
+RmfStatus rmf_face_developability(const struct RmfBrep *brep,
+                                  size_t face,
+                                  struct RmfDevelopability *out);
+
+/**
+ * Unrolls face `face` of `brep` into the plane z = 0, seen from the face's normal side
+ * (its outer loop counter-clockwise): planes, circular cylinders and right cones exactly
+ * in closed form; every other developable (general cylinders and cones, tangent
+ * developables, B-spline developables of degree 1 along their rulings) through its cone
+ * spline within `options->tolerance` (Leopoldseder & Pottmann), developed exactly. The
+ * face's own loops — outline and holes — are drawn edge by edge: as the line or circular
+ * arc the edge develops into where it is one (to 1e-9 of the face's size: rulings,
+ * parallel circles, helices and cross-sections of cylinders, lines and circles of planes),
+ * as G1 biarcs within the flat tolerance elsewhere. A cylinder or cone going all the way
+ * round is cut open along its seam edge. A face that is not developable is refused, the
+ * message giving its curvature and the stretch an unrolling would need.
+ *
+ * @param[in] brep The B-rep.
+ * @param[in] face 0 ≤ face < face_count.
+ * @param[in] options Tolerances, or NULL for the defaults.
+ * @param[out] out Receives the unrolled face; free with rmf_unfolded_face_free.
+ *             Untouched on failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If brep or out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If face is out of range, a loop is not closed or has no
+ *         edges, the face has no or several outer loops, a pole is not finite, the face is
+ *         not developable (the message says by how much), a closed general developable
+ *         or a developable not ruled along a parameter is given, or an option is out of
+ *         range.
+ * @return RMF_ERROR_NOT_CONVERGED If the tolerance needs more than max_pieces pieces or
+ *         the flat tolerance more biarcs than f64 resolves.
+ * \since 0.2
+ * \ingroup rmf_unfold
+ */
+RmfStatus rmf_unfold_face(const struct RmfBrep *brep,
+                          size_t face,
+                          const struct RmfUnfoldOptions *options,
+                          struct RmfUnfoldedFace **out);
+
+/**
+ * Frees an unrolled face. NULL is a no-op.
+ *
+ * @param[in] face The face to free, or NULL.
+ * \since 0.2
+ * \ingroup rmf_unfold
+ */
+void rmf_unfolded_face_free(struct RmfUnfoldedFace *face);
+
+/**
+ * The report of an unrolled face: kind, curvature, stretch (0), fit error.
+ *
+ * @param[in] face The unrolled face.
+ * @param[in,out] out struct_size set by the caller; receives the report.
+ * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT for a wrong
+ *         struct_size.
+ * \since 0.2
+ * \ingroup rmf_unfold
+ */
+RmfStatus rmf_unfolded_face_report(const struct RmfUnfoldedFace *face,
+                                   struct RmfDevelopability *out);
+
+/**
+ * The number of loops of the flat pattern: 1 (the outline) + the number of holes.
+ *
+ * @param[in] face The unrolled face.
+ * @param[out] count Receives the number of loops.
+ * @return RMF_OK or RMF_ERROR_NULL_POINTER.
+ * \since 0.2
+ * \ingroup rmf_unfold
+ */
+RmfStatus rmf_unfolded_face_loop_count(const struct RmfUnfoldedFace *face, size_t *count);
+
+/**
+ * Loop `index` of the flat pattern (layer RMF_FLAT_CUT): 0 the outline, counter-clockwise;
+ * 1 … the holes, clockwise; each closed (every edge starts where the one before ends).
+ *
+ * Size query: with capacity 0 (edges may be NULL) only count is written.
+ *
+ * @param[in] face The unrolled face.
+ * @param[in] index 0 ≤ index < rmf_unfolded_face_loop_count.
+ * @param[out] edges Buffer for capacity edges.
+ * @param[in] capacity Capacity of edges; 0 for a size query.
+ * @param[out] count Receives the number of edges.
+ * @return RMF_OK on success or for a size query.
+ * @return RMF_ERROR_NULL_POINTER If face or count is NULL, or edges is NULL with a
+ *         non-zero capacity.
+ * @return RMF_ERROR_BUFFER_TOO_SMALL If capacity is non-zero but too small; count is written.
+ * @return RMF_ERROR_INVALID_INPUT If index is out of range.
+ * \since 0.2
+ * \ingroup rmf_unfold
+ */
+RmfStatus rmf_unfolded_face_loop(const struct RmfUnfoldedFace *face,
+                                 size_t index,
+                                 struct RmfFlatEdge *edges,
+                                 size_t capacity,
+                                 size_t *count);
+
+/**
+ * The bend lines of the flat pattern (layer RMF_FLAT_BEND): the rulings where the pieces
+ * of a cone spline meet, clipped to the face; none for planes, circular cylinders and
+ * right cones (a face is one bend or none).
+ *
+ * Size query: with capacity 0 (edges may be NULL) only count is written.
+ *
+ * @param[in] face The unrolled face.
+ * @param[out] edges Buffer for capacity edges.
+ * @param[in] capacity Capacity of edges; 0 for a size query.
+ * @param[out] count Receives the number of bend lines.
+ * @return RMF_OK on success or for a size query.
+ * @return RMF_ERROR_NULL_POINTER If face or count is NULL, or edges is NULL with a
+ *         non-zero capacity.
+ * @return RMF_ERROR_BUFFER_TOO_SMALL If capacity is non-zero but too small; count is written.
+ * \since 0.2
+ * \ingroup rmf_unfold
+ */
+RmfStatus rmf_unfolded_face_bend_lines(const struct RmfUnfoldedFace *face,
+                                       struct RmfFlatEdge *edges,
+                                       size_t capacity,
+                                       size_t *count);
+
+/**
+ * The flat pattern's area: the outline's less the holes' (exact for lines and arcs).
+ *
+ * @param[in] face The unrolled face.
+ * @param[out] area Receives the area.
+ * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if the area is
+ *         outside the range of f64.
+ * \since 0.2
+ * \ingroup rmf_unfold
+ */
+RmfStatus rmf_unfolded_face_area(const struct RmfUnfoldedFace *face, double *area);
+
+/**
+ * The flat pattern as a DXF R12 file: LINE and ARC entities, outline and holes on layer
+ * CUT, bend lines on layer BEND.
+ *
+ * Size query: with capacity 0 (text may be NULL) only length is written.
+ *
+ * @param[in] face The unrolled face.
+ * @param[out] text Buffer for capacity bytes; receives the text and a terminating NUL.
+ * @param[in] capacity Capacity of text; 0 for a size query.
+ * @param[out] length Receives the text's length without the NUL.
+ * @return RMF_OK on success or for a size query.
+ * @return RMF_ERROR_NULL_POINTER If face or length is NULL, or text is NULL with a
+ *         non-zero capacity.
+ * @return RMF_ERROR_BUFFER_TOO_SMALL If capacity is non-zero but below length + 1.
+ * \since 0.2
+ * \ingroup rmf_unfold
+ */
+RmfStatus rmf_unfolded_face_dxf(const struct RmfUnfoldedFace *face,
+                                char *text,
+                                size_t capacity,
+                                size_t *length);
+
+/**
+ * Marks from the formed face to the flat pattern: each point of the face (holes, slots,
+ * text outlines as polylines) to its flat point by the isometry of the development.
+ *
+ * @param[in] face The unrolled face.
+ * @param[in] points count points on the face.
+ * @param[in] count Number of points (0: nothing to do).
+ * @param[out] flat count flat points.
+ * @return RMF_OK on success; nothing is written on failure.
+ * @return RMF_ERROR_NULL_POINTER If face, points or flat is NULL (count > 0).
+ * @return RMF_ERROR_INVALID_INPUT If a point is not finite (the message names it).
+ * \since 0.2
+ * \ingroup rmf_unfold
+ */
+RmfStatus rmf_unfolded_face_to_flat(const struct RmfUnfoldedFace *face,
+                                    const struct RmfVec3 *points,
+                                    size_t count,
+                                    struct RmfVec2 *flat);
+
+/**
+ * Marks from the flat pattern to the formed face: each flat point to its point on the
+ * face by the isometry of the development.
+ *
+ * @param[in] face The unrolled face.
+ * @param[in] flat count points of the flat pattern.
+ * @param[in] count Number of points (0: nothing to do).
+ * @param[out] points count points on the face.
+ * @return RMF_OK on success; nothing is written on failure.
+ * @return RMF_ERROR_NULL_POINTER If face, flat or points is NULL (count > 0).
+ * @return RMF_ERROR_INVALID_INPUT If a point is not finite or has no formed point (beyond
+ *         a cone spline's pieces); the message names it.
+ * \since 0.2
+ * \ingroup rmf_unfold
+ */
+RmfStatus rmf_unfolded_face_to_formed(const struct RmfUnfoldedFace *face,
+                                      const struct RmfVec2 *flat,
+                                      size_t count,
+                                      struct RmfVec3 *points);
 
 /**
  * Writes the default options and their struct_size.

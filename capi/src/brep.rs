@@ -5,10 +5,12 @@
 //! parts (rmf_cone_spline_part_brep) hand it out; `include/rmfsurf_occ.hpp` builds an
 //! OpenCascade shape from it with BRep_Builder.
 
-use super::boundary::{free_handle, guard, invalid_arg, out_ptr, reference, write, FfiResult};
+use super::boundary::{
+    free_handle, guard, invalid_arg, out_ptr, reference, slice, write, FfiError, FfiResult,
+};
 use super::status::RmfStatus;
 use super::types::{RmfNurbsCurve, RmfNurbsSurface, RmfVec2, RmfVec3};
-use rmfsurf::{Brep, BrepFace, BrepSurface, BrepUse, PCurve};
+use rmfsurf::{Brep, BrepBound, BrepEdge, BrepFace, BrepSurface, BrepUse, PCurve};
 
 /// RmfBrepFace.kind: a rational B-spline surface (RmfBrepFace.nurbs).
 /// \ingroup rmf_brep
@@ -115,6 +117,11 @@ impl RmfBrep {
 
     pub(crate) fn into_raw(self) -> *mut Self {
         Box::into_raw(Box::new(self))
+    }
+
+    /// The model the views describe.
+    pub(crate) fn model(&self) -> &Brep {
+        &self._model
     }
 }
 
@@ -478,4 +485,196 @@ pub unsafe extern "C" fn rmf_brep_shell(
         );
         Ok(())
     })
+}
+
+/// A B-rep handed in by the caller (rmf_brep_create): the same views the library hands out,
+/// in arrays. Face f's loops are the next `faces[f].loop_count` entries of `loops` (faces in
+/// order), loop l's uses the next `loops[l].use_count` entries of `uses`. Every pointer in
+/// the views is the caller's and is read during the call only.
+/// \ingroup rmf_brep
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct RmfBrepInput {
+    /// Number of vertices.
+    pub vertex_count: usize,
+    /// The vertices.
+    pub vertices: *const RmfVec3,
+    /// Number of edges.
+    pub edge_count: usize,
+    /// The edges (start, end, degenerate, the 3-D curve).
+    pub edges: *const RmfBrepEdge,
+    /// Number of faces.
+    pub face_count: usize,
+    /// The faces (kind, surface or plane, sense, loop_count).
+    pub faces: *const RmfBrepFace,
+    /// The loops of all faces, face after face (outer flag, use_count).
+    pub loops: *const RmfBrepLoop,
+    /// The edge uses of all loops, loop after loop (edge, forward, optional pcurve).
+    pub uses: *const RmfBrepUse,
+    /// 1 if the faces bound a solid, 0 for a sheet.
+    pub solid: u32,
+}
+
+/// Makes a B-rep from the caller's data: a face or a body from another kernel (an
+/// OpenCascade shape's faces with their B-spline surfaces and edge curves, a STEP file's),
+/// for the analyses that take one (rmf_unfold_face, rmf_face_developability). Checked
+/// here: counts, NURBS data, finite vertices, vertex and edge indices in range; the
+/// analyses check what they rely on (closed loops, orthonormal plane axes).
+///
+/// @param[in] input The arrays (see RmfBrepInput); read during the call only.
+/// @param[out] out Receives the B-rep; free with rmf_brep_free. Untouched on failure.
+/// @return RMF_OK on success.
+/// @return RMF_ERROR_NULL_POINTER If input or out is NULL, or an array or a view's pointer
+///         is NULL with a non-zero count.
+/// @return RMF_ERROR_INVALID_INPUT If a count, an index or a NURBS is malformed, or an
+///         unknown kind is given (the message names it: faces[f], edges[e], uses[k]).
+/// \since 0.2
+/// \ingroup rmf_brep
+#[no_mangle]
+pub unsafe extern "C" fn rmf_brep_create(
+    input: *const RmfBrepInput,
+    out: *mut *mut RmfBrep,
+) -> RmfStatus {
+    guard("rmf_brep_create", || {
+        let input = reference(input, "input")?;
+        let out = out_ptr(out, "out")?;
+        let brep = read_brep(input)?;
+        write(out, RmfBrep::new(brep).into_raw());
+        Ok(())
+    })
+}
+
+/// The model from the caller's arrays (see rmf_brep_create).
+///
+/// # Safety
+/// The arrays and the views' pointers are NULL or valid for their counts.
+unsafe fn read_brep(input: &RmfBrepInput) -> FfiResult<Brep> {
+    let vertices: Vec<rmfsurf::glam::DVec3> =
+        slice(input.vertices, input.vertex_count, "vertices")?
+            .iter()
+            .map(|&v| v.into())
+            .collect();
+    if let Some(i) = vertices.iter().position(|v| !v.is_finite()) {
+        return invalid_arg(format!("vertices[{i}] is not finite"));
+    }
+    let mut edges = Vec::new();
+    for (e, edge) in slice(input.edges, input.edge_count, "edges")?
+        .iter()
+        .enumerate()
+    {
+        let curve = edge
+            .curve
+            .read()
+            .map_err(|err| named(err, format!("edges[{e}].curve")))?;
+        for (end, name) in [(edge.start, "start"), (edge.end, "end")] {
+            if end >= vertices.len() {
+                return invalid_arg(format!(
+                    "edges[{e}].{name} = {end} but there are {} vertices",
+                    vertices.len()
+                ));
+            }
+        }
+        edges.push(BrepEdge {
+            curve,
+            start: edge.start,
+            end: edge.end,
+            degenerate: edge.degenerate != 0,
+        });
+    }
+    let faces = slice(input.faces, input.face_count, "faces")?;
+    let loop_count = faces
+        .iter()
+        .try_fold(0usize, |n, f| n.checked_add(f.loop_count));
+    let Some(loop_count) = loop_count else {
+        return invalid_arg("faces: the loop counts overflow".into());
+    };
+    let loops = slice(input.loops, loop_count, "loops")?;
+    let use_count = loops
+        .iter()
+        .try_fold(0usize, |n, l| n.checked_add(l.use_count));
+    let Some(use_count) = use_count else {
+        return invalid_arg("loops: the use counts overflow".into());
+    };
+    let uses = slice(input.uses, use_count, "uses")?;
+    let (mut next_loop, mut next_use) = (0, 0);
+    let mut model_faces = Vec::new();
+    for (f, face) in faces.iter().enumerate() {
+        let surface = match face.kind {
+            RMF_BREP_SURFACE_NURBS => BrepSurface::Nurbs(
+                face.nurbs
+                    .read()
+                    .map_err(|err| named(err, format!("faces[{f}].nurbs")))?,
+            ),
+            RMF_BREP_SURFACE_PLANE => BrepSurface::Plane {
+                origin: face.plane_origin.into(),
+                normal: face.plane_normal.into(),
+                x_axis: face.plane_x_axis.into(),
+            },
+            kind => {
+                return invalid_arg(format!("faces[{f}].kind = {kind} is no RMF_BREP_SURFACE_*"))
+            }
+        };
+        let mut bounds = Vec::new();
+        for l in &loops[next_loop..next_loop + face.loop_count] {
+            let mut model_uses = Vec::new();
+            for (k, u) in uses[next_use..next_use + l.use_count].iter().enumerate() {
+                let k = next_use + k;
+                if u.edge >= edges.len() {
+                    return invalid_arg(format!(
+                        "uses[{k}].edge = {} but there are {} edges",
+                        u.edge,
+                        edges.len()
+                    ));
+                }
+                model_uses.push(BrepUse {
+                    edge: u.edge,
+                    forward: u.forward != 0,
+                    pcurve: read_pcurve(u, k)?,
+                });
+            }
+            next_use += l.use_count;
+            bounds.push(BrepBound {
+                uses: model_uses,
+                outer: l.outer != 0,
+            });
+        }
+        next_loop += face.loop_count;
+        model_faces.push(BrepFace {
+            surface,
+            same_sense: face.same_sense != 0,
+            bounds,
+        });
+    }
+    Ok(Brep {
+        vertices,
+        edges,
+        faces: model_faces,
+        closed: input.solid != 0,
+    })
+}
+
+/// A use's curve in its face's parameter plane.
+unsafe fn read_pcurve(u: &RmfBrepUse, k: usize) -> FfiResult<Option<PCurve>> {
+    Ok(match u.pcurve_kind {
+        RMF_PCURVE_NONE => None,
+        RMF_PCURVE_LINE => Some(PCurve::Line {
+            origin: (u.line_origin.x, u.line_origin.y),
+            direction: (u.line_direction.x, u.line_direction.y),
+        }),
+        RMF_PCURVE_NURBS => Some(PCurve::Curve(
+            u.pcurve
+                .read()
+                .map_err(|err| named(err, format!("uses[{k}].pcurve")))?,
+        )),
+        kind => return invalid_arg(format!("uses[{k}].pcurve_kind = {kind} is no RMF_PCURVE_*")),
+    })
+}
+
+/// The error with the view's name in front.
+fn named(err: FfiError, name: String) -> FfiError {
+    match err {
+        FfiError::Null(what) => FfiError::NullAt(format!("{name}.{what}")),
+        FfiError::Core(e) => FfiError::Core(e.context(name)),
+        other => other,
+    }
 }

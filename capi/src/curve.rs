@@ -3,15 +3,15 @@
 //! which the approximations sample (rmf_callback_curve_create).
 
 use super::boundary::{
-    buffer, free_handle, guard, invalid_arg, optional_out, out_ptr, reference, slice, to_usize,
-    write, FfiError, FfiResult,
+    buffer, free_handle, guard, invalid_arg, optional_out, out_ptr, reference, write, FfiError,
+    FfiResult,
 };
-use super::input::{callback_curve, poles_and_weights, CallbackCurve, RmfCurveCallback};
+use super::input::{callback_curve, nurbs_curve, CallbackCurve, RmfCurveCallback};
 use super::status::RmfStatus;
 use super::types::{piece_views, PieceViews, RmfBezierCurve, RmfNurbsCurve, RmfVec3};
 use libc::c_void;
 use rmfsurf::glam::DVec3;
-use rmfsurf::validate::{check_in_domain, check_nurbs_counts};
+use rmfsurf::validate::check_in_domain;
 use rmfsurf::PhSpline;
 use rmfsurf::{NurbsCurve, ParametricCurve, PiecewiseCurve, Result};
 use std::sync::{Arc, OnceLock};
@@ -173,16 +173,7 @@ pub unsafe extern "C" fn rmf_nurbs_curve_create(
 ) -> RmfStatus {
     guard("rmf_nurbs_curve_create", || {
         let out = out_ptr(out, "out")?;
-        if poles.is_null() {
-            return Err(FfiError::Null("poles"));
-        }
-        if knots.is_null() {
-            return Err(FfiError::Null("knots"));
-        }
-        check_nurbs_counts(to_usize(degree), pole_count, knot_count, "")?;
-        let (poles, weights) = poles_and_weights(poles, weights, pole_count)?;
-        let knots = slice(knots, knot_count, "knots")?.to_vec();
-        let nurbs = NurbsCurve::new(to_usize(degree), poles, weights, knots)?;
+        let nurbs = nurbs_curve(degree, poles, weights, pole_count, knots, knot_count)?;
         let curve = RmfCurve::new(nurbs.to_piecewise()?, Some(nurbs));
         write(out, curve.into_raw());
         Ok(())

@@ -1,13 +1,16 @@
 //! Inputs shared by the capability entry points: arrays of G1 Hermite data, and curves given
 //! either as an `RmfCurve` or as a C callback for analytic curves.
 
-use super::boundary::{invalid_arg, slice, FfiError, FfiResult};
+use super::boundary::{invalid_arg, slice, to_usize, FfiError, FfiResult};
 use super::curve::RmfCurve;
-use super::types::RmfVec3;
+use super::types::{RmfNurbsCurve, RmfNurbsSurface, RmfVec3};
 use libc::c_void;
 use rmfsurf::glam::DVec3;
 use rmfsurf::numeric::{lerp, robust_length};
-use rmfsurf::{hermite_sequence, Error, HermiteSegment, Num, ParametricCurve, Result};
+use rmfsurf::validate::check_nurbs_counts;
+use rmfsurf::{
+    hermite_sequence, Error, HermiteSegment, Num, NurbsCurve, NurbsSurface, ParametricCurve, Result,
+};
 
 /// An analytic curve given by the caller: writes the point and the tangent (the derivative,
 /// or any non-zero multiple of it) at parameter t into *point and *tangent. It must not
@@ -241,6 +244,109 @@ pub(crate) unsafe fn curve_or_callback<'a>(
         (true, Some(callback)) => Ok(Box::new(callback_curve(callback, user, t_min, t_max)?)),
         (true, None) => Err(FfiError::Null("curve and callback")),
         (false, Some(_)) => invalid_arg("give either curve or callback, not both".to_string()),
+    }
+}
+
+/// A NURBS surface from caller arrays, every count checked before an array is read.
+///
+/// # Safety
+/// The pointers are NULL or valid for the counts given.
+pub(crate) unsafe fn nurbs_surface(
+    degree_u: u32,
+    degree_v: u32,
+    poles: *const RmfVec3,
+    weights: *const f64,
+    (pole_count_u, pole_count_v): (usize, usize),
+    (knots_u, knot_count_u): (*const f64, usize),
+    (knots_v, knot_count_v): (*const f64, usize),
+) -> FfiResult<NurbsSurface> {
+    for (p, name) in [
+        (poles.cast::<u8>(), "poles"),
+        (knots_u.cast(), "knots_u"),
+        (knots_v.cast(), "knots_v"),
+    ] {
+        if p.is_null() {
+            return Err(FfiError::Null(name));
+        }
+    }
+    check_nurbs_counts(to_usize(degree_u), pole_count_u, knot_count_u, "_u")?;
+    check_nurbs_counts(to_usize(degree_v), pole_count_v, knot_count_v, "_v")?;
+    let Some(count) = pole_count_u.checked_mul(pole_count_v) else {
+        return invalid_arg(format!(
+            "pole_count_u × pole_count_v = {pole_count_u} × {pole_count_v} overflows"
+        ));
+    };
+    let (poles, weights) = poles_and_weights(poles, weights, count)?;
+    let knots_u = slice(knots_u, knot_count_u, "knots_u")?.to_vec();
+    let knots_v = slice(knots_v, knot_count_v, "knots_v")?.to_vec();
+    Ok(NurbsSurface::new(
+        to_usize(degree_u),
+        to_usize(degree_v),
+        pole_count_u,
+        pole_count_v,
+        poles,
+        weights,
+        knots_u,
+        knots_v,
+    )?)
+}
+
+/// A NURBS curve from caller arrays, every count checked before an array is read.
+///
+/// # Safety
+/// The pointers are NULL or valid for the counts given.
+pub(crate) unsafe fn nurbs_curve(
+    degree: u32,
+    poles: *const RmfVec3,
+    weights: *const f64,
+    pole_count: usize,
+    knots: *const f64,
+    knot_count: usize,
+) -> FfiResult<NurbsCurve> {
+    if poles.is_null() {
+        return Err(FfiError::Null("poles"));
+    }
+    if knots.is_null() {
+        return Err(FfiError::Null("knots"));
+    }
+    check_nurbs_counts(to_usize(degree), pole_count, knot_count, "")?;
+    let (poles, weights) = poles_and_weights(poles, weights, pole_count)?;
+    let knots = slice(knots, knot_count, "knots")?.to_vec();
+    Ok(NurbsCurve::new(to_usize(degree), poles, weights, knots)?)
+}
+
+impl RmfNurbsCurve {
+    /// The curve this view describes (the caller's arrays, checked).
+    ///
+    /// # Safety
+    /// The view's pointers are NULL or valid for its counts.
+    pub(crate) unsafe fn read(&self) -> FfiResult<NurbsCurve> {
+        nurbs_curve(
+            self.degree,
+            self.poles,
+            self.weights,
+            self.pole_count,
+            self.knots,
+            self.knot_count,
+        )
+    }
+}
+
+impl RmfNurbsSurface {
+    /// The surface this view describes (the caller's arrays, checked).
+    ///
+    /// # Safety
+    /// The view's pointers are NULL or valid for its counts.
+    pub(crate) unsafe fn read(&self) -> FfiResult<NurbsSurface> {
+        nurbs_surface(
+            self.degree_u,
+            self.degree_v,
+            self.poles,
+            self.weights,
+            (self.pole_count_u, self.pole_count_v),
+            (self.knots_u, self.knot_count_u),
+            (self.knots_v, self.knot_count_v),
+        )
     }
 }
 

@@ -4,7 +4,7 @@
 //!
 //! One module per C type: [`curve`] (`RmfCurve`; the primitive curves in [`primitives`]), [`frames`] (`RmfFrames`), [`surface`]
 //! (`RmfSurface`), [`shape`] (`RmfShape`, made by the wire sweeps of [`wire`]), [`sheet`]
-//! (`RmfSheetOptions`, sheet-metal parts); [`status`] holds the status codes, last error and
+//! (`RmfSheetOptions`, sheet-metal parts), [`unfold`] (`RmfUnfoldedFace`, the caller's faces unrolled); [`status`] holds the status codes, last error and
 //! version; [`types`]
 //! the plain data structs and borrowed views; [`input`] the inputs several capabilities
 //! share (Hermite arrays, callback curves). The header `include/rmfsurf.h` is generated
@@ -32,6 +32,7 @@ pub mod sheet;
 pub mod status;
 pub mod surface;
 pub mod types;
+pub mod unfold;
 pub mod wire;
 
 pub use brep::RmfBrep;
@@ -43,3 +44,4 @@ pub use sheet::{RmfFlatEdge, RmfSheetOptions, RmfSheetReport};
 pub use status::RmfStatus;
 pub use surface::RmfSurface;
 pub use types::{RmfBezierCurve, RmfBezierPatch, RmfNurbsCurve, RmfNurbsSurface, RmfVec2, RmfVec3};
+pub use unfold::{RmfDevelopability, RmfUnfoldOptions, RmfUnfoldedFace};

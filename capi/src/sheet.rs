@@ -525,7 +525,7 @@ pub unsafe extern "C" fn rmf_cone_spline_part_boundary(
     })
 }
 
-fn flat_edge(edge: &PatternEdge, layer: u32) -> RmfFlatEdge {
+pub(crate) fn flat_edge(edge: &PatternEdge, layer: u32) -> RmfFlatEdge {
     match *edge {
         PatternEdge::Line { from, to } => RmfFlatEdge {
             layer,

@@ -2,15 +2,15 @@
 //! with its NURBS and per-patch views and a tessellator.
 
 use super::boundary::{
-    buffer, free_handle, guard, invalid_arg, optional_out, options, out_ptr, reference, slice,
-    to_usize, write, FfiError, FfiResult, OptionsStruct,
+    buffer, free_handle, guard, invalid_arg, optional_out, options, out_ptr, reference, to_usize,
+    write, FfiError, FfiResult, OptionsStruct,
 };
 use super::curve::RmfCurve;
 use super::frames::{framed_curve, RmfFrames};
-use super::input::poles_and_weights;
+use super::input::nurbs_surface;
 use super::status::RmfStatus;
 use super::types::{piece_views, PieceViews, RmfBezierPatch, RmfNurbsSurface, RmfVec3};
-use rmfsurf::validate::{check_in_domain, check_nurbs_counts};
+use rmfsurf::validate::check_in_domain;
 use rmfsurf::{mesh_size, sweep, tessellate, NurbsSurface, PiecewiseSurface, Result};
 use std::sync::{Arc, OnceLock};
 
@@ -140,34 +140,14 @@ unsafe fn surface_from_nurbs(
     knots_v: *const f64,
     knot_count_v: usize,
 ) -> FfiResult<RmfSurface> {
-    for (p, name) in [
-        (poles.cast::<u8>(), "poles"),
-        (knots_u.cast(), "knots_u"),
-        (knots_v.cast(), "knots_v"),
-    ] {
-        if p.is_null() {
-            return Err(FfiError::Null(name));
-        }
-    }
-    check_nurbs_counts(to_usize(degree_u), pole_count_u, knot_count_u, "_u")?;
-    check_nurbs_counts(to_usize(degree_v), pole_count_v, knot_count_v, "_v")?;
-    let Some(count) = pole_count_u.checked_mul(pole_count_v) else {
-        return invalid_arg(format!(
-            "pole_count_u × pole_count_v = {pole_count_u} × {pole_count_v} overflows"
-        ));
-    };
-    let (poles, weights) = poles_and_weights(poles, weights, count)?;
-    let knots_u = slice(knots_u, knot_count_u, "knots_u")?.to_vec();
-    let knots_v = slice(knots_v, knot_count_v, "knots_v")?.to_vec();
-    let nurbs = NurbsSurface::new(
-        to_usize(degree_u),
-        to_usize(degree_v),
-        pole_count_u,
-        pole_count_v,
+    let nurbs = nurbs_surface(
+        degree_u,
+        degree_v,
         poles,
         weights,
-        knots_u,
-        knots_v,
+        (pole_count_u, pole_count_v),
+        (knots_u, knot_count_u),
+        (knots_v, knot_count_v),
     )?;
     Ok(RmfSurface::new(nurbs.to_piecewise()?, Some(nurbs)))
 }
