@@ -151,7 +151,8 @@ pub use sheet::{Layer, PartReport, Reference, Sheet, SheetOptions, SheetPart, Si
 
 // Unfolding the user's own faces: developability report, exact flat patterns.
 pub use unfold::{
-    face_developability, unfold_face, Developability, SurfaceKind, UnfoldOptions, UnfoldedFace,
+    face_developability, unfold_body, unfold_face, Bend, BodyOptions, Developability, KFactor,
+    SurfaceKind, UnfoldOptions, UnfoldedBody, UnfoldedFace,
 };
 
 // Meshes of surfaces (for viewers and mesh checks).

@@ -20,7 +20,7 @@ pub(crate) mod marks;
 mod part;
 mod profile;
 pub(crate) mod rails;
-mod thickness;
+pub(crate) mod thickness;
 mod transition;
 pub(crate) mod trim;
 

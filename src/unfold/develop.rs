@@ -17,6 +17,7 @@
 
 use super::kind::Recognized;
 use crate::cone_spline::ConeSpline;
+use crate::error::Result;
 use crate::sheet::marks::{flat_to_part, part_to_flat, part_to_surface, surface_to_part};
 use crate::sheet::trim::TrimmedSpline;
 use glam::{DVec2, DVec3};
@@ -43,9 +44,12 @@ pub(crate) enum Development {
         radius: f64,
         sin: Option<f64>,
     },
+    /// A cone spline's development; `layer` is the offset along the pieces' normals of the
+    /// layer developed and formed (0: the spline itself).
     Spline {
         part: TrimmedSpline,
         developed: ConeSpline,
+        layer: f64,
     },
 }
 
@@ -116,11 +120,18 @@ impl Development {
                 let theta = if theta >= TAU - ON_CUT { 0.0 } else { theta };
                 let point = match sin {
                     None => DVec2::new(radius * theta, (p - *origin).dot(*axis)),
-                    Some(s) => DVec2::from_angle(theta * s) * (p - *origin).length(),
+                    // The foot of p on its ruling: p itself on the cone, its nearest point
+                    // off it.
+                    Some(s) => {
+                        let ruling = Self::ruling(*axis, *x, *y, theta + cut, *s);
+                        DVec2::from_angle(theta * s) * (p - *origin).dot(ruling).max(0.0)
+                    }
                 };
                 FlatPoint { point, on_cut }
             }
-            Development::Spline { part, developed } => {
+            Development::Spline {
+                part, developed, ..
+            } => {
                 let (at, _) = surface_to_part(part, 0.0, p);
                 FlatPoint {
                     point: part_to_flat(developed.pieces(), at),
@@ -128,6 +139,78 @@ impl Development {
                 }
             }
         }
+    }
+
+    /// The unit ruling of a cone of half angle α (sin α = `sin`) at angle `angle` from `x`.
+    fn ruling(axis: DVec3, x: DVec3, y: DVec3, angle: f64, sin: f64) -> DVec3 {
+        let cos = (1.0 - sin * sin).max(0.0).sqrt();
+        cos * axis + sin * (angle.cos() * x + angle.sin() * y)
+    }
+
+    /// The unit normal at (the foot of) `p` that offsets move along: a plane's x × y, a
+    /// cylinder's or cone's away from the axis, a cone spline piece's e × p.
+    pub fn normal(&self, p: DVec3) -> DVec3 {
+        match self {
+            Development::Plane { x, y, .. } => x.cross(*y),
+            Development::Round {
+                origin,
+                axis,
+                x,
+                y,
+                sin,
+                ..
+            } => {
+                let angle = Self::raw_angle(p, *origin, *x, *y);
+                let radial = angle.cos() * *x + angle.sin() * *y;
+                match sin {
+                    None => radial,
+                    Some(s) => {
+                        let cos = (1.0 - s * s).max(0.0).sqrt();
+                        cos * radial - s * *axis
+                    }
+                }
+            }
+            Development::Spline { part, .. } => {
+                let (at, _) = surface_to_part(part, 0.0, p);
+                part_to_surface(part, at, 0.0).1
+            }
+        }
+    }
+
+    /// The development of the surface offset by `s` along [`Self::normal`], taking each
+    /// point of this surface (and of its offsets) to the foot of its normal there: a plane
+    /// stays, a cylinder's radius grows by s, a cone's apex moves by −s / sin α along its
+    /// axis (its rulings by s cot α), a cone spline's pieces are offset ([LP]
+    /// "Introduction").
+    pub fn offset(&self, s: f64) -> Result<Self> {
+        Ok(match self {
+            Development::Plane { .. } => self.clone(),
+            Development::Round {
+                origin,
+                axis,
+                x,
+                y,
+                cut,
+                radius,
+                sin,
+            } => Development::Round {
+                origin: match sin {
+                    None => *origin,
+                    Some(sin) => *origin - (s / sin) * *axis,
+                },
+                axis: *axis,
+                x: *x,
+                y: *y,
+                cut: *cut,
+                radius: if sin.is_none() { radius + s } else { 0.0 },
+                sin: *sin,
+            },
+            Development::Spline { part, layer, .. } => Development::Spline {
+                part: part.clone(),
+                developed: part.spline.offset(layer + s)?.developed()?,
+                layer: layer + s,
+            },
+        })
     }
 
     /// The flat point at the other end of the cut from `q` (a point at angle 0).
@@ -169,9 +252,13 @@ impl Development {
                     }
                 })
             }
-            Development::Spline { part, developed } => {
+            Development::Spline {
+                part,
+                developed,
+                layer,
+            } => {
                 let at = flat_to_part(part, developed.pieces(), q, slack)?;
-                Some(part_to_surface(part, at, 0.0).0)
+                Some(part_to_surface(part, at, *layer).0)
             }
         }
     }

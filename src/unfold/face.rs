@@ -55,7 +55,7 @@ impl UnfoldOptions {
         }
     }
 
-    fn check(&self) -> Result<()> {
+    pub(super) fn check(&self) -> Result<()> {
         if !(self.tolerance.is_finite() && self.tolerance > 0.0) {
             return invalid!("tolerance = {} must be finite and positive", self.tolerance);
         }
@@ -71,7 +71,7 @@ impl UnfoldOptions {
         Ok(())
     }
 
-    fn flat(&self) -> f64 {
+    pub(super) fn flat(&self) -> f64 {
         if self.flat_tolerance > 0.0 {
             self.flat_tolerance
         } else {
@@ -109,15 +109,26 @@ pub struct UnfoldedFace {
     flat_tolerance: f64,
 }
 
-/// The face's loops: per loop, the curves of its edge uses in the loop's direction
-/// (internal coordinates), and whether it is the outer loop.
-struct Loops {
-    loops: Vec<(Vec<PiecewiseCurve>, bool)>,
-    /// Edge indices used twice by the face (seams), by loop and use.
-    seams: Vec<Vec<bool>>,
+/// An edge use of a face's loop: the edge, the vertices it runs from and to, its curve in
+/// the loop's direction (internal coordinates), and whether the face uses the edge twice
+/// (a seam).
+#[derive(Clone, Debug)]
+pub(super) struct LoopUse {
+    pub edge: usize,
+    pub from: usize,
+    pub to: usize,
+    pub curve: PiecewiseCurve,
+    pub seam: bool,
 }
 
-fn check_face(brep: &Brep, face: usize) -> Result<()> {
+/// A loop of a face: its uses (degenerate edges left out) and whether it is the outer one.
+#[derive(Clone, Debug)]
+pub(super) struct FaceLoop {
+    pub uses: Vec<LoopUse>,
+    pub outer: bool,
+}
+
+pub(super) fn check_face(brep: &Brep, face: usize) -> Result<()> {
     let Some(f) = brep.faces.get(face) else {
         return invalid!("face = {face} is out of range ({} faces)", brep.faces.len());
     };
@@ -140,33 +151,37 @@ fn check_face(brep: &Brep, face: usize) -> Result<()> {
     Ok(())
 }
 
-fn loops_of(brep: &Brep, face: usize, frame: Similarity) -> Result<Loops> {
+pub(super) fn loops_of(brep: &Brep, face: usize, frame: Similarity) -> Result<Vec<FaceLoop>> {
     let f = &brep.faces[face];
     let mut count = vec![0usize; brep.edges.len()];
     for u in f.bounds.iter().flat_map(|b| &b.uses) {
         count[u.edge] += 1;
     }
     let mut loops = Vec::new();
-    let mut seams = Vec::new();
     for (j, bound) in f.bounds.iter().enumerate() {
-        let mut curves = Vec::new();
-        let mut seam = Vec::new();
+        let mut uses = Vec::new();
         for u in bound.uses.iter().filter(|u| !brep.edges[u.edge].degenerate) {
-            let curve = &brep.edges[u.edge].curve;
-            let used = if u.forward {
-                curve.clone()
+            let edge = &brep.edges[u.edge];
+            let (used, from, to) = if u.forward {
+                (edge.curve.clone(), edge.start, edge.end)
             } else {
-                curve.reversed()
+                (edge.curve.reversed(), edge.end, edge.start)
             };
-            curves.push(frame.curve_to_internal(&used.to_piecewise()?)?);
-            seam.push(count[u.edge] > 1);
+            uses.push(LoopUse {
+                edge: u.edge,
+                from,
+                to,
+                curve: frame.curve_to_internal(&used.to_piecewise()?)?,
+                seam: count[u.edge] > 1,
+            });
         }
-        if curves.is_empty() {
+        if uses.is_empty() {
             return invalid!("face {face}: loop {j} has only degenerate edges");
         }
-        for i in 0..curves.len() {
-            let end = curves[i].eval(curves[i].domain().1);
-            let next = &curves[(i + 1) % curves.len()];
+        for i in 0..uses.len() {
+            let c = &uses[i].curve;
+            let end = c.eval(c.domain().1);
+            let next = &uses[(i + 1) % uses.len()].curve;
             let gap = end.distance(next.eval(next.domain().0));
             if gap.is_nan() || gap > LOOP_GAP {
                 return invalid!(
@@ -175,10 +190,12 @@ fn loops_of(brep: &Brep, face: usize, frame: Similarity) -> Result<Loops> {
                 );
             }
         }
-        loops.push((curves, bound.outer));
-        seams.push(seam);
+        loops.push(FaceLoop {
+            uses,
+            outer: bound.outer,
+        });
     }
-    Ok(Loops { loops, seams })
+    Ok(loops)
 }
 
 /// Parameters at which an edge is sampled: `EDGE_SAMPLES` per segment.
@@ -196,13 +213,13 @@ fn samples(curve: &PiecewiseCurve) -> Vec<f64> {
 
 /// The angle from which a round face is measured: a seam's, or the middle of the widest
 /// angle its boundary leaves free.
-fn cut_angle(loops: &Loops, origin: DVec3, axis: DVec3, x: DVec3, face: usize) -> Result<f64> {
+fn cut_angle(loops: &[FaceLoop], origin: DVec3, axis: DVec3, x: DVec3, face: usize) -> Result<f64> {
     let y = axis.cross(x);
     let angle = |p: DVec3| Development::raw_angle(p, origin, x, y);
     let off_axis = |p: DVec3| (p - origin).cross(axis).length() > EXACT;
-    for ((curves, _), seam) in loops.loops.iter().zip(&loops.seams) {
-        if let Some(i) = seam.iter().position(|s| *s) {
-            let c = &curves[i];
+    for l in loops {
+        if let Some(u) = l.uses.iter().find(|u| u.seam) {
+            let c = &u.curve;
             let (lo, hi) = c.domain();
             if let Some(p) = [0.5, 0.25, 0.75]
                 .map(|f| c.eval(lo + f * (hi - lo)))
@@ -214,9 +231,8 @@ fn cut_angle(loops: &Loops, origin: DVec3, axis: DVec3, x: DVec3, face: usize) -
         }
     }
     let mut angles: Vec<f64> = loops
-        .loops
         .iter()
-        .flat_map(|(curves, _)| curves)
+        .flat_map(|l| l.uses.iter().map(|u| &u.curve))
         .flat_map(|c| samples(c).into_iter().map(|t| c.eval(t)))
         .filter(|p| off_axis(*p))
         .map(angle)
@@ -318,28 +334,28 @@ fn develop_use<'a>(
     }
 }
 
-/// The flat edges of one loop.
-fn flat_loop(
+/// The flat edges of each use of a loop, in the loop's order (not yet closed up).
+pub(super) fn developed_uses(
     development: &Development,
-    curves: &[PiecewiseCurve],
+    l: &FaceLoop,
     tolerance: f64,
     scale: f64,
-) -> Result<Vec<PatternEdge>> {
+) -> Result<Vec<Vec<PatternEdge>>> {
     let exact = tolerance.min(EXACT);
-    let mut out = Vec::new();
     // Start at a use off the cut, so that a use on it has a neighbour before it.
-    let n = curves.len();
+    let n = l.uses.len();
     let first = (0..n)
         .find(|&i| {
-            !develop_use(development, &curves[i], None)
+            !develop_use(development, &l.uses[i].curve, None)
                 .resolved
                 .is_empty()
         })
         .unwrap_or(0);
     let mut before: Option<DVec2> = None;
-    let mut edges = Vec::new();
+    let mut groups = vec![Vec::new(); n];
     for k in 0..n {
-        let curve = &curves[(first + k) % n];
+        let i = (first + k) % n;
+        let curve = &l.uses[i].curve;
         let used = develop_use(development, curve, before);
         let (lo, hi) = curve.domain();
         // A closed edge (a circle) is drawn in two halves: an arc has two ends.
@@ -356,18 +372,28 @@ fn flat_loop(
                 .map(|j| used.at(a + (b - a) * j as f64 / m as f64))
                 .collect();
             match line_or_arc(&points, exact) {
-                Some(edge) => edges.push(edge),
-                None => biarcs(&|t| used.jet(t), a, b, tolerance, scale, &mut edges)?,
+                Some(edge) => groups[i].push(edge),
+                None => biarcs(&|t| used.jet(t), a, b, tolerance, scale, &mut groups[i])?,
             }
             before = points.last().copied();
         }
     }
-    out.extend(close_loop(edges, 1.0));
-    Ok(out)
+    Ok(groups)
+}
+
+/// The flat edges of one loop, closed up.
+fn flat_loop(
+    development: &Development,
+    l: &FaceLoop,
+    tolerance: f64,
+    scale: f64,
+) -> Result<Vec<PatternEdge>> {
+    let groups = developed_uses(development, l, tolerance, scale)?;
+    Ok(close_loop(groups.concat(), 1.0))
 }
 
 /// The part of the segment from `a` to `b` inside the loops (even–odd rule along its line).
-fn clip_to_loops(a: DVec2, b: DVec2, loops: &[&[PatternEdge]]) -> Vec<PatternEdge> {
+pub(super) fn clip_to_loops(a: DVec2, b: DVec2, loops: &[&[PatternEdge]]) -> Vec<PatternEdge> {
     let d = b - a;
     let mut crossings: Vec<f64> = Vec::new();
     for edge in loops.iter().flat_map(|l| l.iter()) {
@@ -388,7 +414,7 @@ fn clip_to_loops(a: DVec2, b: DVec2, loops: &[&[PatternEdge]]) -> Vec<PatternEdg
 }
 
 /// Parameters s where the line a + s d crosses `edge`.
-fn line_crossings(a: DVec2, d: DVec2, edge: &PatternEdge) -> Vec<f64> {
+pub(super) fn line_crossings(a: DVec2, d: DVec2, edge: &PatternEdge) -> Vec<f64> {
     match *edge {
         PatternEdge::Line { from, to } => {
             let e = to - from;
@@ -431,7 +457,7 @@ fn line_crossings(a: DVec2, d: DVec2, edge: &PatternEdge) -> Vec<f64> {
     }
 }
 
-fn mirrored(e: &PatternEdge) -> PatternEdge {
+pub(super) fn mirrored(e: &PatternEdge) -> PatternEdge {
     let m = |p: DVec2| DVec2::new(-p.x, p.y);
     match *e {
         PatternEdge::Line { from, to } => PatternEdge::Line {
@@ -454,7 +480,7 @@ fn mirrored(e: &PatternEdge) -> PatternEdge {
     }
 }
 
-fn loop_area(edges: &[PatternEdge]) -> f64 {
+pub(super) fn loop_area(edges: &[PatternEdge]) -> f64 {
     FlatPattern {
         outline: edges.to_vec(),
         holes: vec![],
@@ -464,12 +490,15 @@ fn loop_area(edges: &[PatternEdge]) -> f64 {
     .unwrap_or(0.0)
 }
 
-fn reversed_loop(edges: &[PatternEdge]) -> Vec<PatternEdge> {
+pub(super) fn reversed_loop(edges: &[PatternEdge]) -> Vec<PatternEdge> {
     edges.iter().rev().map(PatternEdge::reversed).collect()
 }
 
 /// The face's surface in internal coordinates, recognized.
-fn recognized_surface(surface: &BrepSurface, frame: Similarity) -> Result<(Recognized, f64)> {
+pub(super) fn recognized_surface(
+    surface: &BrepSurface,
+    frame: Similarity,
+) -> Result<(Recognized, f64)> {
     match surface {
         BrepSurface::Plane {
             origin,
@@ -491,7 +520,10 @@ fn recognized_surface(surface: &BrepSurface, frame: Similarity) -> Result<(Recog
     }
 }
 
-fn internal_surface(surface: &PiecewiseSurface, frame: Similarity) -> Result<PiecewiseSurface> {
+pub(super) fn internal_surface(
+    surface: &PiecewiseSurface,
+    frame: Similarity,
+) -> Result<PiecewiseSurface> {
     let mut s = surface.clone();
     for p in s.patches_mut() {
         p.map_homogeneous(|h| ((h.truncate() - frame.origin * h.w) / frame.scale).extend(h.w))?;
@@ -500,7 +532,7 @@ fn internal_surface(surface: &PiecewiseSurface, frame: Similarity) -> Result<Pie
 }
 
 /// The similarity taking the face to unit size: its surface's poles and its edges'.
-fn face_frame(brep: &Brep, face: usize) -> Similarity {
+pub(super) fn face_frame(brep: &Brep, face: usize) -> Similarity {
     let f = &brep.faces[face];
     let edges = f
         .bounds
@@ -513,7 +545,7 @@ fn face_frame(brep: &Brep, face: usize) -> Similarity {
     }
 }
 
-fn check_finite(brep: &Brep, face: usize) -> Result<()> {
+pub(super) fn check_finite(brep: &Brep, face: usize) -> Result<()> {
     let f = &brep.faces[face];
     for u in f.bounds.iter().flat_map(|b| &b.uses) {
         let c = &brep.edges[u.edge].curve;
@@ -551,7 +583,7 @@ pub fn face_developability(brep: &Brep, face: usize) -> Result<Developability> {
     report(&shape, curvature)
 }
 
-fn report(shape: &Recognized, curvature: f64) -> Result<Developability> {
+pub(super) fn report(shape: &Recognized, curvature: f64) -> Result<Developability> {
     let kind = shape.kind();
     let stretch = match shape {
         Recognized::Ruled { surface, .. } | Recognized::Other { surface, .. }
@@ -587,36 +619,14 @@ pub fn unfold_face(brep: &Brep, face: usize, options: &UnfoldOptions) -> Result<
         );
     }
     let loops = loops_of(brep, face, frame)?;
-    let tolerance = options.tolerance / frame.scale;
-    let (development, fit_error) = match &shape {
-        Recognized::Plane { .. } => (Development::analytic(&shape, 0.0).expect("a plane"), 0.0),
-        Recognized::Cylinder {
-            origin, axis, x, ..
-        } => {
-            let cut = cut_angle(&loops, *origin, *axis, *x, face)?;
-            (Development::analytic(&shape, cut).expect("a cylinder"), 0.0)
-        }
-        Recognized::Cone { apex, axis, x, .. } => {
-            let cut = cut_angle(&loops, *apex, *axis, *x, face)?;
-            (Development::analytic(&shape, cut).expect("a cone"), 0.0)
-        }
-        Recognized::Ruled { surface, .. } => {
-            spline_development(surface, tolerance, options, frame, face)?
-        }
-        Recognized::Other { .. } => {
-            return invalid!(
-                "face {face}: a developable whose rulings are not along a parameter of its surface \
-                 (degree 1 in u or in v) is not supported"
-            )
-        }
-    };
+    let (development, fit_error) = face_development(&shape, &loops, options, frame, face)?;
     let flat_tolerance = options.flat() / frame.scale;
     let mut outline = Vec::new();
     let mut holes = Vec::new();
-    for (curves, outer) in &loops.loops {
-        let edges = flat_loop(&development, curves, flat_tolerance, frame.scale)
+    for l in &loops {
+        let edges = flat_loop(&development, l, flat_tolerance, frame.scale)
             .map_err(|e| e.context(format!("face {face}")))?;
-        if *outer {
+        if l.outer {
             outline = edges;
         } else {
             holes.push(edges);
@@ -663,6 +673,39 @@ pub fn unfold_face(brep: &Brep, face: usize, options: &UnfoldOptions) -> Result<
     })
 }
 
+/// The development of a recognized face (internal units) and the cone spline's fit error.
+pub(super) fn face_development(
+    shape: &Recognized,
+    loops: &[FaceLoop],
+    options: &UnfoldOptions,
+    frame: Similarity,
+    face: usize,
+) -> Result<(Development, f64)> {
+    let tolerance = options.tolerance / frame.scale;
+    Ok(match shape {
+        Recognized::Plane { .. } => (Development::analytic(shape, 0.0).expect("a plane"), 0.0),
+        Recognized::Cylinder {
+            origin, axis, x, ..
+        } => {
+            let cut = cut_angle(loops, *origin, *axis, *x, face)?;
+            (Development::analytic(shape, cut).expect("a cylinder"), 0.0)
+        }
+        Recognized::Cone { apex, axis, x, .. } => {
+            let cut = cut_angle(loops, *apex, *axis, *x, face)?;
+            (Development::analytic(shape, cut).expect("a cone"), 0.0)
+        }
+        Recognized::Ruled { surface, .. } => {
+            spline_development(surface, tolerance, options, frame, face)?
+        }
+        Recognized::Other { .. } => {
+            return invalid!(
+                "face {face}: a developable whose rulings are not along a parameter of its surface \
+                 (degree 1 in u or in v) is not supported"
+            )
+        }
+    })
+}
+
 fn spline_development(
     surface: &PiecewiseSurface,
     tolerance: f64,
@@ -685,16 +728,26 @@ fn spline_development(
     let (part, fit) = between_rails(&ruled, tolerance, options.max_pieces, frame.scale)
         .map_err(|e| e.context(format!("face {face}")))?;
     let developed = part.spline.developed()?;
-    Ok((Development::Spline { part, developed }, fit.deviation))
+    Ok((
+        Development::Spline {
+            part,
+            developed,
+            layer: 0.0,
+        },
+        fit.deviation,
+    ))
 }
 
 /// The rulings where the pieces of a cone spline development meet, clipped to the face.
-fn bend_lines(
+pub(super) fn bend_lines(
     development: &Development,
     outline: &[PatternEdge],
     holes: &[Vec<PatternEdge>],
 ) -> Vec<PatternEdge> {
-    let Development::Spline { part, developed } = development else {
+    let Development::Spline {
+        part, developed, ..
+    } = development
+    else {
         return vec![];
     };
     let mut loops: Vec<&[PatternEdge]> = vec![outline];
