@@ -6,6 +6,12 @@
  * and rulings a line, the DXF's entities, marks flat ↔ formed, distances along a parallel
  * circle kept. A hyperbolic paraboloid is reported not developable and refused. Bad input
  * names the argument and leaves the out-pointer untouched.
+ *
+ * A whole sheet body: an L bracket (a rectangle 1 × 4 swept along line, quarter turn of
+ * radius 3, line), its B-rep read through the rmf_brep_* views and handed back in by
+ * rmf_brep_create as another kernel would, unfolded at k = 0.5 and 0.3: the flat area
+ * against the neutral length by the suite's Green's theorem, one bend, the thickness,
+ * the DXF's BEND layer, marks.
  */
 #include <math.h>
 #include <stdint.h>
@@ -318,8 +324,137 @@ static void check_not_developable(void) {
     rmf_brep_free(brep);
 }
 
+/* The library's B-rep of `shape`, read through its views and handed back in. */
+typedef struct {
+    RmfVec3 *vertices;
+    RmfBrepEdge *edges;
+    RmfBrepFace *faces;
+    RmfBrepLoop *loops;
+    RmfBrepUse *uses;
+    RmfBrep *brep;
+} Copied;
+
+static RmfBrep *copied_brep(const RmfBrep *from, Copied *c) {
+    RmfBrepCounts n;
+    memset(c, 0, sizeof *c);
+    if (rmf_brep_counts(from, &n) != RMF_OK) return NULL;
+    size_t loops = 0, uses = 0;
+    c->vertices = malloc(n.vertex_count * sizeof *c->vertices);
+    c->edges = malloc(n.edge_count * sizeof *c->edges);
+    c->faces = malloc(n.face_count * sizeof *c->faces);
+    for (size_t i = 0; i < n.vertex_count; i++) rmf_brep_vertex(from, i, &c->vertices[i]);
+    for (size_t i = 0; i < n.edge_count; i++) rmf_brep_edge(from, i, &c->edges[i]);
+    for (size_t f = 0; f < n.face_count; f++) {
+        rmf_brep_face(from, f, &c->faces[f]);
+        loops += c->faces[f].loop_count;
+    }
+    c->loops = malloc(loops * sizeof *c->loops);
+    size_t l = 0;
+    for (size_t f = 0; f < n.face_count; f++)
+        for (size_t k = 0; k < c->faces[f].loop_count; k++, l++) {
+            rmf_brep_loop(from, f, k, &c->loops[l]);
+            uses += c->loops[l].use_count;
+        }
+    c->uses = malloc(uses * sizeof *c->uses);
+    size_t u = 0;
+    l = 0;
+    for (size_t f = 0; f < n.face_count; f++)
+        for (size_t k = 0; k < c->faces[f].loop_count; k++, l++)
+            for (size_t j = 0; j < c->loops[l].use_count; j++, u++) rmf_brep_use(from, f, k, j, &c->uses[u]);
+    RmfBrepInput in = {n.vertex_count, c->vertices, n.edge_count, c->edges, n.face_count, c->faces,
+                       c->loops, c->uses, n.solid};
+    CHECK_STATUS(rmf_brep_create(&in, &c->brep), RMF_OK, "");
+    return c->brep;
+}
+
+static void free_copied(Copied *c) {
+    rmf_brep_free(c->brep);
+    free(c->vertices);
+    free(c->edges);
+    free(c->faces);
+    free(c->loops);
+    free(c->uses);
+}
+
+static void check_l_bracket(void) {
+    const double s = sqrt(0.5), t = 1.0, w = 4.0;
+    RmfEdge wire[3] = {{RMF_EDGE_LINE, {vec3(0, 0, 0), vec3(10, 0, 0), vec3(0, 0, 0)}, NULL},
+                       {RMF_EDGE_ARC, {vec3(10, 0, 0), vec3(10 + 3 * s, 3 - 3 * s, 0), vec3(13, 3, 0)}, NULL},
+                       {RMF_EDGE_LINE, {vec3(13, 3, 0), vec3(13, 13, 0), vec3(0, 0, 0)}, NULL}};
+    RmfVec3 corners[4] = {vec3(-0.5 * t, 0, 0), vec3(0.5 * t, 0, 0), vec3(0.5 * t, w, 0), vec3(-0.5 * t, w, 0)};
+    RmfCurve *profile = NULL;
+    CHECK_STATUS(rmf_curve_polygon(corners, 4, &profile), RMF_OK, "");
+    RmfWireSweepOptions options;
+    rmf_wire_sweep_options_init(&options);
+    options.initial_normal = vec3(0, 1, 0);
+    RmfShape *shape = NULL;
+    CHECK_STATUS(rmf_wire_sweep(wire, 3, profile, NULL, 0, &options, &shape), RMF_OK, "");
+    RmfBrep *made = NULL;
+    if (shape) CHECK_STATUS(rmf_shape_brep(shape, &made), RMF_OK, "");
+    Copied copy;
+    RmfBrep *brep = made ? copied_brep(made, &copy) : NULL;
+    for (int pass = 0; brep && pass < 2; pass++) {
+        double k = pass == 0 ? 0.5 : 0.3;
+        RmfUnfoldBodyOptions o;
+        rmf_unfold_body_options_init(&o);
+        o.tolerance = 1e-6;
+        o.k_factor = k;
+        RmfUnfoldedBody *body = NULL;
+        CHECK_STATUS(rmf_unfold_body(brep, &o, &body), RMF_OK, "");
+        if (!body) continue;
+        double thickness = 0.0, area = 0.0;
+        CHECK_STATUS(rmf_unfolded_body_thickness(body, &thickness), RMF_OK, "");
+        CHECK(fabs(thickness - t) <= 1e-12, "the thickness is measured");
+        size_t n = 0;
+        CHECK_STATUS(rmf_unfolded_body_loop(body, 0, NULL, 0, &n), RMF_OK, "");
+        RmfFlatEdge *edges = malloc(n * sizeof *edges);
+        if (edges) {
+            CHECK_STATUS(rmf_unfolded_body_loop(body, 0, edges, n, &n), RMF_OK, "");
+            area = loop_area(edges, n);
+            free(edges);
+        }
+        double neutral = 20.0 + 2.0 * atan(1.0) * (3.0 - 0.5 * t + k * t);
+        printf("unfold: L bracket handed in (k = %.1f): flat area %.15g by the suite (w × neutral length %.15g)\n",
+               k, area, w * neutral);
+        CHECK(fabs(area - w * neutral) <= 1e-9 * w * neutral, "the flat area is the neutral length times the width");
+        RmfBend bends[4];
+        size_t count = 0;
+        CHECK_STATUS(rmf_unfolded_body_bends(body, bends, 4, &count), RMF_OK, "");
+        CHECK(count == 1 && fabs(bends[0].radius - 2.5) <= 1e-12 && bends[0].k_factor == k, "one bend, inner radius 2.5");
+        size_t length = 0;
+        CHECK_STATUS(rmf_unfolded_body_dxf(body, NULL, 0, &length), RMF_OK, "");
+        char *dxf = malloc(length + 1);
+        if (dxf) {
+            CHECK_STATUS(rmf_unfolded_body_dxf(body, dxf, length + 1, &length), RMF_OK, "");
+            CHECK(strstr(dxf, "BEND_UP") != NULL || strstr(dxf, "BEND_DOWN") != NULL, "the bend line on its layer");
+            free(dxf);
+        }
+        RmfVec2 q = {5.0, 1.0};
+        RmfVec3 x;
+        RmfVec2 back;
+        CHECK_STATUS(rmf_unfolded_body_to_formed(body, &q, 1, &x), RMF_OK, "");
+        CHECK_STATUS(rmf_unfolded_body_to_flat(body, &x, 1, &back), RMF_OK, "");
+        CHECK(fabs(back.x - q.x) + fabs(back.y - q.y) <= 1e-12, "marks come back");
+        rmf_unfolded_body_free(body);
+    }
+    RmfUnfoldedBody *untouched = (RmfUnfoldedBody *)&copy;
+    RmfUnfoldBodyOptions bad;
+    rmf_unfold_body_options_init(&bad);
+    bad.k_factor = 1.5;
+    if (brep) CHECK_STATUS(rmf_unfold_body(brep, &bad, &untouched), RMF_ERROR_INVALID_INPUT, "outside [0, 1]");
+    bad.k_factor = 0.5;
+    bad.k_table_count = 2;
+    if (brep) CHECK_STATUS(rmf_unfold_body(brep, &bad, &untouched), RMF_ERROR_NULL_POINTER, "k_table");
+    CHECK(untouched == (RmfUnfoldedBody *)&copy, "a failing call writes no out-pointer");
+    if (brep) free_copied(&copy);
+    rmf_brep_free(made);
+    rmf_shape_free(shape);
+    rmf_curve_free(profile);
+}
+
 int main(void) {
     check_cylinder_patch();
+    check_l_bracket();
     check_bad_breps();
     check_not_developable();
     return rmf_check_exit_code("abi_unfold");

@@ -582,6 +582,12 @@ typedef struct RmfShape RmfShape;
 typedef struct RmfSurface RmfSurface;
 
 /**
+ * A sheet body unfolded (rmf_unfold_body). Free with rmf_unfolded_body_free.
+ * \ingroup rmf_unfold
+ */
+typedef struct RmfUnfoldedBody RmfUnfoldedBody;
+
+/**
  * A face unrolled (rmf_unfold_face). Free with rmf_unfolded_face_free.
  * \ingroup rmf_unfold
  */
@@ -1814,6 +1820,74 @@ typedef struct RmfDevelopability {
    */
   double fit_error;
 } RmfDevelopability;
+
+/**
+ * How a sheet body is unfolded. Initialise with rmf_unfold_body_options_init; the struct
+ * only grows at the end.
+ * \ingroup rmf_unfold
+ */
+typedef struct RmfUnfoldBodyOptions {
+  /**
+   * sizeof(RmfUnfoldBodyOptions), written by rmf_unfold_body_options_init.
+   */
+  size_t struct_size;
+  /**
+   * The faces' tolerance (see RmfUnfoldOptions), also the largest variation of the
+   * thickness (default 1e-4), > 0.
+   */
+  double tolerance;
+  /**
+   * Largest distance of the outline's biarcs from the developed boundary; 0 (the
+   * default) means the tolerance.
+   */
+  double flat_tolerance;
+  /**
+   * Most cone pieces for one face (default 10000), ≥ 2.
+   */
+  size_t max_pieces;
+  /**
+   * The K-factor when k_table_count is 0 (default 0.5), 0 ≤ k ≤ 1: the neutral layer
+   * lies at k·t from the inner face of each bend.
+   */
+  double k_factor;
+  /**
+   * Rows of a K-factor table, or 0 to use k_factor.
+   */
+  size_t k_table_count;
+  /**
+   * k_table_count rows (x: inner bend radius / thickness, increasing; y: k), k
+   * interpolated linearly between rows and held beyond the ends; read during the call.
+   */
+  const struct RmfVec2 *k_table;
+} RmfUnfoldBodyOptions;
+
+/**
+ * A bend of an unfolded body.
+ * \ingroup rmf_unfold
+ */
+typedef struct RmfBend {
+  /**
+   * The bend line (layer RMF_FLAT_BEND).
+   */
+  struct RmfFlatEdge line;
+  /**
+   * 1 if the bend rises towards the viewer of the pattern (the unfolded side is its
+   * inner side), 0 if it goes down.
+   */
+  uint32_t up;
+  /**
+   * The face of the body the bend lies on.
+   */
+  size_t face;
+  /**
+   * The smallest inner bend radius of that face.
+   */
+  double radius;
+  /**
+   * The K-factor used for it.
+   */
+  double k_factor;
+} RmfBend;
 
 /**
  * How sharp (G0) joints of a wire are resolved (values fixed, validated).
@@ -5130,6 +5204,196 @@ RmfStatus rmf_unfolded_face_to_flat(const struct RmfUnfoldedFace *face,
  * \ingroup rmf_unfold
  */
 RmfStatus rmf_unfolded_face_to_formed(const struct RmfUnfoldedFace *face,
+                                      const struct RmfVec2 *flat,
+                                      size_t count,
+                                      struct RmfVec3 *points);
+
+/**
+ * Writes the default options and the struct's size.
+ *
+ * @param[out] options Receives the defaults (tolerance 1e-4, flat_tolerance 0 = the
+ *             tolerance, max_pieces 10000, k_factor 0.5, no table).
+ * @return RMF_OK, or RMF_ERROR_NULL_POINTER if options is NULL.
+ * \since 0.2
+ * \ingroup rmf_unfold
+ */
+RmfStatus rmf_unfold_body_options_init(struct RmfUnfoldBodyOptions *options);
+
+/**
+ * Unfolds a whole sheet-metal body: a closed solid of constant thickness made of planes
+ * and bends of any developable kind (cylinders, cones, general cylinders, B-spline
+ * developables). The two skins and the thickness are found straight across the faces;
+ * the side joined to the largest skin face is developed on the neutral layer (at k·t from
+ * each bend's inner face) and its faces joined along their bends into one flat pattern,
+ * seen from that side's outside: outline, holes and cutouts, bend lines up and down. The
+ * other faces are the sheet's cut edges.
+ *
+ * @param[in] brep The body (rmf_brep_create with solid = 1, or a library B-rep).
+ * @param[in] options Tolerances and K-factor, or NULL for the defaults.
+ * @param[out] out Receives the unfolded body; free with rmf_unfolded_body_free.
+ *             Untouched on failure.
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If brep or out is NULL, or k_table is NULL with rows.
+ * @return RMF_ERROR_INVALID_INPUT If the B-rep is an open shell or not manifold, a face is
+ *         not developable (named, with its curvature and stretch), the thickness is not
+ *         constant (the face, the point and the distance), the faces do not close up flat,
+ *         the flat pattern overlaps itself (the point), or an option is out of range
+ *         (k outside [0, 1], a table whose ratios do not increase).
+ * @return RMF_ERROR_NOT_CONVERGED If a face's cone spline needs more than max_pieces.
+ * \since 0.2
+ * \ingroup rmf_unfold
+ */
+RmfStatus rmf_unfold_body(const struct RmfBrep *brep,
+                          const struct RmfUnfoldBodyOptions *options,
+                          struct RmfUnfoldedBody **out);
+
+/**
+ * Frees an unfolded body. NULL is a no-op.
+ *
+ * @param[in] body The body to free, or NULL.
+ * \since 0.2
+ * \ingroup rmf_unfold
+ */
+void rmf_unfolded_body_free(struct RmfUnfoldedBody *body);
+
+/**
+ * The thickness of the sheet, as measured between its skins.
+ *
+ * @param[in] body The unfolded body.
+ * @param[out] thickness Receives the thickness.
+ * @return RMF_OK or RMF_ERROR_NULL_POINTER.
+ * \since 0.2
+ * \ingroup rmf_unfold
+ */
+RmfStatus rmf_unfolded_body_thickness(const struct RmfUnfoldedBody *body, double *thickness);
+
+/**
+ * The number of loops of the flat pattern: 1 (the outline) + the number of holes and
+ * cutouts.
+ *
+ * @param[in] body The unfolded body.
+ * @param[out] count Receives the number of loops.
+ * @return RMF_OK or RMF_ERROR_NULL_POINTER.
+ * \since 0.2
+ * \ingroup rmf_unfold
+ */
+RmfStatus rmf_unfolded_body_loop_count(const struct RmfUnfoldedBody *body, size_t *count);
+
+/**
+ * Loop `index` of the body's flat pattern (layer RMF_FLAT_CUT): 0 the outline,
+ * counter-clockwise; 1 … the holes and cutouts, clockwise; each closed.
+ *
+ * Size query: with capacity 0 (edges may be NULL) only count is written.
+ *
+ * @param[in] body The unfolded body.
+ * @param[in] index 0 ≤ index < rmf_unfolded_body_loop_count.
+ * @param[out] edges Buffer for capacity edges.
+ * @param[in] capacity Capacity of edges; 0 for a size query.
+ * @param[out] count Receives the number of edges.
+ * @return RMF_OK on success or for a size query.
+ * @return RMF_ERROR_NULL_POINTER If body or count is NULL, or edges is NULL with a
+ *         non-zero capacity.
+ * @return RMF_ERROR_BUFFER_TOO_SMALL If capacity is non-zero but too small; count is written.
+ * @return RMF_ERROR_INVALID_INPUT If index is out of range.
+ * \since 0.2
+ * \ingroup rmf_unfold
+ */
+RmfStatus rmf_unfolded_body_loop(const struct RmfUnfoldedBody *body,
+                                 size_t index,
+                                 struct RmfFlatEdge *edges,
+                                 size_t capacity,
+                                 size_t *count);
+
+/**
+ * The bends of the body's flat pattern: line, up or down, face, inner radius, K-factor.
+ *
+ * Size query: with capacity 0 (bends may be NULL) only count is written.
+ *
+ * @param[in] body The unfolded body.
+ * @param[out] bends Buffer for capacity bends.
+ * @param[in] capacity Capacity of bends; 0 for a size query.
+ * @param[out] count Receives the number of bends.
+ * @return RMF_OK on success or for a size query.
+ * @return RMF_ERROR_NULL_POINTER If body or count is NULL, or bends is NULL with a
+ *         non-zero capacity.
+ * @return RMF_ERROR_BUFFER_TOO_SMALL If capacity is non-zero but too small; count is written.
+ * \since 0.2
+ * \ingroup rmf_unfold
+ */
+RmfStatus rmf_unfolded_body_bends(const struct RmfUnfoldedBody *body,
+                                  struct RmfBend *bends,
+                                  size_t capacity,
+                                  size_t *count);
+
+/**
+ * The body's flat area: the outline's less the holes'.
+ *
+ * @param[in] body The unfolded body.
+ * @param[out] area Receives the area.
+ * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if the area is
+ *         outside the range of f64.
+ * \since 0.2
+ * \ingroup rmf_unfold
+ */
+RmfStatus rmf_unfolded_body_area(const struct RmfUnfoldedBody *body, double *area);
+
+/**
+ * The body's flat pattern as a DXF R12 file: LINE and ARC entities, outline and holes on
+ * layer CUT, bend lines on BEND_UP and BEND_DOWN.
+ *
+ * Size query: with capacity 0 (text may be NULL) only length is written.
+ *
+ * @param[in] body The unfolded body.
+ * @param[out] text Buffer for capacity bytes; receives the text and a terminating NUL.
+ * @param[in] capacity Capacity of text; 0 for a size query.
+ * @param[out] length Receives the text's length without the NUL.
+ * @return RMF_OK on success or for a size query.
+ * @return RMF_ERROR_NULL_POINTER If body or length is NULL, or text is NULL with a
+ *         non-zero capacity.
+ * @return RMF_ERROR_BUFFER_TOO_SMALL If capacity is non-zero but below length + 1.
+ * \since 0.2
+ * \ingroup rmf_unfold
+ */
+RmfStatus rmf_unfolded_body_dxf(const struct RmfUnfoldedBody *body,
+                                char *text,
+                                size_t capacity,
+                                size_t *length);
+
+/**
+ * Marks from the formed body to the flat pattern: each point (on a skin or inside the
+ * sheet) to the flat point of its foot on the nearest face of the unfolded side.
+ *
+ * @param[in] body The unfolded body.
+ * @param[in] points count points.
+ * @param[in] count Number of points (0: nothing to do).
+ * @param[out] flat count flat points.
+ * @return RMF_OK on success; nothing is written on failure.
+ * @return RMF_ERROR_NULL_POINTER If body, points or flat is NULL (count > 0).
+ * @return RMF_ERROR_INVALID_INPUT If a point is not finite (the message names it).
+ * \since 0.2
+ * \ingroup rmf_unfold
+ */
+RmfStatus rmf_unfolded_body_to_flat(const struct RmfUnfoldedBody *body,
+                                    const struct RmfVec3 *points,
+                                    size_t count,
+                                    struct RmfVec2 *flat);
+
+/**
+ * Marks from the flat pattern to the formed body: each flat point to its point on the
+ * neutral layer.
+ *
+ * @param[in] body The unfolded body.
+ * @param[in] flat count flat points.
+ * @param[in] count Number of points (0: nothing to do).
+ * @param[out] points count points of the neutral layer.
+ * @return RMF_OK on success; nothing is written on failure.
+ * @return RMF_ERROR_NULL_POINTER If body, flat or points is NULL (count > 0).
+ * @return RMF_ERROR_INVALID_INPUT If a point is not finite or lies outside the pattern
+ *         (the message names it).
+ * \since 0.2
+ * \ingroup rmf_unfold
+ */
+RmfStatus rmf_unfolded_body_to_formed(const struct RmfUnfoldedBody *body,
                                       const struct RmfVec2 *flat,
                                       size_t count,
                                       struct RmfVec3 *points);

@@ -44,4 +44,7 @@ pub use sheet::{RmfFlatEdge, RmfSheetOptions, RmfSheetReport};
 pub use status::RmfStatus;
 pub use surface::RmfSurface;
 pub use types::{RmfBezierCurve, RmfBezierPatch, RmfNurbsCurve, RmfNurbsSurface, RmfVec2, RmfVec3};
-pub use unfold::{RmfDevelopability, RmfUnfoldOptions, RmfUnfoldedFace};
+pub use unfold::{
+    RmfBend, RmfDevelopability, RmfUnfoldBodyOptions, RmfUnfoldOptions, RmfUnfoldedBody,
+    RmfUnfoldedFace,
+};

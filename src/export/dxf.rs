@@ -59,6 +59,23 @@ fn edge_entity(out: &mut String, edge: &PatternEdge, layer: &str) {
 
 /// The flat pattern as a DXF R12 file.
 pub fn pattern_to_dxf(pattern: &FlatPattern) -> String {
+    let bends: Vec<(&PatternEdge, &str)> = pattern.bend_lines.iter().map(|e| (e, "BEND")).collect();
+    dxf(pattern, &bends)
+}
+
+/// The flat pattern of a sheet body as a DXF R12 file, its bend lines on the layers
+/// `BEND_UP` and `BEND_DOWN` (`up[k]` for bend line k: the flange rises towards the viewer).
+pub fn sheet_pattern_to_dxf(pattern: &FlatPattern, up: &[bool]) -> String {
+    let bends: Vec<(&PatternEdge, &str)> = pattern
+        .bend_lines
+        .iter()
+        .zip(up)
+        .map(|(e, &u)| (e, if u { "BEND_UP" } else { "BEND_DOWN" }))
+        .collect();
+    dxf(pattern, &bends)
+}
+
+fn dxf(pattern: &FlatPattern, bends: &[(&PatternEdge, &str)]) -> String {
     let mut out = String::new();
     entity(
         &mut out,
@@ -75,8 +92,8 @@ pub fn pattern_to_dxf(pattern: &FlatPattern) -> String {
     for edge in pattern.outline.iter().chain(pattern.holes.iter().flatten()) {
         edge_entity(&mut out, edge, "CUT");
     }
-    for edge in &pattern.bend_lines {
-        edge_entity(&mut out, edge, "BEND");
+    for (edge, layer) in bends {
+        edge_entity(&mut out, edge, layer);
     }
     entity(&mut out, &[(0, "ENDSEC".into()), (0, "EOF".into())]);
     out
