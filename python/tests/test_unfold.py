@@ -17,7 +17,8 @@ independent one and printed (pytest -s, `cargo test ... --test python -- --nocap
   g. the DXF read back by this file's own parser: entity counts per layer and the cut
      length against the pattern's;
   h. marks: formed → flat → formed on points of the face;
-  i. the plate scaled by 1e-3 and 1e3: areas scale by s².
+  i. the plate scaled by 1e-3 and 1e3: areas scale by s²; every face of solids moved and
+     turned (faces with a location) unfolds to its area.
 Plus the core API on plain data, and the adapter's refusals."""
 
 import math
@@ -427,6 +428,23 @@ def test_the_plates_area_scales_by_the_square():
         print("\ni. plate scaled by %g: flat area %.15g, ratio to s² × unit %.17g "
               "(relative %.1e)" % (s, scaled, ratio, abs(ratio - 1)))
         assert abs(ratio - 1) <= 1e-12
+
+
+def test_every_face_of_moved_and_turned_solids_unfolds_to_its_area():
+    """Faces carrying a location (build123d's moved shapes): every face of a cylinder, a
+    frustum and the holed plate, moved and turned."""
+    where = bd.Location((5, 6, 7), (30, 40, 50))
+    worst, kinds = 0.0, set()
+    for solid in (bd.Cylinder(3, 10), bd.Cone(10, 4, 20),
+                  bd.Box(40, 30, 2) - bd.Pos(4, -3, 0) * bd.Cylinder(5, 10)):
+        for face in solid.moved(where).faces():
+            pattern = rocp.unfold(face)
+            kinds.add(pattern.report.kind)
+            worst = max(worst, rel(pattern.area, occ_area(face)))
+    print("\ni. every face of three moved and turned solids (%s): flat areas against "
+          "OpenCascade's within %.1e" % (", ".join(sorted(kinds)), worst))
+    assert kinds == {"plane", "circular_cylinder", "right_cone"}
+    assert worst <= 1e-9
 
 
 # ---------------------------------------------------------------------------------------
