@@ -764,9 +764,15 @@ def _pcurve_points(edge: Any, face: Any, samples: int = 16) -> np.ndarray:
                            for p in (edge.valueAt(a + (b - a) * k / samples)
                                      for k in range(samples + 1))])
     else:
-        curve, a, b = face.curveOnSurface(edge)
-        uv = [curve.value(a + (b - a) * k / samples) for k in range(samples + 1)]
-        points = np.array([(q.x, q.y) for q in uv])
+        pcurve = face.curveOnSurface(edge)
+        if pcurve is not None:
+            curve, a, b = pcurve
+            uv = [curve.value(a + (b - a) * k / samples) for k in range(samples + 1)]
+            points = np.array([(q.x, q.y) for q in uv])
+        else:  # no curve on the face stored: the surface's parameters of the edge's points
+            a, b = edge.FirstParameter, edge.LastParameter
+            points = np.array([face.Surface.parameter(edge.valueAt(a + (b - a) * k / samples))
+                               for k in range(samples + 1)])
     return points[::-1] if edge.Orientation == "Reversed" else points
 
 
