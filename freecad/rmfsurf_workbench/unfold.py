@@ -6,11 +6,14 @@ Sources:
 
 * an RmfTransition: the development of its neutral layer (the layer at KFactor · Thickness
   from the inner side), from the library's flat pattern;
-* a developable face (ruled, degree 1 along its rulings: cones, cylinders, tangent surfaces
-  and planes as B-spline or analytic faces): approximated within Tolerance by a cone spline
-  (Leopoldseder & Pottmann, eqs. (5)–(12)) and developed exactly, piece by piece (their
-  eqs. (7)–(8)); the pattern is the strip between the cone spline's boundaries through the
-  face's first ruling (:func:`rmfsurf.freecad.cone_spline_from_face`).
+* a developable face (an object with one face, or a face of an object), unrolled by the
+  library (:func:`rmfsurf.freecad.unfold`, rmf_unfold_face) with its own boundary and its
+  holes: planes, circular cylinders and right cones exactly in closed form (told from the
+  geometry, B-spline forms included), every other developable of degree 1 along its
+  rulings (general cylinders and cones, tangent developables) through its cone spline
+  within Tolerance (Leopoldseder & Pottmann), developed exactly, with bend lines where the
+  cone pieces meet. SurfaceKind and Curvature say what the face is; a doubly curved face
+  is refused with the stretch an unrolling would need.
 
 The outline's arcs are exact circular arcs (``Part.Circle``), so the DXF has ARC and LINE
 entities only. The pattern lies in the plane z = 0; the feature's Placement moves it in the
@@ -44,33 +47,62 @@ class UnfoldFeature(Feature):
                  "Number of bend lines", output=True),
         Property("App::PropertyFloat", "FitError", "Pattern",
                  "Developable faces: largest distance of the cone spline from the face "
-                 "(mm; for a transition its deviation from the designed developable)",
+                 "(mm; 0 for planes, circular cylinders and right cones, unrolled exactly; "
+                 "for a transition its deviation from the designed developable)",
+                 output=True),
+        Property("App::PropertyString", "SurfaceKind", "Pattern",
+                 "What the source is: plane, circular_cylinder, right_cone, "
+                 "general_cylinder, general_cone, tangent_developable, ruled_developable "
+                 "(a face), or transition", output=True),
+        Property("App::PropertyFloat", "Curvature", "Pattern",
+                 "Developable faces: the largest |K|·size² sampled over the face (K the "
+                 "Gaussian curvature, size its diagonal): round-off for a developable",
                  output=True),
     )
 
     def compute(self, obj):
-        outline, bends, pieces, error = pattern(obj)
-        face = Part.Face(Part.Wire(Part.__sortEdges__(outline)))
+        made = pattern(obj)
+        face = made.face
         if not face.isValid():
             raise ValueError("Source: the flat outline does not bound a valid face")
-        shape = Part.Compound([face] + bends)
+        shape = Part.Compound([face] + made.bends)
         shape.Placement = obj.Placement  # the pattern may be moved; its DXF is not
         obj.Shape = shape
-        self.set_outputs(obj, FlatArea=face.Area, PieceCount=pieces,
-                         BendLineCount=len(bends), FitError=error)
+        self.set_outputs(obj, FlatArea=made.area, PieceCount=made.pieces,
+                         BendLineCount=len(made.bends), FitError=made.error,
+                         SurfaceKind=made.kind, Curvature=made.curvature)
 
 
-def pattern(obj):
-    """(outline edges, bend line edges, piece count, fit error) of an RmfUnfold's source."""
+class Pattern:
+    """What an RmfUnfold shows: the flat face (holes as inner wires), the bend lines, the
+    flat area, the piece count, the fit error, the source's kind and curvature, and the DXF
+    text for the cutter."""
+
+    def __init__(self, face, bends, area, pieces, error, kind, curvature, dxf):
+        self.face, self.bends, self.area, self.pieces = face, bends, area, pieces
+        self.error, self.kind, self.curvature, self.dxf = error, kind, curvature, dxf
+
+
+def _transition_source(obj):
+    """The RmfTransition an RmfUnfold unrolls, or None for a face source."""
     if not obj.Source:
         raise ValueError("Source: not set")
     source, subs = obj.Source
     subs = [s for s in subs if s]
-    if is_feature(source, "RmfTransition") and not subs:
+    return source if is_feature(source, "RmfTransition") and not subs else None
+
+
+def pattern(obj):
+    """The :class:`Pattern` of an RmfUnfold's source."""
+    transition = _transition_source(obj)
+    if transition is not None:
         from .transition import _library
-        part = source.Proxy.sheet_part(source)
+        part = transition.Proxy.sheet_part(transition)
         face, bends = _library().flat_pattern(part)
-        return face.Edges, bends.Edges, part.piece_count, part.report().deviation
+        return Pattern(face, bends.Edges, face.Area, part.piece_count,
+                       part.report().deviation, "transition", 0.0,
+                       lambda: part.export("dxf"))
+    source = obj.Source[0]
     faces = [f for s in inputs.shapes(obj.Source, "Source") for f in s.Faces]
     if len(faces) != 1:
         raise ValueError("Source: expected an RmfTransition or one developable face, got %s "
@@ -79,18 +111,14 @@ def pattern(obj):
 
 
 def face_pattern(face, tolerance):
-    """The flat pattern of a developable face through its cone spline (module notes)."""
+    """The :class:`Pattern` of a developable face, unrolled by the library with its holes
+    (:func:`rmfsurf.freecad.unfold`): one piece and no bend line for planes, circular
+    cylinders and right cones, a cone spline's pieces and their bend lines for the rest."""
     import rmfsurf.freecad as rf
-    spline, t_min, t_max, error = rf.cone_spline_from_face(face, tolerance)
-    developed = spline.develop()
-    outline = rf.flat_pattern_edges(developed, t_min, t_max)
-    low, high = developed.boundary(t_min), developed.boundary(t_max)
-    first, last = low.domain
-    # Piece k of the strip spans boundary parameters [k, k + 1]: the bend lines are the
-    # rulings at the inner integers.
-    bends = [Part.LineSegment(rf.vector(low.eval(k)), rf.vector(high.eval(k))).toShape()
-             for k in range(int(round(first)) + 1, int(round(last)))]
-    return outline, bends, spline.piece_count, error
+    flat = rf.unfold(face, tolerance=tolerance)
+    r = flat.report
+    return Pattern(flat.face, flat.bend_lines, flat.area, len(flat.bend_lines) + 1,
+                   r.fit_error, r.kind, r.curvature, flat.unfolded.dxf)
 
 
 def make_unfold(doc, feature):
@@ -106,12 +134,11 @@ def make_unfold(doc, feature):
 
 def export_dxf(unfold, path):
     """Writes `unfold`'s flat pattern, in its own plane (without the feature's Placement), to
-    the DXF file `path`: the outline on layer CUT, the bend lines on layer BEND, LINE and
-    ARC entities only. An RmfTransition's pattern is the library's own DXF of the part (the
-    command-line tool's, from the arcs' exact centres and radii); a face's is written by
-    :mod:`rmfsurf_workbench.dxf` from the feature's edges. Returns the numbers of outline
-    and bend entities."""
-    from .dxf import write_flat_pattern
+    the DXF file `path`: the outline and the holes on layer CUT, the bend lines on layer
+    BEND, LINE and ARC entities only, the library's own DXF (from the arcs' exact centres
+    and radii): an RmfTransition's of the part (the command-line tool's), a face's of its
+    unrolled face (rmf_unfolded_face_dxf). Returns the numbers of outline (and hole) and
+    bend entities."""
     if not is_feature(unfold, "RmfUnfold"):
         raise TypeError("unfold: expected an RmfUnfold, got %s" % getattr(unfold, "Label", unfold))
     if not unfold.isValid() or unfold.Shape.isNull() or not unfold.Shape.Faces:
@@ -121,10 +148,6 @@ def export_dxf(unfold, path):
     parts = shape.childShapes()
     outline = [e for w in parts[0].Wires for e in w.Edges]
     bends = [s for s in parts[1:] if s.ShapeType == "Edge"]
-    source, subs = unfold.Source
-    if is_feature(source, "RmfTransition") and not [s for s in subs if s]:
-        with open(os.fspath(path), "w") as f:
-            f.write(source.Proxy.sheet_part(source).export("dxf"))
-    else:
-        write_flat_pattern(os.fspath(path), outline, bends)
+    with open(os.fspath(path), "w") as f:
+        f.write(pattern(unfold).dxf())
     return len(outline), len(bends)

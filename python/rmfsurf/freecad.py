@@ -12,12 +12,22 @@ FreeCAD's Python finds it (docs/install.md, "FreeCAD"); the library comes with t
 
 :func:`sweep` is the wire sweep (:func:`sweep_with_report` with its figures, as the
 workbench's RmfSweep feature uses it); :func:`transition` the sheet-metal transition piece
-between two closed curves (its solid, flat pattern and bend lines as Part shapes).
+between two closed curves (its solid, flat pattern and bend lines as Part shapes);
+:func:`unfold` the exact flat pattern of a developable face, its holes kept (planes,
+cylinders and cones exactly, any developable through its cone spline)::
+
+    import Part, rmfsurf.freecad
+    tube = Part.makeCylinder(10, 30).cut(Part.makeCylinder(3, 30, FreeCAD.Vector(-15, 0, 15),
+                                                           FreeCAD.Vector(1, 0, 0)))
+    wall = max(tube.Faces, key=lambda f: f.Area)   # the cylinder, two holes in it
+    pattern = rmfsurf.freecad.unfold(wall)         # .face: a Part.Face in the XY plane
+    pattern.write_dxf("wall.dxf")
 """
 
 from __future__ import annotations
 
-from typing import Any, List, Optional, Sequence, Tuple
+import os
+from typing import Any, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -31,9 +41,12 @@ from .curves import (ArrayLike, Curve, NurbsCurve, arc, circle, distinct_knots, 
 from .frames import SPINE_METHODS, Frames, framed_spine
 from .shapes import (Arc, CurveEdge, Edge, Line, Shape, SweepFrame, SweepReport,
                      _drawn_sections, _frame_guide, _frame_start_normal, _named, wire_sweep)
-from .sheets import SheetPart
+from .sheets import FlatEdge, SheetPart
 from .sheets import transition as _transition
-from .surfaces import Surface, sweep_surface
+from .surfaces import NurbsSurface, Surface, sweep_surface
+from .unfold import (Brep, BrepEdge, BrepFace, Developability, UnfoldedFace, line_curve,
+                     unfold_face)
+from .unfold import developability as _developability
 
 RmfError = _core.RmfError
 V = FreeCAD.Vector
@@ -638,6 +651,240 @@ def flat_pattern(part: SheetPart) -> Tuple[Any, Any]:
             shape = Part.LineSegment(a, b).toShape()
         (outline if e.layer == "cut" else bends).append(shape)
     return Part.Face(Part.Wire(outline)), Part.Compound(bends)
+
+
+# ---------------------------------------------------------------------------------------
+# Unfolding a face
+
+
+def _one_face(value: Any, name: str = "shape") -> Any:
+    """The one face of `value`: a Part.Face, a shape holding exactly one, or a document
+    object whose shape is one."""
+    shape = _shape_of(value, name)
+    if isinstance(shape, Part.Face):
+        return shape
+    faces = shape.Faces
+    if not faces:
+        raise ValueError("%s: the %s holds no face; a face is needed" % (name, shape.ShapeType))
+    if len(faces) > 1:
+        raise ValueError("%s: the %s holds %d faces; whole sheet bodies are not unfolded yet: "
+                         "give one face (e.g. shape.Faces[i])"
+                         % (name, shape.ShapeType, len(faces)))
+    return faces[0]
+
+
+def _surface_nurbs(surface: Any) -> NurbsSurface:
+    """A Part.BSplineSurface's data with clamped knots (a periodic one as its period)."""
+    s = surface
+    if s.isUPeriodic() or s.isVPeriodic():
+        bounds = s.bounds()
+        s = s.copy()
+        if s.isUPeriodic():
+            s.setUNotPeriodic()
+        if s.isVPeriodic():
+            s.setVNotPeriodic()
+        # Made not periodic, the end knots are unclamped: the segment clamps them.
+        s.segment(*bounds)
+    poles = np.array([[tuple(p) for p in row] for row in s.getPoles()])
+    weights = np.array(s.getWeights(), dtype=float)
+    return NurbsSurface(s.UDegree, s.VDegree, poles, weights,
+                        flat_knots(s.getUKnots(), s.getUMultiplicities()),
+                        flat_knots(s.getVKnots(), s.getVMultiplicities()))
+
+
+def _index_of(shapes: List[Any], shape: Any) -> int:
+    """The index of the shape among `shapes` that is the same as `shape` (isSame: the same
+    topology whatever the orientation); appended when new."""
+    for i, known in enumerate(shapes):
+        if known.isSame(shape):
+            return i
+    shapes.append(shape)
+    return len(shapes) - 1
+
+
+def face_brep(shape: Any) -> Brep:
+    """The library's B-rep of one FreeCAD face (:func:`unfold`'s input): its surface (a
+    plane as a plane, any other as its NURBS form, ``Face.toNurbs``), its edges once each
+    (deduplicated with ``isSame``: a seam is one edge used twice) with their exact NURBS
+    curves, and its wires in order (``OrderedEdges``) as loops of edge uses with their
+    orientation, the outer wire first."""
+    face = _one_face(shape)
+    if isinstance(face.Surface, Part.Plane):
+        plane = face.Surface
+        x = np.array(tuple(_plane_x_axis(plane)))
+        y = np.array(tuple(plane.Rotation.multVec(V(0, 1, 0))))
+        surface: dict = dict(plane=(np.array(tuple(plane.Position)), _core.cross(x, y), x))
+        converted = face
+    else:
+        converted = face.toNurbs().Faces[0]
+        surface = dict(surface=_surface_nurbs(converted.Surface))
+    vertices: List[Any] = []
+    edges: List[Any] = []
+    curves: List[BrepEdge] = []
+    loops: List[List[Tuple[int, bool]]] = []
+    areas: List[float] = []
+    for wire in converted.Wires:
+        uses, uv = [], []
+        for e in wire.OrderedEdges:
+            uv.append(_pcurve_points(e, converted))
+            known = len(edges)
+            index = _index_of(edges, e)
+            if index == known:  # a new edge: its curve along its own direction
+                start = _index_of(vertices, e.firstVertex(False))
+                end = _index_of(vertices, e.lastVertex(False))
+                if e.Degenerated:
+                    p = np.array(tuple(vertices[start].Point))
+                    curves.append(BrepEdge(line_curve(p, p), start, end, degenerate=True))
+                else:
+                    bspline = _edge_bspline(e)
+                    if e.Orientation == "Reversed":
+                        bspline.reverse()
+                    curves.append(BrepEdge(_part_curve_data(bspline), start, end))
+            uses.append((index, e.Orientation != "Reversed"))
+        loops.append(uses)
+        areas.append(abs(_signed_area(uv)))
+    if not loops:
+        raise ValueError("shape: the face has no wires")
+    # The outer wire bounds the largest region of the face's parameter plane, the holes
+    # inside it (Face.OuterWire takes a hole for it on some faces across a seam).
+    loops.insert(0, loops.pop(int(np.argmax(areas))))
+    points = np.array([tuple(v.Point) for v in vertices], dtype=float).reshape(-1, 3)
+    return Brep.create(points, curves, [BrepFace(loops, same_sense=converted.Orientation
+                                                 != "Reversed", **surface)])
+
+
+def _pcurve_points(edge: Any, face: Any, samples: int = 16) -> np.ndarray:
+    """Points of an edge's curve in the face's parameter plane, in the edge's direction in
+    its wire (a seam's pcurve for that direction)."""
+    if isinstance(face.Surface, Part.Plane):  # its parameters: coordinates along its axes
+        plane = face.Surface
+        x, y = _plane_x_axis(plane), plane.Rotation.multVec(V(0, 1, 0))
+        a, b = edge.FirstParameter, edge.LastParameter
+        points = np.array([((p - plane.Position).dot(x), (p - plane.Position).dot(y))
+                           for p in (edge.valueAt(a + (b - a) * k / samples)
+                                     for k in range(samples + 1))])
+    else:
+        pcurve = face.curveOnSurface(edge)
+        if pcurve is not None:
+            curve, a, b = pcurve
+            uv = [curve.value(a + (b - a) * k / samples) for k in range(samples + 1)]
+            points = np.array([(q.x, q.y) for q in uv])
+        else:  # no curve on the face stored: the surface's parameters of the edge's points
+            a, b = edge.FirstParameter, edge.LastParameter
+            points = np.array([face.Surface.parameter(edge.valueAt(a + (b - a) * k / samples))
+                               for k in range(samples + 1)])
+    return points[::-1] if edge.Orientation == "Reversed" else points
+
+
+def _signed_area(pieces: List[np.ndarray]) -> float:
+    """The signed area of the polygon through the points of the pieces, in order."""
+    p = np.concatenate(pieces) if pieces else np.zeros((0, 2))
+    if len(p) < 3:
+        return 0.0
+    q = np.roll(p, -1, axis=0)
+    return 0.5 * float(np.sum(p[:, 0] * q[:, 1] - q[:, 0] * p[:, 1]))
+
+
+def developability(shape: Any) -> Developability:
+    """How developable a FreeCAD face is (see :func:`rmfsurf.developability`): "plane",
+    "circular_cylinder", "right_cone", ..., "not_developable", with its curvature and, for a
+    face that is not developable, the stretch an unrolling would need."""
+    return _developability(face_brep(shape))
+
+
+def _flat_part_edge(e: FlatEdge) -> Any:
+    """A flat edge as a Part edge in z = 0 from its start to its end: a Part.LineSegment or
+    an arc of the exact Part.Circle about its centre."""
+    a, b = V(float(e.start[0]), float(e.start[1]), 0), V(float(e.end[0]), float(e.end[1]), 0)
+    if e.kind == "line":
+        return Part.LineSegment(a, b).toShape()
+    circle = Part.Circle(V(float(e.center[0]), float(e.center[1]), 0), V(0, 0, 1),
+                         float(e.radius))
+    # The circle runs counter-clockwise about +z: a clockwise arc is its reverse.
+    first = circle.parameter(a if e.sweep > 0 else b)
+    arc = Part.ArcOfCircle(circle, first, first + abs(float(e.sweep))).toShape()
+    return arc if e.sweep > 0 else arc.reversed()
+
+
+def flat_face(unfolded: UnfoldedFace) -> Any:
+    """An unrolled face's flat pattern as a Part.Face in the XY plane (normal +z): the
+    outline as its outer wire, the holes as inner wires, exact Part.LineSegment lines and
+    Part.Circle arcs."""
+    u = _core.instance(unfolded, "unfolded", UnfoldedFace, "an rmfsurf.UnfoldedFace")
+    face = Part.Face(Part.Wire([_flat_part_edge(e) for e in u.outline]))
+    if u.holes:
+        face = face.cutHoles([Part.Wire([_flat_part_edge(e) for e in hole])
+                              for hole in u.holes]) or face
+    return face
+
+
+class FlatPattern:
+    """The flat pattern of one face (:func:`unfold`).
+
+    Attributes:
+        face: the pattern as a Part.Face in the XY plane (normal +z, seen from the formed
+            face's normal side): the outline as its outer wire, the holes as inner wires,
+            exact lines and circular arcs.
+        bend_lines: the bend lines as Part edges in the XY plane; none for planes, circular
+            cylinders and right cones.
+        report: the face's :class:`rmfsurf.Developability` (kind, curvature, stretch,
+            fit_error).
+        area: the flat area (the library's, exact for lines and arcs).
+        unfolded: the library's :class:`rmfsurf.UnfoldedFace`: its flat edges, DXF text and
+            marks between flat and formed (``to_flat``, ``to_formed``).
+        k_factor: the K-factor asked for (see :func:`unfold`).
+    """
+
+    __slots__ = ("face", "bend_lines", "report", "area", "unfolded", "k_factor")
+
+    def __init__(self, face: Any, bend_lines: List[Any], unfolded: UnfoldedFace,
+                 k_factor: float) -> None:
+        self.face, self.bend_lines, self.unfolded = face, bend_lines, unfolded
+        self.report: Developability = unfolded.report
+        self.area: float = unfolded.area
+        self.k_factor = k_factor
+
+    def write_dxf(self, path: Union[str, bytes, "os.PathLike[Any]"]) -> None:
+        """Writes the library's DXF R12 of the pattern to `path` (LINE and ARC entities, the
+        outline and holes on layer CUT, the bend lines on layer BEND; str, bytes or
+        os.PathLike; FileError when the file cannot be written)."""
+        self.unfolded.write_dxf(path)
+
+
+def unfold(shape: Any, *, k_factor: float = 0.5, tolerance: float = 1e-4,
+           flat_tolerance: float = 0.0) -> FlatPattern:
+    """The exact flat pattern of a developable FreeCAD face (rmf_unfold_face), its holes
+    kept: planes, circular cylinders and right cones (told from the geometry, B-spline
+    forms included) exactly; every other developable of degree 1 along its rulings through
+    its cone spline within `tolerance`, with bend lines where its pieces meet. A doubly
+    curved face is refused (InvalidInputError saying it is not developable).
+
+    Args:
+        shape: a Part.Face, a shape holding exactly one face, or a document object whose
+            shape is one (whole sheet bodies of several faces are not unfolded yet:
+            ValueError).
+        k_factor: the sheet's K-factor, in [0, 1] (ValueError outside). The face given IS
+            the layer that is unrolled, so the K-factor does not change one face's pattern;
+            it is checked and kept for the bends between faces that bodies will add.
+        tolerance: the largest distance of the cone spline from a face that is neither a
+            plane, a circular cylinder nor a right cone (mm, the document's units).
+        flat_tolerance: the largest distance of the outline's biarcs from the developed
+            boundary where an edge does not develop into a line or an arc (0: the
+            tolerance).
+
+    Returns:
+        A :class:`FlatPattern`: ``.face`` (a Part.Face in the XY plane with its holes as
+        inner wires), ``.bend_lines``, ``.write_dxf(path)``, ``.report``, ``.area``.
+    """
+    k = _core.finite(k_factor, "k_factor")
+    if not 0.0 <= k <= 1.0:
+        raise _core._refused("k_factor", "%r is outside [0, 1]" % k)
+    tolerance = _core.number(tolerance, "tolerance")
+    flat_tolerance = _core.number(flat_tolerance, "flat_tolerance")
+    unfolded = unfold_face(face_brep(shape), 0, tolerance=tolerance,
+                           flat_tolerance=flat_tolerance)
+    return FlatPattern(flat_face(unfolded), [_flat_part_edge(e) for e in unfolded.bend_lines],
+                       unfolded, k)
 
 
 # ---------------------------------------------------------------------------------------

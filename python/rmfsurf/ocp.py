@@ -24,36 +24,52 @@ normal to the path at its start and is given where it is in space (a Face, with 
 closed Wire). Its coordinates relative to the path's start point, along the plane's x
 direction (f2, the initial normal of the rotation-minimizing frame) and along
 tangent × f2 (f3), are the 2-D profile of :func:`rmfsurf.wire_sweep`.
+
+:func:`unfold` unrolls a developable face — a plane, a cylinder, a cone, any face of degree 1
+along its rulings, with its holes — into its exact flat pattern::
+
+    import build123d as bd, rmfsurf.ocp
+    tube = bd.Cylinder(10, 30) - bd.Cylinder(4, 30, rotation=(90, 0, 0))
+    wall = max(tube.faces().filter_by(bd.GeomType.CYLINDER), key=lambda f: f.area)
+    pattern = rmfsurf.ocp.unfold(wall)      # .face: a build123d Face in the XY plane, 2 holes
+    pattern.write_dxf("wall.dxf")
 """
 
 from __future__ import annotations
 
 import io
-from typing import Any, List, Optional, Sequence, Tuple
+import os
+from typing import Any, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
 from . import _core
 from .curves import ArrayLike, Curve, NurbsCurve, join_nurbs
-from .sheets import SheetPart
+from .sheets import FlatEdge, SheetPart
 from .shapes import (Arc, CurveEdge, Edge, Line, Shape, SweepFrame, _frame_guide,
                      _drawn_sections, _frame_start_normal, _named, wire_sweep)
-from .surfaces import Surface
+from .surfaces import NurbsSurface, Surface
+from .unfold import (Brep, BrepEdge, BrepFace, Developability, UnfoldedFace, line_curve,
+                     unfold_face)
+from .unfold import developability as _developability
 
 from OCP.BRep import BRep_Builder, BRep_Tool
-from OCP.BRepAdaptor import BRepAdaptor_Curve, BRepAdaptor_Surface
+from OCP.BRepAdaptor import BRepAdaptor_Curve, BRepAdaptor_Curve2d, BRepAdaptor_Surface
 from OCP.BRepBuilderAPI import (BRepBuilderAPI_MakeEdge, BRepBuilderAPI_MakeFace,
-                                BRepBuilderAPI_MakeSolid, BRepBuilderAPI_MakeWire,
+                                BRepBuilderAPI_MakeSolid, BRepBuilderAPI_MakeVertex,
+                                BRepBuilderAPI_MakeWire, BRepBuilderAPI_NurbsConvert,
                                 BRepBuilderAPI_Sewing)
 from OCP.BRepCheck import BRepCheck_Analyzer
 from OCP.BRepGProp import BRepGProp
 from OCP.BRepLib import BRepLib_FindSurface
 from OCP.BRepTools import BRepTools, BRepTools_WireExplorer
-from OCP.Geom import Geom_BSplineCurve, Geom_BSplineSurface, Geom_Curve, Geom_TrimmedCurve
+from OCP.GC import GC_MakeSegment
+from OCP.Geom import (Geom_BSplineCurve, Geom_BSplineSurface, Geom_Circle, Geom_Curve,
+                      Geom_TrimmedCurve)
 from OCP.GeomAbs import GeomAbs_Circle, GeomAbs_Line, GeomAbs_Plane
 from OCP.GeomConvert import GeomConvert
 from OCP.GProp import GProp_GProps
-from OCP.gp import gp_Dir, gp_Pln, gp_Pnt, gp_Vec
+from OCP.gp import gp_Ax2, gp_Dir, gp_Pln, gp_Pnt, gp_Vec
 from OCP.ShapeFix import ShapeFix_Shape
 
 try:  # OCP 7.x: the TColgp/TColStd arrays
@@ -66,7 +82,13 @@ except ImportError:  # OCP 8: the same NCollection arrays under OCP.collections
     from OCP.collections import Array1_int as TColStd_Array1OfInteger
     from OCP.collections import Array2_double as TColStd_Array2OfReal
     from OCP.collections import Array2_gp_Pnt as TColgp_Array2OfPnt
-from OCP.TopAbs import TopAbs_COMPOUND, TopAbs_EDGE, TopAbs_FACE, TopAbs_REVERSED, TopAbs_SHELL, TopAbs_SOLID, TopAbs_WIRE
+try:  # OCP 7.x
+    from OCP.TopTools import TopTools_IndexedMapOfShape
+except ImportError:  # OCP 8
+    from OCP.collections import (
+        IndexedMap_TopoDS_Shape_TopTools_ShapeMapHasher as TopTools_IndexedMapOfShape)
+from OCP.TopAbs import (TopAbs_COMPOUND, TopAbs_EDGE, TopAbs_FACE, TopAbs_FORWARD,
+                        TopAbs_REVERSED, TopAbs_SHELL, TopAbs_SOLID, TopAbs_VERTEX, TopAbs_WIRE)
 from OCP.TopExp import TopExp, TopExp_Explorer
 from OCP.TopoDS import TopoDS, TopoDS_Shape
 
@@ -132,7 +154,11 @@ def _edge_bspline(edge: Any, degree: Optional[int] = None) -> Geom_BSplineCurve:
         raise ValueError("an edge without a 3-D curve")
     bspline = GeomConvert.CurveToBSplineCurve_s(Geom_TrimmedCurve(curve, first, last))
     if bspline.IsPeriodic():
+        # OpenCascade leaves the end knots of a curve made not periodic unclamped: the
+        # segment over the period clamps them.
+        a, b = bspline.FirstParameter(), bspline.LastParameter()
         bspline.SetNotPeriodic()
+        bspline.Segment(a, b)
     if edge.Orientation() == TopAbs_REVERSED:
         bspline.Reverse()
     if degree is not None and bspline.Degree() < degree:
@@ -588,3 +614,280 @@ def sweep(path: Any, profile: Any, *, solid: bool = True, corner: str = "round",
                         end_profile=end_outer,
                         end_holes=end_holes, sections=through)
     return _wrap_like(path, shape(result, min(tolerance, 1e-6)))
+
+
+# ---------------------------------------------------------------------------------------
+# Unfolding a face
+
+
+_FACE_LIKE = ("a face (build123d/CadQuery Face, TopoDS_Face) or a shape holding exactly one "
+              "face")
+
+
+def _one_face(value: Any, name: str = "shape") -> Any:
+    """The one face of `value`: a face, or a shape holding exactly one."""
+    raw = _unwrap(value)
+    if not isinstance(raw, TopoDS_Shape) or raw.IsNull():
+        raise TypeError("%s: expected %s, got %s" % (name, _FACE_LIKE, _describe(value)))
+    if raw.ShapeType() == TopAbs_FACE:
+        return _as_face(raw)
+    faces = TopTools_IndexedMapOfShape()
+    TopExp.MapShapes_s(raw, TopAbs_FACE, faces)
+    if faces.Extent() == 0:
+        raise ValueError("%s: the %s holds no face; a face is needed" % (name, _describe(value)))
+    if faces.Extent() > 1:
+        raise ValueError("%s: the %s holds %d faces; whole sheet bodies are not unfolded yet: "
+                         "give one face (e.g. one of shape.faces())"
+                         % (name, _describe(value), faces.Extent()))
+    return _as_face(faces.FindKey(1))
+
+
+def _surface_nurbs(surface: Geom_BSplineSurface) -> NurbsSurface:
+    """A B-spline surface's data with clamped knots (a periodic one as its period)."""
+    s = surface
+    if s.IsUPeriodic() or s.IsVPeriodic():
+        bounds = s.Bounds()
+        s = s.Copy()
+        if s.IsUPeriodic():
+            s.SetUNotPeriodic()
+        if s.IsVPeriodic():
+            s.SetVNotPeriodic()
+        # Made not periodic, the end knots are unclamped: the segment clamps them.
+        s.Segment(*bounds)
+    nu, nv = s.NbUPoles(), s.NbVPoles()
+    poles = np.array([[s.Pole(i, j).Coord() for j in range(1, nv + 1)]
+                      for i in range(1, nu + 1)])
+    weights = np.array([[s.Weight(i, j) for j in range(1, nv + 1)] for i in range(1, nu + 1)])
+    knots_u = np.repeat([s.UKnot(i) for i in range(1, s.NbUKnots() + 1)],
+                        [s.UMultiplicity(i) for i in range(1, s.NbUKnots() + 1)])
+    knots_v = np.repeat([s.VKnot(i) for i in range(1, s.NbVKnots() + 1)],
+                        [s.VMultiplicity(i) for i in range(1, s.NbVKnots() + 1)])
+    return NurbsSurface(s.UDegree(), s.VDegree(), poles, weights, knots_u, knots_v)
+
+
+def face_brep(shape: Any) -> Brep:
+    """The library's B-rep of one face (:func:`unfold`'s input; `shape` as there): its
+    surface (a plane as a plane, any other as its NURBS form by
+    BRepBuilderAPI_NurbsConvert), its edges once each (TopTools_IndexedMapOfShape: a seam is
+    one edge used twice) with their exact NURBS curves, its wires in order as loops of edge
+    uses with their orientation (BRepTools_WireExplorer on the face), the outer wire
+    (BRepTools.OuterWire) first."""
+    face = _one_face(shape)
+    adaptor = BRepAdaptor_Surface(face)
+    converted = _as_face(BRepBuilderAPI_NurbsConvert(face, True).Shape())
+    if adaptor.GetType() == GeomAbs_Plane:
+        position = adaptor.Plane().Position()
+        x = np.array(position.XDirection().Coord())
+        normal = _core.cross(x, np.array(position.YDirection().Coord()))  # the parameters'
+        surface: dict = dict(plane=(np.array(position.Location().Coord()), normal, x))
+    else:
+        bspline = BRep_Tool.Surface_s(converted)
+        if not isinstance(bspline, Geom_BSplineSurface):
+            bspline = Geom_BSplineSurface.DownCast(bspline)
+        surface = dict(surface=_surface_nurbs(bspline))
+    edge_map, vertex_map = TopTools_IndexedMapOfShape(), TopTools_IndexedMapOfShape()
+    TopExp.MapShapes_s(converted, TopAbs_EDGE, edge_map)
+    TopExp.MapShapes_s(converted, TopAbs_VERTEX, vertex_map)
+    vertices = [_pnt(BRep_Tool.Pnt_s(_downcast("Vertex")(vertex_map.FindKey(i))))
+                for i in range(1, vertex_map.Extent() + 1)]
+    edges = []
+    for i in range(1, edge_map.Extent() + 1):
+        e = _as_edge(edge_map.FindKey(i).Oriented(TopAbs_FORWARD))
+        first, last = TopExp.FirstVertex_s(e), TopExp.LastVertex_s(e)
+        start, end = vertex_map.FindIndex(first) - 1, vertex_map.FindIndex(last) - 1
+        if BRep_Tool.Degenerated_s(e):
+            p = _pnt(BRep_Tool.Pnt_s(first))
+            edges.append(BrepEdge(line_curve(p, p), start, end, degenerate=True))
+        else:
+            edges.append(BrepEdge(_bspline_data(_edge_bspline(e)), start, end))
+    loops: List[List[Tuple[int, bool]]] = []
+    areas: List[float] = []
+    explorer = TopExp_Explorer(converted, TopAbs_WIRE)
+    while explorer.More():
+        wire = _as_wire(explorer.Current())
+        uses, uv = [], []
+        walk = BRepTools_WireExplorer(wire, converted)
+        while walk.More():
+            e = walk.Current()
+            uses.append((edge_map.FindIndex(e) - 1, e.Orientation() != TopAbs_REVERSED))
+            uv.append(_pcurve_points(e, converted))
+            walk.Next()
+        loops.append(uses)
+        areas.append(abs(_signed_area(uv)))
+        explorer.Next()
+    if not loops:
+        raise ValueError("shape: the face has no wires")
+    # The outer wire bounds the largest region of the face's parameter plane, the holes
+    # inside it (BRepTools.OuterWire and ShapeAnalysis.OuterWire, by boxes and by a
+    # classifier, each take a hole for it on some faces across a seam).
+    outer = int(np.argmax(areas))
+    loops.insert(0, loops.pop(outer))
+    same_sense = converted.Orientation() == TopAbs_FORWARD
+    return Brep.create(np.array(vertices).reshape(-1, 3), edges,
+                       [BrepFace(loops, same_sense=same_sense, **surface)])
+
+
+def _pcurve_points(edge: Any, face: Any, samples: int = 16) -> np.ndarray:
+    """Points of an edge's curve in the face's parameter plane, in the edge's direction in
+    its wire (a seam's pcurve for that direction)."""
+    curve = BRepAdaptor_Curve2d(edge, face)
+    a, b = curve.FirstParameter(), curve.LastParameter()
+    points = np.array([curve.Value(a + (b - a) * k / samples).Coord()
+                       for k in range(samples + 1)])
+    return points[::-1] if edge.Orientation() == TopAbs_REVERSED else points
+
+
+def _signed_area(pieces: List[np.ndarray]) -> float:
+    """The signed area of the polygon through the points of the pieces, in order."""
+    p = np.concatenate(pieces) if pieces else np.zeros((0, 2))
+    if len(p) < 3:
+        return 0.0
+    q = np.roll(p, -1, axis=0)
+    return 0.5 * float(np.sum(p[:, 0] * q[:, 1] - q[:, 0] * p[:, 1]))
+
+
+def developability(shape: Any) -> Developability:
+    """How developable a face is (see :func:`rmfsurf.developability`; `shape` as for
+    :func:`unfold`): "plane", "circular_cylinder", "right_cone", ..., "not_developable",
+    with its curvature and, for a face that is not developable, the stretch an unrolling
+    would need."""
+    return _developability(face_brep(shape))
+
+
+def _flat_vertex(p: np.ndarray) -> Any:
+    return BRepBuilderAPI_MakeVertex(gp_Pnt(float(p[0]), float(p[1]), 0.0)).Vertex()
+
+
+def _flat_curve(e: FlatEdge) -> Tuple[Any, float, float]:
+    """A flat edge's exact curve in the plane z = 0 and its parameter range, from its start
+    to its end: a segment, or the arc of a Geom_Circle about the exact centre."""
+    if e.kind == "line":
+        segment = GC_MakeSegment(gp_Pnt(float(e.start[0]), float(e.start[1]), 0.0),
+                                 gp_Pnt(float(e.end[0]), float(e.end[1]), 0.0)).Value()
+        return segment, segment.FirstParameter(), segment.LastParameter()
+    # About +z for a counter-clockwise arc, about −z for a clockwise one, x along +x: the
+    # circle's parameter runs from the start to the end.
+    turn = 1.0 if e.sweep > 0 else -1.0
+    axis = gp_Ax2(gp_Pnt(float(e.center[0]), float(e.center[1]), 0.0), gp_Dir(0.0, 0.0, turn),
+                  gp_Dir(1.0, 0.0, 0.0))
+    circle = Geom_Circle(axis, float(e.radius))
+    d = e.start - e.center
+    start = turn * float(np.arctan2(d[1], d[0]))
+    return circle, start, start + abs(float(e.sweep))
+
+
+def _flat_wire(loop: List[FlatEdge]) -> Any:
+    """A closed loop of flat edges as a wire, consecutive edges sharing their vertex."""
+    vertices = [_flat_vertex(e.start) for e in loop]
+    maker = BRepBuilderAPI_MakeWire()
+    for k, e in enumerate(loop):
+        curve, a, b = _flat_curve(e)
+        maker.Add(BRepBuilderAPI_MakeEdge(curve, vertices[k], vertices[(k + 1) % len(loop)],
+                                          a, b).Edge())
+    return maker.Wire()
+
+
+def _flat_edge(e: FlatEdge) -> Any:
+    curve, a, b = _flat_curve(e)
+    return BRepBuilderAPI_MakeEdge(curve, a, b).Edge()
+
+
+def flat_face(unfolded: UnfoldedFace) -> Any:
+    """An unrolled face's flat pattern as a ``TopoDS_Face`` in the plane z = 0 (normal +z):
+    its outline as the outer wire, its holes as inner wires, of exact lines and circular
+    arcs."""
+    u = _core.instance(unfolded, "unfolded", UnfoldedFace, "an rmfsurf.UnfoldedFace")
+    maker = BRepBuilderAPI_MakeFace(gp_Pln(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)),
+                                    _flat_wire(u.outline), True)
+    for hole in u.holes:  # clockwise: inner wires as they are
+        maker.Add(_flat_wire(hole))
+    return maker.Face()
+
+
+def _wrap_pattern_like(template: Any, raw: Any) -> Any:
+    """A face or an edge as a build123d/CadQuery one when `template` was one of theirs."""
+    module = type(template).__module__.split(".")[0]
+    if module == "build123d":
+        import build123d
+
+        return build123d.Face(raw) if raw.ShapeType() == TopAbs_FACE else build123d.Edge(raw)
+    if module == "cadquery":
+        import cadquery
+
+        return cadquery.Shape.cast(raw)
+    return raw
+
+
+class FlatPattern:
+    """The flat pattern of one face (:func:`unfold`).
+
+    Attributes:
+        face: the pattern as a face in the XY plane (normal +z, seen from the formed face's
+            normal side): the outline as its outer wire, the holes as inner wires, exact
+            lines and circular arcs (a build123d Face when the input was a build123d object,
+            a CadQuery Face for CadQuery, else a ``TopoDS_Face``).
+        bend_lines: the bend lines as edges in the XY plane (build123d/CadQuery Edges or
+            ``TopoDS_Edge``); none for planes, circular cylinders and right cones.
+        report: the face's :class:`rmfsurf.Developability` (kind, curvature, stretch,
+            fit_error).
+        area: the flat area (the library's, exact for lines and arcs).
+        unfolded: the library's :class:`rmfsurf.UnfoldedFace`: its flat edges, DXF text and
+            marks between flat and formed (``to_flat``, ``to_formed``).
+        k_factor: the K-factor asked for (see :func:`unfold`).
+    """
+
+    __slots__ = ("face", "bend_lines", "report", "area", "unfolded", "k_factor")
+
+    def __init__(self, face: Any, bend_lines: List[Any], unfolded: UnfoldedFace,
+                 k_factor: float) -> None:
+        self.face, self.bend_lines, self.unfolded = face, bend_lines, unfolded
+        self.report: Developability = unfolded.report
+        self.area: float = unfolded.area
+        self.k_factor = k_factor
+
+    def write_dxf(self, path: Union[str, bytes, "os.PathLike[Any]"]) -> None:
+        """Writes the library's DXF R12 of the pattern to `path` (LINE and ARC entities, the
+        outline and holes on layer CUT, the bend lines on layer BEND; str, bytes or
+        os.PathLike; FileError when the file cannot be written)."""
+        self.unfolded.write_dxf(path)
+
+
+def unfold(shape: Any, *, k_factor: float = 0.5, tolerance: float = 1e-4,
+           flat_tolerance: float = 0.0) -> FlatPattern:
+    """The exact flat pattern of a developable face (rmf_unfold_face), its holes kept.
+
+    Planes, circular cylinders and right cones (a cylinder converted to a B-spline, or read
+    back from STEP, included: the kind is told from the geometry) unroll exactly; every
+    other developable of degree 1 along its rulings (general cylinders and cones — an
+    extruded spline —, tangent developables, ruled B-spline developables) through its
+    cone spline within `tolerance`, with bend lines where its pieces meet. A doubly curved
+    face is refused: InvalidInputError saying it is not developable, with its curvature and
+    the stretch an unrolling would need.
+
+    Args:
+        shape: a build123d/CadQuery Face or TopoDS_Face, or a shape holding exactly one face
+            (whole sheet bodies of several faces are not unfolded yet: ValueError).
+        k_factor: the sheet's K-factor, in [0, 1] (ValueError outside). The face given IS
+            the layer that is unrolled — the sheet's neutral layer, or whichever face of the
+            sheet the caller picks — so the K-factor does not change one face's pattern; it
+            is checked and kept for the bends between faces that bodies will add.
+        tolerance: the largest distance of the cone spline from a face that is neither a
+            plane, a circular cylinder nor a right cone (caller's units).
+        flat_tolerance: the largest distance of the outline's biarcs from the developed
+            boundary where an edge does not develop into a line or an arc (0: the
+            tolerance).
+
+    Returns:
+        A :class:`FlatPattern`: ``.face`` in the XY plane (a build123d Face for build123d
+        input), ``.bend_lines``, ``.write_dxf(path)``, ``.report``, ``.area``.
+    """
+    k = _core.finite(k_factor, "k_factor")
+    if not 0.0 <= k <= 1.0:
+        raise _core._refused("k_factor", "%r is outside [0, 1]" % k)
+    tolerance = _core.number(tolerance, "tolerance")
+    flat_tolerance = _core.number(flat_tolerance, "flat_tolerance")
+    unfolded = unfold_face(face_brep(shape), 0, tolerance=tolerance,
+                           flat_tolerance=flat_tolerance)
+    flat = _wrap_pattern_like(shape, flat_face(unfolded))
+    bends = [_wrap_pattern_like(shape, _flat_edge(e)) for e in unfolded.bend_lines]
+    return FlatPattern(flat, bends, unfolded, k)

@@ -56,6 +56,14 @@ class Inputs:
         return Part.makePlane(10, 4)
 
     @functools.cached_property
+    def plate_face(self):
+        return Part.makeBox(4, 3, 1).cut(Part.makeCylinder(0.5, 3, V(2, 1.5, -1))).Faces[0]
+
+    @functools.cached_property
+    def pattern(self):
+        return rfc.unfold(self.plate_face)
+
+    @functools.cached_property
     def developed(self):
         return rmfsurf.cone_spline_approximate(twisted_cubic(), (0.5, 6.0), 1e-3).develop()
 
@@ -126,6 +134,9 @@ NUMBERS = [
      lambda v: rfc.transition_selection([], None, k_factor=v)),
     ("freecad.transition_selection(tolerance)",
      lambda v: rfc.transition_selection([], None, tolerance=v)),
+    ("freecad.unfold(k_factor)", lambda v: rfc.unfold(IN.plate_face, k_factor=v)),
+    ("freecad.unfold(tolerance)", lambda v: rfc.unfold(IN.plate_face, tolerance=v)),
+    ("freecad.unfold(flat_tolerance)", lambda v: rfc.unfold(IN.plate_face, flat_tolerance=v)),
 ]
 
 
@@ -400,7 +411,39 @@ def test_every_sections_argument_of_the_adapter_has_its_cases_and_is_taken():
             rmfsurf.InvalidInputError, "sections: need end_profile")
 
 
+# Paths: (key, call). A name with a NUL or an empty one is refused and nothing is written;
+# what is no path is a TypeError; a good one gets the file.
+
+PATHS = [("freecad.FlatPattern.write_dxf(path)", lambda v: IN.pattern.write_dxf(v))]
+
+
+@pytest.mark.parametrize("case, value", parametrize(
+    PATHS, lambda c: ["flat\0.dxf", "\0flat.dxf", b"flat\0.dxf", "", b""]))
+def test_a_path_with_a_nul_or_empty_is_refused_and_nothing_is_written(case, value, tmp_path,
+                                                                      monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    refused(case[1], value, rmfsurf.InvalidInputError, argument(case[0]))
+    assert os.listdir(tmp_path) == []
+
+
+@pytest.mark.parametrize("case, value", parametrize(PATHS, lambda c: [3, None, ["flat.dxf"]]))
+def test_a_non_path_is_a_type_error(case, value, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    refused(case[1], value, TypeError, argument(case[0]))
+    assert os.listdir(tmp_path) == []
+
+
+@pytest.mark.parametrize("case", PATHS, ids=[c[0] for c in PATHS])
+def test_a_good_path_gets_the_file_and_a_bad_directory_a_file_error(case, tmp_path):
+    case[1](tmp_path / "flat.dxf")
+    assert (tmp_path / "flat.dxf").read_text().startswith("0\nSECTION\n")
+    with pytest.raises(rmfsurf.FileError) as info:
+        case[1](str(tmp_path / "no" / "flat.dxf"))
+    assert "cannot write" in str(info.value) and "flat.dxf" in str(info.value)
+
+
 CASES = {
+    "path": {c[0] for c in PATHS},
     "integer": {c[0] for c in INTEGERS},
     "number": {c[0] for c in NUMBERS},
     "array": {c[0] for c in ARRAYS},

@@ -120,6 +120,30 @@ class Inputs:
     def solid(self):
         return self.ocp.shape(self.shape)
 
+    @functools.cached_property
+    def brep(self):
+        return rmfsurf.Brep.create(SQUARE, SQUARE_EDGES, [SQUARE_FACE])
+
+    @functools.cached_property
+    def unfolded(self):
+        return rmfsurf.unfold_face(self.brep)
+
+    @functools.cached_property
+    def plate_face(self):
+        return (self.bd.Box(4, 3, 1) - self.bd.Cylinder(0.5, 2)).faces().sort_by(
+            self.bd.Axis.Z)[-1]
+
+    @functools.cached_property
+    def pattern(self):
+        return self.ocp.unfold(self.plate_face)
+
+
+#: A unit square as plain B-rep data (rmfsurf.Brep.create).
+SQUARE = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)]
+SQUARE_EDGES = [rmfsurf.BrepEdge(rmfsurf.line_curve(SQUARE[k], SQUARE[(k + 1) % 4]), k,
+                                 (k + 1) % 4) for k in range(4)]
+SQUARE_FACE = rmfsurf.BrepFace([[(k, True) for k in range(4)]],
+                               plane=((0, 0, 0), (0, 0, 1), (1, 0, 0)))
 
 IN = Inputs()
 INVERSION = rmfsurf.Inversion((0.0, 0.0, 5.0), 2.0)
@@ -139,6 +163,10 @@ def helix(t):
 # Integers for C: (key, minimum, maximum, call).
 
 INTEGERS = [
+    ("developability(face)", 0, MAXIMUM["size_t"], lambda v: rmfsurf.developability(IN.brep, v)),
+    ("unfold_face(face)", 0, MAXIMUM["size_t"], lambda v: rmfsurf.unfold_face(IN.brep, v)),
+    ("unfold_face(max_pieces)", 2, MAXIMUM["size_t"],
+     lambda v: rmfsurf.unfold_face(IN.brep, max_pieces=v)),
     ("Curve.from_nurbs(degree)", 1, MAXIMUM["uint32_t"],
      lambda v: rmfsurf.Curve.from_nurbs(v, [[0, 0, 0], [1, 0, 0], [1, 1, 0]], [0, 0, 0, 1, 1, 1])),
     ("Surface.from_nurbs(degree_u)", 1, MAXIMUM["uint32_t"],
@@ -250,6 +278,11 @@ for _function, _call in [
         NUMBERS.append(("%s(%s)" % (_function, _option),
                         lambda v, c=_call, o=_option: c(**{o: v})))
 NUMBERS += [
+    ("unfold_face(tolerance)", lambda v: rmfsurf.unfold_face(IN.brep, tolerance=v)),
+    ("unfold_face(flat_tolerance)", lambda v: rmfsurf.unfold_face(IN.brep, flat_tolerance=v)),
+    ("ocp.unfold(k_factor)", lambda v: IN.ocp.unfold(IN.plate_face, k_factor=v)),
+    ("ocp.unfold(tolerance)", lambda v: IN.ocp.unfold(IN.plate_face, tolerance=v)),
+    ("ocp.unfold(flat_tolerance)", lambda v: IN.ocp.unfold(IN.plate_face, flat_tolerance=v)),
     ("tangent_part(v_min)", lambda v: rmfsurf.tangent_part(twisted_cubic(), v, 0.9)),
     ("tangent_part(v_max)", lambda v: rmfsurf.tangent_part(twisted_cubic(), 0.3, v)),
     ("ocp.face(tolerance)", lambda v: IN.ocp.face(IN.surface, v)),
@@ -287,7 +320,11 @@ def test_nan_and_infinity_are_invalid_input_naming_the_argument(case, value):
 # Paths: (key, call). The library writes where the C string ends, so a NUL must never reach
 # it; every accepted form must write exactly the file it names.
 
-PATHS = [("Shape.write_step(path)", lambda v: IN.shape.write_step(v))]
+#: (key, call, what the written file starts with).
+PATHS = [("Shape.write_step(path)", lambda v: IN.shape.write_step(v), b"ISO-10303-21;"),
+         ("UnfoldedFace.write_dxf(path)", lambda v: IN.unfolded.write_dxf(v), b"0\nSECTION\n"),
+         ("ocp.FlatPattern.write_dxf(path)", lambda v: IN.pattern.write_dxf(v),
+          b"0\nSECTION\n")]
 
 NUL_PATHS = ["pipe\0.step", "\0pipe.step", "pipe.step\0", b"pipe\0.step",
              pathlib.Path("pipe\0.step"), pathlib.PurePosixPath("dir\0/pipe.step"), "", b"",
@@ -347,7 +384,7 @@ def test_str_bytes_and_path_like_write_the_file_they_name(case, name, make, writ
     case[1](make(tmp_path))
     assert _listing(tmp_path) == [written]
     with open(os.path.join(os.fsencode(tmp_path), written), "rb") as f:
-        assert f.read().startswith(b"ISO-10303-21;")
+        assert f.read().startswith(case[2])
 
 
 @pytest.mark.parametrize("case", PATHS, ids=[c[0] for c in PATHS])
@@ -370,6 +407,8 @@ def test_a_file_that_cannot_be_written_is_a_file_error_naming_it(case, tmp_path,
 BAR = [rmfsurf.Line((0, 0, 0), (3, 0, 0))]
 
 OBJECTS = [
+    ("Brep.create(edges)", lambda v: rmfsurf.Brep.create(SQUARE, v, []), SQUARE_EDGES[0]),
+    ("Brep.create(faces)", lambda v: rmfsurf.Brep.create(SQUARE, SQUARE_EDGES, v), SQUARE_FACE),
     ("wire_sweep(edges)", lambda v: rmfsurf.wire_sweep(v, circle(1.0)),
      rmfsurf.Line((0, 0, 0), (10, 0, 0))),
     ("wire_sweep(holes)", lambda v: rmfsurf.wire_sweep(IN.edges, circle(1.0), v,
@@ -870,6 +909,11 @@ H = dict(p0=P[0], t0=D[0], p1=P[1], t1=D[1])
 
 
 ARRAYS = [
+    ("Brep.create(vertices)", "points", lambda v: rmfsurf.Brep.create(v, [], [])),
+    ("UnfoldedFace.to_flat(points)", "points", lambda v: IN.unfolded.to_flat(v)),
+    ("UnfoldedFace.to_formed(points)", "flat points", lambda v: IN.unfolded.to_formed(v)),
+    ("line_curve(start)", "vector", lambda v: rmfsurf.line_curve(v, (1, 0, 0))),
+    ("line_curve(end)", "vector", lambda v: rmfsurf.line_curve((1, 0, 0), v)),
     ("Curve.from_nurbs(poles)", "points", lambda v: rmfsurf.Curve.from_nurbs(1, v, [0, 0, 1, 1])),
     ("Curve.from_nurbs(knots)", "numbers",
      lambda v: rmfsurf.Curve.from_nurbs(1, [[0, 0, 0], [1, 0, 0]], v)),

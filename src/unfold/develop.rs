@@ -25,6 +25,10 @@ use std::f64::consts::TAU;
 
 /// Angles within this of the cut are on it.
 const ON_CUT: f64 = 1e-9;
+/// Points within this of a cone's apex are on the cut too: the apex develops to the same
+/// flat point from either side, and its angle is only round-off (a seam's end sample there
+/// must not decide on which side of the cut the seam lies).
+const AT_APEX: f64 = 1e-9;
 
 /// A face's development (internal coordinates).
 #[derive(Clone, Debug)]
@@ -116,7 +120,8 @@ impl Development {
                 sin,
             } => {
                 let theta = (Self::raw_angle(p, *origin, *x, *y) - cut).rem_euclid(TAU);
-                let on_cut = theta <= ON_CUT || theta >= TAU - ON_CUT;
+                let at_apex = sin.is_some() && (p - *origin).length() <= AT_APEX;
+                let on_cut = theta <= ON_CUT || theta >= TAU - ON_CUT || at_apex;
                 let theta = if theta >= TAU - ON_CUT { 0.0 } else { theta };
                 let point = match sin {
                     None => DVec2::new(radius * theta, (p - *origin).dot(*axis)),

@@ -2,6 +2,8 @@
 //! loops of edge uses), unrolled and checked against closed forms: areas, outlines, holes,
 //! marks both ways, invariance, refusals.
 
+use super::develop::Development;
+use super::kind::Recognized;
 use super::*;
 use crate::math::GaussLegendre;
 use crate::model::{arc_through, circle, BrepBound, BrepEdge, BrepFace, BrepUse};
@@ -223,6 +225,63 @@ fn a_full_tube_is_cut_open_along_its_seam() {
     );
     assert!((area(&u) - expected).abs() <= 1e-12 * expected);
     assert_eq!(count(&u.pattern().outline), (6, 0));
+}
+
+/// A whole cone to its apex, as a kernel hands it over: the base circle, the seam from the
+/// base to the apex used both ways, and the apex as a degenerate edge.
+#[test]
+fn a_whole_cone_is_cut_open_along_its_seam_to_its_apex() {
+    let (radius, height) = (5.0f64, 8.0f64);
+    let slant = radius.hypot(height);
+    let apex = DVec3::new(0.0, 0.0, height);
+    // The seam off the x axis: the apex, on the axis, has no angle of its own.
+    let (x, y) = (DVec3::new(0.6, 0.8, 0.0), DVec3::new(-0.8, 0.6, 0.0));
+    let base = nurbs(circle(DVec3::ZERO, x, y, radius).unwrap());
+    // As OpenCascade converts a cone: the circle along u, the rulings along v.
+    let surface = NurbsSurface::new(
+        base.degree,
+        1,
+        base.poles.len(),
+        2,
+        base.poles.iter().flat_map(|&p| [p, apex]).collect(),
+        Some(base.weights.iter().flat_map(|&w| [w, w]).collect()),
+        base.knots.clone(),
+        vec![0.0, 0.0, slant, slant],
+    )
+    .unwrap();
+    // The edges meet a hair off the surface's apex, as a kernel's rounding leaves them:
+    // an angle of their own, not the seam's.
+    let tip = apex + 1e-13 * y;
+    let mut brep = one_face(
+        BrepSurface::Nurbs(surface),
+        vec![base.clone(), line(radius * x, tip), line(tip, tip)],
+        vec![(vec![(2, false), (1, false), (0, true), (1, true)], true)],
+    );
+    brep.edges[2].degenerate = true;
+    let u = unfold_face(&brep, 0, &UnfoldOptions::new(1e-4)).unwrap();
+    assert_eq!(u.report().kind, SurfaceKind::RightCone);
+    let expected = PI * radius * radius.hypot(height);
+    println!(
+        "whole cone: area {} (exact {expected}), outline {:?}",
+        area(&u),
+        count(&u.pattern().outline)
+    );
+    assert!((area(&u) - expected).abs() <= 1e-12 * expected);
+    assert_eq!(count(&u.pattern().outline), (2, 2));
+    // The apex develops to one flat point from both sides of the cut: it is on the cut,
+    // whatever angle round-off gives it (else a seam's sample there decided the seam's side
+    // by a tie, and the seam zigzagged across the cut).
+    let cone = Recognized::Cone {
+        apex: DVec3::ZERO,
+        axis: DVec3::Z,
+        x: DVec3::X,
+        sin: 0.5,
+    };
+    let development = Development::analytic(&cone, 1.0).unwrap();
+    for p in [DVec3::ZERO, DVec3::new(3e-17, -4e-17, 0.0)] {
+        assert!(development.flat(p).on_cut, "the apex {p} is not on the cut");
+    }
+    assert!(!development.flat(DVec3::new(0.5, 0.0, 1.0)).on_cut);
 }
 
 /// A frustum patch of the right cone with apex at the origin, axis z, half angle α

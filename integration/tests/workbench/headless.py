@@ -30,7 +30,13 @@ What is checked, each figure printed with its limit:
      A_out)/2 (exact for a developable: areas are linear in the offset);
   E. persistence: saved, closed, reopened, the shapes cleared and recomputed: the same
      volumes, areas, faces and vertices; a constraint changed after reopening still drives;
-  F. the macros, as thin wrappers of make_sweep, make_unfold and make_transition.
+  F. the macros, as thin wrappers of make_sweep, make_unfold and make_transition;
+  G. any developable face: rmfsurf.freecad.unfold of a cylinder's wall and of a cone's
+     wall with a window (flat area against FreeCAD's face.Area, the window an inner wire of
+     the flat face, true arcs and lines), a plate with a round hole, a body refused; RmfUnfold
+     features on the faces of a Part::Cylinder and a Part::Box (valid, FlatArea against the
+     face's area, SurfaceKind, Curvature, PieceCount = BendLineCount + 1), an extruded
+     B-spline (a general cylinder: bend lines, fit error), a window's DXF read back.
 freecadcmd exits 0 on an exception, so the script exits 1 itself on any failure, and prints
 WORKBENCH CHECKS OK last (report lines start with '| ') when everything passed.
 """
@@ -770,6 +776,10 @@ def part_c(doc):
             unfold.isValid() and len(faces) == 1 and shape.BoundBox.ZLength < 1e-12
             and unfold.BendLineCount == unfold.PieceCount - 1
             == len(shape.childShapes()) - 1)
+    require("SurfaceKind %r, Curvature %.1e, FitError %.1e (exact: closed form)"
+            % (unfold.SurfaceKind, unfold.Curvature, unfold.FitError),
+            unfold.SurfaceKind == "right_cone" and unfold.Curvature < 1e-9
+            and unfold.FitError == 0)
     outline = faces[0].Edges
     require("outline: %d edges, all true arcs (Part.Circle) or lines" % len(outline),
             all(isinstance(e.Curve, (Part.Circle, Part.Line, Part.LineSegment)) for e in outline))
@@ -1049,6 +1059,136 @@ def part_f(wire_sweeps):
     FreeCAD.closeDocument(doc.Name)
 
 
+# ---------------------------------------------------------------------------------------
+# G. Any developable face: rmfsurf.freecad.unfold and RmfUnfold
+
+
+def windowed_cone():
+    """A frustum (radii 10 and 4, height 20) with a window cut through its wall: between
+    the heights 7 and 13 and 40° of turn — two parallel circles and two rulings."""
+    cone = Part.makeCone(10, 4, 20)
+    window = Part.makeCylinder(30, 6, V(0, 0, 7), V(0, 0, 1), 40)
+    window.rotate(V(0, 0, 0), V(0, 0, 1), 120)
+    walls = [f for f in cone.cut(window).Faces if isinstance(f.Surface, Part.Cone)]
+    assert len(walls) == 1
+    return walls[0]
+
+
+def check_pattern(name, face, pattern, kind, holes):
+    """The pattern of `face`: its kind, its area against FreeCAD's face.Area, a valid flat
+    face in z = 0 with `holes` inner wires, true arcs and lines only."""
+    flat = pattern.face
+    inner = [w for w in flat.Wires if not w.isSame(flat.OuterWire)]
+    curves = {type(e.Curve).__name__ for e in flat.Edges}
+    say("  %s: kind %s, flat area %.15g, FreeCAD's face.Area %.15g; %d inner wire(s); "
+        "edges %s" % (name, pattern.report.kind, pattern.area, face.Area, len(inner),
+                      sorted(curves)))
+    require("%s: kind %s" % (name, kind), pattern.report.kind == kind)
+    check("%s: flat area against FreeCAD's face.Area" % name, rel(pattern.area, face.Area),
+          1e-9)
+    check("%s: the flat face's area against the pattern's" % name,
+          rel(flat.Area, pattern.area), 1e-9)
+    require("%s: a valid Part.Face in z = 0 with %d inner wire(s), Part.Circle arcs and "
+            "lines only" % (name, holes),
+            isinstance(flat, Part.Face) and flat.isValid() and len(inner) == holes
+            and flat.BoundBox.ZLength < 1e-12 and curves <= {"Circle", "Line", "LineSegment"})
+
+
+def part_g():
+    say("G. Any developable face: rmfsurf.freecad.unfold and RmfUnfold")
+    import rmfsurf
+    import rmfsurf.freecad as rf
+    import rmfsurf_workbench as wb
+    cylinder = Part.makeCylinder(3, 10)
+    wall = [f for f in cylinder.Faces if isinstance(f.Surface, Part.Cylinder)][0]
+    check_pattern("cylinder wall (cut open along its seam)", wall, rf.unfold(wall),
+                  "circular_cylinder", 0)
+    window = windowed_cone()
+    pattern = rf.unfold(window)
+    check_pattern("cone wall with a window", window, pattern, "right_cone", 1)
+    hole = pattern.unfolded.holes[0]
+    require("the window: two arcs (parallel circles) and two lines (rulings): %s"
+            % [e.kind for e in hole],
+            sorted(e.kind for e in hole) == ["arc", "arc", "line", "line"])
+    path = os.path.join(WORK, "window.dxf")
+    pattern.write_dxf(path)
+    entities = read_dxf(path)
+    loops = [pattern.unfolded.outline] + pattern.unfolded.holes
+    require("its DXF: %d LINE/ARC entities on layer CUT, one per edge of the outline and "
+            "the window" % len(entities),
+            len(entities) == sum(len(loop) for loop in loops)
+            and all(e.get("8") == "CUT" and e["type"] in ("LINE", "ARC") for e in entities))
+    plate = Part.makeBox(40, 30, 2).cut(Part.makeCylinder(5, 10, V(20, 15, -1)))
+    top = [f for f in plate.Faces if abs(f.CenterOfMass.z - 2) < 1e-9][0]
+    check_pattern("plate with a round hole", top, rf.unfold(top), "plane", 1)
+    try:
+        rf.unfold(plate)
+        require("a body of %d faces refused" % len(plate.Faces), False)
+    except ValueError as e:
+        require("a body of %d faces: ValueError (%s)" % (len(plate.Faces), e),
+                "not unfolded yet" in str(e))
+    try:
+        rf.unfold(Part.makeSphere(5).Faces[0])
+        require("a sphere's face refused", False)
+    except rmfsurf.InvalidInputError as e:
+        require("a sphere's face: InvalidInputError (%s)" % e, "not developable" in str(e))
+
+    doc = FreeCAD.newDocument("faces")
+    cyl = doc.addObject("Part::Cylinder", "Cyl")
+    cyl.Radius, cyl.Height, cyl.Angle = 4, 10, 300
+    box = doc.addObject("Part::Box", "Box")
+    box.Length, box.Width, box.Height = 30, 20, 5
+    doc.recompute()
+    for obj in (cyl, box):
+        for i, face in enumerate(obj.Shape.Faces):
+            name = "Face%d" % (i + 1)
+            kind = {"Cylinder": "circular_cylinder", "Plane": "plane"}[type(face.Surface).__name__]
+            unfold = wb.make_unfold(doc, (obj, [name]))
+            ok = unfold.isValid()
+            say("  RmfUnfold of %s.%s: %s, SurfaceKind %r, FlatArea %.12g, face.Area %.12g, "
+                "PieceCount %d, BendLineCount %d, Curvature %.1e"
+                % (obj.Name, name, "valid" if ok else "INVALID " + unfold.getStatusString(),
+                   unfold.SurfaceKind, unfold.FlatArea.Value, face.Area, unfold.PieceCount,
+                   unfold.BendLineCount, unfold.Curvature))
+            require("RmfUnfold of %s.%s: valid, SurfaceKind %s, one piece, no bend line"
+                    % (obj.Name, name, kind),
+                    ok and unfold.SurfaceKind == kind and unfold.PieceCount == 1
+                    and unfold.BendLineCount == 0 and unfold.Curvature < 1e-9)
+            check("RmfUnfold of %s.%s: FlatArea against face.Area" % (obj.Name, name),
+                  rel(unfold.FlatArea.Value, face.Area), 1e-9)
+    # A general cylinder: a B-spline wave extruded, unrolled through its cone spline.
+    wave = Part.BSplineCurve()
+    wave.interpolate([V(0, 0, 0), V(10, 6, 0), V(20, -6, 0), V(30, 6, 0), V(40, 0, 0)])
+    sheet = doc.addObject("Part::Feature", "Wave")
+    sheet.Shape = wave.toShape().extrude(V(0, 0, 15))
+    doc.recompute()
+    unfold = wb.make_unfold(doc, sheet)
+    unfold.Tolerance = 1e-5
+    doc.recompute()
+    length = wave.length()
+    say("  RmfUnfold of an extruded B-spline: SurfaceKind %r, FlatArea %.12g, length × "
+        "height %.12g, PieceCount %d, BendLineCount %d, FitError %.2e"
+        % (unfold.SurfaceKind, unfold.FlatArea.Value, 15 * length, unfold.PieceCount,
+           unfold.BendLineCount, unfold.FitError))
+    require("RmfUnfold of an extruded B-spline: valid, general_cylinder, bend lines, "
+            "PieceCount = BendLineCount + 1, 0 < FitError <= Tolerance",
+            unfold.isValid() and unfold.SurfaceKind == "general_cylinder"
+            and unfold.BendLineCount > 0 and unfold.PieceCount == unfold.BendLineCount + 1
+            and 0 < unfold.FitError <= 1e-5)
+    check("its FlatArea against the B-spline's length × height", rel(unfold.FlatArea.Value,
+                                                                     15 * length), 1e-5)
+    path = os.path.join(WORK, "wave.dxf")
+    counts = wb.export_dxf(unfold, path)
+    layers = {}
+    for e in read_dxf(path):
+        layers.setdefault(e.get("8"), []).append(e)
+    require("its DXF (the library's): CUT %d, BEND %d entities (feature: %s)"
+            % (len(layers.get("CUT", [])), len(layers.get("BEND", [])), counts),
+            (len(layers.get("CUT", [])), len(layers.get("BEND", []))) == counts
+            and counts[1] == unfold.BendLineCount)
+    FreeCAD.closeDocument(doc.Name)
+
+
 def main():
     import rmfsurf
     say("rmfsurf %s in FreeCAD %s, Python %s"
@@ -1065,6 +1205,7 @@ def main():
     transition, _ = part_d(doc)
     part_e(doc, sweeps + unfolds + transition, drivers)
     part_f(rmfsurf.shapes._has_wire_sweep())
+    part_g()
     if failures:
         say("WORKBENCH CHECKS FAILED: %s" % "; ".join(failures))
         sys.exit(1)
