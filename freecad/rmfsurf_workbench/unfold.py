@@ -13,7 +13,12 @@ Sources:
   rulings (general cylinders and cones, tangent developables) through its cone spline
   within Tolerance (Leopoldseder & Pottmann), developed exactly, with bend lines where the
   cone pieces meet. SurfaceKind and Curvature say what the face is; a doubly curved face
-  is refused with the stretch an unrolling would need.
+  is refused with the stretch an unrolling would need;
+* a sheet-metal body (an object whose shape is one solid of constant thickness: planes and
+  bends of any developable kind), unfolded whole by the library
+  (:func:`rmfsurf.freecad.unfold`, rmf_unfold_body): its thickness found, one side
+  developed on the neutral layer at KFactor · Thickness from each bend's inner face, its
+  faces joined along their bends, holes and cutouts kept, the bend lines up and down.
 
 The outline's arcs are exact circular arcs (``Part.Circle``), so the DXF has ARC and LINE
 entities only. The pattern lies in the plane z = 0; the feature's Placement moves it in the
@@ -34,8 +39,12 @@ class UnfoldFeature(Feature):
     TYPE = "RmfUnfold"
     PROPERTIES = (
         Property("App::PropertyLinkSub", "Source", "Unfold",
-                 "An RmfTransition, or a developable face (an object with one face, or a "
+                 "An RmfTransition, a sheet-metal body (an object whose shape is a solid of "
+                 "constant thickness), or a developable face (an object with one face, or a "
                  "face of an object)"),
+        Property("App::PropertyFloat", "KFactor", "Unfold",
+                 "Sheet bodies: the neutral layer lies at KFactor × thickness from the inner "
+                 "face of each bend (0 … 1)", default=0.5),
         Property("App::PropertyFloat", "Tolerance", "Unfold",
                  "Developable faces: the largest distance of the cone spline from the face "
                  "(mm); an RmfTransition has its own", default=1e-4),
@@ -54,6 +63,8 @@ class UnfoldFeature(Feature):
                  "What the source is: plane, circular_cylinder, right_cone, "
                  "general_cylinder, general_cone, tangent_developable, ruled_developable "
                  "(a face), or transition", output=True),
+        Property("App::PropertyLength", "Thickness", "Pattern",
+                 "Sheet bodies: the thickness measured between the skins", output=True),
         Property("App::PropertyFloat", "Curvature", "Pattern",
                  "Developable faces: the largest |K|·size² sampled over the face (K the "
                  "Gaussian curvature, size its diagonal): round-off for a developable",
@@ -70,7 +81,8 @@ class UnfoldFeature(Feature):
         obj.Shape = shape
         self.set_outputs(obj, FlatArea=made.area, PieceCount=made.pieces,
                          BendLineCount=len(made.bends), FitError=made.error,
-                         SurfaceKind=made.kind, Curvature=made.curvature)
+                         SurfaceKind=made.kind, Curvature=made.curvature,
+                         Thickness=made.thickness)
 
 
 class Pattern:
@@ -78,9 +90,10 @@ class Pattern:
     flat area, the piece count, the fit error, the source's kind and curvature, and the DXF
     text for the cutter."""
 
-    def __init__(self, face, bends, area, pieces, error, kind, curvature, dxf):
+    def __init__(self, face, bends, area, pieces, error, kind, curvature, dxf, thickness=0.0):
         self.face, self.bends, self.area, self.pieces = face, bends, area, pieces
         self.error, self.kind, self.curvature, self.dxf = error, kind, curvature, dxf
+        self.thickness = thickness
 
 
 def _transition_source(obj):
@@ -103,11 +116,24 @@ def pattern(obj):
                        part.report().deviation, "transition", 0.0,
                        lambda: part.export("dxf"))
     source = obj.Source[0]
-    faces = [f for s in inputs.shapes(obj.Source, "Source") for f in s.Faces]
+    shapes = inputs.shapes(obj.Source, "Source")
+    if len(shapes) == 1 and shapes[0].Solids:
+        return body_pattern(shapes[0], obj.KFactor, obj.Tolerance)
+    faces = [f for s in shapes for f in s.Faces]
     if len(faces) != 1:
-        raise ValueError("Source: expected an RmfTransition or one developable face, got %s "
-                         "with %d faces" % (source.Label, len(faces)))
+        raise ValueError("Source: expected an RmfTransition, a sheet body or one developable "
+                         "face, got %s with %d faces" % (source.Label, len(faces)))
     return face_pattern(faces[0], obj.Tolerance)
+
+
+def body_pattern(shape, k_factor, tolerance):
+    """The :class:`Pattern` of a sheet-metal body (:func:`rmfsurf.freecad.unfold` of its
+    solid): one side on the neutral layer at `k_factor`, its faces joined along their bends,
+    the bend lines up and down."""
+    import rmfsurf.freecad as rf
+    flat = rf.unfold(shape, k_factor=k_factor, tolerance=tolerance)
+    return Pattern(flat.face, flat.bend_lines, flat.area, len(flat.bends) + 1, 0.0,
+                   "sheet_body", 0.0, flat.unfolded.dxf, flat.thickness)
 
 
 def face_pattern(face, tolerance):
@@ -135,10 +161,11 @@ def make_unfold(doc, feature):
 def export_dxf(unfold, path):
     """Writes `unfold`'s flat pattern, in its own plane (without the feature's Placement), to
     the DXF file `path`: the outline and the holes on layer CUT, the bend lines on layer
-    BEND, LINE and ARC entities only, the library's own DXF (from the arcs' exact centres
-    and radii): an RmfTransition's of the part (the command-line tool's), a face's of its
-    unrolled face (rmf_unfolded_face_dxf). Returns the numbers of outline (and hole) and
-    bend entities."""
+    BEND (a sheet body's on BEND_UP and BEND_DOWN), LINE and ARC entities only, the
+    library's own DXF (from the arcs' exact centres and radii): an RmfTransition's of the
+    part (the command-line tool's), a face's of its unrolled face (rmf_unfolded_face_dxf),
+    a body's of its pattern (rmf_unfolded_body_dxf). Returns the numbers of outline (and
+    hole) and bend entities."""
     if not is_feature(unfold, "RmfUnfold"):
         raise TypeError("unfold: expected an RmfUnfold, got %s" % getattr(unfold, "Label", unfold))
     if not unfold.isValid() or unfold.Shape.isNull() or not unfold.Shape.Faces:

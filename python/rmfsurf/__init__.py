@@ -14,8 +14,9 @@ The four methods of the library:
   transition piece, with thickness and K-factor), :class:`SheetPart` (layers, solid, flat
   pattern for the cutter, marks between flat and formed);
 * unfolding the caller's own faces (:mod:`rmfsurf.unfold`): :meth:`Brep.create` from plain
-  B-rep data, :func:`developability` (how developable a face is) and :func:`unfold_face`
-  (its exact flat pattern with holes, bend lines, DXF and marks)
+  B-rep data, :func:`developability` (how developable a face is), :func:`unfold_face` (its
+  exact flat pattern with holes, bend lines, DXF and marks) and :func:`unfold_body` (a whole
+  sheet-metal body on its neutral layer, bends up and down)
 
 and what is made of them: :func:`sweep_surface` (a profile along a spine with exact rational
 frames) and :func:`wire_sweep` (a profile along a wire of lines, arcs and curves, closed into a
@@ -44,8 +45,8 @@ from .frames import (SPINE_METHODS, Frames, double_reflection_frames, framed_spi
                      ph_rational_rmf, ph_rmf_angle_error)
 from .shapes import Arc, CurveEdge, Line, Shape, ShapeFace, SweepReport, wire_sweep
 from .sheets import FlatEdge, SheetPart, SheetReport, part_between_rails, tangent_part, transition
-from .unfold import (Brep, BrepEdge, BrepFace, Developability, UnfoldedFace, developability,
-                     line_curve, unfold_face)
+from .unfold import (Bend, Brep, BrepEdge, BrepFace, Developability, UnfoldedBody, UnfoldedFace,
+                     developability, line_curve, unfold_body, unfold_face)
 from .surfaces import (BezierPatch, NurbsSurface, SingularityMargin, Surface,
                        convex_initial_normal, gaussian_curvature, parabolic_curves,
                        parabolic_points, singularity_margin, sweep_surface)

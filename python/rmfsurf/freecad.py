@@ -26,6 +26,7 @@ cylinders and cones exactly, any developable through its cone spline)::
 
 from __future__ import annotations
 
+import numbers
 import os
 from typing import Any, List, Optional, Sequence, Tuple, Union
 
@@ -44,8 +45,8 @@ from .shapes import (Arc, CurveEdge, Edge, Line, Shape, SweepFrame, SweepReport,
 from .sheets import FlatEdge, SheetPart
 from .sheets import transition as _transition
 from .surfaces import NurbsSurface, Surface, sweep_surface
-from .unfold import (Brep, BrepEdge, BrepFace, Developability, UnfoldedFace, line_curve,
-                     unfold_face)
+from .unfold import (Bend, Brep, BrepEdge, BrepFace, Developability, UnfoldedBody, UnfoldedFace,
+                     line_curve, unfold_body, unfold_face)
 from .unfold import developability as _developability
 
 RmfError = _core.RmfError
@@ -702,6 +703,53 @@ def _index_of(shapes: List[Any], shape: Any) -> int:
     return len(shapes) - 1
 
 
+class _Indexed:
+    """Vertices and edges of faces indexed once each (isSame: the same topology whatever
+    the orientation — a seam, an edge between two faces), with the edges' NURBS curves."""
+
+    def __init__(self) -> None:
+        self.vertices: List[Any] = []
+        self.edges: List[Any] = []
+        self.curves: List[BrepEdge] = []
+
+    def edge(self, e: Any) -> int:
+        known = len(self.edges)
+        index = _index_of(self.edges, e)
+        if index == known:  # a new edge: its curve along its own direction
+            start = _index_of(self.vertices, e.firstVertex(False))
+            end = _index_of(self.vertices, e.lastVertex(False))
+            if e.Degenerated:
+                p = np.array(tuple(self.vertices[start].Point))
+                self.curves.append(BrepEdge(line_curve(p, p), start, end, degenerate=True))
+            else:
+                bspline = _edge_bspline(e)
+                if e.Orientation == "Reversed":
+                    bspline.reverse()
+                self.curves.append(BrepEdge(_part_curve_data(bspline), start, end))
+        return index
+
+    def points(self) -> np.ndarray:
+        return np.array([tuple(v.Point) for v in self.vertices], dtype=float).reshape(-1, 3)
+
+    def loops(self, face: Any, converted: Any) -> List[List[Tuple[int, bool]]]:
+        """The face's wires in order (``OrderedEdges``) as loops of edge uses with their
+        orientation, the outer wire first: the one bounding the largest region of the face's
+        parameter plane (Face.OuterWire takes a hole for it on some faces across a seam)."""
+        loops: List[List[Tuple[int, bool]]] = []
+        areas: List[float] = []
+        for wire in face.Wires:
+            uses, uv = [], []
+            for e in wire.OrderedEdges:
+                uv.append(_pcurve_points(e, converted))
+                uses.append((self.edge(e), e.Orientation != "Reversed"))
+            loops.append(uses)
+            areas.append(abs(_signed_area(uv)))
+        if not loops:
+            raise ValueError("shape: a face has no wires")
+        loops.insert(0, loops.pop(int(np.argmax(areas))))
+        return loops
+
+
 def face_brep(shape: Any) -> Brep:
     """The library's B-rep of one FreeCAD face (:func:`unfold`'s input): its surface (a
     plane as a plane, any other as its NURBS form, ``Face.toNurbs``), its edges once each
@@ -718,39 +766,32 @@ def face_brep(shape: Any) -> Brep:
     else:
         converted = face.toNurbs().Faces[0]
         surface = dict(surface=_surface_nurbs(converted.Surface))
-    vertices: List[Any] = []
-    edges: List[Any] = []
-    curves: List[BrepEdge] = []
-    loops: List[List[Tuple[int, bool]]] = []
-    areas: List[float] = []
-    for wire in converted.Wires:
-        uses, uv = [], []
-        for e in wire.OrderedEdges:
-            uv.append(_pcurve_points(e, converted))
-            known = len(edges)
-            index = _index_of(edges, e)
-            if index == known:  # a new edge: its curve along its own direction
-                start = _index_of(vertices, e.firstVertex(False))
-                end = _index_of(vertices, e.lastVertex(False))
-                if e.Degenerated:
-                    p = np.array(tuple(vertices[start].Point))
-                    curves.append(BrepEdge(line_curve(p, p), start, end, degenerate=True))
-                else:
-                    bspline = _edge_bspline(e)
-                    if e.Orientation == "Reversed":
-                        bspline.reverse()
-                    curves.append(BrepEdge(_part_curve_data(bspline), start, end))
-            uses.append((index, e.Orientation != "Reversed"))
-        loops.append(uses)
-        areas.append(abs(_signed_area(uv)))
-    if not loops:
-        raise ValueError("shape: the face has no wires")
-    # The outer wire bounds the largest region of the face's parameter plane, the holes
-    # inside it (Face.OuterWire takes a hole for it on some faces across a seam).
-    loops.insert(0, loops.pop(int(np.argmax(areas))))
-    points = np.array([tuple(v.Point) for v in vertices], dtype=float).reshape(-1, 3)
-    return Brep.create(points, curves, [BrepFace(loops, same_sense=converted.Orientation
-                                                 != "Reversed", **surface)])
+    indexed = _Indexed()
+    loops = indexed.loops(converted, converted)
+    return Brep.create(indexed.points(), indexed.curves,
+                       [BrepFace(loops, same_sense=converted.Orientation != "Reversed",
+                                 **surface)])
+
+
+def body_brep(shape: Any) -> Brep:
+    """The library's B-rep of a whole FreeCAD solid (:func:`unfold`'s input for a sheet
+    body): its faces sharing their edges (indexed once each with ``isSame``), every face
+    with its NURBS surface (``Face.toNurbs``) and its loops as in :func:`face_brep`."""
+    solid = _shape_of(shape, "shape")
+    solids = solid.Solids
+    if len(solids) != 1:
+        raise ValueError("shape: the %s holds %d solids; a sheet body is one solid"
+                         % (solid.ShapeType, len(solids)))
+    indexed = _Indexed()
+    faces = []
+    for face in solids[0].Faces:
+        converted = face.toNurbs().Faces[0]
+        # The loops are walked on the face itself (its edges are the ones its neighbours
+        # share), their parameters read on its NURBS form.
+        faces.append(BrepFace(indexed.loops(face, converted),
+                              surface=_surface_nurbs(converted.Surface),
+                              same_sense=face.Orientation != "Reversed"))
+    return Brep.create(indexed.points(), indexed.curves, faces, solid=True)
 
 
 def _pcurve_points(edge: Any, face: Any, samples: int = 16) -> np.ndarray:
@@ -806,11 +847,12 @@ def _flat_part_edge(e: FlatEdge) -> Any:
     return arc if e.sweep > 0 else arc.reversed()
 
 
-def flat_face(unfolded: UnfoldedFace) -> Any:
-    """An unrolled face's flat pattern as a Part.Face in the XY plane (normal +z): the
-    outline as its outer wire, the holes as inner wires, exact Part.LineSegment lines and
-    Part.Circle arcs."""
-    u = _core.instance(unfolded, "unfolded", UnfoldedFace, "an rmfsurf.UnfoldedFace")
+def flat_face(unfolded: Union[UnfoldedFace, UnfoldedBody]) -> Any:
+    """An unrolled face's or body's flat pattern as a Part.Face in the XY plane (normal
+    +z): the outline as its outer wire, the holes as inner wires, exact Part.LineSegment
+    lines and Part.Circle arcs."""
+    u = _core.instance(unfolded, "unfolded", (UnfoldedFace, UnfoldedBody),
+                       "an rmfsurf.UnfoldedFace or UnfoldedBody")
     face = Part.Face(Part.Wire([_flat_part_edge(e) for e in u.outline]))
     if u.holes:
         face = face.cutHoles([Part.Wire([_flat_part_edge(e) for e in hole])
@@ -819,7 +861,7 @@ def flat_face(unfolded: UnfoldedFace) -> Any:
 
 
 class FlatPattern:
-    """The flat pattern of one face (:func:`unfold`).
+    """The flat pattern of one face or of a whole sheet body (:func:`unfold`).
 
     Attributes:
         face: the pattern as a Part.Face in the XY plane (normal +z, seen from the formed
@@ -827,62 +869,95 @@ class FlatPattern:
             exact lines and circular arcs.
         bend_lines: the bend lines as Part edges in the XY plane; none for planes, circular
             cylinders and right cones.
-        report: the face's :class:`rmfsurf.Developability` (kind, curvature, stretch,
-            fit_error).
+        report: a face's :class:`rmfsurf.Developability` (kind, curvature, stretch,
+            fit_error); None for a body.
+        thickness: a body's thickness, measured between its skins; None for a face.
+        bends: a body's :class:`rmfsurf.Bend` s (line, up or down, face, inner radius,
+            K-factor); empty for a face.
         area: the flat area (the library's, exact for lines and arcs).
-        unfolded: the library's :class:`rmfsurf.UnfoldedFace`: its flat edges, DXF text and
-            marks between flat and formed (``to_flat``, ``to_formed``).
+        unfolded: the library's :class:`rmfsurf.UnfoldedFace` or
+            :class:`rmfsurf.UnfoldedBody`: its flat edges, DXF text and marks between flat
+            and formed (``to_flat``, ``to_formed``).
         k_factor: the K-factor asked for (see :func:`unfold`).
     """
 
-    __slots__ = ("face", "bend_lines", "report", "area", "unfolded", "k_factor")
+    __slots__ = ("face", "bend_lines", "report", "area", "unfolded", "k_factor", "thickness",
+                 "bends")
 
-    def __init__(self, face: Any, bend_lines: List[Any], unfolded: UnfoldedFace,
-                 k_factor: float) -> None:
+    def __init__(self, face: Any, bend_lines: List[Any],
+                 unfolded: Union[UnfoldedFace, UnfoldedBody], k_factor: Any) -> None:
         self.face, self.bend_lines, self.unfolded = face, bend_lines, unfolded
-        self.report: Developability = unfolded.report
+        body = isinstance(unfolded, UnfoldedBody)
+        self.report: Optional[Developability] = None if body else unfolded.report
+        self.thickness: Optional[float] = unfolded.thickness if body else None
+        self.bends: List[Bend] = list(unfolded.bends) if body else []
         self.area: float = unfolded.area
         self.k_factor = k_factor
 
     def write_dxf(self, path: Union[str, bytes, "os.PathLike[Any]"]) -> None:
         """Writes the library's DXF R12 of the pattern to `path` (LINE and ARC entities, the
-        outline and holes on layer CUT, the bend lines on layer BEND; str, bytes or
-        os.PathLike; FileError when the file cannot be written)."""
+        outline and holes on layer CUT, a face's bend lines on layer BEND, a body's on
+        BEND_UP and BEND_DOWN; str, bytes or os.PathLike; FileError when the file cannot be
+        written)."""
         self.unfolded.write_dxf(path)
 
 
-def unfold(shape: Any, *, k_factor: float = 0.5, tolerance: float = 1e-4,
+def _is_solid(shape: Any) -> bool:
+    try:
+        return bool(_shape_of(shape, "shape").Solids)
+    except (TypeError, ValueError):
+        return False
+
+
+def unfold(shape: Any, *, k_factor: Any = 0.5, tolerance: float = 1e-4,
            flat_tolerance: float = 0.0) -> FlatPattern:
-    """The exact flat pattern of a developable FreeCAD face (rmf_unfold_face), its holes
-    kept: planes, circular cylinders and right cones (told from the geometry, B-spline
+    """The exact flat pattern of a developable FreeCAD face (rmf_unfold_face) or of a whole
+    sheet-metal body (rmf_unfold_body), holes and cutouts kept.
+
+    A face: planes, circular cylinders and right cones (told from the geometry, B-spline
     forms included) exactly; every other developable of degree 1 along its rulings through
     its cone spline within `tolerance`, with bend lines where its pieces meet. A doubly
     curved face is refused (InvalidInputError saying it is not developable).
 
+    A solid: a sheet body of constant thickness made of planes and bends of any developable
+    kind. Its skins and thickness are found, one side is developed on the neutral layer at
+    `k_factor` and its faces joined along their bends: the outline, the holes and cutouts,
+    the bend lines up and down. InvalidInputError naming the face or the point for a face
+    that is not developable, a thickness that is not constant, or a pattern that would
+    overlap itself.
+
     Args:
-        shape: a Part.Face, a shape holding exactly one face, or a document object whose
-            shape is one (whole sheet bodies of several faces are not unfolded yet:
-            ValueError).
-        k_factor: the sheet's K-factor, in [0, 1] (ValueError outside). The face given IS
-            the layer that is unrolled, so the K-factor does not change one face's pattern;
-            it is checked and kept for the bends between faces that bodies will add.
+        shape: a Part.Face, a shape holding exactly one face, a solid (a sheet body), or a
+            document object whose shape is one of these.
+        k_factor: the sheet's K-factor in [0, 1] (ValueError outside), or for a body a table
+            of (inner bend radius / thickness, k) rows. One face IS the layer that is
+            unrolled, so the K-factor does not change a face's pattern.
         tolerance: the largest distance of the cone spline from a face that is neither a
-            plane, a circular cylinder nor a right cone (mm, the document's units).
+            plane, a circular cylinder nor a right cone (mm, the document's units); for a
+            body also the largest variation of its thickness.
         flat_tolerance: the largest distance of the outline's biarcs from the developed
             boundary where an edge does not develop into a line or an arc (0: the
             tolerance).
 
     Returns:
         A :class:`FlatPattern`: ``.face`` (a Part.Face in the XY plane with its holes as
-        inner wires), ``.bend_lines``, ``.write_dxf(path)``, ``.report``, ``.area``.
+        inner wires), ``.bend_lines``, ``.write_dxf(path)``, ``.area``; ``.report`` for a
+        face, ``.thickness`` and ``.bends`` for a body.
     """
-    k = _core.finite(k_factor, "k_factor")
-    if not 0.0 <= k <= 1.0:
-        raise _core._refused("k_factor", "%r is outside [0, 1]" % k)
     tolerance = _core.number(tolerance, "tolerance")
     flat_tolerance = _core.number(flat_tolerance, "flat_tolerance")
-    unfolded = unfold_face(face_brep(shape), 0, tolerance=tolerance,
-                           flat_tolerance=flat_tolerance)
+    unfolded: Union[UnfoldedFace, UnfoldedBody]
+    k: Any = k_factor
+    if not _is_solid(shape) or isinstance(k_factor, numbers.Real):
+        k = _core.finite(k_factor, "k_factor")
+        if not 0.0 <= k <= 1.0:
+            raise _core._refused("k_factor", "%r is outside [0, 1]" % k)
+    if _is_solid(shape):
+        unfolded = unfold_body(body_brep(shape), k_factor=k, tolerance=tolerance,
+                               flat_tolerance=flat_tolerance)
+    else:
+        unfolded = unfold_face(face_brep(shape), 0, tolerance=tolerance,
+                               flat_tolerance=flat_tolerance)
     return FlatPattern(flat_face(unfolded), [_flat_part_edge(e) for e in unfolded.bend_lines],
                        unfolded, k)
 

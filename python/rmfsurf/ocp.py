@@ -38,6 +38,7 @@ along its rulings, with its holes — into its exact flat pattern::
 from __future__ import annotations
 
 import io
+import numbers
 import os
 from typing import Any, List, Optional, Sequence, Tuple, Union
 
@@ -49,8 +50,8 @@ from .sheets import FlatEdge, SheetPart
 from .shapes import (Arc, CurveEdge, Edge, Line, Shape, SweepFrame, _frame_guide,
                      _drawn_sections, _frame_start_normal, _named, wire_sweep)
 from .surfaces import NurbsSurface, Surface
-from .unfold import (Brep, BrepEdge, BrepFace, Developability, UnfoldedFace, line_curve,
-                     unfold_face)
+from .unfold import (Bend, Brep, BrepEdge, BrepFace, Developability, UnfoldedBody, UnfoldedFace,
+                     line_curve, unfold_body, unfold_face)
 from .unfold import developability as _developability
 
 from OCP.BRep import BRep_Builder, BRep_Tool
@@ -665,26 +666,9 @@ def _surface_nurbs(surface: Geom_BSplineSurface) -> NurbsSurface:
     return NurbsSurface(s.UDegree(), s.VDegree(), poles, weights, knots_u, knots_v)
 
 
-def face_brep(shape: Any) -> Brep:
-    """The library's B-rep of one face (:func:`unfold`'s input; `shape` as there): its
-    surface (a plane as a plane, any other as its NURBS form by
-    BRepBuilderAPI_NurbsConvert), its edges once each (TopTools_IndexedMapOfShape: a seam is
-    one edge used twice) with their exact NURBS curves, its wires in order as loops of edge
-    uses with their orientation (BRepTools_WireExplorer on the face), the outer wire
-    (BRepTools.OuterWire) first."""
-    face = _one_face(shape)
-    adaptor = BRepAdaptor_Surface(face)
-    converted = _as_face(BRepBuilderAPI_NurbsConvert(face, True).Shape())
-    if adaptor.GetType() == GeomAbs_Plane:
-        position = adaptor.Plane().Position()
-        x = np.array(position.XDirection().Coord())
-        normal = _core.cross(x, np.array(position.YDirection().Coord()))  # the parameters'
-        surface: dict = dict(plane=(np.array(position.Location().Coord()), normal, x))
-    else:
-        bspline = BRep_Tool.Surface_s(converted)
-        if not isinstance(bspline, Geom_BSplineSurface):
-            bspline = Geom_BSplineSurface.DownCast(bspline)
-        surface = dict(surface=_surface_nurbs(bspline))
+def _edges_and_vertices(converted: Any) -> Tuple[Any, np.ndarray, List[BrepEdge]]:
+    """The edges of a (NURBS-converted) shape once each — a seam or an edge between two
+    faces is one edge — with their exact NURBS curves, its vertices, and the edge map."""
     edge_map, vertex_map = TopTools_IndexedMapOfShape(), TopTools_IndexedMapOfShape()
     TopExp.MapShapes_s(converted, TopAbs_EDGE, edge_map)
     TopExp.MapShapes_s(converted, TopAbs_VERTEX, vertex_map)
@@ -700,31 +684,89 @@ def face_brep(shape: Any) -> Brep:
             edges.append(BrepEdge(line_curve(p, p), start, end, degenerate=True))
         else:
             edges.append(BrepEdge(_bspline_data(_edge_bspline(e)), start, end))
+    return edge_map, np.array(vertices).reshape(-1, 3), edges
+
+
+def _face_loops(face: Any, edge_map: Any) -> List[List[Tuple[int, bool]]]:
+    """A face's wires in order as loops of edge uses with their orientation
+    (BRepTools_WireExplorer on the face), the outer wire first: the one bounding the
+    largest region of the face's parameter plane (BRepTools.OuterWire and
+    ShapeAnalysis.OuterWire, by boxes and by a classifier, each take a hole for it on some
+    faces across a seam)."""
     loops: List[List[Tuple[int, bool]]] = []
     areas: List[float] = []
-    explorer = TopExp_Explorer(converted, TopAbs_WIRE)
+    explorer = TopExp_Explorer(face, TopAbs_WIRE)
     while explorer.More():
         wire = _as_wire(explorer.Current())
         uses, uv = [], []
-        walk = BRepTools_WireExplorer(wire, converted)
+        walk = BRepTools_WireExplorer(wire, face)
         while walk.More():
             e = walk.Current()
             uses.append((edge_map.FindIndex(e) - 1, e.Orientation() != TopAbs_REVERSED))
-            uv.append(_pcurve_points(e, converted))
+            uv.append(_pcurve_points(e, face))
             walk.Next()
         loops.append(uses)
         areas.append(abs(_signed_area(uv)))
         explorer.Next()
     if not loops:
-        raise ValueError("shape: the face has no wires")
-    # The outer wire bounds the largest region of the face's parameter plane, the holes
-    # inside it (BRepTools.OuterWire and ShapeAnalysis.OuterWire, by boxes and by a
-    # classifier, each take a hole for it on some faces across a seam).
-    outer = int(np.argmax(areas))
-    loops.insert(0, loops.pop(outer))
+        raise ValueError("shape: a face has no wires")
+    loops.insert(0, loops.pop(int(np.argmax(areas))))
+    return loops
+
+
+def _nurbs_surface_of(face: Any) -> NurbsSurface:
+    bspline = BRep_Tool.Surface_s(face)
+    if not isinstance(bspline, Geom_BSplineSurface):
+        bspline = Geom_BSplineSurface.DownCast(bspline)
+    return _surface_nurbs(bspline)
+
+
+def face_brep(shape: Any) -> Brep:
+    """The library's B-rep of one face (:func:`unfold`'s input; `shape` as there): its
+    surface (a plane as a plane, any other as its NURBS form by
+    BRepBuilderAPI_NurbsConvert), its edges once each (TopTools_IndexedMapOfShape: a seam is
+    one edge used twice) with their exact NURBS curves, its wires in order as loops of edge
+    uses with their orientation (BRepTools_WireExplorer on the face), the outer wire
+    first."""
+    face = _one_face(shape)
+    adaptor = BRepAdaptor_Surface(face)
+    converted = _as_face(BRepBuilderAPI_NurbsConvert(face, True).Shape())
+    if adaptor.GetType() == GeomAbs_Plane:
+        position = adaptor.Plane().Position()
+        x = np.array(position.XDirection().Coord())
+        normal = _core.cross(x, np.array(position.YDirection().Coord()))  # the parameters'
+        surface: dict = dict(plane=(np.array(position.Location().Coord()), normal, x))
+    else:
+        surface = dict(surface=_nurbs_surface_of(converted))
+    edge_map, vertices, edges = _edges_and_vertices(converted)
     same_sense = converted.Orientation() == TopAbs_FORWARD
-    return Brep.create(np.array(vertices).reshape(-1, 3), edges,
-                       [BrepFace(loops, same_sense=same_sense, **surface)])
+    return Brep.create(vertices, edges,
+                       [BrepFace(_face_loops(converted, edge_map), same_sense=same_sense,
+                                 **surface)])
+
+
+def body_brep(shape: Any) -> Brep:
+    """The library's B-rep of a whole solid (:func:`unfold`'s input for a sheet body): the
+    solid converted by BRepBuilderAPI_NurbsConvert as one shape, so that the faces share
+    their edges; every face with its NURBS surface and its loops as in :func:`face_brep`."""
+    raw = _unwrap(shape)
+    if not isinstance(raw, TopoDS_Shape) or raw.IsNull():
+        raise TypeError("shape: expected a solid, got %s" % _describe(shape))
+    solids = TopTools_IndexedMapOfShape()
+    TopExp.MapShapes_s(raw, TopAbs_SOLID, solids)
+    if solids.Extent() != 1:
+        raise ValueError("shape: the %s holds %d solids; a sheet body is one solid"
+                         % (_describe(shape), solids.Extent()))
+    converted = BRepBuilderAPI_NurbsConvert(solids.FindKey(1), True).Shape()
+    edge_map, vertices, edges = _edges_and_vertices(converted)
+    faces = []
+    explorer = TopExp_Explorer(converted, TopAbs_FACE)
+    while explorer.More():
+        face = _as_face(explorer.Current())
+        faces.append(BrepFace(_face_loops(face, edge_map), surface=_nurbs_surface_of(face),
+                              same_sense=face.Orientation() == TopAbs_FORWARD))
+        explorer.Next()
+    return Brep.create(vertices, edges, faces, solid=True)
 
 
 def _pcurve_points(edge: Any, face: Any, samples: int = 16) -> np.ndarray:
@@ -796,7 +838,8 @@ def flat_face(unfolded: UnfoldedFace) -> Any:
     """An unrolled face's flat pattern as a ``TopoDS_Face`` in the plane z = 0 (normal +z):
     its outline as the outer wire, its holes as inner wires, of exact lines and circular
     arcs."""
-    u = _core.instance(unfolded, "unfolded", UnfoldedFace, "an rmfsurf.UnfoldedFace")
+    u = _core.instance(unfolded, "unfolded", (UnfoldedFace, UnfoldedBody),
+                       "an rmfsurf.UnfoldedFace or UnfoldedBody")
     maker = BRepBuilderAPI_MakeFace(gp_Pln(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)),
                                     _flat_wire(u.outline), True)
     for hole in u.holes:  # clockwise: inner wires as they are
@@ -819,7 +862,7 @@ def _wrap_pattern_like(template: Any, raw: Any) -> Any:
 
 
 class FlatPattern:
-    """The flat pattern of one face (:func:`unfold`).
+    """The flat pattern of one face or of a whole sheet body (:func:`unfold`).
 
     Attributes:
         face: the pattern as a face in the XY plane (normal +z, seen from the formed face's
@@ -828,66 +871,103 @@ class FlatPattern:
             a CadQuery Face for CadQuery, else a ``TopoDS_Face``).
         bend_lines: the bend lines as edges in the XY plane (build123d/CadQuery Edges or
             ``TopoDS_Edge``); none for planes, circular cylinders and right cones.
-        report: the face's :class:`rmfsurf.Developability` (kind, curvature, stretch,
-            fit_error).
+        report: a face's :class:`rmfsurf.Developability` (kind, curvature, stretch,
+            fit_error); None for a body.
+        thickness: a body's thickness, measured between its skins; None for a face.
+        bends: a body's :class:`rmfsurf.Bend` s (line, up or down, face, inner radius,
+            K-factor); empty for a face.
         area: the flat area (the library's, exact for lines and arcs).
-        unfolded: the library's :class:`rmfsurf.UnfoldedFace`: its flat edges, DXF text and
-            marks between flat and formed (``to_flat``, ``to_formed``).
+        unfolded: the library's :class:`rmfsurf.UnfoldedFace` or
+            :class:`rmfsurf.UnfoldedBody`: its flat edges, DXF text and marks between flat
+            and formed (``to_flat``, ``to_formed``).
         k_factor: the K-factor asked for (see :func:`unfold`).
     """
 
-    __slots__ = ("face", "bend_lines", "report", "area", "unfolded", "k_factor")
+    __slots__ = ("face", "bend_lines", "report", "area", "unfolded", "k_factor", "thickness",
+                 "bends")
 
-    def __init__(self, face: Any, bend_lines: List[Any], unfolded: UnfoldedFace,
-                 k_factor: float) -> None:
+    def __init__(self, face: Any, bend_lines: List[Any],
+                 unfolded: Union[UnfoldedFace, UnfoldedBody], k_factor: Any) -> None:
         self.face, self.bend_lines, self.unfolded = face, bend_lines, unfolded
-        self.report: Developability = unfolded.report
+        body = isinstance(unfolded, UnfoldedBody)
+        self.report: Optional[Developability] = None if body else unfolded.report
+        self.thickness: Optional[float] = unfolded.thickness if body else None
+        self.bends: List[Bend] = list(unfolded.bends) if body else []
         self.area: float = unfolded.area
         self.k_factor = k_factor
 
     def write_dxf(self, path: Union[str, bytes, "os.PathLike[Any]"]) -> None:
         """Writes the library's DXF R12 of the pattern to `path` (LINE and ARC entities, the
-        outline and holes on layer CUT, the bend lines on layer BEND; str, bytes or
-        os.PathLike; FileError when the file cannot be written)."""
+        outline and holes on layer CUT, a face's bend lines on layer BEND, a body's on
+        BEND_UP and BEND_DOWN; str, bytes or os.PathLike; FileError when the file cannot be
+        written)."""
         self.unfolded.write_dxf(path)
 
 
-def unfold(shape: Any, *, k_factor: float = 0.5, tolerance: float = 1e-4,
-           flat_tolerance: float = 0.0) -> FlatPattern:
-    """The exact flat pattern of a developable face (rmf_unfold_face), its holes kept.
+def _holds_solid(shape: Any) -> bool:
+    raw = _unwrap(shape)
+    if not isinstance(raw, TopoDS_Shape) or raw.IsNull():
+        return False
+    solids = TopTools_IndexedMapOfShape()
+    TopExp.MapShapes_s(raw, TopAbs_SOLID, solids)
+    return solids.Extent() > 0
 
-    Planes, circular cylinders and right cones (a cylinder converted to a B-spline, or read
-    back from STEP, included: the kind is told from the geometry) unroll exactly; every
-    other developable of degree 1 along its rulings (general cylinders and cones — an
+
+def unfold(shape: Any, *, k_factor: Any = 0.5, tolerance: float = 1e-4,
+           flat_tolerance: float = 0.0) -> FlatPattern:
+    """The exact flat pattern of a developable face (rmf_unfold_face) or of a whole
+    sheet-metal body (rmf_unfold_body), holes and cutouts kept.
+
+    A face: planes, circular cylinders and right cones (a cylinder converted to a B-spline,
+    or read back from STEP, included: the kind is told from the geometry) unroll exactly;
+    every other developable of degree 1 along its rulings (general cylinders and cones — an
     extruded spline —, tangent developables, ruled B-spline developables) through its
     cone spline within `tolerance`, with bend lines where its pieces meet. A doubly curved
     face is refused: InvalidInputError saying it is not developable, with its curvature and
     the stretch an unrolling would need.
 
+    A solid: a sheet body of constant thickness made of planes and bends of any
+    developable kind. Its skins and thickness are found, one side is developed on the
+    neutral layer at `k_factor` and its faces joined along their bends: the outline, the
+    holes and cutouts (one across a bend included), the bend lines up and down.
+    InvalidInputError naming the face or the point for a face that is not developable, a
+    thickness that is not constant, or a pattern that would overlap itself.
+
     Args:
-        shape: a build123d/CadQuery Face or TopoDS_Face, or a shape holding exactly one face
-            (whole sheet bodies of several faces are not unfolded yet: ValueError).
-        k_factor: the sheet's K-factor, in [0, 1] (ValueError outside). The face given IS
-            the layer that is unrolled — the sheet's neutral layer, or whichever face of the
-            sheet the caller picks — so the K-factor does not change one face's pattern; it
-            is checked and kept for the bends between faces that bodies will add.
+        shape: a build123d/CadQuery Face or TopoDS_Face, a shape holding exactly one face,
+            or a solid (a sheet body).
+        k_factor: the sheet's K-factor in [0, 1] (ValueError outside), or for a body a
+            table of (inner bend radius / thickness, k) rows. One face IS the layer that is
+            unrolled, so the K-factor does not change a face's pattern.
         tolerance: the largest distance of the cone spline from a face that is neither a
-            plane, a circular cylinder nor a right cone (caller's units).
+            plane, a circular cylinder nor a right cone (caller's units); for a body also
+            the largest variation of its thickness.
         flat_tolerance: the largest distance of the outline's biarcs from the developed
             boundary where an edge does not develop into a line or an arc (0: the
             tolerance).
 
     Returns:
         A :class:`FlatPattern`: ``.face`` in the XY plane (a build123d Face for build123d
-        input), ``.bend_lines``, ``.write_dxf(path)``, ``.report``, ``.area``.
+        input), ``.bend_lines``, ``.write_dxf(path)``, ``.area``; ``.report`` for a face,
+        ``.thickness`` and ``.bends`` for a body.
     """
-    k = _core.finite(k_factor, "k_factor")
-    if not 0.0 <= k <= 1.0:
-        raise _core._refused("k_factor", "%r is outside [0, 1]" % k)
     tolerance = _core.number(tolerance, "tolerance")
     flat_tolerance = _core.number(flat_tolerance, "flat_tolerance")
-    unfolded = unfold_face(face_brep(shape), 0, tolerance=tolerance,
-                           flat_tolerance=flat_tolerance)
+    unfolded: Union[UnfoldedFace, UnfoldedBody]
+    if _holds_solid(shape):
+        k: Any = k_factor
+        if isinstance(k_factor, numbers.Real):
+            k = _core.finite(k_factor, "k_factor")
+            if not 0.0 <= k <= 1.0:
+                raise _core._refused("k_factor", "%r is outside [0, 1]" % k)
+        unfolded = unfold_body(body_brep(shape), k_factor=k, tolerance=tolerance,
+                               flat_tolerance=flat_tolerance)
+    else:
+        k = _core.finite(k_factor, "k_factor")
+        if not 0.0 <= k <= 1.0:
+            raise _core._refused("k_factor", "%r is outside [0, 1]" % k)
+        unfolded = unfold_face(face_brep(shape), 0, tolerance=tolerance,
+                               flat_tolerance=flat_tolerance)
     flat = _wrap_pattern_like(shape, flat_face(unfolded))
     bends = [_wrap_pattern_like(shape, _flat_edge(e)) for e in unfolded.bend_lines]
     return FlatPattern(flat, bends, unfolded, k)

@@ -43,8 +43,9 @@ from .curves import ArrayLike, Curve, NurbsCurve
 from .sheets import FlatEdge
 from .surfaces import NurbsSurface, Surface
 
-__all__ = ["Brep", "BrepEdge", "BrepFace", "Developability", "UnfoldedFace", "developability",
-           "line_curve", "unfold_face", "SURFACE_KINDS"]
+__all__ = ["Bend", "Brep", "BrepEdge", "BrepFace", "Developability", "UnfoldedBody",
+           "UnfoldedFace", "developability", "line_curve", "unfold_body", "unfold_face",
+           "SURFACE_KINDS"]
 
 #: RmfDevelopability.kind by name.
 SURFACE_KINDS: Dict[str, int] = {
@@ -455,3 +456,153 @@ def unfold_face(brep: Brep, face: int = 0, *, tolerance: float = 1e-4,
     out = _core.out_pointer("RmfUnfoldedFace")
     call("rmf_unfold_face", b._ptr, _core.integer(face, "face", "size_t"), options, out)
     return UnfoldedFace(_core.owned("unfolded_face", out[0]))
+
+
+@dataclass(frozen=True)
+class Bend:
+    """A bend of an unfolded sheet body (RmfBend).
+
+    Attributes:
+        line: the bend line in the flat pattern (a :class:`FlatEdge`, layer "bend").
+        up: True where the bend rises towards the viewer of the pattern (the unfolded side
+            is the bend's inner face), False where it goes down.
+        face: the index of the body's face the bend lies on.
+        radius: the smallest inner bend radius of that face.
+        k_factor: the K-factor used for it.
+    """
+
+    line: FlatEdge
+    up: bool
+    face: int
+    radius: float
+    k_factor: float
+
+
+class UnfoldedBody:
+    """A whole sheet-metal body unfolded (rmf_unfold_body): the flat pattern of its neutral
+    layer, seen from the outside of the side unfolded; freed when collected.
+
+    Attributes:
+        outline: the cutting outline, counter-clockwise (:class:`FlatEdge` lines and arcs).
+        holes: the holes and cutouts, each a clockwise list of :class:`FlatEdge`.
+        bends: the :class:`Bend` s: line, up or down, face, inner radius, K-factor.
+        bend_lines: the bends' lines (layer "bend").
+        thickness: the sheet's thickness, measured between its skins.
+        area: the flat area (the outline's less the holes').
+    """
+
+    __slots__ = ("_ptr", "outline", "holes", "bends", "bend_lines", "thickness", "area",
+                 "__weakref__")
+
+    def __init__(self, pointer: Any) -> None:
+        self._ptr = pointer
+        n = ffi.new("size_t *")
+        call("rmf_unfolded_body_loop_count", pointer, n)
+        loops = [self._loop(k) for k in range(n[0])]
+        self.outline, self.holes = loops[0], loops[1:]
+        call("rmf_unfolded_body_bends", pointer, ffi.NULL, 0, n)
+        bends = ffi.new("RmfBend[]", max(1, n[0]))
+        call("rmf_unfolded_body_bends", pointer, bends, max(1, n[0]), n)
+        lines = _flat_edges([b.line for b in bends[0:n[0]]])
+        self.bends = [Bend(line, bool(b.up), int(b.face), float(b.radius), float(b.k_factor))
+                      for line, b in zip(lines, bends[0:n[0]])]
+        self.bend_lines = lines
+        value = ffi.new("double *")
+        call("rmf_unfolded_body_thickness", pointer, value)
+        self.thickness = float(value[0])
+        call("rmf_unfolded_body_area", pointer, value)
+        self.area = float(value[0])
+
+    def _loop(self, index: int) -> List[FlatEdge]:
+        n = ffi.new("size_t *")
+        call("rmf_unfolded_body_loop", self._ptr, index, ffi.NULL, 0, n)
+        edges = ffi.new("RmfFlatEdge[]", max(1, n[0]))
+        call("rmf_unfolded_body_loop", self._ptr, index, edges, max(1, n[0]), n)
+        return _flat_edges(edges[0:n[0]])
+
+    @property
+    def cut_length(self) -> float:
+        """The length of the outline and the holes: what the cutter travels."""
+        return sum(edge_length(e) for loop in [self.outline] + self.holes for e in loop)
+
+    def dxf(self) -> str:
+        """The flat pattern as a DXF R12 file's text (rmf_unfolded_body_dxf): LINE and ARC
+        entities, outline and holes on layer CUT, bend lines on BEND_UP and BEND_DOWN."""
+        n = ffi.new("size_t *")
+        call("rmf_unfolded_body_dxf", self._ptr, ffi.NULL, 0, n)
+        text = ffi.new("char[]", n[0] + 1)
+        call("rmf_unfolded_body_dxf", self._ptr, text, n[0] + 1, n)
+        return ffi.unpack(text, n[0]).decode("ascii")
+
+    def write_dxf(self, path: Union[str, bytes, "os.PathLike[Any]"]) -> None:
+        """Writes :meth:`dxf` to the file `path` (FileError when it cannot be written)."""
+        _write_text(_core.path(path, "path"), self.dxf(), "write_dxf")
+
+    def to_flat(self, points: ArrayLike) -> np.ndarray:
+        """Marks from the formed body to the flat pattern: points (n, 3) — on either skin
+        or inside the sheet — to the flat points (n, 2) of their feet on the unfolded side."""
+        p = _core.points(points, "points")
+        n = p.shape[0]
+        out = np.empty((n, 2))
+        call("rmf_unfolded_body_to_flat", self._ptr, _core.vec3_array(p), n,
+             ffi.cast("RmfVec2 *", ffi.from_buffer(out)) if n else ffi.NULL)
+        return out
+
+    def to_formed(self, points: ArrayLike) -> np.ndarray:
+        """Marks from the flat pattern to the formed body: flat points (n, 2) to their
+        points (n, 3) on the neutral layer."""
+        q = _core.rows(points, "points", 2, "an array of flat points (shape (n, 2))",
+                       finite_only=True)
+        n = q.shape[0]
+        out = np.empty((n, 3))
+        call("rmf_unfolded_body_to_formed", self._ptr,
+             ffi.cast("RmfVec2 *", ffi.from_buffer(q)) if n else ffi.NULL, n,
+             _core.vec3_array(out))
+        return out
+
+
+KFactorLike = Union[float, Sequence[Tuple[float, float]]]
+
+
+def unfold_body(brep: Brep, *, k_factor: KFactorLike = 0.5, tolerance: float = 1e-4,
+                flat_tolerance: float = 0.0, max_pieces: int = 10000) -> UnfoldedBody:
+    """Unfolds a whole sheet-metal body (rmf_unfold_body): a closed solid of constant
+    thickness made of planes and bends of any developable kind. The skins and the
+    thickness are found straight across the faces; the side joined to the largest skin face
+    is developed on the neutral layer — at k·t from each bend's inner face — and its faces
+    are joined along their bends into one flat pattern with its holes and cutouts and the
+    bend lines up and down.
+
+    Args:
+        brep: the body (:meth:`Brep.create` with ``solid=True``; the adapters'
+            ``body_brep``).
+        k_factor: one K-factor in [0, 1], or a table of (inner bend radius / thickness, k)
+            rows, the ratios increasing, interpolated linearly.
+        tolerance: the faces' tolerance and the largest variation of the thickness.
+        flat_tolerance: the largest distance of biarcs from developed edges (0: tolerance).
+        max_pieces: most cone pieces for one face.
+
+    InvalidInputError, naming the face or the point, for an open shell, a face that is not
+    developable, a thickness that is not constant, faces that do not close up flat, or a
+    pattern that would overlap itself.
+    """
+    b = _brep(brep)
+    options = ffi.new("RmfUnfoldBodyOptions *")
+    call("rmf_unfold_body_options_init", options)
+    options.tolerance = _core.number(tolerance, "tolerance")
+    options.flat_tolerance = _core.number(flat_tolerance, "flat_tolerance")
+    options.max_pieces = _core.integer(max_pieces, "max_pieces", "size_t", 2)
+    table = None
+    if isinstance(k_factor, (int, float, np.floating, np.integer)) and not isinstance(k_factor, bool):
+        options.k_factor = _core.number(k_factor, "k_factor")
+    else:
+        rows = _core.rows(k_factor, "k_factor", 2,
+                          "a K-factor or a table of (radius / thickness, k) rows",
+                          finite_only=True)
+        table = ffi.new("RmfVec2[]", max(1, len(rows)))
+        for view, (ratio, k) in zip(table, rows):
+            view.x, view.y = float(ratio), float(k)
+        options.k_table_count, options.k_table = len(rows), table
+    out = _core.out_pointer("RmfUnfoldedBody")
+    call("rmf_unfold_body", b._ptr, options, out)
+    return UnfoldedBody(_core.owned("unfolded_body", out[0]))

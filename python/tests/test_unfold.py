@@ -18,7 +18,10 @@ independent one and printed (pytest -s, `cargo test ... --test python -- --nocap
      length against the pattern's;
   h. marks: formed → flat → formed on points of the face;
   i. the plate scaled by 1e-3 and 1e3: areas scale by s²; every face of solids moved and
-     turned (faces with a location) unfolds to its area.
+     turned (faces with a location) unfolds to its area;
+  j. whole sheet bodies: an L bracket with a hole (its flat area = volume / thickness at
+     k = 0.5, the hole an inner wire, one bend on its DXF layer, k = 0.3 and a table), the
+     same through STEP, a Box as a plate, a wedge refused.
 Plus the core API on plain data, and the adapter's refusals."""
 
 import math
@@ -508,11 +511,13 @@ def test_the_core_api_refuses_bad_data_with_the_librarys_message():
     assert "tolerance" in str(e.value)
 
 
-def test_the_adapter_refuses_bodies_and_bad_k_factors():
+def test_the_adapter_refuses_bad_shapes_and_k_factors():
+    # Two faces that are not a solid: neither one face nor a sheet body.
+    shell = bd.Compound(children=list(bd.Box(1, 2, 3).faces()[:2]))
     with pytest.raises(ValueError) as e:
-        rocp.unfold(bd.Box(1, 2, 3))
+        rocp.unfold(shell)
     print("\nrefusals: %s" % e.value)
-    assert "not unfolded yet" in str(e.value) and "one face" in str(e.value)
+    assert "holds 2 faces" in str(e.value)
     for k in (-0.1, 1.5):
         with pytest.raises(ValueError) as e:
             rocp.unfold(plate(), k_factor=k)
@@ -521,6 +526,87 @@ def test_the_adapter_refuses_bodies_and_bad_k_factors():
         rocp.unfold(3)
     # The K-factor does not change one face's pattern.
     assert rocp.unfold(plate(), k_factor=0.0).area == rocp.unfold(plate(), k_factor=1.0).area
+
+
+def bracket(hole=True):
+    """An L bracket of sheet 1 thick and 4 wide: flanges of 10 joined by a quarter bend of
+    inner radius 2.5, a round hole of radius 0.8 through the first flange."""
+    with bd.BuildSketch() as section:
+        with bd.BuildLine():
+            bd.Polyline((0, -0.5), (10, -0.5))
+            bd.CenterArc((10, 3), 3.5, 270, 90)
+            bd.Polyline((13.5, 3), (13.5, 13), (12.5, 13), (12.5, 3))
+            bd.CenterArc((10, 3), 2.5, 0, -90)
+            bd.Polyline((10, 0.5), (0, 0.5), (0, -0.5))
+        bd.make_face()
+    part = bd.extrude(section.sketch, amount=4)
+    if hole:
+        part = part - bd.Pos(5, 0, 2) * bd.Rot(90, 0, 0) * bd.Cylinder(0.8, 5)
+    return part
+
+
+def occ_volume(shape):
+    props = GProp_GProps()
+    BRepGProp.VolumeProperties_s(shape.wrapped, props)
+    return props.Mass()
+
+
+def test_an_l_bracket_with_a_hole_unfolds_to_its_volume_over_its_thickness(tmp_path):
+    part = bracket()
+    volume = occ_volume(part)
+    pattern = rocp.unfold(part, tolerance=1e-6)
+    print("\nL bracket: thickness %.15g, flat area %.15g, volume / thickness %.15g (%.1e), "
+          "%d bends, %d holes" % (pattern.thickness, pattern.area, volume, rel(pattern.area, volume),
+                                   len(pattern.bends), len(pattern.unfolded.holes)))
+    assert abs(pattern.thickness - 1.0) <= 1e-9
+    assert rel(pattern.area, volume / pattern.thickness) <= 1e-9
+    assert len(pattern.bends) == 1 and len(pattern.unfolded.holes) == 1
+    bend = pattern.bends[0]
+    assert abs(bend.radius - 2.5) <= 1e-9 and bend.k_factor == 0.5
+    assert isinstance(pattern.face, bd.Face) and is_valid(pattern.face)
+    assert len(pattern.face.inner_wires()) == 1
+    assert rel(pattern.face.area, pattern.area) <= 1e-9
+    # At k = 0.3 the neutral layer lies 0.3 from the inner face: the bend's flat length
+    # is π/2 · 2.8 instead of π/2 · 3.
+    at_k = rocp.unfold(part, k_factor=0.3, tolerance=1e-6)
+    expected = 4 * (20 + math.pi / 2 * 2.8) - math.pi * 0.8 ** 2
+    print("L bracket at k = 0.3: flat area %.15g (%.15g, %.1e)" % (at_k.area, expected,
+                                                                   rel(at_k.area, expected)))
+    assert rel(at_k.area, expected) <= 1e-9
+    table = rocp.unfold(part, k_factor=[(1.0, 0.3), (3.0, 0.5)], tolerance=1e-6)
+    assert abs(table.bends[0].k_factor - 0.45) <= 1e-12
+    path = tmp_path / "bracket.dxf"
+    pattern.write_dxf(path)
+    layers = [e["8"] for e in read_dxf(path)]
+    assert layers.count("BEND_UP") + layers.count("BEND_DOWN") == 1
+    cut = sum(entity_length(e) for e in read_dxf(path) if e["8"] == "CUT")
+    assert rel(cut, pattern.unfolded.cut_length) <= 1e-9
+    # Marks: the hole's centre on the flange's outer skin, flat and back on the neutral layer.
+    flat = pattern.unfolded.to_flat([[5.0, -0.5, 2.0]])
+    formed = pattern.unfolded.to_formed(flat)
+    assert np.linalg.norm(formed[0] - [5.0, 0.0, 2.0]) <= 1e-9
+
+
+def test_an_l_bracket_read_back_from_step_unfolds_alike(tmp_path):
+    path = str(tmp_path / "bracket.step")
+    part = bracket()
+    bd.export_step(part, path)
+    again = bd.import_step(path)
+    area = rocp.unfold(again, tolerance=1e-6).area
+    print("\nL bracket through STEP: flat area %.15g (%.1e from before)"
+          % (area, rel(area, rocp.unfold(part, tolerance=1e-6).area)))
+    assert rel(area, rocp.unfold(part, tolerance=1e-6).area) <= 1e-9
+
+
+def test_a_box_is_a_plate_and_a_wedge_is_refused():
+    plate_body = rocp.unfold(bd.Box(20, 30, 1))
+    assert abs(plate_body.thickness - 1.0) <= 1e-12 and rel(plate_body.area, 600.0) <= 1e-12
+    assert not plate_body.bends
+    wedge = bd.extrude(bd.Polygon((0, 0), (10, 0), (10, 1.2), (0, 1.0), align=None), amount=5)
+    with pytest.raises(rmfsurf.InvalidInputError) as e:
+        rocp.unfold(wedge)
+    print("\nwedge: %s" % e.value)
+    assert "thickness is not constant" in str(e.value)
 
 
 def test_an_ocp_face_gives_an_ocp_pattern():

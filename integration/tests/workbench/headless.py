@@ -1121,12 +1121,10 @@ def part_g():
     plate = Part.makeBox(40, 30, 2).cut(Part.makeCylinder(5, 10, V(20, 15, -1)))
     top = [f for f in plate.Faces if abs(f.CenterOfMass.z - 2) < 1e-9][0]
     check_pattern("plate with a round hole", top, rf.unfold(top), "plane", 1)
-    try:
-        rf.unfold(plate)
-        require("a body of %d faces refused" % len(plate.Faces), False)
-    except ValueError as e:
-        require("a body of %d faces: ValueError (%s)" % (len(plate.Faces), e),
-                "not unfolded yet" in str(e))
+    body = rf.unfold(plate)
+    check("the plate as a sheet body: thickness", abs(body.thickness - 2.0), 1e-12)
+    check("the plate as a sheet body: flat area against volume / thickness",
+          rel(body.area, plate.Volume / 2.0), 1e-9)
     try:
         rf.unfold(Part.makeSphere(5).Faces[0])
         require("a sphere's face refused", False)
@@ -1189,6 +1187,71 @@ def part_g():
     FreeCAD.closeDocument(doc.Name)
 
 
+# ---------------------------------------------------------------------------------------
+# H. A whole sheet body: rmfsurf.freecad.unfold and RmfUnfold
+
+
+def l_bracket():
+    """An L bracket of sheet 1 thick and 4 wide — flanges of 10, a quarter bend of inner
+    radius 2.5 — with a round hole of radius 0.8 through its first flange."""
+    def arc(centre, radius, a0, a1):
+        circle = Part.Circle(V(*centre, 0), V(0, 0, 1), radius)
+        return Part.ArcOfCircle(circle, math.radians(a0), math.radians(a1)).toShape()
+    edges = [Part.LineSegment(V(0, -0.5, 0), V(10, -0.5, 0)).toShape(),
+             arc((10, 3), 3.5, 270, 360),
+             Part.LineSegment(V(13.5, 3, 0), V(13.5, 13, 0)).toShape(),
+             Part.LineSegment(V(13.5, 13, 0), V(12.5, 13, 0)).toShape(),
+             Part.LineSegment(V(12.5, 13, 0), V(12.5, 3, 0)).toShape(),
+             arc((10, 3), 2.5, 270, 360),
+             Part.LineSegment(V(10, 0.5, 0), V(0, 0.5, 0)).toShape(),
+             Part.LineSegment(V(0, 0.5, 0), V(0, -0.5, 0)).toShape()]
+    section = Part.Face(Part.Wire(Part.__sortEdges__(edges)))
+    solid = section.extrude(V(0, 0, 4))
+    return solid.cut(Part.makeCylinder(0.8, 5, V(5, 2.5, 2), V(0, -1, 0)))
+
+
+def part_h():
+    say("H. A whole sheet body: rmfsurf.freecad.unfold and RmfUnfold")
+    import rmfsurf_workbench as wb
+    import rmfsurf.freecad as rf
+    bracket = l_bracket()
+    require("the L bracket is a valid solid", bracket.isValid() and len(bracket.Solids) == 1)
+    pattern = rf.unfold(bracket, tolerance=1e-6)
+    say("  L bracket: thickness %.15g, flat area %.15g, volume / thickness %.15g, %d bends, "
+        "%d inner wires" % (pattern.thickness, pattern.area, bracket.Volume / pattern.thickness,
+                            len(pattern.bends), len(pattern.face.Wires) - 1))
+    check("L bracket: thickness", abs(pattern.thickness - 1.0), 1e-9)
+    check("L bracket: flat area against volume / thickness (k = 0.5)",
+          rel(pattern.area, bracket.Volume / pattern.thickness), 1e-9)
+    require("L bracket: one bend of inner radius 2.5, the hole an inner wire of a valid face",
+            len(pattern.bends) == 1 and abs(pattern.bends[0].radius - 2.5) < 1e-9
+            and len(pattern.face.Wires) == 2 and pattern.face.isValid())
+    expected = 4 * (20 + math.pi / 2 * 2.8) - math.pi * 0.8 ** 2
+    check("L bracket at k = 0.3: flat area against 4 (20 + π/2 · 2.8) − π 0.8²",
+          rel(rf.unfold(bracket, k_factor=0.3, tolerance=1e-6).area, expected), 1e-9)
+
+    doc = FreeCAD.newDocument("body")
+    body = doc.addObject("Part::Feature", "Bracket")
+    body.Shape = bracket
+    doc.recompute()
+    unfold = wb.make_unfold(doc, body)
+    unfold.Tolerance, unfold.KFactor = 1e-6, 0.3
+    doc.recompute()
+    say("  RmfUnfold of the bracket: %s, SurfaceKind %r, Thickness %.12g, FlatArea %.12g, "
+        "BendLineCount %d" % ("valid" if unfold.isValid() else "INVALID " + unfold.getStatusString(),
+                              unfold.SurfaceKind, unfold.Thickness.Value, unfold.FlatArea.Value,
+                              unfold.BendLineCount))
+    require("RmfUnfold of the bracket: valid, sheet_body, one bend line",
+            unfold.isValid() and unfold.SurfaceKind == "sheet_body" and unfold.BendLineCount == 1)
+    check("its FlatArea at KFactor 0.3", rel(unfold.FlatArea.Value, expected), 1e-9)
+    path = os.path.join(WORK, "bracket.dxf")
+    wb.export_dxf(unfold, path)
+    layers = [e.get("8") for e in read_dxf(path)]
+    require("its DXF: the bend line on BEND_UP or BEND_DOWN (%s)" % sorted(set(layers)),
+            layers.count("BEND_UP") + layers.count("BEND_DOWN") == 1)
+    FreeCAD.closeDocument(doc.Name)
+
+
 def main():
     import rmfsurf
     say("rmfsurf %s in FreeCAD %s, Python %s"
@@ -1206,6 +1269,7 @@ def main():
     part_e(doc, sweeps + unfolds + transition, drivers)
     part_f(rmfsurf.shapes._has_wire_sweep())
     part_g()
+    part_h()
     if failures:
         say("WORKBENCH CHECKS FAILED: %s" % "; ".join(failures))
         sys.exit(1)
