@@ -129,6 +129,14 @@ class Inputs:
         return rmfsurf.unfold_face(self.brep)
 
     @functools.cached_property
+    def body(self):
+        return self.ocp.body_brep(self.bd.Box(4, 3, 1))
+
+    @functools.cached_property
+    def unfolded_body(self):
+        return rmfsurf.unfold_body(self.body)
+
+    @functools.cached_property
     def plate_face(self):
         return (self.bd.Box(4, 3, 1) - self.bd.Cylinder(0.5, 2)).faces().sort_by(
             self.bd.Axis.Z)[-1]
@@ -167,6 +175,8 @@ INTEGERS = [
     ("unfold_face(face)", 0, MAXIMUM["size_t"], lambda v: rmfsurf.unfold_face(IN.brep, v)),
     ("unfold_face(max_pieces)", 2, MAXIMUM["size_t"],
      lambda v: rmfsurf.unfold_face(IN.brep, max_pieces=v)),
+    ("unfold_body(max_pieces)", 2, MAXIMUM["size_t"],
+     lambda v: rmfsurf.unfold_body(IN.body, max_pieces=v)),
     ("Curve.from_nurbs(degree)", 1, MAXIMUM["uint32_t"],
      lambda v: rmfsurf.Curve.from_nurbs(v, [[0, 0, 0], [1, 0, 0], [1, 1, 0]], [0, 0, 0, 1, 1, 1])),
     ("Surface.from_nurbs(degree_u)", 1, MAXIMUM["uint32_t"],
@@ -280,6 +290,8 @@ for _function, _call in [
 NUMBERS += [
     ("unfold_face(tolerance)", lambda v: rmfsurf.unfold_face(IN.brep, tolerance=v)),
     ("unfold_face(flat_tolerance)", lambda v: rmfsurf.unfold_face(IN.brep, flat_tolerance=v)),
+    ("unfold_body(tolerance)", lambda v: rmfsurf.unfold_body(IN.body, tolerance=v)),
+    ("unfold_body(flat_tolerance)", lambda v: rmfsurf.unfold_body(IN.body, flat_tolerance=v)),
     ("ocp.unfold(k_factor)", lambda v: IN.ocp.unfold(IN.plate_face, k_factor=v)),
     ("ocp.unfold(tolerance)", lambda v: IN.ocp.unfold(IN.plate_face, tolerance=v)),
     ("ocp.unfold(flat_tolerance)", lambda v: IN.ocp.unfold(IN.plate_face, flat_tolerance=v)),
@@ -323,6 +335,8 @@ def test_nan_and_infinity_are_invalid_input_naming_the_argument(case, value):
 #: (key, call, what the written file starts with).
 PATHS = [("Shape.write_step(path)", lambda v: IN.shape.write_step(v), b"ISO-10303-21;"),
          ("UnfoldedFace.write_dxf(path)", lambda v: IN.unfolded.write_dxf(v), b"0\nSECTION\n"),
+         ("UnfoldedBody.write_dxf(path)", lambda v: IN.unfolded_body.write_dxf(v),
+          b"0\nSECTION\n"),
          ("ocp.FlatPattern.write_dxf(path)", lambda v: IN.pattern.write_dxf(v),
           b"0\nSECTION\n")]
 
@@ -912,6 +926,8 @@ ARRAYS = [
     ("Brep.create(vertices)", "points", lambda v: rmfsurf.Brep.create(v, [], [])),
     ("UnfoldedFace.to_flat(points)", "points", lambda v: IN.unfolded.to_flat(v)),
     ("UnfoldedFace.to_formed(points)", "flat points", lambda v: IN.unfolded.to_formed(v)),
+    ("UnfoldedBody.to_flat(points)", "points", lambda v: IN.unfolded_body.to_flat(v)),
+    ("UnfoldedBody.to_formed(points)", "flat points", lambda v: IN.unfolded_body.to_formed(v)),
     ("line_curve(start)", "vector", lambda v: rmfsurf.line_curve(v, (1, 0, 0))),
     ("line_curve(end)", "vector", lambda v: rmfsurf.line_curve((1, 0, 0), v)),
     ("Curve.from_nurbs(poles)", "points", lambda v: rmfsurf.Curve.from_nurbs(1, v, [0, 0, 1, 1])),

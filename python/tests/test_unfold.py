@@ -581,10 +581,13 @@ def test_an_l_bracket_with_a_hole_unfolds_to_its_volume_over_its_thickness(tmp_p
     assert layers.count("BEND_UP") + layers.count("BEND_DOWN") == 1
     cut = sum(entity_length(e) for e in read_dxf(path) if e["8"] == "CUT")
     assert rel(cut, pattern.unfolded.cut_length) <= 1e-9
-    # Marks: the hole's centre on the flange's outer skin, flat and back on the neutral layer.
-    flat = pattern.unfolded.to_flat([[5.0, -0.5, 2.0]])
-    formed = pattern.unfolded.to_formed(flat)
-    assert np.linalg.norm(formed[0] - [5.0, 0.0, 2.0]) <= 1e-9
+    # Marks: a point of the flange's outer skin, flat and back on the neutral layer; one of
+    # the other flange, the same; the hole's centre is in no part of the sheet.
+    for skin, neutral in [([3.0, -0.5, 1.0], [3.0, 0.0, 1.0]), ([13.5, 8.0, 3.0], [13.0, 8.0, 3.0])]:
+        formed = pattern.unfolded.to_formed(pattern.unfolded.to_flat([skin]))
+        assert np.linalg.norm(formed[0] - neutral) <= 1e-9, (skin, formed)
+    with pytest.raises(rmfsurf.InvalidInputError):
+        pattern.unfolded.to_formed(pattern.unfolded.to_flat([[5.0, -0.5, 2.0]]))
 
 
 def test_an_l_bracket_read_back_from_step_unfolds_alike(tmp_path):

@@ -608,7 +608,10 @@ fn neutral_layer(
     // Radii of the face along its normal (away from the axis): the side is the bend's
     // inner one when the other side lies further out.
     let (inner, radius) = match &data.shape {
-        Recognized::Plane { .. } => return Ok((data.development.clone(), None)),
+        // Flat regions do not stretch: their layer for marks is the sheet's middle.
+        Recognized::Plane { .. } => {
+            return Ok((data.development.offset(along * 0.5 * thickness)?, None))
+        }
         Recognized::Cylinder { radius, .. } => {
             let inner = along > 0.0;
             (inner, if inner { *radius } else { radius - thickness })
@@ -627,7 +630,7 @@ fn neutral_layer(
         _ => {
             let (sign, radius) = spline_bend(&data.development, p)?;
             if sign == 0.0 {
-                return Ok((data.development.clone(), None));
+                return Ok((data.development.offset(along * 0.5 * thickness)?, None));
             }
             let inner = along * sign > 0.0;
             (
@@ -1112,7 +1115,8 @@ impl UnfoldedBody {
         }
     }
 
-    /// The point of the neutral layer at the flat pattern's point `q`.
+    /// The point of the neutral layer at the flat pattern's point `q` (in flat regions,
+    /// which do not stretch, the sheet's middle).
     pub fn to_formed(&self, q: DVec2, name: &str) -> Result<DVec3> {
         if !q.is_finite() {
             return invalid!("{name} = {q} is not finite");

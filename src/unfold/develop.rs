@@ -184,12 +184,16 @@ impl Development {
 
     /// The development of the surface offset by `s` along [`Self::normal`], taking each
     /// point of this surface (and of its offsets) to the foot of its normal there: a plane
-    /// stays, a cylinder's radius grows by s, a cone's apex moves by −s / sin α along its
+    /// moves (its flat points stay), a cylinder's radius grows by s, a cone's apex moves by −s / sin α along its
     /// axis (its rulings by s cot α), a cone spline's pieces are offset ([LP]
     /// "Introduction").
     pub fn offset(&self, s: f64) -> Result<Self> {
         Ok(match self {
-            Development::Plane { .. } => self.clone(),
+            Development::Plane { origin, x, y } => Development::Plane {
+                origin: *origin + s * x.cross(*y),
+                x: *x,
+                y: *y,
+            },
             Development::Round {
                 origin,
                 axis,
