@@ -38,7 +38,6 @@ along its rulings, with its holes — into its exact flat pattern::
 from __future__ import annotations
 
 import io
-import numbers
 import os
 from typing import Any, List, Optional, Sequence, Tuple, Union
 
@@ -50,8 +49,8 @@ from .sheets import FlatEdge, SheetPart
 from .shapes import (Arc, CurveEdge, Edge, Line, Shape, SweepFrame, _frame_guide,
                      _drawn_sections, _frame_start_normal, _named, wire_sweep)
 from .surfaces import NurbsSurface, Surface
-from .unfold import (Bend, Brep, BrepEdge, BrepFace, Developability, UnfoldedBody, UnfoldedFace,
-                     line_curve, unfold_body, unfold_face)
+from .unfold import (Brep, BrepEdge, BrepFace, Developability, FlatPattern, UnfoldedBody,
+                     UnfoldedFace, checked_k_factor, line_curve, unfold_body, unfold_face)
 from .unfold import developability as _developability
 
 from OCP.BRep import BRep_Builder, BRep_Tool
@@ -861,49 +860,6 @@ def _wrap_pattern_like(template: Any, raw: Any) -> Any:
     return raw
 
 
-class FlatPattern:
-    """The flat pattern of one face or of a whole sheet body (:func:`unfold`).
-
-    Attributes:
-        face: the pattern as a face in the XY plane (normal +z, seen from the formed face's
-            normal side): the outline as its outer wire, the holes as inner wires, exact
-            lines and circular arcs (a build123d Face when the input was a build123d object,
-            a CadQuery Face for CadQuery, else a ``TopoDS_Face``).
-        bend_lines: the bend lines as edges in the XY plane (build123d/CadQuery Edges or
-            ``TopoDS_Edge``); none for planes, circular cylinders and right cones.
-        report: a face's :class:`rmfsurf.Developability` (kind, curvature, stretch,
-            fit_error); None for a body.
-        thickness: a body's thickness, measured between its skins; None for a face.
-        bends: a body's :class:`rmfsurf.Bend` s (line, up or down, face, inner radius,
-            K-factor); empty for a face.
-        area: the flat area (the library's, exact for lines and arcs).
-        unfolded: the library's :class:`rmfsurf.UnfoldedFace` or
-            :class:`rmfsurf.UnfoldedBody`: its flat edges, DXF text and marks between flat
-            and formed (``to_flat``, ``to_formed``).
-        k_factor: the K-factor asked for (see :func:`unfold`).
-    """
-
-    __slots__ = ("face", "bend_lines", "report", "area", "unfolded", "k_factor", "thickness",
-                 "bends")
-
-    def __init__(self, face: Any, bend_lines: List[Any],
-                 unfolded: Union[UnfoldedFace, UnfoldedBody], k_factor: Any) -> None:
-        self.face, self.bend_lines, self.unfolded = face, bend_lines, unfolded
-        body = isinstance(unfolded, UnfoldedBody)
-        self.report: Optional[Developability] = None if body else unfolded.report
-        self.thickness: Optional[float] = unfolded.thickness if body else None
-        self.bends: List[Bend] = list(unfolded.bends) if body else []
-        self.area: float = unfolded.area
-        self.k_factor = k_factor
-
-    def write_dxf(self, path: Union[str, bytes, "os.PathLike[Any]"]) -> None:
-        """Writes the library's DXF R12 of the pattern to `path` (LINE and ARC entities, the
-        outline and holes on layer CUT, a face's bend lines on layer BEND, a body's on
-        BEND_UP and BEND_DOWN; str, bytes or os.PathLike; FileError when the file cannot be
-        written)."""
-        self.unfolded.write_dxf(path)
-
-
 def _holds_solid(shape: Any) -> bool:
     raw = _unwrap(shape)
     if not isinstance(raw, TopoDS_Shape) or raw.IsNull():
@@ -953,19 +909,13 @@ def unfold(shape: Any, *, k_factor: Any = 0.5, tolerance: float = 1e-4,
     """
     tolerance = _core.number(tolerance, "tolerance")
     flat_tolerance = _core.number(flat_tolerance, "flat_tolerance")
+    solid = _holds_solid(shape)
+    k = checked_k_factor(k_factor, table=solid)
     unfolded: Union[UnfoldedFace, UnfoldedBody]
-    if _holds_solid(shape):
-        k: Any = k_factor
-        if isinstance(k_factor, numbers.Real):
-            k = _core.finite(k_factor, "k_factor")
-            if not 0.0 <= k <= 1.0:
-                raise _core._refused("k_factor", "%r is outside [0, 1]" % k)
+    if solid:
         unfolded = unfold_body(body_brep(shape), k_factor=k, tolerance=tolerance,
                                flat_tolerance=flat_tolerance)
     else:
-        k = _core.finite(k_factor, "k_factor")
-        if not 0.0 <= k <= 1.0:
-            raise _core._refused("k_factor", "%r is outside [0, 1]" % k)
         unfolded = unfold_face(face_brep(shape), 0, tolerance=tolerance,
                                flat_tolerance=flat_tolerance)
     flat = _wrap_pattern_like(shape, flat_face(unfolded))

@@ -31,6 +31,7 @@ A plate 4 × 3 with a square hole, unrolled (it is a plane: its pattern is itsel
 
 from __future__ import annotations
 
+import numbers
 import os
 from dataclasses import dataclass
 from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
@@ -43,7 +44,7 @@ from .curves import ArrayLike, Curve, NurbsCurve
 from .sheets import FlatEdge
 from .surfaces import NurbsSurface, Surface
 
-__all__ = ["Bend", "Brep", "BrepEdge", "BrepFace", "Developability", "UnfoldedBody",
+__all__ = ["Bend", "Brep", "FlatPattern", "checked_k_factor", "BrepEdge", "BrepFace", "Developability", "UnfoldedBody",
            "UnfoldedFace", "developability", "line_curve", "unfold_body", "unfold_face",
            "SURFACE_KINDS"]
 
@@ -606,3 +607,58 @@ def unfold_body(brep: Brep, *, k_factor: KFactorLike = 0.5, tolerance: float = 1
     out = _core.out_pointer("RmfUnfoldedBody")
     call("rmf_unfold_body", b._ptr, options, out)
     return UnfoldedBody(_core.owned("unfolded_body", out[0]))
+
+
+def checked_k_factor(k_factor: Any, table: bool = False) -> Any:
+    """`k_factor` checked: a number in [0, 1] (ValueError outside), or — where `table` — a
+    table of rows as :func:`unfold_body` takes it (checked there)."""
+    if table and not isinstance(k_factor, numbers.Real):
+        return k_factor
+    k = _core.finite(k_factor, "k_factor")
+    if not 0.0 <= k <= 1.0:
+        raise _core._refused("k_factor", "%r is outside [0, 1]" % k)
+    return k
+
+
+class FlatPattern:
+    """The flat pattern of one face or of a whole sheet body, as the CAD adapters return it
+    (:func:`rmfsurf.ocp.unfold`, :func:`rmfsurf.freecad.unfold`).
+
+    Attributes:
+        face: the pattern as a face of the caller's kernel in the XY plane (normal +z, seen
+            from the formed face's normal side, or from the outside of the body's side
+            unfolded): the outline as its outer wire, the holes as inner wires, exact lines
+            and circular arcs (a build123d or CadQuery Face for their input, a
+            ``TopoDS_Face`` for OCP, a ``Part.Face`` in FreeCAD).
+        bend_lines: the bend lines as the kernel's edges in the XY plane; none for planes,
+            circular cylinders and right cones.
+        report: a face's :class:`Developability` (kind, curvature, stretch, fit_error);
+            None for a body.
+        thickness: a body's thickness, measured between its skins; None for a face.
+        bends: a body's :class:`Bend` s (line, up or down, face, inner radius, K-factor);
+            empty for a face.
+        area: the flat area (the library's, exact for lines and arcs).
+        unfolded: the library's :class:`UnfoldedFace` or :class:`UnfoldedBody`: its flat
+            edges, DXF text and marks between flat and formed (``to_flat``, ``to_formed``).
+        k_factor: the K-factor asked for.
+    """
+
+    __slots__ = ("face", "bend_lines", "report", "area", "unfolded", "k_factor", "thickness",
+                 "bends")
+
+    def __init__(self, face: Any, bend_lines: List[Any],
+                 unfolded: Union[UnfoldedFace, UnfoldedBody], k_factor: Any) -> None:
+        self.face, self.bend_lines, self.unfolded = face, bend_lines, unfolded
+        body = isinstance(unfolded, UnfoldedBody)
+        self.report: Optional[Developability] = None if body else unfolded.report
+        self.thickness: Optional[float] = unfolded.thickness if body else None
+        self.bends: List[Bend] = list(unfolded.bends) if body else []
+        self.area: float = unfolded.area
+        self.k_factor = k_factor
+
+    def write_dxf(self, path: Union[str, bytes, "os.PathLike[Any]"]) -> None:
+        """Writes the library's DXF R12 of the pattern to `path` (LINE and ARC entities, the
+        outline and holes on layer CUT, a face's bend lines on layer BEND, a body's on
+        BEND_UP and BEND_DOWN; str, bytes or os.PathLike; FileError when the file cannot be
+        written)."""
+        self.unfolded.write_dxf(path)

@@ -71,10 +71,17 @@ impl PatternEdge {
 
     /// The edge scaled by `scale` about the origin.
     pub fn scaled(&self, scale: f64) -> Self {
+        self.mapped(|p| p * scale, scale, false)
+    }
+
+    /// The edge under a similarity `map` of the plane that multiplies lengths by `scale`
+    /// and keeps the sense of turning, or reverses it (`mirror`: arcs then sweep the other
+    /// way).
+    pub(crate) fn mapped(&self, map: impl Fn(DVec2) -> DVec2, scale: f64, mirror: bool) -> Self {
         match *self {
             PatternEdge::Line { from, to } => PatternEdge::Line {
-                from: from * scale,
-                to: to * scale,
+                from: map(from),
+                to: map(to),
             },
             PatternEdge::Arc {
                 center,
@@ -83,11 +90,11 @@ impl PatternEdge {
                 to,
                 sweep,
             } => PatternEdge::Arc {
-                center: center * scale,
+                center: map(center),
                 radius: radius * scale,
-                from: from * scale,
-                to: to * scale,
-                sweep,
+                from: map(from),
+                to: map(to),
+                sweep: if mirror { -sweep } else { sweep },
             },
         }
     }

@@ -163,27 +163,9 @@ impl Placed {
     }
 }
 
+/// The edge turned by `rotation` (a unit vector: cos, sin) and moved by `shift`.
 fn rigid(e: &PatternEdge, rotation: DVec2, shift: DVec2) -> PatternEdge {
-    let m = |p: DVec2| rotation.rotate(p) + shift;
-    match *e {
-        PatternEdge::Line { from, to } => PatternEdge::Line {
-            from: m(from),
-            to: m(to),
-        },
-        PatternEdge::Arc {
-            center,
-            radius,
-            from,
-            to,
-            sweep,
-        } => PatternEdge::Arc {
-            center: m(center),
-            radius,
-            from: m(from),
-            to: m(to),
-            sweep,
-        },
-    }
+    e.mapped(|p| rotation.rotate(p) + shift, 1.0, false)
 }
 
 /// A sheet body unfolded: its flat pattern, its bends, its thickness, and the isometry

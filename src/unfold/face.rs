@@ -457,27 +457,9 @@ pub(super) fn line_crossings(a: DVec2, d: DVec2, edge: &PatternEdge) -> Vec<f64>
     }
 }
 
+/// The edge mirrored in the y axis (x ↦ −x).
 pub(super) fn mirrored(e: &PatternEdge) -> PatternEdge {
-    let m = |p: DVec2| DVec2::new(-p.x, p.y);
-    match *e {
-        PatternEdge::Line { from, to } => PatternEdge::Line {
-            from: m(from),
-            to: m(to),
-        },
-        PatternEdge::Arc {
-            center,
-            radius,
-            from,
-            to,
-            sweep,
-        } => PatternEdge::Arc {
-            center: m(center),
-            radius,
-            from: m(from),
-            to: m(to),
-            sweep: -sweep,
-        },
-    }
+    e.mapped(|p| DVec2::new(-p.x, p.y), 1.0, true)
 }
 
 pub(super) fn loop_area(edges: &[PatternEdge]) -> f64 {
