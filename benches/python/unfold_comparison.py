@@ -1,6 +1,8 @@
 """Unfolding side by side in FreeCAD (run by scripts/bench with freecadcmd): the same faces
-unrolled by FreeCAD's own mesh unwrapper (flatmesh.FaceUnwrapper, the MeshPart "Unwrap
-face" command: a triangulation flattened by least squares) and by rmfsurf.freecad.unfold,
+unrolled by FreeCAD's own mesh unwrapper (flatmesh.FaceUnwrapper on the face's
+triangulation at a deflection of 0.01 mm, as MeshPart's "Unwrap mesh" command does: the
+triangles flattened by least squares; its "Unwrap face" command unwraps the untrimmed
+surface, holes and trims ignored) and by rmfsurf.freecad.unfold,
 each pattern's area and outline length against the formed face's (exact where the face is
 analytic: the closed forms below; a B-spline extrusion's: its curve's length × height).
 Prints one table row per face; the figures go to docs/unfold.md.
@@ -47,10 +49,13 @@ def wave():
     return curve.toShape().extrude(V(0, 0, 15)).Faces[0], 15 * curve.length()
 
 
-def unwrapper(face):
-    """FreeCAD's mesh unwrapper on `face`: (seconds, triangles, flat area, boundary length)."""
+def unwrapper(face, deflection=0.01):
+    """FreeCAD's mesh unwrapper on `face`'s triangulation: (seconds, triangles, flat area,
+    boundary length)."""
     start = time.perf_counter()
-    u = flatmesh.FaceUnwrapper(face)
+    points, triangles = face.tessellate(deflection)
+    u = flatmesh.FaceUnwrapper(np.array([tuple(p) for p in points], dtype=float),
+                               np.array(triangles, dtype=np.int64))
     u.findFlatNodes(5, 0.95)
     seconds = time.perf_counter() - start
     nodes, tris = np.asarray(u.ze_nodes), np.asarray(u.tris)
