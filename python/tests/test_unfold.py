@@ -21,7 +21,8 @@ independent one and printed (pytest -s, `cargo test ... --test python -- --nocap
      turned (faces with a location) unfolds to its area;
   j. whole sheet bodies: an L bracket with a hole (its flat area = volume / thickness at
      k = 0.5, the hole an inner wire, one bend on its DXF layer, k = 0.3 and a table), the
-     same through STEP, a Box as a plate, a wedge refused.
+     same through STEP, a conical sheet (a revolved parallelogram), a Box as a plate, a
+     wedge refused.
 Plus the core API on plain data, and the adapter's refusals."""
 
 import math
@@ -618,3 +619,29 @@ def test_an_ocp_face_gives_an_ocp_pattern():
     from OCP.TopoDS import TopoDS_Face
     assert isinstance(pattern.face, TopoDS_Face)
     assert rel(pattern.area, occ_area(top)) <= 1e-9
+
+
+def conical_sheet():
+    """A conical sheet 1 thick: the parallelogram across the cone's generator from (10, 0) to
+    (6, 12) revolved 270° about z — inner and outer skins coaxial cones of one half angle."""
+    a, b = np.array([10.0, 0.0]), np.array([6.0, 12.0])
+    d = (b - a) / np.linalg.norm(b - a)
+    n = np.array([d[1], -d[0]])  # away from the axis
+    corners = [a, a + n, b + n, b]
+    with bd.BuildSketch(bd.Plane.XZ) as section:
+        bd.Polygon(*[tuple(p) for p in corners], align=None)
+    return bd.revolve(section.sketch, bd.Axis.Z, 270)
+
+
+def test_a_conical_sheet_body_unfolds_to_its_volume_over_its_thickness():
+    part = conical_sheet()
+    pattern = rocp.unfold(part, tolerance=1e-6)
+    volume = occ_volume(part)
+    print("\nconical sheet: thickness %.15g, flat area %.15g, volume / thickness %.15g (%.1e), "
+          "%d bends (%s)" % (pattern.thickness, pattern.area, volume / pattern.thickness,
+                             rel(pattern.area, volume / pattern.thickness), len(pattern.bends),
+                             ["up" if b.up else "down" for b in pattern.bends]))
+    assert abs(pattern.thickness - 1.0) <= 1e-9
+    assert rel(pattern.area, volume) <= 1e-9
+    assert len(pattern.bends) == 1 and is_valid(pattern.face)
+

@@ -357,3 +357,52 @@ fn a_zigzag_of_many_bends_unfolds_to_its_neutral_length() {
     let ups = u.bends().iter().filter(|b| b.up).count();
     assert_eq!(ups, 20, "half the bends up, half down");
 }
+
+#[test]
+fn a_sheet_along_a_wave_unfolds_through_its_cone_splines() {
+    // A cubic wave with an inflection, the strip 0.5 thick and 3 high along it: its skins
+    // are exact offsets of the sweep's PH spine, general cylinders of degree (1, n).
+    let wave = crate::RationalBezierCurve::from_power(&[
+        DVec3::ZERO,
+        DVec3::new(10.0, 9.0, 0.0),
+        DVec3::new(0.0, -27.0, 0.0),
+        DVec3::new(0.0, 18.0, 0.0),
+    ])
+    .unwrap();
+    let curve = crate::PiecewiseCurve::new(vec![wave], vec![0.0, 1.0]).unwrap();
+    let profile = polygon(&[
+        DVec3::new(-0.25, 0.0, 0.0),
+        DVec3::new(0.25, 0.0, 0.0),
+        DVec3::new(0.25, 3.0, 0.0),
+        DVec3::new(-0.25, 3.0, 0.0),
+    ])
+    .unwrap();
+    let sweep = WireSweep {
+        initial_normal: Some(DVec3::Z.cross(DVec3::new(10.0, 9.0, 0.0)).normalize()),
+        tolerance: 1e-6,
+        ..WireSweep::default()
+    };
+    let shape = sweep_wire(&[Edge::Curve(curve)], &profile, &[], &sweep).unwrap();
+    let brep = shape.brep().clone();
+    let u = unfold_body(
+        &brep,
+        &BodyOptions {
+            face: UnfoldOptions::new(1e-5),
+            k_factor: KFactor::Constant(0.5),
+        },
+    )
+    .unwrap();
+    // At k = 0.5 the neutral layer is the spine's surface: the flat area is the volume
+    // over the thickness (K = 0: no t³ term).
+    let volume = shape.volume().unwrap();
+    let area = u.pattern().area().unwrap();
+    println!(
+        "wave sheet: thickness {}, flat area {area}, volume / thickness {} ({:.1e}), {} bend lines",
+        u.thickness(),
+        volume / 0.5,
+        (area - volume / 0.5).abs() / area,
+        u.pattern().bend_lines.len()
+    );
+    assert!((u.thickness() - 0.5).abs() <= 1e-5);
+    assert!((area - volume / 0.5).abs() <= 1e-5 * area);
+}
