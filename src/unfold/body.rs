@@ -36,8 +36,8 @@ use std::collections::{HashMap, VecDeque};
 
 /// Relative step of the differences for a face's normal in its development.
 const NORMAL_STEP: f64 = 1e-6;
-/// Largest sine of the angle between the line to a partner point and the face's normal
-/// for the sheet to count as of constant thickness there.
+/// Largest sine of the angle between the line to a partner point and the normal of a plane,
+/// cylinder or cone for the sheet to count as of constant thickness there.
 const ACROSS: f64 = 1e-6;
 /// Smallest cosine of that angle for a face to be looked at as the one across.
 const FACING: f64 = 0.9;
@@ -487,6 +487,12 @@ fn check_thickness(
             continue;
         }
         let g = partner[f].expect("a skin has a partner").0;
+        // The normals of a face developed through its cone spline are the spline's, off the
+        // face's by about the fit over a piece: there the distances at the samples decide.
+        let angle_limit = match d.shape {
+            Recognized::Ruled { .. } => 1.0,
+            _ => ACROSS,
+        };
         for &(p, n) in &d.samples {
             let measured = data
                 .iter()
@@ -495,7 +501,7 @@ fn check_thickness(
                 .filter_map(|(h, e)| across(p, n, e, tolerance).map(|(l, _, sin)| (h, l, sin)))
                 .min_by(|a, b| a.1.total_cmp(&b.1));
             match measured {
-                Some((_, l, sin)) if (l - thickness).abs() <= tolerance && sin <= ACROSS => {}
+                Some((_, l, sin)) if (l - thickness).abs() <= tolerance && sin <= angle_limit => {}
                 Some((h, l, sin)) => {
                     return invalid!(
                         "the thickness is not constant: face {f} at {} is {:.6} from face {h}, at {:.4}° to its normal (the sheet is {:.6} thick)",
