@@ -17,7 +17,7 @@
 mod brep;
 mod flat;
 pub(crate) mod marks;
-mod part;
+pub(crate) mod part;
 mod profile;
 pub(crate) mod rails;
 pub(crate) mod thickness;

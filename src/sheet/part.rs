@@ -52,20 +52,30 @@ pub struct SheetOptions {
     pub max_pieces: usize,
 }
 
+/// Checks the tolerances of a cone spline fit and its flat pattern: tolerance > 0,
+/// flat_tolerance ≥ 0 (0: the tolerance), at least two pieces.
+pub(crate) fn check_fit_options(
+    tolerance: f64,
+    flat_tolerance: f64,
+    max_pieces: usize,
+) -> Result<()> {
+    if !(tolerance.is_finite() && tolerance > 0.0) {
+        return invalid!("tolerance = {tolerance} must be finite and positive");
+    }
+    if !(flat_tolerance.is_finite() && flat_tolerance >= 0.0) {
+        return invalid!(
+            "flat_tolerance = {flat_tolerance} must be finite and ≥ 0 (0: the tolerance)"
+        );
+    }
+    if max_pieces < 2 {
+        return invalid!("max_pieces = {max_pieces} must be at least 2");
+    }
+    Ok(())
+}
+
 impl SheetOptions {
     fn check(&self) -> Result<()> {
-        if !(self.tolerance.is_finite() && self.tolerance > 0.0) {
-            return invalid!("tolerance = {} must be finite and positive", self.tolerance);
-        }
-        if !(self.flat_tolerance.is_finite() && self.flat_tolerance >= 0.0) {
-            return invalid!(
-                "flat_tolerance = {} must be finite and ≥ 0 (0: the tolerance)",
-                self.flat_tolerance
-            );
-        }
-        if self.max_pieces < 2 {
-            return invalid!("max_pieces = {} must be at least 2", self.max_pieces);
-        }
+        check_fit_options(self.tolerance, self.flat_tolerance, self.max_pieces)?;
         Sheet::new(
             self.sheet.thickness,
             self.sheet.k_factor,

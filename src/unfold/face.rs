@@ -16,6 +16,7 @@ use crate::cone_spline::developable::{max_scaled_curvature, RuledSurface};
 use crate::error::{invalid, Error, Result};
 use crate::model::planar::{biarcs, close_loop, line_or_arc};
 use crate::model::{Brep, BrepSurface, FlatPattern, PatternEdge, Similarity};
+use crate::sheet::part::check_fit_options;
 use crate::sheet::rails::between_rails;
 use glam::{DVec2, DVec3};
 use std::f64::consts::TAU;
@@ -56,19 +57,7 @@ impl UnfoldOptions {
     }
 
     pub(super) fn check(&self) -> Result<()> {
-        if !(self.tolerance.is_finite() && self.tolerance > 0.0) {
-            return invalid!("tolerance = {} must be finite and positive", self.tolerance);
-        }
-        if !(self.flat_tolerance.is_finite() && self.flat_tolerance >= 0.0) {
-            return invalid!(
-                "flat_tolerance = {} must be finite and ≥ 0 (0: the tolerance)",
-                self.flat_tolerance
-            );
-        }
-        if self.max_pieces < 2 {
-            return invalid!("max_pieces = {} must be at least 2", self.max_pieces);
-        }
-        Ok(())
+        check_fit_options(self.tolerance, self.flat_tolerance, self.max_pieces)
     }
 
     pub(super) fn flat(&self) -> f64 {
