@@ -132,6 +132,8 @@ struct Placed {
     /// Pattern point = rotation · (mirrored) development point + shift.
     rotation: DVec2,
     shift: DVec2,
+    /// The face's edges in the development (not mirrored), per loop and use.
+    groups: Vec<Vec<Vec<PatternEdge>>>,
     /// The face's loops in the development (mirrored), closed up.
     loops: Vec<Vec<PatternEdge>>,
 }
@@ -395,7 +397,8 @@ pub fn unfold_body(brep: &Brep, options: &BodyOptions) -> Result<UnfoldedBody> {
         .map(|f| mutual[f] && (partner[f].expect("mutual").1 - thickness).abs() <= tolerance)
         .collect();
     check_thickness(&data, &partner, &skin, thickness, tolerance, frame)?;
-    let side = one_side(brep, &data, &skin)?;
+    let neighbours = face_neighbours(brep);
+    let side = one_side(&neighbours, &data, &skin)?;
     let in_side: Vec<bool> = (0..data.len()).map(|f| side.contains(&f)).collect();
     for (f, &s) in skin.iter().enumerate() {
         if s && !in_side[f] && !in_side[partner[f].expect("mutual").0] {
@@ -421,8 +424,15 @@ pub fn unfold_body(brep: &Brep, options: &BodyOptions) -> Result<UnfoldedBody> {
         }
     }
     let flat_tolerance = options.face.flat() / frame.scale;
-    let placed = place(brep, &data, &placed_faces, flat_tolerance, frame)?;
-    let (outline, holes) = assemble(brep, &data, &placed, &in_side, flat_tolerance, frame)?;
+    let placed = place(
+        brep,
+        &neighbours,
+        &data,
+        &placed_faces,
+        flat_tolerance,
+        frame,
+    )?;
+    let (outline, holes) = assemble(&neighbours, &data, &placed, &in_side)?;
     let bends = bend_lines(&placed, &bends_local);
     check_overlap(&outline, &holes, frame)?;
     let scale = |e: &PatternEdge| e.scaled(frame.scale);
@@ -525,7 +535,11 @@ fn check_thickness(
 }
 
 /// The skin faces joined by shared edges to the largest skin face.
-fn one_side(brep: &Brep, data: &[FaceData], skin: &[bool]) -> Result<Vec<usize>> {
+fn one_side(
+    neighbours: &[Vec<(usize, usize)>],
+    data: &[FaceData],
+    skin: &[bool],
+) -> Result<Vec<usize>> {
     let area = |f: usize| loop_area(&data[f].flat[0]).abs();
     let Some(start) = (0..data.len())
         .filter(|&f| skin[f])
@@ -533,7 +547,6 @@ fn one_side(brep: &Brep, data: &[FaceData], skin: &[bool]) -> Result<Vec<usize>>
     else {
         return invalid!("the body has no skin faces");
     };
-    let neighbours = face_neighbours(brep);
     let mut seen = vec![false; data.len()];
     seen[start] = true;
     let mut order = vec![start];
@@ -699,6 +712,7 @@ type LocalFlat = (Vec<Vec<Vec<PatternEdge>>>, HashMap<usize, DVec2>, bool);
 /// The side's faces developed on the neutral layer and placed so that shared edges meet.
 fn place(
     brep: &Brep,
+    neighbours: &[Vec<(usize, usize)>],
     data: &[FaceData],
     faces: &[(usize, Development)],
     tolerance: f64,
@@ -743,6 +757,7 @@ fn place(
             mirror: *mirror,
             rotation,
             shift,
+            groups: groups.clone(),
             loops: groups
                 .iter()
                 .map(|g| close_loop(g.concat(), 1.0))
@@ -757,7 +772,6 @@ fn place(
         }
     };
     placed[0] = Some(make(0, DVec2::X, DVec2::ZERO, &local));
-    let neighbours = face_neighbours(brep);
     let mut queue = VecDeque::from([0usize]);
     while let Some(i) = queue.pop_front() {
         let fi = faces[i].0;
@@ -817,14 +831,11 @@ fn place(
 /// The pattern's outline and holes: the placed faces' edges not shared with another face
 /// of the side, chained by their vertices.
 fn assemble(
-    brep: &Brep,
+    neighbours: &[Vec<(usize, usize)>],
     data: &[FaceData],
     placed: &[Placed],
     in_side: &[bool],
-    tolerance: f64,
-    frame: Similarity,
 ) -> Result<(Vec<PatternEdge>, Vec<Vec<PatternEdge>>)> {
-    let neighbours = face_neighbours(brep);
     let mut chains: HashMap<usize, Vec<(usize, Vec<PatternEdge>)>> = HashMap::new();
     for p in placed {
         let shared: Vec<usize> = neighbours[p.face]
@@ -832,8 +843,7 @@ fn assemble(
             .filter(|(g, _)| in_side[*g])
             .map(|(_, e)| *e)
             .collect();
-        for l in &data[p.face].loops {
-            let groups = developed_uses(&p.development, l, tolerance, frame.scale)?;
+        for (l, groups) in data[p.face].loops.iter().zip(&p.groups) {
             for (u, edges) in l.uses.iter().zip(groups) {
                 if shared.contains(&u.edge) {
                     continue;

@@ -252,13 +252,11 @@ impl Development {
                     Some(s) => (q.to_angle().rem_euclid(TAU) / s, q.length()),
                 };
                 let angle = theta + cut;
-                let radial = angle.cos() * *x + angle.sin() * *y;
                 Some(match sin {
-                    None => *origin + radius * radial + along * *axis,
-                    Some(s) => {
-                        let cos = (1.0 - s * s).max(0.0).sqrt();
-                        *origin + along * (cos * *axis + s * radial)
+                    None => {
+                        *origin + radius * (angle.cos() * *x + angle.sin() * *y) + along * *axis
                     }
+                    Some(s) => *origin + along * Self::ruling(*axis, *x, *y, angle, *s),
                 })
             }
             Development::Spline {

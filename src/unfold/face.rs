@@ -268,15 +268,10 @@ impl DevelopedUse<'_> {
             .iter()
             .min_by(|a, b| (a.0 - t).abs().total_cmp(&(b.0 - t).abs()));
         match near {
-            Some(&(_, q)) if !self.resolved.is_empty() => {
-                if across.distance(q) < fp.point.distance(q) {
-                    across
-                } else {
-                    fp.point
-                }
-            }
-            _ if self.across => across,
-            _ => fp.point,
+            Some(&(_, q)) if across.distance(q) < fp.point.distance(q) => across,
+            Some(_) => fp.point,
+            None if self.across => across,
+            None => fp.point,
         }
     }
 
@@ -293,16 +288,22 @@ impl DevelopedUse<'_> {
     }
 }
 
-/// The developed use `curve`: its samples off the cut, or (on the cut) its side by `before`.
+/// The flat points of a use's samples.
+fn sampled_use(development: &Development, curve: &PiecewiseCurve) -> Vec<(f64, FlatPoint)> {
+    samples(curve)
+        .into_iter()
+        .map(|t| (t, development.flat(curve.eval(t))))
+        .collect()
+}
+
+/// The developed use `curve` from its sampled flat points: those off the cut, or (all on
+/// the cut) its side by `before`.
 fn develop_use<'a>(
     development: &'a Development,
     curve: &'a PiecewiseCurve,
+    flat: &[(f64, FlatPoint)],
     before: Option<DVec2>,
 ) -> DevelopedUse<'a> {
-    let flat: Vec<(f64, FlatPoint)> = samples(curve)
-        .into_iter()
-        .map(|t| (t, development.flat(curve.eval(t))))
-        .collect();
     let resolved = flat
         .iter()
         .filter(|(_, f)| !f.on_cut)
@@ -333,19 +334,20 @@ pub(super) fn developed_uses(
     let exact = tolerance.min(EXACT);
     // Start at a use off the cut, so that a use on it has a neighbour before it.
     let n = l.uses.len();
+    let sampled: Vec<Vec<(f64, FlatPoint)>> = l
+        .uses
+        .iter()
+        .map(|u| sampled_use(development, &u.curve))
+        .collect();
     let first = (0..n)
-        .find(|&i| {
-            !develop_use(development, &l.uses[i].curve, None)
-                .resolved
-                .is_empty()
-        })
+        .find(|&i| sampled[i].iter().any(|(_, f)| !f.on_cut))
         .unwrap_or(0);
     let mut before: Option<DVec2> = None;
     let mut groups = vec![Vec::new(); n];
     for k in 0..n {
         let i = (first + k) % n;
         let curve = &l.uses[i].curve;
-        let used = develop_use(development, curve, before);
+        let used = develop_use(development, curve, &sampled[i], before);
         let (lo, hi) = curve.domain();
         // A closed edge (a circle) is drawn in two halves: an arc has two ends.
         let closed = curve.eval(lo).distance(curve.eval(hi)) <= LOOP_GAP;
@@ -486,7 +488,7 @@ pub(super) fn recognized_surface(
         BrepSurface::Nurbs(nurbs) => {
             let internal = internal_surface(&nurbs.to_piecewise()?, frame)?;
             let curvature = max_scaled_curvature(&internal);
-            Ok((recognize(&internal)?, curvature))
+            Ok((recognize(&internal, curvature)?, curvature))
         }
     }
 }

@@ -10,7 +10,7 @@
 //! size, far below any tolerance a user gives, far above the round-off of exact data.
 
 use crate::bezier::{PiecewiseSurface, RationalBezierPatch};
-use crate::cone_spline::developable::{max_scaled_curvature, DEVELOPABILITY_TOLERANCE};
+use crate::cone_spline::developable::DEVELOPABILITY_TOLERANCE;
 use crate::error::Result;
 use crate::math::solve_refined;
 use glam::{DMat3, DVec3};
@@ -145,8 +145,9 @@ fn transposed(surface: &PiecewiseSurface) -> Result<PiecewiseSurface> {
     )
 }
 
-/// Recognizes a NURBS face surface (internal coordinates).
-pub(crate) fn recognize(surface: &PiecewiseSurface) -> Result<Recognized> {
+/// Recognizes a NURBS face surface (internal coordinates) whose largest |K|·size² is
+/// `curvature`.
+pub(crate) fn recognize(surface: &PiecewiseSurface, curvature: f64) -> Result<Recognized> {
     let poles: Vec<DVec3> = surface
         .patches()
         .iter()
@@ -181,7 +182,6 @@ pub(crate) fn recognize(surface: &PiecewiseSurface) -> Result<Recognized> {
     } else {
         None
     };
-    let curvature = max_scaled_curvature(surface);
     let developable = curvature <= DEVELOPABILITY_TOLERANCE;
     let Some(ruled) = ruled else {
         return Ok(Recognized::Other {
