@@ -30,10 +30,12 @@ mod user_path;
 use rmfsurf::glam::DVec3;
 use rmfsurf::metrics::{angle_about_tangent, gaussian_curvature, parameter_line_cosine};
 use rmfsurf::{
-    approximate_developable, hermite_sequence, mobius_hermite_points, ph_rational_rmf,
-    ph_spline_hermite, rrmf_spline, sweep, uniform_parameters, ConeSpline, DoubleReflectionRmf,
-    ExactRmf, Frame, NurbsSurface, ParametricCurve, PiecewiseCurve, PiecewiseSurface,
-    RationalBezierCurve, RationalFrames, RmfOptions, Rule, ShapeMeasure, TangentSurface,
+    cone::approximate as approximate_developable, cone::ConeSpline, cone::Rule,
+    cone::TangentSurface, hermite_sequence, mobius::hermite_points as mobius_hermite_points,
+    ph::rational_rmf as ph_rational_rmf, ph::spline_hermite as ph_spline_hermite, ph::ExactRmf,
+    ph::RmfOptions, rrmf::spline as rrmf_spline, rrmf::ShapeMeasure, sweep, uniform_parameters,
+    DoubleReflectionRmf, Frame, NurbsSurface, ParametricCurve, PiecewiseCurve, PiecewiseSurface,
+    RationalBezierCurve, RationalFrames,
 };
 use support::{timed, REPEATS};
 
@@ -417,7 +419,7 @@ fn sweep_row(
     let nurbs = NurbsSurface::from_piecewise(&surface).unwrap();
     let ours = measure(
         std::slice::from_ref(&surface),
-        nurbs.pole_count_u * nurbs.pole_count_v,
+        nurbs.pole_count_u() * nurbs.pole_count_v(),
     );
     let occ = program.map(|program| {
         let spine = ph_spline_hermite(points, tangents).unwrap();
@@ -433,7 +435,10 @@ fn sweep_row(
         match program.sweep(&request) {
             occ::Outcome::Done(result) => {
                 let faces = &result.faces;
-                let poles = faces.iter().map(|f| f.pole_count_u * f.pole_count_v).sum();
+                let poles = faces
+                    .iter()
+                    .map(|f| f.pole_count_u() * f.pole_count_v())
+                    .sum();
                 let pieces: Vec<PiecewiseSurface> =
                     faces.iter().map(|f| f.to_piecewise().unwrap()).collect();
                 let fastest = result.times.iter().copied().fold(f64::INFINITY, f64::min);

@@ -6,8 +6,8 @@
 
 use rmfsurf::glam::DVec3;
 use rmfsurf::{
-    approximate_developable, ConeSpline, NurbsSurface, ParametricCurve, PiecewiseCurve,
-    RationalBezierCurve, Rule, TangentSurface,
+    cone::approximate as approximate_developable, cone::ConeSpline, cone::Rule,
+    cone::TangentSurface, NurbsSurface, ParametricCurve, PiecewiseCurve, RationalBezierCurve,
 };
 use std::hint::black_box;
 use std::time::Instant;

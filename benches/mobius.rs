@@ -9,7 +9,8 @@ mod support;
 use rmfsurf::glam::DVec3;
 use rmfsurf::metrics::angle_between;
 use rmfsurf::{
-    mobius_approximate, uniform_parameters, DoubleReflectionRmf, ParametricCurve, Result,
+    mobius::approximate as mobius_approximate, uniform_parameters, DoubleReflectionRmf,
+    ParametricCurve, Result,
 };
 use support::fastest_of;
 

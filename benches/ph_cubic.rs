@@ -11,8 +11,9 @@ mod support;
 use rmfsurf::glam::DVec3;
 use rmfsurf::metrics::angle_about_tangent;
 use rmfsurf::{
-    ph_rational_rmf, ph_spline_hermite, sweep, uniform_parameters, DoubleReflectionRmf, ExactRmf,
-    Frame, PiecewiseCurve, RationalBezierCurve, RmfOptions,
+    ph::rational_rmf as ph_rational_rmf, ph::spline_hermite as ph_spline_hermite, ph::ExactRmf,
+    ph::RmfOptions, sweep, uniform_parameters, DoubleReflectionRmf, Frame, PiecewiseCurve,
+    RationalBezierCurve,
 };
 use support::{timed, REPEATS};
 

@@ -10,8 +10,10 @@
 
 use rmfsurf::glam::DVec3;
 use rmfsurf::{
-    best_quintic, best_quintic_within, hermite_sequence, quintic_curve, quintic_rmf, rrmf_quintics,
-    rrmf_spline, uniform_parameters, DoubleReflectionRmf, HermiteSegment, RrmfBudget, ShapeMeasure,
+    hermite_sequence, rrmf::best_quintic, rrmf::best_quintic_within, rrmf::quintic_curve,
+    rrmf::quintic_rmf, rrmf::quintics as rrmf_quintics, rrmf::spline as rrmf_spline,
+    rrmf::Budget as RrmfBudget, rrmf::ShapeMeasure, uniform_parameters, DoubleReflectionRmf,
+    HermiteSegment,
 };
 use std::f64::consts::{PI, TAU};
 use std::hint::black_box;

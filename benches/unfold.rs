@@ -14,7 +14,8 @@ mod support;
 use rmfsurf::glam::DVec3;
 use rmfsurf::primitives::polygon;
 use rmfsurf::{
-    sweep_wire, unfold_body, unfold_face, BodyOptions, Edge, KFactor, UnfoldOptions, WireSweep,
+    unfold::unfold_body, unfold::unfold_face, unfold::BodyOptions, unfold::KFactor,
+    unfold::UnfoldOptions, wire::sweep as sweep_wire, wire::Edge, wire::WireSweep,
 };
 
 /// `bends` quarter turns of radius 1.5, alternately left and right, joined by lines of 2.

@@ -11,7 +11,7 @@
 mod support;
 
 use rmfsurf::glam::DVec3;
-use rmfsurf::{sweep_wire, Corner, Edge, Shape, WireSweep};
+use rmfsurf::{wire::sweep as sweep_wire, wire::Corner, wire::Edge, wire::Shape, wire::WireSweep};
 use rmfsurf::{NurbsCurve, PiecewiseCurve, RationalBezierCurve};
 use std::f64::consts::{FRAC_1_SQRT_2, PI};
 use std::io::Write;
@@ -234,12 +234,12 @@ fn describe(case: &Case, shape: &Shape, step: &Path) -> String {
             } => text += &format!("arc {} {} {}\n", p(*start), p(*through), p(*end)),
             Edge::Curve(c) => {
                 let n = NurbsCurve::from_piecewise(c).unwrap();
-                text += &format!("nurbs {} {}", n.degree, n.poles.len());
-                for (q, w) in n.poles.iter().zip(&n.weights) {
+                text += &format!("nurbs {} {}", n.degree(), n.poles().len());
+                for (q, w) in n.poles().iter().zip(n.weights()) {
                     text += &format!(" {} {w}", p(*q));
                 }
-                text += &format!(" {}", n.knots.len());
-                for k in &n.knots {
+                text += &format!(" {}", n.knots().len());
+                for k in n.knots() {
                     text += &format!(" {k}");
                 }
                 text += "\n";

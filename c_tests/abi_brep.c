@@ -1,6 +1,6 @@
 /*
  * The boundary representation through the C API (RmfBrep: rmf_shape_brep,
- * rmf_cone_spline_part_brep and the rmf_brep_* accessors), checked with the suite's own
+ * rmf_sheet_part_brep and the rmf_brep_* accessors), checked with the suite's own
  * arithmetic: every edge of a solid used once each way once the faces' senses are applied
  * (a degenerate edge once, at one vertex), loops that run on from vertex to vertex, edge
  * curves that end at their vertices, and every edge's curve on each face — evaluated on
@@ -207,17 +207,16 @@ static void test_pipe(void) {
 static void test_hopper(void) {
     const RmfVec3 corners[4] = {{-100, -100, 0}, {100, -100, 0}, {100, 100, 0}, {-100, 100, 0}};
     RmfCurve *square = NULL, *circle = NULL;
-    RmfConeSpline *part = NULL, *not_part = NULL;
+    RmfSheetPart *part = NULL;
     RmfBrep *brep = NULL;
     RmfSheetOptions o;
-    RmfConeElement els[2] = {{{0, 0, 0}, {0, 0, 1}, {1, 0, 0}}, {{1, 0, 0}, {0, 0, 1}, {1, 0.2, 0}}};
     CHECK_STATUS(rmf_curve_polygon(corners, 4, &square), RMF_OK, "");
     CHECK_STATUS(rmf_curve_circle(vec3(20, 0, 150), vec3(1, 0, 0), vec3(0, 1, 0), 60, &circle), RMF_OK, "");
     rmf_sheet_options_init(&o);
     o.thickness = 2;
     o.tolerance = 1e-3;
-    CHECK_STATUS(rmf_cone_spline_transition(square, circle, &o, &part), RMF_OK, "");
-    CHECK_STATUS(rmf_cone_spline_part_brep(part, &brep), RMF_OK, "");
+    CHECK_STATUS(rmf_sheet_part_transition(square, circle, &o, &part), RMF_OK, "");
+    CHECK_STATUS(rmf_sheet_part_brep(part, &brep), RMF_OK, "");
     if (brep) {
         RmfBrepCounts counts;
         size_t e, degenerate = 0;
@@ -231,15 +230,11 @@ static void test_hopper(void) {
         CHECK(counts.solid == 1 && degenerate >= 8, "the hopper: a solid with degenerate edges at the apices");
     }
     rmf_brep_free(brep);
-    /* A cone spline that is not a part. */
-    if (rmf_cone_spline_hermite(els, 2, RMF_CONE_RULE_MIN_VERTEX_DISTANCE, 0, NULL, &not_part) == RMF_OK) {
-        brep = NULL;
-        CHECK_STATUS(rmf_cone_spline_part_brep(not_part, &brep), RMF_ERROR_INVALID_INPUT, "part");
-        CHECK(brep == NULL, "nothing written");
-    }
-    CHECK_STATUS(rmf_cone_spline_part_brep(NULL, &brep), RMF_ERROR_NULL_POINTER, "part");
-    rmf_cone_spline_free(not_part);
-    rmf_cone_spline_free(part);
+    brep = NULL;
+    CHECK_STATUS(rmf_sheet_part_brep(NULL, &brep), RMF_ERROR_NULL_POINTER, "part");
+    CHECK_STATUS(rmf_sheet_part_brep(part, NULL), RMF_ERROR_NULL_POINTER, "out");
+    CHECK(brep == NULL, "nothing written");
+    rmf_sheet_part_free(part);
     rmf_curve_free(square);
     rmf_curve_free(circle);
 }

@@ -1,9 +1,9 @@
 /*
  * C99 tests of the sheet-metal ABI (issue 15): options, a square-to-round transition,
  * its report, layer surfaces and boundaries, flat pattern, marks both ways and file
- * exports; NULL pointers, bad options (struct_size, thickness, K-factor, reference,
- * tolerance), bad curves (open, not planar, crossing), marks outside the part and
- * handles that are not parts; a part between the rails of a ruled developable and of a
+ * exports, its designed surface's cone spline; NULL pointers, bad options (struct_size,
+ * thickness, K-factor, reference, tolerance), bad curves (open, not planar, crossing), marks
+ * outside the part; the deprecated calls of a part held by a cone spline; a part between the rails of a ruled developable and of a
  * tangent surface, checked with the suite's own evaluator (edges against the rails, flat
  * area against the formed neutral layer). Every failure returns its status with a message naming the
  * argument and leaves out-pointers untouched; the program runs under valgrind and ASan.
@@ -20,7 +20,7 @@
 
 #define vec3(x, y, z) ((RmfVec3){(x), (y), (z)})
 
-static RmfConeSpline *sentinel_part(void) { return (RmfConeSpline *)(uintptr_t)0x5e5e; }
+static RmfSheetPart *sentinel_part(void) { return (RmfSheetPart *)(uintptr_t)0x5e5e; }
 
 /* A closed polygon of degree-1 segments through n corners (the first repeated). */
 static RmfCurve *polygon(const RmfVec3 *corners, size_t n) {
@@ -61,46 +61,46 @@ static void test_options(void) {
 /* Every bad option is refused by name, and `out` stays as it was. */
 static void test_bad_options(RmfCurve *bottom, RmfCurve *top) {
     RmfSheetOptions o;
-    RmfConeSpline *out = sentinel_part();
+    RmfSheetPart *out = sentinel_part();
     rmf_sheet_options_init(&o);
     o.struct_size = 3;
-    CHECK_STATUS(rmf_cone_spline_transition(bottom, top, &o, &out), RMF_ERROR_INVALID_INPUT, "options->struct_size");
+    CHECK_STATUS(rmf_sheet_part_transition(bottom, top, &o, &out), RMF_ERROR_INVALID_INPUT, "options->struct_size");
     rmf_sheet_options_init(&o);
     o.thickness = 0;
-    CHECK_STATUS(rmf_cone_spline_transition(bottom, top, &o, &out), RMF_ERROR_INVALID_INPUT, "options->thickness");
+    CHECK_STATUS(rmf_sheet_part_transition(bottom, top, &o, &out), RMF_ERROR_INVALID_INPUT, "options->thickness");
     o.thickness = -2;
-    CHECK_STATUS(rmf_cone_spline_transition(bottom, top, &o, &out), RMF_ERROR_INVALID_INPUT, "options->thickness");
+    CHECK_STATUS(rmf_sheet_part_transition(bottom, top, &o, &out), RMF_ERROR_INVALID_INPUT, "options->thickness");
     o.thickness = nan_value();
-    CHECK_STATUS(rmf_cone_spline_transition(bottom, top, &o, &out), RMF_ERROR_INVALID_INPUT, "options->thickness");
+    CHECK_STATUS(rmf_sheet_part_transition(bottom, top, &o, &out), RMF_ERROR_INVALID_INPUT, "options->thickness");
     rmf_sheet_options_init(&o);
     o.k_factor = 1.5;
-    CHECK_STATUS(rmf_cone_spline_transition(bottom, top, &o, &out), RMF_ERROR_INVALID_INPUT, "options->k_factor");
+    CHECK_STATUS(rmf_sheet_part_transition(bottom, top, &o, &out), RMF_ERROR_INVALID_INPUT, "options->k_factor");
     o.k_factor = -0.01;
-    CHECK_STATUS(rmf_cone_spline_transition(bottom, top, &o, &out), RMF_ERROR_INVALID_INPUT, "options->k_factor");
+    CHECK_STATUS(rmf_sheet_part_transition(bottom, top, &o, &out), RMF_ERROR_INVALID_INPUT, "options->k_factor");
     rmf_sheet_options_init(&o);
     o.reference = 9;
-    CHECK_STATUS(rmf_cone_spline_transition(bottom, top, &o, &out), RMF_ERROR_INVALID_INPUT, "options->reference");
+    CHECK_STATUS(rmf_sheet_part_transition(bottom, top, &o, &out), RMF_ERROR_INVALID_INPUT, "options->reference");
     rmf_sheet_options_init(&o);
     o.tolerance = 0;
-    CHECK_STATUS(rmf_cone_spline_transition(bottom, top, &o, &out), RMF_ERROR_INVALID_INPUT, "options->tolerance");
+    CHECK_STATUS(rmf_sheet_part_transition(bottom, top, &o, &out), RMF_ERROR_INVALID_INPUT, "options->tolerance");
     rmf_sheet_options_init(&o);
     o.max_pieces = 1;
-    CHECK_STATUS(rmf_cone_spline_transition(bottom, top, &o, &out), RMF_ERROR_INVALID_INPUT, "options->max_pieces");
+    CHECK_STATUS(rmf_sheet_part_transition(bottom, top, &o, &out), RMF_ERROR_INVALID_INPUT, "options->max_pieces");
     rmf_sheet_options_init(&o);
     o.flat_tolerance = -1;
-    CHECK_STATUS(rmf_cone_spline_transition(bottom, top, &o, &out), RMF_ERROR_INVALID_INPUT, "options->flat_tolerance");
+    CHECK_STATUS(rmf_sheet_part_transition(bottom, top, &o, &out), RMF_ERROR_INVALID_INPUT, "options->flat_tolerance");
     /* The designed surface as the outer face: the inner face would pass the corner cones'
      * vertices, whose bend radius is 0. */
     rmf_sheet_options_init(&o);
     o.reference = RMF_SHEET_REFERENCE_OUTER;
     o.tolerance = 1e-2;
-    CHECK_STATUS(rmf_cone_spline_transition(bottom, top, &o, &out), RMF_ERROR_INVALID_INPUT, "bend radius");
+    CHECK_STATUS(rmf_sheet_part_transition(bottom, top, &o, &out), RMF_ERROR_INVALID_INPUT, "bend radius");
     CHECK(out == sentinel_part(), "out untouched on failure");
 }
 
 static void test_bad_curves(RmfCurve *bottom, RmfCurve *top) {
     RmfSheetOptions o;
-    RmfConeSpline *out = sentinel_part();
+    RmfSheetPart *out = sentinel_part();
     const RmfVec3 open_poles[3] = {vec3(0, 0, 0), vec3(1, 0, 0), vec3(1, 1, 0)};
     const double open_knots[5] = {0, 0, 1, 2, 2};
     const RmfVec3 skew[4] = {vec3(0, 0, 0), vec3(1, 0, 0), vec3(1, 1, 0.2), vec3(0, 1, 0)};
@@ -109,29 +109,68 @@ static void test_bad_curves(RmfCurve *bottom, RmfCurve *top) {
     rmf_sheet_options_init(&o);
     o.tolerance = 1e-2;
     CHECK_STATUS(rmf_nurbs_curve_create(1, open_poles, NULL, 3, open_knots, 5, &open), RMF_OK, "");
-    CHECK_STATUS(rmf_cone_spline_transition(open, top, &o, &out), RMF_ERROR_INVALID_INPUT, "bottom is not closed");
-    CHECK_STATUS(rmf_cone_spline_transition(bottom, bent, &o, &out), RMF_ERROR_INVALID_INPUT, "top is not planar");
-    CHECK_STATUS(rmf_cone_spline_transition(concave, top, &o, &out), RMF_ERROR_INVALID_INPUT, "bottom is not convex");
+    CHECK_STATUS(rmf_sheet_part_transition(open, top, &o, &out), RMF_ERROR_INVALID_INPUT, "bottom is not closed");
+    CHECK_STATUS(rmf_sheet_part_transition(bottom, bent, &o, &out), RMF_ERROR_INVALID_INPUT, "top is not planar");
+    CHECK_STATUS(rmf_sheet_part_transition(concave, top, &o, &out), RMF_ERROR_INVALID_INPUT, "bottom is not convex");
     /* Two curves in one plane: neither lies on one side of the other's plane. */
-    CHECK_STATUS(rmf_cone_spline_transition(bottom, bottom, &o, &out), RMF_ERROR_INVALID_INPUT,
+    CHECK_STATUS(rmf_sheet_part_transition(bottom, bottom, &o, &out), RMF_ERROR_INVALID_INPUT,
                  "of the plane of bottom");
-    CHECK_STATUS(rmf_cone_spline_transition(NULL, top, &o, &out), RMF_ERROR_NULL_POINTER, "bottom");
-    CHECK_STATUS(rmf_cone_spline_transition(bottom, NULL, &o, &out), RMF_ERROR_NULL_POINTER, "top");
-    CHECK_STATUS(rmf_cone_spline_transition(bottom, top, &o, NULL), RMF_ERROR_NULL_POINTER, "out");
+    CHECK_STATUS(rmf_sheet_part_transition(NULL, top, &o, &out), RMF_ERROR_NULL_POINTER, "bottom");
+    CHECK_STATUS(rmf_sheet_part_transition(bottom, NULL, &o, &out), RMF_ERROR_NULL_POINTER, "top");
+    CHECK_STATUS(rmf_sheet_part_transition(bottom, top, &o, NULL), RMF_ERROR_NULL_POINTER, "out");
     CHECK(out == sentinel_part(), "out untouched on failure");
     /* Below the square is a transition too (the curves are ordered by the call, not by z). */
-    CHECK_STATUS(rmf_cone_spline_transition(bottom, low, &o, &out), RMF_OK, "");
-    if (out != sentinel_part()) rmf_cone_spline_free(out);
+    CHECK_STATUS(rmf_sheet_part_transition(bottom, low, &o, &out), RMF_OK, "");
+    if (out != sentinel_part()) rmf_sheet_part_free(out);
     rmf_curve_free(open);
     rmf_curve_free(bent);
     rmf_curve_free(concave);
     rmf_curve_free(low);
 }
 
+/* The deprecated calls of a part held by an RmfConeSpline (this file defines RMF_DEPRECATED
+ * away to call them): the same part as rmf_sheet_part_*, byte for byte in its files, and a
+ * cone spline that holds no part refused naming the argument. */
+static void check_deprecated_part_calls(RmfCurve *bottom, RmfCurve *top, const RmfSheetOptions *o,
+                                        const RmfSheetPart *part, const RmfConeElement *els) {
+    RmfConeSpline *old = NULL, *not_part = NULL, *untouched = (RmfConeSpline *)(uintptr_t)0x5e5e;
+    RmfSheetReport a, b;
+    RmfSurface *surface = NULL;
+    size_t na = 0, nb = 0, la = 0, lb = 0;
+    char *ta, *tb;
+    CHECK_STATUS(rmf_cone_spline_transition(bottom, top, o, &old), RMF_OK, "");
+    if (!old) return;
+    CHECK_STATUS(rmf_cone_spline_part_report(old, &a), RMF_OK, "");
+    CHECK_STATUS(rmf_sheet_part_report(part, &b), RMF_OK, "");
+    CHECK(a.pieces == b.pieces && a.deviation == b.deviation && a.neutral == b.neutral, "the same report");
+    CHECK_STATUS(rmf_cone_spline_flat_pattern(old, NULL, 0, &na), RMF_OK, "");
+    CHECK_STATUS(rmf_sheet_part_flat_pattern(part, NULL, 0, &nb), RMF_OK, "");
+    CHECK(na == nb && na > 0, "the same flat pattern");
+    CHECK_STATUS(rmf_cone_spline_part_export(old, RMF_SHEET_FORMAT_STEP_SOLID, NULL, 0, &la), RMF_OK, "");
+    CHECK_STATUS(rmf_sheet_part_export(part, RMF_SHEET_FORMAT_STEP_SOLID, NULL, 0, &lb), RMF_OK, "");
+    ta = (char *)malloc(la + 1);
+    tb = (char *)malloc(lb + 1);
+    CHECK_STATUS(rmf_cone_spline_part_export(old, RMF_SHEET_FORMAT_STEP_SOLID, ta, la + 1, &la), RMF_OK, "");
+    CHECK_STATUS(rmf_sheet_part_export(part, RMF_SHEET_FORMAT_STEP_SOLID, tb, lb + 1, &lb), RMF_OK, "");
+    CHECK(la == lb && memcmp(ta, tb, la) == 0, "the same STEP solid, byte for byte");
+    free(ta);
+    free(tb);
+    CHECK_STATUS(rmf_cone_spline_hermite(els, 2, RMF_CONE_RULE_MIN_VERTEX_DISTANCE, 0, NULL, &not_part), RMF_OK, "");
+    CHECK_STATUS(rmf_cone_spline_part_report(not_part, &a), RMF_ERROR_INVALID_INPUT, "not a sheet-metal part");
+    CHECK_STATUS(rmf_cone_spline_part_surface(not_part, RMF_SHEET_LAYER_NEUTRAL, &surface), RMF_ERROR_INVALID_INPUT,
+                 "part");
+    CHECK(surface == NULL, "nothing written");
+    CHECK_STATUS(rmf_cone_spline_transition(NULL, top, o, &untouched), RMF_ERROR_NULL_POINTER, "bottom");
+    CHECK(untouched == (RmfConeSpline *)(uintptr_t)0x5e5e, "out untouched on failure");
+    rmf_cone_spline_free(not_part);
+    rmf_cone_spline_free(old);
+}
+
 static void test_part(RmfCurve *bottom, RmfCurve *top) {
     RmfSheetOptions o;
     RmfSheetReport r;
-    RmfConeSpline *part = NULL, *not_part = NULL;
+    RmfSheetPart *part = NULL;
+    RmfConeSpline *spline = NULL;
     RmfSurface *surface = NULL;
     RmfCurve *edge = NULL;
     RmfNurbsSurface view;
@@ -147,24 +186,25 @@ static void test_part(RmfCurve *bottom, RmfCurve *top) {
     o.tolerance = 1e-2;
     o.thickness = 0.02;
     o.k_factor = 0.4;
-    CHECK_STATUS(rmf_cone_spline_transition(bottom, top, &o, &part), RMF_OK, "");
+    CHECK_STATUS(rmf_sheet_part_transition(bottom, top, &o, &part), RMF_OK, "");
     if (!part) return;
-    CHECK_STATUS(rmf_cone_spline_part_report(part, &r), RMF_OK, "");
+    CHECK_STATUS(rmf_sheet_part_report(part, &r), RMF_OK, "");
     CHECK(r.closed == 1 && r.pieces > 8, "a closed transition of several pieces");
     CHECK(r.edge_distance[0] <= 1e-2 && r.edge_distance[1] <= 1e-2 && r.deviation <= 1e-2, "within the tolerance");
     CHECK(fabs(r.neutral - 0.4 * 0.02) < 1e-15 && fabs(r.outer - 0.02) < 1e-15 && r.inner == 0, "layers");
     CHECK(r.bend_radius == 0, "corner cones have their vertex on the bottom edge");
-    CHECK_STATUS(rmf_cone_spline_piece_count(part, &count), RMF_OK, "");
-    CHECK(count == r.pieces, "the part is a cone spline of its pieces");
+    CHECK_STATUS(rmf_sheet_part_cone_spline(part, &spline), RMF_OK, "");
+    CHECK_STATUS(rmf_cone_spline_piece_count(spline, &count), RMF_OK, "");
+    CHECK(count == r.pieces, "the part's designed surface is a cone spline of its pieces");
     /* The neutral layer as one NURBS; its first row lies at k·t from the square's plane on
      * the flat triangles. */
-    CHECK_STATUS(rmf_cone_spline_part_surface(part, RMF_SHEET_LAYER_NEUTRAL, &surface), RMF_OK, "");
+    CHECK_STATUS(rmf_sheet_part_surface(part, RMF_SHEET_LAYER_NEUTRAL, &surface), RMF_OK, "");
     if (surface) {
         CHECK_STATUS(rmf_surface_nurbs(surface, &view), RMF_OK, "");
         CHECK(view.degree_u == 1 && view.pole_count_u == 2, "degree 1 along the rulings");
         rmf_surface_free(surface);
     }
-    CHECK_STATUS(rmf_cone_spline_part_boundary(part, RMF_SHEET_LAYER_REFERENCE, RMF_SHEET_SIDE_SECOND, &edge), RMF_OK, "");
+    CHECK_STATUS(rmf_sheet_part_boundary(part, RMF_SHEET_LAYER_REFERENCE, RMF_SHEET_SIDE_SECOND, &edge), RMF_OK, "");
     if (edge) {
         CHECK_STATUS(rmf_curve_nurbs(edge, &edge_view), RMF_OK, "");
         for (i = 0; i <= 200; i++) {
@@ -178,13 +218,13 @@ static void test_part(RmfCurve *bottom, RmfCurve *top) {
         rmf_curve_free(edge);
     }
     /* Flat pattern: size query, too small a buffer, the edges. */
-    CHECK_STATUS(rmf_cone_spline_flat_pattern(part, NULL, 0, &n_edges), RMF_OK, "");
+    CHECK_STATUS(rmf_sheet_part_flat_pattern(part, NULL, 0, &n_edges), RMF_OK, "");
     CHECK(n_edges > 8, "edges counted");
     edges = (RmfFlatEdge *)calloc(n_edges, sizeof(RmfFlatEdge));
     count = 0;
-    CHECK_STATUS(rmf_cone_spline_flat_pattern(part, edges, 2, &count), RMF_ERROR_BUFFER_TOO_SMALL, "need");
+    CHECK_STATUS(rmf_sheet_part_flat_pattern(part, edges, 2, &count), RMF_ERROR_BUFFER_TOO_SMALL, "need");
     CHECK(count == n_edges, "the needed count is written");
-    CHECK_STATUS(rmf_cone_spline_flat_pattern(part, edges, n_edges, &count), RMF_OK, "");
+    CHECK_STATUS(rmf_sheet_part_flat_pattern(part, edges, n_edges, &count), RMF_OK, "");
     for (i = 0; i < n_edges; i++) cut += edges[i].layer == RMF_FLAT_CUT;
     for (i = 0; i < cut; i++) {
         const RmfFlatEdge *a = &edges[i], *b = &edges[(i + 1) % cut];
@@ -200,44 +240,44 @@ static void test_part(RmfCurve *bottom, RmfCurve *top) {
             flat[k].x = edges[i].from.x + s * (edges[i].to.x - edges[i].from.x);
             flat[k].y = edges[i].from.y + s * (edges[i].to.y - edges[i].from.y);
         }
-        CHECK_STATUS(rmf_cone_spline_flat_to_surface(part, flat, 3, RMF_SHEET_LAYER_NEUTRAL, points, normals), RMF_OK, "");
-        CHECK_STATUS(rmf_cone_spline_surface_to_flat(part, points, 3, RMF_SHEET_LAYER_NEUTRAL, 1e-12, back), RMF_OK, "");
+        CHECK_STATUS(rmf_sheet_part_flat_to_surface(part, flat, 3, RMF_SHEET_LAYER_NEUTRAL, points, normals), RMF_OK, "");
+        CHECK_STATUS(rmf_sheet_part_surface_to_flat(part, points, 3, RMF_SHEET_LAYER_NEUTRAL, 1e-12, back), RMF_OK, "");
         for (k = 0; k < 3; k++) {
             CHECK(hypot(back[k].x - flat[k].x, back[k].y - flat[k].y) < 1e-13, "marks round trip");
             CHECK(fabs(ne_norm(normals[k]) - 1) < 1e-14, "unit normals");
         }
-        CHECK_STATUS(rmf_cone_spline_flat_to_surface(part, flat, 3, RMF_SHEET_LAYER_OUTER, points, NULL), RMF_OK, "");
+        CHECK_STATUS(rmf_sheet_part_flat_to_surface(part, flat, 3, RMF_SHEET_LAYER_OUTER, points, NULL), RMF_OK, "");
         flat[2].x = 1e3;
         points[0] = sentinel3;
-        CHECK_STATUS(rmf_cone_spline_flat_to_surface(part, flat, 3, RMF_SHEET_LAYER_NEUTRAL, points, NULL),
+        CHECK_STATUS(rmf_sheet_part_flat_to_surface(part, flat, 3, RMF_SHEET_LAYER_NEUTRAL, points, NULL),
                      RMF_ERROR_INVALID_INPUT, "flat[2]");
         CHECK(points[0].x == 7, "nothing written on failure");
-        CHECK_STATUS(rmf_cone_spline_flat_to_surface(part, flat, 3, 17, points, NULL), RMF_ERROR_INVALID_INPUT, "layer");
-        CHECK_STATUS(rmf_cone_spline_flat_to_surface(part, flat, 1, RMF_SHEET_LAYER_OUTER, points, NULL), RMF_OK, "");
+        CHECK_STATUS(rmf_sheet_part_flat_to_surface(part, flat, 3, 17, points, NULL), RMF_ERROR_INVALID_INPUT, "layer");
+        CHECK_STATUS(rmf_sheet_part_flat_to_surface(part, flat, 1, RMF_SHEET_LAYER_OUTER, points, NULL), RMF_OK, "");
         points[1] = vec3(5, 5, 5);
         back[0] = sentinel2;
-        CHECK_STATUS(rmf_cone_spline_surface_to_flat(part, points, 2, RMF_SHEET_LAYER_OUTER, 1e-6, back),
+        CHECK_STATUS(rmf_sheet_part_surface_to_flat(part, points, 2, RMF_SHEET_LAYER_OUTER, 1e-6, back),
                      RMF_ERROR_INVALID_INPUT, "points[1]");
         CHECK(back[0].x == 7, "nothing written on failure");
-        CHECK_STATUS(rmf_cone_spline_surface_to_flat(part, points, 2, RMF_SHEET_LAYER_OUTER, -1, back),
+        CHECK_STATUS(rmf_sheet_part_surface_to_flat(part, points, 2, RMF_SHEET_LAYER_OUTER, -1, back),
                      RMF_ERROR_INVALID_INPUT, "max_distance");
-        CHECK_STATUS(rmf_cone_spline_flat_to_surface(part, NULL, 3, RMF_SHEET_LAYER_NEUTRAL, points, NULL),
+        CHECK_STATUS(rmf_sheet_part_flat_to_surface(part, NULL, 3, RMF_SHEET_LAYER_NEUTRAL, points, NULL),
                      RMF_ERROR_NULL_POINTER, "flat");
-        CHECK_STATUS(rmf_cone_spline_surface_to_flat(part, points, 3, RMF_SHEET_LAYER_NEUTRAL, 1, NULL),
+        CHECK_STATUS(rmf_sheet_part_surface_to_flat(part, points, 3, RMF_SHEET_LAYER_NEUTRAL, 1, NULL),
                      RMF_ERROR_NULL_POINTER, "flat");
     }
     free(edges);
     /* Exports: size query, too small, the text with its NUL. */
-    CHECK_STATUS(rmf_cone_spline_part_export(part, RMF_SHEET_FORMAT_DXF, NULL, 0, &length), RMF_OK, "");
+    CHECK_STATUS(rmf_sheet_part_export(part, RMF_SHEET_FORMAT_DXF, NULL, 0, &length), RMF_OK, "");
     text = (char *)malloc(length + 1);
-    CHECK_STATUS(rmf_cone_spline_part_export(part, RMF_SHEET_FORMAT_DXF, text, length, &length),
+    CHECK_STATUS(rmf_sheet_part_export(part, RMF_SHEET_FORMAT_DXF, text, length, &length),
                  RMF_ERROR_BUFFER_TOO_SMALL, "NUL");
-    CHECK_STATUS(rmf_cone_spline_part_export(part, RMF_SHEET_FORMAT_DXF, text, length + 1, &length), RMF_OK, "");
+    CHECK_STATUS(rmf_sheet_part_export(part, RMF_SHEET_FORMAT_DXF, text, length + 1, &length), RMF_OK, "");
     CHECK(text[length] == '\0' && strstr(text, "ARC") && strstr(text, "BEND") && !strstr(text, "POLYLINE"), "DXF");
     free(text);
-    CHECK_STATUS(rmf_cone_spline_part_export(part, RMF_SHEET_FORMAT_STEP_SOLID, NULL, 0, &length), RMF_OK, "");
+    CHECK_STATUS(rmf_sheet_part_export(part, RMF_SHEET_FORMAT_STEP_SOLID, NULL, 0, &length), RMF_OK, "");
     text = (char *)malloc(length + 1);
-    CHECK_STATUS(rmf_cone_spline_part_export(part, RMF_SHEET_FORMAT_STEP_SOLID, text, length + 1, &length), RMF_OK, "");
+    CHECK_STATUS(rmf_sheet_part_export(part, RMF_SHEET_FORMAT_STEP_SOLID, text, length + 1, &length), RMF_OK, "");
     CHECK(strstr(text, "MANIFOLD_SOLID_BREP") && strstr(text, "CLOSED_SHELL"), "a STEP solid");
     {
         /* The same solid in OpenCascade's B-rep text: one face record per STEP face, the
@@ -245,11 +285,11 @@ static void test_part(RmfCurve *bottom, RmfCurve *top) {
         size_t step_faces = 0, occ_faces = 0, occ_length = 0;
         char *occ;
         for (const char *at = text; (at = strstr(at, "ADVANCED_FACE(")) != NULL; ++at) ++step_faces;
-        CHECK_STATUS(rmf_cone_spline_part_export(part, RMF_SHEET_FORMAT_OCC_BREP, NULL, 0, &occ_length), RMF_OK, "");
+        CHECK_STATUS(rmf_sheet_part_export(part, RMF_SHEET_FORMAT_OCC_BREP, NULL, 0, &occ_length), RMF_OK, "");
         occ = (char *)malloc(occ_length + 1);
-        CHECK_STATUS(rmf_cone_spline_part_export(part, RMF_SHEET_FORMAT_OCC_BREP, occ, occ_length, &occ_length),
+        CHECK_STATUS(rmf_sheet_part_export(part, RMF_SHEET_FORMAT_OCC_BREP, occ, occ_length, &occ_length),
                      RMF_ERROR_BUFFER_TOO_SMALL, "NUL");
-        CHECK_STATUS(rmf_cone_spline_part_export(part, RMF_SHEET_FORMAT_OCC_BREP, occ, occ_length + 1, &occ_length),
+        CHECK_STATUS(rmf_sheet_part_export(part, RMF_SHEET_FORMAT_OCC_BREP, occ, occ_length + 1, &occ_length),
                      RMF_OK, "");
         for (const char *at = occ; (at = strstr(at, "\nFa\n")) != NULL; ++at) ++occ_faces;
         CHECK(strncmp(occ, "\nCASCADE Topology V1, (c) Matra-Datavision\n", 43) == 0 && occ_faces == step_faces &&
@@ -258,18 +298,19 @@ static void test_part(RmfCurve *bottom, RmfCurve *top) {
         free(occ);
     }
     free(text);
-    CHECK_STATUS(rmf_cone_spline_part_export(part, 99, NULL, 0, &length), RMF_ERROR_INVALID_INPUT, "format");
-    CHECK_STATUS(rmf_cone_spline_part_export(part, RMF_SHEET_FORMAT_SVG, NULL, 0, NULL), RMF_ERROR_NULL_POINTER, "length");
-    CHECK_STATUS(rmf_cone_spline_part_export(part, RMF_SHEET_FORMAT_SVG, NULL, 5, &length), RMF_ERROR_NULL_POINTER, "buffer");
-    /* A cone spline that is not a part. */
-    CHECK_STATUS(rmf_cone_spline_hermite(els, 2, RMF_CONE_RULE_MIN_VERTEX_DISTANCE, 0, NULL, &not_part), RMF_OK, "");
-    CHECK_STATUS(rmf_cone_spline_part_report(not_part, &r), RMF_ERROR_INVALID_INPUT, "not a sheet-metal part");
-    CHECK_STATUS(rmf_cone_spline_part_surface(not_part, RMF_SHEET_LAYER_NEUTRAL, &surface), RMF_ERROR_INVALID_INPUT, "part");
-    CHECK_STATUS(rmf_cone_spline_part_report(NULL, &r), RMF_ERROR_NULL_POINTER, "part");
-    CHECK_STATUS(rmf_cone_spline_part_report(part, NULL), RMF_ERROR_NULL_POINTER, "report");
-    CHECK_STATUS(rmf_cone_spline_part_boundary(part, RMF_SHEET_LAYER_INNER, 4, &edge), RMF_ERROR_INVALID_INPUT, "side");
-    rmf_cone_spline_free(not_part);
-    rmf_cone_spline_free(part);
+    CHECK_STATUS(rmf_sheet_part_export(part, 99, NULL, 0, &length), RMF_ERROR_INVALID_INPUT, "format");
+    CHECK_STATUS(rmf_sheet_part_export(part, RMF_SHEET_FORMAT_SVG, NULL, 0, NULL), RMF_ERROR_NULL_POINTER, "length");
+    CHECK_STATUS(rmf_sheet_part_export(part, RMF_SHEET_FORMAT_SVG, NULL, 5, &length), RMF_ERROR_NULL_POINTER, "buffer");
+    CHECK_STATUS(rmf_sheet_part_report(NULL, &r), RMF_ERROR_NULL_POINTER, "part");
+    CHECK_STATUS(rmf_sheet_part_cone_spline(part, NULL), RMF_ERROR_NULL_POINTER, "out");
+    CHECK_STATUS(rmf_sheet_part_report(part, NULL), RMF_ERROR_NULL_POINTER, "report");
+    CHECK_STATUS(rmf_sheet_part_boundary(part, RMF_SHEET_LAYER_INNER, 4, &edge), RMF_ERROR_INVALID_INPUT, "side");
+    check_deprecated_part_calls(bottom, top, &o, part, els);
+    rmf_sheet_part_free(part);
+    /* The cone spline outlives the part it came from. */
+    CHECK_STATUS(rmf_cone_spline_piece_count(spline, &count), RMF_OK, "");
+    CHECK(count == r.pieces, "the cone spline stays valid after rmf_sheet_part_free");
+    rmf_cone_spline_free(spline);
 }
 
 /* The rail x(t) + s x'(t) of the twisted cubic x = (t, t², t³). */
@@ -361,7 +402,7 @@ static void test_rails(void) {
     static const RmfVec3 saddle_poles[4] = {{-1, -1, 1}, {-1, 1, -1}, {1, -1, -1}, {1, 1, 1}};
     static const double unit[4] = {0, 0, 1, 1};
     RmfSurface *surface = NULL, *saddle = NULL, *neutral = NULL;
-    RmfConeSpline *part = NULL, *untouched = sentinel_part();
+    RmfSheetPart *part = NULL, *untouched = sentinel_part();
     RmfSheetOptions o;
     RmfSheetReport r;
     RmfNurbsSurface view;
@@ -378,16 +419,16 @@ static void test_rails(void) {
     o.tolerance = 1e-4;
     o.thickness = 0.02;
     o.flat_tolerance = 1e-9;
-    CHECK_STATUS(rmf_cone_spline_part(surface, &o, &part), RMF_OK, "");
+    CHECK_STATUS(rmf_sheet_part_between_rails(surface, &o, &part), RMF_OK, "");
     if (part) {
         double worst[2] = {0, 0}, flat, formed = 0;
-        CHECK_STATUS(rmf_cone_spline_part_report(part, &r), RMF_OK, "");
+        CHECK_STATUS(rmf_sheet_part_report(part, &r), RMF_OK, "");
         CHECK(r.closed == 0 && r.pieces >= 2, "an open part of several pieces");
         CHECK(r.deviation <= 1e-4 && r.edge_distance[0] <= 1e-4 && r.edge_distance[1] <= 1e-4, "within the tolerance");
         for (side = 0; side < 2; side++) {
             RmfCurve *edge = NULL;
             RmfNurbsCurve ev;
-            CHECK_STATUS(rmf_cone_spline_part_boundary(part, RMF_SHEET_LAYER_REFERENCE, (uint32_t)side, &edge), RMF_OK, "");
+            CHECK_STATUS(rmf_sheet_part_boundary(part, RMF_SHEET_LAYER_REFERENCE, (uint32_t)side, &edge), RMF_OK, "");
             if (!edge) continue;
             CHECK_STATUS(rmf_curve_nurbs(edge, &ev), RMF_OK, "");
             for (i = 0; i <= 400; i++) {
@@ -402,11 +443,11 @@ static void test_rails(void) {
                worst[0], worst[1]);
         CHECK(worst[0] <= 1e-4 && worst[1] <= 1e-4, "the edges lie within the tolerance of the rails");
         CHECK(worst[0] > 1e-9 || worst[1] > 1e-9, "the measurement sees the fit (not trivially zero)");
-        CHECK_STATUS(rmf_cone_spline_flat_pattern(part, NULL, 0, &n_edges), RMF_OK, "");
+        CHECK_STATUS(rmf_sheet_part_flat_pattern(part, NULL, 0, &n_edges), RMF_OK, "");
         edges = (RmfFlatEdge *)calloc(n_edges, sizeof(RmfFlatEdge));
-        CHECK_STATUS(rmf_cone_spline_flat_pattern(part, edges, n_edges, &count), RMF_OK, "");
+        CHECK_STATUS(rmf_sheet_part_flat_pattern(part, edges, n_edges, &count), RMF_OK, "");
         flat = outline_area(edges, count);
-        CHECK_STATUS(rmf_cone_spline_part_surface(part, RMF_SHEET_LAYER_NEUTRAL, &neutral), RMF_OK, "");
+        CHECK_STATUS(rmf_sheet_part_surface(part, RMF_SHEET_LAYER_NEUTRAL, &neutral), RMF_OK, "");
         if (neutral) {
             CHECK_STATUS(rmf_surface_nurbs(neutral, &view), RMF_OK, "");
             formed = nurbs_area(&view);
@@ -415,7 +456,7 @@ static void test_rails(void) {
         printf("  flat area %.12f vs formed neutral %.12f (relative %.1e)\n", flat, formed, fabs(flat - formed) / formed);
         CHECK(flat > 0 && fabs(flat - formed) <= 1e-9 * formed, "flat area = formed neutral area to 1e-9");
         free(edges);
-        rmf_cone_spline_free(part);
+        rmf_sheet_part_free(part);
     }
     /* The tangent surface form: the twisted cubic itself, rails at 0.3 and 0.9. */
     {
@@ -424,26 +465,26 @@ static void test_rails(void) {
         for (i = 0; i < 4; i++) cp[i] = rail_pole(0.0, 0.2, 1.2, i);
         CHECK_STATUS(rmf_nurbs_curve_create(3, cp, NULL, 4, knots, 8, &curve), RMF_OK, "");
         part = NULL;
-        CHECK_STATUS(rmf_cone_spline_tangent_part(curve, 0.3, 0.9, &o, &part), RMF_OK, "");
+        CHECK_STATUS(rmf_sheet_part_tangent(curve, 0.3, 0.9, &o, &part), RMF_OK, "");
         if (part) {
-            CHECK_STATUS(rmf_cone_spline_part_report(part, &r), RMF_OK, "");
+            CHECK_STATUS(rmf_sheet_part_report(part, &r), RMF_OK, "");
             CHECK(r.edge_distance[0] <= 1e-4 && r.edge_distance[1] <= 1e-4, "tangent part within the tolerance");
-            rmf_cone_spline_free(part);
+            rmf_sheet_part_free(part);
         }
-        CHECK_STATUS(rmf_cone_spline_tangent_part(curve, -0.3, 0.9, &o, &untouched), RMF_ERROR_INVALID_INPUT, "contains 0");
-        CHECK_STATUS(rmf_cone_spline_tangent_part(curve, 0.9, 0.3, &o, &untouched), RMF_ERROR_INVALID_INPUT, "v_min");
-        CHECK_STATUS(rmf_cone_spline_tangent_part(curve, NAN, 0.3, &o, &untouched), RMF_ERROR_INVALID_INPUT, "v_min");
-        CHECK_STATUS(rmf_cone_spline_tangent_part(NULL, 0.3, 0.9, &o, &untouched), RMF_ERROR_NULL_POINTER, "curve");
-        CHECK_STATUS(rmf_cone_spline_tangent_part(curve, 0.3, 0.9, &o, NULL), RMF_ERROR_NULL_POINTER, "out");
+        CHECK_STATUS(rmf_sheet_part_tangent(curve, -0.3, 0.9, &o, &untouched), RMF_ERROR_INVALID_INPUT, "contains 0");
+        CHECK_STATUS(rmf_sheet_part_tangent(curve, 0.9, 0.3, &o, &untouched), RMF_ERROR_INVALID_INPUT, "v_min");
+        CHECK_STATUS(rmf_sheet_part_tangent(curve, NAN, 0.3, &o, &untouched), RMF_ERROR_INVALID_INPUT, "v_min");
+        CHECK_STATUS(rmf_sheet_part_tangent(NULL, 0.3, 0.9, &o, &untouched), RMF_ERROR_NULL_POINTER, "curve");
+        CHECK_STATUS(rmf_sheet_part_tangent(curve, 0.3, 0.9, &o, NULL), RMF_ERROR_NULL_POINTER, "out");
         rmf_curve_free(curve);
     }
     /* Bad inputs: not developable, NULL, bad options; nothing written. */
     CHECK_STATUS(rmf_nurbs_surface_create(1, 1, saddle_poles, NULL, 2, 2, unit, 4, unit, 4, &saddle), RMF_OK, "");
-    CHECK_STATUS(rmf_cone_spline_part(saddle, &o, &untouched), RMF_ERROR_INVALID_INPUT, "not developable");
-    CHECK_STATUS(rmf_cone_spline_part(NULL, &o, &untouched), RMF_ERROR_NULL_POINTER, "surface");
-    CHECK_STATUS(rmf_cone_spline_part(surface, &o, NULL), RMF_ERROR_NULL_POINTER, "out");
+    CHECK_STATUS(rmf_sheet_part_between_rails(saddle, &o, &untouched), RMF_ERROR_INVALID_INPUT, "not developable");
+    CHECK_STATUS(rmf_sheet_part_between_rails(NULL, &o, &untouched), RMF_ERROR_NULL_POINTER, "surface");
+    CHECK_STATUS(rmf_sheet_part_between_rails(surface, &o, NULL), RMF_ERROR_NULL_POINTER, "out");
     o.k_factor = -0.1;
-    CHECK_STATUS(rmf_cone_spline_part(surface, &o, &untouched), RMF_ERROR_INVALID_INPUT, "options->k_factor");
+    CHECK_STATUS(rmf_sheet_part_between_rails(surface, &o, &untouched), RMF_ERROR_INVALID_INPUT, "options->k_factor");
     CHECK(untouched == sentinel_part(), "failing calls write nothing");
     rmf_surface_free(saddle);
     rmf_surface_free(surface);

@@ -60,15 +60,15 @@ static RmfCurve *circle_curve() {
     return c;
 }
 
-static RmfConeSpline *hopper(double tolerance) {
+static RmfSheetPart *hopper(double tolerance) {
     RmfCurve *bottom = square_curve(), *top = circle_curve();
     RmfSheetOptions o;
     rmf_sheet_options_init(&o);
     o.tolerance = tolerance;
     o.thickness = 2;
     o.k_factor = 0.4;
-    RmfConeSpline *part = nullptr;
-    CHECK_STATUS(rmf_cone_spline_transition(bottom, top, &o, &part), RMF_OK, "");
+    RmfSheetPart *part = nullptr;
+    CHECK_STATUS(rmf_sheet_part_transition(bottom, top, &o, &part), RMF_OK, "");
     rmf_curve_free(bottom);
     rmf_curve_free(top);
     return part;
@@ -97,9 +97,9 @@ static double square_distance(RmfVec3 p) {
 static double circle_distance(RmfVec3 p) { return std::hypot(std::hypot(p.x - 20, p.y) - 60, p.z - 150); }
 
 /* Largest distance of a boundary curve (sampled in every knot span) from an input curve. */
-static double edge_distance(RmfConeSpline *part, uint32_t side, double (*distance)(RmfVec3)) {
+static double edge_distance(RmfSheetPart *part, uint32_t side, double (*distance)(RmfVec3)) {
     RmfCurve *edge = nullptr;
-    CHECK_STATUS(rmf_cone_spline_part_boundary(part, RMF_SHEET_LAYER_REFERENCE, side, &edge), RMF_OK, "");
+    CHECK_STATUS(rmf_sheet_part_boundary(part, RMF_SHEET_LAYER_REFERENCE, side, &edge), RMF_OK, "");
     if (!edge) return 1e300;
     RmfNurbsCurve view;
     rmf_curve_nurbs(edge, &view);
@@ -116,9 +116,9 @@ static double edge_distance(RmfConeSpline *part, uint32_t side, double (*distanc
 }
 
 /* Length of a layer's boundary by Gauss–Legendre quadrature per knot span. */
-static double boundary_length(RmfConeSpline *part, uint32_t layer, uint32_t side) {
+static double boundary_length(RmfSheetPart *part, uint32_t layer, uint32_t side) {
     RmfCurve *edge = nullptr;
-    CHECK_STATUS(rmf_cone_spline_part_boundary(part, layer, side, &edge), RMF_OK, "");
+    CHECK_STATUS(rmf_sheet_part_boundary(part, layer, side, &edge), RMF_OK, "");
     if (!edge) return 0;
     RmfNurbsCurve view;
     rmf_curve_nurbs(edge, &view);
@@ -138,9 +138,9 @@ static double boundary_length(RmfConeSpline *part, uint32_t layer, uint32_t side
 }
 
 /* The NURBS view of a layer (the surface handle is returned for freeing). */
-static RmfSurface *layer_surface(RmfConeSpline *part, uint32_t layer, RmfNurbsSurface *view) {
+static RmfSurface *layer_surface(RmfSheetPart *part, uint32_t layer, RmfNurbsSurface *view) {
     RmfSurface *s = nullptr;
-    CHECK_STATUS(rmf_cone_spline_part_surface(part, layer, &s), RMF_OK, "");
+    CHECK_STATUS(rmf_sheet_part_surface(part, layer, &s), RMF_OK, "");
     if (s) CHECK_STATUS(rmf_surface_nurbs(s, view), RMF_OK, "");
     return s;
 }
@@ -333,10 +333,10 @@ static SurfaceReport developability(const RmfNurbsSurface &view) {
 
 int main() {
     std::setvbuf(stdout, nullptr, _IONBF, 0);
-    RmfConeSpline *part = hopper(1e-4);
+    RmfSheetPart *part = hopper(1e-4);
     if (!part) return rmf_check_exit_code("geometry_sheet");
     RmfSheetReport report;
-    rmf_cone_spline_part_report(part, &report);
+    rmf_sheet_part_report(part, &report);
 
     std::printf("A. hopper edges against the input curves (own evaluator), tolerance 1e-4\n");
     const double bottom = edge_distance(part, RMF_SHEET_SIDE_FIRST, square_distance);
@@ -363,9 +363,9 @@ int main() {
 
     std::printf("C. the DXF flat pattern against the formed neutral layer\n");
     size_t length = 0;
-    rmf_cone_spline_part_export(part, RMF_SHEET_FORMAT_DXF, nullptr, 0, &length);
+    rmf_sheet_part_export(part, RMF_SHEET_FORMAT_DXF, nullptr, 0, &length);
     std::string dxf(length + 1, '\0');
-    CHECK_STATUS(rmf_cone_spline_part_export(part, RMF_SHEET_FORMAT_DXF, &dxf[0], length + 1, &length), RMF_OK, "");
+    CHECK_STATUS(rmf_sheet_part_export(part, RMF_SHEET_FORMAT_DXF, &dxf[0], length + 1, &length), RMF_OK, "");
     dxf.resize(length);
     const std::vector<DxfEdge> cut = read_dxf(dxf, "CUT"), bend = read_dxf(dxf, "BEND");
     const Chained loop = chain(cut, 1e-9);
@@ -421,8 +421,8 @@ int main() {
     }
     std::vector<RmfVec3> points(flat.size());
     std::vector<RmfVec2> back(flat.size());
-    CHECK_STATUS(rmf_cone_spline_flat_to_surface(part, flat.data(), flat.size(), RMF_SHEET_LAYER_NEUTRAL, points.data(), nullptr), RMF_OK, "");
-    CHECK_STATUS(rmf_cone_spline_surface_to_flat(part, points.data(), points.size(), RMF_SHEET_LAYER_NEUTRAL, 1e-9 * size, back.data()), RMF_OK, "");
+    CHECK_STATUS(rmf_sheet_part_flat_to_surface(part, flat.data(), flat.size(), RMF_SHEET_LAYER_NEUTRAL, points.data(), nullptr), RMF_OK, "");
+    CHECK_STATUS(rmf_sheet_part_surface_to_flat(part, points.data(), points.size(), RMF_SHEET_LAYER_NEUTRAL, 1e-9 * size, back.data()), RMF_OK, "");
     double round_trip = 0, on_surface = 0, geodesic = 0;
     for (size_t k = 0; k < flat.size(); ++k) round_trip = std::max(round_trip, std::hypot(back[k].x - flat[k].x, back[k].y - flat[k].y) / size);
     for (size_t k = 0; k < flat.size(); k += 25) on_surface = std::max(on_surface, surface_distance(neutral, points[k]) / size);
@@ -439,7 +439,7 @@ int main() {
             std::vector<RmfVec2> seg(m + 1);
             std::vector<RmfVec3> img(m + 1);
             for (int j = 0; j <= m; ++j) seg[j] = RmfVec2{flat[k].x + (q.x - flat[k].x) * j / m, flat[k].y + (q.y - flat[k].y) * j / m};
-            CHECK_STATUS(rmf_cone_spline_flat_to_surface(part, seg.data(), seg.size(), RMF_SHEET_LAYER_NEUTRAL, img.data(), nullptr), RMF_OK, "");
+            CHECK_STATUS(rmf_sheet_part_flat_to_surface(part, seg.data(), seg.size(), RMF_SHEET_LAYER_NEUTRAL, img.data(), nullptr), RMF_OK, "");
             lengths[level] = 0;
             for (int j = 0; j < m; ++j) lengths[level] += ne_dist(img[j], img[j + 1]);
         }
@@ -453,21 +453,21 @@ int main() {
     CHECK(geodesic <= 1e-8, "distances kept (isometry)");
     rmf_surface_free(s_designed);
     rmf_surface_free(s_neutral);
-    rmf_cone_spline_free(part);
+    rmf_sheet_part_free(part);
 
     std::printf("E. pieces per tolerance\n");
     size_t previous = 0;
     for (double tol : {1e-2, 1e-3, 1e-4, 1e-5}) {
-        RmfConeSpline *p = hopper(tol);
+        RmfSheetPart *p = hopper(tol);
         if (!p) continue;
-        rmf_cone_spline_part_report(p, &report);
+        rmf_sheet_part_report(p, &report);
         const double b = edge_distance(p, RMF_SHEET_SIDE_FIRST, square_distance), t = edge_distance(p, RMF_SHEET_SIDE_SECOND, circle_distance);
         std::printf("  tolerance %.0e: %4zu pieces, surface deviation %.3e, edges %.3e / %.3e\n", tol, report.pieces,
                     report.deviation, b, t);
         CHECK(b <= tol && t <= tol && report.deviation <= tol, "within the tolerance");
         CHECK(report.pieces > previous, "more pieces for a smaller tolerance");
         previous = report.pieces;
-        rmf_cone_spline_free(p);
+        rmf_sheet_part_free(p);
     }
     return rmf_check_exit_code("geometry_sheet");
 }

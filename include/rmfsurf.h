@@ -575,6 +575,16 @@ typedef struct RmfFrames RmfFrames;
 typedef struct RmfShape RmfShape;
 
 /**
+ * A sheet-metal part (opaque): a transition piece, a part between the rails of a ruled
+ * developable or of a tangent surface, with its sheet (thickness, K-factor). Made by
+ * rmf_sheet_part_transition, rmf_sheet_part_between_rails or rmf_sheet_part_tangent; freed
+ * with rmf_sheet_part_free. Immutable; may be read from several threads at once.
+ * \since 0.2
+ * \ingroup rmf_sheet
+ */
+typedef struct RmfSheetPart RmfSheetPart;
+
+/**
  * A piecewise rational tensor-product surface s(u, v) (opaque). Freed with
  * rmf_surface_free. Immutable; may be read from several threads at once.
  * \ingroup rmf_surfaces
@@ -4414,6 +4424,28 @@ RmfStatus rmf_shape_brep(const struct RmfShape *shape, struct RmfBrep **out);
 RmfStatus rmf_sheet_options_init(struct RmfSheetOptions *options);
 
 /**
+ * Frees a part; NULL is a no-op. Cone splines from rmf_sheet_part_cone_spline stay valid.
+ *
+ * @param[in] part The part, or NULL.
+ * \since 0.2
+ * \ingroup rmf_sheet
+ */
+void rmf_sheet_part_free(struct RmfSheetPart *part);
+
+/**
+ * The part's designed surface as a cone spline (its pieces, surface strips, bending,
+ * development and offsets through the rmf_cone_spline_* calls).
+ *
+ * @param[in] part A part.
+ * @param[out] out Receives a new cone spline; free it with rmf_cone_spline_free (it stays
+ *             valid after the part is freed). Untouched on failure.
+ * @return RMF_OK or RMF_ERROR_NULL_POINTER.
+ * \since 0.2
+ * \ingroup rmf_sheet
+ */
+RmfStatus rmf_sheet_part_cone_spline(const struct RmfSheetPart *part, struct RmfConeSpline **out);
+
+/**
  * The transition piece between two closed convex planar curves — square-to-round,
  * rectangle-to-round, round-to-round with offset or inclined planes, obround, polygon to
  * polygon, any convex NURBS: the lateral surface of their convex hull, the developable
@@ -4433,8 +4465,7 @@ RmfStatus rmf_sheet_options_init(struct RmfSheetOptions *options);
  * @param[in] top The second boundary.
  * @param[in] options The sheet and tolerances, or NULL for the defaults; read during the
  *            call only.
- * @param[out] out Receives the part (an RmfConeSpline whose pieces are the designed
- *             surface's); free with rmf_cone_spline_free. Untouched on failure.
+ * @param[out] out Receives the part; free with rmf_sheet_part_free. Untouched on failure.
  * @return RMF_OK on success.
  * @return RMF_ERROR_NULL_POINTER If bottom, top or out is NULL.
  * @return RMF_ERROR_INVALID_INPUT If a curve is not closed, not planar or not convex (the
@@ -4447,6 +4478,21 @@ RmfStatus rmf_sheet_options_init(struct RmfSheetOptions *options);
  * \since 0.2
  * \ingroup rmf_sheet
  */
+RmfStatus rmf_sheet_part_transition(const struct RmfCurve *bottom,
+                                    const struct RmfCurve *top,
+                                    const struct RmfSheetOptions *options,
+                                    struct RmfSheetPart **out);
+
+/**
+ * rmf_sheet_part_transition, handing the part out as an RmfConeSpline (the designed surface's cone spline,
+ * holding the part for the rmf_cone_spline_part_* calls); free with rmf_cone_spline_free.
+ *
+ * @param bottom, top, options, out As for rmf_sheet_part_transition.
+ * \deprecated Use rmf_sheet_part_transition; rmf_sheet_part_cone_spline gives the cone spline.
+ * \since 0.2
+ * \ingroup rmf_sheet
+ */
+RMF_DEPRECATED("use rmf_sheet_part_transition")
 RmfStatus rmf_cone_spline_transition(const struct RmfCurve *bottom,
                                      const struct RmfCurve *top,
                                      const struct RmfSheetOptions *options,
@@ -4466,19 +4512,32 @@ RmfStatus rmf_cone_spline_transition(const struct RmfCurve *bottom,
  *            the call only.
  * @param[in] options The sheet and tolerances, or NULL for the defaults; read during the
  *            call only.
- * @param[out] out Receives the part (an RmfConeSpline whose pieces are the designed
- *             surface's); free with rmf_cone_spline_free. Untouched on failure.
+ * @param[out] out Receives the part; free with rmf_sheet_part_free. Untouched on failure.
  * @return RMF_OK on success.
  * @return RMF_ERROR_NULL_POINTER If surface or out is NULL.
  * @return RMF_ERROR_INVALID_INPUT If the surface is not of degree 1 in u with one span, is
  *         not developable (the message gives its max |K|·size²), or an option is out of
- *         range (as for rmf_cone_spline_transition).
+ *         range (as for rmf_sheet_part_transition).
  * @return RMF_ERROR_NO_SOLUTION If a ruling of the surface is degenerate.
  * @return RMF_ERROR_NOT_CONVERGED If the tolerance needs more than max_pieces pieces, or
  *         the cone fit keeps a vertex on the part.
  * \since 0.2
  * \ingroup rmf_sheet
  */
+RmfStatus rmf_sheet_part_between_rails(const struct RmfSurface *surface,
+                                       const struct RmfSheetOptions *options,
+                                       struct RmfSheetPart **out);
+
+/**
+ * rmf_sheet_part_between_rails, handing the part out as an RmfConeSpline (the designed surface's cone spline,
+ * holding the part for the rmf_cone_spline_part_* calls); free with rmf_cone_spline_free.
+ *
+ * @param surface, options, out As for rmf_sheet_part_between_rails.
+ * \deprecated Use rmf_sheet_part_between_rails; rmf_sheet_part_cone_spline gives the cone spline.
+ * \since 0.2
+ * \ingroup rmf_sheet
+ */
+RMF_DEPRECATED("use rmf_sheet_part_between_rails")
 RmfStatus rmf_cone_spline_part(const struct RmfSurface *surface,
                                const struct RmfSheetOptions *options,
                                struct RmfConeSpline **out);
@@ -4486,23 +4545,39 @@ RmfStatus rmf_cone_spline_part(const struct RmfSurface *surface,
 /**
  * The part of the tangent surface x(t) + v·x′(t)/|x′(t)| of a regular curve over the
  * curve's whole domain, between the rails v = v_min and v = v_max: a cone spline within
- * half the tolerance, trimmed on every piece between the two rails, as rmf_cone_spline_part.
+ * half the tolerance, trimmed on every piece between the two rails, as rmf_sheet_part_between_rails.
  *
  * @param[in] curve A regular rational curve (NURBS data or a computed curve; not a
  *            callback curve). Read during the call only.
  * @param[in] v_min, v_max Signed distances along the unit tangent, finite, v_min < v_max,
  *            0 outside [v_min, v_max] (the curve itself is the surface's edge of regression).
  * @param[in] options The sheet and tolerances, or NULL for the defaults.
- * @param[out] out Receives the part; free with rmf_cone_spline_free. Untouched on failure.
+ * @param[out] out Receives the part; free with rmf_sheet_part_free. Untouched on failure.
  * @return RMF_OK on success.
  * @return RMF_ERROR_NULL_POINTER If curve or out is NULL.
  * @return RMF_ERROR_INVALID_INPUT If curve is a callback curve, v_min or v_max is not
  *         finite, v_min ≥ v_max, [v_min, v_max] contains 0, or an option is out of range.
  * @return RMF_ERROR_NO_SOLUTION If the curve is not regular.
- * @return RMF_ERROR_NOT_CONVERGED As for rmf_cone_spline_part.
+ * @return RMF_ERROR_NOT_CONVERGED As for rmf_sheet_part_between_rails.
  * \since 0.2
  * \ingroup rmf_sheet
  */
+RmfStatus rmf_sheet_part_tangent(const struct RmfCurve *curve,
+                                 double v_min,
+                                 double v_max,
+                                 const struct RmfSheetOptions *options,
+                                 struct RmfSheetPart **out);
+
+/**
+ * rmf_sheet_part_tangent, handing the part out as an RmfConeSpline (the designed surface's cone spline,
+ * holding the part for the rmf_cone_spline_part_* calls); free with rmf_cone_spline_free.
+ *
+ * @param curve, v_min, v_max, options, out As for rmf_sheet_part_tangent.
+ * \deprecated Use rmf_sheet_part_tangent; rmf_sheet_part_cone_spline gives the cone spline.
+ * \since 0.2
+ * \ingroup rmf_sheet
+ */
+RMF_DEPRECATED("use rmf_sheet_part_tangent")
 RmfStatus rmf_cone_spline_tangent_part(const struct RmfCurve *curve,
                                        double v_min,
                                        double v_max,
@@ -4513,12 +4588,24 @@ RmfStatus rmf_cone_spline_tangent_part(const struct RmfCurve *curve,
  * What a part's construction measured: pieces, closure, distances of the surface and of
  * the edges from the input, the smallest bend radius, the layers' distances.
  *
- * @param[in] part A part (rmf_cone_spline_transition, _part or _tangent_part).
+ * @param[in] part A part (rmf_sheet_part_transition, _between_rails or _tangent).
  * @param[out] report Receives the report.
- * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if part is not a part.
+ * @return RMF_OK or RMF_ERROR_NULL_POINTER.
  * \since 0.2
  * \ingroup rmf_sheet
  */
+RmfStatus rmf_sheet_part_report(const struct RmfSheetPart *part, struct RmfSheetReport *report);
+
+/**
+ * rmf_sheet_part_report on the part an RmfConeSpline holds (made by rmf_cone_spline_transition,
+ * _part or _tangent_part); RMF_ERROR_INVALID_INPUT for a cone spline that is no part.
+ *
+ * @param part, report As for rmf_sheet_part_report.
+ * \deprecated Use rmf_sheet_part_report.
+ * \since 0.2
+ * \ingroup rmf_sheet
+ */
+RMF_DEPRECATED("use rmf_sheet_part_report")
 RmfStatus rmf_cone_spline_part_report(const struct RmfConeSpline *part,
                                       struct RmfSheetReport *report);
 
@@ -4527,14 +4614,28 @@ RmfStatus rmf_cone_spline_part_report(const struct RmfConeSpline *part,
  * first to the second boundary, v ∈ [k, k + 1] on piece k, G1 across the rulings (except
  * at creases); exact rational (degree 1 in u).
  *
- * @param[in] part A part (rmf_cone_spline_transition, _part or _tangent_part).
+ * @param[in] part A part (rmf_sheet_part_transition, _between_rails or _tangent).
  * @param[in] layer RMF_SHEET_LAYER_*.
  * @param[out] out Receives the surface; free with rmf_surface_free.
- * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT for an unknown layer
- *         or a handle that is not a part.
+ * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT for an unknown
+ *         layer.
  * \since 0.2
  * \ingroup rmf_sheet
  */
+RmfStatus rmf_sheet_part_surface(const struct RmfSheetPart *part,
+                                 RmfSheetLayer layer,
+                                 struct RmfSurface **out);
+
+/**
+ * rmf_sheet_part_surface on the part an RmfConeSpline holds (made by rmf_cone_spline_transition,
+ * _part or _tangent_part); RMF_ERROR_INVALID_INPUT for a cone spline that is no part.
+ *
+ * @param part, layer, out As for rmf_sheet_part_surface.
+ * \deprecated Use rmf_sheet_part_surface.
+ * \since 0.2
+ * \ingroup rmf_sheet
+ */
+RMF_DEPRECATED("use rmf_sheet_part_surface")
 RmfStatus rmf_cone_spline_part_surface(const struct RmfConeSpline *part,
                                        RmfSheetLayer layer,
                                        struct RmfSurface **out);
@@ -4544,7 +4645,7 @@ RmfStatus rmf_cone_spline_part_surface(const struct RmfConeSpline *part,
  * surface's v parameter: on the designed surface within the tolerance of the input's
  * curve (exactly in its plane for transitions).
  *
- * @param[in] part A part (rmf_cone_spline_transition, _part or _tangent_part).
+ * @param[in] part A part (rmf_sheet_part_transition, _between_rails or _tangent).
  * @param[in] layer RMF_SHEET_LAYER_*.
  * @param[in] side RMF_SHEET_SIDE_FIRST or RMF_SHEET_SIDE_SECOND.
  * @param[out] out Receives the curve; free with rmf_curve_free.
@@ -4552,6 +4653,21 @@ RmfStatus rmf_cone_spline_part_surface(const struct RmfConeSpline *part,
  * \since 0.2
  * \ingroup rmf_sheet
  */
+RmfStatus rmf_sheet_part_boundary(const struct RmfSheetPart *part,
+                                  RmfSheetLayer layer,
+                                  RmfSheetSide side,
+                                  struct RmfCurve **out);
+
+/**
+ * rmf_sheet_part_boundary on the part an RmfConeSpline holds (made by rmf_cone_spline_transition,
+ * _part or _tangent_part); RMF_ERROR_INVALID_INPUT for a cone spline that is no part.
+ *
+ * @param part, layer, side, out As for rmf_sheet_part_boundary.
+ * \deprecated Use rmf_sheet_part_boundary.
+ * \since 0.2
+ * \ingroup rmf_sheet
+ */
+RMF_DEPRECATED("use rmf_sheet_part_boundary")
 RmfStatus rmf_cone_spline_part_boundary(const struct RmfConeSpline *part,
                                         RmfSheetLayer layer,
                                         RmfSheetSide side,
@@ -4567,7 +4683,7 @@ RmfStatus rmf_cone_spline_part_boundary(const struct RmfConeSpline *part,
  *
  * Size query: with capacity 0 (edges may be NULL) only count is written.
  *
- * @param[in] part A part (rmf_cone_spline_transition, _part or _tangent_part).
+ * @param[in] part A part (rmf_sheet_part_transition, _between_rails or _tangent).
  * @param[out] edges Buffer for capacity edges: the outline first, then the bend lines.
  * @param[in] capacity Capacity of edges; 0 for a size query.
  * @param[out] count Receives the number of edges.
@@ -4575,10 +4691,24 @@ RmfStatus rmf_cone_spline_part_boundary(const struct RmfConeSpline *part,
  * @return RMF_ERROR_NULL_POINTER If part or count is NULL, or edges is NULL with a
  *         non-zero capacity.
  * @return RMF_ERROR_BUFFER_TOO_SMALL If capacity is non-zero but too small; count is written.
- * @return RMF_ERROR_INVALID_INPUT If the handle is not a part.
  * \since 0.2
  * \ingroup rmf_sheet
  */
+RmfStatus rmf_sheet_part_flat_pattern(const struct RmfSheetPart *part,
+                                      struct RmfFlatEdge *edges,
+                                      size_t capacity,
+                                      size_t *count);
+
+/**
+ * rmf_sheet_part_flat_pattern on the part an RmfConeSpline holds (made by rmf_cone_spline_transition,
+ * _part or _tangent_part); RMF_ERROR_INVALID_INPUT for a cone spline that is no part.
+ *
+ * @param part, edges, capacity, count As for rmf_sheet_part_flat_pattern.
+ * \deprecated Use rmf_sheet_part_flat_pattern.
+ * \since 0.2
+ * \ingroup rmf_sheet
+ */
+RMF_DEPRECATED("use rmf_sheet_part_flat_pattern")
 RmfStatus rmf_cone_spline_flat_pattern(const struct RmfConeSpline *part,
                                        struct RmfFlatEdge *edges,
                                        size_t capacity,
@@ -4587,13 +4717,13 @@ RmfStatus rmf_cone_spline_flat_pattern(const struct RmfConeSpline *part,
 /**
  * Marks from the flat pattern to the formed part — holes, slots, text outlines, fold
  * marks, given as points (curves as polylines): each flat point (coordinates of
- * rmf_cone_spline_flat_pattern) to the point of `layer` straight across the sheet from
+ * rmf_sheet_part_flat_pattern) to the point of `layer` straight across the sheet from
  * its image on the neutral layer, by the exact isometry of the development (per piece a
  * rotation by f·φ sin α about the developed vertex against f·φ about the axis, not the
  * NURBS parameters), and optionally the unit normal there (from the inner to the outer
  * face).
  *
- * @param[in] part A part (rmf_cone_spline_transition, _part or _tangent_part).
+ * @param[in] part A part (rmf_sheet_part_transition, _between_rails or _tangent).
  * @param[in] flat count points of the flat pattern.
  * @param[in] count Number of points (0: nothing to do).
  * @param[in] layer RMF_SHEET_LAYER_*.
@@ -4602,11 +4732,27 @@ RmfStatus rmf_cone_spline_flat_pattern(const struct RmfConeSpline *part,
  * @return RMF_OK on success; nothing is written on failure.
  * @return RMF_ERROR_NULL_POINTER If part, flat or points is NULL (count > 0).
  * @return RMF_ERROR_INVALID_INPUT If a point is not finite or lies outside the flat
- *         pattern (the message names it: flat[i]), for an unknown layer, or if the handle
- *         is not a part.
+ *         pattern (the message names it: flat[i]), or for an unknown layer.
  * \since 0.2
  * \ingroup rmf_sheet
  */
+RmfStatus rmf_sheet_part_flat_to_surface(const struct RmfSheetPart *part,
+                                         const struct RmfVec2 *flat,
+                                         size_t count,
+                                         RmfSheetLayer layer,
+                                         struct RmfVec3 *points,
+                                         struct RmfVec3 *normals);
+
+/**
+ * rmf_sheet_part_flat_to_surface on the part an RmfConeSpline holds (made by rmf_cone_spline_transition,
+ * _part or _tangent_part); RMF_ERROR_INVALID_INPUT for a cone spline that is no part.
+ *
+ * @param part, flat, count, layer, points, normals As for rmf_sheet_part_flat_to_surface.
+ * \deprecated Use rmf_sheet_part_flat_to_surface.
+ * \since 0.2
+ * \ingroup rmf_sheet
+ */
+RMF_DEPRECATED("use rmf_sheet_part_flat_to_surface")
 RmfStatus rmf_cone_spline_flat_to_surface(const struct RmfConeSpline *part,
                                           const struct RmfVec2 *flat,
                                           size_t count,
@@ -4619,7 +4765,7 @@ RmfStatus rmf_cone_spline_flat_to_surface(const struct RmfConeSpline *part,
  * max_distance of it) to the flat pattern's point of the neutral layer straight across
  * the sheet, by the exact isometry of the development.
  *
- * @param[in] part A part (rmf_cone_spline_transition, _part or _tangent_part).
+ * @param[in] part A part (rmf_sheet_part_transition, _between_rails or _tangent).
  * @param[in] points count points on the layer.
  * @param[in] count Number of points (0: nothing to do).
  * @param[in] layer RMF_SHEET_LAYER_*.
@@ -4629,11 +4775,27 @@ RmfStatus rmf_cone_spline_flat_to_surface(const struct RmfConeSpline *part,
  * @return RMF_ERROR_NULL_POINTER If part, points or flat is NULL (count > 0).
  * @return RMF_ERROR_INVALID_INPUT If a point is not finite or farther than max_distance
  *         from the layer's part (the message names it: points[i], and gives the distance),
- *         max_distance is negative or not finite, the layer is unknown, or the handle is
- *         not a part.
+ *         max_distance is negative or not finite, or the layer is unknown.
  * \since 0.2
  * \ingroup rmf_sheet
  */
+RmfStatus rmf_sheet_part_surface_to_flat(const struct RmfSheetPart *part,
+                                         const struct RmfVec3 *points,
+                                         size_t count,
+                                         RmfSheetLayer layer,
+                                         double max_distance,
+                                         struct RmfVec2 *flat);
+
+/**
+ * rmf_sheet_part_surface_to_flat on the part an RmfConeSpline holds (made by rmf_cone_spline_transition,
+ * _part or _tangent_part); RMF_ERROR_INVALID_INPUT for a cone spline that is no part.
+ *
+ * @param part, points, count, layer, max_distance, flat As for rmf_sheet_part_surface_to_flat.
+ * \deprecated Use rmf_sheet_part_surface_to_flat.
+ * \since 0.2
+ * \ingroup rmf_sheet
+ */
+RMF_DEPRECATED("use rmf_sheet_part_surface_to_flat")
 RmfStatus rmf_cone_spline_surface_to_flat(const struct RmfConeSpline *part,
                                           const struct RmfVec3 *points,
                                           size_t count,
@@ -4649,7 +4811,7 @@ RmfStatus rmf_cone_spline_surface_to_flat(const struct RmfConeSpline *part,
  * Size query: with capacity 0 (buffer may be NULL) only length is written. Otherwise the
  * text and a terminating NUL are written if capacity ≥ length + 1.
  *
- * @param[in] part A part (rmf_cone_spline_transition, _part or _tangent_part).
+ * @param[in] part A part (rmf_sheet_part_transition, _between_rails or _tangent).
  * @param[in] format RMF_SHEET_FORMAT_*.
  * @param[out] buffer capacity bytes for the text and its NUL.
  * @param[in] capacity Size of buffer in bytes; 0 for a size query.
@@ -4658,10 +4820,26 @@ RmfStatus rmf_cone_spline_surface_to_flat(const struct RmfConeSpline *part,
  * @return RMF_ERROR_NULL_POINTER If part or length is NULL, or buffer is NULL with a
  *         non-zero capacity.
  * @return RMF_ERROR_BUFFER_TOO_SMALL If 0 < capacity ≤ length; length is written.
- * @return RMF_ERROR_INVALID_INPUT For an unknown format or a handle that is not a part.
+ * @return RMF_ERROR_INVALID_INPUT For an unknown format.
  * \since 0.2
  * \ingroup rmf_export
  */
+RmfStatus rmf_sheet_part_export(const struct RmfSheetPart *part,
+                                RmfSheetFormat format,
+                                char *buffer,
+                                size_t capacity,
+                                size_t *length);
+
+/**
+ * rmf_sheet_part_export on the part an RmfConeSpline holds (made by rmf_cone_spline_transition,
+ * _part or _tangent_part); RMF_ERROR_INVALID_INPUT for a cone spline that is no part.
+ *
+ * @param part, format, buffer, capacity, length As for rmf_sheet_part_export.
+ * \deprecated Use rmf_sheet_part_export.
+ * \since 0.2
+ * \ingroup rmf_export
+ */
+RMF_DEPRECATED("use rmf_sheet_part_export")
 RmfStatus rmf_cone_spline_part_export(const struct RmfConeSpline *part,
                                       RmfSheetFormat format,
                                       char *buffer,
@@ -4672,14 +4850,26 @@ RmfStatus rmf_cone_spline_part_export(const struct RmfConeSpline *part,
  * The boundary representation of a sheet-metal part's formed solid (the solid of
  * RMF_SHEET_FORMAT_STEP_SOLID and RMF_SHEET_FORMAT_OCC_BREP).
  *
- * @param[in] part A part (rmf_cone_spline_transition, _part or _tangent_part).
+ * @param[in] part A part (rmf_sheet_part_transition, _between_rails or _tangent).
  * @param[out] out Receives a new B-rep; free it with rmf_brep_free.
- * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT for a cone spline
- *         that is not a part.
+ * @return RMF_OK or RMF_ERROR_NULL_POINTER.
  * \since 0.2
  * \ingroup rmf_brep
  */
-RmfStatus rmf_cone_spline_part_brep(const struct RmfConeSpline *part, struct RmfBrep **out);
+RmfStatus rmf_sheet_part_brep(const struct RmfSheetPart *part, struct RmfBrep **out);
+
+/**
+ * rmf_sheet_part_brep on the part an RmfConeSpline holds (made by rmf_cone_spline_transition,
+ * _part or _tangent_part); RMF_ERROR_INVALID_INPUT for a cone spline that is no part.
+ *
+ * @param part, out As for rmf_sheet_part_brep.
+ * \deprecated Use rmf_sheet_part_brep.
+ * \since 0.2
+ * \ingroup rmf_brep
+ */
+RMF_DEPRECATED("use rmf_sheet_part_brep")
+RmfStatus rmf_cone_spline_part_brep(const struct RmfConeSpline *part,
+                                    struct RmfBrep **out);
 
 /**
  * The message of the last failing call on the calling thread.

@@ -112,7 +112,10 @@ impl ParametricCurve for crate::ph_cubic::spline::PhSpline {
 /// the ends of the domain, where the stencil is one-sided), and rounding contributes
 /// ε|x'|/h to x'' and ε|x'|/h² to x'''. With the turning bound this is about 1e-9 relative
 /// for x'' and 1e-7 for x''' on a helix (measured in the tests of this module).
-pub fn differenced_jet<C: ParametricCurve + ?Sized>(curve: &C, t: f64) -> Result<[DVec3; 4]> {
+pub(crate) fn differenced_jet<C: ParametricCurve + ?Sized>(
+    curve: &C,
+    t: f64,
+) -> Result<[DVec3; 4]> {
     const GOLDEN: f64 = 0.381_966_011_250_105_1;
     const NODES: [f64; 5] = [-2.0, -1.0, 0.0, 1.0, 2.0];
     let (lo, hi) = curve.domain();

@@ -17,7 +17,7 @@ const COINCIDENT: f64 = 1e-10;
 /// Largest coordinate accepted in Hermite data. The constructions work on a unit chord and
 /// scale back, so any size up to here stays finite; beyond it the chord itself (and the
 /// control points built along it) can overflow to infinity.
-pub const MAX_COORDINATE: f64 = 1e300;
+pub(crate) const MAX_COORDINATE: f64 = 1e300;
 
 /// One segment's G1 Hermite data: end points and unit end tangents.
 #[derive(Clone, Copy, Debug, PartialEq)]

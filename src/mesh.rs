@@ -10,7 +10,7 @@ use crate::error::{invalid, Result};
 use glam::DVec3;
 
 /// Largest vertex count of one tessellation (indices are 32-bit).
-pub const MAX_MESH_POINTS: usize = 50_000_000;
+pub(crate) const MAX_MESH_POINTS: usize = 50_000_000;
 
 /// An indexed triangle mesh on a (rows × columns) grid of surface points; point (i, j) is
 /// at index `i * columns + j`, i along u.

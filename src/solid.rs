@@ -230,7 +230,7 @@ pub(crate) mod tests {
 
     /// Every edge of every face used exactly once in each direction: a closed, consistently
     /// oriented 2-manifold surface (the check an STL from OpenSCAD gets, too).
-    pub fn assert_closed_manifold(faces: &[Vec<u32>]) {
+    pub(crate) fn assert_closed_manifold(faces: &[Vec<u32>]) {
         let mut uses: HashMap<(u32, u32), usize> = HashMap::new();
         for f in faces {
             for k in 0..f.len() {

@@ -21,7 +21,7 @@ use crate::frames::compare::nearest_parameter;
 use crate::hermite::hermite_sequence;
 use crate::math::check_finite;
 use crate::mesh::grid_parameters;
-use crate::mobius::{mobius_approximate, mobius_hermite_points};
+use crate::mobius::{approximate as mobius_approximate, hermite_points as mobius_hermite_points};
 use crate::model::FramedCurve;
 use crate::ph_cubic::approximate::{check_g1, ph_spline_approximate};
 use crate::ph_cubic::frenet::ph_frenet_frames;

@@ -20,14 +20,14 @@ use glam::DVec3;
 use std::collections::HashMap;
 
 /// The circular helix (r cos t, r sin t, h t) on [0, 4π].
-pub struct Helix {
+pub(crate) struct Helix {
     pub radius: f64,
     pub pitch: f64,
 }
 
 impl Helix {
     /// Point and derivative at `t`.
-    pub fn at(&self, t: f64) -> (DVec3, DVec3) {
+    pub(crate) fn at(&self, t: f64) -> (DVec3, DVec3) {
         let (r, h) = (self.radius, self.pitch);
         (
             DVec3::new(r * t.cos(), r * t.sin(), h * t),
@@ -41,7 +41,7 @@ impl Helix {
 
     /// The exact RMF: the Frenet frame turned by Ω = −τ σ t (Mäurer & Jüttler, eq. (6);
     /// curvature and torsion are constant).
-    pub fn exact_rmf(&self, t: f64) -> Frame {
+    pub(crate) fn exact_rmf(&self, t: f64) -> Frame {
         let (d1, d2) = (self.at(t).1, self.second_derivative(t));
         let speed_squared = self.radius * self.radius + self.pitch * self.pitch;
         let torsion = self.pitch / speed_squared;
@@ -52,7 +52,7 @@ impl Helix {
 }
 
 /// The unit helix (cos t, sin t, pitch·t): point and derivative.
-pub fn helix(t: f64, pitch: f64) -> (DVec3, DVec3) {
+pub(crate) fn helix(t: f64, pitch: f64) -> (DVec3, DVec3) {
     Helix { radius: 1.0, pitch }.at(t)
 }
 
@@ -68,7 +68,7 @@ impl ParametricCurve for Helix {
 
 /// A planar PH cubic, a Tschirnhausen cubic: legs of lengths 1, q, q² each turning by `turn`
 /// (equal angles and L₂² = L₁L₃, condition (17) of Mäurer & Jüttler with ψ = 0).
-pub fn tschirnhausen(turn: f64, q: f64) -> PhCubic {
+pub(crate) fn tschirnhausen(turn: f64, q: f64) -> PhCubic {
     let leg = |k: f64| DVec3::new((k * turn).cos(), (k * turn).sin(), 0.0) * q.powf(k);
     let b1 = leg(0.0);
     let b2 = b1 + leg(1.0);
@@ -78,7 +78,7 @@ pub fn tschirnhausen(turn: f64, q: f64) -> PhCubic {
 /// A Tschirnhausen cubic in the xy-plane (legs 1, 2, 4 turning by 30°, moved off the origin)
 /// with its rational RMF: f₂ = +z (a constant vector is rotation-minimizing along a planar
 /// curve), f₃ = t × z.
-pub fn planar_ph_cubic() -> FramedCurve {
+pub(crate) fn planar_ph_cubic() -> FramedCurve {
     let shift = DVec3::new(0.2, -0.4, 0.0);
     let cubic = PhCubic::from_control_points(
         tschirnhausen(30f64.to_radians(), 2.0)
@@ -96,7 +96,7 @@ pub fn planar_ph_cubic() -> FramedCurve {
 }
 
 /// One spatial G1 Hermite segment (non-planar, no symmetry): the Möbius tests' data.
-pub fn spatial_hermite_segment() -> HermiteSegment {
+pub(crate) fn spatial_hermite_segment() -> HermiteSegment {
     HermiteSegment::new(
         DVec3::new(0.1, 0.0, -0.2),
         DVec3::new(1.0, 0.4, 0.3),
@@ -107,7 +107,7 @@ pub fn spatial_hermite_segment() -> HermiteSegment {
 }
 
 /// Planar G1 data through three points (a C-shaped arc in the xy-plane).
-pub fn planar_hermite_data() -> ([DVec3; 3], [DVec3; 3]) {
+pub(crate) fn planar_hermite_data() -> ([DVec3; 3], [DVec3; 3]) {
     (
         [
             DVec3::ZERO,
@@ -125,7 +125,7 @@ pub fn planar_hermite_data() -> ([DVec3; 3], [DVec3; 3]) {
 /// The largest angle about the tangent between `frame(t)` and the double-reflection RMF of
 /// `curve` started at `normal`, over `samples` uniform parameters (the double-reflection
 /// frames are fourth-order accurate in the sample spacing: the reference of the tests).
-pub fn gap_to_double_reflection(
+pub(crate) fn gap_to_double_reflection(
     curve: &PiecewiseCurve,
     normal: DVec3,
     samples: usize,

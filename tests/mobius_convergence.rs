@@ -12,8 +12,8 @@
 use rmfsurf::glam::DVec3;
 use rmfsurf::metrics::{frame_errors, FrameErrors, ReferenceRmf};
 use rmfsurf::{
-    mobius_approximate, uniform_parameters, DoubleReflectionRmf, ExactRmf, FrameField,
-    ParametricCurve, PhSpline, PiecewiseCurve, RationalBezierCurve, Result,
+    mobius::approximate as mobius_approximate, ph::ExactRmf, ph::PhSpline, uniform_parameters,
+    DoubleReflectionRmf, FrameField, ParametricCurve, PiecewiseCurve, RationalBezierCurve, Result,
 };
 
 const SEGMENTS: [usize; 7] = [1, 2, 4, 8, 16, 32, 64];

@@ -1,6 +1,6 @@
 // The handover to an OpenCascade program, end to end in C++ (part of scripts/bench): for each
 // case the whole call — rmfsurf's construction, then the kernel's shape built from the
-// library's B-rep model with BRep_Builder (rmf_shape_brep / rmf_cone_spline_part_brep and
+// library's B-rep model with BRep_Builder (rmf_shape_brep / rmf_sheet_part_brep and
 // include/rmfsurf_occ.hpp) or from its B-rep text (rmf_shape_occ_brep, BRepTools::Read) —
 // beside BRepOffsetAPI_MakePipeShell on the same wire (corrected Frenet, round corners, made
 // solid). Best of 5, milliseconds; every shape checked valid (BRepCheck_Analyzer) once.
@@ -117,21 +117,21 @@ static void hopper(double tolerance) {
     rmf_sheet_options_init(&o);
     o.thickness = 2;
     o.tolerance = tolerance;
-    RmfConeSpline *part = nullptr;
+    RmfSheetPart *part = nullptr;
     const double library = best_ms([&] {
-        rmf_cone_spline_free(part);
+        rmf_sheet_part_free(part);
         part = nullptr;
-        must(rmf_cone_spline_transition(square, circle, &o, &part), "rmf_cone_spline_transition");
+        must(rmf_sheet_part_transition(square, circle, &o, &part), "rmf_sheet_part_transition");
     });
     double model = 1e300, text = 1e300;
     TopoDS_Shape by_model, by_text;
     for (int r = 0; r < 5; ++r) {
-        RmfConeSpline *fresh = nullptr;
-        must(rmf_cone_spline_transition(square, circle, &o, &fresh), "rmf_cone_spline_transition");
+        RmfSheetPart *fresh = nullptr;
+        must(rmf_sheet_part_transition(square, circle, &o, &fresh), "rmf_sheet_part_transition");
         model = std::min(model, best_ms(
                                     [&] {
                                         RmfBrep *brep = nullptr;
-                                        must(rmf_cone_spline_part_brep(fresh, &brep), "rmf_cone_spline_part_brep");
+                                        must(rmf_sheet_part_brep(fresh, &brep), "rmf_sheet_part_brep");
                                         by_model = rmfsurf::occ::build(brep);
                                         rmf_brep_free(brep);
                                     },
@@ -139,25 +139,25 @@ static void hopper(double tolerance) {
         text = std::min(text, best_ms(
                                   [&] {
                                       size_t length = 0;
-                                      must(rmf_cone_spline_part_export(fresh, RMF_SHEET_FORMAT_OCC_BREP, nullptr, 0,
+                                      must(rmf_sheet_part_export(fresh, RMF_SHEET_FORMAT_OCC_BREP, nullptr, 0,
                                                                        &length),
-                                           "rmf_cone_spline_part_export");
+                                           "rmf_sheet_part_export");
                                       std::string t(length + 1, '\0');
-                                      must(rmf_cone_spline_part_export(fresh, RMF_SHEET_FORMAT_OCC_BREP, t.data(),
+                                      must(rmf_sheet_part_export(fresh, RMF_SHEET_FORMAT_OCC_BREP, t.data(),
                                                                        t.size(), &length),
-                                           "rmf_cone_spline_part_export");
+                                           "rmf_sheet_part_export");
                                       t.resize(length);
                                       by_text = wire_sweep::read_brep_text(t);
                                   },
                                   1));
-        rmf_cone_spline_free(fresh);
+        rmf_sheet_part_free(fresh);
     }
     if (!BRepCheck_Analyzer(by_model).IsValid() || !BRepCheck_Analyzer(by_text).IsValid())
         std::printf("| hopper: rmfsurf's shape INVALID\n");
     char name[64];
     std::snprintf(name, sizeof name, "square-to-round transition, tol %g", tolerance);
     std::printf("| %-40s | %9s | %8.2f | %8.2f | %8.2f | %7s | %7s |\n", name, "—", library, model, text, "", "");
-    rmf_cone_spline_free(part);
+    rmf_sheet_part_free(part);
     rmf_curve_free(square);
     rmf_curve_free(circle);
 }

@@ -215,15 +215,15 @@ fn spine_input(spine: &Spine) -> String {
         Spine::Nurbs(nurbs) => {
             let mut input = format!(
                 "nurbs {} {} {}\n",
-                nurbs.degree,
-                nurbs.poles.len(),
-                nurbs.knots.len()
+                nurbs.degree(),
+                nurbs.poles().len(),
+                nurbs.knots().len()
             );
-            for k in &nurbs.knots {
+            for k in nurbs.knots() {
                 input += &format!("{k:?} ");
             }
             input += "\n";
-            for (p, w) in nurbs.poles.iter().zip(&nurbs.weights) {
+            for (p, w) in nurbs.poles().iter().zip(nurbs.weights()) {
                 input += &format!("{:?} {:?} {:?} {:?}\n", p.x, p.y, p.z, w);
             }
             input
@@ -234,16 +234,19 @@ fn spine_input(spine: &Spine) -> String {
 fn check_input(s: &NurbsSurface) -> String {
     let mut input = format!(
         "check {} {} {} {}\n",
-        s.degree_u, s.degree_v, s.pole_count_u, s.pole_count_v
+        s.degree_u(),
+        s.degree_v(),
+        s.pole_count_u(),
+        s.pole_count_v()
     );
-    for knots in [&s.knots_u, &s.knots_v] {
+    for knots in [s.knots_u(), s.knots_v()] {
         input += &format!("{}", knots.len());
         for k in knots.iter() {
             input += &format!(" {k:?}");
         }
         input += "\n";
     }
-    for (p, w) in s.poles.iter().zip(&s.weights) {
+    for (p, w) in s.poles().iter().zip(s.weights()) {
         input += &format!("{:?} {:?} {:?} {:?}\n", p.x, p.y, p.z, w);
     }
     input

@@ -14,9 +14,11 @@ use super::occ::{Mode, Outcome, Program, Request, Spine, WireEdge};
 use super::{measure, Measured, Profile, NORMAL};
 use rmfsurf::glam::DVec3;
 use rmfsurf::{
-    check_g1, ph_rational_rmf, ph_spline_approximate, ph_spline_approximate_with, sweep,
-    sweep_wire, ApproximationOptions, Edge, NurbsCurve, NurbsSurface, ParametricCurve,
-    PiecewiseCurve, PiecewiseSurface, RationalBezierCurve, RmfOptions, WireSweep,
+    ph::check_g1, ph::rational_rmf as ph_rational_rmf,
+    ph::spline_approximate as ph_spline_approximate,
+    ph::spline_approximate_with as ph_spline_approximate_with, ph::ApproximationOptions,
+    ph::RmfOptions, sweep, wire::sweep as sweep_wire, wire::Edge, wire::WireSweep, NurbsCurve,
+    NurbsSurface, ParametricCurve, PiecewiseCurve, PiecewiseSurface, RationalBezierCurve,
 };
 use std::f64::consts::{FRAC_1_SQRT_2, PI};
 use std::hint::black_box;
@@ -188,10 +190,10 @@ fn our_path(
     let t = Instant::now();
     // rmf_nurbs_curve_create: validation and Bézier decomposition.
     let data = NurbsCurve::new(
-        nurbs.degree,
-        nurbs.poles.clone(),
-        Some(nurbs.weights.clone()),
-        nurbs.knots.clone(),
+        nurbs.degree(),
+        nurbs.poles().to_vec(),
+        Some(nurbs.weights().to_vec()),
+        nurbs.knots().to_vec(),
     )
     .unwrap();
     let spine = data.to_piecewise().unwrap();
@@ -285,7 +287,7 @@ impl Built {
     fn poles(&self) -> usize {
         self.nurbs
             .iter()
-            .map(|n| n.pole_count_u * n.pole_count_v)
+            .map(|n| n.pole_count_u() * n.pole_count_v())
             .sum()
     }
 
@@ -364,7 +366,7 @@ fn theirs(
             let poles: usize = result
                 .faces
                 .iter()
-                .map(|f| f.pole_count_u * f.pole_count_v)
+                .map(|f| f.pole_count_u() * f.pole_count_v())
                 .sum();
             let pieces: Vec<PiecewiseSurface> = result
                 .faces
@@ -690,7 +692,7 @@ pub fn poles_section(program: Option<&Program>) {
         // ∫ c^¼ dt once, from an approximation at 1e-10 (h4_bound at 1e-6).
         let bound = h4_bound(&spine, 1e-6) * (1e-6 / tolerance).powf(0.25);
         // (9·segments + 1) poles along the spine, one per pole of the profile around it.
-        let fewest = (9 * bound.ceil() as usize + 1) * built.nurbs[0].pole_count_u;
+        let fewest = (9 * bound.ceil() as usize + 1) * built.nurbs[0].pole_count_u();
         let ours: Measured = measure(&built.surfaces, poles);
         let occ = program.map_or_else(
             || failed("not run".into()),

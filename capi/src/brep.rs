@@ -67,7 +67,7 @@ impl RmfBrep {
                 start: e.start,
                 end: e.end,
                 degenerate: u32::from(e.degenerate),
-                curve: RmfNurbsCurve::of(&e.curve, keep(&e.curve.poles)),
+                curve: RmfNurbsCurve::of(&e.curve, keep(e.curve.poles())),
             })
             .collect();
         let faces = brep.faces.iter().map(|f| face_view(f, &mut keep)).collect();
@@ -133,7 +133,7 @@ fn face_view(
     let (kind, nurbs, [plane_origin, plane_normal, plane_x_axis]) = match &face.surface {
         BrepSurface::Nurbs(s) => (
             RMF_BREP_SURFACE_NURBS,
-            RmfNurbsSurface::of(s, keep(&s.poles)),
+            RmfNurbsSurface::of(s, keep(s.poles())),
             [zero; 3],
         ),
         BrepSurface::Plane {
@@ -180,7 +180,7 @@ fn use_view(
             RMF_PCURVE_NURBS,
             zero,
             zero,
-            RmfNurbsCurve::of(c, keep(&c.poles)),
+            RmfNurbsCurve::of(c, keep(c.poles())),
         ),
     };
     RmfBrepUse {

@@ -14,8 +14,9 @@ use super::surface::RmfSurface;
 use super::types::RmfVec3;
 use rmfsurf::glam::DVec4;
 use rmfsurf::{
-    approximate_developable, osculating_spline, ConePiece, ConeSpline, DualDevelopable, Element,
-    PairCase, ParametricCurve, PieceKind, Region, Rule, RuledSurface, TangentSurface,
+    cone::approximate as approximate_developable, cone::osculating_spline, cone::ConePiece,
+    cone::ConeSpline, cone::DualDevelopable, cone::Element, cone::PairCase, cone::PieceKind,
+    cone::Region, cone::Rule, cone::RuledSurface, cone::TangentSurface, ParametricCurve,
 };
 use std::ffi::c_void;
 
@@ -168,8 +169,8 @@ pub struct RmfConeSpline {
     /// The pair case of each piece (RMF_CONE_CASE_*).
     pub(crate) cases: Vec<u32>,
     fit: Option<Fit>,
-    /// A sheet-metal part (rmf_cone_spline_transition, rmf_cone_spline_part): `spline` is
-    /// its designed surface.
+    /// A sheet-metal part (rmf_sheet_part_cone_spline, or the deprecated constructors):
+    /// `spline` is its designed surface.
     pub(crate) part: Option<std::sync::Arc<crate::sheet::PartHandle>>,
 }
 
@@ -186,13 +187,13 @@ impl RmfConeSpline {
     }
 
     /// The handle of a sheet-metal part: its designed surface's cone spline and the part.
-    pub(crate) fn of_part(part: rmfsurf::SheetPart) -> rmfsurf::Result<Self> {
-        let spline = part.cone_spline()?;
+    pub(crate) fn of_part(part: std::sync::Arc<crate::sheet::PartHandle>) -> rmfsurf::Result<Self> {
+        let spline = part.part.cone_spline()?;
         Ok(Self {
             cases: vec![RMF_CONE_CASE_NONE; spline.pieces().len()],
             spline,
             fit: None,
-            part: Some(std::sync::Arc::new(crate::sheet::PartHandle::new(part))),
+            part: Some(part),
         })
     }
 
@@ -320,7 +321,7 @@ pub unsafe extern "C" fn rmf_cone_spline_hermite(
 
 /// Writes a fitted spline and its deviation.
 unsafe fn finish_fit(
-    fit: rmfsurf::Approximation,
+    fit: rmfsurf::cone::Approximation,
     out: *mut *mut RmfConeSpline,
     max_error: Option<*mut f64>,
 ) {
@@ -478,7 +479,7 @@ impl Default for RmfConeApproximationOptions {
             struct_size: std::mem::size_of::<Self>(),
             tolerance: 0.0,
             rule: RMF_CONE_RULE_MIN_VERTEX_DISTANCE,
-            max_pieces: rmfsurf::DEFAULT_MAX_PIECES,
+            max_pieces: rmfsurf::cone::DEFAULT_MAX_PIECES,
         }
     }
 }
@@ -679,7 +680,8 @@ pub unsafe extern "C" fn rmf_cone_spline_approximate_dual(
     guard("rmf_cone_spline_approximate_dual", || {
         let out = out_ptr(out, "out")?;
         let max_error = optional_out(max_error, "max_error")?;
-        let (planes, knots, region) = dual_input(planes, plane_count, knots, knot_count, region)?;
+        let (planes, knots, region) =
+            dual_input(degree, planes, plane_count, knots, knot_count, region)?;
         check_fit_arguments(tolerance, max_pieces)?;
         let rule = fit_rule(rule)?;
         let dual = DualDevelopable::new(degree as usize, &planes, knots, region)?;
@@ -697,6 +699,7 @@ pub unsafe extern "C" fn rmf_cone_spline_approximate_dual(
 /// # Safety
 /// The pointers are NULL or valid for the counts given.
 unsafe fn dual_input<'a>(
+    degree: u32,
     planes: *const f64,
     plane_count: usize,
     knots: *const f64,
@@ -710,6 +713,7 @@ unsafe fn dual_input<'a>(
         return Err(FfiError::Null("knots"));
     }
     let region = region_from(reference(region, "region")?)?;
+    rmfsurf::validate::check_nurbs_counts(degree as usize, plane_count, knot_count, "")?;
     let Some(values) = plane_count.checked_mul(4) else {
         return invalid_arg(format!("plane_count = {plane_count} is too large"));
     };
@@ -759,7 +763,8 @@ pub unsafe extern "C" fn rmf_cone_spline_approximate_dual_with_options(
     max_error: *mut f64,
 ) -> RmfStatus {
     guard("rmf_cone_spline_approximate_dual_with_options", || {
-        let (planes, knots, region) = dual_input(planes, plane_count, knots, knot_count, region)?;
+        let (planes, knots, region) =
+            dual_input(degree, planes, plane_count, knots, knot_count, region)?;
         let (tolerance, rule, max_pieces) = fit_options(options)?;
         let out = out_ptr(out, "out")?;
         let max_error = optional_out(max_error, "max_error")?;

@@ -11,8 +11,8 @@ use super::status::RmfStatus;
 use super::types::{piece_views, PieceViews, RmfBezierCurve, RmfNurbsCurve, RmfVec3};
 use libc::c_void;
 use rmfsurf::glam::DVec3;
+use rmfsurf::ph::PhSpline;
 use rmfsurf::validate::check_in_domain;
-use rmfsurf::PhSpline;
 use rmfsurf::{NurbsCurve, ParametricCurve, PiecewiseCurve, Result};
 use std::sync::{Arc, OnceLock};
 
@@ -127,7 +127,7 @@ impl RmfCurve {
                 Some(n) => n.clone(),
                 None => NurbsCurve::from_piecewise(&r.curve)?,
             };
-            let poles = nurbs.poles.iter().map(|&p| p.into()).collect();
+            let poles = nurbs.poles().iter().map(|&p| p.into()).collect();
             Ok(NurbsView { nurbs, poles })
         });
         view.as_ref().map_err(|e| FfiError::Core(e.clone()))
@@ -356,22 +356,22 @@ pub unsafe extern "C" fn rmf_curve_nurbs_copy(
         let weights = buffer(weights, pole_capacity, "weights")?;
         let knots = buffer(knots, knot_capacity, "knots")?;
         let v = curve.nurbs_view()?;
-        write(degree, v.nurbs.degree as u32);
+        write(degree, v.nurbs.degree() as u32);
         write(pole_count, v.poles.len());
-        write(knot_count, v.nurbs.knots.len());
+        write(knot_count, v.nurbs.knots().len());
         if pole_capacity == 0 && knot_capacity == 0 {
             return Ok(());
         }
-        if pole_capacity < v.poles.len() || knot_capacity < v.nurbs.knots.len() {
+        if pole_capacity < v.poles.len() || knot_capacity < v.nurbs.knots().len() {
             return Err(FfiError::BufferTooSmall(format!(
                 "need {} poles and {} knots, capacities are {pole_capacity} and {knot_capacity}",
                 v.poles.len(),
-                v.nurbs.knots.len()
+                v.nurbs.knots().len()
             )));
         }
         poles[..v.poles.len()].copy_from_slice(&v.poles);
-        weights[..v.poles.len()].copy_from_slice(&v.nurbs.weights);
-        knots[..v.nurbs.knots.len()].copy_from_slice(&v.nurbs.knots);
+        weights[..v.poles.len()].copy_from_slice(v.nurbs.weights());
+        knots[..v.nurbs.knots().len()].copy_from_slice(v.nurbs.knots());
         Ok(())
     })
 }

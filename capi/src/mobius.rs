@@ -10,7 +10,8 @@ use super::types::RmfVec3;
 use libc::c_void;
 use rmfsurf::glam::DVec3;
 use rmfsurf::{
-    map_curve, map_framed_curve, mobius_approximate, mobius_hermite, Inversion, MobiusMap,
+    mobius::approximate as mobius_approximate, mobius::hermite as mobius_hermite,
+    mobius::map_curve, mobius::map_framed_curve, mobius::Inversion, mobius::MobiusMap,
 };
 
 /// RmfInversion.kind: inversion in the sphere (center, radius).

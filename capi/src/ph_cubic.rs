@@ -13,11 +13,13 @@ use super::status::RmfStatus;
 use super::types::RmfVec3;
 use rmfsurf::validate::{check_in_domain, check_sample_count};
 use rmfsurf::{
-    angle_errors, check_g1, convex_initial_normal, offset_profile, offset_profile_by_arcs,
-    ph_cubic_hermite, ph_frenet_frames, ph_rational_rmf, ph_spline_approximate_with,
-    ph_spline_from_segments, ApproximationOptions, ExactRmf, FrameField, FrameKind, FramedCurve,
-    HermiteSegment, ParametricCurve, PhCubic, PhSpline, PiecewiseCurve, ProfileSurface,
-    RationalFrames, ResultExt, RmfOptions,
+    ph::angle_errors, ph::check_g1, ph::convex_initial_normal,
+    ph::cubic_hermite as ph_cubic_hermite, ph::frenet_frames as ph_frenet_frames,
+    ph::offset_profile, ph::offset_profile_by_arcs, ph::rational_rmf as ph_rational_rmf,
+    ph::spline_approximate_with as ph_spline_approximate_with,
+    ph::spline_from_segments as ph_spline_from_segments, ph::ApproximationOptions, ph::ExactRmf,
+    ph::PhCubic, ph::PhSpline, ph::ProfileSurface, ph::RmfOptions, FrameField, FrameKind,
+    FramedCurve, HermiteSegment, ParametricCurve, PiecewiseCurve, RationalFrames, ResultExt,
 };
 use std::ffi::c_void;
 
@@ -835,7 +837,7 @@ pub unsafe extern "C" fn rmf_sweep_parabolic_curves(
 
 /// The parabolic lines as points on the sampled v lines (see rmf_sweep_parabolic_points).
 fn parabolic_points(
-    lines: &rmfsurf::ParabolicLines,
+    lines: &rmfsurf::ph::ParabolicLines,
     (v0, v1): (f64, f64),
     (u0, u1): (f64, f64),
     samples: usize,

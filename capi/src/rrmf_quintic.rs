@@ -13,10 +13,14 @@ use super::status::RmfStatus;
 use super::types::RmfVec3;
 use rmfsurf::glam::DVec3;
 use rmfsurf::{
-    best_quintic, planar_quintic, quintic_curve, quintic_rmf, rrmf_planar_deviation, rrmf_quintics,
-    rrmf_quintics_reporting, rrmf_spline, rrmf_spline_within, CanonicalHermite, Complex,
-    FramedCurve, HermiteSegment, RrmfBudget, RrmfQuintic, ShapeMeasure, RRMF_MAX_ETA_SAMPLES,
-    RRMF_MAX_REFINEMENT_SOLVES, RRMF_PLANAR_TOLERANCE,
+    rrmf::best_quintic, rrmf::planar_deviation as rrmf_planar_deviation, rrmf::planar_quintic,
+    rrmf::quintic_curve, rrmf::quintic_rmf, rrmf::quintics as rrmf_quintics,
+    rrmf::quintics_reporting as rrmf_quintics_reporting, rrmf::spline as rrmf_spline,
+    rrmf::spline_within as rrmf_spline_within, rrmf::Budget as RrmfBudget, rrmf::CanonicalHermite,
+    rrmf::Complex, rrmf::RrmfQuintic, rrmf::ShapeMeasure,
+    rrmf::MAX_ETA_SAMPLES as RRMF_MAX_ETA_SAMPLES,
+    rrmf::MAX_REFINEMENT_SOLVES as RRMF_MAX_REFINEMENT_SOLVES,
+    rrmf::PLANAR_TOLERANCE as RRMF_PLANAR_TOLERANCE, FramedCurve, HermiteSegment,
 };
 
 /// One RRMF quintic Hermite interpolant (Farouki, Giannelli & Sestini, Section 4).

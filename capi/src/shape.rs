@@ -8,7 +8,7 @@ use super::status::RmfStatus;
 use super::surface::RmfSurface;
 use super::types::RmfVec3;
 use libc::c_char;
-use rmfsurf::{FaceKind, Shape};
+use rmfsurf::{wire::FaceKind, wire::Shape};
 use std::ffi::CStr;
 use std::io::Write;
 use std::sync::atomic::{AtomicU64, Ordering};

@@ -1,13 +1,17 @@
-//! `RmfSheetOptions` and the sheet-metal parts of cone splines: transition pieces between
-//! two closed curves (rmf_cone_spline_transition), parts between the rails of a ruled
-//! developable or of a tangent surface (rmf_cone_spline_part, rmf_cone_spline_tangent_part), the sheet's layers and closed solid,
-//! the neutral layer's flat pattern for the cutter, and the maps between flat and formed.
-//! A part is an `RmfConeSpline` handle: the cone spline accessors (pieces, surface strips,
-//! development, offsets) work on its designed surface; the functions here need a part.
+//! `RmfSheetPart`, the sheet-metal parts of cone splines: transition pieces between two
+//! closed curves, parts between the rails of a ruled developable or of a tangent surface;
+//! their sheet (`RmfSheetOptions`), layers and closed solid, the neutral layer's flat pattern
+//! for the cutter, and the maps between flat and formed. `rmf_sheet_part_cone_spline` hands
+//! the designed surface to the cone spline calls.
+//!
+//! Before `RmfSheetPart`, a part was an `RmfConeSpline` that refused the part calls at run
+//! time when it held no part; those calls (`rmf_cone_spline_transition`, `_part`,
+//! `_tangent_part`, `_part_*`, `_flat_*`, `_surface_to_flat`) are deprecated wrappers of the
+//! ones here.
 
 use super::boundary::{
-    buffer, guard, hand_over, invalid_arg, optional_out, out_ptr, reference, slice, write,
-    FfiError, FfiResult, OptionsStruct,
+    buffer, free_handle, guard, hand_over, invalid_arg, optional_out, out_ptr, reference, slice,
+    write, FfiError, FfiResult, OptionsStruct,
 };
 use super::cone_spline::RmfConeSpline;
 use super::curve::RmfCurve;
@@ -17,9 +21,12 @@ use super::types::{RmfVec2, RmfVec3};
 use rmfsurf::export::{dxf, step, svg};
 use rmfsurf::glam::DVec2;
 use rmfsurf::PatternEdge;
-use rmfsurf::{Layer, Reference, Sheet, SheetOptions, SheetPart, Side};
+use rmfsurf::{
+    sheet::Layer, sheet::Reference, sheet::Sheet, sheet::SheetOptions, sheet::SheetPart,
+    sheet::Side,
+};
 use std::ffi::c_char;
-use std::sync::OnceLock;
+use std::sync::{Arc, OnceLock};
 
 /// Which face of the sheet the designed surface is (RmfSheetOptions.reference).
 /// \ingroup rmf_sheet
@@ -134,7 +141,7 @@ impl Default for RmfSheetOptions {
             k_factor: 0.5,
             reference: RMF_SHEET_REFERENCE_INNER,
             flat_tolerance: 0.0,
-            max_pieces: rmfsurf::DEFAULT_MAX_PIECES,
+            max_pieces: rmfsurf::cone::DEFAULT_MAX_PIECES,
         }
     }
 }
@@ -257,7 +264,7 @@ unsafe fn options_from(options: *const RmfSheetOptions) -> FfiResult<SheetOption
 /// A sheet-metal part behind its handle, with the texts of its files as made (a caller asks
 /// twice: the size, then the text).
 pub(crate) struct PartHandle {
-    part: SheetPart,
+    pub(crate) part: SheetPart,
     texts: [OnceLock<String>; 5],
 }
 
@@ -270,16 +277,11 @@ impl PartHandle {
     }
 }
 
-/// The part of a handle, or an error naming it.
-fn part_of<'a>(spline: &'a RmfConeSpline, name: &str) -> FfiResult<&'a SheetPart> {
-    handle_of(spline, name).map(|h| &h.part)
-}
-
 /// The part's handle (with its texts), or an error naming it.
 fn handle_of<'a>(spline: &'a RmfConeSpline, name: &str) -> FfiResult<&'a PartHandle> {
     spline.part.as_deref().ok_or_else(|| {
         FfiError::Core(rmfsurf::Error::invalid_input(format!(
-            "{name} is not a sheet-metal part (make it with rmf_cone_spline_transition, rmf_cone_spline_part or rmf_cone_spline_tangent_part)"
+            "{name} is not a sheet-metal part (make it with rmf_sheet_part_transition, rmf_sheet_part_between_rails or rmf_sheet_part_tangent)"
         )))
     })
 }
@@ -296,6 +298,70 @@ pub unsafe extern "C" fn rmf_sheet_options_init(options: *mut RmfSheetOptions) -
     guard("rmf_sheet_options_init", || {
         let options = out_ptr(options, "options")?;
         write(options, RmfSheetOptions::default());
+        Ok(())
+    })
+}
+
+/// A sheet-metal part (opaque): a transition piece, a part between the rails of a ruled
+/// developable or of a tangent surface, with its sheet (thickness, K-factor). Made by
+/// rmf_sheet_part_transition, rmf_sheet_part_between_rails or rmf_sheet_part_tangent; freed
+/// with rmf_sheet_part_free. Immutable; may be read from several threads at once.
+/// \since 0.2
+/// \ingroup rmf_sheet
+pub struct RmfSheetPart {
+    handle: Arc<PartHandle>,
+}
+
+impl RmfSheetPart {
+    fn new(part: SheetPart) -> Self {
+        Self {
+            handle: Arc::new(PartHandle::new(part)),
+        }
+    }
+
+    fn into_raw(self) -> *mut Self {
+        Box::into_raw(Box::new(self))
+    }
+}
+
+/// The part behind a handle, or an error naming it.
+unsafe fn sheet_part<'a>(part: *const RmfSheetPart) -> FfiResult<&'a PartHandle> {
+    Ok(&reference(part, "part")?.handle)
+}
+
+/// The part an RmfConeSpline of the deprecated calls holds, or an error naming it.
+unsafe fn spline_part<'a>(part: *const RmfConeSpline) -> FfiResult<&'a PartHandle> {
+    handle_of(reference(part, "part")?, "part")
+}
+
+/// Frees a part; NULL is a no-op. Cone splines from rmf_sheet_part_cone_spline stay valid.
+///
+/// @param[in] part The part, or NULL.
+/// \since 0.2
+/// \ingroup rmf_sheet
+#[no_mangle]
+pub unsafe extern "C" fn rmf_sheet_part_free(part: *mut RmfSheetPart) {
+    free_handle(part);
+}
+
+/// The part's designed surface as a cone spline (its pieces, surface strips, bending,
+/// development and offsets through the rmf_cone_spline_* calls).
+///
+/// @param[in] part A part.
+/// @param[out] out Receives a new cone spline; free it with rmf_cone_spline_free (it stays
+///             valid after the part is freed). Untouched on failure.
+/// @return RMF_OK or RMF_ERROR_NULL_POINTER.
+/// \since 0.2
+/// \ingroup rmf_sheet
+#[no_mangle]
+pub unsafe extern "C" fn rmf_sheet_part_cone_spline(
+    part: *const RmfSheetPart,
+    out: *mut *mut RmfConeSpline,
+) -> RmfStatus {
+    guard("rmf_sheet_part_cone_spline", || {
+        let handle = &reference(part, "part")?.handle;
+        let out = out_ptr(out, "out")?;
+        write(out, RmfConeSpline::of_part(Arc::clone(handle))?.into_raw());
         Ok(())
     })
 }
@@ -319,8 +385,7 @@ pub unsafe extern "C" fn rmf_sheet_options_init(options: *mut RmfSheetOptions) -
 /// @param[in] top The second boundary.
 /// @param[in] options The sheet and tolerances, or NULL for the defaults; read during the
 ///            call only.
-/// @param[out] out Receives the part (an RmfConeSpline whose pieces are the designed
-///             surface's); free with rmf_cone_spline_free. Untouched on failure.
+/// @param[out] out Receives the part; free with rmf_sheet_part_free. Untouched on failure.
 /// @return RMF_OK on success.
 /// @return RMF_ERROR_NULL_POINTER If bottom, top or out is NULL.
 /// @return RMF_ERROR_INVALID_INPUT If a curve is not closed, not planar or not convex (the
@@ -333,6 +398,31 @@ pub unsafe extern "C" fn rmf_sheet_options_init(options: *mut RmfSheetOptions) -
 /// \since 0.2
 /// \ingroup rmf_sheet
 #[no_mangle]
+pub unsafe extern "C" fn rmf_sheet_part_transition(
+    bottom: *const RmfCurve,
+    top: *const RmfCurve,
+    options: *const RmfSheetOptions,
+    out: *mut *mut RmfSheetPart,
+) -> RmfStatus {
+    guard("rmf_sheet_part_transition", || {
+        let out = out_ptr(out, "out")?;
+        write(
+            out,
+            RmfSheetPart::new(transition(bottom, top, options)?).into_raw(),
+        );
+        Ok(())
+    })
+}
+
+/// rmf_sheet_part_transition, handing the part out as an RmfConeSpline (the designed surface's cone spline,
+/// holding the part for the rmf_cone_spline_part_* calls); free with rmf_cone_spline_free.
+///
+/// @param bottom, top, options, out As for rmf_sheet_part_transition.
+/// \deprecated Use rmf_sheet_part_transition; rmf_sheet_part_cone_spline gives the cone spline.
+/// \since 0.2
+/// \ingroup rmf_sheet
+#[deprecated(since = "0.2.0", note = "use rmf_sheet_part_transition")]
+#[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_transition(
     bottom: *const RmfCurve,
     top: *const RmfCurve,
@@ -340,15 +430,26 @@ pub unsafe extern "C" fn rmf_cone_spline_transition(
     out: *mut *mut RmfConeSpline,
 ) -> RmfStatus {
     guard("rmf_cone_spline_transition", || {
-        let bottom = reference(bottom, "bottom")?;
-        let top = reference(top, "top")?;
         let out = out_ptr(out, "out")?;
-        let options = options_from(options)?;
-        let part =
-            SheetPart::transition(bottom.rational("bottom")?, top.rational("top")?, &options)?;
-        write(out, RmfConeSpline::of_part(part)?.into_raw());
+        let part = RmfSheetPart::new(transition(bottom, top, options)?);
+        write(out, RmfConeSpline::of_part(part.handle)?.into_raw());
         Ok(())
     })
+}
+
+unsafe fn transition(
+    bottom: *const RmfCurve,
+    top: *const RmfCurve,
+    options: *const RmfSheetOptions,
+) -> FfiResult<SheetPart> {
+    let bottom = reference(bottom, "bottom")?;
+    let top = reference(top, "top")?;
+    let options = options_from(options)?;
+    Ok(SheetPart::transition(
+        bottom.rational("bottom")?,
+        top.rational("top")?,
+        &options,
+    )?)
 }
 
 /// The part of a developable ruled surface between its two rails: the surface's
@@ -364,18 +465,41 @@ pub unsafe extern "C" fn rmf_cone_spline_transition(
 ///            the call only.
 /// @param[in] options The sheet and tolerances, or NULL for the defaults; read during the
 ///            call only.
-/// @param[out] out Receives the part (an RmfConeSpline whose pieces are the designed
-///             surface's); free with rmf_cone_spline_free. Untouched on failure.
+/// @param[out] out Receives the part; free with rmf_sheet_part_free. Untouched on failure.
 /// @return RMF_OK on success.
 /// @return RMF_ERROR_NULL_POINTER If surface or out is NULL.
 /// @return RMF_ERROR_INVALID_INPUT If the surface is not of degree 1 in u with one span, is
 ///         not developable (the message gives its max |K|·size²), or an option is out of
-///         range (as for rmf_cone_spline_transition).
+///         range (as for rmf_sheet_part_transition).
 /// @return RMF_ERROR_NO_SOLUTION If a ruling of the surface is degenerate.
 /// @return RMF_ERROR_NOT_CONVERGED If the tolerance needs more than max_pieces pieces, or
 ///         the cone fit keeps a vertex on the part.
 /// \since 0.2
 /// \ingroup rmf_sheet
+#[no_mangle]
+pub unsafe extern "C" fn rmf_sheet_part_between_rails(
+    surface: *const RmfSurface,
+    options: *const RmfSheetOptions,
+    out: *mut *mut RmfSheetPart,
+) -> RmfStatus {
+    guard("rmf_sheet_part_between_rails", || {
+        let out = out_ptr(out, "out")?;
+        write(
+            out,
+            RmfSheetPart::new(between_rails(surface, options)?).into_raw(),
+        );
+        Ok(())
+    })
+}
+
+/// rmf_sheet_part_between_rails, handing the part out as an RmfConeSpline (the designed surface's cone spline,
+/// holding the part for the rmf_cone_spline_part_* calls); free with rmf_cone_spline_free.
+///
+/// @param surface, options, out As for rmf_sheet_part_between_rails.
+/// \deprecated Use rmf_sheet_part_between_rails; rmf_sheet_part_cone_spline gives the cone spline.
+/// \since 0.2
+/// \ingroup rmf_sheet
+#[deprecated(since = "0.2.0", note = "use rmf_sheet_part_between_rails")]
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_part(
     surface: *const RmfSurface,
@@ -383,34 +507,67 @@ pub unsafe extern "C" fn rmf_cone_spline_part(
     out: *mut *mut RmfConeSpline,
 ) -> RmfStatus {
     guard("rmf_cone_spline_part", || {
-        let surface = reference(surface, "surface")?;
         let out = out_ptr(out, "out")?;
-        let options = options_from(options)?;
-        let part = SheetPart::between_rails(surface.surface.as_ref(), &options)
-            .map_err(|e| e.context("surface"))?;
-        write(out, RmfConeSpline::of_part(part)?.into_raw());
+        let part = RmfSheetPart::new(between_rails(surface, options)?);
+        write(out, RmfConeSpline::of_part(part.handle)?.into_raw());
         Ok(())
     })
 }
 
+unsafe fn between_rails(
+    surface: *const RmfSurface,
+    options: *const RmfSheetOptions,
+) -> FfiResult<SheetPart> {
+    let surface = reference(surface, "surface")?;
+    let options = options_from(options)?;
+    Ok(SheetPart::between_rails(surface.surface.as_ref(), &options)
+        .map_err(|e| e.context("surface"))?)
+}
+
 /// The part of the tangent surface x(t) + v·x′(t)/|x′(t)| of a regular curve over the
 /// curve's whole domain, between the rails v = v_min and v = v_max: a cone spline within
-/// half the tolerance, trimmed on every piece between the two rails, as rmf_cone_spline_part.
+/// half the tolerance, trimmed on every piece between the two rails, as rmf_sheet_part_between_rails.
 ///
 /// @param[in] curve A regular rational curve (NURBS data or a computed curve; not a
 ///            callback curve). Read during the call only.
 /// @param[in] v_min, v_max Signed distances along the unit tangent, finite, v_min < v_max,
 ///            0 outside [v_min, v_max] (the curve itself is the surface's edge of regression).
 /// @param[in] options The sheet and tolerances, or NULL for the defaults.
-/// @param[out] out Receives the part; free with rmf_cone_spline_free. Untouched on failure.
+/// @param[out] out Receives the part; free with rmf_sheet_part_free. Untouched on failure.
 /// @return RMF_OK on success.
 /// @return RMF_ERROR_NULL_POINTER If curve or out is NULL.
 /// @return RMF_ERROR_INVALID_INPUT If curve is a callback curve, v_min or v_max is not
 ///         finite, v_min ≥ v_max, [v_min, v_max] contains 0, or an option is out of range.
 /// @return RMF_ERROR_NO_SOLUTION If the curve is not regular.
-/// @return RMF_ERROR_NOT_CONVERGED As for rmf_cone_spline_part.
+/// @return RMF_ERROR_NOT_CONVERGED As for rmf_sheet_part_between_rails.
 /// \since 0.2
 /// \ingroup rmf_sheet
+#[no_mangle]
+pub unsafe extern "C" fn rmf_sheet_part_tangent(
+    curve: *const RmfCurve,
+    v_min: f64,
+    v_max: f64,
+    options: *const RmfSheetOptions,
+    out: *mut *mut RmfSheetPart,
+) -> RmfStatus {
+    guard("rmf_sheet_part_tangent", || {
+        let out = out_ptr(out, "out")?;
+        write(
+            out,
+            RmfSheetPart::new(tangent(curve, v_min, v_max, options)?).into_raw(),
+        );
+        Ok(())
+    })
+}
+
+/// rmf_sheet_part_tangent, handing the part out as an RmfConeSpline (the designed surface's cone spline,
+/// holding the part for the rmf_cone_spline_part_* calls); free with rmf_cone_spline_free.
+///
+/// @param curve, v_min, v_max, options, out As for rmf_sheet_part_tangent.
+/// \deprecated Use rmf_sheet_part_tangent; rmf_sheet_part_cone_spline gives the cone spline.
+/// \since 0.2
+/// \ingroup rmf_sheet
+#[deprecated(since = "0.2.0", note = "use rmf_sheet_part_tangent")]
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_tangent_part(
     curve: *const RmfCurve,
@@ -420,60 +577,114 @@ pub unsafe extern "C" fn rmf_cone_spline_tangent_part(
     out: *mut *mut RmfConeSpline,
 ) -> RmfStatus {
     guard("rmf_cone_spline_tangent_part", || {
-        let curve = reference(curve, "curve")?;
         let out = out_ptr(out, "out")?;
-        let options = options_from(options)?;
-        let part = SheetPart::tangent_surface(curve.rational("curve")?, v_min, v_max, &options)?;
-        write(out, RmfConeSpline::of_part(part)?.into_raw());
+        let part = RmfSheetPart::new(tangent(curve, v_min, v_max, options)?);
+        write(out, RmfConeSpline::of_part(part.handle)?.into_raw());
         Ok(())
     })
+}
+
+unsafe fn tangent(
+    curve: *const RmfCurve,
+    v_min: f64,
+    v_max: f64,
+    options: *const RmfSheetOptions,
+) -> FfiResult<SheetPart> {
+    let curve = reference(curve, "curve")?;
+    let options = options_from(options)?;
+    Ok(SheetPart::tangent_surface(
+        curve.rational("curve")?,
+        v_min,
+        v_max,
+        &options,
+    )?)
 }
 
 /// What a part's construction measured: pieces, closure, distances of the surface and of
 /// the edges from the input, the smallest bend radius, the layers' distances.
 ///
-/// @param[in] part A part (rmf_cone_spline_transition, _part or _tangent_part).
+/// @param[in] part A part (rmf_sheet_part_transition, _between_rails or _tangent).
 /// @param[out] report Receives the report.
-/// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT if part is not a part.
+/// @return RMF_OK or RMF_ERROR_NULL_POINTER.
 /// \since 0.2
 /// \ingroup rmf_sheet
+#[no_mangle]
+pub unsafe extern "C" fn rmf_sheet_part_report(
+    part: *const RmfSheetPart,
+    report: *mut RmfSheetReport,
+) -> RmfStatus {
+    guard("rmf_sheet_part_report", || {
+        write_report(&sheet_part(part)?.part, report)
+    })
+}
+
+/// rmf_sheet_part_report on the part an RmfConeSpline holds (made by rmf_cone_spline_transition,
+/// _part or _tangent_part); RMF_ERROR_INVALID_INPUT for a cone spline that is no part.
+///
+/// @param part, report As for rmf_sheet_part_report.
+/// \deprecated Use rmf_sheet_part_report.
+/// \since 0.2
+/// \ingroup rmf_sheet
+#[deprecated(since = "0.2.0", note = "use rmf_sheet_part_report")]
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_part_report(
     part: *const RmfConeSpline,
     report: *mut RmfSheetReport,
 ) -> RmfStatus {
     guard("rmf_cone_spline_part_report", || {
-        let p = part_of(reference(part, "part")?, "part")?;
-        let report = out_ptr(report, "report")?;
-        let r = p.report();
-        write(
-            report,
-            RmfSheetReport {
-                pieces: p.piece_count(),
-                closed: u32::from(p.is_closed()),
-                deviation: r.deviation,
-                edge_distance: r.edge_distance,
-                bend_radius: p.bend_radius(),
-                inner: p.layer_distance(Layer::Inner),
-                neutral: p.layer_distance(Layer::Neutral),
-                outer: p.layer_distance(Layer::Outer),
-            },
-        );
-        Ok(())
+        write_report(&spline_part(part)?.part, report)
     })
+}
+
+unsafe fn write_report(p: &SheetPart, report: *mut RmfSheetReport) -> FfiResult {
+    let report = out_ptr(report, "report")?;
+    let r = p.report();
+    write(
+        report,
+        RmfSheetReport {
+            pieces: p.piece_count(),
+            closed: u32::from(p.is_closed()),
+            deviation: r.deviation,
+            edge_distance: r.edge_distance,
+            bend_radius: p.bend_radius(),
+            inner: p.layer_distance(Layer::Inner),
+            neutral: p.layer_distance(Layer::Neutral),
+            outer: p.layer_distance(Layer::Outer),
+        },
+    );
+    Ok(())
 }
 
 /// A layer of the formed part as one NURBS surface: u ∈ [0, 1] along the rulings from the
 /// first to the second boundary, v ∈ [k, k + 1] on piece k, G1 across the rulings (except
 /// at creases); exact rational (degree 1 in u).
 ///
-/// @param[in] part A part (rmf_cone_spline_transition, _part or _tangent_part).
+/// @param[in] part A part (rmf_sheet_part_transition, _between_rails or _tangent).
 /// @param[in] layer RMF_SHEET_LAYER_*.
 /// @param[out] out Receives the surface; free with rmf_surface_free.
-/// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT for an unknown layer
-///         or a handle that is not a part.
+/// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT for an unknown
+///         layer.
 /// \since 0.2
 /// \ingroup rmf_sheet
+#[no_mangle]
+pub unsafe extern "C" fn rmf_sheet_part_surface(
+    part: *const RmfSheetPart,
+    layer: RmfSheetLayer,
+    out: *mut *mut RmfSurface,
+) -> RmfStatus {
+    guard("rmf_sheet_part_surface", || {
+        write_surface(&sheet_part(part)?.part, layer, out)
+    })
+}
+
+/// rmf_sheet_part_surface on the part an RmfConeSpline holds (made by rmf_cone_spline_transition,
+/// _part or _tangent_part); RMF_ERROR_INVALID_INPUT for a cone spline that is no part.
+///
+/// @param part, layer, out As for rmf_sheet_part_surface.
+/// \deprecated Use rmf_sheet_part_surface.
+/// \since 0.2
+/// \ingroup rmf_sheet
+#[deprecated(since = "0.2.0", note = "use rmf_sheet_part_surface")]
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_part_surface(
     part: *const RmfConeSpline,
@@ -481,25 +692,52 @@ pub unsafe extern "C" fn rmf_cone_spline_part_surface(
     out: *mut *mut RmfSurface,
 ) -> RmfStatus {
     guard("rmf_cone_spline_part_surface", || {
-        let p = part_of(reference(part, "part")?, "part")?;
-        let out = out_ptr(out, "out")?;
-        let surface = p.surface(layer_from(layer)?)?;
-        write(out, RmfSurface::new(surface, None).into_raw());
-        Ok(())
+        write_surface(&spline_part(part)?.part, layer, out)
     })
+}
+
+unsafe fn write_surface(
+    p: &SheetPart,
+    layer: RmfSheetLayer,
+    out: *mut *mut RmfSurface,
+) -> FfiResult {
+    let out = out_ptr(out, "out")?;
+    let surface = p.surface(layer_from(layer)?)?;
+    write(out, RmfSurface::new(surface, None).into_raw());
+    Ok(())
 }
 
 /// A boundary curve of a layer (the edge of the formed part on that layer), with the
 /// surface's v parameter: on the designed surface within the tolerance of the input's
 /// curve (exactly in its plane for transitions).
 ///
-/// @param[in] part A part (rmf_cone_spline_transition, _part or _tangent_part).
+/// @param[in] part A part (rmf_sheet_part_transition, _between_rails or _tangent).
 /// @param[in] layer RMF_SHEET_LAYER_*.
 /// @param[in] side RMF_SHEET_SIDE_FIRST or RMF_SHEET_SIDE_SECOND.
 /// @param[out] out Receives the curve; free with rmf_curve_free.
 /// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT for unknown codes.
 /// \since 0.2
 /// \ingroup rmf_sheet
+#[no_mangle]
+pub unsafe extern "C" fn rmf_sheet_part_boundary(
+    part: *const RmfSheetPart,
+    layer: RmfSheetLayer,
+    side: RmfSheetSide,
+    out: *mut *mut RmfCurve,
+) -> RmfStatus {
+    guard("rmf_sheet_part_boundary", || {
+        write_boundary(&sheet_part(part)?.part, layer, side, out)
+    })
+}
+
+/// rmf_sheet_part_boundary on the part an RmfConeSpline holds (made by rmf_cone_spline_transition,
+/// _part or _tangent_part); RMF_ERROR_INVALID_INPUT for a cone spline that is no part.
+///
+/// @param part, layer, side, out As for rmf_sheet_part_boundary.
+/// \deprecated Use rmf_sheet_part_boundary.
+/// \since 0.2
+/// \ingroup rmf_sheet
+#[deprecated(since = "0.2.0", note = "use rmf_sheet_part_boundary")]
 #[no_mangle]
 pub unsafe extern "C" fn rmf_cone_spline_part_boundary(
     part: *const RmfConeSpline,
@@ -508,21 +746,396 @@ pub unsafe extern "C" fn rmf_cone_spline_part_boundary(
     out: *mut *mut RmfCurve,
 ) -> RmfStatus {
     guard("rmf_cone_spline_part_boundary", || {
-        let p = part_of(reference(part, "part")?, "part")?;
-        let out = out_ptr(out, "out")?;
-        let side = match side {
-            RMF_SHEET_SIDE_FIRST => Side::First,
-            RMF_SHEET_SIDE_SECOND => Side::Second,
+        write_boundary(&spline_part(part)?.part, layer, side, out)
+    })
+}
+
+unsafe fn write_boundary(
+    p: &SheetPart,
+    layer: RmfSheetLayer,
+    side: RmfSheetSide,
+    out: *mut *mut RmfCurve,
+) -> FfiResult {
+    let out = out_ptr(out, "out")?;
+    let side = match side {
+        RMF_SHEET_SIDE_FIRST => Side::First,
+        RMF_SHEET_SIDE_SECOND => Side::Second,
+        other => {
+            return invalid_arg(format!(
+                "side = {other} is not one of the RMF_SHEET_SIDE_* values"
+            ))
+        }
+    };
+    let curve = p.boundary(layer_from(layer)?, side)?;
+    write(out, RmfCurve::new(curve, None).into_raw());
+    Ok(())
+}
+
+/// The flat pattern of the neutral layer for the cutter: the outline (RMF_FLAT_CUT) as
+/// lines and circular arcs only — exact where the development is a line or an arc, G1
+/// biarcs within the flat tolerance elsewhere —, closed (each edge starts where the one
+/// before ends, the last ends where the first starts) and counter-clockwise, followed by
+/// the bend lines (RMF_FLAT_BEND). A closed part (a transition) is cut open along its seam,
+/// the middle ruling of its largest planar piece.
+///
+/// Size query: with capacity 0 (edges may be NULL) only count is written.
+///
+/// @param[in] part A part (rmf_sheet_part_transition, _between_rails or _tangent).
+/// @param[out] edges Buffer for capacity edges: the outline first, then the bend lines.
+/// @param[in] capacity Capacity of edges; 0 for a size query.
+/// @param[out] count Receives the number of edges.
+/// @return RMF_OK on success or for a size query.
+/// @return RMF_ERROR_NULL_POINTER If part or count is NULL, or edges is NULL with a
+///         non-zero capacity.
+/// @return RMF_ERROR_BUFFER_TOO_SMALL If capacity is non-zero but too small; count is written.
+/// \since 0.2
+/// \ingroup rmf_sheet
+#[no_mangle]
+pub unsafe extern "C" fn rmf_sheet_part_flat_pattern(
+    part: *const RmfSheetPart,
+    edges: *mut RmfFlatEdge,
+    capacity: usize,
+    count: *mut usize,
+) -> RmfStatus {
+    guard("rmf_sheet_part_flat_pattern", || {
+        hand_flat_pattern(&sheet_part(part)?.part, edges, capacity, count)
+    })
+}
+
+/// rmf_sheet_part_flat_pattern on the part an RmfConeSpline holds (made by rmf_cone_spline_transition,
+/// _part or _tangent_part); RMF_ERROR_INVALID_INPUT for a cone spline that is no part.
+///
+/// @param part, edges, capacity, count As for rmf_sheet_part_flat_pattern.
+/// \deprecated Use rmf_sheet_part_flat_pattern.
+/// \since 0.2
+/// \ingroup rmf_sheet
+#[deprecated(since = "0.2.0", note = "use rmf_sheet_part_flat_pattern")]
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_flat_pattern(
+    part: *const RmfConeSpline,
+    edges: *mut RmfFlatEdge,
+    capacity: usize,
+    count: *mut usize,
+) -> RmfStatus {
+    guard("rmf_cone_spline_flat_pattern", || {
+        hand_flat_pattern(&spline_part(part)?.part, edges, capacity, count)
+    })
+}
+
+unsafe fn hand_flat_pattern(
+    p: &SheetPart,
+    edges: *mut RmfFlatEdge,
+    capacity: usize,
+    count: *mut usize,
+) -> FfiResult {
+    let count = out_ptr(count, "count")?;
+    let edges = buffer(edges, capacity, "edges")?;
+    let flat = p.flat_pattern()?;
+    let all: Vec<RmfFlatEdge> = flat
+        .outline
+        .iter()
+        .map(|e| flat_edge(e, RMF_FLAT_CUT))
+        .chain(flat.bend_lines.iter().map(|e| flat_edge(e, RMF_FLAT_BEND)))
+        .collect();
+    hand_over(&all, edges, count, "edges")
+}
+
+/// Marks from the flat pattern to the formed part — holes, slots, text outlines, fold
+/// marks, given as points (curves as polylines): each flat point (coordinates of
+/// rmf_sheet_part_flat_pattern) to the point of `layer` straight across the sheet from
+/// its image on the neutral layer, by the exact isometry of the development (per piece a
+/// rotation by f·φ sin α about the developed vertex against f·φ about the axis, not the
+/// NURBS parameters), and optionally the unit normal there (from the inner to the outer
+/// face).
+///
+/// @param[in] part A part (rmf_sheet_part_transition, _between_rails or _tangent).
+/// @param[in] flat count points of the flat pattern.
+/// @param[in] count Number of points (0: nothing to do).
+/// @param[in] layer RMF_SHEET_LAYER_*.
+/// @param[out] points count points on the layer.
+/// @param[out] normals count unit normals, or NULL.
+/// @return RMF_OK on success; nothing is written on failure.
+/// @return RMF_ERROR_NULL_POINTER If part, flat or points is NULL (count > 0).
+/// @return RMF_ERROR_INVALID_INPUT If a point is not finite or lies outside the flat
+///         pattern (the message names it: flat[i]), or for an unknown layer.
+/// \since 0.2
+/// \ingroup rmf_sheet
+#[no_mangle]
+pub unsafe extern "C" fn rmf_sheet_part_flat_to_surface(
+    part: *const RmfSheetPart,
+    flat: *const RmfVec2,
+    count: usize,
+    layer: RmfSheetLayer,
+    points: *mut RmfVec3,
+    normals: *mut RmfVec3,
+) -> RmfStatus {
+    guard("rmf_sheet_part_flat_to_surface", || {
+        let p = &sheet_part(part)?.part;
+        flat_to_surface(p, flat, count, layer, points, normals)
+    })
+}
+
+/// rmf_sheet_part_flat_to_surface on the part an RmfConeSpline holds (made by rmf_cone_spline_transition,
+/// _part or _tangent_part); RMF_ERROR_INVALID_INPUT for a cone spline that is no part.
+///
+/// @param part, flat, count, layer, points, normals As for rmf_sheet_part_flat_to_surface.
+/// \deprecated Use rmf_sheet_part_flat_to_surface.
+/// \since 0.2
+/// \ingroup rmf_sheet
+#[deprecated(since = "0.2.0", note = "use rmf_sheet_part_flat_to_surface")]
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_flat_to_surface(
+    part: *const RmfConeSpline,
+    flat: *const RmfVec2,
+    count: usize,
+    layer: RmfSheetLayer,
+    points: *mut RmfVec3,
+    normals: *mut RmfVec3,
+) -> RmfStatus {
+    guard("rmf_cone_spline_flat_to_surface", || {
+        let p = &spline_part(part)?.part;
+        flat_to_surface(p, flat, count, layer, points, normals)
+    })
+}
+
+unsafe fn flat_to_surface(
+    p: &SheetPart,
+    flat: *const RmfVec2,
+    count: usize,
+    layer: RmfSheetLayer,
+    points: *mut RmfVec3,
+    normals: *mut RmfVec3,
+) -> FfiResult {
+    let layer = layer_from(layer)?;
+    let flat = slice(flat, count, "flat")?;
+    let points = buffer(points, count, "points")?;
+    let mut normals = match optional_out(normals, "normals")? {
+        Some(n) => Some(buffer(n, count, "normals")?),
+        None => None,
+    };
+    let mapped = flat
+        .iter()
+        .enumerate()
+        .map(|(i, q)| p.flat_to_surface(DVec2::from(*q), layer, &format!("flat[{i}]")))
+        .collect::<rmfsurf::Result<Vec<_>>>()?;
+    for (i, (x, n)) in mapped.into_iter().enumerate() {
+        points[i] = x.into();
+        if let Some(normals) = normals.as_deref_mut() {
+            normals[i] = n.into();
+        }
+    }
+    Ok(())
+}
+
+/// Marks from the formed part to the flat pattern: each point on `layer` (within
+/// max_distance of it) to the flat pattern's point of the neutral layer straight across
+/// the sheet, by the exact isometry of the development.
+///
+/// @param[in] part A part (rmf_sheet_part_transition, _between_rails or _tangent).
+/// @param[in] points count points on the layer.
+/// @param[in] count Number of points (0: nothing to do).
+/// @param[in] layer RMF_SHEET_LAYER_*.
+/// @param[in] max_distance Largest accepted distance of a point from the layer's part, ≥ 0.
+/// @param[out] flat count points of the flat pattern.
+/// @return RMF_OK on success; nothing is written on failure.
+/// @return RMF_ERROR_NULL_POINTER If part, points or flat is NULL (count > 0).
+/// @return RMF_ERROR_INVALID_INPUT If a point is not finite or farther than max_distance
+///         from the layer's part (the message names it: points[i], and gives the distance),
+///         max_distance is negative or not finite, or the layer is unknown.
+/// \since 0.2
+/// \ingroup rmf_sheet
+#[no_mangle]
+pub unsafe extern "C" fn rmf_sheet_part_surface_to_flat(
+    part: *const RmfSheetPart,
+    points: *const RmfVec3,
+    count: usize,
+    layer: RmfSheetLayer,
+    max_distance: f64,
+    flat: *mut RmfVec2,
+) -> RmfStatus {
+    guard("rmf_sheet_part_surface_to_flat", || {
+        let p = &sheet_part(part)?.part;
+        surface_to_flat(p, points, count, layer, max_distance, flat)
+    })
+}
+
+/// rmf_sheet_part_surface_to_flat on the part an RmfConeSpline holds (made by rmf_cone_spline_transition,
+/// _part or _tangent_part); RMF_ERROR_INVALID_INPUT for a cone spline that is no part.
+///
+/// @param part, points, count, layer, max_distance, flat As for rmf_sheet_part_surface_to_flat.
+/// \deprecated Use rmf_sheet_part_surface_to_flat.
+/// \since 0.2
+/// \ingroup rmf_sheet
+#[deprecated(since = "0.2.0", note = "use rmf_sheet_part_surface_to_flat")]
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_surface_to_flat(
+    part: *const RmfConeSpline,
+    points: *const RmfVec3,
+    count: usize,
+    layer: RmfSheetLayer,
+    max_distance: f64,
+    flat: *mut RmfVec2,
+) -> RmfStatus {
+    guard("rmf_cone_spline_surface_to_flat", || {
+        let p = &spline_part(part)?.part;
+        surface_to_flat(p, points, count, layer, max_distance, flat)
+    })
+}
+
+unsafe fn surface_to_flat(
+    p: &SheetPart,
+    points: *const RmfVec3,
+    count: usize,
+    layer: RmfSheetLayer,
+    max_distance: f64,
+    flat: *mut RmfVec2,
+) -> FfiResult {
+    let layer = layer_from(layer)?;
+    if !(max_distance.is_finite() && max_distance >= 0.0) {
+        return invalid_arg(format!(
+            "max_distance = {max_distance} must be finite and ≥ 0"
+        ));
+    }
+    let points = slice(points, count, "points")?;
+    let flat = buffer(flat, count, "flat")?;
+    let mapped = points
+        .iter()
+        .enumerate()
+        .map(|(i, y)| p.surface_to_flat((*y).into(), layer, max_distance, &format!("points[{i}]")))
+        .collect::<rmfsurf::Result<Vec<_>>>()?;
+    for (i, q) in mapped.into_iter().enumerate() {
+        flat[i] = q.into();
+    }
+    Ok(())
+}
+
+/// The text of a file of the part: the formed solid or the flat pattern as STEP, the flat
+/// pattern as DXF or SVG, the formed solid in OpenCascade's B-rep text
+/// (RMF_SHEET_FORMAT_*), exactly as the command-line tool writes it.
+///
+/// Size query: with capacity 0 (buffer may be NULL) only length is written. Otherwise the
+/// text and a terminating NUL are written if capacity ≥ length + 1.
+///
+/// @param[in] part A part (rmf_sheet_part_transition, _between_rails or _tangent).
+/// @param[in] format RMF_SHEET_FORMAT_*.
+/// @param[out] buffer capacity bytes for the text and its NUL.
+/// @param[in] capacity Size of buffer in bytes; 0 for a size query.
+/// @param[out] length Receives the length of the text (without the NUL).
+/// @return RMF_OK on success or for a size query.
+/// @return RMF_ERROR_NULL_POINTER If part or length is NULL, or buffer is NULL with a
+///         non-zero capacity.
+/// @return RMF_ERROR_BUFFER_TOO_SMALL If 0 < capacity ≤ length; length is written.
+/// @return RMF_ERROR_INVALID_INPUT For an unknown format.
+/// \since 0.2
+/// \ingroup rmf_export
+#[no_mangle]
+pub unsafe extern "C" fn rmf_sheet_part_export(
+    part: *const RmfSheetPart,
+    format: RmfSheetFormat,
+    buffer: *mut c_char,
+    capacity: usize,
+    length: *mut usize,
+) -> RmfStatus {
+    guard("rmf_sheet_part_export", || {
+        export(sheet_part(part)?, format, buffer, capacity, length)
+    })
+}
+
+/// rmf_sheet_part_export on the part an RmfConeSpline holds (made by rmf_cone_spline_transition,
+/// _part or _tangent_part); RMF_ERROR_INVALID_INPUT for a cone spline that is no part.
+///
+/// @param part, format, buffer, capacity, length As for rmf_sheet_part_export.
+/// \deprecated Use rmf_sheet_part_export.
+/// \since 0.2
+/// \ingroup rmf_export
+#[deprecated(since = "0.2.0", note = "use rmf_sheet_part_export")]
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_part_export(
+    part: *const RmfConeSpline,
+    format: RmfSheetFormat,
+    buffer: *mut c_char,
+    capacity: usize,
+    length: *mut usize,
+) -> RmfStatus {
+    guard("rmf_cone_spline_part_export", || {
+        export(spline_part(part)?, format, buffer, capacity, length)
+    })
+}
+
+unsafe fn export(
+    handle: &PartHandle,
+    format: RmfSheetFormat,
+    text_buffer: *mut c_char,
+    capacity: usize,
+    length: *mut usize,
+) -> FfiResult {
+    let length = out_ptr(length, "length")?;
+    let out = buffer(text_buffer.cast::<u8>(), capacity, "buffer")?;
+    let Some(cell) = handle.texts.get(format as usize) else {
+        return invalid_arg(format!(
+            "format = {format} is not one of the RMF_SHEET_FORMAT_* values"
+        ));
+    };
+    let p = &handle.part;
+    let text = crate::boundary::made_once(cell, || {
+        Ok(match format {
+            RMF_SHEET_FORMAT_STEP_SOLID => p.to_step("rmfsurf part")?,
+            RMF_SHEET_FORMAT_OCC_BREP => p.to_occ_brep()?,
+            RMF_SHEET_FORMAT_STEP_FLAT => {
+                step::flat_to_step(&p.flat_pattern()?, "rmfsurf flat pattern")?
+            }
+            RMF_SHEET_FORMAT_DXF => dxf::pattern_to_dxf(&p.flat_pattern()?),
+            RMF_SHEET_FORMAT_SVG => svg::pattern_to_svg("rmfsurf flat pattern", &p.flat_pattern()?),
             other => {
                 return invalid_arg(format!(
-                    "side = {other} is not one of the RMF_SHEET_SIDE_* values"
+                    "format = {other} is not one of the RMF_SHEET_FORMAT_* values"
                 ))
             }
-        };
-        let curve = p.boundary(layer_from(layer)?, side)?;
-        write(out, RmfCurve::new(curve, None).into_raw());
-        Ok(())
+        })
+    })?;
+    crate::boundary::hand_text(text, out, length)
+}
+
+/// The boundary representation of a sheet-metal part's formed solid (the solid of
+/// RMF_SHEET_FORMAT_STEP_SOLID and RMF_SHEET_FORMAT_OCC_BREP).
+///
+/// @param[in] part A part (rmf_sheet_part_transition, _between_rails or _tangent).
+/// @param[out] out Receives a new B-rep; free it with rmf_brep_free.
+/// @return RMF_OK or RMF_ERROR_NULL_POINTER.
+/// \since 0.2
+/// \ingroup rmf_brep
+#[no_mangle]
+pub unsafe extern "C" fn rmf_sheet_part_brep(
+    part: *const RmfSheetPart,
+    out: *mut *mut crate::brep::RmfBrep,
+) -> RmfStatus {
+    guard("rmf_sheet_part_brep", || {
+        write_brep(&sheet_part(part)?.part, out)
     })
+}
+
+/// rmf_sheet_part_brep on the part an RmfConeSpline holds (made by rmf_cone_spline_transition,
+/// _part or _tangent_part); RMF_ERROR_INVALID_INPUT for a cone spline that is no part.
+///
+/// @param part, out As for rmf_sheet_part_brep.
+/// \deprecated Use rmf_sheet_part_brep.
+/// \since 0.2
+/// \ingroup rmf_brep
+#[deprecated(since = "0.2.0", note = "use rmf_sheet_part_brep")]
+#[no_mangle]
+pub unsafe extern "C" fn rmf_cone_spline_part_brep(
+    part: *const RmfConeSpline,
+    out: *mut *mut crate::brep::RmfBrep,
+) -> RmfStatus {
+    guard("rmf_cone_spline_part_brep", || {
+        write_brep(&spline_part(part)?.part, out)
+    })
+}
+
+unsafe fn write_brep(p: &SheetPart, out: *mut *mut crate::brep::RmfBrep) -> FfiResult {
+    let out = out_ptr(out, "out")?;
+    write(out, crate::brep::RmfBrep::new(p.brep()?).into_raw());
+    Ok(())
 }
 
 pub(crate) fn flat_edge(edge: &PatternEdge, layer: u32) -> RmfFlatEdge {
@@ -550,233 +1163,4 @@ pub(crate) fn flat_edge(edge: &PatternEdge, layer: u32) -> RmfFlatEdge {
             sweep,
         },
     }
-}
-
-/// The flat pattern of the neutral layer for the cutter: the outline (RMF_FLAT_CUT) as
-/// lines and circular arcs only — exact where the development is a line or an arc, G1
-/// biarcs within the flat tolerance elsewhere —, closed (each edge starts where the one
-/// before ends, the last ends where the first starts) and counter-clockwise, followed by
-/// the bend lines (RMF_FLAT_BEND). A closed part (a transition) is cut open along its seam,
-/// the middle ruling of its largest planar piece.
-///
-/// Size query: with capacity 0 (edges may be NULL) only count is written.
-///
-/// @param[in] part A part (rmf_cone_spline_transition, _part or _tangent_part).
-/// @param[out] edges Buffer for capacity edges: the outline first, then the bend lines.
-/// @param[in] capacity Capacity of edges; 0 for a size query.
-/// @param[out] count Receives the number of edges.
-/// @return RMF_OK on success or for a size query.
-/// @return RMF_ERROR_NULL_POINTER If part or count is NULL, or edges is NULL with a
-///         non-zero capacity.
-/// @return RMF_ERROR_BUFFER_TOO_SMALL If capacity is non-zero but too small; count is written.
-/// @return RMF_ERROR_INVALID_INPUT If the handle is not a part.
-/// \since 0.2
-/// \ingroup rmf_sheet
-#[no_mangle]
-pub unsafe extern "C" fn rmf_cone_spline_flat_pattern(
-    part: *const RmfConeSpline,
-    edges: *mut RmfFlatEdge,
-    capacity: usize,
-    count: *mut usize,
-) -> RmfStatus {
-    guard("rmf_cone_spline_flat_pattern", || {
-        let p = part_of(reference(part, "part")?, "part")?;
-        let count = out_ptr(count, "count")?;
-        let edges = buffer(edges, capacity, "edges")?;
-        let flat = p.flat_pattern()?;
-        let all: Vec<RmfFlatEdge> = flat
-            .outline
-            .iter()
-            .map(|e| flat_edge(e, RMF_FLAT_CUT))
-            .chain(flat.bend_lines.iter().map(|e| flat_edge(e, RMF_FLAT_BEND)))
-            .collect();
-        hand_over(&all, edges, count, "edges")
-    })
-}
-
-/// Marks from the flat pattern to the formed part — holes, slots, text outlines, fold
-/// marks, given as points (curves as polylines): each flat point (coordinates of
-/// rmf_cone_spline_flat_pattern) to the point of `layer` straight across the sheet from
-/// its image on the neutral layer, by the exact isometry of the development (per piece a
-/// rotation by f·φ sin α about the developed vertex against f·φ about the axis, not the
-/// NURBS parameters), and optionally the unit normal there (from the inner to the outer
-/// face).
-///
-/// @param[in] part A part (rmf_cone_spline_transition, _part or _tangent_part).
-/// @param[in] flat count points of the flat pattern.
-/// @param[in] count Number of points (0: nothing to do).
-/// @param[in] layer RMF_SHEET_LAYER_*.
-/// @param[out] points count points on the layer.
-/// @param[out] normals count unit normals, or NULL.
-/// @return RMF_OK on success; nothing is written on failure.
-/// @return RMF_ERROR_NULL_POINTER If part, flat or points is NULL (count > 0).
-/// @return RMF_ERROR_INVALID_INPUT If a point is not finite or lies outside the flat
-///         pattern (the message names it: flat[i]), for an unknown layer, or if the handle
-///         is not a part.
-/// \since 0.2
-/// \ingroup rmf_sheet
-#[no_mangle]
-pub unsafe extern "C" fn rmf_cone_spline_flat_to_surface(
-    part: *const RmfConeSpline,
-    flat: *const RmfVec2,
-    count: usize,
-    layer: RmfSheetLayer,
-    points: *mut RmfVec3,
-    normals: *mut RmfVec3,
-) -> RmfStatus {
-    guard("rmf_cone_spline_flat_to_surface", || {
-        let p = part_of(reference(part, "part")?, "part")?;
-        let layer = layer_from(layer)?;
-        let flat = slice(flat, count, "flat")?;
-        let points = buffer(points, count, "points")?;
-        let mut normals = match optional_out(normals, "normals")? {
-            Some(n) => Some(buffer(n, count, "normals")?),
-            None => None,
-        };
-        let mapped = flat
-            .iter()
-            .enumerate()
-            .map(|(i, q)| p.flat_to_surface(DVec2::from(*q), layer, &format!("flat[{i}]")))
-            .collect::<rmfsurf::Result<Vec<_>>>()?;
-        for (i, (x, n)) in mapped.into_iter().enumerate() {
-            points[i] = x.into();
-            if let Some(normals) = normals.as_deref_mut() {
-                normals[i] = n.into();
-            }
-        }
-        Ok(())
-    })
-}
-
-/// Marks from the formed part to the flat pattern: each point on `layer` (within
-/// max_distance of it) to the flat pattern's point of the neutral layer straight across
-/// the sheet, by the exact isometry of the development.
-///
-/// @param[in] part A part (rmf_cone_spline_transition, _part or _tangent_part).
-/// @param[in] points count points on the layer.
-/// @param[in] count Number of points (0: nothing to do).
-/// @param[in] layer RMF_SHEET_LAYER_*.
-/// @param[in] max_distance Largest accepted distance of a point from the layer's part, ≥ 0.
-/// @param[out] flat count points of the flat pattern.
-/// @return RMF_OK on success; nothing is written on failure.
-/// @return RMF_ERROR_NULL_POINTER If part, points or flat is NULL (count > 0).
-/// @return RMF_ERROR_INVALID_INPUT If a point is not finite or farther than max_distance
-///         from the layer's part (the message names it: points[i], and gives the distance),
-///         max_distance is negative or not finite, the layer is unknown, or the handle is
-///         not a part.
-/// \since 0.2
-/// \ingroup rmf_sheet
-#[no_mangle]
-pub unsafe extern "C" fn rmf_cone_spline_surface_to_flat(
-    part: *const RmfConeSpline,
-    points: *const RmfVec3,
-    count: usize,
-    layer: RmfSheetLayer,
-    max_distance: f64,
-    flat: *mut RmfVec2,
-) -> RmfStatus {
-    guard("rmf_cone_spline_surface_to_flat", || {
-        let p = part_of(reference(part, "part")?, "part")?;
-        let layer = layer_from(layer)?;
-        if !(max_distance.is_finite() && max_distance >= 0.0) {
-            return invalid_arg(format!(
-                "max_distance = {max_distance} must be finite and ≥ 0"
-            ));
-        }
-        let points = slice(points, count, "points")?;
-        let flat = buffer(flat, count, "flat")?;
-        let mapped = points
-            .iter()
-            .enumerate()
-            .map(|(i, y)| {
-                p.surface_to_flat((*y).into(), layer, max_distance, &format!("points[{i}]"))
-            })
-            .collect::<rmfsurf::Result<Vec<_>>>()?;
-        for (i, q) in mapped.into_iter().enumerate() {
-            flat[i] = q.into();
-        }
-        Ok(())
-    })
-}
-
-/// The text of a file of the part: the formed solid or the flat pattern as STEP, the flat
-/// pattern as DXF or SVG, the formed solid in OpenCascade's B-rep text
-/// (RMF_SHEET_FORMAT_*), exactly as the command-line tool writes it.
-///
-/// Size query: with capacity 0 (buffer may be NULL) only length is written. Otherwise the
-/// text and a terminating NUL are written if capacity ≥ length + 1.
-///
-/// @param[in] part A part (rmf_cone_spline_transition, _part or _tangent_part).
-/// @param[in] format RMF_SHEET_FORMAT_*.
-/// @param[out] buffer capacity bytes for the text and its NUL.
-/// @param[in] capacity Size of buffer in bytes; 0 for a size query.
-/// @param[out] length Receives the length of the text (without the NUL).
-/// @return RMF_OK on success or for a size query.
-/// @return RMF_ERROR_NULL_POINTER If part or length is NULL, or buffer is NULL with a
-///         non-zero capacity.
-/// @return RMF_ERROR_BUFFER_TOO_SMALL If 0 < capacity ≤ length; length is written.
-/// @return RMF_ERROR_INVALID_INPUT For an unknown format or a handle that is not a part.
-/// \since 0.2
-/// \ingroup rmf_export
-#[no_mangle]
-pub unsafe extern "C" fn rmf_cone_spline_part_export(
-    part: *const RmfConeSpline,
-    format: RmfSheetFormat,
-    buffer: *mut c_char,
-    capacity: usize,
-    length: *mut usize,
-) -> RmfStatus {
-    guard("rmf_cone_spline_part_export", || {
-        let handle = handle_of(reference(part, "part")?, "part")?;
-        let length = out_ptr(length, "length")?;
-        // The parameter keeps its C name and shadows the helper, hence the path.
-        let out = crate::boundary::buffer(buffer.cast::<u8>(), capacity, "buffer")?;
-        let Some(cell) = handle.texts.get(format as usize) else {
-            return invalid_arg(format!(
-                "format = {format} is not one of the RMF_SHEET_FORMAT_* values"
-            ));
-        };
-        let p = &handle.part;
-        let text = crate::boundary::made_once(cell, || {
-            Ok(match format {
-                RMF_SHEET_FORMAT_STEP_SOLID => p.to_step("rmfsurf part")?,
-                RMF_SHEET_FORMAT_OCC_BREP => p.to_occ_brep()?,
-                RMF_SHEET_FORMAT_STEP_FLAT => {
-                    step::flat_to_step(&p.flat_pattern()?, "rmfsurf flat pattern")?
-                }
-                RMF_SHEET_FORMAT_DXF => dxf::pattern_to_dxf(&p.flat_pattern()?),
-                RMF_SHEET_FORMAT_SVG => {
-                    svg::pattern_to_svg("rmfsurf flat pattern", &p.flat_pattern()?)
-                }
-                other => {
-                    return invalid_arg(format!(
-                        "format = {other} is not one of the RMF_SHEET_FORMAT_* values"
-                    ))
-                }
-            })
-        })?;
-        crate::boundary::hand_text(text, out, length)
-    })
-}
-
-/// The boundary representation of a sheet-metal part's formed solid (the solid of
-/// RMF_SHEET_FORMAT_STEP_SOLID and RMF_SHEET_FORMAT_OCC_BREP).
-///
-/// @param[in] part A part (rmf_cone_spline_transition, _part or _tangent_part).
-/// @param[out] out Receives a new B-rep; free it with rmf_brep_free.
-/// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT for a cone spline
-///         that is not a part.
-/// \since 0.2
-/// \ingroup rmf_brep
-#[no_mangle]
-pub unsafe extern "C" fn rmf_cone_spline_part_brep(
-    part: *const RmfConeSpline,
-    out: *mut *mut crate::brep::RmfBrep,
-) -> RmfStatus {
-    guard("rmf_cone_spline_part_brep", || {
-        let part = part_of(reference(part, "part")?, "part")?;
-        let out = out_ptr(out, "out")?;
-        write(out, crate::brep::RmfBrep::new(part.brep()?).into_raw());
-        Ok(())
-    })
 }

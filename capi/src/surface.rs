@@ -55,7 +55,7 @@ impl RmfSurface {
                 Some(n) => n.clone(),
                 None => NurbsSurface::from_piecewise(&self.surface)?,
             };
-            let poles = nurbs.poles.iter().map(|&p| p.into()).collect();
+            let poles = nurbs.poles().iter().map(|&p| p.into()).collect();
             Ok(NurbsView { nurbs, poles })
         });
         view.as_ref().map_err(|e| FfiError::Core(e.clone()))
@@ -423,13 +423,13 @@ pub unsafe extern "C" fn rmf_surface_nurbs_copy(
         let knots_v = buffer(knots_v, knot_capacity_v, "knots_v")?;
         let v = surface.nurbs_view()?;
         let n = &v.nurbs;
-        write(degree_u, n.degree_u as u32);
-        write(degree_v, n.degree_v as u32);
+        write(degree_u, n.degree_u() as u32);
+        write(degree_v, n.degree_v() as u32);
         for (p, value) in counts.into_iter().zip([
-            n.pole_count_u,
-            n.pole_count_v,
-            n.knots_u.len(),
-            n.knots_v.len(),
+            n.pole_count_u(),
+            n.pole_count_v(),
+            n.knots_u().len(),
+            n.knots_v().len(),
         ]) {
             write(p, value);
         }
@@ -451,20 +451,20 @@ fn copy_nurbs(
     let n = &v.nurbs;
     if poles.len() < v.poles.len()
         || weights.len() < v.poles.len()
-        || knots_u.len() < n.knots_u.len()
-        || knots_v.len() < n.knots_v.len()
+        || knots_u.len() < n.knots_u().len()
+        || knots_v.len() < n.knots_v().len()
     {
         return Err(FfiError::BufferTooSmall(format!(
             "need {} poles, {} u knots and {} v knots",
             v.poles.len(),
-            n.knots_u.len(),
-            n.knots_v.len()
+            n.knots_u().len(),
+            n.knots_v().len()
         )));
     }
     poles[..v.poles.len()].copy_from_slice(&v.poles);
-    weights[..v.poles.len()].copy_from_slice(&n.weights);
-    knots_u[..n.knots_u.len()].copy_from_slice(&n.knots_u);
-    knots_v[..n.knots_v.len()].copy_from_slice(&n.knots_v);
+    weights[..v.poles.len()].copy_from_slice(n.weights());
+    knots_u[..n.knots_u().len()].copy_from_slice(n.knots_u());
+    knots_v[..n.knots_v().len()].copy_from_slice(n.knots_v());
     Ok(())
 }
 
@@ -555,15 +555,15 @@ pub unsafe extern "C" fn rmf_surface_nurbs_copy_into(
         let v = surface.nurbs_view()?;
         let n = &v.nurbs;
         let mut described = RmfNurbsSurface {
-            degree_u: n.degree_u as u32,
-            degree_v: n.degree_v as u32,
-            pole_count_u: n.pole_count_u,
-            pole_count_v: n.pole_count_v,
+            degree_u: n.degree_u() as u32,
+            degree_v: n.degree_v() as u32,
+            pole_count_u: n.pole_count_u(),
+            pole_count_v: n.pole_count_v(),
             poles: std::ptr::null(),
             weights: std::ptr::null(),
-            knot_count_u: n.knots_u.len(),
+            knot_count_u: n.knots_u().len(),
             knots_u: std::ptr::null(),
-            knot_count_v: n.knots_v.len(),
+            knot_count_v: n.knots_v().len(),
             knots_v: std::ptr::null(),
         };
         if b.pole_capacity == 0 && b.knot_capacity_u == 0 && b.knot_capacity_v == 0 {

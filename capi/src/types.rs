@@ -100,12 +100,12 @@ impl RmfNurbsCurve {
     /// The view of `curve` whose poles, in the C layout, are at `poles` (owned beside it).
     pub(crate) fn of(curve: &rmfsurf::NurbsCurve, poles: *const RmfVec3) -> Self {
         Self {
-            degree: curve.degree as u32,
-            pole_count: curve.poles.len(),
+            degree: curve.degree() as u32,
+            pole_count: curve.poles().len(),
             poles,
-            weights: curve.weights.as_ptr(),
-            knot_count: curve.knots.len(),
-            knots: curve.knots.as_ptr(),
+            weights: curve.weights().as_ptr(),
+            knot_count: curve.knots().len(),
+            knots: curve.knots().as_ptr(),
         }
     }
 }
@@ -157,16 +157,16 @@ impl RmfNurbsSurface {
     /// The view of `surface` whose poles, in the C layout, are at `poles` (owned beside it).
     pub(crate) fn of(surface: &rmfsurf::NurbsSurface, poles: *const RmfVec3) -> Self {
         Self {
-            degree_u: surface.degree_u as u32,
-            degree_v: surface.degree_v as u32,
-            pole_count_u: surface.pole_count_u,
-            pole_count_v: surface.pole_count_v,
+            degree_u: surface.degree_u() as u32,
+            degree_v: surface.degree_v() as u32,
+            pole_count_u: surface.pole_count_u(),
+            pole_count_v: surface.pole_count_v(),
             poles,
-            weights: surface.weights.as_ptr(),
-            knot_count_u: surface.knots_u.len(),
-            knots_u: surface.knots_u.as_ptr(),
-            knot_count_v: surface.knots_v.len(),
-            knots_v: surface.knots_v.as_ptr(),
+            weights: surface.weights().as_ptr(),
+            knot_count_u: surface.knots_u().len(),
+            knots_u: surface.knots_u().as_ptr(),
+            knot_count_v: surface.knots_v().len(),
+            knots_v: surface.knots_v().as_ptr(),
         }
     }
 }

@@ -1,4 +1,4 @@
-//! Unfolding the caller's own faces (`rmfsurf::unfold_face`): a developability report for
+//! Unfolding the caller's own faces (`rmfsurf::unfold::unfold_face`): a developability report for
 //! any face of an RmfBrep, and the exact flat pattern of a developable one as an
 //! RmfUnfoldedFace — its loops (outline and holes) and bend lines as lines and arcs, its
 //! DXF, and the isometry between flat and formed for marks.
@@ -13,8 +13,9 @@ use super::status::RmfStatus;
 use super::types::{RmfVec2, RmfVec3};
 use rmfsurf::glam::DVec2;
 use rmfsurf::{
-    face_developability, unfold_body, unfold_face, BodyOptions, Developability, FlatPattern,
-    KFactor, SurfaceKind, UnfoldOptions, UnfoldedBody, UnfoldedFace,
+    unfold::face_developability, unfold::unfold_body, unfold::unfold_face, unfold::BodyOptions,
+    unfold::Developability, unfold::KFactor, unfold::SurfaceKind, unfold::UnfoldOptions,
+    unfold::UnfoldedBody, unfold::UnfoldedFace, FlatPattern,
 };
 
 /// RmfDevelopability.kind: a plane.
@@ -116,7 +117,7 @@ impl Default for RmfUnfoldOptions {
             struct_size: std::mem::size_of::<Self>(),
             tolerance: 1e-4,
             flat_tolerance: 0.0,
-            max_pieces: rmfsurf::DEFAULT_MAX_PIECES,
+            max_pieces: rmfsurf::cone::DEFAULT_MAX_PIECES,
         }
     }
 }
@@ -562,7 +563,7 @@ impl Default for RmfUnfoldBodyOptions {
             struct_size: std::mem::size_of::<Self>(),
             tolerance: 1e-4,
             flat_tolerance: 0.0,
-            max_pieces: rmfsurf::DEFAULT_MAX_PIECES,
+            max_pieces: rmfsurf::cone::DEFAULT_MAX_PIECES,
             k_factor: 0.5,
             k_table_count: 0,
             k_table: std::ptr::null(),

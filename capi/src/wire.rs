@@ -14,8 +14,9 @@ use super::types::RmfVec3;
 use rmfsurf::glam::DVec3;
 use rmfsurf::PiecewiseCurve;
 use rmfsurf::{
-    sweep_wire, sweep_wire_between, sweep_wire_through, Corner, Edge, Error, Section, SpineMethod,
-    SweepFrame, WireSweep, MAX_FACES,
+    wire::sweep as sweep_wire, wire::sweep_between as sweep_wire_between,
+    wire::sweep_through as sweep_wire_through, wire::Corner, wire::Edge, wire::Section,
+    wire::SweepFrame, wire::WireSweep, wire::MAX_FACES, Error, SpineMethod,
 };
 
 /// What an RmfEdge is (values fixed, validated).

@@ -600,7 +600,7 @@ fn square_curve() -> *mut RmfCurve {
     ])
 }
 
-/// `rmf_cone_spline_transition` between `bottom` and `top` (freed here) with the default
+/// `rmf_sheet_part_transition` between `bottom` and `top` (freed here) with the default
 /// options at tolerance 1e-2 changed by `edit`; the part is freed.
 fn transition_with(
     bottom: *mut RmfCurve,
@@ -613,8 +613,8 @@ fn transition_with(
     edit(&mut options);
     let mut out = null_mut();
     unsafe {
-        let status = rmf_cone_spline_transition(bottom, top, &options, &mut out);
-        rmf_cone_spline_free(out);
+        let status = rmf_sheet_part_transition(bottom, top, &options, &mut out);
+        rmf_sheet_part_free(out);
         rmf_curve_free(bottom);
         rmf_curve_free(top);
         status
@@ -651,7 +651,7 @@ fn saddle_surface() -> *mut RmfSurface {
     out
 }
 
-/// `rmf_cone_spline_tangent_part` of the circle of radius 1 between `v_min` and `v_max`
+/// `rmf_sheet_part_tangent` of the circle of radius 1 between `v_min` and `v_max`
 /// (default options at tolerance 1e-2); the part, if any, is freed.
 fn tangent_part_with(v_min: f64, v_max: f64) -> RmfStatus {
     let circle = circle_curve(v(0., 0., 0.), 1.0);
@@ -661,8 +661,8 @@ fn tangent_part_with(v_min: f64, v_max: f64) -> RmfStatus {
     };
     let mut out = null_mut();
     unsafe {
-        let status = rmf_cone_spline_tangent_part(circle, v_min, v_max, &options, &mut out);
-        rmf_cone_spline_free(out);
+        let status = rmf_sheet_part_tangent(circle, v_min, v_max, &options, &mut out);
+        rmf_sheet_part_free(out);
         rmf_curve_free(circle);
         status
     }
@@ -670,7 +670,7 @@ fn tangent_part_with(v_min: f64, v_max: f64) -> RmfStatus {
 
 /// A square-to-round part at tolerance 1e-2, for the rows that need one; `call` gets it,
 /// and the part is freed after.
-fn with_part(call: impl Fn(*mut RmfConeSpline) -> RmfStatus) -> RmfStatus {
+fn with_part(call: impl Fn(*mut RmfSheetPart) -> RmfStatus) -> RmfStatus {
     let (bottom, top) = (square_curve(), circle_curve(v(0.1, 0., 1.), 0.3));
     let options = RmfSheetOptions {
         tolerance: 1e-2,
@@ -679,11 +679,11 @@ fn with_part(call: impl Fn(*mut RmfConeSpline) -> RmfStatus) -> RmfStatus {
     let mut part = null_mut();
     unsafe {
         assert_eq!(
-            rmf_cone_spline_transition(bottom, top, &options, &mut part),
+            rmf_sheet_part_transition(bottom, top, &options, &mut part),
             RmfStatus::RmfOk
         );
         let status = call(part);
-        rmf_cone_spline_free(part);
+        rmf_sheet_part_free(part);
         rmf_curve_free(bottom);
         rmf_curve_free(top);
         status
@@ -2017,7 +2017,7 @@ fn rows() -> Vec<Row> {
         },
         Row {
             what: "transition curve not closed",
-            function: "rmf_cone_spline_transition",
+            function: "rmf_sheet_part_transition",
             expected: INVALID,
             names: "bottom is not closed",
             call: |_| {
@@ -2040,7 +2040,7 @@ fn rows() -> Vec<Row> {
         },
         Row {
             what: "transition curve not planar",
-            function: "rmf_cone_spline_transition",
+            function: "rmf_sheet_part_transition",
             expected: INVALID,
             names: "top is not planar",
             call: |_| {
@@ -2051,7 +2051,7 @@ fn rows() -> Vec<Row> {
         },
         Row {
             what: "transition curve not convex",
-            function: "rmf_cone_spline_transition",
+            function: "rmf_sheet_part_transition",
             expected: INVALID,
             names: "bottom is not convex",
             call: |_| {
@@ -2062,7 +2062,7 @@ fn rows() -> Vec<Row> {
         },
         Row {
             what: "transition curves that cross",
-            function: "rmf_cone_spline_transition",
+            function: "rmf_sheet_part_transition",
             expected: INVALID,
             names: "the curves cross",
             call: |_| {
@@ -2077,7 +2077,7 @@ fn rows() -> Vec<Row> {
         },
         Row {
             what: "thickness 0",
-            function: "rmf_cone_spline_transition",
+            function: "rmf_sheet_part_transition",
             expected: INVALID,
             names: "options->thickness",
             call: |_| {
@@ -2088,7 +2088,7 @@ fn rows() -> Vec<Row> {
         },
         Row {
             what: "K-factor outside [0, 1]",
-            function: "rmf_cone_spline_transition",
+            function: "rmf_sheet_part_transition",
             expected: INVALID,
             names: "options->k_factor",
             call: |_| {
@@ -2099,7 +2099,7 @@ fn rows() -> Vec<Row> {
         },
         Row {
             what: "thickness beyond the smallest bend radius",
-            function: "rmf_cone_spline_transition",
+            function: "rmf_sheet_part_transition",
             expected: INVALID,
             names: "bend radius",
             call: |_| {
@@ -2110,7 +2110,7 @@ fn rows() -> Vec<Row> {
         },
         Row {
             what: "sheet options of unknown size",
-            function: "rmf_cone_spline_transition",
+            function: "rmf_sheet_part_transition",
             expected: INVALID,
             names: "options->struct_size",
             call: |_| {
@@ -2121,7 +2121,7 @@ fn rows() -> Vec<Row> {
         },
         Row {
             what: "flat mark outside the part",
-            function: "rmf_cone_spline_flat_to_surface",
+            function: "rmf_sheet_part_flat_to_surface",
             expected: INVALID,
             names: "flat[1]",
             call: |_| {
@@ -2129,7 +2129,7 @@ fn rows() -> Vec<Row> {
                     let flat = [RmfVec2 { x: 0.1, y: 0.0 }, RmfVec2 { x: 1e3, y: 0.0 }];
                     let mut points = [v(0., 0., 0.); 2];
                     unsafe {
-                        rmf_cone_spline_flat_to_surface(
+                        rmf_sheet_part_flat_to_surface(
                             part,
                             flat.as_ptr(),
                             2,
@@ -2143,7 +2143,7 @@ fn rows() -> Vec<Row> {
         },
         Row {
             what: "formed mark off the part",
-            function: "rmf_cone_spline_surface_to_flat",
+            function: "rmf_sheet_part_surface_to_flat",
             expected: INVALID,
             names: "points[0]",
             call: |_| {
@@ -2151,7 +2151,7 @@ fn rows() -> Vec<Row> {
                     let points = [v(5., 5., 5.)];
                     let mut flat = [RmfVec2 { x: 0., y: 0. }];
                     unsafe {
-                        rmf_cone_spline_surface_to_flat(
+                        rmf_sheet_part_surface_to_flat(
                             part,
                             points.as_ptr(),
                             1,
@@ -2165,28 +2165,28 @@ fn rows() -> Vec<Row> {
         },
         Row {
             what: "flat pattern buffer too small",
-            function: "rmf_cone_spline_flat_pattern",
+            function: "rmf_sheet_part_flat_pattern",
             expected: TOO_SMALL,
             names: "need",
             call: |_| {
                 with_part(|part| {
                     let mut edges = [RmfFlatEdge::default(); 2];
                     let mut count = 0;
-                    unsafe { rmf_cone_spline_flat_pattern(part, edges.as_mut_ptr(), 2, &mut count) }
+                    unsafe { rmf_sheet_part_flat_pattern(part, edges.as_mut_ptr(), 2, &mut count) }
                 })
             },
         },
         Row {
             what: "ruled part of a surface that is not developable",
-            function: "rmf_cone_spline_part",
+            function: "rmf_sheet_part_between_rails",
             expected: INVALID,
             names: "surface: the surface is not developable",
             call: |_| {
                 let saddle = saddle_surface();
                 let mut out = null_mut();
                 unsafe {
-                    let status = rmf_cone_spline_part(saddle, null(), &mut out);
-                    rmf_cone_spline_free(out);
+                    let status = rmf_sheet_part_between_rails(saddle, null(), &mut out);
+                    rmf_sheet_part_free(out);
                     rmf_surface_free(saddle);
                     status
                 }
@@ -2194,24 +2194,24 @@ fn rows() -> Vec<Row> {
         },
         Row {
             what: "ruled part of a NULL surface",
-            function: "rmf_cone_spline_part",
+            function: "rmf_sheet_part_between_rails",
             expected: NULL,
             names: "surface",
             call: |_| {
                 let mut out = null_mut();
-                unsafe { rmf_cone_spline_part(null(), null(), &mut out) }
+                unsafe { rmf_sheet_part_between_rails(null(), null(), &mut out) }
             },
         },
         Row {
             what: "tangent part through the edge of regression",
-            function: "rmf_cone_spline_tangent_part",
+            function: "rmf_sheet_part_tangent",
             expected: INVALID,
             names: "contains 0",
             call: |_| tangent_part_with(-0.5, 0.5),
         },
         Row {
             what: "tangent part with v_min ≥ v_max",
-            function: "rmf_cone_spline_tangent_part",
+            function: "rmf_sheet_part_tangent",
             expected: INVALID,
             names: "v_min",
             call: |_| tangent_part_with(0.5, 0.2),
@@ -2226,6 +2226,7 @@ fn rows() -> Vec<Row> {
                 let mut report = RmfSheetReport::default();
                 unsafe {
                     twisted_cubic_cones(0, 1000, &mut spline);
+                    #[allow(deprecated)] // the deprecated wrapper of a part held by a cone spline
                     let status = rmf_cone_spline_part_report(spline, &mut report);
                     rmf_cone_spline_free(spline);
                     status

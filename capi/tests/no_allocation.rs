@@ -5,7 +5,8 @@
 
 use rmfsurf::glam::DVec3;
 use rmfsurf::{
-    ph_rational_rmf, ph_spline_approximate, ph_spline_hermite, sweep, ParametricCurve, RmfOptions,
+    ph::rational_rmf as ph_rational_rmf, ph::spline_approximate as ph_spline_approximate,
+    ph::spline_hermite as ph_spline_hermite, ph::RmfOptions, sweep, ParametricCurve,
 };
 use rmfsurf_capi::curve::{rmf_curve_eval, rmf_curve_free, rmf_nurbs_curve_create};
 use rmfsurf_capi::frames::{rmf_double_reflection_frames, rmf_frames_eval, rmf_frames_free};

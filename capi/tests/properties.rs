@@ -9,7 +9,9 @@ use proptest::prelude::*;
 use rmfsurf::glam::DVec3;
 use rmfsurf::metrics::{angle_about_tangent, orthonormality_error};
 use rmfsurf::{
-    ph_cubics, ph_rational_rmf, ph_spline_hermite, ExactRmf, NurbsCurve, PiecewiseCurve, RmfOptions,
+    ph::cubics as ph_cubics, ph::rational_rmf as ph_rational_rmf,
+    ph::spline_hermite as ph_spline_hermite, ph::ExactRmf, ph::RmfOptions, NurbsCurve,
+    PiecewiseCurve,
 };
 use rmfsurf_capi::cone_spline::*;
 use rmfsurf_capi::curve::{rmf_curve_eval, rmf_curve_free};
@@ -54,14 +56,14 @@ fn vec3(v: DVec3) -> RmfVec3 {
 /// A rational B-spline evaluated by de Boor's algorithm in homogeneous coordinates — the
 /// test's own evaluator, independent of the library's Bézier segments.
 fn de_boor(nurbs: &NurbsCurve, t: f64) -> DVec3 {
-    let p = nurbs.degree;
-    let k = &nurbs.knots;
-    let n = nurbs.poles.len();
+    let p = nurbs.degree();
+    let k = nurbs.knots();
+    let n = nurbs.poles().len();
     let span = (p..n).rev().find(|&i| k[i] <= t).unwrap_or(p);
     let mut d: Vec<(DVec3, f64)> = (0..=p)
         .map(|j| {
             let i = span - p + j;
-            (nurbs.poles[i] * nurbs.weights[i], nurbs.weights[i])
+            (nurbs.poles()[i] * nurbs.weights()[i], nurbs.weights()[i])
         })
         .collect();
     for r in 1..=p {
@@ -266,9 +268,9 @@ proptest! {
             1 => { options.k_factor = if value.is_nan() { value } else { value.abs() + 1.0 }; "options->k_factor" }
             _ => { options.tolerance = value.min(0.0); "options->tolerance" }
         };
-        let sentinel = 0x5EED0 as *mut RmfConeSpline;
+        let sentinel = 0x5EED0 as *mut RmfSheetPart;
         let mut out = sentinel;
-        let status = unsafe { rmf_cone_spline_transition(bottom, top, &options, &mut out) };
+        let status = unsafe { rmf_sheet_part_transition(bottom, top, &options, &mut out) };
         let message = unsafe { std::ffi::CStr::from_ptr(rmfsurf_capi::status::rmf_last_error()) }.to_string_lossy().into_owned();
         unsafe {
             rmf_curve_free(bottom);
@@ -361,7 +363,7 @@ fn sweep_polyline(points: &[DVec3], r: f64, corner: Corner) -> rmfsurf::Result<S
     sweep_wire(&edges, &circle_profile(r), &[], &options)
 }
 
-use rmfsurf::{sweep_wire, Corner, Edge, Shape, WireSweep};
+use rmfsurf::{wire::sweep as sweep_wire, wire::Corner, wire::Edge, wire::Shape, wire::WireSweep};
 
 proptest! {
     #![proptest_config(config())]
@@ -499,7 +501,7 @@ fn sheet_transition(
         ..Default::default()
     };
     let mut part = null_mut();
-    let status = unsafe { rmf_cone_spline_transition(bottom, top, &options, &mut part) };
+    let status = unsafe { rmf_sheet_part_transition(bottom, top, &options, &mut part) };
     unsafe {
         rmf_curve_free(bottom);
         rmf_curve_free(top);
@@ -511,22 +513,19 @@ fn sheet_transition(
     let mut report = RmfSheetReport::default();
     let mut count = 0;
     unsafe {
+        assert_eq!(rmf_sheet_part_report(part, &mut report), RmfStatus::RmfOk);
         assert_eq!(
-            rmf_cone_spline_part_report(part, &mut report),
-            RmfStatus::RmfOk
-        );
-        assert_eq!(
-            rmf_cone_spline_flat_pattern(part, null_mut(), 0, &mut count),
+            rmf_sheet_part_flat_pattern(part, null_mut(), 0, &mut count),
             RmfStatus::RmfOk
         );
     }
     let mut edges = vec![RmfFlatEdge::default(); count];
     unsafe {
         assert_eq!(
-            rmf_cone_spline_flat_pattern(part, edges.as_mut_ptr(), count, &mut count),
+            rmf_sheet_part_flat_pattern(part, edges.as_mut_ptr(), count, &mut count),
             RmfStatus::RmfOk
         );
-        rmf_cone_spline_free(part);
+        rmf_sheet_part_free(part);
     }
     Ok(Transition { report, edges })
 }

@@ -9,10 +9,12 @@ use crate::job::{
 use crate::json::InputError;
 use rmfsurf::glam::DVec3;
 use rmfsurf::{
-    approximate_developable, check_g1, framed_spine, framed_spine_through, sweep, sweep_wire,
-    sweep_wire_between, sweep_wire_through, ConeSpline, Developable, Edge, Error, FlatPattern,
-    FramedCurve, PiecewiseCurve, PiecewiseSurface, Rule, RuledSurface, Section, Shape, SheetPart,
-    SweepFrame, TangentSurface, WireSweep,
+    cone::approximate as approximate_developable, cone::ConeSpline, cone::Developable, cone::Rule,
+    cone::RuledSurface, cone::TangentSurface, framed_spine, framed_spine_through, ph::check_g1,
+    sheet::SheetPart, sweep, wire::sweep as sweep_wire, wire::sweep_between as sweep_wire_between,
+    wire::sweep_through as sweep_wire_through, wire::Edge, wire::Section, wire::Shape,
+    wire::SweepFrame, wire::WireSweep, Error, FlatPattern, FramedCurve, PiecewiseCurve,
+    PiecewiseSurface,
 };
 
 /// A swept surface with its spine and frames.

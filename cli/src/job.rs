@@ -7,7 +7,10 @@ use crate::json::{self, InputError, InputResult, Point2, Vec3};
 use crate::schema;
 use rmfsurf::glam::DVec3;
 use rmfsurf::primitives;
-use rmfsurf::{Element, NurbsCurve, NurbsSurface, Reference, Sheet, SheetOptions, SpineMethod};
+use rmfsurf::{
+    cone::Element, sheet::Reference, sheet::Sheet, sheet::SheetOptions, NurbsCurve, NurbsSurface,
+    SpineMethod,
+};
 use std::io::Read;
 
 /// The spine as given.
@@ -75,7 +78,7 @@ pub enum WireEdge {
 /// curve of edges of the wire's kinds (`{"guide": [...]}`).
 #[derive(Clone, Debug)]
 pub enum WireFrame {
-    Law(rmfsurf::SweepFrame),
+    Law(rmfsurf::wire::SweepFrame),
     Guide(Vec<WireEdge>),
 }
 
@@ -83,7 +86,7 @@ pub enum WireFrame {
 #[derive(Clone, Debug)]
 pub struct WireJob {
     pub edges: Vec<WireEdge>,
-    pub corner: rmfsurf::Corner,
+    pub corner: rmfsurf::wire::Corner,
     pub tolerance: f64,
     pub join_tolerance: f64,
     pub initial_normal: Option<DVec3>,
@@ -318,7 +321,7 @@ fn wire_job(sweep: schema::Sweep) -> InputResult<WireJob> {
         ));
     }
     let frame = match sweep.frame {
-        None => WireFrame::Law(rmfsurf::WireSweep::default().frame),
+        None => WireFrame::Law(rmfsurf::wire::WireSweep::default().frame),
         Some(schema::FrameName::Law(law)) => WireFrame::Law(law),
         Some(schema::FrameName::Guide(guide)) => {
             if guide.is_empty() {
@@ -336,7 +339,7 @@ fn wire_job(sweep: schema::Sweep) -> InputResult<WireJob> {
             )
         }
     };
-    let defaults = rmfsurf::WireSweep::default();
+    let defaults = rmfsurf::wire::WireSweep::default();
     Ok(WireJob {
         edges,
         corner: sweep.corner.map_or(defaults.corner, |c| c.0),
@@ -594,7 +597,9 @@ fn cone_job(cone: schema::Cone) -> InputResult<ConeJob> {
     Ok(ConeJob {
         developable,
         tolerance: cone.tolerance.map_or(DEFAULT_TOLERANCE, |t| t.0),
-        max_pieces: cone.max_pieces.map_or(rmfsurf::DEFAULT_MAX_PIECES, |n| n.0),
+        max_pieces: cone
+            .max_pieces
+            .map_or(rmfsurf::cone::DEFAULT_MAX_PIECES, |n| n.0),
         t_min,
         t_max,
     })
@@ -648,7 +653,7 @@ fn sheet_job(sheet: schema::Sheet) -> InputResult<SheetJob> {
             flat_tolerance: sheet.flat_tolerance.map_or(0.0, |t| t.0),
             max_pieces: sheet
                 .max_pieces
-                .map_or(rmfsurf::DEFAULT_MAX_PIECES, |n| n.0),
+                .map_or(rmfsurf::cone::DEFAULT_MAX_PIECES, |n| n.0),
         },
     })
 }

@@ -13,7 +13,7 @@ use std::io::{self, BufReader, Read};
 use std::marker::PhantomData;
 
 /// Largest input read: 64 MiB. The largest inputs the library accepts (a wire of
-/// `rmfsurf::MAX_FACES` edges, a spine of tens of thousands of points) take a few MiB.
+/// `rmfsurf::wire::MAX_FACES` edges, a spine of tens of thousands of points) take a few MiB.
 pub const MAX_INPUT_BYTES: u64 = 64 << 20;
 
 /// A problem with the input, at a field.

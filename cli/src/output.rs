@@ -6,8 +6,8 @@ use crate::job::MeshOptions;
 use crate::summary::{json_text, Summary};
 use rmfsurf::export::{dxf, obj, openscad, step, svg, vtk};
 use rmfsurf::{
-    closed_mesh, grid_normals, grid_parameters, tessellate, Layer, NurbsCurve, NurbsSurface,
-    PiecewiseSurface, Side,
+    closed_mesh, grid_normals, grid_parameters, sheet::Layer, sheet::Side, tessellate, NurbsCurve,
+    NurbsSurface, PiecewiseSurface,
 };
 use std::path::Path;
 
@@ -75,7 +75,7 @@ fn surface_of(outcome: &Outcome) -> &PiecewiseSurface {
 fn render_wire(
     name: &str,
     format: Format,
-    shape: &rmfsurf::Shape,
+    shape: &rmfsurf::wire::Shape,
     summary: &Summary,
 ) -> rmfsurf::Result<String> {
     match format {

@@ -6,7 +6,10 @@
 
 use crate::json::{Bool, Bound, Bounded, Count, NameVisitor, Number, Point2, Positive, Vec3};
 use rmfsurf::glam::DVec3;
-use rmfsurf::{Corner, Reference, SpineMethod, SweepFrame, MAX_DEGREE, MAX_FACES, MAX_SWEEP_POLES};
+use rmfsurf::{
+    sheet::Reference, wire::Corner, wire::SweepFrame, wire::MAX_FACES, SpineMethod, MAX_DEGREE,
+    MAX_SWEEP_POLES,
+};
 use serde::de::{self, Deserializer, MapAccess, SeqAccess, Visitor};
 use serde::Deserialize;
 use std::fmt;
@@ -23,7 +26,7 @@ impl Bound for Edges {
     const MAX: usize = MAX_FACES;
     const ITEMS: &'static str = "edges";
     const WHY: &'static str =
-        "a wire sweep has at most rmfsurf::MAX_FACES lateral faces, one or more per edge";
+        "a wire sweep has at most rmfsurf::wire::MAX_FACES lateral faces, one or more per edge";
 }
 
 /// Holes of a wire sweep's profile.
@@ -33,7 +36,7 @@ impl Bound for Holes {
     const MAX: usize = MAX_FACES;
     const ITEMS: &'static str = "holes";
     const WHY: &'static str =
-        "a wire sweep has at most rmfsurf::MAX_FACES lateral faces, one or more per hole";
+        "a wire sweep has at most rmfsurf::wire::MAX_FACES lateral faces, one or more per hole";
 }
 
 /// Poles of a NURBS curve, or of one row of a surface.
@@ -82,7 +85,7 @@ impl Bound for ScaleKnots {
     const MAX: usize = MAX_FACES;
     const ITEMS: &'static str = "knots";
     const WHY: &'static str = "each knot cuts the wire, and a wire sweep has at most \
-                               rmfsurf::MAX_FACES lateral faces";
+                               rmfsurf::wire::MAX_FACES lateral faces";
 }
 
 /// Intermediate sections of a wire sweep through sections.
@@ -92,7 +95,7 @@ impl Bound for Sections {
     const MAX: usize = MAX_FACES;
     const ITEMS: &'static str = "sections";
     const WHY: &'static str = "each section cuts the wire, and a wire sweep has at most \
-                               rmfsurf::MAX_FACES lateral faces";
+                               rmfsurf::wire::MAX_FACES lateral faces";
 }
 
 /// Hermite points and tangents of a spine.

@@ -9,8 +9,9 @@ use crate::construct::{ConeOutcome, Outcome, SheetOutcome, SweepOutcome};
 use crate::job::{Construction, Job};
 use rmfsurf::metrics::{angle_between, orthonormality_error, parameter_line_cosine, rmf_defect};
 use rmfsurf::{
-    angle_errors, grid_parameters, max_scaled_curvature, FrameField, FrameKind, Layer,
-    NurbsSurface, PatternEdge, PhSpline, PieceKind, PiecewiseSurface, Side, SpineMethod,
+    cone::max_scaled_curvature, cone::PieceKind, grid_parameters, ph::angle_errors, ph::PhSpline,
+    sheet::Layer, sheet::Side, FrameField, FrameKind, NurbsSurface, PatternEdge, PiecewiseSurface,
+    SpineMethod,
 };
 use serde_json::{json, Map, Value};
 use std::sync::Arc;
@@ -101,7 +102,10 @@ fn surface_shape(surface: &PiecewiseSurface) -> String {
     match NurbsSurface::from_piecewise(surface) {
         Ok(n) => format!(
             "NURBS of degree ({}, {}), {} × {} poles",
-            n.degree_u, n.degree_v, n.pole_count_u, n.pole_count_v
+            n.degree_u(),
+            n.degree_v(),
+            n.pole_count_u(),
+            n.pole_count_v()
         ),
         Err(e) => format!(
             "{} rational patches, not one continuous NURBS ({})",
@@ -180,12 +184,12 @@ fn sweep_figures(
     Ok(figures)
 }
 
-fn wire_figures(edges: usize, method: SpineMethod, shape: &rmfsurf::Shape) -> Vec<Figure> {
+fn wire_figures(edges: usize, method: SpineMethod, shape: &rmfsurf::wire::Shape) -> Vec<Figure> {
     let r = shape.report();
     let caps = shape
         .faces()
         .iter()
-        .filter(|f| f.kind == rmfsurf::FaceKind::Plane)
+        .filter(|f| f.kind == rmfsurf::wire::FaceKind::Plane)
         .count();
     let mut figures = vec![
         figure(

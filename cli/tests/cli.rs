@@ -1399,7 +1399,7 @@ fn oversized_inputs_and_lists_are_refused_while_reading() {
         ),
         &[
             "sweep.spine.wire: has more than 65536 edges: a wire sweep has at most \
-             rmfsurf::MAX_FACES lateral faces, one or more per edge",
+             rmfsurf::wire::MAX_FACES lateral faces, one or more per edge",
         ],
     );
     wire_fails_with(
@@ -1413,7 +1413,7 @@ fn oversized_inputs_and_lists_are_refused_while_reading() {
         ),
         &[
             "sweep.profile.holes: has more than 65536 holes",
-            "rmfsurf::MAX_FACES",
+            "rmfsurf::wire::MAX_FACES",
         ],
     );
     fails_with(

@@ -655,14 +655,14 @@ static void demo_pipe_route(void) {
 /* ---- 8. sheet metal: a square-to-round hopper ---- */
 
 /* Writes a part's file as the library renders it (RMF_SHEET_FORMAT_*). */
-static void write_part_file(const RmfConeSpline *part, RmfSheetFormat format, const char *name, const char *what) {
+static void write_part_file(const RmfSheetPart *part, RmfSheetFormat format, const char *name, const char *what) {
     size_t length = 0;
     char path[1024], *text;
     FILE *f;
-    TRY(rmf_cone_spline_part_export(part, format, NULL, 0, &length));
+    TRY(rmf_sheet_part_export(part, format, NULL, 0, &length));
     text = malloc(length + 1);
     if (!text) fail("malloc", RMF_ERROR_INTERNAL);
-    TRY(rmf_cone_spline_part_export(part, format, text, length + 1, &length));
+    TRY(rmf_sheet_part_export(part, format, text, length + 1, &length));
     f = open_output(name, path, sizeof path);
     fwrite(text, 1, length, f);
     fclose(f);
@@ -679,7 +679,7 @@ static void demo_hopper(void) {
     RmfVec2 marks[32], back[32];
     double weights[9], worst = 0, cx = 0, cy = 0;
     RmfCurve *bottom = NULL, *top = NULL;
-    RmfConeSpline *part = NULL;
+    RmfSheetPart *part = NULL;
     RmfSheetOptions options;
     RmfSheetReport report;
     RmfFlatEdge *edges;
@@ -696,18 +696,18 @@ static void demo_hopper(void) {
     options.tolerance = 1e-4;
     options.thickness = 2;
     options.k_factor = 0.4;
-    TRY(rmf_cone_spline_transition(bottom, top, &options, &part));
-    TRY(rmf_cone_spline_part_report(part, &report));
+    TRY(rmf_sheet_part_transition(bottom, top, &options, &part));
+    TRY(rmf_sheet_part_report(part, &report));
     printf("  %zu pieces (flat triangles, corner cones), edges within %.1e / %.1e of the square / circle,\n"
            "  neutral layer %.2f mm from the inner face\n",
            report.pieces, report.edge_distance[0], report.edge_distance[1], report.neutral - report.inner);
     write_part_file(part, RMF_SHEET_FORMAT_STEP_SOLID, "hopper.step", "the formed part, a closed solid (STEP)");
     write_part_file(part, RMF_SHEET_FORMAT_DXF, "hopper.dxf", "its flat pattern for the cutter (DXF: CUT, BEND)");
     write_part_file(part, RMF_SHEET_FORMAT_SVG, "hopper.svg", "the flat pattern as a drawing (SVG, mm)");
-    TRY(rmf_cone_spline_flat_pattern(part, NULL, 0, &count));
+    TRY(rmf_sheet_part_flat_pattern(part, NULL, 0, &count));
     edges = malloc(count * sizeof *edges);
     if (!edges) fail("malloc", RMF_ERROR_INTERNAL);
-    TRY(rmf_cone_spline_flat_pattern(part, edges, count, &count));
+    TRY(rmf_sheet_part_flat_pattern(part, edges, count, &count));
     for (i = 0; i < count; i++) {
         arcs += edges[i].kind == RMF_FLAT_EDGE_ARC;
         bends += edges[i].layer == RMF_FLAT_BEND;
@@ -722,13 +722,13 @@ static void demo_hopper(void) {
         marks[i].x = cx + 10 * cos(2 * PH_DEMO_PI * (double)i / 32);
         marks[i].y = cy + 10 * sin(2 * PH_DEMO_PI * (double)i / 32);
     }
-    TRY(rmf_cone_spline_flat_to_surface(part, marks, 32, RMF_SHEET_LAYER_OUTER, formed, NULL));
-    TRY(rmf_cone_spline_surface_to_flat(part, formed, 32, RMF_SHEET_LAYER_OUTER, 1e-9, back));
+    TRY(rmf_sheet_part_flat_to_surface(part, marks, 32, RMF_SHEET_LAYER_OUTER, formed, NULL));
+    TRY(rmf_sheet_part_surface_to_flat(part, formed, 32, RMF_SHEET_LAYER_OUTER, 1e-9, back));
     for (i = 0; i < 32; i++) worst = fmax(worst, hypot(back[i].x - marks[i].x, back[i].y - marks[i].y));
     printf("  a hole of radius 10 in the flat pattern maps onto the formed outer face, e.g. (%.3f, %.3f, %.3f),\n"
            "  and back to the flat pattern within %.1e\n", formed[0].x, formed[0].y, formed[0].z, worst);
     free(edges);
-    rmf_cone_spline_free(part);
+    rmf_sheet_part_free(part);
     rmf_curve_free(bottom);
     rmf_curve_free(top);
 }

@@ -9,8 +9,8 @@
 // face (GeomAdaptor D1) — and printed beside OpenCascade's own sweep of the same wire
 // (BRepOffsetAPI_MakePipeShell in corrected-Frenet and Frenet mode, right or round corners),
 // measured by the same code. rmfsurf's figures are checked (the program fails on any);
-// OpenCascade's are reported. A square-to-round sheet-metal part (rmf_cone_spline_transition)
-// is built both ways too (rmf_cone_spline_part_brep).
+// OpenCascade's are reported. A square-to-round sheet-metal part (rmf_sheet_part_transition)
+// is built both ways too (rmf_sheet_part_brep).
 //
 // Built and run by the test command (integration/tests/opencascade.rs): C++17 against
 // include/rmfsurf.h and librmfsurf, with OpenCascade's TKSTEP, TKXSBase, TKOffset (the
@@ -349,25 +349,25 @@ static void hopper() {
     std::printf("square-to-round hopper (sheet metal)\n");
     const RmfVec3 corners[4] = {{-100, -100, 0}, {100, -100, 0}, {100, 100, 0}, {-100, 100, 0}};
     RmfCurve *square = nullptr, *circle = nullptr;
-    RmfConeSpline *part = nullptr;
+    RmfSheetPart *part = nullptr;
     require(rmf_curve_polygon(corners, 4, &square) == RMF_OK, "rmf_curve_polygon");
     require(rmf_curve_circle(RmfVec3{20, 0, 150}, RmfVec3{1, 0, 0}, RmfVec3{0, 1, 0}, 60, &circle) == RMF_OK,
             "rmf_curve_circle");
     RmfSheetOptions o;
     rmf_sheet_options_init(&o);
     o.thickness = 2;
-    require(rmf_cone_spline_transition(square, circle, &o, &part) == RMF_OK, "rmf_cone_spline_transition");
+    require(rmf_sheet_part_transition(square, circle, &o, &part) == RMF_OK, "rmf_sheet_part_transition");
     size_t length = 0;
-    require(rmf_cone_spline_part_export(part, RMF_SHEET_FORMAT_OCC_BREP, nullptr, 0, &length) == RMF_OK,
-            "rmf_cone_spline_part_export (size)");
+    require(rmf_sheet_part_export(part, RMF_SHEET_FORMAT_OCC_BREP, nullptr, 0, &length) == RMF_OK,
+            "rmf_sheet_part_export (size)");
     std::string text(length + 1, '\0');
-    require(rmf_cone_spline_part_export(part, RMF_SHEET_FORMAT_OCC_BREP, text.data(), text.size(), &length) ==
+    require(rmf_sheet_part_export(part, RMF_SHEET_FORMAT_OCC_BREP, text.data(), text.size(), &length) ==
                 RMF_OK,
-            "rmf_cone_spline_part_export");
+            "rmf_sheet_part_export");
     text.resize(length);
     const Measure handed = wire_sweep::measure(wire_sweep::read_brep_text(text));
     RmfBrep *brep = nullptr;
-    require(rmf_cone_spline_part_brep(part, &brep) == RMF_OK, "rmf_cone_spline_part_brep");
+    require(rmf_sheet_part_brep(part, &brep) == RMF_OK, "rmf_sheet_part_brep");
     const TopoDS_Shape solid = rmfsurf::occ::build(brep);
     rmf_brep_free(brep);
     const Measure built = wire_sweep::measure(solid);
@@ -378,7 +378,7 @@ static void hopper() {
           std::fabs(built.volume - handed.volume) / handed.volume, 1e-12);
     std::printf("  %d B-spline faces, volume %.9f\n", built.bspline_faces, built.volume);
     check_boolean(solid, built.volume);
-    rmf_cone_spline_free(part);
+    rmf_sheet_part_free(part);
     rmf_curve_free(square);
     rmf_curve_free(circle);
 }

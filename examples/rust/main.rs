@@ -9,9 +9,9 @@ fn main() -> rmfsurf::Result<()> {
             (point, DVec3::new(-t.sin(), t.cos(), 0.3).normalize())
         })
         .unzip();
-    let spine = ph_spline_hermite(&points, &tangents)?; // 16 PH cubics, G1 at the joints
-    let rmf = ph_rational_rmf(&spine, &RmfOptions::rmf(DVec3::Z))?; // rational, degree 6
-    let errors = angle_errors(&spine, rmf.framed.frames())?; // against the closed-form RMF
+    let spine = ph::spline_hermite(&points, &tangents)?; // 16 PH cubics, G1 at the joints
+    let rmf = ph::rational_rmf(&spine, &ph::RmfOptions::rmf(DVec3::Z))?; // rational, degree 6
+    let errors = ph::angle_errors(&spine, rmf.framed.frames())?; // against the closed-form RMF
 
     // The profile in the normal plane (x -> f2, y -> f3): a quarter circle of radius 0.2.
     let pole = |x, y| DVec3::new(x, y, 0.0);
@@ -25,7 +25,11 @@ fn main() -> rmfsurf::Result<()> {
     let nurbs = NurbsSurface::from_piecewise(&surface)?; // one NURBS, as CAD kernels take it
     println!(
         "RMF within {:.1e} rad of the exact one; NURBS of degree ({}, {}) with {} x {} poles",
-        errors.max, nurbs.degree_u, nurbs.degree_v, nurbs.pole_count_u, nurbs.pole_count_v
+        errors.max,
+        nurbs.degree_u(),
+        nurbs.degree_v(),
+        nurbs.pole_count_u(),
+        nurbs.pole_count_v()
     );
     Ok(())
 }

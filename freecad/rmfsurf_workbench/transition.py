@@ -6,7 +6,7 @@ The surface is the convex-hull developable of the two curves — planar triangle
 from straight edges and corners, right circular cones between a corner and an arc, general
 strips fitted by cone pairs (Leopoldseder & Pottmann, eqs. (5)–(12)) — trimmed exactly by
 the curves' planes, with exact offsets for the inner and outer layers (the library's
-``rmf_cone_spline_transition`` through :func:`rmfsurf.freecad.transition`). The neutral
+``rmf_sheet_part_transition`` through :func:`rmfsurf.freecad.transition`). The neutral
 layer lies at KFactor · Thickness from the inner side; RmfUnfold develops it.
 """
 
@@ -21,7 +21,7 @@ def _library():
     import rmfsurf.freecad as rf
     if not rf.has_transitions():
         raise NotImplementedError("this rmfsurf (%s) has no sheet-metal transitions "
-                                  "(rmf_cone_spline_transition)" % rmfsurf.__version__)
+                                  "(rmf_sheet_part_transition)" % rmfsurf.__version__)
     return rf
 
 

@@ -98,7 +98,9 @@ fn opencascade_kernel_example_builds_and_checks_the_surfaces() {
 /// Gauss–Legendre quadrature.
 #[test]
 fn opencascade_reads_the_formed_hopper_as_a_valid_closed_solid() {
-    use rmfsurf::{Layer, Reference, Sheet, SheetOptions, SheetPart};
+    use rmfsurf::{
+        sheet::Layer, sheet::Reference, sheet::Sheet, sheet::SheetOptions, sheet::SheetPart,
+    };
     let dir = support::fresh_dir("occ_hopper");
     support::run_cli(&dir, "hopper", &["-q", "-o", "hopper.step"]);
     let (bottom, top) = hopper_curves();

@@ -153,7 +153,7 @@ def owned(kind: str, pointer: Any) -> Any:
 
 def live_handles() -> Dict[str, int]:
     """How many library objects of each kind ("curve", "frames", "surface", "cone_spline",
-    "shape") Python holds now; for finding leaks."""
+    "sheet_part", "shape", ...) Python holds now; for finding leaks."""
     with _live_lock:
         return dict(_live)
 

@@ -13,7 +13,7 @@ import numpy as np
 
 from . import _core
 from ._core import call, ffi, lib
-from .curves import ArrayLike, Curve, CurveSource, _source, _with_callback
+from .curves import ArrayLike, Curve, CurveSource, _curve_handle, _with_callback
 from .surfaces import Surface, as_surface
 
 RULES: Dict[str, int] = {
@@ -210,13 +210,23 @@ def cone_spline_approximate(curve: CurveSource, v_range: Tuple[float, float],
     """The tangent surface x(t) + v e(t), v in `v_range` (0 outside it), of a curve (a
     :class:`Curve`, or a function t -> (point, tangent) on `domain`) approximated by a cone
     spline within `tolerance`."""
-    ptr, cb, lo, hi, callback = _source(curve, domain, "curve")
+    source, callback = _curve_handle(curve, domain, "curve")
     v0, v1 = _core.pair(v_range, "v_range")
+    options = _fit_options(tolerance, rule, max_pieces)
     out = _core.out_pointer("RmfConeSpline")
-    _with_callback(callback, "rmf_cone_spline_approximate", ptr, cb, ffi.NULL, lo, hi, v0, v1,
-                   _core.number(tolerance, "tolerance"), _core.choice(rule, "rule", RULES),
-                   _core.integer(max_pieces, "max_pieces", "size_t", 2), out, ffi.NULL)
+    _with_callback(callback, "rmf_cone_spline_approximate_with_options", source, v0, v1, options,
+                   out, ffi.NULL)
     return ConeSpline._owned(out)
+
+
+def _fit_options(tolerance: float, rule: str, max_pieces: int) -> Any:
+    """An RmfConeApproximationOptions of these values."""
+    options = ffi.new("RmfConeApproximationOptions *")
+    call("rmf_cone_approximation_options_init", options)
+    options.tolerance = _core.number(tolerance, "tolerance")
+    options.rule = _core.choice(rule, "rule", RULES)
+    options.max_pieces = _core.integer(max_pieces, "max_pieces", "size_t", 2)
+    return options
 
 
 def cone_spline_approximate_ruled(surface: Surface, tolerance: float, *,
@@ -240,11 +250,10 @@ def cone_spline_approximate_dual(degree: int, planes: ArrayLike, knots: ArrayLik
     p = _core.rows(planes, "planes", 4, "an array of planes (shape (n, 4))")
     k = _core.doubles(knots, "knots")
     out = _core.out_pointer("RmfConeSpline")
-    call("rmf_cone_spline_approximate_dual", _core.integer(degree, "degree", "uint32_t", 1),
-         _core.double_array(p.reshape(-1)), p.shape[0], _core.double_array(k), k.shape[0],
-         _core.box(region, "region"), _core.number(tolerance, "tolerance"),
-         _core.choice(rule, "rule", RULES),
-         _core.integer(max_pieces, "max_pieces", "size_t", 2), out, ffi.NULL)
+    call("rmf_cone_spline_approximate_dual_with_options",
+         _core.integer(degree, "degree", "uint32_t", 1), _core.double_array(p.reshape(-1)),
+         p.shape[0], _core.double_array(k), k.shape[0], _core.box(region, "region"),
+         _fit_options(tolerance, rule, max_pieces), out, ffi.NULL)
     return ConeSpline._owned(out)
 
 
@@ -253,10 +262,10 @@ def cone_spline_osculating(curve: CurveSource, v_range: Tuple[float, float],
                            domain: Optional[Tuple[float, float]] = None) -> ConeSpline:
     """The osculating cone spline of a tangent surface: the osculating cones at the curve
     `parameters`, joined by filling cones."""
-    ptr, cb, lo, hi, callback = _source(curve, domain, "curve")
+    source, callback = _curve_handle(curve, domain, "curve")
     v0, v1 = _core.pair(v_range, "v_range")
     ts = _core.doubles(parameters, "parameters")
     out = _core.out_pointer("RmfConeSpline")
-    _with_callback(callback, "rmf_cone_spline_osculating", ptr, cb, ffi.NULL, lo, hi, v0, v1,
+    _with_callback(callback, "rmf_cone_spline_osculating_curve", source, v0, v1,
                    _core.double_array(ts), ts.shape[0], out)
     return ConeSpline._owned(out)

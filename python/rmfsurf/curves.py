@@ -242,6 +242,20 @@ def _source(curve: CurveSource, domain: Optional[Tuple[float, float]], name: str
     return ffi.NULL, callback.c, lo, hi, callback
 
 
+def _curve_handle(curve: CurveSource, domain: Optional[Tuple[float, float]], name: str
+                  ) -> Tuple[Any, Optional[_Callback]]:
+    """(curve pointer, callback object) for the C entry points that take an RmfCurve: the
+    Curve's own, or a callback curve (rmf_callback_curve_create) over a function
+    t -> (point, tangent) on `domain`, which lives as long as the returned pointer."""
+    ptr, cb, lo, hi, callback = _source(curve, domain, name)
+    if callback is None:
+        return ptr, None
+    out = _core.out_pointer("RmfCurve")
+    # The library evaluates the function once here: its exception wins, as in the call.
+    _with_callback(callback, "rmf_callback_curve_create", cb, ffi.NULL, lo, hi, out)
+    return _core.owned("curve", out[0]), callback
+
+
 def _with_callback(callback: Optional[_Callback], function: str, *arguments: Any) -> None:
     """Calls `function`; an exception raised in the Python callback wins over the status
     the library gave for the NaN it was handed."""

@@ -599,8 +599,8 @@ def flat_pattern_edges(developed: ConeSpline, t_min: float, t_max: float) -> Lis
 
 def has_transitions() -> bool:
     """Whether the loaded library has the sheet-metal transitions
-    (rmf_cone_spline_transition)."""
-    return hasattr(_core.lib, "rmf_cone_spline_transition")
+    (rmf_sheet_part_transition)."""
+    return hasattr(_core.lib, "rmf_sheet_part_transition")
 
 
 def closed_curve(value: Any, name: str = "curve") -> Curve:

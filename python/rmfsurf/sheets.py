@@ -6,7 +6,8 @@ them, the flat pattern of the neutral layer for the cutter (lines and circular a
 lines), and the exact isometry between flat and formed for marks (holes, slots, text).
 
 A :class:`SheetPart` is a :class:`rmfsurf.ConeSpline` (its pieces are the designed
-surface's) with the part's own methods.
+surface's, from rmf_sheet_part_cone_spline) with the part's own methods (the
+rmf_sheet_part_* calls).
 """
 
 from __future__ import annotations
@@ -77,14 +78,24 @@ class FlatEdge:
 
 
 class SheetPart(ConeSpline):
-    """A sheet-metal part (rmf_cone_spline_transition, rmf_cone_spline_part,
-    rmf_cone_spline_tangent_part); freed when collected."""
+    """A sheet-metal part (rmf_sheet_part_transition, rmf_sheet_part_between_rails,
+    rmf_sheet_part_tangent) and its designed surface's cone spline; freed when collected."""
 
-    __slots__ = ()
+    __slots__ = ("_part",)
+
+    @classmethod
+    def _made(cls, out: Any) -> "SheetPart":
+        """The part an ``RmfSheetPart **`` received, with its cone spline."""
+        part = _core.owned("sheet_part", out[0])
+        spline = _core.out_pointer("RmfConeSpline")
+        call("rmf_sheet_part_cone_spline", part, spline)
+        made = cls(_core.owned("cone_spline", spline[0]))
+        made._part = part
+        return made
 
     def report(self) -> SheetReport:
         r = ffi.new("RmfSheetReport *")
-        call("rmf_cone_spline_part_report", self._ptr, r)
+        call("rmf_sheet_part_report", self._part, r)
         return SheetReport(int(r.pieces), bool(r.closed), r.deviation,
                            (r.edge_distance[0], r.edge_distance[1]), r.bend_radius, r.inner,
                            r.neutral, r.outer)
@@ -93,14 +104,14 @@ class SheetPart(ConeSpline):
         """A layer ("reference", "inner", "neutral", "outer") as one NURBS surface: u along
         the rulings from the first to the second edge, piece k on v ∈ [k, k + 1]."""
         out = _core.out_pointer("RmfSurface")
-        call("rmf_cone_spline_part_surface", self._ptr, _core.choice(layer, "layer", LAYERS), out)
+        call("rmf_sheet_part_surface", self._part, _core.choice(layer, "layer", LAYERS), out)
         return Surface._owned(out)
 
     def edge(self, layer: str = "reference", side: str = "first") -> Curve:
         """An edge of the formed part: the boundary curve `side` ("first": a transition's
         bottom, "second": its top) of `layer`."""
         out = _core.out_pointer("RmfCurve")
-        call("rmf_cone_spline_part_boundary", self._ptr, _core.choice(layer, "layer", LAYERS),
+        call("rmf_sheet_part_boundary", self._part, _core.choice(layer, "layer", LAYERS),
              _core.choice(side, "side", SIDES), out)
         return Curve._owned(out)
 
@@ -108,9 +119,9 @@ class SheetPart(ConeSpline):
         """The flat pattern of the neutral layer: the closed, counter-clockwise outline
         ("cut") of lines and arcs, then the bend lines ("bend")."""
         n = ffi.new("size_t *")
-        call("rmf_cone_spline_flat_pattern", self._ptr, ffi.NULL, 0, n)
+        call("rmf_sheet_part_flat_pattern", self._part, ffi.NULL, 0, n)
         edges = ffi.new("RmfFlatEdge[]", n[0])
-        call("rmf_cone_spline_flat_pattern", self._ptr, edges, n[0], n)
+        call("rmf_sheet_part_flat_pattern", self._part, edges, n[0], n)
         xy = lambda p: np.array((p.x, p.y))  # noqa: E731
         return [FlatEdge("cut" if e.layer == lib.RMF_FLAT_CUT else "bend",
                          "arc" if e.kind == lib.RMF_FLAT_EDGE_ARC else "line",
@@ -126,7 +137,7 @@ class SheetPart(ConeSpline):
         n = flat.shape[0]
         out = np.empty((n, 3))
         out_normals = np.empty((n, 3)) if normals else None
-        call("rmf_cone_spline_flat_to_surface", self._ptr,
+        call("rmf_sheet_part_flat_to_surface", self._part,
              ffi.cast("RmfVec2 *", ffi.from_buffer(flat)) if n else ffi.NULL, n,
              _core.choice(layer, "layer", LAYERS), _core.vec3_array(out),
              _core.vec3_array(out_normals) if normals else ffi.NULL)
@@ -139,7 +150,7 @@ class SheetPart(ConeSpline):
         p = _core.points(points, "points")
         n = p.shape[0]
         out = np.empty((n, 2))
-        call("rmf_cone_spline_surface_to_flat", self._ptr, _core.vec3_array(p), n,
+        call("rmf_sheet_part_surface_to_flat", self._part, _core.vec3_array(p), n,
              _core.choice(layer, "layer", LAYERS), _core.number(max_distance, "max_distance"),
              ffi.cast("RmfVec2 *", ffi.from_buffer(out)) if n else ffi.NULL)
         return out
@@ -151,9 +162,9 @@ class SheetPart(ConeSpline):
         ``importBrepFromString`` build as it is)."""
         code = _core.choice(format, "format", FORMATS)
         n = ffi.new("size_t *")
-        call("rmf_cone_spline_part_export", self._ptr, code, ffi.NULL, 0, n)
+        call("rmf_sheet_part_export", self._part, code, ffi.NULL, 0, n)
         text = ffi.new("char[]", n[0] + 1)
-        call("rmf_cone_spline_part_export", self._ptr, code, text, n[0] + 1, n)
+        call("rmf_sheet_part_export", self._part, code, text, n[0] + 1, n)
         return ffi.string(text, n[0]).decode("ascii")
 
 
@@ -180,7 +191,7 @@ def transition(bottom: Curve, top: Curve, *, thickness: float = 1.0, k_factor: f
                tolerance: float = 1e-4, reference: str = "inner", flat_tolerance: float = 0.0,
                max_pieces: int = 10000) -> SheetPart:
     """The transition piece between two closed convex planar curves (e.g. a degree-1
-    polygon and a circle of rational quadratics; see rmf_cone_spline_transition): the
+    polygon and a circle of rational quadratics; see rmf_sheet_part_transition): the
     convex hull surface of the two, flat triangles, cones from corners, creases and cone
     splines between arcs, each piece trimmed exactly by the curves' planes.
 
@@ -197,26 +208,26 @@ def transition(bottom: Curve, top: Curve, *, thickness: float = 1.0, k_factor: f
         max_pieces: the most cone pieces.
     """
     options = _options(thickness, k_factor, tolerance, reference, flat_tolerance, max_pieces)
-    out = _core.out_pointer("RmfConeSpline")
-    call("rmf_cone_spline_transition", as_curve(bottom, "bottom")._ptr,
+    out = _core.out_pointer("RmfSheetPart")
+    call("rmf_sheet_part_transition", as_curve(bottom, "bottom")._ptr,
          as_curve(top, "top")._ptr, options, out)
-    return SheetPart._owned(out)
+    return SheetPart._made(out)
 
 
 def part_between_rails(surface: Surface, *, thickness: float = 1.0, k_factor: float = 0.5,
                        tolerance: float = 1e-4, reference: str = "inner",
                        flat_tolerance: float = 0.0, max_pieces: int = 10000) -> SheetPart:
     """The part of a developable ruled surface between its two rails (see
-    rmf_cone_spline_part): `surface` has degree 1 and two poles in u (rulings along u,
+    rmf_sheet_part_between_rails): `surface` has degree 1 and two poles in u (rulings along u,
     e.g. ``Surface.from_nurbs`` of two rails), v along the rails. The result is a cone
     spline within half the tolerance, no cone vertex on the part, trimmed on every piece
     between the rails, each edge within the tolerance of its rail. Keyword arguments as
     for :func:`transition`.
     """
     options = _options(thickness, k_factor, tolerance, reference, flat_tolerance, max_pieces)
-    out = _core.out_pointer("RmfConeSpline")
-    call("rmf_cone_spline_part", as_surface(surface, "surface")._ptr, options, out)
-    return SheetPart._owned(out)
+    out = _core.out_pointer("RmfSheetPart")
+    call("rmf_sheet_part_between_rails", as_surface(surface, "surface")._ptr, options, out)
+    return SheetPart._made(out)
 
 
 def tangent_part(curve: Curve, v_min: float, v_max: float, *, thickness: float = 1.0,
@@ -224,10 +235,10 @@ def tangent_part(curve: Curve, v_min: float, v_max: float, *, thickness: float =
                  flat_tolerance: float = 0.0, max_pieces: int = 10000) -> SheetPart:
     """The part of the tangent surface x(t) + v·x′(t)/|x′(t)| of a regular curve between
     the rails v = v_min and v = v_max (0 outside [v_min, v_max]; see
-    rmf_cone_spline_tangent_part). Keyword arguments as for :func:`transition`.
+    rmf_sheet_part_tangent). Keyword arguments as for :func:`transition`.
     """
     options = _options(thickness, k_factor, tolerance, reference, flat_tolerance, max_pieces)
-    out = _core.out_pointer("RmfConeSpline")
-    call("rmf_cone_spline_tangent_part", as_curve(curve, "curve")._ptr,
+    out = _core.out_pointer("RmfSheetPart")
+    call("rmf_sheet_part_tangent", as_curve(curve, "curve")._ptr,
          _core.number(v_min, "v_min"), _core.number(v_max, "v_max"), options, out)
-    return SheetPart._owned(out)
+    return SheetPart._made(out)

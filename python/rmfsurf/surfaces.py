@@ -88,10 +88,15 @@ class Surface:
             w = w.reshape(nu * nv)
         ku = _core.doubles(knots_u, "knots_u")
         kv = _core.doubles(knots_v, "knots_v")
+        data = ffi.new("RmfNurbsSurfaceData *")
+        data.struct_size = ffi.sizeof("RmfNurbsSurfaceData")
+        data.degree_u, data.degree_v, data.pole_count_u, data.pole_count_v = du, dv, nu, nv
+        # Views of flat, w, ku and kv, which stay alive through the call.
+        data.poles, data.weights = _core.vec3_array(flat), _core.double_array(w)
+        data.knots_u, data.knots_v = _core.double_array(ku), _core.double_array(kv)
+        data.knot_count_u, data.knot_count_v = ku.shape[0], kv.shape[0]
         out = _core.out_pointer("RmfSurface")
-        call("rmf_nurbs_surface_create", du, dv, _core.vec3_array(flat), _core.double_array(w),
-             nu, nv, _core.double_array(ku), ku.shape[0], _core.double_array(kv), kv.shape[0],
-             out)
+        call("rmf_nurbs_surface_create_from", data, out)
         return cls._owned(out)
 
     @property

@@ -16,7 +16,7 @@ use std::ops::{Add, Mul, Sub};
 pub const MAX_DEGREE: usize = 64;
 
 /// A coefficient of a Bernstein polynomial: anything that forms a real vector space.
-pub trait Coefficient:
+pub(crate) trait Coefficient:
     Copy + Default + Add<Output = Self> + Sub<Output = Self> + Mul<f64, Output = Self>
 {
 }
@@ -27,7 +27,7 @@ impl Coefficient for Complex {}
 
 /// Value, first and second derivative of a Bernstein polynomial at one parameter.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Jet<C> {
+pub(crate) struct Jet<C> {
     /// p(t)
     pub value: C,
     /// p'(t)
@@ -49,7 +49,7 @@ pub(crate) const SHORT: usize = 10;
 ///
 /// # Panics
 /// If the degree exceeds [`MAX_DEGREE`] (constructors reject such input).
-pub fn evaluate<C: Coefficient>(coeffs: &[C], t: f64) -> C {
+pub(crate) fn evaluate<C: Coefficient>(coeffs: &[C], t: f64) -> C {
     let n = coeffs.len();
     assert!(
         (1..=MAX_DEGREE + 1).contains(&n),
@@ -76,7 +76,7 @@ fn de_casteljau<C: Coefficient, const N: usize>(coeffs: &[C], t: f64) -> C {
 
 /// p(t), p'(t) and p''(t) by de Casteljau's algorithm, stopping two levels early to read
 /// the derivatives off the intermediate points.
-pub fn evaluate_jet<C: Coefficient>(coeffs: &[C], t: f64) -> Jet<C> {
+pub(crate) fn evaluate_jet<C: Coefficient>(coeffs: &[C], t: f64) -> Jet<C> {
     let n = coeffs.len();
     assert!(
         (1..=MAX_DEGREE + 1).contains(&n),
@@ -124,7 +124,7 @@ fn de_casteljau_jet<C: Coefficient, const N: usize>(coeffs: &[C], t: f64) -> Jet
 }
 
 /// p(t) and p'(t) by de Casteljau's algorithm, stopping one level early.
-pub fn evaluate_d1<C: Coefficient>(coeffs: &[C], t: f64) -> (C, C) {
+pub(crate) fn evaluate_d1<C: Coefficient>(coeffs: &[C], t: f64) -> (C, C) {
     let n = coeffs.len();
     assert!(
         (1..=MAX_DEGREE + 1).contains(&n),
@@ -169,7 +169,7 @@ fn de_casteljau_d1<C: Coefficient, const N: usize>(coeffs: &[C], t: f64) -> (C, 
 
 /// The Bernstein basis functions B₀ⁿ(t), …, Bₙⁿ(t), written to `out[0..=n]` by the convex
 /// triangle recursion: one pass serves any number of coefficient sets evaluated at `t`.
-pub fn basis(n: usize, t: f64, out: &mut [f64]) {
+pub(crate) fn basis(n: usize, t: f64, out: &mut [f64]) {
     assert!(out.len() > n, "basis buffer too small");
     out[0] = 1.0;
     for d in 1..=n {
@@ -186,7 +186,7 @@ pub fn basis(n: usize, t: f64, out: &mut [f64]) {
 ///
 /// Uses `B'_i^n = n (B_{i-1}^{n-1} − B_i^{n-1})` and the analogous second difference of the
 /// degree n − 2 basis; all basis values come from the convex triangle recursion.
-pub fn basis_jet(n: usize, t: f64, out: &mut [[f64; 3]]) {
+pub(crate) fn basis_jet(n: usize, t: f64, out: &mut [[f64; 3]]) {
     assert!(
         n <= MAX_DEGREE && out.len() > n,
         "Bernstein degree out of range"
@@ -232,7 +232,7 @@ fn basis_jet_rows<const N: usize>(n: usize, t: f64, out: &mut [[f64; 3]]) {
 }
 
 /// Coefficients of p' (degree n − 1); a constant gives the zero polynomial of degree 0.
-pub fn derivative<C: Coefficient>(coeffs: &[C]) -> Vec<C> {
+pub(crate) fn derivative<C: Coefficient>(coeffs: &[C]) -> Vec<C> {
     let n = coeffs.len() - 1;
     if n == 0 {
         return vec![C::default()];
@@ -245,7 +245,7 @@ pub fn derivative<C: Coefficient>(coeffs: &[C]) -> Vec<C> {
 
 /// Coefficients of `a·b` (degree m + n) for any bilinear product `mul` (scalar × vector,
 /// dot, cross, ...): `c_k = Σ_{i+j=k} C(m,i) C(n,j) / C(m+n,k) · mul(a_i, b_j)`.
-pub fn product<A: Copy, B: Copy, C: Coefficient>(
+pub(crate) fn product<A: Copy, B: Copy, C: Coefficient>(
     a: &[A],
     b: &[B],
     mul: impl Fn(A, B) -> C,
@@ -257,7 +257,7 @@ pub fn product<A: Copy, B: Copy, C: Coefficient>(
 
 /// Adds the coefficients of `a·b` (see [`product`]) to `out[..=m + n]`: sums of products
 /// without intermediate vectors, and products into buffers on the stack.
-pub fn add_product<A: Copy, B: Copy, C: Coefficient>(
+pub(crate) fn add_product<A: Copy, B: Copy, C: Coefficient>(
     a: &[A],
     b: &[B],
     mul: impl Fn(A, B) -> C,
@@ -276,7 +276,7 @@ pub fn add_product<A: Copy, B: Copy, C: Coefficient>(
 }
 
 /// The same polynomial written in degree n + r.
-pub fn elevate<C: Coefficient>(coeffs: &[C], r: usize) -> Vec<C> {
+pub(crate) fn elevate<C: Coefficient>(coeffs: &[C], r: usize) -> Vec<C> {
     let n = coeffs.len() - 1;
     if r == 0 {
         return coeffs.to_vec();
@@ -295,7 +295,7 @@ pub fn elevate<C: Coefficient>(coeffs: &[C], r: usize) -> Vec<C> {
 }
 
 /// The same polynomial written in degree `degree ≥ n`.
-pub fn elevate_to<C: Coefficient>(coeffs: &[C], degree: usize) -> Vec<C> {
+pub(crate) fn elevate_to<C: Coefficient>(coeffs: &[C], degree: usize) -> Vec<C> {
     elevate(coeffs, degree + 1 - coeffs.len())
 }
 
@@ -304,7 +304,7 @@ pub fn elevate_to<C: Coefficient>(coeffs: &[C], degree: usize) -> Vec<C> {
 /// second by the backward one). Exact when p has degree < n — e.g. a product whose top
 /// power coefficient cancels — and otherwise no approximation of any quality: check by
 /// elevating back.
-pub fn reduce_degree<C: Coefficient>(coeffs: &[C]) -> Vec<C> {
+pub(crate) fn reduce_degree<C: Coefficient>(coeffs: &[C]) -> Vec<C> {
     let n = coeffs.len() - 1;
     assert!(n >= 1, "a constant cannot be reduced");
     let nf = n as f64;
@@ -323,7 +323,7 @@ pub fn reduce_degree<C: Coefficient>(coeffs: &[C]) -> Vec<C> {
 
 /// Subdivision at `t`: coefficients of p on [0, t] and on [t, 1], each reparameterized to
 /// [0, 1].
-pub fn split<C: Coefficient>(coeffs: &[C], t: f64) -> (Vec<C>, Vec<C>) {
+pub(crate) fn split<C: Coefficient>(coeffs: &[C], t: f64) -> (Vec<C>, Vec<C>) {
     let n = coeffs.len();
     let mut work = coeffs.to_vec();
     let mut left = Vec::with_capacity(n);
@@ -339,7 +339,7 @@ pub fn split<C: Coefficient>(coeffs: &[C], t: f64) -> (Vec<C>, Vec<C>) {
 }
 
 /// Coefficients of p restricted to [t0, t1] and reparameterized to [0, 1].
-pub fn restrict<C: Coefficient>(coeffs: &[C], t0: f64, t1: f64) -> Vec<C> {
+pub(crate) fn restrict<C: Coefficient>(coeffs: &[C], t0: f64, t1: f64) -> Vec<C> {
     if t1 == 1.0 {
         return split(coeffs, t0).1;
     }
@@ -356,7 +356,7 @@ pub fn restrict<C: Coefficient>(coeffs: &[C], t0: f64, t1: f64) -> Vec<C> {
 /// denominators here (PH speed σ, |α|² + |β|², Möbius weights) are positive functions whose
 /// coefficients need not be. Returns `None` when some piece still has a non-positive
 /// coefficient after `max_depth` halvings (the polynomial has, or nearly has, a root).
-pub fn positive_subdivision(polynomials: &[&[f64]], max_depth: usize) -> Option<Vec<f64>> {
+pub(crate) fn positive_subdivision(polynomials: &[&[f64]], max_depth: usize) -> Option<Vec<f64>> {
     fn visit(
         polys: &[Vec<f64>],
         lo: f64,
@@ -384,7 +384,7 @@ pub fn positive_subdivision(polynomials: &[&[f64]], max_depth: usize) -> Option<
 
 /// Bernstein coefficients of degree n of the polynomial `Σ power[i] tⁱ` (n = power.len() − 1):
 /// `b_k = Σ_{i≤k} C(k,i)/C(n,i) · a_i`.
-pub fn from_power<C: Coefficient>(power: &[C]) -> Vec<C> {
+pub(crate) fn from_power<C: Coefficient>(power: &[C]) -> Vec<C> {
     let n = power.len() - 1;
     (0..=n)
         .map(|k| {
@@ -397,7 +397,7 @@ pub fn from_power<C: Coefficient>(power: &[C]) -> Vec<C> {
 
 /// Power-basis coefficients `a_i` (p = Σ a_i tⁱ) of a Bernstein polynomial:
 /// `a_i = C(n,i) Σ_{k≤i} (−1)^{i−k} C(i,k) b_k`.
-pub fn to_power<C: Coefficient>(coeffs: &[C]) -> Vec<C> {
+pub(crate) fn to_power<C: Coefficient>(coeffs: &[C]) -> Vec<C> {
     let n = coeffs.len() - 1;
     (0..=n)
         .map(|i| {

@@ -254,6 +254,13 @@ impl RationalBezierCurve {
             points: bernstein::restrict(&self.points, t0, t1),
         }
     }
+
+    /// The same curve traversed backwards: t ↦ 1 − t (the control points reversed).
+    pub fn reversed(&self) -> Self {
+        Self {
+            points: self.points.iter().rev().copied().collect(),
+        }
+    }
 }
 
 #[cfg(test)]

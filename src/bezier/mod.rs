@@ -7,10 +7,10 @@
 //! * [`PiecewiseCurve`] and [`PiecewiseSurface`]: segments on consecutive intervals,
 //! * [`NurbsCurve`] and [`NurbsSurface`]: the clamped NURBS form CAD systems take.
 
-pub mod bernstein;
+pub(crate) mod bernstein;
 pub(crate) mod closest;
 mod curve;
-pub mod homogeneous;
+pub(crate) mod homogeneous;
 mod nurbs;
 mod piecewise;
 mod surface;
@@ -18,5 +18,6 @@ mod surface;
 pub use bernstein::MAX_DEGREE;
 pub use curve::{CurveJet, RationalBezierCurve};
 pub use nurbs::{check_nurbs_counts, NurbsCurve, NurbsSurface};
-pub use piecewise::{check_breaks, check_in_domain, locate, PiecewiseCurve, PiecewiseSurface};
+pub(crate) use piecewise::{check_breaks, locate};
+pub use piecewise::{check_in_domain, PiecewiseCurve, PiecewiseSurface};
 pub use surface::{RationalBezierPatch, SurfaceJet};

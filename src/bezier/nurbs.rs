@@ -30,63 +30,96 @@ use glam::{DVec3, DVec4};
 const JOINT_TOLERANCE: f64 = 1e-9;
 
 /// Largest coordinate of an accepted pole, weight ratio and derivative bound (module notes).
-pub const MAX_VALUE: f64 = 1e300;
+pub(super) const MAX_VALUE: f64 = 1e300;
 
-/// A NURBS curve with Cartesian poles, positive weights and a clamped knot vector.
+/// A NURBS curve with Cartesian poles, positive weights and a clamped knot vector. Made by
+/// [`NurbsCurve::new`], which checks the data, or from rational Bézier pieces; read by its
+/// accessors.
 #[derive(Clone, Debug, PartialEq)]
 pub struct NurbsCurve {
     /// Polynomial degree p ≥ 1.
-    pub degree: usize,
+    pub(crate) degree: usize,
     /// Cartesian poles, at least p + 1.
-    pub poles: Vec<DVec3>,
+    pub(crate) poles: Vec<DVec3>,
     /// One weight per pole, all > 0.
-    pub weights: Vec<f64>,
+    pub(crate) weights: Vec<f64>,
     /// Clamped, non-decreasing knot vector of poles.len() + p + 1 knots.
-    pub knots: Vec<f64>,
+    pub(crate) knots: Vec<f64>,
 }
 
-/// A NURBS surface; pole (i, j) is stored at `i * pole_count_v + j`, i along u.
+/// A NURBS surface; pole (i, j) is stored at `i * pole_count_v + j`, i along u. Made by
+/// [`NurbsSurface::new`], which checks the data, or from a grid of patches; read by its
+/// accessors.
 #[derive(Clone, Debug, PartialEq)]
 pub struct NurbsSurface {
     /// Degree along u.
-    pub degree_u: usize,
+    pub(crate) degree_u: usize,
     /// Degree along v.
-    pub degree_v: usize,
+    pub(crate) degree_v: usize,
     /// Number of poles along u.
-    pub pole_count_u: usize,
+    pub(crate) pole_count_u: usize,
     /// Number of poles along v.
-    pub pole_count_v: usize,
+    pub(crate) pole_count_v: usize,
     /// pole_count_u · pole_count_v Cartesian poles, pole (i, j) at `i * pole_count_v + j`.
-    pub poles: Vec<DVec3>,
+    pub(crate) poles: Vec<DVec3>,
     /// Weights in the order of the poles, all > 0.
-    pub weights: Vec<f64>,
+    pub(crate) weights: Vec<f64>,
     /// Clamped knot vector in u, pole_count_u + degree_u + 1 knots.
-    pub knots_u: Vec<f64>,
+    pub(crate) knots_u: Vec<f64>,
     /// Clamped knot vector in v, pole_count_v + degree_v + 1 knots.
-    pub knots_v: Vec<f64>,
+    pub(crate) knots_v: Vec<f64>,
+}
+
+/// What the counts of NURBS data are called where they were given: C's arguments, or the
+/// lengths of a Rust caller's vectors.
+struct CountNames<'a> {
+    degree: &'a str,
+    poles: &'a str,
+    knots: &'a str,
 }
 
 /// Checks degree, pole count and knot count against each other, before any array is read
 /// (so that a wrong count is reported instead of reading past the caller's arrays). Names
-/// use the C API's argument names with `suffix` ("" or "_u"/"_v").
+/// are the C API's arguments with `suffix` ("" or "_u"/"_v").
 pub fn check_nurbs_counts(
     degree: usize,
     pole_count: usize,
     knot_count: usize,
     suffix: &str,
 ) -> Result<()> {
+    let (d, p, k) = (
+        format!("degree{suffix}"),
+        format!("pole_count{suffix}"),
+        format!("knot_count{suffix}"),
+    );
+    let names = CountNames {
+        degree: &d,
+        poles: &p,
+        knots: &k,
+    };
+    check_counts(degree, pole_count, knot_count, &names)
+}
+
+fn check_counts(
+    degree: usize,
+    pole_count: usize,
+    knot_count: usize,
+    names: &CountNames<'_>,
+) -> Result<()> {
+    let CountNames {
+        degree: d,
+        poles: p,
+        knots: k,
+    } = names;
     if degree == 0 || degree > MAX_DEGREE {
-        return invalid!("degree{suffix} = {degree} must lie in 1..={MAX_DEGREE}");
+        return invalid!("{d} = {degree} must lie in 1..={MAX_DEGREE}");
     }
     if pole_count < degree + 1 {
-        return invalid!(
-            "pole_count{suffix} = {pole_count} is less than degree{suffix} + 1 = {}",
-            degree + 1
-        );
+        return invalid!("{p} = {pole_count} is less than {d} + 1 = {}", degree + 1);
     }
     if pole_count.checked_add(degree + 1) != Some(knot_count) {
         return invalid!(
-            "knot_count{suffix} = {knot_count} but pole_count{suffix} + degree{suffix} + 1 = {}",
+            "{k} = {knot_count} but {p} + {d} + 1 = {}",
             pole_count.saturating_add(degree + 1)
         );
     }
@@ -297,6 +330,26 @@ fn decompose_net(p: usize, knots: &[f64], poles: &[DVec4]) -> Vec<DVec4> {
 }
 
 impl NurbsCurve {
+    /// Polynomial degree p ≥ 1.
+    pub fn degree(&self) -> usize {
+        self.degree
+    }
+
+    /// Cartesian poles, at least p + 1.
+    pub fn poles(&self) -> &[DVec3] {
+        &self.poles
+    }
+
+    /// One weight per pole, all > 0.
+    pub fn weights(&self) -> &[f64] {
+        &self.weights
+    }
+
+    /// The clamped, non-decreasing knot vector: `poles().len() + degree() + 1` knots.
+    pub fn knots(&self) -> &[f64] {
+        &self.knots
+    }
+
     /// Validates NURBS data (`weights = None` means all 1).
     pub fn new(
         degree: usize,
@@ -304,7 +357,12 @@ impl NurbsCurve {
         weights: Option<Vec<f64>>,
         knots: Vec<f64>,
     ) -> Result<Self> {
-        check_nurbs_counts(degree, poles.len(), knots.len(), "")?;
+        let names = CountNames {
+            degree: "degree",
+            poles: "poles.len()",
+            knots: "knots.len()",
+        };
+        check_counts(degree, poles.len(), knots.len(), &names)?;
         let weights = weights.unwrap_or_else(|| vec![1.0; poles.len()]);
         check_poles_and_weights(&poles, &weights)?;
         check_knots(degree, &knots, "")?;
@@ -389,6 +447,47 @@ impl NurbsCurve {
 }
 
 impl NurbsSurface {
+    /// Degree along u.
+    pub fn degree_u(&self) -> usize {
+        self.degree_u
+    }
+
+    /// Degree along v.
+    pub fn degree_v(&self) -> usize {
+        self.degree_v
+    }
+
+    /// Number of poles along u.
+    pub fn pole_count_u(&self) -> usize {
+        self.pole_count_u
+    }
+
+    /// Number of poles along v.
+    pub fn pole_count_v(&self) -> usize {
+        self.pole_count_v
+    }
+
+    /// `pole_count_u() · pole_count_v()` Cartesian poles, pole (i, j) at
+    /// `i * pole_count_v() + j`.
+    pub fn poles(&self) -> &[DVec3] {
+        &self.poles
+    }
+
+    /// Weights in the order of the poles, all > 0.
+    pub fn weights(&self) -> &[f64] {
+        &self.weights
+    }
+
+    /// The clamped knot vector in u: `pole_count_u() + degree_u() + 1` knots.
+    pub fn knots_u(&self) -> &[f64] {
+        &self.knots_u
+    }
+
+    /// The clamped knot vector in v: `pole_count_v() + degree_v() + 1` knots.
+    pub fn knots_v(&self) -> &[f64] {
+        &self.knots_v
+    }
+
     /// Validates NURBS surface data (`weights = None` means all 1).
     #[allow(clippy::too_many_arguments)]
     pub fn new(
@@ -401,8 +500,28 @@ impl NurbsSurface {
         knots_u: Vec<f64>,
         knots_v: Vec<f64>,
     ) -> Result<Self> {
-        check_nurbs_counts(degree_u, pole_count_u, knots_u.len(), "_u")?;
-        check_nurbs_counts(degree_v, pole_count_v, knots_v.len(), "_v")?;
+        for (degree, pole_count, knots, names) in [
+            (
+                degree_u,
+                pole_count_u,
+                &knots_u,
+                ["degree_u", "pole_count_u", "knots_u.len()"],
+            ),
+            (
+                degree_v,
+                pole_count_v,
+                &knots_v,
+                ["degree_v", "pole_count_v", "knots_v.len()"],
+            ),
+        ] {
+            let [degree_name, pole_name, knot_name] = names;
+            let names = CountNames {
+                degree: degree_name,
+                poles: pole_name,
+                knots: knot_name,
+            };
+            check_counts(degree, pole_count, knots.len(), &names)?;
+        }
         if pole_count_u.checked_mul(pole_count_v) != Some(poles.len()) {
             return invalid!(
                 "pole_count_u × pole_count_v = {pole_count_u} × {pole_count_v} but {} poles given",
@@ -748,7 +867,12 @@ mod tests {
                 .message()
                 .to_string()
         };
-        assert!(bad(vec![0.0; 9]).contains("knot_count"));
+        // A Rust caller passed vectors; the C layer's counts keep their C names.
+        assert!(bad(vec![0.0; 9]).starts_with("knots.len() = 9 but poles.len() + degree + 1 = 10"));
+        let c_names = check_nurbs_counts(3, 6, 9, "_v").unwrap_err();
+        assert!(c_names
+            .message()
+            .starts_with("knot_count_v = 9 but pole_count_v + degree_v + 1 = 10"));
         assert!(bad(vec![0.0, 0.0, 0.0, 0.0, 0.5, 0.4, 1.0, 1.0, 1.0, 1.0]).contains("decrease"));
         assert!(bad(vec![0.0, 0.0, 0.0, 0.1, 0.5, 0.6, 1.0, 1.0, 1.0, 1.0]).contains("clamped"));
         assert!(bad(vec![0.0; 10]).contains("empty"));

@@ -12,10 +12,10 @@ use glam::DVec3;
 /// Relative tolerance for parameters that fall just outside a domain by round-off: a
 /// parameter up to 1e-12·max(|t_min|, |t_max|, 1) outside is accepted and clamped to the end
 /// (the C header documents it with every domain).
-pub const DOMAIN_SLACK: f64 = 1e-12;
+pub(super) const DOMAIN_SLACK: f64 = 1e-12;
 
 /// Checks that `breaks` holds `pieces + 1` finite, strictly increasing breakpoints.
-pub fn check_breaks(breaks: &[f64], pieces: usize, name: &str) -> Result<()> {
+pub(crate) fn check_breaks(breaks: &[f64], pieces: usize, name: &str) -> Result<()> {
     if pieces == 0 {
         return invalid!("a piecewise object needs at least one piece");
     }
@@ -36,7 +36,7 @@ pub fn check_breaks(breaks: &[f64], pieces: usize, name: &str) -> Result<()> {
 /// Index of the interval of `breaks` containing `t` and the local parameter in [0, 1].
 /// Parameters outside the domain are clamped; interior breakpoints belong to the interval
 /// on their right.
-pub fn locate(breaks: &[f64], t: f64) -> (usize, f64) {
+pub(crate) fn locate(breaks: &[f64], t: f64) -> (usize, f64) {
     let last = breaks.len() - 2;
     let k = breaks[1..=last].partition_point(|&b| b <= t);
     (k, fraction(t, breaks[k], breaks[k + 1]).clamp(0.0, 1.0))
@@ -120,6 +120,17 @@ impl PiecewiseCurve {
     /// The breakpoints, one more than the segments.
     pub fn breaks(&self) -> &[f64] {
         &self.breaks
+    }
+
+    /// The same curve traversed backwards, on the same domain: t ↦ lo + hi − t.
+    pub fn reversed(&self) -> Self {
+        let (lo, hi) = self.domain();
+        let segments = self.segments.iter().rev().map(|s| s.reversed()).collect();
+        let mut breaks: Vec<f64> = self.breaks.iter().rev().map(|&t| lo + hi - t).collect();
+        // The ends exactly, whatever lo + hi − t rounds to.
+        breaks[0] = lo;
+        *breaks.last_mut().expect("two breaks or more") = hi;
+        Self { segments, breaks }
     }
 
     /// The parameter domain `(first break, last break)`.

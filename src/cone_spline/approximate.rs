@@ -19,12 +19,13 @@
 
 use super::developable::{Developable, Ruling, END_FRACTION};
 use super::element::Element;
-use super::pair::{cone_pair_in_band, ConePair, Frame, Rule};
+use super::pair::{cone_pair_in_band, ConePair, Rule};
 use super::piece::ConePiece;
 use super::region::SweptBand;
 use super::spline::ConeSpline;
 use crate::error::{Error, Result};
 use crate::math::interior_midpoint;
+use crate::model::Similarity;
 use glam::DVec3;
 
 /// Rulings sampled per interval (plus one) and points per ruling for the deviation.
@@ -50,7 +51,7 @@ pub struct Approximation {
 
 /// Largest distance from sampled region points of `surface` on [a, b] to the pieces.
 #[cfg(test)]
-pub fn deviation(
+pub(crate) fn deviation(
     surface: &dyn Developable,
     pieces: &[ConePiece],
     a: f64,
@@ -196,7 +197,7 @@ pub(crate) fn fit(
             largest: local.largest,
         });
     }
-    let scale = local.frame.scale();
+    let scale = local.frame.scale;
     let fit =
         approximate_local(&local, tolerance / scale, rule, max_pieces).map_err(|e| match e {
             FitError::Pieces {
@@ -239,7 +240,7 @@ pub(crate) fn fit(
 /// not depend on where the surface lies or on its size.
 struct Local<'a> {
     surface: &'a dyn Developable,
-    frame: Frame,
+    frame: Similarity,
     /// The largest coordinate of the region at those rulings (the caller's coordinates).
     largest: f64,
 }
@@ -267,7 +268,7 @@ impl<'a> Local<'a> {
             .fold(0.0, f64::max);
         Ok(Self {
             surface,
-            frame: Frame::around(first, size),
+            frame: Similarity::power_of_two_about(first, size),
             largest,
         })
     }

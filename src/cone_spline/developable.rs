@@ -122,11 +122,11 @@ pub trait Developable {
 
 /// Samples of a turning function for inflection generators (plus the searches between
 /// them that [`sampled_roots`] makes).
-pub const INFLECTION_SAMPLES: usize = 400;
+pub(crate) const INFLECTION_SAMPLES: usize = 400;
 
 /// Roots within this fraction of the domain's length of an end are the end ruling (and
 /// sampled roots closer than it to each other one double root).
-pub const END_FRACTION: f64 = 1e-9;
+pub(crate) const END_FRACTION: f64 = 1e-9;
 
 /// A root counts as a touching (double) root where |f| is at most this fraction of the
 /// largest sampled |f|: above the differencing noise of the sampled functions (1e-7

@@ -86,7 +86,12 @@ impl Element {
 /// Checks that two consecutive elements can be joined by a G1 surface whose normals point
 /// to one side: rulings not antiparallel-parallel, not the same ruling, and normals
 /// n = e × p on the same side (n₁ · n₂ > 0).
-pub fn check_consecutive(a: &Element, b: &Element, name_a: &str, name_b: &str) -> Result<()> {
+pub(crate) fn check_consecutive(
+    a: &Element,
+    b: &Element,
+    name_a: &str,
+    name_b: &str,
+) -> Result<()> {
     let scale = a
         .point
         .abs()

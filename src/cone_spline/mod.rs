@@ -20,20 +20,19 @@
 //! The biarcs of the pairs (eqs. (7), (8)) and the flat pattern's types live in the model
 //! layer (`crate::model`), shared with the PH offsets, the sheet parts and the exporters.
 
-pub mod approximate;
+pub(crate) mod approximate;
 mod develop;
-pub mod developable;
-pub mod element;
+pub(crate) mod developable;
+pub(crate) mod element;
 mod offset;
-pub mod osculating;
-pub mod pair;
-pub mod pattern;
-pub mod piece;
-pub mod region;
-pub mod spline;
+pub(crate) mod osculating;
+pub(crate) mod pair;
+pub(crate) mod pattern;
+pub(crate) mod piece;
+pub(crate) mod region;
+pub(crate) mod spline;
 mod surface;
 
-pub use crate::model::{FlatPattern, PatternEdge};
 pub use approximate::Approximation;
 pub use element::Element;
 pub use pair::{cone_pair, ConePair, PairCase, Rule};

@@ -52,7 +52,7 @@ use std::f64::consts::{FRAC_1_SQRT_2, FRAC_PI_2, FRAC_PI_4, PI};
 
 /// The osculating cone (or cylinder) along one ruling.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct OsculatingCone {
+pub(crate) struct OsculatingCone {
     /// The ruling with its tangent plane.
     pub element: Element,
     /// The point of regression; `None` for an osculating cylinder (axis along the ruling)
@@ -68,7 +68,7 @@ pub struct OsculatingCone {
 impl OsculatingCone {
     #[cfg(test)]
     /// Half angle α (π/2 at an inflection generator, where the cone is the tangent plane).
-    pub fn half_angle(&self) -> f64 {
+    pub(crate) fn half_angle(&self) -> f64 {
         self.axis
             .dot(self.element.ruling)
             .abs()
@@ -79,7 +79,7 @@ impl OsculatingCone {
 
 /// The osculating cone of `surface` along the ruling at t: from the jet of the line of
 /// regression for a tangent surface, else from the frames of the elements.
-pub fn osculating_cone(surface: &dyn Developable, t: f64) -> Result<OsculatingCone> {
+pub(crate) fn osculating_cone(surface: &dyn Developable, t: f64) -> Result<OsculatingCone> {
     let el = surface.element(t)?;
     match surface.regression_jet(t) {
         Some(jet) => Ok(darboux_cone(el, jet?)),
@@ -502,7 +502,7 @@ fn sign_changes(xs: &[f64], f: &dyn Fn(f64) -> Option<f64>) -> Vec<f64> {
 
 /// Joins two osculating cones by the most useful consistent filling cone (three pieces),
 /// or, where one is a cylinder or plane, by osculating segments and a Hermite cone pair.
-pub fn join_osculating(d1: &OsculatingCone, d2: &OsculatingCone) -> Result<Vec<ConePiece>> {
+pub(crate) fn join_osculating(d1: &OsculatingCone, d2: &OsculatingCone) -> Result<Vec<ConePiece>> {
     if d1.vertex.is_none() || d2.vertex.is_none() {
         return hermite_join(d1, d2);
     }
@@ -569,7 +569,7 @@ fn hermite_join(d1: &OsculatingCone, d2: &OsculatingCone) -> Result<Vec<ConePiec
 }
 
 /// Halvings of an interval between given osculating cones before joining fails.
-pub const MAX_SUBDIVISIONS: usize = 6;
+pub(crate) const MAX_SUBDIVISIONS: usize = 6;
 
 /// One piece for two consecutive pieces on the same cone (same axis line), else `None`.
 fn merged(a: &ConePiece, b: &ConePiece) -> Option<ConePiece> {

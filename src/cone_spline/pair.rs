@@ -36,8 +36,9 @@ use super::piece::Motion;
 use super::region::{Region, SweptBand};
 use crate::error::no_solution;
 use crate::error::{invalid, Error, Result};
-use crate::math::{quadratic_roots, secant_refine, solve_refined};
+use crate::math::{quadratic_roots, robust_length, secant_refine, solve_refined};
 use crate::model::biarc::{biarc, equal_lambda, lambda_through, partner_lambda, Biarc};
+use crate::model::Similarity;
 use glam::{DMat3, DVec3};
 
 /// |det(p₁, p₂, n₁ − n₂)| below which (13) holds: the constant-slope case.
@@ -104,7 +105,7 @@ enum Apex {
 /// `names` are the caller's names of the two elements, for messages.
 ///
 /// The pair is solved in coordinates centred on the first element's point and scaled by a
-/// power of two near the elements' distance (`Frame`), so that it does not depend on
+/// power of two at or below the elements' distance (a `Similarity`), so that it does not depend on
 /// where the data lie or on their size: the tolerances below are relative to that
 /// distance, and a scaling by a power of two changes no rounding at all.
 pub fn cone_pair(
@@ -122,7 +123,7 @@ pub fn cone_pair(
 /// rule's most useful admissible solution is taken, and for the default rule, where both
 /// roots of (12) put a vertex inside, one with a vertex just outside the band on either
 /// ruling.
-pub fn cone_pair_in_band(
+pub(crate) fn cone_pair_in_band(
     a: &Element,
     b: &Element,
     rule: Rule,
@@ -145,7 +146,7 @@ fn solve_pair(
             return invalid!("the given parameter mu1 = {x} is not finite");
         }
     }
-    let frame = Frame::of(a, b);
+    let frame = Similarity::power_of_two_about(a.point, robust_length(b.point - a.point));
     let rule = match rule {
         Rule::Given(x) => Rule::Given(x / frame.scale),
         other => other,
@@ -160,60 +161,25 @@ fn solve_pair(
     Ok(frame.pair_out(pair))
 }
 
-/// Coordinates x_local = (x − centre) / scale of one pair, `scale` a power of two.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct Frame {
-    centre: DVec3,
-    scale: f64,
-}
-
-impl Frame {
-    /// Centred on `a`'s point, scaled by the power of two at or below |b − a| (1 when the
-    /// points coincide; 2^−1022 for a subnormal distance, whose power of two is not a
-    /// normal number).
-    fn of(a: &Element, b: &Element) -> Self {
-        Self::around(a.point, crate::math::robust_length(b.point - a.point))
-    }
-
-    /// Centred on `centre`, scaled by the power of two at or below `size` (1 for a zero or
-    /// non-finite size).
-    pub(crate) fn around(centre: DVec3, size: f64) -> Self {
-        let scale = if size.is_finite() && size > 0.0 {
-            f64::from_bits(size.to_bits() & 0x7ff0_0000_0000_0000).max(f64::MIN_POSITIVE)
-        } else {
-            1.0
-        };
-        Self { centre, scale }
-    }
-
-    /// The scale: local lengths are world lengths divided by it.
-    pub(crate) fn scale(&self) -> f64 {
-        self.scale
-    }
-
-    pub(crate) fn point_in(&self, x: DVec3) -> DVec3 {
-        (x - self.centre) / self.scale
-    }
-
-    fn point_out(&self, x: DVec3) -> DVec3 {
-        x * self.scale + self.centre
-    }
-
+/// A pair's local coordinates (centred on the first element's point, scaled by the power of
+/// two at or below the elements' distance) carry the cone spline's own objects: rulings,
+/// elements, pieces and pairs.
+impl Similarity {
     /// A ruling of a developable in these coordinates (its band scaled with them).
     pub(crate) fn ruling_in(&self, r: &Ruling) -> Ruling {
         Ruling {
-            point: self.point_in(r.point),
+            point: self.to_internal(r.point),
             range: (r.range.0 / self.scale, r.range.1 / self.scale),
             ..*r
         }
     }
 
     pub(crate) fn element_in(&self, e: &Element) -> Element {
-        Element::from_frame(self.point_in(e.point), e.ruling, e.side)
+        Element::from_frame(self.to_internal(e.point), e.ruling, e.side)
     }
 
     fn element_out(&self, e: &Element) -> Element {
-        Element::from_frame(self.point_out(e.point), e.ruling, e.side)
+        Element::from_frame(self.to_user(e.point), e.ruling, e.side)
     }
 
     pub(crate) fn piece_out(&self, p: &ConePiece) -> ConePiece {
@@ -223,7 +189,7 @@ impl Frame {
                 axis,
                 angle,
             } => Motion::Rotation {
-                origin: self.point_out(origin),
+                origin: self.to_user(origin),
                 axis,
                 angle,
             },
@@ -241,13 +207,13 @@ impl Frame {
         ConePair {
             case: pair.case,
             pieces: pair.pieces.iter().map(|p| self.piece_out(p)).collect(),
-            sphere: pair.sphere.map(|(m, r)| (self.point_out(m), r * s)),
+            sphere: pair.sphere.map(|(m, r)| (self.to_user(m), r * s)),
             biarc: pair.biarc.map(|b| Biarc {
-                a1: self.point_out(b.a1),
-                b1: self.point_out(b.b1),
-                c: self.point_out(b.c),
-                b2: self.point_out(b.b2),
-                a2: self.point_out(b.a2),
+                a1: self.to_user(b.a1),
+                b1: self.to_user(b.b1),
+                c: self.to_user(b.c),
+                b2: self.to_user(b.b2),
+                a2: self.to_user(b.a2),
                 lambda1: b.lambda1 * s,
                 lambda2: b.lambda2 * s,
                 ..b
@@ -266,21 +232,21 @@ enum KeepOut<'a> {
     Band(&'a SweptBand),
 }
 
-/// Where the vertices must not lie, seen from the local coordinates of a [`Frame`]: a box
+/// Where the vertices must not lie, seen from the local coordinates of a pair: a box
 /// in the caller's coordinates, a band carried into the local ones.
 enum LocalKeepOut {
     Box(Region),
     Band(SweptBand),
 }
 
-/// The caller's region of interest seen from the local coordinates of a [`Frame`].
+/// The caller's region of interest seen from the local coordinates of a pair.
 struct Omega {
     keep_out: LocalKeepOut,
-    frame: Frame,
+    frame: Similarity,
 }
 
 impl Omega {
-    fn new(keep_out: KeepOut<'_>, frame: Frame) -> Self {
+    fn new(keep_out: KeepOut<'_>, frame: Similarity) -> Self {
         let keep_out = match keep_out {
             KeepOut::Band(band) => LocalKeepOut::Band(band.map(|r| frame.ruling_in(r))),
             KeepOut::Box(region) => LocalKeepOut::Box(region),
@@ -294,7 +260,7 @@ impl Omega {
             LocalKeepOut::Box(region) => !pieces
                 .iter()
                 .filter_map(ConePiece::vertex)
-                .any(|v| region.contains(self.frame.point_out(v))),
+                .any(|v| region.contains(self.frame.to_user(v))),
             LocalKeepOut::Band(band) => band.admits(pieces),
         }
     }
@@ -309,7 +275,7 @@ impl Omega {
                 let s = self.frame.scale;
                 let margin = 1e-6 * crate::math::robust_length(region.max - region.min) / s;
                 region
-                    .clip_line(self.frame.point_out(point), direction)
+                    .clip_line(self.frame.to_user(point), direction)
                     .map(|(lo, hi)| ((lo / s, hi / s), margin))
             }
             LocalKeepOut::Band(band) => Some(band.on_ruling(end, point, direction)),
@@ -374,7 +340,7 @@ fn at_point(v: DVec3, region: Option<&Omega>) -> String {
     match region {
         None => String::new(),
         Some(r) => match r.keep_out {
-            LocalKeepOut::Box(_) => format!(" at {}", r.frame.point_out(v)),
+            LocalKeepOut::Box(_) => format!(" at {}", r.frame.to_user(v)),
             LocalKeepOut::Band(_) => String::new(),
         },
     }
@@ -526,7 +492,7 @@ fn has_vertex_in(pieces: &[ConePiece], region: Option<&Omega>) -> bool {
 }
 
 /// Vertex parameters (μ₁, μ₂); `None` is a vertex at infinity.
-pub type VertexParameters = (Option<f64>, Option<f64>);
+pub(crate) type VertexParameters = (Option<f64>, Option<f64>);
 
 /// The vertex family of (9): v₁ = a₁ + μ₁e₁, v₂ = a₂ − μ₂e₂, μ₂ = (Aμ₁ + B)/(Cμ₁ + D) (11).
 ///

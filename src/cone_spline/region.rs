@@ -19,7 +19,7 @@ use glam::DVec3;
 /// How far inside the swept band a vertex may lie, relative to the band's width, and still
 /// count as on its boundary: a vertex at a ruling's end is admissible (the corner cones of
 /// sheet-metal parts have theirs at a corner of the part), and rounding must not refuse it.
-pub const BOUNDARY_MARGIN: f64 = 1e-9;
+pub(crate) const BOUNDARY_MARGIN: f64 = 1e-9;
 /// How far outside the band, relative to its width, a vertex is placed when the rule's own
 /// choice lies inside: well beyond [`BOUNDARY_MARGIN`] and the export check of the strip.
 pub(crate) const PLACEMENT_MARGIN: f64 = 1e-6;

@@ -9,7 +9,7 @@ use crate::error::Result;
 use glam::DVec3;
 
 /// The twisted cubic (t, t², t³) on [t0, t1] as one polynomial Bézier segment.
-pub fn twisted_cubic(t0: f64, t1: f64) -> PiecewiseCurve {
+pub(crate) fn twisted_cubic(t0: f64, t1: f64) -> PiecewiseCurve {
     let power = [DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::Z];
     let full = bernstein::from_power(&power);
     let seg = RationalBezierCurve::polynomial(&full)
@@ -19,7 +19,7 @@ pub fn twisted_cubic(t0: f64, t1: f64) -> PiecewiseCurve {
 }
 
 /// The helix (r cos t, r sin t, c t) on [t0, t1] (a curve of constant slope).
-pub struct Helix {
+pub(crate) struct Helix {
     pub radius: f64,
     pub pitch: f64,
     pub domain: (f64, f64),
@@ -54,7 +54,7 @@ impl ParametricCurve for Helix {
 
 /// A curve seen only through its points and first derivatives, as a C callback gives it:
 /// the jet is differenced.
-pub struct OnlyTangents<C>(pub C);
+pub(crate) struct OnlyTangents<C>(pub C);
 
 impl<C: ParametricCurve> ParametricCurve for OnlyTangents<C> {
     fn domain(&self) -> (f64, f64) {
@@ -68,7 +68,7 @@ impl<C: ParametricCurve> ParametricCurve for OnlyTangents<C> {
 
 /// The polynomial curve (t, t², z(t)) on [t0, t1] whose z''' has the given roots (with
 /// multiplicity): its torsion numerator det(x', x'', x''') = 2 z''' has exactly these zeros.
-pub fn torsion_zeros_curve(roots: &[f64], t0: f64, t1: f64) -> PiecewiseCurve {
+pub(crate) fn torsion_zeros_curve(roots: &[f64], t0: f64, t1: f64) -> PiecewiseCurve {
     let mut z3 = vec![1.0];
     for &r in roots {
         let mut next = vec![0.0; z3.len() + 1];
@@ -94,13 +94,13 @@ pub fn torsion_zeros_curve(roots: &[f64], t0: f64, t1: f64) -> PiecewiseCurve {
 }
 
 /// The tangent surface of `curve` over distances [v0, v1] from the curve.
-pub fn tangent_surface(curve: &dyn ParametricCurve, v0: f64, v1: f64) -> TangentSurface<'_> {
+pub(crate) fn tangent_surface(curve: &dyn ParametricCurve, v0: f64, v1: f64) -> TangentSurface<'_> {
     TangentSurface::new(curve, v0, v1).unwrap()
 }
 
 /// Cone pairs through the elements at `ts` of the tangent surface of the twisted cubic,
 /// region v ∈ [2, 3] (far enough from the curve for the parallel-circle strips).
-pub fn cubic_hermite(ts: &[f64]) -> ConeSpline {
+pub(crate) fn cubic_hermite(ts: &[f64]) -> ConeSpline {
     let curve = twisted_cubic(0.2, 1.2);
     let surface = tangent_surface(&curve, 2.0, 3.0);
     let elements: Vec<_> = ts.iter().map(|&t| surface.element(t).unwrap()).collect();
@@ -111,7 +111,7 @@ pub fn cubic_hermite(ts: &[f64]) -> ConeSpline {
 
 /// Control planes (u₁, u₂, u₃, u₀) of a quadratic dual Bézier curve of planes through the
 /// origin: a (quadratic) cone with vertex at the origin around the z axis.
-pub fn dual_cone_planes() -> Vec<glam::DVec4> {
+pub(crate) fn dual_cone_planes() -> Vec<glam::DVec4> {
     vec![
         glam::DVec4::new(1.0, 0.0, -0.5, 0.0),
         glam::DVec4::new(1.0, 1.0, -0.5, 0.0),
@@ -121,7 +121,7 @@ pub fn dual_cone_planes() -> Vec<glam::DVec4> {
 
 /// The curve (t, t², t⁴) on [−1, 1], whose torsion vanishes at t = 0 (an inflection
 /// generator of its tangent surface).
-pub fn zero_torsion_curve() -> PiecewiseCurve {
+pub(crate) fn zero_torsion_curve() -> PiecewiseCurve {
     let power = [DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::ZERO, DVec3::Z];
     let full = bernstein::from_power(&power);
     let seg = RationalBezierCurve::polynomial(&full)

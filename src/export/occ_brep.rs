@@ -362,7 +362,7 @@ impl Shapes {
 mod tests {
     use super::*;
     use crate::wire::tests::{circle, pipe_route, square};
-    use crate::wire::{sweep_wire, WireSweep};
+    use crate::wire::{sweep as sweep_wire, WireSweep};
 
     /// The `TShapes` records: each one's type and the numbers it refers to.
     fn records(text: &str) -> Vec<(String, Vec<usize>)> {

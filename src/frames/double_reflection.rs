@@ -23,7 +23,7 @@ const NEARLY_EQUAL_TANGENTS: f64 = 1e-16;
 /// frame); nearly equal tangents replace the second one by a projection (see
 /// [`NEARLY_EQUAL_TANGENTS`]).
 #[inline]
-pub fn reflect_step(x0: DVec3, from: &Frame, x1: DVec3, t1: DVec3) -> Frame {
+pub(crate) fn reflect_step(x0: DVec3, from: &Frame, x1: DVec3, t1: DVec3) -> Frame {
     let v1 = x1 - x0;
     let c1 = v1.dot(v1);
     let (r_l, t_l) = if c1 > f64::MIN_POSITIVE {
@@ -63,7 +63,7 @@ impl DoubleReflectionRmf {
     ) -> Result<Self> {
         if params.len() < 2 {
             return invalid!(
-                "sample_count = {} but double reflection needs at least 2 samples",
+                "params.len() = {} but double reflection needs at least 2 samples",
                 params.len()
             );
         }

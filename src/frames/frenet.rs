@@ -10,7 +10,7 @@ use glam::DVec3;
 const FLAT_TOLERANCE: f64 = 1e-12;
 
 /// The Frenet frame, or `None` where the curve is singular or has zero curvature.
-pub fn frenet_frame(d1: DVec3, d2: DVec3) -> Option<Frame> {
+pub(crate) fn frenet_frame(d1: DVec3, d2: DVec3) -> Option<Frame> {
     // The frame does not depend on the lengths of x' and x'': scaled to a largest component
     // of 1 first, tiny (subnormal) or huge derivatives neither underflow nor overflow in the
     // products below.

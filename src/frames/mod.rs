@@ -9,11 +9,11 @@
 //! * [`metrics`]: rotation-minimizing defect, angles between frames, orthonormality, and
 //!   the surface measures (parameter-line angle, Gaussian curvature) used to verify sweeps.
 
-pub mod compare;
-pub mod double_reflection;
-pub mod frenet;
-pub mod metrics;
-pub mod rational;
+pub(crate) mod compare;
+pub(crate) mod double_reflection;
+pub(crate) mod frenet;
+pub(crate) mod metrics;
+pub(crate) mod rational;
 
 use crate::bezier::PiecewiseCurve;
 use crate::curve::ParametricCurve;

@@ -24,7 +24,7 @@ const G1_TOLERANCE: f64 = 1e-9;
 /// its end legs, 64·ε·|P|/|leg| (differences of control points rounded to ε|P|), where that
 /// is larger — a spline of legs 0.18 translated by 1e6 has tangents known to 1.2e-9 only
 /// (it was refused as "not G1").
-pub fn g1_tolerance(curve: &crate::bezier::PiecewiseCurve) -> f64 {
+pub(crate) fn g1_tolerance(curve: &crate::bezier::PiecewiseCurve) -> f64 {
     let mut worst = G1_TOLERANCE;
     for segment in curve.segments() {
         let poles: Vec<DVec3> = segment.poles().collect();
@@ -163,7 +163,7 @@ impl RationalFrameSegment {
 
 /// The frame N₂/d, N₃/d at `s` from Bernstein coefficients of one degree (the tangent is
 /// f₂ × f₃, the pair being orthonormal).
-pub fn frame_at(f2: &[DVec3], f3: &[DVec3], denominator: &[f64], s: f64) -> Frame {
+pub(crate) fn frame_at(f2: &[DVec3], f3: &[DVec3], denominator: &[f64], s: f64) -> Frame {
     // One basis evaluation for all seven coefficient sets (3 + 3 + 1), instead of a de
     // Casteljau run per set: frames are evaluated in bulk (meshes, sweeps, benchmarks).
     let n = denominator.len() - 1;
@@ -207,7 +207,7 @@ pub fn frame_at(f2: &[DVec3], f3: &[DVec3], denominator: &[f64], s: f64) -> Fram
 /// share the tangent: the curve must be G1); for the first piece (`None`), the turn that
 /// starts it at `initial_normal` projected onto the normal plane. A constant turn keeps a
 /// rotation-minimizing frame rotation-minimizing.
-pub fn joining_turn(
+pub(crate) fn joining_turn(
     start: &Frame,
     previous_end: Option<&Frame>,
     initial_normal: DVec3,

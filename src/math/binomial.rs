@@ -5,7 +5,7 @@ use std::sync::OnceLock;
 
 /// Largest n for which `binomial(n, k)` is tabulated. Bernstein degrees in this crate stay
 /// far below it (the highest, Möbius sweeps, are about 20).
-pub const MAX_BINOMIAL_N: usize = 128;
+pub(super) const MAX_BINOMIAL_N: usize = 128;
 
 fn table() -> &'static [Vec<f64>] {
     static TABLE: OnceLock<Vec<Vec<f64>>> = OnceLock::new();
@@ -38,7 +38,7 @@ fn pascal_triangle() -> Vec<Vec<f64>> {
 ///
 /// # Panics
 /// If `n > MAX_BINOMIAL_N` (degrees are validated long before they get here).
-pub fn binomial(n: usize, k: usize) -> f64 {
+pub(crate) fn binomial(n: usize, k: usize) -> f64 {
     if k > n {
         return 0.0;
     }
@@ -49,7 +49,7 @@ pub fn binomial(n: usize, k: usize) -> f64 {
 ///
 /// # Panics
 /// If `n > MAX_BINOMIAL_N`.
-pub fn binomial_row(n: usize) -> &'static [f64] {
+pub(crate) fn binomial_row(n: usize) -> &'static [f64] {
     &table()[n]
 }
 
@@ -57,7 +57,7 @@ pub fn binomial_row(n: usize) -> &'static [f64] {
 ///
 /// # Panics
 /// If `n > MAX_BINOMIAL_N`.
-pub fn reciprocal_binomial_row(n: usize) -> &'static [f64] {
+pub(crate) fn reciprocal_binomial_row(n: usize) -> &'static [f64] {
     &reciprocal_table()[n]
 }
 

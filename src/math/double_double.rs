@@ -9,14 +9,14 @@ use std::ops::{Add, Mul, Neg, Sub};
 
 /// hi + lo with |lo| ≤ ulp(hi)/2.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct DoubleDouble {
+pub(crate) struct DoubleDouble {
     hi: f64,
     lo: f64,
 }
 
 impl DoubleDouble {
     /// The value rounded to a double.
-    pub fn value(self) -> f64 {
+    pub(crate) fn value(self) -> f64 {
         self.hi + self.lo
     }
 }
@@ -77,27 +77,27 @@ impl Mul for DoubleDouble {
 
 /// A vector of double-doubles.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct DoubleDoubleVec3(pub [DoubleDouble; 3]);
+pub(crate) struct DoubleDoubleVec3(pub [DoubleDouble; 3]);
 
 impl DoubleDoubleVec3 {
-    pub fn dot(self, other: Self) -> DoubleDouble {
+    pub(crate) fn dot(self, other: Self) -> DoubleDouble {
         let [a, b, c] = self.0;
         let [x, y, z] = other.0;
         a * x + b * y + c * z
     }
 
-    pub fn cross(self, other: Self) -> Self {
+    pub(crate) fn cross(self, other: Self) -> Self {
         let [a, b, c] = self.0;
         let [x, y, z] = other.0;
         Self([b * z - c * y, c * x - a * z, a * y - b * x])
     }
 
-    pub fn scaled(self, k: DoubleDouble) -> Self {
+    pub(crate) fn scaled(self, k: DoubleDouble) -> Self {
         Self(self.0.map(|c| c * k))
     }
 
     /// Rounded to doubles.
-    pub fn value(self) -> DVec3 {
+    pub(crate) fn value(self) -> DVec3 {
         DVec3::from_array(self.0.map(DoubleDouble::value))
     }
 }

@@ -21,7 +21,7 @@ pub fn lerp(a: f64, b: f64, s: f64) -> f64 {
 }
 
 /// (t − a) / (b − a), the fraction of [a, b] at t (a < b).
-pub fn fraction(t: f64, a: f64, b: f64) -> f64 {
+pub(crate) fn fraction(t: f64, a: f64, b: f64) -> f64 {
     let (offset, length) = (t - a, b - a);
     if offset.is_finite() && length.is_finite() {
         offset / length
@@ -32,7 +32,7 @@ pub fn fraction(t: f64, a: f64, b: f64) -> f64 {
 
 /// 1 / (b − a): the factor from a local parameter on [0, 1] to the parameter of [a, b]
 /// (infinite only for intervals narrower than 1/f64::MAX).
-pub fn reciprocal_length(a: f64, b: f64) -> f64 {
+pub(crate) fn reciprocal_length(a: f64, b: f64) -> f64 {
     let length = b - a;
     if length.is_finite() {
         1.0 / length

@@ -8,7 +8,7 @@ use glam::{DMat3, DVec3};
 
 /// The solution of `rows · x = rhs` (`rows` holding the equations' coefficient vectors as
 /// rows), refined twice against its residual; `None` for a singular matrix.
-pub fn solve_refined(rows: DMat3, rhs: DVec3) -> Option<DVec3> {
+pub(crate) fn solve_refined(rows: DMat3, rhs: DVec3) -> Option<DVec3> {
     if rows.determinant() == 0.0 || !rows.is_finite() || !rhs.is_finite() {
         return None;
     }

@@ -4,7 +4,7 @@
 
 /// The located minimum.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Minimum {
+pub(crate) struct Minimum {
     /// Abscissa of the minimum.
     pub x: f64,
     /// f(x).
@@ -15,7 +15,12 @@ pub struct Minimum {
 
 /// Minimizes `f` on `[a, b]` to the absolute tolerance `tol` in x (Brent 1973, `localmin`).
 /// Non-finite values of f are treated as +∞, so a caller may return NaN where f is undefined.
-pub fn minimize_bracketed(mut f: impl FnMut(f64) -> f64, a: f64, b: f64, tol: f64) -> Minimum {
+pub(crate) fn minimize_bracketed(
+    mut f: impl FnMut(f64) -> f64,
+    a: f64,
+    b: f64,
+    tol: f64,
+) -> Minimum {
     const GOLDEN: f64 = 0.381_966_011_250_105_1;
     let mut eval = |x: f64| {
         let v = f(x);

@@ -3,14 +3,14 @@
 
 /// An n-point Gauss–Legendre rule on [0, 1] (exact for polynomials of degree 2n − 1).
 #[derive(Clone, Debug)]
-pub struct GaussLegendre {
+pub(crate) struct GaussLegendre {
     nodes: Vec<f64>,
     weights: Vec<f64>,
 }
 
 impl GaussLegendre {
     /// The rule with `n ≥ 1` points.
-    pub fn new(n: usize) -> Self {
+    pub(crate) fn new(n: usize) -> Self {
         let n = n.max(1);
         let mut nodes = vec![0.0; n];
         let mut weights = vec![0.0; n];
@@ -39,17 +39,17 @@ impl GaussLegendre {
     }
 
     /// Nodes in (0, 1), ascending.
-    pub fn nodes(&self) -> &[f64] {
+    pub(crate) fn nodes(&self) -> &[f64] {
         &self.nodes
     }
 
     /// Weights, summing to 1.
-    pub fn weights(&self) -> &[f64] {
+    pub(crate) fn weights(&self) -> &[f64] {
         &self.weights
     }
 
     /// ∫ₐᵇ f.
-    pub fn integrate(&self, a: f64, b: f64, mut f: impl FnMut(f64) -> f64) -> f64 {
+    pub(crate) fn integrate(&self, a: f64, b: f64, mut f: impl FnMut(f64) -> f64) -> f64 {
         let h = b - a;
         self.nodes
             .iter()
@@ -61,7 +61,7 @@ impl GaussLegendre {
 
     #[cfg(test)]
     /// ∫ₐᵇ f by the rule applied on `pieces` equal subintervals.
-    pub fn integrate_composite(
+    pub(crate) fn integrate_composite(
         &self,
         a: f64,
         b: f64,

@@ -16,7 +16,7 @@ use super::minimize::minimize_bracketed;
 
 /// Roots of `a x² + b x + c`, ascending, computed without cancellation (the larger root by
 /// the usual formula, the smaller from Vieta). Degrades to the linear case when `a == 0`.
-pub fn quadratic_roots(a: f64, b: f64, c: f64) -> Vec<f64> {
+pub(crate) fn quadratic_roots(a: f64, b: f64, c: f64) -> Vec<f64> {
     if a == 0.0 {
         return if b == 0.0 { Vec::new() } else { vec![-c / b] };
     }
@@ -65,7 +65,7 @@ fn trimmed(coeffs: &[f64]) -> &[f64] {
 ///
 /// Uses the Cauchy bound `1 + max |aᵢ / aₙ|` as the search interval. The zero polynomial
 /// and non-finite coefficients give no roots.
-pub fn real_roots_power(coeffs: &[f64]) -> Vec<f64> {
+pub(crate) fn real_roots_power(coeffs: &[f64]) -> Vec<f64> {
     let p = trimmed(coeffs);
     if p.len() < 2 || p.iter().any(|c| !c.is_finite()) {
         return Vec::new();
@@ -83,7 +83,7 @@ pub fn real_roots_power(coeffs: &[f64]) -> Vec<f64> {
 }
 
 /// All real roots of `Σ coeffs[i] xⁱ` in the closed interval `[lo, hi]`, sorted ascending.
-pub fn real_roots_in(coeffs: &[f64], lo: f64, hi: f64) -> Vec<f64> {
+pub(crate) fn real_roots_in(coeffs: &[f64], lo: f64, hi: f64) -> Vec<f64> {
     let p = trimmed(coeffs);
     if p.len() < 2 || lo.is_nan() || hi.is_nan() || lo > hi || p.iter().any(|c| !c.is_finite()) {
         return Vec::new();
@@ -163,14 +163,19 @@ fn solve_bracketed(p: &[f64], mut a: f64, mut b: f64, fa: f64) -> f64 {
 /// adjacent floats (or one whose midpoint overflows), which halving would return unchanged:
 /// adaptive subdivision stops there instead of recursing forever (a cone spline fit halving
 /// [1.0001, 1.0001000000000002] would overflow the stack).
-pub fn interior_midpoint(a: f64, b: f64) -> Option<f64> {
+pub(crate) fn interior_midpoint(a: f64, b: f64) -> Option<f64> {
     let m = 0.5 * (a + b);
     (m > a && m < b).then_some(m)
 }
 
 /// A root of a continuous function with a sign change on `[a, b]` (`f(a)·f(b) ≤ 0`), by
 /// bisection to the absolute tolerance `tol`; `None` without a sign change or for NaN values.
-pub fn bisect_root(mut f: impl FnMut(f64) -> f64, mut a: f64, mut b: f64, tol: f64) -> Option<f64> {
+pub(crate) fn bisect_root(
+    mut f: impl FnMut(f64) -> f64,
+    mut a: f64,
+    mut b: f64,
+    tol: f64,
+) -> Option<f64> {
     let (mut fa, fb) = (f(a), f(b));
     if fa.is_nan() || fb.is_nan() || fa * fb > 0.0 {
         return None;
@@ -204,7 +209,7 @@ pub fn bisect_root(mut f: impl FnMut(f64) -> f64, mut a: f64, mut b: f64, tol: f
 /// step whenever three steps have not halved the bracket (a jump of f, which has no root,
 /// is then closed in as fast as by bisection), to the absolute tolerance `tol` in x; `None`
 /// without a sign change or for NaN values.
-pub fn illinois_root(
+pub(crate) fn illinois_root(
     mut f: impl FnMut(f64) -> f64,
     (mut a, mut fa): (f64, f64),
     (mut b, mut fb): (f64, f64),
@@ -279,7 +284,7 @@ pub fn illinois_root(
 ///   at the minimum (a pair of roots between two samples).
 ///
 /// Roots closer than `tol` are merged. Errors of `f` are passed on.
-pub fn sampled_roots<E>(
+pub(crate) fn sampled_roots<E>(
     mut f: impl FnMut(f64) -> Result<f64, E>,
     ts: &[f64],
     touch: f64,

@@ -5,7 +5,7 @@
 /// Refines the root of `f` near `x0` by at most `iterations` secant steps (first step of
 /// size `step`). `f` returns `None` where it cannot be evaluated. Returns the abscissa with
 /// the smallest |f| seen; `x0` itself if no step improved it.
-pub fn secant_refine(
+pub(crate) fn secant_refine(
     mut f: impl FnMut(f64) -> Option<f64>,
     x0: f64,
     step: f64,

@@ -6,7 +6,7 @@ use crate::error::{invalid, Result};
 
 /// `unit` (a measure in coordinates scaled by 1/`scale`) times `scale`^`power`, the same
 /// measure in the caller's units; `what` names it in the refusal.
-pub fn in_caller_units(unit: f64, scale: f64, power: i32, what: &str) -> Result<f64> {
+pub(crate) fn in_caller_units(unit: f64, scale: f64, power: i32, what: &str) -> Result<f64> {
     let value = (0..power).fold(unit, |v, _| v * scale);
     if unit != 0.0 && !value.is_normal() {
         return invalid!(

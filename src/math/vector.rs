@@ -12,7 +12,7 @@ const PARALLEL_TOLERANCE: f64 = 1e-12;
 
 /// The length of the diagonal of the axis-aligned box around `points` (a model's size,
 /// for relative tolerances); 0 for no points.
-pub fn bounding_diagonal(points: impl IntoIterator<Item = DVec3>) -> f64 {
+pub(crate) fn bounding_diagonal(points: impl IntoIterator<Item = DVec3>) -> f64 {
     let (lo, hi) = points
         .into_iter()
         .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), p| {
@@ -28,7 +28,7 @@ pub fn bounding_diagonal(points: impl IntoIterator<Item = DVec3>) -> f64 {
 
 /// The largest absolute coordinate of `points` (the rounding of each is ε times it); 0 for
 /// no points.
-pub fn largest_coordinate(points: impl IntoIterator<Item = DVec3>) -> f64 {
+pub(crate) fn largest_coordinate(points: impl IntoIterator<Item = DVec3>) -> f64 {
     points
         .into_iter()
         .fold(0.0f64, |m, p| m.max(p.abs().max_element()))
@@ -51,7 +51,7 @@ pub fn check_finite(v: DVec3, name: impl Display) -> Result<DVec3> {
 }
 
 /// Alias of [`check_finite`] for points, for readability at call sites.
-pub fn check_point(p: DVec3, name: impl Display) -> Result<DVec3> {
+pub(crate) fn check_point(p: DVec3, name: impl Display) -> Result<DVec3> {
     check_finite(p, name)
 }
 
@@ -82,7 +82,7 @@ pub fn robust_normalize(v: DVec3) -> Option<DVec3> {
 /// The unit vector along `v`; `v` must be finite and non-zero (it need not be unit), and not
 /// subnormal (a largest component below f64::MIN_POSITIVE ≈ 2.2e-308, whose direction double
 /// precision does not resolve).
-pub fn check_unit_direction(v: DVec3, name: impl Display + Copy) -> Result<DVec3> {
+pub(crate) fn check_unit_direction(v: DVec3, name: impl Display + Copy) -> Result<DVec3> {
     check_finite(v, name)?;
     match robust_normalize(v) {
         Some(u) => Ok(u),
@@ -114,7 +114,7 @@ pub fn normal_plane_unit(n: DVec3, tangent: DVec3, name: &str) -> Result<DVec3> 
 /// `v` minus its component along the unit vector `axis`, projected twice: one Gram–Schmidt
 /// pass leaves an error of relative size ε |v| / |result|, which matters when `v` is almost
 /// along `axis`; a second pass removes it ("twice is enough").
-pub fn orthogonalized(v: DVec3, axis: DVec3) -> DVec3 {
+pub(crate) fn orthogonalized(v: DVec3, axis: DVec3) -> DVec3 {
     let once = v - v.dot(axis) * axis;
     once - once.dot(axis) * axis
 }
@@ -129,20 +129,20 @@ pub fn angle_between(a: DVec3, b: DVec3) -> f64 {
 /// `v` scaled by a power of two to components near 1 (zero and non-finite vectors as they
 /// are): the same direction, exactly, with products that neither overflow nor underflow,
 /// for formulas that do not depend on the length.
-pub fn unit_scaled(v: DVec3) -> DVec3 {
+pub(crate) fn unit_scaled(v: DVec3) -> DVec3 {
     v * power_of_two_scale(v)
 }
 
 /// 2⁻ᵏ with 2ᵏ nearest the largest component of `v` (1 for zero or non-finite vectors):
 /// multiplying by it is exact and brings the components near 1.
-pub fn power_of_two_scale(v: DVec3) -> f64 {
+pub(crate) fn power_of_two_scale(v: DVec3) -> f64 {
     power_of_two_inverse(v.abs().max_element())
 }
 
 /// 2⁻ᵏ with 2ᵏ nearest |x| (1 for zero or non-finite x), k kept within ±1023 so that the
 /// factor is a finite, non-zero power of two (for subnormal |x| the factor 2¹⁰²³ still
 /// brings it to normal numbers): multiplying by it is exact.
-pub fn power_of_two_inverse(x: f64) -> f64 {
+pub(crate) fn power_of_two_inverse(x: f64) -> f64 {
     let x = x.abs();
     if x > 0.0 && x.is_finite() {
         2f64.powi((-x.log2().round()).clamp(-1023.0, 1023.0) as i32)
@@ -153,14 +153,14 @@ pub fn power_of_two_inverse(x: f64) -> f64 {
 
 /// The signed angle about the unit `axis` that turns `a` into `b` (both normal to the
 /// axis), in (−π, π]: atan2(axis·(a × b), a·b).
-pub fn signed_angle(a: DVec3, b: DVec3, axis: DVec3) -> f64 {
+pub(crate) fn signed_angle(a: DVec3, b: DVec3, axis: DVec3) -> f64 {
     let (a, b) = (unit_scaled(a), unit_scaled(b));
     axis.dot(a.cross(b)).atan2(a.dot(b))
 }
 
 /// Some unit vector perpendicular to the unit vector `t` (a stable choice: the cross
 /// product with the coordinate axis least aligned with `t`).
-pub fn orthonormal_to(t: DVec3) -> DVec3 {
+pub(crate) fn orthonormal_to(t: DVec3) -> DVec3 {
     let a = t.abs();
     let axis = if a.x <= a.y && a.x <= a.z {
         DVec3::X

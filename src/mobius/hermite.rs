@@ -35,7 +35,7 @@ use glam::DVec3;
 
 /// The planar cubic's RMF over its speed σ: f₂ = n σ/σ, f₃ = (x' × n)/σ, with the hodograph
 /// x' = 3(h₀, h₁, h₂) in Bernstein form (Mäurer & Jüttler (18)).
-pub fn planar_frame(cubic: &PhCubic, normal: DVec3) -> RawFrame {
+pub(crate) fn planar_frame(cubic: &PhCubic, normal: DVec3) -> RawFrame {
     let speed = cubic.speed();
     RawFrame {
         f2: speed.iter().map(|&s| normal * s).collect(),

@@ -38,7 +38,7 @@ type Homogeneous = Vec<DVec4>;
 /// f₂ = f2/denominator, f₃ = f3/denominator in Bernstein form, the denominator positive on
 /// [0, 1] as a function.
 #[derive(Clone, Debug)]
-pub struct RawFrame {
+pub(crate) struct RawFrame {
     pub f2: Vec<DVec3>,
     pub f3: Vec<DVec3>,
     pub denominator: Vec<f64>,
@@ -46,12 +46,12 @@ pub struct RawFrame {
 
 /// One piece of a mapped segment: its end in the segment's local parameter, the curve, and
 /// its frame when one was mapped.
-pub type MappedPiece = (f64, RationalBezierCurve, Option<RationalFrameSegment>);
+pub(crate) type MappedPiece = (f64, RationalBezierCurve, Option<RationalFrameSegment>);
 
 /// The image of one segment (homogeneous points of any weights) and of its raw frame under
 /// `map`, split into pieces with positive weights and denominators. `segment` only names
 /// the segment in errors.
-pub fn map_raw_segment(
+pub(crate) fn map_raw_segment(
     map: &MobiusMap,
     points: &[DVec4],
     frame: Option<RawFrame>,
@@ -234,7 +234,7 @@ fn positive_pieces(points: &[DVec4], frame: Option<&RawFrame>, segment: usize) -
 }
 
 /// `a + (b − a)·s`, exactly `a` and `b` at the ends (breakpoints must match exactly).
-pub fn global_parameter(a: f64, b: f64, s: f64) -> f64 {
+pub(crate) fn global_parameter(a: f64, b: f64, s: f64) -> f64 {
     crate::math::lerp(a, b, s)
 }
 

@@ -61,7 +61,7 @@ const PENCIL_SAMPLES: usize = 16;
 
 /// How a segment's data are brought into a plane.
 #[derive(Clone, Debug, PartialEq)]
-pub struct SegmentMap {
+pub(crate) struct SegmentMap {
     /// Maps the segment's sphere onto the plane (empty for planar data); it is an
     /// involution, so it also maps the planar solution back.
     pub map: MobiusMap,
@@ -153,7 +153,7 @@ impl PencilSphere {
 /// near zero — for finely sampled curves at the level of rounding, where the asymmetry is
 /// noise (a helix sampled 1e-4 apart had planar data turning by 5e-9 rad, "C-shaped" by
 /// chance, against 9e-5 in space). For generic data its turning is close to the spatial one.
-pub fn chosen_segment_map(h: &HermiteSegment) -> SegmentMap {
+pub(crate) fn chosen_segment_map(h: &HermiteSegment) -> SegmentMap {
     let paper = segment_map(h);
     let asymmetry = planar_asymmetry(h, &paper);
     let turns_enough = paper.map.inversions().is_empty()
@@ -169,7 +169,7 @@ pub fn chosen_segment_map(h: &HermiteSegment) -> SegmentMap {
 
 /// |a₀ + a₁| / |a₁ − a₀| of the planar data under `m` (0 for isosceles data, ≥ 1 for
 /// S-shaped ones; 0 for planar data, which need no map).
-pub fn planar_asymmetry(h: &HermiteSegment, m: &SegmentMap) -> f64 {
+pub(crate) fn planar_asymmetry(h: &HermiteSegment, m: &SegmentMap) -> f64 {
     if m.map.inversions().is_empty() {
         return 0.0;
     }
@@ -182,7 +182,7 @@ pub fn planar_asymmetry(h: &HermiteSegment, m: &SegmentMap) -> f64 {
 }
 
 /// The paper's map: f is the point of the sphere farthest from both end points.
-pub fn segment_map(h: &HermiteSegment) -> SegmentMap {
+pub(crate) fn segment_map(h: &HermiteSegment) -> SegmentMap {
     let sphere = PencilSphere::of(h);
     if sphere.is_planar() {
         return planar_map(h);
@@ -201,7 +201,7 @@ pub fn segment_map(h: &HermiteSegment) -> SegmentMap {
 /// The map whose planar data turn by ∠(t₀, t₁) (see the module notes), of the two such
 /// circles the one with f farther from the end points; `None` for planar data or when the
 /// pencil has no such circle.
-pub fn turning_segment_map(h: &HermiteSegment) -> Option<SegmentMap> {
+pub(crate) fn turning_segment_map(h: &HermiteSegment) -> Option<SegmentMap> {
     let sphere = PencilSphere::of(h);
     if sphere.is_planar() {
         return None;

@@ -28,7 +28,13 @@ pub struct Biarc {
 }
 
 /// λ₂ for a given λ₁ by (7), or `None` where the relation has a pole (λ₂ = ∞).
-pub fn partner_lambda(a1: DVec3, p1: DVec3, a2: DVec3, p2: DVec3, lambda1: f64) -> Option<f64> {
+pub(crate) fn partner_lambda(
+    a1: DVec3,
+    p1: DVec3,
+    a2: DVec3,
+    p2: DVec3,
+    lambda1: f64,
+) -> Option<f64> {
     let d = a2 - a1;
     let denominator = 2.0 * d.dot(p2) - 2.0 * lambda1 * (p1.dot(p2) - 1.0);
     let numerator = d.length_squared() - 2.0 * lambda1 * d.dot(p1);
@@ -37,7 +43,7 @@ pub fn partner_lambda(a1: DVec3, p1: DVec3, a2: DVec3, p2: DVec3, lambda1: f64) 
 
 /// The positive λ with λ₁ = λ₂ = λ in (7) (the biarc with equal tangent lengths):
 /// |d|² − 2λ d·(p₁ + p₂) + 2λ²(p₁·p₂ − 1) = 0, whose roots have opposite signs.
-pub fn equal_lambda(a1: DVec3, p1: DVec3, a2: DVec3, p2: DVec3) -> Option<f64> {
+pub(crate) fn equal_lambda(a1: DVec3, p1: DVec3, a2: DVec3, p2: DVec3) -> Option<f64> {
     let d = a2 - a1;
     crate::math::quadratic_roots(
         2.0 * (p1.dot(p2) - 1.0),
@@ -52,7 +58,14 @@ pub fn equal_lambda(a1: DVec3, p1: DVec3, a2: DVec3, p2: DVec3) -> Option<f64> {
 }
 
 /// The biarc for λ₁, λ₂ satisfying (7): junction point (8) and signed weights.
-pub fn biarc(a1: DVec3, p1: DVec3, a2: DVec3, p2: DVec3, lambda1: f64, lambda2: f64) -> Biarc {
+pub(crate) fn biarc(
+    a1: DVec3,
+    p1: DVec3,
+    a2: DVec3,
+    p2: DVec3,
+    lambda1: f64,
+    lambda2: f64,
+) -> Biarc {
     let (b1, b2) = (a1 + lambda1 * p1, a2 - lambda2 * p2);
     let c = (lambda2 * b1 + lambda1 * b2) / (lambda1 + lambda2);
     let weight = |a: DVec3, b: DVec3, lambda: f64| {
@@ -79,7 +92,7 @@ pub fn biarc(a1: DVec3, p1: DVec3, a2: DVec3, p2: DVec3, lambda1: f64, lambda2: 
 
 /// λ of the arc from `a` (tangent `p`) through the junction `c`: the leg length for which
 /// |a + λp − c| = |λ|, λ = |c − a|² / (2 (c − a)·p).
-pub fn lambda_through(a: DVec3, p: DVec3, c: DVec3) -> f64 {
+pub(crate) fn lambda_through(a: DVec3, p: DVec3, c: DVec3) -> f64 {
     (c - a).length_squared() / (2.0 * (c - a).dot(p))
 }
 
@@ -88,7 +101,7 @@ pub fn lambda_through(a: DVec3, p: DVec3, c: DVec3) -> f64 {
 /// sphere (x − m)² = r², as plane coordinates (u₁, u₂, u₃, u₀) in glam's (x, y, z, w) order,
 /// so that a homogeneous point X lies on it iff `plane.dot(X) = 0`:
 /// (x − x₀m)·(y − y₀m) = r² x₀ y₀.
-pub fn polar_plane(y: DVec4, centre: DVec3, radius: f64) -> DVec4 {
+pub(crate) fn polar_plane(y: DVec4, centre: DVec3, radius: f64) -> DVec4 {
     let q = y.truncate() - y.w * centre;
     q.extend(-centre.dot(q) - radius * radius * y.w)
 }

@@ -31,7 +31,7 @@ pub(crate) struct Arc {
 
 impl Arc {
     /// The arc from `a` through `b` to `c`.
-    pub fn through(a: DVec3, b: DVec3, c: DVec3) -> Result<Self> {
+    pub(crate) fn through(a: DVec3, b: DVec3, c: DVec3) -> Result<Self> {
         let (u, v) = (b - a, c - a);
         let n = u.cross(v);
         let scale = u.length() * v.length();
@@ -67,7 +67,7 @@ impl Arc {
 
     /// The arc about `center` from `start` to `end` (both at `radius`), counter-clockwise
     /// about `normal` by `angle`.
-    pub fn about(
+    pub(crate) fn about(
         center: DVec3,
         radius: f64,
         normal: DVec3,
@@ -89,7 +89,7 @@ impl Arc {
     }
 
     /// The point at the angle φ from the start (the ends exactly).
-    pub fn point(&self, phi: f64) -> DVec3 {
+    pub(crate) fn point(&self, phi: f64) -> DVec3 {
         if phi == 0.0 {
             return self.start;
         }
@@ -100,21 +100,21 @@ impl Arc {
     }
 
     /// The unit tangent at φ.
-    pub fn tangent(&self, phi: f64) -> DVec3 {
+    pub(crate) fn tangent(&self, phi: f64) -> DVec3 {
         -phi.sin() * self.e1 + phi.cos() * self.e2
     }
 
     /// The principal normal at φ (towards the centre).
-    pub fn principal_normal(&self, phi: f64) -> DVec3 {
+    pub(crate) fn principal_normal(&self, phi: f64) -> DVec3 {
         -(phi.cos() * self.e1 + phi.sin() * self.e2)
     }
 
-    pub fn length(&self) -> f64 {
+    pub(crate) fn length(&self) -> f64 {
         self.radius * self.angle
     }
 
     /// Point and derivatives with respect to φ.
-    pub fn jet(&self, phi: f64) -> CurveJet {
+    pub(crate) fn jet(&self, phi: f64) -> CurveJet {
         let radial = phi.cos() * self.e1 + phi.sin() * self.e2;
         CurveJet {
             point: self.point(phi),
@@ -124,18 +124,18 @@ impl Arc {
     }
 
     /// Rational quadratic segments of at most a quarter turn each (weights ≥ cos 45°).
-    pub fn segment_count(&self) -> usize {
+    pub(crate) fn segment_count(&self) -> usize {
         ((self.angle / FRAC_PI_2 - 1e-9).ceil() as usize).max(1)
     }
 
     /// The arc as rational quadratic Bézier segments on the breakpoints k/n, ends exact.
-    pub fn curve(&self) -> PiecewiseCurve {
+    pub(crate) fn curve(&self) -> PiecewiseCurve {
         self.curve_in(self.segment_count())
     }
 
     /// The arc as `n` rational quadratic Bézier segments of equal angle (n ≥ 1) on the
     /// breakpoints k/n, ends exact.
-    pub fn curve_in(&self, n: usize) -> PiecewiseCurve {
+    pub(crate) fn curve_in(&self, n: usize) -> PiecewiseCurve {
         let n = n.max(1);
         let half = 0.5 * self.angle / n as f64;
         let weight = half.cos();
@@ -162,7 +162,7 @@ impl Arc {
     }
 
     /// The part from φ₀ to φ₁, with the given end points (which lie on the circle).
-    pub fn trimmed(&self, phi0: f64, phi1: f64, start: DVec3, end: DVec3) -> Self {
+    pub(crate) fn trimmed(&self, phi0: f64, phi1: f64, start: DVec3, end: DVec3) -> Self {
         let mut arc = Self::about(
             self.center,
             self.radius,

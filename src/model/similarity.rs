@@ -18,7 +18,7 @@ pub(crate) struct Similarity {
 impl Similarity {
     /// The similarity that maps the unit-size box about the origin onto the bounding box of
     /// `points` (scale the box's largest side; 1 for a single point).
-    pub fn fitting(points: impl IntoIterator<Item = DVec3>) -> Self {
+    pub(crate) fn fitting(points: impl IntoIterator<Item = DVec3>) -> Self {
         let (mut lo, mut hi) = (DVec3::INFINITY, DVec3::NEG_INFINITY);
         for p in points {
             lo = lo.min(p);
@@ -34,28 +34,43 @@ impl Similarity {
         }
     }
 
+    /// Centred on `centre`, scaled by the power of two at or below `size` (1 for a zero or
+    /// non-finite size; 2^−1022 for a subnormal size, whose power of two is not a normal
+    /// number): a change of scale by a power of two changes no rounding.
+    pub(crate) fn power_of_two_about(centre: DVec3, size: f64) -> Self {
+        let scale = if size.is_finite() && size > 0.0 {
+            f64::from_bits(size.to_bits() & 0x7ff0_0000_0000_0000).max(f64::MIN_POSITIVE)
+        } else {
+            1.0
+        };
+        Self {
+            origin: centre,
+            scale,
+        }
+    }
+
     /// A point in the caller's coordinates.
-    pub fn to_user(self, x: DVec3) -> DVec3 {
+    pub(crate) fn to_user(self, x: DVec3) -> DVec3 {
         self.origin + self.scale * x
     }
 
     /// A point of the caller's in internal coordinates.
-    pub fn to_internal(self, x: DVec3) -> DVec3 {
+    pub(crate) fn to_internal(self, x: DVec3) -> DVec3 {
         (x - self.origin) / self.scale
     }
 
     /// A length in the caller's units.
-    pub fn length(self, l: f64) -> f64 {
+    pub(crate) fn length(self, l: f64) -> f64 {
         l * self.scale
     }
 
     /// A homogeneous point in internal coordinates, mapped to the caller's.
-    pub fn homogeneous_to_user(self, h: DVec4) -> DVec4 {
+    pub(crate) fn homogeneous_to_user(self, h: DVec4) -> DVec4 {
         (h.truncate() * self.scale + self.origin * h.w).extend(h.w)
     }
 
     /// A curve in the caller's coordinates.
-    pub fn curve_to_user(self, c: &PiecewiseCurve) -> PiecewiseCurve {
+    pub(crate) fn curve_to_user(self, c: &PiecewiseCurve) -> PiecewiseCurve {
         let segments = c
             .segments()
             .iter()
@@ -65,7 +80,7 @@ impl Similarity {
     }
 
     /// A curve of the caller's in internal coordinates.
-    pub fn curve_to_internal(self, c: &PiecewiseCurve) -> Result<PiecewiseCurve> {
+    pub(crate) fn curve_to_internal(self, c: &PiecewiseCurve) -> Result<PiecewiseCurve> {
         let segments = c
             .segments()
             .iter()
@@ -76,7 +91,7 @@ impl Similarity {
 
     /// A surface in the caller's coordinates (refused if a control point leaves the range
     /// of f64).
-    pub fn surface_to_user(self, mut s: PiecewiseSurface) -> Result<PiecewiseSurface> {
+    pub(crate) fn surface_to_user(self, mut s: PiecewiseSurface) -> Result<PiecewiseSurface> {
         for p in s.patches_mut() {
             p.map_homogeneous(|h| self.homogeneous_to_user(h))?;
         }

@@ -50,7 +50,7 @@ const SAMPLES_PER_PIECE: usize = 32;
 /// with a 32-segment profile): the singularity margin scans every pair at 32 samples, about
 /// 30 µs a pair, so this bounds a call to about a second (unbounded, one call of a random
 /// program runs for over 15 minutes).
-pub const MAX_ANALYSIS_PAIRS: usize = 1 << 15;
+pub(crate) const MAX_ANALYSIS_PAIRS: usize = 1 << 15;
 
 /// A sweep of a planar profile along a spine with rational frames, as analysed here.
 pub struct ProfileSurface<'a> {

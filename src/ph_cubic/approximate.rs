@@ -478,7 +478,10 @@ fn shrink(distance: Option<f64>, tolerance: f64, rejections: usize) -> f64 {
 /// The PH cubic spline through `segments` + 1 samples at uniform parameters, with its
 /// measured distance to the curve (no adaptivity: for convergence studies).
 #[cfg(test)]
-pub fn ph_spline_uniform(curve: &dyn ParametricCurve, segments: usize) -> Result<PhApproximation> {
+pub(crate) fn ph_spline_uniform(
+    curve: &dyn ParametricCurve,
+    segments: usize,
+) -> Result<PhApproximation> {
     let sampler = Sampler::new(curve, usize::MAX);
     let samples = uniform_parameters(curve.domain(), segments + 1)
         .into_iter()

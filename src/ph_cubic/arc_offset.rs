@@ -34,7 +34,7 @@ const ARC_TOLERANCE: f64 = 1e-12;
 
 /// Most arcs one call makes (the error of a biarc falls with the cube of its length, so this
 /// allows tolerances far below any drawing's at the size of the profile).
-pub const MAX_ARCS: usize = 1 << 16;
+pub(crate) const MAX_ARCS: usize = 1 << 16;
 
 /// A profile replaced by arcs within a tolerance, and the exact offset of the arcs.
 #[derive(Clone, Debug)]

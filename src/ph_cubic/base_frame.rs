@@ -27,19 +27,19 @@ const MAX_SUBDIVISION_DEPTH: usize = 40;
 /// parameter interval mapped to [0, 1]; unlike [`RationalFrameSegment`], the denominator's
 /// coefficients may still be negative (it is a positive function).
 #[derive(Clone, Debug, PartialEq)]
-pub struct FrameNumerators {
+pub(crate) struct FrameNumerators {
     pub e2: Vec<DVec3>,
     pub e3: Vec<DVec3>,
     pub d: Vec<f64>,
 }
 
 impl FrameNumerators {
-    pub fn frame(&self, v: f64) -> Frame {
+    pub(crate) fn frame(&self, v: f64) -> Frame {
         frame_at(&self.e2, &self.e3, &self.d, v)
     }
 
     /// The same frame on [v0, v1], reparameterized to [0, 1].
-    pub fn restricted(&self, v0: f64, v1: f64) -> Self {
+    pub(crate) fn restricted(&self, v0: f64, v1: f64) -> Self {
         Self {
             e2: restrict(&self.e2, v0, v1),
             e3: restrict(&self.e3, v0, v1),
@@ -50,7 +50,7 @@ impl FrameNumerators {
     /// The frame turned about the tangent by φ(v) = 2 arctan(γ/β), equation (29): with
     /// cos φ = (β² − γ²)/(β² + γ²), sin φ = 2βγ/(β² + γ²) the numerators become
     /// 2βγ E₃ + (β² − γ²) E₂ and (β² − γ²) E₃ − 2βγ E₂ over (β² + γ²) d.
-    pub fn turned(&self, gamma: &[f64; 3], beta: &[f64; 3]) -> Self {
+    pub(crate) fn turned(&self, gamma: &[f64; 3], beta: &[f64; 3]) -> Self {
         let mul = |a: f64, b: f64| a * b;
         let (mut bb, mut gg, mut bg) = ([0.0; 5], [0.0; 5], [0.0; 5]);
         add_product(beta, beta, mul, &mut bb);
@@ -75,7 +75,7 @@ impl FrameNumerators {
 
     /// Splits [0, 1] until the denominator has positive Bernstein coefficients on every
     /// piece (positive weights for CAD), returning the pieces (v0, v1, segment).
-    pub fn positive_pieces(self) -> Result<Vec<(f64, f64, RationalFrameSegment)>> {
+    pub(crate) fn positive_pieces(self) -> Result<Vec<(f64, f64, RationalFrameSegment)>> {
         let breaks = bernstein::positive_subdivision(&[&self.d], MAX_SUBDIVISION_DEPTH)
             .ok_or_else(|| {
                 Error::invalid_input(
@@ -105,14 +105,14 @@ impl FrameNumerators {
 
 /// Frame pieces collected into piecewise rational frames on a refinement of a spline's
 /// breakpoints (segment k on `[breaks[k], breaks[k+1]]`, a piece on a part of it).
-pub struct FramePieces<'a> {
+pub(crate) struct FramePieces<'a> {
     spline_breaks: &'a [f64],
     segments: Vec<RationalFrameSegment>,
     breaks: Vec<f64>,
 }
 
 impl<'a> FramePieces<'a> {
-    pub fn new(spline_breaks: &'a [f64]) -> Self {
+    pub(crate) fn new(spline_breaks: &'a [f64]) -> Self {
         Self {
             spline_breaks,
             segments: Vec::new(),
@@ -127,7 +127,7 @@ impl<'a> FramePieces<'a> {
     }
 
     /// Appends pieces (p0, p1, frame) on [p0, p1] ⊂ [0, 1] of a part [v0, v1] of segment k.
-    pub fn push_all(
+    pub(crate) fn push_all(
         &mut self,
         k: usize,
         v0: f64,
@@ -142,14 +142,14 @@ impl<'a> FramePieces<'a> {
     }
 
     /// The frames as they are (each piece as computed).
-    pub fn into_frames(self) -> Result<RationalFrames> {
+    pub(crate) fn into_frames(self) -> Result<RationalFrames> {
         RationalFrames::new(self.segments, self.breaks)
     }
 
     /// The frames joined continuously, starting at `initial_normal` (see
     /// [`RationalFrames::chained_within`]), within the G1 tolerance `tolerance` of the
     /// spline.
-    pub fn into_chained_frames(
+    pub(crate) fn into_chained_frames(
         self,
         initial_normal: DVec3,
         tolerance: f64,
@@ -160,7 +160,7 @@ impl<'a> FramePieces<'a> {
 
 /// The frame a segment's RMF is built on, with the angle that turns it into the RMF.
 #[derive(Clone, Debug, PartialEq)]
-pub enum BaseFrame {
+pub(crate) enum BaseFrame {
     /// The Frenet frame (19); the RMF is it turned by Ω (30).
     Frenet {
         numerators: FrameNumerators,
@@ -173,7 +173,7 @@ pub enum BaseFrame {
 impl BaseFrame {
     /// Fails only for polygons that are PH within rounding but have no PH interpolant of
     /// their end data ([`PhCubic::exactly_ph`]).
-    pub fn of(cubic: &PhCubic) -> Result<Self> {
+    pub(crate) fn of(cubic: &PhCubic) -> Result<Self> {
         let cubic = cubic.normalized().exactly_ph()?;
         Ok(if cubic.bend() > NEARLY_STRAIGHT {
             Self::Frenet {
@@ -187,14 +187,14 @@ impl BaseFrame {
         })
     }
 
-    pub fn numerators(&self) -> &FrameNumerators {
+    pub(crate) fn numerators(&self) -> &FrameNumerators {
         match self {
             Self::Frenet { numerators, .. } | Self::Carried { numerators } => numerators,
         }
     }
 
     /// Angle of the RMF against this frame, up to a constant: Ω(v) − Ω(0), or 0.
-    pub fn rmf_increment(&self, v: f64) -> f64 {
+    pub(crate) fn rmf_increment(&self, v: f64) -> f64 {
         match self {
             Self::Frenet { angle, .. } => angle.increment(v),
             Self::Carried { .. } => 0.0,
@@ -202,7 +202,7 @@ impl BaseFrame {
     }
 
     /// d/dv of [`Self::rmf_increment`].
-    pub fn rmf_rate(&self, v: f64) -> f64 {
+    pub(crate) fn rmf_rate(&self, v: f64) -> f64 {
         match self {
             Self::Frenet { angle, .. } => angle.rate(v),
             Self::Carried { .. } => 0.0,
@@ -211,7 +211,7 @@ impl BaseFrame {
 
     /// This frame at v, turned by `angle + rmf_increment(v)`: the exact RMF when `angle`
     /// is the right constant.
-    pub fn rmf_frame(&self, v: f64, angle: f64) -> Frame {
+    pub(crate) fn rmf_frame(&self, v: f64, angle: f64) -> Frame {
         self.numerators()
             .frame(v)
             .rotated(angle + self.rmf_increment(v))

@@ -24,7 +24,7 @@ const SLOPE_ROUND_OFF: f64 = 1e-9;
 
 /// Hermite data (34) of w = tan(Ω/2) on [0, 1]: values and derivatives at both ends.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct AngleHermite {
+pub(crate) struct AngleHermite {
     pub w0: f64,
     pub w1: f64,
     pub s0: f64,
@@ -33,14 +33,14 @@ pub struct AngleHermite {
 
 /// W = (γ₀B₀² + γ₁B₁² + γ₂B₂²) / (β₀B₀² + β₁B₁² + β₂B₂²), equation (36).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Biquadratic {
+pub(crate) struct Biquadratic {
     pub numerator: [f64; 3],
     pub denominator: [f64; 3],
 }
 
 impl Biquadratic {
     /// The constant w.
-    pub fn constant(w: f64) -> Self {
+    pub(crate) fn constant(w: f64) -> Self {
         Self {
             numerator: [w; 3],
             denominator: [1.0; 3],
@@ -49,7 +49,7 @@ impl Biquadratic {
 
     #[cfg(test)]
     /// The member of (37) with parameter λ, for increasing data (35) with λ > λ* (38).
-    pub fn from_lambda(data: &AngleHermite, lambda: f64) -> Self {
+    pub(crate) fn from_lambda(data: &AngleHermite, lambda: f64) -> Self {
         let AngleHermite { w0, w1, s0, s1 } = *data;
         let beta = [
             s1,
@@ -67,7 +67,7 @@ impl Biquadratic {
     }
 
     /// λ of (37) for this member: 2β₁/β₀ − 2.
-    pub fn lambda(&self) -> f64 {
+    pub(crate) fn lambda(&self) -> f64 {
         2.0 * self.denominator[1] / self.denominator[0] - 2.0
     }
 
@@ -83,13 +83,13 @@ impl Biquadratic {
     }
 
     /// W(v).
-    pub fn eval(&self, v: f64) -> f64 {
+    pub(crate) fn eval(&self, v: f64) -> f64 {
         let (g, b, _, _) = self.parts(v);
         g / b
     }
 
     /// d/dv 2 arctan W(v) = 2W' / (1 + W²), the angular velocity of the frame (29).
-    pub fn angle_rate(&self, v: f64) -> f64 {
+    pub(crate) fn angle_rate(&self, v: f64) -> f64 {
         let (g, b, dg, db) = self.parts(v);
         // 2 (g'b − gb') / (b² + g²): the same, without forming W.
         2.0 * (dg * b - g * db) / (b * b + g * g)
@@ -105,12 +105,12 @@ impl Biquadratic {
 
 #[cfg(test)]
 /// λ* of Lemma 11 (38): members of (37) with λ > λ* are monotone without poles.
-pub fn lambda_star(data: &AngleHermite) -> f64 {
+pub(crate) fn lambda_star(data: &AngleHermite) -> f64 {
     data.s0 / (data.w1 - data.w0) - 2.0
 }
 
 /// The objective (40), ∫₀¹ (d/dv 2 arctan W − Ω')² dv, by the quadrature (41).
-pub fn objective(w: &Biquadratic, rate: impl Fn(f64) -> f64) -> f64 {
+pub(crate) fn objective(w: &Biquadratic, rate: impl Fn(f64) -> f64) -> f64 {
     objective_with(quadrature_rule(), w, rate)
 }
 
@@ -126,7 +126,7 @@ fn objective_with(rule: &GaussLegendre, w: &Biquadratic, rate: impl Fn(f64) -> f
 
 /// The chosen W with its value of the objective.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct BiquadraticFit {
+pub(crate) struct BiquadraticFit {
     pub w: Biquadratic,
     /// Î(λ) of (41) at the minimum.
     pub objective: f64,
@@ -135,7 +135,7 @@ pub struct BiquadraticFit {
 /// The member of (36)–(37) interpolating `data` that minimizes (40) for the target angular
 /// velocity `rate` = Ω'. `data` must be monotone (equal signs of w₁ − w₀, s₀ and s₁, slopes
 /// may be 0); constant data give the constant W.
-pub fn fit(data: AngleHermite, rate: impl Fn(f64) -> f64) -> Result<BiquadraticFit> {
+pub(crate) fn fit(data: AngleHermite, rate: impl Fn(f64) -> f64) -> Result<BiquadraticFit> {
     fit_dyn(data, &rate)
 }
 

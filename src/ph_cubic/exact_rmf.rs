@@ -145,17 +145,17 @@ pub(crate) struct SegmentTarget<'a> {
 }
 
 impl SegmentTarget<'_> {
-    pub fn base(&self) -> &BaseFrame {
+    pub(crate) fn base(&self) -> &BaseFrame {
         &self.segment.base
     }
 
     /// g(v) − g(0) = Ω̃(v) + ω·s(v).
-    pub fn angle(&self, v: f64) -> f64 {
+    pub(crate) fn angle(&self, v: f64) -> f64 {
         self.segment.base.rmf_increment(v) + self.twist_rate * self.segment.arc_within(v)
     }
 
     /// g'(v) = Ω'(v) + ω·σ(v).
-    pub fn rate(&self, v: f64) -> f64 {
+    pub(crate) fn rate(&self, v: f64) -> f64 {
         let rmf_rate = self.segment.base.rmf_rate(v);
         if self.twist_rate == 0.0 {
             // the RMF itself: no speed to evaluate (this runs at every quadrature node)
@@ -169,7 +169,7 @@ impl SegmentTarget<'_> {
     /// Ω' = −ρ/q with ρ and q = σ/3 of the cubic scaled to a longest leg of 1, while the
     /// twist term is ω·σ = 3ωℓq for the cubic's longest leg ℓ: g' = 0 where q = √(ρ/(3ωℓ)),
     /// when ρ/ω > 0.
-    pub fn turning_points(&self) -> Vec<f64> {
+    pub(crate) fn turning_points(&self) -> Vec<f64> {
         let (omega, base) = (self.twist_rate, &self.segment.base);
         let longest = self
             .segment

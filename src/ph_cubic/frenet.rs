@@ -19,13 +19,13 @@ use glam::DVec3;
 /// on a line it is undefined (at sin θ = 1e-11 the literal (19) gives vectors of length
 /// 1.3). Below it the RMF is built on the carried frame, whose error grows like
 /// θ³ (8e-12 rad at 7.9e-5, 8e-9 at 7.9e-4): 1e-4 balances the two.
-pub const NEARLY_STRAIGHT: f64 = 1e-4;
+pub(crate) const NEARLY_STRAIGHT: f64 = 1e-4;
 
 /// The Frenet frame (19) over σ = |A|², computed as the Euler–Rodrigues frame of the cubic's
 /// quaternion preimage A turned by the constant angle that takes it to (19) (see
 /// [`super::preimage`]: orthonormal to rounding for every bend). The angle is read from the
 /// binormal x' × x'' ∝ h₀ × h₁ at v = 0 and h₁ × h₂ at v = 1, weighted by size.
-pub fn frenet_numerators(cubic: &PhCubic) -> FrameNumerators {
+pub(crate) fn frenet_numerators(cubic: &PhCubic) -> FrameNumerators {
     let preimage = Preimage::of(cubic);
     let (e2, e3) = preimage.frame_numerators();
     let [h0, h1, h2] = cubic.legs();

@@ -26,24 +26,24 @@
 //!
 //! The profile surface itself, (42), is the generic rational sweep of [`crate::sweep`].
 
-pub mod accuracy;
-pub mod analysis;
-pub mod approximate;
-pub mod arc_offset;
-pub mod base_frame;
-pub mod biquadratic;
-pub mod cubic;
-pub mod exact_rmf;
-pub mod frenet;
-pub mod hermite;
-pub mod offset;
-pub mod parabolic;
-pub mod preimage;
-pub mod profile;
+pub(crate) mod accuracy;
+pub(crate) mod analysis;
+pub(crate) mod approximate;
+pub(crate) mod arc_offset;
+pub(crate) mod base_frame;
+pub(crate) mod biquadratic;
+pub(crate) mod cubic;
+pub(crate) mod exact_rmf;
+pub(crate) mod frenet;
+pub(crate) mod hermite;
+pub(crate) mod offset;
+pub(crate) mod parabolic;
+pub(crate) mod preimage;
+pub(crate) mod profile;
 
-pub mod rational_rmf;
-pub mod rmf_angle;
-pub mod spline;
+pub(crate) mod rational_rmf;
+pub(crate) mod rmf_angle;
+pub(crate) mod spline;
 #[cfg(test)]
 pub(crate) mod test_curves;
 

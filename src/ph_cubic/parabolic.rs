@@ -81,7 +81,7 @@ struct Direction {
 }
 
 /// The parabolic lines (14) of `surface`, within `tolerance` (a length on the surface).
-pub fn trace(surface: &ProfileSurface<'_>, tolerance: f64) -> Result<Vec<ParabolicCurve>> {
+pub(crate) fn trace(surface: &ProfileSurface<'_>, tolerance: f64) -> Result<Vec<ParabolicCurve>> {
     if !(tolerance.is_finite() && tolerance > 0.0) {
         return invalid!("tolerance = {} must be finite and positive", Num(tolerance));
     }

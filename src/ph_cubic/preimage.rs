@@ -18,7 +18,7 @@ use glam::{DQuat, DVec3};
 
 /// The linear quaternion polynomial A with x' = A i A* of a PH cubic.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Preimage {
+pub(crate) struct Preimage {
     a0: DQuat,
     a1: DQuat,
 }
@@ -87,7 +87,7 @@ impl Preimage {
     /// The preimage of a PH cubic's hodograph 3(h₀B₀ + h₁B₁ + h₂B₂): A₀ i A₀* = 3h₀,
     /// A₁ i A₁* = 3h₂ fix A₀ and A₁ up to a turn e^{iφ} of A₁, and Vec(A₀ i A₁*) = 3h₁ fixes
     /// φ (to the polygon's rounding, in the least-squares sense).
-    pub fn of(cubic: &PhCubic) -> Self {
+    pub(crate) fn of(cubic: &PhCubic) -> Self {
         let [h0, h1, h2] = cubic.legs();
         let [l1, _, l3] = cubic.leg_lengths();
         let a0 = rotating_i_to(h0 / l1) * (3.0 * l1).sqrt();
@@ -116,7 +116,7 @@ impl Preimage {
     }
 
     /// Bernstein coefficients of σ = |A|²: |A₀|², A₀·A₁, |A₁|².
-    pub fn speed(&self) -> Vec<f64> {
+    pub(crate) fn speed(&self) -> Vec<f64> {
         vec![
             self.a0.length_squared(),
             self.a0.dot(self.a1),
@@ -132,7 +132,7 @@ impl Preimage {
 
     /// Numerators of the normal vectors of the Euler–Rodrigues frame, A j A* and A k A*, over
     /// [`Self::speed`].
-    pub fn frame_numerators(&self) -> (Vec<DVec3>, Vec<DVec3>) {
+    pub(crate) fn frame_numerators(&self) -> (Vec<DVec3>, Vec<DVec3>) {
         (self.sandwich(J), self.sandwich(K))
     }
 }

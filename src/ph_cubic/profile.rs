@@ -11,7 +11,7 @@ use glam::DVec2;
 /// One profile segment c = (X, Y)/h on [0, 1]; polynomial segments keep h = 1 (degree 0),
 /// which keeps the derived polynomials at their true degrees.
 #[derive(Clone, Debug, PartialEq)]
-pub struct ProfileSegment {
+pub(crate) struct ProfileSegment {
     pub x: Vec<f64>,
     pub y: Vec<f64>,
     pub h: Vec<f64>,
@@ -19,14 +19,14 @@ pub struct ProfileSegment {
 
 /// Point and first two derivatives of the profile at one parameter.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ProfileJet {
+pub(crate) struct ProfileJet {
     pub point: DVec2,
     pub d1: DVec2,
     pub d2: DVec2,
 }
 
 impl ProfileSegment {
-    pub fn of(segment: &RationalBezierCurve) -> Self {
+    pub(crate) fn of(segment: &RationalBezierCurve) -> Self {
         if segment.is_polynomial() {
             let poles: Vec<_> = segment.poles().collect();
             return Self {
@@ -44,7 +44,7 @@ impl ProfileSegment {
     }
 
     /// c, c', c'' at the local parameter u.
-    pub fn jet(&self, u: f64) -> ProfileJet {
+    pub(crate) fn jet(&self, u: f64) -> ProfileJet {
         let (x, y, h) = (
             bernstein::evaluate_jet(&self.x, u),
             bernstein::evaluate_jet(&self.y, u),
@@ -57,7 +57,7 @@ impl ProfileSegment {
     }
 
     /// c at the local parameter u.
-    pub fn point(&self, u: f64) -> DVec2 {
+    pub(crate) fn point(&self, u: f64) -> DVec2 {
         let h = bernstein::evaluate(&self.h, u);
         DVec2::new(
             bernstein::evaluate(&self.x, u),
@@ -66,7 +66,7 @@ impl ProfileSegment {
     }
 
     /// (A, B) = h²c' = (X'h − Xh', Y'h − Yh').
-    pub fn scaled_tangent(&self) -> (Vec<f64>, Vec<f64>) {
+    pub(crate) fn scaled_tangent(&self) -> (Vec<f64>, Vec<f64>) {
         let dh = bernstein::derivative(&self.h);
         let part = |p: &[f64]| {
             difference(
@@ -79,7 +79,7 @@ impl ProfileSegment {
 
     /// max ‖c‖ on the segment: at its ends or where c·ċ = 0, i.e. X·A + Y·B = 0 with
     /// (A, B) = h²ċ.
-    pub fn max_radius(&self) -> f64 {
+    pub(crate) fn max_radius(&self) -> f64 {
         let (a, b) = self.scaled_tangent();
         let radial = sum(&product(&self.x, &a, mul), &product(&self.y, &b, mul));
         critical_points(&radial)
@@ -91,7 +91,7 @@ impl ProfileSegment {
     /// The segment scaled by a power of two that brings its largest coordinate near 1
     /// (exact): polynomials of degree two in the coordinates, as the curvature numerator,
     /// under- or overflow at extreme scales.
-    pub fn normalized(&self) -> Self {
+    pub(crate) fn normalized(&self) -> Self {
         let size = self
             .x
             .iter()
@@ -110,7 +110,7 @@ impl ProfileSegment {
 
     /// h³(x'y'' − x''y') = det[[h, X, Y], [h', X', Y'], [h'', X'', Y'']]: the numerator of the
     /// profile curvature (11).
-    pub fn curvature_numerator(&self) -> Vec<f64> {
+    pub(crate) fn curvature_numerator(&self) -> Vec<f64> {
         let d = |p: &[f64]| bernstein::derivative(p);
         let (h1, x1, y1) = (d(&self.h), d(&self.x), d(&self.y));
         let (h2, x2, y2) = (d(&h1), d(&x1), d(&y1));
@@ -134,7 +134,7 @@ fn mul(a: f64, b: f64) -> f64 {
 }
 
 /// a + b in the higher of their degrees.
-pub fn sum(a: &[f64], b: &[f64]) -> Vec<f64> {
+pub(crate) fn sum(a: &[f64], b: &[f64]) -> Vec<f64> {
     let n = a.len().max(b.len()) - 1;
     elevate_to(a, n)
         .iter()
@@ -144,18 +144,18 @@ pub fn sum(a: &[f64], b: &[f64]) -> Vec<f64> {
 }
 
 /// a − b in the higher of their degrees.
-pub fn difference(a: &[f64], b: &[f64]) -> Vec<f64> {
+pub(crate) fn difference(a: &[f64], b: &[f64]) -> Vec<f64> {
     sum(a, &b.iter().map(|c| -c).collect::<Vec<_>>())
 }
 
 /// The segments of a profile curve.
-pub fn profile_segments(profile: &PiecewiseCurve) -> Vec<ProfileSegment> {
+pub(crate) fn profile_segments(profile: &PiecewiseCurve) -> Vec<ProfileSegment> {
     profile.segments().iter().map(ProfileSegment::of).collect()
 }
 
 /// The roots in (0, 1) of a Bernstein polynomial, with both ends (the candidates for an
 /// extremum of a function whose derivative's numerator it is).
-pub fn critical_points(p: &[f64]) -> Vec<f64> {
+pub(crate) fn critical_points(p: &[f64]) -> Vec<f64> {
     let mut points = vec![0.0, 1.0];
     if p.iter().any(|&c| c != 0.0) {
         points.extend(interior_roots(p));
@@ -164,13 +164,13 @@ pub fn critical_points(p: &[f64]) -> Vec<f64> {
 }
 
 /// Whether a Bernstein polynomial vanishes identically, relative to `scale`.
-pub fn vanishes(p: &[f64], scale: f64) -> bool {
+pub(crate) fn vanishes(p: &[f64], scale: f64) -> bool {
     p.iter().all(|c| c.abs() <= 1e-12 * scale)
 }
 
 /// The roots in the open interval (0, 1) of a Bernstein polynomial that does not vanish
 /// identically.
-pub fn interior_roots(p: &[f64]) -> Vec<f64> {
+pub(crate) fn interior_roots(p: &[f64]) -> Vec<f64> {
     // Bernstein coefficients of one strict sign bound a polynomial of that sign on [0, 1]
     // (convex hull): no root, and no need to look for one.
     if p.iter().all(|&c| c > 0.0) || p.iter().all(|&c| c < 0.0) {

@@ -260,7 +260,7 @@ fn piece_frame(
 /// at the binormal, as in Figure 5). The frame does not depend on `omega0` (turning w maps
 /// the family (37) onto itself), λ does. Fails for a (nearly) straight cubic, which has no
 /// Frenet frame to start from, and when Ω reaches ±π (w has a pole).
-pub fn cubic_rmf_fit(cubic: &PhCubic, omega0: f64) -> Result<BiquadraticFit> {
+pub(crate) fn cubic_rmf_fit(cubic: &PhCubic, omega0: f64) -> Result<BiquadraticFit> {
     let BaseFrame::Frenet { angle, .. } = BaseFrame::of(cubic)? else {
         return invalid!("the cubic is (nearly) straight: its Frenet frame is undefined");
     };

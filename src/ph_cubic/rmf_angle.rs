@@ -22,7 +22,7 @@ use glam::DVec3;
 
 /// Ω as a function of the segment parameter v ∈ [0, 1], up to its constant Ω(0).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct RmfAngle {
+pub(crate) struct RmfAngle {
     /// ρ: Ω' = −ρ / q.
     rho: f64,
     /// a, b, c of (31) and L₁ = q(0).
@@ -34,7 +34,7 @@ pub struct RmfAngle {
 
 impl RmfAngle {
     /// The angle function of a PH cubic that is not a straight line.
-    pub fn of(cubic: &PhCubic) -> Self {
+    pub(crate) fn of(cubic: &PhCubic) -> Self {
         // Ω depends on the shape only: compute on the normalized cubic (no overflow).
         let cubic = cubic.normalized();
         let [l1, _, l3] = cubic.leg_lengths();
@@ -50,7 +50,7 @@ impl RmfAngle {
 
     /// ρ of the cubic scaled to a longest leg of 1; its sign is that of the torsion, zero for
     /// planar cubics.
-    pub fn torsion_constant(&self) -> f64 {
+    pub(crate) fn torsion_constant(&self) -> f64 {
         self.rho
     }
 
@@ -60,12 +60,12 @@ impl RmfAngle {
     }
 
     /// Ω'(v) = −τ(v) σ(v).
-    pub fn rate(&self, v: f64) -> f64 {
+    pub(crate) fn rate(&self, v: f64) -> f64 {
         -self.rho / self.q(v)
     }
 
     /// Ω(v) − Ω(0), (30).
-    pub fn increment(&self, v: f64) -> f64 {
+    pub(crate) fn increment(&self, v: f64) -> f64 {
         let integral = if self.a > 0.0 {
             (self.a * v).atan2(self.l1 - self.b * v) / self.a
         } else {

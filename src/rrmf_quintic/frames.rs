@@ -106,7 +106,7 @@ pub(crate) mod tests {
 
     /// Max RMF defect |f₂' · f₃| / |x'| and orthonormality error at 1,000 parameters, and
     /// the max distance of the frame's tangent from the curve's.
-    pub fn frame_errors(field: &FrameField) -> (f64, f64, f64) {
+    pub(crate) fn frame_errors(field: &FrameField) -> (f64, f64, f64) {
         let mut worst = (0.0f64, 0.0f64, 0.0f64);
         for t in uniform_parameters(field.domain(), 1000) {
             let frame = field.frame(t).unwrap();
@@ -212,7 +212,7 @@ pub(crate) mod tests {
 
     /// Max |f₂ − f₂(double reflection)| at `samples` parameters: an independent RMF of the
     /// same curve from the same start.
-    pub fn distance_from_double_reflection(field: &FrameField, samples: usize) -> f64 {
+    pub(crate) fn distance_from_double_reflection(field: &FrameField, samples: usize) -> f64 {
         let params = uniform_parameters(field.domain(), samples);
         let start = field.frame(field.domain().0).unwrap().f2;
         let dr = DoubleReflectionRmf::along(field.curve().as_ref(), params.clone(), start).unwrap();

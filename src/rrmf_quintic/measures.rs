@@ -82,13 +82,13 @@ fn rule() -> &'static GaussLegendre {
 }
 
 /// L = ∫₀¹ σ dt, exactly: the mean of the Bernstein coefficients of σ.
-pub fn arc_length(hopf: &HopfQuadratics) -> f64 {
+pub(crate) fn arc_length(hopf: &HopfQuadratics) -> f64 {
     let speed = hopf.speed();
     speed.iter().sum::<f64>() / speed.len() as f64
 }
 
 /// The least and the greatest speed σ on [0, 1]: at the ends or where σ' = 0.
-pub fn speed_range(hopf: &HopfQuadratics) -> (f64, f64) {
+pub(crate) fn speed_range(hopf: &HopfQuadratics) -> (f64, f64) {
     let speed = hopf.speed();
     let critical = real_roots_in(&to_power(&derivative(&speed)), 0.0, 1.0);
     [0.0, 1.0]
@@ -99,7 +99,7 @@ pub fn speed_range(hopf: &HopfQuadratics) -> (f64, f64) {
 }
 
 /// L, E and E_rmf of the quintic with hodograph H(α, β).
-pub fn shape_measures(hopf: &HopfQuadratics) -> ShapeMeasures {
+pub(crate) fn shape_measures(hopf: &HopfQuadratics) -> ShapeMeasures {
     // The first three derivatives of r by Horner on the power form of the quartic
     // hodograph: on [0, 1] as accurate as de Casteljau, and much faster in this inner loop.
     let h = to_power(&hopf.hodograph());

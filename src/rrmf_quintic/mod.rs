@@ -22,17 +22,17 @@
 //! | [`eta`] | the η of least E_rmf, E or L: scan, then Brent refinement | Section 5 |
 //! | [`spline`] | G1 RRMF quintic splines with one continuous rational RMF | Example 3 |
 
-pub mod canonical;
-pub mod eta;
-pub mod frames;
-pub mod hopf;
-pub mod measures;
-pub mod planar;
+pub(crate) mod canonical;
+pub(crate) mod eta;
+pub(crate) mod frames;
+pub(crate) mod hopf;
+pub(crate) mod measures;
+pub(crate) mod planar;
 mod polynomial;
 mod sextic;
-pub mod solutions;
+pub(crate) mod solutions;
 mod special;
-pub mod spline;
+pub(crate) mod spline;
 
 pub use eta::{
     best_quintic, best_quintic_within, BestQuintic, Budget, MAX_ETA_SAMPLES, MAX_REFINEMENT_SOLVES,

@@ -56,7 +56,7 @@ pub fn planar_deviation(data: &HermiteSegment) -> Result<f64> {
 }
 
 /// Whether the data are planar to [`PLANAR_TOLERANCE`].
-pub fn is_planar(data: &HermiteSegment) -> Result<bool> {
+pub(crate) fn is_planar(data: &HermiteSegment) -> Result<bool> {
     Ok(planar_deviation(data)? <= PLANAR_TOLERANCE)
 }
 

@@ -7,7 +7,7 @@ use crate::math::Complex;
 use std::ops::{Add, Mul};
 
 /// Coefficients of `a · b`.
-pub fn multiply<T>(a: &[T], b: &[T]) -> Vec<T>
+pub(super) fn multiply<T>(a: &[T], b: &[T]) -> Vec<T>
 where
     T: Copy + Default + Add<Output = T> + Mul<Output = T>,
 {
@@ -21,31 +21,31 @@ where
 }
 
 /// Coefficients of `a + sign · b` (lengths may differ).
-pub fn combine(a: &[f64], b: &[f64], sign: f64) -> Vec<f64> {
+pub(super) fn combine(a: &[f64], b: &[f64], sign: f64) -> Vec<f64> {
     (0..a.len().max(b.len()))
         .map(|k| a.get(k).copied().unwrap_or(0.0) + sign * b.get(k).copied().unwrap_or(0.0))
         .collect()
 }
 
 /// Coefficients of `factor · ρ · p(ρ)`.
-pub fn times_rho(p: &[f64], factor: f64) -> Vec<f64> {
+pub(super) fn times_rho(p: &[f64], factor: f64) -> Vec<f64> {
     std::iter::once(0.0)
         .chain(p.iter().map(|&c| c * factor))
         .collect()
 }
 
 /// The polynomial with conjugated coefficients: p̄(ρ) = conj(p(ρ)) for real ρ.
-pub fn conjugate(p: &[Complex]) -> Vec<Complex> {
+pub(super) fn conjugate(p: &[Complex]) -> Vec<Complex> {
     p.iter().map(|z| z.conj()).collect()
 }
 
 /// `|p(ρ)|²` for real ρ, as a real polynomial: p · p̄.
-pub fn norm_squared(p: &[Complex]) -> Vec<f64> {
+pub(super) fn norm_squared(p: &[Complex]) -> Vec<f64> {
     multiply(p, &conjugate(p)).iter().map(|z| z.re).collect()
 }
 
 /// p(ρ) by Horner's rule.
-pub fn evaluate(p: &[Complex], rho: f64) -> Complex {
+pub(super) fn evaluate(p: &[Complex], rho: f64) -> Complex {
     p.iter().rev().fold(Complex::ZERO, |acc, &c| acc * rho + c)
 }
 
@@ -53,7 +53,7 @@ pub fn evaluate(p: &[Complex], rho: f64) -> Complex {
 /// `direct`, an evaluation of the same polynomial from its factors (more accurate than
 /// Horner on expanded coefficients, which cancel). A step is kept only if it lowers
 /// |direct|, so a double root (zero slope) is left alone.
-pub fn newton_polish(p: &[f64], mut root: f64, direct: impl Fn(f64) -> f64) -> f64 {
+pub(super) fn newton_polish(p: &[f64], mut root: f64, direct: impl Fn(f64) -> f64) -> f64 {
     let slope: Vec<f64> = p
         .iter()
         .enumerate()

@@ -27,7 +27,7 @@ const EQUAL_DELTAS: f64 = 1e-8;
 
 /// A candidate solution before scaling by γ: ρ and the a_k, b_k of (37)–(38).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Candidate {
+pub(super) struct Candidate {
     pub rho: f64,
     pub normalized: HopfQuadratics,
 }
@@ -42,7 +42,7 @@ struct EtaTerms {
 
 /// s_f e^{iφ/2} − s_i e^{iη}: the denominator of μ₁ (32); it vanishes exactly in the
 /// special case α₁ = 0 (s_f = s_i and η = ½φ), handled in `special`.
-pub fn mu1_denominator(c: &CanonicalHermite, eta: f64) -> Complex {
+pub(super) fn mu1_denominator(c: &CanonicalHermite, eta: f64) -> Complex {
     Complex::cis(0.5 * c.phi) * c.sf - Complex::cis(eta) * c.si
 }
 
@@ -116,7 +116,7 @@ fn sextic(d: &Deltas, f1: f64) -> Vec<f64> {
 /// double root, which a root finder reports to only half the digits, or as a complex pair
 /// and not at all; the quadratic gives it to full precision. A candidate found both ways
 /// is one solution twice; the verification keeps one.
-pub fn candidates(c: &CanonicalHermite, eta: f64) -> Vec<Candidate> {
+pub(super) fn candidates(c: &CanonicalHermite, eta: f64) -> Vec<Candidate> {
     let terms = eta_terms(c, eta);
     let d = deltas(c, &terms);
     let p = sextic(&d, terms.f1);

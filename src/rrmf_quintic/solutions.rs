@@ -34,14 +34,14 @@ use glam::DVec3;
 /// as the dip deepens, no tangent at all — frames and sweeps built on it disagree with it.
 /// Such roots occur for nearly degenerate data (a tangent almost along the chord); for data
 /// in general position none of 4,362 test solutions came near.
-pub const REGULARITY: f64 = 1e-6;
+pub(crate) const REGULARITY: f64 = 1e-6;
 /// Largest relative residual of (7) and (8) a solution may have.
-pub const RRMF_TOLERANCE: f64 = 1e-10;
+pub(crate) const RRMF_TOLERANCE: f64 = 1e-10;
 /// Largest end-point error of a solution, relative to its size max(|p_f − p_i|, L), and
 /// end-tangent error in radians. The end point is a sum of hodograph coefficients of the
 /// size of the arc length L, so on a curve with wild loops (L ≫ |p_f − p_i|) round-off
 /// alone is about 1e-16 L.
-pub const INTERPOLATION_TOLERANCE: f64 = 1e-12;
+pub(crate) const INTERPOLATION_TOLERANCE: f64 = 1e-12;
 
 /// One RRMF quintic interpolating the Hermite data.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -137,12 +137,12 @@ pub struct IrregularRoot {
 
 /// [`rrmf_quintics`] on data already in canonical form.
 #[cfg(test)]
-pub fn solve(c: &CanonicalHermite, eta: f64) -> Vec<RrmfQuintic> {
+pub(crate) fn solve(c: &CanonicalHermite, eta: f64) -> Vec<RrmfQuintic> {
     solve_reporting(c, eta).quintics
 }
 
 /// [`solve`] with the irregular roots.
-pub fn solve_reporting(c: &CanonicalHermite, eta: f64) -> Solutions {
+pub(crate) fn solve_reporting(c: &CanonicalHermite, eta: f64) -> Solutions {
     let candidates = if special::is_special(c, eta) {
         special::candidates(c)
     } else {

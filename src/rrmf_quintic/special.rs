@@ -21,12 +21,12 @@ use crate::math::{real_roots_power, Complex};
 const SPECIAL_ETA: f64 = 1e-12;
 
 /// Whether η is (to rounding) the special value of the α₁ = 0 case for these data.
-pub fn is_special(c: &CanonicalHermite, eta: f64) -> bool {
+pub(super) fn is_special(c: &CanonicalHermite, eta: f64) -> bool {
     mu1_denominator(c, eta).abs() <= SPECIAL_ETA * (c.si + c.sf)
 }
 
 /// All candidates with α₁ = 0, one per positive root of the quartic.
-pub fn candidates(c: &CanonicalHermite) -> Vec<Candidate> {
+pub(super) fn candidates(c: &CanonicalHermite) -> Vec<Candidate> {
     let half_phi = Complex::cis(0.5 * c.phi);
     let k_factor = half_phi.conj() * (c.ci * c.sf) - half_phi * (c.cf * c.si);
     let lambda = k_factor.conj().unit() * (c.ci * c.si).signum(); // e^{iλ}

@@ -100,7 +100,7 @@ pub(crate) mod tests {
 
     /// Example 3: the helix (sin t, cos t, t) sampled at ten equidistant points of
     /// [0, 9π/2], with unit tangents.
-    pub fn helix_data() -> (Vec<DVec3>, Vec<DVec3>) {
+    pub(crate) fn helix_data() -> (Vec<DVec3>, Vec<DVec3>) {
         (0..10)
             .map(|k| {
                 let t = k as f64 * PI / 2.0;
@@ -242,7 +242,7 @@ pub(crate) mod tests {
     /// two segments, helix, a straight segment, helix, an S-shaped planar segment (parallel
     /// tangents: φ = 0, where Section 4 finds no quintic even slightly off planar), helix.
     /// Returns the data and which segments are planar.
-    pub fn flat_stretch_data() -> (Vec<DVec3>, Vec<DVec3>, Vec<bool>) {
+    pub(crate) fn flat_stretch_data() -> (Vec<DVec3>, Vec<DVec3>, Vec<bool>) {
         let mut data = helix_piece(
             DVec3::ZERO,
             DVec3::new(0.0, 1.0, 0.3).normalize(),
@@ -318,7 +318,7 @@ pub(crate) mod tests {
     /// velocity about the tangent), orthonormality, agreement with a dense double-reflection
     /// RMF from the same start, and frame continuity at every joint and breakpoint.
     /// Returns (max tangent error at the data, max RMF defect, max |f₂ − f₂(DR)|).
-    pub fn check_spline(
+    pub(crate) fn check_spline(
         spline: &RrmfSpline,
         points: &[DVec3],
         tangents: &[DVec3],

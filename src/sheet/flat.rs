@@ -126,7 +126,7 @@ pub(crate) struct FlatLayout {
 impl FlatLayout {
     /// The closed outline: first boundary, last ruling, second boundary backwards, first
     /// ruling backwards; point-like edges dropped, round-off gaps closed, counter-clockwise.
-    pub fn pattern(&self) -> FlatPattern {
+    pub(crate) fn pattern(&self) -> FlatPattern {
         let mut outline = self.first.clone();
         outline.push(self.rulings[1]);
         outline.extend(self.second.iter().rev().map(PatternEdge::reversed));

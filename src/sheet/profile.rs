@@ -38,17 +38,17 @@ pub(crate) struct Plane {
 
 impl Plane {
     /// The angle of the in-plane direction `v` from x towards y.
-    pub fn angle_of(&self, v: DVec3) -> f64 {
+    pub(super) fn angle_of(&self, v: DVec3) -> f64 {
         v.dot(self.y).atan2(v.dot(self.x))
     }
 
     /// The unit in-plane direction at angle `theta`.
-    pub fn direction(&self, theta: f64) -> DVec3 {
+    pub(super) fn direction(&self, theta: f64) -> DVec3 {
         theta.cos() * self.x + theta.sin() * self.y
     }
 
     /// Signed distance of `p` from the plane along the normal.
-    pub fn height(&self, p: DVec3) -> f64 {
+    pub(super) fn height(&self, p: DVec3) -> f64 {
         (p - self.origin).dot(self.normal)
     }
 
@@ -126,7 +126,7 @@ impl ConvexProfile {
     /// The Gauss-map description of a closed, planar, convex curve; `name` is how the
     /// caller calls it (`bottom`, `top`). Refuses open, non-planar, degenerate and
     /// non-convex curves, saying by how much.
-    pub fn new(curve: &PiecewiseCurve, name: &str) -> Result<Self> {
+    pub(super) fn new(curve: &PiecewiseCurve, name: &str) -> Result<Self> {
         let segments: Vec<&RationalBezierCurve> = curve.segments().iter().collect();
         let poles: Vec<DVec3> = segments.iter().flat_map(|s| s.poles()).collect();
         let size = bounding_diagonal(poles.iter().copied());
@@ -183,7 +183,7 @@ impl ConvexProfile {
     }
 
     /// The same curve traversed the other way, seen from the other side of its plane.
-    pub fn flipped(&self) -> Self {
+    pub(super) fn flipped(&self) -> Self {
         let plane = self.plane.flipped();
         // Angles measured in the swapped basis: θ ↦ π/2 − θ reverses their order.
         let mut features: Vec<Feature> = self
@@ -194,7 +194,7 @@ impl ConvexProfile {
                 kind: match &f.kind {
                     FeatureKind::Edge(a, b) => FeatureKind::Edge(*b, *a),
                     FeatureKind::Arc { curve, circle } => FeatureKind::Arc {
-                        curve: reversed(curve),
+                        curve: curve.reversed(),
                         circle: *circle,
                     },
                     corner => corner.clone(),
@@ -218,19 +218,19 @@ impl ConvexProfile {
     }
 
     /// The first normal angle; the features cover [start, start + 2π).
-    pub fn start(&self) -> f64 {
+    pub(super) fn start(&self) -> f64 {
         self.features[0].from
     }
 
     /// `theta` moved into [start, start + 2π).
-    pub fn wrap(&self, theta: f64) -> f64 {
+    pub(super) fn wrap(&self, theta: f64) -> f64 {
         let s = self.start();
         s + (theta - s).rem_euclid(TAU)
     }
 
     /// The index of the feature whose normal interval contains `theta` (the first one at a
     /// shared end).
-    pub fn feature_at(&self, theta: f64) -> usize {
+    pub(super) fn feature_at(&self, theta: f64) -> usize {
         let t = self.wrap(theta);
         self.features
             .iter()
@@ -240,7 +240,7 @@ impl ConvexProfile {
 
     /// The point of feature `index` where the outward normal angle is `theta` (clamped to
     /// the feature's interval; an edge gives its first point).
-    pub fn feature_point(&self, index: usize, theta: f64) -> DVec3 {
+    pub(super) fn feature_point(&self, index: usize, theta: f64) -> DVec3 {
         let f = &self.features[index];
         let t = self.wrap_near(theta, f);
         match &f.kind {
@@ -262,19 +262,19 @@ impl ConvexProfile {
     }
 
     /// A support point for the outward in-plane normal angle `theta`.
-    pub fn support(&self, theta: f64) -> DVec3 {
+    pub(super) fn support(&self, theta: f64) -> DVec3 {
         self.feature_point(self.feature_at(theta), theta)
     }
 
     /// A support point for the spatial direction `nu` (its component in the plane; `nu`
     /// must not be normal to the plane).
-    pub fn support_3d(&self, nu: DVec3) -> DVec3 {
+    pub(super) fn support_3d(&self, nu: DVec3) -> DVec3 {
         let flat = nu - nu.dot(self.plane.normal) * self.plane.normal;
         self.support(self.plane.angle_of(flat))
     }
 
     /// Distance from a point of the plane to the curve.
-    pub fn distance(&self, p: DVec3) -> f64 {
+    pub(super) fn distance(&self, p: DVec3) -> f64 {
         self.features
             .iter()
             .map(|f| match &f.kind {
@@ -317,12 +317,6 @@ fn arc_distance(curve: &RationalBezierCurve, p: DVec3) -> f64 {
         (best + 1).min(n) as f64 / n as f64,
     );
     crate::math::minimize_bracketed(|t| curve.eval(t).distance(p), a, b, 1e-14).value
-}
-
-fn reversed(c: &RationalBezierCurve) -> RationalBezierCurve {
-    let mut points = c.homogeneous().to_vec();
-    points.reverse();
-    RationalBezierCurve::from_homogeneous(points).expect("reversing keeps a valid curve")
 }
 
 /// The point of a smooth convex arc whose outward normal angle is `theta`, the arc's
@@ -507,7 +501,7 @@ pub(crate) mod tests {
     use std::f64::consts::FRAC_1_SQRT_2;
 
     /// A closed polyline through `corners` (one degree-1 segment per side).
-    pub fn polygon(corners: &[DVec3]) -> PiecewiseCurve {
+    pub(crate) fn polygon(corners: &[DVec3]) -> PiecewiseCurve {
         let n = corners.len();
         let segments = (0..n)
             .map(|k| RationalBezierCurve::polynomial(&[corners[k], corners[(k + 1) % n]]).unwrap())
@@ -518,7 +512,7 @@ pub(crate) mod tests {
     /// The circle about `centre` in the plane of `x`, `y` (the library's primitive) or, for
     /// axes that are not orthonormal, the ellipse with the conjugate semi-axes `radius`·x and
     /// `radius`·y.
-    pub fn circle(centre: DVec3, x: DVec3, y: DVec3, radius: f64) -> PiecewiseCurve {
+    pub(crate) fn circle(centre: DVec3, x: DVec3, y: DVec3, radius: f64) -> PiecewiseCurve {
         let unit = |v: DVec3| (v.length() - 1.0).abs() <= 1e-15;
         if unit(x) && unit(y) && x.dot(y).abs() <= 1e-15 {
             crate::primitives::circle(centre, x, y, radius).unwrap()

@@ -6,8 +6,8 @@
 use super::profile::tests::{circle, polygon};
 use super::*;
 use crate::bezier::PiecewiseCurve;
-use crate::cone_spline::PatternEdge;
 use crate::math::GaussLegendre;
+use crate::model::PatternEdge;
 use crate::testing::Stream;
 use glam::{DVec2, DVec3};
 

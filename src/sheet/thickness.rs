@@ -82,7 +82,7 @@ pub(crate) struct Layers {
 
 impl Layers {
     /// The offset of `layer` along the normals n.
-    pub fn offset(&self, layer: Layer) -> f64 {
+    pub(crate) fn offset(&self, layer: Layer) -> f64 {
         let along_m = match layer {
             Layer::Reference => return 0.0,
             Layer::Inner => self.inner,

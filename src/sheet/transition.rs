@@ -105,7 +105,7 @@ fn placement(p: &ConvexProfile, q: &ConvexProfile) -> (f64, DVec3) {
 impl Hull {
     /// The hull between `bottom` and `top` (internal coordinates); `scale` turns internal
     /// lengths into the caller's for the messages.
-    pub fn new(bottom: &PiecewiseCurve, top: &PiecewiseCurve, scale: f64) -> Result<Self> {
+    pub(super) fn new(bottom: &PiecewiseCurve, top: &PiecewiseCurve, scale: f64) -> Result<Self> {
         let mut a = ConvexProfile::new(bottom, "bottom")?;
         let mut b = ConvexProfile::new(top, "top")?;
         // The curves' own distances from their planes, and a margin far above the rounding.
@@ -174,7 +174,7 @@ impl Hull {
     /// normal angle comes from the in-plane part H·d_B − D·τ_B of ν in B's coordinates,
     /// never from a projection of the unit ν, which for a flat transition (ν nearly n_A)
     /// would cancel to ε / slope.
-    pub fn touch(&self, theta: f64, p: DVec3) -> (DVec3, f64) {
+    pub(super) fn touch(&self, theta: f64, p: DVec3) -> (DVec3, f64) {
         let (d, n) = (self.a.plane.direction(theta), self.a.plane.normal);
         let d_b = [d.dot(self.b.plane.x), d.dot(self.b.plane.y)];
         let angle = |(dd, hh): (f64, f64)| {
@@ -210,7 +210,7 @@ impl Hull {
 
     /// The outward normal of the supporting plane through A's supporting line with normal
     /// angle `theta` (through its point `p`) that touches B.
-    pub fn plane_normal(&self, theta: f64, p: DVec3) -> DVec3 {
+    pub(super) fn plane_normal(&self, theta: f64, p: DVec3) -> DVec3 {
         self.touch(theta, p).0
     }
 
@@ -333,7 +333,7 @@ fn element(a: DVec3, b: DVec3, normal: DVec3) -> Element {
 
 /// What the transition construction reports besides the part.
 #[derive(Clone, Debug, PartialEq)]
-pub struct TransitionFit {
+pub(crate) struct TransitionFit {
     /// Largest sampled distance of the cone spline from the hull surface.
     pub deviation: f64,
     /// Largest sampled distance of the part's edges from the bottom and the top curve.

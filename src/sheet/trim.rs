@@ -57,7 +57,7 @@ pub(crate) struct Trim {
 }
 
 impl Trim {
-    pub fn constant(rho: f64) -> Self {
+    pub(crate) fn constant(rho: f64) -> Self {
         Self {
             a: vec![rho],
             b: vec![1.0],
@@ -66,7 +66,7 @@ impl Trim {
     }
 
     /// A polynomial distance (Bernstein coefficients on [0, 1]).
-    pub fn polynomial(coefficients: Vec<f64>) -> Self {
+    pub(crate) fn polynomial(coefficients: Vec<f64>) -> Self {
         Self {
             a: coefficients,
             b: vec![1.0],
@@ -76,7 +76,12 @@ impl Trim {
 
     /// The section of `piece` with the plane normal · x = offset; the rulings must cross
     /// it (normal · e ≠ 0 along the piece).
-    pub fn plane(piece: &ConePiece, normal: DVec3, offset: f64, length: f64) -> Result<Self> {
+    pub(crate) fn plane(
+        piece: &ConePiece,
+        normal: DVec3,
+        offset: f64,
+        length: f64,
+    ) -> Result<Self> {
         let (l, e) = generator(piece, length);
         let a: Vec<f64> = l
             .iter()
@@ -100,12 +105,12 @@ impl Trim {
     }
 
     /// ρ(v).
-    pub fn eval(&self, v: f64) -> f64 {
+    pub(crate) fn eval(&self, v: f64) -> f64 {
         bernstein::evaluate(&self.a, v) / bernstein::evaluate(&self.b, v)
     }
 
     /// ρ′(v).
-    pub fn derivative(&self, v: f64) -> f64 {
+    pub(crate) fn derivative(&self, v: f64) -> f64 {
         let (a, b) = (
             bernstein::evaluate_jet(&self.a, v),
             bernstein::evaluate_jet(&self.b, v),
@@ -206,13 +211,13 @@ pub(crate) struct TrimmedSpline {
 }
 
 impl TrimmedSpline {
-    pub fn pieces(&self) -> &[ConePiece] {
+    pub(crate) fn pieces(&self) -> &[ConePiece] {
         self.spline.pieces()
     }
 
     /// The homogeneous boundary row of trim `side` of piece `k` on the layer at distance `s`
     /// along the normals (degree 2 + the trim's degree).
-    pub fn row(&self, k: usize, side: usize, s: f64) -> Vec<DVec4> {
+    pub(crate) fn row(&self, k: usize, side: usize, s: f64) -> Vec<DVec4> {
         let piece = offset_piece(&self.pieces()[k], s);
         let (l, e) = generator(&piece, 1.0);
         let trim = &self.trims[k][side];
@@ -229,7 +234,7 @@ impl TrimmedSpline {
     /// The patch of piece `k`: a layer between its two trims, or a cut face along one trim
     /// between two layers. Both rows are written in the piece's largest row degree, so that
     /// the faces of a solid share their boundary curves in one representation.
-    pub fn patch(&self, k: usize, face: Face) -> RationalBezierPatch {
+    pub(crate) fn patch(&self, k: usize, face: Face) -> RationalBezierPatch {
         let rows = match face {
             Face::Layer(s) => [self.row(k, 0, s), self.row(k, 1, s)],
             Face::Cut { side, from, to } => [self.row(k, side, from), self.row(k, side, to)],
@@ -242,7 +247,7 @@ impl TrimmedSpline {
 
     /// The end face at the first (`end = false`) or last ruling of an open part, between
     /// the layers `from` and `to`: u along the ruling, v across the thickness.
-    pub fn end_patch(&self, end: bool, from: f64, to: f64) -> RationalBezierPatch {
+    pub(crate) fn end_patch(&self, end: bool, from: f64, to: f64) -> RationalBezierPatch {
         let k = if end { self.pieces().len() - 1 } else { 0 };
         let at = |side: usize, s: f64| {
             let row = self.row(k, side, s);
@@ -262,7 +267,7 @@ impl TrimmedSpline {
 
     /// The layer at distance `s` as one surface: u ∈ [0, 1] from the first to the second
     /// trim, v ∈ [k, k + 1] on piece k.
-    pub fn layer(&self, s: f64) -> Result<PiecewiseSurface> {
+    pub(crate) fn layer(&self, s: f64) -> Result<PiecewiseSurface> {
         let n = self.pieces().len();
         let patches: Vec<RationalBezierPatch> =
             (0..n).map(|k| self.patch(k, Face::Layer(s))).collect();
@@ -278,7 +283,7 @@ impl TrimmedSpline {
     }
 
     /// The boundary curve `side` of the layer at distance `s`, v ∈ [k, k + 1] on piece k.
-    pub fn boundary(&self, side: usize, s: f64) -> Result<PiecewiseCurve> {
+    pub(crate) fn boundary(&self, side: usize, s: f64) -> Result<PiecewiseCurve> {
         let n = self.pieces().len();
         let segments = (0..n)
             .map(|k| RationalBezierCurve::from_homogeneous(self.row(k, side, s)))

@@ -5,7 +5,8 @@
 
 use super::*;
 use crate::model::polygon;
-use crate::{sweep_wire, Brep, Edge, ErrorKind, PatternEdge, WireSweep};
+use crate::wire::{sweep as sweep_wire, Edge, WireSweep};
+use crate::{Brep, ErrorKind, PatternEdge};
 use glam::{DVec2, DVec3};
 use std::f64::consts::{FRAC_PI_2, PI};
 

@@ -67,7 +67,7 @@ pub(crate) struct FlatPoint {
 impl Development {
     /// The development of a plane, a cylinder or a cone with the cut at angle `cut` from
     /// its `x` (unused for planes); `None` for the other kinds.
-    pub fn analytic(shape: &Recognized, cut: f64) -> Option<Self> {
+    pub(super) fn analytic(shape: &Recognized, cut: f64) -> Option<Self> {
         Some(match *shape {
             Recognized::Plane { origin, x, y } => Development::Plane { origin, x, y },
             Recognized::Cylinder {
@@ -98,13 +98,13 @@ impl Development {
     }
 
     /// The angle of `p` about the axis of a round face from its `x` (not from the cut).
-    pub fn raw_angle(p: DVec3, origin: DVec3, x: DVec3, y: DVec3) -> f64 {
+    pub(super) fn raw_angle(p: DVec3, origin: DVec3, x: DVec3, y: DVec3) -> f64 {
         let d = p - origin;
         d.dot(y).atan2(d.dot(x))
     }
 
     /// The flat point of `p` (on the face); on a cut, the point at angle 0.
-    pub fn flat(&self, p: DVec3) -> FlatPoint {
+    pub(super) fn flat(&self, p: DVec3) -> FlatPoint {
         match self {
             Development::Plane { origin, x, y } => FlatPoint {
                 point: DVec2::new((p - *origin).dot(*x), (p - *origin).dot(*y)),
@@ -154,7 +154,7 @@ impl Development {
 
     /// The unit normal at (the foot of) `p` that offsets move along: a plane's x × y, a
     /// cylinder's or cone's away from the axis, a cone spline piece's e × p.
-    pub fn normal(&self, p: DVec3) -> DVec3 {
+    pub(super) fn normal(&self, p: DVec3) -> DVec3 {
         match self {
             Development::Plane { x, y, .. } => x.cross(*y),
             Development::Round {
@@ -187,7 +187,7 @@ impl Development {
     /// moves (its flat points stay), a cylinder's radius grows by s, a cone's apex moves by −s / sin α along its
     /// axis (its rulings by s cot α), a cone spline's pieces are offset ([LP]
     /// "Introduction").
-    pub fn offset(&self, s: f64) -> Result<Self> {
+    pub(super) fn offset(&self, s: f64) -> Result<Self> {
         Ok(match self {
             Development::Plane { origin, x, y } => Development::Plane {
                 origin: *origin + s * x.cross(*y),
@@ -223,7 +223,7 @@ impl Development {
     }
 
     /// The flat point at the other end of the cut from `q` (a point at angle 0).
-    pub fn across_cut(&self, q: DVec2) -> DVec2 {
+    pub(super) fn across_cut(&self, q: DVec2) -> DVec2 {
         match self {
             Development::Round {
                 radius, sin: None, ..
@@ -235,7 +235,7 @@ impl Development {
 
     /// The formed point of the flat point `q`, `None` where the development has no point
     /// (beyond the apex of a cone, outside a cone spline's pieces by more than `slack`).
-    pub fn formed(&self, q: DVec2, slack: f64) -> Option<DVec3> {
+    pub(super) fn formed(&self, q: DVec2, slack: f64) -> Option<DVec3> {
         match self {
             Development::Plane { origin, x, y } => Some(*origin + q.x * *x + q.y * *y),
             Development::Round {

@@ -84,7 +84,7 @@ pub(crate) enum Recognized {
 
 impl Recognized {
     /// The kind the report names.
-    pub fn kind(&self) -> SurfaceKind {
+    pub(super) fn kind(&self) -> SurfaceKind {
         match self {
             Recognized::Plane { .. } => SurfaceKind::Plane,
             Recognized::Cylinder { .. } => SurfaceKind::CircularCylinder,

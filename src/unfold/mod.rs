@@ -4,10 +4,10 @@
 //!
 //! | module | what it computes | from |
 //! | --- | --- | --- |
-//! | `kind` | the kind of a face's surface: plane, circular cylinder, right cone, general cylinder or cone, tangent or other ruled developable, not developable | [LP] (1), (2) |
-//! | `develop` | the isometry face ↔ plane: closed forms for planes, cylinders and cones, the cone spline's development for the rest | [LP] "Bending sequences and development" |
-//! | `face` | a face's flat pattern: its loops as lines, arcs and biarcs, bend lines, the report | [LP] (7)–(8) (biarcs) |
-//! | `body` | a whole sheet body: its skins and thickness, the neutral layer at the K-factor, the faces' patterns joined along their bends, bend lines up and down | [LP] "Introduction" (offsets) |
+//! | `kind` | the kind of a face's surface: plane, circular cylinder, right cone, general cylinder or cone, tangent or other ruled developable, not developable | \[LP\] (1), (2) |
+//! | `develop` | the isometry face ↔ plane: closed forms for planes, cylinders and cones, the cone spline's development for the rest | \[LP\] "Bending sequences and development" |
+//! | `face` | a face's flat pattern: its loops as lines, arcs and biarcs, bend lines, the report | \[LP\] (7)–(8) (biarcs) |
+//! | `body` | a whole sheet body: its skins and thickness, the neutral layer at the K-factor, the faces' patterns joined along their bends, bend lines up and down | \[LP\] "Introduction" (offsets) |
 //! | `stretch` | how far a face that is not developable must stretch: a least-squares flattening | |
 
 mod body;

@@ -19,7 +19,7 @@
 //!   (the patch of the profile 0 with those weights, scaled by 1): exact rational faces,
 //!   exact where the scale law is (lines, PH pieces; arcs within the tolerance).
 
-use super::edge::{end_direction, reversed};
+use super::edge::end_direction;
 use super::profile::{Profile, ProfileLoop};
 use crate::bezier::bernstein::product;
 use crate::bezier::{PiecewiseCurve, PiecewiseSurface, RationalBezierCurve, RationalBezierPatch};
@@ -46,17 +46,17 @@ pub(crate) struct Blends {
 
 impl Blends {
     /// The interval that holds piece `j`.
-    pub fn interval_of(&self, j: usize) -> usize {
+    pub(super) fn interval_of(&self, j: usize) -> usize {
         self.first_piece.partition_point(|&first| first <= j) - 1
     }
 
     /// The profile at the wire's end.
-    pub fn end(&self) -> &Profile {
+    pub(super) fn end(&self) -> &Profile {
         &self.intervals[self.intervals.len() - 1].end
     }
 
     /// Every section: the start and end of each interval.
-    pub fn sections(&self) -> impl Iterator<Item = &Profile> {
+    pub(super) fn sections(&self) -> impl Iterator<Item = &Profile> {
         self.intervals.iter().flat_map(|b| [&b.start, &b.end])
     }
 }
@@ -132,7 +132,11 @@ fn matched_loops(loops: &[&ProfileLoop]) -> Vec<(ProfileLoop, ProfileLoop, Profi
     for b in &loops[1..] {
         let mut next = segments(b);
         if a.closed && (a.area > 0.0) != (b.area > 0.0) {
-            next = next.iter().rev().map(reversed_segment).collect();
+            next = next
+                .iter()
+                .rev()
+                .map(RationalBezierCurve::reversed)
+                .collect();
         }
         let last = chain.len() - 1;
         if a.closed {
@@ -210,11 +214,6 @@ fn segments(lp: &ProfileLoop) -> Vec<RationalBezierCurve> {
         .iter()
         .flat_map(|e| e.segments().iter().cloned())
         .collect()
-}
-
-fn reversed_segment(s: &RationalBezierCurve) -> RationalBezierCurve {
-    let curve = PiecewiseCurve::new(vec![s.clone()], vec![0.0, 1.0]).expect("one segment");
-    reversed(&curve).segments()[0].clone()
 }
 
 /// Largest angle between the tangents at a joint that still counts as smooth.

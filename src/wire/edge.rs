@@ -20,7 +20,7 @@ use crate::bezier::{CurveJet, PiecewiseCurve, RationalBezierCurve};
 use crate::error::{invalid, Result};
 use crate::math::{angle_between, robust_normalize, signed_angle};
 use crate::model::{Arc, Similarity};
-use glam::{DVec3, DVec4};
+use glam::DVec3;
 use std::f64::consts::{PI, TAU};
 
 /// Largest angle between the tangents at a joint that still counts as smooth (G1),
@@ -47,7 +47,7 @@ pub(crate) enum Geometry {
 }
 
 impl Geometry {
-    pub fn domain(&self) -> (f64, f64) {
+    pub(super) fn domain(&self) -> (f64, f64) {
         match self {
             Geometry::Line { .. } => (0.0, 1.0),
             Geometry::Arc(arc) => (0.0, arc.angle),
@@ -55,7 +55,7 @@ impl Geometry {
         }
     }
 
-    pub fn jet(&self, t: f64) -> CurveJet {
+    pub(super) fn jet(&self, t: f64) -> CurveJet {
         match self {
             Geometry::Line { a, b } => CurveJet {
                 point: *a + t * (*b - *a),
@@ -67,7 +67,7 @@ impl Geometry {
         }
     }
 
-    pub fn start(&self) -> DVec3 {
+    pub(super) fn start(&self) -> DVec3 {
         match self {
             Geometry::Line { a, .. } => *a,
             Geometry::Arc(arc) => arc.start,
@@ -75,7 +75,7 @@ impl Geometry {
         }
     }
 
-    pub fn end(&self) -> DVec3 {
+    pub(super) fn end(&self) -> DVec3 {
         match self {
             Geometry::Line { b, .. } => *b,
             Geometry::Arc(arc) => arc.end,
@@ -84,7 +84,7 @@ impl Geometry {
     }
 
     /// The unit tangent at the start (the limit direction where the derivative vanishes).
-    pub fn start_tangent(&self) -> DVec3 {
+    pub(super) fn start_tangent(&self) -> DVec3 {
         match self {
             Geometry::Curve(c) => end_direction(&c.segments()[0], false),
             _ => self.unit_tangent(self.domain().0),
@@ -92,14 +92,14 @@ impl Geometry {
     }
 
     /// The unit tangent at the end.
-    pub fn end_tangent(&self) -> DVec3 {
+    pub(super) fn end_tangent(&self) -> DVec3 {
         match self {
             Geometry::Curve(c) => end_direction(&c.segments()[c.segments().len() - 1], true),
             _ => self.unit_tangent(self.domain().1),
         }
     }
 
-    pub fn unit_tangent(&self, t: f64) -> DVec3 {
+    pub(super) fn unit_tangent(&self, t: f64) -> DVec3 {
         match self {
             Geometry::Line { a, b } => (*b - *a).normalize(),
             Geometry::Arc(arc) => arc.tangent(t),
@@ -108,7 +108,7 @@ impl Geometry {
     }
 
     /// The part on [t0, t1] ⊂ domain, starting at `start` and ending at `end` exactly.
-    pub fn trimmed(&self, t0: f64, t1: f64, start: DVec3, end: DVec3) -> Self {
+    pub(super) fn trimmed(&self, t0: f64, t1: f64, start: DVec3, end: DVec3) -> Self {
         match self {
             Geometry::Line { .. } => Geometry::Line { a: start, b: end },
             Geometry::Arc(arc) => Geometry::Arc(arc.trimmed(t0, t1, start, end)),
@@ -117,7 +117,7 @@ impl Geometry {
     }
 
     /// The length (by quadrature for curves).
-    pub fn length(&self) -> f64 {
+    pub(super) fn length(&self) -> f64 {
         match self {
             Geometry::Line { a, b } => a.distance(*b),
             Geometry::Arc(arc) => arc.length(),
@@ -126,7 +126,7 @@ impl Geometry {
     }
 
     /// Points that span the piece (for sizes and the default frame).
-    pub fn hull_points(&self) -> Vec<DVec3> {
+    pub(super) fn hull_points(&self) -> Vec<DVec3> {
         match self {
             Geometry::Line { a, b } => vec![*a, *b],
             Geometry::Arc(arc) => (0..=8)
@@ -136,7 +136,7 @@ impl Geometry {
         }
     }
 
-    pub fn kind_name(&self) -> &'static str {
+    pub(super) fn kind_name(&self) -> &'static str {
         match self {
             Geometry::Line { .. } => "a line",
             Geometry::Arc(_) => "an arc",
@@ -205,26 +205,6 @@ pub(crate) fn with_ends(curve: &PiecewiseCurve, start: DVec3, end: DVec3) -> Pie
     PiecewiseCurve::new(segments, curve.breaks().to_vec()).expect("same breaks")
 }
 
-/// The same curve traversed backwards, on the parameters lo + hi − t.
-pub(crate) fn reversed(curve: &PiecewiseCurve) -> PiecewiseCurve {
-    let (lo, hi) = curve.domain();
-    let segments = curve
-        .segments()
-        .iter()
-        .rev()
-        .map(|s| {
-            let mut h: Vec<DVec4> = s.homogeneous().to_vec();
-            h.reverse();
-            RationalBezierCurve::from_homogeneous(h).expect("same points")
-        })
-        .collect();
-    let mut breaks: Vec<f64> = curve.breaks().iter().map(|&t| lo + hi - t).collect();
-    breaks.reverse();
-    breaks[0] = lo;
-    *breaks.last_mut().expect("breaks") = hi;
-    PiecewiseCurve::new(segments, breaks).expect("reversed breaks increase")
-}
-
 /// One piece of the spine and where it came from.
 #[derive(Clone, Debug)]
 pub(crate) struct Piece {
@@ -237,7 +217,7 @@ pub(crate) struct Piece {
 
 impl Piece {
     /// What the piece is called in messages: its edge, or the round corner it makes.
-    pub fn name(&self) -> String {
+    pub(super) fn name(&self) -> String {
         match &self.corner {
             Some(joint) => format!("the round corner at the {joint}"),
             None => format!("edge {}", self.edge),
@@ -277,12 +257,12 @@ pub(crate) struct Joint {
 }
 
 impl Joint {
-    pub fn angle(&self) -> f64 {
+    pub(super) fn angle(&self) -> f64 {
         angle_between(self.incoming, self.outgoing)
     }
 
     /// Whether a plane cuts the pieces here (a miter, a near-tangent joint).
-    pub fn cuts(&self) -> bool {
+    pub(super) fn cuts(&self) -> bool {
         matches!(
             self.kind,
             JointKind::Miter { .. } | JointKind::NearTangent { .. }
@@ -300,7 +280,7 @@ pub(crate) struct Chain {
     pub closed: bool,
 }
 
-/// An edge as given, in normalized coordinates (see `sweep_wire`).
+/// An edge as given, in normalized coordinates (see `sweep`).
 #[derive(Clone, Debug)]
 pub(crate) enum RawEdge {
     Line(DVec3, DVec3),
@@ -324,7 +304,7 @@ impl RawEdge {
         match self {
             RawEdge::Line(a, b) => RawEdge::Line(*b, *a),
             RawEdge::Arc(a, m, c) => RawEdge::Arc(*c, *m, *a),
-            RawEdge::Curve(c) => RawEdge::Curve(reversed(c)),
+            RawEdge::Curve(c) => RawEdge::Curve(c.reversed()),
         }
     }
 

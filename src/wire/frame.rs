@@ -1220,7 +1220,7 @@ pub(crate) struct Margins {
 
 impl Margins {
     /// Margins measured while building, the least `least`.
-    pub fn measured(least: f64, chain: PiecewiseCurve) -> Self {
+    pub(super) fn measured(least: f64, chain: PiecewiseCurve) -> Self {
         Self {
             measured: least,
             deferred: Vec::new(),
@@ -1229,7 +1229,7 @@ impl Margins {
     }
 
     /// The least singularity margin of the sweep.
-    pub fn least(&self) -> f64 {
+    pub(super) fn least(&self) -> f64 {
         self.deferred
             .iter()
             .map(|(spine, frames)| {

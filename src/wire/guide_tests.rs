@@ -33,7 +33,7 @@ fn pointer() -> PiecewiseCurve {
 fn a_helical_guide_about_a_straight_wire_turns_the_profile_on_helices() {
     let pitch = 2.0;
     let bar = [line([0., 0., 0.], [0., 0., 4.])];
-    let shape = sweep_wire(
+    let shape = sweep(
         &bar,
         &pointer(),
         &[],
@@ -53,7 +53,7 @@ fn a_helical_guide_about_a_straight_wire_turns_the_profile_on_helices() {
     assert!(shape.is_solid());
     crate::testing::assert_closed_oriented(shape.brep());
     // The RMF of a line does not turn: the check can fail.
-    let rmf = sweep_wire(&bar, &pointer(), &[], &WireSweep::default()).unwrap();
+    let rmf = sweep(&bar, &pointer(), &[], &WireSweep::default()).unwrap();
     assert!(off_helix(&rmf, pitch / TAU) > 0.1);
 }
 
@@ -62,7 +62,7 @@ fn a_coaxial_helix_beside_a_helix_is_its_frenet_frame_turned_by_pi() {
     let (radius, pitch) = (3.0, 2.0);
     let edges = [helix(radius, pitch, 1.5)];
     let guide = vec![helix(radius + 1.0, pitch, 1.5)];
-    let shape = sweep_wire(&edges, &pointer(), &[], &guided(guide, 1e-6)).unwrap();
+    let shape = sweep(&edges, &pointer(), &[], &guided(guide, 1e-6)).unwrap();
     let off = off_helix(&shape, pitch / TAU);
     let error = shape.report().frame_error;
     println!(
@@ -108,7 +108,7 @@ fn a_guide_winding_unevenly_beside_a_line_is_followed_within_the_tolerance() {
     )];
     let bar = [line([0., 0., 0.], [0., 0., 3.])];
     for tolerance in [1e-4, 1e-6] {
-        let shape = sweep_wire(&bar, &pointer(), &[], &guided(guide.clone(), tolerance)).unwrap();
+        let shape = sweep(&bar, &pointer(), &[], &guided(guide.clone(), tolerance)).unwrap();
         crate::testing::assert_closed_oriented(shape.brep());
         // The face swept by the vertex on f₂: its points against the guide's direction.
         let mut worst = 0.0f64;
@@ -140,7 +140,7 @@ fn a_guide_winding_unevenly_beside_a_line_is_followed_within_the_tolerance() {
 fn guides_that_do_not_run_beside_the_wire_are_refused_naming_the_option() {
     let bar = [line([0., 0., 0.], [0., 0., 3.])];
     let refused = |options: WireSweep| {
-        sweep_wire(&bar, &circle(0.2), &[], &options)
+        sweep(&bar, &circle(0.2), &[], &options)
             .unwrap_err()
             .message()
     };

@@ -57,7 +57,7 @@ pub(crate) enum FrameLaw {
 
 impl FrameLaw {
     /// The name of a law other than the RMF, as the options spell it.
-    pub fn name(&self) -> Option<&'static str> {
+    pub(super) fn name(&self) -> Option<&'static str> {
         match self {
             FrameLaw::Rmf => None,
             FrameLaw::Frenet => Some("frenet"),
@@ -68,7 +68,7 @@ impl FrameLaw {
 
     /// The law of `frame`, a guide's points mapped by `unit` (a similarity) to the sweep's
     /// coordinates.
-    pub fn new(
+    pub(super) fn new(
         frame: &SweepFrame,
         unit: &dyn Fn(&PiecewiseCurve) -> PiecewiseCurve,
     ) -> Result<Self> {
@@ -108,7 +108,7 @@ impl Guide {
     /// The guide's point in the plane through `point` normal to the unit `t` that is
     /// nearest `point`: the real roots of t·(g(w) − point), a polynomial in the Bernstein
     /// basis for each (homogeneous) segment, whose coefficients of one sign rule it out.
-    pub fn point_in_plane(&self, point: DVec3, t: DVec3) -> Option<DVec3> {
+    pub(super) fn point_in_plane(&self, point: DVec3, t: DVec3) -> Option<DVec3> {
         let level = t.dot(point);
         let mut nearest: Option<(f64, DVec3)> = None;
         for segment in &self.segments {
@@ -145,7 +145,7 @@ pub(crate) struct Unwrapped {
 }
 
 impl Unwrapped {
-    pub fn new(law: &FrameLaw) -> Self {
+    pub(super) fn new(law: &FrameLaw) -> Self {
         let period = match law {
             FrameLaw::Frenet => PI,
             _ => TAU,
@@ -159,7 +159,7 @@ impl Unwrapped {
     }
 
     /// Takes the angle from `frame_f2` to the law's `target` about the tangent `t`.
-    pub fn push(&mut self, frame_f2: DVec3, target: DVec3, t: DVec3) {
+    pub(super) fn push(&mut self, frame_f2: DVec3, target: DVec3, t: DVec3) {
         let raw = signed_angle(frame_f2, target, t);
         let angle = match self.last {
             None => raw,
@@ -172,12 +172,12 @@ impl Unwrapped {
     }
 
     /// The last angle taken, unwrapped.
-    pub fn last(&self) -> Option<f64> {
+    pub(super) fn last(&self) -> Option<f64> {
         self.last
     }
 
     /// The change from the first angle to the last (0 with fewer than two).
-    pub fn change(&self) -> f64 {
+    pub(super) fn change(&self) -> f64 {
         match (self.first, self.last) {
             (Some(a), Some(b)) => b - a,
             _ => 0.0,
@@ -185,12 +185,12 @@ impl Unwrapped {
     }
 
     /// The largest distance of the angles from the first.
-    pub fn spread(&self) -> f64 {
+    pub(super) fn spread(&self) -> f64 {
         self.spread.0.abs().max(self.spread.1)
     }
 
     /// The largest angle (the first one in (−π, π], the others unwrapped from it).
-    pub fn largest(&self) -> f64 {
+    pub(super) fn largest(&self) -> f64 {
         let first = self.first.unwrap_or(0.0);
         (first + self.spread.0)
             .abs()
@@ -258,7 +258,7 @@ pub(crate) struct LawAngle {
 }
 
 impl LawAngle {
-    pub fn new(law: &FrameLaw, breaks: &[f64], raw: &dyn Fn(f64) -> Option<f64>) -> Self {
+    pub(super) fn new(law: &FrameLaw, breaks: &[f64], raw: &dyn Fn(f64) -> Option<f64>) -> Self {
         let period = Unwrapped::new(law).period;
         let mut params = Vec::new();
         let mut angles: Vec<f64> = Vec::new();
@@ -281,7 +281,7 @@ impl LawAngle {
     }
 
     /// The angle at v, 0 at the piece's start.
-    pub fn at(&self, v: f64, raw: &dyn Fn(f64) -> Option<f64>) -> f64 {
+    pub(super) fn at(&self, v: f64, raw: &dyn Fn(f64) -> Option<f64>) -> f64 {
         if self.params.is_empty() {
             return 0.0;
         }

@@ -170,20 +170,20 @@ const DEFAULT_RADIUS_FACTOR: f64 = 1.5;
 /// The sweep of `profile` (with `holes`; planar curves in the frame at the wire's start,
 /// x ↦ f₂, y ↦ f₃, z ↦ t: z = 0 in the normal plane, any other plane across the wire
 /// carried rigidly, see `oblique`) along the wire of `edges` (see the module notes).
-pub fn sweep_wire(
+pub fn sweep(
     edges: &[Edge],
     profile: &PiecewiseCurve,
     holes: &[PiecewiseCurve],
     options: &WireSweep,
 ) -> Result<Shape> {
-    sweep(edges, profile, holes, Stations::none(), options)
+    sweep_stations(edges, profile, holes, Stations::none(), options)
 }
 
-/// [`sweep_wire`] from `profile` (with `holes`) at the wire's start to `end_profile` (with
+/// [`sweep`] from `profile` (with `holes`) at the wire's start to `end_profile` (with
 /// `end_holes`, as many as `holes`) at its end, blended linearly in arc length (module
 /// `blend`): each loop matched to its counterpart, corner to corner. Open wires; both
 /// profiles in the normal plane; a constant scale.
-pub fn sweep_wire_between(
+pub fn sweep_between(
     edges: &[Edge],
     profile: &PiecewiseCurve,
     holes: &[PiecewiseCurve],
@@ -197,7 +197,7 @@ pub fn sweep_wire_between(
         profile: end_profile,
         holes: end_holes,
     };
-    sweep(edges, profile, holes, Stations::end(&end), options)
+    sweep_stations(edges, profile, holes, Stations::end(&end), options)
 }
 
 /// A profile a sweep passes through (with its holes), in the frame there as the start
@@ -213,19 +213,15 @@ pub struct Section<'a> {
     pub holes: &'a [PiecewiseCurve],
 }
 
-/// [`sweep_wire`] through `sections` (two or more: the first at 0, the last at 1, the
+/// [`sweep`] through `sections` (two or more: the first at 0, the last at 1, the
 /// fractions between strictly increasing), each blended into the next linearly in arc
 /// length (module `blend`): every loop matched to its counterpart in all sections, corner
 /// to corner, so that the sections are shared edges. Open wires; every profile in the
 /// normal plane; a constant scale.
-pub fn sweep_wire_through(
-    edges: &[Edge],
-    sections: &[Section],
-    options: &WireSweep,
-) -> Result<Shape> {
+pub fn sweep_through(edges: &[Edge], sections: &[Section], options: &WireSweep) -> Result<Shape> {
     check_sections(edges.len(), sections)?;
     let first = &sections[0];
-    sweep(
+    sweep_stations(
         edges,
         first.profile,
         first.holes,
@@ -268,7 +264,7 @@ impl<'a> Stations<'a> {
     }
 }
 
-fn sweep(
+fn sweep_stations(
     edges: &[Edge],
     profile: &PiecewiseCurve,
     holes: &[PiecewiseCurve],

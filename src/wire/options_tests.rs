@@ -46,7 +46,7 @@ fn a_scale_law_along_a_line_is_an_exact_cone_frustum() {
         scale: [1.0, 0.5],
         ..WireSweep::default()
     };
-    let shape = sweep_wire(
+    let shape = sweep(
         &[line([0., 0., 0.], [0., 0., 3.])],
         &circle(1.0),
         &[],
@@ -98,7 +98,7 @@ fn a_scaled_tube_along_lines_arcs_and_curves_encloses_pi_r2_times_the_integral_o
                 tolerance,
                 ..WireSweep::default()
             };
-            let shape = sweep_wire(&edges, &circle(0.5), &[], &options).unwrap();
+            let shape = sweep(&edges, &circle(0.5), &[], &options).unwrap();
             crate::testing::assert_closed_oriented(shape.brep());
             let want = scaled_tube_volume(0.5, spine_length(&shape), scale);
             let v = volume(&shape);
@@ -152,7 +152,7 @@ fn frenet_and_axis_frames_carry_the_profile_on_helices_and_the_rmf_does_not() {
     ])
     .unwrap();
     let sweep = |frame| {
-        sweep_wire(
+        sweep(
             &edges,
             &triangle,
             &[],
@@ -198,8 +198,8 @@ fn frenet_and_axis_frames_carry_the_profile_on_helices_and_the_rmf_does_not() {
 #[test]
 fn a_fixed_normal_of_a_planar_wire_is_its_rmf() {
     let route = pipe_route();
-    let rmf = sweep_wire(&route, &square(0.5), &[], &WireSweep::default()).unwrap();
-    let fixed = sweep_wire(
+    let rmf = sweep(&route, &square(0.5), &[], &WireSweep::default()).unwrap();
+    let fixed = sweep(
         &route,
         &square(0.5),
         &[],
@@ -225,7 +225,7 @@ fn a_fixed_normal_of_a_planar_wire_is_its_rmf() {
 fn frames_and_scales_that_cannot_be_are_refused_naming_the_option() {
     let bar = [line([0., 0., 0.], [0., 0., 3.])];
     let refused = |edges: &[Edge], options: WireSweep| {
-        sweep_wire(edges, &circle(1.0), &[], &options)
+        sweep(edges, &circle(1.0), &[], &options)
             .unwrap_err()
             .message()
     };
@@ -284,7 +284,7 @@ fn frames_and_scales_that_cannot_be_are_refused_naming_the_option() {
     let m = refused(&square_loop, with(SweepFrame::Rmf, [1.0, 2.0]));
     assert!(m.starts_with("scale: a closed wire"), "{m}");
     // A constant scale closes.
-    let shape = sweep_wire(
+    let shape = sweep(
         &square_loop,
         &circle(1.0),
         &[],
@@ -297,7 +297,7 @@ fn frames_and_scales_that_cannot_be_are_refused_naming_the_option() {
 #[test]
 fn a_fixed_direction_across_an_arc_is_followed_within_the_tolerance() {
     for d in [DVec3::new(1.0, 0.0, 1.0), DVec3::new(0.0, 1.0, 0.2)] {
-        let shape = sweep_wire(
+        let shape = sweep(
             &pipe_route(),
             &square(0.5),
             &[],
@@ -329,7 +329,7 @@ fn the_frenet_frame_of_a_curve_of_varying_torsion_is_followed_within_the_toleran
     .unwrap();
     let edge = Edge::Curve(PiecewiseCurve::with_unit_intervals(vec![cubic]).unwrap());
     for tolerance in [1e-4, 1e-6] {
-        let shape = sweep_wire(
+        let shape = sweep(
             std::slice::from_ref(&edge),
             &square(0.05),
             &[],
@@ -404,7 +404,7 @@ fn a_profile_out_of_the_normal_plane_sweeps_cos_alpha_times_the_volume() {
         ("helix", vec![helix(3.0, 2.0, 1.0)]),
     ] {
         for tilt in [0.3, -0.9] {
-            let shape = sweep_wire(
+            let shape = sweep(
                 &edges,
                 &tilted_circle(0.5, tilt),
                 &[],
@@ -459,7 +459,7 @@ fn an_axial_thread_profile_runs_on_helices_under_the_frenet_frame() {
         local(DVec3::new(0.4, 0.0, 0.0)),
     ])
     .unwrap();
-    let shape = sweep_wire(
+    let shape = sweep(
         &edges,
         &triangle,
         &[],
@@ -490,9 +490,7 @@ fn an_axial_thread_profile_runs_on_helices_under_the_frenet_frame() {
 #[test]
 fn profiles_out_of_the_normal_plane_that_cannot_be_swept_are_refused() {
     let refused = |edges: &[Edge], profile: &PiecewiseCurve, options: WireSweep| {
-        sweep_wire(edges, profile, &[], &options)
-            .unwrap_err()
-            .message()
+        sweep(edges, profile, &[], &options).unwrap_err().message()
     };
     let square_loop = square_loop();
     let m = refused(&square_loop, &tilted_circle(1.0, 0.3), WireSweep::default());
@@ -523,7 +521,7 @@ fn profiles_out_of_the_normal_plane_that_cannot_be_swept_are_refused() {
     }];
     let m = refused(&arc, &tilted_circle(1.5, 1.2), WireSweep::default());
     assert!(m.contains("may fold the sweep"), "{m}");
-    assert!(sweep_wire(&arc, &tilted_circle(0.5, 0.3), &[], &WireSweep::default()).is_ok());
+    assert!(sweep(&arc, &tilted_circle(0.5, 0.3), &[], &WireSweep::default()).is_ok());
 }
 
 /// Profiles out of the normal plane give the same faces at every scale and position.
@@ -563,7 +561,7 @@ fn a_sweep_between_two_circles_is_the_scaled_tube() {
         ("pipe route", pipe_route(), 4e-6),
         ("helix", vec![helix(3.0, 2.0, 1.0)], 1e-12),
     ] {
-        let shape = sweep_wire_between(
+        let shape = sweep_between(
             &edges,
             &circle(0.5),
             &[],
@@ -590,8 +588,7 @@ fn a_sweep_between_two_circles_is_the_scaled_tube() {
 fn a_square_blends_into_a_circle_corner_to_corner() {
     let edges = [line([0., 0., 0.], [0., 0., 4.])];
     for (start, end) in [(square(0.5), circle(0.6)), (triangle(0.6), square(0.4))] {
-        let shape =
-            sweep_wire_between(&edges, &start, &[], &end, &[], &WireSweep::default()).unwrap();
+        let shape = sweep_between(&edges, &start, &[], &end, &[], &WireSweep::default()).unwrap();
         crate::testing::assert_closed_oriented(shape.brep());
         let area = |z: f64| {
             let mut points = Vec::new();
@@ -638,7 +635,7 @@ fn a_square_blends_into_a_circle_corner_to_corner() {
 fn sweeps_between_profiles_that_cannot_be_matched_are_refused() {
     let bar = [line([0., 0., 0.], [0., 0., 3.])];
     let refused = |edges: &[Edge], end_holes: &[PiecewiseCurve], options: WireSweep| {
-        sweep_wire_between(
+        sweep_between(
             edges,
             &circle(1.0),
             &[circle(0.5)],
@@ -667,7 +664,7 @@ fn sweeps_between_profiles_that_cannot_be_matched_are_refused() {
     let m = refused(&square_loop, &[circle(0.2)], WireSweep::default());
     assert!(m.starts_with("end_profile: a closed wire"), "{m}");
     // Matched hole to hole: a ring into a square frame.
-    let ok = sweep_wire_between(
+    let ok = sweep_between(
         &bar,
         &circle(1.0),
         &[circle(0.5)],
@@ -683,7 +680,7 @@ fn sweeps_between_profiles_that_cannot_be_matched_are_refused() {
 #[test]
 fn sweeps_between_profiles_are_the_same_from_1e_200_to_1e200() {
     let edges = pipe_route();
-    let unit = sweep_wire_between(
+    let unit = sweep_between(
         &edges,
         &square(0.5),
         &[],
@@ -699,7 +696,7 @@ fn sweeps_between_profiles_are_the_same_from_1e_200_to_1e200() {
             tolerance: 1e-4 * s,
             ..WireSweep::default()
         };
-        let shape = sweep_wire_between(
+        let shape = sweep_between(
             &moved,
             &square(0.5).similar(s, DVec3::ZERO),
             &[],
@@ -748,7 +745,7 @@ fn a_tilted_profile_along_a_ph_spline_keeps_the_faces_degree() {
                 tolerance: 1e-5,
                 ..WireSweep::default()
             };
-            let shape = sweep_wire(&edges, profile, &[], &options).unwrap();
+            let shape = sweep(&edges, profile, &[], &options).unwrap();
             let surface = shape.faces()[0].surface.as_ref().unwrap();
             surface
                 .patches()
@@ -795,7 +792,7 @@ fn mobius_and_rrmf_wire_sweeps_have_parameter_lines_orthogonal_to_rounding() {
             tolerance,
             ..WireSweep::default()
         };
-        let shape = sweep_wire(&edges, &circle(0.05), &[], &options)
+        let shape = sweep(&edges, &circle(0.05), &[], &options)
             .unwrap_or_else(|e| panic!("{}: {e}", method.name()));
         crate::testing::assert_closed_oriented(shape.brep());
         let report = shape.report();
@@ -838,14 +835,14 @@ fn exact_rmf_methods_take_twists_frames_and_refuse_what_they_cannot() {
                 tolerance,
                 ..WireSweep::default()
             };
-            let shape = sweep_wire(&edges, &square(0.05), &[], &options)
+            let shape = sweep(&edges, &square(0.05), &[], &options)
                 .unwrap_or_else(|e| panic!("{} {frame:?}: {e}", method.name()));
             crate::testing::assert_closed_oriented(shape.brep());
             let report = shape.report();
             assert!(report.frame_error <= 0.25 * tolerance / (0.05 * 2f64.sqrt()));
             if twist != 0.0 {
                 // The end section is the untwisted one turned by the twist about the tangent.
-                let plain = sweep_wire(
+                let plain = sweep(
                     &edges,
                     &square(0.05),
                     &[],
@@ -868,7 +865,7 @@ fn exact_rmf_methods_take_twists_frames_and_refuse_what_they_cannot() {
                 assert!((angle - twist).abs() < 1e-9, "{angle}");
             }
         }
-        let m = sweep_wire(
+        let m = sweep(
             &edges,
             &circle(0.05),
             &[],
@@ -885,7 +882,7 @@ fn exact_rmf_methods_take_twists_frames_and_refuse_what_they_cannot() {
             "{m}"
         );
     }
-    let m = sweep_wire(
+    let m = sweep(
         &edges,
         &circle(0.05),
         &[],
@@ -926,7 +923,7 @@ fn a_closed_mobius_wire_closes_without_a_seam() {
         ..WireSweep::default()
     };
     let edge = Edge::Curve(super::tests::closed_nurbs());
-    let shape = sweep_wire(&[edge], &square(0.3), &[], &options).unwrap();
+    let shape = sweep(&[edge], &square(0.3), &[], &options).unwrap();
     crate::testing::assert_closed_oriented(shape.brep());
     let report = shape.report();
     println!("closed Möbius wire: seam gap {:.1e}", report.seam_gap);

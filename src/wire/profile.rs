@@ -63,7 +63,7 @@ impl Profile {
     /// The profile of `outer` with `holes`; `solid` needs closed loops. `tolerance` is the
     /// relative distance within which a loop's end meets its start; `unit` converts lengths
     /// to the caller's units for messages.
-    pub fn new(
+    pub(super) fn new(
         outer: &PiecewiseCurve,
         holes: &[PiecewiseCurve],
         solid: bool,
@@ -103,25 +103,25 @@ impl Profile {
     }
 
     /// Every edge with its loop and index in the loop.
-    pub fn edges(&self) -> impl Iterator<Item = (usize, usize, &PiecewiseCurve)> {
+    pub(super) fn edges(&self) -> impl Iterator<Item = (usize, usize, &PiecewiseCurve)> {
         self.loops
             .iter()
             .enumerate()
             .flat_map(|(l, lp)| lp.edges.iter().enumerate().map(move |(e, c)| (l, e, c)))
     }
 
-    pub fn edge_count(&self) -> usize {
+    pub(super) fn edge_count(&self) -> usize {
         self.loops.iter().map(|l| l.edges.len()).sum()
     }
 
     /// h(d) = max over the profile of c·d.
     #[cfg(test)]
-    pub fn support(&self, d: DVec2) -> f64 {
+    pub(super) fn support(&self, d: DVec2) -> f64 {
         self.support_table().support(d)
     }
 
     /// The segments prepared for [`SupportTable::support`] in many directions.
-    pub fn support_table(&self) -> SupportTable {
+    pub(super) fn support_table(&self) -> SupportTable {
         SupportTable {
             segments: self
                 .segments()
@@ -135,7 +135,7 @@ impl Profile {
 
     /// The profile's largest distance from the spine: max ‖c‖ in the normal plane; out of
     /// it a bound, the farthest control point (the curves lie in their hulls).
-    pub fn reach(&self) -> f64 {
+    pub(super) fn reach(&self) -> f64 {
         match self.plane {
             None => self.radius(),
             Some(_) => self
@@ -150,7 +150,7 @@ impl Profile {
     }
 
     /// max ‖c‖ of the profile's projection onto the normal plane.
-    pub fn radius(&self) -> f64 {
+    pub(super) fn radius(&self) -> f64 {
         self.segments()
             .map(|segment| segment.max_radius())
             .fold(0.0, f64::max)
@@ -159,7 +159,7 @@ impl Profile {
     /// Every segment of every loop one after another on unit intervals: the profile as an
     /// analysis that takes it segment by segment sees it (consecutive segments of different
     /// loops do not join).
-    pub fn segment_chain(&self) -> PiecewiseCurve {
+    pub(super) fn segment_chain(&self) -> PiecewiseCurve {
         let segments = self
             .loops
             .iter()
@@ -178,7 +178,7 @@ impl Profile {
     }
 
     /// The size of the profile (its bounding-box diagonal).
-    pub fn size(&self) -> f64 {
+    pub(super) fn size(&self) -> f64 {
         bounding_diagonal(
             self.loops
                 .iter()
@@ -191,7 +191,7 @@ impl Profile {
     /// Where the turn by `angle` (counter-clockwise in the profile plane) sends every edge,
     /// if it maps the profile onto itself edge by edge, each edge onto one with the same
     /// parameterization (up to a shift); `None` otherwise. Loop 0 must go to loop 0.
-    pub fn symmetry(&self, angle: f64) -> Option<Vec<Vec<EdgeImage>>> {
+    pub(super) fn symmetry(&self, angle: f64) -> Option<Vec<Vec<EdgeImage>>> {
         let tolerance = 1e-9 * self.size();
         let (s, c) = angle.sin_cos();
         let turn = |h: DVec4| DVec4::new(c * h.x - s * h.y, s * h.x + c * h.y, 0.0, h.w);
@@ -475,7 +475,7 @@ pub(crate) struct SupportTable {
 
 impl SupportTable {
     /// h(d) = max over the profile of c·d: at a segment's ends or where ċ·d = 0.
-    pub fn support(&self, d: DVec2) -> f64 {
+    pub(super) fn support(&self, d: DVec2) -> f64 {
         self.segments
             .iter()
             .map(|(segment, a, b)| {

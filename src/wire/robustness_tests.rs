@@ -48,8 +48,8 @@ fn check_twisted_bar(twist: f64) {
         ..WireSweep::default()
     };
     let bar = [line(DVec3::ZERO, DVec3::new(10.0, 0.0, 0.0))];
-    let shape = sweep_wire(&bar, &rectangle, &[], &options)
-        .unwrap_or_else(|e| panic!("twist {twist}: {e}"));
+    let shape =
+        sweep(&bar, &rectangle, &[], &options).unwrap_or_else(|e| panic!("twist {twist}: {e}"));
     assert_closed_oriented(shape.brep());
     let r = shape.report();
     assert!(
@@ -83,7 +83,7 @@ fn twists_beyond_what_an_edge_can_carry_name_the_twist() {
         twist: 1e6,
         ..WireSweep::default()
     };
-    let e = sweep_wire(&bar, &circle(1.0), &[], &options).unwrap_err();
+    let e = sweep(&bar, &circle(1.0), &[], &options).unwrap_err();
     assert!(e.message().contains("twist"), "{e}");
 }
 
@@ -97,7 +97,7 @@ fn a_pipe_route_takes_a_twist_of_several_turns() {
             twist,
             ..WireSweep::default()
         };
-        let shape = sweep_wire(&pipe_route(), &circle(1.0), &[], &options)
+        let shape = sweep(&pipe_route(), &circle(1.0), &[], &options)
             .unwrap_or_else(|e| panic!("twist {twist}: {e}"));
         assert_closed_oriented(shape.brep());
         assert!(shape.report().rmf_angle_error < 1e-9);
@@ -133,8 +133,8 @@ fn check_closed_miter(edges: &[Edge], radius: f64) {
         corner: Corner::Miter,
         ..WireSweep::default()
     };
-    let shape = sweep_wire(edges, &circle(radius), &[], &options)
-        .unwrap_or_else(|e| panic!("{edges:?}: {e}"));
+    let shape =
+        sweep(edges, &circle(radius), &[], &options).unwrap_or_else(|e| panic!("{edges:?}: {e}"));
     assert!(shape.is_solid());
     assert_closed_oriented(shape.brep());
     assert!(shape.report().seam_gap < 1e-12 * polygon_length(edges));
@@ -180,7 +180,7 @@ fn crossing(z: f64) -> Vec<Edge> {
 #[test]
 fn a_wire_crossing_itself_within_the_profile_is_refused() {
     for z in [0.0, 1.0, 1.99] {
-        let e = sweep_wire(&crossing(z), &circle(1.0), &[], &WireSweep::default()).unwrap_err();
+        let e = sweep(&crossing(z), &circle(1.0), &[], &WireSweep::default()).unwrap_err();
         assert!(
             e.message().contains("intersects itself")
                 && e.message().contains("edge 0")
@@ -191,10 +191,10 @@ fn a_wire_crossing_itself_within_the_profile_is_refused() {
             solid: false,
             ..WireSweep::default()
         };
-        assert!(sweep_wire(&crossing(z), &circle(1.0), &[], &sheet).is_err());
+        assert!(sweep(&crossing(z), &circle(1.0), &[], &sheet).is_err());
     }
     // Passing 0.01 above the reach of the profile: a valid solid of the closed-form volume.
-    let shape = sweep_wire(&crossing(2.01), &circle(1.0), &[], &WireSweep::default()).unwrap();
+    let shape = sweep(&crossing(2.01), &circle(1.0), &[], &WireSweep::default()).unwrap();
     assert!(shape.is_solid());
     assert_closed_oriented(shape.brep());
 }
@@ -216,7 +216,7 @@ fn looping_cubic(lift: f64) -> Edge {
 
 #[test]
 fn one_curve_edge_that_loops_through_itself_is_refused() {
-    let e = sweep_wire(
+    let e = sweep(
         &[looping_cubic(0.0)],
         &circle(0.2),
         &[],
@@ -227,7 +227,7 @@ fn one_curve_edge_that_loops_through_itself_is_refused() {
         e.message().contains("intersects itself") && e.message().contains("edge 0"),
         "{e}"
     );
-    let shape = sweep_wire(
+    let shape = sweep(
         &[looping_cubic(3.0)],
         &circle(0.2),
         &[],
@@ -260,9 +260,9 @@ fn coil(pitch: f64, turns: f64) -> Edge {
 #[test]
 fn a_coil_wound_tighter_than_its_profile_is_refused() {
     // Profile radius 0.5: the turns of a coil of pitch below 1 overlap.
-    let e = sweep_wire(&[coil(0.9, 3.0)], &circle(0.5), &[], &WireSweep::default()).unwrap_err();
+    let e = sweep(&[coil(0.9, 3.0)], &circle(0.5), &[], &WireSweep::default()).unwrap_err();
     assert!(e.message().contains("intersects itself"), "{e}");
-    let shape = sweep_wire(&[coil(1.1, 3.0)], &circle(0.5), &[], &WireSweep::default()).unwrap();
+    let shape = sweep(&[coil(1.1, 3.0)], &circle(0.5), &[], &WireSweep::default()).unwrap();
     assert!(shape.is_solid());
 }
 
@@ -295,7 +295,7 @@ pub(super) fn check_similar(
     s: f64,
     o: DVec3,
 ) {
-    let unit = sweep_wire(edges, profile, &[], options).unwrap();
+    let unit = sweep(edges, profile, &[], options).unwrap();
     let moved_edges = moved(edges, s, o);
     let scaled = WireSweep {
         tolerance: options.tolerance * s,
@@ -309,7 +309,7 @@ pub(super) fn check_similar(
         },
         ..options.clone()
     };
-    let shape = sweep_wire(&moved_edges, &profile.similar(s, DVec3::ZERO), &[], &scaled)
+    let shape = sweep(&moved_edges, &profile.similar(s, DVec3::ZERO), &[], &scaled)
         .unwrap_or_else(|e| panic!("scale {s:e}, offset {o}: {e}"));
     assert_eq!(shape.faces().len(), unit.faces().len(), "scale {s:e}");
     assert_eq!(shape.is_solid(), unit.is_solid());
@@ -552,7 +552,7 @@ proptest! {
     /// refused; one that passes above it is a valid solid.
     #[test]
     fn crossings_are_refused_and_passages_accepted(z in 0.0f64..4.0, r in 0.3f64..1.5) {
-        let result = sweep_wire(&crossing(z), &circle(r), &[], &WireSweep::default());
+        let result = sweep(&crossing(z), &circle(r), &[], &WireSweep::default());
         if z < 2.0 * r * (1.0 - 1e-4) {
             let e = result.unwrap_err();
             prop_assert!(e.message().contains("intersects itself"), "{}", e);
@@ -589,7 +589,7 @@ fn messages_quote_the_callers_tolerance_and_coordinates() {
             corner: Corner::Round(Some(2.0 * s)),
             ..WireSweep::default()
         };
-        let e = sweep_wire(&edges, &circle(s), &[], &options).unwrap_err();
+        let e = sweep(&edges, &circle(s), &[], &options).unwrap_err();
         let m = e.message();
         let up_to = format!("up to {:.3e}", 12.5 * s);
         assert!(

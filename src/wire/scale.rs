@@ -44,12 +44,12 @@ pub(crate) struct ScaleLaw {
 
 impl ScaleLaw {
     /// The identity law.
-    pub fn none() -> Self {
+    pub(super) fn none() -> Self {
         Self::linear(1.0, 1.0, 1.0)
     }
 
     /// From `start` to `end` over a wire of `length`.
-    pub fn linear(start: f64, end: f64, length: f64) -> Self {
+    pub(super) fn linear(start: f64, end: f64, length: f64) -> Self {
         Self {
             knots: vec![(0.0, start), (length, end)],
         }
@@ -57,7 +57,12 @@ impl ScaleLaw {
 
     /// From `start` through `values` (piece index starting at the knot, σ) to `end`, on
     /// pieces of `lengths`.
-    pub fn on_pieces(start: f64, values: &[(usize, f64)], end: f64, lengths: &[f64]) -> Self {
+    pub(super) fn on_pieces(
+        start: f64,
+        values: &[(usize, f64)],
+        end: f64,
+        lengths: &[f64],
+    ) -> Self {
         let at = |piece: usize| lengths[..piece].iter().sum::<f64>();
         let mut knots = vec![(0.0, start)];
         knots.extend(values.iter().map(|&(piece, value)| (at(piece), value)));
@@ -65,12 +70,12 @@ impl ScaleLaw {
         Self { knots }
     }
 
-    pub fn is_constant(&self) -> bool {
+    pub(super) fn is_constant(&self) -> bool {
         self.knots.iter().all(|k| k.1 == self.knots[0].1)
     }
 
     /// σ at arc length s.
-    pub fn at(&self, s: f64) -> f64 {
+    pub(super) fn at(&self, s: f64) -> f64 {
         if self.is_constant() {
             return self.knots[0].1;
         }
@@ -86,12 +91,12 @@ impl ScaleLaw {
     }
 
     /// The largest scale.
-    pub fn max(&self) -> f64 {
+    pub(super) fn max(&self) -> f64 {
         self.knots.iter().fold(0.0, |m, k| m.max(k.1))
     }
 
     /// The largest |dσ/ds|.
-    pub fn slope(&self) -> f64 {
+    pub(super) fn slope(&self) -> f64 {
         self.knots
             .windows(2)
             .filter(|w| w[1].0 > w[0].0)
@@ -294,7 +299,12 @@ pub(crate) enum SpineKind {
 
 impl PieceScale {
     /// σ on the piece whose spine starts at arc length `s0` of the wire.
-    pub fn new(spine: &PiecewiseCurve, kind: SpineKind, s0: f64, law: &ScaleLaw) -> Result<Self> {
+    pub(super) fn new(
+        spine: &PiecewiseCurve,
+        kind: SpineKind,
+        s0: f64,
+        law: &ScaleLaw,
+    ) -> Result<Self> {
         let n = spine.segments().len();
         let segments = match kind {
             SpineKind::Line(length) => vec![vec![law.at(s0), law.at(s0 + length)]],
@@ -324,13 +334,13 @@ impl PieceScale {
     }
 
     /// σ at the piece's start and end.
-    pub fn ends(&self) -> (f64, f64) {
+    pub(super) fn ends(&self) -> (f64, f64) {
         let last = &self.segments[self.segments.len() - 1];
         (self.segments[0][0], last[last.len() - 1])
     }
 
     /// σ's Bernstein coefficients on [v0, v1], which lies in one segment of the spine.
-    pub fn on(&self, v0: f64, v1: f64) -> Vec<f64> {
+    pub(super) fn on(&self, v0: f64, v1: f64) -> Vec<f64> {
         let (k, _) = locate(&self.breaks, 0.5 * (v0 + v1));
         let (a, b) = (self.breaks[k], self.breaks[k + 1]);
         let local = |v: f64| ((v - a) / (b - a)).clamp(0.0, 1.0);

@@ -20,7 +20,7 @@ fn knotted(scale: [f64; 2], knots: &[(f64, f64)]) -> WireSweep {
 fn knots_along_a_line_make_a_chain_of_exact_frustums() {
     let bar = [line([0., 0., 0.], [0., 0., 4.])];
     let options = knotted([1.0, 1.0], &[(0.25, 2.0), (0.75, 0.5)]);
-    let shape = sweep_wire(&bar, &circle(0.5), &[], &options).unwrap();
+    let shape = sweep(&bar, &circle(0.5), &[], &options).unwrap();
     assert!(shape.is_solid());
     crate::testing::assert_closed_oriented(shape.brep());
     let want =
@@ -38,7 +38,7 @@ fn knots_along_a_line_make_a_chain_of_exact_frustums() {
     println!("sections off 0.5 σ(z): {worst:.1e}");
     assert!(worst < 1e-14, "{worst}");
     // The law without its knots is a cylinder: the check can fail.
-    let plain = sweep_wire(&bar, &circle(0.5), &[], &knotted([1.0, 1.0], &[])).unwrap();
+    let plain = sweep(&bar, &circle(0.5), &[], &knotted([1.0, 1.0], &[])).unwrap();
     assert!((volume(&plain) - want).abs() > 0.1);
 }
 
@@ -50,7 +50,7 @@ fn a_knot_on_a_ph_helix_cuts_it_there_and_is_exact() {
         tolerance: 1e-6,
         ..knotted([a, c], &[(0.4, b)])
     };
-    let shape = sweep_wire(&edges, &circle(0.3), &[], &options).unwrap();
+    let shape = sweep(&edges, &circle(0.3), &[], &options).unwrap();
     crate::testing::assert_closed_oriented(shape.brep());
     let spine = shape.spine();
     assert_eq!(spine.len(), 2, "the helix cut at its knot");
@@ -78,7 +78,7 @@ fn a_knot_on_a_ph_helix_cuts_it_there_and_is_exact() {
 fn a_closed_wire_swells_through_its_knots_and_closes() {
     let loop_edges = square_loop();
     let options = knotted([1.0, 1.0], &[(0.3, 1.5), (0.6, 0.7)]);
-    let shape = sweep_wire(&loop_edges, &circle(0.5), &[], &options).unwrap();
+    let shape = sweep(&loop_edges, &circle(0.5), &[], &options).unwrap();
     assert!(shape.is_solid());
     crate::testing::assert_closed_oriented(shape.brep());
     // Lines and round corners (arcs) have their exact lengths: the knots at 0.3 and 0.6 of
@@ -93,7 +93,7 @@ fn a_closed_wire_swells_through_its_knots_and_closes() {
     println!("a closed square swelling 1 → 1.5 → 0.7 → 1: volume {v:.12} against {want:.12}, relative {error:.1e}");
     assert!(error < 4.0 * 1e-4 / 0.5, "{error:e}");
     // A scale law along the pipe route (lines and arcs): within the tolerance.
-    let route = sweep_wire(
+    let route = sweep(
         &pipe_route(),
         &square(0.5),
         &[],
@@ -107,7 +107,7 @@ fn a_closed_wire_swells_through_its_knots_and_closes() {
 fn knots_that_cannot_be_are_refused_naming_the_option() {
     let bar = [line([0., 0., 0.], [0., 0., 4.])];
     let refused = |knots: &[(f64, f64)]| {
-        sweep_wire(&bar, &circle(0.5), &[], &knotted([1.0, 1.0], knots))
+        sweep(&bar, &circle(0.5), &[], &knotted([1.0, 1.0], knots))
             .unwrap_err()
             .message()
     };
@@ -143,7 +143,7 @@ fn knots_that_cannot_be_are_refused_naming_the_option() {
         assert!(m.starts_with("scale_knots[0]: the scale"), "{m}");
     }
     // A knot is a scale law: refused with the exact-RMF methods and with an end profile.
-    let m = sweep_wire(
+    let m = sweep(
         &bar,
         &circle(0.5),
         &[],
@@ -155,7 +155,7 @@ fn knots_that_cannot_be_are_refused_naming_the_option() {
     .unwrap_err()
     .message();
     assert!(m.starts_with("scale:"), "{m}");
-    let m = sweep_wire_between(
+    let m = sweep_between(
         &bar,
         &circle(0.5),
         &[],

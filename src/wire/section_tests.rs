@@ -1,4 +1,4 @@
-//! Sweeps through sections (`sweep_wire_through`) against closed forms: circles through
+//! Sweeps through sections (`sweep_through`) against closed forms: circles through
 //! three radii along a line are a chain of exact frustums; a square → circle → triangle
 //! keeps its station's circle as a shared section (its edges on the circle, the faces on
 //! both sides meeting there) and its volume is Simpson's rule per interval; the pipe
@@ -23,7 +23,7 @@ fn circles_through_three_radii_along_a_line_are_exact_frustums() {
     let bar = [line([0., 0., 0.], [0., 0., 4.])];
     let (c0, c1, c2) = (circle(0.5), circle(1.0), circle(0.3));
     let sections = [at(0.0, &c0), at(0.25, &c1), at(1.0, &c2)];
-    let shape = sweep_wire_through(&bar, &sections, &WireSweep::default()).unwrap();
+    let shape = sweep_through(&bar, &sections, &WireSweep::default()).unwrap();
     assert!(shape.is_solid());
     crate::testing::assert_closed_oriented(shape.brep());
     let want = frustum(1.0, 1.0, 0.5, 1.0) + frustum(1.0, 3.0, 1.0, 0.3);
@@ -40,10 +40,9 @@ fn circles_through_three_radii_along_a_line_are_exact_frustums() {
     };
     let worst = off_circles(&shape, radius);
     assert!(worst < 1e-14, "{worst}");
-    // Two sections are sweep_wire_between, bit for bit.
-    let two =
-        sweep_wire_through(&bar, &[at(0.0, &c0), at(1.0, &c2)], &WireSweep::default()).unwrap();
-    let between = sweep_wire_between(&bar, &c0, &[], &c2, &[], &WireSweep::default()).unwrap();
+    // Two sections are sweep_between, bit for bit.
+    let two = sweep_through(&bar, &[at(0.0, &c0), at(1.0, &c2)], &WireSweep::default()).unwrap();
+    let between = sweep_between(&bar, &c0, &[], &c2, &[], &WireSweep::default()).unwrap();
     assert_eq!(two.faces().len(), between.faces().len());
     for (a, b) in two.faces().iter().zip(between.faces()) {
         if let (Some(a), Some(b)) = (&a.surface, &b.surface) {
@@ -84,7 +83,7 @@ fn a_square_through_a_circle_into_a_triangle_shares_its_middle_section() {
     let bar = [line([0., 0., 0.], [0., 0., 6.])];
     let (sq, ci, tr) = (square(0.5), circle(0.6), triangle(0.7));
     let sections = [at(0.0, &sq), at(0.5, &ci), at(1.0, &tr)];
-    let shape = sweep_wire_through(&bar, &sections, &WireSweep::default()).unwrap();
+    let shape = sweep_through(&bar, &sections, &WireSweep::default()).unwrap();
     assert!(shape.is_solid());
     crate::testing::assert_closed_oriented(shape.brep());
     // The faces' edges at the station lie on the circle (z = 3): the section is the circle.
@@ -146,7 +145,7 @@ fn circles_through_four_radii_along_the_pipe_route() {
         tolerance: 1e-6,
         ..WireSweep::default()
     };
-    let shape = sweep_wire_through(&route, &sections, &options).unwrap();
+    let shape = sweep_through(&route, &sections, &options).unwrap();
     crate::testing::assert_closed_oriented(shape.brep());
     let length: f64 = shape.spine().iter().map(|c| c.arc_length()).sum();
     let want = frustum(1.0, 0.3 * length, 0.5, 0.8)
@@ -165,7 +164,7 @@ fn sections_that_cannot_be_are_refused_naming_them() {
     let (c, s) = (circle(0.5), square(0.5));
     let ring_hole = [circle(0.2)];
     let refused = |sections: &[Section]| {
-        sweep_wire_through(&bar, sections, &WireSweep::default())
+        sweep_through(&bar, sections, &WireSweep::default())
             .unwrap_err()
             .message()
     };
@@ -197,7 +196,7 @@ fn sections_that_cannot_be_are_refused_naming_them() {
     assert!(m.contains("sections[1]") && m.contains("holes"), "{m}");
     // A closed wire, a scale law.
     let loop_edges = square_loop();
-    let m = sweep_wire_through(
+    let m = sweep_through(
         &loop_edges,
         &[at(0.0, &c), at(0.5, &s), at(1.0, &c)],
         &WireSweep::default(),
@@ -205,7 +204,7 @@ fn sections_that_cannot_be_are_refused_naming_them() {
     .unwrap_err()
     .message();
     assert!(m.starts_with("sections: a closed wire"), "{m}");
-    let m = sweep_wire_through(
+    let m = sweep_through(
         &bar,
         &[at(0.0, &c), at(0.5, &s), at(1.0, &c)],
         &WireSweep {
@@ -230,7 +229,7 @@ fn sweeps_through_sections_are_the_same_from_1e_200_to_1e200() {
         ]
     };
     let through = |edges: &[Edge], p: &[PiecewiseCurve; 3], tolerance: f64| {
-        sweep_wire_through(
+        sweep_through(
             edges,
             &[at(0.0, &p[0]), at(0.4, &p[1]), at(1.0, &p[2])],
             &WireSweep {

@@ -107,7 +107,7 @@ fn relative(a: f64, b: f64) -> f64 {
 #[test]
 fn a_pipe_route_of_lines_and_an_arc_is_an_exact_solid() {
     let options = WireSweep::default();
-    let shape = sweep_wire(&pipe_route(), &circle(1.0), &[], &options).unwrap();
+    let shape = sweep(&pipe_route(), &circle(1.0), &[], &options).unwrap();
     assert!(shape.is_solid());
     assert_eq!(
         shape.faces().len(),
@@ -172,7 +172,7 @@ fn the_issues_rounded_pipe_route_sweeps_with_round_and_miter_corners() {
             corner,
             ..WireSweep::default()
         };
-        let shape = sweep_wire(&edges, &circle(1.0), &[], &options).unwrap();
+        let shape = sweep(&edges, &circle(1.0), &[], &options).unwrap();
         assert_closed_oriented(shape.brep());
         let r = shape.report();
         println!(
@@ -187,7 +187,7 @@ fn the_issues_rounded_pipe_route_sweeps_with_round_and_miter_corners() {
 
 #[test]
 fn a_hollow_pipe_has_holes_and_the_volume_of_the_annulus() {
-    let shape = sweep_wire(
+    let shape = sweep(
         &pipe_route(),
         &circle(1.0),
         &[circle(0.8)],
@@ -229,7 +229,7 @@ fn round_and_miter_corners_give_solids_with_the_closed_form_volume() {
             corner,
             ..WireSweep::default()
         };
-        let shape = sweep_wire(&staircase(), &square(0.5), &[], &options).unwrap();
+        let shape = sweep(&staircase(), &square(0.5), &[], &options).unwrap();
         assert_closed_oriented(shape.brep());
         let v = volume(&shape);
         let turn = shape.report().corner_turn;
@@ -266,7 +266,7 @@ fn a_rounded_rectangle_closes_without_a_seam() {
         line([-1., 2., 0.], [-1., 0., 0.]),
         arc((0., 0.), PI),
     ];
-    let shape = sweep_wire(&edges, &square(0.2), &[], &WireSweep::default()).unwrap();
+    let shape = sweep(&edges, &square(0.2), &[], &WireSweep::default()).unwrap();
     assert!(shape.is_solid());
     assert_eq!(shape.faces().len(), 32, "no caps");
     assert_closed_oriented(shape.brep());
@@ -292,7 +292,7 @@ fn a_ring_swept_round_a_closed_wire_is_a_solid_with_a_cavity() {
         line([20., 20., 0.], [0., 20., 0.]),
         line([0., 20., 0.], [0., 0., 0.]),
     ];
-    let shape = sweep_wire(&edges, &circle(2.0), &[circle(1.0)], &WireSweep::default()).unwrap();
+    let shape = sweep(&edges, &circle(2.0), &[circle(1.0)], &WireSweep::default()).unwrap();
     assert!(shape.is_solid());
     assert_closed_oriented(shape.brep());
     let shells = shape.brep().shells();
@@ -346,7 +346,7 @@ fn a_closed_nurbs_closes_modulo_the_profile_symmetry() {
             closure_symmetry: k,
             ..WireSweep::default()
         };
-        let shape = sweep_wire(&[Edge::Curve(curve.clone())], &square(0.3), &[], &options).unwrap();
+        let shape = sweep(&[Edge::Curve(curve.clone())], &square(0.3), &[], &options).unwrap();
         assert!(shape.is_solid());
         assert_closed_oriented(shape.brep());
         let r = shape.report();
@@ -367,7 +367,7 @@ fn bad_wires_and_profiles_are_refused_naming_the_edge_or_joint() {
     let d = WireSweep::default();
     let message =
         |edges: &[Edge], profile: &PiecewiseCurve, holes: &[PiecewiseCurve], o: &WireSweep| {
-            sweep_wire(edges, profile, holes, o).unwrap_err().message()
+            sweep(edges, profile, holes, o).unwrap_err().message()
         };
     let gap = [
         line([0., 0., 0.], [1., 0., 0.]),
@@ -392,7 +392,7 @@ fn bad_wires_and_profiles_are_refused_naming_the_edge_or_joint() {
         solid: false,
         ..d.clone()
     };
-    let shape = sweep_wire(&staircase(), &open, &[], &sheet).unwrap();
+    let shape = sweep(&staircase(), &open, &[], &sheet).unwrap();
     assert!(!shape.is_solid() && shape.faces().iter().all(|f| f.kind == FaceKind::Swept));
     assert!(message(&staircase(), &open, &[circle(0.1)], &sheet).contains("holes need a closed"));
     let big = WireSweep {
@@ -443,7 +443,7 @@ fn results_do_not_depend_on_scale_or_position() {
         corner: Corner::Round(Some(1.0)),
         ..WireSweep::default()
     };
-    let unit = sweep_wire(&staircase(), &square(0.5), &[], &options).unwrap();
+    let unit = sweep(&staircase(), &square(0.5), &[], &options).unwrap();
     for (scale, shift) in [
         (1e-200, DVec3::ZERO),
         (1e200, DVec3::ZERO),
@@ -465,7 +465,7 @@ fn results_do_not_depend_on_scale_or_position() {
             corner: Corner::Round(Some(scale)),
             ..options.clone()
         };
-        let shape = sweep_wire(&moved, &profile, &[], &o).unwrap();
+        let shape = sweep(&moved, &profile, &[], &o).unwrap();
         crate::testing::assert_similar_breps(unit.brep(), shape.brep(), scale, shift);
         assert_eq!(shape.faces().len(), unit.faces().len());
         for (a, b) in unit.faces().iter().zip(shape.faces()) {
@@ -492,7 +492,7 @@ fn a_twist_turns_the_frame_along_lines_and_arcs_and_keeps_the_solid() {
         twist: 1.5,
         ..WireSweep::default()
     };
-    let shape = sweep_wire(&staircase(), &square(0.5), &[], &options).unwrap();
+    let shape = sweep(&staircase(), &square(0.5), &[], &options).unwrap();
     assert_closed_oriented(shape.brep());
     let r = shape.report();
     println!(
@@ -513,7 +513,7 @@ fn a_twist_turns_the_frame_along_lines_and_arcs_and_keeps_the_solid() {
         volume(&shape)
     );
     // The frame turns by the twist in all: the end section is the untwisted one turned.
-    let plain = sweep_wire(
+    let plain = sweep(
         &staircase(),
         &square(0.5),
         &[],
@@ -550,7 +550,7 @@ fn a_closed_3d_polyline_closes_by_a_turn_spread_over_lines_and_elbows() {
         corner: Corner::Round(Some(1.0)),
         ..WireSweep::default()
     };
-    let shape = sweep_wire(&edges, &circle(0.3), &[], &options).unwrap();
+    let shape = sweep(&edges, &circle(0.3), &[], &options).unwrap();
     assert!(shape.is_solid());
     assert_closed_oriented(shape.brep());
     let r = shape.report();
@@ -569,7 +569,7 @@ fn a_closed_3d_polyline_closes_by_a_turn_spread_over_lines_and_elbows() {
         corner: Corner::Miter,
         ..options
     };
-    let e = sweep_wire(&edges, &circle(0.3), &[], &miter).unwrap_err();
+    let e = sweep(&edges, &circle(0.3), &[], &miter).unwrap_err();
     assert!(e.message().contains("every edge is a miter leg"), "{e}");
 }
 
@@ -589,7 +589,7 @@ fn a_ph_spline_edge_is_used_as_it_is() {
     let spline = crate::ph_cubic::ph_spline_hermite(&points, &tangents)
         .unwrap()
         .into_curve();
-    let shape = sweep_wire(
+    let shape = sweep(
         &[Edge::Curve(spline.clone())],
         &circle(0.2),
         &[],
@@ -607,7 +607,7 @@ fn a_ph_spline_edge_is_used_as_it_is() {
 #[test]
 fn wires_of_subnormal_or_huge_size_are_refused() {
     let tiny = circle(1.0).similar(6.25e-313, DVec3::ZERO);
-    let e = sweep_wire(
+    let e = sweep(
         &[Edge::Curve(tiny)],
         &circle(1e-313),
         &[],
@@ -616,9 +616,9 @@ fn wires_of_subnormal_or_huge_size_are_refused() {
     .unwrap_err();
     assert!(e.message().contains("outside [1e-290, 1e290]"), "{e}");
     let huge = [line([0., 0., 0.], [1e300, 0., 0.])];
-    assert!(sweep_wire(&huge, &circle(1e299), &[], &WireSweep::default()).is_err());
+    assert!(sweep(&huge, &circle(1e299), &[], &WireSweep::default()).is_err());
     let out_of_proportion = [line([0., 0., 0.], [1e-200, 0., 0.])];
-    let e = sweep_wire(
+    let e = sweep(
         &out_of_proportion,
         &circle(1e200),
         &[],
@@ -657,7 +657,7 @@ fn the_singularity_margin_along_a_curve_is_the_whole_profiles() {
         crate::primitives::circle(DVec3::new(0.0, y, 0.0), DVec3::X, DVec3::Y, radius).unwrap()
     };
     let toward = |y: f64, holes: &[PiecewiseCurve]| {
-        sweep_wire(&edges, &off(y, r), holes, &options).map(|s| {
+        sweep(&edges, &off(y, r), holes, &options).map(|s| {
             let spine = &s.spine()[0];
             let (lo, hi) = spine.domain();
             let kappa = (0..=20_000)

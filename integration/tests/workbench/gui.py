@@ -151,7 +151,7 @@ def run():
         features(doc, "RmfUnfold")[1].Placement.Base = V(150, 90, 0)
         doc.recompute()
     else:
-        say("  RmfSurf_Transition: NOT RUN: this librmfsurf has no rmf_cone_spline_transition")
+        say("  RmfSurf_Transition: NOT RUN: this librmfsurf has no rmf_sheet_part_transition")
 
     path = os.path.join(WORK, "gui_export.dxf")
     QtGui.QFileDialog.getSaveFileName = staticmethod(lambda *a, **k: (path, "DXF (*.dxf)"))

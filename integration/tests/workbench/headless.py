@@ -864,7 +864,7 @@ def part_d(doc):
     import rmfsurf.freecad as rf
     import rmfsurf_workbench as wb
     if not rf.has_transitions():
-        say("  NOT RUN: this librmfsurf has no rmf_cone_spline_transition")
+        say("  NOT RUN: this librmfsurf has no rmf_sheet_part_transition")
         return [], None
     bottom = polyline_sketch(doc, "Square", FreeCAD.Placement(),
                              [(-100, -100, 0), (100, -100, 0), (100, 100, 0), (-100, 100, 0),
@@ -1055,7 +1055,7 @@ def part_f(wire_sweeps):
                 kinds.count("RmfTransition") == 1 and kinds.count("RmfUnfold") == 2
                 and all(o.isValid() for o in made))
     else:
-        say("  RmfTransition.FCMacro: NOT RUN: this librmfsurf has no rmf_cone_spline_transition")
+        say("  RmfTransition.FCMacro: NOT RUN: this librmfsurf has no rmf_sheet_part_transition")
     FreeCAD.closeDocument(doc.Name)
 
 

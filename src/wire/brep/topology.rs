@@ -350,11 +350,7 @@ pub(super) fn loop_curve(uses: &[BrepUse], edges: &[BrepEdge]) -> Result<Piecewi
     let mut breaks = vec![0.0];
     for u in uses {
         let piece = edges[u.edge].curve.to_piecewise()?;
-        let piece = if u.forward {
-            piece
-        } else {
-            super::super::edge::reversed(&piece)
-        };
+        let piece = if u.forward { piece } else { piece.reversed() };
         let (lo, _) = piece.domain();
         let offset = breaks[breaks.len() - 1] - lo;
         segments.extend_from_slice(piece.segments());
