@@ -1,5 +1,5 @@
 // rmfsurf_occ.hpp — header-only: an OpenCascade shape built from the library's boundary
-// representation (RmfBrep: rmf_shape_brep for a wire sweep, rmf_cone_spline_part_brep for a
+// representation (RmfBrep: rmf_shape_brep for a wire sweep, rmf_sheet_part_brep for a
 // sheet-metal part) with BRep_Builder, as the kernel holds it: one TopoDS_Edge per shared
 // edge with its curve on each face, seams as seams, degenerate edges at cone apices, the
 // loops and faces' senses as the library made them. No sewing, no STEP file, no ShapeFix:

@@ -2,7 +2,7 @@
 //! edges with their 3-D curve, oriented loops of edge uses with each edge's curve in the
 //! face's parameter plane, faces with their surface and sense, shells — as counts and
 //! borrowed views (the model of `rmfsurf::Brep`). Wire sweeps (rmf_shape_brep) and sheet
-//! parts (rmf_cone_spline_part_brep) hand it out; `include/rmfsurf_occ.hpp` builds an
+//! parts (rmf_sheet_part_brep) hand it out; `include/rmfsurf_occ.hpp` builds an
 //! OpenCascade shape from it with BRep_Builder.
 
 use super::boundary::{

@@ -11,6 +11,7 @@ use rmfsurf_capi::cone_spline::{rmf_cone_spline_free, RmfConeSpline};
 use rmfsurf_capi::curve::rmf_curve_free;
 use rmfsurf_capi::frames::rmf_frames_free;
 use rmfsurf_capi::shape::rmf_shape_free;
+use rmfsurf_capi::sheet::{rmf_sheet_part_free, RmfSheetPart};
 use rmfsurf_capi::status::rmf_last_error;
 use rmfsurf_capi::surface::rmf_surface_free;
 use rmfsurf_capi::{RmfCurve, RmfFrames, RmfShape, RmfStatus, RmfSurface, RmfVec3};
@@ -132,6 +133,7 @@ pub struct Pool {
     pub frames: Vec<*mut RmfFrames>,
     pub surfaces: Vec<*mut RmfSurface>,
     pub splines: Vec<*mut RmfConeSpline>,
+    pub parts: Vec<*mut RmfSheetPart>,
     pub shapes: Vec<*mut RmfShape>,
 }
 
@@ -143,6 +145,7 @@ impl Drop for Pool {
             self.frames.drain(..).for_each(|h| rmf_frames_free(h));
             self.surfaces.drain(..).for_each(|h| rmf_surface_free(h));
             self.splines.drain(..).for_each(|h| rmf_cone_spline_free(h));
+            self.parts.drain(..).for_each(|h| rmf_sheet_part_free(h));
             self.shapes.drain(..).for_each(|h| rmf_shape_free(h));
         }
     }
@@ -205,6 +208,10 @@ impl<'a> Session<'a> {
         pick(&mut self.input, &self.pool.splines)
     }
 
+    pub fn part(&mut self) -> *const RmfSheetPart {
+        pick(&mut self.input, &self.pool.parts)
+    }
+
     pub fn shape(&mut self) -> *const RmfShape {
         pick(&mut self.input, &self.pool.shapes)
     }
@@ -235,6 +242,11 @@ impl<'a> Session<'a> {
     pub fn made_spline(&mut self, function: &str, status: RmfStatus, s: *mut RmfConeSpline) {
         let ok = status_ok(function, status);
         adopt(function, ok, s, &mut self.pool.splines);
+    }
+
+    pub fn made_part(&mut self, function: &str, status: RmfStatus, p: *mut RmfSheetPart) {
+        let ok = status_ok(function, status);
+        adopt(function, ok, p, &mut self.pool.parts);
     }
 
     pub fn made_shape(&mut self, function: &str, status: RmfStatus, s: *mut RmfShape) {

@@ -4,7 +4,9 @@
 //! reference); parts between the rails of drawn ruled surfaces (generalised cylinders,
 //! developable, or drawn poles, mostly not) and of tangent surfaces of pool curves between
 //! drawn distances; then reports, layer surfaces and boundaries, flat patterns, marks both ways
-//! and exports of whatever part was made.
+//! and exports of whatever part was made. Each operation takes, as the input draws, an
+//! `RmfSheetPart` with the rmf_sheet_part_* calls or an `RmfConeSpline` with the deprecated
+//! rmf_cone_spline_* ones (which refuse a spline that holds no part).
 
 // The deprecated C entry points are fuzzed for as long as they are exported.
 #![allow(deprecated)]
@@ -27,6 +29,7 @@ pub const OPS: &[fn(&mut Session)] = &[
     ruled_surface,
     part,
     tangent_part,
+    part_cone_spline,
     report,
     layer,
     flat_pattern,
@@ -34,6 +37,50 @@ pub const OPS: &[fn(&mut Session)] = &[
     export,
     part_brep,
 ];
+
+/// A part to read: an `RmfSheetPart` or a cone spline (which may hold one), as drawn.
+#[derive(Clone, Copy)]
+enum Part {
+    New(*const RmfSheetPart),
+    Old(*const RmfConeSpline),
+}
+
+impl Part {
+    fn drawn(s: &mut Session) -> Self {
+        if s.input.flag() {
+            Part::New(s.part())
+        } else {
+            Part::Old(s.spline())
+        }
+    }
+}
+
+/// Calls the rmf_sheet_part_* function or its deprecated rmf_cone_spline_* wrapper on a
+/// drawn part: (the function's name, its status).
+macro_rules! on_part {
+    ($part:expr, $new:ident, $old:ident $(, $arg:expr)*) => {
+        match $part {
+            Part::New(p) => (stringify!($new), unsafe { $new(p $(, $arg)*) }),
+            Part::Old(p) => (stringify!($old), unsafe { $old(p $(, $arg)*) }),
+        }
+    };
+}
+
+/// Makes a part with the rmf_sheet_part_* constructor or its deprecated wrapper (as the
+/// input draws) and adds it to its pool.
+macro_rules! make_part {
+    ($s:expr, $new:ident, $old:ident $(, $arg:expr)*) => {
+        if $s.input.flag() {
+            let mut out = poisoned::<*mut RmfSheetPart>();
+            let status = unsafe { $new($($arg,)* &mut out) };
+            $s.made_part(stringify!($new), status, out);
+        } else {
+            let mut out = poisoned::<*mut RmfConeSpline>();
+            let status = unsafe { $old($($arg,)* &mut out) };
+            $s.made_spline(stringify!($old), status, out);
+        }
+    };
+}
 
 fn add(a: RmfVec3, b: RmfVec3, s: f64) -> RmfVec3 {
     RmfVec3 {
@@ -138,16 +185,15 @@ fn options(s: &mut Session) -> Option<RmfSheetOptions> {
 fn transition(s: &mut Session) {
     let (bottom, top) = (s.curve(), s.curve());
     let o = options(s);
-    let mut out = poisoned::<*mut RmfConeSpline>();
-    let status = unsafe {
-        rmf_cone_spline_transition(
-            bottom,
-            top,
-            o.as_ref().map_or(null(), |o| o as *const RmfSheetOptions),
-            &mut out,
-        )
-    };
-    s.made_spline("rmf_cone_spline_transition", status, out);
+    let o = o.as_ref().map_or(null(), |o| o as *const RmfSheetOptions);
+    make_part!(
+        s,
+        rmf_sheet_part_transition,
+        rmf_cone_spline_transition,
+        bottom,
+        top,
+        o
+    );
 }
 
 /// A degree (1, 3) surface, added to the pool: a drawn cubic and its translate by a drawn
@@ -184,39 +230,51 @@ fn ruled_surface(s: &mut Session) {
 fn part(s: &mut Session) {
     let surface = s.surface();
     let o = options(s);
-    let mut out = poisoned::<*mut RmfConeSpline>();
-    let status = unsafe {
-        rmf_cone_spline_part(
-            surface,
-            o.as_ref().map_or(null(), |o| o as *const RmfSheetOptions),
-            &mut out,
-        )
-    };
-    s.made_spline("rmf_cone_spline_part", status, out);
+    let o = o.as_ref().map_or(null(), |o| o as *const RmfSheetOptions);
+    make_part!(
+        s,
+        rmf_sheet_part_between_rails,
+        rmf_cone_spline_part,
+        surface,
+        o
+    );
 }
 
 fn tangent_part(s: &mut Session) {
     let curve = s.curve();
     let (v_min, v_max) = (s.input.f64(), s.input.f64());
     let o = options(s);
+    let o = o.as_ref().map_or(null(), |o| o as *const RmfSheetOptions);
+    make_part!(
+        s,
+        rmf_sheet_part_tangent,
+        rmf_cone_spline_tangent_part,
+        curve,
+        v_min,
+        v_max,
+        o
+    );
+}
+
+/// A part's designed surface as a cone spline, added to the cone spline pool (where the
+/// deprecated part calls find the part it holds).
+fn part_cone_spline(s: &mut Session) {
+    let part = s.part();
     let mut out = poisoned::<*mut RmfConeSpline>();
-    let status = unsafe {
-        rmf_cone_spline_tangent_part(
-            curve,
-            v_min,
-            v_max,
-            o.as_ref().map_or(null(), |o| o as *const RmfSheetOptions),
-            &mut out,
-        )
-    };
-    s.made_spline("rmf_cone_spline_tangent_part", status, out);
+    let status = unsafe { rmf_sheet_part_cone_spline(part, &mut out) };
+    s.made_spline("rmf_sheet_part_cone_spline", status, out);
 }
 
 fn report(s: &mut Session) {
-    let part = s.spline();
+    let part = Part::drawn(s);
     let mut r = poisoned::<RmfSheetReport>();
-    let status = unsafe { rmf_cone_spline_part_report(part, &mut r) };
-    if checked("rmf_cone_spline_part_report", status, &[is_poisoned(&r)]) {
+    let (name, status) = on_part!(
+        part,
+        rmf_sheet_part_report,
+        rmf_cone_spline_part_report,
+        &mut r
+    );
+    if checked(name, status, &[is_poisoned(&r)]) {
         assert!(
             r.pieces > 0 && r.deviation >= 0.0 && r.edge_distance.iter().all(|d| d.is_finite())
         );
@@ -228,18 +286,31 @@ fn report(s: &mut Session) {
 }
 
 fn layer(s: &mut Session) {
-    let (part, code) = (s.spline(), s.input.code());
+    let (part, code) = (Part::drawn(s), s.input.code());
     let mut surface = poisoned();
-    let status = unsafe { rmf_cone_spline_part_surface(part, code, &mut surface) };
-    s.made_surface("rmf_cone_spline_part_surface", status, surface);
+    let (name, status) = on_part!(
+        part,
+        rmf_sheet_part_surface,
+        rmf_cone_spline_part_surface,
+        code,
+        &mut surface
+    );
+    s.made_surface(name, status, surface);
     let side = s.input.code();
     let mut curve = poisoned();
-    let status = unsafe { rmf_cone_spline_part_boundary(part, code, side, &mut curve) };
-    s.made("rmf_cone_spline_part_boundary", status, Some(curve), None);
+    let (name, status) = on_part!(
+        part,
+        rmf_sheet_part_boundary,
+        rmf_cone_spline_part_boundary,
+        code,
+        side,
+        &mut curve
+    );
+    s.made(name, status, Some(curve), None);
 }
 
 fn flat_pattern(s: &mut Session) {
-    let part = s.spline();
+    let part = Part::drawn(s);
     let capacity = s.input.work().min(4096);
     let mut edges = poisoned_buffer::<RmfFlatEdge>(capacity);
     let mut count = poisoned::<usize>();
@@ -248,10 +319,17 @@ fn flat_pattern(s: &mut Session) {
     } else {
         edges.as_mut_ptr()
     };
-    let status = unsafe { rmf_cone_spline_flat_pattern(part, pointer, capacity, &mut count) };
+    let (name, status) = on_part!(
+        part,
+        rmf_sheet_part_flat_pattern,
+        rmf_cone_spline_flat_pattern,
+        pointer,
+        capacity,
+        &mut count
+    );
     let too_small = status == RmfStatus::RmfErrorBufferTooSmall;
     if checked(
-        "rmf_cone_spline_flat_pattern",
+        name,
         status,
         &[
             edges.iter().all(is_poisoned),
@@ -272,7 +350,7 @@ fn flat_pattern(s: &mut Session) {
 }
 
 fn marks(s: &mut Session) {
-    let (part, n, code) = (s.spline(), s.input.len(6), s.input.code());
+    let (part, n, code) = (Part::drawn(s), s.input.len(6), s.input.code());
     let flat: Vec<RmfVec2> = (0..n)
         .map(|_| RmfVec2 {
             x: s.input.f64(),
@@ -281,18 +359,18 @@ fn marks(s: &mut Session) {
         .collect();
     let mut points = poisoned_buffer::<RmfVec3>(n);
     let mut normals = poisoned_buffer::<RmfVec3>(n);
-    let status = unsafe {
-        rmf_cone_spline_flat_to_surface(
-            part,
-            flat.as_ptr(),
-            n,
-            code,
-            points.as_mut_ptr(),
-            normals.as_mut_ptr(),
-        )
-    };
+    let (name, status) = on_part!(
+        part,
+        rmf_sheet_part_flat_to_surface,
+        rmf_cone_spline_flat_to_surface,
+        flat.as_ptr(),
+        n,
+        code,
+        points.as_mut_ptr(),
+        normals.as_mut_ptr()
+    );
     let ok = checked(
-        "rmf_cone_spline_flat_to_surface",
+        name,
         status,
         &[
             points.iter().all(is_poisoned),
@@ -306,34 +384,34 @@ fn marks(s: &mut Session) {
     };
     let max_distance = s.input.f64();
     let mut back = poisoned_buffer::<RmfVec2>(n);
-    let status = unsafe {
-        rmf_cone_spline_surface_to_flat(
-            part,
-            targets.as_ptr(),
-            n,
-            code,
-            max_distance,
-            back.as_mut_ptr(),
-        )
-    };
-    if checked(
-        "rmf_cone_spline_surface_to_flat",
-        status,
-        &[back.iter().all(is_poisoned)],
-    ) {
+    let (name, status) = on_part!(
+        part,
+        rmf_sheet_part_surface_to_flat,
+        rmf_cone_spline_surface_to_flat,
+        targets.as_ptr(),
+        n,
+        code,
+        max_distance,
+        back.as_mut_ptr()
+    );
+    if checked(name, status, &[back.iter().all(is_poisoned)]) {
         assert!(back.iter().all(|p| p.x.is_finite() && p.y.is_finite()));
     }
 }
 
 fn export(s: &mut Session) {
-    let (part, format) = (s.spline(), s.input.code());
+    let (part, format) = (Part::drawn(s), s.input.code());
     let mut length = poisoned::<usize>();
-    let status = unsafe { rmf_cone_spline_part_export(part, format, null_mut(), 0, &mut length) };
-    if !checked(
-        "rmf_cone_spline_part_export",
-        status,
-        &[is_poisoned(&length)],
-    ) {
+    let (name, status) = on_part!(
+        part,
+        rmf_sheet_part_export,
+        rmf_cone_spline_part_export,
+        format,
+        null_mut(),
+        0,
+        &mut length
+    );
+    if !checked(name, status, &[is_poisoned(&length)]) {
         return;
     }
     let capacity = if s.input.flag() {
@@ -343,18 +421,18 @@ fn export(s: &mut Session) {
     };
     let mut text = poisoned_buffer::<u8>(capacity);
     let mut written = poisoned::<usize>();
-    let status = unsafe {
-        rmf_cone_spline_part_export(
-            part,
-            format,
-            text.as_mut_ptr().cast(),
-            capacity,
-            &mut written,
-        )
-    };
+    let (name, status) = on_part!(
+        part,
+        rmf_sheet_part_export,
+        rmf_cone_spline_part_export,
+        format,
+        text.as_mut_ptr().cast(),
+        capacity,
+        &mut written
+    );
     let too_small = status == RmfStatus::RmfErrorBufferTooSmall;
     if checked(
-        "rmf_cone_spline_part_export",
+        name,
         status,
         &[
             text.iter().all(is_poisoned) || capacity == 0,
@@ -367,13 +445,18 @@ fn export(s: &mut Session) {
     }
 }
 
-/// The B-rep model of the part's solid (rmf_cone_spline_part_brep), walked and freed
+/// The B-rep model of the part's solid (rmf_sheet_part_brep), walked and freed
 /// (`brep::walk`); a cone spline that is not a part is refused unwritten.
 fn part_brep(s: &mut Session) {
-    let part = s.spline();
+    let part = Part::drawn(s);
     let mut brep = poisoned::<*mut rmfsurf_capi::RmfBrep>();
-    let status = unsafe { rmfsurf_capi::sheet::rmf_cone_spline_part_brep(part, &mut brep) };
-    if checked("rmf_cone_spline_part_brep", status, &[is_poisoned(&brep)]) {
+    let (name, status) = on_part!(
+        part,
+        rmf_sheet_part_brep,
+        rmf_cone_spline_part_brep,
+        &mut brep
+    );
+    if checked(name, status, &[is_poisoned(&brep)]) {
         super::brep::walk(brep);
     }
 }
