@@ -10,7 +10,7 @@
 
 use crate::bezier::{PiecewiseCurve, RationalBezierCurve};
 use crate::error::{invalid, Result};
-use crate::math::{bounding_diagonal, signed_angle};
+use crate::math::{bounding_diagonal, power_of_two_inverse, signed_angle};
 use glam::DVec3;
 use std::f64::consts::{PI, TAU};
 
@@ -148,8 +148,11 @@ impl ConvexProfile {
             .iter()
             .flat_map(|s| (0..16).map(move |k| s.eval(k as f64 / 16.0)))
             .collect();
-        let area = area_vector(&samples);
-        if area.length() <= 1e-12 * size * size {
+        // At unit size (a power of two, exact), where the area's products cannot overflow.
+        let unit = power_of_two_inverse(size);
+        let area = area_vector(&samples.iter().map(|&p| p * unit).collect::<Vec<_>>());
+        let measured = area.length();
+        if measured.is_nan() || measured <= 1e-12 * (size * unit).powi(2) {
             return invalid!("{name} encloses no area (its points are collinear)");
         }
         let normal = area.normalize();
@@ -165,7 +168,20 @@ impl ConvexProfile {
                 "{name} is not planar: control point {k} is {flatness:.3e} from the plane of the curve"
             );
         }
-        let x = (samples[0] - origin - (samples[0] - origin).dot(normal) * normal).normalize();
+        // The in-plane direction to the first sample, or to the farthest where the first
+        // lies at the centre (a curve that is not convex may start there).
+        let radial = |p: DVec3| (p - origin) - (p - origin).dot(normal) * normal;
+        let first = radial(samples[0]);
+        let x = if first.length() > tol {
+            first.normalize()
+        } else {
+            samples
+                .iter()
+                .map(|&p| radial(p))
+                .max_by(|a, b| a.length_squared().total_cmp(&b.length_squared()))
+                .unwrap_or(first)
+                .normalize()
+        };
         let plane = Plane {
             origin,
             normal,
@@ -450,7 +466,8 @@ fn gauss_map(
         }
     }
     let total = theta - features[0].from;
-    if (total - TAU).abs() > 1e-6 {
+    // A non-finite turn (from a degenerate tangent) is refused too.
+    if total.is_nan() || (total - TAU).abs() > 1e-6 {
         return invalid!(
             "{name} is not a simple convex curve: its tangent turns by {:.6} rad in all, not 2π",
             total
@@ -550,6 +567,30 @@ pub(crate) mod tests {
             DVec3::new(1.0, 1.0, 0.0),
             DVec3::new(-1.0, 1.0, 0.0),
         ])
+    }
+
+    #[test]
+    fn a_curve_flat_to_rounding_at_a_size_near_the_top_of_the_range_encloses_no_area() {
+        // 1e273 along x, 1e81 along y, 0.4 along z: its area vector's products overflowed
+        // to NaN, and the NaN plane led to a panic further on.
+        let (a, b) = (
+            DVec3::new(1.08e273, -9.5e80, -0.1),
+            DVec3::new(1.08e273, -9.5e80, 0.4),
+        );
+        let curve = polygon(&[a, DVec3::new(0.0, 0.0, 0.0), b]);
+        let e = ConvexProfile::new(&curve, "bottom").unwrap_err();
+        assert!(
+            e.message().contains("bottom encloses no area"),
+            "{}",
+            e.message()
+        );
+        // The same triangle at a size in range is a profile.
+        let unit = 1e-272;
+        assert!(ConvexProfile::new(
+            &polygon(&[a * unit, DVec3::ZERO, DVec3::new(0.0, 1.0, 0.0)]),
+            "bottom"
+        )
+        .is_ok());
     }
 
     #[test]
