@@ -277,15 +277,6 @@ impl PartHandle {
     }
 }
 
-/// The part's handle (with its texts), or an error naming it.
-fn handle_of<'a>(spline: &'a RmfConeSpline, name: &str) -> FfiResult<&'a PartHandle> {
-    spline.part.as_deref().ok_or_else(|| {
-        FfiError::Core(rmfsurf::Error::invalid_input(format!(
-            "{name} is not a sheet-metal part (make it with rmf_sheet_part_transition, rmf_sheet_part_between_rails or rmf_sheet_part_tangent)"
-        )))
-    })
-}
-
 /// Writes the default options and the struct's size.
 ///
 /// @param[out] options Receives the defaults (tolerance 1e-4, thickness 1, k_factor 0.5,
@@ -331,7 +322,12 @@ unsafe fn sheet_part<'a>(part: *const RmfSheetPart) -> FfiResult<&'a PartHandle>
 
 /// The part an RmfConeSpline of the deprecated calls holds, or an error naming it.
 unsafe fn spline_part<'a>(part: *const RmfConeSpline) -> FfiResult<&'a PartHandle> {
-    handle_of(reference(part, "part")?, "part")
+    reference(part, "part")?.part.as_deref().ok_or_else(|| {
+        FfiError::Core(rmfsurf::Error::invalid_input(
+            "part is not a sheet-metal part (a cone spline holds one when it comes from \
+             rmf_sheet_part_cone_spline; an RmfSheetPart takes the rmf_sheet_part_* calls)",
+        ))
+    })
 }
 
 /// Frees a part; NULL is a no-op. Cone splines from rmf_sheet_part_cone_spline stay valid.

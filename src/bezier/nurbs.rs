@@ -70,14 +70,6 @@ pub struct NurbsSurface {
     pub(crate) knots_v: Vec<f64>,
 }
 
-/// What the counts of NURBS data are called where they were given: C's arguments, or the
-/// lengths of a Rust caller's vectors.
-struct CountNames<'a> {
-    degree: &'a str,
-    poles: &'a str,
-    knots: &'a str,
-}
-
 /// Checks degree, pole count and knot count against each other, before any array is read
 /// (so that a wrong count is reported instead of reading past the caller's arrays). Names
 /// are the C API's arguments with `suffix` ("" or "_u"/"_v").
@@ -87,37 +79,33 @@ pub fn check_nurbs_counts(
     knot_count: usize,
     suffix: &str,
 ) -> Result<()> {
-    let (d, p, k) = (
-        format!("degree{suffix}"),
-        format!("pole_count{suffix}"),
-        format!("knot_count{suffix}"),
-    );
-    let names = CountNames {
-        degree: &d,
-        poles: &p,
-        knots: &k,
-    };
-    check_counts(degree, pole_count, knot_count, &names)
+    check_counts(degree, pole_count, knot_count, || {
+        [
+            format!("degree{suffix}"),
+            format!("pole_count{suffix}"),
+            format!("knot_count{suffix}"),
+        ]
+    })
 }
 
+/// [`check_nurbs_counts`] with the names of degree, poles and knots where they were given
+/// (C's arguments, or the lengths of a Rust caller's vectors), made only for a message.
 fn check_counts(
     degree: usize,
     pole_count: usize,
     knot_count: usize,
-    names: &CountNames<'_>,
+    names: impl FnOnce() -> [String; 3],
 ) -> Result<()> {
-    let CountNames {
-        degree: d,
-        poles: p,
-        knots: k,
-    } = names;
     if degree == 0 || degree > MAX_DEGREE {
+        let [d, _, _] = names();
         return invalid!("{d} = {degree} must lie in 1..={MAX_DEGREE}");
     }
     if pole_count < degree + 1 {
+        let [d, p, _] = names();
         return invalid!("{p} = {pole_count} is less than {d} + 1 = {}", degree + 1);
     }
     if pole_count.checked_add(degree + 1) != Some(knot_count) {
+        let [d, p, k] = names();
         return invalid!(
             "{k} = {knot_count} but {p} + {d} + 1 = {}",
             pole_count.saturating_add(degree + 1)
@@ -357,12 +345,9 @@ impl NurbsCurve {
         weights: Option<Vec<f64>>,
         knots: Vec<f64>,
     ) -> Result<Self> {
-        let names = CountNames {
-            degree: "degree",
-            poles: "poles.len()",
-            knots: "knots.len()",
-        };
-        check_counts(degree, poles.len(), knots.len(), &names)?;
+        check_counts(degree, poles.len(), knots.len(), || {
+            ["degree", "poles.len()", "knots.len()"].map(String::from)
+        })?;
         let weights = weights.unwrap_or_else(|| vec![1.0; poles.len()]);
         check_poles_and_weights(&poles, &weights)?;
         check_knots(degree, &knots, "")?;
@@ -500,28 +485,16 @@ impl NurbsSurface {
         knots_u: Vec<f64>,
         knots_v: Vec<f64>,
     ) -> Result<Self> {
-        for (degree, pole_count, knots, names) in [
-            (
-                degree_u,
-                pole_count_u,
-                &knots_u,
-                ["degree_u", "pole_count_u", "knots_u.len()"],
-            ),
-            (
-                degree_v,
-                pole_count_v,
-                &knots_v,
-                ["degree_v", "pole_count_v", "knots_v.len()"],
-            ),
-        ] {
-            let [degree_name, pole_name, knot_name] = names;
-            let names = CountNames {
-                degree: degree_name,
-                poles: pole_name,
-                knots: knot_name,
-            };
-            check_counts(degree, pole_count, knots.len(), &names)?;
-        }
+        // The surface's own arguments, and the lengths of its knot vectors.
+        let names = |s: &str| {
+            [
+                format!("degree{s}"),
+                format!("pole_count{s}"),
+                format!("knots{s}.len()"),
+            ]
+        };
+        check_counts(degree_u, pole_count_u, knots_u.len(), || names("_u"))?;
+        check_counts(degree_v, pole_count_v, knots_v.len(), || names("_v"))?;
         if pole_count_u.checked_mul(pole_count_v) != Some(poles.len()) {
             return invalid!(
                 "pole_count_u × pole_count_v = {pole_count_u} × {pole_count_v} but {} poles given",

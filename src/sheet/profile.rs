@@ -168,20 +168,7 @@ impl ConvexProfile {
                 "{name} is not planar: control point {k} is {flatness:.3e} from the plane of the curve"
             );
         }
-        // The in-plane direction to the first sample, or to the farthest where the first
-        // lies at the centre (a curve that is not convex may start there).
-        let radial = |p: DVec3| (p - origin) - (p - origin).dot(normal) * normal;
-        let first = radial(samples[0]);
-        let x = if first.length() > tol {
-            first.normalize()
-        } else {
-            samples
-                .iter()
-                .map(|&p| radial(p))
-                .max_by(|a, b| a.length_squared().total_cmp(&b.length_squared()))
-                .unwrap_or(first)
-                .normalize()
-        };
+        let x = (samples[0] - origin - (samples[0] - origin).dot(normal) * normal).normalize();
         let plane = Plane {
             origin,
             normal,
