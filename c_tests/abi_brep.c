@@ -8,6 +8,12 @@
  * cover the faces once. On a pipe route with a ring (holes), its open walls (two shells),
  * the ring round a closed loop (a solid of two shells: the cavity's wall) and the
  * square-to-round hopper (degenerate edges). Bad input names the argument.
+ *
+ * The analytic forms (rmf_brep_face_analytic, rmf_brep_edge_analytic,
+ * rmf_brep_analytic_use), with the suite's own formulas for OpenCascade's cylinder,
+ * torus, line and circle: every analytic face holds its NURBS surface's points, every
+ * analytic edge runs from its start vertex through its NURBS curve's points to its end
+ * vertex, and every use's line on an analytic face maps to its edge's analytic curve.
  */
 #include <math.h>
 #include <stdint.h>
@@ -47,6 +53,104 @@ static void pcurve_at(const RmfBrepUse *u, double t, double *x, double *y) {
         *x = d[0].x;
         *y = d[0].y;
     }
+}
+
+static RmfVec3 add(RmfVec3 a, RmfVec3 b, double k) { return vec3(a.x + k * b.x, a.y + k * b.y, a.z + k * b.z); }
+
+static RmfVec3 cross(RmfVec3 a, RmfVec3 b) {
+    return vec3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+
+/* A point of an analytic surface (cylinder, torus) or curve (line, circle). */
+static RmfVec3 analytic_at(const RmfBrepAnalytic *a, double u, double v) {
+    RmfVec3 y = cross(a->axis, a->x_axis);
+    RmfVec3 radial = add(vec3(0, 0, 0), a->x_axis, cos(u));
+    radial = add(radial, y, sin(u));
+    switch (a->kind) {
+    case RMF_ANALYTIC_CYLINDER: return add(add(a->location, radial, a->radius), a->axis, v);
+    case RMF_ANALYTIC_TORUS:
+        return add(add(a->location, radial, a->radius + a->minor_radius * cos(v)), a->axis, a->minor_radius * sin(v));
+    case RMF_ANALYTIC_LINE: return add(a->location, a->axis, u);
+    case RMF_ANALYTIC_CIRCLE: return add(a->location, radial, a->radius);
+    default: return vec3(NAN, NAN, NAN);
+    }
+}
+
+/* The distance of p from an analytic cylinder or torus. */
+static double off_surface(const RmfBrepAnalytic *a, RmfVec3 p) {
+    RmfVec3 d = add(p, a->location, -1);
+    double h = ne_dot(d, a->axis);
+    double across = ne_norm(add(d, a->axis, -h));
+    if (a->kind == RMF_ANALYTIC_CYLINDER) return fabs(across - a->radius);
+    return fabs(hypot(across - a->radius, h) - a->minor_radius);
+}
+
+/* The analytic forms of a B-rep against its NURBS views; the cylinders and tori counted. */
+static void check_analytic(const RmfBrep *brep, const char *what, double size, size_t cylinders, size_t tori) {
+    RmfBrepCounts counts;
+    RmfBrepAnalytic a, edge;
+    RmfBrepFace face;
+    RmfBrepLoop lp;
+    RmfBrepUse u;
+    size_t f, l, k, i, j, count[4] = {0, 0, 0, 0};
+    double worst_surface = 0, worst_use = 0, worst_vertex = 0;
+    CHECK_STATUS(rmf_brep_counts(brep, &counts), RMF_OK, "");
+    for (k = 0; k < counts.edge_count; ++k) {
+        RmfBrepEdge e;
+        RmfVec3 a0, a1;
+        rmf_brep_edge(brep, k, &e);
+        CHECK_STATUS(rmf_brep_edge_analytic(brep, k, &edge), RMF_OK, "");
+        if (edge.kind == RMF_ANALYTIC_NONE) continue;
+        rmf_brep_vertex(brep, e.start, &a0);
+        rmf_brep_vertex(brep, e.end, &a1);
+        worst_vertex = fmax(worst_vertex, ne_dist(analytic_at(&edge, 0, 0), a0));
+        worst_vertex = fmax(worst_vertex, ne_dist(analytic_at(&edge, edge.end, 0), a1));
+    }
+    for (f = 0; f < counts.face_count; ++f) {
+        CHECK_STATUS(rmf_brep_face_analytic(brep, f, &a), RMF_OK, "");
+        rmf_brep_face(brep, f, &face);
+        if (a.kind == RMF_ANALYTIC_NONE || a.kind == RMF_ANALYTIC_PLANE) {
+            if (a.kind == RMF_ANALYTIC_NONE)
+                CHECK_STATUS(rmf_brep_analytic_use(brep, f, 0, 0, &u), RMF_ERROR_INVALID_INPUT, "face");
+            continue;
+        }
+        count[a.kind]++;
+        for (i = 0; i <= 4; ++i) {
+            for (j = 0; j <= 4; ++j) {
+                const RmfNurbsSurface *s = &face.nurbs;
+                RmfVec3 d[3][3];
+                double u0 = s->knots_u[0], u1 = s->knots_u[s->knot_count_u - 1];
+                double v0 = s->knots_v[0], v1 = s->knots_v[s->knot_count_v - 1];
+                ne_surface_derivatives(s, u0 + (u1 - u0) * i / 4.0, v0 + (v1 - v0) * j / 4.0, d);
+                worst_surface = fmax(worst_surface, off_surface(&a, d[0][0]));
+            }
+        }
+        for (l = 0; l < face.loop_count; ++l) {
+            rmf_brep_loop(brep, f, l, &lp);
+            for (k = 0; k < lp.use_count; ++k) {
+                CHECK_STATUS(rmf_brep_analytic_use(brep, f, l, k, &u), RMF_OK, "");
+                CHECK_STATUS(rmf_brep_edge_analytic(brep, u.edge, &edge), RMF_OK, "");
+                CHECK(edge.kind == RMF_ANALYTIC_LINE || edge.kind == RMF_ANALYTIC_CIRCLE,
+                      "an analytic face uses analytic edges");
+                CHECK(u.pcurve_kind == RMF_PCURVE_LINE, "a line on the analytic surface");
+                for (i = 0; i <= 4; ++i) {
+                    double t = edge.end * i / 4.0;
+                    double x = u.line_origin.x + t * u.line_direction.x;
+                    double y = u.line_origin.y + t * u.line_direction.y;
+                    worst_use = fmax(worst_use, ne_dist(analytic_at(&a, x, y), analytic_at(&edge, t, 0)));
+                }
+            }
+        }
+    }
+    printf("%s: %zu cylinders, %zu tori; surfaces %.1e, uses %.1e, vertices %.1e off\n", what, count[2], count[3],
+           worst_surface, worst_use, worst_vertex);
+    CHECK(count[RMF_ANALYTIC_CYLINDER] == cylinders && count[RMF_ANALYTIC_TORUS] == tori, "the analytic faces");
+    CHECK(worst_surface <= 1e-12 * size && worst_use <= 1e-12 * size && worst_vertex <= 1e-12 * size,
+          "the analytic forms are the NURBS geometry");
+    CHECK_STATUS(rmf_brep_face_analytic(brep, counts.face_count, &a), RMF_ERROR_INVALID_INPUT, "index");
+    CHECK_STATUS(rmf_brep_edge_analytic(brep, counts.edge_count, &a), RMF_ERROR_INVALID_INPUT, "index");
+    CHECK_STATUS(rmf_brep_edge_analytic(brep, 0, NULL), RMF_ERROR_NULL_POINTER, "out");
+    CHECK_STATUS(rmf_brep_face_analytic(NULL, 0, &a), RMF_ERROR_NULL_POINTER, "brep");
 }
 
 /* The checks of the file's header on one B-rep; `size` scales the distances. */
@@ -170,6 +274,8 @@ static void test_pipe(void) {
     CHECK_STATUS(rmf_wire_sweep(e, 5, ring, (const RmfCurve *const *)&hole, 1, NULL, &solid), RMF_OK, "");
     CHECK_STATUS(rmf_shape_brep(solid, &brep), RMF_OK, "");
     if (brep) check_model(brep, "pipe route with a ring, solid", 1, 20);
+    /* 3 lines and 2 arcs, 4 + 4 quarter circles: 24 cylinders, 16 tori. */
+    if (brep) check_analytic(brep, "pipe route with a ring, solid", 20, 24, 16);
     rmf_brep_free(brep);
     brep = NULL;
     rmf_wire_sweep_options_init(&o);

@@ -157,6 +157,47 @@
 #define RMF_PCURVE_NURBS 2
 
 /**
+ * RmfBrepAnalytic.kind: the face or edge is only its NURBS (or plane) view.
+ * \ingroup rmf_brep
+ */
+#define RMF_ANALYTIC_NONE 0
+
+/**
+ * RmfBrepAnalytic.kind of a face: the plane through location with unit normal axis;
+ * parameters along x_axis and axis × x_axis.
+ * \ingroup rmf_brep
+ */
+#define RMF_ANALYTIC_PLANE 1
+
+/**
+ * RmfBrepAnalytic.kind of a face: the cylinder location + radius (cos u x + sin u y) + v
+ * axis, y = axis × x_axis (OpenCascade's Geom_CylindricalSurface).
+ * \ingroup rmf_brep
+ */
+#define RMF_ANALYTIC_CYLINDER 2
+
+/**
+ * RmfBrepAnalytic.kind of a face: the torus location + (radius + minor_radius cos v)(cos u
+ * x + sin u y) + minor_radius sin v axis (OpenCascade's Geom_ToroidalSurface).
+ * \ingroup rmf_brep
+ */
+#define RMF_ANALYTIC_TORUS 3
+
+/**
+ * RmfBrepAnalytic.kind of an edge: the line location + s axis (axis a unit vector), s
+ * from 0 at the edge's start vertex to end (Geom_Line).
+ * \ingroup rmf_brep
+ */
+#define RMF_ANALYTIC_LINE 4
+
+/**
+ * RmfBrepAnalytic.kind of an edge: the circle location + radius (cos s x + sin s y),
+ * y = axis × x_axis, s from 0 at the edge's start vertex to end (Geom_Circle).
+ * \ingroup rmf_brep
+ */
+#define RMF_ANALYTIC_CIRCLE 5
+
+/**
  * rule of a cone pair: locally minimal vertex distance (12), the useful root. For
  * intersecting or parallel rulings (cone and cylinder cases): the biarc with equal legs.
  * \ingroup rmf_cone_spline
@@ -864,6 +905,56 @@ typedef struct RmfBrepUse {
    */
   struct RmfNurbsCurve pcurve;
 } RmfBrepUse;
+
+/**
+ * The analytic form of a face (plane, cylinder, torus) or an edge (line, circle), on
+ * OpenCascade's parameters. A kernel holding analytic geometry builds such a face on the
+ * analytic surface, with the analytic curve of every edge it uses (each is analytic:
+ * rmf_brep_edge_analytic) and each use's curve from rmf_brep_analytic_use; an analytic
+ * edge is used only by analytic or planar faces. The NURBS views describe the same
+ * geometry and stay consistent among themselves.
+ * \ingroup rmf_brep
+ */
+typedef struct RmfBrepAnalytic {
+  /**
+   * RMF_ANALYTIC_NONE, or RMF_ANALYTIC_PLANE, _CYLINDER, _TORUS (faces), RMF_ANALYTIC_LINE,
+   * _CIRCLE (edges).
+   */
+  uint32_t kind;
+  /**
+   * The plane's point, the cylinder's point on the axis at v = 0, the torus's or the
+   * circle's centre, the line's point at s = 0.
+   */
+  struct RmfVec3 location;
+  /**
+   * The unit normal of the plane or circle, the unit axis of the cylinder or torus, the
+   * unit direction of the line.
+   */
+  struct RmfVec3 axis;
+  /**
+   * The unit direction of the first parameter (u = 0 or s = 0), perpendicular to axis
+   * (zero for a line).
+   */
+  struct RmfVec3 x_axis;
+  /**
+   * The radius of the cylinder or circle, the torus's major radius (distance of the
+   * tube's centre from the axis).
+   */
+  double radius;
+  /**
+   * The torus's minor radius (the tube's).
+   */
+  double minor_radius;
+  /**
+   * Edges: the parameter of the end vertex (the line's length, the arc's angle).
+   */
+  double end;
+  /**
+   * Faces: 1 if the face's normal (out of a solid) is the analytic surface's, 0 if its
+   * opposite (it may differ from RmfBrepFace.same_sense).
+   */
+  uint32_t same_sense;
+} RmfBrepAnalytic;
 
 /**
  * A shell: the faces it holds.
@@ -2337,6 +2428,57 @@ RmfStatus rmf_brep_use(const struct RmfBrep *brep,
                        size_t loop,
                        size_t index,
                        struct RmfBrepUse *out);
+
+/**
+ * The analytic form of face `index` (a plane, cylinder or torus), or kind
+ * RMF_ANALYTIC_NONE.
+ *
+ * @param[in] brep The B-rep.
+ * @param[in] index 0 ≤ index < face_count.
+ * @param[out] out Receives the analytic form.
+ * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT naming index.
+ * \since 0.2
+ * \ingroup rmf_brep
+ */
+RmfStatus rmf_brep_face_analytic(const struct RmfBrep *brep,
+                                 size_t index,
+                                 struct RmfBrepAnalytic *out);
+
+/**
+ * The analytic form of edge `index` (a line or circle), or kind RMF_ANALYTIC_NONE.
+ *
+ * @param[in] brep The B-rep.
+ * @param[in] index 0 ≤ index < edge_count.
+ * @param[out] out Receives the analytic form.
+ * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT naming index.
+ * \since 0.2
+ * \ingroup rmf_brep
+ */
+RmfStatus rmf_brep_edge_analytic(const struct RmfBrep *brep,
+                                 size_t index,
+                                 struct RmfBrepAnalytic *out);
+
+/**
+ * Edge use `index` of loop `loop` of an analytic face, with its curve on the analytic
+ * surface: RMF_PCURVE_LINE on the edge's analytic parameter (a parameter line of unit
+ * speed) on a cylinder or torus, RMF_PCURVE_NONE on a plane.
+ *
+ * @param[in] brep The B-rep.
+ * @param[in] face 0 ≤ face < face_count, a face whose rmf_brep_face_analytic kind is not
+ *            RMF_ANALYTIC_NONE.
+ * @param[in] loop 0 ≤ loop < the face's loop_count.
+ * @param[in] index 0 ≤ index < the loop's use_count.
+ * @param[out] out Receives the use.
+ * @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT naming face, loop or
+ *         index.
+ * \since 0.2
+ * \ingroup rmf_brep
+ */
+RmfStatus rmf_brep_analytic_use(const struct RmfBrep *brep,
+                                size_t face,
+                                size_t loop,
+                                size_t index,
+                                struct RmfBrepUse *out);
 
 /**
  * Shell `index` of a B-rep: the faces it holds.

@@ -3,7 +3,9 @@
 // sheet-metal part) with BRep_Builder, as the kernel holds it: one TopoDS_Edge per shared
 // edge with its curve on each face, seams as seams, degenerate edges at cone apices, the
 // loops and faces' senses as the library made them. No sewing, no STEP file, no ShapeFix:
-// the result is valid for BRepCheck_Analyzer as built.
+// the result is valid for BRepCheck_Analyzer as built. Faces the library marks analytic
+// (rmf_brep_face_analytic) are built on OpenCascade's own planes, cylinders and tori, their
+// edges as lines and circles (rmf_brep_edge_analytic).
 //
 //     #include "rmfsurf_occ.hpp"
 //     RmfBrep *brep = nullptr;
@@ -20,8 +22,13 @@
 #include <BRep_Builder.hxx>
 #include <Geom2d_BSplineCurve.hxx>
 #include <Geom_BSplineCurve.hxx>
+#include <Geom2d_Line.hxx>
 #include <Geom_BSplineSurface.hxx>
+#include <Geom_Circle.hxx>
+#include <Geom_CylindricalSurface.hxx>
+#include <Geom_Line.hxx>
 #include <Geom_Plane.hxx>
+#include <Geom_ToroidalSurface.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColStd_Array2OfReal.hxx>
@@ -139,7 +146,34 @@ inline Handle(Geom_Surface) surface(const RmfBrepFace &f) {
                                    (int)s.degree_u, (int)s.degree_v);
 }
 
-inline Handle(Geom2d_Curve) pcurve(const RmfBrepUse &u, double first, double last) {
+inline gp_Pnt point(RmfVec3 p) { return gp_Pnt(p.x, p.y, p.z); }
+
+inline gp_Dir direction(RmfVec3 d) { return gp_Dir(d.x, d.y, d.z); }
+
+/// A line or circle on its length or angle (rmf_brep_edge_analytic); null otherwise.
+inline Handle(Geom_Curve) analytic_curve(const RmfBrepAnalytic &a) {
+    if (a.kind == RMF_ANALYTIC_LINE) return new Geom_Line(point(a.location), direction(a.axis));
+    if (a.kind == RMF_ANALYTIC_CIRCLE)
+        return new Geom_Circle(gp_Ax2(point(a.location), direction(a.axis), direction(a.x_axis)), a.radius);
+    return Handle(Geom_Curve)();
+}
+
+/// A plane, cylinder or torus (rmf_brep_face_analytic); null otherwise.
+inline Handle(Geom_Surface) analytic_surface(const RmfBrepAnalytic &a) {
+    if (a.kind != RMF_ANALYTIC_PLANE && a.kind != RMF_ANALYTIC_CYLINDER && a.kind != RMF_ANALYTIC_TORUS)
+        return Handle(Geom_Surface)();
+    const gp_Ax3 axes(point(a.location), direction(a.axis), direction(a.x_axis));
+    if (a.kind == RMF_ANALYTIC_PLANE) return new Geom_Plane(axes);
+    if (a.kind == RMF_ANALYTIC_CYLINDER) return new Geom_CylindricalSurface(axes, a.radius);
+    if (a.kind == RMF_ANALYTIC_TORUS) return new Geom_ToroidalSurface(axes, a.radius, a.minor_radius);
+    return Handle(Geom_Surface)();
+}
+
+inline Handle(Geom2d_Curve) pcurve(const RmfBrepUse &u, double first, double last, bool analytic) {
+    // On an analytic surface: a parameter line of unit speed on the edge's length or angle.
+    if (analytic && u.pcurve_kind == RMF_PCURVE_LINE)
+        return new Geom2d_Line(gp_Pnt2d(u.line_origin.x, u.line_origin.y),
+                               gp_Dir2d(u.line_direction.x, u.line_direction.y));
     if (u.pcurve_kind == RMF_PCURVE_LINE) return line_2d(u.line_origin, u.line_direction, first, last);
     if (u.pcurve_kind == RMF_PCURVE_NURBS) return curve_2d(u.pcurve);
     return Handle(Geom2d_Curve)();
@@ -179,15 +213,25 @@ inline TopoDS_Shape build(const RmfBrep *brep) {
     }
     std::vector<TopoDS_Edge> edges(counts.edge_count);
     std::vector<std::pair<double, double>> ranges(counts.edge_count);
+    std::vector<bool> exact_edge(counts.edge_count, false);
     for (size_t i = 0; i < counts.edge_count; ++i) {
         RmfBrepEdge e;
         check(rmf_brep_edge(brep, i, &e), "rmf_brep_edge");
         if (e.start >= counts.vertex_count || e.end >= counts.vertex_count)
             throw Error("edge " + std::to_string(i) + " joins vertices that do not exist");
+        RmfBrepAnalytic analytic;
+        check(rmf_brep_edge_analytic(brep, i, &analytic), "rmf_brep_edge_analytic");
+        const Handle(Geom_Curve) exact = detail::analytic_curve(analytic);
         ranges[i] = {e.curve.knots[0], e.curve.knots[e.curve.knot_count - 1]};
         if (e.degenerate) {
             builder.MakeEdge(edges[i]);
             builder.Degenerated(edges[i], Standard_True);
+        } else if (!exact.IsNull()) {
+            exact_edge[i] = true;
+            ranges[i] = {0.0, analytic.end};
+            builder.MakeEdge(edges[i], exact, tolerance);
+            // A line is unbounded: its range before its curves on the faces are added.
+            builder.Range(edges[i], 0.0, analytic.end);
         } else {
             builder.MakeEdge(edges[i], detail::curve(e.curve), tolerance);
         }
@@ -198,8 +242,12 @@ inline TopoDS_Shape build(const RmfBrep *brep) {
     for (size_t f = 0; f < counts.face_count; ++f) {
         RmfBrepFace face;
         check(rmf_brep_face(brep, f, &face), "rmf_brep_face");
+        RmfBrepAnalytic analytic;
+        check(rmf_brep_face_analytic(brep, f, &analytic), "rmf_brep_face_analytic");
+        const Handle(Geom_Surface) exact = detail::analytic_surface(analytic);
+        const bool on_exact = !exact.IsNull();
         TopoDS_Face &made = faces[f];
-        builder.MakeFace(made, detail::surface(face), tolerance);
+        builder.MakeFace(made, on_exact ? exact : detail::surface(face), tolerance);
         std::vector<RmfBrepUse> all;
         for (size_t l = 0; l < face.loop_count; ++l) {
             RmfBrepLoop bound;
@@ -208,7 +256,11 @@ inline TopoDS_Shape build(const RmfBrep *brep) {
             builder.MakeWire(wire);
             for (size_t k = 0; k < bound.use_count; ++k) {
                 RmfBrepUse u;
-                check(rmf_brep_use(brep, f, l, k, &u), "rmf_brep_use");
+                // On the analytic surface, the loop as it runs there (with its curves).
+                if (on_exact)
+                    check(rmf_brep_analytic_use(brep, f, l, k, &u), "rmf_brep_analytic_use");
+                else
+                    check(rmf_brep_use(brep, f, l, k, &u), "rmf_brep_use");
                 if (u.edge >= counts.edge_count)
                     throw Error("face " + std::to_string(f) + " uses edge " + std::to_string(u.edge) + " of " +
                                 std::to_string(counts.edge_count));
@@ -222,8 +274,11 @@ inline TopoDS_Shape build(const RmfBrep *brep) {
         // use's first.
         for (size_t k = 0; k < all.size(); ++k) {
             const RmfBrepUse &u = all[k];
+            // A line or circle on a plane: the kernel projects it (the model's curve on the
+            // plane is on the NURBS edge's parameter).
+            if (exact_edge[u.edge] && !on_exact) continue;
             const auto [first, last] = ranges[u.edge];
-            const Handle(Geom2d_Curve) on_face = detail::pcurve(u, first, last);
+            const Handle(Geom2d_Curve) on_face = detail::pcurve(u, first, last, on_exact);
             if (on_face.IsNull()) continue;
             size_t twin = all.size();
             for (size_t j = 0; j < all.size(); ++j)
@@ -231,11 +286,13 @@ inline TopoDS_Shape build(const RmfBrep *brep) {
             if (twin == all.size()) {
                 builder.UpdateEdge(edges[u.edge], on_face, made, tolerance);
             } else if (u.forward && !all[twin].forward) {
-                builder.UpdateEdge(edges[u.edge], on_face, detail::pcurve(all[twin], first, last), made, tolerance);
+                builder.UpdateEdge(edges[u.edge], on_face, detail::pcurve(all[twin], first, last, on_exact), made,
+                                   tolerance);
             }
         }
-        if (detail::natural_bounds(face, all, face.loop_count)) builder.NaturalRestriction(made, Standard_True);
-        if (!face.same_sense) made.Reverse();
+        if (!on_exact && detail::natural_bounds(face, all, face.loop_count))
+            builder.NaturalRestriction(made, Standard_True);
+        if (!(on_exact ? analytic.same_sense : face.same_sense)) made.Reverse();
     }
     for (size_t i = 0; i < counts.edge_count; ++i) {
         builder.Range(edges[i], ranges[i].first, ranges[i].second);

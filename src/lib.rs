@@ -100,7 +100,8 @@ pub use sweep::{sweep, MAX_SWEEP_POLES};
 
 // The shapes the methods hand over: B-rep models and flat patterns.
 pub use model::{
-    Brep, BrepBound, BrepEdge, BrepFace, BrepSurface, BrepUse, FlatPattern, PCurve, PatternEdge,
+    AnalyticCurve, AnalyticEdge, AnalyticFace, AnalyticSurface, Brep, BrepBound, BrepEdge,
+    BrepFace, BrepSurface, BrepUse, FlatPattern, PCurve, PatternEdge,
 };
 
 // Meshes of surfaces (for viewers and mesh checks).

@@ -12,7 +12,9 @@ use crate::frames::Frame;
 use crate::hermite::HermiteSegment;
 use crate::math::angle_between;
 use crate::mobius::hermite::planar_frame;
-use crate::model::{Brep, BrepSurface, BrepUse, FramedCurve, PCurve};
+use crate::model::{
+    AnalyticCurve, AnalyticSurface, Brep, BrepSurface, BrepUse, FramedCurve, PCurve,
+};
 use crate::ph_cubic::PhCubic;
 use crate::rrmf_quintic::RrmfQuintic;
 use crate::Result;
@@ -329,6 +331,138 @@ pub(crate) fn assert_closed_oriented(brep: &Brep) {
         );
     }
     assert_pcurves_on_edges(brep, size);
+    assert_analytic_forms(brep, size);
+}
+
+/// The analytic forms of a model are its geometry: every analytic edge runs from its start
+/// vertex to its end vertex through its curve's points, every analytic face's surface
+/// holds its NURBS surface's points with the same normal (times the senses), every curve
+/// on an analytic face maps to its edge's analytic curve; an analytic edge is used only by
+/// analytic or planar faces, and an analytic cylinder or torus uses only analytic edges.
+/// To 1e-9 of `size`, at 9 (9 × 9) parameters.
+pub(crate) fn assert_analytic_forms(brep: &Brep, size: f64) {
+    let model = Prepared::new(brep);
+    let tolerance = 1e-9 * size;
+    for (k, edge) in brep.edges.iter().enumerate() {
+        let Some(analytic) = edge.analytic else {
+            continue;
+        };
+        let ends = [
+            (analytic.curve.point(0.0), edge.start),
+            (analytic.curve.point(analytic.end), edge.end),
+        ];
+        for (p, v) in ends {
+            let gap = p.distance(brep.vertices[v]);
+            assert!(gap <= tolerance, "edge {k}: {gap:e} from its vertex");
+        }
+        for j in 0..=8 {
+            let (_, p) = model.edge_at(k, j as f64 / 8.0);
+            let gap = distance_to_curve(&analytic.curve, p);
+            assert!(gap <= tolerance, "edge {k}: {gap:e} off its analytic curve");
+        }
+    }
+    for (k, face) in brep.faces.iter().enumerate() {
+        let Some(analytic) = &face.analytic else {
+            continue;
+        };
+        let planar = matches!(analytic.surface, AnalyticSurface::Plane { .. });
+        if let Some(surface) = &model.surfaces[k] {
+            let ((u0, u1), (v0, v1)) = (surface.domain_u(), surface.domain_v());
+            for i in 0..=8 {
+                for j in 0..=8 {
+                    let (u, v) = (
+                        u0 + (u1 - u0) * i as f64 / 8.0,
+                        v0 + (v1 - v0) * j as f64 / 8.0,
+                    );
+                    let jet = surface.eval_jet(u, v);
+                    let (a, b) = analytic.surface.parameters(jet.point);
+                    let gap = analytic.surface.point(a, b).distance(jet.point);
+                    assert!(
+                        gap <= tolerance,
+                        "face {k}: {gap:e} off its analytic surface"
+                    );
+                    let normal = jet.du.cross(jet.dv).normalize();
+                    let sense = if face.same_sense == analytic.same_sense {
+                        1.0
+                    } else {
+                        -1.0
+                    };
+                    let turn = normal.dot(analytic.surface.normal(jet.point)) * sense;
+                    assert!(turn > 1.0 - 1e-9, "face {k}: normals {turn} apart");
+                }
+            }
+        }
+        if planar {
+            continue;
+        }
+        for (b, bound) in face.bounds.iter().enumerate() {
+            // Taken as a kernel takes it (reversed where the orientations differ), the
+            // loop runs counter-clockwise on the analytic surface (holes clockwise): the
+            // signed area of its polygon of line pcurves.
+            let reversed = analytic.loops_reversed(face.same_sense);
+            let area: f64 = bound
+                .uses
+                .iter()
+                .zip(&analytic.pcurves[b])
+                .map(|(u, pcurve)| {
+                    let end = brep.edges[u.edge].analytic.map_or(0.0, |a| a.end);
+                    let (p, q) = (pcurve_at(pcurve, 0.0), pcurve_at(pcurve, end));
+                    let (p, q) = if u.forward { (p, q) } else { (q, p) };
+                    0.5 * (p.0 * q.1 - q.0 * p.1)
+                })
+                .sum();
+            let area = if reversed { -area } else { area };
+            assert!(
+                (area > 0.0) == bound.outer,
+                "face {k}: loop {b} turns the wrong way on the analytic surface ({area})"
+            );
+            for (i, u) in bound.uses.iter().enumerate() {
+                let edge = brep.edges[u.edge].analytic;
+                let edge =
+                    edge.unwrap_or_else(|| panic!("face {k}: edge {} is not analytic", u.edge));
+                let pcurve = &analytic.pcurves[b][i];
+                for j in 0..=8 {
+                    let t = edge.end * j as f64 / 8.0;
+                    let (x, y) = pcurve_at(pcurve, t);
+                    let gap = analytic.surface.point(x, y).distance(edge.curve.point(t));
+                    assert!(
+                        gap <= tolerance,
+                        "face {k}, edge {}: {gap:e} at {t}",
+                        u.edge
+                    );
+                }
+            }
+        }
+    }
+    for (k, face) in brep.faces.iter().enumerate() {
+        let planar = matches!(face.surface, BrepSurface::Plane { .. }) || face.analytic.is_some();
+        for u in face.bounds.iter().flat_map(|b| &b.uses) {
+            if brep.edges[u.edge].analytic.is_some() {
+                assert!(planar, "analytic edge {} on the NURBS face {k}", u.edge);
+            }
+        }
+    }
+}
+
+/// The distance of `p` from a line or circle.
+fn distance_to_curve(curve: &AnalyticCurve, p: DVec3) -> f64 {
+    match *curve {
+        AnalyticCurve::Line { origin, direction } => {
+            let d = p - origin;
+            (d - direction * d.dot(direction)).length()
+        }
+        AnalyticCurve::Circle {
+            center,
+            axis,
+            radius,
+            ..
+        } => {
+            let d = p - center;
+            let height = d.dot(axis);
+            let across = (d - axis * height).length() - radius;
+            height.hypot(across)
+        }
+    }
 }
 
 /// Every use's parameter curve on a NURBS face, mapped by the surface, is its edge's curve
@@ -461,11 +595,22 @@ pub(crate) fn assert_similar_breps(unit: &Brep, moved: &Brep, scale: f64, shift:
             (b.start, b.end, b.degenerate)
         );
         assert_eq!(a.curve.degree, b.curve.degree, "edge {k}");
+        assert_eq!(
+            a.analytic.is_some(),
+            b.analytic.is_some(),
+            "edge {k}: analytic"
+        );
     }
     assert_eq!(unit.faces.len(), moved.faces.len());
     let prepared = (Prepared::new(unit), Prepared::new(moved));
     for (k, (a, b)) in unit.faces.iter().zip(&moved.faces).enumerate() {
         assert_eq!(a.same_sense, b.same_sense, "face {k}");
+        let kind = |f: &crate::model::BrepFace| {
+            f.analytic
+                .as_ref()
+                .map(|a| (std::mem::discriminant(&a.surface), a.same_sense))
+        };
+        assert_eq!(kind(a), kind(b), "face {k}: analytic");
         assert_eq!(a.bounds.len(), b.bounds.len(), "face {k}");
         for (p, q) in a.bounds.iter().zip(&b.bounds) {
             assert_eq!(p.outer, q.outer, "face {k}");

@@ -10,7 +10,10 @@ use super::boundary::{
 };
 use super::status::RmfStatus;
 use super::types::{RmfNurbsCurve, RmfNurbsSurface, RmfVec2, RmfVec3};
-use rmfsurf::{Brep, BrepBound, BrepEdge, BrepFace, BrepSurface, BrepUse, PCurve};
+use rmfsurf::{
+    AnalyticCurve, AnalyticEdge, AnalyticFace, AnalyticSurface, Brep, BrepBound, BrepEdge,
+    BrepFace, BrepSurface, BrepUse, PCurve,
+};
 
 /// RmfBrepFace.kind: a rational B-spline surface (RmfBrepFace.nurbs).
 /// \ingroup rmf_brep
@@ -33,6 +36,30 @@ pub const RMF_PCURVE_LINE: u32 = 1;
 /// \ingroup rmf_brep
 pub const RMF_PCURVE_NURBS: u32 = 2;
 
+/// RmfBrepAnalytic.kind: the face or edge is only its NURBS (or plane) view.
+/// \ingroup rmf_brep
+pub const RMF_ANALYTIC_NONE: u32 = 0;
+/// RmfBrepAnalytic.kind of a face: the plane through location with unit normal axis;
+/// parameters along x_axis and axis × x_axis.
+/// \ingroup rmf_brep
+pub const RMF_ANALYTIC_PLANE: u32 = 1;
+/// RmfBrepAnalytic.kind of a face: the cylinder location + radius (cos u x + sin u y) + v
+/// axis, y = axis × x_axis (OpenCascade's Geom_CylindricalSurface).
+/// \ingroup rmf_brep
+pub const RMF_ANALYTIC_CYLINDER: u32 = 2;
+/// RmfBrepAnalytic.kind of a face: the torus location + (radius + minor_radius cos v)(cos u
+/// x + sin u y) + minor_radius sin v axis (OpenCascade's Geom_ToroidalSurface).
+/// \ingroup rmf_brep
+pub const RMF_ANALYTIC_TORUS: u32 = 3;
+/// RmfBrepAnalytic.kind of an edge: the line location + s axis (axis a unit vector), s
+/// from 0 at the edge's start vertex to end (Geom_Line).
+/// \ingroup rmf_brep
+pub const RMF_ANALYTIC_LINE: u32 = 4;
+/// RmfBrepAnalytic.kind of an edge: the circle location + radius (cos s x + sin s y),
+/// y = axis × x_axis, s from 0 at the edge's start vertex to end (Geom_Circle).
+/// \ingroup rmf_brep
+pub const RMF_ANALYTIC_CIRCLE: u32 = 5;
+
 /// A boundary representation (see rmf_brep_counts). Free with rmf_brep_free; the views the
 /// accessors give are borrowed from it.
 /// \ingroup rmf_brep
@@ -45,6 +72,8 @@ pub struct RmfBrep {
     /// [face][loop][use].
     uses: Vec<Vec<Vec<RmfBrepUse>>>,
     shells: Vec<Vec<usize>>,
+    /// [face][loop][use] on the analytic faces (empty elsewhere).
+    analytic_uses: Vec<Vec<Vec<RmfBrepUse>>>,
     /// What the views point into: the model (weights, knots) and the poles in the C layout.
     /// Neither changes after the views are made (moving the handle moves no buffer).
     _model: Brep,
@@ -95,6 +124,14 @@ impl RmfBrep {
             })
             .collect();
         let shells = brep.shells();
+        let analytic_uses = brep
+            .faces
+            .iter()
+            .map(|f| match &f.analytic {
+                Some(a) => analytic_use_views(f, a),
+                None => Vec::new(),
+            })
+            .collect();
         Self {
             counts: RmfBrepCounts {
                 vertex_count: brep.vertices.len(),
@@ -110,6 +147,7 @@ impl RmfBrep {
             loops,
             uses,
             shells,
+            analytic_uses,
             _model: brep,
             _poles: poles,
         }
@@ -154,6 +192,95 @@ fn face_view(
         plane_x_axis,
         same_sense: u32::from(face.same_sense),
         loop_count: face.bounds.len(),
+    }
+}
+
+/// The uses of an analytic face with their curves on the analytic surface (none on a
+/// plane), in the order and directions that run outer loops counter-clockwise on it.
+fn analytic_use_views(face: &BrepFace, analytic: &AnalyticFace) -> Vec<Vec<RmfBrepUse>> {
+    let reversed = analytic.loops_reversed(face.same_sense);
+    face.bounds
+        .iter()
+        .enumerate()
+        .map(|(b, bound)| {
+            let mut views: Vec<RmfBrepUse> = bound
+                .uses
+                .iter()
+                .enumerate()
+                .map(|(k, u)| {
+                    let view = BrepUse {
+                        edge: u.edge,
+                        forward: u.forward != reversed,
+                        pcurve: analytic.pcurves.get(b).and_then(|p| p.get(k)).cloned(),
+                    };
+                    use_view(&view, &mut |_| std::ptr::null())
+                })
+                .collect();
+            if reversed {
+                views.reverse();
+            }
+            views
+        })
+        .collect()
+}
+
+/// The analytic view of a face.
+fn analytic_face_view(face: &BrepFace) -> RmfBrepAnalytic {
+    let Some(analytic) = &face.analytic else {
+        return RmfBrepAnalytic::default();
+    };
+    let kind = match analytic.surface {
+        AnalyticSurface::Plane { .. } => RMF_ANALYTIC_PLANE,
+        AnalyticSurface::Cylinder { .. } => RMF_ANALYTIC_CYLINDER,
+        AnalyticSurface::Torus { .. } => RMF_ANALYTIC_TORUS,
+    };
+    let [location, axis, x_axis] = analytic.surface.axes();
+    let radii = analytic.surface.radii();
+    let (radius, minor_radius) = (
+        radii.first().copied().unwrap_or(0.0),
+        radii.get(1).copied().unwrap_or(0.0),
+    );
+    RmfBrepAnalytic {
+        kind,
+        location: location.into(),
+        axis: axis.into(),
+        x_axis: x_axis.into(),
+        radius,
+        minor_radius,
+        end: 0.0,
+        same_sense: u32::from(analytic.same_sense),
+    }
+}
+
+/// The analytic view of an edge.
+fn analytic_edge_view(edge: &BrepEdge) -> RmfBrepAnalytic {
+    let Some(AnalyticEdge { curve, end }) = edge.analytic else {
+        return RmfBrepAnalytic::default();
+    };
+    let (kind, location, axis, x_axis, radius) = match curve {
+        AnalyticCurve::Line { origin, direction } => (
+            RMF_ANALYTIC_LINE,
+            origin,
+            direction,
+            rmfsurf::glam::DVec3::ZERO,
+            0.0,
+        ),
+        AnalyticCurve::Circle {
+            center,
+            axis,
+            x_axis,
+            radius,
+        } => (RMF_ANALYTIC_CIRCLE, center, axis, x_axis, radius),
+    };
+    RmfBrepAnalytic {
+        kind,
+        location: location.into(),
+        axis: axis.into(),
+        x_axis: x_axis.into(),
+        radius,
+        minor_radius: 0.0,
+        end,
+        same_sense: 1,
     }
 }
 
@@ -284,6 +411,40 @@ pub struct RmfBrepUse {
     pub line_direction: RmfVec2,
     /// RMF_PCURVE_NURBS: the curve (x, y of the poles are u, v), borrowed from the B-rep.
     pub pcurve: RmfNurbsCurve,
+}
+
+/// The analytic form of a face (plane, cylinder, torus) or an edge (line, circle), on
+/// OpenCascade's parameters. A kernel holding analytic geometry builds such a face on the
+/// analytic surface, with the analytic curve of every edge it uses (each is analytic:
+/// rmf_brep_edge_analytic) and each use's curve from rmf_brep_analytic_use; an analytic
+/// edge is used only by analytic or planar faces. The NURBS views describe the same
+/// geometry and stay consistent among themselves.
+/// \ingroup rmf_brep
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default)]
+pub struct RmfBrepAnalytic {
+    /// RMF_ANALYTIC_NONE, or RMF_ANALYTIC_PLANE, _CYLINDER, _TORUS (faces), RMF_ANALYTIC_LINE,
+    /// _CIRCLE (edges).
+    pub kind: u32,
+    /// The plane's point, the cylinder's point on the axis at v = 0, the torus's or the
+    /// circle's centre, the line's point at s = 0.
+    pub location: RmfVec3,
+    /// The unit normal of the plane or circle, the unit axis of the cylinder or torus, the
+    /// unit direction of the line.
+    pub axis: RmfVec3,
+    /// The unit direction of the first parameter (u = 0 or s = 0), perpendicular to axis
+    /// (zero for a line).
+    pub x_axis: RmfVec3,
+    /// The radius of the cylinder or circle, the torus's major radius (distance of the
+    /// tube's centre from the axis).
+    pub radius: f64,
+    /// The torus's minor radius (the tube's).
+    pub minor_radius: f64,
+    /// Edges: the parameter of the end vertex (the line's length, the arc's angle).
+    pub end: f64,
+    /// Faces: 1 if the face's normal (out of a solid) is the analytic surface's, 0 if its
+    /// opposite (it may differ from RmfBrepFace.same_sense).
+    pub same_sense: u32,
 }
 
 /// A shell: the faces it holds.
@@ -458,6 +619,91 @@ pub unsafe extern "C" fn rmf_brep_use(
     })
 }
 
+/// The analytic form of face `index` (a plane, cylinder or torus), or kind
+/// RMF_ANALYTIC_NONE.
+///
+/// @param[in] brep The B-rep.
+/// @param[in] index 0 ≤ index < face_count.
+/// @param[out] out Receives the analytic form.
+/// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT naming index.
+/// \since 0.2
+/// \ingroup rmf_brep
+#[no_mangle]
+pub unsafe extern "C" fn rmf_brep_face_analytic(
+    brep: *const RmfBrep,
+    index: usize,
+    out: *mut RmfBrepAnalytic,
+) -> RmfStatus {
+    guard("rmf_brep_face_analytic", || {
+        let b = reference(brep, "brep")?;
+        let out = out_ptr(out, "out")?;
+        let face = item(&b.model().faces, index, "index", "faces")?;
+        write(out, analytic_face_view(face));
+        Ok(())
+    })
+}
+
+/// The analytic form of edge `index` (a line or circle), or kind RMF_ANALYTIC_NONE.
+///
+/// @param[in] brep The B-rep.
+/// @param[in] index 0 ≤ index < edge_count.
+/// @param[out] out Receives the analytic form.
+/// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT naming index.
+/// \since 0.2
+/// \ingroup rmf_brep
+#[no_mangle]
+pub unsafe extern "C" fn rmf_brep_edge_analytic(
+    brep: *const RmfBrep,
+    index: usize,
+    out: *mut RmfBrepAnalytic,
+) -> RmfStatus {
+    guard("rmf_brep_edge_analytic", || {
+        let b = reference(brep, "brep")?;
+        let out = out_ptr(out, "out")?;
+        let edge = item(&b.model().edges, index, "index", "edges")?;
+        write(out, analytic_edge_view(edge));
+        Ok(())
+    })
+}
+
+/// Edge use `index` of loop `loop` of an analytic face, with its curve on the analytic
+/// surface: RMF_PCURVE_LINE on the edge's analytic parameter (a parameter line of unit
+/// speed) on a cylinder or torus, RMF_PCURVE_NONE on a plane. The uses run the loop
+/// counter-clockwise on the analytic surface (holes clockwise): where its parameters have
+/// the other orientation than the NURBS surface's, in the reverse order of rmf_brep_use,
+/// each against its direction there.
+///
+/// @param[in] brep The B-rep.
+/// @param[in] face 0 ≤ face < face_count, a face whose rmf_brep_face_analytic kind is not
+///            RMF_ANALYTIC_NONE.
+/// @param[in] loop 0 ≤ loop < the face's loop_count.
+/// @param[in] index 0 ≤ index < the loop's use_count.
+/// @param[out] out Receives the use.
+/// @return RMF_OK, RMF_ERROR_NULL_POINTER, or RMF_ERROR_INVALID_INPUT naming face, loop or
+///         index.
+/// \since 0.2
+/// \ingroup rmf_brep
+#[no_mangle]
+pub unsafe extern "C" fn rmf_brep_analytic_use(
+    brep: *const RmfBrep,
+    face: usize,
+    r#loop: usize,
+    index: usize,
+    out: *mut RmfBrepUse,
+) -> RmfStatus {
+    guard("rmf_brep_analytic_use", || {
+        let b = reference(brep, "brep")?;
+        let out = out_ptr(out, "out")?;
+        let loops = item(&b.analytic_uses, face, "face", "faces")?;
+        if loops.is_empty() {
+            return invalid_arg(format!("face = {face} is not analytic"));
+        }
+        let uses = item(loops, r#loop, "loop", "loops on that face")?;
+        write(out, *item(uses, index, "index", "uses in that loop")?);
+        Ok(())
+    })
+}
+
 /// Shell `index` of a B-rep: the faces it holds.
 ///
 /// @param[in] brep The B-rep.
@@ -579,6 +825,7 @@ unsafe fn read_brep(input: &RmfBrepInput) -> FfiResult<Brep> {
             start: edge.start,
             end: edge.end,
             degenerate: edge.degenerate != 0,
+            analytic: None,
         });
     }
     let faces = slice(input.faces, input.face_count, "faces")?;
@@ -643,6 +890,7 @@ unsafe fn read_brep(input: &RmfBrepInput) -> FfiResult<Brep> {
             surface,
             same_sense: face.same_sense != 0,
             bounds,
+            analytic: None,
         });
     }
     Ok(Brep {

@@ -24,6 +24,7 @@ pub(crate) fn walk(brep: *mut RmfBrep) {
         assert!(p.x.is_finite() && p.y.is_finite() && p.z.is_finite());
     }
     let mut ends = Vec::with_capacity(counts.edge_count);
+    let mut analytic_edges = Vec::with_capacity(counts.edge_count);
     for e in 0..counts.edge_count {
         let mut edge = poisoned::<RmfBrepEdge>();
         ok("rmf_brep_edge", unsafe {
@@ -39,6 +40,18 @@ pub(crate) fn walk(brep: *mut RmfBrep) {
         let weights = unsafe { std::slice::from_raw_parts(c.weights, c.pole_count) };
         assert!(weights.iter().all(|w| w.is_finite() && *w > 0.0));
         ends.push((edge.start, edge.end));
+        let mut analytic = poisoned::<RmfBrepAnalytic>();
+        ok("rmf_brep_edge_analytic", unsafe {
+            rmf_brep_edge_analytic(brep, e, &mut analytic)
+        });
+        if analytic.kind != RMF_ANALYTIC_NONE {
+            assert!(matches!(
+                analytic.kind,
+                RMF_ANALYTIC_LINE | RMF_ANALYTIC_CIRCLE
+            ));
+            assert!(analytic.end.is_finite() && analytic.end > 0.0);
+        }
+        analytic_edges.push(analytic.kind != RMF_ANALYTIC_NONE);
     }
     let mut in_shell = vec![0usize; counts.face_count];
     for shell in 0..counts.shell_count {
@@ -56,6 +69,11 @@ pub(crate) fn walk(brep: *mut RmfBrep) {
         ok("rmf_brep_face", unsafe {
             rmf_brep_face(brep, f, &mut face)
         });
+        let mut analytic = poisoned::<RmfBrepAnalytic>();
+        ok("rmf_brep_face_analytic", unsafe {
+            rmf_brep_face_analytic(brep, f, &mut analytic)
+        });
+        let curved = matches!(analytic.kind, RMF_ANALYTIC_CYLINDER | RMF_ANALYTIC_TORUS);
         for l in 0..face.loop_count {
             let mut bound = poisoned::<RmfBrepLoop>();
             ok("rmf_brep_loop", unsafe {
@@ -68,6 +86,25 @@ pub(crate) fn walk(brep: *mut RmfBrep) {
                     rmf_brep_use(brep, f, l, k, &mut u)
                 });
                 assert!(u.edge < counts.edge_count);
+                let mut on = poisoned::<RmfBrepUse>();
+                let status = unsafe { rmf_brep_analytic_use(brep, f, l, k, &mut on) };
+                if analytic.kind == RMF_ANALYTIC_NONE {
+                    assert!(!checked(
+                        "rmf_brep_analytic_use",
+                        status,
+                        &[is_poisoned(&on)]
+                    ));
+                } else {
+                    ok("rmf_brep_analytic_use", status);
+                    assert_eq!(on.edge, u.edge);
+                    if curved {
+                        assert!(
+                            analytic_edges[u.edge],
+                            "an analytic face's edges are analytic"
+                        );
+                        assert_eq!(on.pcurve_kind, RMF_PCURVE_LINE);
+                    }
+                }
                 let (a, b) = ends[u.edge];
                 path.push(if u.forward != 0 { (a, b) } else { (b, a) });
             }

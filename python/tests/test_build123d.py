@@ -153,6 +153,48 @@ def test_the_library_hands_over_its_brep_and_opencascade_takes_it_as_built(corne
         assert abs(gk_volume(pipe) - expected) <= 1e-12 * expected
 
 
+def surface_kinds(shape):
+    """How many faces of the shape lie on each kind of OpenCascade surface."""
+    from collections import Counter
+    from OCP.GeomAbs import GeomAbs_BSplineSurface, GeomAbs_Cylinder, GeomAbs_Torus
+    names = {GeomAbs_Plane: "plane", GeomAbs_Cylinder: "cylinder", GeomAbs_Torus: "torus",
+             GeomAbs_BSplineSurface: "bspline"}
+    kinds, explorer = Counter(), TopExp_Explorer(shape.wrapped, TopAbs_FACE)
+    while explorer.More():
+        kind = BRepAdaptor_Surface(TopoDS.Face(explorer.Current())).GetType()
+        kinds[names.get(kind, str(kind))] += 1
+        explorer.Next()
+    return kinds
+
+
+@needs_wire_sweep
+@pytest.mark.parametrize("hole", [False, True])
+def test_a_pipe_route_is_handed_over_as_the_cylinders_and_tori_it_is(hole):
+    """A circle (or ring) along lines and round corners is exact cylinders and tori:
+    OpenCascade reads them as its own analytic surfaces, not B-splines; the solid is valid
+    as read, its volume the closed form's, and a boolean with a box is valid and splits the
+    volume. With miter corners the cylinders end on ellipses and stay B-splines."""
+    import numpy as np
+    path = bd.Polyline((0, 0, 0), (40, 0, 0), (40, 30, 0), (40, 30, 25))
+    pipe = rocp.sweep(path, ring(path, hole), corner="round")
+    kinds = surface_kinds(pipe)
+    walls = 2 if hole else 1
+    assert kinds["bspline"] == 0 and kinds["plane"] == 2
+    assert kinds["cylinder"] > 0 and 2 * kinds["cylinder"] == 3 * kinds["torus"]
+    assert kinds["cylinder"] % (3 * walls) == 0
+    assert rocp.is_valid(pipe) and free_edges(pipe.wrapped) == 0
+    expected = math.pi * (R * R - (HOLE * HOLE if hole else 0.0)) * path_length(pipe, path)
+    assert abs(gk_volume(pipe) - expected) <= 1e-12 * expected
+    assert abs(pipe.volume - expected) <= 1e-9 * expected
+    box = bd.Box(30, 40, 40, align=(bd.Align.MIN, bd.Align.CENTER, bd.Align.CENTER))
+    inside, outside = pipe & box, pipe - box
+    assert rocp.is_valid(inside) and rocp.is_valid(outside)
+    assert np.isclose(inside.volume + outside.volume, pipe.volume, rtol=1e-9)
+    assert 0 < inside.volume < pipe.volume
+    mitered = rocp.sweep(path, ring(path, hole), corner="miter")
+    assert surface_kinds(mitered)["bspline"] > 0 and rocp.is_valid(mitered)
+
+
 def path_length(pipe, path):
     """The length of the rounded route rmfsurf swept: the polyline's, less 2r − rθ at each
     corner of radius r = 1.5 R (the library's default) and angle θ = π/2."""

@@ -11,16 +11,19 @@
 //! topological shapes, every one after the shapes it holds; a reference to a shape is its
 //! orientation and its number counted from the last shape written (the last is 1), and
 //! the file ends with the reference to the root. A face that is its whole B-spline surface
-//! is marked so (its natural restriction). Every curve is written as a B-spline
-//! (code 7: a pcurve line of the model need not run at unit speed, which a 2-D line
-//! would), surfaces as B-splines (code 9, poles with v running fastest) or planes (code
-//! 1: origin, normal, x axis, y = normal × x axis). Numbers are the shortest text that
-//! reads back as the same double.
+//! is marked so (its natural restriction). Curves are written as B-splines (code 7: a
+//! pcurve line of the model need not run at unit speed, which a 2-D line would), surfaces
+//! as B-splines (code 9, poles with v running fastest) or planes (code 1: origin, normal,
+//! x axis, y = normal × x axis) — except the model's analytic forms: planes, cylinders
+//! (code 2) and tori (code 5) for analytic faces, lines (code 1) and circles (code 2) for
+//! analytic edges, and on a cylinder or torus each edge's curve a 2-D line (code 1) of unit
+//! speed on the edge's length or angle. Numbers are the shortest text that reads back as
+//! the same double.
 
 use super::{curve_range, knot_runs, number, push_counts, push_numbers};
 use crate::bezier::{NurbsCurve, NurbsSurface};
 use crate::error::{invalid, Result};
-use crate::model::{Brep, BrepEdge, BrepFace, BrepSurface, PCurve};
+use crate::model::{AnalyticCurve, AnalyticSurface, Brep, BrepEdge, BrepFace, BrepSurface, PCurve};
 use std::fmt::Write;
 
 /// The text of `brep` in OpenCascade's B-rep format: a solid of one closed shell, or an
@@ -34,12 +37,18 @@ pub fn brep_to_occ(brep: &Brep) -> Result<String> {
     let on_edges = curves_2d(brep, &mut text)?;
     let _ = writeln!(text, "Curves {}", brep.edges.len());
     for edge in &brep.edges {
-        bspline(&mut text, &edge.curve, 3);
+        match &edge.analytic {
+            Some(analytic) => analytic_curve(&mut text, &analytic.curve),
+            None => bspline(&mut text, &edge.curve, 3),
+        }
     }
     text.push_str("Polygon3D 0\nPolygonOnTriangulations 0\n");
     let _ = writeln!(text, "Surfaces {}", brep.faces.len());
     for face in &brep.faces {
-        surface(&mut text, &face.surface);
+        match &face.analytic {
+            Some(analytic) => analytic_surface(&mut text, &analytic.surface),
+            None => surface(&mut text, &face.surface),
+        }
     }
     text.push_str("Triangulations 0\n\n");
     let mut shapes = Shapes::default();
@@ -63,15 +72,22 @@ pub fn brep_to_occ(brep: &Brep) -> Result<String> {
     }
     let mut in_shell = Vec::with_capacity(brep.faces.len());
     for (f, face) in brep.faces.iter().enumerate() {
+        let reversed = face
+            .analytic
+            .as_ref()
+            .is_some_and(|a| a.loops_reversed(face.same_sense));
         let wires: Vec<(char, usize)> = face
             .bounds
             .iter()
             .map(|bound| {
-                let uses = bound
+                let mut uses: Vec<_> = bound
                     .uses
                     .iter()
-                    .map(|u| (if u.forward { '+' } else { '-' }, edges[u.edge]))
+                    .map(|u| (if u.forward != reversed { '+' } else { '-' }, edges[u.edge]))
                     .collect();
+                if reversed {
+                    uses.reverse();
+                }
                 ('+', shapes.add("Wi\n".into(), "0101100", uses))
             })
             .collect();
@@ -84,7 +100,11 @@ pub fn brep_to_occ(brep: &Brep) -> Result<String> {
         data.push_str(&tolerance);
         push_counts(&mut data, [f + 1, 0]);
         data.push('\n');
-        let sense = if face.same_sense { '+' } else { '-' };
+        let same_sense = face
+            .analytic
+            .as_ref()
+            .map_or(face.same_sense, |a| a.same_sense);
+        let sense = if same_sense { '+' } else { '-' };
         in_shell.push((sense, shapes.add(data, "0101000", wires)));
     }
     // A solid holds its closed shells: one, or the outer shell and the walls of cavities (a
@@ -114,7 +134,7 @@ pub fn brep_to_occ(brep: &Brep) -> Result<String> {
 /// face's domain (its natural restriction): integrals over the face, as its volume and
 /// area, run over the rectangle instead of along the loop's curves.
 fn natural_bounds(face: &BrepFace) -> bool {
-    let BrepSurface::Nurbs(surface) = &face.surface else {
+    let (BrepSurface::Nurbs(surface), None) = (&face.surface, &face.analytic) else {
         return false;
     };
     let u = [
@@ -152,22 +172,52 @@ fn curves_2d(brep: &Brep, text: &mut String) -> Result<Vec<Vec<OnFace>>> {
     let mut count = 0;
     let mut on_edges: Vec<Vec<OnFace>> = (0..brep.edges.len()).map(|_| Vec::new()).collect();
     for (f, face) in brep.faces.iter().enumerate() {
-        let mut uses: Vec<_> = face.bounds.iter().flat_map(|b| &b.uses).collect();
+        let analytic = face.analytic.as_ref();
+        let mut uses: Vec<_> = face
+            .bounds
+            .iter()
+            .enumerate()
+            .flat_map(|(b, bound)| bound.uses.iter().enumerate().map(move |(k, u)| (b, k, u)))
+            .collect();
         // The forward use of a seam first: its curve is the first of the `3` record.
-        uses.sort_by_key(|u| !u.forward);
-        for u in uses {
+        uses.sort_by_key(|(_, _, u)| !u.forward);
+        for (b, k, u) in uses {
             let Some(on_faces) = on_edges.get_mut(u.edge) else {
                 return invalid!("face {f} uses edge {} of {}", u.edge, brep.edges.len());
             };
             // On a plane the kernel projects the edge itself (`BRep_Tool::CurveOnPlane`),
             // as it does for planes it makes.
-            if let BrepSurface::Plane { .. } = face.surface {
+            let planar = matches!(face.surface, BrepSurface::Plane { .. })
+                || matches!(analytic, Some(a) if matches!(a.surface, AnalyticSurface::Plane { .. }));
+            if planar {
                 continue;
             }
-            let Some(pcurve) = &u.pcurve else {
-                return invalid!("edge {} has no curve on face {f}", u.edge);
-            };
-            write_pcurve(&mut table, pcurve, &brep.edges[u.edge].curve);
+            let edge = &brep.edges[u.edge];
+            match (analytic, &edge.analytic) {
+                (Some(a), Some(_)) => {
+                    let Some(PCurve::Line { origin, direction }) =
+                        a.pcurves.get(b).and_then(|p| p.get(k))
+                    else {
+                        return invalid!("edge {} has no curve on the analytic face {f}", u.edge);
+                    };
+                    // A 2-D line (code 1), unit speed on the edge's angle or length.
+                    table.push('1');
+                    push_numbers(&mut table, [origin.0, origin.1, direction.0, direction.1]);
+                    table.push('\n');
+                }
+                (None, None) => {
+                    let Some(pcurve) = &u.pcurve else {
+                        return invalid!("edge {} has no curve on face {f}", u.edge);
+                    };
+                    write_pcurve(&mut table, pcurve, &edge.curve);
+                }
+                _ => {
+                    return invalid!(
+                        "edge {} and face {f} are not both analytic or both NURBS",
+                        u.edge
+                    )
+                }
+            }
             count += 1;
             match on_faces.iter_mut().find(|o| o.face == f) {
                 Some(on) => on.curves.push(count),
@@ -207,7 +257,9 @@ fn write_pcurve(text: &mut String, pcurve: &PCurve, edge: &NurbsCurve) {
 /// The edge's record: its 3-D curve (number `e + 1`; none for a degenerate edge, which
 /// the kernel marks so) and its curves on the faces.
 fn edge_data(e: usize, edge: &BrepEdge, on_faces: &[OnFace], tolerance: &str) -> String {
-    let (first, last) = curve_range(&edge.curve);
+    let (first, last) = edge
+        .analytic
+        .map_or_else(|| curve_range(&edge.curve), |a| (0.0, a.end));
     let mut data = String::with_capacity(160);
     data.push_str("Ed\n ");
     data.push_str(tolerance);
@@ -283,6 +335,48 @@ fn surface(text: &mut String, surface: &BrepSurface) {
             text.push('\n');
         }
     }
+}
+
+/// A line (code 1: origin, direction) or circle (code 2: centre, axis, x and y axes,
+/// radius).
+fn analytic_curve(text: &mut String, curve: &AnalyticCurve) {
+    match *curve {
+        AnalyticCurve::Line { origin, direction } => {
+            text.push('1');
+            for v in [origin, direction] {
+                push_numbers(text, v.to_array());
+            }
+        }
+        AnalyticCurve::Circle {
+            center,
+            axis,
+            x_axis,
+            radius,
+        } => {
+            text.push('2');
+            for v in [center, axis, x_axis, axis.cross(x_axis)] {
+                push_numbers(text, v.to_array());
+            }
+            push_numbers(text, [radius]);
+        }
+    }
+    text.push('\n');
+}
+
+/// A plane (code 1: location, normal, x and y axes), cylinder (code 2: the same and the
+/// radius) or torus (code 5: the same and the major and minor radii).
+fn analytic_surface(text: &mut String, surface: &AnalyticSurface) {
+    text.push(match surface {
+        AnalyticSurface::Plane { .. } => '1',
+        AnalyticSurface::Cylinder { .. } => '2',
+        AnalyticSurface::Torus { .. } => '5',
+    });
+    let [origin, axis, x_axis] = surface.axes();
+    for v in [origin, axis, x_axis, axis.cross(x_axis)] {
+        push_numbers(text, v.to_array());
+    }
+    push_numbers(text, surface.radii());
+    text.push('\n');
 }
 
 fn nurbs_surface(text: &mut String, s: &NurbsSurface) {

@@ -5,6 +5,7 @@
 //! used by both faces), and orientation is known where the faces are made, never measured
 //! afterwards.
 
+use super::analytic::{AnalyticEdge, AnalyticFace};
 use crate::bezier::{NurbsCurve, NurbsSurface};
 use crate::math::Classes;
 use glam::DVec3;
@@ -37,6 +38,9 @@ pub struct BrepEdge {
     /// parameter curve alone says where it runs. STEP leaves it out of the loops; the
     /// OpenCascade kernel needs it to close the loop in the parameter plane.
     pub degenerate: bool,
+    /// The same curve as a line or circle, where it is one and every face using the edge
+    /// is analytic or planar (then a writer may write it so; see [`AnalyticFace`]).
+    pub analytic: Option<AnalyticEdge>,
 }
 
 /// An edge's curve in a face's parameter plane, on the edge curve's parameter.
@@ -102,6 +106,9 @@ pub struct BrepFace {
     pub same_sense: bool,
     /// The loops: the outer bound and the holes.
     pub bounds: Vec<BrepBound>,
+    /// The same face on a plane, cylinder or torus, where its surface is one and every edge
+    /// it uses is analytic (planes: any edges).
+    pub analytic: Option<AnalyticFace>,
 }
 
 /// The geometry's tolerance relative to its largest coordinate (rounding of the model's

@@ -169,6 +169,7 @@ pub(super) fn solid(faces: &[PartFace], next: impl Fn(usize) -> usize) -> Brep {
                         start,
                         end,
                         degenerate,
+                        analytic: None,
                     });
                     let edge = brep.edges.len() - 1;
                     if !degenerate {
@@ -202,6 +203,7 @@ pub(super) fn solid(faces: &[PartFace], next: impl Fn(usize) -> usize) -> Brep {
             surface: BrepSurface::Nurbs(face.surface.clone()),
             same_sense: true,
             bounds: vec![BrepBound { uses, outer: true }],
+            analytic: None,
         });
     }
     brep

@@ -36,6 +36,7 @@ fn one_face(
                 start: vertices.len() - 2,
                 end: vertices.len() - 1,
                 degenerate: false,
+                analytic: None,
             }
         })
         .collect();
@@ -60,6 +61,7 @@ fn one_face(
             surface: BrepSurface::Nurbs(surface_of(surface)),
             same_sense: true,
             bounds,
+            analytic: None,
         }],
         closed: false,
     }

@@ -761,6 +761,8 @@ fn edge_points(edge: &Edge) -> Vec<DVec3> {
 }
 
 #[cfg(test)]
+mod analytic_tests;
+#[cfg(test)]
 mod guide_tests;
 #[cfg(test)]
 mod options_tests;

@@ -49,7 +49,9 @@ use crate::frames::Frame;
 use crate::math::{binomial, GaussLegendre};
 use crate::mesh::grid_parameters;
 use crate::model::Similarity;
-use crate::model::{Brep, BrepBound, BrepEdge, BrepFace, BrepSurface, BrepUse, PCurve};
+use crate::model::{
+    settle_analytic, Brep, BrepBound, BrepEdge, BrepFace, BrepSurface, BrepUse, PCurve,
+};
 use crate::ph_cubic::accuracy::AngleCheck;
 use crate::sweep::{sweep_profile, SweepProfile};
 use glam::{DVec3, DVec4};
@@ -539,7 +541,13 @@ pub(crate) fn build(
         {
             for (e, (n, surface)) in nurbs.into_iter().zip(surfaces).enumerate() {
                 let reversed = lp.closed && ((lp.area > 0.0) != (l == 0));
-                brep_faces.push(topology.lateral_face(j, l, e, n, !reversed));
+                let axis = spine_axis(
+                    framed,
+                    scales[j].is_none() && blend.is_none(),
+                    profile,
+                    placement,
+                );
+                brep_faces.push(topology.lateral_face(j, l, e, n, !reversed, axis, &surface));
                 faces.push(Face {
                     kind: FaceKind::Swept,
                     surface: Some(surface),
@@ -596,14 +604,16 @@ pub(crate) fn build(
         joint_gap,
         frame_error: transport.frame_error,
     };
+    let mut brep = Brep {
+        vertices: topology.vertices,
+        edges: topology.edges,
+        faces: brep_faces,
+        closed: closed_shell,
+    };
+    settle_analytic(&mut brep);
     Ok(Shape {
         faces,
-        brep: Brep {
-            vertices: topology.vertices,
-            edges: topology.edges,
-            faces: brep_faces,
-            closed: closed_shell,
-        },
+        brep,
         solid: closed_shell,
         built,
         report: OnceLock::new(),
@@ -621,6 +631,31 @@ pub(crate) fn build(
             .collect(),
         placement,
     })
+}
+
+/// The line or arc a piece sweeps its profile along untwisted (its frame constant along a
+/// line, the arc's rotation along an arc), unscaled and in the normal plane: what makes a
+/// lateral face analytic ([`topology::SpineAxis`]).
+fn spine_axis(
+    framed: &super::frame::Framed,
+    unscaled: bool,
+    profile: &Profile,
+    placement: Similarity,
+) -> Option<topology::SpineAxis> {
+    if !unscaled || profile.plane.is_some() {
+        return None;
+    }
+    match (&framed.piece.geometry, &framed.frame) {
+        (Geometry::Line { a, b }, PieceFrame::Constant { .. }) => {
+            Some(topology::SpineAxis::Line((*b - *a).normalize()))
+        }
+        (Geometry::Arc(arc), PieceFrame::Circular { .. }) => Some(topology::SpineAxis::Arc {
+            center: placement.to_user(arc.center),
+            normal: arc.normal,
+            angle: arc.angle,
+        }),
+        _ => None,
+    }
 }
 
 /// A blend's laws on each piece: 1 − λ, λ and 1 (for the spine's own term), λ linear in

@@ -3,6 +3,8 @@
 //! spine edges, the faces' senses).
 
 use super::*;
+use crate::math::{robust_length, robust_normalize};
+use crate::model::{AnalyticCurve, AnalyticEdge, AnalyticFace, AnalyticSurface};
 
 /// Vertices and edges shared by the faces (module notes).
 pub(super) struct Topology<'a> {
@@ -98,12 +100,8 @@ impl<'a> Topology<'a> {
                         };
                         let curve = s.boundary_curve(side);
                         let next = if lp.closed { (e + 1) % n } else { e + 1 };
-                        t.edges.push(BrepEdge {
-                            curve,
-                            start: vertex[k][l][e],
-                            end: vertex[k][l][next],
-                            degenerate: false,
-                        });
+                        t.edges
+                            .push(edge(curve, vertex[k][l][e], vertex[k][l][next]));
                         t.edges.len() - 1
                     })
                     .collect();
@@ -124,12 +122,11 @@ impl<'a> Topology<'a> {
                         } else {
                             (&faces[l][n - 1], 1)
                         };
-                        t.edges.push(BrepEdge {
-                            curve: s.boundary_curve(side),
-                            start: vertex_at(j, l, v),
-                            end: vertex_at(j + 1, l, v),
-                            degenerate: false,
-                        });
+                        t.edges.push(edge(
+                            s.boundary_curve(side),
+                            vertex_at(j, l, v),
+                            vertex_at(j + 1, l, v),
+                        ));
                         t.edges.len() - 1
                     })
                     .collect();
@@ -140,7 +137,10 @@ impl<'a> Topology<'a> {
         t
     }
 
-    /// The lateral face (j, l, e): its four sides counter-clockwise in (u, v).
+    /// The lateral face (j, l, e): its four sides counter-clockwise in (u, v); `axis` the
+    /// spine piece's line or arc where the face is a profile edge swept along it untwisted
+    /// and unscaled (then a circle sweeps a cylinder or torus: [`analytic_face`]).
+    #[allow(clippy::too_many_arguments)]
     pub(super) fn lateral_face(
         &mut self,
         j: usize,
@@ -148,7 +148,13 @@ impl<'a> Topology<'a> {
         e: usize,
         s: NurbsSurface,
         same_sense: bool,
+        axis: Option<SpineAxis>,
+        surface: &PiecewiseSurface,
     ) -> BrepFace {
+        let analytic = axis.and_then(|axis| {
+            let section = self.edges[self.sections[j][l][e]].analytic?;
+            analytic_face(axis, &section, surface, same_sense)
+        });
         let lp = &self.profile.loops[l];
         let n = lp.edges.len();
         let next = if lp.closed { (e + 1) % n } else { e + 1 };
@@ -205,6 +211,7 @@ impl<'a> Topology<'a> {
             surface: BrepSurface::Nurbs(s),
             same_sense,
             bounds: vec![BrepBound { uses, outer: true }],
+            analytic,
         }
     }
 
@@ -291,9 +298,121 @@ impl<'a> Topology<'a> {
             },
             same_sense: true,
             bounds,
+            analytic: None,
         };
         Ok((face, brep))
     }
+}
+
+/// An edge of the sweep, with the line or circle its curve is.
+fn edge(curve: NurbsCurve, start: usize, end: usize) -> BrepEdge {
+    BrepEdge {
+        analytic: AnalyticEdge::of_curve(&curve),
+        curve,
+        start,
+        end,
+        degenerate: false,
+    }
+}
+
+/// The line or arc of a spine piece swept untwisted and unscaled, in the caller's
+/// coordinates: its unit direction, or its centre, unit normal and angle.
+#[derive(Clone, Copy, Debug)]
+pub(super) enum SpineAxis {
+    Line(DVec3),
+    Arc {
+        center: DVec3,
+        normal: DVec3,
+        angle: f64,
+    },
+}
+
+/// The analytic surface of a lateral face whose profile edge (its `section` at the piece's
+/// start) is a circle: a circle in the normal plane of a line sweeps a cylinder, one in a
+/// plane through an arc's axis a torus (the frame along an untwisted arc is the arc's
+/// rotation); a line along a line sweeps a plane. `None` for other faces (a circle drawn
+/// out of the normal plane sweeps an elliptic cylinder), and for tori the kernel would not
+/// take as one (the tube reaching the axis, an arc of a whole turn).
+fn analytic_face(
+    axis: SpineAxis,
+    section: &AnalyticEdge,
+    surface: &PiecewiseSurface,
+    same_sense: bool,
+) -> Option<AnalyticFace> {
+    const PARALLEL: f64 = 1e-10;
+    let analytic = match (axis, section.curve) {
+        (
+            SpineAxis::Line(direction),
+            AnalyticCurve::Circle {
+                center,
+                axis,
+                x_axis,
+                radius,
+            },
+        ) => {
+            (axis.dot(direction).abs() >= 1.0 - PARALLEL).then_some(AnalyticSurface::Cylinder {
+                origin: center,
+                axis: direction,
+                x_axis,
+                radius,
+            })?
+        }
+        (
+            SpineAxis::Line(direction),
+            AnalyticCurve::Line {
+                origin,
+                direction: along,
+            },
+        ) => {
+            let normal = along.cross(direction);
+            (normal.length() > PARALLEL).then_some(AnalyticSurface::Plane {
+                origin,
+                normal: normal.normalize(),
+                x_axis: along,
+            })?
+        }
+        (
+            SpineAxis::Arc {
+                center: c,
+                normal,
+                angle,
+            },
+            AnalyticCurve::Circle {
+                center,
+                axis,
+                radius,
+                ..
+            },
+        ) => {
+            let offset = center - c;
+            let height = offset.dot(normal);
+            let radial = offset - normal * height;
+            let major = robust_length(radial);
+            // The circle's axis carries the rounding of its coordinates over its radius.
+            let slack = PARALLEL + 64.0 * f64::EPSILON * center.abs().max_element() / radius;
+            let meridian = axis.dot(normal).abs() <= slack
+                && offset.dot(axis).abs() <= slack * (major + radius);
+            (meridian && major > radius * (1.0 + 1e-9) && angle < 1.9 * std::f64::consts::PI)
+                .then_some(AnalyticSurface::Torus {
+                    center: c + normal * height,
+                    axis: normal,
+                    x_axis: radial / major,
+                    major,
+                    minor: radius,
+                })?
+        }
+        _ => return None,
+    };
+    // The face's sense on the analytic surface: the NURBS normal against the analytic one
+    // at the middle of the first patch.
+    let jet = surface.patches().first()?.eval_jet(0.5, 0.5);
+    let normal = robust_normalize(jet.du)?.cross(robust_normalize(jet.dv)?);
+    let along = normal.dot(analytic.normal(jet.point)) > 0.0;
+    Some(AnalyticFace {
+        surface: analytic,
+        same_sense: same_sense == along,
+        pcurves: Vec::new(),
+    })
 }
 
 /// The parameter line u = const of a spine edge: a `LINE`, or for a face of several spans
