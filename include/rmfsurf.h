@@ -2461,7 +2461,10 @@ RmfStatus rmf_brep_edge_analytic(const struct RmfBrep *brep,
 /**
  * Edge use `index` of loop `loop` of an analytic face, with its curve on the analytic
  * surface: RMF_PCURVE_LINE on the edge's analytic parameter (a parameter line of unit
- * speed) on a cylinder or torus, RMF_PCURVE_NONE on a plane.
+ * speed) on a cylinder or torus, RMF_PCURVE_NONE on a plane. The uses run the loop
+ * counter-clockwise on the analytic surface (holes clockwise): where its parameters have
+ * the other orientation than the NURBS surface's, in the reverse order of rmf_brep_use,
+ * each against its direction there.
  *
  * @param[in] brep The B-rep.
  * @param[in] face 0 ≤ face < face_count, a face whose rmf_brep_face_analytic kind is not
