@@ -238,29 +238,50 @@ def check_solid(label, shape, volume):
 
 
 def divergence_volume(shape, parts=8):
-    """V = ∮ (x·a)(n·a) dA, a a direction in the planes of all planar faces (the caps), so
-    that only the swept faces count: Gauss-Legendre on every knot span with FreeCAD's
-    derivatives and oriented normals — independent of FreeCAD's volume integration."""
-    normals = [f.normalAt(*f.ParameterRange[::2]) for f in shape.Faces
-               if isinstance(f.Surface, Part.Plane)]
-    # Without caps (a closed ring) any direction serves.
-    a = V(0.3, 0.5, 0.7) if not normals else normals[0].cross(
-        next((n for n in normals if n.cross(normals[0]).Length > 1e-6), V(0.3, 0.5, 0.7)))
+    """V = ∮ (x·a)(n·a) dA — independent of FreeCAD's volume integration: Gauss-Legendre on
+    every knot span of the curved faces with FreeCAD's derivatives and oriented normals;
+    planar faces bounded by straight edges (polygonal caps, the sides of a polygon swept
+    along a line) exactly from their triangles; a direction a in the planes of the other
+    planar faces (round caps), so that they count nothing."""
+    round_caps = [f.normalAt(*f.ParameterRange[::2]) for f in shape.Faces
+                  if isinstance(f.Surface, Part.Plane) and not straight_edged(f)]
+    # Without round caps (a closed ring, a polygon along lines) any direction serves.
+    a = V(0.3, 0.5, 0.7) if not round_caps else round_caps[0].cross(
+        next((n for n in round_caps if n.cross(round_caps[0]).Length > 1e-6), V(0.3, 0.5, 0.7)))
     a.normalize()
-    if any(abs(n.dot(a)) > 1e-12 for n in normals):
-        raise ValueError("no direction lies in every cap's plane")
+    if any(abs(n.dot(a)) > 1e-12 for n in round_caps):
+        raise ValueError("no direction lies in every round cap's plane")
     total = 0.0
     for face in shape.Faces:
         surface = face.Surface
         if isinstance(surface, Part.Plane):
+            if straight_edged(face):
+                total += polygon_flux(face, a)
             continue
         u0, u1, v0, v1 = face.ParameterRange
-        for u, wu in gauss_nodes(_breaks(surface.getUKnots(), u0, u1), parts):
-            for v, wv in gauss_nodes(_breaks(surface.getVKnots(), v0, v1), parts):
+        for u, wu in gauss_nodes(_breaks(knots_of(surface, 'U'), u0, u1), parts):
+            for v, wv in gauss_nodes(_breaks(knots_of(surface, 'V'), v0, v1), parts):
                 du, dv = surface.getDN(u, v, 1, 0), surface.getDN(u, v, 0, 1)
                 total += wu * wv * surface.value(u, v).dot(a) * face.normalAt(u, v).dot(a) \
                     * du.cross(dv).Length
     return total
+
+
+def straight_edged(face):
+    return all(isinstance(e.Curve, (Part.Line, Part.LineSegment)) for e in face.Edges)
+
+
+def polygon_flux(face, a):
+    """∫ (x·a)(n·a) dA over a planar face bounded by straight edges: its triangles are the
+    face exactly, x·a linear on each (the value at its centroid times its area)."""
+    n = face.normalAt(*face.ParameterRange[::2])
+    points, triangles = face.tessellate(1.0)
+    flux = 0.0
+    for i, j, k in triangles:
+        p, q, r = points[i], points[j], points[k]
+        area = 0.5 * (q - p).cross(r - p).Length
+        flux += area * ((p + q + r) * (1.0 / 3.0)).dot(a)
+    return flux * n.dot(a)
 
 
 def part_b(doc):
@@ -845,6 +866,13 @@ def gauss_nodes(breaks, parts):
                 yield 0.5 * (lo + hi) + 0.5 * (hi - lo) * x, 0.5 * (hi - lo) * w
 
 
+def knots_of(surface, direction):
+    """A B-spline surface's knots along 'U' or 'V'; none for an analytic surface (a
+    cylinder or torus is smooth over the face)."""
+    knots = getattr(surface, "get%sKnots" % direction, None)
+    return knots() if knots else []
+
+
 def _breaks(knots, lo, hi):
     return sorted({lo, hi} | {k for k in knots if lo < k < hi})
 
@@ -855,8 +883,8 @@ def nurbs_area(face, parts=4):
     surface = face.Surface
     u0, u1, v0, v1 = face.ParameterRange
     return sum(wu * wv * surface.getDN(u, v, 1, 0).cross(surface.getDN(u, v, 0, 1)).Length
-               for u, wu in gauss_nodes(_breaks(surface.getUKnots(), u0, u1), parts)
-               for v, wv in gauss_nodes(_breaks(surface.getVKnots(), v0, v1), parts))
+               for u, wu in gauss_nodes(_breaks(knots_of(surface, 'U'), u0, u1), parts)
+               for v, wv in gauss_nodes(_breaks(knots_of(surface, 'V'), v0, v1), parts))
 
 
 def part_d(doc):
