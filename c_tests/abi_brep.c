@@ -92,7 +92,7 @@ static void check_analytic(const RmfBrep *brep, const char *what, double size, s
     RmfBrepFace face;
     RmfBrepLoop lp;
     RmfBrepUse u;
-    size_t f, l, k, i, j, count[4] = {0, 0, 0, 0};
+    size_t f, l, k, i, j, count[8] = {0, 0, 0, 0, 0, 0, 0, 0};
     double worst_surface = 0, worst_use = 0, worst_vertex = 0;
     CHECK_STATUS(rmf_brep_counts(brep, &counts), RMF_OK, "");
     for (k = 0; k < counts.edge_count; ++k) {
@@ -114,7 +114,8 @@ static void check_analytic(const RmfBrep *brep, const char *what, double size, s
                 CHECK_STATUS(rmf_brep_analytic_use(brep, f, 0, 0, &u), RMF_ERROR_INVALID_INPUT, "face");
             continue;
         }
-        count[a.kind]++;
+        count[a.kind & 7]++;
+        if (a.kind != RMF_ANALYTIC_CYLINDER && a.kind != RMF_ANALYTIC_TORUS) continue;
         for (i = 0; i <= 4; ++i) {
             for (j = 0; j <= 4; ++j) {
                 const RmfNurbsSurface *s = &face.nurbs;

@@ -184,6 +184,13 @@
 #define RMF_ANALYTIC_TORUS 3
 
 /**
+ * RmfBrepAnalytic.kind of a face: the cone location + (radius + v sin α)(cos u x + sin u
+ * y) + v cos α axis, α = semi_angle, y = axis × x_axis (Geom_ConicalSurface).
+ * \ingroup rmf_brep
+ */
+#define RMF_ANALYTIC_CONE 6
+
+/**
  * RmfBrepAnalytic.kind of an edge: the line location + s axis (axis a unit vector), s
  * from 0 at the edge's start vertex to end (Geom_Line).
  * \ingroup rmf_brep
@@ -907,7 +914,7 @@ typedef struct RmfBrepUse {
 } RmfBrepUse;
 
 /**
- * The analytic form of a face (plane, cylinder, torus) or an edge (line, circle), on
+ * The analytic form of a face (plane, cylinder, cone, torus) or an edge (line, circle), on
  * OpenCascade's parameters. A kernel holding analytic geometry builds such a face on the
  * analytic surface, with the analytic curve of every edge it uses (each is analytic:
  * rmf_brep_edge_analytic) and each use's curve from rmf_brep_analytic_use; an analytic
@@ -917,13 +924,13 @@ typedef struct RmfBrepUse {
  */
 typedef struct RmfBrepAnalytic {
   /**
-   * RMF_ANALYTIC_NONE, or RMF_ANALYTIC_PLANE, _CYLINDER, _TORUS (faces), RMF_ANALYTIC_LINE,
-   * _CIRCLE (edges).
+   * RMF_ANALYTIC_NONE, or RMF_ANALYTIC_PLANE, _CYLINDER, _CONE, _TORUS (faces),
+   * RMF_ANALYTIC_LINE, _CIRCLE (edges).
    */
   uint32_t kind;
   /**
-   * The plane's point, the cylinder's point on the axis at v = 0, the torus's or the
-   * circle's centre, the line's point at s = 0.
+   * The plane's point, the cylinder's or cone's point on the axis at v = 0, the torus's
+   * or the circle's centre, the line's point at s = 0.
    */
   struct RmfVec3 location;
   /**
@@ -937,14 +944,18 @@ typedef struct RmfBrepAnalytic {
    */
   struct RmfVec3 x_axis;
   /**
-   * The radius of the cylinder or circle, the torus's major radius (distance of the
-   * tube's centre from the axis).
+   * The radius of the cylinder or circle, the cone's radius at v = 0, the torus's major
+   * radius (distance of the tube's centre from the axis).
    */
   double radius;
   /**
    * The torus's minor radius (the tube's).
    */
   double minor_radius;
+  /**
+   * The cone's semi-angle α between its rulings and its axis (|α| < π/2, radians).
+   */
+  double semi_angle;
   /**
    * Edges: the parameter of the end vertex (the line's length, the arc's angle).
    */
@@ -2430,7 +2441,7 @@ RmfStatus rmf_brep_use(const struct RmfBrep *brep,
                        struct RmfBrepUse *out);
 
 /**
- * The analytic form of face `index` (a plane, cylinder or torus), or kind
+ * The analytic form of face `index` (a plane, cylinder, cone or torus), or kind
  * RMF_ANALYTIC_NONE.
  *
  * @param[in] brep The B-rep.
@@ -2461,7 +2472,7 @@ RmfStatus rmf_brep_edge_analytic(const struct RmfBrep *brep,
 /**
  * Edge use `index` of loop `loop` of an analytic face, with its curve on the analytic
  * surface: RMF_PCURVE_LINE on the edge's analytic parameter (a parameter line of unit
- * speed) on a cylinder or torus, RMF_PCURVE_NONE on a plane. The uses run the loop
+ * speed) on a cylinder, cone or torus, RMF_PCURVE_NONE on a plane. The uses run the loop
  * counter-clockwise on the analytic surface (holes clockwise): where its parameters have
  * the other orientation than the NURBS surface's, in the reverse order of rmf_brep_use,
  * each against its direction there.

@@ -4,7 +4,7 @@
 // edge with its curve on each face, seams as seams, degenerate edges at cone apices, the
 // loops and faces' senses as the library made them. No sewing, no STEP file, no ShapeFix:
 // the result is valid for BRepCheck_Analyzer as built. Faces the library marks analytic
-// (rmf_brep_face_analytic) are built on OpenCascade's own planes, cylinders and tori, their
+// (rmf_brep_face_analytic) are built on OpenCascade's own planes, cylinders, cones and tori, their
 // edges as lines and circles (rmf_brep_edge_analytic).
 //
 //     #include "rmfsurf_occ.hpp"
@@ -25,6 +25,7 @@
 #include <Geom2d_Line.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_Circle.hxx>
+#include <Geom_ConicalSurface.hxx>
 #include <Geom_CylindricalSurface.hxx>
 #include <Geom_Line.hxx>
 #include <Geom_Plane.hxx>
@@ -158,13 +159,15 @@ inline Handle(Geom_Curve) analytic_curve(const RmfBrepAnalytic &a) {
     return Handle(Geom_Curve)();
 }
 
-/// A plane, cylinder or torus (rmf_brep_face_analytic); null otherwise.
+/// A plane, cylinder, cone or torus (rmf_brep_face_analytic); null otherwise.
 inline Handle(Geom_Surface) analytic_surface(const RmfBrepAnalytic &a) {
-    if (a.kind != RMF_ANALYTIC_PLANE && a.kind != RMF_ANALYTIC_CYLINDER && a.kind != RMF_ANALYTIC_TORUS)
+    if (a.kind != RMF_ANALYTIC_PLANE && a.kind != RMF_ANALYTIC_CYLINDER && a.kind != RMF_ANALYTIC_CONE &&
+        a.kind != RMF_ANALYTIC_TORUS)
         return Handle(Geom_Surface)();
     const gp_Ax3 axes(point(a.location), direction(a.axis), direction(a.x_axis));
     if (a.kind == RMF_ANALYTIC_PLANE) return new Geom_Plane(axes);
     if (a.kind == RMF_ANALYTIC_CYLINDER) return new Geom_CylindricalSurface(axes, a.radius);
+    if (a.kind == RMF_ANALYTIC_CONE) return new Geom_ConicalSurface(axes, a.semi_angle, a.radius);
     if (a.kind == RMF_ANALYTIC_TORUS) return new Geom_ToroidalSurface(axes, a.radius, a.minor_radius);
     return Handle(Geom_Surface)();
 }

@@ -51,6 +51,10 @@ pub const RMF_ANALYTIC_CYLINDER: u32 = 2;
 /// x + sin u y) + minor_radius sin v axis (OpenCascade's Geom_ToroidalSurface).
 /// \ingroup rmf_brep
 pub const RMF_ANALYTIC_TORUS: u32 = 3;
+/// RmfBrepAnalytic.kind of a face: the cone location + (radius + v sin α)(cos u x + sin u
+/// y) + v cos α axis, α = semi_angle, y = axis × x_axis (Geom_ConicalSurface).
+/// \ingroup rmf_brep
+pub const RMF_ANALYTIC_CONE: u32 = 6;
 /// RmfBrepAnalytic.kind of an edge: the line location + s axis (axis a unit vector), s
 /// from 0 at the edge's start vertex to end (Geom_Line).
 /// \ingroup rmf_brep
@@ -229,17 +233,15 @@ fn analytic_face_view(face: &BrepFace) -> RmfBrepAnalytic {
     let Some(analytic) = &face.analytic else {
         return RmfBrepAnalytic::default();
     };
-    let kind = match analytic.surface {
-        AnalyticSurface::Plane { .. } => RMF_ANALYTIC_PLANE,
-        AnalyticSurface::Cylinder { .. } => RMF_ANALYTIC_CYLINDER,
-        AnalyticSurface::Torus { .. } => RMF_ANALYTIC_TORUS,
-    };
     let [location, axis, x_axis] = analytic.surface.axes();
-    let radii = analytic.surface.radii();
-    let (radius, minor_radius) = (
-        radii.first().copied().unwrap_or(0.0),
-        radii.get(1).copied().unwrap_or(0.0),
-    );
+    let (kind, radius, minor_radius, semi_angle) = match analytic.surface {
+        AnalyticSurface::Plane { .. } => (RMF_ANALYTIC_PLANE, 0.0, 0.0, 0.0),
+        AnalyticSurface::Cylinder { radius, .. } => (RMF_ANALYTIC_CYLINDER, radius, 0.0, 0.0),
+        AnalyticSurface::Cone {
+            radius, semi_angle, ..
+        } => (RMF_ANALYTIC_CONE, radius, 0.0, semi_angle),
+        AnalyticSurface::Torus { major, minor, .. } => (RMF_ANALYTIC_TORUS, major, minor, 0.0),
+    };
     RmfBrepAnalytic {
         kind,
         location: location.into(),
@@ -247,6 +249,7 @@ fn analytic_face_view(face: &BrepFace) -> RmfBrepAnalytic {
         x_axis: x_axis.into(),
         radius,
         minor_radius,
+        semi_angle,
         end: 0.0,
         same_sense: u32::from(analytic.same_sense),
     }
@@ -279,6 +282,7 @@ fn analytic_edge_view(edge: &BrepEdge) -> RmfBrepAnalytic {
         x_axis: x_axis.into(),
         radius,
         minor_radius: 0.0,
+        semi_angle: 0.0,
         end,
         same_sense: 1,
     }
@@ -413,7 +417,7 @@ pub struct RmfBrepUse {
     pub pcurve: RmfNurbsCurve,
 }
 
-/// The analytic form of a face (plane, cylinder, torus) or an edge (line, circle), on
+/// The analytic form of a face (plane, cylinder, cone, torus) or an edge (line, circle), on
 /// OpenCascade's parameters. A kernel holding analytic geometry builds such a face on the
 /// analytic surface, with the analytic curve of every edge it uses (each is analytic:
 /// rmf_brep_edge_analytic) and each use's curve from rmf_brep_analytic_use; an analytic
@@ -423,11 +427,11 @@ pub struct RmfBrepUse {
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct RmfBrepAnalytic {
-    /// RMF_ANALYTIC_NONE, or RMF_ANALYTIC_PLANE, _CYLINDER, _TORUS (faces), RMF_ANALYTIC_LINE,
-    /// _CIRCLE (edges).
+    /// RMF_ANALYTIC_NONE, or RMF_ANALYTIC_PLANE, _CYLINDER, _CONE, _TORUS (faces),
+    /// RMF_ANALYTIC_LINE, _CIRCLE (edges).
     pub kind: u32,
-    /// The plane's point, the cylinder's point on the axis at v = 0, the torus's or the
-    /// circle's centre, the line's point at s = 0.
+    /// The plane's point, the cylinder's or cone's point on the axis at v = 0, the torus's
+    /// or the circle's centre, the line's point at s = 0.
     pub location: RmfVec3,
     /// The unit normal of the plane or circle, the unit axis of the cylinder or torus, the
     /// unit direction of the line.
@@ -435,11 +439,13 @@ pub struct RmfBrepAnalytic {
     /// The unit direction of the first parameter (u = 0 or s = 0), perpendicular to axis
     /// (zero for a line).
     pub x_axis: RmfVec3,
-    /// The radius of the cylinder or circle, the torus's major radius (distance of the
-    /// tube's centre from the axis).
+    /// The radius of the cylinder or circle, the cone's radius at v = 0, the torus's major
+    /// radius (distance of the tube's centre from the axis).
     pub radius: f64,
     /// The torus's minor radius (the tube's).
     pub minor_radius: f64,
+    /// The cone's semi-angle α between its rulings and its axis (|α| < π/2, radians).
+    pub semi_angle: f64,
     /// Edges: the parameter of the end vertex (the line's length, the arc's angle).
     pub end: f64,
     /// Faces: 1 if the face's normal (out of a solid) is the analytic surface's, 0 if its
@@ -619,7 +625,7 @@ pub unsafe extern "C" fn rmf_brep_use(
     })
 }
 
-/// The analytic form of face `index` (a plane, cylinder or torus), or kind
+/// The analytic form of face `index` (a plane, cylinder, cone or torus), or kind
 /// RMF_ANALYTIC_NONE.
 ///
 /// @param[in] brep The B-rep.
@@ -668,7 +674,7 @@ pub unsafe extern "C" fn rmf_brep_edge_analytic(
 
 /// Edge use `index` of loop `loop` of an analytic face, with its curve on the analytic
 /// surface: RMF_PCURVE_LINE on the edge's analytic parameter (a parameter line of unit
-/// speed) on a cylinder or torus, RMF_PCURVE_NONE on a plane. The uses run the loop
+/// speed) on a cylinder, cone or torus, RMF_PCURVE_NONE on a plane. The uses run the loop
 /// counter-clockwise on the analytic surface (holes clockwise): where its parameters have
 /// the other orientation than the NURBS surface's, in the reverse order of rmf_brep_use,
 /// each against its direction there.

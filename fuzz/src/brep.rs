@@ -73,7 +73,10 @@ pub(crate) fn walk(brep: *mut RmfBrep) {
         ok("rmf_brep_face_analytic", unsafe {
             rmf_brep_face_analytic(brep, f, &mut analytic)
         });
-        let curved = matches!(analytic.kind, RMF_ANALYTIC_CYLINDER | RMF_ANALYTIC_TORUS);
+        let curved = matches!(
+            analytic.kind,
+            RMF_ANALYTIC_CYLINDER | RMF_ANALYTIC_CONE | RMF_ANALYTIC_TORUS
+        );
         for l in 0..face.loop_count {
             let mut bound = poisoned::<RmfBrepLoop>();
             ok("rmf_brep_loop", unsafe {

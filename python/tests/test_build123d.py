@@ -156,9 +156,10 @@ def test_the_library_hands_over_its_brep_and_opencascade_takes_it_as_built(corne
 def surface_kinds(shape):
     """How many faces of the shape lie on each kind of OpenCascade surface."""
     from collections import Counter
-    from OCP.GeomAbs import GeomAbs_BSplineSurface, GeomAbs_Cylinder, GeomAbs_Torus
+    from OCP.GeomAbs import (GeomAbs_BSplineSurface, GeomAbs_Cone, GeomAbs_Cylinder,
+                             GeomAbs_Torus)
     names = {GeomAbs_Plane: "plane", GeomAbs_Cylinder: "cylinder", GeomAbs_Torus: "torus",
-             GeomAbs_BSplineSurface: "bspline"}
+             GeomAbs_Cone: "cone", GeomAbs_BSplineSurface: "bspline"}
     kinds, explorer = Counter(), TopExp_Explorer(shape.wrapped, TopAbs_FACE)
     while explorer.More():
         kind = BRepAdaptor_Surface(TopoDS.Face(explorer.Current())).GetType()
@@ -193,6 +194,28 @@ def test_a_pipe_route_is_handed_over_as_the_cylinders_and_tori_it_is(hole):
     assert 0 < inside.volume < pipe.volume
     mitered = rocp.sweep(path, ring(path, hole), corner="miter")
     assert surface_kinds(mitered)["bspline"] > 0 and rocp.is_valid(mitered)
+
+
+@needs_wire_sweep
+def test_a_square_duct_is_handed_over_as_planes_cones_and_cylinders():
+    """A square (R across its corners) along lines and round corners: planes along the
+    lines; about each corner's axis its sides sweep cones (the square standing on a corner
+    there) or cylinders and annuli (upright); turned by 45° one becomes the other.
+    OpenCascade reads them as its own surfaces, the solid valid, its volume the profile's
+    area times the length of the route (Pappus)."""
+    path = bd.Polyline((0, 0, 0), (40, 0, 0), (40, 30, 0), (40, 30, 25))
+    plane = bd.Plane(origin=path @ 0, z_dir=path % 0)
+    cones = []
+    for turn in (0.0, 45.0):
+        square = bd.RegularPolygon(R, 4, rotation=turn)
+        duct = rocp.sweep(path, plane * square.faces()[0], corner="round")
+        kinds = surface_kinds(duct)
+        assert kinds["bspline"] == 0 and rocp.is_valid(duct) and free_edges(duct.wrapped) == 0
+        assert kinds["cone"] + kinds["cylinder"] + kinds["plane"] == 3 * 4 + 2 * 4 + 2
+        cones.append(kinds["cone"])
+        expected = 2 * R * R * path_length(duct, path)
+        assert abs(gk_volume(duct) - expected) <= 1e-12 * expected
+    assert sorted(cones) == [0, 8]
 
 
 def path_length(pipe, path):

@@ -15,7 +15,7 @@
 //! pcurve line of the model need not run at unit speed, which a 2-D line would), surfaces
 //! as B-splines (code 9, poles with v running fastest) or planes (code 1: origin, normal,
 //! x axis, y = normal × x axis) — except the model's analytic forms: planes, cylinders
-//! (code 2) and tori (code 5) for analytic faces, lines (code 1) and circles (code 2) for
+//! (code 2), cones (code 3) and tori (code 5) for analytic faces, lines (code 1) and circles (code 2) for
 //! analytic edges, and on a cylinder or torus each edge's curve a 2-D line (code 1) of unit
 //! speed on the edge's length or angle. Numbers are the shortest text that reads back as
 //! the same double.
@@ -364,18 +364,20 @@ fn analytic_curve(text: &mut String, curve: &AnalyticCurve) {
 }
 
 /// A plane (code 1: location, normal, x and y axes), cylinder (code 2: the same and the
-/// radius) or torus (code 5: the same and the major and minor radii).
+/// radius), cone (code 3: the same, the radius at v = 0 and the semi-angle) or torus (code
+/// 5: the same and the major and minor radii).
 fn analytic_surface(text: &mut String, surface: &AnalyticSurface) {
     text.push(match surface {
         AnalyticSurface::Plane { .. } => '1',
         AnalyticSurface::Cylinder { .. } => '2',
+        AnalyticSurface::Cone { .. } => '3',
         AnalyticSurface::Torus { .. } => '5',
     });
     let [origin, axis, x_axis] = surface.axes();
     for v in [origin, axis, x_axis, axis.cross(x_axis)] {
         push_numbers(text, v.to_array());
     }
-    push_numbers(text, surface.radii());
+    push_numbers(text, surface.dimensions());
     text.push('\n');
 }
 

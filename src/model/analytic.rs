@@ -12,7 +12,8 @@
 //! Book*, §7.3, eq. (7.33) and Fig. 7.16).
 //!
 //! A construction marks the faces it knows to be analytic (a circle swept along an
-//! untwisted line is a cylinder, along an untwisted arc a torus); [`settle`] keeps a face
+//! untwisted line is a cylinder, along an untwisted arc a torus, a line along an arc a
+//! cone, cylinder or annulus); [`settle`] keeps a face
 //! analytic only where every edge it uses is a line or circle lying along its parameter
 //! lines, and an edge analytic only where every face using it is analytic or planar (a
 //! kernel projects an edge onto a plane itself), so that every curve on a face is on the
@@ -65,7 +66,7 @@ pub struct AnalyticEdge {
     pub end: f64,
 }
 
-/// A plane, cylinder or torus, on OpenCascade's parameters (y = axis × x_axis).
+/// A plane, cylinder, cone or torus, on OpenCascade's parameters (y = axis × x_axis).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum AnalyticSurface {
     /// origin + u x_axis + v y; its normal `normal`.
@@ -88,6 +89,21 @@ pub enum AnalyticSurface {
         x_axis: DVec3,
         /// The radius.
         radius: f64,
+    },
+    /// origin + (radius + v sin α)(cos u x_axis + sin u y) + v cos α axis, α the
+    /// semi-angle (|α| < π/2, not 0); v is the length along a ruling, its normal points away
+    /// from the axis where radius + v sin α > 0.
+    Cone {
+        /// The point of the axis at v = 0.
+        origin: DVec3,
+        /// Unit direction of the axis.
+        axis: DVec3,
+        /// Unit direction of u = 0, perpendicular to the axis.
+        x_axis: DVec3,
+        /// The radius at v = 0.
+        radius: f64,
+        /// The angle α between the rulings and the axis.
+        semi_angle: f64,
     },
     /// center + (major + minor cos v)(cos u x_axis + sin u y) + minor sin v axis; its
     /// normal points out of the tube.
@@ -272,6 +288,17 @@ impl AnalyticSurface {
                 x_axis,
                 radius,
             } => origin + radial(axis, x_axis, u) * radius + axis * v,
+            AnalyticSurface::Cone {
+                origin,
+                axis,
+                x_axis,
+                radius,
+                semi_angle,
+            } => {
+                origin
+                    + radial(axis, x_axis, u) * (radius + v * semi_angle.sin())
+                    + axis * (v * semi_angle.cos())
+            }
             AnalyticSurface::Torus {
                 center,
                 axis,
@@ -292,6 +319,12 @@ impl AnalyticSurface {
         match *self {
             AnalyticSurface::Plane { normal, .. } => normal,
             AnalyticSurface::Cylinder { axis, x_axis, .. } => radial(axis, x_axis, u),
+            AnalyticSurface::Cone {
+                axis,
+                x_axis,
+                semi_angle,
+                ..
+            } => radial(axis, x_axis, u) * semi_angle.cos() - axis * semi_angle.sin(),
             AnalyticSurface::Torus { axis, x_axis, .. } => {
                 radial(axis, x_axis, u) * v.cos() + axis * v.sin()
             }
@@ -318,6 +351,17 @@ impl AnalyticSurface {
                 let d = p - origin;
                 (angle_about(axis, x_axis, d), d.dot(axis))
             }
+            AnalyticSurface::Cone {
+                origin,
+                axis,
+                x_axis,
+                radius,
+                semi_angle,
+            } => {
+                // The length along the ruling: (ρ − radius, h) projected on (sin α, cos α).
+                let (u, out, height) = meridian(p - origin, axis, x_axis, radius);
+                (u, out * semi_angle.sin() + height * semi_angle.cos())
+            }
             AnalyticSurface::Torus {
                 center,
                 axis,
@@ -325,10 +369,8 @@ impl AnalyticSurface {
                 major,
                 ..
             } => {
-                let d = p - center;
-                let height = d.dot(axis);
-                let out = robust_length(d - axis * height) - major;
-                (angle_about(axis, x_axis, d), height.atan2(out))
+                let (u, out, height) = meridian(p - center, axis, x_axis, major);
+                (u, height.atan2(out))
             }
         }
     }
@@ -337,7 +379,7 @@ impl AnalyticSurface {
     fn periodic(&self) -> [bool; 2] {
         match self {
             AnalyticSurface::Plane { .. } => [false, false],
-            AnalyticSurface::Cylinder { .. } => [true, false],
+            AnalyticSurface::Cylinder { .. } | AnalyticSurface::Cone { .. } => [true, false],
             AnalyticSurface::Torus { .. } => [true, true],
         }
     }
@@ -356,6 +398,12 @@ impl AnalyticSurface {
                 axis,
                 x_axis,
                 ..
+            }
+            | AnalyticSurface::Cone {
+                origin,
+                axis,
+                x_axis,
+                ..
             } => [origin, axis, x_axis],
             AnalyticSurface::Torus {
                 center,
@@ -366,11 +414,15 @@ impl AnalyticSurface {
         }
     }
 
-    /// Its radii: none for a plane, the cylinder's, the torus's major and minor.
-    pub fn radii(&self) -> Vec<f64> {
+    /// Its dimensions in OpenCascade's order: none for a plane, the cylinder's radius, the
+    /// cone's radius at v = 0 and semi-angle, the torus's major and minor radii.
+    pub fn dimensions(&self) -> Vec<f64> {
         match *self {
             AnalyticSurface::Plane { .. } => Vec::new(),
             AnalyticSurface::Cylinder { radius, .. } => vec![radius],
+            AnalyticSurface::Cone {
+                radius, semi_angle, ..
+            } => vec![radius, semi_angle],
             AnalyticSurface::Torus { major, minor, .. } => vec![major, minor],
         }
     }
@@ -384,10 +436,20 @@ impl AnalyticSurface {
     fn size(&self) -> f64 {
         match *self {
             AnalyticSurface::Plane { .. } => 0.0,
-            AnalyticSurface::Cylinder { radius, .. } => radius,
+            AnalyticSurface::Cylinder { radius, .. } | AnalyticSurface::Cone { radius, .. } => {
+                radius
+            }
             AnalyticSurface::Torus { major, .. } => major,
         }
     }
+}
+
+/// The angle of `d` about `axis` from `x_axis`, its distance from the axis less `radius`,
+/// and its height along the axis: where `d` lies in its plane through the axis.
+fn meridian(d: DVec3, axis: DVec3, x_axis: DVec3, radius: f64) -> (f64, f64, f64) {
+    let height = d.dot(axis);
+    let out = robust_length(d - axis * height) - radius;
+    (angle_about(axis, x_axis, d), out, height)
 }
 
 /// cos u x_axis + sin u (axis × x_axis).

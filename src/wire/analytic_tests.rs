@@ -8,15 +8,16 @@ use crate::model::{AnalyticCurve, AnalyticSurface, Brep};
 use crate::testing::{assert_closed_oriented, assert_similar_breps};
 use glam::DVec3;
 
-/// Faces that are (cylinders, tori, planes) among the analytic faces, and the edges that
-/// are analytic.
-fn census(brep: &Brep) -> ([usize; 3], usize) {
-    let mut kinds = [0; 3];
+/// Faces that are (cylinders, tori, planes, cones) among the analytic faces, and the edges
+/// that are analytic.
+fn census(brep: &Brep) -> ([usize; 4], usize) {
+    let mut kinds = [0; 4];
     for face in brep.faces.iter().filter_map(|f| f.analytic.as_ref()) {
         kinds[match face.surface {
             AnalyticSurface::Cylinder { .. } => 0,
             AnalyticSurface::Torus { .. } => 1,
             AnalyticSurface::Plane { .. } => 2,
+            AnalyticSurface::Cone { .. } => 3,
         }] += 1;
     }
     let edges = brep.edges.iter().filter(|e| e.analytic.is_some()).count();
@@ -30,14 +31,14 @@ fn a_circle_along_lines_and_an_arc_sweeps_cylinders_and_tori() {
     assert_closed_oriented(brep);
     // Two lines and an arc, four quarter circles: 8 cylinders, 4 tori; every edge a line
     // (along the lines), a circle (sections, and along the arc).
-    assert_eq!(census(brep), ([8, 4, 0], brep.edges.len()));
+    assert_eq!(census(brep), ([8, 4, 0, 0], brep.edges.len()));
     for face in brep.faces.iter().filter_map(|f| f.analytic.as_ref()) {
         match face.surface {
             AnalyticSurface::Cylinder { radius, .. } => assert!((radius - 1.0).abs() < 1e-14),
             AnalyticSurface::Torus { major, minor, .. } => {
                 assert!((major - 5.0).abs() < 1e-13 && (minor - 1.0).abs() < 1e-14)
             }
-            AnalyticSurface::Plane { .. } => unreachable!(),
+            _ => unreachable!(),
         }
     }
     let circles = brep
@@ -59,7 +60,7 @@ fn a_ring_along_a_pipe_route_keeps_its_hole_analytic_and_off_centre_circles_swee
     )
     .unwrap();
     assert_closed_oriented(shape.brep());
-    assert_eq!(census(shape.brep()).0, [16, 8, 0]);
+    assert_eq!(census(shape.brep()).0, [16, 8, 0, 0]);
     // A hole drawn clockwise: its faces' NURBS normals face the other way, and so do their
     // loops on the cylinders and tori (a kernel takes them reversed).
     let clockwise = circle(0.5).reversed();
@@ -80,24 +81,51 @@ fn a_ring_along_a_pipe_route_keeps_its_hole_analytic_and_off_centre_circles_swee
                 .is_some_and(|a| a.loops_reversed(f.same_sense))
         })
         .count();
-    assert_eq!((census(shape.brep()).0, flipped), ([16, 8, 0], 12));
+    assert_eq!((census(shape.brep()).0, flipped), ([16, 8, 0, 0], 12));
     // A circle off the spine, in the normal plane: still a cylinder along the lines and a
     // torus about the arc's axis (its centre 0.5 off the spine along the arc's normal).
     let off =
         crate::primitives::circle(DVec3::new(0.3, 0.5, 0.0), DVec3::X, DVec3::Y, 1.0).unwrap();
     let shape = sweep(&pipe_route(), &off, &[], &WireSweep::default()).unwrap();
     assert_closed_oriented(shape.brep());
-    assert_eq!(census(shape.brep()).0, [8, 4, 0]);
+    assert_eq!(census(shape.brep()).0, [8, 4, 0, 0]);
 }
 
 #[test]
-fn a_square_along_lines_sweeps_planes_and_along_an_arc_stays_nurbs() {
+fn a_polygon_along_lines_sweeps_planes_and_along_an_arc_cones_cylinders_and_annuli() {
     let shape = sweep(&pipe_route(), &square(1.0), &[], &WireSweep::default()).unwrap();
     assert_closed_oriented(shape.brep());
-    // The lines' 8 faces are planes; the arc's revolved lines (cones, cylinders, annuli)
-    // are not written analytically, and neither are their edges.
-    let (kinds, _) = census(shape.brep());
-    assert_eq!(kinds, [0, 0, 8]);
+    // The lines' 8 faces are planes; about the arc's axis the square's sides along the
+    // axis sweep cylinders, those across it annuli; every edge a line or circle.
+    assert_eq!(
+        census(shape.brep()),
+        ([2, 0, 10, 0], shape.brep().edges.len())
+    );
+    // A square standing on a corner: its sides sweep cones about the arc's axis.
+    let diamond = crate::primitives::polygon(&[
+        DVec3::new(1.0, 0.0, 0.0),
+        DVec3::new(0.0, 1.0, 0.0),
+        DVec3::new(-1.0, 0.0, 0.0),
+        DVec3::new(0.0, -1.0, 0.0),
+    ])
+    .unwrap();
+    let shape = sweep(&pipe_route(), &diamond, &[], &WireSweep::default()).unwrap();
+    assert_closed_oriented(shape.brep());
+    assert_eq!(
+        census(shape.brep()),
+        ([0, 0, 8, 4], shape.brep().edges.len())
+    );
+    for face in shape
+        .brep()
+        .faces
+        .iter()
+        .filter_map(|f| f.analytic.as_ref())
+    {
+        if let AnalyticSurface::Cone { semi_angle, .. } = face.surface {
+            let quarter = std::f64::consts::FRAC_PI_4;
+            assert!((semi_angle.abs() - quarter).abs() < 1e-12, "{semi_angle}");
+        }
+    }
 }
 
 #[test]
@@ -115,12 +143,12 @@ fn faces_meeting_a_miter_or_a_curve_piece_stay_nurbs() {
     let shape = sweep(&route, &circle(1.0), &[], &miter).unwrap();
     assert_closed_oriented(shape.brep());
     let (kinds, edges) = census(shape.brep());
-    assert_eq!(kinds, [0, 0, 0]);
+    assert_eq!(kinds, [0, 0, 0, 0]);
     assert_eq!(edges, 0);
     // Round corners on the same route: cylinders and the elbows' tori.
     let shape = sweep(&route, &circle(1.0), &[], &WireSweep::default()).unwrap();
     assert_closed_oriented(shape.brep());
-    assert_eq!(census(shape.brep()).0, [12, 8, 0]);
+    assert_eq!(census(shape.brep()).0, [12, 8, 0, 0]);
     // A line, then a cubic curve: the cylinder shares its end section with a PH face.
     let bend = crate::bezier::RationalBezierCurve::polynomial(&[
         DVec3::new(10.0, 0.0, 0.0),
@@ -135,7 +163,7 @@ fn faces_meeting_a_miter_or_a_curve_piece_stay_nurbs() {
     ];
     let shape = sweep(&edges, &circle(1.0), &[], &WireSweep::default()).unwrap();
     assert_closed_oriented(shape.brep());
-    assert_eq!(census(shape.brep()), ([0, 0, 0], 0));
+    assert_eq!(census(shape.brep()), ([0, 0, 0, 0], 0));
 }
 
 #[test]
@@ -146,7 +174,7 @@ fn twisted_scaled_and_tilted_sweeps_stay_nurbs() {
     };
     let shape = sweep(&pipe_route(), &circle(1.0), &[], &twisted).unwrap();
     assert_closed_oriented(shape.brep());
-    assert_eq!(census(shape.brep()).0, [0, 0, 0]);
+    assert_eq!(census(shape.brep()).0, [0, 0, 0, 0]);
 }
 
 #[test]

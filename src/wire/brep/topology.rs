@@ -328,9 +328,10 @@ pub(super) enum SpineAxis {
 }
 
 /// The analytic surface of a lateral face whose profile edge (its `section` at the piece's
-/// start) is a circle: a circle in the normal plane of a line sweeps a cylinder, one in a
-/// plane through an arc's axis a torus (the frame along an untwisted arc is the arc's
-/// rotation); a line along a line sweeps a plane. `None` for other faces (a circle drawn
+/// start) is a circle or a line: a circle in the normal plane of a line sweeps a cylinder,
+/// one in a plane through an arc's axis a torus (the frame along an untwisted arc is the
+/// arc's rotation); a line along a line sweeps a plane, along an arc a cone, cylinder or
+/// annulus ([`revolved_line`]). `None` for other faces (a circle drawn
 /// out of the normal plane sweeps an elliptic cylinder), and for tori the kernel would not
 /// take as one (the tube reaching the axis, an arc of a whole turn).
 fn analytic_face(
@@ -401,7 +402,15 @@ fn analytic_face(
                     minor: radius,
                 })?
         }
-        _ => return None,
+        (
+            SpineAxis::Arc {
+                center,
+                normal,
+                angle,
+            },
+            AnalyticCurve::Line { origin, direction },
+        ) => revolved_line(center, normal, origin, direction, section.end)
+            .filter(|_| angle < 1.9 * std::f64::consts::PI)?,
     };
     // The face's sense on the analytic surface: the NURBS normal against the analytic one
     // at the middle of the first patch.
@@ -412,6 +421,64 @@ fn analytic_face(
         surface: analytic,
         same_sense: same_sense == along,
         pcurves: Vec::new(),
+    })
+}
+
+/// The surface a profile line sweeps about an arc's axis: in a plane through the axis (the
+/// normal plane of an untwisted arc), a cone, or a cylinder where it runs along the axis, an
+/// annulus where it runs across it. `None` for a line out of such a plane or reaching the
+/// axis.
+fn revolved_line(
+    center: DVec3,
+    normal: DVec3,
+    origin: DVec3,
+    direction: DVec3,
+    length: f64,
+) -> Option<AnalyticSurface> {
+    const PARALLEL: f64 = 1e-10;
+    let offset = origin - center;
+    let height = offset.dot(normal);
+    let radial = offset - normal * height;
+    let rho = robust_length(radial);
+    if rho.is_nan() || rho <= 0.0 {
+        return None;
+    }
+    let out = radial / rho;
+    // The line's points carry the rounding of their coordinates over its length.
+    let slack = PARALLEL + 64.0 * f64::EPSILON * origin.abs().max_element() / length;
+    let (d_rho, d_h) = (direction.dot(out), direction.dot(normal));
+    let in_meridian = direction.dot(normal.cross(out)).abs() <= slack;
+    if !in_meridian || rho + d_rho * length <= 0.0 {
+        return None;
+    }
+    let base = center + normal * height;
+    Some(if d_h.abs() <= slack {
+        AnalyticSurface::Plane {
+            origin,
+            normal,
+            x_axis: out,
+        }
+    } else if d_rho.abs() <= slack {
+        AnalyticSurface::Cylinder {
+            origin: base,
+            axis: normal,
+            x_axis: out,
+            radius: rho,
+        }
+    } else {
+        // Rulings up the axis: |α| < π/2.
+        let (s_rho, s_h) = if d_h > 0.0 {
+            (d_rho, d_h)
+        } else {
+            (-d_rho, -d_h)
+        };
+        AnalyticSurface::Cone {
+            origin: base,
+            axis: normal,
+            x_axis: out,
+            radius: rho,
+            semi_angle: s_rho.atan2(s_h),
+        }
     })
 }
 
