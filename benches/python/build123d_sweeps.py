@@ -67,7 +67,61 @@ def main():
         print("%-42s %10.1f %10.1f %6.2fx | %8.1f %8.1f %8.1f %8.1f" % (
             name, theirs * 1e3, ours * 1e3, theirs / ours, *(p * 1e3 for p in parts)))
     print("ratio: build123d's time over rmfsurf's (> 1: rmfsurf is faster)")
+    downstream()
     thread_cut()
+
+
+def step_size(shape):
+    """Bytes of the shape's STEP file as build123d writes it."""
+    import os
+    import tempfile
+    with tempfile.TemporaryDirectory() as folder:
+        path = os.path.join(folder, "shape.step")
+        bd.export_step(shape, path)
+        return os.path.getsize(path)
+
+
+def mesh(shape, deflection=0.01):
+    """OpenCascade's tessellation of a fresh copy (BRepMesh_IncrementalMesh): triangles."""
+    from OCP.BRep import BRep_Tool
+    from OCP.BRepBuilderAPI import BRepBuilderAPI_Copy
+    from OCP.BRepMesh import BRepMesh_IncrementalMesh
+    from OCP.TopAbs import TopAbs_FACE
+    from OCP.TopExp import TopExp_Explorer
+    from OCP.TopLoc import TopLoc_Location
+    from OCP.TopoDS import TopoDS
+    copy = BRepBuilderAPI_Copy(shape.wrapped).Shape()
+    BRepMesh_IncrementalMesh(copy, deflection, False, 0.5, True)
+    triangles, explorer = 0, TopExp_Explorer(copy, TopAbs_FACE)
+    while explorer.More():
+        mesh = BRep_Tool.Triangulation_s(TopoDS.Face(explorer.Current()), TopLoc_Location())
+        triangles += mesh.NbTriangles() if mesh is not None else 0
+        explorer.Next()
+    return triangles
+
+
+def downstream():
+    """What each program's pipe costs downstream (the same route and profiles as above):
+    a boolean (a block less the pipe: a channel through it; with the ring, the core inside
+    the hole stays as a second solid), a tessellation (linear deflection 0.01, the copy's
+    meshing timed), the size of the STEP file build123d writes."""
+    ring = bd.Circle(3) - bd.Circle(1.5)
+    route = bd.FilletPolyline((0, 0, 0), (60, 0, 0), (60, 40, 0), (60, 40, 30), radius=10)
+    block = bd.Box(70, 20, 20, align=(bd.Align.MIN, bd.Align.CENTER, bd.Align.CENTER))
+    print("downstream of the pipe route: milliseconds, best of 3")
+    print("%-10s %-10s %6s %10s %6s %10s %10s %10s" % (
+        "profile", "sweep by", "faces", "boolean", "valid", "mesh", "triangles", "STEP kB"))
+    for name, face in (("circle", bd.Circle(3)), ("ring", ring)):
+        profile = placed(route, face.faces()[0])
+        for by, solid in (
+                ("build123d", bd.sweep(profile, route, transition=bd.Transition.ROUND)),
+                ("rmfsurf", rocp.sweep(route, profile, tolerance=TOLERANCE))):
+            cut_time, cut = best(lambda: block - solid)
+            mesh_time, triangles = best(lambda: mesh(solid))
+            print("%-10s %-10s %6d %10.1f %6s %10.1f %10d %10.1f" % (
+                name, by, len(solid.faces()), cut_time * 1e3,
+                rocp.is_valid(cut), mesh_time * 1e3, triangles,
+                step_size(solid) / 1e3))
 
 
 def poles(shape):

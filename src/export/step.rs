@@ -30,7 +30,7 @@ use super::knots_and_multiplicities;
 use crate::bezier::{NurbsCurve, NurbsSurface};
 use crate::error::{invalid, Result};
 use crate::math::bounding_diagonal;
-use crate::model::{Brep, BrepSurface, PCurve};
+use crate::model::{AnalyticCurve, AnalyticSurface, Brep, BrepSurface, PCurve};
 use crate::model::{FlatPattern, PatternEdge};
 use glam::DVec3;
 use std::fmt::Write;
@@ -444,6 +444,72 @@ fn flag(value: bool) -> &'static str {
     }
 }
 
+/// An `AXIS2_PLACEMENT_3D` at `origin` with unit `axis` and reference direction `x_axis`.
+fn placement(out: &mut Entities, origin: DVec3, axis: DVec3, x_axis: DVec3) -> usize {
+    let point = out.point(origin);
+    let (axis, reference) = (direction(out, axis), direction(out, x_axis));
+    out.add(format!(
+        "AXIS2_PLACEMENT_3D('',#{point},#{axis},#{reference})"
+    ))
+}
+
+/// A `PLANE`, `CYLINDRICAL_SURFACE`, `CONICAL_SURFACE` or `TOROIDAL_SURFACE` (ISO 10303-42);
+/// a cone's semi-angle is positive there, so a cone narrowing along its axis is placed on
+/// the axis turned round (the same points, u and v both reversed: the same normal).
+fn analytic_surface_entity(out: &mut Entities, surface: &AnalyticSurface) -> usize {
+    let [origin, axis, x_axis] = surface.axes();
+    match *surface {
+        AnalyticSurface::Plane { .. } => {
+            let frame = placement(out, origin, axis, x_axis);
+            out.add(format!("PLANE('',#{frame})"))
+        }
+        AnalyticSurface::Cylinder { radius, .. } => {
+            let frame = placement(out, origin, axis, x_axis);
+            out.add(format!("CYLINDRICAL_SURFACE('',#{frame},{})", real(radius)))
+        }
+        AnalyticSurface::Cone {
+            radius, semi_angle, ..
+        } => {
+            let axis = if semi_angle < 0.0 { -axis } else { axis };
+            let frame = placement(out, origin, axis, x_axis);
+            out.add(format!(
+                "CONICAL_SURFACE('',#{frame},{},{})",
+                real(radius),
+                real(semi_angle.abs())
+            ))
+        }
+        AnalyticSurface::Torus { major, minor, .. } => {
+            let frame = placement(out, origin, axis, x_axis);
+            out.add(format!(
+                "TOROIDAL_SURFACE('',#{frame},{},{})",
+                real(major),
+                real(minor)
+            ))
+        }
+    }
+}
+
+/// A `LINE` (its point at s = 0 and unit direction) or a `CIRCLE`.
+fn analytic_curve_entity(out: &mut Entities, curve: &AnalyticCurve) -> usize {
+    match *curve {
+        AnalyticCurve::Line { origin, direction } => {
+            let point = out.point(origin);
+            let along = self::direction(out, direction);
+            let vector = out.add(format!("VECTOR('',#{along},1.)"));
+            out.add(format!("LINE('',#{point},#{vector})"))
+        }
+        AnalyticCurve::Circle {
+            center,
+            axis,
+            x_axis,
+            radius,
+        } => {
+            let frame = placement(out, center, axis, x_axis);
+            out.add(format!("CIRCLE('',#{frame},{})", real(radius)))
+        }
+    }
+}
+
 /// A STEP file holding the B-rep, the product called `name`: a `MANIFOLD_SOLID_BREP` when
 /// it is closed, a shell-based surface model otherwise (module notes).
 pub fn brep_to_step(brep: &Brep, name: &str) -> Result<String> {
@@ -463,13 +529,17 @@ pub fn brep_to_step(brep: &Brep, name: &str) -> Result<String> {
     let surfaces: Vec<usize> = brep
         .faces
         .iter()
-        .map(|f| match &f.surface {
-            BrepSurface::Nurbs(s) => surface_entity(&mut out, s),
-            BrepSurface::Plane {
-                origin,
-                normal,
-                x_axis,
-            } => {
+        .map(|f| match (&f.analytic, &f.surface) {
+            (Some(analytic), _) => analytic_surface_entity(&mut out, &analytic.surface),
+            (None, BrepSurface::Nurbs(s)) => surface_entity(&mut out, s),
+            (
+                None,
+                BrepSurface::Plane {
+                    origin,
+                    normal,
+                    x_axis,
+                },
+            ) => {
                 let point = out.point(*origin);
                 let (axis, reference) =
                     (direction(&mut out, *normal), direction(&mut out, *x_axis));
@@ -495,7 +565,10 @@ pub fn brep_to_step(brep: &Brep, name: &str) -> Result<String> {
             let Some(edge) = pcurves.get_mut(u.edge) else {
                 return invalid!("face {f} uses edge {} of {}", u.edge, brep.edges.len());
             };
-            if let Some(p) = &u.pcurve {
+            // An analytic edge lies on analytic or planar faces only: its 3-D curve alone
+            // (the model's pcurves are on its NURBS parameter).
+            let analytic = brep.edges[u.edge].analytic.is_some();
+            if let (Some(p), false) = (&u.pcurve, analytic) {
                 edge.push((f, p));
             }
         }
@@ -510,7 +583,10 @@ pub fn brep_to_step(brep: &Brep, name: &str) -> Result<String> {
             edges.push(0);
             continue;
         }
-        let curve = curve_entity(&mut out, &edge.curve);
+        let curve = match &edge.analytic {
+            Some(analytic) => analytic_curve_entity(&mut out, &analytic.curve),
+            None => curve_entity(&mut out, &edge.curve),
+        };
         let on_faces: Vec<usize> = pcurves[e]
             .iter()
             .map(|&(f, p)| pcurve_entity(&mut out, surfaces[f], context_2d, p))
@@ -572,10 +648,14 @@ pub fn brep_to_step(brep: &Brep, name: &str) -> Result<String> {
                     out.add(format!("{kind}('',#{edge_loop},{})", flag(!turned)))
                 })
                 .collect();
+            let same_sense = face
+                .analytic
+                .as_ref()
+                .map_or(face.same_sense, |a| a.same_sense);
             out.add(format!(
                 "ADVANCED_FACE('',{},#{surface},{})",
                 refs(&bounds),
-                flag(face.same_sense != turned)
+                flag(same_sense != turned)
             ))
         })
         .collect();

@@ -230,3 +230,45 @@ fn analytic_forms_are_invariant_under_scaling_and_translation() {
         assert!(text.contains("\n5 "), "a torus record at scale {scale:e}");
     }
 }
+
+#[test]
+fn step_files_hold_the_analytic_surfaces_and_curves() {
+    let pipe = sweep(&pipe_route(), &circle(1.0), &[], &WireSweep::default()).unwrap();
+    let step = pipe.to_step("pipe").unwrap();
+    let count = |entity: &str| step.matches(&format!(" = {entity}(")).count();
+    assert_eq!(
+        (
+            count("CYLINDRICAL_SURFACE"),
+            count("TOROIDAL_SURFACE"),
+            count("PLANE")
+        ),
+        (8, 4, 2)
+    );
+    assert!(!step.contains("B_SPLINE_SURFACE") && !step.contains("PCURVE("));
+    assert_eq!(count("CIRCLE"), 4 * 4 + 4);
+    // A square on a corner about the arc: cones, their semi-angles positive (ISO 10303-42).
+    let diamond = crate::primitives::polygon(&[
+        DVec3::new(1.0, 0.0, 0.0),
+        DVec3::new(0.0, 1.0, 0.0),
+        DVec3::new(-1.0, 0.0, 0.0),
+        DVec3::new(0.0, -1.0, 0.0),
+    ])
+    .unwrap();
+    let duct = sweep(&pipe_route(), &diamond, &[], &WireSweep::default()).unwrap();
+    let step = duct.to_step("duct").unwrap();
+    let angles: Vec<f64> = step
+        .lines()
+        .filter(|l| l.contains(" = CONICAL_SURFACE("))
+        .map(|l| {
+            let inside = l.rsplit(',').next().unwrap().trim_end_matches(");");
+            inside.parse().unwrap()
+        })
+        .collect();
+    assert_eq!(angles.len(), 4);
+    assert!(
+        angles
+            .iter()
+            .all(|a| (a - std::f64::consts::FRAC_PI_4).abs() < 1e-12),
+        "{angles:?}"
+    );
+}
