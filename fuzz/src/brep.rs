@@ -83,6 +83,7 @@ pub(crate) fn walk(brep: *mut RmfBrep) {
                 rmf_brep_loop(brep, f, l, &mut bound)
             });
             let mut path = Vec::with_capacity(bound.use_count);
+            let (mut in_model, mut on_analytic) = (Vec::new(), Vec::new());
             for k in 0..bound.use_count {
                 let mut u = poisoned::<RmfBrepUse>();
                 ok("rmf_brep_use", unsafe {
@@ -99,20 +100,30 @@ pub(crate) fn walk(brep: *mut RmfBrep) {
                     ));
                 } else {
                     ok("rmf_brep_analytic_use", status);
-                    assert_eq!(on.edge, u.edge);
+                    on_analytic.push((on.edge, on.forward != 0));
                     if curved {
                         assert!(
-                            analytic_edges[u.edge],
+                            analytic_edges[on.edge],
                             "an analytic face's edges are analytic"
                         );
                         assert_eq!(on.pcurve_kind, RMF_PCURVE_LINE);
                     }
                 }
+                in_model.push((u.edge, u.forward != 0));
                 let (a, b) = ends[u.edge];
                 path.push(if u.forward != 0 { (a, b) } else { (b, a) });
             }
             for k in 0..path.len() {
                 assert_eq!(path[k].1, path[(k + 1) % path.len()].0, "a loop runs on");
+            }
+            // On the analytic surface the loop is the model's, or the model's run backwards
+            // (where the surfaces' parameters have opposite orientations).
+            if !on_analytic.is_empty() {
+                let backwards: Vec<_> = in_model.iter().rev().map(|&(e, f)| (e, !f)).collect();
+                assert!(
+                    on_analytic == in_model || on_analytic == backwards,
+                    "the analytic loop is the model's"
+                );
             }
         }
     }
