@@ -1569,7 +1569,8 @@ typedef struct RmfSweepReport {
    */
   double singularity_margin;
   /**
-   * Number of faces.
+   * Number of faces (rmf_shape_face_count: one per spine piece and profile edge, and the
+   * caps; the B-rep, rmf_shape_brep, joins a closed loop's faces on one cylinder or torus).
    */
   size_t face_count;
   /**

@@ -121,7 +121,8 @@ pub struct RmfSweepReport {
     /// The least singularity margin g = 1 − κ c·n over the sweep (Mäurer & Jüttler Cor. 7;
     /// 1 where the wire is straight), and 1 − cuts/length for miter legs; > 0.
     pub singularity_margin: f64,
-    /// Number of faces.
+    /// Number of faces (rmf_shape_face_count: one per spine piece and profile edge, and the
+    /// caps; the B-rep, rmf_shape_brep, joins a closed loop's faces on one cylinder or torus).
     pub face_count: usize,
     /// Added in 0.2: the largest turn of the frame about the tangent across a corner, against
     /// the minimal rotation of the tangent there (round corners: across the elbow; miters:

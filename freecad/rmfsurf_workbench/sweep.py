@@ -165,7 +165,7 @@ class SweepFeature(Feature):
                          RmfDefect=report.rmf_angle_error,
                          Orthogonality=report.max_parameter_cosine,
                          SingularityMargin=report.singularity_margin,
-                         FaceCount=report.face_count, FrameError=report.frame_error)
+                         FaceCount=len(shape.Faces), FrameError=report.frame_error)
 
 
 def sections(obj):

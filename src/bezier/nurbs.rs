@@ -419,6 +419,12 @@ impl NurbsCurve {
         })
     }
 
+    /// The curve moved by `dx` along x (a curve in a parameter plane moved along u).
+    pub(crate) fn moved_x(mut self, dx: f64) -> Self {
+        self.poles.iter_mut().for_each(|p| p.x += dx);
+        self
+    }
+
     /// The same curve run the other way on the same parameter range: t ↦ a + b − t.
     pub(crate) fn reversed(&self) -> Self {
         let (a, b) = (self.knots[0], self.knots[self.knots.len() - 1]);

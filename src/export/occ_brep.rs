@@ -179,8 +179,10 @@ fn curves_2d(brep: &Brep, text: &mut String) -> Result<Vec<Vec<OnFace>>> {
             .enumerate()
             .flat_map(|(b, bound)| bound.uses.iter().enumerate().map(move |(k, u)| (b, k, u)))
             .collect();
-        // The forward use of a seam first: its curve is the first of the `3` record.
-        uses.sort_by_key(|(_, _, u)| !u.forward);
+        // The forward use of a seam (as written: loops run backwards on an analytic surface
+        // of the other orientation) first: its curve is the first of the `3` record.
+        let reversed = analytic.is_some_and(|a| a.loops_reversed(face.same_sense));
+        uses.sort_by_key(|(_, _, u)| u.forward == reversed);
         for (b, k, u) in uses {
             let Some(on_faces) = on_edges.get_mut(u.edge) else {
                 return invalid!("face {f} uses edge {} of {}", u.edge, brep.edges.len());

@@ -58,6 +58,7 @@ use glam::{DVec3, DVec4};
 use std::sync::OnceLock;
 
 mod cosine;
+mod merge;
 mod topology;
 
 use cosine::{max_parameter_cosine, CosineBases, Section, COSINE_SAMPLES};
@@ -120,7 +121,9 @@ pub struct SweepReport {
     /// The least singularity margin g = 1 − κ c·n over the sweep (Cor. 7; 1 where the spine
     /// is straight), and for miter legs 1 − (length of the cuts)/(length of the leg); > 0.
     pub singularity_margin: f64,
-    /// Number of faces.
+    /// Number of faces of [`Shape::faces`]: one per spine piece and profile edge, and the
+    /// caps (the B-rep, [`Shape::brep`], joins a closed loop's faces on one cylinder or
+    /// torus into one).
     pub face_count: usize,
     /// Largest turn of the frame about the tangent across a corner, against the minimal
     /// rotation of the tangent there (round corners: across the elbow; miters: across the
@@ -288,7 +291,8 @@ impl Shape {
 
     /// The shape's boundary representation: vertices, shared edges with their curves on
     /// each face, oriented loops, faces with their senses (what the STEP and OpenCascade
-    /// texts are written from).
+    /// texts are written from). Where all faces of a closed profile loop along a piece lie
+    /// on one cylinder or torus (a circle's arcs), they are one face there, with a seam.
     pub fn brep(&self) -> &Brep {
         &self.brep
     }
@@ -611,6 +615,22 @@ pub(crate) fn build(
         closed: closed_shell,
     };
     settle_analytic(&mut brep);
+    // The lateral faces of each piece and closed loop, in the order they were made.
+    let mut groups = Vec::new();
+    let mut next = 0;
+    for _ in 0..m {
+        for lp in &profile.loops {
+            let range = next..next + lp.edges.len();
+            next = range.end;
+            if lp.closed {
+                let surfaces = faces[range.clone()]
+                    .iter()
+                    .filter_map(|f| f.surface.as_ref());
+                groups.push((range.collect(), surfaces.collect()));
+            }
+        }
+    }
+    merge::join_analytic_loops(&mut brep, &groups);
     Ok(Shape {
         faces,
         brep,
