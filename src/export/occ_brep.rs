@@ -182,15 +182,14 @@ fn curves_2d(brep: &Brep, text: &mut String) -> Result<Vec<Vec<OnFace>>> {
         // The forward use of a seam (as written: loops run backwards on an analytic surface
         // of the other orientation) first: its curve is the first of the `3` record.
         let reversed = analytic.is_some_and(|a| a.loops_reversed(face.same_sense));
+        // On a plane the kernel projects the edge itself (`BRep_Tool::CurveOnPlane`), as it
+        // does for planes it makes.
+        let planar = face.is_planar();
         uses.sort_by_key(|(_, _, u)| u.forward == reversed);
         for (b, k, u) in uses {
             let Some(on_faces) = on_edges.get_mut(u.edge) else {
                 return invalid!("face {f} uses edge {} of {}", u.edge, brep.edges.len());
             };
-            // On a plane the kernel projects the edge itself (`BRep_Tool::CurveOnPlane`),
-            // as it does for planes it makes.
-            let planar = matches!(face.surface, BrepSurface::Plane { .. })
-                || matches!(analytic, Some(a) if matches!(a.surface, AnalyticSurface::Plane { .. }));
             if planar {
                 continue;
             }

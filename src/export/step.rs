@@ -445,7 +445,7 @@ fn flag(value: bool) -> &'static str {
 }
 
 /// An `AXIS2_PLACEMENT_3D` at `origin` with unit `axis` and reference direction `x_axis`.
-fn placement(out: &mut Entities, origin: DVec3, axis: DVec3, x_axis: DVec3) -> usize {
+fn axis_placement(out: &mut Entities, origin: DVec3, axis: DVec3, x_axis: DVec3) -> usize {
     let point = out.point(origin);
     let (axis, reference) = (direction(out, axis), direction(out, x_axis));
     out.add(format!(
@@ -460,18 +460,18 @@ fn analytic_surface_entity(out: &mut Entities, surface: &AnalyticSurface) -> usi
     let [origin, axis, x_axis] = surface.axes();
     match *surface {
         AnalyticSurface::Plane { .. } => {
-            let frame = placement(out, origin, axis, x_axis);
+            let frame = axis_placement(out, origin, axis, x_axis);
             out.add(format!("PLANE('',#{frame})"))
         }
         AnalyticSurface::Cylinder { radius, .. } => {
-            let frame = placement(out, origin, axis, x_axis);
+            let frame = axis_placement(out, origin, axis, x_axis);
             out.add(format!("CYLINDRICAL_SURFACE('',#{frame},{})", real(radius)))
         }
         AnalyticSurface::Cone {
             radius, semi_angle, ..
         } => {
             let axis = if semi_angle < 0.0 { -axis } else { axis };
-            let frame = placement(out, origin, axis, x_axis);
+            let frame = axis_placement(out, origin, axis, x_axis);
             out.add(format!(
                 "CONICAL_SURFACE('',#{frame},{},{})",
                 real(radius),
@@ -479,7 +479,7 @@ fn analytic_surface_entity(out: &mut Entities, surface: &AnalyticSurface) -> usi
             ))
         }
         AnalyticSurface::Torus { major, minor, .. } => {
-            let frame = placement(out, origin, axis, x_axis);
+            let frame = axis_placement(out, origin, axis, x_axis);
             out.add(format!(
                 "TOROIDAL_SURFACE('',#{frame},{},{})",
                 real(major),
@@ -504,7 +504,7 @@ fn analytic_curve_entity(out: &mut Entities, curve: &AnalyticCurve) -> usize {
             x_axis,
             radius,
         } => {
-            let frame = placement(out, center, axis, x_axis);
+            let frame = axis_placement(out, center, axis, x_axis);
             out.add(format!("CIRCLE('',#{frame},{})", real(radius)))
         }
     }
@@ -540,12 +540,7 @@ pub fn brep_to_step(brep: &Brep, name: &str) -> Result<String> {
                     x_axis,
                 },
             ) => {
-                let point = out.point(*origin);
-                let (axis, reference) =
-                    (direction(&mut out, *normal), direction(&mut out, *x_axis));
-                let frame = out.add(format!(
-                    "AXIS2_PLACEMENT_3D('',#{point},#{axis},#{reference})"
-                ));
+                let frame = axis_placement(&mut out, *origin, *normal, *x_axis);
                 out.add(format!("PLANE('',#{frame})"))
             }
         })

@@ -19,7 +19,7 @@
 //! kernel projects an edge onto a plane itself), so that every curve on a face is on the
 //! parameters of its edge's curve.
 
-use super::topology::{Brep, BrepEdge, BrepSurface, PCurve};
+use super::topology::{Brep, BrepEdge, BrepFace, BrepSurface, PCurve};
 use crate::bezier::{NurbsCurve, RationalBezierCurve};
 use crate::math::{power_of_two_inverse, robust_length};
 use glam::DVec3;
@@ -31,7 +31,7 @@ const RELATIVE: f64 = 1e-10;
 
 /// The rounding of coordinates of magnitude 1, for tolerances of points given in the
 /// caller's coordinates (a shape far from the origin carries its offset's rounding).
-const ROUNDING: f64 = 64.0 * f64::EPSILON;
+pub(crate) const ROUNDING: f64 = 64.0 * f64::EPSILON;
 
 /// A line or a circle, on OpenCascade's parameters.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -134,6 +134,15 @@ pub struct AnalyticFace {
     /// parameter s ([`PCurve::Line`], unit speed); empty on a plane, onto which a kernel
     /// projects the edges itself.
     pub pcurves: Vec<Vec<PCurve>>,
+}
+
+impl BrepFace {
+    /// Whether the face lies on a plane (its own surface, or its analytic form): a kernel
+    /// projects its edges onto it, no curve on the face is needed.
+    pub fn is_planar(&self) -> bool {
+        matches!(self.surface, BrepSurface::Plane { .. })
+            || self.analytic.as_ref().is_some_and(|a| a.surface.is_plane())
+    }
 }
 
 impl AnalyticFace {
@@ -503,9 +512,7 @@ pub(crate) fn settle(brep: &mut Brep) {
         }
         let mut carried = vec![true; brep.edges.len()];
         for face in &brep.faces {
-            let planar = matches!(face.surface, BrepSurface::Plane { .. })
-                || face.analytic.as_ref().is_some_and(|a| a.surface.is_plane());
-            if planar || face.analytic.is_some() {
+            if matches!(face.surface, BrepSurface::Plane { .. }) || face.analytic.is_some() {
                 continue;
             }
             for u in face.bounds.iter().flat_map(|b| &b.uses) {

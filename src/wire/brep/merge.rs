@@ -7,7 +7,7 @@
 
 use super::*;
 use crate::math::robust_length;
-use crate::model::AnalyticSurface;
+use crate::model::{AnalyticSurface, ROUNDING};
 
 /// Relative distance within which two analytic surfaces are the same.
 const SAME: f64 = 1e-9;
@@ -86,7 +86,7 @@ fn same_surface(a: &AnalyticSurface, b: &AnalyticSurface) -> bool {
         | (AnalyticSurface::Torus { .. }, AnalyticSurface::Torus { .. }) => a.dimensions()[0],
         _ => return false,
     };
-    let tolerance = SAME * size + 64.0 * f64::EPSILON * pa.abs().max_element();
+    let tolerance = SAME * size + ROUNDING * pa.abs().max_element();
     let offset = pb - pa;
     let along = match a {
         // A cylinder's origin may lie anywhere on its axis.
@@ -108,12 +108,11 @@ fn joined_face(brep: &Brep, faces: &[usize], surfaces: &[&PiecewiseSurface]) -> 
     let mut breaks_u = vec![0.0];
     let mut offsets = Vec::with_capacity(faces.len());
     for s in surfaces {
-        let (lo, hi) = s.domain_u();
+        let (lo, _) = s.domain_u();
         let at = breaks_u[breaks_u.len() - 1];
         offsets.push(at - lo);
         breaks_u.extend(s.u_breaks()[1..].iter().map(|b| b - lo + at));
         patches.extend_from_slice(s.patches());
-        debug_assert!(hi > lo);
     }
     let joined = PiecewiseSurface::new(patches, breaks_u, surfaces[0].v_breaks().to_vec()).ok()?;
     let nurbs = NurbsSurface::from_piecewise(&joined).ok()?;

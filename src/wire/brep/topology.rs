@@ -4,7 +4,7 @@
 
 use super::*;
 use crate::math::{robust_length, robust_normalize};
-use crate::model::{AnalyticCurve, AnalyticEdge, AnalyticFace, AnalyticSurface};
+use crate::model::{AnalyticCurve, AnalyticEdge, AnalyticFace, AnalyticSurface, ROUNDING};
 
 /// Vertices and edges shared by the faces (module notes).
 pub(super) struct Topology<'a> {
@@ -304,6 +304,11 @@ impl<'a> Topology<'a> {
     }
 }
 
+/// The sine of the angle within which directions count as parallel (or perpendicular) when
+/// a face is taken for a cylinder, torus, cone or plane: the face then lies within 1e-10 of
+/// its size of that surface.
+const PARALLEL: f64 = 1e-10;
+
 /// An edge of the sweep, with the line or circle its curve is.
 fn edge(curve: NurbsCurve, start: usize, end: usize) -> BrepEdge {
     BrepEdge {
@@ -340,7 +345,6 @@ fn analytic_face(
     surface: &PiecewiseSurface,
     same_sense: bool,
 ) -> Option<AnalyticFace> {
-    const PARALLEL: f64 = 1e-10;
     let analytic = match (axis, section.curve) {
         (
             SpineAxis::Line(direction),
@@ -390,7 +394,7 @@ fn analytic_face(
             let radial = offset - normal * height;
             let major = robust_length(radial);
             // The circle's axis carries the rounding of its coordinates over its radius.
-            let slack = PARALLEL + 64.0 * f64::EPSILON * center.abs().max_element() / radius;
+            let slack = PARALLEL + ROUNDING * center.abs().max_element() / radius;
             let meridian = axis.dot(normal).abs() <= slack
                 && offset.dot(axis).abs() <= slack * (major + radius);
             (meridian && major > radius * (1.0 + 1e-9) && angle < 1.9 * std::f64::consts::PI)
@@ -435,7 +439,6 @@ fn revolved_line(
     direction: DVec3,
     length: f64,
 ) -> Option<AnalyticSurface> {
-    const PARALLEL: f64 = 1e-10;
     let offset = origin - center;
     let height = offset.dot(normal);
     let radial = offset - normal * height;
@@ -445,7 +448,7 @@ fn revolved_line(
     }
     let out = radial / rho;
     // The line's points carry the rounding of their coordinates over its length.
-    let slack = PARALLEL + 64.0 * f64::EPSILON * origin.abs().max_element() / length;
+    let slack = PARALLEL + ROUNDING * origin.abs().max_element() / length;
     let (d_rho, d_h) = (direction.dot(out), direction.dot(normal));
     let in_meridian = direction.dot(normal.cross(out)).abs() <= slack;
     if !in_meridian || rho + d_rho * length <= 0.0 {
