@@ -238,6 +238,86 @@ static void check_occ_brep_text(const RmfShape *shape) {
     free(text);
 }
 
+/* A little-endian 32-bit integer of a binary B-rep. */
+static long le32(const unsigned char *at) {
+    return (long)((uint32_t)at[0] | (uint32_t)at[1] << 8 | (uint32_t)at[2] << 16 | (uint32_t)at[3] << 24);
+}
+
+/* The binary B-rep of a shape for `reader`, malloc'ed (NULL on failure), its length in *length. */
+static unsigned char *occ_binary(const RmfShape *shape, RmfOccReader reader, size_t *length) {
+    CHECK_STATUS(rmf_shape_occ_binary(shape, reader, NULL, 0, length), RMF_OK, "");
+    unsigned char *data = malloc(*length);
+    if (!data) return NULL;
+    size_t again = 0;
+    CHECK_STATUS(rmf_shape_occ_binary(shape, reader, data, *length, &again), RMF_OK, "");
+    CHECK(again == *length, "the length of a binary B-rep");
+    return data;
+}
+
+/* OpenCascade's binary B-rep: size query, too small a buffer, the version line and the
+   TShapes table, the root as BinTools::Read (orientation byte, number 1 from the last,
+   location 0) and FreeCAD's importBinary (the root's number N, location 0, orientation 0)
+   read it after the same set, the same file from the shape's B-rep, bad arguments. */
+static void check_occ_binary(const RmfShape *shape) {
+    size_t length = 0, freecad_length = 0, again = 0;
+    unsigned char *data = occ_binary(shape, RMF_OCC_READER_BINTOOLS, &length);
+    unsigned char *freecad = occ_binary(shape, RMF_OCC_READER_FREECAD, &freecad_length);
+    if (!data || !freecad) {
+        CHECK(0, "buffers");
+        free(data);
+        free(freecad);
+        return;
+    }
+    unsigned char *small = malloc(length);
+    if (small) {
+        memset(small, 'x', length);
+        CHECK_STATUS(rmf_shape_occ_binary(shape, RMF_OCC_READER_BINTOOLS, small, length - 1, &again),
+                     RMF_ERROR_BUFFER_TOO_SMALL, "need");
+        CHECK(again == length && small[0] == 'x', "too small: the length, nothing written");
+        free(small);
+    }
+    static const char version[] = "\nOpen CASCADE Topology V3 (c)\nLocations 0\nCurve2ds ";
+    CHECK(length > sizeof version && memcmp(data, version, sizeof version - 1) == 0, "the version line");
+    CHECK(freecad_length == length + 3 && memcmp(data, freecad, length - 9) == 0,
+          "the same set before either root");
+    long shapes = -1;
+    static const char table[] = "\nTShapes ";
+    for (size_t i = 0; i + sizeof table < length; ++i) {
+        if (memcmp(data + i, table, sizeof table - 1) == 0) shapes = strtol((const char *)data + i + 9, NULL, 10);
+    }
+    const unsigned char *root = data + length - 9, *freecad_root = freecad + freecad_length - 12;
+    CHECK(shapes > 0 && root[0] == 0 && le32(root + 1) == 1 && le32(root + 5) == 0, "BinTools' root");
+    CHECK(le32(freecad_root) == shapes && le32(freecad_root + 4) == 0 && le32(freecad_root + 8) == 0,
+          "FreeCAD's root");
+    RmfBrep *brep = NULL;
+    CHECK_STATUS(rmf_shape_brep(shape, &brep), RMF_OK, "");
+    if (brep) {
+        unsigned char *same = malloc(length);
+        size_t n = 0;
+        CHECK_STATUS(rmf_brep_occ_binary(brep, RMF_OCC_READER_BINTOOLS, NULL, 0, &n), RMF_OK, "");
+        if (same && n == length) {
+            CHECK_STATUS(rmf_brep_occ_binary(brep, RMF_OCC_READER_BINTOOLS, same, n, &n), RMF_OK, "");
+            CHECK(memcmp(same, data, length) == 0, "the shape's B-rep writes the same file");
+        } else {
+            CHECK(0, "the shape's B-rep has the file's length");
+        }
+        CHECK_STATUS(rmf_brep_occ_binary(brep, 7, NULL, 0, &n), RMF_ERROR_INVALID_INPUT, "reader");
+        CHECK_STATUS(rmf_brep_occ_binary(NULL, RMF_OCC_READER_FREECAD, NULL, 0, &n), RMF_ERROR_NULL_POINTER,
+                     "brep");
+        free(same);
+    }
+    rmf_brep_free(brep);
+    CHECK_STATUS(rmf_shape_occ_binary(shape, 2, NULL, 0, &again), RMF_ERROR_INVALID_INPUT, "reader = 2");
+    CHECK_STATUS(rmf_shape_occ_binary(shape, RMF_OCC_READER_BINTOOLS, data, 0, NULL), RMF_ERROR_NULL_POINTER,
+                 "length");
+    CHECK_STATUS(rmf_shape_occ_binary(shape, RMF_OCC_READER_BINTOOLS, NULL, 8, &again),
+                 RMF_ERROR_NULL_POINTER, "buffer");
+    CHECK_STATUS(rmf_shape_occ_binary(NULL, RMF_OCC_READER_BINTOOLS, NULL, 0, &again),
+                 RMF_ERROR_NULL_POINTER, "shape");
+    free(data);
+    free(freecad);
+}
+
 static void test_pipe_route(void) {
     RmfEdge e[3];
     RmfCurve *profile = circle(1), *hole = circle(0.8);
@@ -299,6 +379,7 @@ static void test_pipe_route(void) {
     check_step_text_is_the_file(shape, path);
     remove(path);
     check_occ_brep_text(shape);
+    check_occ_binary(shape);
     /* With a hole: the annulus. */
     const RmfCurve *holes[1] = {hole};
     CHECK_STATUS(rmf_wire_sweep(e, 3, profile, holes, 1, NULL, &hollow), RMF_OK, "");

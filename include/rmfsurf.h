@@ -652,6 +652,13 @@ typedef struct RmfUnfoldedBody RmfUnfoldedBody;
 typedef struct RmfUnfoldedFace RmfUnfoldedFace;
 
 /**
+ * Which program reads a binary B-rep (rmf_shape_occ_binary, rmf_brep_occ_binary): the
+ * file ends with the reference to its root shape as that program takes it.
+ * \ingroup rmf_export
+ */
+typedef uint32_t RmfOccReader;
+
+/**
  * The sizes of a B-rep and its tolerance.
  * \ingroup rmf_brep
  */
@@ -2190,6 +2197,21 @@ typedef struct RmfWireSection {
 #define RMF_FACE_PLANE 1
 
 /**
+ * OpenCascade's BinTools::Read (C++; build123d and CadQuery through OCP's
+ * BinTools.Read_s from a BytesIO).
+ * \since 0.2
+ * \ingroup rmf_export
+ */
+#define RMF_OCC_READER_BINTOOLS 0
+
+/**
+ * FreeCAD's Part.Shape.importBinary (a file, as Part.Shape.exportBinary writes it).
+ * \since 0.2
+ * \ingroup rmf_export
+ */
+#define RMF_OCC_READER_FREECAD 1
+
+/**
  * The designed surface is the inner face (the concave side of the bends): the sheet lies
  * on the convex side. The default; the only choice for parts with a vertex on an edge
  * (transitions from polygon corners), whose bend radius is 0 there.
@@ -2358,6 +2380,36 @@ extern "C" {
  * \ingroup rmf_brep
  */
 void rmf_brep_free(struct RmfBrep *brep);
+
+/**
+ * The B-rep in OpenCascade's binary B-rep ("Open CASCADE Topology V3", what
+ * BinTools::Write writes) into a caller buffer, as rmf_shape_occ_binary writes a shape's:
+ * a solid of its closed shell, or its open shell (a compound of the shells it falls apart
+ * into), built by the kernel as it is. The way to hand a sheet-metal part's solid
+ * (rmf_sheet_part_brep) or a B-rep of rmf_brep_create to OpenCascade or FreeCAD.
+ *
+ * Size query: with capacity 0 (buffer may be NULL) only length is written. Otherwise the
+ * file is written if capacity ≥ length.
+ *
+ * @param[in] brep The B-rep.
+ * @param[in] reader RMF_OCC_READER_*.
+ * @param[out] buffer capacity bytes for the file.
+ * @param[in] capacity Size of buffer in bytes; 0 for a size query.
+ * @param[out] length Receives the length of the file in bytes.
+ * @return RMF_OK on success or for a size query.
+ * @return RMF_ERROR_NULL_POINTER If brep or length is NULL, or buffer is NULL with a
+ *         non-zero capacity.
+ * @return RMF_ERROR_INVALID_INPUT If reader is not an RMF_OCC_READER_* value, or the
+ *         B-rep has no face.
+ * @return RMF_ERROR_BUFFER_TOO_SMALL If 0 < capacity < length; length is written.
+ * \since 0.2
+ * \ingroup rmf_brep
+ */
+RmfStatus rmf_brep_occ_binary(const struct RmfBrep *brep,
+                              RmfOccReader reader,
+                              uint8_t *buffer,
+                              size_t capacity,
+                              size_t *length);
 
 /**
  * The sizes of a B-rep, whether it is a solid, and its tolerance.
@@ -4556,6 +4608,36 @@ RmfStatus rmf_shape_occ_brep(const struct RmfShape *shape,
                              char *buffer,
                              size_t capacity,
                              size_t *length);
+
+/**
+ * The shape in OpenCascade's binary B-rep ("Open CASCADE Topology V3", what
+ * BinTools::Write writes) into a caller buffer: the shape of rmf_shape_occ_brep — shared
+ * edges, their curves on every face, the faces' senses — which the kernel reads several
+ * times faster than the text (the numbers as they are in memory, no parsing). The file
+ * ends with the root as `reader` takes it (RMF_OCC_READER_BINTOOLS: BinTools::Read;
+ * RMF_OCC_READER_FREECAD: FreeCAD's Part.Shape.importBinary).
+ *
+ * Size query: with capacity 0 (buffer may be NULL) only length is written. Otherwise the
+ * file is written if capacity ≥ length.
+ *
+ * @param[in] shape The shape.
+ * @param[in] reader RMF_OCC_READER_*.
+ * @param[out] buffer capacity bytes for the file.
+ * @param[in] capacity Size of buffer in bytes; 0 for a size query.
+ * @param[out] length Receives the length of the file in bytes.
+ * @return RMF_OK on success or for a size query.
+ * @return RMF_ERROR_NULL_POINTER If shape or length is NULL, or buffer is NULL with a
+ *         non-zero capacity.
+ * @return RMF_ERROR_INVALID_INPUT If reader is not an RMF_OCC_READER_* value.
+ * @return RMF_ERROR_BUFFER_TOO_SMALL If 0 < capacity < length; length is written.
+ * \since 0.2
+ * \ingroup rmf_export
+ */
+RmfStatus rmf_shape_occ_binary(const struct RmfShape *shape,
+                               RmfOccReader reader,
+                               uint8_t *buffer,
+                               size_t capacity,
+                               size_t *length);
 
 /**
  * The boundary representation of a wire sweep's shape (its solid or sheet), as the STEP

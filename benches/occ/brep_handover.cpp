@@ -64,9 +64,20 @@ static TopoDS_Shape from_model(const RmfShape *shape) {
     return built;
 }
 
-static void row(const char *name, double theirs, double library, double model, double text) {
-    std::printf("| %-40s | %9.2f | %8.2f | %8.2f | %8.2f | %6.2fx | %6.2fx |\n", name, theirs, library, model, text,
-                theirs / (library + model), theirs / (library + text));
+static std::string shape_binary(const RmfShape *shape) {
+    size_t length = 0;
+    must(rmf_shape_occ_binary(shape, RMF_OCC_READER_BINTOOLS, nullptr, 0, &length), "rmf_shape_occ_binary");
+    std::string bytes(length, '\0');
+    must(rmf_shape_occ_binary(shape, RMF_OCC_READER_BINTOOLS, reinterpret_cast<uint8_t *>(bytes.data()),
+                              bytes.size(), &length),
+         "rmf_shape_occ_binary");
+    return bytes;
+}
+
+static void row(const char *name, double theirs, double library, double model, double text, double binary) {
+    std::printf("| %-40s | %9.2f | %8.2f | %8.2f | %8.2f | %8.2f | %6.2fx | %6.2fx | %6.2fx |\n", name, theirs,
+                library, model, text, binary, theirs / (library + model), theirs / (library + text),
+                theirs / (library + binary));
 }
 
 static void sweep_case(const char *name, const std::vector<Edge> &wire, double radius) {
@@ -87,23 +98,26 @@ static void sweep_case(const char *name, const std::vector<Edge> &wire, double r
         must(rmf_wire_sweep(edges.data(), edges.size(), profile, nullptr, 0, &o, &shape), "rmf_wire_sweep");
     });
     // Each handover on a shape made anew (the library keeps the text it made).
-    double model = 1e300, text = 1e300;
-    TopoDS_Shape by_model, by_text;
+    double model = 1e300, text = 1e300, binary = 1e300;
+    TopoDS_Shape by_model, by_text, by_binary;
     for (int r = 0; r < 5; ++r) {
         RmfShape *fresh = nullptr;
         must(rmf_wire_sweep(edges.data(), edges.size(), profile, nullptr, 0, &o, &fresh), "rmf_wire_sweep");
         model = std::min(model, best_ms([&] { by_model = from_model(fresh); }, 1));
         text = std::min(text, best_ms([&] { by_text = wire_sweep::read_brep_text(shape_text(fresh)); }, 1));
+        binary =
+            std::min(binary, best_ms([&] { by_binary = wire_sweep::read_brep_binary(shape_binary(fresh)); }, 1));
         rmf_shape_free(fresh);
     }
     const wire_sweep::Profile circle{true, radius};
     TopoDS_Shape pipe;
     const double theirs =
         best_ms([&] { pipe = wire_sweep::pipe_shell(wire, circle, a, tangent, f2, false, true); });
-    if (!BRepCheck_Analyzer(by_model).IsValid() || !BRepCheck_Analyzer(by_text).IsValid())
+    if (!BRepCheck_Analyzer(by_model).IsValid() || !BRepCheck_Analyzer(by_text).IsValid() ||
+        !BRepCheck_Analyzer(by_binary).IsValid())
         std::printf("| %s: rmfsurf's shape INVALID\n", name);
     if (!BRepCheck_Analyzer(pipe).IsValid()) std::printf("| %s: MakePipeShell's shape invalid\n", name);
-    row(name, theirs, library, model, text);
+    row(name, theirs, library, model, text, binary);
     rmf_shape_free(shape);
     rmf_curve_free(profile);
 }
@@ -156,7 +170,8 @@ static void hopper(double tolerance) {
         std::printf("| hopper: rmfsurf's shape INVALID\n");
     char name[64];
     std::snprintf(name, sizeof name, "square-to-round transition, tol %g", tolerance);
-    std::printf("| %-40s | %9s | %8.2f | %8.2f | %8.2f | %7s | %7s |\n", name, "—", library, model, text, "", "");
+    std::printf("| %-40s | %9s | %8.2f | %8.2f | %8.2f | %8s | %7s | %7s | %7s |\n", name, "—", library, model, text,
+                "", "", "", "");
     rmf_sheet_part_free(part);
     rmf_curve_free(square);
     rmf_curve_free(circle);
@@ -177,8 +192,8 @@ int main() {
         return e;
     };
     std::printf("| OpenCascade %s, C++: the whole call, best of 5, milliseconds\n", OCC_VERSION_COMPLETE);
-    std::printf("| %-40s | %9s | %8s | %8s | %8s | %7s | %7s |\n", "case", "PipeShell", "library", "+ model",
-                "+ text", "ratio m", "ratio t");
+    std::printf("| %-40s | %9s | %8s | %8s | %8s | %8s | %7s | %7s | %7s |\n", "case", "PipeShell", "library",
+                "+ model", "+ text", "+ binary", "ratio m", "ratio t", "ratio b");
     sweep_case("pipe route (line, arc, line), circle",
                {line(gp_Pnt(0, 0, 0), gp_Pnt(10, 0, 0)),
                 arc(gp_Pnt(10, 0, 0), gp_Pnt(10 + 5 * s, 5 - 5 * s, 0), gp_Pnt(15, 5, 0)),
@@ -191,7 +206,8 @@ int main() {
     hopper(1e-3);
     hopper(1e-4);
     std::printf("| library: rmfsurf's construction; + model: the B-rep model built by BRep_Builder "
-                "(rmfsurf_occ.hpp); + text: the B-rep text read by BRepTools::Read; ratios: "
+                "(rmfsurf_occ.hpp); + text: the B-rep text read by BRepTools::Read; + binary: the "
+                "binary B-rep read by BinTools::Read; ratios: "
                 "MakePipeShell's time over rmfsurf's whole call\n");
     return 0;
 }

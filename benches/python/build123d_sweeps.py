@@ -1,7 +1,7 @@
 """The whole sweep where a build123d user is: build123d's own `sweep` beside
 `rmfsurf.ocp.sweep` on the same wires and profiles, in the same run (best of 3), with where
 rmfsurf's time goes: reading the user's wire and face (adapter in), the library's sweep, its
-B-rep text, and OpenCascade building the shape from it (`BRepTools.Read_s`); then a thread
+binary B-rep, and OpenCascade building the shape from it (`BinTools.Read_s`); then a thread
 cut, the boolean downstream of each program's groove.
 
 Run by scripts/bench in the test venv with this checkout's wheel."""
@@ -10,8 +10,7 @@ import io
 import time
 
 import build123d as bd
-from OCP.BRep import BRep_Builder
-from OCP.BRepTools import BRepTools
+from OCP.BinTools import BinTools
 from OCP.TopoDS import TopoDS_Shape
 
 import rmfsurf
@@ -46,10 +45,10 @@ def stages(path, profile):
     adapter = time.perf_counter()
     shape = rmfsurf.wire_sweep(edges, outer, holes, tolerance=TOLERANCE, initial_normal=f2)
     library = time.perf_counter()
-    text = shape.occ_brep().encode("ascii")
+    data = shape.occ_binary()
     handover = time.perf_counter()
     raw = TopoDS_Shape()
-    BRepTools.Read_s(raw, io.BytesIO(text), BRep_Builder())
+    BinTools.Read_s(raw, io.BytesIO(data))
     kernel = time.perf_counter()
     return [adapter - start, library - adapter, handover - library, kernel - handover]
 
@@ -57,7 +56,7 @@ def stages(path, profile):
 def main():
     print("build123d %s: the whole call, best of 3, milliseconds" % bd.__version__)
     print("%-42s %10s %10s %7s | %8s %8s %8s %8s" % (
-        "case", "build123d", "rmfsurf", "ratio", "adapter", "library", "text", "kernel"))
+        "case", "build123d", "rmfsurf", "ratio", "adapter", "library", "binary", "kernel"))
     for name, path, face in cases():
         profile = placed(path, face.faces()[0])
         theirs, _ = best(lambda: bd.sweep(profile, path, transition=bd.Transition.ROUND))

@@ -187,12 +187,12 @@ pub(crate) unsafe fn buffer<'a, T>(
     Ok(std::slice::from_raw_parts_mut(p, capacity))
 }
 
-/// The text in `cell`, made by `make` on the first call (a caller of a text export asks
-/// twice: the size, then the text); a failure is returned and nothing kept.
-pub(crate) fn made_once<E>(
-    cell: &std::sync::OnceLock<String>,
-    make: impl FnOnce() -> Result<String, E>,
-) -> Result<&String, E> {
+/// The file in `cell`, made by `make` on the first call (a caller of an export asks twice:
+/// the size, then the file); a failure is returned and nothing kept.
+pub(crate) fn made_once<T, E>(
+    cell: &std::sync::OnceLock<T>,
+    make: impl FnOnce() -> Result<T, E>,
+) -> Result<&T, E> {
     if let Some(text) = cell.get() {
         return Ok(text);
     }
@@ -222,6 +222,33 @@ pub(crate) unsafe fn hand_text(text: &str, out: &mut [u8], length: *mut usize) -
     }
     out[..bytes.len()].copy_from_slice(bytes);
     out[bytes.len()] = 0;
+    Ok(())
+}
+
+/// Hands a binary file to the caller as every list call hands a list (size query, then
+/// BUFFER_TOO_SMALL naming `buffer` below its length): its `set`, then its `root`.
+///
+/// # Safety
+/// `length` must be valid for a write (checked with [`out_ptr`]).
+pub(crate) unsafe fn hand_bytes(
+    set: &[u8],
+    root: &[u8],
+    out: &mut [u8],
+    length: *mut usize,
+) -> FfiResult {
+    let n = set.len() + root.len();
+    write(length, n);
+    if out.is_empty() {
+        return Ok(());
+    }
+    if out.len() < n {
+        return Err(FfiError::BufferTooSmall(format!(
+            "buffer: need {n} bytes, capacity is {}",
+            out.len()
+        )));
+    }
+    out[..set.len()].copy_from_slice(set);
+    out[set.len()..n].copy_from_slice(root);
     Ok(())
 }
 

@@ -10,6 +10,7 @@ use super::boundary::{
 };
 use super::status::RmfStatus;
 use super::types::{RmfNurbsCurve, RmfNurbsSurface, RmfVec2, RmfVec3};
+use rmfsurf::export::occ_brep::OccBinary;
 use rmfsurf::{
     AnalyticCurve, AnalyticEdge, AnalyticFace, AnalyticSurface, Brep, BrepBound, BrepEdge,
     BrepFace, BrepSurface, BrepUse, PCurve,
@@ -80,8 +81,10 @@ pub struct RmfBrep {
     analytic_uses: Vec<Vec<Vec<RmfBrepUse>>>,
     /// What the views point into: the model (weights, knots) and the poles in the C layout.
     /// Neither changes after the views are made (moving the handle moves no buffer).
-    _model: Brep,
+    model: Brep,
     _poles: Vec<Vec<RmfVec3>>,
+    /// OpenCascade's binary B-rep of the model, made on the first rmf_brep_occ_binary.
+    occ_binary: std::sync::OnceLock<OccBinary>,
 }
 
 impl RmfBrep {
@@ -152,8 +155,9 @@ impl RmfBrep {
             uses,
             shells,
             analytic_uses,
-            _model: brep,
+            model: brep,
             _poles: poles,
+            occ_binary: std::sync::OnceLock::new(),
         }
     }
 
@@ -163,7 +167,7 @@ impl RmfBrep {
 
     /// The model the views describe.
     pub(crate) fn model(&self) -> &Brep {
-        &self._model
+        &self.model
     }
 }
 
@@ -472,6 +476,48 @@ pub struct RmfBrepShell {
 #[no_mangle]
 pub unsafe extern "C" fn rmf_brep_free(brep: *mut RmfBrep) {
     free_handle(brep)
+}
+
+/// The B-rep in OpenCascade's binary B-rep ("Open CASCADE Topology V3", what
+/// BinTools::Write writes) into a caller buffer, as rmf_shape_occ_binary writes a shape's:
+/// a solid of its closed shell, or its open shell (a compound of the shells it falls apart
+/// into), built by the kernel as it is. The way to hand a sheet-metal part's solid
+/// (rmf_sheet_part_brep) or a B-rep of rmf_brep_create to OpenCascade or FreeCAD.
+///
+/// Size query: with capacity 0 (buffer may be NULL) only length is written. Otherwise the
+/// file is written if capacity ≥ length.
+///
+/// @param[in] brep The B-rep.
+/// @param[in] reader RMF_OCC_READER_*.
+/// @param[out] buffer capacity bytes for the file.
+/// @param[in] capacity Size of buffer in bytes; 0 for a size query.
+/// @param[out] length Receives the length of the file in bytes.
+/// @return RMF_OK on success or for a size query.
+/// @return RMF_ERROR_NULL_POINTER If brep or length is NULL, or buffer is NULL with a
+///         non-zero capacity.
+/// @return RMF_ERROR_INVALID_INPUT If reader is not an RMF_OCC_READER_* value, or the
+///         B-rep has no face.
+/// @return RMF_ERROR_BUFFER_TOO_SMALL If 0 < capacity < length; length is written.
+/// \since 0.2
+/// \ingroup rmf_brep
+#[no_mangle]
+pub unsafe extern "C" fn rmf_brep_occ_binary(
+    brep: *const RmfBrep,
+    reader: crate::shape::RmfOccReader,
+    buffer: *mut u8,
+    capacity: usize,
+    length: *mut usize,
+) -> RmfStatus {
+    guard("rmf_brep_occ_binary", || {
+        let b = reference(brep, "brep")?;
+        let length = out_ptr(length, "length")?;
+        let reader = crate::shape::occ_reader(reader)?;
+        let out = crate::boundary::buffer(buffer, capacity, "buffer")?;
+        let file = crate::boundary::made_once(&b.occ_binary, || {
+            rmfsurf::export::occ_brep::brep_to_occ_binary(&b.model)
+        })?;
+        crate::boundary::hand_bytes(file.set(), &file.root(reader), out, length)
+    })
 }
 
 /// The sizes of a B-rep, whether it is a solid, and its tolerance.

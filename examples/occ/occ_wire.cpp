@@ -169,6 +169,32 @@ static std::string occ_text(const RmfShape *shape) {
     return text;
 }
 
+/// The shape's OpenCascade binary B-rep for BinTools::Read (rmf_shape_occ_binary: the size,
+/// then the file).
+static std::string occ_binary(const RmfShape *shape) {
+    size_t length = 0;
+    require(rmf_shape_occ_binary(shape, RMF_OCC_READER_BINTOOLS, nullptr, 0, &length) == RMF_OK,
+            "rmf_shape_occ_binary (size)");
+    std::string bytes(length, '\0');
+    require(rmf_shape_occ_binary(shape, RMF_OCC_READER_BINTOOLS, reinterpret_cast<uint8_t *>(bytes.data()),
+                                 bytes.size(), &length) == RMF_OK,
+            "rmf_shape_occ_binary");
+    return bytes;
+}
+
+/// The same shape from the binary B-rep as from the text: valid, one solid, the same faces
+/// and poles, the volume to 1e-12 (the same numbers, read without parsing).
+static void check_binary(const std::string &bytes, const Measure &from_text, const char *what) {
+    const Measure binary = wire_sweep::measure(wire_sweep::read_brep_binary(bytes));
+    require(binary.valid && binary.solids == 1, what);
+    require(binary.bspline_faces == from_text.bspline_faces && binary.analytic_faces == from_text.analytic_faces &&
+                binary.bspline_poles == from_text.bspline_poles,
+            "the binary B-rep's faces and poles are the text's");
+    check(std::fabs(binary.volume - from_text.volume) <= 1e-12 * from_text.volume,
+          "volume from the binary B-rep against the text's, relative",
+          std::fabs(binary.volume - from_text.volume) / from_text.volume, 1e-12);
+}
+
 /// The shape built by BRep_Builder from the library's B-rep model (rmfsurf_occ.hpp).
 static TopoDS_Shape from_model(const RmfShape *shape) {
     RmfBrep *brep = nullptr;
@@ -246,6 +272,7 @@ static void run(const Case &c) {
     // The same solid handed over in OpenCascade's own B-rep text: built as it is, no file.
     const Measure handed = wire_sweep::measure(wire_sweep::read_brep_text(occ_text(shape)));
     require(handed.valid && handed.solids == 1, "OpenCascade builds one valid Solid from the B-rep text");
+    check_binary(occ_binary(shape), handed, "OpenCascade builds one valid Solid from the binary B-rep");
     check(std::fabs(handed.volume - ours.volume) <= 1e-9 * ours.volume,
           "volume from the B-rep text against the STEP solid's, relative",
           std::fabs(handed.volume - ours.volume) / ours.volume, 1e-9);
@@ -333,6 +360,7 @@ static void cavity() {
         const Measure handed = wire_sweep::measure(wire_sweep::read_brep_text(occ_text(shape)));
         require(built.valid && built.solids == 1 && shells == 2, "from the model: one valid Solid of two shells");
         require(handed.valid && handed.solids == 1, "from the text: one valid Solid");
+        check_binary(occ_binary(shape), handed, "from the binary B-rep: one valid Solid");
         const double r = 3, exact = PI * 3 * (80 - 4 * (2 * r - r * PI / 2));
         check(std::fabs(built.volume - exact) <= 1e-9 * exact, "volume against pi (R^2 - r^2) L, relative",
               std::fabs(built.volume - exact) / exact, 1e-9);
@@ -369,9 +397,17 @@ static void hopper() {
     RmfBrep *brep = nullptr;
     require(rmf_sheet_part_brep(part, &brep) == RMF_OK, "rmf_sheet_part_brep");
     const TopoDS_Shape solid = rmfsurf::occ::build(brep);
+    size_t size = 0;
+    require(rmf_brep_occ_binary(brep, RMF_OCC_READER_BINTOOLS, nullptr, 0, &size) == RMF_OK,
+            "rmf_brep_occ_binary (size)");
+    std::string bytes(size, '\0');
+    require(rmf_brep_occ_binary(brep, RMF_OCC_READER_BINTOOLS, reinterpret_cast<uint8_t *>(bytes.data()), size,
+                                &size) == RMF_OK,
+            "rmf_brep_occ_binary");
     rmf_brep_free(brep);
     const Measure built = wire_sweep::measure(solid);
     require(handed.valid && handed.solids == 1, "the hopper from the B-rep text: one valid Solid");
+    check_binary(bytes, handed, "the hopper from the binary B-rep: one valid Solid");
     require(built.valid && built.solids == 1, "the hopper from the B-rep model: one valid Solid");
     check(std::fabs(built.volume - handed.volume) <= 1e-12 * handed.volume,
           "the hopper's volume from the model against the text's, relative",

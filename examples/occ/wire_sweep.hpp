@@ -24,6 +24,7 @@
 #include <BRepGProp.hxx>
 #include <BRepOffsetAPI_MakePipeShell.hxx>
 #include <BRepTools.hxx>
+#include <BinTools.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <GC_MakeArcOfCircle.hxx>
@@ -190,6 +191,15 @@ inline TopoDS_Shape read_brep_text(const std::string &text) {
     TopoDS_Shape shape;
     BRep_Builder builder;
     BRepTools::Read(shape, stream, builder);
+    return shape;
+}
+
+/// The shape OpenCascade builds from its binary B-rep (what rmf_shape_occ_binary and
+/// rmf_brep_occ_binary hand over for RMF_OCC_READER_BINTOOLS): no file, no parsing, no sewing.
+inline TopoDS_Shape read_brep_binary(const std::string &bytes) {
+    std::istringstream stream(bytes, std::ios::in | std::ios::binary);
+    TopoDS_Shape shape;
+    BinTools::Read(shape, stream);
     return shape;
 }
 

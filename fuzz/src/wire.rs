@@ -25,6 +25,7 @@ pub const OPS: &[fn(&mut Session)] = &[
     shape_step,
     shape_texts,
     shape_brep,
+    shape_binary,
 ];
 
 fn add(a: RmfVec3, b: RmfVec3) -> RmfVec3 {
@@ -376,6 +377,38 @@ fn shape_texts(s: &mut Session) {
             );
         }
     }
+}
+
+/// The binary B-rep of a shape for both readers: a size query, then the file into a buffer
+/// of exactly that size; the same set before either root, the version line first.
+fn shape_binary(s: &mut Session) {
+    let shape = s.shape();
+    let mut files = Vec::new();
+    for reader in [RMF_OCC_READER_BINTOOLS, RMF_OCC_READER_FREECAD] {
+        let name = "rmf_shape_occ_binary";
+        let mut length = poisoned::<usize>();
+        let status = unsafe { rmf_shape_occ_binary(shape, reader, null_mut(), 0, &mut length) };
+        if !checked(name, status, &[is_poisoned(&length)]) {
+            return;
+        }
+        let mut buffer = vec![0xAAu8; length];
+        let mut again = 0usize;
+        let status =
+            unsafe { rmf_shape_occ_binary(shape, reader, buffer.as_mut_ptr(), length, &mut again) };
+        assert!(
+            status_ok(name, status),
+            "{name}: the size it gave is not enough"
+        );
+        assert_eq!(again, length, "{name}: the length changed");
+        assert!(buffer.starts_with(b"\nOpen CASCADE Topology V3 (c)\n"));
+        files.push(buffer);
+    }
+    let (bintools, freecad) = (&files[0], &files[1]);
+    assert_eq!(freecad.len(), bintools.len() + 3, "the two roots");
+    assert_eq!(
+        bintools[..bintools.len() - 9],
+        freecad[..freecad.len() - 12]
+    );
 }
 
 /// The B-rep model of a shape (rmf_shape_brep), walked and freed (`brep::walk`).

@@ -464,6 +464,24 @@ def parameters(value: Any, name: str) -> Tuple[np.ndarray, bool]:
     return array, scalar
 
 
+#: The programs an OpenCascade binary B-rep is written for (RMF_OCC_READER_*): the file ends
+#: with the root shape as that program reads it.
+OCC_READERS: Dict[str, int] = {"bintools": 0, "freecad": 1}
+
+_uncleared = ffi.new_allocator(should_clear_after_alloc=False)
+
+
+def occ_binary(function: str, handle: Any, reader: str) -> bytes:
+    """The binary B-rep a C `function` (rmf_shape_occ_binary, rmf_brep_occ_binary) writes
+    of `handle` for `reader` ("bintools" or "freecad"), copied once out of the library."""
+    code = choice(reader, "reader", OCC_READERS)
+    n = ffi.new("size_t *")
+    call(function, handle, code, ffi.NULL, 0, n)
+    data = _uncleared("uint8_t[]", n[0])
+    call(function, handle, code, data, n[0], n)
+    return ffi.buffer(data, n[0])[:]
+
+
 def choice(value: Any, name: str, options: Dict[str, int]) -> int:
     """The integer of an option given by name (e.g. corner="round")."""
     if not isinstance(value, str):

@@ -27,6 +27,7 @@ cylinders and cones exactly, any developable through its cone spline)::
 from __future__ import annotations
 
 import os
+import tempfile
 from typing import Any, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
@@ -401,22 +402,31 @@ def _open_profile_plane(wire: Any, origin: np.ndarray, tangent: np.ndarray, tole
     return tangent, origin, points[-1] - points[0]
 
 
-def _from_brep(text: str) -> Any:
-    """The Part.Shape FreeCAD builds from an OpenCascade B-rep text, as it is."""
-    built = Part.Shape()
-    built.importBrepFromString(text)
+def _from_binary(data: bytes) -> Any:
+    """The Part.Shape FreeCAD builds from an OpenCascade binary B-rep (for "freecad"), as it
+    is. FreeCAD reads it from a file only: one in memory (/dev/shm) where there is one."""
+    memory = "/dev/shm" if os.path.isdir("/dev/shm") else None
+    handle, path = tempfile.mkstemp(prefix="rmfsurf-", suffix=".bin", dir=memory)
+    try:
+        with os.fdopen(handle, "wb") as file:
+            file.write(data)
+        built = Part.Shape()
+        built.importBinary(path)
+    finally:
+        os.unlink(path)
     return built
 
 
 def part_shape(value: Shape, tolerance: float = 1e-6) -> Any:
     """An :class:`rmfsurf.Shape` as a Part.Shape, built by OpenCascade from the library's
-    B-rep (:meth:`rmfsurf.Shape.occ_brep`, ``importBrepFromString``): a Part.Solid when
+    B-rep (:meth:`rmfsurf.Shape.occ_binary`, ``importBinary``): a Part.Solid when
     the shape is a solid, else a Part.Shell (a Part.Compound of shells when the walls of a
     hollow profile do not meet). Edges are shared and faces oriented as the library made
     them: nothing is sewn or healed. `tolerance` (finite, > 0) is checked and otherwise
     unused."""
     _core.finite(tolerance, "tolerance", positive=True)
-    built = _from_brep(_core.instance(value, "shape", Shape, "an rmfsurf.Shape").occ_brep())
+    shape = _core.instance(value, "shape", Shape, "an rmfsurf.Shape")
+    built = _from_binary(shape.occ_binary("freecad"))
     if value.is_solid:
         return built.Solids[0]
     shells = built.Shells
@@ -630,10 +640,10 @@ def transition(bottom: Any, top: Any, thickness: float = 1.0, k_factor: float = 
 
 def part_solid(part: SheetPart) -> Any:
     """The formed part as a ``Part.Solid``, built by OpenCascade from the library's B-rep
-    (``part.export("brep")``, ``importBrepFromString``): its faces share their edges as the
-    library made them; nothing is sewn or healed."""
-    text = _core.instance(part, "part", SheetPart, "an rmfsurf.SheetPart").export("brep")
-    return _from_brep(text).Solids[0]
+    (:meth:`rmfsurf.SheetPart.occ_binary`, ``importBinary``): its faces share their edges
+    as the library made them; nothing is sewn or healed."""
+    part = _core.instance(part, "part", SheetPart, "an rmfsurf.SheetPart")
+    return _from_binary(part.occ_binary("freecad")).Solids[0]
 
 
 def flat_pattern(part: SheetPart) -> Tuple[Any, Any]:

@@ -53,7 +53,7 @@ from .unfold import (Brep, BrepEdge, BrepFace, Developability, FlatPattern, Unfo
                      UnfoldedFace, checked_k_factor, line_curve, unfold_body, unfold_face)
 from .unfold import developability as _developability
 
-from OCP.BRep import BRep_Builder, BRep_Tool
+from OCP.BRep import BRep_Tool
 from OCP.BRepAdaptor import BRepAdaptor_Curve, BRepAdaptor_Curve2d, BRepAdaptor_Surface
 from OCP.BRepBuilderAPI import (BRepBuilderAPI_MakeEdge, BRepBuilderAPI_MakeFace,
                                 BRepBuilderAPI_MakeSolid, BRepBuilderAPI_MakeVertex,
@@ -63,6 +63,7 @@ from OCP.BRepCheck import BRepCheck_Analyzer
 from OCP.BRepGProp import BRepGProp
 from OCP.BRepLib import BRepLib_FindSurface
 from OCP.BRepTools import BRepTools, BRepTools_WireExplorer
+from OCP.BinTools import BinTools
 from OCP.GC import GC_MakeSegment
 from OCP.Geom import (Geom_BSplineCurve, Geom_BSplineSurface, Geom_Circle, Geom_Curve,
                       Geom_TrimmedCurve)
@@ -449,23 +450,22 @@ def _cap(loops: List[Curve], origin: np.ndarray, normal: np.ndarray) -> Any:
     return maker.Face()
 
 
-def _read_brep(text: Any) -> TopoDS_Shape:
-    """The shape of an OpenCascade B-rep text (str or bytes), as the kernel reads it."""
-    data = text if isinstance(text, bytes) else text.encode("ascii")
+def _read_binary(data: bytes) -> TopoDS_Shape:
+    """The shape of an OpenCascade binary B-rep (for "bintools"), as the kernel reads it."""
     raw = TopoDS_Shape()
-    BRepTools.Read_s(raw, io.BytesIO(data), BRep_Builder())
+    BinTools.Read_s(raw, io.BytesIO(data))
     return raw
 
 
 def shape(value: Shape, tolerance: float = 1e-6) -> Any:
     """An :class:`rmfsurf.Shape` as OCP, built by OpenCascade from the library's B-rep
-    (:meth:`rmfsurf.Shape.occ_brep`, read by ``BRepTools.Read_s``): a ``TopoDS_Solid``
+    (:meth:`rmfsurf.Shape.occ_binary`, read by ``BinTools.Read_s``): a ``TopoDS_Solid``
     when the shape is a solid, else its shell (a compound of shells when the walls of a
     hollow profile do not meet). Edges are shared and faces oriented as the library made
     them: nothing is sewn or healed. `tolerance` (finite, > 0) is checked and otherwise
     unused: the library's shape needs no sewing."""
     _core.finite(tolerance, "tolerance", positive=True)
-    raw = _read_brep(_core.instance(value, "shape", Shape, "an rmfsurf.Shape")._occ_brep_bytes())
+    raw = _read_binary(_core.instance(value, "shape", Shape, "an rmfsurf.Shape").occ_binary())
     kind = raw.ShapeType()
     if kind == TopAbs_SOLID:
         return _as_solid(raw)
@@ -476,10 +476,11 @@ def shape(value: Shape, tolerance: float = 1e-6) -> Any:
 
 def part_solid(part: SheetPart) -> Any:
     """The formed sheet-metal part as a ``TopoDS_Solid``, built by OpenCascade from the
-    library's B-rep (``part.export("brep")``): wrap it as ``build123d.Solid(...)`` or
-    ``cadquery.Solid(...)`` to fuse, cut and export."""
-    text = _core.instance(part, "part", SheetPart, "an rmfsurf.SheetPart").export("brep")
-    return _as_solid(_read_brep(text))
+    library's B-rep (:meth:`rmfsurf.SheetPart.occ_binary`, read by ``BinTools.Read_s``):
+    wrap it as ``build123d.Solid(...)`` or ``cadquery.Solid(...)`` to fuse, cut and
+    export."""
+    part = _core.instance(part, "part", SheetPart, "an rmfsurf.SheetPart")
+    return _as_solid(_read_binary(part.occ_binary()))
 
 
 def closed_solid(sewn: Any) -> Any:

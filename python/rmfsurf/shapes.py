@@ -417,6 +417,13 @@ class Shape:
         call("rmf_shape_occ_brep", self._ptr, text, n[0] + 1, n)
         return ffi.unpack(text, n[0])
 
+    def occ_binary(self, reader: str = "bintools") -> bytes:
+        """The shape in OpenCascade's binary B-rep: the shape of :meth:`occ_brep`, which
+        the kernel reads several times faster. ``reader="bintools"``: ``BinTools.Read_s``
+        from a ``BytesIO`` (OCP, build123d, CadQuery); ``"freecad"``: a file for FreeCAD's
+        ``Part.Shape().importBinary``."""
+        return _core.occ_binary("rmf_shape_occ_binary", self._ptr, reader)
+
     def __repr__(self) -> str:
         return "<rmfsurf.Shape %d faces%s>" % (self.face_count, ", solid" if self.is_solid else "")
 

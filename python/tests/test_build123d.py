@@ -250,6 +250,91 @@ def test_a_face_turned_inside_out_in_the_text_is_found_invalid():
         assert rocp.is_valid(raw) == valid
 
 
+def read_text_and_binary(text, data):
+    """The shapes OpenCascade reads from a B-rep text (BRepTools) and a binary B-rep
+    (BinTools)."""
+    from OCP.BRep import BRep_Builder
+    from OCP.BRepTools import BRepTools
+    from OCP.BinTools import BinTools
+    from OCP.TopoDS import TopoDS_Shape
+    import io
+    by_text, by_binary = TopoDS_Shape(), TopoDS_Shape()
+    BRepTools.Read_s(by_text, io.BytesIO(text.encode()), BRep_Builder())
+    BinTools.Read_s(by_binary, io.BytesIO(data))
+    return by_text, by_binary
+
+
+def census(shape):
+    """Kinds and counts of the shape's sub-shapes and its faces' surface types."""
+    from OCP.TopAbs import TopAbs_EDGE, TopAbs_SHELL, TopAbs_VERTEX
+    counts = []
+    for kind in (TopAbs_VERTEX, TopAbs_EDGE, TopAbs_FACE, TopAbs_SHELL):
+        explorer, n = TopExp_Explorer(shape, kind), 0
+        while explorer.More():
+            n += 1
+            explorer.Next()
+        counts.append(n)
+    types, explorer = [], TopExp_Explorer(shape, TopAbs_FACE)
+    while explorer.More():
+        types.append(str(BRepAdaptor_Surface(TopoDS.Face(explorer.Current())).GetType()))
+        explorer.Next()
+    return shape.ShapeType(), counts, types
+
+
+@needs_wire_sweep
+def test_the_binary_b_rep_is_the_text_s_shape_read_without_parsing():
+    """Shape.occ_binary() and SheetPart.occ_binary(), read by BinTools: the shape of the
+    B-rep text — the same kinds and counts of vertices, edges, faces and shells, the same
+    surface types, valid as read, the same volume to 1e-12 — for a pipe route of a circle
+    (cylinders, tori), the open walls of a ring (a compound of two shells), a square duct
+    with miter corners (planes and B-splines), a helix and a transition. A vertex moved
+    in the binary file is read as moved (the check can fail)."""
+    import struct
+    from OCP.TopAbs import TopAbs_SOLID
+    route = pipe_route()
+    square = bd.Plane(origin=route @ 0, z_dir=route % 0) * bd.Rectangle(3, 2).faces()[0]
+    corners = [[-100, -100, 0], [100, -100, 0], [100, 100, 0], [-100, 100, 0]]
+    bottom = rmfsurf.Curve.from_nurbs(1, corners + [corners[0]], [0, 0, 1, 2, 3, 4, 4])
+    part = rmfsurf.transition(bottom, rmfsurf.circle(60.0, (20.0, 0.0, 150.0)), thickness=2.0,
+                              tolerance=1e-3)
+    helix = helix_route()
+
+    def library_sweep(path, profile, **options):
+        origin, tangent = rocp._start_frame(path)
+        outer, holes, f2 = rocp.profile_curves(profile, origin, tangent, 1e-4)
+        return rmfsurf.wire_sweep(rocp.path_edges(path), outer, holes, tolerance=1e-4,
+                                  initial_normal=f2, **options)
+
+    sources = [library_sweep(route, ring(route, hole=False)),
+               library_sweep(route, ring(route), solid=False),
+               library_sweep(route, square, corner="miter"),
+               library_sweep(helix, ring(helix, hole=False)),
+               part]
+    for source in sources:
+        text, data = source.export("brep") if source is part else source.occ_brep(), \
+            source.occ_binary()
+        by_text, by_binary = read_text_and_binary(text, data)
+        assert census(by_binary) == census(by_text)
+        assert rocp.is_valid(by_binary) and rocp.is_valid(by_text)
+        if by_text.ShapeType() == TopAbs_SOLID:
+            volume = gk_volume(bd.Solid(by_text))
+            assert abs(gk_volume(bd.Solid(by_binary)) - volume) <= 1e-12 * volume
+    # The FreeCAD reader's file: the same set, its own root (three integers).
+    freecad = part.occ_binary("freecad")
+    assert freecad[:len(data) - 9] == data[:-9] and len(freecad) == len(data) + 3
+    with pytest.raises(ValueError, match="reader"):
+        part.occ_binary("step")
+    # The first vertex's x moved by 1 in the TShapes table: the shape is no longer valid.
+    pipe = sources[0]
+    text, data = pipe.occ_brep(), pipe.occ_binary()
+    table = data.index(b"\nTShapes ")
+    record = data.index(b"\x07", table + 9)
+    moved = data[:record + 9] + struct.pack("<d", struct.unpack("<d", data[record + 9:record + 17])[0] + 1.0) \
+        + data[record + 17:]
+    assert rocp.is_valid(read_text_and_binary(text, data)[1])
+    assert not rocp.is_valid(read_text_and_binary(text, moved)[1])
+
+
 def surface_area(surface, tolerance=1e-10):
     """OpenCascade's area of a library surface: one face per knot span of the
     Geom_BSplineSurface (BRepGProp.SurfaceProperties_s integrates a face across C0 knots

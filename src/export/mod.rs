@@ -4,7 +4,7 @@
 //! | module | format | holds | read back in the tests by |
 //! | --- | --- | --- | --- |
 //! | [`step`] | STEP AP214 (ISO 10303-21) | rational B-spline surfaces as faces, curves | FreeCAD (OpenCascade's reader) |
-//! | [`occ_brep`] | OpenCascade's B-rep text (`CASCADE Topology V1`) | a B-rep solid or shell as the kernel holds it | OpenCascade's `BRepTools::Read` and `BRepCheck_Analyzer` (Python tests) |
+//! | [`occ_brep`] | OpenCascade's B-rep text (`CASCADE Topology V1`) and binary B-rep (`Open CASCADE Topology V3`) | a B-rep solid or shell as the kernel holds it | OpenCascade's `BRepTools::Read` and `BRepCheck_Analyzer` (Python tests) |
 //! | [`vtk`] | VTK XML PolyData `.vtp` | triangle meshes with normals | VTK's `vtkXMLPolyDataReader` |
 //! | [`obj`] | Wavefront `.obj` | polygon meshes with normals | FreeCAD's mesh reader |
 //! | [`openscad`] | OpenSCAD `.scad` | closed `polyhedron()` solids, RMF transforms for sweeps | OpenSCAD (renders to STL) |

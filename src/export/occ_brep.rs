@@ -1,132 +1,356 @@
-//! OpenCascade's own B-rep text (`CASCADE Topology V1`, what `BRepTools::Write` writes) of
-//! a [`Brep`]: `BRepTools::Read` — and so build123d, CadQuery and FreeCAD's
-//! `Part.Shape.importBrepFromString` — builds the shape from it as it is, with no sewing,
-//! healing or orientation measured afterwards: shared edges are one edge of the kernel,
-//! every edge carries its curve on each B-spline face (`2` records, a `3` record for a
-//! seam; on a plane the kernel projects the edge itself), the faces' senses and loops are
-//! the model's.
+//! OpenCascade's own B-rep files of a [`Brep`], as text (`CASCADE Topology V1`, what
+//! `BRepTools::Write` writes) and in the binary form (`Open CASCADE Topology V3`, what
+//! `BinTools::Write` writes): `BRepTools::Read` and `BinTools::Read` — and so build123d,
+//! CadQuery and FreeCAD's `Part.Shape.importBrepFromString` and `importBinary` — build the
+//! shape from them as it is, with no sewing, healing or orientation measured afterwards:
+//! shared edges are one edge of the kernel, every edge carries its curve on each B-spline
+//! face (a seam its two curves; on a plane the kernel projects the edge itself), the faces'
+//! senses and loops are the model's.
 //!
-//! The file (OCCT's `BRepTools_ShapeSet`, `GeomTools_*Set`): the geometry tables —
-//! 2-D curves, 3-D curves, surfaces, each numbered from 1 in the order written — then the
-//! topological shapes, every one after the shapes it holds; a reference to a shape is its
-//! orientation and its number counted from the last shape written (the last is 1), and
-//! the file ends with the reference to the root. A face that is its whole B-spline surface
-//! is marked so (its natural restriction). Curves are written as B-splines (code 7: a
-//! pcurve line of the model need not run at unit speed, which a 2-D line would), surfaces
-//! as B-splines (code 9, poles with v running fastest) or planes (code 1: origin, normal,
-//! x axis, y = normal × x axis) — except the model's analytic forms: planes, cylinders
-//! (code 2), cones (code 3) and tori (code 5) for analytic faces, lines (code 1) and circles (code 2) for
-//! analytic edges, and on a cylinder or torus each edge's curve a 2-D line (code 1) of unit
-//! speed on the edge's length or angle. Numbers are the shortest text that reads back as
-//! the same double.
+//! Both files hold one shape set (OCCT's `BRepTools_ShapeSet`, `BinTools_ShapeSet`), laid
+//! out by [`ShapeSet`]: the geometry tables — 2-D curves, 3-D curves, surfaces, each numbered
+//! from 1 in the order written — then the topological shapes, every one after the shapes it
+//! holds; a reference to a shape is its orientation and its number counted from the last
+//! shape written (the last is 1), and the file ends with the reference to the root. A face
+//! that is its whole B-spline surface is marked so (its natural restriction). Curves are
+//! B-splines (a pcurve line of the model need not run at unit speed, which a 2-D line
+//! would), surfaces B-splines (poles with v running fastest) or planes (origin, normal, x
+//! axis, y = normal × x axis) — except the model's analytic forms: planes, cylinders, cones
+//! and tori for analytic faces, lines and circles for analytic edges, and on a cylinder or
+//! torus each edge's curve a 2-D line of unit speed on the edge's length or angle.
+//!
+//! The text ([`text`]) writes numbers as the shortest text that reads back as the same
+//! double; the binary file ([`binary`]) writes them as they are (little-endian IEEE 754), the
+//! counts as 32-bit integers, and with each curve on a face its end points in the face's
+//! parameter plane (the V2 addition); a kernel reads it several times faster.
 
-use super::{curve_range, knot_runs, number, push_counts, push_numbers};
+mod binary;
+mod text;
+
+pub use binary::{brep_to_occ_binary, OccBinary, OccReader};
+pub use text::brep_to_occ;
+
+use super::curve_range;
 use crate::bezier::{NurbsCurve, NurbsSurface};
 use crate::error::{invalid, Result};
-use crate::model::{AnalyticCurve, AnalyticSurface, Brep, BrepEdge, BrepFace, BrepSurface, PCurve};
-use std::fmt::Write;
+use crate::model::{AnalyticCurve, AnalyticSurface, Brep, BrepFace, BrepSurface, PCurve};
+use glam::DVec3;
 
-/// The text of `brep` in OpenCascade's B-rep format: a solid of one closed shell, or an
-/// open shell (a compound of shells when its faces fall apart into parts; module notes).
-pub fn brep_to_occ(brep: &Brep) -> Result<String> {
-    if brep.faces.is_empty() {
-        return invalid!("a shape needs at least one face");
-    }
-    let tolerance = number(brep.tolerance()).to_string();
-    let mut text = String::from("\nCASCADE Topology V1, (c) Matra-Datavision\nLocations 0\n");
-    let on_edges = curves_2d(brep, &mut text)?;
-    let _ = writeln!(text, "Curves {}", brep.edges.len());
-    for edge in &brep.edges {
-        match &edge.analytic {
-            Some(analytic) => analytic_curve(&mut text, &analytic.curve),
-            None => bspline(&mut text, &edge.curve, 3),
-        }
-    }
-    text.push_str("Polygon3D 0\nPolygonOnTriangulations 0\n");
-    let _ = writeln!(text, "Surfaces {}", brep.faces.len());
-    for face in &brep.faces {
-        match &face.analytic {
-            Some(analytic) => analytic_surface(&mut text, &analytic.surface),
-            None => surface(&mut text, &face.surface),
-        }
-    }
-    text.push_str("Triangulations 0\n\n");
-    let mut shapes = Shapes::default();
-    let vertices: Vec<usize> = brep
-        .vertices
-        .iter()
-        .map(|p| {
-            let mut data = format!("Ve\n{tolerance}\n{}", number(p.x));
-            push_numbers(&mut data, [p.y, p.z]);
-            data.push_str("\n0 0\n");
-            shapes.add(data, "0101101", Vec::new())
-        })
-        .collect();
-    let mut edges = Vec::with_capacity(brep.edges.len());
-    for (e, edge) in brep.edges.iter().enumerate() {
-        let (Some(&start), Some(&end)) = (vertices.get(edge.start), vertices.get(edge.end)) else {
-            return invalid!("edge {e} joins vertices that do not exist");
-        };
-        let data = edge_data(e, edge, &on_edges[e], &tolerance);
-        edges.push(shapes.add(data, "0101000", vec![('+', start), ('-', end)]));
-    }
-    let mut in_shell = Vec::with_capacity(brep.faces.len());
-    for (f, face) in brep.faces.iter().enumerate() {
-        let reversed = face
-            .analytic
-            .as_ref()
-            .is_some_and(|a| a.loops_reversed(face.same_sense));
-        let wires: Vec<(char, usize)> = face
-            .bounds
-            .iter()
-            .map(|bound| {
-                let mut uses: Vec<_> = bound
-                    .uses
-                    .iter()
-                    .map(|u| (if u.forward != reversed { '+' } else { '-' }, edges[u.edge]))
-                    .collect();
-                if reversed {
-                    uses.reverse();
+/// A curve of the `Curve2ds` table.
+enum Curve2d<'a> {
+    /// A 2-D line (on an analytic face): origin + t · direction.
+    Line {
+        origin: (f64, f64),
+        direction: (f64, f64),
+    },
+    /// A pcurve line of a B-spline face, as the degree-1 B-spline from its point at the
+    /// edge's first parameter to that at its last.
+    Segment {
+        from: (f64, f64),
+        to: (f64, f64),
+        range: (f64, f64),
+    },
+    /// A 2-D B-spline (the x, y of its poles).
+    Nurbs(&'a NurbsCurve),
+}
+
+impl Curve2d<'_> {
+    /// The curve's point at parameter `t`: its ends at the ends of the edge's range.
+    fn point(&self, t: f64) -> Result<(f64, f64)> {
+        Ok(match self {
+            Curve2d::Line { origin, direction } => {
+                (origin.0 + t * direction.0, origin.1 + t * direction.1)
+            }
+            Curve2d::Segment { from, to, range } => {
+                if t == range.0 {
+                    *from
+                } else if t == range.1 {
+                    *to
+                } else {
+                    let s = (t - range.0) / (range.1 - range.0);
+                    (from.0 + s * (to.0 - from.0), from.1 + s * (to.1 - from.1))
                 }
-                ('+', shapes.add("Wi\n".into(), "0101100", uses))
-            })
-            .collect();
-        let mut data = String::with_capacity(40);
-        data.push_str(if natural_bounds(face) {
-            "Fa\n1 "
-        } else {
-            "Fa\n0 "
-        });
-        data.push_str(&tolerance);
-        push_counts(&mut data, [f + 1, 0]);
-        data.push('\n');
-        let same_sense = face
-            .analytic
-            .as_ref()
-            .map_or(face.same_sense, |a| a.same_sense);
-        let sense = if same_sense { '+' } else { '-' };
-        in_shell.push((sense, shapes.add(data, "0101000", wires)));
+            }
+            Curve2d::Nurbs(curve) => {
+                // A clamped curve starts at its first pole and ends at its last.
+                let (first, last) = curve_range(curve);
+                let p = if t == first {
+                    curve.poles[0]
+                } else if t == last {
+                    curve.poles[curve.poles.len() - 1]
+                } else {
+                    curve.to_piecewise()?.eval(t)
+                };
+                (p.x, p.y)
+            }
+        })
     }
-    // A solid holds its closed shells: one, or the outer shell and the walls of cavities (a
-    // hollow profile swept round a closed wire), each with its faces facing out of the
-    // material. An open shape is its shell, or a compound of the shells it falls apart into.
-    let parts = brep.shells();
-    if !brep.closed && parts.len() == 1 {
-        shapes.add("Sh\n".into(), "1101000", in_shell);
-    } else {
-        let flags = if brep.closed { "0101100" } else { "0101000" };
-        let shells = parts
+}
+
+/// A line, circle or elementary surface as both files write it: its code, then vectors and
+/// numbers.
+struct Elementary {
+    code: u8,
+    vectors: Vec<DVec3>,
+    numbers: Vec<f64>,
+}
+
+impl Elementary {
+    /// A line (code 1: origin, direction) or circle (code 2: centre, axis, x and y axes,
+    /// radius).
+    fn curve(curve: &AnalyticCurve) -> Self {
+        match *curve {
+            AnalyticCurve::Line { origin, direction } => Self {
+                code: 1,
+                vectors: vec![origin, direction],
+                numbers: Vec::new(),
+            },
+            AnalyticCurve::Circle {
+                center,
+                axis,
+                x_axis,
+                radius,
+            } => Self {
+                code: 2,
+                vectors: vec![center, axis, x_axis, axis.cross(x_axis)],
+                numbers: vec![radius],
+            },
+        }
+    }
+
+    /// A plane (code 1: location, normal, x and y axes), cylinder (code 2: the same and the
+    /// radius), cone (code 3: the same, the radius at v = 0 and the semi-angle) or torus
+    /// (code 5: the same and the major and minor radii).
+    fn surface(surface: &AnalyticSurface) -> Self {
+        let code = match surface {
+            AnalyticSurface::Plane { .. } => 1,
+            AnalyticSurface::Cylinder { .. } => 2,
+            AnalyticSurface::Cone { .. } => 3,
+            AnalyticSurface::Torus { .. } => 5,
+        };
+        let [origin, axis, x_axis] = surface.axes();
+        Self {
+            code,
+            vectors: vec![origin, axis, x_axis, axis.cross(x_axis)],
+            numbers: surface.dimensions(),
+        }
+    }
+
+    /// A plane of the model (code 1).
+    fn plane(origin: DVec3, normal: DVec3, x_axis: DVec3) -> Self {
+        Self {
+            code: 1,
+            vectors: vec![origin, normal, x_axis, normal.cross(x_axis)],
+            numbers: Vec::new(),
+        }
+    }
+}
+
+/// A curve of the `Curves` table: one per edge, edge e the (e + 1)-th.
+enum Curve3d<'a> {
+    Elementary(Elementary),
+    Nurbs(&'a NurbsCurve),
+}
+
+/// A surface of the `Surfaces` table: one per face, face f the (f + 1)-th.
+enum Surface<'a> {
+    Elementary(Elementary),
+    Nurbs(&'a NurbsSurface),
+}
+
+/// An edge on one face: the numbers of its curve(s) in the face's parameter plane — two for
+/// a seam, the forward use's first — and the ends of the last of them (the binary file's UV
+/// points: of a seam's second curve, as the kernel keeps them).
+struct OnFace {
+    face: usize,
+    curves: Vec<usize>,
+    ends: [(f64, f64); 2],
+}
+
+/// What a topological shape is, with its own data.
+enum Kind {
+    Vertex(DVec3),
+    Edge {
+        /// The number of its 3-D curve; None for a degenerate edge, which the kernel marks so.
+        curve: Option<usize>,
+        range: (f64, f64),
+        on_faces: Vec<OnFace>,
+    },
+    Wire,
+    Face {
+        natural: bool,
+        surface: usize,
+    },
+    Shell,
+    Solid,
+    Compound,
+}
+
+/// A shape held by another: reversed or not, and its position in [`ShapeSet::shapes`].
+type Held = (bool, usize);
+
+/// A shape's record: its kind, its flags (free, modified, checked, orientable, closed,
+/// infinite, convex), the shapes it holds with their orientations.
+struct Record {
+    kind: Kind,
+    flags: &'static str,
+    held: Vec<Held>,
+}
+
+/// The shape set of a B-rep as OpenCascade writes it (module notes).
+struct ShapeSet<'a> {
+    tolerance: f64,
+    curves_2d: Vec<Curve2d<'a>>,
+    curves: Vec<Curve3d<'a>>,
+    surfaces: Vec<Surface<'a>>,
+    /// Each after the shapes it holds; the last is the root.
+    shapes: Vec<Record>,
+}
+
+/// Vertex, edge, wire, face, shell flags (free, modified, checked, orientable, closed,
+/// infinite, convex): as OpenCascade writes the shapes it makes.
+const VERTEX: &str = "0101101";
+const EDGE: &str = "0101000";
+const WIRE: &str = "0101100";
+const FACE: &str = "0101000";
+const CLOSED_SHELL: &str = "0101100";
+const OPEN_SHELL: &str = "0101000";
+/// A root shape is free.
+const ROOT: &str = "1101000";
+const ROOT_HOLDER: &str = "1100000";
+
+impl<'a> ShapeSet<'a> {
+    /// The shape set of `brep`: a solid of one closed shell, or an open shell (a compound of
+    /// shells when its faces fall apart into parts).
+    fn of(brep: &'a Brep) -> Result<Self> {
+        if brep.faces.is_empty() {
+            return invalid!("a shape needs at least one face");
+        }
+        let (curves_2d, on_edges) = curves_2d(brep)?;
+        let curves = brep
+            .edges
             .iter()
-            .map(|faces| {
-                let held = faces.iter().map(|&f| in_shell[f]).collect();
-                ('+', shapes.add("Sh\n".into(), flags, held))
+            .map(|edge| match &edge.analytic {
+                Some(analytic) => Curve3d::Elementary(Elementary::curve(&analytic.curve)),
+                None => Curve3d::Nurbs(&edge.curve),
             })
             .collect();
-        let holder = if brep.closed { "So\n" } else { "Co\n" };
-        shapes.add(holder.into(), "1100000", shells);
+        let surfaces = brep
+            .faces
+            .iter()
+            .map(|face| match (&face.analytic, &face.surface) {
+                (Some(analytic), _) => Surface::Elementary(Elementary::surface(&analytic.surface)),
+                (None, BrepSurface::Nurbs(surface)) => Surface::Nurbs(surface),
+                (
+                    None,
+                    &BrepSurface::Plane {
+                        origin,
+                        normal,
+                        x_axis,
+                    },
+                ) => Surface::Elementary(Elementary::plane(origin, normal, x_axis)),
+            })
+            .collect();
+        let mut set = Self {
+            tolerance: brep.tolerance(),
+            curves_2d,
+            curves,
+            surfaces,
+            shapes: Vec::new(),
+        };
+        set.add_shapes(brep, on_edges)?;
+        Ok(set)
     }
-    shapes.write(&mut text);
-    Ok(text)
+
+    /// Adds a shape and returns its position (from 0).
+    fn add(&mut self, kind: Kind, flags: &'static str, held: Vec<Held>) -> usize {
+        self.shapes.push(Record { kind, flags, held });
+        self.shapes.len() - 1
+    }
+
+    /// The topological shapes, each after those it holds, the root last.
+    fn add_shapes(&mut self, brep: &Brep, on_edges: Vec<Vec<OnFace>>) -> Result<()> {
+        let vertices: Vec<usize> = brep
+            .vertices
+            .iter()
+            .map(|&p| self.add(Kind::Vertex(p), VERTEX, Vec::new()))
+            .collect();
+        let mut edges = Vec::with_capacity(brep.edges.len());
+        for ((e, edge), on_faces) in brep.edges.iter().enumerate().zip(on_edges) {
+            let (Some(&start), Some(&end)) = (vertices.get(edge.start), vertices.get(edge.end))
+            else {
+                return invalid!("edge {e} joins vertices that do not exist");
+            };
+            let range = edge
+                .analytic
+                .map_or_else(|| curve_range(&edge.curve), |a| (0.0, a.end));
+            let kind = Kind::Edge {
+                curve: (!edge.degenerate).then_some(e + 1),
+                range,
+                on_faces,
+            };
+            edges.push(self.add(kind, EDGE, vec![(false, start), (true, end)]));
+        }
+        let mut in_shell = Vec::with_capacity(brep.faces.len());
+        for (f, face) in brep.faces.iter().enumerate() {
+            let reversed = face
+                .analytic
+                .as_ref()
+                .is_some_and(|a| a.loops_reversed(face.same_sense));
+            let wires: Vec<Held> = face
+                .bounds
+                .iter()
+                .map(|bound| {
+                    let mut uses: Vec<Held> = bound
+                        .uses
+                        .iter()
+                        .map(|u| (u.forward == reversed, edges[u.edge]))
+                        .collect();
+                    if reversed {
+                        uses.reverse();
+                    }
+                    (false, self.add(Kind::Wire, WIRE, uses))
+                })
+                .collect();
+            let same_sense = face
+                .analytic
+                .as_ref()
+                .map_or(face.same_sense, |a| a.same_sense);
+            let kind = Kind::Face {
+                natural: natural_bounds(face),
+                surface: f + 1,
+            };
+            in_shell.push((!same_sense, self.add(kind, FACE, wires)));
+        }
+        // A solid holds its closed shells: one, or the outer shell and the walls of cavities
+        // (a hollow profile swept round a closed wire), each with its faces facing out of the
+        // material. An open shape is its shell, or a compound of the shells it falls apart
+        // into.
+        let parts = brep.shells();
+        if !brep.closed && parts.len() == 1 {
+            self.add(Kind::Shell, ROOT, in_shell);
+        } else {
+            let flags = if brep.closed {
+                CLOSED_SHELL
+            } else {
+                OPEN_SHELL
+            };
+            let shells = parts
+                .iter()
+                .map(|faces| {
+                    let held = faces.iter().map(|&f| in_shell[f]).collect();
+                    (false, self.add(Kind::Shell, flags, held))
+                })
+                .collect();
+            let holder = if brep.closed {
+                Kind::Solid
+            } else {
+                Kind::Compound
+            };
+            self.add(holder, ROOT_HOLDER, shells);
+        }
+        Ok(())
+    }
 }
 
 /// Whether the face is its whole B-spline surface: one loop, every pcurve a line along
@@ -157,19 +381,11 @@ fn natural_bounds(face: &BrepFace) -> bool {
     })
 }
 
-/// An edge on one face: the numbers of its curve(s) in the face's parameter plane — two for
-/// a seam, the forward use's first.
-struct OnFace {
-    face: usize,
-    curves: Vec<usize>,
-}
-
-/// Writes the `Curve2ds` table (every use's pcurve, in the order of faces, loops and uses)
-/// and returns, per edge, the faces it lies on with their curves' numbers. A use without
-/// a pcurve is allowed on a plane only (the kernel projects the edge there).
-fn curves_2d(brep: &Brep, text: &mut String) -> Result<Vec<Vec<OnFace>>> {
-    let mut table = String::new();
-    let mut count = 0;
+/// The `Curve2ds` table (every use's pcurve, in the order of faces, loops and uses) and,
+/// per edge, the faces it lies on with their curves' numbers. A use without a pcurve is
+/// allowed on a plane only (the kernel projects the edge there).
+fn curves_2d(brep: &Brep) -> Result<(Vec<Curve2d<'_>>, Vec<Vec<OnFace>>)> {
+    let mut table = Vec::new();
     let mut on_edges: Vec<Vec<OnFace>> = (0..brep.edges.len()).map(|_| Vec::new()).collect();
     for (f, face) in brep.faces.iter().enumerate() {
         let analytic = face.analytic.as_ref();
@@ -180,7 +396,7 @@ fn curves_2d(brep: &Brep, text: &mut String) -> Result<Vec<Vec<OnFace>>> {
             .flat_map(|(b, bound)| bound.uses.iter().enumerate().map(move |(k, u)| (b, k, u)))
             .collect();
         // The forward use of a seam (as written: loops run backwards on an analytic surface
-        // of the other orientation) first: its curve is the first of the `3` record.
+        // of the other orientation) first: its curve is the first of the seam's two.
         let reversed = analytic.is_some_and(|a| a.loops_reversed(face.same_sense));
         // On a plane the kernel projects the edge itself (`BRep_Tool::CurveOnPlane`), as it
         // does for planes it makes.
@@ -194,23 +410,31 @@ fn curves_2d(brep: &Brep, text: &mut String) -> Result<Vec<Vec<OnFace>>> {
                 continue;
             }
             let edge = &brep.edges[u.edge];
-            match (analytic, &edge.analytic) {
-                (Some(a), Some(_)) => {
-                    let Some(PCurve::Line { origin, direction }) =
+            let (curve, range) = match (analytic, &edge.analytic) {
+                (Some(a), Some(e)) => {
+                    let Some(&PCurve::Line { origin, direction }) =
                         a.pcurves.get(b).and_then(|p| p.get(k))
                     else {
                         return invalid!("edge {} has no curve on the analytic face {f}", u.edge);
                     };
-                    // A 2-D line (code 1), unit speed on the edge's angle or length.
-                    table.push('1');
-                    push_numbers(&mut table, [origin.0, origin.1, direction.0, direction.1]);
-                    table.push('\n');
+                    (Curve2d::Line { origin, direction }, (0.0, e.end))
                 }
                 (None, None) => {
-                    let Some(pcurve) = &u.pcurve else {
-                        return invalid!("edge {} has no curve on face {f}", u.edge);
+                    let range = curve_range(&edge.curve);
+                    let curve = match &u.pcurve {
+                        Some(PCurve::Line { origin, direction }) => {
+                            let at =
+                                |t: f64| (origin.0 + t * direction.0, origin.1 + t * direction.1);
+                            Curve2d::Segment {
+                                from: at(range.0),
+                                to: at(range.1),
+                                range,
+                            }
+                        }
+                        Some(PCurve::Curve(curve)) => Curve2d::Nurbs(curve),
+                        None => return invalid!("edge {} has no curve on face {f}", u.edge),
                     };
-                    write_pcurve(&mut table, pcurve, &edge.curve);
+                    (curve, range)
                 }
                 _ => {
                     return invalid!(
@@ -218,243 +442,25 @@ fn curves_2d(brep: &Brep, text: &mut String) -> Result<Vec<Vec<OnFace>>> {
                         u.edge
                     )
                 }
-            }
-            count += 1;
+            };
+            let ends = [curve.point(range.0)?, curve.point(range.1)?];
+            table.push(curve);
+            let number = table.len();
             match on_faces.iter_mut().find(|o| o.face == f) {
-                Some(on) => on.curves.push(count),
+                Some(on) => {
+                    on.curves.push(number);
+                    on.ends = ends;
+                }
                 None => on_faces.push(OnFace {
                     face: f,
-                    curves: vec![count],
+                    curves: vec![number],
+                    ends,
                 }),
             }
         }
     }
-    let _ = writeln!(text, "Curve2ds {count}");
-    text.push_str(&table);
-    Ok(on_edges)
+    Ok((table, on_edges))
 }
-
-/// A pcurve as a 2-D B-spline on the edge curve's parameter range.
-fn write_pcurve(text: &mut String, pcurve: &PCurve, edge: &NurbsCurve) {
-    match pcurve {
-        PCurve::Line { origin, direction } => {
-            // The degree-1 B-spline from the line's point at the edge's first parameter to
-            // that at its last.
-            let (first, last) = curve_range(edge);
-            let at = |t: f64| [origin.0 + t * direction.0, origin.1 + t * direction.1, 1.0];
-            text.push_str("7 1 0 1 2 2");
-            push_numbers(text, at(first));
-            push_numbers(text, at(last));
-            text.push('\n');
-            push_numbers(text, [first]);
-            text.push_str(" 2");
-            push_numbers(text, [last]);
-            text.push_str(" 2\n");
-        }
-        PCurve::Curve(curve) => bspline(text, curve, 2),
-    }
-}
-
-/// The edge's record: its 3-D curve (number `e + 1`; none for a degenerate edge, which
-/// the kernel marks so) and its curves on the faces.
-fn edge_data(e: usize, edge: &BrepEdge, on_faces: &[OnFace], tolerance: &str) -> String {
-    let (first, last) = edge
-        .analytic
-        .map_or_else(|| curve_range(&edge.curve), |a| (0.0, a.end));
-    let mut data = String::with_capacity(160);
-    data.push_str("Ed\n ");
-    data.push_str(tolerance);
-    if edge.degenerate {
-        data.push_str(" 1 1 1\n");
-    } else {
-        data.push_str(" 1 1 0\n1");
-        push_counts(&mut data, [e + 1, 0]);
-        push_numbers(&mut data, [first, last]);
-        data.push('\n');
-    }
-    for on in on_faces {
-        match on.curves[..] {
-            [forward, reversed, ..] => {
-                data.push('3');
-                push_counts(&mut data, [forward, reversed]);
-                data.push_str(" C0");
-            }
-            [only] => {
-                data.push('2');
-                push_counts(&mut data, [only]);
-            }
-            [] => continue,
-        }
-        push_counts(&mut data, [on.face + 1, 0]);
-        push_numbers(&mut data, [first, last]);
-        data.push('\n');
-    }
-    data.push_str("0\n");
-    data
-}
-
-/// A B-spline curve record (code 7), its poles' first `dimension` coordinates (2 for a
-/// curve in a parameter plane, 3 in space).
-fn bspline(text: &mut String, curve: &NurbsCurve, dimension: usize) {
-    let knots = knot_runs(&curve.knots);
-    text.push_str("7 1 0");
-    push_counts(
-        text,
-        [curve.degree, curve.poles.len(), knots.clone().count()],
-    );
-    for (&p, &w) in curve.poles.iter().zip(&curve.weights) {
-        push_numbers(text, p.to_array()[..dimension].iter().copied());
-        push_numbers(text, [w]);
-    }
-    text.push('\n');
-    push_knots(text, knots);
-}
-
-/// Each distinct knot and its multiplicity, and the end of the line.
-fn push_knots(text: &mut String, knots: impl Iterator<Item = (f64, usize)>) {
-    for (k, m) in knots {
-        push_numbers(text, [k]);
-        push_counts(text, [m]);
-    }
-    text.push('\n');
-}
-
-/// A surface record: a B-spline (code 9, v running fastest) or a plane (code 1).
-fn surface(text: &mut String, surface: &BrepSurface) {
-    match surface {
-        BrepSurface::Nurbs(s) => nurbs_surface(text, s),
-        BrepSurface::Plane {
-            origin,
-            normal,
-            x_axis,
-        } => {
-            let y_axis = normal.cross(*x_axis);
-            text.push('1');
-            for v in [*origin, *normal, *x_axis, y_axis] {
-                push_numbers(text, v.to_array());
-            }
-            text.push('\n');
-        }
-    }
-}
-
-/// A line (code 1: origin, direction) or circle (code 2: centre, axis, x and y axes,
-/// radius).
-fn analytic_curve(text: &mut String, curve: &AnalyticCurve) {
-    match *curve {
-        AnalyticCurve::Line { origin, direction } => {
-            text.push('1');
-            for v in [origin, direction] {
-                push_numbers(text, v.to_array());
-            }
-        }
-        AnalyticCurve::Circle {
-            center,
-            axis,
-            x_axis,
-            radius,
-        } => {
-            text.push('2');
-            for v in [center, axis, x_axis, axis.cross(x_axis)] {
-                push_numbers(text, v.to_array());
-            }
-            push_numbers(text, [radius]);
-        }
-    }
-    text.push('\n');
-}
-
-/// A plane (code 1: location, normal, x and y axes), cylinder (code 2: the same and the
-/// radius), cone (code 3: the same, the radius at v = 0 and the semi-angle) or torus (code
-/// 5: the same and the major and minor radii).
-fn analytic_surface(text: &mut String, surface: &AnalyticSurface) {
-    text.push(match surface {
-        AnalyticSurface::Plane { .. } => '1',
-        AnalyticSurface::Cylinder { .. } => '2',
-        AnalyticSurface::Cone { .. } => '3',
-        AnalyticSurface::Torus { .. } => '5',
-    });
-    let [origin, axis, x_axis] = surface.axes();
-    for v in [origin, axis, x_axis, axis.cross(x_axis)] {
-        push_numbers(text, v.to_array());
-    }
-    push_numbers(text, surface.dimensions());
-    text.push('\n');
-}
-
-fn nurbs_surface(text: &mut String, s: &NurbsSurface) {
-    let (ku, kv) = (knot_runs(&s.knots_u), knot_runs(&s.knots_v));
-    text.push_str("9 1 1 0 0");
-    push_counts(
-        text,
-        [
-            s.degree_u,
-            s.degree_v,
-            s.pole_count_u,
-            s.pole_count_v,
-            ku.clone().count(),
-            kv.clone().count(),
-        ],
-    );
-    text.push('\n');
-    for row in s
-        .poles
-        .chunks(s.pole_count_v)
-        .zip(s.weights.chunks(s.pole_count_v))
-    {
-        for (p, w) in row.0.iter().zip(row.1) {
-            push_numbers(text, [p.x, p.y, p.z, *w]);
-        }
-        text.push('\n');
-    }
-    push_knots(text, ku);
-    push_knots(text, kv);
-}
-
-/// A shape held by another: its orientation (`+`, `-`) and its position in [`Shapes`].
-type Held = (char, usize);
-
-/// A shape's record: its type and data, its flags, the shapes it holds.
-struct Record {
-    data: String,
-    flags: &'static str,
-    held: Vec<Held>,
-}
-
-/// The topological shapes in the order written (each after the shapes it holds).
-#[derive(Default)]
-struct Shapes {
-    records: Vec<Record>,
-}
-
-impl Shapes {
-    /// Adds a shape — its type and data, its flags (free, modified, checked, orientable,
-    /// closed, infinite, convex), the shapes it holds with their orientations — and
-    /// returns its position (from 0).
-    fn add(&mut self, data: String, flags: &'static str, held: Vec<Held>) -> usize {
-        self.records.push(Record { data, flags, held });
-        self.records.len() - 1
-    }
-
-    /// The `TShapes` table and the root reference: a shape is referred to by its number
-    /// counted from the last written (1), the root is the last.
-    fn write(&self, text: &mut String) {
-        let n = self.records.len();
-        let _ = writeln!(text, "TShapes {n}");
-        for Record { data, flags, held } in &self.records {
-            text.push_str(data);
-            let _ = write!(text, "\n{flags}\n");
-            for (orientation, position) in held {
-                text.push(*orientation);
-                text.push_str(itoa::Buffer::new().format(n - position));
-                text.push_str(" 0 ");
-            }
-            text.push_str("*\n");
-        }
-        text.push_str("\n+1 0\n");
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -512,7 +518,10 @@ mod tests {
         let text = shape.to_occ_brep().unwrap();
         check_order_and_counts(shape.brep(), &text, "So");
         if let Ok(path) = std::env::var("RMFSURF_DUMP_OCC") {
-            std::fs::write(path, &text).unwrap();
+            std::fs::write(&path, &text).unwrap();
+            let binary = shape.to_occ_binary().unwrap();
+            std::fs::write(format!("{path}.bin"), binary.file(OccReader::BinTools)).unwrap();
+            std::fs::write(format!("{path}.fcbin"), binary.file(OccReader::FreeCad)).unwrap();
         }
         // Every edge of a B-spline face has its curve on that face.
         for (e, edge_record) in text.split("\nEd\n").skip(1).enumerate() {
@@ -536,5 +545,64 @@ mod tests {
         check_order_and_counts(shape.brep(), &text, "Co");
         let shells = records(&text).iter().filter(|(k, _)| k == "Sh").count();
         assert_eq!(shells, 2);
+    }
+
+    /// The count in the header `name` of a file (text or binary).
+    fn section(file: &[u8], name: &str) -> usize {
+        let key = format!("{name} ");
+        let at = file
+            .windows(key.len())
+            .position(|w| w == key.as_bytes())
+            .unwrap_or_else(|| panic!("no {name} section"));
+        let digits: String = file[at + key.len()..]
+            .iter()
+            .take_while(|b| b.is_ascii_digit())
+            .map(|&b| char::from(b))
+            .collect();
+        digits.parse().unwrap()
+    }
+
+    /// The binary file holds the text's set: the version line, the same counts of 2-D
+    /// curves, curves, surfaces and shapes, and ends with the root as each reader takes it.
+    #[test]
+    fn the_binary_file_holds_the_text_s_shape_set() {
+        let hollow = WireSweep {
+            solid: false,
+            ..WireSweep::default()
+        };
+        for (shape, root) in [
+            (
+                sweep_wire(&pipe_route(), &circle(1.0), &[], &WireSweep::default()).unwrap(),
+                "So",
+            ),
+            (
+                sweep_wire(&pipe_route(), &square(1.0), &[circle(0.5)], &hollow).unwrap(),
+                "Co",
+            ),
+        ] {
+            let text = shape.to_occ_brep().unwrap();
+            let binary = shape.to_occ_binary().unwrap();
+            let bintools = binary.file(OccReader::BinTools);
+            let freecad = binary.file(OccReader::FreeCad);
+            assert!(bintools.starts_with(b"\nOpen CASCADE Topology V3 (c)\nLocations 0\n"));
+            for name in ["Curve2ds", "Curves", "Surfaces", "TShapes"] {
+                assert_eq!(
+                    section(&bintools, name),
+                    section(text.as_bytes(), name),
+                    "{name}"
+                );
+            }
+            let n = section(&bintools, "TShapes");
+            assert_eq!(n, records(&text).len());
+            assert_eq!(records(&text).last().unwrap().0, root);
+            let set = binary.set();
+            assert_eq!(bintools[..set.len()], *set);
+            assert_eq!(bintools[set.len()..], [0, 1, 0, 0, 0, 0, 0, 0, 0]);
+            let mut freecad_root = (n as i32).to_le_bytes().to_vec();
+            freecad_root.extend([0; 8]);
+            assert_eq!(freecad[set.len()..], freecad_root[..]);
+            // The last shape record ends its list of held shapes.
+            assert_eq!(set.last(), Some(&b'*'));
+        }
     }
 }

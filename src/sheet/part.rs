@@ -434,6 +434,12 @@ impl SheetPart {
         crate::export::occ_brep::brep_to_occ(&self.brep()?)
     }
 
+    /// The part's solid in OpenCascade's binary B-rep (`BinTools::Read`, FreeCAD's
+    /// `Part.Shape.importBinary`), which a kernel reads several times faster than the text.
+    pub fn to_occ_binary(&self) -> Result<crate::export::occ_brep::OccBinary> {
+        crate::export::occ_brep::brep_to_occ_binary(&self.brep()?)
+    }
+
     /// A face of the solid from its patch (internal coordinates) and its named sides.
     fn part_face(
         &self,

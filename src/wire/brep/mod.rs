@@ -289,6 +289,13 @@ impl Shape {
         crate::export::occ_brep::brep_to_occ(&self.brep)
     }
 
+    /// The shape in OpenCascade's binary B-rep (`BinTools::Read`, FreeCAD's
+    /// `Part.Shape.importBinary`): the same shape as [`Self::to_occ_brep`], which a kernel
+    /// reads several times faster.
+    pub fn to_occ_binary(&self) -> Result<crate::export::occ_brep::OccBinary> {
+        crate::export::occ_brep::brep_to_occ_binary(&self.brep)
+    }
+
     /// The shape's boundary representation: vertices, shared edges with their curves on
     /// each face, oriented loops, faces with their senses (what the STEP and OpenCascade
     /// texts are written from). Where all faces of a closed profile loop along a piece lie
