@@ -8,7 +8,7 @@
 //! senses and loops are the model's.
 //!
 //! Both files hold one shape set (OCCT's `BRepTools_ShapeSet`, `BinTools_ShapeSet`), laid
-//! out by [`ShapeSet`]: the geometry tables — 2-D curves, 3-D curves, surfaces, each numbered
+//! out by `ShapeSet`: the geometry tables — 2-D curves, 3-D curves, surfaces, each numbered
 //! from 1 in the order written — then the topological shapes, every one after the shapes it
 //! holds; a reference to a shape is its orientation and its number counted from the last
 //! shape written (the last is 1), and the file ends with the reference to the root. A face
@@ -19,10 +19,10 @@
 //! and tori for analytic faces, lines and circles for analytic edges, and on a cylinder or
 //! torus each edge's curve a 2-D line of unit speed on the edge's length or angle.
 //!
-//! The text ([`text`]) writes numbers as the shortest text that reads back as the same
-//! double; the binary file ([`binary`]) writes them as they are (little-endian IEEE 754), the
-//! counts as 32-bit integers, and with each curve on a face its end points in the face's
-//! parameter plane (the V2 addition); a kernel reads it several times faster.
+//! The text (module `text`) writes numbers as the shortest text that reads back as the same
+//! double; the binary file (module `binary`) writes them as they are (little-endian IEEE
+//! 754), the counts as 32-bit integers, and with each curve on a face its end points in the
+//! face's parameter plane (the V2 addition); a kernel reads it several times faster.
 
 mod binary;
 mod text;
