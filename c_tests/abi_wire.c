@@ -618,6 +618,69 @@ static void test_scale_knots_frustums(void) {
     rmf_curve_free(profile);
 }
 
+/* The degree along the spine of the first lateral face along wire edge `edge` (0 if none). */
+static uint32_t spine_degree(const RmfShape *shape, size_t edge) {
+    for (size_t i = 0; i < rmf_shape_face_count(shape); ++i) {
+        RmfShapeFace face;
+        RmfNurbsSurface view;
+        if (rmf_shape_face(shape, i, &face) != RMF_OK || face.kind != RMF_FACE_SWEPT || face.spine_edge != edge)
+            continue;
+        if (rmf_surface_nurbs(face.surface, &view) != RMF_OK) return 0;
+        return (uint32_t)view.degree_v;
+    }
+    return 0;
+}
+
+/* A round profile along a curve edge (a line into the twisted cubic, a circle of radius
+   0.05): RMF_PIPE_FRAME_LIGHTEST sweeps it on the PH spline's Euler-Rodrigues frame,
+   faces of degree 5 along the spine against the RMF's 9, the same tube (volume to 1e-12);
+   a square keeps degree 9 either way; a pipe_frame that is no RmfPipeFrame is refused
+   naming it. */
+static void test_pipe_frame(void) {
+    const RmfVec3 poles[4] = {vec3(0, 0, 0), vec3(1.0 / 3, 0, 0), vec3(2.0 / 3, 1.0 / 3, 0), vec3(1, 1, 1)};
+    const double knots[8] = {0, 0, 0, 0, 1, 1, 1, 1};
+    RmfCurve *cubic = nurbs(3, poles, NULL, 4, knots), *round = circle(0.05), *square = NULL;
+    const RmfVec3 corners[4] = {vec3(-0.04, -0.04, 0), vec3(0.04, -0.04, 0), vec3(0.04, 0.04, 0), vec3(-0.04, 0.04, 0)};
+    CHECK_STATUS(rmf_curve_polygon(corners, 4, &square), RMF_OK, "");
+    RmfEdge e[2] = {line(vec3(-1, 0, 0), vec3(0, 0, 0)),
+                    {RMF_EDGE_CURVE, {vec3(0, 0, 0), vec3(0, 0, 0), vec3(0, 0, 0)}, NULL}};
+    e[1].curve = cubic;
+    RmfShape *shapes[4] = {NULL, NULL, NULL, NULL};
+    for (int k = 0; k < 4; ++k) {
+        RmfWireSweepOptions o;
+        rmf_wire_sweep_options_init(&o);
+        CHECK(o.pipe_frame == RMF_PIPE_FRAME_RMF, "the RMF by default");
+        o.tolerance = 1e-5;
+        o.pipe_frame = k % 2 ? RMF_PIPE_FRAME_LIGHTEST : RMF_PIPE_FRAME_RMF;
+        CHECK_STATUS(rmf_wire_sweep(e, 2, k < 2 ? round : square, NULL, 0, &o, &shapes[k]), RMF_OK, "");
+    }
+    if (shapes[0] && shapes[1] && shapes[2] && shapes[3]) {
+        const double rmf = volume(shapes[0]), light = volume(shapes[1]);
+        printf("circle along the twisted cubic: degree along the spine %u (RMF %u), volume %.15f (RMF %.15f)\n",
+               spine_degree(shapes[1], 1), spine_degree(shapes[0], 1), light, rmf);
+        CHECK(spine_degree(shapes[0], 1) == 9 && spine_degree(shapes[1], 1) == 5, "degree 5 on the lightest frame");
+        CHECK(fabs(light - rmf) <= 1e-12 * rmf, "the same tube");
+        CHECK(spine_degree(shapes[2], 1) == 9 && spine_degree(shapes[3], 1) == 9, "a square keeps the RMF");
+    }
+    RmfWireSweepOptions bad;
+    rmf_wire_sweep_options_init(&bad);
+    bad.pipe_frame = 7;
+    RmfShape *none = NULL;
+    CHECK_STATUS(rmf_wire_sweep(e, 2, round, NULL, 0, &bad, &none), RMF_ERROR_INVALID_INPUT, "options->pipe_frame = 7");
+    CHECK(none == NULL, "nothing written");
+    /* A caller built against the header before pipe_frame passes the struct up to
+       guide_edge_count: its pipe_frame is not read (the RMF). */
+    CHECK(offsetof(RmfWireSweepOptions, pipe_frame) == 168, "pipe_frame follows guide_edge_count at 168 bytes");
+    bad.struct_size = offsetof(RmfWireSweepOptions, pipe_frame);
+    CHECK_STATUS(rmf_wire_sweep(e, 2, round, NULL, 0, &bad, &none), RMF_OK, "");
+    CHECK(none && spine_degree(none, 1) == 9, "an older header's options: the RMF");
+    rmf_shape_free(none);
+    for (int k = 0; k < 4; ++k) rmf_shape_free(shapes[k]);
+    rmf_curve_free(cubic);
+    rmf_curve_free(round);
+    rmf_curve_free(square);
+}
+
 /* The spine method on a curve edge (intended behaviour of the geometry): a line into the
    twisted cubic (t, t^2, t^3), tangent to it, with a circle of radius 0.05. The PH cubic
    spline's rational RMF leaves its parameter lines off orthogonal by more than 1e-10; the
@@ -1068,6 +1131,7 @@ int main(void) {
     test_scale_law_frustum();
     test_scale_knots_frustums();
     test_spine_methods();
+    test_pipe_frame();
     test_sweep_between();
     test_sweep_through();
     test_guide_frame();

@@ -2050,6 +2050,13 @@ typedef struct RmfEdge {
 } RmfEdge;
 
 /**
+ * How a round profile (every loop a circle about the wire in its normal plane: a pipe) is
+ * swept along curve edges; its surface is the same either way (values fixed, validated).
+ * \ingroup rmf_wire
+ */
+typedef uint32_t RmfPipeFrame;
+
+/**
  * Options of rmf_wire_sweep. Initialise with rmf_wire_sweep_options_init, then change
  * fields; the struct only grows at the end.
  * \ingroup rmf_wire
@@ -2155,6 +2162,13 @@ typedef struct RmfWireSweepOptions {
    * RMF_FRAME_GUIDE: the number of guide_edges (≥ 1); ignored otherwise. Default 0.
    */
   size_t guide_edge_count;
+  /**
+   * Added in 0.2 (after guide_edge_count): how a round profile — every loop a circle
+   * about the wire in its normal plane, a pipe — is swept along curve edges:
+   * RMF_PIPE_FRAME_RMF (default) or RMF_PIPE_FRAME_LIGHTEST (faces of degree 5 along
+   * the spine instead of 9, the same surface). Other profiles ignore it.
+   */
+  RmfPipeFrame pipe_frame;
 } RmfWireSweepOptions;
 
 /**
@@ -2367,6 +2381,24 @@ typedef struct RmfWireSection {
  * \ingroup rmf_wire
  */
 #define RMF_FRAME_GUIDE 3
+
+/**
+ * The RMF, as every profile: parameter lines orthogonal (lines of curvature), degree 9
+ * along the spine on curve edges.
+ * \since 0.2
+ * \ingroup rmf_wire
+ */
+#define RMF_PIPE_FRAME_RMF 0
+
+/**
+ * The PH cubic spline's Euler–Rodrigues frame, the lightest exact rational adapted frame:
+ * degree 5 along the spine on curve edges, the same surface, its parameter lines not
+ * orthogonal. Taken on open wires with the RMF untwisted, method RMF_SPINE_PH_RMF and one
+ * profile all along; the RMF elsewhere.
+ * \since 0.2
+ * \ingroup rmf_wire
+ */
+#define RMF_PIPE_FRAME_LIGHTEST 1
 
 #ifdef __cplusplus
 extern "C" {

@@ -203,7 +203,7 @@ pub mod numeric {
 pub mod prelude {
     pub use crate::cone::ConeSpline;
     pub use crate::ph::{ExactRmf, RmfOptions};
-    pub use crate::wire::{Edge, Shape, SweepFrame, WireSweep};
+    pub use crate::wire::{Edge, PipeFrame, Shape, SweepFrame, WireSweep};
     pub use crate::{cone, mobius, ph, rrmf, sheet, unfold, wire};
     pub use crate::{
         framed_spine, sweep, Error, ErrorKind, FrameField, FramedCurve, NurbsCurve, NurbsSurface,

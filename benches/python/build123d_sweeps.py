@@ -43,7 +43,8 @@ def stages(path, profile):
     origin, tangent = rocp._start_frame(path)
     outer, holes, f2 = rocp.profile_curves(profile, origin, tangent, TOLERANCE)
     adapter = time.perf_counter()
-    shape = rmfsurf.wire_sweep(edges, outer, holes, tolerance=TOLERANCE, initial_normal=f2)
+    shape = rmfsurf.wire_sweep(edges, outer, holes, tolerance=TOLERANCE, initial_normal=f2,
+                               pipe_frame="lightest")
     library = time.perf_counter()
     data = shape.occ_binary()
     handover = time.perf_counter()

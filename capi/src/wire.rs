@@ -15,8 +15,8 @@ use rmfsurf::glam::DVec3;
 use rmfsurf::PiecewiseCurve;
 use rmfsurf::{
     wire::sweep as sweep_wire, wire::sweep_between as sweep_wire_between,
-    wire::sweep_through as sweep_wire_through, wire::Corner, wire::Edge, wire::Section,
-    wire::SweepFrame, wire::WireSweep, wire::MAX_FACES, Error, SpineMethod,
+    wire::sweep_through as sweep_wire_through, wire::Corner, wire::Edge, wire::PipeFrame,
+    wire::Section, wire::SweepFrame, wire::WireSweep, wire::MAX_FACES, Error, SpineMethod,
 };
 
 /// What an RmfEdge is (values fixed, validated).
@@ -84,6 +84,23 @@ pub const RMF_FRAME_FIXED: RmfSweepFrame = 2;
 /// wire.
 /// \ingroup rmf_wire
 pub const RMF_FRAME_GUIDE: RmfSweepFrame = 3;
+
+/// How a round profile (every loop a circle about the wire in its normal plane: a pipe) is
+/// swept along curve edges; its surface is the same either way (values fixed, validated).
+/// \ingroup rmf_wire
+pub type RmfPipeFrame = u32;
+/// The RMF, as every profile: parameter lines orthogonal (lines of curvature), degree 9
+/// along the spine on curve edges.
+/// \since 0.2
+/// \ingroup rmf_wire
+pub const RMF_PIPE_FRAME_RMF: RmfPipeFrame = 0;
+/// The PH cubic spline's Euler–Rodrigues frame, the lightest exact rational adapted frame:
+/// degree 5 along the spine on curve edges, the same surface, its parameter lines not
+/// orthogonal. Taken on open wires with the RMF untwisted, method RMF_SPINE_PH_RMF and one
+/// profile all along; the RMF elsewhere.
+/// \since 0.2
+/// \ingroup rmf_wire
+pub const RMF_PIPE_FRAME_LIGHTEST: RmfPipeFrame = 1;
 
 /// A section of a sweep through sections (rmf_wire_sweep_through): a profile with its holes
 /// at a fraction of the wire's length (all borrowed for the call).
@@ -173,6 +190,11 @@ pub struct RmfWireSweepOptions {
     pub guide_edges: *const RmfEdge,
     /// RMF_FRAME_GUIDE: the number of guide_edges (≥ 1); ignored otherwise. Default 0.
     pub guide_edge_count: usize,
+    /// Added in 0.2 (after guide_edge_count): how a round profile — every loop a circle
+    /// about the wire in its normal plane, a pipe — is swept along curve edges:
+    /// RMF_PIPE_FRAME_RMF (default) or RMF_PIPE_FRAME_LIGHTEST (faces of degree 5 along
+    /// the spine instead of 9, the same surface). Other profiles ignore it.
+    pub pipe_frame: RmfPipeFrame,
 }
 
 impl Default for RmfWireSweepOptions {
@@ -197,6 +219,7 @@ impl Default for RmfWireSweepOptions {
             scale_knot_count: 0,
             guide_edges: std::ptr::null(),
             guide_edge_count: 0,
+            pipe_frame: RMF_PIPE_FRAME_RMF,
         }
     }
 }
@@ -328,6 +351,16 @@ unsafe fn wire_options(o: &RmfWireSweepOptions) -> Result<WireSweep, FfiError> {
             ))
         }
     };
+    let pipe_frame = match o.pipe_frame {
+        RMF_PIPE_FRAME_RMF => PipeFrame::Rmf,
+        RMF_PIPE_FRAME_LIGHTEST => PipeFrame::Lightest,
+        other => {
+            return invalid_arg(format!(
+                "options->pipe_frame = {other} is no RmfPipeFrame (RMF_PIPE_FRAME_RMF = 0, \
+                 RMF_PIPE_FRAME_LIGHTEST = 1)"
+            ))
+        }
+    };
     let normal: DVec3 = o.initial_normal.into();
     if normal != DVec3::ZERO && frame != SweepFrame::Rmf {
         return invalid_arg(format!(
@@ -348,6 +381,7 @@ unsafe fn wire_options(o: &RmfWireSweepOptions) -> Result<WireSweep, FfiError> {
         scale: [o.scale_start, o.scale_end],
         scale_knots: scale_knots(o)?,
         method,
+        pipe_frame,
     })
 }
 

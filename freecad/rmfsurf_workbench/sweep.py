@@ -13,7 +13,9 @@ Möbius images of planar PH cubics (Bartoň, Jüttler & Wang), or "rrmf", RRMF q
 (Farouki, Giannelli & Sestini), both with exact rational RMFs, so the parameter lines are
 orthogonal to rounding (Orthogonality ~1e-14, ~1e-7 with ph-rmf). One RMF runs across every
 joint; sharp joints get round (torus) or mitred corners. Mobius and rrmf take no scale law
-(ScaleStart = ScaleEnd, and the same at every knot).
+(ScaleStart = ScaleEnd, and the same at every knot). A round profile (circles about the
+spine) is swept with ph-rmf on the PH spline's Euler-Rodrigues frame by default (PipeFrame
+lightest: the same surface in lighter faces), or on the RMF (PipeFrame rmf).
 
 The accuracy figures are the library's report (``rmf_shape_report``), measured on the
 result.
@@ -28,6 +30,7 @@ from .view import attach_view, hide
 METHODS = ("ph-rmf", "mobius", "rrmf")
 CORNERS = ("round", "miter")
 FRAMES = ("rmf", "frenet", "fixed", "guide")
+PIPE_FRAMES = ("lightest", "rmf")
 
 
 class SweepFeature(Feature):
@@ -59,6 +62,12 @@ class SweepFeature(Feature):
                  "RMF; mobius or rrmf, spines with exact rational RMFs (parameter lines "
                  "orthogonal to rounding; no scale law). Lines and arcs are exact whatever "
                  "the method", enum=METHODS),
+        Property("App::PropertyEnumeration", "PipeFrame", "Sweep",
+                 "How a round profile (circles about the spine: a pipe) is swept along curve "
+                 "edges with ph-rmf: lightest, the PH spline's Euler-Rodrigues frame (the same "
+                 "surface in faces of degree 5 along the spine instead of 9; Orthogonality "
+                 "then measures how far its parameter lines are from the RMF's); rmf, the RMF "
+                 "as every profile", enum=PIPE_FRAMES),
         Property("App::PropertyEnumeration", "Corner", "Sweep",
                  "Sharp joints of the spine: round (a torus elbow) or miter", enum=CORNERS),
         Property("App::PropertyLength", "CornerRadius", "Sweep",
@@ -159,7 +168,7 @@ class SweepFeature(Feature):
             tolerance=obj.Tolerance, twist=math.radians(obj.Twist.Value),
             closure_symmetry=obj.ClosureSymmetry, frame=frame,
             scale=(obj.ScaleStart, obj.ScaleEnd), scale_knots=knots, method=obj.Method,
-            end_profile=end_profile, sections=through)
+            end_profile=end_profile, sections=through, pipe_frame=obj.PipeFrame)
         obj.Shape = shape
         self.set_outputs(obj, SpineDistance=report.spine_distance,
                          RmfDefect=report.rmf_angle_error,

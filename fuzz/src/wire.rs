@@ -178,6 +178,11 @@ fn options(s: &mut Session) -> RmfWireSweepOptions {
     if s.input.below(4) == 0 {
         o.scale_end = s.input.f64();
     }
+    o.pipe_frame = if s.input.below(8) == 0 {
+        s.input.code()
+    } else {
+        s.input.below(2) as u32
+    };
     if s.input.below(16) == 0 {
         o.struct_size = s.input.work();
     }

@@ -461,7 +461,8 @@ def sweep(wire: Any, profile: Any, *, solid: bool = True, corner: str = "round",
           frame: SweepFrame = "rmf", scale: Tuple[float, float] = (1.0, 1.0),
           scale_knots: Optional[Sequence[Tuple[float, float]]] = None,
           method: str = "ph-rmf", end_profile: Any = None,
-          sections: Optional[Sequence[Tuple[Any, ...]]] = None) -> Any:
+          sections: Optional[Sequence[Tuple[Any, ...]]] = None,
+          pipe_frame: str = "lightest") -> Any:
     """Sweeps `profile` along `wire` (rmf_wire_sweep), by default with rotation-minimizing
     frames.
 
@@ -511,13 +512,19 @@ def sweep(wire: Any, profile: Any, *, solid: bool = True, corner: str = "round",
             blends linearly in arc length from each into the next (rmf_wire_sweep_through;
             see :func:`rmfsurf.wire_sweep`). Refusals name ``sections[k]``.
 
+        pipe_frame: how a round profile (circles about the wire: a pipe) is swept along
+            curves: "lightest" (default: the same surface in the lightest exact faces,
+            degree 5 along the wire instead of 9) or "rmf" (parameter lines orthogonal);
+            see :func:`rmfsurf.wire_sweep`.
+
     Returns:
         A Part.Shape: a Part.Solid (or a Part.Shell with ``solid=False``).
     """
     return sweep_with_report(wire, profile, solid=solid, corner=corner,
                              corner_radius=corner_radius, tolerance=tolerance, frame=frame,
                              scale=scale, scale_knots=scale_knots, method=method,
-                             end_profile=end_profile, sections=sections)[0]
+                             end_profile=end_profile, sections=sections,
+                             pipe_frame=pipe_frame)[0]
 
 
 def sweep_with_report(wire: Any, profile: Any, *, solid: bool = True, corner: str = "round",
@@ -526,13 +533,14 @@ def sweep_with_report(wire: Any, profile: Any, *, solid: bool = True, corner: st
                       frame: SweepFrame = "rmf", scale: Tuple[float, float] = (1.0, 1.0),
                       scale_knots: Optional[Sequence[Tuple[float, float]]] = None,
                       method: str = "ph-rmf", end_profile: Any = None,
-                      sections: Optional[Sequence[Tuple[Any, ...]]] = None
-                      ) -> Tuple[Any, SweepReport]:
+                      sections: Optional[Sequence[Tuple[Any, ...]]] = None,
+                      pipe_frame: str = "lightest") -> Tuple[Any, SweepReport]:
     """:func:`sweep` with the wire sweep's `twist` (radians over the whole wire) and
     `closure_symmetry` (closed wires: the frame closes modulo 2π/k; 0 is taken as 1),
     returning the Part.Shape and the library's :class:`rmfsurf.SweepReport` (spine
     distance, RMF angle error, parameter-line orthogonality, singularity margin, face
-    count, frame error). `end_profile` and `sections` as for :func:`sweep`."""
+    count, frame error). `end_profile`, `sections` and `pipe_frame` as for
+    :func:`sweep`."""
     tolerance = _core.finite(tolerance, "tolerance", positive=True)
     edges = _path_edges(wire, "wire")
     guide = _frame_guide(frame)
@@ -555,7 +563,7 @@ def sweep_with_report(wire: Any, profile: Any, *, solid: bool = True, corner: st
                         initial_normal=f2 if _named(frame, "rmf") else None, twist=twist,
                         closure_symmetry=closure_symmetry, frame=frame, scale=scale,
                         scale_knots=scale_knots, method=method, end_profile=end_outer,
-                        end_holes=end_holes, sections=through)
+                        end_holes=end_holes, sections=through, pipe_frame=pipe_frame)
     return part_shape(result, min(tolerance, 1e-6)), result.report()
 
 

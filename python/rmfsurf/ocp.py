@@ -536,7 +536,8 @@ def sweep(path: Any, profile: Any, *, solid: bool = True, corner: str = "round",
           frame: SweepFrame = "rmf", scale: Tuple[float, float] = (1.0, 1.0),
           scale_knots: Optional[Sequence[Tuple[float, float]]] = None,
           method: str = "ph-rmf", end_profile: Any = None,
-          sections: Optional[Sequence[Tuple[Any, ...]]] = None) -> Any:
+          sections: Optional[Sequence[Tuple[Any, ...]]] = None,
+          pipe_frame: str = "lightest") -> Any:
     """Sweeps `profile` along `path` (rmf_wire_sweep), by default with rotation-minimizing
     frames.
 
@@ -588,6 +589,11 @@ def sweep(path: Any, profile: Any, *, solid: bool = True, corner: str = "round",
             (rmf_wire_sweep_through; see :func:`rmfsurf.wire_sweep`). Refusals name
             ``sections[k]``.
 
+        pipe_frame: how a round profile (circles about the path: a pipe) is swept along
+            curves: "lightest" (default: the same surface in the lightest exact faces,
+            degree 5 along the path instead of 9) or "rmf" (parameter lines orthogonal);
+            see :func:`rmfsurf.wire_sweep`.
+
     Returns:
         A ``TopoDS_Solid`` (or shell) — a build123d ``Solid`` / CadQuery ``Shape`` when
         `path` was a build123d / CadQuery object — to fuse, cut and export.
@@ -613,7 +619,7 @@ def sweep(path: Any, profile: Any, *, solid: bool = True, corner: str = "round",
                         initial_normal=f2 if _named(frame, "rmf") else None, frame=frame,
                         scale=scale, scale_knots=scale_knots, method=method,
                         end_profile=end_outer,
-                        end_holes=end_holes, sections=through)
+                        end_holes=end_holes, sections=through, pipe_frame=pipe_frame)
     return _wrap_like(path, shape(result, min(tolerance, 1e-6)))
 
 

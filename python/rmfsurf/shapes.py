@@ -172,6 +172,10 @@ def _scale_knots(value: Any) -> List[Tuple[float, float]]:
     return knots
 
 
+#: How a round profile is swept along curve edges (RMF_PIPE_FRAME_*).
+PIPE_FRAMES: Dict[str, int] = {"rmf": 0, "lightest": 1}
+
+
 def _wire_method(value: Any) -> int:
     """The RMF_SPINE_* code of a wire sweep's `method`: "ph-rmf", "mobius" or "rrmf".
     TypeError for what is no string, ValueError for another name (with a pointer to
@@ -503,7 +507,8 @@ def wire_sweep(edges: Union[Edge, Sequence[Edge]], profile: Curve,
                scale_knots: Optional[Sequence[Tuple[float, float]]] = None,
                method: str = "ph-rmf", end_profile: Optional[Curve] = None,
                end_holes: Union[Curve, Sequence[Curve]] = (),
-               sections: Optional[Sequence[Tuple[Any, ...]]] = None) -> Shape:
+               sections: Optional[Sequence[Tuple[Any, ...]]] = None,
+               pipe_frame: str = "rmf") -> Shape:
     """Sweeps a closed profile (with `holes`) along a connected wire of `edges`.
 
     Args:
@@ -568,6 +573,13 @@ def wire_sweep(edges: Union[Edge, Sequence[Edge]], profile: Curve,
             (rmf_wire_sweep_through): circles of radii 0.5, 1, 0.3 at 0, 0.25, 1 along a
             line are a chain of two frustums. Refusals name ``sections[k]`` (k counting
             these items) or the field, e.g. ``sections[0].at``.
+        pipe_frame: how a round profile — every loop a circle about the wire in its
+            normal plane, a pipe — is swept along curve edges: "rmf" (the default, as
+            every profile: parameter lines orthogonal) or "lightest" (the PH spline's
+            Euler–Rodrigues frame: the same surface in faces of degree 5 along the wire
+            instead of 9, its parameter lines not orthogonal; on open wires with the RMF
+            untwisted, "ph-rmf" and no `end_profile`, the RMF elsewhere). Other profiles
+            ignore it.
     """
     _require_wire_sweep()
     array, count, keep = _edges(edges)
@@ -603,6 +615,7 @@ def wire_sweep(edges: Union[Edge, Sequence[Edge]], profile: Curve,
         options.scale_knots = knot_doubles
         options.scale_knot_count = len(knots)
     options.method = _wire_method(method)
+    options.pipe_frame = _core.choice(pipe_frame, "pipe_frame", PIPE_FRAMES)
     out = ffi.new("RmfShape **")
     if sections is not None and not _is_empty(sections, "sections"):
         if end_profile is None:

@@ -224,6 +224,16 @@ fn circle_of(curve: &NurbsCurve) -> Option<AnalyticEdge> {
     })
 }
 
+/// Whether a segment is an arc of a circle about the origin in the plane z = 0 (its centre
+/// and plane to [`RELATIVE`] of its radius plus the rounding of its coordinates): a
+/// profile edge no turn about the spine's tangent moves off its circle.
+pub(crate) fn is_centred_arc(segment: &RationalBezierCurve) -> bool {
+    arc_of(segment).is_some_and(|arc| {
+        robust_length(arc.center) <= arc.radius * RELATIVE + arc.rounding
+            && arc.axis.z.abs() >= 1.0 - RELATIVE
+    })
+}
+
 /// One rational quadratic segment as a circular arc.
 struct Arc {
     center: DVec3,

@@ -28,6 +28,6 @@ pub(crate) use primitives::Arc;
 pub use primitives::{arc_through, circle, obround, polygon, polyline};
 pub(crate) use similarity::Similarity;
 
-pub(crate) use analytic::{settle as settle_analytic, ROUNDING};
+pub(crate) use analytic::{is_centred_arc, settle as settle_analytic, ROUNDING};
 pub use analytic::{AnalyticCurve, AnalyticEdge, AnalyticFace, AnalyticSurface};
 pub use topology::{Brep, BrepBound, BrepEdge, BrepFace, BrepSurface, BrepUse, PCurve};

@@ -13,8 +13,9 @@
 use super::cubic::PhCubic;
 use super::frenet::{frenet_numerators, NEARLY_STRAIGHT};
 use super::rmf_angle::RmfAngle;
+use super::spline::PhSpline;
 use crate::bezier::bernstein::{self, add_product, product, restrict};
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, ResultExt};
 use crate::frames::rational::{frame_at, RationalFrameSegment, RationalFrames};
 use crate::frames::Frame;
 use crate::math::orthonormal_to;
@@ -156,6 +157,26 @@ impl<'a> FramePieces<'a> {
     ) -> Result<RationalFrames> {
         RationalFrames::chained_within(self.segments, self.breaks, initial_normal, tolerance)
     }
+}
+
+/// The frame pieces of a PH cubic spline from `numerators` of each cubic k, split where
+/// their denominator has a negative Bernstein coefficient (positive weights for CAD). Each
+/// cubic is taken normalized and exactly PH: the frames do not change under translation
+/// and scaling, and on the exactly PH cubic of the same data the quaternion formulas hold
+/// to rounding (see `exactly_ph`).
+pub(crate) fn spline_frame_pieces<'a>(
+    spline: &'a PhSpline,
+    numerators: impl Fn(usize, &PhCubic) -> Result<FrameNumerators>,
+) -> Result<FramePieces<'a>> {
+    let mut pieces = FramePieces::new(spline.breaks());
+    for (k, cubic) in spline.cubics().iter().enumerate() {
+        let cubic = &cubic
+            .normalized()
+            .exactly_ph()
+            .with_context(|| format!("ph_spline segment {k}"))?;
+        pieces.push_all(k, 0.0, 1.0, numerators(k, cubic)?.positive_pieces()?);
+    }
+    Ok(pieces)
 }
 
 /// The frame a segment's RMF is built on, with the angle that turns it into the RMF.

@@ -3,11 +3,10 @@
 //! It is what the RMF of (29) is built on, and the comparison frame of the paper's figures
 //! (the Frenet sweep is far from a profile surface).
 
-use super::base_frame::{FrameNumerators, FramePieces};
+use super::base_frame::{spline_frame_pieces, FrameNumerators};
 use super::cubic::PhCubic;
 use super::preimage::Preimage;
 use super::spline::PhSpline;
-use crate::error::ResultExt;
 use crate::error::{invalid, Result};
 use crate::model::FramedCurve;
 use glam::DVec3;
@@ -48,14 +47,7 @@ pub(crate) fn frenet_numerators(cubic: &PhCubic) -> FrameNumerators {
 /// degree 2, segments split where σ has a negative Bernstein coefficient (θ > 90°) so that
 /// all weights are positive. Fails on straight segments, where the frame is undefined.
 pub fn ph_frenet_frames(spline: &PhSpline) -> Result<FramedCurve> {
-    let mut pieces = FramePieces::new(spline.breaks());
-    for (k, cubic) in spline.cubics().iter().enumerate() {
-        // The frame does not change under translation and scaling; on the exactly PH cubic
-        // of the same data the formulas of (19) hold to round-off (see `exactly_ph`).
-        let cubic = &cubic
-            .normalized()
-            .exactly_ph()
-            .with_context(|| format!("ph_spline segment {k}"))?;
+    let pieces = spline_frame_pieces(spline, |k, cubic| {
         if cubic.bend() <= NEARLY_STRAIGHT {
             return invalid!(
                 "ph_spline segment {k} is (nearly) straight (sin θ = {:.1e} ≤ {NEARLY_STRAIGHT:e}): its \
@@ -63,8 +55,8 @@ pub fn ph_frenet_frames(spline: &PhSpline) -> Result<FramedCurve> {
                 cubic.bend()
             );
         }
-        pieces.push_all(k, 0.0, 1.0, frenet_numerators(cubic).positive_pieces()?);
-    }
+        Ok(frenet_numerators(cubic))
+    })?;
     Ok(FramedCurve::of_construction(
         spline.curve().clone(),
         pieces.into_frames()?,

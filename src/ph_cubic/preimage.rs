@@ -13,7 +13,11 @@
 //! residual r of the rounded polygon over sin²θ: 5e-9 from orthonormal at sin θ = 2e-3,
 //! against 1e-15 here.
 
+use super::base_frame::{spline_frame_pieces, FrameNumerators};
 use super::cubic::PhCubic;
+use super::spline::PhSpline;
+use crate::error::Result;
+use crate::frames::rational::{g1_tolerance, RationalFrames};
 use glam::{DQuat, DVec3};
 
 /// The linear quaternion polynomial A with x' = A i A* of a PH cubic.
@@ -135,6 +139,28 @@ impl Preimage {
     pub(crate) fn frame_numerators(&self) -> (Vec<DVec3>, Vec<DVec3>) {
         (self.sandwich(J), self.sandwich(K))
     }
+}
+
+/// The Euler–Rodrigues frames of a PH cubic spline, joined into one continuous adapted
+/// frame starting at `initial_normal`: each cubic's (A j A*, A k A*)/σ turned by the
+/// constant that continues the one before — the lightest exact rational adapted frame of a
+/// PH cubic (quadratic over quadratic), split where σ has a negative Bernstein coefficient
+/// so that all weights are positive. It is no RMF: it turns about the tangent against the
+/// RMF by ∫ 2(A₀*A₁)ᵢ/σ dv (module notes).
+pub(crate) fn euler_rodrigues_frames(
+    spline: &PhSpline,
+    initial_normal: DVec3,
+) -> Result<RationalFrames> {
+    let pieces = spline_frame_pieces(spline, |_, cubic| {
+        let preimage = Preimage::of(cubic);
+        let (e2, e3) = preimage.frame_numerators();
+        Ok(FrameNumerators {
+            e2,
+            e3,
+            d: preimage.speed(),
+        })
+    })?;
+    pieces.into_chained_frames(initial_normal, g1_tolerance(spline.curve()))
 }
 
 #[cfg(test)]

@@ -11,7 +11,11 @@
 //!   (Mäurer & Jüttler Theorem 10) carries its rational RMF (29) with the biquadratic W of
 //!   (36)–(41), exact at the ends, started from the frame that arrives;
 //! * at a G1 joint the frame is projected onto the next normal plane (the identity when the
-//!   tangents agree: no twist at joints); at a miter it is reflected in the miter plane.
+//!   tangents agree: no twist at joints); at a miter it is reflected in the miter plane;
+//! * a round profile (circles about the spine, [`super::PipeFrame::Lightest`]) sweeps the
+//!   same surface under every frame: along a curve of an open wire, untwisted, it takes the
+//!   PH spline's Euler–Rodrigues frame instead (quadratic over quadratic: degree 5 along
+//!   the spine instead of the RMF's 9), each cubic's turned to continue the one before.
 //!
 //! Twist and closure. A caller's `twist` is added as a turn linear in arc length over the
 //! whole wire. A closed wire's RMF comes back turned by its holonomy Δ; the smallest turn φ
@@ -47,6 +51,7 @@ use crate::ph_cubic::base_frame::{FrameNumerators, FramePieces};
 use crate::ph_cubic::biquadratic::{fit, AngleHermite, Biquadratic};
 use crate::ph_cubic::exact_rmf::ExactRmf;
 use crate::ph_cubic::frenet::ph_frenet_frames;
+use crate::ph_cubic::preimage::euler_rodrigues_frames;
 use crate::ph_cubic::rational_rmf::{ph_rational_rmf, RmfOptions};
 use crate::ph_cubic::spline::PhSpline;
 use crate::spine::{framed_spine, SpineMethod};
@@ -79,6 +84,10 @@ pub(crate) struct FrameOptions {
     /// largest distance from the spine, for cutting arcs fine enough for it.
     pub scale: ScaleLaw,
     pub reach: f64,
+    /// The profile is the same under every turn about the tangent (a round profile of
+    /// [`super::PipeFrame::Lightest`]): untwisted PH pieces of an open wire take the
+    /// spline's Euler–Rodrigues frame.
+    pub any_frame: bool,
 }
 
 /// A closing turn (radians) at most this is rounding: the frame closes as it is, and the
@@ -488,6 +497,10 @@ pub(crate) fn transport(chain: &Chain, options: &FrameOptions) -> Result<Transpo
              miter leg, whose frame cannot turn; use round corners"
         );
         };
+    // A round profile on an open wire with the RMF untwisted: the lightest frame serves
+    // (a closed wire's frame must close onto its start, as the RMF's closure turn does).
+    let lightest =
+        options.any_frame && !chain.closed && options.law == FrameLaw::Rmf && total_twist == 0.0;
     // Pass 2: the frames.
     let mut pieces = Vec::with_capacity(m);
     let mut f2 = f2_start;
@@ -511,6 +524,7 @@ pub(crate) fn transport(chain: &Chain, options: &FrameOptions) -> Result<Transpo
                 total: turn,
                 law: law.map(|law| (law, turn - law_turn)),
                 accuracy: law_accuracy(options),
+                lightest,
             },
             miters[i],
         )
@@ -755,6 +769,9 @@ struct PieceTurn<'a> {
     /// How closely (radians) the frame follows the law: the tolerance at the profile's
     /// reach.
     accuracy: f64,
+    /// Any adapted frame will do (a round profile, untwisted): a PH piece takes its
+    /// spline's Euler–Rodrigues frame.
+    lightest: bool,
 }
 
 /// The frame along one piece starting at f₂, turned by `turn.total` in total: linearly in
@@ -773,7 +790,7 @@ fn frame_piece(
     let f2 = orthogonalized(f2, tangent).normalize();
     let start = Frame::from_tangent_normal(tangent, f2);
     let mut angle_check = None;
-    let (followed, accuracy) = (turn.law, turn.accuracy);
+    let (followed, accuracy, lightest) = (turn.law, turn.accuracy, turn.lightest);
     let turn = turn.total;
     let (frame, end, angle_error) = match (geometry, followed) {
         (_, Some((law, extra))) => {
@@ -825,6 +842,12 @@ fn frame_piece(
                     law_frames(piece, &spine, length, f2, &FrameLaw::Rmf, turn, accuracy)?
                 };
                 let end = frames.frame(spine.curve.domain().1);
+                (PieceFrame::Rational(frames), end, 0.0)
+            }
+            Geometry::Curve(_) if lightest && turn == 0.0 => {
+                let ph = spine.ph.as_ref().expect("a curve piece has a PH spline");
+                let frames = euler_rodrigues_frames(ph, f2)?;
+                let end = frames.frame(ph.domain().1);
                 (PieceFrame::Rational(frames), end, 0.0)
             }
             Geometry::Curve(_) => {

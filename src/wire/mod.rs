@@ -103,6 +103,24 @@ pub enum SweepFrame {
     Guide(Vec<Edge>),
 }
 
+/// How a round profile — every loop a circle about the spine in its normal plane, a pipe —
+/// is swept along curve edges. Its surface is the same under every frame; the frame sets
+/// its parametrization and how heavy its faces are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum PipeFrame {
+    /// The RMF, as every profile: parameter lines orthogonal (lines of curvature), degree 9
+    /// along a PH cubic piece (Mäurer & Jüttler (42)).
+    #[default]
+    Rmf,
+    /// The PH cubic spline's Euler–Rodrigues frame, the lightest exact rational adapted
+    /// frame (quadratic over quadratic): degree 5 along a PH cubic piece, the same surface;
+    /// its parameter lines are not orthogonal (the report's parameter cosine says how far).
+    /// Taken where the sweep allows it — an open wire, the RMF frame law untwisted, the PH
+    /// method, one profile all along — and the RMF elsewhere; lines and arcs alike either
+    /// way.
+    Lightest,
+}
+
 /// The options of a wire sweep.
 #[derive(Clone, Debug, PartialEq)]
 pub struct WireSweep {
@@ -139,6 +157,8 @@ pub struct WireSweep {
     /// exact rational RMFs: the parameter lines orthogonal to rounding). Lines and arcs are
     /// exact whatever the method.
     pub method: SpineMethod,
+    /// How a round profile (a pipe) is swept along curve edges (default the RMF).
+    pub pipe_frame: PipeFrame,
 }
 
 impl Default for WireSweep {
@@ -155,6 +175,7 @@ impl Default for WireSweep {
             scale: [1.0, 1.0],
             scale_knots: Vec::new(),
             method: SpineMethod::PhRmf,
+            pipe_frame: PipeFrame::Rmf,
         }
     }
 }
@@ -465,6 +486,10 @@ fn sweep_stations(
                 None => law,
             },
             reach: reach + end_reach,
+            // A round profile, one all along: any adapted frame sweeps the same surface.
+            any_frame: options.pipe_frame == PipeFrame::Lightest
+                && blend.is_none()
+                && profile.is_round(),
         },
     )?;
     let law = law_on(
@@ -766,6 +791,8 @@ mod analytic_tests;
 mod guide_tests;
 #[cfg(test)]
 mod options_tests;
+#[cfg(test)]
+mod pipe_tests;
 #[cfg(test)]
 mod robustness_tests;
 #[cfg(test)]

@@ -16,6 +16,7 @@
 use crate::bezier::{PiecewiseCurve, RationalBezierCurve};
 use crate::error::{invalid, Result};
 use crate::math::bounding_diagonal;
+use crate::model::is_centred_arc;
 use crate::ph_cubic::profile::{critical_points, ProfileSegment};
 use glam::{DVec2, DVec3, DVec4};
 
@@ -186,6 +187,20 @@ impl Profile {
                 .flat_map(|e| e.segments())
                 .flat_map(|s| s.poles()),
         )
+    }
+
+    /// Whether every loop is a closed circle about the spine (the origin) in the normal
+    /// plane: a profile that no turn of the frame about the tangent moves, whose sweep is
+    /// the same surface under every frame (a pipe).
+    pub(super) fn is_round(&self) -> bool {
+        self.plane.is_none()
+            && self.loops.iter().all(|lp| {
+                lp.closed
+                    && lp.edges.iter().all(|edge| match edge.segments() {
+                        [segment] => is_centred_arc(segment),
+                        _ => false,
+                    })
+            })
     }
 
     /// Where the turn by `angle` (counter-clockwise in the profile plane) sends every edge,

@@ -603,6 +603,23 @@ def part_b(doc):
           orthogonality["ph-rmf"], 1e-10, below=False)
     check("Method mobius: Orthogonality (exact rational RMF)", orthogonality["mobius"], 1e-12)
     check("Method rrmf: Orthogonality (exact rational RMF)", orthogonality["rrmf"], 1e-12)
+    # The same tube on the PH spline's Euler-Rodrigues frame (PipeFrame lightest, the
+    # default) and on its RMF: B-spline faces of degree 5 and 9 along the spine, the same
+    # volume.
+    tube.Method = "ph-rmf"
+    degrees, volumes = {}, {}
+    for pipe_frame in ("lightest", "rmf"):
+        tube.PipeFrame = pipe_frame
+        doc.recompute()
+        degrees[pipe_frame] = {f.Surface.VDegree for f in tube.Shape.Faces
+                               if isinstance(f.Surface, Part.BSplineSurface)}
+        volumes[pipe_frame] = divergence_volume(tube.Shape)
+        say("  PipeFrame %s: degrees along the spine %s, Orthogonality %.1e"
+            % (pipe_frame, sorted(degrees[pipe_frame]), tube.Orthogonality))
+    require("PipeFrame lightest: degree 5 along the curve; rmf: 9",
+            5 in degrees["lightest"] and 9 not in degrees["lightest"] and 9 in degrees["rmf"])
+    check("PipeFrame lightest against rmf: rel. volume difference",
+          rel(volumes["lightest"], volumes["rmf"]), 1e-9)
     tube.Method = "mobius"
     tube.Tolerance = 1e-4
     tube.ScaleEnd = 0.5

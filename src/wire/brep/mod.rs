@@ -109,7 +109,9 @@ pub struct SweepReport {
     /// line or an arc), in the wire's units.
     pub spine_distance: f64,
     /// Largest angle (radians) between the frames used and the exact RMF (plus the twist
-    /// and closure turn, linear in arc length); 0 on untwisted lines and arcs.
+    /// and closure turn, linear in arc length); 0 on untwisted lines and arcs, and on curve
+    /// pieces a round profile is swept along on the Euler–Rodrigues frame
+    /// ([`super::PipeFrame::Lightest`]: no frame changes its surface).
     pub rmf_angle_error: f64,
     /// Largest |cos| of the angle between the parameter lines of the lateral faces (0 on an
     /// exact RMF sweep, Mäurer & Jüttler (43)), measured on every patch on its 9 parameter
