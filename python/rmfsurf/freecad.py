@@ -404,17 +404,26 @@ def _open_profile_plane(wire: Any, origin: np.ndarray, tangent: np.ndarray, tole
 
 def _from_binary(data: bytes) -> Any:
     """The Part.Shape FreeCAD builds from an OpenCascade binary B-rep (for "freecad"), as it
-    is. FreeCAD reads it from a file only: one in memory (/dev/shm) where there is one."""
-    memory = "/dev/shm" if os.path.isdir("/dev/shm") else None
-    handle, path = tempfile.mkstemp(prefix="rmfsurf-", suffix=".bin", dir=memory)
+    is. FreeCAD reads it from a file only: one in memory (/dev/shm), or in the temporary
+    directory where /dev/shm is missing, not writable or full."""
+    try:
+        return _import_binary(data, "/dev/shm")
+    except OSError:
+        return _import_binary(data, None)
+
+
+def _import_binary(data: bytes, directory: Optional[str]) -> Any:
+    """`data` imported by FreeCAD from a file of its own in `directory` (None: the
+    temporary directory), removed after."""
+    handle, path = tempfile.mkstemp(prefix="rmfsurf-", suffix=".bin", dir=directory)
     try:
         with os.fdopen(handle, "wb") as file:
             file.write(data)
         built = Part.Shape()
         built.importBinary(path)
+        return built
     finally:
         os.unlink(path)
-    return built
 
 
 def part_shape(value: Shape, tolerance: float = 1e-6) -> Any:
