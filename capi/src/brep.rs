@@ -510,13 +510,8 @@ pub unsafe extern "C" fn rmf_brep_occ_binary(
 ) -> RmfStatus {
     guard("rmf_brep_occ_binary", || {
         let b = reference(brep, "brep")?;
-        let length = out_ptr(length, "length")?;
-        let reader = crate::shape::occ_reader(reader)?;
-        let out = crate::boundary::buffer(buffer, capacity, "buffer")?;
-        let file = crate::boundary::made_once(&b.occ_binary, || {
-            rmfsurf::export::occ_brep::brep_to_occ_binary(&b.model)
-        })?;
-        crate::boundary::hand_bytes(file.set(), &file.root(reader), out, length)
+        let make = || rmfsurf::export::occ_brep::brep_to_occ_binary(&b.model);
+        crate::shape::hand_occ_binary(&b.occ_binary, make, reader, buffer, capacity, length)
     })
 }
 

@@ -483,12 +483,35 @@ pub unsafe extern "C" fn rmf_shape_occ_binary(
 ) -> RmfStatus {
     guard("rmf_shape_occ_binary", || {
         let shape = reference(shape, "shape")?;
-        let length = out_ptr(length, "length")?;
-        let reader = occ_reader(reader)?;
-        let out = crate::boundary::buffer(buffer, capacity, "buffer")?;
-        let file = crate::boundary::made_once(&shape.occ_binary, || shape.shape.to_occ_binary())?;
-        crate::boundary::hand_bytes(file.set(), &file.root(reader), out, length)
+        hand_occ_binary(
+            &shape.occ_binary,
+            || shape.shape.to_occ_binary(),
+            reader,
+            buffer,
+            capacity,
+            length,
+        )
     })
+}
+
+/// A binary B-rep into a caller buffer, made by `make` into `cell` on the first call
+/// (rmf_shape_occ_binary, rmf_brep_occ_binary: `length`, `reader`, then `buffer` checked).
+///
+/// # Safety
+/// `buffer` and `length` as the calls document them.
+pub(crate) unsafe fn hand_occ_binary(
+    cell: &std::sync::OnceLock<OccBinary>,
+    make: impl FnOnce() -> rmfsurf::Result<OccBinary>,
+    reader: RmfOccReader,
+    buffer: *mut u8,
+    capacity: usize,
+    length: *mut usize,
+) -> FfiResult {
+    let length = out_ptr(length, "length")?;
+    let reader = occ_reader(reader)?;
+    let out = crate::boundary::buffer(buffer, capacity, "buffer")?;
+    let file = crate::boundary::made_once(cell, make)?;
+    crate::boundary::hand_bytes(file.set(), &file.root(reader), out, length)
 }
 
 /// Writes `bytes` beside `path` under a temporary name, then renames it to `path`. The

@@ -468,6 +468,7 @@ def parameters(value: Any, name: str) -> Tuple[np.ndarray, bool]:
 #: with the root shape as that program reads it.
 OCC_READERS: Dict[str, int] = {"bintools": 0, "freecad": 1}
 
+# Buffers the library fills whole: not cleared first (a helix's B-rep text is over 1 MB).
 _uncleared = ffi.new_allocator(should_clear_after_alloc=False)
 
 

@@ -22,10 +22,7 @@ from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
 import numpy as np
 
 from . import _core
-from ._core import call, ffi, lib
-
-# Buffers the library fills whole: not cleared first (a helix's B-rep text is over 1 MB).
-_uncleared = ffi.new_allocator(should_clear_after_alloc=False)
+from ._core import _uncleared, call, ffi, lib
 from .curves import ArrayLike, Curve, as_curve
 from .surfaces import Surface
 

@@ -55,36 +55,32 @@ enum Curve2d<'a> {
 }
 
 impl Curve2d<'_> {
-    /// The curve's point at parameter `t`: its ends at the ends of the edge's range.
-    fn point(&self, t: f64) -> Result<(f64, f64)> {
+    /// The curve's points at the ends of the edge's range (the binary file's UV points).
+    fn ends(&self, range: (f64, f64)) -> Result<[(f64, f64); 2]> {
         Ok(match self {
-            Curve2d::Line { origin, direction } => {
-                (origin.0 + t * direction.0, origin.1 + t * direction.1)
-            }
-            Curve2d::Segment { from, to, range } => {
-                if t == range.0 {
-                    *from
-                } else if t == range.1 {
-                    *to
-                } else {
-                    let s = (t - range.0) / (range.1 - range.0);
-                    (from.0 + s * (to.0 - from.0), from.1 + s * (to.1 - from.1))
-                }
-            }
+            Curve2d::Line { origin, direction } => [
+                line_at(*origin, *direction, range.0),
+                line_at(*origin, *direction, range.1),
+            ],
+            Curve2d::Segment { from, to, .. } => [*from, *to],
             Curve2d::Nurbs(curve) => {
-                // A clamped curve starts at its first pole and ends at its last.
-                let (first, last) = curve_range(curve);
-                let p = if t == first {
-                    curve.poles[0]
-                } else if t == last {
-                    curve.poles[curve.poles.len() - 1]
+                // A clamped curve on the edge's range starts at its first pole and ends at
+                // its last.
+                let [p, q] = if curve_range(curve) == range {
+                    [curve.poles[0], curve.poles[curve.poles.len() - 1]]
                 } else {
-                    curve.to_piecewise()?.eval(t)
+                    let pieces = curve.to_piecewise()?;
+                    [pieces.eval(range.0), pieces.eval(range.1)]
                 };
-                (p.x, p.y)
+                [(p.x, p.y), (q.x, q.y)]
             }
         })
     }
+}
+
+/// The point of the parameter line origin + t · direction at t.
+fn line_at(origin: (f64, f64), direction: (f64, f64), t: f64) -> (f64, f64) {
+    (origin.0 + t * direction.0, origin.1 + t * direction.1)
 }
 
 /// A line, circle or elementary surface as both files write it: its code, then vectors and
@@ -422,15 +418,11 @@ fn curves_2d(brep: &Brep) -> Result<(Vec<Curve2d<'_>>, Vec<Vec<OnFace>>)> {
                 (None, None) => {
                     let range = curve_range(&edge.curve);
                     let curve = match &u.pcurve {
-                        Some(PCurve::Line { origin, direction }) => {
-                            let at =
-                                |t: f64| (origin.0 + t * direction.0, origin.1 + t * direction.1);
-                            Curve2d::Segment {
-                                from: at(range.0),
-                                to: at(range.1),
-                                range,
-                            }
-                        }
+                        &Some(PCurve::Line { origin, direction }) => Curve2d::Segment {
+                            from: line_at(origin, direction, range.0),
+                            to: line_at(origin, direction, range.1),
+                            range,
+                        },
                         Some(PCurve::Curve(curve)) => Curve2d::Nurbs(curve),
                         None => return invalid!("edge {} has no curve on face {f}", u.edge),
                     };
@@ -443,7 +435,7 @@ fn curves_2d(brep: &Brep) -> Result<(Vec<Curve2d<'_>>, Vec<Vec<OnFace>>)> {
                     )
                 }
             };
-            let ends = [curve.point(range.0)?, curve.point(range.1)?];
+            let ends = curve.ends(range)?;
             table.push(curve);
             let number = table.len();
             match on_faces.iter_mut().find(|o| o.face == f) {

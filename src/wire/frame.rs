@@ -84,10 +84,10 @@ pub(crate) struct FrameOptions {
     /// largest distance from the spine, for cutting arcs fine enough for it.
     pub scale: ScaleLaw,
     pub reach: f64,
-    /// The profile is the same under every turn about the tangent (a round profile of
-    /// [`super::PipeFrame::Lightest`]): untwisted PH pieces of an open wire take the
-    /// spline's Euler–Rodrigues frame.
-    pub any_frame: bool,
+    /// Curve pieces take their PH spline's Euler–Rodrigues frame
+    /// ([`super::PipeFrame::Lightest`] where it applies: a round profile along an open wire,
+    /// the RMF untwisted).
+    pub lightest: bool,
 }
 
 /// A closing turn (radians) at most this is rounding: the frame closes as it is, and the
@@ -497,10 +497,6 @@ pub(crate) fn transport(chain: &Chain, options: &FrameOptions) -> Result<Transpo
              miter leg, whose frame cannot turn; use round corners"
         );
         };
-    // A round profile on an open wire with the RMF untwisted: the lightest frame serves
-    // (a closed wire's frame must close onto its start, as the RMF's closure turn does).
-    let lightest =
-        options.any_frame && !chain.closed && options.law == FrameLaw::Rmf && total_twist == 0.0;
     // Pass 2: the frames.
     let mut pieces = Vec::with_capacity(m);
     let mut f2 = f2_start;
@@ -524,7 +520,7 @@ pub(crate) fn transport(chain: &Chain, options: &FrameOptions) -> Result<Transpo
                 total: turn,
                 law: law.map(|law| (law, turn - law_turn)),
                 accuracy: law_accuracy(options),
-                lightest,
+                lightest: options.lightest,
             },
             miters[i],
         )

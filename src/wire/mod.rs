@@ -486,10 +486,15 @@ fn sweep_stations(
                 None => law,
             },
             reach: reach + end_reach,
-            // A round profile, one all along: any adapted frame sweeps the same surface.
-            any_frame: options.pipe_frame == PipeFrame::Lightest
+            // A round profile, one all along, sweeps the same surface under every adapted
+            // frame; a closed wire's frame must close onto its start (as the RMF's closure
+            // turn does), and a twist or another frame law asks for a frame of its own.
+            lightest: options.pipe_frame == PipeFrame::Lightest
                 && blend.is_none()
-                && profile.is_round(),
+                && profile.is_round()
+                && !chain.closed
+                && options.frame == SweepFrame::Rmf
+                && options.twist == 0.0,
         },
     )?;
     let law = law_on(

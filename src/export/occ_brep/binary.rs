@@ -245,7 +245,6 @@ fn nurbs_surface(out: &mut Vec<u8>, s: &NurbsSurface) -> Result<()> {
     for n in [s.pole_count_u, s.pole_count_v, nu, nv] {
         put_int(out, n);
     }
-    out.reserve(s.poles.len() * 32);
     for (p, &w) in s.poles.iter().zip(&s.weights) {
         put_reals(out, [p.x, p.y, p.z, w]);
     }
@@ -254,11 +253,11 @@ fn nurbs_surface(out: &mut Vec<u8>, s: &NurbsSurface) -> Result<()> {
     Ok(())
 }
 
-/// The `TShapes` table: each shape's type, its data, its flags, the shapes it holds
-/// (orientation byte, number from the last, location 0), `*` after them.
+/// The `TShapes` table (after the blank line that ends the geometry, as OpenCascade writes
+/// it): each shape's type, its data, its flags, the shapes it holds (orientation byte,
+/// number from the last, location 0), `*` after them.
 fn shapes(out: &mut Vec<u8>, set: &ShapeSet) {
     let n = set.shapes.len();
-    out.push(b'\n');
     header(out, "TShapes", n);
     for Record { kind, flags, held } in &set.shapes {
         match kind {
