@@ -152,15 +152,19 @@ def axial(helix, face):
 
 def thread_cut():
     """A rod less a helical groove (a triangle swept along a helix on the rod's surface):
-    the groove by build123d's Frenet sweep and by rmfsurf's sweeps (the RMF, and the
-    Frenet frame whose edges are helices), the triangle in the helix's normal plane and
-    in the axial plane as users draw it; then the same boolean with each."""
+    the groove by build123d's sweeps (Frenet, and its default corrected Frenet) and by
+    rmfsurf's (the RMF, and the Frenet frame whose edges are helices), the triangle in the
+    helix's normal plane and in the axial plane as users draw it; then the same boolean
+    with each."""
     rod = bd.Cylinder(10, 50, align=(bd.Align.CENTER, bd.Align.CENTER, bd.Align.MIN))
     helix = bd.Wire([bd.Helix(pitch=5, height=40, radius=10, center=(0, 0, 5))])
     shape = bd.RegularPolygon(1.5, 3).faces()[0]
     normal, axial_face = placed(helix, shape), axial(helix, shape)
     grooves = [
         ("build123d sweep (Frenet)", lambda: bd.sweep(normal, helix, is_frenet=True)),
+        # Its default frame, close to the RMF: OpenCascade's boolean leaves the rod uncut
+        # with this groove as with rmfsurf's RMF groove.
+        ("build123d (corrected Frenet)", lambda: bd.sweep(normal, helix)),
         ("rmfsurf.ocp.sweep (RMF)", lambda: rocp.sweep(helix, normal, tolerance=1e-5)),
         ("rmfsurf.ocp.sweep (Frenet)",
          lambda: rocp.sweep(helix, normal, tolerance=1e-5, frame="frenet")),

@@ -45,6 +45,23 @@ fn lerp<C: Coefficient>(a: C, b: C, t: f64) -> C {
 /// long as the evaluation of a cubic.
 pub(crate) const SHORT: usize = 10;
 
+/// Degrees up to which they work on a middle-sized array: OpenCascade's B-splines reach
+/// degree 25, and its approximations of helices and offsets commonly have degree 8 to 14.
+const MEDIUM: usize = 26;
+
+/// `$f::<C, N>(args)` with the smallest stack array N that holds `$n` coefficients.
+macro_rules! on_stack {
+    ($n:expr, $f:ident($($arg:expr),*)) => {
+        if $n <= SHORT {
+            $f::<C, SHORT>($($arg),*)
+        } else if $n <= MEDIUM {
+            $f::<C, MEDIUM>($($arg),*)
+        } else {
+            $f::<C, { MAX_DEGREE + 1 }>($($arg),*)
+        }
+    };
+}
+
 /// p(t) by de Casteljau's algorithm.
 ///
 /// # Panics
@@ -55,11 +72,7 @@ pub(crate) fn evaluate<C: Coefficient>(coeffs: &[C], t: f64) -> C {
         (1..=MAX_DEGREE + 1).contains(&n),
         "Bernstein degree out of range"
     );
-    if n <= SHORT {
-        de_casteljau::<C, SHORT>(coeffs, t)
-    } else {
-        de_casteljau::<C, { MAX_DEGREE + 1 }>(coeffs, t)
-    }
+    on_stack!(n, de_casteljau(coeffs, t))
 }
 
 fn de_casteljau<C: Coefficient, const N: usize>(coeffs: &[C], t: f64) -> C {
@@ -82,11 +95,7 @@ pub(crate) fn evaluate_jet<C: Coefficient>(coeffs: &[C], t: f64) -> Jet<C> {
         (1..=MAX_DEGREE + 1).contains(&n),
         "Bernstein degree out of range"
     );
-    if n <= SHORT {
-        de_casteljau_jet::<C, SHORT>(coeffs, t)
-    } else {
-        de_casteljau_jet::<C, { MAX_DEGREE + 1 }>(coeffs, t)
-    }
+    on_stack!(n, de_casteljau_jet(coeffs, t))
 }
 
 fn de_casteljau_jet<C: Coefficient, const N: usize>(coeffs: &[C], t: f64) -> Jet<C> {
@@ -132,10 +141,8 @@ pub(crate) fn evaluate_d1<C: Coefficient>(coeffs: &[C], t: f64) -> (C, C) {
     );
     if n == 4 {
         cubic_d1(coeffs, t)
-    } else if n <= SHORT {
-        de_casteljau_d1::<C, SHORT>(coeffs, t)
     } else {
-        de_casteljau_d1::<C, { MAX_DEGREE + 1 }>(coeffs, t)
+        on_stack!(n, de_casteljau_d1(coeffs, t))
     }
 }
 
@@ -446,6 +453,28 @@ mod tests {
             assert!((sum(0) - jet.value).abs() < 1e-14, "n = {n}");
             assert!((sum(1) - jet.d1).abs() < 1e-12, "n = {n}");
             assert!((sum(2) - jet.d2).abs() < 1e-11, "n = {n}");
+        }
+    }
+
+    #[test]
+    fn every_stack_size_evaluates_as_the_basis_sums() {
+        // Degrees on both sides of each array size the evaluators pick.
+        for n in [0, 3, 8, 9, 10, 11, 24, 25, 26, 27, 40, MAX_DEGREE] {
+            let coeffs: Vec<f64> = (0..=n).map(|i| (i as f64 * 0.9).cos()).collect();
+            let mut basis = [[0.0; 3]; MAX_DEGREE + 1];
+            for t in [0.0, 0.29, 0.5, 0.83, 1.0] {
+                basis_jet(n, t, &mut basis);
+                let sum = |k: usize| (0..=n).map(|i| basis[i][k] * coeffs[i]).sum::<f64>();
+                let scale = (n * n).max(1) as f64;
+                let (value, d1) = evaluate_d1(&coeffs, t);
+                let jet = evaluate_jet(&coeffs, t);
+                assert!((evaluate(&coeffs, t) - sum(0)).abs() < 1e-13, "n = {n}");
+                assert!((value - sum(0)).abs() < 1e-13, "n = {n}");
+                assert!((d1 - sum(1)).abs() < 1e-13 * scale, "n = {n}");
+                assert!((jet.value - sum(0)).abs() < 1e-13, "n = {n}");
+                assert!((jet.d1 - sum(1)).abs() < 1e-13 * scale, "n = {n}");
+                assert!((jet.d2 - sum(2)).abs() < 1e-12 * scale * scale, "n = {n}");
+            }
         }
     }
 

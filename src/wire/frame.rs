@@ -995,12 +995,18 @@ fn law_frames(
             j => 0.5 * (on(j - 1, breaks[j]) + on(j, breaks[j])),
         })
         .collect();
+    // Each segment's offsets from the joints at its ends, spread linearly over it.
+    let spread: Vec<(f64, f64)> = (0..=last)
+        .map(|k| {
+            (
+                on(k, breaks[k]) - joints[k],
+                on(k, breaks[k + 1]) - joints[k + 1],
+            )
+        })
+        .collect();
     let angle = |k: usize, s: f64| {
         let v = lerp(breaks[k], breaks[k + 1], s);
-        let (d0, d1) = (
-            on(k, breaks[k]) - joints[k],
-            on(k, breaks[k + 1]) - joints[k + 1],
-        );
+        let (d0, d1) = spread[k];
         on(k, v) - lerp(d0, d1, s) + extra * arc_length(v) / length
     };
     const STEP: f64 = 1e-3;
