@@ -12,9 +12,9 @@ use rmfsurf::{
     cone::approximate as approximate_developable, cone::ConeSpline, cone::Developable, cone::Rule,
     cone::RuledSurface, cone::TangentSurface, framed_spine, framed_spine_through, ph::check_g1,
     sheet::SheetPart, sweep, wire::sweep as sweep_wire, wire::sweep_between as sweep_wire_between,
-    wire::sweep_through as sweep_wire_through, wire::Edge, wire::PipeFrame, wire::Section,
-    wire::Shape, wire::SweepFrame, wire::WireSweep, Error, FlatPattern, FramedCurve,
-    PiecewiseCurve, PiecewiseSurface,
+    wire::sweep_through as sweep_wire_through, wire::Edge, wire::Section, wire::Shape,
+    wire::SweepFrame, wire::WireSweep, Error, FlatPattern, FramedCurve, PiecewiseCurve,
+    PiecewiseSurface,
 };
 
 /// A swept surface with its spine and frames.
@@ -115,8 +115,7 @@ pub fn run_wire(job: &WireJob) -> Result<Shape, InputError> {
         scale: job.scale,
         scale_knots: job.scale_knots.clone(),
         method: job.method,
-        // A job file's pipes keep the RMF parametrization the tool has always written.
-        pipe_frame: PipeFrame::Rmf,
+        pipe_frame: job.pipe_frame,
     };
     let end = match &job.end_profile {
         Some((end_profile, end_holes)) => Some((

@@ -98,6 +98,8 @@ pub struct WireJob {
     pub solid: bool,
     /// How the profile turns about the tangent (default the RMF).
     pub frame: WireFrame,
+    /// How a round profile is swept along curve edges (default the RMF).
+    pub pipe_frame: rmfsurf::wire::PipeFrame,
     /// The profile's scale at the wire's start and end (default `[1, 1]`).
     pub scale: [f64; 2],
     /// Knots of the scale law, (fraction of the wire's length, scale) (default none).
@@ -356,6 +358,7 @@ fn wire_job(sweep: schema::Sweep) -> InputResult<WireJob> {
         holes,
         solid: sweep.solid.map_or(defaults.solid, |s| s.0),
         frame,
+        pipe_frame: sweep.pipe_frame.map_or(defaults.pipe_frame, |p| p.0),
         scale: sweep.scale.map_or(defaults.scale, |s| s.0),
         scale_knots: sweep
             .scale_knots

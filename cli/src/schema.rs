@@ -7,8 +7,8 @@
 use crate::json::{Bool, Bound, Bounded, Count, NameVisitor, Number, Point2, Positive, Vec3};
 use rmfsurf::glam::DVec3;
 use rmfsurf::{
-    sheet::Reference, wire::Corner, wire::SweepFrame, wire::MAX_FACES, SpineMethod, MAX_DEGREE,
-    MAX_SWEEP_POLES,
+    sheet::Reference, wire::Corner, wire::PipeFrame, wire::SweepFrame, wire::MAX_FACES,
+    SpineMethod, MAX_DEGREE, MAX_SWEEP_POLES,
 };
 use serde::de::{self, Deserializer, MapAccess, SeqAccess, Visitor};
 use serde::Deserialize;
@@ -161,6 +161,9 @@ pub struct Sweep {
     pub closure_symmetry: Option<Count<0, { 1 << 16 }>>,
     pub solid: Option<Bool>,
     pub frame: Option<FrameName>,
+    /// How a round profile is swept along curve edges (`"rmf"`, the default, or
+    /// `"lightest"`).
+    pub pipe_frame: Option<PipeFrameName>,
     pub scale: Option<Scale>,
     /// Knots of the scale law: `[[fraction, scale], ...]`, σ piecewise linear through them.
     pub scale_knots: Option<Bounded<ScaleKnot, ScaleKnots>>,
@@ -192,6 +195,7 @@ impl Sweep {
             ("closure_symmetry", self.closure_symmetry.is_some()),
             ("solid", self.solid.is_some()),
             ("frame", self.frame.is_some()),
+            ("pipe_frame", self.pipe_frame.is_some()),
             ("scale", self.scale.is_some()),
             ("scale_knots", self.scale_knots.is_some()),
             ("end_profile", self.end_profile.is_some()),
@@ -409,6 +413,20 @@ impl<'de> Deserialize<'de> for MethodName {
             names: &SpineMethod::ALL.map(|m| (m.name(), m)),
         })
         .map(MethodName)
+    }
+}
+
+/// How a pipe is swept: `"rmf"` or `"lightest"`.
+#[derive(Clone, Copy, Debug)]
+pub struct PipeFrameName(pub PipeFrame);
+
+impl<'de> Deserialize<'de> for PipeFrameName {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        d.deserialize_any(NameVisitor {
+            what: "pipe frame",
+            names: &[("rmf", PipeFrame::Rmf), ("lightest", PipeFrame::Lightest)],
+        })
+        .map(PipeFrameName)
     }
 }
 

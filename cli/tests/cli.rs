@@ -589,6 +589,59 @@ fn helix_guide_edge(pitch: f64, turns: f64) -> String {
     )
 }
 
+/// `"pipe_frame"`: a circle of radius 0.5 along a 2-turn helix (a NURBS edge) is the same
+/// pipe on the RMF (the default, degree 9 along the spine) and on the lightest frame
+/// (degree 5), volumes within 1e-9 of each other; an unknown name, and the key on a sweep
+/// along a curve, are refused naming `sweep.pipe_frame`.
+#[test]
+fn the_pipe_frame_is_read_and_refused_at_the_field() {
+    let job = |extra: &str| {
+        format!(
+            r#"{{"sweep": {{"spine": {{"wire": [{}]}}, {extra}"profile": {{"circle": {{"radius": 0.5}}}}}}}}"#,
+            helix_guide_edge(3.0, 2.0)
+        )
+    };
+    let mut volumes = Vec::new();
+    for (name, extra, degree) in [
+        ("pipe_frame_default", "", 9),
+        ("pipe_frame_rmf", r#""pipe_frame": "rmf", "#, 9),
+        ("pipe_frame_lightest", r#""pipe_frame": "lightest", "#, 5),
+    ] {
+        let f = wire_figures(name, &job(extra));
+        volumes.push(f["volume"].as_f64().unwrap());
+        let step = std::fs::read_to_string(
+            Path::new(env!("CARGO_TARGET_TMPDIR"))
+                .join(name)
+                .join("out.step"),
+        )
+        .unwrap();
+        let along = format!("B_SPLINE_SURFACE(2,{degree},");
+        assert!(
+            step.contains(&along),
+            "{name}: no face of degree (2, {degree})"
+        );
+        let other = if degree == 9 { 5 } else { 9 };
+        let not = format!("B_SPLINE_SURFACE(2,{other},");
+        assert!(
+            !step.contains(&not),
+            "{name}: a face of degree (2, {other})"
+        );
+    }
+    for v in &volumes[1..] {
+        assert!((v - volumes[0]).abs() <= 1e-9 * volumes[0], "{volumes:?}");
+    }
+    wire_fails_with(
+        "pipe_frame_bad",
+        &job(r#""pipe_frame": "light", "#),
+        &["sweep.pipe_frame: unknown pipe frame \"light\"; expected one of rmf, lightest"],
+    );
+    fails_with(
+        "curve_pipe_frame",
+        &GOOD_SWEEP.replace("\"profile\"", "\"pipe_frame\": \"lightest\", \"profile\""),
+        &["sweep.pipe_frame: only for a sweep along a wire"],
+    );
+}
+
 /// `"frame": {"guide": [edges]}` (edges of the form of "wire"'s): a circle of radius 1
 /// along a line of 3 with a helical guide about it (radius 2, pitch 2) turns with the guide
 /// but keeps the cylinder's volume π r² L (to 1e-9), the frame followed within the
