@@ -30,6 +30,7 @@ use super::frenet::frenet_numerators;
 use super::parabolic::ParabolicCurve;
 use super::profile::{critical_points, interior_roots, profile_segments, vanishes, ProfileSegment};
 use super::spline::PhSpline;
+use crate::bezier::bernstein::{derivative, product};
 use crate::bezier::{locate, PiecewiseCurve};
 use crate::error::no_solution;
 use crate::error::Num;
@@ -233,6 +234,15 @@ impl<'a> ProfileSurface<'a> {
     /// which costs a curvature per sample instead of a root search per profile segment.
     pub(crate) fn bound_margin(&self) -> f64 {
         1.0 - self.max_spine_curvature() * self.max_profile_radius()
+    }
+
+    /// Whether the sufficient condition κ_max·max‖c‖ < 1 holds: first with κ_max bounded
+    /// from the Bernstein coefficients of a polynomial spine (no evaluation), then as
+    /// [`Self::bound_margin`] samples it.
+    pub(crate) fn cannot_fold(&self) -> bool {
+        let reach = self.max_profile_radius();
+        let bounded = curvature_bound(self.spine).is_some_and(|k| k * reach < 1.0);
+        bounded || self.bound_margin() > 0.0
     }
 
     /// The margin of Corollary 7 alone, (g, u, v) where it is least: g sampled along the
@@ -580,6 +590,31 @@ fn covering_arc(arcs: &[(f64, f64)]) -> (f64, f64) {
     ((TAU - gap).max(0.0), start)
 }
 
+/// An upper bound on the curvature |r′ × r″|/|r′|³ of a spine of polynomial segments: on
+/// each, the largest coefficient of r′ × r″ over the smallest of |r′|² to the power 3/2 (the
+/// Bernstein coefficients bound a polynomial from both sides); `None` for a rational
+/// segment or one whose |r′|² has a coefficient ≤ 0.
+fn curvature_bound(spine: &PiecewiseCurve) -> Option<f64> {
+    let mut largest = 0.0f64;
+    for segment in spine.segments() {
+        if !segment.is_polynomial() || segment.degree() < 2 {
+            return None;
+        }
+        let poles: Vec<DVec3> = segment.poles().collect();
+        let d1 = derivative(&poles);
+        let d2 = derivative(&d1);
+        let cross = product(&d1, &d2, |a: DVec3, b: DVec3| a.cross(b));
+        let speed = product(&d1, &d1, |a: DVec3, b: DVec3| a.dot(b));
+        let slowest = speed.iter().copied().fold(f64::INFINITY, f64::min);
+        if slowest.is_nan() || slowest <= 0.0 {
+            return None;
+        }
+        let bend = cross.iter().map(|c| c.length()).fold(0.0, f64::max);
+        largest = largest.max(bend / (slowest * slowest.sqrt()));
+    }
+    largest.is_finite().then_some(largest)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -601,6 +636,38 @@ mod tests {
         )
         .unwrap();
         PiecewiseCurve::new(vec![arc], vec![0.0, 1.0]).unwrap()
+    }
+
+    #[test]
+    fn the_curvature_bound_holds_the_sampled_curvature_and_decides_the_fold_check() {
+        let spine = helix_spline(16, 0.15);
+        let curve = spine.curve();
+        let bound = curvature_bound(curve).unwrap();
+        let (lo, hi) = curve.domain();
+        let sampled = (0..=4000)
+            .map(|i| curve.eval_jet(lo + (hi - lo) * i as f64 / 4000.0))
+            .map(|j| j.d1.cross(j.d2).length() / j.d1.length().powi(3))
+            .fold(0.0, f64::max);
+        assert!(
+            bound >= sampled && bound <= 1.5 * sampled,
+            "{bound} vs {sampled}"
+        );
+        let rmf = ph_rational_rmf(&spine, &RmfOptions::rmf(DVec3::Z)).unwrap();
+        // Within the bound's reach the check needs no sample; beyond the curvature radius
+        // neither bound holds.
+        let (near, far) = (
+            arc_profile(0.6 / bound, DVec3::ZERO),
+            arc_profile(1.2 / sampled, DVec3::ZERO),
+        );
+        assert!(ProfileSurface::new(&rmf.framed, &near)
+            .unwrap()
+            .cannot_fold());
+        assert!(!ProfileSurface::new(&rmf.framed, &far)
+            .unwrap()
+            .cannot_fold());
+        // A rational spine gets no bound (the sampled one serves).
+        let arc = arc_profile(1.0, DVec3::ZERO);
+        assert_eq!(curvature_bound(&arc), None);
     }
 
     #[test]

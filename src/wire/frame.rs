@@ -1314,7 +1314,7 @@ pub(crate) fn singularity_margin(
             (_, PieceFrame::Rational(frames)) => {
                 let analysis = ProfileSurface::with_adapted_frames(&framed.spine, frames, &chain)
                     .with_context(|| format!("edge {}", piece.edge))?;
-                if analysis.bound_margin() > 0.0 {
+                if analysis.cannot_fold() {
                     deferred.push((framed.spine.clone(), frames.clone()));
                     continue;
                 }
