@@ -318,6 +318,30 @@ static void check_occ_binary(const RmfShape *shape) {
     free(freecad);
 }
 
+/* rmf_shape_volume: the library's own figure agrees with this suite's integration and
+   with pi r^2 L; NULLs named, and a sheet (the same sweep, not solid) refused with nothing
+   written. */
+static void check_shape_volume(const RmfShape *shape, double exact, const RmfCurve *profile,
+                               const RmfEdge *e) {
+    double v = -1;
+    CHECK_STATUS(rmf_shape_volume(shape, &v), RMF_OK, "");
+    printf("rmf_shape_volume: %.15f (relative %.1e)\n", v, fabs(v - exact) / exact);
+    CHECK(fabs(v - exact) <= 1e-12 * exact, "rmf_shape_volume is pi r^2 L");
+    CHECK(fabs(v - volume(shape)) <= 1e-12 * exact, "rmf_shape_volume is the suite's volume");
+    CHECK_STATUS(rmf_shape_volume(NULL, &v), RMF_ERROR_NULL_POINTER, "shape is NULL");
+    CHECK_STATUS(rmf_shape_volume(shape, NULL), RMF_ERROR_NULL_POINTER, "out is NULL");
+    RmfWireSweepOptions o;
+    RmfShape *sheet = NULL;
+    rmf_wire_sweep_options_init(&o);
+    o.solid = 0;
+    CHECK_STATUS(rmf_wire_sweep(e, 3, profile, NULL, 0, &o, &sheet), RMF_OK, "");
+    if (!sheet) return;
+    v = -1;
+    CHECK_STATUS(rmf_shape_volume(sheet, &v), RMF_ERROR_INVALID_INPUT, "a sheet, not a solid");
+    CHECK(v == -1, "a refused volume writes nothing");
+    rmf_shape_free(sheet);
+}
+
 static void test_pipe_route(void) {
     RmfEdge e[3];
     RmfCurve *profile = circle(1), *hole = circle(0.8);
@@ -357,6 +381,7 @@ static void test_pipe_route(void) {
     CHECK(worst_radius < 1e-14, "exact cylinders and torus");
     CHECK(worst_cos <= 1e-12, "orthogonal parameter lines on lines and arcs");
     CHECK(fabs(v - exact) <= 1e-12 * exact, "volume pi r^2 L");
+    check_shape_volume(shape, exact, profile, e);
     CHECK_STATUS(rmf_shape_report(shape, &report), RMF_OK, "");
     CHECK(report.spine_distance == 0 && report.rmf_angle_error == 0 && report.face_count == 14, "exact spine");
     CHECK(report.max_parameter_cosine <= 1e-12 && report.singularity_margin > 0.79, "margin 1 - 1/5");

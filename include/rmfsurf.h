@@ -4571,6 +4571,24 @@ RmfStatus rmf_shape_face_loop(const struct RmfShape *shape,
 RmfStatus rmf_shape_report(const struct RmfShape *shape, struct RmfSweepReport *out);
 
 /**
+ * The volume a solid encloses: ⅓ ∮ x·n dA over its faces, by 24-point Gauss–Legendre
+ * quadrature on every rational patch and cap loop segment, about the wire's centre (so
+ * that nothing is lost to its position) — far closer than OpenCascade's fixed-order
+ * `BRepGProp::VolumeProperties` (at most 61 points along a whole face's edge), which
+ * FreeCAD's `Shape.Volume` and build123d's `volume` use.
+ *
+ * @param[in] shape A shape made by rmf_wire_sweep.
+ * @param[out] out Receives the volume (untouched on failure).
+ * @return RMF_OK on success.
+ * @return RMF_ERROR_NULL_POINTER If shape or out is NULL.
+ * @return RMF_ERROR_INVALID_INPUT If the shape is a sheet (it encloses no volume), or the
+ * volume is outside the range of a double (a wire 1e-200 long encloses about 1e-600).
+ * \since 0.2
+ * \ingroup rmf_wire
+ */
+RmfStatus rmf_shape_volume(const struct RmfShape *shape, double *out);
+
+/**
  * Writes a shape as a STEP AP214 file: a solid as a MANIFOLD_SOLID_BREP (a closed shell of
  * ADVANCED_FACEs on rational B-spline surfaces and planes, sharing edges and vertices),
  * a sheet as an open shell. FreeCAD and OpenCascade read it as one valid Solid. The file
