@@ -314,6 +314,14 @@ fn shape_report(s: &mut Session) {
         r.singularity_margin
     );
     assert_eq!(r.face_count, unsafe { rmf_shape_face_count(shape) });
+    // A solid encloses a positive volume (or one outside a double's range, refused); a
+    // sheet none.
+    let mut volume = poisoned::<f64>();
+    let status = unsafe { rmf_shape_volume(shape, &mut volume) };
+    if checked("rmf_shape_volume", status, &[is_poisoned(&volume)]) {
+        assert_eq!(unsafe { rmf_shape_is_solid(shape) }, 1, "a sheet's volume");
+        assert!(volume.is_finite() && volume > 0.0, "volume {volume}");
+    }
 }
 
 fn shape_step(s: &mut Session) {
