@@ -233,7 +233,12 @@ impl<'a> ProfileSurface<'a> {
     /// The sufficient margin 1 − κ_max·max‖c‖ alone (positive: the sweep does not fold),
     /// which costs a curvature per sample instead of a root search per profile segment.
     pub(crate) fn bound_margin(&self) -> f64 {
-        1.0 - self.max_spine_curvature() * self.max_profile_radius()
+        self.sampled_bound_margin(self.max_profile_radius())
+    }
+
+    /// 1 − κ_max·`reach`, κ_max sampled.
+    fn sampled_bound_margin(&self, reach: f64) -> f64 {
+        1.0 - self.max_spine_curvature() * reach
     }
 
     /// Whether the sufficient condition κ_max·max‖c‖ < 1 holds: first with κ_max bounded
@@ -242,7 +247,7 @@ impl<'a> ProfileSurface<'a> {
     pub(crate) fn cannot_fold(&self) -> bool {
         let reach = self.max_profile_radius();
         let bounded = curvature_bound(self.spine).is_some_and(|k| k * reach < 1.0);
-        bounded || self.bound_margin() > 0.0
+        bounded || self.sampled_bound_margin(reach) > 0.0
     }
 
     /// The margin of Corollary 7 alone, (g, u, v) where it is least: g sampled along the

@@ -988,21 +988,22 @@ fn law_frames(
     // sides meet at the mean and the jump is spread linearly over each side's segment, so
     // that the frames stay continuous.
     let last = breaks.len() - 2;
+    // The law at both ends of each segment, read once.
+    let ends: Vec<(f64, f64)> = (0..=last)
+        .map(|k| (on(k, breaks[k]), on(k, breaks[k + 1])))
+        .collect();
     let joints: Vec<f64> = (0..breaks.len())
         .map(|j| match j {
-            0 => on(0, breaks[0]),
-            j if j > last => on(last, breaks[j]),
-            j => 0.5 * (on(j - 1, breaks[j]) + on(j, breaks[j])),
+            0 => ends[0].0,
+            j if j > last => ends[last].1,
+            j => 0.5 * (ends[j - 1].1 + ends[j].0),
         })
         .collect();
     // Each segment's offsets from the joints at its ends, spread linearly over it.
-    let spread: Vec<(f64, f64)> = (0..=last)
-        .map(|k| {
-            (
-                on(k, breaks[k]) - joints[k],
-                on(k, breaks[k + 1]) - joints[k + 1],
-            )
-        })
+    let spread: Vec<(f64, f64)> = ends
+        .iter()
+        .enumerate()
+        .map(|(k, &(start, end))| (start - joints[k], end - joints[k + 1]))
         .collect();
     let angle = |k: usize, s: f64| {
         let v = lerp(breaks[k], breaks[k + 1], s);
