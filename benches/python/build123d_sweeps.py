@@ -15,7 +15,7 @@ from OCP.TopoDS import TopoDS_Shape
 
 import rmfsurf
 import rmfsurf.ocp as rocp
-from timing import best
+from timing import best, best_on_fresh
 
 TOLERANCE = 1e-4
 
@@ -113,10 +113,11 @@ def downstream():
         "profile", "sweep by", "faces", "boolean", "valid", "mesh", "triangles", "STEP kB"))
     for name, face in (("circle", bd.Circle(3)), ("ring", ring)):
         profile = placed(route, face.faces()[0])
-        for by, solid in (
-                ("build123d", bd.sweep(profile, route, transition=bd.Transition.ROUND)),
-                ("rmfsurf", rocp.sweep(route, profile, tolerance=TOLERANCE))):
-            cut_time, cut = best(lambda: block - solid)
+        for by, make in (
+                ("build123d", lambda: bd.sweep(profile, route, transition=bd.Transition.ROUND)),
+                ("rmfsurf", lambda: rocp.sweep(route, profile, tolerance=TOLERANCE))):
+            solid = make()
+            cut_time, cut = best_on_fresh(make, lambda fresh: block - fresh)
             mesh_time, triangles = best(lambda: mesh(solid))
             print("%-10s %-10s %6d %10.1f %6s %10.1f %10d %10.1f" % (
                 name, by, len(solid.faces()), cut_time * 1e3,
@@ -178,7 +179,7 @@ def thread_cut():
     base = None
     for name, make in grooves:
         groove_time, groove = best(make)
-        cut_time, cut = best(lambda: rod - groove)
+        cut_time, cut = best_on_fresh(make, lambda fresh: rod - fresh)
         # A cut that leaves the rod's faces alone did not cut: count it as failed.
         valid = (rocp.is_valid(groove) and rocp.is_valid(cut) and len(cut.solids()) == 1
                  and len(cut.faces()) > len(rod.faces()))

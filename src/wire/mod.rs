@@ -795,6 +795,8 @@ mod analytic_tests;
 #[cfg(test)]
 mod guide_tests;
 #[cfg(test)]
+mod helix_tests;
+#[cfg(test)]
 mod options_tests;
 #[cfg(test)]
 mod pipe_tests;

@@ -1,0 +1,228 @@
+//! Sweeps along circular helices against the exact screw sweep: a profile carried by a
+//! helix's Frenet frame is the screw motion's image of it, so every point of a thread's
+//! faces lies, in the helix's normal plane through it, on the profile placed in that
+//! plane's Frenet frame; every point of a pipe is at the profile's radius from the helix;
+//! the volume is the profile's area times the helix's length (the first moment of a
+//! centred profile integrates to 0).
+
+use super::options_tests::helix;
+use super::tests::{circle, triangle, volume};
+use super::*;
+use std::f64::consts::TAU;
+
+/// The helix of `helix(radius, pitch, _)`: (R cos θ, R sin θ, h θ), h = pitch/2π.
+struct Exact {
+    radius: f64,
+    rise: f64,
+}
+
+impl Exact {
+    fn point(&self, theta: f64) -> DVec3 {
+        DVec3::new(
+            self.radius * theta.cos(),
+            self.radius * theta.sin(),
+            self.rise * theta,
+        )
+    }
+
+    fn d1(&self, theta: f64) -> DVec3 {
+        DVec3::new(
+            -self.radius * theta.sin(),
+            self.radius * theta.cos(),
+            self.rise,
+        )
+    }
+
+    fn d2(&self, theta: f64) -> DVec3 {
+        DVec3::new(-self.radius * theta.cos(), -self.radius * theta.sin(), 0.0)
+    }
+
+    /// The angle whose normal plane holds x (Newton on (x − H(θ))·H′(θ) = 0 from the turn
+    /// of the same height: the profile reaches less than half a pitch along the axis).
+    fn foot(&self, x: DVec3) -> f64 {
+        let around = x.y.atan2(x.x);
+        let turns = ((x.z / self.rise - around) / TAU).round();
+        let mut theta = around + TAU * turns;
+        for _ in 0..50 {
+            let d = x - self.point(theta);
+            let g = d.dot(self.d1(theta));
+            let dg = -self.d1(theta).length_squared() + d.dot(self.d2(theta));
+            let step = g / dg;
+            theta -= step;
+            if step.abs() < 1e-15 {
+                break;
+            }
+        }
+        theta
+    }
+
+    /// x in the Frenet frame of its normal plane: (along N, along B).
+    fn in_normal_plane(&self, x: DVec3) -> (f64, f64) {
+        let theta = self.foot(x);
+        let t = self.d1(theta).normalize();
+        let n = -DVec3::new(theta.cos(), theta.sin(), 0.0);
+        let d = x - self.point(theta);
+        (d.dot(n), d.dot(t.cross(n)))
+    }
+
+    fn length(&self, turns: f64) -> f64 {
+        TAU * turns * self.radius.hypot(self.rise)
+    }
+}
+
+/// Points of the lateral faces on a 24 × 400 grid of each.
+fn lateral_points(shape: &Shape) -> Vec<DVec3> {
+    let mut points = Vec::new();
+    for face in shape.faces().iter().filter(|f| f.kind == FaceKind::Swept) {
+        let s = face.surface.as_ref().unwrap();
+        let ((u0, u1), (v0, v1)) = (s.domain_u(), s.domain_v());
+        for i in 0..=24 {
+            for j in 0..=400 {
+                let (u, v) = (i as f64 / 24.0, j as f64 / 400.0);
+                points.push(s.eval(u0 + (u1 - u0) * u, v0 + (v1 - v0) * v));
+            }
+        }
+    }
+    points
+}
+
+/// Distance from p to the segment a–b in the plane.
+fn to_segment(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
+    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+    let s = (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / (dx * dx + dy * dy)).clamp(0.0, 1.0);
+    (p.0 - a.0 - s * dx).hypot(p.1 - a.1 - s * dy)
+}
+
+/// The helix of [`helix`] as cubic Hermite segments through 96 points a turn (not PH:
+/// its spine is approximated; within 2e-7 of the helix), from (radius, 0, 0).
+fn hermite_helix(radius: f64, pitch: f64, turns: f64) -> Edge {
+    let n = (96.0 * turns).ceil() as usize;
+    let exact = Exact {
+        radius,
+        rise: pitch / TAU,
+    };
+    let step = TAU * turns / n as f64;
+    let segments = (0..n)
+        .map(|i| {
+            let (a, b) = (step * i as f64, step * (i + 1) as f64);
+            let (p, q) = (exact.point(a), exact.point(b));
+            let (dp, dq) = (exact.d1(a) * step / 3.0, exact.d1(b) * step / 3.0);
+            crate::bezier::RationalBezierCurve::polynomial(&[p, p + dp, q - dq, q]).unwrap()
+        })
+        .collect();
+    let breaks = (0..=n).map(|i| i as f64).collect();
+    Edge::Curve(PiecewiseCurve::new(segments, breaks).unwrap())
+}
+
+fn frenet(tolerance: f64) -> WireSweep {
+    WireSweep {
+        frame: SweepFrame::Frenet,
+        tolerance,
+        ..WireSweep::default()
+    }
+}
+
+/// A thread: an equilateral triangle (centred, corners at 0.5) swept along two turns of a
+/// helix under its Frenet frame: on the exact screw sweep within the tolerance, the volume
+/// area × length.
+#[test]
+fn a_thread_is_the_screw_sweep_of_its_profile() {
+    let exact = Exact {
+        radius: 3.0,
+        rise: 2.0 / TAU,
+    };
+    let corners: Vec<(f64, f64)> = (0..3)
+        .map(|k| {
+            let a = TAU * k as f64 / 3.0;
+            (0.5 * a.cos(), 0.5 * a.sin())
+        })
+        .collect();
+    for (name, edge, tolerance) in [
+        ("PH spline", helix(3.0, 2.0, 2.0), 1e-5),
+        ("cubic Hermite", hermite_helix(3.0, 2.0, 2.0), 1e-4),
+        ("cubic Hermite", hermite_helix(3.0, 2.0, 2.0), 1e-5),
+    ] {
+        let shape = sweep(&[edge], &triangle(0.5), &[], &frenet(tolerance)).unwrap();
+        assert!(shape.is_solid());
+        crate::testing::assert_closed_oriented(shape.brep());
+        let off = lateral_points(&shape)
+            .into_iter()
+            .map(|x| {
+                let p = exact.in_normal_plane(x);
+                (0..3)
+                    .map(|k| to_segment(p, corners[k], corners[(k + 1) % 3]))
+                    .fold(f64::INFINITY, f64::min)
+            })
+            .fold(0.0, f64::max);
+        let area = 0.75 * 3f64.sqrt() * 0.25;
+        let want = area * exact.length(2.0);
+        let v = volume(&shape);
+        let error = (v - want).abs() / want;
+        println!(
+            "{name}, tolerance {tolerance:e}: off the screw sweep {off:.2e}, volume {v:.12} against \
+             area × length {want:.12} ({error:.1e}), reported spine distance {:.1e}",
+            shape.report().spine_distance
+        );
+        assert!(off <= tolerance, "{off:e}");
+        assert!(shape.report().spine_distance <= tolerance);
+        // The Frenet frame carries a centred profile's volume exactly: what is left is the
+        // spine's distance from the helix.
+        assert!(error < 10.0 * tolerance, "{error:e}");
+    }
+}
+
+/// A pipe along five turns on the lightest frame: every point at the radius from the helix.
+#[test]
+fn a_pipe_along_a_helix_is_the_tube_about_it() {
+    let exact = Exact {
+        radius: 3.0,
+        rise: 2.0 / TAU,
+    };
+    let options = WireSweep {
+        pipe_frame: PipeFrame::Lightest,
+        tolerance: 1e-5,
+        ..WireSweep::default()
+    };
+    let shape = sweep(&[helix(3.0, 2.0, 5.0)], &circle(0.4), &[], &options).unwrap();
+    crate::testing::assert_closed_oriented(shape.brep());
+    let off = lateral_points(&shape)
+        .into_iter()
+        .map(|x| {
+            let (n, b) = exact.in_normal_plane(x);
+            (n.hypot(b) - 0.4).abs()
+        })
+        .fold(0.0, f64::max);
+    let want = std::f64::consts::PI * 0.16 * exact.length(5.0);
+    let error = (volume(&shape) - want).abs() / want;
+    println!("off the tube {off:.2e}, volume against π r² L {error:.1e}");
+    assert!(off <= 1e-5, "{off:e}");
+    assert!(error < 1e-7, "{error:e}");
+}
+
+/// A thread and a pipe along a helix are the same from 1e-200 to 1e200 of the unit wire,
+/// moved by 300 times its size.
+#[test]
+fn helix_sweeps_are_the_same_from_1e_200_to_1e200() {
+    use super::robustness_tests::check_similar;
+    let pipe = WireSweep {
+        pipe_frame: PipeFrame::Lightest,
+        ..WireSweep::default()
+    };
+    for s in [1e-200, 1e-100, 1.0, 1e100, 1e200] {
+        let o = DVec3::new(3e2, -1e2, 2e2) * s;
+        check_similar(&[helix(3.0, 2.0, 1.5)], &triangle(0.5), &frenet(1e-5), s, o);
+        check_similar(&[helix(3.0, 2.0, 1.5)], &circle(0.4), &pipe, s, o);
+    }
+}
+
+/// A profile reaching past the helix's centre of curvature (1/κ = (r² + c²)/r ≈ 3.54 here,
+/// half a turn of pitch 8) towards its axis folds the sweep: refused, naming the edge.
+#[test]
+fn a_profile_past_the_helixs_centre_of_curvature_is_refused() {
+    let edges = [helix(3.0, 8.0, 0.5)];
+    assert!(sweep(&edges, &triangle(3.4), &[], &frenet(1e-4)).is_ok());
+    let e = sweep(&edges, &triangle(3.7), &[], &frenet(1e-4)).unwrap_err();
+    println!("{e}");
+    assert!(e.to_string().contains("edge 0"), "{e}");
+    assert!(e.to_string().contains("fold"), "{e}");
+}
