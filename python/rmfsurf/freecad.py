@@ -529,11 +529,12 @@ def sweep(wire: Any, profile: Any, *, solid: bool = True, corner: str = "round",
     Returns:
         A Part.Shape: a Part.Solid (or a Part.Shell with ``solid=False``).
     """
-    return sweep_with_report(wire, profile, solid=solid, corner=corner,
-                             corner_radius=corner_radius, tolerance=tolerance, frame=frame,
-                             scale=scale, scale_knots=scale_knots, method=method,
-                             end_profile=end_profile, sections=sections,
-                             pipe_frame=pipe_frame)[0]
+    # The report's figures are measured when asked for (a helix's report costs more than
+    # its sweep): not here.
+    return _swept(wire, profile, solid=solid, corner=corner, corner_radius=corner_radius,
+                  tolerance=tolerance, frame=frame, scale=scale, scale_knots=scale_knots,
+                  method=method, end_profile=end_profile, sections=sections,
+                  pipe_frame=pipe_frame)[0]
 
 
 def sweep_with_report(wire: Any, profile: Any, *, solid: bool = True, corner: str = "round",
@@ -550,6 +551,21 @@ def sweep_with_report(wire: Any, profile: Any, *, solid: bool = True, corner: st
     distance, RMF angle error, parameter-line orthogonality, singularity margin, face
     count, frame error). `end_profile`, `sections` and `pipe_frame` as for
     :func:`sweep`."""
+    shape, result = _swept(wire, profile, solid=solid, corner=corner,
+                           corner_radius=corner_radius, tolerance=tolerance, twist=twist,
+                           closure_symmetry=closure_symmetry, frame=frame, scale=scale,
+                           scale_knots=scale_knots, method=method, end_profile=end_profile,
+                           sections=sections, pipe_frame=pipe_frame)
+    return shape, result.report()
+
+
+def _swept(wire: Any, profile: Any, *, solid: bool, corner: str,
+           corner_radius: Optional[float], tolerance: float, frame: SweepFrame,
+           scale: Tuple[float, float], scale_knots: Optional[Sequence[Tuple[float, float]]],
+           method: str, end_profile: Any, sections: Optional[Sequence[Tuple[Any, ...]]],
+           pipe_frame: str, twist: float = 0.0, closure_symmetry: int = 0
+           ) -> Tuple[Any, Shape]:
+    """The Part.Shape of :func:`sweep_with_report`'s sweep and the library's shape."""
     tolerance = _core.finite(tolerance, "tolerance", positive=True)
     edges = _path_edges(wire, "wire")
     guide = _frame_guide(frame)
@@ -573,7 +589,7 @@ def sweep_with_report(wire: Any, profile: Any, *, solid: bool = True, corner: st
                         closure_symmetry=closure_symmetry, frame=frame, scale=scale,
                         scale_knots=scale_knots, method=method, end_profile=end_outer,
                         end_holes=end_holes, sections=through, pipe_frame=pipe_frame)
-    return part_shape(result, min(tolerance, 1e-6)), result.report()
+    return part_shape(result, min(tolerance, 1e-6)), result
 
 
 # ---------------------------------------------------------------------------------------
