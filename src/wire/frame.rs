@@ -32,6 +32,7 @@
 //! than the profile's cuts at its ends.
 
 use super::edge::{Chain, Geometry, Joint, JointKind, Piece};
+use super::helix::{Helix, Screw};
 use super::law::{law_jet, law_normal, FrameLaw, LawAngle, Unwrapped, LAW_SAMPLES};
 use super::profile::{Profile, SupportTable};
 use super::scale::{arc_segments, ScaleLaw};
@@ -119,6 +120,8 @@ pub(crate) struct Framed {
     pub length: f64,
     /// Distance of the PH spline from the curve (0 for lines and arcs).
     pub distance: f64,
+    /// A helix swept by its screw motion.
+    pub screw: Option<Screw>,
     /// Largest angle between the frames and the exact (twisted) RMF, where it is known
     /// while building (lines and arcs).
     pub angle_error: f64,
@@ -147,9 +150,11 @@ pub(crate) struct Transport {
 struct Spine {
     curve: PiecewiseCurve,
     ph: Option<PhSpline>,
-    /// A Möbius or RRMF spine's exact rational RMF.
+    /// A Möbius or RRMF spine's exact rational RMF, or a helix's Frenet frames.
     exact: Option<ExactFrames>,
     distance: f64,
+    /// A helix swept by its screw motion (module `helix`).
+    screw: Option<Screw>,
 }
 
 /// The exact rational RMF of a Möbius or RRMF spine (Bartoň, Jüttler & Wang; Farouki,
@@ -238,6 +243,7 @@ fn spines(chain: &Chain, options: &FrameOptions) -> Result<Vec<Spine>> {
                 ph: None,
                 exact: None,
                 distance: 0.0,
+                screw: None,
             };
             Ok(match &piece.geometry {
                 Geometry::Line { a, b } => exact(line_curve(*a, *b)),
@@ -255,39 +261,44 @@ fn spines(chain: &Chain, options: &FrameOptions) -> Result<Vec<Spine>> {
                 Geometry::Curve(c) if options.method != SpineMethod::PhRmf => {
                     exact_spine(piece, c, options.method, tolerance, units)?
                 }
-                Geometry::Curve(c) => {
-                    let (ph, distance) = match given_ph_spline(c) {
-                        Some(ph) => (ph, 0.0),
-                        None => {
-                            let centred = c.similar(units.scale, DVec3::ZERO);
-                            let fit = ph_spline_approximate(
-                                &centred,
-                                c.breaks(),
-                                units.length(tolerance),
-                            )
-                            .with_context(|| {
-                                format!(
-                                    "edge {} (its coordinates taken about the wire's centre {})",
-                                    piece.edge, units.origin
-                                )
-                            })?;
-                            let scale = 1.0 / units.scale;
-                            (
-                                fit.spline.similar(scale, DVec3::ZERO)?,
-                                fit.max_distance * scale,
-                            )
-                        }
-                    };
-                    Spine {
-                        curve: ph.curve().clone(),
-                        ph: Some(ph),
-                        exact: None,
-                        distance,
-                    }
-                }
+                Geometry::Curve(c) => match screw_spine(chain, c, options)? {
+                    Some(spine) => spine,
+                    None => ph_spine(piece, c, options)?,
+                },
             })
         })
         .collect()
+}
+
+/// The PH cubic spline of a curve edge within the tolerance (module `ph_cubic::approximate`),
+/// or the curve itself where it is one.
+fn ph_spine(piece: &Piece, c: &PiecewiseCurve, options: &FrameOptions) -> Result<Spine> {
+    let (tolerance, units) = (options.tolerance, options.units);
+    let (ph, distance) = match given_ph_spline(c) {
+        Some(ph) => (ph, 0.0),
+        None => {
+            let centred = c.similar(units.scale, DVec3::ZERO);
+            let fit = ph_spline_approximate(&centred, c.breaks(), units.length(tolerance))
+                .with_context(|| {
+                    format!(
+                        "edge {} (its coordinates taken about the wire's centre {})",
+                        piece.edge, units.origin
+                    )
+                })?;
+            let scale = 1.0 / units.scale;
+            (
+                fit.spline.similar(scale, DVec3::ZERO)?,
+                fit.max_distance * scale,
+            )
+        }
+    };
+    Ok(Spine {
+        curve: ph.curve().clone(),
+        ph: Some(ph),
+        exact: None,
+        distance,
+        screw: None,
+    })
 }
 
 /// The Möbius or RRMF spine of a curve within `tolerance`, with its exact rational RMF,
@@ -316,7 +327,35 @@ fn exact_spine(
         ph: None,
         exact: Some(ExactFrames::new(frames, spine)),
         distance: fit.distance,
+        screw: None,
     })
+}
+
+/// The spine of a curve edge that is a circular helix, swept by its screw motion (module
+/// `helix`), where the sweep is the screw motion's image of the profile: one open edge
+/// under the Frenet frame untwisted at one scale (its normals within the law's accuracy of
+/// the helix's), or a pipe in its lightest faces. A quarter of the tolerance for the edge's
+/// distance from the helix, half for the advance along the axis.
+fn screw_spine(chain: &Chain, curve: &PiecewiseCurve, options: &FrameOptions) -> Result<Option<Spine>> {
+    let alone = chain.pieces.len() == 1 && !chain.closed;
+    let frenet = options.law == FrameLaw::Frenet && options.twist == 0.0 && options.scale.is_constant();
+    if !alone || !(frenet || options.lightest) {
+        return Ok(None);
+    }
+    let normal = frenet.then(|| law_accuracy(options));
+    let Some(helix) = Helix::fit(curve, 0.25 * options.tolerance, normal) else {
+        return Ok(None);
+    };
+    let Some(spine) = helix.spine(curve.domain(), 0.5 * options.tolerance)? else {
+        return Ok(None);
+    };
+    Ok(Some(Spine {
+        curve: spine.curve.clone(),
+        ph: None,
+        exact: Some(ExactFrames::new(spine.frames, spine.curve)),
+        distance: spine.distance,
+        screw: Some(helix.screw()),
+    }))
 }
 
 /// A curve that is already a PH cubic spline (cubic polynomial segments satisfying (17)).
@@ -658,6 +697,13 @@ fn law_turns(chain: &Chain, spines: &[Spine], options: &FrameOptions) -> Result<
         .iter()
         .zip(spines)
         .map(|(piece, spine)| {
+            if spine.screw.is_some() {
+                // The helix's Frenet frames are followed as they are.
+                return Ok(LawTurn {
+                    turn: 0.0,
+                    uniform: true,
+                });
+            }
             let f2 = orthonormal_to(piece.geometry.start_tangent());
             let (lo, hi) = spine.curve.domain();
             let rmf = match (&piece.geometry, &spine.ph, &spine.exact) {
@@ -719,6 +765,11 @@ fn frame_error(pieces: &[Framed], law: &FrameLaw) -> f64 {
     }
     let mut worst = 0.0f64;
     for framed in pieces {
+        if let Some(screw) = framed.screw {
+            // Measured against the edge's normals where the helix was taken for it.
+            worst = worst.max(screw.normal_angle);
+            continue;
+        }
         let mut angles = Unwrapped::new(law);
         for v in grid_parameters(framed.spine.breaks(), LAW_SAMPLES) {
             let (f2, t) = match (&framed.frame, &framed.piece.geometry) {
@@ -862,6 +913,7 @@ fn frame_piece(
     let Spine {
         curve: spine,
         distance,
+        screw,
         ..
     } = spine;
     Ok(Framed {
@@ -872,6 +924,7 @@ fn frame_piece(
         end,
         length,
         distance,
+        screw,
         angle_error,
         angle_check,
         miters,
@@ -1268,6 +1321,27 @@ impl Margins {
     }
 }
 
+/// The singularity margin along a helix swept by its screw motion: 1 − κ h, h the
+/// profile's reach towards the axis (along the principal normal), the same all along.
+fn screw_margin(framed: &Framed, table: &SupportTable, unit: f64) -> Result<f64> {
+    let screw = framed.screw.expect("a screw piece");
+    let d = DVec2::new(framed.start.f2.dot(screw.normal), framed.start.f3.dot(screw.normal));
+    let reach = table.support(d);
+    let margin = 1.0 - screw.curvature * reach;
+    if margin <= 0.0 {
+        return invalid!(
+            "edge {}: the profile reaches {:.6} towards the helix's axis, past its centre of \
+             curvature at {:.6} (singularity margin g = {:.3e}, Mäurer & Jüttler Cor. 7): the \
+             sweep would fold",
+            framed.piece.edge,
+            reach * unit,
+            unit / screw.curvature,
+            margin
+        );
+    }
+    Ok(margin)
+}
+
 /// The fold check of the sweep (Cor. 7; see the module notes): its margins, or the
 /// refusal naming the edge or joint where the profile reaches past the centre of
 /// curvature. `unit` converts lengths to the caller's units for messages.
@@ -1288,6 +1362,7 @@ pub(crate) fn singularity_margin(
     for framed in &transport.pieces {
         let piece = &framed.piece;
         let margin = match (&piece.geometry, &framed.frame) {
+            _ if framed.screw.is_some() => screw_margin(framed, &table, unit)?,
             (Geometry::Line { .. }, PieceFrame::Constant { f2, f3 }) => {
                 miter_margin(framed, *f2, *f3, &table, unit)?
             }

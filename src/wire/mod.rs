@@ -24,6 +24,7 @@ mod clearance;
 mod corner;
 mod edge;
 mod frame;
+mod helix;
 mod law;
 mod oblique;
 mod profile;
