@@ -144,6 +144,22 @@ impl SpineFactors {
             })
         };
         let d = frame.denominator();
+        let constant = |c: &[f64]| c.iter().all(|&v| v == c[0]);
+        if constant(&spine_weight) && constant(d) && !matches!(tangent, Tangent::OverD2) {
+            // A polynomial spine with polynomial frames: the products with the constant
+            // weights are scalings, and the surface keeps the spine's degree.
+            let (w, d) = (spine_weight[0], d[0]);
+            let scaled = |n: &[DVec3]| n.iter().map(|&n| (n * w).extend(0.0)).collect();
+            return Self {
+                along_spine: x.iter().map(|&h| h * d).collect(),
+                along_f2: scaled(frame.f2_numerator()),
+                along_f3: scaled(frame.f3_numerator()),
+                along_t: match tangent {
+                    Tangent::OverD(t) => Some(scaled(t)),
+                    _ => None,
+                },
+            };
+        }
         let along_spine = product(x, d, |h: DVec4, d: f64| h * d);
         let (along_f2, along_f3) = (
             weighted(frame.f2_numerator()),
@@ -218,7 +234,10 @@ fn tangents(frames: &RationalFrames, tangential: bool) -> Vec<Tangent> {
     let quotients: Option<Vec<Vec<DVec3>>> = frames
         .segments()
         .iter()
-        .map(|f| exact_quotient(&frame_cross(f), f.denominator()))
+        .map(|f| match f.tangent_numerator() {
+            Some(t) => Some(t.to_vec()),
+            None => exact_quotient(&frame_cross(f), f.denominator()),
+        })
         .collect();
     match quotients {
         Some(q) => q.into_iter().map(Tangent::OverD).collect(),

@@ -392,6 +392,44 @@ def test_the_librarys_volume_is_opencascades_adaptive_volume():
         sheet.volume()
 
 
+def test_a_threads_groove_is_its_screw_motion_which_the_kernel_reads_exactly():
+    """A thread's groove — a triangle swept under the Frenet frame along an 8-turn helix
+    made by build123d — is the helix's screw motion: B-spline faces of degree 7 along it
+    with simple knots, fewer poles than build123d's own groove. OpenCascade's fixed-order
+    volume (build123d's ``volume``) is area x length to 1e-6 (4.5e-8 measured; the PH
+    spline's faces were read 2.8e-6 off), and rod - groove is valid and removes what
+    build123d's own Frenet groove removes to 1e-5 (1.7e-6 measured)."""
+    from OCP.BRep import BRep_Tool
+    from OCP.Geom import Geom_BSplineSurface
+    helix = bd.Wire([bd.Helix(pitch=5, height=40, radius=10, center=(0, 0, 5))])
+    plane = bd.Plane(origin=helix @ 0, z_dir=helix % 0)
+    triangle = plane * bd.RegularPolygon(1.5, 3).faces()[0]
+    groove = rocp.sweep(helix, triangle, tolerance=1e-5, frame="frenet")
+    theirs = bd.sweep(triangle, helix, is_frenet=True)
+    poles = {"ours": 0, "theirs": 0}
+    for name, shape in (("ours", groove), ("theirs", theirs)):
+        for face in shape.faces():
+            surface = BRep_Tool.Surface_s(face.wrapped)
+            if not isinstance(surface, Geom_BSplineSurface):
+                continue
+            poles[name] += surface.NbUPoles() * surface.NbVPoles()
+            if name == "ours":
+                inner = [surface.VMultiplicity(i) for i in range(2, surface.NbVKnots())]
+                assert surface.VDegree() == 7 and set(inner) == {1}, inner
+    area = 0.75 * math.sqrt(3) * 1.5 ** 2
+    exact = area * 8 * math.hypot(2 * math.pi * 10, 5)
+    rod = bd.Cylinder(10, 50, align=(bd.Align.CENTER, bd.Align.CENTER, bd.Align.MIN))
+    cut, reference = rod - groove, rod - theirs
+    removed, expected = rod.volume - gk_volume(cut), rod.volume - gk_volume(reference)
+    print("\nthread groove: poles %(ours)d (build123d's %(theirs)d)" % poles,
+          "fixed-order volume off area x length by %.1e," % (groove.volume / exact - 1),
+          "removed %.6f against build123d's %.6f" % (removed, expected))
+    assert poles["ours"] < poles["theirs"]
+    assert abs(groove.volume - exact) <= 1e-6 * exact
+    assert rocp.is_valid(cut) and len(cut.solids()) == 1
+    assert abs(removed - expected) <= 1e-5 * expected
+
+
 def surface_area(surface, tolerance=1e-10):
     """OpenCascade's area of a library surface: one face per knot span of the
     Geom_BSplineSurface (BRepGProp.SurfaceProperties_s integrates a face across C0 knots

@@ -18,6 +18,7 @@ mod surface;
 pub use bernstein::MAX_DEGREE;
 pub use curve::{CurveJet, RationalBezierCurve};
 pub use nurbs::{check_nurbs_counts, NurbsCurve, NurbsSurface};
+pub(crate) use nurbs::{fit_splines, spline_value};
 pub(crate) use piecewise::{check_breaks, locate};
 pub use piecewise::{check_in_domain, PiecewiseCurve, PiecewiseSurface};
 pub use surface::{RationalBezierPatch, SurfaceJet};

@@ -659,6 +659,83 @@ impl NurbsSurface {
             _ => ((u0, 0.0), (0.0, 1.0)),
         }
     }
+    /// The same surface with every interior knot along v simple, where it is C^{p−1} across
+    /// them (a spline's decomposition into patches): each row refitted on the simple knots
+    /// by least squares through its ends at p + 1 points a span, and kept only where every
+    /// row is the same to 1e-12 of its coefficients at each span's middle; `None` otherwise.
+    pub(crate) fn with_simple_knots_v(&self) -> Option<Self> {
+        let p = self.degree_v;
+        let mut breaks = self.knots_v.clone();
+        breaks.dedup();
+        let mut knots = vec![breaks[0]; p + 1];
+        knots.extend_from_slice(&breaks[1..breaks.len() - 1]);
+        knots.extend(std::iter::repeat_n(breaks[breaks.len() - 1], p + 1));
+        let n = knots.len() - p - 1;
+        let mut params = vec![breaks[0]];
+        for w in breaks.windows(2) {
+            params.extend((1..=p + 1).map(|k| w[0] + (w[1] - w[0]) * k as f64 / (p + 2) as f64));
+        }
+        params.push(breaks[breaks.len() - 1]);
+        let checks: Vec<f64> = breaks.windows(2).map(|w| 0.5 * (w[0] + w[1])).collect();
+        // The basis functions at each point, on the old knots and on the new, for all rows.
+        let old = |ts: &[f64]| -> Vec<_> {
+            ts.iter()
+                .map(|&t| basis_functions(&self.knots_v, p, t))
+                .collect()
+        };
+        let (old_params, old_checks) = (old(&params), old(&checks));
+        let new_checks: Vec<_> = checks
+            .iter()
+            .map(|&t| basis_functions(&knots, p, t))
+            .collect();
+        let value = |basis: &(usize, Vec<f64>), coefficients: &[DVec4]| -> DVec4 {
+            basis
+                .1
+                .iter()
+                .enumerate()
+                .map(|(r, &b)| coefficients[basis.0 + r] * b)
+                .sum()
+        };
+        let nv = self.pole_count_v;
+        let rows: Vec<Vec<DVec4>> = (0..self.pole_count_u)
+            .map(|i| {
+                (0..nv)
+                    .map(|j| lift(self.poles[i * nv + j], self.weights[i * nv + j]))
+                    .collect()
+            })
+            .collect();
+        let values: Vec<Vec<DVec4>> = rows
+            .iter()
+            .map(|row| old_params.iter().map(|b| value(b, row)).collect())
+            .collect();
+        let fitted = fit_splines(&knots, p, &params, &values)?;
+        let mut poles = Vec::with_capacity(self.pole_count_u * n);
+        let mut weights = Vec::with_capacity(self.pole_count_u * n);
+        for (row, fitted) in rows.iter().zip(&fitted) {
+            let size = row
+                .iter()
+                .map(|h| h.abs().max_element())
+                .fold(0.0, f64::max);
+            let off = old_checks
+                .iter()
+                .zip(&new_checks)
+                .map(|(a, b)| (value(b, fitted) - value(a, row)).abs().max_element())
+                .fold(0.0, f64::max);
+            let same = off <= 1e-12 * size && fitted.iter().all(|h| h.w > 0.0);
+            if !same {
+                return None;
+            }
+            poles.extend(fitted.iter().map(|&h| project(h)));
+            weights.extend(fitted.iter().map(|h| h.w));
+        }
+        Some(Self {
+            pole_count_v: n,
+            poles,
+            weights,
+            knots_v: knots,
+            ..self.clone()
+        })
+    }
 
     /// The NURBS curve of boundary `side` (see [`Self::boundary_line`]).
     pub(crate) fn boundary_curve(&self, side: usize) -> NurbsCurve {
@@ -703,6 +780,164 @@ impl NurbsSurface {
             knots_v: clamped_knots(surface.v_breaks(), pv),
         }
     }
+}
+/// The p + 1 B-spline basis functions of degree p not zero at t on clamped `knots`, and the
+/// index of the first (Cox–de Boor; Piegl & Tiller, *The NURBS Book*, A2.2).
+pub(crate) fn basis_functions(knots: &[f64], p: usize, t: f64) -> (usize, Vec<f64>) {
+    let n = knots.len() - p - 1;
+    let span = if t >= knots[n] {
+        n - 1
+    } else {
+        knots.partition_point(|&k| k <= t).max(p + 1) - 1
+    };
+    let mut values = vec![0.0; p + 1];
+    values[0] = 1.0;
+    let (mut left, mut right) = (vec![0.0; p + 1], vec![0.0; p + 1]);
+    for j in 1..=p {
+        left[j] = t - knots[span + 1 - j];
+        right[j] = knots[span + j] - t;
+        let mut saved = 0.0;
+        for r in 0..j {
+            let temp = values[r] / (right[r + 1] + left[j - r]);
+            values[r] = saved + right[r + 1] * temp;
+            saved = left[j - r] * temp;
+        }
+        values[j] = saved;
+    }
+    (span - p, values)
+}
+
+/// The spline of degree p on clamped `knots` with `coefficients`, at t.
+pub(crate) fn spline_value<T: SplineValue>(
+    knots: &[f64],
+    p: usize,
+    coefficients: &[T],
+    t: f64,
+) -> T {
+    let (first, values) = basis_functions(knots, p, t);
+    values
+        .iter()
+        .enumerate()
+        .fold(T::default(), |sum, (r, &b)| {
+            sum + coefficients[first + r] * b
+        })
+}
+
+/// What a spline's coefficients may be: vectors of f64.
+pub(crate) trait SplineValue:
+    Copy
+    + Default
+    + std::ops::Add<Output = Self>
+    + std::ops::Sub<Output = Self>
+    + std::ops::Mul<f64, Output = Self>
+    + std::ops::Div<f64, Output = Self>
+{
+}
+
+impl<T> SplineValue for T where
+    T: Copy
+        + Default
+        + std::ops::Add<Output = T>
+        + std::ops::Sub<Output = T>
+        + std::ops::Mul<f64, Output = T>
+        + std::ops::Div<f64, Output = T>
+{
+}
+
+/// For each of `rows`, the spline of degree p on clamped `knots` through the row's values
+/// at the first and last of `params` (the knots' ends), closest to them at the others in
+/// least squares: its coefficients (the normal equations, banded, by one Cholesky
+/// factorization for all rows); `None` where the points do not determine it.
+pub(crate) fn fit_splines<T: SplineValue>(
+    knots: &[f64],
+    p: usize,
+    params: &[f64],
+    rows: &[Vec<T>],
+) -> Option<Vec<Vec<T>>> {
+    let n = knots.len() - p - 1;
+    // The interior coefficients 1 … n − 2; the matrix's band: column j − p … j + p of row j.
+    let m = n.checked_sub(2)?;
+    let bases: Vec<(usize, Vec<f64>)> = params
+        .iter()
+        .map(|&t| basis_functions(knots, p, t))
+        .collect();
+    let mut matrix = vec![vec![0.0; m]; m];
+    for (start, b) in &bases {
+        for (r, &wr) in b.iter().enumerate() {
+            let i = start + r;
+            if i == 0 || i == n - 1 {
+                continue;
+            }
+            for (c, &wc) in b.iter().enumerate() {
+                let j = start + c;
+                if j != 0 && j != n - 1 {
+                    matrix[i - 1][j - 1] += wr * wc;
+                }
+            }
+        }
+    }
+    let factor = cholesky(matrix, p)?;
+    rows.iter()
+        .map(|values| {
+            let (first, last) = (values[0], values[values.len() - 1]);
+            let mut rhs = vec![T::default(); m];
+            for ((start, b), &value) in bases.iter().zip(values) {
+                let mut target = value;
+                for (r, &w) in b.iter().enumerate() {
+                    match start + r {
+                        0 => target = target - first * w,
+                        i if i == n - 1 => target = target - last * w,
+                        _ => {}
+                    }
+                }
+                for (r, &w) in b.iter().enumerate() {
+                    let i = start + r;
+                    if i != 0 && i != n - 1 {
+                        rhs[i - 1] = rhs[i - 1] + target * w;
+                    }
+                }
+            }
+            let mut coefficients = vec![first];
+            coefficients.extend(cholesky_solve(&factor, p, rhs));
+            coefficients.push(last);
+            Some(coefficients)
+        })
+        .collect()
+}
+
+/// The lower factor L (L Lᵀ = a) of a symmetric positive definite matrix of band width p;
+/// `None` where it is not positive definite.
+fn cholesky(mut a: Vec<Vec<f64>>, p: usize) -> Option<Vec<Vec<f64>>> {
+    let n = a.len();
+    for j in 0..n {
+        let from = j.saturating_sub(p);
+        let d = a[j][j] - (from..j).map(|k| a[j][k] * a[j][k]).sum::<f64>();
+        if d.is_nan() || d <= 0.0 {
+            return None;
+        }
+        a[j][j] = d.sqrt();
+        for i in j + 1..n.min(j + p + 1) {
+            let from = i.saturating_sub(p);
+            a[i][j] = (a[i][j] - (from..j).map(|k| a[i][k] * a[j][k]).sum::<f64>()) / a[j][j];
+        }
+    }
+    Some(a)
+}
+
+/// x with L Lᵀ x = b, L from [`cholesky`] of band width p.
+fn cholesky_solve<T: SplineValue>(l: &[Vec<f64>], p: usize, b: Vec<T>) -> Vec<T> {
+    let n = b.len();
+    let mut y = vec![T::default(); n];
+    for i in 0..n {
+        let s = (i.saturating_sub(p)..i).fold(b[i], |s, k| s - y[k] * l[i][k]);
+        y[i] = s / l[i][i];
+    }
+    let mut x = vec![T::default(); n];
+    for i in (0..n).rev() {
+        let s = (i + 1..n.min(i + p + 1)).fold(y[i], |s, k| s - x[k] * l[k][i]);
+        x[i] = s / l[i][i];
+    }
+    x
 }
 
 /// The clamped knot vector with full-multiplicity interior knots at `breaks`.
@@ -813,6 +1048,43 @@ mod tests {
                 assert!(e < 1e-12, "degree {degree}, t = {u}: {e:e}");
             }
         }
+    }
+
+    /// A spline surface of degree (2, 4) with simple knots along v, decomposed into patches
+    /// (full-multiplicity knots): its simple knots come back, the same coefficients to
+    /// rounding; a surface with a corner along v (a knot of full multiplicity in the
+    /// original) keeps its knots.
+    #[test]
+    fn a_decomposed_spline_surface_gets_its_simple_knots_back() {
+        let (nu, nv) = (3, 9);
+        let knots_v = vec![
+            0.0, 0.0, 0.0, 0.0, 0.0, 0.7, 1.1, 1.5, 2.6, 3.0, 3.0, 3.0, 3.0, 3.0,
+        ];
+        let poles: Vec<DVec3> = (0..nu * nv)
+            .map(|k| {
+                let (i, j) = ((k / nv) as f64, (k % nv) as f64);
+                DVec3::new(j, i + 0.3 * (1.7 * j).sin(), (0.5 * j + i).cos())
+            })
+            .collect();
+        let weights: Vec<f64> = (0..nu * nv).map(|k| [1.0, 0.8, 1.0][k / nv]).collect();
+        let knots_u = vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0];
+        let smooth =
+            NurbsSurface::new(2, 4, nu, nv, poles, Some(weights), knots_u, knots_v).unwrap();
+        let decomposed = NurbsSurface::from_piecewise(&smooth.to_piecewise().unwrap()).unwrap();
+        assert_eq!(decomposed.pole_count_v, 4 * 5 + 1);
+        let back = decomposed.with_simple_knots_v().unwrap();
+        assert_eq!(back.knots_v, smooth.knots_v);
+        for (a, b) in back.poles.iter().zip(&smooth.poles) {
+            assert!(a.distance(*b) < 1e-12, "{a} {b}");
+        }
+        // The weights up to one factor (the decomposition normalizes them).
+        let factor = back.weights[0] / smooth.weights[0];
+        for (a, b) in back.weights.iter().zip(&smooth.weights) {
+            assert!((a - factor * b).abs() < 1e-12 * a, "{a} {b}");
+        }
+        let mut cornered = decomposed.clone();
+        cornered.poles[4 + 1] += DVec3::new(0.0, 0.0, 1e-6);
+        assert!(cornered.with_simple_knots_v().is_none());
     }
 
     #[test]

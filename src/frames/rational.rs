@@ -59,6 +59,9 @@ pub struct RationalFrameSegment {
     f2: Vec<DVec3>,
     f3: Vec<DVec3>,
     denominator: Vec<f64>,
+    /// The tangent's numerator over the same denominator, where the frames carry one of
+    /// their own degree (N₂ × N₃ is of twice it over d²).
+    tangent: Option<Vec<DVec3>>,
 }
 
 impl RationalFrameSegment {
@@ -80,7 +83,23 @@ impl RationalFrameSegment {
             f2,
             f3,
             denominator,
+            tangent: None,
         })
+    }
+
+    /// The segment with the tangent's numerator `t` over its denominator (finite, of its
+    /// degree): frames close to orthonormal whose cross product is of twice the degree.
+    pub(crate) fn with_tangent(mut self, t: Vec<DVec3>) -> Result<Self> {
+        if t.len() != self.denominator.len() || t.iter().any(|v| !v.is_finite()) {
+            return invalid!("a frame's tangent numerator must be finite, of the frame's degree");
+        }
+        self.tangent = Some(t);
+        Ok(self)
+    }
+
+    /// The tangent's numerator over the denominator, where the segment carries one.
+    pub(crate) fn tangent_numerator(&self) -> Option<&[DVec3]> {
+        self.tangent.as_deref()
     }
 
     pub fn degree(&self) -> usize {

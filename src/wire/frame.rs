@@ -333,28 +333,41 @@ fn exact_spine(
 
 /// The spine of a curve edge that is a circular helix, swept by its screw motion (module
 /// `helix`), where the sweep is the screw motion's image of the profile: one open edge
-/// under the Frenet frame untwisted at one scale (its normals within the law's accuracy of
-/// the helix's), or a pipe in its lightest faces. A quarter of the tolerance for the edge's
-/// distance from the helix, half for the advance along the axis.
-fn screw_spine(chain: &Chain, curve: &PiecewiseCurve, options: &FrameOptions) -> Result<Option<Spine>> {
+/// under the Frenet frame untwisted at one scale, or a pipe in its lightest faces. The
+/// edge's distance from the helix and, under the Frenet frame, its principal normals' angle
+/// to the helix's at the profile's reach take at most three quarters of the tolerance (each
+/// at most half), the spline of the screw motion the rest.
+fn screw_spine(
+    chain: &Chain,
+    curve: &PiecewiseCurve,
+    options: &FrameOptions,
+) -> Result<Option<Spine>> {
     let alone = chain.pieces.len() == 1 && !chain.closed;
-    let frenet = options.law == FrameLaw::Frenet && options.twist == 0.0 && options.scale.is_constant();
+    let frenet =
+        options.law == FrameLaw::Frenet && options.twist == 0.0 && options.scale.is_constant();
     if !alone || !(frenet || options.lightest) {
         return Ok(None);
     }
-    let normal = frenet.then(|| law_accuracy(options));
-    let Some(helix) = Helix::fit(curve, 0.25 * options.tolerance, normal) else {
+    let (tolerance, reach) = (options.tolerance, options.reach);
+    let normal = frenet.then(|| (0.5 * tolerance / reach.max(f64::MIN_POSITIVE)).min(1e-3));
+    let Some(helix) = Helix::fit(curve, 0.5 * tolerance, normal) else {
         return Ok(None);
     };
-    let Some(spine) = helix.spine(curve.domain(), 0.5 * options.tolerance)? else {
+    let used = helix.off_at(reach);
+    if used > 0.75 * tolerance {
+        return Ok(None);
+    }
+    let Some(spine) = helix.spine(curve.domain(), tolerance - used, reach)? else {
         return Ok(None);
     };
+    let mut screw = helix.screw();
+    screw.normal_angle += spine.frame_error;
     Ok(Some(Spine {
         curve: spine.curve.clone(),
         ph: None,
         exact: Some(ExactFrames::new(spine.frames, spine.curve)),
         distance: spine.distance,
-        screw: Some(helix.screw()),
+        screw: Some(screw),
     }))
 }
 
@@ -1325,7 +1338,10 @@ impl Margins {
 /// profile's reach towards the axis (along the principal normal), the same all along.
 fn screw_margin(framed: &Framed, table: &SupportTable, unit: f64) -> Result<f64> {
     let screw = framed.screw.expect("a screw piece");
-    let d = DVec2::new(framed.start.f2.dot(screw.normal), framed.start.f3.dot(screw.normal));
+    let d = DVec2::new(
+        framed.start.f2.dot(screw.normal),
+        framed.start.f3.dot(screw.normal),
+    );
     let reach = table.support(d);
     let margin = 1.0 - screw.curvature * reach;
     if margin <= 0.0 {

@@ -3,7 +3,10 @@
 //! faces lies, in the helix's normal plane through it, on the profile placed in that
 //! plane's Frenet frame; every point of a pipe is at the profile's radius from the helix;
 //! the volume is the profile's area times the helix's length (the first moment of a
-//! centred profile integrates to 0).
+//! centred profile integrates to 0). A lone helix edge under the Frenet frame, or a pipe
+//! along it, is swept by its screw motion (module `helix`): faces of degree 7 along it with
+//! simple knots, eight spans a turn; what the screw motion does not carry takes the PH
+//! spline.
 
 use super::options_tests::helix;
 use super::tests::{circle, triangle, volume};
@@ -114,6 +117,34 @@ fn hermite_helix(radius: f64, pitch: f64, turns: f64) -> Edge {
     Edge::Curve(PiecewiseCurve::new(segments, breaks).unwrap())
 }
 
+/// The poles along the spine of every B-spline face of the model of more than one span
+/// along v, where their interior knots there are all simple (the screw motion's faces);
+/// `None` if a face has a multiple one (patches joined C⁰: the PH spline's).
+fn smooth_faces(shape: &Shape) -> Option<Vec<usize>> {
+    let mut poles = Vec::new();
+    for face in &shape.brep().faces {
+        let crate::model::BrepSurface::Nurbs(s) = &face.surface else {
+            continue;
+        };
+        let knots = s.knots_v();
+        let (first, last) = (knots[0], knots[knots.len() - 1]);
+        let interior: Vec<f64> = knots
+            .iter()
+            .copied()
+            .filter(|&k| k > first && k < last)
+            .collect();
+        if interior.is_empty() {
+            continue; // one span: along a line or an arc
+        }
+        if interior.windows(2).any(|w| w[0] == w[1]) {
+            return None;
+        }
+        assert_eq!(s.degree_v(), 7);
+        poles.push(s.pole_count_v());
+    }
+    Some(poles)
+}
+
 fn frenet(tolerance: f64) -> WireSweep {
     WireSweep {
         frame: SweepFrame::Frenet,
@@ -145,6 +176,9 @@ fn a_thread_is_the_screw_sweep_of_its_profile() {
         let shape = sweep(&[edge], &triangle(0.5), &[], &frenet(tolerance)).unwrap();
         assert!(shape.is_solid());
         crate::testing::assert_closed_oriented(shape.brep());
+        // Two turns: sixteen spans of degree 7.
+        let poles = smooth_faces(&shape).expect("the screw motion's faces");
+        assert!(poles.iter().all(|&n| n == 16 + 7), "{poles:?}");
         let off = lateral_points(&shape)
             .into_iter()
             .map(|x| {
@@ -185,6 +219,7 @@ fn a_pipe_along_a_helix_is_the_tube_about_it() {
     };
     let shape = sweep(&[helix(3.0, 2.0, 5.0)], &circle(0.4), &[], &options).unwrap();
     crate::testing::assert_closed_oriented(shape.brep());
+    assert!(smooth_faces(&shape).is_some());
     let off = lateral_points(&shape)
         .into_iter()
         .map(|x| {
@@ -197,6 +232,56 @@ fn a_pipe_along_a_helix_is_the_tube_about_it() {
     println!("off the tube {off:.2e}, volume against π r² L {error:.1e}");
     assert!(off <= 1e-5, "{off:e}");
     assert!(error < 1e-7, "{error:e}");
+}
+
+/// What the screw motion does not carry takes the PH spline: a conical spiral, a helix
+/// under the RMF, a twisted Frenet frame, a scale law, a helix after a line.
+#[test]
+fn curves_and_frames_the_screw_motion_does_not_carry_take_the_ph_spline() {
+    let spiral = {
+        let (points, tangents): (Vec<DVec3>, Vec<DVec3>) = (0..=192)
+            .map(|i| {
+                let t = TAU * 2.0 * i as f64 / 192.0;
+                let (r, h) = (3.0 + 0.02 * t, 2.0 / TAU);
+                (
+                    DVec3::new(r * t.cos(), r * t.sin(), h * t),
+                    DVec3::new(
+                        0.02 * t.cos() - r * t.sin(),
+                        0.02 * t.sin() + r * t.cos(),
+                        h,
+                    ),
+                )
+            })
+            .unzip();
+        let spline = crate::ph_cubic::ph_spline_hermite(&points, &tangents).unwrap();
+        Edge::Curve(spline.into_curve())
+    };
+    let twisted = WireSweep {
+        twist: 0.5,
+        ..frenet(1e-5)
+    };
+    let scaled = WireSweep {
+        scale: [1.0, 0.8],
+        ..frenet(1e-5)
+    };
+    // Tangent to the helix at its start, (3, 0, 0) along (0, 3, 1/π).
+    let lead_in = vec![
+        super::tests::line([3.0, -3.0, -1.0 / std::f64::consts::PI], [3.0, 0.0, 0.0]),
+        helix(3.0, 2.0, 1.0),
+    ];
+    let cases: [(&str, Vec<Edge>, WireSweep); 5] = [
+        ("conical spiral", vec![spiral], frenet(1e-5)),
+        ("RMF", vec![helix(3.0, 2.0, 1.0)], WireSweep::default()),
+        ("twisted Frenet", vec![helix(3.0, 2.0, 1.0)], twisted),
+        ("scale law", vec![helix(3.0, 2.0, 1.0)], scaled),
+        ("after a line", lead_in, frenet(1e-5)),
+    ];
+    for (name, edges, options) in cases {
+        let shape = sweep(&edges, &triangle(0.5), &[], &options).unwrap();
+        assert!(smooth_faces(&shape).is_none(), "{name}");
+    }
+    let screw = sweep(&[helix(3.0, 2.0, 1.0)], &triangle(0.5), &[], &frenet(1e-5)).unwrap();
+    assert!(smooth_faces(&screw).is_some());
 }
 
 /// A thread and a pipe along a helix are the same from 1e-200 to 1e200 of the unit wire,

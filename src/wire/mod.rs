@@ -9,6 +9,7 @@
 //! | `profile` | the cross-section's loops split at their corners, their orientation, extent (support function) and symmetry |
 //! | `frame` | one RMF along the whole wire: constant on lines, the rational frame of arcs, the PH cubic rational RMF (Mäurer & Jüttler (29), (36)–(41)) on curves; twist, closure, the Cor. 7 margin |
 //! | `law` | the Frenet frame, a fixed direction and a guide curve as turns against the RMF (θ' = τ for Frenet; the guide's crossing of each normal plane), unwrapped, their accuracy |
+//! | `helix` | a lone circular helix edge under the Frenet frame, or a pipe along it, swept by the helix's screw motion: one smooth spline of the circle for spine and frames |
 //! | `blend` | sweeps between two profiles or through sections: the profiles matched loop by loop, over common denominators, the blend as sums of scaled sweeps |
 //! | `scale` | the scale law σ piecewise linear in arc length (the wire cut at its knots), as polynomials in each piece's parameter (exact on lines and PH pieces) |
 //! | `oblique` | the fold check of a profile drawn in a plane across the wire other than the normal plane |
@@ -91,7 +92,9 @@ pub enum SweepFrame {
     /// The Frenet frame: f₂ along the principal normal at the start, then turning against
     /// the RMF by the curve's torsion — the screw motion of a helix, so a thread's edges are
     /// helices. Where the curvature vanishes (lines, inflections) or the normal jumps
-    /// (joints) the frame keeps its angle instead of flipping.
+    /// (joints) the frame keeps its angle instead of flipping. An open wire of one curve
+    /// edge that is a circular helix is swept by the helix's screw motion itself: faces of
+    /// degree 7 along it with simple knots, eight spans a turn.
     Frenet,
     /// f₂ along this direction projected onto the normal plane: the profile keeps its
     /// relation to the axis (OpenCascade's binormal mode). Refused where the direction is
@@ -118,7 +121,8 @@ pub enum PipeFrame {
     /// its parameter lines are not orthogonal (the report's parameter cosine says how far).
     /// Taken where the sweep allows it — an open wire, the RMF frame law untwisted, the PH
     /// method, one profile all along — and the RMF elsewhere; lines and arcs alike either
-    /// way.
+    /// way. Along an open wire of one curve edge that is a circular helix, the helix's screw
+    /// motion: degree 7 along it with simple knots, eight spans a turn.
     Lightest,
 }
 

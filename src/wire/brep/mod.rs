@@ -533,10 +533,16 @@ pub(crate) fn build(
         .collect::<Result<_>>()?;
     let nurbs: Vec<Vec<Vec<NurbsSurface>>> = surfaces
         .iter()
-        .map(|loops| {
+        .zip(&transport.pieces)
+        .map(|(loops, framed)| {
             loops
                 .iter()
-                .map(|faces| faces.iter().map(NurbsSurface::from_piecewise).collect())
+                .map(|faces| {
+                    faces
+                        .iter()
+                        .map(|s| face_nurbs(s, framed.screw.is_some()))
+                        .collect()
+                })
                 .collect::<Result<_>>()
         })
         .collect::<Result<_>>()?;
@@ -659,6 +665,16 @@ pub(crate) fn build(
             .map(|p| placement.curve_to_user(&p.spine))
             .collect(),
         placement,
+    })
+}
+
+/// A lateral face as one NURBS: along a screw piece (one spline along the helix, module
+/// `helix`) with simple knots along the spine where the patches join that smoothly.
+fn face_nurbs(surface: &PiecewiseSurface, screw: bool) -> Result<NurbsSurface> {
+    let nurbs = NurbsSurface::from_piecewise(surface)?;
+    Ok(match screw {
+        true => nurbs.with_simple_knots_v().unwrap_or(nurbs),
+        false => nurbs,
     })
 }
 
