@@ -32,7 +32,7 @@
 //! than the profile's cuts at its ends.
 
 use super::edge::{Chain, Geometry, Joint, JointKind, Piece};
-use super::helix::{Helix, Screw};
+use super::helix::{Follow, Helix, Screw};
 use super::law::{law_jet, law_normal, FrameLaw, LawAngle, Unwrapped, LAW_SAMPLES};
 use super::profile::{Profile, SupportTable};
 use super::scale::{arc_segments, ScaleLaw};
@@ -333,24 +333,29 @@ fn exact_spine(
 
 /// The spine of a curve edge that is a circular helix, swept by its screw motion (module
 /// `helix`), where the sweep is the screw motion's image of the profile: one open edge
-/// under the Frenet frame untwisted at one scale, or a pipe in its lightest faces. The
-/// edge's distance from the helix and, under the Frenet frame, its principal normals' angle
-/// to the helix's at the profile's reach take at most three quarters of the tolerance (each
-/// at most half), the spline of the screw motion the rest.
+/// under the Frenet frame or a direction along the helix's axis, untwisted at one scale, or
+/// a pipe in its lightest faces. The edge's distance from the helix and, under a frame law,
+/// the angle between what the law follows along the edge and the screw motion's frames at
+/// the profile's reach take at most three quarters of the tolerance (each at most half), the
+/// spline of the screw motion the rest.
 fn screw_spine(
     chain: &Chain,
     curve: &PiecewiseCurve,
     options: &FrameOptions,
 ) -> Result<Option<Spine>> {
     let alone = chain.pieces.len() == 1 && !chain.closed;
-    let frenet =
-        options.law == FrameLaw::Frenet && options.twist == 0.0 && options.scale.is_constant();
-    if !alone || !(frenet || options.lightest) {
+    let untwisted = options.twist == 0.0 && options.scale.is_constant();
+    let follow = match &options.law {
+        FrameLaw::Frenet if untwisted => Some(Follow::Normal),
+        FrameLaw::Fixed(d) if untwisted => Some(Follow::Direction(*d)),
+        _ => None,
+    };
+    if !alone || (follow.is_none() && !options.lightest) {
         return Ok(None);
     }
     let (tolerance, reach) = (options.tolerance, options.reach);
-    let normal = frenet.then(|| (0.5 * tolerance / reach.max(f64::MIN_POSITIVE)).min(1e-3));
-    let Some(helix) = Helix::fit(curve, 0.5 * tolerance, normal) else {
+    let limit = (0.5 * tolerance / reach.max(f64::MIN_POSITIVE)).min(1e-3);
+    let Some(helix) = Helix::fit(curve, 0.5 * tolerance, follow.map(|f| (f, limit))) else {
         return Ok(None);
     };
     let used = helix.off_at(reach);

@@ -71,8 +71,11 @@ pub(crate) struct Helix {
     end: f64,
     /// Largest distance of the edge's samples from the helix.
     deviation: f64,
-    /// Largest angle between the edge's principal normals and the helix's, where measured.
+    /// Largest angle between what the frames follow along the edge and the helix's frames
+    /// turned by `turn`, where measured.
     normal_angle: f64,
+    /// The constant turn of the frames from the helix's Frenet frames about the tangent.
+    turn: f64,
 }
 
 /// A piece swept by a helix's screw motion: its frames are the helix's Frenet frames within
@@ -87,6 +90,15 @@ pub(crate) struct Screw {
     pub normal: DVec3,
 }
 
+/// What a sweep's frames follow along a helix, each the screw motion's image of its start:
+/// the principal normal (Frenet), or a direction's projection onto the normal plane (a
+/// fixed direction along the helix's axis: the Frenet frame turned by a constant).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Follow {
+    Normal,
+    Direction(DVec3),
+}
+
 /// The spine of a helix edge and its Frenet frames, with its largest distance from the edge.
 pub(crate) struct HelixSpine {
     pub curve: PiecewiseCurve,
@@ -97,9 +109,14 @@ pub(crate) struct HelixSpine {
 }
 
 impl Helix {
-    /// The helix within `within` of `curve`, whose principal normal is within `normal`
-    /// radians of the curve's where given; `None` where the curve is not one.
-    pub(crate) fn fit(curve: &PiecewiseCurve, within: f64, normal: Option<f64>) -> Option<Self> {
+    /// The helix within `within` of `curve`, whose Frenet frames turned by a constant
+    /// follow what `follow` names within its angle where given; `None` where the curve is
+    /// not one.
+    pub(crate) fn fit(
+        curve: &PiecewiseCurve,
+        within: f64,
+        follow: Option<(Follow, f64)>,
+    ) -> Option<Self> {
         let fit_points = samples(curve, FIT_SAMPLES);
         let tangents: Option<Vec<DVec3>> = fit_points
             .iter()
@@ -124,6 +141,7 @@ impl Helix {
             end: 0.0,
             deviation: 0.0,
             normal_angle: 0.0,
+            turn: 0.0,
         };
         let mut angles = helix.unwrapped(fit_points.iter().map(|s| s.0))?;
         if angles[angles.len() - 1] < angles[0] {
@@ -138,7 +156,7 @@ impl Helix {
         helix.advance = advance;
         helix.start = angles[0];
         helix.end = angles[angles.len() - 1];
-        (helix.deviation, helix.normal_angle) = helix.distance_from(curve, normal)?;
+        (helix.deviation, helix.normal_angle, helix.turn) = helix.distance_from(curve, follow)?;
         (helix.deviation <= within && helix.end > helix.start).then_some(helix)
     }
 
@@ -166,24 +184,41 @@ impl Helix {
     }
 
     /// The largest distance of the curve's samples from the helix (from the helix's point
-    /// at the sample's angle: a bound on the distance) and, where `normal` is given, the
-    /// largest angle between their principal normals; `None` where the angle does not
-    /// advance or the normals differ by more than `normal`.
-    fn distance_from(&self, curve: &PiecewiseCurve, normal: Option<f64>) -> Option<(f64, f64)> {
+    /// at the sample's angle: a bound on the distance) and, where `follow` is given, the
+    /// largest angle between what it follows along the curve and the helix's frames turned
+    /// by the constant that makes them agree at the start, with that turn; `None` where the
+    /// angle does not advance or the frames differ by more than `follow`'s angle.
+    fn distance_from(
+        &self,
+        curve: &PiecewiseCurve,
+        follow: Option<(Follow, f64)>,
+    ) -> Option<(f64, f64, f64)> {
         let points = samples(curve, CHECK_SAMPLES);
         let angles = self.unwrapped(points.iter().map(|s| s.0))?;
-        let (mut distance, mut angle) = (0.0f64, 0.0f64);
+        let (mut distance, mut angle, mut turn) = (0.0f64, 0.0f64, None);
         for ((p, d1, d2), &theta) in points.iter().zip(&angles) {
             distance = distance.max(p.distance(self.point(theta)));
-            if let Some(limit) = normal {
-                let own = d1.cross(*d2).cross(*d1).try_normalize()?;
-                angle = angle.max(own.angle_between(self.normal(theta)));
-                if angle > limit {
-                    return None;
-                }
+            let Some((what, limit)) = follow else {
+                continue;
+            };
+            let own = match what {
+                Follow::Normal => d1.cross(*d2).cross(*d1),
+                Follow::Direction(d) => d - d.dot(*d1) / d1.length_squared() * *d1,
+            }
+            .try_normalize()?;
+            let (normal, binormal) = (self.normal(theta), self.binormal(theta));
+            let phi = match (what, turn) {
+                (Follow::Normal, _) => 0.0,
+                (_, Some(phi)) => phi,
+                (_, None) => own.dot(binormal).atan2(own.dot(normal)),
+            };
+            turn = Some(phi);
+            angle = angle.max(own.angle_between(phi.cos() * normal + phi.sin() * binormal));
+            if angle > limit {
+                return None;
             }
         }
-        Some((distance, angle))
+        Some((distance, angle, turn.unwrap_or(0.0)))
     }
 
     /// How far a profile point at distance `reach` from the edge is from the screw motion's
@@ -213,6 +248,13 @@ impl Helix {
     /// The principal normal at θ: towards the axis.
     fn normal(&self, theta: f64) -> DVec3 {
         -(theta.cos() * self.e1 + theta.sin() * self.e2)
+    }
+
+    /// The binormal at θ: (c (sin θ e₁ − cos θ e₂) + r a)/√(r² + c²).
+    fn binormal(&self, theta: f64) -> DVec3 {
+        let s = self.radius.hypot(self.advance);
+        (self.advance * (theta.sin() * self.e1 - theta.cos() * self.e2) + self.radius * self.axis)
+            / s
     }
 
     /// The spine on `domain` (the edge's parameter interval) and the helix's Frenet frames,
@@ -281,12 +323,13 @@ impl Helix {
             .zip(f3.segments())
             .zip(tangent.segments())
             .map(|((a, b), t)| {
-                RationalFrameSegment::new(
+                let mut frame = RationalFrameSegment::new(
                     a.poles().collect(),
                     b.poles().collect(),
                     vec![1.0; DEGREE + 1],
-                )?
-                .with_tangent(t.poles().collect())
+                )?;
+                frame.rotate(self.turn);
+                frame.with_tangent(t.poles().collect())
             })
             .collect::<Result<Vec<_>>>()?;
         Ok(Some(HelixSpine {

@@ -205,6 +205,57 @@ fn a_thread_is_the_screw_sweep_of_its_profile() {
     }
 }
 
+/// A thread under a fixed direction along the helix's axis (OpenCascade's binormal mode):
+/// the Frenet frame turned a quarter turn (f₂ the binormal, f₃ = −N), so the screw motion
+/// again — its faces lie in each normal plane on the profile placed in that frame; a
+/// direction off the axis takes the PH spline.
+#[test]
+fn a_direction_along_the_axis_is_the_screw_motion_turned_by_a_constant() {
+    let exact = Exact {
+        radius: 3.0,
+        rise: 2.0 / TAU,
+    };
+    // The triangle's corners (x along f₂ = B, y along f₃ = −N) in (along N, along B).
+    let corners: Vec<(f64, f64)> = (0..3)
+        .map(|k| {
+            let a = TAU * k as f64 / 3.0;
+            (-0.5 * a.sin(), 0.5 * a.cos())
+        })
+        .collect();
+    let fixed = |d: DVec3| WireSweep {
+        frame: SweepFrame::Fixed(d),
+        tolerance: 1e-5,
+        ..WireSweep::default()
+    };
+    let edges = [hermite_helix(3.0, 2.0, 2.0)];
+    let shape = sweep(&edges, &triangle(0.5), &[], &fixed(DVec3::Z)).unwrap();
+    crate::testing::assert_closed_oriented(shape.brep());
+    assert!(smooth_faces(&shape).is_some());
+    let off = lateral_points(&shape)
+        .into_iter()
+        .map(|x| {
+            let p = exact.in_normal_plane(x);
+            (0..3)
+                .map(|k| to_segment(p, corners[k], corners[(k + 1) % 3]))
+                .fold(f64::INFINITY, f64::min)
+        })
+        .fold(0.0, f64::max);
+    println!(
+        "fixed axis: off the screw sweep {off:.2e}, frame error {:.1e}",
+        shape.report().frame_error
+    );
+    assert!(off <= 1e-5, "{off:e}");
+    assert!(shape.report().frame_error < 1e-5);
+    let tilted = sweep(
+        &edges,
+        &triangle(0.5),
+        &[],
+        &fixed(DVec3::new(0.3, 0.0, 1.0)),
+    )
+    .unwrap();
+    assert!(smooth_faces(&tilted).is_none());
+}
+
 /// A pipe along five turns on the lightest frame: every point at the radius from the helix.
 #[test]
 fn a_pipe_along_a_helix_is_the_tube_about_it() {

@@ -9,7 +9,7 @@
 //! | `profile` | the cross-section's loops split at their corners, their orientation, extent (support function) and symmetry |
 //! | `frame` | one RMF along the whole wire: constant on lines, the rational frame of arcs, the PH cubic rational RMF (Mäurer & Jüttler (29), (36)–(41)) on curves; twist, closure, the Cor. 7 margin |
 //! | `law` | the Frenet frame, a fixed direction and a guide curve as turns against the RMF (θ' = τ for Frenet; the guide's crossing of each normal plane), unwrapped, their accuracy |
-//! | `helix` | a lone circular helix edge under the Frenet frame, or a pipe along it, swept by the helix's screw motion: one smooth spline of the circle for spine and frames |
+//! | `helix` | a lone circular helix edge under the Frenet frame or its axis direction, or a pipe along it, swept by the helix's screw motion: one smooth spline of the circle for spine and frames |
 //! | `blend` | sweeps between two profiles or through sections: the profiles matched loop by loop, over common denominators, the blend as sums of scaled sweeps |
 //! | `scale` | the scale law σ piecewise linear in arc length (the wire cut at its knots), as polynomials in each piece's parameter (exact on lines and PH pieces) |
 //! | `oblique` | the fold check of a profile drawn in a plane across the wire other than the normal plane |
@@ -98,7 +98,8 @@ pub enum SweepFrame {
     Frenet,
     /// f₂ along this direction projected onto the normal plane: the profile keeps its
     /// relation to the axis (OpenCascade's binormal mode). Refused where the direction is
-    /// along the tangent.
+    /// along the tangent. Along a lone circular helix edge with the direction along its
+    /// axis, the helix's screw motion, as for [`SweepFrame::Frenet`].
     Fixed(DVec3),
     /// f₂ towards the guide curve of these edges (in any order and orientation), where it
     /// crosses the wire's normal plane (the crossing nearest the wire): the profile turns
