@@ -591,7 +591,8 @@ def sweep(path: Any, profile: Any, *, solid: bool = True, corner: str = "round",
 
         pipe_frame: how a round profile (circles about the path: a pipe) is swept along
             curves: "lightest" (default: the same surface in the lightest exact faces,
-            degree 5 along the path instead of 9) or "rmf" (parameter lines orthogonal);
+            degree 5 along the path instead of 9; along a lone circular helix its screw
+            motion, degree 7 with simple knots) or "rmf" (parameter lines orthogonal);
             see :func:`rmfsurf.wire_sweep`.
 
     Returns:
