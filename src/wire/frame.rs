@@ -716,7 +716,7 @@ fn law_turns(chain: &Chain, spines: &[Spine], options: &FrameOptions) -> Result<
         .zip(spines)
         .map(|(piece, spine)| {
             if spine.screw.is_some() {
-                // The helix's Frenet frames are followed as they are.
+                // The screw motion's frames, turned to the law at the start, follow it.
                 return Ok(LawTurn {
                     turn: 0.0,
                     uniform: true,
@@ -784,7 +784,8 @@ fn frame_error(pieces: &[Framed], law: &FrameLaw) -> f64 {
     let mut worst = 0.0f64;
     for framed in pieces {
         if let Some(screw) = framed.screw {
-            // Measured against the edge's normals where the helix was taken for it.
+            // Measured against what the law follows along the edge where the helix was taken
+            // for it.
             worst = worst.max(screw.normal_angle);
             continue;
         }
@@ -1341,8 +1342,7 @@ impl Margins {
 
 /// The singularity margin along a helix swept by its screw motion: 1 − κ h, h the
 /// profile's reach towards the axis (along the principal normal), the same all along.
-fn screw_margin(framed: &Framed, table: &SupportTable, unit: f64) -> Result<f64> {
-    let screw = framed.screw.expect("a screw piece");
+fn screw_margin(framed: &Framed, screw: Screw, table: &SupportTable, unit: f64) -> Result<f64> {
     let d = DVec2::new(
         framed.start.f2.dot(screw.normal),
         framed.start.f3.dot(screw.normal),
@@ -1382,13 +1382,13 @@ pub(crate) fn singularity_margin(
     let mut reaches: Vec<([u64; 2], f64)> = Vec::with_capacity(REACH_CACHE);
     for framed in &transport.pieces {
         let piece = &framed.piece;
-        let margin = match (&piece.geometry, &framed.frame) {
-            _ if framed.screw.is_some() => screw_margin(framed, &table, unit)?,
-            (Geometry::Line { .. }, PieceFrame::Constant { f2, f3 }) => {
+        let margin = match (&piece.geometry, &framed.frame, framed.screw) {
+            (_, _, Some(screw)) => screw_margin(framed, screw, &table, unit)?,
+            (Geometry::Line { .. }, PieceFrame::Constant { f2, f3 }, _) => {
                 miter_margin(framed, *f2, *f3, &table, unit)?
             }
-            (Geometry::Line { .. }, _) => 1.0,
-            (Geometry::Arc(arc), PieceFrame::Circular { a, b }) => {
+            (Geometry::Line { .. }, _, _) => 1.0,
+            (Geometry::Arc(arc), PieceFrame::Circular { a, b }, _) => {
                 let d = DVec2::new(*a, -*b);
                 let key = [d.x.to_bits(), d.y.to_bits()];
                 let reach = match reaches.iter().find(|(k, _)| *k == key) {
@@ -1408,7 +1408,7 @@ pub(crate) fn singularity_margin(
                 }
                 margin
             }
-            (_, PieceFrame::Rational(frames)) => {
+            (_, PieceFrame::Rational(frames), _) => {
                 let analysis = ProfileSurface::with_adapted_frames(&framed.spine, frames, &chain)
                     .with_context(|| format!("edge {}", piece.edge))?;
                 if analysis.cannot_fold() {

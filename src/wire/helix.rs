@@ -25,8 +25,9 @@
 //! axis: their tips lie on a circle in a plane normal to it), centre and radius by a
 //! least-squares circle (Kåsa's) in the plane normal to the axis, the advance by least
 //! squares in the unwrapped angle; the distance is measured at samples of every segment.
-//! Where the frame matters (Frenet), the angle between the edge's own principal normals and
-//! the helix's, at the profile's reach, shares the tolerance too.
+//! Where a frame law matters (the Frenet frame, a direction along the axis: the Frenet frame
+//! turned by a constant), the angle between what the law follows along the edge and the
+//! helix's frames so turned, at the profile's reach, shares the tolerance too.
 
 use crate::bezier::{fit_splines, spline_value, PiecewiseCurve};
 use crate::error::Result;
@@ -82,7 +83,7 @@ pub(crate) struct Helix {
 /// the spline's accuracy (close to orthonormal and to adapted, not exactly).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Screw {
-    /// Largest angle between the edge's principal normals and the frames' f₂.
+    /// Largest angle between what the frame law follows along the edge and the frames' f₂.
     pub normal_angle: f64,
     /// κ = r/(r² + c²), the same all along.
     pub curvature: f64,
@@ -222,15 +223,15 @@ impl Helix {
     }
 
     /// How far a profile point at distance `reach` from the edge is from the screw motion's
-    /// image of it: the edge's distance from the helix, and the angle of their principal
-    /// normals (where measured) at that reach.
+    /// image of it: the edge's distance from the helix, and the angle between the law's
+    /// frames and the helix's (where measured) at that reach.
     pub(crate) fn off_at(&self, reach: f64) -> f64 {
         self.deviation + reach * self.normal_angle
     }
 
-    /// What the sweep needs to know of the screw motion: the angle of the helix's Frenet
-    /// frames to the edge's (0 where not measured), its curvature and its principal normal
-    /// at the start.
+    /// What the sweep needs to know of the screw motion: the angle of the helix's frames to
+    /// the law's along the edge (0 where not measured), its curvature and its principal
+    /// normal at the start.
     pub(crate) fn screw(&self) -> Screw {
         Screw {
             normal_angle: self.normal_angle,
@@ -240,29 +241,49 @@ impl Helix {
     }
 
     fn point(&self, theta: f64) -> DVec3 {
-        self.origin
-            + self.radius * (theta.cos() * self.e1 + theta.sin() * self.e2)
-            + self.advance * theta * self.axis
+        self.point_at(unit(theta), theta)
     }
 
     /// The principal normal at θ: towards the axis.
     fn normal(&self, theta: f64) -> DVec3 {
-        -(theta.cos() * self.e1 + theta.sin() * self.e2)
+        -self.radial(unit(theta))
     }
 
-    /// The binormal at θ: (c (sin θ e₁ − cos θ e₂) + r a)/√(r² + c²).
     fn binormal(&self, theta: f64) -> DVec3 {
-        let s = self.radius.hypot(self.advance);
-        (self.advance * (theta.sin() * self.e1 - theta.cos() * self.e2) + self.radius * self.axis)
-            / s
+        self.binormal_at(unit(theta))
     }
 
-    /// The spine on `domain` (the edge's parameter interval) and the helix's Frenet frames,
-    /// both from one uniform spline (c(θ), s(θ)) of degree [`DEGREE`] close to (cos θ, sin θ)
-    /// — the helix o + r (c e₁ + s e₂) + c θ a, its normal −(c e₁ + s e₂), its binormal
-    /// (c (s e₁ − c e₂) + r a)/√(r² + c²), each a linear combination of the spline's
-    /// coefficients, θ itself exact (a line is any spline) — with `reach` times the circle's
-    /// error within `budget`; `None` where that would take more than [`MAX_SPANS`] spans.
+    // The helix and its Frenet frame, linear in c = (cos θ, sin θ) (and θ): the same
+    // combinations make the spline's coefficients from those of the circle's spline.
+
+    /// c.x e₁ + c.y e₂.
+    fn radial(&self, c: DVec2) -> DVec3 {
+        c.x * self.e1 + c.y * self.e2
+    }
+
+    /// o + r (c.x e₁ + c.y e₂) + c θ a.
+    fn point_at(&self, c: DVec2, theta: f64) -> DVec3 {
+        self.origin + self.radius * self.radial(c) + self.advance * theta * self.axis
+    }
+
+    /// B = (c (sin θ e₁ − cos θ e₂) + r a)/√(r² + c²).
+    fn binormal_at(&self, c: DVec2) -> DVec3 {
+        let s = self.radius.hypot(self.advance);
+        (self.advance * (c.y * self.e1 - c.x * self.e2) + self.radius * self.axis) / s
+    }
+
+    /// T = (r (−sin θ e₁ + cos θ e₂) + c a)/√(r² + c²).
+    fn tangent_at(&self, c: DVec2) -> DVec3 {
+        let s = self.radius.hypot(self.advance);
+        (self.radius * (c.x * self.e2 - c.y * self.e1) + self.advance * self.axis) / s
+    }
+
+    /// The spine on `domain` (the edge's parameter interval) and the helix's Frenet frames
+    /// turned by `turn`, all from one uniform spline of degree [`DEGREE`] close to
+    /// (cos θ, sin θ) — spine, normal, binormal and tangent each the same linear combination
+    /// of its coefficients as of (cos θ, sin θ), θ itself exact (a line is any spline) —
+    /// with `reach` times the circle's error within `budget`; `None` where that would take
+    /// more than [`MAX_SPANS`] spans.
     pub(crate) fn spine(
         &self,
         domain: (f64, f64),
@@ -285,23 +306,11 @@ impl Helix {
                 return Ok(None);
             }
         };
-        let s = self.radius.hypot(self.advance);
-        let (along, up) = (self.radius / s, self.advance / s);
-        let greville = circle.greville();
-        let radial = |c: DVec2| c.x * self.e1 + c.y * self.e2;
-        let spine: Vec<DVec3> = circle
-            .poles
+        let poles = &circle.poles;
+        let spine: Vec<DVec3> = poles
             .iter()
-            .zip(&greville)
-            .map(|(&c, &theta)| {
-                self.origin + self.radius * radial(c) + self.advance * theta * self.axis
-            })
-            .collect();
-        let f2: Vec<DVec3> = circle.poles.iter().map(|&c| -radial(c)).collect();
-        let f3: Vec<DVec3> = circle
-            .poles
-            .iter()
-            .map(|&c| up * (c.y * self.e1 - c.x * self.e2) + along * self.axis)
+            .zip(circle.greville())
+            .map(|(&c, theta)| self.point_at(c, theta))
             .collect();
         let (lo, hi) = domain;
         let to_domain = |theta: f64| lo + (hi - lo) * (theta - self.start) / total;
@@ -309,14 +318,11 @@ impl Helix {
         let bezier = |poles: Vec<DVec3>| {
             crate::bezier::NurbsCurve::new(DEGREE, poles, None, knots.clone())?.to_piecewise()
         };
+        let on_poles = |f: &dyn Fn(DVec2) -> DVec3| bezier(poles.iter().map(|&c| f(c)).collect());
         let curve = bezier(spine)?;
-        // T = (r (−s e₁ + c e₂) + c a)/√(r² + c²).
-        let tangent: Vec<DVec3> = circle
-            .poles
-            .iter()
-            .map(|&c| along * (c.x * self.e2 - c.y * self.e1) + up * self.axis)
-            .collect();
-        let (f2, f3, tangent) = (bezier(f2)?, bezier(f3)?, bezier(tangent)?);
+        let f2 = on_poles(&|c| -self.radial(c))?;
+        let f3 = on_poles(&|c| self.binormal_at(c))?;
+        let tangent = on_poles(&|c| self.tangent_at(c))?;
         let frames = f2
             .segments()
             .iter()
@@ -364,7 +370,6 @@ fn circle_spline(a: f64, b: f64, spans: usize) -> Option<(PlaneSpline, f64)> {
     let mut knots = vec![a; p + 1];
     knots.extend((1..spans).map(|k| a + (b - a) * k as f64 / spans as f64));
     knots.extend(std::iter::repeat_n(b, p + 1));
-    let unit = |t: f64| DVec2::new(t.cos(), t.sin());
     let at = |count: usize| (0..=count).map(move |k| a + (b - a) * k as f64 / count as f64);
     let params: Vec<f64> = at(spans * FIT_PER_SPAN).collect();
     let values: Vec<DVec2> = params.iter().map(|&t| unit(t)).collect();
@@ -440,6 +445,11 @@ fn line_fit(angles: &[f64], heights: &[f64]) -> Option<(f64, f64)> {
     }
     let c = saz / saa;
     c.is_finite().then_some((mean_z - c * mean_a, c))
+}
+
+/// (cos θ, sin θ).
+fn unit(theta: f64) -> DVec2 {
+    DVec2::new(theta.cos(), theta.sin())
 }
 
 /// x reduced to (−π, π].

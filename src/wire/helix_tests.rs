@@ -73,6 +73,23 @@ impl Exact {
     }
 }
 
+/// The helix the tests sweep along: `helix(3.0, 2.0, _)`.
+const THREAD: Exact = Exact {
+    radius: 3.0,
+    rise: 2.0 / TAU,
+};
+
+/// The corners of `triangle(0.5)` (profile coordinates x along f₂, y along f₃) in the
+/// normal plane's (along N, along B), the frame placing them as `in_frenet` says.
+fn triangle_corners(in_frenet: impl Fn(f64, f64) -> (f64, f64)) -> Vec<(f64, f64)> {
+    (0..3)
+        .map(|k| {
+            let a = TAU * k as f64 / 3.0;
+            in_frenet(0.5 * a.cos(), 0.5 * a.sin())
+        })
+        .collect()
+}
+
 /// Points of the lateral faces on a 24 × 400 grid of each.
 fn lateral_points(shape: &Shape) -> Vec<DVec3> {
     let mut points = Vec::new();
@@ -87,6 +104,21 @@ fn lateral_points(shape: &Shape) -> Vec<DVec3> {
         }
     }
     points
+}
+
+/// The largest distance, in the helix's normal planes, of the lateral faces' points from
+/// the triangle of `corners` (coordinates along N and along B): how far the sweep is from
+/// the exact screw sweep of that triangle.
+fn off_screw_sweep(shape: &Shape, exact: &Exact, corners: &[(f64, f64)]) -> f64 {
+    lateral_points(shape)
+        .into_iter()
+        .map(|x| {
+            let p = exact.in_normal_plane(x);
+            (0..corners.len())
+                .map(|k| to_segment(p, corners[k], corners[(k + 1) % corners.len()]))
+                .fold(f64::INFINITY, f64::min)
+        })
+        .fold(0.0, f64::max)
 }
 
 /// Distance from p to the segment a–b in the plane.
@@ -158,16 +190,8 @@ fn frenet(tolerance: f64) -> WireSweep {
 /// area × length.
 #[test]
 fn a_thread_is_the_screw_sweep_of_its_profile() {
-    let exact = Exact {
-        radius: 3.0,
-        rise: 2.0 / TAU,
-    };
-    let corners: Vec<(f64, f64)> = (0..3)
-        .map(|k| {
-            let a = TAU * k as f64 / 3.0;
-            (0.5 * a.cos(), 0.5 * a.sin())
-        })
-        .collect();
+    let exact = THREAD;
+    let corners = triangle_corners(|x, y| (x, y));
     for (name, edge, tolerance) in [
         ("PH spline", helix(3.0, 2.0, 2.0), 1e-5),
         ("cubic Hermite", hermite_helix(3.0, 2.0, 2.0), 1e-4),
@@ -179,15 +203,7 @@ fn a_thread_is_the_screw_sweep_of_its_profile() {
         // Two turns: sixteen spans of degree 7.
         let poles = smooth_faces(&shape).expect("the screw motion's faces");
         assert!(poles.iter().all(|&n| n == 16 + 7), "{poles:?}");
-        let off = lateral_points(&shape)
-            .into_iter()
-            .map(|x| {
-                let p = exact.in_normal_plane(x);
-                (0..3)
-                    .map(|k| to_segment(p, corners[k], corners[(k + 1) % 3]))
-                    .fold(f64::INFINITY, f64::min)
-            })
-            .fold(0.0, f64::max);
+        let off = off_screw_sweep(&shape, &exact, &corners);
         let area = 0.75 * 3f64.sqrt() * 0.25;
         let want = area * exact.length(2.0);
         let v = volume(&shape);
@@ -211,17 +227,9 @@ fn a_thread_is_the_screw_sweep_of_its_profile() {
 /// direction off the axis takes the PH spline.
 #[test]
 fn a_direction_along_the_axis_is_the_screw_motion_turned_by_a_constant() {
-    let exact = Exact {
-        radius: 3.0,
-        rise: 2.0 / TAU,
-    };
-    // The triangle's corners (x along f₂ = B, y along f₃ = −N) in (along N, along B).
-    let corners: Vec<(f64, f64)> = (0..3)
-        .map(|k| {
-            let a = TAU * k as f64 / 3.0;
-            (-0.5 * a.sin(), 0.5 * a.cos())
-        })
-        .collect();
+    let exact = THREAD;
+    // x along f₂ = B, y along f₃ = −N.
+    let corners = triangle_corners(|x, y| (-y, x));
     let fixed = |d: DVec3| WireSweep {
         frame: SweepFrame::Fixed(d),
         tolerance: 1e-5,
@@ -231,15 +239,7 @@ fn a_direction_along_the_axis_is_the_screw_motion_turned_by_a_constant() {
     let shape = sweep(&edges, &triangle(0.5), &[], &fixed(DVec3::Z)).unwrap();
     crate::testing::assert_closed_oriented(shape.brep());
     assert!(smooth_faces(&shape).is_some());
-    let off = lateral_points(&shape)
-        .into_iter()
-        .map(|x| {
-            let p = exact.in_normal_plane(x);
-            (0..3)
-                .map(|k| to_segment(p, corners[k], corners[(k + 1) % 3]))
-                .fold(f64::INFINITY, f64::min)
-        })
-        .fold(0.0, f64::max);
+    let off = off_screw_sweep(&shape, &exact, &corners);
     println!(
         "fixed axis: off the screw sweep {off:.2e}, frame error {:.1e}",
         shape.report().frame_error
@@ -259,10 +259,7 @@ fn a_direction_along_the_axis_is_the_screw_motion_turned_by_a_constant() {
 /// A pipe along five turns on the lightest frame: every point at the radius from the helix.
 #[test]
 fn a_pipe_along_a_helix_is_the_tube_about_it() {
-    let exact = Exact {
-        radius: 3.0,
-        rise: 2.0 / TAU,
-    };
+    let exact = THREAD;
     let options = WireSweep {
         pipe_frame: PipeFrame::Lightest,
         tolerance: 1e-5,

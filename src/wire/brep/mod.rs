@@ -672,10 +672,10 @@ pub(crate) fn build(
 /// `helix`) with simple knots along the spine where the patches join that smoothly.
 fn face_nurbs(surface: &PiecewiseSurface, screw: bool) -> Result<NurbsSurface> {
     let nurbs = NurbsSurface::from_piecewise(surface)?;
-    Ok(match screw {
-        true => nurbs.with_simple_knots_v().unwrap_or(nurbs),
-        false => nurbs,
-    })
+    if screw {
+        return Ok(nurbs.with_simple_knots_v().unwrap_or(nurbs));
+    }
+    Ok(nurbs)
 }
 
 /// The line or arc a piece sweeps its profile along untwisted (its frame constant along a
